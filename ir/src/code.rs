@@ -1,0 +1,172 @@
+//! Statements and expressions: the bodies of handlers and functions.
+//!
+//! A Vectric section is a list of [`Stmt::Line`]s whose pieces are literal
+//! bytes and variables. CIMCO functions that only format, compare and
+//! concatenate, and all VcPost Subs, lower to the rest of this small
+//! language: assignments, conditionals, loops, calls and returns over
+//! [`Value`]s that are numbers, text or booleans. What a dialect cannot say
+//! here runs as a [`crate::post::Script`].
+
+use serde::{Deserialize, Serialize};
+
+use crate::diagnostic::Span;
+use crate::post::{FormatId, FunctionId, ScriptId, VarId};
+use crate::quantity::Quantity;
+
+/// One statement.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Stmt {
+    /// Write one block: the pieces, then the line ending. Vectric output
+    /// strings, VcPost `Out`, CIMCO lines.
+    Line(Vec<Piece>),
+    /// Write the value of an expression as output text; each line of the
+    /// text becomes a block (CIMCO handlers return their blocks as text).
+    Write(Expr),
+    /// Assign a value to a place.
+    Assign(Place, Expr),
+    /// Evaluate for effect (a call whose result is not used).
+    Eval(Expr),
+    /// `if` / `else if` / `else`.
+    If {
+        branches: Vec<(Expr, Vec<Stmt>)>,
+        otherwise: Vec<Stmt>,
+    },
+    /// A loop; the runtime stops it with a diagnostic at `span` when the
+    /// post's step budget runs out.
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+        span: Option<Span>,
+    },
+    /// Leave the innermost loop.
+    Break,
+    /// Next iteration of the innermost loop.
+    Continue,
+    /// Leave the function, with a value or without.
+    Return(Option<Expr>),
+    /// Run a script call (a Vectric `<!>` Lua call, which postc keeps but
+    /// does not run).
+    Script(ScriptId),
+}
+
+/// One piece of an output block.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Piece {
+    /// Bytes written as they are.
+    Text(Vec<u8>),
+    /// A variable, formatted from its source with its prefix and modality.
+    Var(VarId),
+    /// The text of an expression.
+    Expr(Expr),
+}
+
+/// Where an assignment stores.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Place {
+    /// A function parameter or local, by slot.
+    Local(u16),
+    /// A global.
+    Global(u16),
+    /// The value of a variable (VcPost register).
+    Var(VarId),
+}
+
+/// One expression.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Expr {
+    Number(f64),
+    Text(String),
+    Bool(bool),
+    /// A value the runtime knows (position, feed, tool name, ...), in the
+    /// post's units.
+    Quantity(Quantity),
+    /// A function parameter or local.
+    Local(u16),
+    /// A global.
+    Global(u16),
+    /// A variable's current value.
+    Var(VarId),
+    /// The value a variable had before its last assignment (VcPost
+    /// `.Previous`, CIMCO `getLast()`).
+    Previous(VarId),
+    /// Format a value through a variable: its prefix, format and modality;
+    /// updates what the variable last printed (CIMCO `xOutput.format(v)`).
+    FormatVar { var: VarId, value: Box<Expr> },
+    /// Format a value with a format alone (CIMCO `xyzFormat.format(v)`).
+    Format { format: FormatId, value: Box<Expr> },
+    Unary(UnaryOp, Box<Expr>),
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// `cond ? a : b`
+    Choose(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// Call a post function.
+    Call(FunctionId, Vec<Expr>),
+    /// Call a built-in function.
+    Builtin(Builtin, Vec<Expr>),
+}
+
+/// Unary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum UnaryOp {
+    Neg,
+    Not,
+}
+
+/// Binary operators. `Add` adds numbers and joins text; `Concat` always
+/// joins as text (BASIC `&`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum BinaryOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Rem,
+    Pow,
+    IntDiv,
+    Concat,
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    And,
+    Or,
+}
+
+/// Built-in functions, shared by the dialects that lower to native code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Builtin {
+    Abs,
+    Sqrt,
+    Sin,
+    Cos,
+    Tan,
+    Atan,
+    Atan2,
+    Floor,
+    Ceil,
+    /// Round half away from zero to an integer (or to `n` decimals).
+    Round,
+    /// Truncate toward zero.
+    Trunc,
+    Min,
+    Max,
+    /// Length of a text.
+    Len,
+    /// `Left(s, n)`.
+    Left,
+    /// `Right(s, n)`.
+    Right,
+    /// `Mid(s, start1, [len])`, 1-based.
+    Mid,
+    Upper,
+    Lower,
+    /// Number to text (shortest form).
+    Str,
+    /// Text to number (0 when it is not a number).
+    Val,
+    /// `Format(value, "0.000")`: a VB-style picture format.
+    FormatPicture,
+    /// Text of a character code.
+    Chr,
+}

@@ -1,0 +1,117 @@
+//! Number-format descriptors: one type that says how every dialect prints a
+//! number.
+//!
+//! A Vectric `1.3` with flags, a CIMCO `createFormat({...})` and a VcPost
+//! register format all become a [`NumberFormat`]. The runtime's formatter
+//! reads only this type. Printing a value goes:
+//!
+//! 1. multiply by `multiplier` (unit conversion has happened before);
+//! 2. round half away from zero to `decimals` places, on the decimal value
+//!    of the number (2.675 rounds to 2.68 even though the binary double is a
+//!    hair below);
+//! 3. drop trailing fraction zeros when `trim_zeros`; write the decimal mark
+//!    as `point` says;
+//! 4. write the sign (`-` for negatives, `+` too under `SignStyle::Always`;
+//!    a value that rounds to zero has no sign);
+//! 5. pad to `width` (counted as `WidthOf` says) with blanks or zeros, on the
+//!    left unless `justify` is `Left`;
+//! 6. put `prefix` in front.
+
+use serde::{Deserialize, Serialize};
+
+/// How one number prints.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct NumberFormat {
+    /// Digits after the decimal mark.
+    pub decimals: u8,
+    /// Minimum width; what it counts is `width_of`.
+    pub width: u8,
+    /// What `width` counts.
+    pub width_of: WidthOf,
+    /// What fills the width.
+    pub padding: Padding,
+    /// Which side the value sits on inside the width.
+    pub justify: Justify,
+    /// When a sign is written.
+    pub sign: SignStyle,
+    /// When the decimal mark is written.
+    pub point: PointStyle,
+    /// Drop trailing zeros of the fraction.
+    pub trim_zeros: bool,
+    /// Write `0.5` rather than `.5`.
+    pub leading_zero: bool,
+    /// The decimal mark, `.` or `,`.
+    pub decimal_mark: char,
+    /// The value is multiplied by this before rounding.
+    pub multiplier: f64,
+    /// Text written before the number (after the variable's own prefix).
+    pub prefix: String,
+}
+
+impl Default for NumberFormat {
+    fn default() -> Self {
+        NumberFormat {
+            decimals: 3,
+            width: 1,
+            width_of: WidthOf::Whole,
+            padding: Padding::Space,
+            justify: Justify::Right,
+            sign: SignStyle::Negative,
+            point: PointStyle::WithDecimals,
+            trim_zeros: false,
+            leading_zero: true,
+            decimal_mark: '.',
+            multiplier: 1.0,
+            prefix: String::new(),
+        }
+    }
+}
+
+/// What a format's `width` counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum WidthOf {
+    /// The whole number, sign and decimal mark included (Vectric).
+    #[default]
+    Whole,
+    /// The integer digits only (CIMCO `width` with `zeropad`).
+    IntegerDigits,
+}
+
+/// What fills a format's width.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Padding {
+    #[default]
+    Space,
+    /// Zeros, after the sign (`-0012.5`).
+    Zero,
+}
+
+/// Where the value sits in its width.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Justify {
+    #[default]
+    Right,
+    /// Blanks go after the value (zeros never do).
+    Left,
+}
+
+/// When a sign is written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SignStyle {
+    /// Only negative values carry a sign.
+    #[default]
+    Negative,
+    /// Every non-zero value carries `+` or `-`; zero carries `+`.
+    Always,
+}
+
+/// When the decimal mark is written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum PointStyle {
+    /// When digits follow it (Vectric without `#`).
+    #[default]
+    WithDecimals,
+    /// Always, even with no digits after it (`#` flag: `12.`).
+    Always,
+}

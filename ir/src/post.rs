@@ -1,0 +1,415 @@
+//! The post: what one post file compiles to.
+
+use serde::{Deserialize, Serialize};
+
+use crate::code::{Expr, Stmt};
+use crate::diagnostic::Span;
+use crate::format::NumberFormat;
+use crate::quantity::Quantity;
+use crate::units::Units;
+
+/// Index of a [`NumberFormat`] in [`Post::formats`].
+pub type FormatId = u16;
+/// Index of a [`Variable`] in [`Post::variables`].
+pub type VarId = u16;
+/// Index of a [`Function`] in [`Post::functions`].
+pub type FunctionId = u16;
+/// Index of a [`Script`] in [`Post::scripts`].
+pub type ScriptId = u16;
+
+/// A compiled post processor.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Post {
+    pub info: PostInfo,
+    pub options: OutputOptions,
+    /// Number formats, referred to by [`FormatId`].
+    pub formats: Vec<NumberFormat>,
+    /// Output variables (Vectric `VAR`s, CIMCO output variables, VcPost
+    /// registers), referred to by [`VarId`].
+    pub variables: Vec<Variable>,
+    /// Script-level globals (CIMCO globals, VcPost plain variables).
+    pub globals: Vec<Global>,
+    /// Functions handlers call.
+    pub functions: Vec<Function>,
+    /// What runs once before the first event (VcPost statements outside
+    /// any Sub, CIMCO top-level code and `onInit`).
+    pub init: Vec<Stmt>,
+    /// What the post does for each kind of event.
+    pub handlers: Vec<Handler>,
+    /// Code in a language the IR does not express, kept with its source.
+    pub scripts: Vec<Script>,
+}
+
+/// What the post says about itself.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PostInfo {
+    /// Display name (Vectric `POST_NAME`, CIMCO `PostInfo.title`).
+    pub name: String,
+    /// The dialect the post was written in.
+    pub dialect: Dialect,
+    /// Path of the post file.
+    pub source: String,
+    /// Extension of the files it writes, without the dot.
+    pub file_extension: String,
+    /// Units it writes; `None` writes the toolpath's own units.
+    pub units: Option<Units>,
+    /// How the runtime turns events into handler calls.
+    pub dispatch: Dispatch,
+    /// The post supports jet (laser) toolpaths.
+    pub laser_support: bool,
+    /// Vectric `DIRECT_OUTPUT` and `PRINT_DIRECT`, kept for the record.
+    pub direct_output: Option<String>,
+    pub print_direct: bool,
+    /// Vectric `RAPID_PLUNGE_TO_STARTZ` (a CAM-side setting, kept).
+    pub rapid_plunge_to_start_z: bool,
+    /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
+    pub notes: Vec<String>,
+}
+
+/// Post dialects.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Dialect {
+    #[default]
+    Vectric,
+    Cimco,
+    VcPost,
+    /// A post written directly as IR (RON).
+    Ron,
+}
+
+/// How toolpath events reach handlers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Dispatch {
+    /// Events select a [`Section`]; missing `FIRST_` and special sections
+    /// fall back to plainer ones (Vectric rules, used by CIMCO too).
+    #[default]
+    Sections,
+    /// Events become APT records and each record calls the handler named
+    /// by its major word (VcPost milling).
+    AptWords,
+}
+
+/// Output options: everything about the shape of the output that is not a
+/// handler.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct OutputOptions {
+    /// Bytes written after each block.
+    pub line_ending: Vec<u8>,
+    /// Block numbers printed by the block-number quantity.
+    pub block_numbers: BlockNumbers,
+    /// Characters replaced in variable text (not in literal text).
+    pub substitutions: Vec<Substitution>,
+    /// Split long programs into several files.
+    pub tape_splitting: Option<TapeSplitting>,
+    /// Spindle speeds printed as steps of a range.
+    pub spindle_speed_range: Option<SpindleSpeedRange>,
+    /// An axis wrapped around a cylinder and printed as a rotary axis.
+    pub rotary_wrap: Option<RotaryWrap>,
+    /// Arcs smaller than `min_arc_radius` print as one straight move; arcs
+    /// larger than `max_arc_radius` are linearized.
+    pub min_arc_radius: Option<f64>,
+    pub max_arc_radius: Option<f64>,
+    /// Feeds print as inverse time (`[FI]`).
+    pub inverse_time_feed: bool,
+    /// Chord tolerance, in mm, when arcs are linearized.
+    pub arc_tolerance: f64,
+    /// Arc words computed from the printed start and end points so the
+    /// radius at both ends agrees after rounding.
+    pub exact_arcs: bool,
+    /// Maximum number of interpreter steps per handler call before a
+    /// runaway loop is stopped.
+    pub step_budget: u64,
+}
+
+impl Default for OutputOptions {
+    fn default() -> Self {
+        OutputOptions {
+            line_ending: b"\n".to_vec(),
+            block_numbers: BlockNumbers::default(),
+            substitutions: Vec::new(),
+            tape_splitting: None,
+            spindle_speed_range: None,
+            rotary_wrap: None,
+            min_arc_radius: None,
+            max_arc_radius: None,
+            inverse_time_feed: false,
+            arc_tolerance: 0.01,
+            exact_arcs: false,
+            step_budget: 10_000_000,
+        }
+    }
+}
+
+/// Block numbering: the first number printed, the step, and the number past
+/// which numbering starts again.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BlockNumbers {
+    pub start: f64,
+    pub increment: f64,
+    pub maximum: f64,
+}
+
+impl Default for BlockNumbers {
+    fn default() -> Self {
+        BlockNumbers { start: 1.0, increment: 1.0, maximum: 999_999.0 }
+    }
+}
+
+/// One substitution: `from` is replaced by `to` in variable text.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Substitution {
+    pub from: Vec<u8>,
+    pub to: Vec<u8>,
+}
+
+/// Vectric `TAPE_SPLITTING = MAX TOL "FORMAT" START "INDEX_ON_FIRST"`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TapeSplitting {
+    /// Lines per part (footer not counted).
+    pub max_lines: u64,
+    /// A part may end at a retract once it has `max_lines - tolerance` lines.
+    pub tolerance: u64,
+    /// File name format: `%s` is the output name without extension, `%d`
+    /// the part index.
+    pub name_format: String,
+    /// Index of the first part.
+    pub start_index: u64,
+    /// The first part carries an index too (`name_1.tap`, not `name.tap`).
+    pub index_on_first_file: bool,
+}
+
+/// Vectric `SPINDLE_SPEED_RANGE = OUT_MIN OUT_MAX RPM_MIN RPM_MAX`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpindleSpeedRange {
+    pub out_min: f64,
+    pub out_max: f64,
+    pub rpm_min: f64,
+    pub rpm_max: f64,
+}
+
+/// Vectric `ROTARY_WRAP_X` / `ROTARY_WRAP_Y`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RotaryWrap {
+    /// The linear axis that is wrapped.
+    pub axis: WrappedAxis,
+    /// The letter that replaces the wrapped axis's letter in its prefix
+    /// (`A`); `None` keeps the prefix.
+    pub letter: Option<char>,
+    /// Rotation runs the other way (`"-A"`).
+    pub reversed: bool,
+}
+
+/// Which linear axis a rotary wrap maps.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum WrappedAxis {
+    X,
+    Y,
+}
+
+/// An output variable: where its value comes from, how it prints, and when.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Variable {
+    /// The name the post gave it (`X_POSITION`, `xOutput`, `X`).
+    pub name: String,
+    /// Where its value comes from.
+    pub source: ValueSource,
+    /// Text written before the formatted value.
+    pub prefix: Vec<u8>,
+    /// How the value prints.
+    pub format: FormatId,
+    /// When the value prints.
+    pub modality: Modality,
+}
+
+/// Where a variable's value comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum ValueSource {
+    /// A runtime quantity (Vectric labels).
+    Quantity(Quantity),
+    /// Whatever the post assigns or formats through it (CIMCO output
+    /// variables, VcPost registers). A register may also start from a
+    /// quantity the runtime loads before each handler call.
+    Assigned,
+}
+
+/// When a variable prints.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Modality {
+    /// Every time.
+    #[default]
+    Always,
+    /// Only when its text differs from what it printed last; all memory is
+    /// cleared at the start of each toolpath.
+    OnChange,
+}
+
+/// A global value of a post script.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Global {
+    pub name: String,
+    pub initial: Expr,
+}
+
+/// A callable body.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Function {
+    pub name: String,
+    pub params: Vec<String>,
+    /// Parameters plus locals.
+    pub slots: u16,
+    pub body: Body,
+    /// Where the function is defined.
+    pub span: Option<Span>,
+}
+
+/// A body is native IR or a script.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Body {
+    /// Runs as IR statements (native speed).
+    Native(Vec<Stmt>),
+    /// Runs as a script.
+    Script(ScriptId),
+}
+
+/// What a post does for one kind of event.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Handler {
+    pub key: HandlerKey,
+    pub body: Vec<Stmt>,
+    /// Where the handler is defined (Vectric `begin` line, Sub header).
+    pub span: Option<Span>,
+}
+
+/// What selects a handler.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum HandlerKey {
+    Section(Section),
+    /// An APT major word (VcPost Subs), upper case.
+    Word(String),
+}
+
+/// Code in a language the IR does not express.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Script {
+    pub language: ScriptLanguage,
+    /// The script's source text.
+    pub source: String,
+    /// Where it sits in the post file.
+    pub span: Option<Span>,
+    /// Maps offsets in `source` back to the post file, as (offset in
+    /// source, offset in post) pairs sorted by the first.
+    pub span_map: Vec<(u32, u32)>,
+}
+
+/// Languages of scripts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ScriptLanguage {
+    /// Rhai (CIMCO JavaScript that does not lower to IR).
+    Rhai,
+    /// Lua (Vectric `SCRIPT` blocks and `<!>` calls; kept, not run).
+    Lua,
+}
+
+macro_rules! sections {
+    ($( $(#[$doc:meta])* $name:ident = $text:literal; )*) => {
+        /// Kinds of output sections. The names are Vectric's; the other
+        /// dialects lower onto the same set.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+        pub enum Section {
+            $( $(#[$doc])* $name, )*
+        }
+
+        impl Section {
+            /// Every section, in declaration order.
+            pub const ALL: &'static [Section] = &[$(Section::$name,)*];
+
+            /// The name a Vectric post writes after `begin`.
+            pub fn name(self) -> &'static str {
+                match self { $(Section::$name => $text,)* }
+            }
+        }
+    };
+}
+
+sections! {
+    /// Start of the program; the first tool's data is known.
+    Header = "HEADER";
+    /// End of the program.
+    Footer = "FOOTER";
+    /// After the header and each tool change, for spindle tools.
+    SpindleOn = "SPINDLE_ON";
+    /// A later toolpath uses another tool.
+    ToolChange = "TOOLCHANGE";
+    /// A later toolpath starts.
+    NewSegment = "NEW_SEGMENT";
+    /// The first rapid after the header or a tool change.
+    InitialRapidMove = "INITIAL_RAPID_MOVE";
+    RapidMove = "RAPID_MOVE";
+    FirstFeedMove = "FIRST_FEED_MOVE";
+    FeedMove = "FEED_MOVE";
+    FirstPlungeMove = "FIRST_PLUNGE_MOVE";
+    PlungeMove = "PLUNGE_MOVE";
+    RetractMove = "RETRACT_MOVE";
+    FirstCwArcMove = "FIRST_CW_ARC_MOVE";
+    CwArcMove = "CW_ARC_MOVE";
+    FirstCcwArcMove = "FIRST_CCW_ARC_MOVE";
+    CcwArcMove = "CCW_ARC_MOVE";
+    FirstCwHelicalArcMove = "FIRST_CW_HELICAL_ARC_MOVE";
+    CwHelicalArcMove = "CW_HELICAL_ARC_MOVE";
+    FirstCcwHelicalArcMove = "FIRST_CCW_HELICAL_ARC_MOVE";
+    CcwHelicalArcMove = "CCW_HELICAL_ARC_MOVE";
+    FirstCwHelicalArcPlungeMove = "FIRST_CW_HELICAL_ARC_PLUNGE_MOVE";
+    CwHelicalArcPlungeMove = "CW_HELICAL_ARC_PLUNGE_MOVE";
+    FirstCcwHelicalArcPlungeMove = "FIRST_CCW_HELICAL_ARC_PLUNGE_MOVE";
+    CcwHelicalArcPlungeMove = "CCW_HELICAL_ARC_PLUNGE_MOVE";
+    /// Before a move whose feed differs from the last one.
+    FeedRateChange = "FEED_RATE_CHANGE";
+    DwellMove = "DWELL_MOVE";
+    JetToolOn = "JET_TOOL_ON";
+    JetToolOff = "JET_TOOL_OFF";
+    JetToolPower = "JET_TOOL_POWER";
+    /// Not Vectric: the spindle stops.
+    SpindleOff = "SPINDLE_OFF";
+    /// Not Vectric: coolant changes.
+    Coolant = "COOLANT";
+    /// Not Vectric: cutter compensation changes.
+    CutterComp = "CUTTER_COMP";
+    /// Not Vectric: a canned drilling cycle starts.
+    DrillHeader = "DRILL_HEADER";
+    /// Not Vectric: one hole.
+    DrillPoint = "DRILL_POINT";
+    /// Not Vectric: the cycle ends.
+    DrillFooter = "DRILL_FOOTER";
+    /// Not Vectric: an operator comment.
+    Comment = "COMMENT";
+    /// Not Vectric: verbatim text.
+    Insert = "INSERT";
+    /// Not Vectric: the end of a toolpath.
+    ToolpathEnd = "TOOLPATH_END";
+}
+
+impl Section {
+    /// The section a Vectric `begin` name (case-insensitive) stands for.
+    pub fn from_name(name: &str) -> Option<Section> {
+        Section::ALL
+            .iter()
+            .copied()
+            .find(|s| s.name().eq_ignore_ascii_case(name))
+    }
+}
+
+impl Post {
+    /// The handler for a key, if the post has one.
+    pub fn handler(&self, key: &HandlerKey) -> Option<&Handler> {
+        self.handlers.iter().find(|h| &h.key == key)
+    }
+
+    /// The handler for a section, if the post has one.
+    pub fn section(&self, section: Section) -> Option<&Handler> {
+        self.handlers
+            .iter()
+            .find(|h| h.key == HandlerKey::Section(section))
+    }
+}

@@ -1,0 +1,166 @@
+//! Quantities: the values the runtime knows at any moment of a toolpath
+//! (positions, arc geometry, feeds, tool and job data) that a post prints.
+//!
+//! A Vectric `[X]` or a VcPost `<X>` register reads a quantity; each has a
+//! [`Dimension`] that says how it converts between the toolpath's units and
+//! the post's units.
+
+use serde::{Deserialize, Serialize};
+
+/// How a quantity converts between units.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Dimension {
+    /// A length: converted between mm and inch.
+    Length,
+    /// A feed rate (length per minute): converted like a length.
+    Feed,
+    /// Not converted: angles, speeds, counts, times, power.
+    Plain,
+    /// Text.
+    Text,
+}
+
+macro_rules! quantities {
+    ($( $(#[$doc:meta])* $name:ident = $label:literal, $dim:ident; )*) => {
+        /// A value the runtime provides to posts.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+        pub enum Quantity {
+            $( $(#[$doc])* $name, )*
+        }
+
+        impl Quantity {
+            /// Every quantity, in declaration order.
+            pub const ALL: &'static [Quantity] = &[$(Quantity::$name,)*];
+
+            /// The Vectric label that prints this quantity (`X` for `[X]`).
+            pub fn label(self) -> &'static str {
+                match self { $(Quantity::$name => $label,)* }
+            }
+
+            /// How the quantity converts between units.
+            pub fn dimension(self) -> Dimension {
+                match self { $(Quantity::$name => Dimension::$dim,)* }
+            }
+        }
+    };
+}
+
+quantities! {
+    /// Block (line) number; advances each time a block prints it.
+    BlockNumber = "N", Plain;
+    /// Current X position (end of the current move).
+    X = "X", Length;
+    Y = "Y", Length;
+    Z = "Z", Length;
+    /// Rotary A position in degrees (the wrapped axis under ROTARY_WRAP).
+    A = "A", Plain;
+    B = "B", Plain;
+    C = "C", Plain;
+    /// Arc centre relative to the arc's start.
+    I = "I", Length;
+    J = "J", Length;
+    K = "K", Length;
+    /// Arc centre, absolute.
+    IA = "IA", Length;
+    JA = "JA", Length;
+    KA = "KA", Length;
+    /// Arc start point.
+    ArcStartX = "ArcStartX", Length;
+    ArcStartY = "ArcStartY", Length;
+    /// Arc mid point, absolute.
+    ArcMidX = "ArcMidX", Length;
+    ArcMidY = "ArcMidY", Length;
+    /// Arc mid point relative to the arc's start.
+    ArcMidXI = "ArcMidXI", Length;
+    ArcMidYI = "ArcMidYI", Length;
+    /// Arc radius.
+    Radius = "Radius", Length;
+    /// Arc sweep in radians, positive counter-clockwise.
+    Angle = "Angle", Plain;
+    /// Current feed rate.
+    Feed = "F", Feed;
+    /// The tool's cut feed rate.
+    CutFeed = "FC", Feed;
+    /// The tool's plunge feed rate.
+    PlungeFeed = "FP", Feed;
+    /// Inverse-time feed number (1 / minutes for the move).
+    InverseTimeFeed = "FI", Plain;
+    /// Spindle speed in rpm (or its SPINDLE_SPEED_RANGE step).
+    SpindleSpeed = "S", Plain;
+    /// Jet power.
+    Power = "P", Plain;
+    /// Tool number.
+    Tool = "T", Plain;
+    /// Previous tool number.
+    PreviousTool = "TP", Plain;
+    /// Tool diameter.
+    ToolDiameter = "TDIA", Length;
+    /// Dwell time in seconds.
+    DwellTime = "DWELL", Plain;
+    /// Home position.
+    HomeX = "XH", Length;
+    HomeY = "YH", Length;
+    HomeZ = "ZH", Length;
+    /// Safe Z height.
+    SafeZ = "SAFEZ", Length;
+    /// Diameter of the cylinder a wrapped axis goes around.
+    WrapDiameter = "WRAP_DIA", Length;
+    /// Material block.
+    XLength = "XLENGTH", Length;
+    YLength = "YLENGTH", Length;
+    ZLength = "ZLENGTH", Length;
+    XMin = "XMIN", Length;
+    YMin = "YMIN", Length;
+    ZMin = "ZMIN", Length;
+    XMax = "XMAX", Length;
+    YMax = "YMAX", Length;
+    ZMax = "ZMAX", Length;
+    /// Origin position.
+    XOrigin = "X_ORIGIN_POS", Length;
+    YOrigin = "Y_ORIGIN_POS", Length;
+    /// Cutter compensation register (D word).
+    CompRegister = "D", Plain;
+    /// Tool length offset register (H word).
+    LengthOffset = "H", Plain;
+    /// Text: where Z zero is ("Material Surface" or "Table Surface").
+    ZOriginText = "Z_ORIGIN", Text;
+    /// Text: the XY origin ("Bottom Left", ...).
+    XyOriginText = "XY_ORIGIN", Text;
+    ToolName = "TOOLNAME", Text;
+    ToolNotes = "TOOL_NOTES", Text;
+    ToolpathName = "TOOLPATH_NAME", Text;
+    ToolpathNotes = "TOOLPATH_NOTES", Text;
+    /// Output file name (without folder).
+    FileName = "TP_FILENAME", Text;
+    /// Output folder.
+    FileDir = "TP_DIR", Text;
+    /// Output extension.
+    FileExtension = "TP_EXT", Text;
+    /// Output folder path name.
+    PathName = "PATHNAME", Text;
+    ToolsUsed = "TOOLS_USED", Text;
+    ToolpathsOutput = "TOOLPATHS_OUTPUT", Text;
+    FileNotes = "FILE_NOTES", Text;
+    Date = "DATE", Text;
+    Time = "TIME", Text;
+    Product = "PRODUCT", Text;
+    /// The post's output units ("MM" or "INCH").
+    UnitsText = "UNITS", Text;
+    /// Text of the current comment or insert event.
+    CommentText = "COMMENT", Text;
+}
+
+impl Quantity {
+    /// The quantity a Vectric label (case-insensitive) stands for.
+    pub fn from_label(label: &str) -> Option<Quantity> {
+        Quantity::ALL
+            .iter()
+            .copied()
+            .find(|q| q.label().eq_ignore_ascii_case(label))
+    }
+
+    /// Whether the quantity is text rather than a number.
+    pub fn is_text(self) -> bool {
+        self.dimension() == Dimension::Text
+    }
+}
