@@ -6,3 +6,5 @@
 //! - `postc-front-vcpost` (`frontends/vcpost`): Vericut VcPost posts;
 //! - `postc-front-apt` (`frontends/apt`): APT CL toolpaths;
 //! - [`native`] (here): the native toolpath stream, RON or JSON Lines.
+
+pub mod native;

@@ -69,9 +69,10 @@ pub struct Label {
 }
 
 /// One error, warning or note.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Diagnostic {
-    pub code: String,
+    /// Stable code, such as `PP012`.
+    pub code: &'static str,
     pub severity: Severity,
     pub message: String,
     pub labels: Vec<Label>,
@@ -80,9 +81,9 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    pub fn new(severity: Severity, code: &str, message: impl Into<String>) -> Diagnostic {
+    pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
-            code: code.to_string(),
+            code,
             severity,
             message: message.into(),
             labels: Vec::new(),
@@ -91,11 +92,11 @@ impl Diagnostic {
         }
     }
 
-    pub fn error(code: &str, message: impl Into<String>) -> Diagnostic {
+    pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Error, code, message)
     }
 
-    pub fn warning(code: &str, message: impl Into<String>) -> Diagnostic {
+    pub fn warning(code: &'static str, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Warning, code, message)
     }
 
@@ -300,7 +301,7 @@ impl SourceMap {
         JsonDiagnostic {
             file: span.map_or(fallback_file.to_string(), |s| self.name(s.file).to_string()),
             severity: d.severity,
-            code: d.code.clone(),
+            code: d.code.to_string(),
             message: d.message.clone(),
             line: start.map(|p| p.0),
             column: start.map(|p| p.1),
@@ -348,7 +349,7 @@ impl SourceMap {
             notes.push(format!("help: {h}"));
         }
         let diagnostic = cs::Diagnostic::new(severity)
-            .with_code(&d.code)
+            .with_code(d.code)
             .with_message(&d.message)
             .with_labels(
                 d.labels

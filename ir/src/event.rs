@@ -22,7 +22,7 @@ use crate::units::Units;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Event {
     /// Job data, once, before anything else.
-    Job(Job),
+    Job(Box<Job>),
     /// The tool for the toolpaths that follow.
     Tool(Tool),
     /// A toolpath begins.
@@ -102,6 +102,7 @@ impl Event {
 
 /// A point in space.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Point {
     pub x: f64,
     pub y: f64,
@@ -111,6 +112,7 @@ pub struct Point {
 /// Job data: what the CAM system knows about the whole program.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct Job {
     /// Units of every length and feed in the stream.
     pub units: Units,
@@ -144,6 +146,7 @@ pub struct Job {
 
 /// The material block.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Material {
     pub min: Point,
     pub max: Point,
@@ -152,6 +155,7 @@ pub struct Material {
 /// Where the origin of the job sits on the material.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct Origin {
     /// X and Y of the origin.
     pub x: f64,
@@ -174,6 +178,7 @@ pub enum ZOrigin {
 /// The output file the job is posted to.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct FileInfo {
     /// File name without folder and extension.
     pub name: String,
@@ -186,6 +191,7 @@ pub struct FileInfo {
 /// A cutting tool.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct Tool {
     pub number: u32,
     pub name: String,
@@ -210,6 +216,7 @@ pub struct Tool {
 /// A toolpath begins.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct ToolpathStart {
     pub name: String,
     pub notes: String,
@@ -217,6 +224,7 @@ pub struct ToolpathStart {
 
 /// A rapid move to an absolute position.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Move {
     pub x: f64,
     pub y: f64,
@@ -251,6 +259,7 @@ pub enum Intent {
 
 /// A straight move at feed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FeedMove {
     pub x: f64,
     pub y: f64,
@@ -302,6 +311,7 @@ pub enum Plane {
 /// the end differs from the start along the plane's normal the arc is
 /// helical.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ArcMove {
     pub dir: ArcDir,
     /// End point.
@@ -324,6 +334,7 @@ pub struct ArcMove {
 
 /// A dwell.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Dwell {
     /// Seconds, or spindle revolutions when `revolutions` is set.
     pub seconds: f64,
@@ -334,6 +345,7 @@ pub struct Dwell {
 /// Spindle start.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct Spindle {
     /// Speed in rpm (or surface speed with `css`); the tool's speed when absent.
     pub speed: Option<f64>,
@@ -347,6 +359,7 @@ pub struct Spindle {
 
 /// Jet power.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Power {
     pub value: f64,
 }
@@ -365,6 +378,7 @@ pub enum Coolant {
 /// Cutter radius compensation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct CutterComp {
     pub side: CompSide,
     /// Offset register (D word on mills).
@@ -401,6 +415,7 @@ pub enum DrillKind {
 /// A canned drilling cycle; every height is absolute.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
+#[serde(deny_unknown_fields)]
 pub struct DrillCycle {
     pub kind: DrillKind,
     /// A name the CAM system gave the cycle (CIMCO drilling operation names).
@@ -423,6 +438,7 @@ pub struct DrillCycle {
 
 /// One hole of a drilling cycle: its position at the top of the hole.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DrillPoint {
     pub x: f64,
     pub y: f64,
@@ -432,6 +448,7 @@ pub struct DrillPoint {
 
 /// Free text.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Text {
     pub text: String,
 }
@@ -439,6 +456,7 @@ pub struct Text {
 /// A post-processor word and its arguments, APT style (`AUXFUN/8,NEXT` is
 /// `word: "AUXFUN", args: [Number(8), Word("NEXT")]`).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Command {
     pub word: String,
     #[serde(default)]

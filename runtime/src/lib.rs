@@ -1,1 +1,138 @@
-//! placeholder
+//! # postc runtime
+//!
+//! Executes a post IR over a toolpath event stream and writes the NC
+//! program. The runtime reads only IR types: it never sees a dialect's
+//! syntax tree.
+//!
+//! - [`number`]: the exact, allocation-free number formatter;
+//! - [`machine`]: machine and job state in output units, and the quantities
+//!   posts print;
+//! - [`geometry`]: arcs, helices, linearization, radius-exact centres;
+//! - [`engine`]: runs handler bodies (the hot path: literal bytes and
+//!   formatted variables straight into the output buffer) and keeps modal
+//!   memory, block numbers and warnings; `interp` runs the rest of the
+//!   statement language;
+//! - [`sections`]: which section prints each event (Vectric rules);
+//! - [`output`]: sinks that write whole programs or nothing, and tape
+//!   splitting into parts.
+//!
+//! [`run`] pulls events one at a time from an [`EventSource`], so memory
+//! stays flat whatever the toolpath's length.
+
+pub mod engine;
+pub mod geometry;
+mod interp;
+pub mod machine;
+pub mod number;
+pub mod output;
+pub mod sections;
+pub mod value;
+
+use postc_ir::event::FileInfo;
+use postc_ir::{Diagnostic, Dispatch, EventSource, Post};
+
+pub use engine::Engine;
+pub use output::{Finished, Output};
+
+/// Options of one run that do not come from the post.
+#[derive(Default)]
+pub struct RunOptions {
+    /// Arc words from the printed start and end points (`--exact-arcs`).
+    pub exact_arcs: bool,
+    /// `[DATE]` and `[TIME]`, overriding the job's.
+    pub date: Option<String>,
+    pub time: Option<String>,
+    /// The output file, overriding the job's (`-o`).
+    pub file: Option<FileInfo>,
+    /// Chord tolerance in mm for linearized arcs, overriding the post's.
+    pub arc_tolerance: Option<f64>,
+    /// Called with the number of events handled, every 65536 events.
+    pub progress: Option<Box<dyn FnMut(u64)>>,
+}
+
+/// What a successful run produced.
+pub struct RunReport {
+    pub warnings: Vec<Diagnostic>,
+    pub events: u64,
+    pub blocks: u64,
+    pub bytes: u64,
+    pub output: Finished,
+}
+
+/// Runs `post` over the events of `source` into `out`. On any error the
+/// output is dropped (files are never created) and every diagnostic so far
+/// is returned.
+pub fn run<S: EventSource + ?Sized>(
+    post: &Post,
+    source: &mut S,
+    out: Output,
+    mut options: RunOptions,
+) -> Result<RunReport, Vec<Diagnostic>> {
+    let mut post_storage;
+    let mut post = post;
+    if let Some(tol) = options.arc_tolerance {
+        post_storage = post.clone();
+        post_storage.options.arc_tolerance = tol;
+        post = &post_storage;
+    }
+    if post.info.dispatch == Dispatch::AptWords {
+        return Err(vec![Diagnostic::error(
+            "RT001",
+            "this post is driven by APT words (VcPost), which this runtime cannot dispatch yet",
+        )]);
+    }
+    let mut machine = machine::Machine::new(
+        post.info.units,
+        post.options.spindle_speed_range,
+        post.options.rotary_wrap,
+    );
+    machine.date = options.date.take().unwrap_or_default();
+    machine.time = options.time.take().unwrap_or_default();
+    if let Some(f) = options.file.take() {
+        machine.file_name = f.name;
+        machine.file_dir = f.dir;
+        machine.file_ext = f.extension;
+    }
+    let mut engine = Engine::new(post, machine, out);
+    let mut dispatch = sections::SectionDispatch::new(&engine, options.exact_arcs);
+    let mut diagnostics = Vec::new();
+    let mut events = 0u64;
+    let fail = |mut diagnostics: Vec<Diagnostic>, engine: Engine| {
+        diagnostics.extend(engine.warnings);
+        Err(diagnostics)
+    };
+    while let Some((event, span)) = source.next_event(&mut diagnostics) {
+        if postc_ir::diagnostic::has_errors(&diagnostics) {
+            return fail(diagnostics, engine);
+        }
+        engine.event_span = span;
+        if let Err(d) = dispatch.event(&mut engine, event) {
+            diagnostics.push(*d);
+            return fail(diagnostics, engine);
+        }
+        events += 1;
+        if events & 0xFFFF == 0
+            && let Some(p) = options.progress.as_mut()
+        {
+            p(events);
+        }
+    }
+    if postc_ir::diagnostic::has_errors(&diagnostics) {
+        return fail(diagnostics, engine);
+    }
+    if let Err(d) = dispatch.finish(&mut engine) {
+        diagnostics.push(*d);
+        return fail(diagnostics, engine);
+    }
+    diagnostics.append(&mut engine.warnings);
+    let blocks = engine.out.blocks();
+    let bytes = engine.out.bytes();
+    let tape = post.options.tape_splitting.as_ref();
+    match engine.out.finish(tape) {
+        Ok(output) => Ok(RunReport { warnings: diagnostics, events, blocks, bytes, output }),
+        Err(e) => {
+            diagnostics.push(Diagnostic::error("IO003", format!("could not write the program: {e}")));
+            Err(diagnostics)
+        }
+    }
+}

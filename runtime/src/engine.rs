@@ -1,0 +1,278 @@
+//! The engine: runs handler bodies against the machine state and writes
+//! blocks to the output.
+//!
+//! [`Engine`] owns everything mutable in a run: the [`Machine`], the
+//! [`Output`], each variable's modal memory and value, block numbering,
+//! globals, and the collected warnings. [`Engine::run_handler`] is the hot
+//! path for Vectric sections: each [`Stmt::Line`] writes literal bytes and
+//! formats variables straight into the output buffer. The rest of the
+//! statement language (assignments, conditionals, loops, calls) is
+//! interpreted by the `interp` module on the same engine.
+
+use postc_ir::post::{Substitution, WrappedAxis};
+use postc_ir::{Diagnostic, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource};
+
+use crate::machine::Machine;
+use crate::number::NumberWriter;
+use crate::output::Output;
+use crate::value::Value;
+
+/// Per-variable run state.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct VarState {
+    /// Text printed last (prefix included), for on-change variables.
+    pub last: Vec<u8>,
+    pub has_last: bool,
+    /// Current and previous value (registers, output variables).
+    pub value: Value,
+    pub previous: Value,
+}
+
+/// Block numbering state.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BlockCounter {
+    pub next: f64,
+    pub printed: bool,
+}
+
+/// Runs a post's handlers.
+pub struct Engine<'p> {
+    pub post: &'p Post,
+    pub machine: Machine,
+    pub out: Output,
+    pub(crate) writers: Vec<NumberWriter>,
+    pub(crate) vars: Vec<VarState>,
+    /// Prefix of each variable as printed (rotary wrap may change a letter).
+    pub(crate) prefixes: Vec<Vec<u8>>,
+    pub(crate) globals: Vec<Value>,
+    pub(crate) block: BlockCounter,
+    /// Handler index of each section, if the post has it.
+    sections: Vec<Option<u16>>,
+    /// Warnings collected during the run (each said once).
+    pub warnings: Vec<Diagnostic>,
+    pub(crate) steps: u64,
+    pub(crate) depth: usize,
+    /// Where the event being handled came from.
+    pub event_span: Span,
+}
+
+impl<'p> Engine<'p> {
+    pub fn new(post: &'p Post, machine: Machine, out: Output) -> Engine<'p> {
+        let writers = post.formats.iter().map(NumberWriter::new).collect();
+        let mut sections = vec![None; Section::ALL.len()];
+        for (i, h) in post.handlers.iter().enumerate() {
+            if let HandlerKey::Section(s) = h.key {
+                sections[s as usize] = Some(i as u16);
+            }
+        }
+        let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
+        Engine {
+            post,
+            machine,
+            out,
+            writers,
+            vars: vec![VarState::default(); post.variables.len()],
+            prefixes,
+            globals: Vec::new(),
+            block: BlockCounter { next: post.options.block_numbers.start, printed: false },
+            sections,
+            warnings: Vec::new(),
+            steps: 0,
+            depth: 0,
+            event_span: Span::default(),
+        }
+    }
+
+    /// Whether the post has a handler for the section.
+    #[inline]
+    pub fn has(&self, section: Section) -> bool {
+        self.sections[section as usize].is_some()
+    }
+
+    /// Runs the section's handler; false when the post has none.
+    #[inline]
+    pub fn run_section(&mut self, section: Section) -> Result<bool, Box<Diagnostic>> {
+        match self.sections[section as usize] {
+            Some(i) => {
+                let post = self.post;
+                self.run_body(&post.handlers[i as usize].body)?;
+                Ok(true)
+            }
+            None => Ok(false),
+        }
+    }
+
+    /// Whether the section prints the given quantity (Vectric's helical
+    /// fallback asks whether an arc section prints `[Z]`).
+    pub fn section_prints(&self, section: Section, q: Quantity) -> bool {
+        let Some(i) = self.sections[section as usize] else { return false };
+        self.post.handlers[i as usize].body.iter().any(|s| match s {
+            Stmt::Line(pieces) => pieces.iter().any(|p| {
+                matches!(p, Piece::Var(v) if self.post.variables[*v as usize].source == ValueSource::Quantity(q))
+            }),
+            _ => false,
+        })
+    }
+
+    /// Forgets what every variable printed last: the next output prints every word.
+    pub fn clear_modal(&mut self) {
+        for v in &mut self.vars {
+            v.has_last = false;
+        }
+    }
+
+    /// Runs a handler body: the hot path for plain lines.
+    pub fn run_body(&mut self, body: &[Stmt]) -> Result<(), Box<Diagnostic>> {
+        for stmt in body {
+            match stmt {
+                Stmt::Line(pieces) => self.write_line(pieces)?,
+                other => {
+                    self.steps = 0;
+                    let mut frame = Vec::new();
+                    self.exec(std::slice::from_ref(other), &mut frame)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Writes one block: its pieces, then the line ending.
+    pub(crate) fn write_line(&mut self, pieces: &[Piece]) -> Result<(), Box<Diagnostic>> {
+        for piece in pieces {
+            match piece {
+                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                Piece::Var(id) => self.write_var(*id),
+                Piece::Expr(e) => {
+                    let mut frame = Vec::new();
+                    let v = self.eval(e, &mut frame)?;
+                    self.write_value_text(&v);
+                }
+            }
+        }
+        self.end_block();
+        Ok(())
+    }
+
+    /// Writes the line ending and advances block numbering.
+    pub(crate) fn end_block(&mut self) {
+        self.out.buf.extend_from_slice(&self.post.options.line_ending);
+        self.out.end_block();
+        if self.block.printed {
+            self.block.printed = false;
+            let b = self.post.options.block_numbers;
+            self.block.next += b.increment;
+            if self.block.next > b.maximum {
+                self.block.next = b.start;
+            }
+        }
+    }
+
+    pub(crate) fn write_value_text(&mut self, v: &Value) {
+        match v {
+            Value::Text(s) => self.out.buf.extend_from_slice(s.as_bytes()),
+            other => {
+                let mut s = String::new();
+                other.append_to(&mut s);
+                self.out.buf.extend_from_slice(s.as_bytes());
+            }
+        }
+    }
+
+    /// Formats a variable from its source into the output, honouring its modality.
+    #[inline]
+    pub(crate) fn write_var(&mut self, id: u16) {
+        let post = self.post;
+        let var = &post.variables[id as usize];
+        let start = self.out.buf.len();
+        match var.source {
+            ValueSource::Quantity(q) if q.is_text() => {
+                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
+                let text = self.machine.text(q);
+                substitute_into(text.as_bytes(), &post.options.substitutions, &mut self.out.buf);
+            }
+            ValueSource::Quantity(Quantity::BlockNumber) => {
+                self.block.printed = true;
+                let n = self.block.next;
+                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
+                self.writers[var.format as usize].write(n, &mut self.out.buf);
+            }
+            ValueSource::Quantity(q) => {
+                let n = self.machine.number(q);
+                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
+                self.writers[var.format as usize].write(n, &mut self.out.buf);
+            }
+            ValueSource::Assigned => {
+                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
+                match &self.vars[id as usize].value {
+                    Value::Text(s) => {
+                        let s = s.clone();
+                        substitute_into(s.as_bytes(), &post.options.substitutions, &mut self.out.buf);
+                    }
+                    v => {
+                        let n = v.num();
+                        self.writers[var.format as usize].write(n, &mut self.out.buf);
+                    }
+                }
+            }
+        }
+        self.keep_if_changed(id, start);
+    }
+
+    /// Applies a variable's modality to what was just written from `start`.
+    #[inline]
+    pub(crate) fn keep_if_changed(&mut self, id: u16, start: usize) {
+        let state = &mut self.vars[id as usize];
+        let written = &self.out.buf[start..];
+        if self.post.variables[id as usize].modality == Modality::OnChange && state.has_last && state.last == written {
+            self.out.buf.truncate(start);
+            return;
+        }
+        state.last.clear();
+        state.last.extend_from_slice(written);
+        state.has_last = true;
+    }
+
+    /// Records a warning once.
+    pub fn warn_once(&mut self, d: Diagnostic) {
+        if !self.warnings.iter().any(|w| w.code == d.code && w.message == d.message) {
+            self.warnings.push(d);
+        }
+    }
+}
+
+/// The prefix of a variable as printed: under rotary wrap, the wrapped
+/// axis's letter in its prefix becomes the rotary letter.
+fn wrapped_prefix(post: &Post, var: &postc_ir::Variable) -> Vec<u8> {
+    let mut prefix = var.prefix.clone();
+    let Some(wrap) = post.options.rotary_wrap else { return prefix };
+    let Some(letter) = wrap.letter else { return prefix };
+    let axis = match (var.source, wrap.axis) {
+        (ValueSource::Quantity(Quantity::X), WrappedAxis::X) => b'X',
+        (ValueSource::Quantity(Quantity::Y), WrappedAxis::Y) => b'Y',
+        _ => return prefix,
+    };
+    if let Some(p) = prefix.iter().position(|b| b.eq_ignore_ascii_case(&axis)) {
+        prefix[p] = letter as u8;
+    }
+    prefix
+}
+
+/// Copies text, replacing substituted characters.
+pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<u8>) {
+    if subs.is_empty() {
+        out.extend_from_slice(text);
+        return;
+    }
+    let mut i = 0;
+    'outer: while i < text.len() {
+        for s in subs {
+            if !s.from.is_empty() && text[i..].starts_with(&s.from) {
+                out.extend_from_slice(&s.to);
+                i += s.from.len();
+                continue 'outer;
+            }
+        }
+        out.push(text[i]);
+        i += 1;
+    }
+}

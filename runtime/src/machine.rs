@@ -1,0 +1,258 @@
+//! Machine state: everything the runtime knows at a moment of the toolpath,
+//! in the post's output units, and the [`Quantity`] values posts print.
+//!
+//! Events arrive in the toolpath's units; [`Machine`] converts lengths and
+//! feeds by one factor as they come in, so that every quantity is already in
+//! output units when a handler formats it.
+
+use postc_ir::event::{Job, Tool, ToolpathStart, ZOrigin};
+use postc_ir::post::{RotaryWrap, SpindleSpeedRange, WrappedAxis};
+use postc_ir::{Quantity, Units};
+
+use crate::geometry::ArcGeometry;
+
+/// The current state of the machine and the job.
+#[derive(Clone, Debug)]
+pub struct Machine {
+    /// Toolpath units to output units.
+    pub factor: f64,
+    pub output_units: Units,
+    pub job: Job,
+    pub tool: Tool,
+    pub previous_tool: Option<u32>,
+    pub toolpath: ToolpathStart,
+    /// Current position (end of the last move).
+    pub pos: [f64; 3],
+    pub rotary: [f64; 3],
+    /// Current feed rate.
+    pub feed: f64,
+    /// Inverse-time feed number of the current move.
+    pub inverse_time: f64,
+    pub spindle_speed: f64,
+    pub power: f64,
+    pub dwell: f64,
+    /// Geometry of the arc being printed.
+    pub arc: ArcGeometry,
+    pub comment: String,
+    pub date: String,
+    pub time: String,
+    /// Output file, as printed by `[TP_FILENAME]`, `[TP_DIR]`, `[TP_EXT]`.
+    pub file_name: String,
+    pub file_dir: String,
+    pub file_ext: String,
+    pub comp_register: f64,
+    pub spindle_range: Option<SpindleSpeedRange>,
+    pub wrap: Option<RotaryWrap>,
+}
+
+impl Machine {
+    pub fn new(output_units: Option<Units>, spindle_range: Option<SpindleSpeedRange>, wrap: Option<RotaryWrap>) -> Machine {
+        let units = output_units.unwrap_or_default();
+        Machine {
+            factor: 1.0,
+            output_units: units,
+            job: Job::default(),
+            tool: Tool::default(),
+            previous_tool: None,
+            toolpath: ToolpathStart::default(),
+            pos: [0.0; 3],
+            rotary: [0.0; 3],
+            feed: 0.0,
+            inverse_time: 0.0,
+            spindle_speed: 0.0,
+            power: 0.0,
+            dwell: 0.0,
+            arc: ArcGeometry::default(),
+            comment: String::new(),
+            date: String::new(),
+            time: String::new(),
+            file_name: String::new(),
+            file_dir: String::new(),
+            file_ext: String::new(),
+            comp_register: 0.0,
+            spindle_range,
+            wrap,
+        }
+    }
+
+    /// Takes the job: fixes the unit factor and converts its lengths.
+    pub fn set_job(&mut self, mut job: Job, post_units: Option<Units>) {
+        self.output_units = post_units.unwrap_or(job.units);
+        self.factor = job.units.factor_to(self.output_units);
+        let f = self.factor;
+        if let Some(m) = &mut job.material {
+            for p in [&mut m.min, &mut m.max] {
+                p.x *= f;
+                p.y *= f;
+                p.z *= f;
+            }
+        }
+        if let Some(o) = &mut job.origin {
+            o.x *= f;
+            o.y *= f;
+        }
+        if let Some(h) = &mut job.home {
+            h.x *= f;
+            h.y *= f;
+            h.z *= f;
+            self.pos = [h.x, h.y, h.z];
+        }
+        job.safe_z = job.safe_z.map(|z| z * f);
+        job.wrap_diameter = job.wrap_diameter.map(|d| d * f);
+        if self.file_name.is_empty() {
+            self.file_name.clone_from(&job.file.name);
+            self.file_dir.clone_from(&job.file.dir);
+            self.file_ext.clone_from(&job.file.extension);
+        }
+        if self.date.is_empty() {
+            self.date = job.date.clone().unwrap_or_default();
+        }
+        if self.time.is_empty() {
+            self.time = job.time.clone().unwrap_or_default();
+        }
+        self.job = job;
+    }
+
+    /// Takes a tool: converts its feeds and diameter.
+    pub fn set_tool(&mut self, mut tool: Tool) {
+        tool.diameter *= self.factor;
+        tool.cut_feed *= self.factor;
+        tool.plunge_feed *= self.factor;
+        if self.tool.number != tool.number || self.previous_tool.is_none() {
+            self.previous_tool = Some(self.tool.number);
+        }
+        self.spindle_speed = tool.spindle_speed;
+        if let Some(p) = tool.power {
+            self.power = p;
+        }
+        self.tool = tool;
+    }
+
+    /// A length in toolpath units, in output units.
+    #[inline]
+    pub fn len(&self, v: f64) -> f64 {
+        v * self.factor
+    }
+
+    /// The value of a numeric quantity.
+    pub fn number(&self, q: Quantity) -> f64 {
+        let material = self.job.material.unwrap_or_default();
+        let home = self.job.home.unwrap_or_default();
+        let origin = self.job.origin.as_ref();
+        let arc = &self.arc;
+        match q {
+            Quantity::X => self.axis_value(0),
+            Quantity::Y => self.axis_value(1),
+            Quantity::Z => self.pos[2],
+            Quantity::A => self.a_value(),
+            Quantity::B => self.rotary[1],
+            Quantity::C => self.rotary[2],
+            Quantity::I => arc.centre[0] - arc.start[0],
+            Quantity::J => arc.centre[1] - arc.start[1],
+            Quantity::K => arc.centre[2] - arc.start[2],
+            Quantity::IA => arc.centre[0],
+            Quantity::JA => arc.centre[1],
+            Quantity::KA => arc.centre[2],
+            Quantity::ArcStartX => arc.start[0],
+            Quantity::ArcStartY => arc.start[1],
+            Quantity::ArcMidX => arc.mid[0],
+            Quantity::ArcMidY => arc.mid[1],
+            Quantity::ArcMidXI => arc.mid[0] - arc.start[0],
+            Quantity::ArcMidYI => arc.mid[1] - arc.start[1],
+            Quantity::Radius => arc.radius,
+            Quantity::Angle => arc.sweep,
+            Quantity::Feed => self.feed,
+            Quantity::CutFeed => self.tool.cut_feed,
+            Quantity::PlungeFeed => self.tool.plunge_feed,
+            Quantity::InverseTimeFeed => self.inverse_time,
+            Quantity::SpindleSpeed => self.spindle_output(),
+            Quantity::Power => self.power,
+            Quantity::Tool => f64::from(self.tool.number),
+            Quantity::PreviousTool => f64::from(self.previous_tool.unwrap_or(self.tool.number)),
+            Quantity::ToolDiameter => self.tool.diameter,
+            Quantity::DwellTime => self.dwell,
+            Quantity::HomeX => home.x,
+            Quantity::HomeY => home.y,
+            Quantity::HomeZ => home.z,
+            Quantity::SafeZ => self.job.safe_z.unwrap_or(home.z),
+            Quantity::WrapDiameter => self.job.wrap_diameter.unwrap_or(0.0),
+            Quantity::XLength => material.max.x - material.min.x,
+            Quantity::YLength => material.max.y - material.min.y,
+            Quantity::ZLength => material.max.z - material.min.z,
+            Quantity::XMin => material.min.x,
+            Quantity::YMin => material.min.y,
+            Quantity::ZMin => material.min.z,
+            Quantity::XMax => material.max.x,
+            Quantity::YMax => material.max.y,
+            Quantity::ZMax => material.max.z,
+            Quantity::XOrigin => origin.map_or(0.0, |o| o.x),
+            Quantity::YOrigin => origin.map_or(0.0, |o| o.y),
+            Quantity::CompRegister => self.comp_register,
+            Quantity::LengthOffset => f64::from(self.tool.length_offset.unwrap_or(self.tool.number)),
+            Quantity::BlockNumber => 0.0,
+            // Text quantities have no number.
+            _ => 0.0,
+        }
+    }
+
+    /// The value of a text quantity.
+    pub fn text(&self, q: Quantity) -> &str {
+        match q {
+            Quantity::ZOriginText => match self.job.origin.as_ref().map(|o| o.z) {
+                Some(ZOrigin::Table) => "Table Surface",
+                _ => "Material Surface",
+            },
+            Quantity::XyOriginText => self.job.origin.as_ref().map_or("", |o| o.xy.as_str()),
+            Quantity::ToolName => &self.tool.name,
+            Quantity::ToolNotes => &self.tool.notes,
+            Quantity::ToolpathName => &self.toolpath.name,
+            Quantity::ToolpathNotes => &self.toolpath.notes,
+            Quantity::FileName => &self.file_name,
+            Quantity::FileDir | Quantity::PathName => &self.file_dir,
+            Quantity::FileExtension => &self.file_ext,
+            Quantity::FileNotes => &self.job.notes,
+            Quantity::Date => &self.date,
+            Quantity::Time => &self.time,
+            Quantity::Product => self.job.product.as_deref().unwrap_or("postc"),
+            Quantity::UnitsText => self.output_units.name(),
+            Quantity::CommentText => &self.comment,
+            _ => "",
+        }
+    }
+
+    /// X or Y, as an angle when that axis is wrapped.
+    #[inline]
+    fn axis_value(&self, axis: usize) -> f64 {
+        match self.wrap {
+            Some(w) if (w.axis == WrappedAxis::X) == (axis == 0) => self.wrap_angle(self.pos[axis], w),
+            _ => self.pos[axis],
+        }
+    }
+
+    fn a_value(&self) -> f64 {
+        match self.wrap {
+            Some(w) => self.wrap_angle(self.pos[if w.axis == WrappedAxis::X { 0 } else { 1 }], w),
+            None => self.rotary[0],
+        }
+    }
+
+    /// Degrees of rotation that unroll `distance` on the wrap cylinder.
+    fn wrap_angle(&self, distance: f64, wrap: RotaryWrap) -> f64 {
+        let d = self.job.wrap_diameter.unwrap_or(0.0);
+        if d <= 0.0 {
+            return distance;
+        }
+        let angle = distance / (std::f64::consts::PI * d) * 360.0;
+        if wrap.reversed { -angle } else { angle }
+    }
+
+    fn spindle_output(&self) -> f64 {
+        match self.spindle_range {
+            Some(r) if r.rpm_max > r.rpm_min => {
+                let t = ((self.spindle_speed - r.rpm_min) / (r.rpm_max - r.rpm_min)).clamp(0.0, 1.0);
+                (r.out_min + t * (r.out_max - r.out_min)).round()
+            }
+            _ => self.spindle_speed,
+        }
+    }
+}
