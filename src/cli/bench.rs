@@ -1,0 +1,98 @@
+//! `postc bench`: posting throughput of a post over a toolpath file or a
+//! synthetic toolpath, with a progress bar, into a sink that counts bytes.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use postc_ir::{Diagnostic, EventSource, SourceMap};
+use postc_runtime::{Output, RunOptions};
+
+use super::{DialectArg, Failed, fail, load_post, report};
+use crate::synthetic::{PATTERNS, Synthetic};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The post to measure.
+    post: PathBuf,
+    /// A toolpath to post; a synthetic one when absent.
+    toolpath: Option<PathBuf>,
+    /// Moves of the synthetic toolpath.
+    #[arg(long, default_value_t = 1_000_000)]
+    moves: u64,
+    /// Pattern of the synthetic toolpath: zigzag, arcs, mixed.
+    #[arg(long, default_value = "zigzag")]
+    pattern: String,
+    /// The post's dialect, when its extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+}
+
+/// Throughput of one run.
+pub struct Measured {
+    pub events: u64,
+    pub bytes: u64,
+    pub seconds: f64,
+}
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
+    let (mut source, total): (Box<dyn EventSource>, Option<u64>) = match &args.toolpath {
+        Some(path) => (postc_frontends::open_toolpath(path, &mut sources).map_err(|d| fail(&mut sources, d))?, None),
+        None => match Synthetic::new(&args.pattern, args.moves) {
+            Some(s) => (Box::new(s), Some(args.moves)),
+            None => {
+                return Err(fail(
+                    &mut sources,
+                    Diagnostic::error("IO007", format!("there is no toolpath pattern `{}`", args.pattern))
+                        .help(format!("patterns: {}", PATTERNS.join(", "))),
+                ));
+            }
+        },
+    };
+    let mut options = RunOptions::default();
+    if std::io::stderr().is_terminal() {
+        let bar = match total {
+            Some(n) => indicatif::ProgressBar::new(n),
+            None => indicatif::ProgressBar::new_spinner(),
+        };
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {bar:40} {pos}/{len} events {per_sec}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let progress = bar.clone();
+        options.progress = Some(Box::new(move |events| progress.set_position(events)));
+        let measured = measure(&post, &mut source, options, &mut sources)?;
+        bar.finish_and_clear();
+        print_measured(&args, &measured);
+    } else {
+        let measured = measure(&post, &mut source, options, &mut sources)?;
+        print_measured(&args, &measured);
+    }
+    Ok(())
+}
+
+fn measure(post: &postc_ir::Post, source: &mut Box<dyn EventSource>, options: RunOptions, sources: &mut SourceMap) -> Result<Measured, Failed> {
+    let start = Instant::now();
+    match postc_runtime::run(post, source, Output::discard(), options) {
+        Ok(r) => Ok(Measured { events: r.events, bytes: r.bytes, seconds: start.elapsed().as_secs_f64() }),
+        Err(diagnostics) => {
+            report::eprint(sources, &diagnostics);
+            Err(Failed)
+        }
+    }
+}
+
+fn print_measured(args: &Args, m: &Measured) {
+    let what = match &args.toolpath {
+        Some(p) => p.display().to_string(),
+        None => format!("synthetic {} toolpath of {} moves", args.pattern, args.moves),
+    };
+    println!("post:       {}", args.post.display());
+    println!("toolpath:   {what}");
+    println!("events:     {}", m.events);
+    println!("output:     {:.1} MB", m.bytes as f64 / 1e6);
+    println!("time:       {:.3} s", m.seconds);
+    println!("throughput: {:.0} moves/s ({:.1} MB/s of output)", m.events as f64 / m.seconds, m.bytes as f64 / 1e6 / m.seconds);
+}

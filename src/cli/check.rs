@@ -1,0 +1,51 @@
+//! `postc check`: lints posts and validates toolpaths, printing every
+//! diagnostic; exits 1 when any file has an error.
+
+use std::path::PathBuf;
+
+use postc_ir::{Diagnostic, SourceMap};
+
+use super::report::{self, Format};
+use super::{DialectArg, Failed};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Posts (.pp, .js, .VcPost, .ron) and toolpaths (.apt, .cl, .cls, .ron, .jsonl, ...).
+    #[arg(required = true)]
+    files: Vec<PathBuf>,
+    /// Diagnostics for people, or one JSON array of {file, severity, code, message, line, column, end_line, end_column}.
+    #[arg(long, value_enum, default_value = "human")]
+    format: Format,
+    /// The posts' dialect, when their extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+}
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let mut all: Vec<(String, Diagnostic)> = Vec::new();
+    for file in &args.files {
+        let name = file.display().to_string();
+        let diagnostics = if !file.exists() {
+            vec![Diagnostic::error("IO001", format!("`{name}` does not exist"))]
+        } else if postc_frontends::is_toolpath(file) {
+            postc_frontends::check_toolpath(file, &mut sources)
+        } else {
+            postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources).diagnostics
+        };
+        all.extend(diagnostics.into_iter().map(|d| (name.clone(), d)));
+    }
+    let errors = all.iter().filter(|(_, d)| d.is_error()).count();
+    match args.format {
+        Format::Json => println!("{}", report::json(&sources, &all)),
+        Format::Human => {
+            let diagnostics: Vec<_> = all.iter().map(|(_, d)| d.clone()).collect();
+            report::eprint(&mut sources, &diagnostics);
+            let warnings = all.len() - errors;
+            if errors > 0 || warnings > 0 {
+                eprintln!("postc: {errors} error(s), {warnings} warning(s) in {} file(s)", args.files.len());
+            }
+        }
+    }
+    if errors > 0 { Err(Failed) } else { Ok(()) }
+}

@@ -1,0 +1,34 @@
+//! `postc inspect`: prints a post's IR as RON, with a summary of which
+//! functions run as native IR and which as scripts.
+
+use std::path::PathBuf;
+
+use postc_ir::{Body, SourceMap};
+
+use super::{DialectArg, Failed, load_post};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The post to show.
+    post: PathBuf,
+    /// The post's dialect, when its extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+}
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
+    let config = ron::ser::PrettyConfig::new().struct_names(false).compact_arrays(true);
+    let text = ron::ser::to_string_pretty(&post, config).unwrap_or_else(|e| format!("// cannot print the IR: {e}"));
+    println!("// {} ({:?} dialect)", post.info.name, post.info.dialect);
+    for f in &post.functions {
+        let how = match f.body {
+            Body::Native(_) => "native",
+            Body::Script(_) => "script",
+        };
+        println!("// function {}: {how}", f.name);
+    }
+    println!("{text}");
+    Ok(())
+}

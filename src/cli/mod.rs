@@ -1,0 +1,120 @@
+//! Command-line interface: the contract of BRIEF.md.
+//!
+//! ```text
+//! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
+//! postc post    TOOLPATH                                      # embedded default post
+//! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc inspect POST                                          # the IR, as RON
+//! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
+//! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
+//! ```
+//!
+//! Exit status: 0 on success, 1 when an input has errors (after printing
+//! every diagnostic), 2 for a bad command line.
+
+mod bench;
+mod check;
+mod inspect;
+mod post;
+pub mod report;
+mod toolpath;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use postc_ir::{Dialect, Diagnostic, Post, SourceMap};
+
+/// postc: posts CNC toolpaths through Vectric, CIMCO and VcPost post processors.
+#[derive(Parser, Debug)]
+#[command(name = "postc", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Post a toolpath: POST TOOLPATH, or TOOLPATH alone with the embedded G-code post.
+    Post(post::Args),
+    /// Check posts and toolpaths; exit 1 if any has an error.
+    Check(check::Args),
+    /// Print a post's IR as RON.
+    Inspect(inspect::Args),
+    /// Measure posting throughput over a toolpath or a synthetic one.
+    Bench(bench::Args),
+    /// Toolpath utilities.
+    Toolpath {
+        #[command(subcommand)]
+        command: toolpath::Command,
+    },
+}
+
+/// Post dialects as `--dialect` names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum DialectArg {
+    Vectric,
+    Cimco,
+    Vcpost,
+    Ron,
+}
+
+impl From<DialectArg> for Dialect {
+    fn from(d: DialectArg) -> Dialect {
+        match d {
+            DialectArg::Vectric => Dialect::Vectric,
+            DialectArg::Cimco => Dialect::Cimco,
+            DialectArg::Vcpost => Dialect::VcPost,
+            DialectArg::Ron => Dialect::Ron,
+        }
+    }
+}
+
+/// Runs the command line.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Post(args) => post::run(args),
+        Command::Check(args) => check::run(args),
+        Command::Inspect(args) => inspect::run(args),
+        Command::Bench(args) => bench::run(args),
+        Command::Toolpath { command } => toolpath::run(command),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failed) => ExitCode::from(1),
+    }
+}
+
+/// A command failed; its diagnostics have been printed.
+#[derive(Debug)]
+pub struct Failed;
+
+/// Compiles a post (or the embedded default), printing its diagnostics;
+/// fails when it has errors.
+pub(crate) fn load_post(path: Option<&PathBuf>, dialect: Option<DialectArg>, sources: &mut SourceMap) -> Result<Post, Failed> {
+    let compiled = match path {
+        Some(p) => postc_frontends::compile_post(p, dialect.map(Into::into), sources),
+        None => postc_frontends::compile_post_bytes(
+            std::path::Path::new(crate::default_post::NAME),
+            crate::default_post::TEXT,
+            Some(Dialect::Vectric),
+            sources,
+        ),
+    };
+    report::eprint(sources, &compiled.diagnostics);
+    match compiled.post {
+        Some(post) if !compiled.has_errors() => Ok(post),
+        _ => {
+            let name = path.map_or(crate::default_post::NAME.into(), |p| p.display().to_string());
+            eprintln!("postc: `{name}` has errors; nothing was posted");
+            Err(Failed)
+        }
+    }
+}
+
+/// Prints one diagnostic that has no source (a bad argument, an I/O error).
+pub(crate) fn fail(sources: &mut SourceMap, d: Diagnostic) -> Failed {
+    report::eprint(sources, &[d]);
+    Failed
+}

@@ -1,0 +1,125 @@
+//! `postc post`: posts a toolpath through a post, to a file (written whole
+//! or not at all) or to standard output.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+use postc_ir::event::FileInfo;
+use postc_ir::{Diagnostic, SourceMap};
+use postc_runtime::{Finished, Output, RunOptions};
+
+use super::{DialectArg, Failed, fail, load_post, report};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// POST TOOLPATH, or just TOOLPATH to use the embedded G-code post.
+    #[arg(required = true, num_args = 1..=2, value_name = "POST TOOLPATH")]
+    files: Vec<PathBuf>,
+    /// Write the program here (tape-split parts go beside it) instead of to standard output.
+    #[arg(short, long, value_name = "OUT")]
+    output: Option<PathBuf>,
+    /// Set a job value: date, time (what [DATE] and [TIME] print), tolerance (mm, for linearized arcs).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    sets: Vec<String>,
+    /// Compute arc words from the printed start and end points, so the radius agrees at both ends.
+    #[arg(long)]
+    exact_arcs: bool,
+    /// The post's dialect, when its extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+}
+
+/// `--set` names and what they do.
+const SETTINGS: &str = "date, time, tolerance";
+
+/// Applies `--set NAME=VALUE` pairs to the run options.
+pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagnostic> {
+    for set in sets {
+        let Some((name, value)) = set.split_once('=') else {
+            return Err(Diagnostic::error("IO007", format!("`--set {set}` needs the form NAME=VALUE"))
+                .help(format!("known names: {SETTINGS}")));
+        };
+        match name.trim().to_ascii_lowercase().as_str() {
+            "date" => options.date = Some(value.to_string()),
+            "time" => options.time = Some(value.to_string()),
+            "tolerance" | "arc_tolerance" => match value.trim().parse::<f64>() {
+                Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
+                _ => return Err(Diagnostic::error("IO007", format!("`--set {set}`: the tolerance must be a positive number of mm"))),
+            },
+            other => {
+                return Err(Diagnostic::error("IO007", format!("`--set {other}` is not a setting postc knows"))
+                    .help(format!("known names: {SETTINGS}")));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.
+fn file_info(path: &Path) -> FileInfo {
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    FileInfo {
+        name: path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+        dir: absolute.parent().map(|p| p.display().to_string()).unwrap_or_default(),
+        extension: path.extension().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+    }
+}
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let (post_path, toolpath) = match args.files.as_slice() {
+        [toolpath] => (None, toolpath),
+        [post, toolpath] => (Some(post), toolpath),
+        _ => unreachable!("clap takes one or two files"),
+    };
+    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
+        return Err(fail(
+            &mut sources,
+            Diagnostic::error("IO006", format!("`{}` is not a toolpath", toolpath.display()))
+                .help("give a post and a toolpath (`postc post POST TOOLPATH`), or a toolpath alone to use the embedded G-code post"),
+        ));
+    }
+    let post = load_post(post_path, args.dialect, &mut sources)?;
+    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..RunOptions::default() };
+    apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
+    if let Some(out) = &args.output {
+        options.file = Some(file_info(out));
+    }
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
+    let out = match &args.output {
+        Some(path) => Output::file(path).map_err(|e| {
+            fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
+        })?,
+        None => {
+            if post.options.tape_splitting.is_some() {
+                report::eprint(
+                    &mut sources,
+                    &[Diagnostic::warning("IO008", "the post splits its output into parts, but there is no -o; all parts go to standard output one after the other")],
+                );
+            }
+            Output::stdout()
+        }
+    };
+    let big = std::fs::metadata(toolpath).map(|m| m.len() > (32 << 20)).unwrap_or(false);
+    if big && std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new_spinner();
+        bar.set_message("posting");
+        options.progress = Some(Box::new(move |events| bar.set_message(format!("posted {events} events"))));
+    }
+    match postc_runtime::run(&post, &mut source, out, options) {
+        Ok(report) => {
+            report::eprint(&mut sources, &report.warnings);
+            if let Finished::Files(files) = &report.output
+                && files.len() > 1
+            {
+                eprintln!("postc: wrote {} parts: {}", files.len(), files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", "));
+            }
+            Ok(())
+        }
+        Err(diagnostics) => {
+            report::eprint(&mut sources, &diagnostics);
+            eprintln!("postc: posting failed; no output was written");
+            Err(Failed)
+        }
+    }
+}
