@@ -5,6 +5,182 @@
 //! - `postc-front-cimco` (`frontends/cimco`): CIMCO CNC-Calc JavaScript posts;
 //! - `postc-front-vcpost` (`frontends/vcpost`): Vericut VcPost posts;
 //! - `postc-front-apt` (`frontends/apt`): APT CL toolpaths;
-//! - [`native`] (here): the native toolpath stream, RON or JSON Lines.
+//! - [`native`] (here): the native toolpath stream, RON or JSON Lines;
+//! - posts written directly as IR in RON (`.ron`), read here.
+//!
+//! A post's dialect comes from its extension (`.pp`, `.js`, `.VcPost`,
+//! `.ron`, any case) or, failing that, from its content; a toolpath's format
+//! from its extension (`.apt`, `.cl`, `.cls`, `.ncl`, `.clt`, `cl.tap` for
+//! APT CL; `.ron`, `.jsonl` for the native stream) or its content.
 
 pub mod native;
+
+use std::path::Path;
+
+use postc_ir::{Dialect, Diagnostic, EventSource, Post, SourceMap};
+
+/// A compiled post and everything its frontend had to say.
+pub struct Compiled {
+    /// The post, unless the file could not be read at all.
+    pub post: Option<Post>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Compiled {
+    fn failed(d: Diagnostic) -> Compiled {
+        Compiled { post: None, diagnostics: vec![d] }
+    }
+
+    /// Whether any diagnostic is an error.
+    pub fn has_errors(&self) -> bool {
+        postc_ir::diagnostic::has_errors(&self.diagnostics)
+    }
+}
+
+/// The dialect a post is written in, from its extension or its content.
+pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("pp") => return Some(Dialect::Vectric),
+        Some("js") => return Some(Dialect::Cimco),
+        Some("vcpost") => return Some(Dialect::VcPost),
+        Some("ron") => return Some(Dialect::Ron),
+        _ => {}
+    }
+    let text = String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 16)]);
+    let lower = text.to_ascii_lowercase();
+    if lower.contains("function onlinear") || lower.contains("createformat(") || lower.contains("createvariable(") {
+        Some(Dialect::Cimco)
+    } else if lower.contains("end sub") || lower.lines().any(|l| l.trim_start().starts_with("sub ")) {
+        Some(Dialect::VcPost)
+    } else if lower.lines().any(|l| l.trim_start().starts_with("begin ")) && lower.contains("post_name") {
+        Some(Dialect::Vectric)
+    } else if lower.trim_start().starts_with("(") && lower.contains("handlers") {
+        Some(Dialect::Ron)
+    } else {
+        None
+    }
+}
+
+/// Reads and compiles a post file.
+pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
+    match std::fs::read(path) {
+        Ok(bytes) => compile_post_bytes(path, &bytes, dialect, sources),
+        Err(e) => Compiled::failed(Diagnostic::error("IO001", format!("cannot read post `{}`: {e}", path.display()))),
+    }
+}
+
+/// Compiles a post from its bytes (the embedded default post, tests).
+pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
+    let Some(dialect) = dialect.or_else(|| post_dialect(path, bytes)) else {
+        return Compiled::failed(
+            Diagnostic::error("IO004", format!("cannot tell which dialect `{}` is written in", path.display()))
+                .help("name it .pp (Vectric), .js (CIMCO), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
+        );
+    };
+    match dialect {
+        Dialect::Ron => compile_ron(path, bytes, sources),
+        other => Compiled::failed(Diagnostic::error(
+            "IO005",
+            format!("the {other:?} frontend is not part of this build yet"),
+        )),
+    }
+}
+
+/// A post written directly as IR in RON.
+fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
+    let text = String::from_utf8_lossy(bytes).into_owned();
+    let file = sources.add(path.display().to_string(), text.clone());
+    match ron::from_str::<Post>(&text) {
+        Ok(post) => Compiled { post: Some(post), diagnostics: Vec::new() },
+        Err(e) => {
+            let offset = line_col_offset(&text, e.span.start.line, e.span.start.col);
+            Compiled::failed(
+                Diagnostic::error("IR001", format!("this IR post does not read: {}", e.code))
+                    .at(postc_ir::Span::new(file, offset, (offset + 1).min(text.len())), "here"),
+            )
+        }
+    }
+}
+
+fn line_col_offset(text: &str, line: usize, col: usize) -> usize {
+    let start: usize = text.split_inclusive('\n').take(line.saturating_sub(1)).map(str::len).sum();
+    (start + col.saturating_sub(1)).min(text.len())
+}
+
+/// Toolpath file formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ToolpathFormat {
+    /// The native event stream.
+    Native,
+    /// APT CL text.
+    Apt,
+}
+
+/// The format of a toolpath file, from its name or its first bytes.
+pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    if name == "cl.tap" {
+        return Some(ToolpathFormat::Apt);
+    }
+    match ext.as_deref() {
+        Some("ron" | "jsonl" | "json" | "ndjson") => return Some(ToolpathFormat::Native),
+        Some("apt" | "cl" | "cls" | "clsf" | "ncl" | "clt" | "aptsource") => return Some(ToolpathFormat::Apt),
+        _ => {}
+    }
+    let text = String::from_utf8_lossy(head);
+    let first = text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with("//"));
+    match first {
+        Some(l) if l.starts_with('{') || l.starts_with("Job(") || l.starts_with("Tool(") => Some(ToolpathFormat::Native),
+        _ => None,
+    }
+}
+
+/// Whether a path names a toolpath rather than a post. A `.ron` file is a
+/// post when it holds an IR post (it has `handlers`), else a toolpath.
+pub fn is_toolpath(path: &Path) -> bool {
+    let head = read_head(path);
+    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("pp" | "js" | "vcpost") => false,
+        Some("ron") => !looks_like_ir_post(&head),
+        _ => toolpath_format(path, &head).is_some(),
+    }
+}
+
+fn looks_like_ir_post(head: &[u8]) -> bool {
+    let text = String::from_utf8_lossy(head);
+    text.contains("handlers") && text.contains("formats")
+}
+
+fn read_head(path: &Path) -> Vec<u8> {
+    use std::io::Read;
+    let mut head = vec![0u8; 1 << 14];
+    let n = std::fs::File::open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
+    head.truncate(n);
+    head
+}
+
+/// Opens a toolpath as a stream of events.
+pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
+    if !path.exists() {
+        return Err(Diagnostic::error("IO001", format!("toolpath `{}` does not exist", path.display())));
+    }
+    match toolpath_format(path, &read_head(path)) {
+        Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
+        Some(ToolpathFormat::Apt) => Err(Diagnostic::error("IO005", "the APT CL reader is not part of this build yet")),
+        None => Err(Diagnostic::error("IO006", format!("cannot tell what kind of toolpath `{}` is", path.display()))
+            .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)")),
+    }
+}
+
+/// Reads a whole toolpath and returns every diagnostic (for `postc check`).
+pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
+    let mut source = match open_toolpath(path, sources) {
+        Ok(s) => s,
+        Err(d) => return vec![d],
+    };
+    let mut diagnostics = Vec::new();
+    while source.next_event(&mut diagnostics).is_some() {}
+    diagnostics
+}
