@@ -118,9 +118,10 @@ impl Synthetic {
             self.done_moves += 3;
             return;
         }
-        let dir = if row % 2 == 0 { 1.0 } else { -1.0 };
+        let dir = if row.is_multiple_of(2) { 1.0 } else { -1.0 };
         let [x, y, _] = self.pos;
-        let z = DEPTH - 0.25 * ((n as f64) * 0.05).sin();
+        // A triangle wave in Z: every move changes all three axes, cheaply.
+        let z = DEPTH - 0.25 * ((n % 40) as f64 / 20.0 - 1.0).abs();
         let arc = match self.pattern {
             Pattern::Arcs => true,
             Pattern::Mixed => n % 4 == 3,
@@ -128,7 +129,7 @@ impl Synthetic {
         };
         if arc {
             let ex = x + dir * 2.0 * STEP;
-            let ccw = (n / 2) % 2 == 0;
+            let ccw = (n / 2).is_multiple_of(2);
             self.queue.push_back(Event::Arc(ArcMove {
                 dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw },
                 x: ex,

@@ -53,7 +53,7 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
         Some(Dialect::Cimco)
     } else if lower.contains("end sub") || lower.lines().any(|l| l.trim_start().starts_with("sub ")) {
         Some(Dialect::VcPost)
-    } else if lower.lines().any(|l| l.trim_start().starts_with("begin ")) && lower.contains("post_name") {
+    } else if postc_front_vectric::looks_like_vectric(bytes) {
         Some(Dialect::Vectric)
     } else if lower.trim_start().starts_with("(") && lower.contains("handlers") {
         Some(Dialect::Ron)
@@ -79,6 +79,10 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
         );
     };
     match dialect {
+        Dialect::Vectric => {
+            let (post, diagnostics) = postc_front_vectric::compile(path, bytes, sources);
+            Compiled { post: Some(post), diagnostics }
+        }
         Dialect::Ron => compile_ron(path, bytes, sources),
         other => Compiled::failed(Diagnostic::error(
             "IO005",

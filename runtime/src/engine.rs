@@ -10,17 +10,20 @@
 //! interpreted by the `interp` module on the same engine.
 
 use postc_ir::post::{Substitution, WrappedAxis};
-use postc_ir::{Diagnostic, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource};
+use postc_ir::{Diagnostic, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource, Variable};
 
 use crate::machine::Machine;
-use crate::number::NumberWriter;
+use crate::number::{NumberWriter, Rounded};
 use crate::output::Output;
 use crate::value::Value;
 
 /// Per-variable run state.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct VarState {
-    /// Text printed last (prefix included), for on-change variables.
+    /// What the variable printed last, for on-change variables: the rounded
+    /// number (`key`) when it printed a number on the fast path, else the
+    /// text (`last`, prefix included, valid when `has_last`).
+    pub key: Option<Rounded>,
     pub last: Vec<u8>,
     pub has_last: bool,
     /// Current and previous value (registers, output variables).
@@ -118,6 +121,7 @@ impl<'p> Engine<'p> {
     pub fn clear_modal(&mut self) {
         for v in &mut self.vars {
             v.has_last = false;
+            v.key = None;
         }
     }
 
@@ -142,6 +146,11 @@ impl<'p> Engine<'p> {
             match piece {
                 Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
                 Piece::Var(id) => self.write_var(*id),
+                Piece::Expr(postc_ir::Expr::FormatVar { var, value }) => {
+                    let mut frame = Vec::new();
+                    let v = self.eval(value, &mut frame)?;
+                    self.write_assigned(*var, v);
+                }
                 Piece::Expr(e) => {
                     let mut frame = Vec::new();
                     let v = self.eval(e, &mut frame)?;
@@ -183,53 +192,45 @@ impl<'p> Engine<'p> {
     pub(crate) fn write_var(&mut self, id: u16) {
         let post = self.post;
         let var = &post.variables[id as usize];
-        let start = self.out.buf.len();
+        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match var.source {
             ValueSource::Quantity(q) if q.is_text() => {
-                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
-                let text = self.machine.text(q);
-                substitute_into(text.as_bytes(), &post.options.substitutions, &mut self.out.buf);
+                put_text(var, state, prefix, self.machine.text(q).as_bytes(), &post.options.substitutions, &mut self.out.buf)
             }
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
-                let n = self.block.next;
-                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
-                self.writers[var.format as usize].write(n, &mut self.out.buf);
+                let w = &self.writers[var.format as usize];
+                put_number(var, w, state, prefix, self.block.next, &mut self.out.buf);
             }
             ValueSource::Quantity(q) => {
-                let n = self.machine.number(q);
-                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
-                self.writers[var.format as usize].write(n, &mut self.out.buf);
+                let w = &self.writers[var.format as usize];
+                put_number(var, w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
-                self.out.buf.extend_from_slice(&self.prefixes[id as usize]);
-                match &self.vars[id as usize].value {
-                    Value::Text(s) => {
-                        let s = s.clone();
-                        substitute_into(s.as_bytes(), &post.options.substitutions, &mut self.out.buf);
-                    }
-                    v => {
-                        let n = v.num();
-                        self.writers[var.format as usize].write(n, &mut self.out.buf);
-                    }
-                }
+                let v = state.value.clone();
+                self.print_value(id, &v);
             }
         }
-        self.keep_if_changed(id, start);
     }
 
-    /// Applies a variable's modality to what was just written from `start`.
-    #[inline]
-    pub(crate) fn keep_if_changed(&mut self, id: u16, start: usize) {
-        let state = &mut self.vars[id as usize];
-        let written = &self.out.buf[start..];
-        if self.post.variables[id as usize].modality == Modality::OnChange && state.has_last && state.last == written {
-            self.out.buf.truncate(start);
-            return;
+    /// Gives a variable a value and prints it (CIMCO `xOutput.format(v)` in a block).
+    pub(crate) fn write_assigned(&mut self, id: u16, v: Value) {
+        self.print_value(id, &v);
+        self.set_var(id, v);
+    }
+
+    /// Prints a value through a variable's prefix, format and modality.
+    fn print_value(&mut self, id: u16, v: &Value) {
+        let post = self.post;
+        let var = &post.variables[id as usize];
+        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
+        match v {
+            Value::Text(s) => put_text(var, state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf),
+            other => {
+                let w = &self.writers[var.format as usize];
+                put_number(var, w, state, prefix, other.num(), &mut self.out.buf);
+            }
         }
-        state.last.clear();
-        state.last.extend_from_slice(written);
-        state.has_last = true;
     }
 
     /// Records a warning once.
@@ -275,4 +276,71 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
         out.push(text[i]);
         i += 1;
     }
+}
+
+/// Prints a number through a variable, unless it is on-change and prints
+/// what it printed last.
+#[inline]
+pub(crate) fn put_number(var: &Variable, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+    let modal = var.modality == Modality::OnChange;
+    match w.round(n) {
+        Some(r) => {
+            if modal {
+                match state.key {
+                    Some(k) if k == r => return,
+                    None if state.has_last => {
+                        // The last print took the slow path: compare text.
+                        let start = out.len();
+                        out.extend_from_slice(prefix);
+                        w.write_rounded(r, out);
+                        if out[start..] == state.last[..] {
+                            out.truncate(start);
+                        } else {
+                            state.has_last = false;
+                            state.key = Some(r);
+                        }
+                        return;
+                    }
+                    _ => {}
+                }
+            }
+            state.key = Some(r);
+            state.has_last = false;
+            w.write_rounded_after(prefix, r, out);
+        }
+        None => {
+            if let Some(k) = state.key.take() {
+                state.last.clear();
+                state.last.extend_from_slice(prefix);
+                w.write_rounded(k, &mut state.last);
+                state.has_last = true;
+            }
+            let start = out.len();
+            out.extend_from_slice(prefix);
+            w.write(n, out);
+            keep_if_changed(var, state, start, out);
+        }
+    }
+}
+
+/// Prints text through a variable, unless it is on-change and prints what
+/// it printed last.
+pub(crate) fn put_text(var: &Variable, state: &mut VarState, prefix: &[u8], text: &[u8], subs: &[Substitution], out: &mut Vec<u8>) {
+    state.key = None;
+    let start = out.len();
+    out.extend_from_slice(prefix);
+    substitute_into(text, subs, out);
+    keep_if_changed(var, state, start, out);
+}
+
+/// Applies a variable's modality to what was just written from `start`.
+fn keep_if_changed(var: &Variable, state: &mut VarState, start: usize, out: &mut Vec<u8>) {
+    let written = &out[start..];
+    if var.modality == Modality::OnChange && state.has_last && state.last == written {
+        out.truncate(start);
+        return;
+    }
+    state.last.clear();
+    state.last.extend_from_slice(written);
+    state.has_last = true;
 }

@@ -7,9 +7,9 @@
 
 use std::rc::Rc;
 
-use postc_ir::{BinaryOp, Body, Builtin, Diagnostic, Expr, Modality, Place, Quantity, Stmt, UnaryOp, ValueSource};
+use postc_ir::{BinaryOp, Body, Builtin, Diagnostic, Expr, Place, Quantity, Stmt, UnaryOp, ValueSource};
 
-use crate::engine::{Engine, substitute_into};
+use crate::engine::{Engine, put_number, put_text};
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -235,18 +235,12 @@ impl Engine<'_> {
         let post = self.post;
         let var = &post.variables[id as usize];
         let mut buf = Vec::with_capacity(16);
-        buf.extend_from_slice(&self.prefixes[id as usize]);
+        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match &v {
-            Value::Text(s) => substitute_into(s.as_bytes(), &post.options.substitutions, &mut buf),
-            other => self.writers[var.format as usize].write(other.num(), &mut buf),
+            Value::Text(s) => put_text(var, state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf),
+            other => put_number(var, &self.writers[var.format as usize], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
-        let state = &mut self.vars[id as usize];
-        if var.modality == Modality::OnChange && state.has_last && state.last == buf {
-            return Value::text("");
-        }
-        state.last.clone_from(&buf);
-        state.has_last = true;
         Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
     }
 

@@ -26,8 +26,10 @@ pub struct Machine {
     pub rotary: [f64; 3],
     /// Current feed rate.
     pub feed: f64,
-    /// Inverse-time feed number of the current move.
-    pub inverse_time: f64,
+    /// Start of the current move, and its length when it is not straight
+    /// (arcs), for the inverse-time feed number.
+    pub move_from: [f64; 3],
+    pub move_length: Option<f64>,
     pub spindle_speed: f64,
     pub power: f64,
     pub dwell: f64,
@@ -41,6 +43,9 @@ pub struct Machine {
     pub file_dir: String,
     pub file_ext: String,
     pub comp_register: f64,
+    /// `[TOOLS_USED]` and `[TOOLPATHS_OUTPUT]`: the job's lists, joined.
+    pub tools_used: String,
+    pub toolpaths_output: String,
     pub spindle_range: Option<SpindleSpeedRange>,
     pub wrap: Option<RotaryWrap>,
 }
@@ -58,7 +63,8 @@ impl Machine {
             pos: [0.0; 3],
             rotary: [0.0; 3],
             feed: 0.0,
-            inverse_time: 0.0,
+            move_from: [0.0; 3],
+            move_length: None,
             spindle_speed: 0.0,
             power: 0.0,
             dwell: 0.0,
@@ -70,6 +76,8 @@ impl Machine {
             file_dir: String::new(),
             file_ext: String::new(),
             comp_register: 0.0,
+            tools_used: String::new(),
+            toolpaths_output: String::new(),
             spindle_range,
             wrap,
         }
@@ -110,6 +118,8 @@ impl Machine {
         if self.time.is_empty() {
             self.time = job.time.clone().unwrap_or_default();
         }
+        self.tools_used = job.tools.join(", ");
+        self.toolpaths_output = job.toolpaths.join(", ");
         self.job = job;
     }
 
@@ -136,10 +146,10 @@ impl Machine {
 
     /// The value of a numeric quantity.
     pub fn number(&self, q: Quantity) -> f64 {
-        let material = self.job.material.unwrap_or_default();
-        let home = self.job.home.unwrap_or_default();
-        let origin = self.job.origin.as_ref();
         let arc = &self.arc;
+        let material = || self.job.material.unwrap_or_default();
+        let home = || self.job.home.unwrap_or_default();
+        let origin = || self.job.origin.as_ref();
         match q {
             Quantity::X => self.axis_value(0),
             Quantity::Y => self.axis_value(1),
@@ -164,29 +174,29 @@ impl Machine {
             Quantity::Feed => self.feed,
             Quantity::CutFeed => self.tool.cut_feed,
             Quantity::PlungeFeed => self.tool.plunge_feed,
-            Quantity::InverseTimeFeed => self.inverse_time,
+            Quantity::InverseTimeFeed => self.inverse_time(),
             Quantity::SpindleSpeed => self.spindle_output(),
             Quantity::Power => self.power,
             Quantity::Tool => f64::from(self.tool.number),
             Quantity::PreviousTool => f64::from(self.previous_tool.unwrap_or(self.tool.number)),
             Quantity::ToolDiameter => self.tool.diameter,
             Quantity::DwellTime => self.dwell,
-            Quantity::HomeX => home.x,
-            Quantity::HomeY => home.y,
-            Quantity::HomeZ => home.z,
-            Quantity::SafeZ => self.job.safe_z.unwrap_or(home.z),
+            Quantity::HomeX => home().x,
+            Quantity::HomeY => home().y,
+            Quantity::HomeZ => home().z,
+            Quantity::SafeZ => self.job.safe_z.unwrap_or(home().z),
             Quantity::WrapDiameter => self.job.wrap_diameter.unwrap_or(0.0),
-            Quantity::XLength => material.max.x - material.min.x,
-            Quantity::YLength => material.max.y - material.min.y,
-            Quantity::ZLength => material.max.z - material.min.z,
-            Quantity::XMin => material.min.x,
-            Quantity::YMin => material.min.y,
-            Quantity::ZMin => material.min.z,
-            Quantity::XMax => material.max.x,
-            Quantity::YMax => material.max.y,
-            Quantity::ZMax => material.max.z,
-            Quantity::XOrigin => origin.map_or(0.0, |o| o.x),
-            Quantity::YOrigin => origin.map_or(0.0, |o| o.y),
+            Quantity::XLength => material().max.x - material().min.x,
+            Quantity::YLength => material().max.y - material().min.y,
+            Quantity::ZLength => material().max.z - material().min.z,
+            Quantity::XMin => material().min.x,
+            Quantity::YMin => material().min.y,
+            Quantity::ZMin => material().min.z,
+            Quantity::XMax => material().max.x,
+            Quantity::YMax => material().max.y,
+            Quantity::ZMax => material().max.z,
+            Quantity::XOrigin => origin().map_or(0.0, |o| o.x),
+            Quantity::YOrigin => origin().map_or(0.0, |o| o.y),
             Quantity::CompRegister => self.comp_register,
             Quantity::LengthOffset => f64::from(self.tool.length_offset.unwrap_or(self.tool.number)),
             Quantity::BlockNumber => 0.0,
@@ -211,6 +221,8 @@ impl Machine {
             Quantity::FileDir | Quantity::PathName => &self.file_dir,
             Quantity::FileExtension => &self.file_ext,
             Quantity::FileNotes => &self.job.notes,
+            Quantity::ToolsUsed => &self.tools_used,
+            Quantity::ToolpathsOutput => &self.toolpaths_output,
             Quantity::Date => &self.date,
             Quantity::Time => &self.time,
             Quantity::Product => self.job.product.as_deref().unwrap_or("postc"),
@@ -218,6 +230,15 @@ impl Machine {
             Quantity::CommentText => &self.comment,
             _ => "",
         }
+    }
+
+    /// Feed number of inverse-time mode: one over the move's time in minutes.
+    fn inverse_time(&self) -> f64 {
+        let length = self.move_length.unwrap_or_else(|| {
+            let d = [0, 1, 2].map(|i| self.pos[i] - self.move_from[i]);
+            (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+        });
+        if length > 0.0 { self.feed / length } else { 0.0 }
     }
 
     /// X or Y, as an angle when that axis is wrapped.

@@ -8,8 +8,10 @@
 //!
 //! The fast path scales by a power of ten and rounds in floating point; it is
 //! exact whenever the scaled value is not within a few ulps of a rounding
-//! tie. Near a tie (and for magnitudes past 2^52) the slow path takes the
-//! shortest decimal digits of the double and rounds them as decimal text.
+//! tie. Near a tie it compares the value with the double nearest to the
+//! decimal tie point, which decides exactly on the decimal value. Past 2^52
+//! (and for non-finite values) the slow path takes the shortest decimal
+//! digits of the double and rounds them as decimal text.
 //! Either way the digits land in a stack buffer and are appended to the
 //! caller's output; nothing is allocated once the output has capacity.
 
@@ -46,6 +48,8 @@ pub struct NumberWriter {
     mark_len: usize,
     multiplier: f64,
     prefix: Vec<u8>,
+    /// Nothing to pad or trim: the fast right-to-left writer applies.
+    plain: bool,
 }
 
 impl NumberWriter {
@@ -68,6 +72,7 @@ impl NumberWriter {
             mark_len,
             multiplier: if format.multiplier.is_finite() { format.multiplier } else { 1.0 },
             prefix: format.prefix.as_bytes().to_vec(),
+            plain: format.width <= 1 && !format.trim_zeros,
         }
     }
 
@@ -83,7 +88,13 @@ impl NumberWriter {
     /// to the printed decimals, and divided back.
     pub fn printed_value(&self, value: f64) -> f64 {
         let mut digits = Digits::new();
-        let negative = digits.round(value * self.multiplier, self.decimals, self.scale);
+        let negative = match self.round(value) {
+            Some(r) => {
+                digits.fill_scaled_integer(r.m, self.decimals);
+                r.negative
+            }
+            None => digits.round(value * self.multiplier, self.decimals),
+        };
         let mut v = 0.0;
         for &d in digits.integer() {
             v = v * 10.0 + f64::from(d - b'0');
@@ -97,12 +108,121 @@ impl NumberWriter {
         if self.multiplier != 0.0 { v / self.multiplier } else { v }
     }
 
+    /// Rounds a value on the fast path: its sign and its magnitude in units
+    /// of the last printed decimal. `None` past 2^52 or for non-finite
+    /// values, which take the slow path. Two values with the same key print
+    /// the same text, so modal memory can compare keys instead of text.
+    #[inline]
+    pub fn round(&self, value: f64) -> Option<Rounded> {
+        let value = value * self.multiplier;
+        let magnitude = value.abs();
+        let scaled = magnitude * self.scale;
+        // NaN and infinities fail this test too.
+        if scaled.is_nan() || scaled >= 4.5e15 {
+            return None;
+        }
+        // Truncation is the floor of a non-negative value, without a libm call.
+        let floor = scaled as u64;
+        let frac = scaled - floor as f64;
+        let margin = 8.0 * f64::EPSILON * scaled.max(1.0);
+        let up = if (frac - 0.5).abs() > margin {
+            frac > 0.5
+        } else {
+            // Near a tie. The tie point t = (2k+1) / (2·10^d) is a decimal
+            // with d+1 digits; dividing two exact integers gives the double
+            // nearest to it. If that double is the value, the value's
+            // shortest decimal form is t itself (a tie: round away from
+            // zero); otherwise its shortest form lies on the value's side
+            // of t.
+            let tie = (2 * floor + 1) as f64 / (2.0 * self.scale);
+            magnitude >= tie
+        };
+        let m = floor + u64::from(up);
+        Some(Rounded { negative: value < 0.0 && m != 0, m })
+    }
+
     /// Appends the formatted value (prefix included) to `out`.
+    #[inline]
     pub fn write(&self, value: f64, out: &mut Vec<u8>) {
+        match self.round(value) {
+            Some(r) => self.write_rounded(r, out),
+            None => self.write_slow(value, out),
+        }
+    }
+
+    /// Appends a value rounded by [`NumberWriter::round`].
+    #[inline]
+    pub fn write_rounded(&self, r: Rounded, out: &mut Vec<u8>) {
+        self.write_rounded_after(&[], r, out);
+    }
+
+    /// Appends `prefix` and then a value rounded by [`NumberWriter::round`].
+    #[inline]
+    pub fn write_rounded_after(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
+        if self.plain && prefix.len() + self.prefix.len() <= 16 {
+            self.write_plain(prefix, r, out);
+            return;
+        }
+        let mut tmp = [b'0'; 24];
+        let n = write_digits(r.m, &mut tmp);
+        // At least one integer digit before the fraction.
+        let start = n.min(24 - self.decimals - 1);
+        let digits = &tmp[start..];
+        let int_len = digits.len() - self.decimals;
+        self.emit(prefix, r.negative, &digits[..int_len], &digits[int_len..], out);
+    }
+
+    /// The common case: no width to fill, no zeros to trim. The word is
+    /// written right to left into one stack buffer and appended at once.
+    #[inline]
+    fn write_plain(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
+        let mut buf = [0u8; 64];
+        let mut i = buf.len();
+        let mut m = r.m;
+        for _ in 0..self.decimals {
+            i -= 1;
+            buf[i] = b'0' + (m % 10) as u8;
+            m /= 10;
+        }
+        if self.decimals > 0 || self.point_always {
+            for &b in self.mark[..self.mark_len].iter().rev() {
+                i -= 1;
+                buf[i] = b;
+            }
+        }
+        if m > 0 || self.leading_zero || self.decimals == 0 {
+            let mut tmp = [b'0'; 24];
+            let n = write_digits(m, &mut tmp);
+            for &b in tmp[n..].iter().rev() {
+                i -= 1;
+                buf[i] = b;
+            }
+        }
+        if r.negative {
+            i -= 1;
+            buf[i] = b'-';
+        } else if self.sign_always {
+            i -= 1;
+            buf[i] = b'+';
+        }
+        for &b in self.prefix.iter().rev().chain(prefix.iter().rev()) {
+            i -= 1;
+            buf[i] = b;
+        }
+        out.extend_from_slice(&buf[i..]);
+    }
+
+    fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
         let mut digits = Digits::new();
-        let negative = digits.round(value * self.multiplier, self.decimals, self.scale);
-        let integer = digits.integer();
-        let mut fraction = digits.fraction();
+        let negative = digits.round(value * self.multiplier, self.decimals);
+        self.emit(&[], negative, digits.integer(), digits.fraction(), out);
+    }
+
+    /// Writes `extra` (a variable's prefix), the format's prefix, sign,
+    /// digits, mark and padding: assembled on the stack and appended at once.
+    #[inline]
+    fn emit(&self, extra: &[u8], negative: bool, integer: &[u8], fraction: &[u8], out: &mut Vec<u8>) {
+        let mut fraction = fraction;
         if self.trim_zeros {
             while let [rest @ .., b'0'] = fraction {
                 fraction = rest;
@@ -116,35 +236,138 @@ impl NumberWriter {
         };
         let integer: &[u8] = if !self.leading_zero && integer == b"0" && !fraction.is_empty() { b"" } else { integer };
         let point = !fraction.is_empty() || self.point_always;
-        let mark = &self.mark[..self.mark_len];
-
-        out.extend_from_slice(&self.prefix);
-        let core_len = sign.len() + integer.len() + if point { mark.len() } else { 0 } + fraction.len();
+        let mark = &self.mark[..if point { self.mark_len } else { 0 }];
+        let core_len = sign.len() + integer.len() + mark.len() + fraction.len();
         let (int_pad, outer_pad) = if self.integer_width {
             (self.width.saturating_sub(integer.len()), 0)
         } else {
             (0, self.width.saturating_sub(core_len))
         };
+        let total = extra.len() + self.prefix.len() + core_len + int_pad + outer_pad;
+        let mut buf = StackBuf::new();
+        if total > buf.room() {
+            // Huge widths or prefixes: assemble on the heap.
+            let mut v = Vec::with_capacity(total);
+            self.assemble(extra, sign, integer, mark, fraction, int_pad, outer_pad, &mut |b: &[u8]| v.extend_from_slice(b));
+            out.extend_from_slice(&v);
+            return;
+        }
+        self.assemble(extra, sign, integer, mark, fraction, int_pad, outer_pad, &mut |b: &[u8]| buf.push(b));
+        out.extend_from_slice(buf.as_slice());
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    fn assemble(
+        &self,
+        extra: &[u8],
+        sign: &[u8],
+        integer: &[u8],
+        mark: &[u8],
+        fraction: &[u8],
+        int_pad: usize,
+        outer_pad: usize,
+        put: &mut impl FnMut(&[u8]),
+    ) {
+        const SPACES: [u8; 255] = [b' '; 255];
+        const ZEROS: [u8; 255] = [b'0'; 255];
+        put(extra);
+        put(&self.prefix);
         let pad_zeros = self.zero_pad && !self.left;
         if !self.left && !pad_zeros {
-            out.extend(std::iter::repeat_n(b' ', outer_pad));
+            put(&SPACES[..outer_pad.min(255)]);
         }
-        out.extend_from_slice(sign);
+        put(sign);
         if pad_zeros {
-            out.extend(std::iter::repeat_n(b'0', outer_pad));
+            put(&ZEROS[..outer_pad.min(255)]);
         }
-        let int_fill = if self.zero_pad { b'0' } else { b' ' };
-        out.extend(std::iter::repeat_n(int_fill, int_pad));
-        out.extend_from_slice(integer);
-        if point {
-            out.extend_from_slice(mark);
+        if self.zero_pad {
+            put(&ZEROS[..int_pad.min(255)]);
+        } else {
+            put(&SPACES[..int_pad.min(255)]);
         }
-        out.extend_from_slice(fraction);
+        put(integer);
+        put(mark);
+        put(fraction);
         if self.left {
-            out.extend(std::iter::repeat_n(b' ', outer_pad));
+            put(&SPACES[..outer_pad.min(255)]);
         }
     }
 }
+
+/// A small stack buffer for one formatted word.
+struct StackBuf {
+    buf: [u8; 96],
+    len: usize,
+}
+
+impl StackBuf {
+    #[inline]
+    fn new() -> StackBuf {
+        StackBuf { buf: [0; 96], len: 0 }
+    }
+
+    #[inline]
+    fn room(&self) -> usize {
+        self.buf.len()
+    }
+
+    #[inline]
+    fn push(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.buf[self.len] = b;
+            self.len += 1;
+        }
+    }
+
+    #[inline]
+    fn as_slice(&self) -> &[u8] {
+        &self.buf[..self.len]
+    }
+}
+
+/// A value rounded to a format's decimals: sign and magnitude in units of
+/// the last decimal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rounded {
+    pub negative: bool,
+    pub m: u64,
+}
+
+/// Writes the decimal digits of `m` at the end of `tmp`; returns where they start.
+#[inline]
+fn write_digits(mut m: u64, tmp: &mut [u8; 24]) -> usize {
+    let mut n = 24;
+    while m >= 100 {
+        let d = (m % 100) as usize * 2;
+        m /= 100;
+        n -= 2;
+        tmp[n] = PAIRS[d];
+        tmp[n + 1] = PAIRS[d + 1];
+    }
+    if m >= 10 {
+        let d = m as usize * 2;
+        n -= 2;
+        tmp[n] = PAIRS[d];
+        tmp[n + 1] = PAIRS[d + 1];
+    } else {
+        n -= 1;
+        tmp[n] = b'0' + m as u8;
+    }
+    n
+}
+
+/// Two-digit pairs "00" to "99".
+static PAIRS: [u8; 200] = {
+    let mut t = [0u8; 200];
+    let mut i = 0;
+    while i < 100 {
+        t[2 * i] = b'0' + (i / 10) as u8;
+        t[2 * i + 1] = b'0' + (i % 10) as u8;
+        i += 1;
+    }
+    t
+};
 
 /// The rounded digits of one number: integer digits then exactly
 /// `decimals` fraction digits, as ASCII.
@@ -167,25 +390,13 @@ impl Digits {
         &self.buf[self.int_len..self.len]
     }
 
-    /// Rounds `value` half away from zero to `decimals` places; returns
-    /// whether it is negative. Non-finite values print as zero.
-    fn round(&mut self, value: f64, decimals: usize, scale: f64) -> bool {
+    /// Rounds `value` half away from zero to `decimals` places on its
+    /// shortest decimal digits; returns whether it is negative. Non-finite
+    /// values print as zero.
+    fn round(&mut self, value: f64, decimals: usize) -> bool {
         let value = if value.is_finite() { value } else { 0.0 };
         let negative = value.is_sign_negative() && value != 0.0;
-        let magnitude = value.abs();
-        let scaled = magnitude * scale;
-        // Fast path: far from a tie, the double's rounding decides nothing.
-        if scaled < 4.5e15 {
-            let floor = scaled.floor();
-            let frac = scaled - floor;
-            let margin = 8.0 * f64::EPSILON * scaled.max(1.0);
-            if (frac - 0.5).abs() > margin {
-                let m = floor as u64 + u64::from(frac > 0.5);
-                self.fill_scaled_integer(m, decimals);
-                return negative;
-            }
-        }
-        self.fill_shortest_decimal(magnitude, decimals);
+        self.fill_shortest_decimal(value.abs(), decimals);
         negative
     }
 

@@ -316,8 +316,8 @@ impl SectionDispatch {
             other => other,
         };
         let feed = Self::feed_for(eng, intent, feed);
-        let length = dist(pos, target);
-        eng.machine.inverse_time = if length > 0.0 { feed / length } else { 0.0 };
+        eng.machine.move_from = pos;
+        eng.machine.move_length = None;
         eng.machine.pos = target;
         let first_run = |fam: Family, s: &Self| s.family != fam || s.last_feed != Some(feed);
         let (family, section) = match intent {
@@ -376,7 +376,8 @@ impl SectionDispatch {
         };
         let feed = Self::feed_for(eng, a.intent, feed);
         eng.machine.arc = if self.exact_arcs { self.exact(eng, &geometry, a.dir) } else { geometry };
-        eng.machine.inverse_time = if geometry.length() > 0.0 { feed / geometry.length() } else { 0.0 };
+        eng.machine.move_from = start;
+        eng.machine.move_length = Some(geometry.length());
         eng.machine.pos = end;
         self.print_feed_section(eng, family, Some(section), feed)?;
         self.after_move(eng, false)
@@ -536,8 +537,4 @@ fn pick(eng: &Engine, first_section: Section, plain: Section, first: bool) -> Op
 
 fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
     (a[0] - b[0]).abs() <= 1e-9 && (a[1] - b[1]).abs() <= 1e-9
-}
-
-fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
 }

@@ -1,0 +1,156 @@
+//! `POST_BASE`: a post may name another post in its folder whose statements
+//! apply first. This module reads the chain of bases (each one decoded,
+//! registered in the source map and parsed), stopping with a warning when a
+//! base cannot be read, when the chain loops back, or when it is deeper than
+//! [`MAX_DEPTH`].
+
+use std::path::{Path, PathBuf};
+
+use postc_ir::{Diagnostic, SourceMap, Span};
+
+use crate::ast::{ItemKind, PostFile, Value, VarBody};
+use crate::decode::{Encoding, decode};
+use crate::diagnostics::Code;
+use crate::names::GlobalName;
+use crate::parser::parse;
+
+/// The most bases a chain may have.
+pub const MAX_DEPTH: usize = 8;
+
+/// One parsed file of the chain.
+pub struct Loaded {
+    pub ast: PostFile,
+    pub encoding: Encoding,
+    pub path: PathBuf,
+}
+
+/// Decodes, registers and parses one file.
+fn load(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mut Vec<Diagnostic>) -> Loaded {
+    let (text, encoding) = decode(bytes);
+    let file = sources.add(path.display().to_string(), text);
+    let (ast, parse_diags) = parse(sources.text(file).unwrap_or(""), file);
+    diags.extend(parse_diags);
+    Loaded {
+        ast,
+        encoding,
+        path: path.to_path_buf(),
+    }
+}
+
+/// The file named by the last `POST_BASE` of a post, and where it is named.
+fn post_base(ast: &PostFile) -> Option<(String, Span)> {
+    let mut found = None;
+    for item in &ast.items {
+        let (name, values) = match &item.kind {
+            ItemKind::Global(g) => (&g.name, &g.values),
+            ItemKind::Var(v) => match (&v.name, &v.body) {
+                (Some(name), VarBody::Values(values)) => (name, values),
+                _ => continue,
+            },
+            _ => continue,
+        };
+        if GlobalName::from_name(&name.value) != Some(GlobalName::PostBase) {
+            continue;
+        }
+        if let [value] = values.as_slice() {
+            let text = match &value.value {
+                Value::Text(q) => q.plain(),
+                Value::Word(w) => w.clone(),
+                Value::Number(_) => continue,
+            };
+            if !text.trim().is_empty() {
+                found = Some((text.trim().to_string(), value.span));
+            }
+        }
+    }
+    found
+}
+
+/// The base file: next to the post, matched without regard to letter case
+/// when the exact name is not there (Windows posts name files loosely).
+fn resolve(post: &Path, name: &str) -> PathBuf {
+    let folder = post.parent().unwrap_or(Path::new(""));
+    let exact = folder.join(name);
+    if exact.exists() {
+        return exact;
+    }
+    let (Some(file_name), Some(parent)) = (exact.file_name(), exact.parent()) else {
+        return exact;
+    };
+    let wanted = file_name.to_string_lossy().into_owned();
+    let parent = parent.to_path_buf();
+    let lookup = if parent.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        parent.as_path()
+    };
+    let Ok(entries) = std::fs::read_dir(lookup) else {
+        return exact;
+    };
+    let found = entries.flatten().find(|e| {
+        e.file_name()
+            .to_string_lossy()
+            .eq_ignore_ascii_case(&wanted)
+    });
+    found.map_or(exact, |e| parent.join(e.file_name()))
+}
+
+/// The post and its bases, the deepest base first.
+pub fn load_chain(
+    path: &Path,
+    bytes: &[u8],
+    sources: &mut SourceMap,
+    diags: &mut Vec<Diagnostic>,
+) -> Vec<Loaded> {
+    let mut chain = vec![load(path, bytes, sources, diags)];
+    let mut seen = vec![std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())];
+    while let Some(current) = chain.last() {
+        let Some((name, at)) = post_base(&current.ast) else {
+            break;
+        };
+        let base = resolve(&current.path, &name);
+        let canonical = std::fs::canonicalize(&base).unwrap_or_else(|_| base.clone());
+        if seen.contains(&canonical) {
+            diags.push(
+                Code::BaseChain
+                    .diag(format!("POST_BASE \"{name}\" leads back to a post already read; the chain stops here"))
+                    .at(at, "loops back"),
+            );
+            break;
+        }
+        if chain.len() > MAX_DEPTH {
+            diags.push(
+                Code::BaseChain
+                    .diag(format!(
+                        "more than {MAX_DEPTH} POST_BASE files in a chain; the chain stops here"
+                    ))
+                    .at(at, "too deep"),
+            );
+            break;
+        }
+        match std::fs::read(&base) {
+            Ok(bytes) => {
+                seen.push(canonical);
+                let loaded = load(&base, &bytes, sources, diags);
+                chain.push(loaded);
+            }
+            Err(error) => {
+                let why = match error.kind() {
+                    std::io::ErrorKind::NotFound => "there is no such file",
+                    std::io::ErrorKind::PermissionDenied => "permission denied",
+                    _ => "the file cannot be read",
+                };
+                diags.push(
+                    Code::MissingBase
+                        .diag(format!("cannot read the POST_BASE file {}: {why}", base.display()))
+                        .at(at, "base post not found")
+                        .note("the post compiles without its base: sections, VARs and statements of the base are missing")
+                        .help("put the base post in the same folder as this post"),
+                );
+                break;
+            }
+        }
+    }
+    chain.reverse();
+    chain
+}
