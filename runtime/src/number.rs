@@ -9,7 +9,7 @@
 //! The fast path scales by a power of ten and rounds in floating point; it is
 //! exact whenever the scaled value is not within a few ulps of a rounding
 //! tie. Near a tie it compares the value with the double nearest to the
-//! decimal tie point, which decides exactly on the decimal value. Past 2^52
+//! decimal tie point, which decides exactly on the decimal value. Past 1e14 scaled
 //! (and for non-finite values) the slow path takes the shortest decimal
 //! digits of the double and rounds them as decimal text.
 //! Either way the digits land in a stack buffer and are appended to the
@@ -24,6 +24,9 @@ const POW10: [f64; 23] = [
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
     1e20, 1e21, 1e22,
 ];
+
+/// Scaled magnitudes below this round on the fast path.
+const FAST_LIMIT: f64 = 1e14;
 
 /// Decimals are capped here; no controller reads more.
 pub const MAX_DECIMALS: u8 = 15;
@@ -109,7 +112,7 @@ impl NumberWriter {
     }
 
     /// Rounds a value on the fast path: its sign and its magnitude in units
-    /// of the last printed decimal. `None` past 2^52 or for non-finite
+    /// of the last printed decimal. `None` past 1e14 scaled or for non-finite
     /// values, which take the slow path. Two values with the same key print
     /// the same text, so modal memory can compare keys instead of text.
     #[inline]
@@ -117,8 +120,10 @@ impl NumberWriter {
         let value = value * self.multiplier;
         let magnitude = value.abs();
         let scaled = magnitude * self.scale;
-        // NaN and infinities fail this test too.
-        if scaled.is_nan() || scaled >= 4.5e15 {
+        // Below 1e14 the scaled double is within 1/64 of the exact product,
+        // so its floor is right and a tie is recognisable. NaN and
+        // infinities take the slow path too.
+        if scaled.is_nan() || scaled >= FAST_LIMIT {
             return None;
         }
         // Truncation is the floor of a non-negative value, without a libm call.
