@@ -103,20 +103,20 @@ impl Synthetic {
         self.pos = [0.0, 0.0, DEPTH];
     }
 
-    /// The next body move (and, between rows, the retract and re-entry).
-    fn body_move(&mut self) {
+    /// The next body move; between rows, the retract and re-entry go to
+    /// the queue and the first of them is returned.
+    fn body_move(&mut self) -> Event {
         let n = self.done_moves;
         let row = n / ROW;
         let col = n % ROW;
         if col == 0 && n > 0 {
             // Retract, move over, plunge: three moves of the budget.
             let [x, y, _] = self.pos;
-            self.queue.push_back(Event::Rapid(Move { x, y, z: SAFE, ..Move::default() }));
             self.queue.push_back(Event::Rapid(Move { x, y: y + STEP, z: SAFE, ..Move::default() }));
             self.queue.push_back(Event::Feed(FeedMove { x, y: y + STEP, z: DEPTH, intent: Intent::Plunge, ..FeedMove::default() }));
             self.pos = [x, y + STEP, DEPTH];
             self.done_moves += 3;
-            return;
+            return Event::Rapid(Move { x, y, z: SAFE, ..Move::default() });
         }
         let dir = if row.is_multiple_of(2) { 1.0 } else { -1.0 };
         let [x, y, _] = self.pos;
@@ -127,27 +127,28 @@ impl Synthetic {
             Pattern::Mixed => n % 4 == 3,
             _ => false,
         };
+        self.done_moves += 1;
         if arc {
             let ex = x + dir * 2.0 * STEP;
             let ccw = (n / 2).is_multiple_of(2);
-            self.queue.push_back(Event::Arc(ArcMove {
+            let z = self.pos[2];
+            self.pos = [ex, y, z];
+            Event::Arc(ArcMove {
                 dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw },
                 x: ex,
                 y,
-                z: self.pos[2],
+                z,
                 cx: x + dir * STEP,
                 cy: y,
-                cz: self.pos[2],
+                cz: z,
                 ..ArcMove::default()
-            }));
-            self.pos = [ex, y, self.pos[2]];
+            })
         } else {
             let nx = x + dir * STEP * 0.987;
             let ny = y + 0.0013;
-            self.queue.push_back(Event::Feed(FeedMove { x: nx, y: ny, z, ..FeedMove::default() }));
             self.pos = [nx, ny, z];
+            Event::Feed(FeedMove { x: nx, y: ny, z, ..FeedMove::default() })
         }
-        self.done_moves += 1;
     }
 
     fn postamble(&mut self) {
@@ -174,7 +175,9 @@ impl EventSource for Synthetic {
                         self.stage = Stage::Body;
                     }
                 }
-                Stage::Body if self.done_moves < self.moves => self.body_move(),
+                Stage::Body if self.done_moves < self.moves => {
+                    return Some((self.body_move(), Span::new(FileId(0), 0, 0)));
+                }
                 Stage::Body => {
                     self.postamble();
                     self.stage = Stage::Finished;

@@ -33,11 +33,13 @@ macro_rules! quantities {
             pub const ALL: &'static [Quantity] = &[$(Quantity::$name,)*];
 
             /// The Vectric label that prints this quantity (`X` for `[X]`).
+            #[inline]
             pub fn label(self) -> &'static str {
                 match self { $(Quantity::$name => $label,)* }
             }
 
             /// How the quantity converts between units.
+            #[inline]
             pub fn dimension(self) -> Dimension {
                 match self { $(Quantity::$name => Dimension::$dim,)* }
             }
@@ -160,6 +162,7 @@ impl Quantity {
     }
 
     /// Whether the quantity is text rather than a number.
+    #[inline]
     pub fn is_text(self) -> bool {
         self.dimension() == Dimension::Text
     }

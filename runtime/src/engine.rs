@@ -51,6 +51,8 @@ pub struct Engine<'p> {
     pub(crate) block: BlockCounter,
     /// Handler index of each section, if the post has it.
     sections: Vec<Option<u16>>,
+    /// Each handler's body, prepared for the hot path.
+    prepared: Vec<std::rc::Rc<Vec<Prepared<'p>>>>,
     /// Warnings collected during the run (each said once).
     pub warnings: Vec<Diagnostic>,
     pub(crate) steps: u64,
@@ -69,6 +71,7 @@ impl<'p> Engine<'p> {
             }
         }
         let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
+        let prepared = post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body))).collect();
         Engine {
             post,
             machine,
@@ -79,6 +82,7 @@ impl<'p> Engine<'p> {
             globals: Vec::new(),
             block: BlockCounter { next: post.options.block_numbers.start, printed: false },
             sections,
+            prepared,
             warnings: Vec::new(),
             steps: 0,
             depth: 0,
@@ -97,8 +101,8 @@ impl<'p> Engine<'p> {
     pub fn run_section(&mut self, section: Section) -> Result<bool, Box<Diagnostic>> {
         match self.sections[section as usize] {
             Some(i) => {
-                let post = self.post;
-                self.run_body(&post.handlers[i as usize].body)?;
+                let body = self.prepared[i as usize].clone();
+                self.run_prepared(&body)?;
                 Ok(true)
             }
             None => Ok(false),
@@ -125,6 +129,34 @@ impl<'p> Engine<'p> {
         }
     }
 
+    /// Runs a prepared handler body: the hot path.
+    fn run_prepared(&mut self, body: &[Prepared<'p>]) -> Result<(), Box<Diagnostic>> {
+        for stmt in body {
+            match stmt {
+                Prepared::Line(ops) => {
+                    for op in ops {
+                        match op {
+                            Op::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                            Op::Number { var, quantity, format, modal } => {
+                                let n = self.machine.number(*quantity);
+                                let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
+                                put_number(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                            }
+                            Op::Piece(piece) => self.write_piece(piece)?,
+                        }
+                    }
+                    self.end_block();
+                }
+                Prepared::Stmt(stmt) => {
+                    self.steps = 0;
+                    let mut frame = Vec::new();
+                    self.exec(std::slice::from_ref(*stmt), &mut frame)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Runs a handler body: the hot path for plain lines.
     pub fn run_body(&mut self, body: &[Stmt]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {
@@ -143,22 +175,29 @@ impl<'p> Engine<'p> {
     /// Writes one block: its pieces, then the line ending.
     pub(crate) fn write_line(&mut self, pieces: &[Piece]) -> Result<(), Box<Diagnostic>> {
         for piece in pieces {
-            match piece {
-                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
-                Piece::Var(id) => self.write_var(*id),
-                Piece::Expr(postc_ir::Expr::FormatVar { var, value }) => {
-                    let mut frame = Vec::new();
-                    let v = self.eval(value, &mut frame)?;
-                    self.write_assigned(*var, v);
-                }
-                Piece::Expr(e) => {
-                    let mut frame = Vec::new();
-                    let v = self.eval(e, &mut frame)?;
-                    self.write_value_text(&v);
-                }
-            }
+            self.write_piece(piece)?;
         }
         self.end_block();
+        Ok(())
+    }
+
+    /// Writes one piece of a block.
+    #[inline]
+    fn write_piece(&mut self, piece: &Piece) -> Result<(), Box<Diagnostic>> {
+        match piece {
+            Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+            Piece::Var(id) => self.write_var(*id),
+            Piece::Expr(postc_ir::Expr::FormatVar { var, value }) => {
+                let mut frame = Vec::new();
+                let v = self.eval(value, &mut frame)?;
+                self.write_assigned(*var, v);
+            }
+            Piece::Expr(e) => {
+                let mut frame = Vec::new();
+                let v = self.eval(e, &mut frame)?;
+                self.write_value_text(&v);
+            }
+        }
         Ok(())
     }
 
@@ -195,16 +234,16 @@ impl<'p> Engine<'p> {
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match var.source {
             ValueSource::Quantity(q) if q.is_text() => {
-                put_text(var, state, prefix, self.machine.text(q).as_bytes(), &post.options.substitutions, &mut self.out.buf)
+                put_text(is_modal(var), state, prefix, self.machine.text(q).as_bytes(), &post.options.substitutions, &mut self.out.buf)
             }
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
                 let w = &self.writers[var.format as usize];
-                put_number(var, w, state, prefix, self.block.next, &mut self.out.buf);
+                put_number(is_modal(var), w, state, prefix, self.block.next, &mut self.out.buf);
             }
             ValueSource::Quantity(q) => {
                 let w = &self.writers[var.format as usize];
-                put_number(var, w, state, prefix, self.machine.number(q), &mut self.out.buf);
+                put_number(is_modal(var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
                 let v = state.value.clone();
@@ -225,10 +264,10 @@ impl<'p> Engine<'p> {
         let var = &post.variables[id as usize];
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match v {
-            Value::Text(s) => put_text(var, state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf),
+            Value::Text(s) => put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf),
             other => {
                 let w = &self.writers[var.format as usize];
-                put_number(var, w, state, prefix, other.num(), &mut self.out.buf);
+                put_number(is_modal(var), w, state, prefix, other.num(), &mut self.out.buf);
             }
         }
     }
@@ -281,8 +320,7 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
 /// Prints a number through a variable, unless it is on-change and prints
 /// what it printed last.
 #[inline]
-pub(crate) fn put_number(var: &Variable, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
-    let modal = var.modality == Modality::OnChange;
+pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
     match w.round(n) {
         Some(r) => {
             if modal {
@@ -318,29 +356,82 @@ pub(crate) fn put_number(var: &Variable, w: &NumberWriter, state: &mut VarState,
             let start = out.len();
             out.extend_from_slice(prefix);
             w.write(n, out);
-            keep_if_changed(var, state, start, out);
+            keep_if_changed(modal, state, start, out);
         }
     }
 }
 
 /// Prints text through a variable, unless it is on-change and prints what
 /// it printed last.
-pub(crate) fn put_text(var: &Variable, state: &mut VarState, prefix: &[u8], text: &[u8], subs: &[Substitution], out: &mut Vec<u8>) {
+pub(crate) fn put_text(modal: bool, state: &mut VarState, prefix: &[u8], text: &[u8], subs: &[Substitution], out: &mut Vec<u8>) {
     state.key = None;
     let start = out.len();
     out.extend_from_slice(prefix);
     substitute_into(text, subs, out);
-    keep_if_changed(var, state, start, out);
+    keep_if_changed(modal, state, start, out);
 }
 
 /// Applies a variable's modality to what was just written from `start`.
-fn keep_if_changed(var: &Variable, state: &mut VarState, start: usize, out: &mut Vec<u8>) {
+fn keep_if_changed(modal: bool, state: &mut VarState, start: usize, out: &mut Vec<u8>) {
     let written = &out[start..];
-    if var.modality == Modality::OnChange && state.has_last && state.last == written {
+    if modal && state.has_last && state.last == written {
         out.truncate(start);
         return;
     }
     state.last.clear();
     state.last.extend_from_slice(written);
     state.has_last = true;
+}
+
+#[inline]
+pub(crate) fn is_modal(var: &Variable) -> bool {
+    var.modality == Modality::OnChange
+}
+
+/// A handler statement prepared for the hot path.
+pub(crate) enum Prepared<'p> {
+    /// A block whose pieces are resolved to direct operations.
+    Line(Vec<Op<'p>>),
+    /// Any other statement, interpreted.
+    Stmt(&'p Stmt),
+}
+
+/// One piece of a prepared block.
+pub(crate) enum Op<'p> {
+    /// Literal bytes.
+    Text(&'p [u8]),
+    /// A numeric quantity through a variable: no lookups left to do.
+    Number { var: u16, quantity: Quantity, format: u16, modal: bool },
+    /// Anything else (text quantities, block numbers, assigned variables, expressions).
+    Piece(&'p Piece),
+}
+
+/// Prepares a handler body: lines become flat operations.
+pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>> {
+    body.iter()
+        .map(|stmt| match stmt {
+            Stmt::Line(pieces) => Prepared::Line(
+                pieces
+                    .iter()
+                    .map(|piece| match piece {
+                        Piece::Text(bytes) => Op::Text(bytes),
+                        Piece::Var(id) => {
+                            let var = &post.variables[*id as usize];
+                            match var.source {
+                                ValueSource::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => Op::Number {
+                                    var: *id,
+                                    quantity: q,
+                                    format: var.format,
+                                    modal: is_modal(var),
+                                },
+                                _ => Op::Piece(piece),
+                            }
+                        }
+                        other => Op::Piece(other),
+                    })
+                    .collect(),
+            ),
+            other => Prepared::Stmt(other),
+        })
+        .collect()
 }

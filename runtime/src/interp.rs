@@ -9,7 +9,7 @@ use std::rc::Rc;
 
 use postc_ir::{BinaryOp, Body, Builtin, Diagnostic, Expr, Place, Quantity, Stmt, UnaryOp, ValueSource};
 
-use crate::engine::{Engine, put_number, put_text};
+use crate::engine::{Engine, is_modal, put_number, put_text};
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -237,8 +237,8 @@ impl Engine<'_> {
         let mut buf = Vec::with_capacity(16);
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match &v {
-            Value::Text(s) => put_text(var, state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf),
-            other => put_number(var, &self.writers[var.format as usize], state, prefix, other.num(), &mut buf),
+            Value::Text(s) => put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf),
+            other => put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
         Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))

@@ -126,8 +126,9 @@ impl NumberWriter {
         if scaled.is_nan() || scaled >= FAST_LIMIT {
             return None;
         }
-        // Truncation is the floor of a non-negative value, without a libm call.
-        let floor = scaled as u64;
+        // Truncation is the floor of a non-negative value, without a libm
+        // call; signed conversions are single instructions on x86-64.
+        let floor = scaled as i64;
         let frac = scaled - floor as f64;
         let margin = 8.0 * f64::EPSILON * scaled.max(1.0);
         let up = if (frac - 0.5).abs() > margin {
@@ -142,7 +143,7 @@ impl NumberWriter {
             let tie = (2 * floor + 1) as f64 / (2.0 * self.scale);
             magnitude >= tie
         };
-        let m = floor + u64::from(up);
+        let m = (floor + i64::from(up)) as u64;
         Some(Rounded { negative: value < 0.0 && m != 0, m })
     }
 
@@ -178,13 +179,23 @@ impl NumberWriter {
     }
 
     /// The common case: no width to fill, no zeros to trim. The word is
-    /// written right to left into one stack buffer and appended at once.
+    /// written right to left, two digits at a time, into one stack buffer
+    /// and appended at once.
     #[inline]
     fn write_plain(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
         let mut buf = [0u8; 64];
         let mut i = buf.len();
         let mut m = r.m;
-        for _ in 0..self.decimals {
+        let mut d = self.decimals;
+        while d >= 2 {
+            let pair = (m % 100) as usize * 2;
+            m /= 100;
+            i -= 2;
+            buf[i] = PAIRS[pair];
+            buf[i + 1] = PAIRS[pair + 1];
+            d -= 2;
+        }
+        if d == 1 {
             i -= 1;
             buf[i] = b'0' + (m % 10) as u8;
             m /= 10;
@@ -196,11 +207,21 @@ impl NumberWriter {
             }
         }
         if m > 0 || self.leading_zero || self.decimals == 0 {
-            let mut tmp = [b'0'; 24];
-            let n = write_digits(m, &mut tmp);
-            for &b in tmp[n..].iter().rev() {
+            while m >= 100 {
+                let pair = (m % 100) as usize * 2;
+                m /= 100;
+                i -= 2;
+                buf[i] = PAIRS[pair];
+                buf[i + 1] = PAIRS[pair + 1];
+            }
+            if m >= 10 {
+                let pair = m as usize * 2;
+                i -= 2;
+                buf[i] = PAIRS[pair];
+                buf[i + 1] = PAIRS[pair + 1];
+            } else {
                 i -= 1;
-                buf[i] = b;
+                buf[i] = b'0' + m as u8;
             }
         }
         if r.negative {
