@@ -1,0 +1,204 @@
+//! G-code output checked by a real interpreter: LinuxCNC's `rs274`.
+//!
+//! Every G-code post of the corpus posts every corpus toolpath; `rs274 -g -t
+//! corpus/tool.tbl` must read the program without an error, and the moves it
+//! reports (STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED) must contain every
+//! move of the toolpath, in order, at the toolpath's end points (and arc
+//! centres and turning directions) within the post's printed precision.
+//! Extra moves (the header's and footer's, linearized arcs' intermediate
+//! chords, expanded drilling cycles) are allowed between them.
+//!
+//! `.ci/run` installs rs274; without it the test says it is skipped.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use postc_ir::event::{ArcDir, Event};
+use postc_ir::{EventSource, Post, Quantity, SourceMap, ValueSource};
+use postc_runtime::{Finished, Output, RunOptions};
+
+/// The corpus posts that write G-code LinuxCNC reads.
+const GCODE_POSTS: &[&str] = &["gcode_mm.pp", "gcode_inch.pp", "gcode_arcs_inch.pp", "gcode_no_arcs_mm.pp"];
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn rs274() -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    std::env::split_paths(&path).map(|d| d.join("rs274")).find(|p| p.is_file())
+}
+
+/// A move as rs274 reports it.
+#[derive(Debug, Clone, Copy)]
+enum Canon {
+    Traverse([f64; 3]),
+    Feed([f64; 3]),
+    /// End point, centre (x, y), rotation (+1 counter-clockwise).
+    Arc([f64; 3], [f64; 2], i32),
+}
+
+/// A move the toolpath asks for.
+#[derive(Debug, Clone, Copy)]
+enum Expected {
+    Traverse([f64; 3]),
+    Feed([f64; 3]),
+    Arc([f64; 3], [f64; 2], ArcDir),
+}
+
+fn numbers(args: &str) -> Vec<f64> {
+    args.split(',').filter_map(|a| a.trim().parse().ok()).collect()
+}
+
+/// Runs rs274 on a program; returns its moves or the lines it complained with.
+fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
+    let output = Command::new(rs274)
+        .args(["-g", "-t"])
+        .arg(root().join("corpus/tool.tbl"))
+        .arg(program)
+        .output()
+        .map_err(|e| format!("cannot run rs274: {e}"))?;
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let mut moves = Vec::new();
+    let mut complaints = Vec::new();
+    for line in stdout.lines().chain(stderr.lines()) {
+        let line = line.trim();
+        let Some(call) = line.split_once("N..... ").map(|(_, c)| c) else {
+            if !line.is_empty() && line != "executing" {
+                complaints.push(line.to_string());
+            }
+            continue;
+        };
+        let call = call.trim_end_matches("executing");
+        let Some((name, args)) = call.split_once('(') else { continue };
+        let n = numbers(args.trim_end_matches(')'));
+        match name {
+            "STRAIGHT_TRAVERSE" if n.len() >= 3 => moves.push(Canon::Traverse([n[0], n[1], n[2]])),
+            "STRAIGHT_FEED" if n.len() >= 3 => moves.push(Canon::Feed([n[0], n[1], n[2]])),
+            "ARC_FEED" if n.len() >= 6 => moves.push(Canon::Arc([n[0], n[1], n[5]], [n[2], n[3]], n[4] as i32)),
+            _ => {}
+        }
+    }
+    if !output.status.success() || !complaints.is_empty() {
+        return Err(format!("rs274 exit {:?}: {}", output.status.code(), complaints.join(" | ")));
+    }
+    Ok(moves)
+}
+
+/// The toolpath's moves in the post's units.
+fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
+    let mut sources = SourceMap::new();
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    let mut diags = Vec::new();
+    let mut factor = 1.0;
+    let mut moves = Vec::new();
+    while let Some((event, _)) = source.next_event(&mut diags) {
+        let p = |x: f64, y: f64, z: f64| [x * factor, y * factor, z * factor];
+        match event {
+            Event::Job(job) => factor = job.units.factor_to(post.info.units.unwrap_or(job.units)),
+            Event::Rapid(m) => moves.push(Expected::Traverse(p(m.x, m.y, m.z))),
+            Event::Feed(m) => moves.push(Expected::Feed(p(m.x, m.y, m.z))),
+            Event::Arc(a) => moves.push(Expected::Arc(p(a.x, a.y, a.z), [a.cx * factor, a.cy * factor], a.dir)),
+            _ => {}
+        }
+    }
+    assert!(diags.is_empty(), "{}: {diags:?}", toolpath.display());
+    moves
+}
+
+fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tol)
+}
+
+/// Whether an rs274 move is the expected one.
+fn matches(e: &Expected, c: &Canon, tol: f64) -> bool {
+    match (e, c) {
+        (Expected::Traverse(p), Canon::Traverse(q)) | (Expected::Feed(p), Canon::Feed(q)) => close(*p, *q, tol),
+        (Expected::Arc(p, _, _), Canon::Feed(q)) => close(*p, *q, tol),
+        (Expected::Arc(p, centre, dir), Canon::Arc(q, cq, rotation)) => {
+            let turn = if *dir == ArcDir::Ccw { 1 } else { -1 };
+            close(*p, *q, tol) && close([centre[0], centre[1], 0.0], [cq[0], cq[1], 0.0], 2.0 * tol) && *rotation == turn
+        }
+        _ => false,
+    }
+}
+
+/// The precision a post prints positions with.
+fn tolerance(post: &Post) -> f64 {
+    let decimals = post
+        .variables
+        .iter()
+        .find(|v| v.source == ValueSource::Quantity(Quantity::X))
+        .map_or(3, |v| post.formats[v.format as usize].decimals);
+    10f64.powi(-(decimals as i32)) + 1e-4
+}
+
+#[test]
+fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
+    let Some(rs274) = rs274() else {
+        println!("skipped: rs274 not found on PATH (bash .ci/run installs it from Debian's linuxcnc-uspace)");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let mut toolpaths: Vec<PathBuf> = std::fs::read_dir(root().join("corpus/toolpaths"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .collect();
+    toolpaths.sort();
+    let mut checked = 0;
+    let mut failures = Vec::new();
+    for name in GCODE_POSTS {
+        let post_path = root().join("corpus/posts/vectric").join(name);
+        if !post_path.exists() {
+            continue;
+        }
+        let mut sources = SourceMap::new();
+        let compiled = postc_frontends::compile_post(&post_path, None, &mut sources);
+        assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
+        let post = compiled.post.unwrap();
+        let tol = tolerance(&post);
+        for toolpath in &toolpaths {
+            let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
+            let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+            let program = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
+                Ok(r) => match r.output {
+                    Finished::Memory(parts) => parts,
+                    _ => unreachable!(),
+                },
+                Err(d) => {
+                    failures.push(format!("{label}: posting failed: {d:?}"));
+                    continue;
+                }
+            };
+            if program.len() != 1 {
+                continue; // tape-split programs are checked part by part elsewhere
+            }
+            let file = dir.path().join("program.ngc");
+            std::fs::write(&file, &program[0]).unwrap();
+            let actual = match interpret(&rs274, &file) {
+                Ok(m) => m,
+                Err(e) => {
+                    failures.push(format!("{label}: {e}"));
+                    continue;
+                }
+            };
+            let expected = expected_moves(toolpath, &post);
+            let mut at = 0;
+            for (i, e) in expected.iter().enumerate() {
+                match actual[at..].iter().position(|c| matches(e, c, tol)) {
+                    Some(k) => at += k + 1,
+                    None => {
+                        failures.push(format!("{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"));
+                        break;
+                    }
+                }
+            }
+            checked += 1;
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(checked > 0, "no program was checked");
+    println!("rs274 read {checked} programs with the toolpaths' motion");
+}
