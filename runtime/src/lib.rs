@@ -19,6 +19,7 @@
 //! [`run`] pulls events one at a time from an [`EventSource`], so memory
 //! stays flat whatever the toolpath's length.
 
+pub mod clock;
 pub mod engine;
 pub mod geometry;
 mod interp;
@@ -88,6 +89,7 @@ pub fn run<S: EventSource + ?Sized>(
     );
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
+    (machine.default_date, machine.default_time) = clock::now();
     if let Some(f) = options.file.take() {
         machine.file_name = f.name;
         machine.file_dir = f.dir;

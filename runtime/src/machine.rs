@@ -38,6 +38,10 @@ pub struct Machine {
     pub comment: String,
     pub date: String,
     pub time: String,
+    /// What `[DATE]` and `[TIME]` print when neither the job nor the
+    /// command line gives them.
+    pub default_date: String,
+    pub default_time: String,
     /// Output file, as printed by `[TP_FILENAME]`, `[TP_DIR]`, `[TP_EXT]`.
     pub file_name: String,
     pub file_dir: String,
@@ -72,6 +76,8 @@ impl Machine {
             comment: String::new(),
             date: String::new(),
             time: String::new(),
+            default_date: String::new(),
+            default_time: String::new(),
             file_name: String::new(),
             file_dir: String::new(),
             file_ext: String::new(),
@@ -223,7 +229,9 @@ impl Machine {
             Quantity::FileNotes => &self.job.notes,
             Quantity::ToolsUsed => &self.tools_used,
             Quantity::ToolpathsOutput => &self.toolpaths_output,
+            Quantity::Date if self.date.is_empty() => &self.default_date,
             Quantity::Date => &self.date,
+            Quantity::Time if self.time.is_empty() => &self.default_time,
             Quantity::Time => &self.time,
             Quantity::Product => self.job.product.as_deref().unwrap_or("postc"),
             Quantity::UnitsText => self.output_units.name(),
