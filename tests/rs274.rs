@@ -17,8 +17,9 @@ use postc_ir::event::{ArcDir, Event};
 use postc_ir::{EventSource, Post, Quantity, SourceMap, ValueSource};
 use postc_runtime::{Finished, Output, RunOptions};
 
-/// The corpus posts that write G-code LinuxCNC reads.
-const GCODE_POSTS: &[&str] = &["gcode_mm.pp", "gcode_inch.pp", "gcode_arcs_inch.pp", "gcode_no_arcs_mm.pp"];
+/// Output extensions of posts that write G-code (HPGL, Heidenhain and
+/// ShopBot posts write other languages).
+const GCODE_EXTENSIONS: &[&str] = &["ngc", "nc", "tap", "gcode", "cnc"];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -32,18 +33,20 @@ fn rs274() -> Option<PathBuf> {
 /// A move as rs274 reports it.
 #[derive(Debug, Clone, Copy)]
 enum Canon {
-    Traverse([f64; 3]),
-    Feed([f64; 3]),
+    /// X Y Z A.
+    Traverse([f64; 4]),
+    Feed([f64; 4]),
     /// End point, centre (x, y), rotation (+1 counter-clockwise).
-    Arc([f64; 3], [f64; 2], i32),
+    Arc([f64; 4], [f64; 2], i32),
 }
 
 /// A move the toolpath asks for.
 #[derive(Debug, Clone, Copy)]
 enum Expected {
-    Traverse([f64; 3]),
-    Feed([f64; 3]),
-    Arc([f64; 3], [f64; 2], ArcDir),
+    /// X Y Z A; NaN where nothing is to be compared.
+    Traverse([f64; 4]),
+    Feed([f64; 4]),
+    Arc([f64; 4], [f64; 2], ArcDir),
 }
 
 fn numbers(args: &str) -> Vec<f64> {
@@ -74,9 +77,9 @@ fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
         let Some((name, args)) = call.split_once('(') else { continue };
         let n = numbers(args.trim_end_matches(')'));
         match name {
-            "STRAIGHT_TRAVERSE" if n.len() >= 3 => moves.push(Canon::Traverse([n[0], n[1], n[2]])),
-            "STRAIGHT_FEED" if n.len() >= 3 => moves.push(Canon::Feed([n[0], n[1], n[2]])),
-            "ARC_FEED" if n.len() >= 6 => moves.push(Canon::Arc([n[0], n[1], n[5]], [n[2], n[3]], n[4] as i32)),
+            "STRAIGHT_TRAVERSE" if n.len() >= 4 => moves.push(Canon::Traverse([n[0], n[1], n[2], n[3]])),
+            "STRAIGHT_FEED" if n.len() >= 4 => moves.push(Canon::Feed([n[0], n[1], n[2], n[3]])),
+            "ARC_FEED" if n.len() >= 7 => moves.push(Canon::Arc([n[0], n[1], n[5], n[6]], [n[2], n[3]], n[4] as i32)),
             _ => {}
         }
     }
@@ -86,20 +89,62 @@ fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
     Ok(moves)
 }
 
+/// How a wrapped post prints an axis: the axis index that turns into A, the
+/// cylinder diameter and the direction.
+struct Wrap {
+    axis: usize,
+    diameter: f64,
+    sign: f64,
+}
+
+impl Wrap {
+    /// A point as rs274 sees it: X Y Z A, with the wrapped axis moved to A.
+    fn apply(wrap: &Option<Wrap>, p: [f64; 3]) -> [f64; 4] {
+        match wrap {
+            Some(w) => {
+                let mut q = [p[0], p[1], p[2], 0.0];
+                q[3] = if w.diameter > 0.0 {
+                    w.sign * p[w.axis] / (std::f64::consts::PI * w.diameter) * 360.0
+                } else {
+                    p[w.axis]
+                };
+                q[w.axis] = f64::NAN; // not compared
+                q
+            }
+            None => [p[0], p[1], p[2], f64::NAN],
+        }
+    }
+}
+
 /// The toolpath's moves in the post's units.
 fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
     let mut sources = SourceMap::new();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
     let mut diags = Vec::new();
     let mut factor = 1.0;
+    let mut wrap = None;
     let mut moves = Vec::new();
     while let Some((event, _)) = source.next_event(&mut diags) {
-        let p = |x: f64, y: f64, z: f64| [x * factor, y * factor, z * factor];
+        let p = |x: f64, y: f64, z: f64| Wrap::apply(&wrap, [x * factor, y * factor, z * factor]);
         match event {
-            Event::Job(job) => factor = job.units.factor_to(post.info.units.unwrap_or(job.units)),
+            Event::Job(job) => {
+                factor = job.units.factor_to(post.info.units.unwrap_or(job.units));
+                if let Some(w) = post.options.rotary_wrap {
+                    // Without a wrap diameter the runtime prints the distance unwrapped (RT015).
+                    let diameter = job.wrap_diameter.filter(|d| *d > 0.0);
+                    wrap = Some(Wrap {
+                        axis: if w.axis == postc_ir::post::WrappedAxis::X { 0 } else { 1 },
+                        diameter: diameter.map_or(0.0, |d| d * factor),
+                        sign: if w.reversed && diameter.is_some() { -1.0 } else { 1.0 },
+                    });
+                }
+            }
             Event::Rapid(m) => moves.push(Expected::Traverse(p(m.x, m.y, m.z))),
             Event::Feed(m) => moves.push(Expected::Feed(p(m.x, m.y, m.z))),
-            Event::Arc(a) => moves.push(Expected::Arc(p(a.x, a.y, a.z), [a.cx * factor, a.cy * factor], a.dir)),
+            Event::Arc(a) => {
+                let centre = if wrap.is_some() { [f64::NAN; 2] } else { [a.cx * factor, a.cy * factor] };
+                moves.push(Expected::Arc(p(a.x, a.y, a.z), centre, a.dir))
+            }
             _ => {}
         }
     }
@@ -107,8 +152,8 @@ fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
     moves
 }
 
-fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
-    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tol)
+fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
+    a.iter().zip(b).all(|(x, y)| x.is_nan() || (x - y).abs() <= tol)
 }
 
 /// Whether an rs274 move is the expected one.
@@ -118,7 +163,7 @@ fn matches(e: &Expected, c: &Canon, tol: f64) -> bool {
         (Expected::Arc(p, _, _), Canon::Feed(q)) => close(*p, *q, tol),
         (Expected::Arc(p, centre, dir), Canon::Arc(q, cq, rotation)) => {
             let turn = if *dir == ArcDir::Ccw { 1 } else { -1 };
-            close(*p, *q, tol) && close([centre[0], centre[1], 0.0], [cq[0], cq[1], 0.0], 2.0 * tol) && *rotation == turn
+            close(*p, *q, tol) && (!centre[0].is_finite() || close(*centre, *cq, 2.0 * tol)) && *rotation == turn
         }
         _ => false,
     }
@@ -149,15 +194,21 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
     toolpaths.sort();
     let mut checked = 0;
     let mut failures = Vec::new();
-    for name in GCODE_POSTS {
-        let post_path = root().join("corpus/posts/vectric").join(name);
-        if !post_path.exists() {
-            continue;
-        }
+    let mut posts: Vec<PathBuf> = std::fs::read_dir(root().join("corpus/posts/vectric"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "pp"))
+        .collect();
+    posts.sort();
+    for post_path in &posts {
+        let name = post_path.file_name().unwrap().to_string_lossy();
         let mut sources = SourceMap::new();
-        let compiled = postc_frontends::compile_post(&post_path, None, &mut sources);
+        let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
         assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
         let post = compiled.post.unwrap();
+        if !GCODE_EXTENSIONS.contains(&post.info.file_extension.to_ascii_lowercase().as_str()) {
+            continue;
+        }
         let tol = tolerance(&post);
         for toolpath in &toolpaths {
             let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
