@@ -33,20 +33,20 @@ fn rs274() -> Option<PathBuf> {
 /// A move as rs274 reports it.
 #[derive(Debug, Clone, Copy)]
 enum Canon {
-    /// X Y Z A.
-    Traverse([f64; 4]),
-    Feed([f64; 4]),
+    /// X Y Z A B C.
+    Traverse([f64; 6]),
+    Feed([f64; 6]),
     /// End point, centre (x, y), rotation (+1 counter-clockwise).
-    Arc([f64; 4], [f64; 2], i32),
+    Arc([f64; 6], [f64; 2], i32),
 }
 
 /// A move the toolpath asks for.
 #[derive(Debug, Clone, Copy)]
 enum Expected {
-    /// X Y Z A; NaN where nothing is to be compared.
-    Traverse([f64; 4]),
-    Feed([f64; 4]),
-    Arc([f64; 4], [f64; 2], ArcDir),
+    /// X Y Z A B C; NaN where nothing is to be compared.
+    Traverse([f64; 6]),
+    Feed([f64; 6]),
+    Arc([f64; 6], [f64; 2], ArcDir),
 }
 
 fn numbers(args: &str) -> Vec<f64> {
@@ -67,19 +67,26 @@ fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
     let mut complaints = Vec::new();
     for line in stdout.lines().chain(stderr.lines()) {
         let line = line.trim();
-        let Some(call) = line.split_once("N..... ").map(|(_, c)| c) else {
-            if !line.is_empty() && line != "executing" {
-                complaints.push(line.to_string());
+        // Canonical calls read `<count> N<block or .....> CALL(args)`.
+        let mut words = line.splitn(3, char::is_whitespace);
+        let call = match (words.next(), words.next(), words.next()) {
+            (Some(count), Some(block), Some(call)) if count.bytes().all(|b| b.is_ascii_digit()) && block.starts_with('N') => {
+                call.trim()
             }
-            continue;
+            _ => {
+                if !line.is_empty() && line != "executing" {
+                    complaints.push(line.to_string());
+                }
+                continue;
+            }
         };
         let call = call.trim_end_matches("executing");
         let Some((name, args)) = call.split_once('(') else { continue };
         let n = numbers(args.trim_end_matches(')'));
         match name {
-            "STRAIGHT_TRAVERSE" if n.len() >= 4 => moves.push(Canon::Traverse([n[0], n[1], n[2], n[3]])),
-            "STRAIGHT_FEED" if n.len() >= 4 => moves.push(Canon::Feed([n[0], n[1], n[2], n[3]])),
-            "ARC_FEED" if n.len() >= 7 => moves.push(Canon::Arc([n[0], n[1], n[5], n[6]], [n[2], n[3]], n[4] as i32)),
+            "STRAIGHT_TRAVERSE" if n.len() >= 6 => moves.push(Canon::Traverse([n[0], n[1], n[2], n[3], n[4], n[5]])),
+            "STRAIGHT_FEED" if n.len() >= 6 => moves.push(Canon::Feed([n[0], n[1], n[2], n[3], n[4], n[5]])),
+            "ARC_FEED" if n.len() >= 9 => moves.push(Canon::Arc([n[0], n[1], n[5], n[6], n[7], n[8]], [n[2], n[3]], n[4] as i32)),
             _ => {}
         }
     }
@@ -93,26 +100,27 @@ fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
 /// cylinder diameter and the direction.
 struct Wrap {
     axis: usize,
+    /// Where the angle goes: 3, 4, 5 for A, B, C (the wrapped axis itself when the post keeps its letter).
+    rotary: usize,
     diameter: f64,
     sign: f64,
 }
 
 impl Wrap {
-    /// A point as rs274 sees it: X Y Z A, with the wrapped axis moved to A.
-    fn apply(wrap: &Option<Wrap>, p: [f64; 3]) -> [f64; 4] {
-        match wrap {
-            Some(w) => {
-                let mut q = [p[0], p[1], p[2], 0.0];
-                q[3] = if w.diameter > 0.0 {
-                    w.sign * p[w.axis] / (std::f64::consts::PI * w.diameter) * 360.0
-                } else {
-                    p[w.axis]
-                };
-                q[w.axis] = f64::NAN; // not compared
-                q
-            }
-            None => [p[0], p[1], p[2], f64::NAN],
+    /// A point as rs274 sees it: X Y Z A B C, with the wrapped axis moved
+    /// to its rotary letter; NaN marks what is not compared.
+    fn apply(wrap: &Option<Wrap>, p: [f64; 3]) -> [f64; 6] {
+        let mut q = [p[0], p[1], p[2], f64::NAN, f64::NAN, f64::NAN];
+        if let Some(w) = wrap {
+            let value = if w.diameter > 0.0 {
+                w.sign * p[w.axis] / (std::f64::consts::PI * w.diameter) * 360.0
+            } else {
+                p[w.axis]
+            };
+            q[w.axis] = f64::NAN;
+            q[w.rotary] = value;
         }
+        q
     }
 }
 
@@ -132,8 +140,15 @@ fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
                 if let Some(w) = post.options.rotary_wrap {
                     // Without a wrap diameter the runtime prints the distance unwrapped (RT015).
                     let diameter = job.wrap_diameter.filter(|d| *d > 0.0);
+                    let axis = if w.axis == postc_ir::post::WrappedAxis::X { 0 } else { 1 };
                     wrap = Some(Wrap {
-                        axis: if w.axis == postc_ir::post::WrappedAxis::X { 0 } else { 1 },
+                        axis,
+                        rotary: match w.letter.map(|l| l.to_ascii_uppercase()) {
+                            Some('A') => 3,
+                            Some('B') => 4,
+                            Some('C') => 5,
+                            _ => axis,
+                        },
                         diameter: diameter.map_or(0.0, |d| d * factor),
                         sign: if w.reversed && diameter.is_some() { -1.0 } else { 1.0 },
                     });

@@ -129,11 +129,16 @@ impl Machine {
         self.job = job;
     }
 
-    /// Takes a tool: converts its feeds and diameter.
+    /// Takes a tool: converts its feeds and diameter. Until a move sets
+    /// another, the current feed (`[F]`) is the tool's cut feed, which is
+    /// what a HEADER or TOOLCHANGE that prints `[F]` means ("Feed Rate used
+    /// for cutting", seed 000) and what a rapid that carries `[F]` should
+    /// print before the first cut, rather than 0.
     pub fn set_tool(&mut self, mut tool: Tool) {
         tool.diameter *= self.factor;
         tool.cut_feed *= self.factor;
         tool.plunge_feed *= self.factor;
+        self.feed = tool.cut_feed;
         if self.tool.number != tool.number || self.previous_tool.is_none() {
             self.previous_tool = Some(self.tool.number);
         }
@@ -283,5 +288,20 @@ impl Machine {
             }
             _ => self.spindle_speed,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_feed_is_the_new_tools_cut_feed_until_a_move_sets_it() {
+        let mut m = Machine::new(Some(Units::Mm), None, None);
+        m.set_job(Job { units: Units::Inch, ..Job::default() }, Some(Units::Mm));
+        assert_eq!(m.number(Quantity::Feed), 0.0);
+        m.set_tool(Tool { number: 1, cut_feed: 10.0, plunge_feed: 5.0, ..Tool::default() });
+        assert!((m.number(Quantity::Feed) - 254.0).abs() < 1e-9);
+        assert!((m.number(Quantity::PlungeFeed) - 127.0).abs() < 1e-9);
     }
 }

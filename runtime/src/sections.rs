@@ -20,7 +20,14 @@
 //! - Drilling cycles print through drilling sections when the post has
 //!   them, otherwise as rapid, plunge, dwell and retract moves.
 //! - Tape splitting ends a part with the footer at a retract once the part
-//!   has `max - tolerance` blocks, and starts the next part with the header.
+//!   has `max - tolerance` blocks (a retract that ends at or above the
+//!   job's safe Z, when it has one), or at any move once it has `max`, and
+//!   starts the next part with the header. The split waits for the next
+//!   block that belongs to the new part (a move, a toolpath or tool start,
+//!   a dwell, jet event or insert), so a program that ends right after the
+//!   retract is not split and no part is only a header and a footer. A part
+//!   that starts at a toolpath boundary starts like a program: the header
+//!   carries the tool and toolpath, with no TOOLCHANGE or NEW_SEGMENT.
 
 use postc_ir::event::{ArcDir, ArcMove, DrillCycle, DrillKind, DrillPoint, Event, FeedMove, Intent, Move, Plane};
 use postc_ir::{Diagnostic, Quantity, Section};
@@ -59,6 +66,8 @@ pub struct SectionDispatch {
     last_feed: Option<f64>,
     spindle_on: bool,
     drill: Option<DrillCycle>,
+    /// Tape splitting: the current part ends before the next block.
+    split_pending: bool,
     /// Formats of the X and Y variables, to know the printed points.
     xy_formats: [Option<u16>; 2],
     exact_arcs: bool,
@@ -83,6 +92,7 @@ impl SectionDispatch {
             last_feed: None,
             spindle_on: false,
             drill: None,
+            split_pending: false,
             xy_formats: [format_of(Quantity::X), format_of(Quantity::Y)],
             exact_arcs: exact_arcs || eng.post.options.exact_arcs,
         }
@@ -96,20 +106,40 @@ impl SectionDispatch {
                     eng.warn_once(Diagnostic::warning("RT011", "a second Job event came after output began; it is ignored")
                         .at(eng.event_span, "this Job event"));
                 } else {
+                    if let Some(wrap) = eng.post.options.rotary_wrap
+                        && !job.wrap_diameter.is_some_and(|d| d > 0.0)
+                    {
+                        let axis = if wrap.axis == postc_ir::post::WrappedAxis::X { 'X' } else { 'Y' };
+                        eng.warn_once(
+                            Diagnostic::warning(
+                                "RT015",
+                                format!("the post wraps {axis} around a cylinder (ROTARY_WRAP_{axis}), but the job gives no wrap diameter, so {axis} prints as a length, not as an angle"),
+                            )
+                            .at(eng.event_span, "this Job event")
+                            .help("give the job a `wrap_diameter`"),
+                        );
+                    }
                     let units = eng.post.info.units;
                     eng.machine.set_job(*job, units);
                 }
             }
             Event::Tool(tool) => {
+                // A pending split ends the part before the new tool is
+                // known, so its footer still sees the tool it cut with.
+                self.split_if_pending(eng)?;
                 self.tool_changed = self.last_tool != Some(tool.number);
                 eng.machine.set_tool(tool);
             }
             Event::ToolpathStart(tp) => {
                 eng.machine.toolpath = tp;
+                self.split_if_pending(eng)?;
                 self.begin_toolpath(eng)?;
             }
             Event::ToolpathEnd => {
-                self.ensure_started(eng)?;
+                // The end of a toolpath belongs to the part that cut it.
+                if !self.split_pending {
+                    self.ensure_started(eng)?;
+                }
                 eng.run_section(Section::ToolpathEnd)?;
             }
             Event::Rapid(m) => {
@@ -209,13 +239,18 @@ impl SectionDispatch {
         if self.finished {
             return Ok(());
         }
+        // A split still pending here would open a part with nothing in it.
+        self.split_pending = false;
         self.ensure_started(eng)?;
         eng.run_section(Section::Footer)?;
         self.finished = true;
         Ok(())
     }
 
+    /// Starts the program, the next tape-split part or the new tool's
+    /// toolpath, whichever is due, before a block is printed.
     fn ensure_started(&mut self, eng: &mut Engine) -> Result<()> {
+        self.split_if_pending(eng)?;
         if !self.started || self.tool_changed {
             self.begin_toolpath(eng)?;
         }
@@ -242,6 +277,19 @@ impl SectionDispatch {
         self.tool_changed = false;
         self.last_tool = Some(eng.machine.tool.number);
         self.fresh_modal_state(eng);
+        Ok(())
+    }
+
+    /// Ends the current tape-split part with the footer when a split is
+    /// due; the next part starts (with the header) at its first block.
+    fn split_if_pending(&mut self, eng: &mut Engine) -> Result<()> {
+        if !self.split_pending {
+            return Ok(());
+        }
+        self.split_pending = false;
+        eng.run_section(Section::Footer)?;
+        eng.out.new_part();
+        self.started = false;
         Ok(())
     }
 
@@ -277,6 +325,7 @@ impl SectionDispatch {
     }
 
     fn rapid_to(&mut self, eng: &mut Engine, target: [f64; 3]) -> Result<()> {
+        self.ensure_started(eng)?;
         let pos = eng.machine.pos;
         let retract = same_xy(pos, target) && target[2] > pos[2];
         eng.machine.pos = target;
@@ -309,6 +358,7 @@ impl SectionDispatch {
     }
 
     fn feed_to(&mut self, eng: &mut Engine, target: [f64; 3], intent: Intent, feed: Option<f64>) -> Result<()> {
+        self.ensure_started(eng)?;
         let pos = eng.machine.pos;
         let intent = match intent {
             Intent::Cut if same_xy(pos, target) && target[2] < pos[2] => Intent::Plunge,
@@ -499,9 +549,17 @@ impl SectionDispatch {
     fn after_move(&mut self, eng: &mut Engine, retract: bool) -> Result<()> {
         let Some(tape) = &eng.post.options.tape_splitting else { return Ok(()) };
         let blocks = eng.out.blocks_in_part();
-        let soft = retract && blocks + tape.tolerance >= tape.max_lines;
+        // A retract that stops below safe Z (a peck back to the R plane, a
+        // feed retract before the rapid up) is no place to end a part: the
+        // next part would start from the header's position with a move
+        // down into the cut.
+        let clear = eng.machine.job.safe_z.is_none_or(|z| eng.machine.pos[2] >= z - 1e-9 * z.abs().max(1.0));
+        let soft = retract && clear && blocks + tape.tolerance >= tape.max_lines;
         let hard = blocks >= tape.max_lines;
         if !(soft || hard) {
+            return Ok(());
+        }
+        if self.split_pending {
             return Ok(());
         }
         if hard && !soft {
@@ -513,10 +571,7 @@ impl SectionDispatch {
                 ),
             ).help("raise the TAPE_SPLITTING tolerance so that a retract falls inside it"));
         }
-        eng.run_section(Section::Footer)?;
-        eng.out.new_part();
-        self.start_program(eng)?;
-        self.fresh_modal_state(eng);
+        self.split_pending = true;
         Ok(())
     }
 }
@@ -537,4 +592,163 @@ fn pick(eng: &Engine, first_section: Section, plain: Section, first: bool) -> Op
 
 fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
     (a[0] - b[0]).abs() <= 1e-9 && (a[1] - b[1]).abs() <= 1e-9
+}
+
+#[cfg(test)]
+mod tests {
+    use postc_ir::event::{Job, Tool, ToolpathStart, VecSource};
+    use postc_ir::post::TapeSplitting;
+    use postc_ir::{FileId, Handler, HandlerKey, NumberFormat, Piece, Post, Stmt, ValueSource, Variable};
+
+    use super::*;
+    use crate::{Finished, Output, RunOptions};
+
+    /// A post that prints each section's name and, for moves, Z; split
+    /// into parts of at most `max` blocks, at a retract once a part has
+    /// `max - tolerance`.
+    fn tape_post(max_lines: u64, tolerance: u64) -> Post {
+        let mut post = Post::default();
+        post.formats.push(NumberFormat { decimals: 0, ..NumberFormat::default() });
+        post.variables.push(Variable {
+            name: "Z".into(),
+            source: ValueSource::Quantity(Quantity::Z),
+            prefix: b"Z".to_vec(),
+            format: 0,
+            modality: postc_ir::Modality::Always,
+        });
+        post.variables.push(Variable {
+            name: "T".into(),
+            source: ValueSource::Quantity(Quantity::Tool),
+            prefix: b"T".to_vec(),
+            format: 0,
+            modality: postc_ir::Modality::Always,
+        });
+        let line = |text: &str, var: Option<u16>| {
+            let mut pieces = vec![Piece::Text(text.as_bytes().to_vec())];
+            pieces.extend(var.map(Piece::Var));
+            Stmt::Line(pieces)
+        };
+        for (section, text, var) in [
+            (Section::Header, "HEADER ", Some(1)),
+            (Section::Footer, "FOOTER ", Some(1)),
+            (Section::ToolChange, "TOOLCHANGE ", Some(1)),
+            (Section::NewSegment, "NEW_SEGMENT", None),
+            (Section::RapidMove, "RAPID ", Some(0)),
+            (Section::FeedMove, "FEED ", Some(0)),
+        ] {
+            post.handlers.push(Handler { key: HandlerKey::Section(section), body: vec![line(text, var)], span: None });
+        }
+        post.options.tape_splitting = Some(TapeSplitting {
+            max_lines,
+            tolerance,
+            name_format: "%s_%d.nc".into(),
+            start_index: 1,
+            index_on_first_file: true,
+        });
+        post
+    }
+
+    fn parts(post: &Post, events: Vec<Event>) -> Vec<String> {
+        let mut source = VecSource::new(events, FileId(0));
+        let report = crate::run(post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
+        match report.output {
+            Finished::Memory(parts) => parts.into_iter().map(|p| String::from_utf8(p).unwrap()).collect(),
+            _ => unreachable!(),
+        }
+    }
+
+    /// A pass away from home (so its first rapid is no retract) that ends
+    /// with a retract.
+    fn pass(x: f64) -> Vec<Event> {
+        vec![
+            Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
+            Event::Feed(FeedMove { x, y: 0.0, z: -1.0, ..FeedMove::default() }),
+            Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
+        ]
+    }
+
+    fn tool(number: u32) -> Event {
+        Event::Tool(Tool { number, ..Tool::default() })
+    }
+
+    #[test]
+    fn a_split_due_at_the_last_retract_makes_no_empty_part() {
+        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
+        events.extend(pass(1.0));
+        events.push(Event::ToolpathEnd);
+        events.push(Event::End);
+        assert_eq!(parts(&tape_post(4, 2), events), ["HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n"]);
+    }
+
+    #[test]
+    fn a_split_waits_for_the_next_move_and_restarts_with_the_header() {
+        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
+        events.extend(pass(1.0));
+        events.extend(pass(2.0));
+        events.push(Event::End);
+        assert_eq!(
+            parts(&tape_post(4, 2), events),
+            [
+                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
+                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
+            ]
+        );
+    }
+
+    #[test]
+    fn a_split_at_a_tool_change_starts_the_part_like_a_program() {
+        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
+        events.extend(pass(1.0));
+        events.push(Event::ToolpathEnd);
+        events.push(tool(2));
+        events.push(Event::ToolpathStart(ToolpathStart::default()));
+        events.extend(pass(1.0));
+        events.push(Event::End);
+        // The old part's footer still has tool 1; the new part's header
+        // loads tool 2, with no TOOLCHANGE or NEW_SEGMENT.
+        assert_eq!(
+            parts(&tape_post(4, 2), events),
+            [
+                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
+                "HEADER T2\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T2\n",
+            ]
+        );
+    }
+
+    #[test]
+    fn a_part_ends_only_at_a_retract_that_reaches_safe_z() {
+        let job = Job { safe_z: Some(5.0), ..Job::default() };
+        let mut events = vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default())];
+        for x in [1.0, 2.0] {
+            events.extend([
+                Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
+                Event::Feed(FeedMove { x, y: 0.0, z: -1.0, ..FeedMove::default() }),
+                // A feed retract to just above the surface: no split here,
+                // or the next part would start with the rapid up alone.
+                Event::Feed(FeedMove { x, y: 0.0, z: 0.0, intent: Intent::Retract, ..FeedMove::default() }),
+                Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
+            ]);
+        }
+        events.push(Event::End);
+        let pass = "RAPID Z5\nFEED Z-1\nFEED Z0\nRAPID Z5\n";
+        assert_eq!(
+            parts(&tape_post(6, 3), events),
+            [format!("HEADER T1\n{pass}FOOTER T1\n"), format!("HEADER T1\n{pass}FOOTER T1\n")]
+        );
+    }
+
+    #[test]
+    fn a_wrapped_post_warns_when_the_job_has_no_wrap_diameter() {
+        let mut post = tape_post(100, 10);
+        post.options.rotary_wrap =
+            Some(postc_ir::post::RotaryWrap { axis: postc_ir::post::WrappedAxis::Y, letter: Some('A'), reversed: false });
+        let run = |job: Job| {
+            let events = vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default()), Event::End];
+            let mut source = VecSource::new(events, FileId(0));
+            let report = crate::run(&post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
+            report.warnings.iter().map(|w| w.code.to_string()).collect::<Vec<_>>()
+        };
+        assert_eq!(run(Job::default()), ["RT015"]);
+        assert!(run(Job { wrap_diameter: Some(40.0), ..Job::default() }).is_empty());
+    }
 }

@@ -1,0 +1,35 @@
+( helix_mm.nc in /jobs/helix )
+( path /jobs/helix )
+G21 G90 G17 G40 G49 G94
+G0Z20.000
+T2 M6
+G43 H2
+( Helix CCW: CCW helical plunge, a flat circle, a CCW helical climb )
+( cut 1500 plunge 300 mm/min )
+S18000 M3
+G0X35.000Y30.000Z5.000
+G1Z0.500F300.0
+G3Z-1.000I-5.000J0.000 ( helical plunge )
+G3Z-2.500I-5.000J0.000 ( helical plunge )
+G3X25.000I-5.000J0.000F1500.0
+G3X35.000I5.000J0.000
+G3X25.000Z-1.500I-5.000J0.000
+G3X35.000Z-0.500I5.000J0.000
+G0Z5.000
+( Helix CW: CW helical plunge with a slower last turn, then a CW helical climb )
+( cut 1500 plunge 300 mm/min )
+G0X75.000Y40.000Z5.000
+G0Z1.000
+G2X65.000Z-1.000I-5.000J0.000F300.0 ( helical plunge )
+G2X75.000Z-2.000I5.000J0.000 ( helical plunge )
+G2X65.000Z-3.000I-5.000J0.000F200.0 ( helical plunge )
+G2X75.000I5.000J0.000F1500.0
+G2X65.000I-5.000J0.000
+G2X75.000Z-2.000I5.000J0.000
+G2X65.000Z-1.000I-5.000J0.000
+G1Z0.000F300.0
+G0Z5.000
+M5
+G0Z20.000
+G0X0.000Y0.000
+M30

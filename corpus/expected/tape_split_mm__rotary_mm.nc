@@ -1,0 +1,21 @@
+( rotary_mm.nc in /jobs/rotary )
+( path /jobs/rotary )
+G21 G90 G17 G40 G49 G94
+G0Z30.000
+T1 M6
+G43 H1
+( Spiral groove: quarter turns, then back )
+( cut 900 plunge 200 mm/min )
+S16000 M3
+G0X10.000Y0.000Z5.000
+G1Z-1.000F200.0
+G1X40.000Y31.416F900.0
+G1X70.000Y62.832
+G1Y-31.416F450.0
+G3X90.000I10.000J0.000F900.0
+G1Y0.000
+G0Z5.000
+M5
+G0Z30.000
+G0X0.000Y0.000
+M30
