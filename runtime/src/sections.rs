@@ -100,6 +100,7 @@ impl SectionDispatch {
 
     /// Handles one event.
     pub fn event(&mut self, eng: &mut Engine, event: Event) -> Result<()> {
+        check_finite(eng, &event)?;
         match event {
             Event::Job(job) => {
                 if self.started {
@@ -484,7 +485,17 @@ impl SectionDispatch {
     }
 
     fn linearize(&mut self, eng: &mut Engine, g: &ArcGeometry, intent: Intent, feed: Option<f64>, tol: f64) -> Result<()> {
-        let n = g.segments(tol);
+        let mut n = g.segments(tol);
+        if n > MAX_CHORDS {
+            eng.warn_once(
+                Diagnostic::warning(
+                    "RT017",
+                    format!("an arc of radius {:.3} needs more than {MAX_CHORDS} chords to stay within the tolerance; it is cut into {MAX_CHORDS}", g.radius),
+                )
+                .at(eng.event_span, "this arc"),
+            );
+            n = MAX_CHORDS;
+        }
         for i in 1..=n {
             let p = g.point_at(f64::from(i) / f64::from(n));
             self.feed_to(eng, p, intent, feed)?;
@@ -574,6 +585,32 @@ impl SectionDispatch {
         self.split_pending = true;
         Ok(())
     }
+}
+
+/// Linearized arcs are cut into at most this many chords.
+const MAX_CHORDS: u32 = 10_000;
+
+/// Refuses events whose numbers are not finite: a NaN or infinite
+/// coordinate would otherwise print as 0.
+fn check_finite(eng: &Engine, event: &Event) -> Result<()> {
+    let numbers: &[f64] = match event {
+        Event::Rapid(m) => &[m.x, m.y, m.z],
+        Event::Feed(m) => &[m.x, m.y, m.z, m.feed.unwrap_or(0.0)],
+        Event::Arc(a) => &[a.x, a.y, a.z, a.cx, a.cy, a.cz, a.feed.unwrap_or(0.0)],
+        Event::DrillPoint(p) => &[p.x, p.y, p.z],
+        Event::DrillCycle(c) => &[c.retract_plane, c.reference_plane, c.depth, c.peck.unwrap_or(0.0), c.dwell.unwrap_or(0.0)],
+        Event::Dwell(d) => &[d.seconds],
+        Event::Power(p) => &[p.value],
+        _ => return Ok(()),
+    };
+    if numbers.iter().all(|n| n.is_finite()) {
+        return Ok(());
+    }
+    Err(Box::new(
+        Diagnostic::error("RT016", format!("this {} event has a value that is not a finite number", event.name()))
+            .at(eng.event_span, "here")
+            .help("every coordinate, feed and time must be an ordinary number"),
+    ))
 }
 
 /// The `FIRST_` section when it applies and exists, else the plain one,

@@ -273,8 +273,10 @@ fn options(model: &Model, diags: &mut Vec<Diagnostic>) -> OutputOptions {
     options.min_arc_radius = number(model, GlobalName::MinArcRadius);
     options.max_arc_radius = number(model, GlobalName::MaxArcRadius);
     options.inverse_time_feed = flag(model, GlobalName::InverseTimeMode);
-    let x = model.global(GlobalName::RotaryWrapX);
-    let y = model.global(GlobalName::RotaryWrapY);
+    // A wrap set to "NO" is no wrap: it neither conflicts nor wins.
+    let on = |name| model.global(name).filter(|g| matches!(g.value, GlobalValue::Wrap(Some(_))));
+    let x = on(GlobalName::RotaryWrapX);
+    let y = on(GlobalName::RotaryWrapY);
     if let (Some(x), Some(y)) = (x, y) {
         let (used, ignored) = if x.seq > y.seq { (x, y) } else { (y, x) };
         diags.push(
