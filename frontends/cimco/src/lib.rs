@@ -1,1 +1,58 @@
-//! placeholder
+//! # CIMCO CNC-Calc JavaScript posts
+//!
+//! CNC-Calc posts (seed 002) are JavaScript files: globals that set up the
+//! output (`decimalMark`, `linebreak`, `useRadius`, ... or a
+//! `globals = {...}` object with a `PostInfo`), number formats and output
+//! variables made with `createFormat` and `createVariable`, and the
+//! functions CNC-Calc calls (`onInit`, `onOpen`, `onLinear`, `onCircular`,
+//! `onDrillingPoint`, ...). They use the ES5 of their era.
+//!
+//! This crate reads that JavaScript. Phase 1, here, is the front half:
+//!
+//! - [`lexer`]: text to tokens (comments, line breaks for automatic
+//!   semicolon insertion, strings, numbers, regular expressions);
+//! - `parser`: tokens to the [`ast`], a chumsky grammar with error
+//!   recovery, so every error in a file is reported;
+//! - [`validate`]: `return`/`break`/`continue` where they belong;
+//! - [`diagnostics`]: the `JS` codes, and the JavaScript outside the subset,
+//!   each reported at its line and column with its name and what to write
+//!   instead;
+//! - [`mod@print`] and [`dump`]: the tree back as JavaScript, and as a compact
+//!   dump for tests.
+//!
+//! The lowering to native IR statements or Rhai comes next and works on
+//! the [`ast`].
+
+pub mod ast;
+pub mod diagnostics;
+pub mod dump;
+pub mod lexer;
+mod parser;
+pub mod print;
+mod sniff;
+mod strings;
+pub mod token;
+pub mod validate;
+
+use postc_ir::{Diagnostic, FileId, Span};
+
+pub use ast::Program;
+pub use parser::MAX_NESTING;
+pub use sniff::looks_like_cimco;
+
+/// Parses a CIMCO post. Always returns a tree (parts that did not parse
+/// are error nodes) and every problem found, sorted by position.
+pub fn parse(text: &str, file: FileId) -> (Program, Vec<Diagnostic>) {
+    let (tokens, mut diagnostics) = lexer::lex(text, file);
+    let brackets = parser::match_brackets(&tokens);
+    let (program, errors, too_deep) = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone());
+    diagnostics.extend(parser::report::diagnostics(errors, file, &brackets, too_deep));
+    let program = program.unwrap_or_else(|| Program {
+        body: Vec::new(),
+        span: Span::new(file, 0, text.len()),
+    });
+    diagnostics.extend(validate::check(&program));
+    diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
+    diagnostics.dedup_by(|a, b| a.code == b.code && a.primary_span() == b.primary_span() && a.message == b.message);
+    (program, diagnostics)
+}
