@@ -1,0 +1,299 @@
+//! Lowering: the syntax tree to a [`postc_ir::Post`].
+//!
+//! - Each Sub or Function becomes a [`Function`] with a native body. A Sub
+//!   whose name is an APT major word or a composites routine (see
+//!   [`crate::routines`]) also becomes a [`Handler`] keyed
+//!   `Word(NAME in upper case)` whose body calls the function.
+//! - Statements outside any Sub become `Post::init`, in file order;
+//!   register properties among them are applied when compiling.
+//! - Registers become [`Variable`]s (`ValueSource::Assigned`, or the block
+//!   number for `N`) with one [`postc_ir::NumberFormat`] each; every other
+//!   name outside a Sub's locals is a [`Global`].
+//! - Keyword comments are kept as `PostInfo::notes` lines
+//!   ([`mod@crate::signatures`]).
+//!
+//! The passes: collect Subs, collect registers, collect what each global
+//! holds (number or text) and which names are ever set; then lower the items
+//! in file order; then build variables, handlers and notes and warn about
+//! variables that are read but never set.
+
+mod control;
+mod expr;
+mod names;
+mod stmt;
+mod template;
+mod walk;
+
+use std::collections::{HashMap, HashSet};
+
+use postc_ir::post::{FunctionId, VarId};
+use postc_ir::{
+    Body, Diagnostic, Dialect, Dispatch, Expr as IrExpr, Function, Global, Handler, HandlerKey, Post, Quantity,
+    Stmt as IrStmt, ValueSource, Variable,
+};
+
+use crate::ast::{CommentKind, Item, ProcKind, Program};
+use crate::diagnostics as codes;
+use crate::registers::RegisterSpec;
+
+pub use template::{TemplatePart, out_parts, split};
+
+/// Deepest expression (in tree levels) a statement may hold.
+pub const MAX_EXPR_DEPTH: usize = 200;
+
+/// A Sub or Function as callers see it.
+#[derive(Clone, Debug)]
+struct ProcInfo {
+    id: FunctionId,
+    kind: ProcKind,
+    params: usize,
+}
+
+/// A global as the lowering tracks it.
+#[derive(Clone, Debug)]
+struct GlobalInfo {
+    index: u16,
+    constant: bool,
+    declared: bool,
+    first_read: Option<postc_ir::Span>,
+}
+
+/// The locals of the Sub being lowered.
+#[derive(Debug, Default)]
+struct Scope {
+    locals: HashMap<String, (u16, bool)>,
+    names: Vec<String>,
+    function: Option<String>,
+    ret: Option<u16>,
+}
+
+/// Kinds of loops `Exit` can leave.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LoopFrame {
+    For,
+    Do,
+    While,
+}
+
+pub(crate) struct Lowerer<'a> {
+    program: &'a Program,
+    legacy_encoding: bool,
+    post: Post,
+    diagnostics: Vec<Diagnostic>,
+    procs: HashMap<String, ProcInfo>,
+    proc_ids: Vec<FunctionId>,
+    registers: HashMap<String, VarId>,
+    specs: Vec<RegisterSpec>,
+    sequence: Option<VarId>,
+    globals: HashMap<String, GlobalInfo>,
+    text_globals: HashMap<String, bool>,
+    assigned: HashSet<String>,
+    host_functions: HashMap<String, FunctionId>,
+    scope: Option<Scope>,
+    loops: Vec<LoopFrame>,
+    hidden: u32,
+}
+
+/// Lowers a parsed post. `legacy_encoding` says the file was Windows-1252,
+/// so literal output text is written back in that encoding.
+pub fn lower(program: &Program, legacy_encoding: bool) -> (Post, Vec<Diagnostic>) {
+    let mut l = Lowerer {
+        program,
+        legacy_encoding,
+        post: Post::default(),
+        diagnostics: Vec::new(),
+        procs: HashMap::new(),
+        proc_ids: Vec::new(),
+        registers: HashMap::new(),
+        specs: Vec::new(),
+        sequence: None,
+        globals: HashMap::new(),
+        text_globals: HashMap::new(),
+        assigned: HashSet::new(),
+        host_functions: HashMap::new(),
+        scope: None,
+        loops: Vec::new(),
+        hidden: 0,
+    };
+    l.post.info.dialect = Dialect::VcPost;
+    l.post.info.dispatch = Dispatch::AptWords;
+    l.collect_procs();
+    names::collect(&mut l);
+    let mut index = 0;
+    for item in &program.items {
+        match item {
+            Item::Stmt(s) => {
+                let lowered = l.stmt(s);
+                l.post.init.extend(lowered);
+            }
+            Item::Proc(p) => {
+                l.proc(p, index);
+                index += 1;
+            }
+        }
+    }
+    l.finish();
+    (l.post, l.diagnostics)
+}
+
+impl Lowerer<'_> {
+    fn collect_procs(&mut self) {
+        for item in &self.program.items {
+            let Item::Proc(p) = item else { continue };
+            let id = self.post.functions.len() as FunctionId;
+            self.proc_ids.push(id);
+            self.post.functions.push(Function {
+                name: p.name.text.clone(),
+                params: p.params.iter().map(|f| f.name.text.clone()).collect(),
+                slots: 0,
+                body: Body::Native(Vec::new()),
+                span: Some(p.header),
+            });
+            let key = p.name.key();
+            if !crate::token::is_valid_name(&p.name.text) {
+                continue;
+            }
+            if crate::builtins::lookup(&key).is_some() {
+                self.diagnostics.push(
+                    Diagnostic::error(
+                        codes::DUPLICATE_SUB,
+                        format!("`{}` is a built-in function and cannot name a {}", p.name.text, p.kind.as_str()),
+                    )
+                    .at(p.name.span, "choose another name"),
+                );
+                continue;
+            }
+            if let Some(first) = self.procs.get(&key) {
+                let first_span = self.post.functions[first.id as usize].span.unwrap_or(p.header);
+                self.diagnostics.push(
+                    Diagnostic::error(codes::DUPLICATE_SUB, format!("`{}` is defined twice", p.name.text))
+                        .at(p.name.span, "second definition")
+                        .also(first_span, "first definition; calls go there")
+                        .help("rename or remove one of them"),
+                );
+                continue;
+            }
+            self.procs.insert(key, ProcInfo { id, kind: p.kind, params: p.params.len() });
+        }
+    }
+
+    fn finish(&mut self) {
+        let mut variables = Vec::with_capacity(self.specs.len());
+        for (index, spec) in self.specs.iter().enumerate() {
+            let (prefix, format, modality) = spec.finish(&mut self.diagnostics);
+            let format_id = self.post.formats.len() as u16;
+            self.post.formats.push(format);
+            let source = if Some(index as VarId) == self.sequence {
+                ValueSource::Quantity(Quantity::BlockNumber)
+            } else {
+                ValueSource::Assigned
+            };
+            variables.push(Variable { name: spec.name.clone(), source, prefix, format: format_id, modality });
+        }
+        self.post.variables = variables;
+        self.handlers();
+        self.never_set();
+        let signatures = crate::signatures::signatures(self.program);
+        self.post.info.notes = crate::signatures::to_notes(&signatures);
+    }
+
+    fn handlers(&mut self) {
+        let mut seen = HashSet::new();
+        let mut index = 0;
+        for item in &self.program.items {
+            let Item::Proc(p) = item else { continue };
+            let id = self.proc_ids[index];
+            index += 1;
+            let Some(word) = crate::routines::handler_word(&p.name.text) else { continue };
+            if !seen.insert(word.clone()) {
+                continue;
+            }
+            if p.keyword_comments.iter().any(|k| matches!(k.kind, CommentKind::Keyword(_))) {
+                continue;
+            }
+            if !p.params.is_empty() {
+                self.diagnostics.push(
+                    Diagnostic::error(
+                        codes::HANDLER_WITH_PARAMS,
+                        format!(
+                            "Sub `{}` is called for each {word} record or event and cannot take parameters",
+                            p.name.text
+                        ),
+                    )
+                    .at(p.header, "remove the parameter list")
+                    .help("the values it needs arrive as registers and variables (X, Y, Z, F, ...)"),
+                );
+                continue;
+            }
+            self.post.handlers.push(Handler {
+                key: HandlerKey::Word(word),
+                body: vec![IrStmt::Eval(IrExpr::Call(id, Vec::new()))],
+                span: Some(p.header),
+            });
+        }
+    }
+
+    fn never_set(&mut self) {
+        let mut unset: Vec<(String, postc_ir::Span)> = Vec::new();
+        for (key, g) in &self.globals {
+            let Some(at) = g.first_read else { continue };
+            if g.declared
+                || g.constant
+                || self.assigned.contains(key)
+                || crate::routines::runtime_variable(key).is_some()
+            {
+                continue;
+            }
+            let name = self.post.globals.get(g.index as usize).map_or(key.clone(), |g| g.name.clone());
+            unset.push((name, at));
+        }
+        unset.sort_by_key(|(_, at)| at.start);
+        let candidates: Vec<String> = self
+            .post
+            .globals
+            .iter()
+            .filter(|g| self.assigned.contains(&g.name.to_lowercase()))
+            .map(|g| g.name.clone())
+            .chain(self.specs.iter().map(|s| s.name.clone()))
+            .collect();
+        for (name, at) in unset {
+            let mut d =
+                Diagnostic::warning(codes::NEVER_SET, format!("`{name}` is read but never set, so it is always 0"))
+                    .at(at, "never assigned anywhere in the post");
+            d = match codes::suggest(&name, candidates.iter().map(String::as_str)) {
+                Some(s) => d.help(format!("did you mean `{s}`?")),
+                None => {
+                    d.help(format!("assign it (`{name} = ...`) or declare it with `Dim {name}` if the runtime sets it"))
+                }
+            };
+            self.diagnostics.push(d);
+        }
+    }
+
+    /// A new global; its initial value is text when the post only ever
+    /// assigns text to it or the runtime sets it to text.
+    fn new_global(&mut self, name: &str, initial: Option<IrExpr>, constant: bool, declared: bool) -> u16 {
+        let key = name.to_lowercase();
+        if let Some(g) = self.globals.get(&key) {
+            return g.index;
+        }
+        let index = match u16::try_from(self.post.globals.len()) {
+            Ok(i) if i < u16::MAX => i,
+            _ => return self.too_many("variables"),
+        };
+        let text = self.text_globals.get(&key).copied().unwrap_or(false)
+            || crate::routines::runtime_variable(name) == Some(crate::routines::VarType::Text);
+        let initial = initial.unwrap_or(if text { IrExpr::Text(String::new()) } else { IrExpr::Number(0.0) });
+        self.post.globals.push(Global { name: name.to_string(), initial });
+        self.globals.insert(key, GlobalInfo { index, constant, declared, first_read: None });
+        index
+    }
+
+    fn too_many(&mut self, what: &str) -> u16 {
+        if !self.diagnostics.iter().any(|d| d.code == codes::TOO_COMPLEX && d.labels.is_empty()) {
+            self.diagnostics
+                .push(Diagnostic::error(codes::TOO_COMPLEX, format!("this post has too many {what} (at most 65535)")));
+        }
+        0
+    }
+}

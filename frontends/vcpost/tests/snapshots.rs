@@ -1,0 +1,183 @@
+//! Snapshot tests: every fixture post under `tests/fixtures/valid` and
+//! `tests/fixtures/invalid` is compiled, and its diagnostics (rendered as
+//! people see them), Sub signatures and lowered IR (RON) are compared with
+//! `tests/snapshots/<name>.snap`. Any difference fails; `POSTC_BLESS=1`
+//! rewrites the snapshots.
+//!
+//! Valid fixtures must compile without any diagnostic. Invalid fixtures are
+//! named after the code they show (`vc006_missing_end_if.VcPost`) and must
+//! give at least one diagnostic with that code.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use postc_front_vcpost::{compile, parse, signatures, signatures::from_post};
+use postc_ir::{Severity, SourceMap};
+
+fn crate_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn fixtures(kind: &str) -> Vec<PathBuf> {
+    let dir = crate_dir().join("tests/fixtures").join(kind);
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("vcpost")))
+        .collect();
+    files.sort();
+    files
+}
+
+struct Outcome {
+    snapshot: String,
+    codes: Vec<(String, Severity)>,
+}
+
+fn run(path: &Path) -> Outcome {
+    let bytes = std::fs::read(path).unwrap();
+    let relative = path.strip_prefix(crate_dir()).unwrap_or(path).to_path_buf();
+    let mut sources = SourceMap::new();
+    let (post, diagnostics) = compile(&relative, &bytes, &mut sources);
+
+    let text = String::from_utf8_lossy(&bytes).into_owned();
+    let (program, _) = parse(&text, postc_ir::FileId(0));
+    let sigs = signatures(&program);
+    let from_notes = from_post(&post);
+    let plain = |s: &postc_front_vcpost::SubSignature| (s.name.clone(), s.keyword, s.params.clone(), s.tips.clone());
+    assert_eq!(
+        sigs.iter().map(plain).collect::<Vec<_>>(),
+        from_notes.iter().map(plain).collect::<Vec<_>>(),
+        "{}: signatures do not survive PostInfo::notes",
+        path.display()
+    );
+
+    let mut out = String::new();
+    out.push_str("== diagnostics ==\n");
+    out.push_str(&sources.render(&diagnostics, false));
+    out.push_str("== signatures ==\n");
+    for s in &sigs {
+        let line = sources.line_column(s.span.file, s.span.start).map_or(0, |p| p.0);
+        let keyword = s.keyword.map_or("-".to_string(), |k| format!("#{}", k.as_str()));
+        let params: Vec<String> = s.params.iter().map(|(n, m)| if *m { format!("!{n}") } else { n.clone() }).collect();
+        let _ = writeln!(out, "{} {} [{}] (line {line})", s.name, keyword, params.join(" "));
+        for (slot, tip) in &s.tips {
+            let _ = writeln!(out, "    #{} {tip}", slot.as_str());
+        }
+    }
+    out.push_str("== ir ==\n");
+    let config = ron::ser::PrettyConfig::new().indentor("  ".to_string());
+    out.push_str(&compact_byte_arrays(&ron::ser::to_string_pretty(&post, config).unwrap()));
+    out.push('\n');
+    Outcome { snapshot: out, codes: diagnostics.iter().map(|d| (d.code.to_string(), d.severity)).collect() }
+}
+
+/// Puts the byte arrays of RON (literal output text) on one line, with
+/// the text they spell in a comment, so snapshots stay readable.
+fn compact_byte_arrays(ron: &str) -> String {
+    let lines: Vec<&str> = ron.lines().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < lines.len() {
+        let line = lines[i];
+        if line.ends_with('[') {
+            let mut bytes = Vec::new();
+            let mut j = i + 1;
+            while let Some(b) = lines.get(j).and_then(|l| l.trim().strip_suffix(',')).and_then(|t| t.parse::<u8>().ok())
+            {
+                bytes.push(b);
+                j += 1;
+            }
+            if !bytes.is_empty() && lines.get(j).is_some_and(|l| l.trim_start().starts_with(']')) {
+                let list: Vec<String> = bytes.iter().map(u8::to_string).collect();
+                let close = lines[j].trim_start();
+                let _ = writeln!(out, "{line}{}{close} // {:?}", list.join(", "), String::from_utf8_lossy(&bytes));
+                i = j + 1;
+                continue;
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+        i += 1;
+    }
+    out
+}
+
+fn check_snapshot(path: &Path, actual: &str) -> Result<(), String> {
+    let name = path.file_stem().unwrap().to_string_lossy();
+    let snap = crate_dir().join("tests/snapshots").join(format!("{name}.snap"));
+    if std::env::var_os("POSTC_BLESS").is_some_and(|v| v == "1") {
+        std::fs::write(&snap, actual).unwrap();
+        return Ok(());
+    }
+    let expected = std::fs::read_to_string(&snap)
+        .map_err(|_| format!("{}: no snapshot; run with POSTC_BLESS=1 to write it", snap.display()))?;
+    if expected == actual {
+        return Ok(());
+    }
+    let (line, want, got) = expected
+        .lines()
+        .zip(actual.lines())
+        .enumerate()
+        .find(|(_, (a, b))| a != b)
+        .map(|(i, (a, b))| (i + 1, a.to_string(), b.to_string()))
+        .unwrap_or((expected.lines().count().min(actual.lines().count()) + 1, "<end>".into(), "<end>".into()));
+    Err(format!(
+        "{}: differs at line {line}\n  expected: {want}\n  actual:   {got}\n(POSTC_BLESS=1 rewrites snapshots)",
+        snap.display()
+    ))
+}
+
+#[test]
+fn valid_fixtures_compile_cleanly_and_match_their_snapshots() {
+    let mut failures = Vec::new();
+    let files = fixtures("valid");
+    assert!(files.len() >= 4, "expected the four application posts");
+    for path in files {
+        let outcome = run(&path);
+        if !outcome.codes.is_empty() {
+            failures.push(format!(
+                "{}: unexpected diagnostics {:?}\n{}",
+                path.display(),
+                outcome.codes,
+                outcome.snapshot
+            ));
+            continue;
+        }
+        if let Err(e) = check_snapshot(&path, &outcome.snapshot) {
+            failures.push(e);
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+#[test]
+fn invalid_fixtures_report_their_code_and_match_their_snapshots() {
+    let mut failures = Vec::new();
+    for path in fixtures("invalid") {
+        let outcome = run(&path);
+        let stem = path.file_stem().unwrap().to_string_lossy().to_uppercase();
+        let code = stem.split('_').next().unwrap_or_default().to_string();
+        if !outcome.codes.iter().any(|(c, _)| *c == code) {
+            failures.push(format!("{}: no {code} among {:?}\n{}", path.display(), outcome.codes, outcome.snapshot));
+            continue;
+        }
+        if let Err(e) = check_snapshot(&path, &outcome.snapshot) {
+            failures.push(e);
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+#[test]
+fn every_code_has_an_invalid_fixture() {
+    let have: Vec<String> = fixtures("invalid")
+        .iter()
+        .map(|p| {
+            p.file_stem().unwrap().to_string_lossy().to_uppercase().split('_').next().unwrap_or_default().to_string()
+        })
+        .collect();
+    let missing: Vec<&str> =
+        postc_front_vcpost::diagnostics::ALL.iter().copied().filter(|c| !have.iter().any(|h| h == c)).collect();
+    assert!(missing.is_empty(), "codes without an invalid fixture: {missing:?}");
+}
