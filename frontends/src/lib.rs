@@ -51,7 +51,7 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     let lower = text.to_ascii_lowercase();
     if lower.contains("function onlinear") || lower.contains("createformat(") || lower.contains("createvariable(") {
         Some(Dialect::Cimco)
-    } else if lower.contains("end sub") || lower.lines().any(|l| l.trim_start().starts_with("sub ")) {
+    } else if postc_front_vcpost::looks_like_vcpost(bytes) {
         Some(Dialect::VcPost)
     } else if postc_front_vectric::looks_like_vectric(bytes) {
         Some(Dialect::Vectric)
@@ -81,6 +81,10 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
     match dialect {
         Dialect::Vectric => {
             let (post, diagnostics) = postc_front_vectric::compile(path, bytes, sources);
+            Compiled { post: Some(post), diagnostics }
+        }
+        Dialect::VcPost => {
+            let (post, diagnostics) = postc_front_vcpost::compile(path, bytes, sources);
             Compiled { post: Some(post), diagnostics }
         }
         Dialect::Ron => compile_ron(path, bytes, sources),
@@ -137,6 +141,7 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
     let first = text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with("//"));
     match first {
         Some(l) if l.starts_with('{') || l.starts_with("Job(") || l.starts_with("Tool(") => Some(ToolpathFormat::Native),
+        _ if postc_front_apt::looks_like_cl(head) => Some(ToolpathFormat::Apt),
         _ => None,
     }
 }
@@ -172,7 +177,7 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
     }
     match toolpath_format(path, &read_head(path)) {
         Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
-        Some(ToolpathFormat::Apt) => Err(Diagnostic::error("IO005", "the APT CL reader is not part of this build yet")),
+        Some(ToolpathFormat::Apt) => Ok(Box::new(postc_front_apt::open(path, sources)?)),
         None => Err(Diagnostic::error("IO006", format!("cannot tell what kind of toolpath `{}` is", path.display()))
             .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)")),
     }
@@ -180,6 +185,9 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
 
 /// Reads a whole toolpath and returns every diagnostic (for `postc check`).
 pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
+    if toolpath_format(path, &read_head(path)) == Some(ToolpathFormat::Apt) {
+        return postc_front_apt::check(path, sources);
+    }
     let mut source = match open_toolpath(path, sources) {
         Ok(s) => s,
         Err(d) => return vec![d],

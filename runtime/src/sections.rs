@@ -162,10 +162,11 @@ impl SectionDispatch {
                 self.dwell(eng)?;
             }
             Event::SpindleOn(s) => {
-                if let Some(speed) = s.speed {
-                    eng.machine.spindle_speed = speed;
-                }
-                if self.started && !self.spindle_on {
+                let speed = s.speed.unwrap_or(eng.machine.spindle_speed);
+                let changed = speed != eng.machine.spindle_speed;
+                eng.machine.spindle_speed = speed;
+                // SPINDLE_ON prints when the spindle starts, or runs on at a new speed.
+                if self.started && (!self.spindle_on || changed) && !eng.machine.tool.jet {
                     self.spindle_on = eng.run_section(Section::SpindleOn)?;
                 }
             }
@@ -258,8 +259,11 @@ impl SectionDispatch {
         Ok(())
     }
 
+    /// Whether SPINDLE_ON prints after the header or a tool change: not
+    /// for jet tools, and not before a speed is known (a negative speed is
+    /// invalid, a zero one unknown: APT files give it in a later SPINDL).
     fn spindle_tool(eng: &Engine) -> bool {
-        !eng.machine.tool.jet && eng.machine.spindle_speed >= 0.0
+        !eng.machine.tool.jet && eng.machine.spindle_speed > 0.0
     }
 
     /// A toolpath starts: header or tool change, new segment, fresh modal state.

@@ -5,6 +5,8 @@
 + embedded in the binary). Output reads in LinuxCNC, Mach3/4, grbl and
 + most Fanuc-style controls: G20, absolute, XY plane, I/J relative arcs
 + with helical Z, G4 dwells, T/M6 tool changes with G43 length offsets.
++ Safe retracts go to machine Z zero (G53 G0 Z0), which is safe whether or
++ not the toolpath says where home is (APT CL files often do not).
 +
 +================================================
 
@@ -31,9 +33,6 @@ VAR Y_POSITION = [Y|C|Y|1.4]
 VAR Z_POSITION = [Z|C|Z|1.4]
 VAR ARC_CENTRE_I_INC_POSITION = [I|A|I|1.5]
 VAR ARC_CENTRE_J_INC_POSITION = [J|A|J|1.5]
-VAR X_HOME_POSITION = [XH|A|X|1.4]
-VAR Y_HOME_POSITION = [YH|A|Y|1.4]
-VAR Z_HOME_POSITION = [ZH|A|Z|1.4]
 VAR SAFE_Z_HEIGHT = [SAFEZ|A|Z|1.4]
 VAR DWELL_TIME = [DWELL|A|P|1.2]
 VAR X_LENGTH = [XLENGTH|A||1.1]
@@ -47,7 +46,7 @@ begin HEADER
 "( tools: [TOOLS_USED] )"
 "( toolpath: [TOOLPATH_NAME] )"
 "G20 G90 G17 G40 G49 G94"
-"G0[ZH]"
+"G53 G0 Z0"
 "T[T] M6"
 "G43 H[T]"
 
@@ -56,7 +55,7 @@ begin SPINDLE_ON
 
 begin TOOLCHANGE
 "M5"
-"G0[ZH]"
+"G53 G0 Z0"
 "( tool [T]: [TOOLNAME] )"
 "T[T] M6"
 "G43 H[T]"
@@ -99,6 +98,5 @@ begin JET_TOOL_OFF
 
 begin FOOTER
 "M5"
-"G0[ZH]"
-"G0[XH][YH]"
+"G53 G0 Z0"
 "M30"

@@ -1,0 +1,199 @@
+//! Hand-written fixtures, one per lexing rule, CIRCLE convention, CYCLE
+//! form and diagnostic, with their events and diagnostics kept as
+//! snapshots in `tests/snapshots/` (rewritten with `POSTC_BLESS=1`).
+
+mod common;
+
+use std::path::Path;
+
+use postc_ir::event::{ArcDir, Event, Plane};
+
+fn fixture(name: &str) -> Vec<u8> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures").join(name);
+    std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+fn snapshot(name: &str) -> common::Read {
+    let read = common::read_bytes(name, &fixture(name));
+    let stem = name.split('.').next().unwrap_or(name);
+    common::assert_snapshot(stem, &common::render(&read));
+    read
+}
+
+fn arcs(read: &common::Read) -> Vec<(ArcDir, Plane)> {
+    read.events
+        .iter()
+        .filter_map(|(e, _)| match e {
+            Event::Arc(a) => Some((a.dir, a.plane)),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn lexing_rules() {
+    let read = snapshot("lexing.cl");
+    assert!(read.errors().is_empty());
+    assert_eq!(read.codes(), ["CL007"], "only the line of numbers without `$` is reported");
+    assert_eq!(read.count("Feed"), 5);
+    // The same file with CRLF line ends reads to the same events.
+    let text = String::from_utf8(fixture("lexing.cl")).unwrap_or_default();
+    let crlf = common::read_text(&text.replace('\n', "\r\n"));
+    let events = |r: &common::Read| r.events.iter().map(|(e, _)| e.clone()).collect::<Vec<_>>();
+    assert_eq!(events(&crlf), events(&read));
+    assert_eq!(crlf.codes(), read.codes());
+}
+
+#[test]
+fn nx_toolpaths_tools_and_moves() {
+    let read = snapshot("toolpaths_nx.cls");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(read.count("ToolpathStart"), 3);
+    assert_eq!(read.count("ToolpathEnd"), 3);
+    assert_eq!(read.count("Tool"), 2, "the second toolpath keeps its tool");
+    let names: Vec<&str> = read.events.iter().map(|(e, _)| e.name()).take(3).collect();
+    assert_eq!(names, ["Job", "Tool", "ToolpathStart"]);
+}
+
+#[test]
+fn circle_solidworks_turns_counter_clockwise_about_its_axis() {
+    let read = snapshot("circle_solidworks.apt");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(
+        arcs(&read),
+        [(ArcDir::Ccw, Plane::Xy), (ArcDir::Ccw, Plane::Xy), (ArcDir::Cw, Plane::Xy), (ArcDir::Cw, Plane::Yz), (ArcDir::Ccw, Plane::Xy)]
+    );
+}
+
+#[test]
+fn circle_creo_turns_counter_clockwise_about_its_axis() {
+    let read = snapshot("circle_creo.ncl");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(arcs(&read), [(ArcDir::Cw, Plane::Xy), (ArcDir::Ccw, Plane::Xy)]);
+}
+
+#[test]
+fn circle_nx_turns_clockwise_about_its_axis() {
+    let read = snapshot("circle_nx.cls");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(arcs(&read), [(ArcDir::Ccw, Plane::Xy), (ArcDir::Cw, Plane::Xy)]);
+}
+
+#[test]
+fn circle_clt_follows_its_direction_word() {
+    let read = snapshot("circle_clt.clt");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(arcs(&read), [(ArcDir::Ccw, Plane::Xy), (ArcDir::Cw, Plane::Xy)]);
+}
+
+#[test]
+fn circle_catia_follows_indirv() {
+    let read = snapshot("circle_catia.aptsource");
+    assert_eq!(read.codes(), ["CL022"]);
+    assert_eq!(arcs(&read), [(ArcDir::Ccw, Plane::Xy), (ArcDir::Cw, Plane::Xy), (ArcDir::Ccw, Plane::Xy)]);
+}
+
+#[test]
+fn circle_in_a_tilted_plane_is_cut_into_feed_moves() {
+    let read = snapshot("circle_tilted.cl");
+    assert_eq!(read.codes(), ["CL012"]);
+    assert_eq!(read.count("Arc"), 0);
+    assert!(read.count("Feed") > 10);
+}
+
+#[test]
+fn cycles_of_every_vendor() {
+    for name in ["cycle_solidworks.apt", "cycle_nx.clsf", "cycle_creo.ncl", "cycle_classic.cl"] {
+        let read = snapshot(name);
+        assert!(read.diagnostics.is_empty(), "{name}: {:?}", read.diagnostics);
+        assert!(read.count("DrillCycle") >= 1, "{name}");
+    }
+    let read = snapshot("cycle_clt.clt");
+    assert_eq!(read.codes(), ["CL006", "CL006"]);
+    assert_eq!(read.count("DrillPoint"), 2);
+    let read = snapshot("cycle_open.cl");
+    assert_eq!(read.codes(), ["CL013", "CL013"]);
+    assert_eq!(read.count("DrillEnd"), 2);
+}
+
+#[test]
+fn seed_words_read_without_problems() {
+    let read = snapshot("seed_words.cl");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert!(read.count("Command") > 30);
+}
+
+#[test]
+fn every_error_is_reported_and_reading_goes_on() {
+    let read = snapshot("errors.cl");
+    let codes = read.codes();
+    for code in ["CL003", "CL004", "CL005", "CL006", "CL008", "CL009", "CL010", "CL014", "CL015", "CL016", "CL017", "CL019"] {
+        assert!(codes.contains(&code), "{code} missing from {codes:?}");
+    }
+    assert_eq!(read.events.last().map(|e| e.0.name()), Some("End"));
+    let read = snapshot("eof_continuation.cl");
+    assert_eq!(read.codes(), ["CL018", "CL004"], "the incomplete GOTO is reported too");
+    assert_eq!(read.count("Feed"), 0, "{:?}", read.events);
+}
+
+#[test]
+fn part_programs_give_one_error() {
+    for name in ["part_program.apt", "part_program_motion.apt"] {
+        let read = snapshot(name);
+        assert_eq!(read.codes(), ["CL002"], "{name}");
+    }
+    // An assignment found while reading (the head check only sees `NAME=WORD/`).
+    let read = common::read_text("GOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
+    assert_eq!(read.codes(), ["CL002"]);
+    // An `=` inside a record's arguments is a syntax error, not a part program.
+    let read = common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\n");
+    assert_eq!(read.codes(), ["CL003"]);
+    assert_eq!(read.count("Feed"), 2);
+    // CATIA's drive arc without its tool-position word still reads.
+    let read = common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\n");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(read.count("Arc"), 1);
+}
+
+#[test]
+fn binary_files_give_one_error() {
+    let mut apt360 = vec![1, 0, 0, 0, 2, 0, 0, 0, 0xe8, 3, 0, 0, 1, 0, 0, 0];
+    apt360.extend_from_slice(b"\0\0\0\0\0\0\0\0        \n GOTO/1,2,3\n");
+    let read = common::read_bytes("cl.tap", &apt360);
+    assert_eq!(read.codes(), ["CL001"]);
+    assert!(read.diagnostics[0].message.contains("APT360"));
+    assert!(read.events.is_empty());
+    let utf16: Vec<u8> = "\u{feff}GOTO/1,2,3\n".encode_utf16().flat_map(u16::to_le_bytes).collect();
+    let read = common::read_bytes("utf16.cl", &utf16);
+    assert_eq!(read.codes(), ["CL001"]);
+    assert!(read.diagnostics[0].message.contains("UTF-16"));
+}
+
+#[test]
+fn a_line_longer_than_a_mebibyte_is_skipped() {
+    let mut text = b"RAPID\nGOTO/0,0,0\nPPRINT ".to_vec();
+    text.extend(std::iter::repeat_n(b'x', 3 << 20));
+    text.extend_from_slice(b"\nGOTO/1,0,0\nFINI\n");
+    let read = common::read_bytes("long.cl", &text);
+    assert_eq!(read.codes(), ["CL020"]);
+    assert_eq!(read.count("Rapid") + read.count("Feed"), 2);
+}
+
+#[test]
+fn a_record_continued_past_a_mebibyte_is_skipped() {
+    let mut text = b"RAPID\nGOTO/0,0,0\nGOTO/1,$\n".to_vec();
+    for _ in 0..200_000 {
+        text.extend_from_slice(b"1.5,2.5,3.5,$\n");
+    }
+    text.extend_from_slice(b"3\nGOTO/1,0,0\nFINI\n");
+    let read = common::read_bytes("long.cl", &text);
+    assert_eq!(read.codes(), ["CL020"]);
+    assert_eq!(read.count("Rapid") + read.count("Feed"), 2);
+}
+
+#[test]
+fn a_utf8_byte_order_mark_is_skipped() {
+    let read = common::read_bytes("bom.cl", b"\xEF\xBB\xBFGOTO/1,2,3\nFINI\n");
+    assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+    assert_eq!(read.count("Feed"), 1);
+}
