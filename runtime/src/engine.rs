@@ -96,6 +96,27 @@ impl<'p> Engine<'p> {
         self.sections[section as usize].is_some()
     }
 
+    /// Runs the post's one-time code: global initial values, then `init`
+    /// (VcPost statements outside any Sub, CIMCO top-level code).
+    pub fn init(&mut self) -> Result<(), Box<Diagnostic>> {
+        let post = self.post;
+        let mut frame = Vec::new();
+        self.globals = Vec::with_capacity(post.globals.len());
+        for g in &post.globals {
+            let v = self.eval(&g.initial, &mut frame)?;
+            self.globals.push(v);
+        }
+        self.steps = 0;
+        self.exec(&post.init, &mut frame)?;
+        Ok(())
+    }
+
+    /// Runs the handler at `index` of the post's handlers.
+    pub fn run_handler(&mut self, index: usize) -> Result<(), Box<Diagnostic>> {
+        let body = self.prepared[index].clone();
+        self.run_prepared(&body)
+    }
+
     /// Runs the section's handler; false when the post has none.
     #[inline]
     pub fn run_section(&mut self, section: Section) -> Result<bool, Box<Diagnostic>> {

@@ -128,15 +128,18 @@ impl Engine<'_> {
                 }
                 frame[i] = v;
             }
-            Place::Global(i) => {
-                let i = i as usize;
-                if self.globals.len() <= i {
-                    self.globals.resize(i + 1, Value::Null);
-                }
-                self.globals[i] = v;
-            }
+            Place::Global(i) => self.set_global(i, v),
             Place::Var(id) => self.set_var(id, v),
         }
+    }
+
+    /// Sets a global's value.
+    pub fn set_global(&mut self, i: u16, v: Value) {
+        let i = i as usize;
+        if self.globals.len() <= i {
+            self.globals.resize(i + 1, Value::Null);
+        }
+        self.globals[i] = v;
     }
 
     /// Sets a variable's value, keeping the old one as its previous value.

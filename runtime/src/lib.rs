@@ -12,13 +12,16 @@
 //!   formatted variables straight into the output buffer) and keeps modal
 //!   memory, block numbers and warnings; `interp` runs the rest of the
 //!   statement language;
-//! - [`sections`]: which section prints each event (Vectric rules);
+//! - [`sections`]: which section prints each event (Vectric rules, CIMCO);
+//! - [`apt_words`]: events as APT records calling the handler of each
+//!   major word (VcPost posts, the `postp` controllers);
 //! - [`output`]: sinks that write whole programs or nothing, and tape
 //!   splitting into parts.
 //!
 //! [`run`] pulls events one at a time from an [`EventSource`], so memory
 //! stays flat whatever the toolpath's length.
 
+pub mod apt_words;
 pub mod clock;
 pub mod engine;
 pub mod geometry;
@@ -76,12 +79,6 @@ pub fn run<S: EventSource + ?Sized>(
         post_storage.options.arc_tolerance = tol;
         post = &post_storage;
     }
-    if post.info.dispatch == Dispatch::AptWords {
-        return Err(vec![Diagnostic::error(
-            "RT001",
-            "this post is driven by APT words (VcPost), which this runtime cannot dispatch yet",
-        )]);
-    }
     let mut machine = machine::Machine::new(
         post.info.units,
         post.options.spindle_speed_range,
@@ -96,13 +93,20 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_ext = f.extension;
     }
     let mut engine = Engine::new(post, machine, out);
-    let mut dispatch = sections::SectionDispatch::new(&engine, options.exact_arcs);
+    let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {
+        Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),
+        Dispatch::AptWords => Box::new(apt_words::AptDispatch::new(&engine)),
+    };
     let mut diagnostics = Vec::new();
     let mut events = 0u64;
     let fail = |mut diagnostics: Vec<Diagnostic>, engine: Engine| {
         diagnostics.extend(engine.warnings);
         Err(diagnostics)
     };
+    if let Err(d) = engine.init() {
+        diagnostics.push(*d);
+        return fail(diagnostics, engine);
+    }
     while let Some((event, span)) = source.next_event(&mut diagnostics) {
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
@@ -136,5 +140,32 @@ pub fn run<S: EventSource + ?Sized>(
             diagnostics.push(Diagnostic::error("IO003", format!("could not write the program: {e}")));
             Err(diagnostics)
         }
+    }
+}
+
+/// How events reach a post's handlers.
+trait Dispatcher {
+    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>>;
+    fn finish(&mut self, engine: &mut Engine) -> Result<(), Box<Diagnostic>>;
+}
+
+impl Dispatcher for sections::SectionDispatch {
+    #[inline]
+    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>> {
+        sections::SectionDispatch::event(self, engine, event)
+    }
+
+    fn finish(&mut self, engine: &mut Engine) -> Result<(), Box<Diagnostic>> {
+        sections::SectionDispatch::finish(self, engine)
+    }
+}
+
+impl Dispatcher for apt_words::AptDispatch {
+    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>> {
+        apt_words::AptDispatch::event(self, engine, event)
+    }
+
+    fn finish(&mut self, engine: &mut Engine) -> Result<(), Box<Diagnostic>> {
+        apt_words::AptDispatch::finish(self, engine)
     }
 }
