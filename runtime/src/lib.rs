@@ -112,7 +112,7 @@ pub fn run<S: EventSource + ?Sized>(
             return fail(diagnostics, engine);
         }
         engine.event_span = span;
-        if let Err(d) = dispatch.event(&mut engine, event) {
+        if let Err(d) = dispatch.event(&mut engine, &event) {
             diagnostics.push(*d);
             return fail(diagnostics, engine);
         }
@@ -145,13 +145,13 @@ pub fn run<S: EventSource + ?Sized>(
 
 /// How events reach a post's handlers.
 trait Dispatcher {
-    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>>;
+    fn event(&mut self, engine: &mut Engine, event: &postc_ir::Event) -> Result<(), Box<Diagnostic>>;
     fn finish(&mut self, engine: &mut Engine) -> Result<(), Box<Diagnostic>>;
 }
 
 impl Dispatcher for sections::SectionDispatch {
     #[inline]
-    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>> {
+    fn event(&mut self, engine: &mut Engine, event: &postc_ir::Event) -> Result<(), Box<Diagnostic>> {
         sections::SectionDispatch::event(self, engine, event)
     }
 
@@ -161,8 +161,8 @@ impl Dispatcher for sections::SectionDispatch {
 }
 
 impl Dispatcher for apt_words::AptDispatch {
-    fn event(&mut self, engine: &mut Engine, event: postc_ir::Event) -> Result<(), Box<Diagnostic>> {
-        apt_words::AptDispatch::event(self, engine, event)
+    fn event(&mut self, engine: &mut Engine, event: &postc_ir::Event) -> Result<(), Box<Diagnostic>> {
+        apt_words::AptDispatch::event(self, engine, event.clone())
     }
 
     fn finish(&mut self, engine: &mut Engine) -> Result<(), Box<Diagnostic>> {

@@ -183,8 +183,10 @@ impl NumberWriter {
     /// and appended at once.
     #[inline]
     fn write_plain(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
-        let mut buf = [0u8; 64];
-        let mut i = buf.len();
+        // The word ends at WORD_END; the slack after it lets the append
+        // below copy a fixed-size window.
+        let mut buf = [0u8; WORD_END + WINDOW];
+        let mut i = WORD_END;
         let mut m = r.m;
         let mut d = self.decimals;
         while d >= 2 {
@@ -235,7 +237,7 @@ impl NumberWriter {
             i -= 1;
             buf[i] = b;
         }
-        out.extend_from_slice(&buf[i..]);
+        append_word(out, &buf, i);
     }
 
     fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
@@ -358,6 +360,26 @@ impl StackBuf {
 pub struct Rounded {
     pub negative: bool,
     pub m: u64,
+}
+
+/// Where a word built right to left ends in its buffer.
+const WORD_END: usize = 64;
+/// Words up to this long are appended as one fixed-size copy.
+pub(crate) const WINDOW: usize = 32;
+
+/// Appends `buf[start..WORD_END]`. Short words copy a fixed window and
+/// truncate the slack, which compiles to a few vector moves instead of a
+/// `memcpy` call.
+#[inline]
+fn append_word(out: &mut Vec<u8>, buf: &[u8; WORD_END + WINDOW], start: usize) {
+    let len = WORD_END - start;
+    if len <= WINDOW {
+        let window: &[u8; WINDOW] = buf[start..start + WINDOW].try_into().expect("the window is in the buffer");
+        out.extend_from_slice(window);
+        out.truncate(out.len() - (WINDOW - len));
+    } else {
+        out.extend_from_slice(&buf[start..WORD_END]);
+    }
 }
 
 /// Writes the decimal digits of `m` at the end of `tmp`; returns where they start.

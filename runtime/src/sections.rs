@@ -99,8 +99,8 @@ impl SectionDispatch {
     }
 
     /// Handles one event.
-    pub fn event(&mut self, eng: &mut Engine, event: Event) -> Result<()> {
-        check_finite(eng, &event)?;
+    pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
+        check_finite(eng, event)?;
         match event {
             Event::Job(job) => {
                 if self.started {
@@ -121,7 +121,7 @@ impl SectionDispatch {
                         );
                     }
                     let units = eng.post.info.units;
-                    eng.machine.set_job(*job, units);
+                    eng.machine.set_job((**job).clone(), units);
                 }
             }
             Event::Tool(tool) => {
@@ -129,10 +129,10 @@ impl SectionDispatch {
                 // known, so its footer still sees the tool it cut with.
                 self.split_if_pending(eng)?;
                 self.tool_changed = self.last_tool != Some(tool.number);
-                eng.machine.set_tool(tool);
+                eng.machine.set_tool(tool.clone());
             }
             Event::ToolpathStart(tp) => {
-                eng.machine.toolpath = tp;
+                eng.machine.toolpath = tp.clone();
                 self.split_if_pending(eng)?;
                 self.begin_toolpath(eng)?;
             }
@@ -203,11 +203,11 @@ impl SectionDispatch {
             Event::DrillCycle(c) => {
                 self.ensure_started(eng)?;
                 eng.run_section(Section::DrillHeader)?;
-                self.drill = Some(c);
+                self.drill = Some(c.clone());
             }
             Event::DrillPoint(p) => {
                 self.ensure_started(eng)?;
-                self.drill_point(eng, p)?;
+                self.drill_point(eng, *p)?;
             }
             Event::DrillEnd => {
                 if self.started {
@@ -216,14 +216,14 @@ impl SectionDispatch {
                 self.drill = None;
             }
             Event::Comment(t) => {
-                eng.machine.comment = t.text;
+                eng.machine.comment.clone_from(&t.text);
                 if self.started {
                     eng.run_section(Section::Comment)?;
                 }
             }
             Event::Insert(t) => {
                 self.ensure_started(eng)?;
-                eng.machine.comment = t.text;
+                eng.machine.comment.clone_from(&t.text);
                 if !eng.run_section(Section::Insert)? {
                     let text = std::mem::take(&mut eng.machine.comment);
                     eng.write_blocks(&text);
@@ -323,7 +323,7 @@ impl SectionDispatch {
         }
     }
 
-    fn rapid(&mut self, eng: &mut Engine, m: Move) -> Result<()> {
+    fn rapid(&mut self, eng: &mut Engine, m: &Move) -> Result<()> {
         let target = Self::point(eng, m.x, m.y, m.z);
         Self::set_rotary(eng, m.a, m.b, m.c);
         self.rapid_to(eng, target)
@@ -347,7 +347,7 @@ impl SectionDispatch {
         self.after_move(eng, retract)
     }
 
-    fn feed(&mut self, eng: &mut Engine, m: FeedMove) -> Result<()> {
+    fn feed(&mut self, eng: &mut Engine, m: &FeedMove) -> Result<()> {
         let target = Self::point(eng, m.x, m.y, m.z);
         Self::set_rotary(eng, m.a, m.b, m.c);
         let feed = m.feed.map(|f| eng.machine.len(f));
@@ -410,7 +410,7 @@ impl SectionDispatch {
         Ok(())
     }
 
-    fn arc(&mut self, eng: &mut Engine, a: ArcMove) -> Result<()> {
+    fn arc(&mut self, eng: &mut Engine, a: &ArcMove) -> Result<()> {
         let start = eng.machine.pos;
         let end = Self::point(eng, a.x, a.y, a.z);
         let centre = Self::point(eng, a.cx, a.cy, a.cz);
@@ -439,7 +439,7 @@ impl SectionDispatch {
     }
 
     /// The section an arc prints through, or `None` to linearize it.
-    fn arc_section(&self, eng: &Engine, g: &ArcGeometry, a: ArcMove) -> Option<(Family, Section)> {
+    fn arc_section(&self, eng: &Engine, g: &ArcGeometry, a: &ArcMove) -> Option<(Family, Section)> {
         let feed = Self::feed_for(eng, a.intent, a.feed.map(|f| eng.machine.len(f)));
         let first = |fam: Family| self.family != fam || self.last_feed != Some(feed);
         let cw = a.dir == ArcDir::Cw;
