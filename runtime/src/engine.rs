@@ -51,6 +51,8 @@ pub struct Engine<'p> {
     pub(crate) block: BlockCounter,
     /// Handler index of each section, if the post has it.
     sections: Vec<Option<u16>>,
+    /// The line ending, for appending as one fixed-size copy.
+    line_ending: Option<SmallBytes>,
     /// Each handler's body, prepared for the hot path.
     prepared: Vec<std::rc::Rc<Vec<Prepared<'p>>>>,
     /// Warnings collected during the run (each said once).
@@ -82,6 +84,7 @@ impl<'p> Engine<'p> {
             globals: Vec::new(),
             block: BlockCounter { next: post.options.block_numbers.start, printed: false },
             sections,
+            line_ending: SmallBytes::new(&post.options.line_ending),
             prepared,
             warnings: Vec::new(),
             steps: 0,
@@ -158,6 +161,7 @@ impl<'p> Engine<'p> {
                     for op in ops {
                         match op {
                             Op::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                            Op::ShortText(small) => small.append_to(&mut self.out.buf),
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
@@ -224,7 +228,10 @@ impl<'p> Engine<'p> {
 
     /// Writes the line ending and advances block numbering.
     pub(crate) fn end_block(&mut self) {
-        self.out.buf.extend_from_slice(&self.post.options.line_ending);
+        match &self.line_ending {
+            Some(small) => small.append_to(&mut self.out.buf),
+            None => self.out.buf.extend_from_slice(&self.post.options.line_ending),
+        }
         self.out.end_block();
         if self.block.printed {
             self.block.printed = false;
@@ -340,7 +347,7 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
 
 /// Prints a number through a variable, unless it is on-change and prints
 /// what it printed last.
-#[inline]
+#[inline(always)]
 pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
     match w.round(n) {
         Some(r) => {
@@ -421,6 +428,8 @@ pub(crate) enum Prepared<'p> {
 pub(crate) enum Op<'p> {
     /// Literal bytes.
     Text(&'p [u8]),
+    /// Literal bytes that fit a small window: appended as one fixed-size copy.
+    ShortText(SmallBytes),
     /// A numeric quantity through a variable: no lookups left to do.
     Number { var: u16, quantity: Quantity, format: u16, modal: bool },
     /// Anything else (text quantities, block numbers, assigned variables, expressions).
@@ -435,7 +444,10 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>>
                 pieces
                     .iter()
                     .map(|piece| match piece {
-                        Piece::Text(bytes) => Op::Text(bytes),
+                        Piece::Text(bytes) => match SmallBytes::new(bytes) {
+                            Some(small) => Op::ShortText(small),
+                            None => Op::Text(bytes),
+                        },
                         Piece::Var(id) => {
                             let var = &post.variables[*id as usize];
                             match var.source {
@@ -455,4 +467,26 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>>
             other => Prepared::Stmt(other),
         })
         .collect()
+}
+
+/// Up to 16 bytes kept in a fixed array, so that appending them is one
+/// fixed-size copy and a truncate rather than a `memcpy` call.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SmallBytes {
+    bytes: [u8; 16],
+    len: u8,
+}
+
+impl SmallBytes {
+    pub(crate) fn new(bytes: &[u8]) -> Option<SmallBytes> {
+        let mut small = SmallBytes { bytes: [0; 16], len: u8::try_from(bytes.len()).ok()? };
+        small.bytes.get_mut(..bytes.len())?.copy_from_slice(bytes);
+        Some(small)
+    }
+
+    #[inline(always)]
+    pub(crate) fn append_to(&self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.bytes);
+        out.truncate(out.len() - (16 - self.len as usize));
+    }
 }

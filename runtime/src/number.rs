@@ -163,7 +163,7 @@ impl NumberWriter {
     }
 
     /// Appends `prefix` and then a value rounded by [`NumberWriter::round`].
-    #[inline]
+    #[inline(always)]
     pub fn write_rounded_after(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
         if self.plain && prefix.len() + self.prefix.len() <= 16 {
             self.write_plain(prefix, r, out);
@@ -181,7 +181,7 @@ impl NumberWriter {
     /// The common case: no width to fill, no zeros to trim. The word is
     /// written right to left, two digits at a time, into one stack buffer
     /// and appended at once.
-    #[inline]
+    #[inline(always)]
     fn write_plain(&self, prefix: &[u8], r: Rounded, out: &mut Vec<u8>) {
         // The word ends at WORD_END; the slack after it lets the append
         // below copy a fixed-size window.
