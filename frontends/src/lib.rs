@@ -87,11 +87,11 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
             let (post, diagnostics) = postc_front_vcpost::compile(path, bytes, sources);
             Compiled { post: Some(post), diagnostics }
         }
+        Dialect::Cimco => {
+            let (post, diagnostics) = postc_front_cimco::compile(path, bytes, sources);
+            Compiled { post: Some(post), diagnostics }
+        }
         Dialect::Ron => compile_ron(path, bytes, sources),
-        other => Compiled::failed(Diagnostic::error(
-            "IO005",
-            format!("the {other:?} frontend is not part of this build yet"),
-        )),
     }
 }
 

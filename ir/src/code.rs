@@ -47,6 +47,22 @@ pub enum Stmt {
     /// Run a script call (a Vectric `<!>` Lua call, which postc keeps but
     /// does not run).
     Script(ScriptId),
+    /// Append the text of the pieces to the output without ending a
+    /// block. CIMCO handlers build the text a function returns straight in
+    /// the output (see [`Stmt::Blocks`]); nothing is allocated.
+    Emit(Vec<Piece>),
+    /// Store the output's current length in a local: a mark for
+    /// [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`] and
+    /// [`Expr::Written`].
+    Mark(u16),
+    /// Move the text written since mark `from` back to mark `to`, before
+    /// the text written between the two marks (`text = "N10 " + text`).
+    MoveBack { to: u16, from: u16 },
+    /// Drop the text written since a mark.
+    Truncate(u16),
+    /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
+    /// does with a value: each line that is not empty becomes a block.
+    Blocks(u16),
 }
 
 /// One piece of an output block.
@@ -77,6 +93,10 @@ pub enum Expr {
     Number(f64),
     Text(String),
     Bool(bool),
+    /// No value (JavaScript `null` and `undefined`).
+    Null,
+    /// Whether any text was written since a mark ([`Stmt::Mark`]).
+    Written(u16),
     /// A value the runtime knows (position, feed, tool name, ...), in the
     /// post's units.
     Quantity(Quantity),
@@ -109,6 +129,12 @@ pub enum Expr {
 pub enum UnaryOp {
     Neg,
     Not,
+    /// To a number (JavaScript unary `+`).
+    Plus,
+    /// Bitwise not on the value as a 32-bit integer (JavaScript `~`).
+    BitNot,
+    /// The JavaScript type name: "number", "string", "boolean", "undefined".
+    Typeof,
 }
 
 /// Binary operators. `Add` adds numbers and joins text; `Concat` always
@@ -131,6 +157,18 @@ pub enum BinaryOp {
     Ge,
     And,
     Or,
+    /// Equal in value and type (JavaScript `===`).
+    StrictEq,
+    /// JavaScript `!==`.
+    StrictNe,
+    /// Bitwise operators on the values as 32-bit integers (JavaScript).
+    BitAnd,
+    BitOr,
+    BitXor,
+    Shl,
+    /// Arithmetic (`>>`) and logical (`>>>`) right shift.
+    Shr,
+    UShr,
 }
 
 /// Built-in functions, shared by the dialects that lower to native code.
@@ -169,4 +207,21 @@ pub enum Builtin {
     FormatPicture,
     /// Text of a character code.
     Chr,
+    Asin,
+    Acos,
+    Exp,
+    /// Natural logarithm.
+    Log,
+    /// JavaScript `Math.round`: half up, toward positive infinity.
+    JsRound,
+    /// JavaScript `parseInt(text, [radix])`: NaN when no digits lead.
+    ParseInt,
+    /// JavaScript `parseFloat(text)`: NaN when no number leads.
+    ParseFloat,
+    /// JavaScript `isNaN(value)`.
+    IsNaN,
+    /// JavaScript `Number(value)`: NaN for text that is not a number.
+    ToNumber,
+    /// JavaScript `value.toFixed(digits)`.
+    ToFixed,
 }

@@ -81,12 +81,19 @@
 //! implements; the runtime pulls events one at a time, so memory stays flat
 //! whatever the toolpath's length.
 //!
+//! ## Sub calls
+//!
+//! VcPost's probe-cycle tables and composites event files are not toolpaths:
+//! each record names a Sub and the variables to set before calling it. Their
+//! readers produce [`SubCall`]s through a [`CallSource`] (module [`calls`]).
+//!
 //! ## Diagnostics
 //!
 //! [`Diagnostic`] is the one error type of the project: a code, a severity,
 //! a message, labels over byte [`Span`]s of files in a [`SourceMap`], notes
 //! and help. It renders with codespan-reporting and as JSON.
 
+pub mod calls;
 pub mod code;
 pub mod diagnostic;
 pub mod event;
@@ -95,6 +102,7 @@ pub mod post;
 pub mod quantity;
 pub mod units;
 
+pub use calls::{CallSource, CallValue, MissingSub, SubCall};
 pub use code::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
 pub use diagnostic::{Diagnostic, FileId, Label, Severity, SourceMap, Span};
 pub use event::{Event, EventSource};

@@ -121,6 +121,11 @@ pub struct OutputOptions {
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
+    /// A lathe post (CIMCO `POST_TYPE_TURN`): the toolpath's turning plane
+    /// (X the radius, Z along the spindle, ZX-plane arcs) is turned into
+    /// the runtime's XY plane (x, y, z become z, x, y) before dispatch, so
+    /// that turning arcs reach the arc sections instead of being linearized.
+    pub lathe: bool,
 }
 
 impl Default for OutputOptions {
@@ -138,6 +143,7 @@ impl Default for OutputOptions {
             arc_tolerance: 0.01,
             exact_arcs: false,
             step_budget: 10_000_000,
+            lathe: false,
         }
     }
 }
@@ -301,6 +307,23 @@ pub struct Script {
     /// Maps offsets in `source` back to the post file, as (offset in
     /// source, offset in post) pairs sorted by the first.
     pub span_map: Vec<(u32, u32)>,
+}
+
+impl Script {
+    /// The name a post function has in a Rhai script: `js_` and the name,
+    /// with each character other than an ASCII letter, digit or `_` written
+    /// as `_uHEX_`. The runtime calls script functions by this name.
+    pub fn function_name(name: &str) -> String {
+        let mut out = String::from("js_");
+        for c in name.chars() {
+            if c.is_ascii_alphanumeric() || c == '_' {
+                out.push(c);
+            } else {
+                out.push_str(&format!("_u{:x}_", c as u32));
+            }
+        }
+        out
+    }
 }
 
 /// Languages of scripts.

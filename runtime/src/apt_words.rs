@@ -9,50 +9,49 @@
 //! | record | from | sets |
 //! |---|---|---|
 //! | every record | | `Word` (major word), `Minor` (first minor word or ""), `Text` (its text or "") |
-//! | `PARTNO` | the Job, once, first | `Text` = part name, else the output file name (a CL file's own PARTNO record is this one, not a second call) |
+//! | `PARTNO` | the Job, once, first | `Text` = part name, else the output file name (a CL file's own PARTNO record is this one, not a second call); `Metric` = 1 when every length the records give is in millimetres, 0 for inches |
 //! | `LOADTL` | Tool | `T`, `H` (length offset, else T), `D` (diameter offset, else T), `Text` = tool name |
 //! | `TOOLPATH` | ToolpathStart | `Text` = toolpath name |
-//! | `RAPID` then `GOTO` | Rapid | `X Y Z`, `G` = 0; `I J K` = tool axis when the move has one |
+//! | `RAPID` then `GOTO` | Rapid | `X Y Z`, `G` = 0; `A B C` when the move has them; `I J K` = tool axis when the move has one |
 //! | `FEDRAT` | a feed that changes | `F` |
-//! | `GOTO` | Feed | `X Y Z`, `G` = 1, `F`; `I J K` = tool axis when given |
-//! | `CIRCLE` | Arc (one call per arc, end point included) | `X Y Z` end, `G` = 2 (clockwise) or 3, `I J K` centre minus start, `CX CY CZ` centre, `R` radius, `F` |
+//! | `GOTO` | Feed | `X Y Z`, `G` = 1, `F`; `A B C` when given; `I J K` = tool axis when given |
+//! | `CIRCLE` | Arc (one call per arc, end point included) | `X Y Z` end, `G` = 2 (clockwise) or 3, seen from the plane's positive normal; `Plane` = 17 (XY), 18 (ZX) or 19 (YZ); `I J K` centre minus start; `CX CY CZ` centre; `R` radius; `F` |
 //! | `DELAY` | Dwell | `R` = seconds |
 //! | `SPINDL` | SpindleOn / SpindleOff | `S`, `Minor` = `CLW`, `CCLW` or `OFF` |
 //! | `COOLNT` | Coolant | `Minor` = `ON`, `FLOOD`, `MIST`, `AIR`, `OFF` |
 //! | `CUTCOM` | CutterComp | `Minor` = `LEFT`, `RIGHT`, `OFF`; `D` |
-//! | `CYCLE` | the first hole of a DrillCycle | `Minor` = `DRILL`, `DEEP`, `BRKCHP`, `TAP`, `BORE`, `REAM`; `X Y` of the hole, `Z` = depth, `R` = reference plane, `Q` = peck, `P` = dwell, `F` |
-//! | `GOTO` | each later hole | `X Y`, `Z` = top of the hole |
+//! | `CYCLE` | the first hole of a DrillCycle | `Minor` = `DRILL`, `DEEP`, `BRKCHP`, `TAP`, `BORE`, `REAM`; `X Y` of the hole, `Z` = depth, `R` = reference plane, `Q` = peck, `P` = dwell (seconds), `F` |
+//! | `GOTO` | each later hole | `X Y`, `Z` = top of the hole, `G` = 1 |
 //! | `CYCLE` | DrillEnd | `Minor` = `OFF` |
 //! | `PPRINT` / `INSERT` | Comment / Insert | `Text` |
-//! | the word | Command | `Minor`, `Text`, `Arg1`… (each argument, number or word), `Args` (count) |
+//! | the word | Command | `Minor`, `Text`, `Arg1`… `Arg16` (each argument, number or word), `Args` (count) |
 //! | `FINI` | End, or the end of the stream | |
 //!
+//! Positions, centres, radii and feeds are in the post's units. Values
+//! persist: a register keeps its value until a record sets it again, so
+//! `Z.Previous` in `GOTO` is the Z of the move before. Jet events (`JetOn`,
+//! `JetOff`, `Power`) and `ToolpathEnd` make no record.
+//!
 //! An arc whose post has no `CIRCLE` handler becomes `GOTO` calls along the
-//! arc. A record whose word has no handler is skipped, with one warning per
-//! word.
+//! arc (RT021, once). A record whose word has no handler is skipped, with
+//! one warning per word (RT020).
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::event::{Arg, ArcDir, ArcMove, CompSide, Coolant, DrillCycle, DrillKind, Event, Intent};
+use postc_ir::event::{Arg, ArcDir, ArcMove, CompSide, Coolant, DrillCycle, DrillKind, Event, Intent, Plane};
 use postc_ir::{Diagnostic, HandlerKey};
 
 use crate::engine::Engine;
 use crate::geometry::ArcGeometry;
+use crate::slots::Slots;
 use crate::value::Value;
 
 type Result<T> = std::result::Result<T, Box<Diagnostic>>;
 
-/// Where a name the runtime sets lives in the post.
-#[derive(Clone, Copy)]
-enum Slot {
-    Var(u16),
-    Global(u16),
-}
-
 /// Dispatch state of one run.
 pub struct AptDispatch {
     handlers: HashMap<String, usize>,
-    slots: HashMap<String, Slot>,
+    slots: Slots,
     started: bool,
     finished: bool,
     /// The PARTNO record of a CL file repeats the one the start made from
@@ -76,15 +75,7 @@ impl AptDispatch {
                 HandlerKey::Section(_) => None,
             })
             .collect();
-        let mut slots = HashMap::new();
-        for (i, g) in post.globals.iter().enumerate() {
-            slots.insert(g.name.to_ascii_uppercase(), Slot::Global(i as u16));
-        }
-        for (i, v) in post.variables.iter().enumerate() {
-            if v.source == postc_ir::ValueSource::Assigned {
-                slots.insert(v.name.to_ascii_uppercase(), Slot::Var(i as u16));
-            }
-        }
+        let slots = Slots::new(post);
         AptDispatch {
             handlers,
             slots,
@@ -100,11 +91,7 @@ impl AptDispatch {
 
     /// Sets a register or variable the post has; names it lacks are ignored.
     fn set(&self, eng: &mut Engine, name: &str, value: Value) {
-        match self.slots.get(name) {
-            Some(Slot::Var(id)) => eng.set_var(*id, value),
-            Some(Slot::Global(i)) => eng.set_global(*i, value),
-            None => {}
-        }
+        self.slots.set(eng, name, value);
     }
 
     fn num(&self, eng: &mut Engine, name: &str, v: f64) {
@@ -124,7 +111,11 @@ impl AptDispatch {
             Some(&i) => eng.run_handler(i),
             None => {
                 if self.warned.insert(word.to_string()) {
-                    eng.warn_once(Diagnostic::warning("RT020", format!("the post has no Sub for {word}; those records are skipped")));
+                    let mut d = Diagnostic::warning("RT020", format!("the post has no Sub for {word}; those records are skipped"));
+                    if eng.event_span.end > eng.event_span.start {
+                        d = d.at(eng.event_span, "the first one");
+                    }
+                    eng.warn_once(d.help(format!("add `Sub {word}` ... `End Sub` to the post to handle them")));
                 }
                 Ok(())
             }
@@ -149,6 +140,15 @@ impl AptDispatch {
         }
     }
 
+    /// Rotary axis positions (degrees), when the move has them.
+    fn set_rotary(&self, eng: &mut Engine, abc: [Option<f64>; 3]) {
+        for (name, v) in ["A", "B", "C"].into_iter().zip(abc) {
+            if let Some(v) = v {
+                self.num(eng, name, v);
+            }
+        }
+    }
+
     /// The program starts: PARTNO with the part's (or the file's) name.
     fn start(&mut self, eng: &mut Engine) -> Result<()> {
         if self.started {
@@ -157,6 +157,8 @@ impl AptDispatch {
         self.started = true;
         self.partno_from_job = eng.machine.job.part.is_some();
         let name = eng.machine.job.part.clone().unwrap_or_else(|| eng.machine.file_name.clone());
+        let metric = eng.machine.output_units == postc_ir::Units::Mm;
+        self.num(eng, "METRIC", if metric { 1.0 } else { 0.0 });
         self.call(eng, "PARTNO", "", &name)
     }
 
@@ -212,6 +214,12 @@ impl AptDispatch {
         eng.machine.pos = end;
         self.set_xyz(eng, end);
         self.num(eng, "G", if a.dir == ArcDir::Cw { 2.0 } else { 3.0 });
+        let plane = match a.plane {
+            Plane::Xy => 17.0,
+            Plane::Zx => 18.0,
+            Plane::Yz => 19.0,
+        };
+        self.num(eng, "PLANE", plane);
         self.num(eng, "I", centre[0] - start[0]);
         self.num(eng, "J", centre[1] - start[1]);
         self.num(eng, "K", centre[2] - start[2]);
@@ -282,12 +290,14 @@ impl AptDispatch {
             Event::ToolpathEnd => {}
             Event::Rapid(m) => {
                 let p = Self::point(eng, m.x, m.y, m.z);
+                self.set_rotary(eng, [m.a, m.b, m.c]);
                 self.num(eng, "G", 0.0);
                 self.call(eng, "RAPID", "", "")?;
                 self.goto(eng, p, 0.0, m.tool_axis)?;
             }
             Event::Feed(m) => {
                 let p = Self::point(eng, m.x, m.y, m.z);
+                self.set_rotary(eng, [m.a, m.b, m.c]);
                 let feed = Self::feed_for(eng, m.intent, m.feed);
                 self.feed(eng, feed)?;
                 self.goto(eng, p, 1.0, m.tool_axis)?;

@@ -61,6 +61,8 @@ pub struct Engine<'p> {
     pub(crate) depth: usize,
     /// Where the event being handled came from.
     pub event_span: Span,
+    /// The script host and what CIMCO posts need besides (`script`).
+    pub(crate) cimco: crate::script::Ext,
 }
 
 impl<'p> Engine<'p> {
@@ -90,6 +92,7 @@ impl<'p> Engine<'p> {
             steps: 0,
             depth: 0,
             event_span: Span::default(),
+            cimco: crate::script::Ext::default(),
         }
     }
 
@@ -147,6 +150,7 @@ impl<'p> Engine<'p> {
 
     /// Forgets what every variable printed last: the next output prints every word.
     pub fn clear_modal(&mut self) {
+        self.cimco.epoch += 1;
         for v in &mut self.vars {
             v.has_last = false;
             v.key = None;
@@ -174,8 +178,12 @@ impl<'p> Engine<'p> {
                 }
                 Prepared::Stmt(stmt) => {
                     self.steps = 0;
-                    let mut frame = Vec::new();
-                    self.exec(std::slice::from_ref(*stmt), &mut frame)?;
+                    // One frame, kept between events: no allocation per event.
+                    let mut frame = std::mem::take(&mut self.cimco.frame);
+                    frame.clear();
+                    let result = self.exec(std::slice::from_ref(*stmt), &mut frame);
+                    self.cimco.frame = frame;
+                    result?;
                 }
             }
         }

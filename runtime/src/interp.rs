@@ -10,6 +10,7 @@ use std::rc::Rc;
 use postc_ir::{BinaryOp, Body, Builtin, Diagnostic, Expr, Place, Quantity, Stmt, UnaryOp, ValueSource};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
+use crate::script::js;
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -34,7 +35,7 @@ impl Engine<'_> {
                 return Err(Box::new(self.budget_error(None)));
             }
             match stmt {
-                Stmt::Line(pieces) => self.write_line(pieces)?,
+                Stmt::Line(pieces) => self.write_line_in(pieces, frame)?,
                 Stmt::Write(e) => {
                     let v = self.eval(e, frame)?;
                     self.write_blocks(&v.to_text());
@@ -68,7 +69,7 @@ impl Engine<'_> {
                     if !self.eval(cond, frame)?.truthy() {
                         break;
                     }
-                    match self.exec(body, frame)? {
+                    match self.exec(body, frame).map_err(|e| Self::in_loop(e, *span))? {
                         Flow::Break => break,
                         Flow::Return(v) => return Ok(Flow::Return(v)),
                         Flow::Normal | Flow::Continue => {}
@@ -83,6 +84,26 @@ impl Engine<'_> {
                     };
                     return Ok(Flow::Return(v));
                 }
+                Stmt::Emit(pieces) => self.emit_pieces(pieces, frame)?,
+                Stmt::Mark(k) => {
+                    let at = Value::Num(self.out.buf.len() as f64);
+                    self.assign(Place::Local(*k), at, frame);
+                }
+                Stmt::MoveBack { to, from } => {
+                    let (to, from) = (self.mark(*to, frame), self.mark(*from, frame));
+                    if to < from {
+                        let moved = self.out.buf.len() - from;
+                        self.out.buf[to..].rotate_right(moved);
+                    }
+                }
+                Stmt::Truncate(k) => {
+                    let at = self.mark(*k, frame);
+                    self.out.buf.truncate(at);
+                }
+                Stmt::Blocks(k) => {
+                    let at = self.mark(*k, frame);
+                    self.blocks_since(at);
+                }
                 Stmt::Script(_) => self.warn_once(
                     Diagnostic::warning("RT003", "this post calls Lua scripts, which postc does not run; those lines are skipped")
                         .note("the rest of the post runs as written"),
@@ -90,6 +111,35 @@ impl Engine<'_> {
             }
         }
         Ok(Flow::Normal)
+    }
+
+    /// Writes one block inside a function: its expression pieces read the
+    /// function's locals (VcPost `Out "<N>" & Code`, with `Code` a `Dim`).
+    fn write_line_in(&mut self, pieces: &[postc_ir::Piece], frame: &mut Vec<Value>) -> Result<()> {
+        for piece in pieces {
+            match piece {
+                postc_ir::Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                postc_ir::Piece::Var(id) => self.write_var(*id),
+                postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
+                    let v = self.eval(value, frame)?;
+                    self.write_assigned(*var, v);
+                }
+                postc_ir::Piece::Expr(e) => {
+                    let v = self.eval(e, frame)?;
+                    self.write_value_text(&v);
+                }
+            }
+        }
+        self.end_block();
+        Ok(())
+    }
+
+    /// A budget error from a loop's body points at the innermost loop.
+    fn in_loop(e: Box<Diagnostic>, span: Option<postc_ir::Span>) -> Box<Diagnostic> {
+        match span {
+            Some(s) if e.code == "RT002" && e.labels.is_empty() => Box::new(e.at(s, "this loop did not finish")),
+            _ => e,
+        }
     }
 
     fn budget_error(&self, span: Option<postc_ir::Span>) -> Diagnostic {
@@ -172,6 +222,8 @@ impl Engine<'_> {
             Expr::Number(n) => Value::Num(*n),
             Expr::Text(s) => Value::text(s),
             Expr::Bool(b) => Value::Bool(*b),
+            Expr::Null => Value::Null,
+            Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Local(i) => frame.get(*i as usize).cloned().unwrap_or_default(),
             Expr::Global(i) => self.globals.get(*i as usize).cloned().unwrap_or_default(),
@@ -192,6 +244,14 @@ impl Engine<'_> {
                 match op {
                     UnaryOp::Neg => Value::Num(-a.num()),
                     UnaryOp::Not => Value::Bool(!a.truthy()),
+                    UnaryOp::Plus => Value::Num(js_number(&a)),
+                    UnaryOp::BitNot => Value::Num(f64::from(!js::to_int32(js_number(&a)))),
+                    UnaryOp::Typeof => Value::text(match a {
+                        Value::Num(_) => "number",
+                        Value::Text(_) => "string",
+                        Value::Bool(_) => "boolean",
+                        Value::Null => "undefined",
+                    }),
                 }
             }
             Expr::Binary(BinaryOp::And, a, b) => {
@@ -255,7 +315,7 @@ impl Engine<'_> {
         };
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            self.depth = 0;
+            self.depth -= 1;
             let d = Diagnostic::error("RT004", format!("calls nest deeper than {MAX_DEPTH} levels (endless recursion?)"));
             return Err(Box::new(match function.span {
                 Some(s) => d.at(s, "in this function"),
@@ -278,11 +338,52 @@ impl Engine<'_> {
         result
     }
 
-    fn call_script(&mut self, _id: u16, name: &str, _args: Vec<Value>) -> Result<Value> {
-        Err(Box::new(Diagnostic::error(
-            "RT005",
-            format!("function `{name}` is a script, and this build of the runtime has no script host"),
-        )))
+    fn call_script(&mut self, id: u16, name: &str, args: Vec<Value>) -> Result<Value> {
+        crate::script::call(self, id, name, args)
+    }
+
+    /// A mark stored by [`Stmt::Mark`], within the output buffer.
+    fn mark(&self, k: u16, frame: &[Value]) -> usize {
+        let at = frame.get(k as usize).map_or(0.0, Value::num);
+        (at.max(0.0) as usize).min(self.out.buf.len())
+    }
+
+    /// Writes pieces into the output with the frame's locals in reach.
+    fn emit_pieces(&mut self, pieces: &[postc_ir::Piece], frame: &mut Vec<Value>) -> Result<()> {
+        for piece in pieces {
+            match piece {
+                postc_ir::Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                postc_ir::Piece::Var(id) => self.write_var(*id),
+                postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
+                    let n = match &**value {
+                        Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => self.machine.number(*q),
+                        Expr::Number(n) => *n,
+                        other => match self.eval(other, frame)? {
+                            Value::Num(n) => n,
+                            v => {
+                                self.write_assigned(*var, v);
+                                continue;
+                            }
+                        },
+                    };
+                    self.write_number_var(*var, n);
+                }
+                postc_ir::Piece::Expr(e) => match self.eval(e, frame)? {
+                    Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => push_integer(&mut self.out.buf, n as i64),
+                    v => self.write_value_text(&v),
+                },
+            }
+        }
+        Ok(())
+    }
+
+    /// Prints a number through an assigned variable and keeps it as its value.
+    fn write_number_var(&mut self, id: u16, n: f64) {
+        let post = self.post;
+        let var = &post.variables[id as usize];
+        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
+        put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, n, &mut self.out.buf);
+        state.previous = std::mem::replace(&mut state.value, Value::Num(n));
     }
 }
 
@@ -320,6 +421,40 @@ fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
         }
         And => Value::Bool(a.truthy() && b.truthy()),
         Or => Value::Bool(a.truthy() || b.truthy()),
+        StrictEq => Value::Bool(strict_eq(a, b)),
+        StrictNe => Value::Bool(!strict_eq(a, b)),
+        BitAnd | BitOr | BitXor | Shl | Shr => {
+            let (x, y) = (js::to_int32(js_number(a)), js::to_int32(js_number(b)));
+            let shift = (y as u32) & 31;
+            Value::Num(f64::from(match op {
+                BitAnd => x & y,
+                BitOr => x | y,
+                BitXor => x ^ y,
+                Shl => x.wrapping_shl(shift),
+                _ => x >> shift,
+            }))
+        }
+        UShr => Value::Num(f64::from(js::to_uint32(js_number(a)) >> (js::to_uint32(js_number(b)) & 31))),
+    }
+}
+
+/// JavaScript `===` over the interpreter's values.
+fn strict_eq(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Num(x), Value::Num(y)) => x == y,
+        (Value::Text(x), Value::Text(y)) => x == y,
+        (Value::Bool(x), Value::Bool(y)) => x == y,
+        (Value::Null, Value::Null) => true,
+        _ => false,
+    }
+}
+
+/// A value as JavaScript's `Number()` reads it.
+fn js_number(v: &Value) -> f64 {
+    match v {
+        Value::Text(s) => js::text_to_number(s),
+        Value::Null => f64::NAN,
+        other => other.num(),
     }
 }
 
@@ -328,6 +463,25 @@ fn concat(a: &Value, b: &Value) -> Value {
     a.append_to(&mut s);
     b.append_to(&mut s);
     Value::Text(Rc::from(s))
+}
+
+/// Appends an integer's decimal digits without allocating.
+fn push_integer(out: &mut Vec<u8>, n: i64) {
+    let mut buf = [0u8; 20];
+    let mut i = buf.len();
+    let mut m = n.unsigned_abs();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (m % 10) as u8;
+        m /= 10;
+        if m == 0 {
+            break;
+        }
+    }
+    if n < 0 {
+        out.push(b'-');
+    }
+    out.extend_from_slice(&buf[i..]);
 }
 
 /// Rounds half away from zero to `decimals` places.
@@ -388,6 +542,16 @@ fn builtin(b: Builtin, args: &[Value]) -> Value {
         }
         Builtin::FormatPicture => Value::text(&format_picture(n(0), &s(1))),
         Builtin::Chr => Value::text(&char::from_u32(n(0) as u32).map(String::from).unwrap_or_default()),
+        Builtin::Asin => Value::Num(n(0).asin()),
+        Builtin::Acos => Value::Num(n(0).acos()),
+        Builtin::Exp => Value::Num(n(0).exp()),
+        Builtin::Log => Value::Num(n(0).ln()),
+        Builtin::JsRound => Value::Num(js::math_round(n(0))),
+        Builtin::ParseInt => Value::Num(js::parse_int(&s(0), n(1))),
+        Builtin::ParseFloat => Value::Num(js::parse_float(&s(0))),
+        Builtin::IsNaN => Value::Bool(args.first().map_or(f64::NAN, js_number).is_nan()),
+        Builtin::ToNumber => Value::Num(args.first().map_or(0.0, js_number)),
+        Builtin::ToFixed => Value::text(&js::to_fixed(args.first().map_or(f64::NAN, js_number), n(1))),
     }
 }
 

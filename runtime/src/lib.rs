@@ -15,6 +15,11 @@
 //! - [`sections`]: which section prints each event (Vectric rules, CIMCO);
 //! - [`apt_words`]: events as APT records calling the handler of each
 //!   major word (VcPost posts, the `postp` controllers);
+//! - [`calls`]: runs a post over Sub calls instead of events (VcPost
+//!   probe-cycle tables and composites event files), with [`host`] the
+//!   functions the runtime provides to those posts;
+//! - [`script`]: the Rhai host for CIMCO functions that do not lower to
+//!   native IR, and what CIMCO posts need of events;
 //! - [`output`]: sinks that write whole programs or nothing, and tape
 //!   splitting into parts.
 //!
@@ -22,14 +27,18 @@
 //! stays flat whatever the toolpath's length.
 
 pub mod apt_words;
+pub mod calls;
 pub mod clock;
 pub mod engine;
 pub mod geometry;
+pub mod host;
 mod interp;
 pub mod machine;
 pub mod number;
 pub mod output;
+pub mod script;
 pub mod sections;
+mod slots;
 pub mod value;
 
 use postc_ir::event::FileInfo;
@@ -103,6 +112,11 @@ pub fn run<S: EventSource + ?Sized>(
         diagnostics.extend(engine.warnings);
         Err(diagnostics)
     };
+    if let Err(d) = script::attach(&mut engine) {
+        diagnostics.push(d);
+        return fail(diagnostics, engine);
+    }
+    let lathe = post.options.lathe;
     if let Err(d) = engine.init() {
         diagnostics.push(*d);
         return fail(diagnostics, engine);
@@ -112,6 +126,8 @@ pub fn run<S: EventSource + ?Sized>(
             return fail(diagnostics, engine);
         }
         engine.event_span = span;
+        let event = if lathe { script::turn_event(event) } else { event };
+        script::observe(&mut engine, &event);
         if let Err(d) = dispatch.event(&mut engine, &event) {
             diagnostics.push(*d);
             return fail(diagnostics, engine);

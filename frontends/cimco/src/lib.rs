@@ -7,7 +7,8 @@
 //! functions CNC-Calc calls (`onInit`, `onOpen`, `onLinear`, `onCircular`,
 //! `onDrillingPoint`, ...). They use the ES5 of their era.
 //!
-//! This crate reads that JavaScript. Phase 1, here, is the front half:
+//! This crate reads that JavaScript and compiles it to the IR
+//! ([`compile`]). The front half:
 //!
 //! - [`lexer`]: text to tokens (comments, line breaks for automatic
 //!   semicolon insertion, strings, numbers, regular expressions);
@@ -20,13 +21,19 @@
 //! - [`mod@print`] and [`dump`]: the tree back as JavaScript, and as a compact
 //!   dump for tests.
 //!
-//! The lowering to native IR statements or Rhai comes next and works on
-//! the [`ast`].
+//! The back half, `lower`, turns the [`ast`] into a post: the Globals and
+//! `createFormat`/`createVariable` calls into output options, formats and
+//! variables; each function into native IR statements where the IR says
+//! what it means, and every function into one Rhai script (with a span map
+//! back to the post) for the rest; the entry points into section handlers,
+//! with the text of native functions built straight in the output.
+//! `docs/cimco.md` gives the host semantics.
 
 pub mod ast;
 pub mod diagnostics;
 pub mod dump;
 pub mod lexer;
+mod lower;
 mod parser;
 pub mod print;
 mod sniff;
@@ -37,6 +44,8 @@ pub mod validate;
 use postc_ir::{Diagnostic, FileId, Span};
 
 pub use ast::Program;
+pub use lower::compile;
+pub use lower::host;
 pub use parser::MAX_NESTING;
 pub use sniff::looks_like_cimco;
 

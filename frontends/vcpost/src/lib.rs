@@ -17,13 +17,23 @@
 //!    handlers keyed by APT word or composites routine name), statements
 //!    outside Subs to `init`, registers to variables with number formats.
 //!
-//! Every diagnostic has a `VC` code; [`diagnostics`] has the table. The
-//! language as postc reads it (every choice where the seed is silent) is in
-//! `docs/vcpost.md`.
+//! Besides posts it reads the inputs of VcPost's two applications that are
+//! not toolpaths, into the Sub calls of [`postc_ir::calls`]:
+//!
+//! - [`table`]: probe-cycle tables (CSV, cells split by [`csv`]) checked
+//!   against the post's keyword comments (PT codes);
+//! - [`composites`]: composites event files (RON or JSON Lines) checked
+//!   against seed 003's call sequences (CP codes).
+//!
+//! Every post diagnostic has a `VC` code; [`diagnostics`] has the table.
+//! The language and the three applications as postc reads them (every
+//! choice where the seed is silent) are in `docs/vcpost.md`.
 
 pub mod ast;
 pub mod blocks;
 pub mod builtins;
+pub mod composites;
+pub mod csv;
 pub mod diagnostics;
 pub mod keywords;
 pub mod lexer;
@@ -32,6 +42,7 @@ pub mod parser;
 pub mod registers;
 pub mod routines;
 pub mod signatures;
+pub mod table;
 pub mod token;
 
 use std::path::Path;

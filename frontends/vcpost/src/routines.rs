@@ -188,10 +188,30 @@ pub const COMPOSITES_VARIABLES: &[(&str, VarType)] = {
 
 /// Variables the milling runtime sets from an APT record besides the
 /// single-letter registers: the record's major word, its first minor word
-/// (`CLW`, `FLOOD`, `LEFT`, `OFF`, ...) and its text (`PARTNO`, `PPRINT`,
-/// `INSERT`).
-pub const MILLING_VARIABLES: &[(&str, VarType)] =
-    &[("Word", VarType::Text), ("Minor", VarType::Text), ("Text", VarType::Text)];
+/// (`CLW`, `FLOOD`, `LEFT`, `OFF`, ...), its text (`PARTNO`, `PPRINT`,
+/// `INSERT`), whether lengths are millimetres, the arc's plane (17, 18, 19) and absolute centre, and the
+/// arguments of a pass-through record (`Args`, `Arg1` to `Arg16`). The
+/// runtime's module `apt_words` has the whole record-to-register table.
+pub const MILLING_VARIABLES: &[(&str, VarType)] = &[
+    ("Word", VarType::Text),
+    ("Minor", VarType::Text),
+    ("Text", VarType::Text),
+    ("Metric", VarType::Number),
+    ("Plane", VarType::Number),
+    ("CX", VarType::Number),
+    ("CY", VarType::Number),
+    ("CZ", VarType::Number),
+    ("Args", VarType::Number),
+];
+
+/// Whether a name is `Arg1` ... `Arg16`, an argument of a pass-through
+/// record (a number or a word).
+fn is_record_argument(name: &str) -> bool {
+    let Some(digits) = name.get(3..).filter(|_| name.get(..3).is_some_and(|p| p.eq_ignore_ascii_case("arg"))) else {
+        return false;
+    };
+    matches!(digits.parse::<u8>(), Ok(1..=16)) && !digits.starts_with('0')
+}
 
 /// Functions the composites runtime provides (seed 003, GoTo and
 /// RestartBuffer): name and parameter names.
@@ -208,6 +228,9 @@ pub fn runtime_variable(name: &str) -> Option<VarType> {
     let mut known = COMPOSITES_VARIABLES.iter().chain(MILLING_VARIABLES);
     if let Some((_, t)) = known.find(|(n, _)| n.eq_ignore_ascii_case(name)) {
         return Some(*t);
+    }
+    if is_record_argument(name) {
+        return Some(VarType::Number);
     }
     (name.chars().count() == 1).then_some(VarType::Number)
 }

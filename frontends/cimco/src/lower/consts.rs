@@ -1,0 +1,201 @@
+//! Values known when the post is compiled: the globals that are never
+//! assigned after their first value (`useRadius`, `linebreak`, the
+//! properties of `globals`), and the arguments of `createFormat` and
+//! `createVariable` calls. JavaScript's rules for the operators apply.
+
+use crate::ast::*;
+
+use super::host;
+
+/// A value known at compile time.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Const {
+    Num(f64),
+    Str(String),
+    Bool(bool),
+    Null,
+    Undefined,
+}
+
+impl Const {
+    pub fn truthy(&self) -> bool {
+        match self {
+            Const::Num(n) => *n != 0.0 && !n.is_nan(),
+            Const::Str(s) => !s.is_empty(),
+            Const::Bool(b) => *b,
+            Const::Null | Const::Undefined => false,
+        }
+    }
+
+    /// ToNumber.
+    pub fn num(&self) -> f64 {
+        match self {
+            Const::Num(n) => *n,
+            Const::Bool(b) => f64::from(u8::from(*b)),
+            Const::Str(s) => {
+                let t = s.trim();
+                if t.is_empty() { 0.0 } else { t.parse().unwrap_or(f64::NAN) }
+            }
+            Const::Null => 0.0,
+            Const::Undefined => f64::NAN,
+        }
+    }
+
+    /// ToString, when JavaScript's text of the value is certain.
+    pub fn text(&self) -> Option<String> {
+        Some(match self {
+            Const::Str(s) => s.clone(),
+            Const::Num(n) => number_text(*n)?,
+            Const::Bool(b) => b.to_string(),
+            Const::Null => "null".into(),
+            Const::Undefined => "undefined".into(),
+        })
+    }
+}
+
+/// A number as JavaScript prints it, for the range where Rust prints the
+/// same digits (no exponent form).
+pub fn number_text(n: f64) -> Option<String> {
+    if n == 0.0 {
+        return Some("0".into());
+    }
+    if !n.is_finite() || n.abs() >= 1e21 || n.abs() < 1e-6 {
+        return None;
+    }
+    if n == n.trunc() {
+        return Some(format!("{}", n as i128));
+    }
+    Some(format!("{n}"))
+}
+
+/// Evaluates an expression made of literals, known names and operators.
+pub fn const_eval(
+    e: &Expr,
+    ident: &dyn Fn(&str) -> Option<Const>,
+    flattened: &dyn Fn(&Expr) -> Option<String>,
+) -> Option<Const> {
+    let ev = |x: &Expr| const_eval(x, ident, flattened);
+    Some(match &e.kind {
+        ExprKind::Number(n) => Const::Num(*n),
+        ExprKind::String(s) => Const::Str(s.clone()),
+        ExprKind::Bool(b) => Const::Bool(*b),
+        ExprKind::Null => Const::Null,
+        ExprKind::Undefined => Const::Undefined,
+        ExprKind::Ident(name) => ident(name)?,
+        ExprKind::Member { object, property } => {
+            if let ExprKind::Ident(o) = &object.kind
+                && o == "Math"
+            {
+                return host::math_constant(&property.name).map(Const::Num);
+            }
+            let name = flattened(e)?;
+            ident(&name)?
+        }
+        ExprKind::Unary { op, operand } => {
+            let v = ev(operand)?;
+            match op {
+                UnaryOp::Neg => Const::Num(-v.num()),
+                UnaryOp::Plus => Const::Num(v.num()),
+                UnaryOp::Not => Const::Bool(!v.truthy()),
+                UnaryOp::BitNot => Const::Num(f64::from(!to_int32(v.num()))),
+                UnaryOp::Typeof => Const::Str(
+                    match v {
+                        Const::Num(_) => "number",
+                        Const::Str(_) => "string",
+                        Const::Bool(_) => "boolean",
+                        Const::Null => "object",
+                        Const::Undefined => "undefined",
+                    }
+                    .into(),
+                ),
+            }
+        }
+        ExprKind::Binary { op, left, right } => binary(*op, &ev(left)?, &ev(right)?)?,
+        ExprKind::Logical { op, left, right } => {
+            let l = ev(left)?;
+            match (op, l.truthy()) {
+                (LogicalOp::And, true) | (LogicalOp::Or, false) => ev(right)?,
+                _ => l,
+            }
+        }
+        ExprKind::Conditional { test, consequent, alternate } => {
+            if ev(test)?.truthy() {
+                ev(consequent)?
+            } else {
+                ev(alternate)?
+            }
+        }
+        _ => return None,
+    })
+}
+
+fn to_int32(x: f64) -> i32 {
+    if !x.is_finite() {
+        return 0;
+    }
+    x.trunc().rem_euclid(4_294_967_296.0) as u32 as i32
+}
+
+/// A binary operator over known values.
+pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
+    use BinaryOp::*;
+    let num = |f: fn(f64, f64) -> f64| Some(Const::Num(f(a.num(), b.num())));
+    match op {
+        Add => match (a, b) {
+            (Const::Str(_), _) | (_, Const::Str(_)) => Some(Const::Str(format!("{}{}", a.text()?, b.text()?))),
+            _ => num(|x, y| x + y),
+        },
+        Sub => num(|x, y| x - y),
+        Mul => num(|x, y| x * y),
+        Div => num(|x, y| x / y),
+        Rem => num(|x, y| x % y),
+        Lt | Le | Gt | Ge => {
+            let ord = match (a, b) {
+                (Const::Str(x), Const::Str(y)) => x.partial_cmp(y),
+                _ => a.num().partial_cmp(&b.num()),
+            };
+            let r = match op {
+                Lt => ord == Some(std::cmp::Ordering::Less),
+                Le => matches!(ord, Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)),
+                Gt => ord == Some(std::cmp::Ordering::Greater),
+                _ => matches!(ord, Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)),
+            };
+            Some(Const::Bool(r))
+        }
+        StrictEq => Some(Const::Bool(strict_eq(a, b))),
+        StrictNe => Some(Const::Bool(!strict_eq(a, b))),
+        Eq => Some(Const::Bool(loose_eq(a, b))),
+        Ne => Some(Const::Bool(!loose_eq(a, b))),
+        BitAnd | BitOr | BitXor | Shl | Shr | UShr => {
+            let (x, y) = (to_int32(a.num()), to_int32(b.num()));
+            let s = (y as u32) & 31;
+            Some(Const::Num(match op {
+                BitAnd => f64::from(x & y),
+                BitOr => f64::from(x | y),
+                BitXor => f64::from(x ^ y),
+                Shl => f64::from(x.wrapping_shl(s)),
+                Shr => f64::from(x >> s),
+                _ => f64::from((x as u32) >> s),
+            }))
+        }
+    }
+}
+
+fn strict_eq(a: &Const, b: &Const) -> bool {
+    match (a, b) {
+        (Const::Num(x), Const::Num(y)) => x == y,
+        (Const::Str(x), Const::Str(y)) => x == y,
+        (Const::Bool(x), Const::Bool(y)) => x == y,
+        (Const::Null, Const::Null) | (Const::Undefined, Const::Undefined) => true,
+        _ => false,
+    }
+}
+
+fn loose_eq(a: &Const, b: &Const) -> bool {
+    match (a, b) {
+        (Const::Null | Const::Undefined, Const::Null | Const::Undefined) => true,
+        (Const::Null | Const::Undefined, _) | (_, Const::Null | Const::Undefined) => false,
+        (Const::Str(x), Const::Str(y)) => x == y,
+        _ => a.num() == b.num(),
+    }
+}

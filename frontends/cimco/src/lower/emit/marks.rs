@@ -1,0 +1,177 @@
+//! Tidying the marks of an emitted handler: a mark set where another was
+//! just set (nothing written between) is the same mark; a truncation to a
+//! mark with nothing written since does nothing; a mark nobody reads is
+//! not set. Each mark slot is set by exactly one `Mark`, so renaming is
+//! safe.
+
+use std::collections::{HashMap, HashSet};
+
+use postc_ir::{Expr, Piece, Stmt};
+
+/// Tidies a handler body.
+pub fn tidy(body: Vec<Stmt>) -> Vec<Stmt> {
+    let mut alias = HashMap::new();
+    find_aliases(&body, &mut alias);
+    let body = rename(body, &alias);
+    let body = drop_truncates(body);
+    let mut read = HashSet::new();
+    reads(&body, &mut read);
+    drop_unread(body, &read)
+}
+
+/// Statements that cannot write output (value-mode code).
+fn silent(s: &Stmt) -> bool {
+    matches!(s, Stmt::Assign(..))
+}
+
+fn find_aliases(body: &[Stmt], alias: &mut HashMap<u16, u16>) {
+    let mut current: Option<u16> = None;
+    for s in body {
+        match s {
+            Stmt::Mark(m) => match current {
+                Some(c) => {
+                    alias.insert(*m, c);
+                }
+                None => current = Some(*m),
+            },
+            s if silent(s) => {}
+            Stmt::If { branches, otherwise } => {
+                current = None;
+                branches.iter().for_each(|(_, b)| find_aliases(b, alias));
+                find_aliases(otherwise, alias);
+            }
+            Stmt::While { body, .. } => {
+                current = None;
+                find_aliases(body, alias);
+            }
+            _ => current = None,
+        }
+    }
+}
+
+fn rename(body: Vec<Stmt>, alias: &HashMap<u16, u16>) -> Vec<Stmt> {
+    let to = |m: u16| *alias.get(&m).unwrap_or(&m);
+    body.into_iter()
+        .filter(|s| !matches!(s, Stmt::Mark(m) if alias.contains_key(m)))
+        .map(|s| match s {
+            Stmt::Truncate(m) => Stmt::Truncate(to(m)),
+            Stmt::Blocks(m) => Stmt::Blocks(to(m)),
+            Stmt::MoveBack { to: a, from: b } => Stmt::MoveBack { to: to(a), from: to(b) },
+            Stmt::If { branches, otherwise } => Stmt::If {
+                branches: branches.into_iter().map(|(c, b)| (rename_expr(c, alias), rename(b, alias))).collect(),
+                otherwise: rename(otherwise, alias),
+            },
+            Stmt::While { cond, body, span } => Stmt::While { cond, body: rename(body, alias), span },
+            other => other,
+        })
+        .collect()
+}
+
+fn rename_expr(e: Expr, alias: &HashMap<u16, u16>) -> Expr {
+    match e {
+        Expr::Written(m) => Expr::Written(*alias.get(&m).unwrap_or(&m)),
+        Expr::Unary(op, a) => Expr::Unary(op, Box::new(rename_expr(*a, alias))),
+        Expr::Binary(op, a, b) => Expr::Binary(op, Box::new(rename_expr(*a, alias)), Box::new(rename_expr(*b, alias))),
+        other => other,
+    }
+}
+
+/// Removes `Truncate(m)` where nothing was written since `Mark(m)`.
+fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
+    let mut out: Vec<Stmt> = Vec::with_capacity(body.len());
+    let mut fresh: Option<u16> = None;
+    for s in body {
+        match s {
+            Stmt::Mark(m) => {
+                fresh = Some(m);
+                out.push(Stmt::Mark(m));
+            }
+            Stmt::Truncate(m) if fresh == Some(m) => {}
+            s if silent(&s) => out.push(s),
+            Stmt::If { branches, otherwise } => {
+                fresh = None;
+                out.push(Stmt::If {
+                    branches: branches.into_iter().map(|(c, b)| (c, drop_truncates(b))).collect(),
+                    otherwise: drop_truncates(otherwise),
+                });
+            }
+            Stmt::While { cond, body, span } => {
+                fresh = None;
+                out.push(Stmt::While { cond, body: drop_truncates(body), span });
+            }
+            other => {
+                fresh = None;
+                out.push(other);
+            }
+        }
+    }
+    out
+}
+
+fn reads(body: &[Stmt], read: &mut HashSet<u16>) {
+    let expr = |e: &Expr, read: &mut HashSet<u16>| {
+        fn walk(e: &Expr, read: &mut HashSet<u16>) {
+            match e {
+                Expr::Written(m) | Expr::Local(m) => {
+                    read.insert(*m);
+                }
+                Expr::Unary(_, a) | Expr::FormatVar { value: a, .. } | Expr::Format { value: a, .. } => walk(a, read),
+                Expr::Binary(_, a, b) => {
+                    walk(a, read);
+                    walk(b, read);
+                }
+                Expr::Choose(c, a, b) => {
+                    walk(c, read);
+                    walk(a, read);
+                    walk(b, read);
+                }
+                Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter().for_each(|a| walk(a, read)),
+                _ => {}
+            }
+        }
+        walk(e, read)
+    };
+    for s in body {
+        match s {
+            Stmt::Truncate(m) | Stmt::Blocks(m) => {
+                read.insert(*m);
+            }
+            Stmt::MoveBack { to, from } => {
+                read.insert(*to);
+                read.insert(*from);
+            }
+            Stmt::If { branches, otherwise } => {
+                for (c, b) in branches {
+                    expr(c, read);
+                    reads(b, read);
+                }
+                reads(otherwise, read);
+            }
+            Stmt::While { cond, body, .. } => {
+                expr(cond, read);
+                reads(body, read);
+            }
+            Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) | Stmt::Return(Some(e)) => expr(e, read),
+            Stmt::Emit(p) | Stmt::Line(p) => p.iter().for_each(|p| {
+                if let Piece::Expr(e) = p {
+                    expr(e, read)
+                }
+            }),
+            _ => {}
+        }
+    }
+}
+
+fn drop_unread(body: Vec<Stmt>, read: &HashSet<u16>) -> Vec<Stmt> {
+    body.into_iter()
+        .filter(|s| !matches!(s, Stmt::Mark(m) if !read.contains(m)))
+        .map(|s| match s {
+            Stmt::If { branches, otherwise } => Stmt::If {
+                branches: branches.into_iter().map(|(c, b)| (c, drop_unread(b, read))).collect(),
+                otherwise: drop_unread(otherwise, read),
+            },
+            Stmt::While { cond, body, span } => Stmt::While { cond, body: drop_unread(body, read), span },
+            other => other,
+        })
+        .collect()
+}

@@ -1,0 +1,456 @@
+//! The fast path: a handler that writes what a native function returns
+//! (`Write(onLinear(x, y, z, 1))`) instead builds that text straight in
+//! the output, with no string allocated.
+//!
+//! The function is inlined into the handler and every `return E` becomes
+//! "emit the text of E, then leave". Concatenations emit their parts in
+//! order; `xOutput.format(x)` formats into the output; calls of other
+//! native functions in a concatenation are inlined the same way. A string
+//! parameter (`writeBlock(text)`) is bound by emitting its argument first
+//! and keeping the mark where it starts: `text == ""` becomes "nothing was
+//! written since the mark", `text = "N10 " + text` writes the new text and
+//! moves it back to the mark, `return text + linebreak` just appends. A
+//! function whose shape is outside these rules keeps the allocating
+//! `Write`; the result is the same either way.
+
+mod marks;
+mod shape;
+
+use postc_ir::{BinaryOp, Body, Expr, Function, Piece, Place, Stmt, UnaryOp};
+
+use shape::*;
+pub(crate) use marks::tidy;
+pub(crate) use shape::max_slot;
+
+/// Rewrites handler bodies.
+pub struct Emitter<'f> {
+    functions: &'f [Function],
+    returns_text: Vec<bool>,
+    /// Functions every path of which ends in `return value`.
+    always: Vec<bool>,
+    /// Next free slot of the handler's frame.
+    next: u16,
+    /// Statements inlined so far, to bound the size of a handler.
+    budget: usize,
+}
+
+/// Inlining nests at most this deep.
+const MAX_DEPTH: usize = 6;
+
+/// Where each local of an inlined function lives.
+#[derive(Clone)]
+struct Frame {
+    /// Expressions are already in the handler's terms (the handler itself).
+    identity: bool,
+    /// Callee slot -> what it reads as.
+    map: Vec<Binding>,
+    /// The mark where this function's text starts.
+    base: u16,
+    depth: usize,
+    /// A region local not assigned yet (its first assignment starts it).
+    pending: std::cell::Cell<Option<u16>>,
+}
+
+#[derive(Clone)]
+enum Binding {
+    /// A slot of the handler's frame.
+    Slot(u16),
+    /// An argument substituted where it is read (pure and never assigned).
+    Value(Expr),
+    /// Text already written since the mark in this slot.
+    Region(u16),
+}
+
+impl<'f> Emitter<'f> {
+    pub fn new(functions: &'f [Function], first_free_slot: u16) -> Emitter<'f> {
+        let always = functions.iter().map(|f| matches!(&f.body, Body::Native(b) if always_returns(b))).collect();
+        let mut e = Emitter { functions, returns_text: vec![false; functions.len()], always, next: first_free_slot, budget: 0 };
+        e.infer_text_returns();
+        e
+    }
+
+    /// Which functions always return text (every path ends in `return
+    /// TEXT`), so that their calls can be inlined inside a concatenation.
+    fn infer_text_returns(&mut self) {
+        let mut known = vec![true; self.functions.len()];
+        loop {
+            let mut changed = false;
+            for (i, f) in self.functions.iter().enumerate() {
+                let ok = match &f.body {
+                    Body::Native(body) => always_returns(body) && all_returns(body, &|e| is_text(e, &known)),
+                    Body::Script(_) => false,
+                };
+                if known[i] && !ok {
+                    known[i] = false;
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        self.returns_text = known;
+    }
+
+    /// Rewrites a handler body: each `Write(call)` of a native function
+    /// becomes the inlined text-building statements when possible.
+    pub fn handler(&mut self, body: Vec<Stmt>) -> Vec<Stmt> {
+        body.into_iter().map(|s| self.stmt(s)).collect()
+    }
+
+    fn stmt(&mut self, s: Stmt) -> Stmt {
+        match s {
+            Stmt::Write(Expr::Call(f, args)) => {
+                let saved = (self.next, self.budget);
+                let mark = self.slot();
+                match self.call(f, &args, 0, false) {
+                    Some(mut inlined) => {
+                        inlined.insert(0, Stmt::Mark(mark));
+                        inlined.push(Stmt::Blocks(mark));
+                        Stmt::If { branches: vec![(Expr::Bool(true), merge(inlined))], otherwise: vec![] }
+                    }
+                    None => {
+                        (self.next, self.budget) = saved;
+                        Stmt::Write(Expr::Call(f, args))
+                    }
+                }
+            }
+            Stmt::If { branches, otherwise } => Stmt::If {
+                branches: branches.into_iter().map(|(c, b)| (c, self.handler(b))).collect(),
+                otherwise: self.handler(otherwise),
+            },
+            Stmt::While { cond, body, span } => Stmt::While { cond, body: self.handler(body), span },
+            other => other,
+        }
+    }
+
+    fn slot(&mut self) -> u16 {
+        self.next += 1;
+        self.next - 1
+    }
+
+    /// The statements that write what `f(args)` returns, wrapped so that
+    /// a `return` leaves. `in_text`: the call sits inside a concatenation,
+    /// where only functions that always return text may be inlined.
+    fn call(&mut self, f: u16, args: &[Expr], depth: usize, in_text: bool) -> Option<Vec<Stmt>> {
+        self.call_bound(f, args, depth, in_text, None)
+    }
+
+    /// `call`, with parameter `bound.0` already written as the text since
+    /// mark `bound.1` (the caller's region, passed on).
+    fn call_bound(&mut self, f: u16, args: &[Expr], depth: usize, in_text: bool, bound: Option<(usize, u16)>) -> Option<Vec<Stmt>> {
+        if depth >= MAX_DEPTH {
+            return None;
+        }
+        let function = self.functions.get(f as usize)?;
+        let Body::Native(body) = &function.body else { return None };
+        // Inside a concatenation, a function that can return nothing would
+        // add nothing either way; one that may fall off its end is left alone.
+        if in_text && !self.always[f as usize] {
+            return None;
+        }
+        if has_loop(body) {
+            return None;
+        }
+        self.budget += count(body);
+        if self.budget > 400 {
+            return None;
+        }
+        let params = function.params.len();
+        let slots = (function.slots as usize).max(params);
+        let (base, mut out) = match bound {
+            Some((_, mark)) => (mark, Vec::new()),
+            None => {
+                let b = self.slot();
+                (b, vec![Stmt::Mark(b)])
+            }
+        };
+        let mut map = Vec::with_capacity(slots);
+        let region_param = match bound {
+            Some((k, _)) => (k < params && region_uses_ok(body, k as u16)).then_some(k),
+            None => region_param(body, params, args),
+        };
+        if bound.is_some() && region_param.is_none() {
+            return None;
+        }
+        let region_local = if region_param.is_none() { region_local(body, params, slots) } else { None };
+        for k in 0..slots {
+            if Some(k) == region_local {
+                map.push(Binding::Region(self.slot()));
+                continue;
+            }
+            if k >= params {
+                let s = self.slot();
+                // A local starts undefined, unless it is set before any use.
+                let first = body.iter().find(|st| stmt_mentions(st, k as u16));
+                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if *x as usize == k && !expr_reads(e, k as u16)) {
+                    out.push(Stmt::Assign(Place::Local(s), Expr::Null));
+                }
+                map.push(Binding::Slot(s));
+                continue;
+            }
+            let arg = args.get(k).cloned().unwrap_or(Expr::Null);
+            if Some(k) == region_param {
+                // Bound by writing it: its text starts at the function's base.
+                if bound.is_none() {
+                    out.extend(self.text(&arg, &Frame::root(), depth + 1)?);
+                }
+                map.push(Binding::Region(base));
+            } else if is_pure(&arg) && !assigns(body, k as u16) {
+                map.push(Binding::Value(arg));
+            } else {
+                let s = self.slot();
+                out.push(Stmt::Assign(Place::Local(s), arg));
+                map.push(Binding::Slot(s));
+            }
+        }
+        // Arguments past the parameters are evaluated for their effects.
+        for extra in args.iter().skip(params) {
+            if !is_pure(extra) {
+                out.push(Stmt::Eval(extra.clone()));
+            }
+        }
+        let frame = Frame { identity: false, map, base, depth, pending: std::cell::Cell::new(region_local.map(|k| k as u16)) };
+        let mut inner = self.stmts(body, &frame)?;
+        let ends = matches!(inner.last(), Some(Stmt::Break));
+        if ends {
+            inner.pop();
+        } else {
+            // Falling off the end returns undefined: nothing is written.
+            inner.push(Stmt::Truncate(base));
+        }
+        if breaks(&inner) {
+            // An early `return`: a loop to leave.
+            inner.push(Stmt::Break);
+            out.push(Stmt::While { cond: Expr::Bool(true), body: merge(inner), span: None });
+        } else {
+            out.extend(inner);
+        }
+        Some(merge(out))
+    }
+
+    fn stmts(&mut self, body: &[Stmt], fr: &Frame) -> Option<Vec<Stmt>> {
+        let mut out = Vec::new();
+        for s in body {
+            match s {
+                Stmt::Return(e) => {
+                    out.extend(self.ret(e.as_ref(), fr)?);
+                    out.push(Stmt::Break);
+                    return Some(out);
+                }
+                Stmt::If { branches, otherwise } => {
+                    let mut bs = Vec::new();
+                    for (c, b) in branches {
+                        bs.push((self.cond(c, fr)?, self.stmts(b, fr)?));
+                    }
+                    out.push(Stmt::If { branches: bs, otherwise: self.stmts(otherwise, fr)? });
+                }
+                Stmt::Assign(Place::Local(k), e) => match fr.map.get(*k as usize)? {
+                    Binding::Slot(s) => out.push(Stmt::Assign(Place::Local(*s), value(e, fr)?)),
+                    Binding::Region(mark) => {
+                        let mark = *mark;
+                        if fr.pending.get() == Some(*k) {
+                            // The first assignment of a region local starts it.
+                            fr.pending.set(None);
+                            out.push(Stmt::Mark(mark));
+                            out.extend(self.text(e, fr, fr.depth + 1)?);
+                        } else {
+                            out.extend(self.region_text(e, *k, mark, fr)?);
+                        }
+                    }
+                    Binding::Value(_) => return None,
+                },
+                Stmt::Assign(place, e) => out.push(Stmt::Assign(*place, value(e, fr)?)),
+                Stmt::Eval(e) => out.push(Stmt::Eval(value(e, fr)?)),
+                _ => return None,
+            }
+        }
+        Some(out)
+    }
+
+    /// `return e`: the function's text becomes the text of `e`.
+    fn ret(&mut self, e: Option<&Expr>, fr: &Frame) -> Option<Vec<Stmt>> {
+        let Some(e) = e else { return Some(vec![Stmt::Truncate(fr.base)]) };
+        if let Expr::Choose(c, a, b) = e {
+            let cond = self.cond(c, fr)?;
+            let yes = self.ret(Some(a), fr)?;
+            let no = self.ret(Some(b), fr)?;
+            return Some(vec![Stmt::If { branches: vec![(cond, yes)], otherwise: no }]);
+        }
+        if let Expr::Call(g, args) = e
+            && let Some(out) = self.pass_region(*g, args, fr)
+        {
+            return Some(out);
+        }
+        if let Some(k) = region_in(e, fr) {
+            return self.region_text(e, k, fr.base, fr);
+        }
+        if mentions_region(e, fr) {
+            return None;
+        }
+        let mut out = vec![Stmt::Truncate(fr.base)];
+        out.extend(self.text(e, fr, fr.depth + 1)?);
+        Some(out)
+    }
+
+    /// `return g(..., text-with-region, ...)`: the region is extended to
+    /// the argument's text and handed to `g` as its text parameter.
+    fn pass_region(&mut self, g: u16, args: &[Expr], fr: &Frame) -> Option<Vec<Stmt>> {
+        let with = |a: &Expr| region_in(a, fr);
+        let i = args.iter().position(|a| with(a).is_some())?;
+        if args.iter().enumerate().any(|(j, a)| j != i && mentions_region(a, fr)) {
+            return None;
+        }
+        let k = with(&args[i])?;
+        let Binding::Region(mark) = fr.map.get(k as usize)? else { return None };
+        let mark = *mark;
+        let mut hargs = Vec::with_capacity(args.len());
+        for (j, a) in args.iter().enumerate() {
+            hargs.push(if j == i { Expr::Null } else { value(a, fr)? });
+        }
+        let saved = (self.next, self.budget);
+        let mut out = self.region_text(&args[i], k, mark, fr)?;
+        match self.call_bound(g, &hargs, fr.depth + 1, false, Some((i, mark))) {
+            Some(inlined) => {
+                out.extend(inlined);
+                Some(out)
+            }
+            None => {
+                (self.next, self.budget) = saved;
+                None
+            }
+        }
+    }
+
+    /// Writes `e`, a concatenation with region local `k` once in it, so
+    /// that the region (starting at `mark`) holds its text afterwards.
+    fn region_text(&mut self, e: &Expr, k: u16, mark: u16, fr: &Frame) -> Option<Vec<Stmt>> {
+        let mut leaves = Vec::new();
+        concat_leaves(e, &mut leaves);
+        let pos = leaves.iter().position(|l| matches!(l, Expr::Local(x) if *x == k));
+        let Some(pos) = pos else {
+            // The region is replaced.
+            let mut out = vec![Stmt::Truncate(mark)];
+            for l in &leaves {
+                if mentions_region(l, fr) {
+                    return None;
+                }
+                out.extend(self.text(l, fr, fr.depth + 1)?);
+            }
+            return Some(out);
+        };
+        if leaves.iter().enumerate().any(|(i, l)| i != pos && mentions_region(l, fr)) {
+            return None;
+        }
+        let mut out = Vec::new();
+        if pos > 0 {
+            let t = self.slot();
+            out.push(Stmt::Mark(t));
+            for l in &leaves[..pos] {
+                out.extend(self.text(l, fr, fr.depth + 1)?);
+            }
+            out.push(Stmt::MoveBack { to: mark, from: t });
+        }
+        for l in &leaves[pos + 1..] {
+            out.extend(self.text(l, fr, fr.depth + 1)?);
+        }
+        Some(out)
+    }
+
+    /// A condition, with tests of a region's emptiness rewritten.
+    fn cond(&self, c: &Expr, fr: &Frame) -> Option<Expr> {
+        let region = |e: &Expr| match e {
+            Expr::Local(k) => match fr.map.get(*k as usize) {
+                Some(Binding::Region(m)) => Some(*m),
+                _ => None,
+            },
+            _ => None,
+        };
+        let empty = |e: &Expr| matches!(e, Expr::Text(t) if t.is_empty());
+        match c {
+            Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq, a, b) if region(a).is_some() && empty(b) => {
+                Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?))))
+            }
+            Expr::Binary(BinaryOp::Ne | BinaryOp::StrictNe, a, b) if region(a).is_some() && empty(b) => Some(Expr::Written(region(a)?)),
+            Expr::Unary(UnaryOp::Not, a) if region(a).is_some() => Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?)))),
+            e if region(e).is_some() => Some(Expr::Written(region(e)?)),
+            other => value(other, fr),
+        }
+    }
+
+    /// Statements that write the text of `e`, an expression in the terms
+    /// of frame `fr`.
+    fn text(&mut self, e: &Expr, fr: &Frame, depth: usize) -> Option<Vec<Stmt>> {
+        Some(match e {
+            Expr::Text(t) if t.is_empty() => Vec::new(),
+            Expr::Text(t) => vec![Stmt::Emit(vec![Piece::Text(t.as_bytes().to_vec())])],
+            Expr::Binary(BinaryOp::Add, a, b) if is_text(e, &self.returns_text) => {
+                let mut out = self.text(a, fr, depth)?;
+                out.extend(self.text(b, fr, depth)?);
+                out
+            }
+            Expr::Choose(c, a, b) => {
+                let cond = value(c, fr)?;
+                let yes = self.text(a, fr, depth)?;
+                let no = self.text(b, fr, depth)?;
+                vec![Stmt::If { branches: vec![(cond, yes)], otherwise: no }]
+            }
+            Expr::Call(f, args) => {
+                let args = args.iter().map(|a| value(a, fr)).collect::<Option<Vec<_>>>()?;
+                let saved = (self.next, self.budget);
+                match self.call(*f, &args, depth, true) {
+                    Some(s) => s,
+                    None => {
+                        (self.next, self.budget) = saved;
+                        vec![Stmt::Emit(vec![Piece::Expr(Expr::Call(*f, args))])]
+                    }
+                }
+            }
+            other => vec![Stmt::Emit(vec![Piece::Expr(value(other, fr)?)])],
+        })
+    }
+}
+
+impl Frame {
+    /// The handler's own frame: expressions are already in its terms.
+    fn root() -> Frame {
+        Frame { identity: true, map: Vec::new(), base: 0, depth: 0, pending: std::cell::Cell::new(None) }
+    }
+}
+
+/// A callee expression in handler terms; `None` if it reads a region.
+fn value(e: &Expr, fr: &Frame) -> Option<Expr> {
+    if fr.identity {
+        return Some(e.clone());
+    }
+    Some(match e {
+        Expr::Local(k) => match fr.map.get(*k as usize)? {
+            Binding::Slot(s) => Expr::Local(*s),
+            Binding::Value(v) => v.clone(),
+            Binding::Region(_) => return None,
+        },
+        Expr::FormatVar { var, value: v } => Expr::FormatVar { var: *var, value: Box::new(value(v, fr)?) },
+        Expr::Format { format, value: v } => Expr::Format { format: *format, value: Box::new(value(v, fr)?) },
+        Expr::Unary(op, a) => Expr::Unary(*op, Box::new(value(a, fr)?)),
+        Expr::Binary(op, a, b) => Expr::Binary(*op, Box::new(value(a, fr)?), Box::new(value(b, fr)?)),
+        Expr::Choose(c, a, b) => Expr::Choose(Box::new(value(c, fr)?), Box::new(value(a, fr)?), Box::new(value(b, fr)?)),
+        Expr::Call(f, args) => Expr::Call(*f, args.iter().map(|a| value(a, fr)).collect::<Option<_>>()?),
+        Expr::Builtin(b, args) => Expr::Builtin(*b, args.iter().map(|a| value(a, fr)).collect::<Option<_>>()?),
+        other => other.clone(),
+    })
+}
+
+fn mentions_region(e: &Expr, fr: &Frame) -> bool {
+    value(e, fr).is_none()
+}
+
+/// The region local a concatenation has as one of its parts.
+fn region_in(e: &Expr, fr: &Frame) -> Option<u16> {
+    let mut leaves = Vec::new();
+    concat_leaves(e, &mut leaves);
+    leaves.iter().find_map(|l| match l {
+        Expr::Local(k) if matches!(fr.map.get(*k as usize), Some(Binding::Region(_))) => Some(*k),
+        _ => None,
+    })
+}
+

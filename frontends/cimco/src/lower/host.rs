@@ -1,0 +1,122 @@
+//! The names postc's CNC-Calc host gives every post: constants, global
+//! functions, `Math`, and the methods of texts, arrays and output
+//! variables. `docs/cimco.md` lists them with their meaning.
+
+use super::consts::Const;
+
+/// Movement types passed as the last argument of `onLinear` and
+/// `onCircular`, and to `getFeedrate`.
+pub const MOVEMENT_RAPID: f64 = 0.0;
+pub const MOVEMENT_CUTTING: f64 = 1.0;
+pub const MOVEMENT_PLUNGE: f64 = 2.0;
+
+/// The value of a constant the host defines.
+pub fn constant(name: &str) -> Option<Const> {
+    let n = match name {
+        "MOVEMENT_RAPID" => MOVEMENT_RAPID,
+        "MOVEMENT_CUTTING" | "MOVEMENT_FEED" => MOVEMENT_CUTTING,
+        "MOVEMENT_PLUNGE" => MOVEMENT_PLUNGE,
+        "MOVEMENT_RETRACT" => 3.0,
+        "COMPENSATION_OFF" => 0.0,
+        "COMPENSATION_LEFT" => 1.0,
+        "COMPENSATION_RIGHT" => 2.0,
+        "POST_TYPE_MILL" => 0.0,
+        "POST_TYPE_TURN" => 1.0,
+        "DEGRESSION_NONE" => 0.0,
+        "DEGRESSION_VALUE" => 1.0,
+        "DEGRESSION_FACTOR" => 2.0,
+        "NaN" => f64::NAN,
+        "Infinity" => f64::INFINITY,
+        "undefined" => return Some(Const::Undefined),
+        _ => return None,
+    };
+    Some(Const::Num(n))
+}
+
+/// `Math.NAME` constants.
+pub fn math_constant(name: &str) -> Option<f64> {
+    use std::f64::consts as c;
+    Some(match name {
+        "PI" => c::PI,
+        "E" => c::E,
+        "LN2" => c::LN_2,
+        "LN10" => c::LN_10,
+        "LOG2E" => c::LOG2_E,
+        "LOG10E" => c::LOG10_E,
+        "SQRT2" => c::SQRT_2,
+        "SQRT1_2" => c::FRAC_1_SQRT_2,
+        _ => return None,
+    })
+}
+
+/// `Math` functions the host provides.
+pub const MATH_FUNCTIONS: &[&str] = &[
+    "abs", "acos", "asin", "atan", "atan2", "ceil", "cos", "exp", "floor", "log", "max", "min", "pow", "random",
+    "round", "sin", "sqrt", "tan",
+];
+
+/// Global functions the host provides.
+pub const FUNCTIONS: &[&str] = &[
+    "createFormat",
+    "createVariable",
+    "getFeedrate",
+    "getCompensation",
+    "parseInt",
+    "parseFloat",
+    "isNaN",
+    "isFinite",
+    "String",
+    "Number",
+    "Boolean",
+    "Array",
+    "Object",
+    "Error",
+];
+
+/// Whether a name is something the host provides as an object (`Math`).
+pub fn is_object(name: &str) -> bool {
+    matches!(name, "Math" | "createFormat" | "createVariable" | "Array" | "Object" | "Error")
+}
+
+/// Whether the host knows the name at all.
+pub fn knows(name: &str) -> bool {
+    constant(name).is_some() || FUNCTIONS.contains(&name) || name == "Math" || name == "arguments"
+}
+
+/// Whether a host function returns a number, text or boolean.
+pub fn plain_function(name: &str) -> bool {
+    matches!(
+        name,
+        "getFeedrate" | "getCompensation" | "parseInt" | "parseFloat" | "isNaN" | "isFinite" | "String" | "Number" | "Boolean"
+    )
+}
+
+/// Whether a method of that name returns a number, text or boolean.
+pub fn plain_method(name: &str) -> bool {
+    matches!(
+        name,
+        "format"
+            | "getLast"
+            | "toUpperCase"
+            | "toLowerCase"
+            | "substr"
+            | "substring"
+            | "charAt"
+            | "charCodeAt"
+            | "indexOf"
+            | "lastIndexOf"
+            | "toFixed"
+            | "replace"
+            | "join"
+            | "trim"
+            | "toString"
+            | "push"
+            | "search"
+            | "test"
+    )
+}
+
+/// The entry points postc calls with an object (the drill header).
+pub fn entry_takes_object(name: &str) -> bool {
+    matches!(name, "onDrillingHeader" | "onDrilling")
+}

@@ -1,0 +1,95 @@
+//! Where everything lives in the IR: the index of each global, of each
+//! function (the post's own and the ones postc adds), and the names the
+//! script side uses for them.
+
+use std::collections::HashMap;
+
+use postc_ir::{Expr, Global};
+
+use super::consts::Const;
+use super::model::Model;
+
+/// Functions postc adds to every post.
+pub const INIT: &str = "__postc_init";
+pub const FEEDRATE: &str = "getFeedrate";
+pub const COMPENSATION: &str = "__postc_compensation";
+pub const DRILL_HEADER: &str = "__postc_drilling_header";
+pub const TURN_DRILL: &str = "__postc_drilling";
+/// The output variable `getFeedrate` formats through.
+pub const FEED_VAR: &str = "__postc_feed";
+
+/// IR indices of globals and functions.
+pub struct Layout {
+    pub globals: Vec<Global>,
+    pub global_index: HashMap<String, u16>,
+    /// IR function of each top-level JS function.
+    pub top_fn: Vec<u16>,
+    /// IR functions by name (the post's and postc's).
+    pub fn_index: HashMap<String, u16>,
+    pub fn_names: Vec<String>,
+}
+
+impl Layout {
+    pub fn new(model: &Model) -> Layout {
+        let mut l = Layout {
+            globals: Vec::new(),
+            global_index: HashMap::new(),
+            top_fn: Vec::new(),
+            fn_index: HashMap::new(),
+            fn_names: Vec::new(),
+        };
+        for g in &model.globals {
+            let initial = match &g.constant {
+                Some(c) => const_expr(c),
+                None => Expr::Null,
+            };
+            l.add_global(&g.name, initial);
+        }
+        for &id in &model.scopes.top_fns {
+            let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
+            let f = l.add_fn(&name);
+            l.top_fn.push(f);
+        }
+        l
+    }
+
+    pub fn add_global(&mut self, name: &str, initial: Expr) -> u16 {
+        if let Some(&i) = self.global_index.get(name) {
+            return i;
+        }
+        let i = self.globals.len() as u16;
+        self.globals.push(Global { name: name.to_string(), initial });
+        self.global_index.insert(name.to_string(), i);
+        i
+    }
+
+    /// Adds a function; a second function of the same name (a JavaScript
+    /// redeclaration) gets its own index, and calls by name reach the last.
+    pub fn add_fn(&mut self, name: &str) -> u16 {
+        let i = self.fn_names.len() as u16;
+        self.fn_names.push(name.to_string());
+        self.fn_index.insert(name.to_string(), i);
+        i
+    }
+
+    pub fn function(&self, name: &str) -> Option<u16> {
+        self.fn_index.get(name).copied()
+    }
+
+    /// A global holding a text constant, so that native code reads it
+    /// without allocating.
+    pub fn text_constant(&mut self, text: &str) -> u16 {
+        let name = format!("__postc_text:{text}");
+        self.add_global(&name, Expr::Text(text.to_string()))
+    }
+}
+
+/// A constant as an IR expression.
+pub fn const_expr(c: &Const) -> Expr {
+    match c {
+        Const::Num(n) => Expr::Number(*n),
+        Const::Str(s) => Expr::Text(s.clone()),
+        Const::Bool(b) => Expr::Bool(*b),
+        Const::Null | Const::Undefined => Expr::Null,
+    }
+}

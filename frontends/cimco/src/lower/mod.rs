@@ -1,0 +1,339 @@
+//! Lowering: a parsed CIMCO post to the IR.
+//!
+//! 1. [`model`]: the globals (bare, and the `globals = {...}` and
+//!    `PostInfo = {...}` objects flattened), constants, and which globals
+//!    can hold objects;
+//! 2. [`setup`]: `createFormat` / `createVariable` calls run at compile
+//!    time into IR formats and output variables;
+//! 3. [`native`]: each function as native IR, when it only formats,
+//!    compares, computes and concatenates; [`rhai`]: every function (and
+//!    postc's glue) as Rhai, for the ones that are not native and for
+//!    scripts calling each other;
+//! 4. [`handlers`]: the sections the post's entry points occupy; [`emit`]:
+//!    handlers that write a native function's text build it straight in
+//!    the output; [`fold`]: constant folding and text interning.
+//!
+//! `docs/cimco.md` describes the host semantics this implements.
+
+mod consts;
+mod emit;
+mod fold;
+mod handlers;
+pub mod host;
+mod layout;
+mod model;
+mod native;
+mod rhai;
+mod scope;
+mod setup;
+mod warn;
+
+use std::path::Path;
+
+use postc_ir::{
+    Body, Diagnostic, Dialect, Expr, Function, Modality, NumberFormat, Post, Quantity, Script, ScriptLanguage, SourceMap,
+    Span, Stmt, ValueSource, Variable,
+};
+
+use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
+
+use consts::Const;
+use layout::Layout;
+use model::Model;
+use setup::Setup;
+
+/// Compiles a CIMCO post: the IR and every diagnostic, sorted by position.
+pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<Diagnostic>) {
+    let text = String::from_utf8_lossy(bytes).into_owned();
+    let file = sources.add(path.display().to_string(), text);
+    let text = sources.text(file).unwrap_or_default();
+    let (program, mut diagnostics) = crate::parse(text, file);
+    let mut post = Post::default();
+    post.info.dialect = Dialect::Cimco;
+    post.info.source = path.display().to_string();
+    post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    post.info.file_extension = "nc".into();
+    if !postc_ir::diagnostic::has_errors(&diagnostics) {
+        lower(&program, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+    }
+    diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
+    (post, diagnostics)
+}
+
+/// Lowers a program without errors into `post`.
+fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+    let model = Model::build(program);
+    let setup = Setup::build(program, &model, diags);
+    warn::check(program, &model, &setup, diags);
+    let mut layout = Layout::new(&model);
+    let info = |name: &str| {
+        model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]])
+    };
+    let arity = |name: &str| info(name).map(|f| f.params.len());
+    settings(&model, post, diags);
+    post.options.lathe = is_lathe(&model, arity("onLinear"));
+
+    // Formats and variables, and the one getFeedrate formats through.
+    post.formats = setup.formats.clone();
+    post.variables = setup.variables.clone();
+    post.formats.push(NumberFormat {
+        decimals: 1,
+        trim_zeros: true,
+        width: 0,
+        width_of: postc_ir::WidthOf::IntegerDigits,
+        decimal_mark: setup::decimal_mark(&model),
+        ..NumberFormat::default()
+    });
+    post.variables.push(Variable {
+        name: layout::FEED_VAR.into(),
+        source: ValueSource::Assigned,
+        prefix: b"F".to_vec(),
+        format: (post.formats.len() - 1) as u16,
+        modality: Modality::Always,
+    });
+    let feed_var = (post.variables.len() - 1) as u16;
+
+    // postc's functions after the post's own.
+    let own_feedrate = info(layout::FEEDRATE).is_some();
+    let feed_fn = if own_feedrate { None } else { Some(layout.add_fn(layout::FEEDRATE)) };
+    let init_fn = layout.add_fn(layout::INIT);
+    let glue = [layout::COMPENSATION, layout::DRILL_HEADER, layout::TURN_DRILL];
+    for g in glue {
+        layout.add_fn(g);
+    }
+
+    // Native bodies where possible.
+    let mut functions: Vec<Function> = Vec::new();
+    for (i, &id) in model.scopes.top_fns.iter().enumerate() {
+        let f = &model.scopes.funcs[id];
+        let func = f.func.expect("top-level functions have a body");
+        let mut n = native::Native { model: &model, setup: &setup, layout: &mut layout, at: id, slots: 0 };
+        let body = n.lower_function(&func.body).map(|b| Body::Native(fold::stmts(b)));
+        let slots = n.slots;
+        let _ = i;
+        functions.push(Function {
+            name: f.name.clone().unwrap_or_default(),
+            params: f.params.clone(),
+            slots,
+            body: body.unwrap_or(Body::Script(0)),
+            span: Some(func.span),
+        });
+    }
+    if feed_fn.is_some() {
+        functions.push(Function {
+            name: layout::FEEDRATE.into(),
+            params: vec!["movement".into()],
+            slots: 1,
+            body: Body::Native(vec![
+                Stmt::If {
+                    branches: vec![(
+                        Expr::Binary(postc_ir::BinaryOp::Eq, Box::new(Expr::Local(0)), Box::new(Expr::Number(host::MOVEMENT_RAPID))),
+                        vec![Stmt::Return(Some(Expr::Text(String::new())))],
+                    )],
+                    otherwise: vec![],
+                },
+                Stmt::Return(Some(Expr::FormatVar { var: feed_var, value: Box::new(Expr::Quantity(Quantity::Feed)) })),
+            ]),
+            span: None,
+        });
+    }
+    let init_stmts = init_statements(program, &model, &setup);
+    let init_native = {
+        let mut n = native::Native { model: &model, setup: &setup, layout: &mut layout, at: 0, slots: 0 };
+        n.stmts(&init_stmts).map(|b| (fold::stmts(b), n.slots))
+    };
+    functions.push(Function {
+        name: layout::INIT.into(),
+        params: vec![],
+        slots: init_native.as_ref().map_or(0, |(_, s)| *s),
+        body: match init_native {
+            Some((b, _)) => Body::Native(b),
+            None => Body::Script(0),
+        },
+        span: Some(whole),
+    });
+    for (g, entry) in glue.iter().zip(["onCompensation", "onDrillingHeader", "onDrilling"]) {
+        let body = if arity(entry).is_some() { Body::Script(0) } else { Body::Native(vec![]) };
+        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span: None });
+    }
+    debug_assert_eq!(functions.len(), layout.fn_names.len());
+
+    // The script: every function, and postc's glue.
+    let script = {
+        let mut g = rhai::Gen::new(&model, &setup, &layout);
+        for &id in &model.scopes.top_fns {
+            let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
+            g.function(&rhai::fn_name(&name), id);
+        }
+        if feed_fn.is_some() {
+            g.glue(&rhai::fn_name(layout::FEEDRATE), whole, "__feedrate(__arg(a, 0))\n");
+        }
+        g.init(&rhai::fn_name(layout::INIT), &init_stmts, whole);
+        for (glue_name, entry, arg) in [
+            (layout::COMPENSATION, "onCompensation", "__comp()"),
+            (layout::DRILL_HEADER, "onDrillingHeader", "__drill_header()"),
+            (layout::TURN_DRILL, "onDrilling", "__turn_drill()"),
+        ] {
+            let body = if arity(entry).is_some() {
+                format!("__call(__fnobj({}), [{arg}])\n", rhai::quote(&rhai::fn_name(entry)))
+            } else {
+                "()\n".to_string()
+            };
+            let span = info(entry).and_then(|f| f.func).map_or(whole, |f| f.span);
+            g.glue(&rhai::fn_name(glue_name), span, &body);
+        }
+        Script { language: ScriptLanguage::Rhai, source: g.out, span: Some(whole), span_map: g.span_map }
+    };
+    if let Some(d) = warn::check_script(&script, whole) {
+        diags.push(d);
+    }
+
+    // Handlers, with the fast path.
+    let use_radius = match model.setting("useRadius") {
+        Some(c) => handlers::RadiusSetting::Known(c.truthy()),
+        None => match model.global("useRadius").or_else(|| model.global("globals.useRadius")) {
+            Some(g) if g.assignments > 0 => handlers::RadiusSetting::Global(layout.global_index[&g.name]),
+            _ => handlers::RadiusSetting::Known(false),
+        },
+    };
+    let entry = handlers::Entry { layout: &layout, lathe: post.options.lathe, use_radius, arity: &arity };
+    let raw = entry.handlers();
+    let mut emitter = emit::Emitter::new(&functions, handlers::HANDLER_SLOTS);
+    let mut hs = Vec::new();
+    for mut h in raw {
+        let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(h.body))));
+        if let Some(top) = emit::max_slot(&body) {
+            // The frame takes its full size at once.
+            body.insert(0, Stmt::Assign(postc_ir::Place::Local(top), Expr::Null));
+        }
+        h.body = handlers::one(body);
+        hs.push(h);
+    }
+    for f in &mut functions {
+        if let Body::Native(b) = &mut f.body {
+            fold::intern_stmts(b, &mut layout);
+        }
+    }
+    for h in &mut hs {
+        fold::intern_stmts(&mut h.body, &mut layout);
+    }
+    post.handlers = hs;
+    post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
+    if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
+        post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
+    }
+    let uses_script = functions.iter().any(|f| matches!(f.body, Body::Script(_)));
+    post.functions = functions;
+    post.globals = layout.globals;
+    if uses_script {
+        post.scripts = vec![script];
+    } else {
+        // No function runs as a script: drop the script bodies of the glue.
+        post.scripts.clear();
+    }
+}
+
+/// The top-level statements that run at start: everything but function
+/// declarations, calls the compiler ran, and constant declarations; the
+/// properties of `globals` and `PostInfo` that are not constants are
+/// assigned one by one.
+fn init_statements(program: &Program, model: &Model, setup: &Setup) -> Vec<ast::Stmt> {
+    let mut out = Vec::new();
+    for s in &program.body {
+        if setup.done.contains(&s.span.start) {
+            continue;
+        }
+        match &s.kind {
+            StmtKind::Function(_) | StmtKind::Empty => {}
+            StmtKind::Var(ds) => {
+                if ds.iter().any(|d| d.init.is_some() && model.constant(&d.name.name).is_none()) {
+                    out.push(s.clone());
+                }
+            }
+            StmtKind::Expr(e) => {
+                if let ExprKind::Assign { op: AssignOp::Assign, target, value } = &e.kind
+                    && let ExprKind::Ident(name) = &target.kind
+                {
+                    if model.flattened.contains(name)
+                        && let ExprKind::Object(props) = &value.kind
+                    {
+                        for p in props {
+                            if model.constant(&format!("{name}.{}", p.key.name)).is_some() {
+                                continue;
+                            }
+                            let object = ast::Expr::new(ExprKind::Ident(name.clone()), target.span);
+                            let member = ast::Expr::new(
+                                ExprKind::Member { object: Box::new(object), property: Ident { name: p.key.name.clone(), span: p.key.span } },
+                                p.span,
+                            );
+                            let assign = ast::Expr::new(
+                                ExprKind::Assign { op: AssignOp::Assign, target: Box::new(member), value: Box::new(p.value.clone()) },
+                                p.span,
+                            );
+                            out.push(ast::Stmt::new(StmtKind::Expr(assign), p.span));
+                        }
+                        continue;
+                    }
+                    if model.constant(name).is_some() {
+                        continue;
+                    }
+                }
+                out.push(s.clone());
+            }
+            _ => out.push(s.clone()),
+        }
+    }
+    out
+}
+
+/// Output options and post information from the settings.
+fn settings(model: &Model, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+    let text = |name: &str| match model.constant(name) {
+        Some(Const::Str(s)) => Some(s.clone()),
+        Some(Const::Num(n)) => consts::number_text(*n),
+        _ => None,
+    };
+    if let Some(Const::Str(lb)) = model.setting("linebreak")
+        && !lb.is_empty()
+    {
+        post.options.line_ending = lb.as_bytes().to_vec();
+    }
+    if let Some(Const::Num(t)) = model.setting("tolerance")
+        && *t > 0.0
+        && t.is_finite()
+    {
+        post.options.arc_tolerance = *t;
+    }
+    if let Some(Const::Str(m)) = model.setting("decimalMark")
+        && m != "."
+        && m != ","
+        && let Some(g) = model.global("decimalMark").or_else(|| model.global("globals.decimalMark"))
+        && let Some(init) = g.init
+    {
+        diags.push(
+            Diagnostic::warning("JS103", format!("decimalMark is {m:?}; postc writes '.' or ','"))
+                .at(init.span, "here")
+                .help("use '.' or ','; postc uses '.'"),
+        );
+    }
+    if let Some(title) = text("PostInfo.title") {
+        post.info.name = title;
+    }
+    for field in ["summary", "author", "version"] {
+        if let Some(v) = text(&format!("PostInfo.{field}")) {
+            post.info.notes.push(format!("{field}: {v}"));
+        }
+    }
+}
+
+/// Whether the post is for a lathe: `PostInfo.type` says so, or it has
+/// turning's `onLinear(vx, vz, movement)` or only `TurnDrillingFields`.
+fn is_lathe(model: &Model, on_linear: Option<usize>) -> bool {
+    if let Some(Const::Num(t)) = model.constant("PostInfo.type") {
+        return *t == 1.0;
+    }
+    if on_linear == Some(3) {
+        return true;
+    }
+    model.global("TurnDrillingFields").is_some() && model.global("MillDrillingFields").is_none()
+}

@@ -1,0 +1,145 @@
+//! Calls in native IR: post functions, the host's functions (`getFeedrate`,
+//! `parseFloat`, `Math.*`), and the `format` and `getLast` methods of the
+//! output variables and formats bound at compile time.
+
+use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir};
+
+use crate::ast::*;
+
+use super::super::layout;
+use super::super::scope::Symbol;
+use super::super::setup::Binding;
+use super::{Native, R, to_number};
+
+impl Native<'_, '_> {
+    /// Whether a name is the host's (not shadowed by the post).
+    pub(super) fn is_host(&self, name: &str) -> bool {
+        matches!(self.model.scopes.resolve(name, self.at), Symbol::Global(_)) && self.model.global(name).is_none()
+    }
+
+    pub(super) fn args(&mut self, args: &[Expr]) -> R<Vec<Ir>> {
+        args.iter().map(|a| self.expr(a)).collect()
+    }
+
+    pub(super) fn call(&mut self, callee: &Expr, args: &[Expr]) -> R<Ir> {
+        match &callee.kind {
+            ExprKind::Member { object, property } => self.method(object, &property.name, args),
+            ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
+                Symbol::TopFn(i) => {
+                    let id = self.model.scopes.top_fns[i];
+                    let info = &self.model.scopes.funcs[id];
+                    if self.model.fn_reassigned.contains(&i) || args.len() > info.params.len() || !self.model.returns_plain[id] {
+                        return None;
+                    }
+                    let f = *self.layout.top_fn.get(i)?;
+                    Some(Ir::Call(f, self.args(args)?))
+                }
+                Symbol::Global(g) if self.model.global(&g).is_none() => self.host_call(&g, args),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    fn host_call(&mut self, name: &str, args: &[Expr]) -> R<Ir> {
+        let one = |b: Builtin, s: &mut Self| -> R<Ir> { Some(Ir::Builtin(b, s.args(args)?)) };
+        match name {
+            "getFeedrate" => {
+                let f = self.layout.function(layout::FEEDRATE)?;
+                Some(Ir::Call(f, self.args(args)?))
+            }
+            "parseInt" => one(Builtin::ParseInt, self),
+            "parseFloat" => one(Builtin::ParseFloat, self),
+            "isNaN" => one(Builtin::IsNaN, self),
+            "Number" if !args.is_empty() => one(Builtin::ToNumber, self),
+            "String" if args.len() == 1 => Some(Ir::Builtin(Builtin::Str, self.args(args)?)),
+            _ => None,
+        }
+    }
+
+    fn method(&mut self, object: &Expr, name: &str, args: &[Expr]) -> R<Ir> {
+        if let ExprKind::Ident(o) = &object.kind {
+            if o == "Math" && self.is_host("Math") {
+                return self.math(name, args);
+            }
+            if let Some(b) = self.binding(o) {
+                return match (b, name, args.len()) {
+                    (Binding::Var(var), "format", 1) => {
+                        let v = self.expr(&args[0])?;
+                        Some(Ir::FormatVar { var, value: Box::new(to_number(v)) })
+                    }
+                    (Binding::Var(var), "getLast", _) if args.iter().all(is_pure) => {
+                        Some(Ir::Binary(IrBin::Add, Box::new(Ir::Number(0.0)), Box::new(Ir::Var(var))))
+                    }
+                    (Binding::Format(format), "format", 1) => {
+                        let v = self.expr(&args[0])?;
+                        Some(Ir::Format { format, value: Box::new(to_number(v)) })
+                    }
+                    _ => None,
+                };
+            }
+        }
+        let recv = self.expr(object)?;
+        match (name, args.len()) {
+            ("toUpperCase", 0) => Some(Ir::Builtin(Builtin::Upper, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
+            ("toLowerCase", 0) => Some(Ir::Builtin(Builtin::Lower, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
+            ("toFixed", 0 | 1) => {
+                let d = match args.first() {
+                    Some(a) => self.expr(a)?,
+                    None => Ir::Number(0.0),
+                };
+                Some(Ir::Builtin(Builtin::ToFixed, vec![recv, d]))
+            }
+            _ => None,
+        }
+    }
+
+    /// The variable or format a global is bound to, if the name is that global.
+    fn binding(&self, name: &str) -> Option<Binding> {
+        match self.model.scopes.resolve(name, self.at) {
+            Symbol::Global(g) => self.setup.bindings.get(&g).copied(),
+            _ => None,
+        }
+    }
+
+    fn math(&mut self, name: &str, args: &[Expr]) -> R<Ir> {
+        let a = self.args(args)?;
+        let b = match name {
+            "abs" => Builtin::Abs,
+            "sqrt" => Builtin::Sqrt,
+            "sin" => Builtin::Sin,
+            "cos" => Builtin::Cos,
+            "tan" => Builtin::Tan,
+            "atan" => Builtin::Atan,
+            "atan2" => Builtin::Atan2,
+            "asin" => Builtin::Asin,
+            "acos" => Builtin::Acos,
+            "exp" => Builtin::Exp,
+            "log" => Builtin::Log,
+            "floor" => Builtin::Floor,
+            "ceil" => Builtin::Ceil,
+            "round" => Builtin::JsRound,
+            "min" if !a.is_empty() => Builtin::Min,
+            "max" if !a.is_empty() => Builtin::Max,
+            "pow" if a.len() == 2 => {
+                let mut it = a.into_iter();
+                let (x, y) = (it.next()?, it.next()?);
+                return Some(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
+            }
+            _ => return None,
+        };
+        let arity = match b {
+            Builtin::Atan2 => 2,
+            Builtin::Min | Builtin::Max => a.len(),
+            _ => 1,
+        };
+        if a.len() < arity {
+            return None;
+        }
+        Some(Ir::Builtin(b, a.into_iter().map(to_number).collect()))
+    }
+}
+
+fn is_pure(e: &Expr) -> bool {
+    matches!(e.kind, ExprKind::Number(_) | ExprKind::String(_) | ExprKind::Ident(_))
+}

@@ -1,0 +1,382 @@
+//! JavaScript to native IR statements.
+//!
+//! A function lowers to native IR when everything in it is something the
+//! IR's statement language says the way JavaScript means it: locals,
+//! plain globals, numbers, text and booleans, the operators, `if`,
+//! simple loops and `switch`es, calls of post functions and host
+//! functions (`getFeedrate`, `Math.*`, `parseFloat`, ...), and the
+//! `format`/`getLast` methods of the output variables and formats bound
+//! at compile time. Anything else (objects, arrays, closures, `this`,
+//! `new`, `try`, regular expressions, a global that may hold an object)
+//! makes the whole function run as a script instead; [`lower_function`]
+//! says `None` then.
+
+use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, Place, Stmt as IrStmt, UnaryOp as IrUn};
+
+use crate::ast::*;
+
+mod calls;
+
+use super::consts::Const;
+use super::host;
+use super::layout::{self, Layout};
+use super::model::Model;
+use super::scope::{FnId, Symbol};
+use super::setup::Setup;
+
+/// Lowering context of one function.
+pub struct Native<'c, 'a> {
+    pub model: &'c Model<'a>,
+    pub setup: &'c Setup,
+    pub layout: &'c mut Layout,
+    pub at: FnId,
+    /// Slots in use (parameters, locals and temporaries).
+    pub slots: u16,
+}
+
+type R<T> = Option<T>;
+
+impl Native<'_, '_> {
+    /// The body of a function as native statements, or `None` when it must
+    /// run as a script.
+    pub fn lower_function(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
+        let info = &self.model.scopes.funcs[self.at];
+        if info.uses_this || info.uses_arguments || info.captures || !info.nested.is_empty() {
+            return None;
+        }
+        self.slots = info.locals.len() as u16;
+        self.stmts(body)
+    }
+
+    pub fn stmts(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
+        let mut out = Vec::new();
+        for s in body {
+            self.stmt(s, &mut out)?;
+        }
+        Some(out)
+    }
+
+    fn stmt(&mut self, s: &Stmt, out: &mut Vec<IrStmt>) -> R<()> {
+        if self.setup.done.contains(&s.span.start) {
+            return Some(());
+        }
+        match &s.kind {
+            StmtKind::Var(ds) => {
+                for d in ds {
+                    if let Some(init) = &d.init {
+                        let target = Expr::new(ExprKind::Ident(d.name.name.clone()), d.name.span);
+                        out.push(IrStmt::Assign(self.place(&target)?, self.expr(init)?));
+                    }
+                }
+            }
+            StmtKind::Expr(e) => out.push(self.expr_stmt(e)?),
+            StmtKind::Block(b) => {
+                for s in b {
+                    self.stmt(s, out)?;
+                }
+            }
+            StmtKind::Empty => {}
+            StmtKind::If { branches, otherwise } => {
+                let mut bs = Vec::new();
+                for b in branches {
+                    let mut body = Vec::new();
+                    self.stmt(&b.body, &mut body)?;
+                    bs.push((self.expr(&b.cond)?, body));
+                }
+                let mut other = Vec::new();
+                if let Some(o) = otherwise {
+                    self.stmt(o, &mut other)?;
+                }
+                out.push(IrStmt::If { branches: bs, otherwise: other });
+            }
+            StmtKind::While { cond, body } => {
+                let mut b = Vec::new();
+                self.stmt(body, &mut b)?;
+                out.push(IrStmt::While { cond: self.expr(cond)?, body: b, span: Some(s.span) });
+            }
+            StmtKind::DoWhile { body, cond } => {
+                if has_continue(body) {
+                    return None;
+                }
+                let mut b = Vec::new();
+                self.stmt(body, &mut b)?;
+                let c = self.expr(cond)?;
+                b.push(IrStmt::If { branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])], otherwise: vec![] });
+                out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span) });
+            }
+            StmtKind::For { init, test, update, body } => {
+                if has_continue(body) {
+                    return None;
+                }
+                match init {
+                    Some(ForInit::Var(ds)) => {
+                        let v = Stmt::new(StmtKind::Var(ds.clone()), s.span);
+                        self.stmt(&v, out)?;
+                    }
+                    Some(ForInit::Expr(e)) => out.push(self.expr_stmt(e)?),
+                    None => {}
+                }
+                let mut b = Vec::new();
+                self.stmt(body, &mut b)?;
+                if let Some(u) = update {
+                    b.push(self.expr_stmt(u)?);
+                }
+                let cond = match test {
+                    Some(t) => self.expr(t)?,
+                    None => Ir::Bool(true),
+                };
+                out.push(IrStmt::While { cond, body: b, span: Some(s.span) });
+            }
+            StmtKind::Switch { discriminant, cases } => self.switch(discriminant, cases, out)?,
+            StmtKind::Break => out.push(IrStmt::Break),
+            StmtKind::Continue => out.push(IrStmt::Continue),
+            StmtKind::Return(e) => out.push(IrStmt::Return(match e {
+                Some(e) => Some(self.expr(e)?),
+                None => None,
+            })),
+            _ => return None,
+        }
+        Some(())
+    }
+
+    /// A `switch` whose cases each end in `break` or `return` (or are
+    /// empty and share the next case's body), with `default` last.
+    fn switch(&mut self, disc: &Expr, cases: &[SwitchCase], out: &mut Vec<IrStmt>) -> R<()> {
+        let t = self.temp();
+        out.push(IrStmt::Assign(Place::Local(t), self.expr(disc)?));
+        let mut branches = Vec::new();
+        let mut otherwise = Vec::new();
+        let mut tests: Vec<Ir> = Vec::new();
+        for (i, c) in cases.iter().enumerate() {
+            let last = i + 1 == cases.len();
+            match &c.test {
+                Some(test) => {
+                    let v = self.expr(test)?;
+                    tests.push(Ir::Binary(IrBin::StrictEq, Box::new(Ir::Local(t)), Box::new(v)));
+                }
+                None if !last => return None,
+                None => {}
+            }
+            if c.body.is_empty() && !last {
+                continue;
+            }
+            let mut body = c.body.as_slice();
+            let ends = matches!(body.last().map(|s| &s.kind), Some(StmtKind::Break));
+            if ends {
+                body = &body[..body.len() - 1];
+            } else if !last && !matches!(body.last().map(|s| &s.kind), Some(StmtKind::Return(_))) {
+                return None;
+            }
+            if body.iter().any(breaks_switch) {
+                return None;
+            }
+            let lowered = self.stmts(body)?;
+            if c.test.is_none() {
+                if !tests.is_empty() {
+                    // `case x: default:` share a body with the default.
+                    tests.clear();
+                }
+                otherwise = lowered;
+            } else {
+                let cond = tests.drain(..).reduce(|a, b| Ir::Binary(IrBin::Or, Box::new(a), Box::new(b)))?;
+                branches.push((cond, lowered));
+            }
+        }
+        if !branches.is_empty() || !otherwise.is_empty() {
+            out.push(IrStmt::If { branches, otherwise });
+        }
+        Some(())
+    }
+
+    fn temp(&mut self) -> u16 {
+        self.slots += 1;
+        self.slots - 1
+    }
+
+    /// An expression evaluated for its effect.
+    fn expr_stmt(&mut self, e: &Expr) -> R<IrStmt> {
+        match &e.kind {
+            ExprKind::Assign { op, target, value } => {
+                let place = self.place(target)?;
+                let v = self.expr(value)?;
+                let v = match op.binary() {
+                    None => v,
+                    Some(b) => Ir::Binary(bin(b), Box::new(self.expr(target)?), Box::new(v)),
+                };
+                Some(IrStmt::Assign(place, v))
+            }
+            ExprKind::Update { op, target, .. } => {
+                let place = self.place(target)?;
+                let cur = Ir::Unary(IrUn::Plus, Box::new(self.expr(target)?));
+                let op = if *op == UpdateOp::Increment { IrBin::Add } else { IrBin::Sub };
+                Some(IrStmt::Assign(place, Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)))))
+            }
+            _ => Some(IrStmt::Eval(self.expr(e)?)),
+        }
+    }
+
+    /// Where an assignment stores.
+    fn place(&mut self, target: &Expr) -> R<Place> {
+        let name = match &target.kind {
+            ExprKind::Ident(n) => match self.model.scopes.resolve(n, self.at) {
+                Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
+                    return Some(Place::Local(slot as u16));
+                }
+                Symbol::Global(g) => g,
+                _ => return None,
+            },
+            _ => self.model.flattened_name(target)?,
+        };
+        let g = self.model.global(&name)?;
+        if !g.plain || self.setup.bindings.contains_key(&name) {
+            return None;
+        }
+        Some(Place::Global(*self.layout.global_index.get(&name)?))
+    }
+
+    fn local_plain(&self, slot: usize) -> bool {
+        self.model.local_plain.get(self.at).and_then(|l| l.get(slot)).copied().unwrap_or(false)
+    }
+
+    /// The value of a global by name, as native code reads it.
+    fn global_value(&mut self, name: &str) -> R<Ir> {
+        match self.model.global(name) {
+            Some(g) => {
+                if let Some(c) = &g.constant {
+                    return Some(layout::const_expr(c));
+                }
+                if !g.plain || self.setup.bindings.contains_key(name) {
+                    return None;
+                }
+                Some(Ir::Global(*self.layout.global_index.get(name)?))
+            }
+            None => match host::constant(name)? {
+                Const::Num(n) => Some(Ir::Number(n)),
+                c => Some(layout::const_expr(&c)),
+            },
+        }
+    }
+
+    pub fn expr(&mut self, e: &Expr) -> R<Ir> {
+        Some(match &e.kind {
+            ExprKind::Number(n) => Ir::Number(*n),
+            ExprKind::String(s) => Ir::Text(s.clone()),
+            ExprKind::Bool(b) => Ir::Bool(*b),
+            ExprKind::Null | ExprKind::Undefined => Ir::Null,
+            ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
+                Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => Ir::Local(slot as u16),
+                Symbol::Global(g) => self.global_value(&g)?,
+                _ => return None,
+            },
+            ExprKind::Member { object, property } => {
+                if let Some(flat) = self.model.flattened_name(e) {
+                    return self.global_value(&flat);
+                }
+                if let ExprKind::Ident(o) = &object.kind
+                    && o == "Math"
+                    && self.is_host("Math")
+                {
+                    return host::math_constant(&property.name).map(Ir::Number);
+                }
+                if property.name == "length" {
+                    return Some(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
+                }
+                return None;
+            }
+            ExprKind::Call { callee, args } => return self.call(callee, args),
+            ExprKind::Unary { op, operand } => {
+                if *op == UnaryOp::Typeof
+                    && let ExprKind::Ident(n) = &operand.kind
+                    && matches!(self.model.scopes.resolve(n, self.at), Symbol::Global(_))
+                    && self.model.global(n).is_none()
+                    && host::constant(n).is_none()
+                {
+                    return Some(Ir::Text(if host::knows(n) { "function" } else { "undefined" }.into()));
+                }
+                let a = Box::new(self.expr(operand)?);
+                match op {
+                    UnaryOp::Neg => Ir::Unary(IrUn::Neg, a),
+                    UnaryOp::Plus => Ir::Unary(IrUn::Plus, a),
+                    UnaryOp::Not => Ir::Unary(IrUn::Not, a),
+                    UnaryOp::BitNot => Ir::Unary(IrUn::BitNot, a),
+                    UnaryOp::Typeof => Ir::Unary(IrUn::Typeof, a),
+                }
+            }
+            ExprKind::Binary { op, left, right } => Ir::Binary(bin(*op), Box::new(self.expr(left)?), Box::new(self.expr(right)?)),
+            ExprKind::Logical { op, left, right } => {
+                let op = if *op == LogicalOp::And { IrBin::And } else { IrBin::Or };
+                Ir::Binary(op, Box::new(self.expr(left)?), Box::new(self.expr(right)?))
+            }
+            ExprKind::Conditional { test, consequent, alternate } => Ir::Choose(
+                Box::new(self.expr(test)?),
+                Box::new(self.expr(consequent)?),
+                Box::new(self.expr(alternate)?),
+            ),
+            _ => return None,
+        })
+    }
+
+}
+
+/// A value as a number, unless it surely is one.
+pub fn to_number(v: Ir) -> Ir {
+    match v {
+        Ir::Number(_) | Ir::Quantity(_) => v,
+        Ir::Binary(IrBin::Sub | IrBin::Mul | IrBin::Div | IrBin::Rem | IrBin::Pow, ..) => v,
+        Ir::Unary(IrUn::Neg | IrUn::Plus, _) => v,
+        other => Ir::Unary(IrUn::Plus, Box::new(other)),
+    }
+}
+
+/// The IR operator of a JavaScript binary operator.
+pub fn bin(op: BinaryOp) -> IrBin {
+    match op {
+        BinaryOp::Add => IrBin::Add,
+        BinaryOp::Sub => IrBin::Sub,
+        BinaryOp::Mul => IrBin::Mul,
+        BinaryOp::Div => IrBin::Div,
+        BinaryOp::Rem => IrBin::Rem,
+        BinaryOp::Shl => IrBin::Shl,
+        BinaryOp::Shr => IrBin::Shr,
+        BinaryOp::UShr => IrBin::UShr,
+        BinaryOp::BitAnd => IrBin::BitAnd,
+        BinaryOp::BitOr => IrBin::BitOr,
+        BinaryOp::BitXor => IrBin::BitXor,
+        BinaryOp::Eq => IrBin::Eq,
+        BinaryOp::Ne => IrBin::Ne,
+        BinaryOp::StrictEq => IrBin::StrictEq,
+        BinaryOp::StrictNe => IrBin::StrictNe,
+        BinaryOp::Lt => IrBin::Lt,
+        BinaryOp::Le => IrBin::Le,
+        BinaryOp::Gt => IrBin::Gt,
+        BinaryOp::Ge => IrBin::Ge,
+    }
+}
+
+/// Whether a loop body has a `continue` for this loop (not a nested one).
+fn has_continue(s: &Stmt) -> bool {
+    match &s.kind {
+        StmtKind::Continue => true,
+        StmtKind::Block(b) => b.iter().any(has_continue),
+        StmtKind::If { branches, otherwise } => {
+            branches.iter().any(|b| has_continue(&b.body)) || otherwise.as_ref().is_some_and(|o| has_continue(o))
+        }
+        StmtKind::Switch { cases, .. } => cases.iter().any(|c| c.body.iter().any(has_continue)),
+        StmtKind::Try { .. } => true,
+        _ => false,
+    }
+}
+
+/// Whether a statement has a `break` that leaves an enclosing `switch`.
+fn breaks_switch(s: &Stmt) -> bool {
+    match &s.kind {
+        StmtKind::Break => true,
+        StmtKind::Block(b) => b.iter().any(breaks_switch),
+        StmtKind::If { branches, otherwise } => {
+            branches.iter().any(|b| breaks_switch(&b.body)) || otherwise.as_ref().is_some_and(|o| breaks_switch(o))
+        }
+        StmtKind::Switch { .. } | StmtKind::While { .. } | StmtKind::DoWhile { .. } | StmtKind::For { .. } | StmtKind::ForIn { .. } => false,
+        StmtKind::Try { .. } => true,
+        _ => false,
+    }
+}

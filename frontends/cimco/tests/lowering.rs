@@ -1,0 +1,124 @@
+//! The lowering: which functions run natively, the formats and variables
+//! made at compile time, the settings read from the Globals (bare and the
+//! `globals` object), the handlers' sections, and the lowering's lints.
+
+use std::path::Path;
+
+use postc_ir::{Body, HandlerKey, Modality, PointStyle, Post, Section, SignStyle, SourceMap};
+
+fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>) {
+    let mut sources = SourceMap::new();
+    postc_front_cimco::compile(Path::new("t.js"), js.as_bytes(), &mut sources)
+}
+
+fn native(post: &Post, name: &str) -> bool {
+    post.functions.iter().any(|f| f.name == name && matches!(f.body, Body::Native(_)))
+}
+
+fn sections(post: &Post) -> Vec<Section> {
+    post.handlers
+        .iter()
+        .filter_map(|h| match h.key {
+            HandlerKey::Section(s) => Some(s),
+            _ => None,
+        })
+        .collect()
+}
+
+const MILL: &str = r#"
+var linebreak = "\r\n";
+var tolerance = 0.05;
+var useRadius = false;
+var xyz = createFormat({decimals: 3, forceDecimal: true, forceSign: true, prefix: ""});
+var xOut = createVariable({prefix: "X"}, xyz);
+var fOut = createVariable({prefix: "F", force: true}, createFormat({decimals: 0}));
+var words = [];
+function writeBlock(t) { return t + linebreak; }
+function onLinear(x, y, z, m) { return writeBlock("G1" + xOut.format(x) + getFeedrate(m)); }
+function onCircular(cx, cy, cz, ex, ey, ez, cw, m) { return writeBlock((cw ? "G2" : "G3") + xOut.format(ex)); }
+function onOpen(c) { words.push("%"); return words.join(""); }
+"#;
+
+#[test]
+fn formats_variables_and_settings() {
+    let (post, diags) = compile(MILL);
+    assert!(diags.is_empty(), "{diags:?}");
+    assert_eq!(post.options.line_ending, b"\r\n");
+    assert_eq!(post.options.arc_tolerance, 0.05);
+    let x = post.variables.iter().find(|v| v.name == "xOut").expect("xOut");
+    assert_eq!(x.prefix, b"X");
+    assert_eq!(x.modality, Modality::OnChange);
+    let f = &post.formats[x.format as usize];
+    assert_eq!((f.decimals, f.point, f.trim_zeros, f.sign), (3, PointStyle::Always, false, SignStyle::Always));
+    let fo = post.variables.iter().find(|v| v.name == "fOut").expect("fOut");
+    assert_eq!(fo.modality, Modality::Always);
+    assert!(post.formats[fo.format as usize].trim_zeros);
+}
+
+#[test]
+fn plain_functions_are_native_and_object_users_are_scripts() {
+    let (post, _) = compile(MILL);
+    assert!(native(&post, "onLinear") && native(&post, "onCircular") && native(&post, "writeBlock"));
+    assert!(!native(&post, "onOpen"), "onOpen uses an array");
+    assert_eq!(post.scripts.len(), 1);
+    assert!(post.scripts[0].source.contains("fn js_onOpen(") && post.scripts[0].source.contains("fn js_onLinear("));
+    assert!(!post.scripts[0].span_map.is_empty());
+}
+
+#[test]
+fn entry_points_occupy_their_sections() {
+    let (post, _) = compile(MILL);
+    let s = sections(&post);
+    for want in [Section::Header, Section::RapidMove, Section::FeedMove, Section::PlungeMove, Section::CwArcMove, Section::CcwArcMove, Section::CwHelicalArcMove] {
+        assert!(s.contains(&want), "{want:?} missing from {s:?}");
+    }
+    for absent in [Section::FirstFeedMove, Section::RetractMove, Section::InitialRapidMove, Section::DrillHeader, Section::CutterComp] {
+        assert!(!s.contains(&absent), "{absent:?} should be left to the fallbacks");
+    }
+    assert!(!post.options.lathe);
+}
+
+#[test]
+fn the_globals_object_and_a_lathe() {
+    let (post, diags) = compile(
+        r#"
+        globals = { linebreak: "\n", decimalMark: ",", xDiameterProg: true };
+        PostInfo = { title: "Lathe", author: "me", type: POST_TYPE_TURN };
+        var x = createVariable({prefix: "X"}, createFormat({decimals: 3, scale: globals.xDiameterProg ? 2 : 1}));
+        function onLinear(vx, vz, m) { return "G1" + x.format(vx) + globals.linebreak; }
+        "#,
+    );
+    assert!(diags.is_empty(), "{diags:?}");
+    assert!(post.options.lathe);
+    assert_eq!(post.info.name, "Lathe");
+    let f = &post.formats[post.variables[0].format as usize];
+    assert_eq!((f.multiplier, f.decimal_mark), (2.0, ','));
+    assert!(native(&post, "onLinear"));
+}
+
+#[test]
+fn lints_name_what_is_wrong() {
+    let (_, diags) = compile(
+        r#"
+        var f = createFormat({decimals: 2, roundTo: 5});
+        function onLinear(x, y, z, m) { return undefinedThing(x); }
+        function helper() {}
+        function other() { helper = 1; }
+        "#,
+    );
+    let codes: Vec<&str> = diags.iter().map(|d| d.code).collect();
+    assert!(codes.contains(&"JS101"), "{codes:?}");
+    assert!(codes.contains(&"JS102"), "{codes:?}");
+    assert!(codes.contains(&"JS106"), "{codes:?}");
+}
+
+#[test]
+fn every_fixture_lowers_to_a_script_that_compiles() {
+    for dir in ["tests/fixtures/valid", "../../corpus/posts/cimco"] {
+        for e in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)).expect("fixtures").flatten() {
+            let text = std::fs::read_to_string(e.path()).expect("a post");
+            let (_, diags) = compile(&text);
+            assert!(!diags.iter().any(|d| d.code == "JS100"), "{}: {diags:?}", e.path().display());
+        }
+    }
+}

@@ -1,0 +1,75 @@
+//! Sub calls: how the applications that are not driven by toolpath events
+//! reach a post.
+//!
+//! VcPost's probe-cycle programming (a table of rows) and its composites
+//! application (an event file of routine calls) do not produce toolpath
+//! [`crate::Event`]s: each of their records names a Sub of the post and the
+//! variables to set before calling it. Their readers produce [`SubCall`]s
+//! through a [`CallSource`], and the runtime runs them in order: it sets each
+//! variable the post has (a register or a global, names compared without
+//! case), then calls the Sub.
+//!
+//! A [`CallValue::List`] is not a variable: it is the table of a function the
+//! runtime provides (VcPost composites' `getNthLength1(tow)` returns the
+//! `tow`-th number of the `getNthLength1` list of the current call).
+//!
+//! This module was added for the VcPost applications; nothing else in the IR
+//! changed for them.
+
+use serde::{Deserialize, Serialize};
+
+use crate::diagnostic::{Diagnostic, Span};
+
+/// One call of a post's Sub.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SubCall {
+    /// The Sub's name; compared without case.
+    pub sub: String,
+    /// Variables set before the call, in order; names compared without case.
+    /// Names the post does not use are skipped.
+    pub vars: Vec<(String, CallValue)>,
+    /// Where the call comes from (a table row, an event line).
+    pub span: Span,
+    /// What the runtime does when the post has no such Sub.
+    pub missing: MissingSub,
+}
+
+/// A value a call sets.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum CallValue {
+    Number(f64),
+    Text(String),
+    /// The table of a runtime-provided function, indexed from 0.
+    List(Vec<f64>),
+}
+
+/// What to do when a post has no Sub for a call.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum MissingSub {
+    /// Skip it silently (a routine the post may leave out by design).
+    Skip,
+    /// Skip it, with one warning per Sub name.
+    #[default]
+    Warn,
+}
+
+/// A stream of calls, read one at a time.
+pub trait CallSource {
+    /// The next call; `None` at the end. Problems go into `diagnostics`;
+    /// after an error a source goes on with the next record, so that every
+    /// problem is reported.
+    fn next_call(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<SubCall>;
+}
+
+impl<S: CallSource + ?Sized> CallSource for Box<S> {
+    fn next_call(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<SubCall> {
+        (**self).next_call(diagnostics)
+    }
+}
+
+/// A list of calls already read (a probe table, a test).
+impl CallSource for std::vec::IntoIter<SubCall> {
+    fn next_call(&mut self, _diagnostics: &mut Vec<Diagnostic>) -> Option<SubCall> {
+        self.next()
+    }
+}

@@ -1,0 +1,393 @@
+//! The CNC-Calc host: output variables and formats (`format`, `getLast`,
+//! bound at compile time or made by `createFormat` / `createVariable` while
+//! the post runs), `getFeedrate`, the compensation passed to
+//! `onCompensation`, the `drillHeader` objects of `onDrillingHeader` and
+//! `onDrilling`, the global functions, and the turning of a lathe
+//! toolpath into the runtime's XY plane. `docs/cimco.md` gives the rules.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use postc_ir::event::{ArcMove, CompSide, DrillKind, Event, Plane};
+use postc_ir::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
+use rhai::{Array, Dynamic, Engine, EvalAltResult, NativeCallContext};
+
+use super::host::{Shared, State};
+use super::js;
+use super::ops::fail;
+use super::values::{self, DynFormat, DynVar, DynVarState, FmtRef, JsArr, JsObj, ObjKind, VarRef, num, text, to_number, to_string};
+use crate::engine::put_number;
+use crate::number::NumberWriter;
+use crate::value::Value;
+
+type R = Result<Dynamic, Box<EvalAltResult>>;
+
+pub fn register(engine: &mut Engine, state: &Shared) {
+    engine.register_type_with_name::<VarRef>("variable");
+    engine.register_type_with_name::<FmtRef>("format");
+    engine.register_type_with_name::<DynVar>("variable");
+    engine.register_type_with_name::<DynFormat>("format");
+    engine.register_fn("__vref", |id: i64| VarRef(id as u16));
+    engine.register_fn("__fref", |id: i64| FmtRef(id as u16));
+    let s = state.clone();
+    engine.register_fn("__vfmt", move |id: i64, v: Dynamic| text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v))));
+    let s = state.clone();
+    engine.register_fn("__vlast", move |id: i64| num(last(&s.borrow(), id as u16)));
+    let s = state.clone();
+    engine.register_fn("__ffmt", move |id: i64, v: Dynamic| text(format_with(&s.borrow(), id as u16, to_number(&v))));
+    let s = state.clone();
+    engine.register_fn("__feedrate", move |m: Dynamic| {
+        let mut st = s.borrow_mut();
+        match st.feed_var {
+            Some(var) if to_number(&m) != 0.0 => {
+                let feed = st.ctx.feed;
+                text(format_var(&mut st, var, feed))
+            }
+            _ => text(""),
+        }
+    });
+    let s = state.clone();
+    engine.register_fn("__comp", move || {
+        num(match s.borrow().ctx.comp {
+            CompSide::Off => 0.0,
+            CompSide::Left => 1.0,
+            CompSide::Right => 2.0,
+        })
+    });
+    let s = state.clone();
+    engine.register_fn("__drill_header", move || drill_header(&s.borrow()));
+    let s = state.clone();
+    engine.register_fn("__turn_drill", move || turn_drill(&s.borrow()));
+}
+
+/// Formats through a compile-time variable; shares the engine's modal memory.
+fn format_var(st: &mut State, id: u16, v: f64) -> String {
+    let i = id as usize;
+    let State { vars, writers, prefixes, modal, var_formats, .. } = st;
+    let (Some(state), Some(prefix), Some(&f)) = (vars.get_mut(i), prefixes.get(i), var_formats.get(i)) else {
+        return String::new();
+    };
+    let Some(w) = writers.get(f as usize) else { return String::new() };
+    let mut buf = Vec::new();
+    put_number(modal.get(i).copied().unwrap_or(true), w, state, prefix, v, &mut buf);
+    state.previous = std::mem::replace(&mut state.value, Value::Num(v));
+    String::from_utf8_lossy(&buf).into_owned()
+}
+
+fn last(st: &State, id: u16) -> f64 {
+    st.vars.get(id as usize).map_or(0.0, |v| match v.value {
+        Value::Null => 0.0,
+        ref other => other.num(),
+    })
+}
+
+fn format_with(st: &State, id: u16, v: f64) -> String {
+    let mut buf = Vec::new();
+    if let Some(w) = st.writers.get(id as usize) {
+        w.write(v, &mut buf);
+    }
+    String::from_utf8_lossy(&buf).into_owned()
+}
+
+/// `format` and `getLast` of output variables and formats, whichever way
+/// they were made.
+pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> Option<R> {
+    let a0 = || args.first().map_or(f64::NAN, to_number);
+    if let Some(VarRef(id)) = o.clone().try_cast::<VarRef>() {
+        return Some(match name {
+            "format" => Ok(text(format_var(&mut state.borrow_mut(), id, a0()))),
+            "getLast" => Ok(num(last(&state.borrow(), id))),
+            _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
+        });
+    }
+    if let Some(FmtRef(id)) = o.clone().try_cast::<FmtRef>() {
+        return Some(match name {
+            "format" => Ok(text(format_with(&state.borrow(), id, a0()))),
+            _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
+        });
+    }
+    if let Some(DynFormat(w)) = o.clone().try_cast::<DynFormat>() {
+        return Some(match name {
+            "format" => {
+                let mut buf = Vec::new();
+                w.write(a0(), &mut buf);
+                Ok(text(String::from_utf8_lossy(&buf).into_owned()))
+            }
+            _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
+        });
+    }
+    if let Some(DynVar(v)) = o.clone().try_cast::<DynVar>() {
+        let epoch = state.borrow().ctx.epoch;
+        let mut var = v.borrow_mut();
+        return Some(match name {
+            "format" => {
+                let value = a0();
+                let mut buf = var.prefix.as_bytes().to_vec();
+                var.writer.write(value, &mut buf);
+                let t = String::from_utf8_lossy(&buf).into_owned();
+                var.last_value = value;
+                let same = !var.force && var.last_text.as_ref().is_some_and(|(l, e)| *e == epoch && *l == t);
+                var.last_text = Some((t.clone(), epoch));
+                Ok(text(if same { String::new() } else { t }))
+            }
+            "getLast" => Ok(num(var.last_value)),
+            _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
+        });
+    }
+    None
+}
+
+/// A global's value by name (for `decimalMark` and the drilling fields).
+fn global(st: &State, name: &str) -> Dynamic {
+    let Some(i) = st.global_names.iter().position(|g| g == name) else { return Dynamic::UNIT };
+    match (st.objects.get(i), st.globals.get(i)) {
+        (Some(o), Some(Value::Null)) if !o.is_unit() => o.clone(),
+        (_, Some(v)) => values::from_value(v),
+        _ => Dynamic::UNIT,
+    }
+}
+
+/// The format `createFormat` makes from its properties (docs/cimco.md).
+pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
+    let get = |k: &str| props.clone().try_cast::<JsObj>().and_then(|o| o.get(k)).unwrap_or(Dynamic::UNIT);
+    let n = |k: &str, d: f64| {
+        let v = get(k);
+        if v.is_unit() { d } else { to_number(&v) }
+    };
+    let decimals = n("decimals", 0.0);
+    let decimals = if decimals.is_finite() { decimals.clamp(0.0, 15.0) as u8 } else { 0 };
+    let width = n("width", 0.0);
+    let force_decimal = values::truthy(&get("forceDecimal"));
+    let scale = n("scale", 1.0);
+    let prefix = get("prefix");
+    NumberFormat {
+        decimals,
+        width: if width.is_finite() { width.clamp(0.0, 64.0) as u8 } else { 0 },
+        width_of: WidthOf::IntegerDigits,
+        padding: if values::truthy(&get("zeropad")) { Padding::Zero } else { Padding::Space },
+        justify: Justify::Right,
+        sign: if values::truthy(&get("forceSign")) { SignStyle::Always } else { SignStyle::Negative },
+        point: if force_decimal { PointStyle::Always } else { PointStyle::WithDecimals },
+        trim_zeros: !force_decimal,
+        leading_zero: true,
+        decimal_mark: mark,
+        multiplier: if scale.is_finite() { scale } else { 1.0 },
+        prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
+    }
+}
+
+/// The global functions of the host.
+pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Array) -> R {
+    let a = |i: usize| args.get(i).cloned().unwrap_or(Dynamic::UNIT);
+    Ok(match name {
+        "parseInt" => num(js::parse_int(&to_string(&a(0)), if a(1).is_unit() { 0.0 } else { to_number(&a(1)) })),
+        "parseFloat" => num(js::parse_float(&to_string(&a(0)))),
+        "isNaN" => Dynamic::from_bool(to_number(&a(0)).is_nan()),
+        "isFinite" => Dynamic::from_bool(to_number(&a(0)).is_finite()),
+        "String" => text(if args.is_empty() { String::new() } else { to_string(&a(0)) }),
+        "Number" => num(if args.is_empty() { 0.0 } else { to_number(&a(0)) }),
+        "Boolean" => Dynamic::from_bool(values::truthy(&a(0))),
+        "Array" => Dynamic::from(JsArr::new(if args.len() == 1 && a(0).is::<f64>() { Vec::new() } else { args })),
+        "Object" => Dynamic::from(JsObj::new(ObjKind::Plain)),
+        "Error" => {
+            let o = JsObj::new(ObjKind::Plain);
+            o.set("message", text(to_string(&a(0))));
+            o.set("name", text("Error"));
+            Dynamic::from(o)
+        }
+        "getCompensation" => text(""),
+        "getFeedrate" => {
+            let mut st = state.borrow_mut();
+            match st.feed_var {
+                Some(var) if to_number(&a(0)) != 0.0 => {
+                    let feed = st.ctx.feed;
+                    text(format_var(&mut st, var, feed))
+                }
+                _ => text(""),
+            }
+        }
+        "createFormat" => {
+            let st = state.borrow();
+            let mark = match to_string(&[global(&st, "decimalMark"), global(&st, "globals.decimalMark")].into_iter().find(|v| !v.is_unit()).unwrap_or(Dynamic::UNIT)).as_str() {
+                "," => ',',
+                _ => '.',
+            };
+            Dynamic::from(DynFormat(Rc::new(NumberWriter::new(&cimco_format(&a(0), mark)))))
+        }
+        "createVariable" => {
+            let st = state.borrow();
+            let props = a(0);
+            let get = |k: &str| props.clone().try_cast::<JsObj>().and_then(|o| o.get(k)).unwrap_or(Dynamic::UNIT);
+            let writer = match (a(1).clone().try_cast::<FmtRef>(), a(1).clone().try_cast::<DynFormat>()) {
+                (Some(FmtRef(id)), _) => st.writers.get(id as usize).cloned().map(Rc::new),
+                (_, Some(DynFormat(w))) => Some(w),
+                _ => None,
+            }
+            .unwrap_or_else(|| Rc::new(NumberWriter::new(&cimco_format(&Dynamic::UNIT, '.'))));
+            let prefix = get("prefix");
+            Dynamic::from(DynVar(Rc::new(RefCell::new(DynVarState {
+                writer,
+                prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
+                force: values::truthy(&get("force")),
+                last_text: None,
+                last_value: 0.0,
+            }))))
+        }
+        _ => return Err(fail(format!("ReferenceError: {name} is not defined"))),
+    })
+}
+
+fn kind_name(kind: DrillKind) -> &'static str {
+    match kind {
+        DrillKind::Drill => "Drilling",
+        DrillKind::Deep => "Peck drilling",
+        DrillKind::ChipBreak => "Chip breaking",
+        DrillKind::Tap => "Tapping",
+        DrillKind::Bore => "Boring",
+        DrillKind::Ream => "Reaming",
+    }
+}
+
+/// The cycle's name, and whether the post's field list marks it longhand.
+fn name_and_longhand(st: &State, list: &str) -> (String, bool) {
+    let Some(c) = &st.ctx.drill else { return (String::new(), false) };
+    let name = if c.name.is_empty() { kind_name(c.kind).to_string() } else { c.name.clone() };
+    let longhand = global(st, list)
+        .try_cast::<JsArr>()
+        .and_then(|a| {
+            a.0.borrow().iter().find_map(|e| {
+                let o = e.clone().try_cast::<JsObj>()?;
+                (o.get("name").map(|n| to_string(&n)) == Some(name.clone())).then(|| o.get("isLonghand").is_some_and(|v| values::truthy(&v)))
+            })
+        })
+        .unwrap_or(false);
+    (name, longhand)
+}
+
+/// The `drillHeader` of `onDrillingHeader`, every field of seed 002's table.
+fn drill_header(st: &State) -> Dynamic {
+    let o = JsObj::new(ObjKind::Plain);
+    let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
+    let f = st.ctx.factor;
+    let (name, longhand) = name_and_longhand(st, "MillDrillingFields");
+    let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
+    let peck = c.peck.filter(|p| *p > 0.0).map_or(0.0, |p| p * f);
+    let dwell = c.dwell.filter(|d| *d > 0.0);
+    let set = |k: &str, v: Dynamic| o.set(k, v);
+    let b = Dynamic::from_bool;
+    set("name", text(name));
+    set("isLonghand", b(longhand));
+    set("retractPlane", num(c.retract_plane * f));
+    set("referencePlane", num(c.reference_plane * f));
+    set("safeDistanceIsAbsolute", b(true));
+    set("safeDistance", num(c.reference_plane * f));
+    set("endDepthIsAbsolute", b(true));
+    set("endDepth", num(c.depth * f));
+    set("firstDepth", num(peck));
+    set("firstFeedrateFactor", num(1.0));
+    set("degressionType", num(0.0));
+    set("degression", num(0.0));
+    set("peckingRetract", num(0.0));
+    set("minimumDepth", num(0.0));
+    set("usePlungingFeedrate", b(true));
+    set("plungingFeedrate", num(feed));
+    set("useRetractFeedrate", b(false));
+    set("retractFeedrate", num(feed));
+    set("useTopDwelling", b(false));
+    set("topDwelling", num(0.0));
+    set("useBottomDwelling", b(dwell.is_some()));
+    set("bottomDwelling", num(dwell.unwrap_or(0.0)));
+    set("pitch", num(c.pitch.map_or(0.0, |p| p * f)));
+    set("useTappingSpeed", b(false));
+    set("tappingSpeed", num(st.ctx.spindle));
+    set("useRetractSpeed", b(false));
+    set("retractSpeed", num(st.ctx.spindle));
+    Dynamic::from(o)
+}
+
+/// The `drillHeader` of `onDrilling` (turning), every field of seed 002's
+/// table, under both spellings where the seed uses two.
+fn turn_drill(st: &State) -> Dynamic {
+    let o = JsObj::new(ObjKind::Plain);
+    let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
+    let f = st.ctx.factor;
+    let (name, longhand) = name_and_longhand(st, "TurnDrillingFields");
+    let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
+    let pecking = matches!(c.kind, DrillKind::Deep | DrillKind::ChipBreak) && c.peck.is_some_and(|p| p > 0.0);
+    let peck = if pecking { c.peck.unwrap_or(0.0) * f } else { 0.0 };
+    let dwell = c.dwell.filter(|d| *d > 0.0);
+    let set = |ks: &[&str], v: Dynamic| ks.iter().for_each(|k| o.set(k, v.clone()));
+    let b = Dynamic::from_bool;
+    set(&["name", "Name"], text(name));
+    set(&["isLonghand"], b(longhand));
+    // The hole's top: the turned toolpath keeps the lathe's Z in X.
+    set(&["startDepth"], num(if st.ctx.lathe { st.ctx.pos[0] } else { st.ctx.pos[2] }));
+    set(&["endDepth"], num(c.depth * f));
+    set(&["safeDistance"], num(c.reference_plane * f));
+    set(&["retractDistance"], num(c.retract_plane * f));
+    set(&["usePlungingFeedrate"], b(true));
+    set(&["plungingFeedrate"], num(feed));
+    set(&["useRetractFeedrate"], b(false));
+    set(&["retractFeedrate"], num(feed));
+    set(&["pitch", "Pitch"], num(c.pitch.map_or(0.0, |p| p * f)));
+    set(&["usePecking", "UsePecking"], b(pecking));
+    set(&["firstPeckDepth"], num(peck));
+    set(&["subsequentPecksDepths", "subsequentPeckDepths"], num(peck));
+    set(&["peckClearance"], num(0.0));
+    set(&["peckRetract", "PeckRetract"], num(0.0));
+    set(&["useUpperDwell"], b(false));
+    set(&["upperDwell"], num(0.0));
+    set(&["useLowerDwell"], b(dwell.is_some()));
+    set(&["lowerDwell"], num(dwell.unwrap_or(0.0)));
+    set(&["useDrillTipCompensation"], b(false));
+    set(&["drillDiameter"], num(st.ctx.tool_diameter));
+    set(&["drillTipAngle"], num(118.0));
+    Dynamic::from(o)
+}
+
+/// A lathe toolpath in the runtime's terms: (x, y, z) becomes (z, x, y),
+/// so the turning plane ZX (X the radius, Z along the spindle) lies in
+/// the runtime's XY plane with the same sense of rotation, and G18 arcs
+/// reach the arc sections. Handlers read the lathe's X from Y and its Z
+/// from X.
+pub fn turn_event(event: Event) -> Event {
+    let p = |x: f64, y: f64, z: f64| (z, x, y);
+    match event {
+        Event::Rapid(mut m) => {
+            (m.x, m.y, m.z) = p(m.x, m.y, m.z);
+            Event::Rapid(m)
+        }
+        Event::Feed(mut m) => {
+            (m.x, m.y, m.z) = p(m.x, m.y, m.z);
+            Event::Feed(m)
+        }
+        Event::Arc(a) => Event::Arc(turn_arc(a)),
+        Event::DrillPoint(mut d) => {
+            (d.x, d.y, d.z) = p(d.x, d.y, d.z);
+            Event::DrillPoint(d)
+        }
+        Event::Job(mut job) => {
+            if let Some(h) = &mut job.home {
+                (h.x, h.y, h.z) = p(h.x, h.y, h.z);
+            }
+            if let Some(m) = &mut job.material {
+                for q in [&mut m.min, &mut m.max] {
+                    (q.x, q.y, q.z) = p(q.x, q.y, q.z);
+                }
+            }
+            Event::Job(job)
+        }
+        other => other,
+    }
+}
+
+fn turn_arc(mut a: ArcMove) -> ArcMove {
+    (a.x, a.y, a.z) = (a.z, a.x, a.y);
+    (a.cx, a.cy, a.cz) = (a.cz, a.cx, a.cy);
+    a.plane = match a.plane {
+        Plane::Zx => Plane::Xy,
+        Plane::Xy => Plane::Yz,
+        Plane::Yz => Plane::Zx,
+    };
+    a
+}

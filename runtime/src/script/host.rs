@@ -1,0 +1,236 @@
+//! The Rhai engine of a run: built and compiled once, called for each
+//! script function, with the engine's shared state moved in for the call.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use postc_ir::event::{CompSide, DrillCycle};
+use postc_ir::{Diagnostic, Script, Span};
+use rhai::{Array, CallFnOptions, Dynamic, EvalAltResult, Position, Scope, AST};
+
+use super::values::{self, JsObj};
+use crate::engine::{Engine, VarState};
+use crate::number::NumberWriter;
+use crate::value::Value;
+
+/// Everything host functions read and write, shared with the registered
+/// functions through an `Rc`.
+pub(crate) struct State {
+    /// The engine's variables and globals, moved in for a call.
+    pub vars: Vec<VarState>,
+    pub globals: Vec<Value>,
+    /// Globals holding objects (same indices as `globals`).
+    pub objects: Vec<Dynamic>,
+    pub writers: Vec<NumberWriter>,
+    pub prefixes: Vec<Vec<u8>>,
+    pub modal: Vec<bool>,
+    /// The format of each variable.
+    pub var_formats: Vec<u16>,
+    /// Function objects by Rhai name, made once each.
+    pub functions: std::collections::HashMap<String, JsObj>,
+    pub ctx: Context,
+    /// Names of globals, to find `MillDrillingFields` and friends.
+    pub global_names: Vec<String>,
+    pub feed_var: Option<u16>,
+    /// Loop iterations of the current call, the most allowed, and the
+    /// post offset of the loop that ran last.
+    pub ticks: u64,
+    pub max_ticks: u64,
+    pub last_loop: Option<u32>,
+}
+
+/// What the machine says when a script runs.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Context {
+    pub feed: f64,
+    pub factor: f64,
+    pub plunge_feed: f64,
+    pub spindle: f64,
+    pub tool_diameter: f64,
+    pub pos: [f64; 3],
+    pub drill: Option<DrillCycle>,
+    pub comp: CompSide,
+    pub epoch: u64,
+    pub lathe: bool,
+}
+
+pub(crate) type Shared = Rc<RefCell<State>>;
+
+/// A compiled script and its engine.
+pub struct ScriptHost {
+    engine: rhai::Engine,
+    ast: AST,
+    pub(crate) state: Shared,
+    script: Script,
+}
+
+impl std::fmt::Debug for ScriptHost {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ScriptHost")
+    }
+}
+
+impl ScriptHost {
+    pub(crate) fn new(eng: &Engine) -> Result<ScriptHost, Diagnostic> {
+        let post = eng.post;
+        let script = post.scripts.first().cloned().unwrap_or_else(|| Script {
+            language: postc_ir::ScriptLanguage::Rhai,
+            source: String::new(),
+            span: None,
+            span_map: Vec::new(),
+        });
+        let state = Rc::new(RefCell::new(State {
+            vars: Vec::new(),
+            globals: Vec::new(),
+            objects: vec![Dynamic::UNIT; post.globals.len()],
+            writers: eng.writers.clone(),
+            prefixes: eng.prefixes.clone(),
+            modal: post.variables.iter().map(crate::engine::is_modal).collect(),
+            var_formats: post.variables.iter().map(|v| v.format).collect(),
+            functions: Default::default(),
+            ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
+            global_names: post.globals.iter().map(|g| g.name.clone()).collect(),
+            feed_var: post.variables.iter().position(|v| v.name == "__postc_feed").map(|i| i as u16),
+            ticks: 0,
+            max_ticks: post.options.step_budget.max(1),
+            last_loop: None,
+        }));
+        let mut engine = rhai::Engine::new_raw();
+        // Loops count their own iterations (`__tick`), which names the
+        // loop; Rhai's operation limit is the backstop.
+        engine.set_max_operations(post.options.step_budget.max(1).saturating_mul(64));
+        engine.set_max_call_levels(48);
+        engine.set_max_expr_depths(256, 256);
+        engine.set_max_string_size(16 << 20);
+        engine.set_max_array_size(1 << 20);
+        engine.disable_symbol("eval");
+        engine.register_iterator::<Array>();
+        engine.on_print(|_| {});
+        engine.on_debug(|_, _, _| {});
+        super::ops::register(&mut engine, &state);
+        super::props::register(&mut engine, &state);
+        super::cimco::register(&mut engine, &state);
+        let ast = engine.compile(&script.source).map_err(|e| {
+            let pos = e.position();
+            let d = Diagnostic::error("RT022", format!("the script made from this post does not compile: {}", e.err_type()));
+            match span_at(&script, pos) {
+                Some(s) => d.at(s, "here"),
+                None => d,
+            }
+            .note("this is a bug in postc")
+        })?;
+        Ok(ScriptHost { engine, ast, state, script })
+    }
+
+    /// Calls the script function of post function `name`.
+    pub(crate) fn call(&mut self, eng: &mut Engine, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+        {
+            let mut st = self.state.borrow_mut();
+            st.vars = std::mem::take(&mut eng.vars);
+            st.globals = std::mem::take(&mut eng.globals);
+            let m = &eng.machine;
+            st.ctx.feed = m.feed;
+            st.ctx.factor = m.factor;
+            st.ctx.plunge_feed = m.tool.plunge_feed;
+            st.ctx.spindle = m.spindle_speed;
+            st.ctx.tool_diameter = m.tool.diameter;
+            st.ctx.pos = m.pos;
+            st.ctx.drill = eng.cimco.notes.drill.clone();
+            st.ctx.comp = eng.cimco.notes.comp;
+            st.ctx.epoch = eng.cimco.epoch;
+            st.ticks = 0;
+            st.last_loop = None;
+        }
+        let arr: Array = args.iter().map(values::from_value).collect();
+        let fn_name = Script::function_name(name);
+        let mut scope = Scope::new();
+        let options = CallFnOptions::new().eval_ast(false).rewind_scope(true);
+        let result = self.engine.call_fn_with_options::<Dynamic>(options, &mut scope, &self.ast, &fn_name, (arr,));
+        {
+            let mut st = self.state.borrow_mut();
+            eng.vars = std::mem::take(&mut st.vars);
+            eng.globals = std::mem::take(&mut st.globals);
+        }
+        match result {
+            Ok(v) => Ok(values::to_value(&v).unwrap_or(Value::Null)),
+            Err(e) => Err(Box::new(self.diagnostic(&e, name))),
+        }
+    }
+
+    /// An error of the script as a diagnostic at the JavaScript line.
+    fn diagnostic(&self, err: &EvalAltResult, name: &str) -> Diagnostic {
+        let (inner, pos) = innermost(err);
+        let mut span = span_at(&self.script, pos);
+        if let (EvalAltResult::ErrorTooManyOperations(_), Some(at), Some(whole)) =
+            (inner, self.state.borrow().last_loop, self.script.span)
+        {
+            span = Some(Span::new(whole.file, at as usize, at as usize + 1));
+        }
+        let d = match inner {
+            EvalAltResult::ErrorTooManyOperations(_) => Diagnostic::error(
+                "RT002",
+                format!(
+                    "the post ran more than {} loop steps for one event in `{name}` and was stopped (a loop that never ends?)",
+                    self.state.borrow().max_ticks
+                ),
+            ),
+            EvalAltResult::ErrorStackOverflow(_) | EvalAltResult::ErrorTooManyModules(_) => {
+                Diagnostic::error("RT004", format!("calls nest too deep in `{name}` (endless recursion?)"))
+            }
+            EvalAltResult::ErrorRuntime(v, _) => {
+                Diagnostic::error("RT020", format!("the post stopped with an error: {}", values::to_string(v)))
+            }
+            other => Diagnostic::error("RT020", format!("the post stopped with an error: {}", message(other))),
+        };
+        let label = if inner.to_string().contains("many operations") { "this loop did not finish" } else { "while running this" };
+        match span {
+            Some(s) => d.at(s, label),
+            None => d,
+        }
+    }
+}
+
+/// The innermost error of a chain of calls, and where it happened.
+fn innermost(err: &EvalAltResult) -> (&EvalAltResult, Position) {
+    let mut cur = err;
+    let mut pos = err.position();
+    loop {
+        match cur {
+            EvalAltResult::ErrorInFunctionCall(_, _, inner, p) => {
+                if !p.is_none() {
+                    pos = *p;
+                }
+                cur = inner;
+                if !cur.position().is_none() {
+                    pos = cur.position();
+                }
+            }
+            other => {
+                if !other.position().is_none() {
+                    pos = other.position();
+                }
+                return (other, pos);
+            }
+        }
+    }
+}
+
+/// An error's message without Rhai's position.
+fn message(err: &EvalAltResult) -> String {
+    let mut m = err.to_string();
+    if let Some(i) = m.find(" (line ") {
+        m.truncate(i);
+    }
+    m.replace("js_", "")
+}
+
+/// The place in the post a position of the script comes from.
+pub(crate) fn span_at(script: &Script, pos: Position) -> Option<Span> {
+    let file = script.span?.file;
+    let (line, col) = (pos.line()?, pos.position().unwrap_or(1));
+    let start: usize = script.source.split_inclusive('\n').take(line.saturating_sub(1)).map(str::len).sum();
+    let offset = (start + col.saturating_sub(1)).min(script.source.len()) as u32;
+    let i = script.span_map.partition_point(|(r, _)| *r <= offset);
+    let js = if i == 0 { script.span?.start as u32 } else { script.span_map[i - 1].1 };
+    Some(Span::new(file, js as usize, js as usize + 1))
+}

@@ -1,0 +1,308 @@
+//! JavaScript value semantics shared by the native interpreter and the
+//! Rhai host: number to text, text to number, `parseInt`, `parseFloat`,
+//! `toFixed`, `Math.round` and 32-bit integer conversions.
+//!
+//! These follow ECMAScript 5 closely enough for post processors: numbers
+//! print with the shortest digits that read back as the same double,
+//! switching to exponent form at 1e21 and below 1e-6 as JavaScript does.
+
+use std::fmt::Write as _;
+
+/// The text JavaScript gives a number (`String(n)`, `"" + n`).
+pub fn number_to_string(n: f64) -> String {
+    let mut s = String::new();
+    push_number(&mut s, n);
+    s
+}
+
+/// Appends the text JavaScript gives a number.
+pub fn push_number(out: &mut String, n: f64) {
+    if n.is_nan() {
+        out.push_str("NaN");
+        return;
+    }
+    if n.is_infinite() {
+        out.push_str(if n > 0.0 { "Infinity" } else { "-Infinity" });
+        return;
+    }
+    if n == 0.0 {
+        out.push('0');
+        return;
+    }
+    if n == n.trunc() && n.abs() < 9_007_199_254_740_992.0 {
+        let _ = write!(out, "{}", n as i64);
+        return;
+    }
+    // Shortest round-trip digits and the decimal exponent.
+    let e = format!("{:e}", n.abs());
+    let (mantissa, exp) = e.split_once('e').unwrap_or((&e, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let digits: String = mantissa.chars().filter(|c| c.is_ascii_digit()).collect();
+    let k = digits.len() as i32;
+    // JavaScript's n: the position of the decimal point after the first digit.
+    let point = exp + 1;
+    if n < 0.0 {
+        out.push('-');
+    }
+    if k <= point && point <= 21 {
+        out.push_str(&digits);
+        out.extend(std::iter::repeat_n('0', (point - k) as usize));
+    } else if 0 < point && point <= 21 {
+        out.push_str(&digits[..point as usize]);
+        out.push('.');
+        out.push_str(&digits[point as usize..]);
+    } else if -6 < point && point <= 0 {
+        out.push_str("0.");
+        out.extend(std::iter::repeat_n('0', (-point) as usize));
+        out.push_str(&digits);
+    } else {
+        out.push_str(&digits[..1]);
+        if k > 1 {
+            out.push('.');
+            out.push_str(&digits[1..]);
+        }
+        let _ = write!(out, "e{}{}", if point > 0 { "+" } else { "-" }, (point - 1).abs());
+    }
+}
+
+/// JavaScript's `Number(text)`: blanks around are ignored, empty text is
+/// 0, decimal and hexadecimal numbers and `Infinity` read, anything else
+/// is NaN.
+pub fn text_to_number(text: &str) -> f64 {
+    let t = text.trim_matches(|c: char| c.is_whitespace() || c == '\u{feff}');
+    if t.is_empty() {
+        return 0.0;
+    }
+    if let Some(hex) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+        return if !hex.is_empty() && hex.chars().all(|c| c.is_ascii_hexdigit()) {
+            hex.chars().fold(0.0, |acc, c| acc * 16.0 + f64::from(c.to_digit(16).unwrap_or(0)))
+        } else {
+            f64::NAN
+        };
+    }
+    let (sign, body) = match t.as_bytes()[0] {
+        b'-' => (-1.0, &t[1..]),
+        b'+' => (1.0, &t[1..]),
+        _ => (1.0, t),
+    };
+    if body == "Infinity" {
+        return sign * f64::INFINITY;
+    }
+    match decimal_prefix(body) {
+        Some(len) if len == body.len() => sign * body.parse::<f64>().unwrap_or(f64::NAN),
+        _ => f64::NAN,
+    }
+}
+
+/// The length of the longest prefix of `s` that is a decimal literal
+/// (digits, a point, digits, an exponent), if any digit is in it.
+fn decimal_prefix(s: &str) -> Option<usize> {
+    let b = s.as_bytes();
+    let mut i = 0;
+    let digits = |i: &mut usize| {
+        let start = *i;
+        while *i < b.len() && b[*i].is_ascii_digit() {
+            *i += 1;
+        }
+        *i - start
+    };
+    let mut seen = digits(&mut i);
+    if i < b.len() && b[i] == b'.' {
+        let mut j = i + 1;
+        let frac = digits(&mut j);
+        if seen > 0 || frac > 0 {
+            i = j;
+            seen += frac;
+        }
+    }
+    if seen == 0 {
+        return None;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if digits(&mut j) > 0 {
+            i = j;
+        }
+    }
+    Some(i)
+}
+
+/// JavaScript's `parseFloat(text)`.
+pub fn parse_float(text: &str) -> f64 {
+    let t = text.trim_start();
+    let (sign, body) = match t.as_bytes().first() {
+        Some(b'-') => (-1.0, &t[1..]),
+        Some(b'+') => (1.0, &t[1..]),
+        _ => (1.0, t),
+    };
+    if body.starts_with("Infinity") {
+        return sign * f64::INFINITY;
+    }
+    match decimal_prefix(body) {
+        Some(len) => sign * body[..len].parse::<f64>().unwrap_or(f64::NAN),
+        None => f64::NAN,
+    }
+}
+
+/// JavaScript's `parseInt(text, radix)`; a radix of 0 means 10, or 16
+/// after `0x`.
+pub fn parse_int(text: &str, radix: f64) -> f64 {
+    let t = text.trim_start();
+    let (sign, mut body) = match t.as_bytes().first() {
+        Some(b'-') => (-1.0, &t[1..]),
+        Some(b'+') => (1.0, &t[1..]),
+        _ => (1.0, t),
+    };
+    let mut radix = if radix.is_finite() { radix.trunc() as i64 } else { 0 };
+    if radix != 0 && !(2..=36).contains(&radix) {
+        return f64::NAN;
+    }
+    if (radix == 0 || radix == 16) && (body.starts_with("0x") || body.starts_with("0X")) {
+        body = &body[2..];
+        radix = 16;
+    }
+    if radix == 0 {
+        radix = 10;
+    }
+    let mut value = 0.0;
+    let mut any = false;
+    for c in body.chars() {
+        match c.to_digit(radix as u32) {
+            Some(d) => {
+                value = value * radix as f64 + f64::from(d);
+                any = true;
+            }
+            None => break,
+        }
+    }
+    if any { sign * value } else { f64::NAN }
+}
+
+/// JavaScript's `Math.round`: the nearest integer, halves toward positive
+/// infinity.
+pub fn math_round(x: f64) -> f64 {
+    if !x.is_finite() {
+        return x;
+    }
+    let f = x.floor();
+    if x - f >= 0.5 { f + 1.0 } else { f }
+}
+
+/// ToInt32 of ECMAScript: modulo 2^32, as a signed integer.
+pub fn to_int32(x: f64) -> i32 {
+    to_uint32(x) as i32
+}
+
+/// ToUint32 of ECMAScript.
+pub fn to_uint32(x: f64) -> u32 {
+    if !x.is_finite() {
+        return 0;
+    }
+    let t = x.trunc().rem_euclid(4_294_967_296.0);
+    t as u32
+}
+
+/// JavaScript's `x.toFixed(digits)`: rounds the exact binary value, exact
+/// halves away from zero; 1e21 and above print as `String(x)`.
+pub fn to_fixed(x: f64, digits: f64) -> String {
+    let d = if digits.is_finite() { digits.trunc().clamp(0.0, 100.0) as usize } else { 0 };
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.abs() >= 1e21 || x.is_infinite() {
+        return number_to_string(x);
+    }
+    // The exact decimal expansion of the double (at most 1074 fraction digits).
+    let exact = format!("{:.1100}", x.abs());
+    let (int_part, frac) = exact.split_once('.').unwrap_or((&exact, ""));
+    let mut digits: Vec<u8> = int_part.bytes().chain(frac.bytes().take(d)).collect();
+    let rest = &frac.as_bytes()[d.min(frac.len())..];
+    if rest.first().is_some_and(|&c| c >= b'5') {
+        let mut i = digits.len();
+        loop {
+            if i == 0 {
+                digits.insert(0, b'1');
+                break;
+            }
+            i -= 1;
+            if digits[i] == b'9' {
+                digits[i] = b'0';
+            } else {
+                digits[i] += 1;
+                break;
+            }
+        }
+    }
+    let int_len = digits.len() - d;
+    let mut s = String::new();
+    let is_zero = digits.iter().all(|&c| c == b'0');
+    if x < 0.0 && !is_zero {
+        s.push('-');
+    }
+    s.push_str(std::str::from_utf8(&digits[..int_len]).unwrap_or("0"));
+    if d > 0 {
+        s.push('.');
+        s.push_str(std::str::from_utf8(&digits[int_len..]).unwrap_or(""));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_print_as_javascript_prints_them() {
+        let cases = [
+            (1.0, "1"),
+            (-2.5, "-2.5"),
+            (0.1 + 0.2, "0.30000000000000004"),
+            (1e21, "1e+21"),
+            (123456789012345680000.0, "123456789012345680000"),
+            (1e-7, "1e-7"),
+            (0.000001, "0.000001"),
+            (1.5e-10, "1.5e-10"),
+            (f64::NAN, "NaN"),
+            (-0.0, "0"),
+        ];
+        for (n, text) in cases {
+            assert_eq!(number_to_string(n), text, "{n}");
+        }
+    }
+
+    #[test]
+    fn text_reads_as_javascript_reads_it() {
+        assert_eq!(text_to_number(" 12.5 "), 12.5);
+        assert_eq!(text_to_number(""), 0.0);
+        assert!(text_to_number("12mm").is_nan());
+        assert_eq!(text_to_number("0x1F"), 31.0);
+        assert_eq!(parse_float("12.5mm"), 12.5);
+        assert!(parse_float("mm").is_nan());
+        assert_eq!(parse_int("  42px", 0.0), 42.0);
+        assert_eq!(parse_int("0x10", 0.0), 16.0);
+        assert_eq!(parse_int("-7.9", 10.0), -7.0);
+    }
+
+    #[test]
+    fn to_fixed_rounds_the_binary_value() {
+        assert_eq!(to_fixed(2.675, 2.0), "2.67");
+        assert_eq!(to_fixed(2.5, 0.0), "3");
+        assert_eq!(to_fixed(-2.5, 0.0), "-3");
+        assert_eq!(to_fixed(1.0, 3.0), "1.000");
+        assert_eq!(to_fixed(-0.0001, 2.0), "0.00");
+        assert_eq!(to_fixed(0.125, 2.0), "0.13");
+    }
+
+    #[test]
+    fn rounding_and_integers() {
+        assert_eq!(math_round(2.5), 3.0);
+        assert_eq!(math_round(-2.5), -2.0);
+        assert_eq!(math_round(0.49999999999999994), 0.0);
+        assert_eq!(to_int32(4294967297.0), 1);
+        assert_eq!(to_int32(-1.0), -1);
+        assert_eq!(to_uint32(-1.0), 4294967295);
+    }
+}

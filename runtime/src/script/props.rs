@@ -1,0 +1,312 @@
+//! Properties, methods and calls of translated scripts: `__get`, `__set`,
+//! `__keys`, `__callm` (methods of texts, numbers, arrays, regular
+//! expressions, objects and output variables), `__call`, `__new`, object
+//! and array literals, function objects, `Math`.
+
+use rhai::{Array, Dynamic, Engine, EvalAltResult, FnPtr, ImmutableString, Map, NativeCallContext};
+
+use super::host::Shared;
+use super::js;
+use super::ops::fail;
+use super::regex::Regex;
+use super::values::{self, JsArr, JsObj, JsRegex, ObjKind, num, text, to_number, to_string};
+
+type R = Result<Dynamic, Box<EvalAltResult>>;
+
+pub fn register(engine: &mut Engine, state: &Shared) {
+    engine.register_type_with_name::<JsObj>("object");
+    engine.register_type_with_name::<JsArr>("array");
+    engine.register_type_with_name::<JsRegex>("regexp");
+    engine.register_fn("__obj", |pairs: Array| {
+        let o = JsObj::new(ObjKind::Plain);
+        let mut it = pairs.into_iter();
+        while let (Some(k), Some(v)) = (it.next(), it.next()) {
+            o.set(&to_string(&k), v);
+        }
+        o
+    });
+    engine.register_fn("__arr", |items: Array| JsArr::new(items));
+    engine.register_fn("__fn", |f: FnPtr| JsObj::new(ObjKind::Function(f)));
+    let s = state.clone();
+    engine.register_fn("__fnobj", move |name: ImmutableString| -> R {
+        let mut st = s.borrow_mut();
+        if let Some(o) = st.functions.get(name.as_str()) {
+            return Ok(Dynamic::from(o.clone()));
+        }
+        let f = FnPtr::new(name.as_str()).map_err(|_| fail(format!("{name} is not a function")))?;
+        let o = JsObj::new(ObjKind::Function(f));
+        st.functions.insert(name.to_string(), o.clone());
+        Ok(Dynamic::from(o))
+    });
+    engine.register_fn("__regex", |p: ImmutableString, f: ImmutableString| -> R {
+        Regex::new(&p, &f)
+            .map(|r| Dynamic::from(JsRegex(std::rc::Rc::new(r))))
+            .map_err(|e| fail(format!("SyntaxError: {e}")))
+    });
+    engine.register_fn("__math_obj", || JsObj::new(ObjKind::Math));
+    engine.register_fn("__hostfn", |name: ImmutableString| JsObj::new(ObjKind::Host(name.to_string())));
+    engine.register_fn("__math", |name: ImmutableString, args: Array| -> R { math(&name, &args) });
+    engine.register_fn("__get", |o: Dynamic, k: Dynamic| -> R { get(&o, &k) });
+    engine.register_fn("__set", |o: Dynamic, k: Dynamic, v: Dynamic| -> R { set(&o, &k, v) });
+    engine.register_fn("__keys", |o: Dynamic| -> Array { keys(&o) });
+    engine.register_fn("__caught", |e: Dynamic| -> Dynamic {
+        match e.clone().try_cast::<Map>() {
+            Some(m) => {
+                let o = JsObj::new(ObjKind::Plain);
+                let msg = m.get("message").map_or_else(|| "error".to_string(), |v| v.to_string());
+                o.set("message", text(msg));
+                o.set("name", text("Error"));
+                Dynamic::from(o)
+            }
+            None => e,
+        }
+    });
+    let s = state.clone();
+    engine.register_fn("__callm", move |ctx: NativeCallContext, o: Dynamic, name: ImmutableString, args: Array| -> R {
+        method(&ctx, &s, o, &name, args)
+    });
+    let s = state.clone();
+    engine.register_fn("__call", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
+        call(&ctx, &s, &f, Dynamic::UNIT, args)
+    });
+    let s = state.clone();
+    engine.register_fn("__new", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R { construct(&ctx, &s, &f, args) });
+    let s = state.clone();
+    engine.register_fn("__host", move |ctx: NativeCallContext, name: ImmutableString, args: Array| -> R {
+        super::cimco::host_call(&ctx, &s, &name, args)
+    });
+}
+
+fn index_of(k: &Dynamic) -> Option<usize> {
+    let n = if k.is::<ImmutableString>() { js::text_to_number(&to_string(k)) } else { to_number(k) };
+    (n >= 0.0 && n.fract() == 0.0 && n < 1e15).then_some(n as usize)
+}
+
+/// `o[k]`.
+pub fn get(o: &Dynamic, k: &Dynamic) -> R {
+    if o.is_unit() || values::is_null(o) {
+        return Err(fail(format!("TypeError: cannot read property '{}' of {}", to_string(k), to_string(o))));
+    }
+    if let Some(s) = o.clone().try_cast::<ImmutableString>() {
+        if k.is::<ImmutableString>() && to_string(k) == "length" {
+            return Ok(num(s.chars().count() as f64));
+        }
+        return Ok(index_of(k).and_then(|i| s.chars().nth(i)).map_or(Dynamic::UNIT, |c| text(c.to_string())));
+    }
+    if let Some(a) = o.clone().try_cast::<JsArr>() {
+        if k.is::<ImmutableString>() && to_string(k) == "length" {
+            return Ok(num(a.0.borrow().len() as f64));
+        }
+        return Ok(index_of(k).and_then(|i| a.0.borrow().get(i).cloned()).unwrap_or(Dynamic::UNIT));
+    }
+    if let Some(obj) = o.clone().try_cast::<JsObj>() {
+        let key = to_string(k);
+        if let Some(v) = obj.get(&key) {
+            return Ok(v);
+        }
+        if key == "prototype" && obj.function().is_some() {
+            let proto = JsObj::new(ObjKind::Plain);
+            obj.set("prototype", Dynamic::from(proto.clone()));
+            return Ok(Dynamic::from(proto));
+        }
+        if let ObjKind::Math = obj.0.borrow().kind
+            && let Some(c) = math_constant(&key)
+        {
+            return Ok(num(c));
+        }
+        return Ok(Dynamic::UNIT);
+    }
+    if let Some(m) = o.clone().try_cast::<Map>() {
+        return Ok(m.get(to_string(k).as_str()).cloned().unwrap_or(Dynamic::UNIT));
+    }
+    if let Some(r) = o.clone().try_cast::<JsRegex>() {
+        return Ok(match to_string(k).as_str() {
+            "source" => text(r.0.source.clone()),
+            "global" => Dynamic::from_bool(r.0.global),
+            _ => Dynamic::UNIT,
+        });
+    }
+    Ok(Dynamic::UNIT)
+}
+
+/// `o[k] = v`; the value of the assignment.
+fn set(o: &Dynamic, k: &Dynamic, v: Dynamic) -> R {
+    if o.is_unit() || values::is_null(o) {
+        return Err(fail(format!("TypeError: cannot set property '{}' of {}", to_string(k), to_string(o))));
+    }
+    if let Some(obj) = o.clone().try_cast::<JsObj>() {
+        obj.set(&to_string(k), v.clone());
+    } else if let Some(a) = o.clone().try_cast::<JsArr>() {
+        let mut items = a.0.borrow_mut();
+        if k.is::<ImmutableString>() && to_string(k) == "length" {
+            let n = to_number(&v);
+            if n >= 0.0 && n.fract() == 0.0 && n < 1e7 {
+                items.resize(n as usize, Dynamic::UNIT);
+            }
+        } else if let Some(i) = index_of(k).filter(|i| *i < 1 << 24) {
+            if items.len() <= i {
+                items.resize(i + 1, Dynamic::UNIT);
+            }
+            items[i] = v.clone();
+        }
+    }
+    Ok(v)
+}
+
+fn keys(o: &Dynamic) -> Array {
+    if let Some(obj) = o.clone().try_cast::<JsObj>() {
+        return obj.0.borrow().props.iter().map(|(k, _)| Dynamic::from(k.clone())).collect();
+    }
+    let n = if let Some(a) = o.clone().try_cast::<JsArr>() {
+        a.0.borrow().len()
+    } else if let Some(s) = o.clone().try_cast::<ImmutableString>() {
+        s.chars().count()
+    } else {
+        0
+    };
+    (0..n).map(|i| text(i.to_string())).collect()
+}
+
+/// Calls a function value with `this`.
+pub fn call(ctx: &NativeCallContext, state: &Shared, f: &Dynamic, mut this: Dynamic, args: Array) -> R {
+    if let Some(obj) = f.clone().try_cast::<JsObj>() {
+        let kind = match &obj.0.borrow().kind {
+            ObjKind::Function(p) => Ok(p.clone()),
+            ObjKind::Host(name) => Err(Some(name.clone())),
+            _ => Err(None),
+        };
+        return match kind {
+            Ok(p) => p.call_raw(ctx, Some(&mut this), [Dynamic::from_array(args)]),
+            Err(Some(name)) => super::cimco::host_call(ctx, state, &name, args),
+            Err(None) => Err(fail("TypeError: an object is not a function")),
+        };
+    }
+    if let Some(p) = f.clone().try_cast::<FnPtr>() {
+        return p.call_raw(ctx, Some(&mut this), [Dynamic::from_array(args)]);
+    }
+    Err(fail(format!("TypeError: {} is not a function", to_string(f))))
+}
+
+fn construct(ctx: &NativeCallContext, state: &Shared, f: &Dynamic, args: Array) -> R {
+    if let Some(obj) = f.clone().try_cast::<JsObj>() {
+        if let ObjKind::Host(name) = &obj.0.borrow().kind {
+            let name = name.clone();
+            return super::cimco::host_call(ctx, state, &name, args);
+        }
+        if obj.function().is_some() {
+            let proto = get(f, &text("prototype"))?.try_cast::<JsObj>();
+            let this = JsObj::new(ObjKind::Plain);
+            this.0.borrow_mut().proto = proto;
+            let result = call(ctx, state, f, Dynamic::from(this.clone()), args)?;
+            return Ok(if result.is::<JsObj>() || result.is::<JsArr>() { result } else { Dynamic::from(this) });
+        }
+    }
+    Err(fail(format!("TypeError: {} is not a constructor", to_string(f))))
+}
+
+fn arg(args: &Array, i: usize) -> Dynamic {
+    args.get(i).cloned().unwrap_or(Dynamic::UNIT)
+}
+
+/// `o.name(args)`.
+fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args: Array) -> R {
+    if o.is_unit() || values::is_null(&o) {
+        return Err(fail(format!("TypeError: cannot call method '{name}' of {}", to_string(&o))));
+    }
+    if let Some(s) = o.clone().try_cast::<ImmutableString>() {
+        return super::methods::string_method(&s, name, &args);
+    }
+    if o.is::<f64>() || o.is::<i64>() {
+        let n = to_number(&o);
+        return match name {
+            "toFixed" => Ok(text(js::to_fixed(n, to_number(&arg(&args, 0)).max(0.0)))),
+            "toString" => Ok(text(js::number_to_string(n))),
+            _ => Err(fail(format!("TypeError: a number has no method '{name}'"))),
+        };
+    }
+    if let Some(a) = o.clone().try_cast::<JsArr>() {
+        return super::methods::array_method(&a, name, args);
+    }
+    if let Some(r) = o.clone().try_cast::<JsRegex>() {
+        return match name {
+            "test" => {
+                let chars: Vec<char> = to_string(&arg(&args, 0)).chars().collect();
+                Ok(Dynamic::from_bool(r.0.find_at(&chars, 0).is_some()))
+            }
+            _ => Err(fail(format!("TypeError: a regular expression has no method '{name}'"))),
+        };
+    }
+    if let Some(r) = super::cimco::output_method(state, &o, name, &args) {
+        return r;
+    }
+    if let Some(obj) = o.clone().try_cast::<JsObj>() {
+        if let ObjKind::Math = obj.0.borrow().kind {
+            return math(name, &args);
+        }
+        if let Some(f) = obj.get(name) {
+            return call(ctx, state, &f, o, args);
+        }
+        return match name {
+            "toString" => Ok(text(to_string(&o))),
+            "hasOwnProperty" => {
+                let k = to_string(&arg(&args, 0));
+                Ok(Dynamic::from_bool(obj.0.borrow().props.iter().any(|(p, _)| p.as_str() == k)))
+            }
+            "call" if obj.function().is_some() => {
+                let mut args = args;
+                let this = if args.is_empty() { Dynamic::UNIT } else { args.remove(0) };
+                call(ctx, state, &o, this, args)
+            }
+            "apply" if obj.function().is_some() => {
+                let this = arg(&args, 0);
+                let list = arg(&args, 1).try_cast::<JsArr>().map(|a| a.0.borrow().clone()).unwrap_or_default();
+                call(ctx, state, &o, this, list)
+            }
+            _ => Err(fail(format!("TypeError: the object has no method '{name}'"))),
+        };
+    }
+    Err(fail(format!("TypeError: {} has no method '{name}'", values::type_of(&o))))
+}
+
+fn math_constant(name: &str) -> Option<f64> {
+    use std::f64::consts as c;
+    Some(match name {
+        "PI" => c::PI,
+        "E" => c::E,
+        "LN2" => c::LN_2,
+        "LN10" => c::LN_10,
+        "LOG2E" => c::LOG2_E,
+        "LOG10E" => c::LOG10_E,
+        "SQRT2" => c::SQRT_2,
+        "SQRT1_2" => c::FRAC_1_SQRT_2,
+        _ => return None,
+    })
+}
+
+/// `Math.name(args)`.
+pub fn math(name: &str, args: &Array) -> R {
+    let n = |i: usize| args.get(i).map_or(f64::NAN, to_number);
+    let v = match name {
+        "abs" => n(0).abs(),
+        "acos" => n(0).acos(),
+        "asin" => n(0).asin(),
+        "atan" => n(0).atan(),
+        "atan2" => n(0).atan2(n(1)),
+        "ceil" => n(0).ceil(),
+        "cos" => n(0).cos(),
+        "exp" => n(0).exp(),
+        "floor" => n(0).floor(),
+        "log" => n(0).ln(),
+        "max" => args.iter().map(to_number).fold(f64::NEG_INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }),
+        "min" => args.iter().map(to_number).fold(f64::INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }),
+        "pow" => n(0).powf(n(1)),
+        // Posts must print the same program every time.
+        "random" => 0.5,
+        "round" => js::math_round(n(0)),
+        "sin" => n(0).sin(),
+        "sqrt" => n(0).sqrt(),
+        "tan" => n(0).tan(),
+        _ => return Err(fail(format!("TypeError: Math.{name} is not a function"))),
+    };
+    Ok(num(v))
+}

@@ -1,0 +1,365 @@
+//! JavaScript values inside Rhai: numbers are Rhai floats, text Rhai
+//! strings, `undefined` Rhai's `()`, and the rest host types with
+//! JavaScript's reference semantics: [`JsObj`] (objects and functions),
+//! [`JsArr`], [`JsNull`], and references to the post's output variables
+//! and formats. Conversions follow ECMAScript 5: `ToString`, `ToNumber`,
+//! truthiness, `==`, `===`, `+` and the relational operators.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use rhai::{Dynamic, FnPtr, ImmutableString};
+
+use super::js;
+use crate::number::NumberWriter;
+use crate::value::Value;
+
+/// `null`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct JsNull;
+
+/// An object (or a function: objects with a callable body).
+#[derive(Clone, Debug)]
+pub struct JsObj(pub Rc<RefCell<ObjData>>);
+
+#[derive(Debug, Default)]
+pub struct ObjData {
+    /// Properties in the order they were added.
+    pub props: Vec<(ImmutableString, Dynamic)>,
+    pub proto: Option<JsObj>,
+    pub kind: ObjKind,
+}
+
+/// What kind of object it is.
+#[derive(Debug, Default)]
+pub enum ObjKind {
+    #[default]
+    Plain,
+    /// A function: a Rhai function pointer (a script function or a closure).
+    Function(FnPtr),
+    /// A host function by name (`parseInt` used as a value).
+    Host(String),
+    /// `Math`.
+    Math,
+}
+
+impl JsObj {
+    pub fn new(kind: ObjKind) -> JsObj {
+        JsObj(Rc::new(RefCell::new(ObjData { props: Vec::new(), proto: None, kind })))
+    }
+
+    /// Own or inherited property.
+    pub fn get(&self, key: &str) -> Option<Dynamic> {
+        let mut cur = Some(self.clone());
+        let mut depth = 0;
+        while let Some(o) = cur {
+            let data = o.0.borrow();
+            if let Some((_, v)) = data.props.iter().find(|(k, _)| k.as_str() == key) {
+                return Some(v.clone());
+            }
+            cur = data.proto.clone();
+            depth += 1;
+            if depth > 64 {
+                break;
+            }
+        }
+        None
+    }
+
+    pub fn set(&self, key: &str, value: Dynamic) {
+        let mut data = self.0.borrow_mut();
+        match data.props.iter_mut().find(|(k, _)| k.as_str() == key) {
+            Some((_, v)) => *v = value,
+            None => data.props.push((key.into(), value)),
+        }
+    }
+
+    pub fn function(&self) -> Option<FnPtr> {
+        match &self.0.borrow().kind {
+            ObjKind::Function(f) => Some(f.clone()),
+            _ => None,
+        }
+    }
+}
+
+/// An array.
+#[derive(Clone, Debug, Default)]
+pub struct JsArr(pub Rc<RefCell<Vec<Dynamic>>>);
+
+impl JsArr {
+    pub fn new(items: Vec<Dynamic>) -> JsArr {
+        JsArr(Rc::new(RefCell::new(items)))
+    }
+}
+
+/// An output variable bound at compile time (`xOutput`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VarRef(pub u16);
+
+/// A format bound at compile time (`xyzFormat`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FmtRef(pub u16);
+
+/// A format made while the post runs.
+#[derive(Clone, Debug)]
+pub struct DynFormat(pub Rc<NumberWriter>);
+
+/// An output variable made while the post runs.
+#[derive(Clone, Debug)]
+pub struct DynVar(pub Rc<RefCell<DynVarState>>);
+
+#[derive(Debug)]
+pub struct DynVarState {
+    pub writer: Rc<NumberWriter>,
+    pub prefix: String,
+    pub force: bool,
+    /// The text printed last, and the modal epoch it was printed in.
+    pub last_text: Option<(String, u64)>,
+    pub last_value: f64,
+}
+
+/// A regular expression literal.
+#[derive(Clone, Debug)]
+pub struct JsRegex(pub Rc<super::regex::Regex>);
+
+pub fn is_null(v: &Dynamic) -> bool {
+    v.is::<JsNull>()
+}
+
+/// A Rhai value from an interpreter value.
+pub fn from_value(v: &Value) -> Dynamic {
+    match v {
+        Value::Null => Dynamic::UNIT,
+        Value::Num(n) => Dynamic::from_float(*n),
+        Value::Bool(b) => Dynamic::from_bool(*b),
+        Value::Text(s) => Dynamic::from(ImmutableString::from(&**s)),
+    }
+}
+
+/// An interpreter value from a Rhai value; objects become nothing, as the
+/// native side never reads them.
+pub fn to_value(v: &Dynamic) -> Option<Value> {
+    if v.is_unit() || is_null(v) {
+        return Some(Value::Null);
+    }
+    if let Some(n) = v.clone().try_cast::<f64>() {
+        return Some(Value::Num(n));
+    }
+    if let Some(i) = v.clone().try_cast::<i64>() {
+        return Some(Value::Num(i as f64));
+    }
+    if let Some(b) = v.clone().try_cast::<bool>() {
+        return Some(Value::Bool(b));
+    }
+    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        return Some(Value::text(&s));
+    }
+    None
+}
+
+/// ToNumber.
+pub fn to_number(v: &Dynamic) -> f64 {
+    if let Some(n) = v.clone().try_cast::<f64>() {
+        return n;
+    }
+    if v.is_unit() {
+        return f64::NAN;
+    }
+    if is_null(v) {
+        return 0.0;
+    }
+    if let Some(b) = v.clone().try_cast::<bool>() {
+        return f64::from(u8::from(b));
+    }
+    if let Some(i) = v.clone().try_cast::<i64>() {
+        return i as f64;
+    }
+    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        return js::text_to_number(&s);
+    }
+    if v.is::<JsArr>() {
+        return js::text_to_number(&to_string(v));
+    }
+    f64::NAN
+}
+
+/// ToString.
+pub fn to_string(v: &Dynamic) -> String {
+    let mut s = String::new();
+    push_string(&mut s, v, 0);
+    s
+}
+
+fn push_string(out: &mut String, v: &Dynamic, depth: usize) {
+    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        out.push_str(&s);
+    } else if let Some(n) = v.clone().try_cast::<f64>() {
+        js::push_number(out, n);
+    } else if let Some(i) = v.clone().try_cast::<i64>() {
+        js::push_number(out, i as f64);
+    } else if let Some(b) = v.clone().try_cast::<bool>() {
+        out.push_str(if b { "true" } else { "false" });
+    } else if v.is_unit() {
+        out.push_str("undefined");
+    } else if is_null(v) {
+        out.push_str("null");
+    } else if let Some(a) = v.clone().try_cast::<JsArr>() {
+        if depth > 16 {
+            return;
+        }
+        for (i, item) in a.0.borrow().iter().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            if !item.is_unit() && !is_null(item) {
+                push_string(out, item, depth + 1);
+            }
+        }
+    } else if let Some(o) = v.clone().try_cast::<JsObj>() {
+        let text = match &o.0.borrow().kind {
+            ObjKind::Plain => "[object Object]",
+            ObjKind::Math => "[object Math]",
+            ObjKind::Function(_) | ObjKind::Host(_) => "function () { [native code] }",
+        };
+        out.push_str(text);
+    } else if let Some(r) = v.clone().try_cast::<JsRegex>() {
+        out.push_str(&r.0.source);
+    } else {
+        out.push_str("[object Object]");
+    }
+}
+
+/// Truthiness.
+pub fn truthy(v: &Dynamic) -> bool {
+    if let Some(b) = v.clone().try_cast::<bool>() {
+        return b;
+    }
+    if let Some(n) = v.clone().try_cast::<f64>() {
+        return n != 0.0 && !n.is_nan();
+    }
+    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        return !s.is_empty();
+    }
+    if let Some(i) = v.clone().try_cast::<i64>() {
+        return i != 0;
+    }
+    !(v.is_unit() || is_null(v))
+}
+
+/// `typeof`.
+pub fn type_of(v: &Dynamic) -> &'static str {
+    if v.is::<f64>() || v.is::<i64>() {
+        "number"
+    } else if v.is::<ImmutableString>() {
+        "string"
+    } else if v.is::<bool>() {
+        "boolean"
+    } else if v.is_unit() {
+        "undefined"
+    } else if let Some(o) = v.clone().try_cast::<JsObj>() {
+        match &o.0.borrow().kind {
+            ObjKind::Function(_) | ObjKind::Host(_) => "function",
+            _ => "object",
+        }
+    } else if v.is::<FnPtr>() {
+        "function"
+    } else {
+        "object"
+    }
+}
+
+fn is_primitive(v: &Dynamic) -> bool {
+    v.is::<f64>() || v.is::<i64>() || v.is::<ImmutableString>() || v.is::<bool>() || v.is_unit() || is_null(v)
+}
+
+/// Whether two values are the same object.
+fn same_object(a: &Dynamic, b: &Dynamic) -> bool {
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<JsObj>(), b.clone().try_cast::<JsObj>()) {
+        return Rc::ptr_eq(&x.0, &y.0);
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<JsArr>(), b.clone().try_cast::<JsArr>()) {
+        return Rc::ptr_eq(&x.0, &y.0);
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<VarRef>(), b.clone().try_cast::<VarRef>()) {
+        return x == y;
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<FmtRef>(), b.clone().try_cast::<FmtRef>()) {
+        return x == y;
+    }
+    false
+}
+
+/// `===`.
+pub fn strict_eq(a: &Dynamic, b: &Dynamic) -> bool {
+    let num = |v: &Dynamic| v.clone().try_cast::<f64>().or_else(|| v.clone().try_cast::<i64>().map(|i| i as f64));
+    if let (Some(x), Some(y)) = (num(a), num(b)) {
+        return x == y;
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<ImmutableString>(), b.clone().try_cast::<ImmutableString>()) {
+        return x == y;
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<bool>(), b.clone().try_cast::<bool>()) {
+        return x == y;
+    }
+    if a.is_unit() && b.is_unit() || is_null(a) && is_null(b) {
+        return true;
+    }
+    same_object(a, b)
+}
+
+/// `==`.
+pub fn loose_eq(a: &Dynamic, b: &Dynamic) -> bool {
+    let nullish = |v: &Dynamic| v.is_unit() || is_null(v);
+    if nullish(a) || nullish(b) {
+        return nullish(a) && nullish(b);
+    }
+    if is_primitive(a) && is_primitive(b) {
+        if a.is::<ImmutableString>() && b.is::<ImmutableString>() {
+            return strict_eq(a, b);
+        }
+        return to_number(a) == to_number(b);
+    }
+    if !is_primitive(a) && !is_primitive(b) {
+        return same_object(a, b);
+    }
+    // An object against a primitive compares its text.
+    let (obj, prim) = if is_primitive(a) { (b, a) } else { (a, b) };
+    let text = Dynamic::from(ImmutableString::from(to_string(obj)));
+    loose_eq(&text, prim)
+}
+
+/// `+`.
+pub fn add(a: &Dynamic, b: &Dynamic) -> Dynamic {
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<f64>(), b.clone().try_cast::<f64>()) {
+        return Dynamic::from_float(x + y);
+    }
+    let texty = |v: &Dynamic| !is_primitive(v) || v.is::<ImmutableString>();
+    if texty(a) || texty(b) {
+        let mut s = to_string(a);
+        s.push_str(&to_string(b));
+        return Dynamic::from(ImmutableString::from(s));
+    }
+    Dynamic::from_float(to_number(a) + to_number(b))
+}
+
+/// `<` and friends: `Some(ordering)` or `None` when NaN is involved.
+pub fn compare(a: &Dynamic, b: &Dynamic) -> Option<std::cmp::Ordering> {
+    let prim = |v: &Dynamic| {
+        if is_primitive(v) { v.clone() } else { Dynamic::from(ImmutableString::from(to_string(v))) }
+    };
+    let (a, b) = (prim(a), prim(b));
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<ImmutableString>(), b.clone().try_cast::<ImmutableString>()) {
+        return Some(x.as_str().cmp(y.as_str()));
+    }
+    to_number(&a).partial_cmp(&to_number(&b))
+}
+
+/// A number as a Rhai value.
+pub fn num(n: f64) -> Dynamic {
+    Dynamic::from_float(n)
+}
+
+/// Text as a Rhai value.
+pub fn text(s: impl Into<ImmutableString>) -> Dynamic {
+    Dynamic::from(s.into())
+}
