@@ -89,10 +89,10 @@ fn print_measured(args: &Args, m: &Measured) {
         Some(p) => p.display().to_string(),
         None => format!("synthetic {} toolpath of {} moves", args.pattern, args.moves),
     };
-    println!("post:       {}", args.post.display());
-    println!("toolpath:   {what}");
-    println!("events:     {}", m.events);
-    println!("output:     {:.1} MB", m.bytes as f64 / 1e6);
-    println!("time:       {:.3} s", m.seconds);
-    println!("throughput: {:.0} moves/s ({:.1} MB/s of output)", m.events as f64 / m.seconds, m.bytes as f64 / 1e6 / m.seconds);
+    report::out(&format!("post:       {}\n", args.post.display()));
+    report::out(&format!("toolpath:   {what}\n"));
+    report::out(&format!("events:     {}\n", m.events));
+    report::out(&format!("output:     {:.1} MB\n", m.bytes as f64 / 1e6));
+    report::out(&format!("time:       {:.3} s\n", m.seconds));
+    report::out(&format!("throughput: {:.0} moves/s ({:.1} MB/s of output)\n", m.events as f64 / m.seconds, m.bytes as f64 / 1e6 / m.seconds));
 }

@@ -37,7 +37,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     }
     let errors = all.iter().filter(|(_, d)| d.is_error()).count();
     match args.format {
-        Format::Json => println!("{}", report::json(&sources, &all)),
+        Format::Json => report::out(&(report::json(&sources, &all) + "\n")),
         Format::Human => {
             let diagnostics: Vec<_> = all.iter().map(|(_, d)| d.clone()).collect();
             report::eprint(&mut sources, &diagnostics);

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use postc_ir::{Body, SourceMap};
 
-use super::{DialectArg, Failed, load_post};
+use super::{DialectArg, Failed, load_post, report};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -21,14 +21,14 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let config = ron::ser::PrettyConfig::new().struct_names(false).compact_arrays(true);
     let text = ron::ser::to_string_pretty(&post, config).unwrap_or_else(|e| format!("// cannot print the IR: {e}"));
-    println!("// {} ({:?} dialect)", post.info.name, post.info.dialect);
+    report::out(&format!("// {} ({:?} dialect)\n", post.info.name, post.info.dialect));
     for f in &post.functions {
         let how = match f.body {
             Body::Native(_) => "native",
             Body::Script(_) => "script",
         };
-        println!("// function {}: {how}", f.name);
+        report::out(&format!("// function {}: {how}\n", f.name));
     }
-    println!("{text}");
+    report::out(&(text + "\n"));
     Ok(())
 }

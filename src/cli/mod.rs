@@ -7,6 +7,8 @@
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
+//! postc probe-table POST                                      # empty probe-cycle table of a VcPost post
+//! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -16,6 +18,8 @@ mod bench;
 mod check;
 mod inspect;
 mod post;
+mod postp;
+mod probe;
 pub mod report;
 mod toolpath;
 
@@ -43,6 +47,10 @@ enum Command {
     Inspect(inspect::Args),
     /// Measure posting throughput over a toolpath or a synthetic one.
     Bench(bench::Args),
+    /// Print an empty probe-cycle table (CSV) for a VcPost post, from its keyword comments.
+    ProbeTable(probe::Args),
+    /// Post DIR/cl.tap for the controller its MACHIN names (the APT `postp` of seed 004).
+    Postp(postp::Args),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -72,12 +80,17 @@ impl From<DialectArg> for Dialect {
 
 /// Runs the command line.
 pub fn main() -> ExitCode {
+    if postp::invoked_as_postp() {
+        return postp::main();
+    }
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Bench(args) => bench::run(args),
+        Command::ProbeTable(args) => probe::run(args),
+        Command::Postp(args) => postp::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {

@@ -1,5 +1,6 @@
 //! `postc post`: posts a toolpath through a post, to a file (written whole
-//! or not at all) or to standard output.
+//! or not at all) or to standard output. A VcPost probe table (`.csv`) or
+//! composites event file goes to `probe.rs` instead.
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -27,6 +28,9 @@ pub struct Args {
     /// The post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    /// VcPost composites: run this #Primer Sub before the event file's calls (repeatable).
+    #[arg(long, value_name = "NAME")]
+    primer: Vec<String>,
 }
 
 /// `--set` names and what they do.
@@ -72,6 +76,13 @@ pub fn run(args: Args) -> Result<(), Failed> {
         [post, toolpath] => (Some(post), toolpath),
         _ => unreachable!("clap takes one or two files"),
     };
+    if let Some(kind) = super::probe::job_kind(toolpath) {
+        let mut options = RunOptions::default();
+        apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
+        options.file = args.output.as_deref().map(file_info);
+        let job = super::probe::Job { post: post_path, input: toolpath, kind, dialect: args.dialect, primers: &args.primer, output: args.output.as_ref(), options };
+        return super::probe::run_calls(job);
+    }
     if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
         return Err(fail(
             &mut sources,

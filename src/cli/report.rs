@@ -26,3 +26,11 @@ pub fn json(sources: &SourceMap, diagnostics: &[(String, Diagnostic)]) -> String
     let items: Vec<_> = diagnostics.iter().map(|(file, d)| sources.to_json(d, file)).collect();
     serde_json::to_string_pretty(&items).unwrap_or_else(|_| "[]".into())
 }
+
+/// Writes to standard output; a reader that went away (`| head`) ends the
+/// output quietly instead of a panic.
+pub fn out(text: &str) {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush());
+}

@@ -1,0 +1,114 @@
+//! LETTER: engraving the next PPRINT string with the built-in font.
+//!
+//! `LETTER/x,y,z,dx,r,sx,sy,zc,zr,f,zf`: the first character's cell has its
+//! bottom left (on the baseline) at (x, y); the tool cuts at height z;
+//! characters start dx apart along the baseline (dx ≤ 0: the font's own
+//! advance, 1.5 grid widths); the whole string turns r degrees
+//! counter-clockwise about (x, y); sx and sy scale the width and height, a
+//! capital being 1 inch tall at sy = 1 (25.4 in a millimetre file). Each
+//! stroke is cut as: rapid to its start at zc, rapid down to zr, feed down
+//! to z at zf, feed along the stroke at f, rapid up to zc. The tool first
+//! rises to zc where it stands, and ends at zc over the last stroke.
+
+use crate::postp::font;
+
+/// A LETTER statement's parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Letter {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub dx: f64,
+    pub r: f64,
+    pub sx: f64,
+    pub sy: f64,
+    pub zc: f64,
+    pub zr: f64,
+    pub f: f64,
+    pub zf: f64,
+}
+
+/// A computed move.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Motion {
+    Rapid([f64; 3]),
+    /// End point and feed rate.
+    Feed([f64; 3], f64),
+}
+
+impl Letter {
+    /// From the 11 numbers of the statement.
+    pub fn from_numbers(n: &[f64]) -> Option<Letter> {
+        let [x, y, z, dx, r, sx, sy, zc, zr, f, zf] = *n else { return None };
+        Some(Letter { x, y, z, dx, r, sx, sy, zc, zr, f, zf })
+    }
+
+    /// The moves that engrave `text`, starting from `from` (the tool's
+    /// position, when known); `inch` is the length of an inch in the file's
+    /// units. Characters the font lacks are cut as `?` and returned.
+    pub fn motions(&self, text: &str, from: Option<[f64; 3]>, inch: f64) -> (Vec<Motion>, Vec<char>) {
+        let unit_y = self.sy * inch / font::CAP_HEIGHT;
+        let unit_x = self.sx * inch / font::CAP_HEIGHT;
+        let pitch = if self.dx > 0.0 { self.dx } else { 1.5 * font::WIDTH * unit_x };
+        let (sin, cos) = self.r.to_radians().sin_cos();
+        let at = |u: f64, v: f64| [self.x + u * cos - v * sin, self.y + u * sin + v * cos];
+        let mut out = Vec::new();
+        let mut missing = Vec::new();
+        if let Some(p) = from
+            && p[2] != self.zc
+        {
+            out.push(Motion::Rapid([p[0], p[1], self.zc]));
+        }
+        for (i, c) in text.chars().enumerate() {
+            let strokes = font::strokes(c).unwrap_or_else(|| {
+                missing.push(c);
+                font::strokes('?').unwrap_or_default()
+            });
+            let origin = i as f64 * pitch;
+            for stroke in strokes {
+                let points: Vec<[f64; 2]> = stroke.iter().map(|&(gx, gy)| at(origin + gx * unit_x, gy * unit_y)).collect();
+                let (Some(first), Some(last)) = (points.first(), points.last()) else { continue };
+                out.push(Motion::Rapid([first[0], first[1], self.zc]));
+                if self.zr != self.zc {
+                    out.push(Motion::Rapid([first[0], first[1], self.zr]));
+                }
+                out.push(Motion::Feed([first[0], first[1], self.z], self.zf));
+                for p in &points[1..] {
+                    out.push(Motion::Feed([p[0], p[1], self.z], self.f));
+                }
+                out.push(Motion::Rapid([last[0], last[1], self.zc]));
+            }
+        }
+        (out, missing)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_l_is_two_feeds_between_a_plunge_and_a_retract() {
+        let l = Letter::from_numbers(&[1.0, 2.0, -0.01, 0.0, 0.0, 1.0, 1.0, 0.5, 0.1, 10.0, 5.0]).unwrap();
+        let (m, missing) = l.motions("L", Some([0.0, 0.0, 1.0]), 1.0);
+        assert!(missing.is_empty());
+        assert_eq!(m[0], Motion::Rapid([0.0, 0.0, 0.5]));
+        assert_eq!(m[1], Motion::Rapid([1.0, 3.0, 0.5]));
+        assert_eq!(m[2], Motion::Rapid([1.0, 3.0, 0.1]));
+        assert_eq!(m[3], Motion::Feed([1.0, 3.0, -0.01], 5.0));
+        assert_eq!(m[4], Motion::Feed([1.0, 2.0, -0.01], 10.0));
+        let Motion::Feed(p, _) = m[5] else { panic!() };
+        assert!((p[0] - (1.0 + 4.0 / 6.0)).abs() < 1e-12);
+        assert_eq!(m[6], Motion::Rapid([p[0], p[1], 0.5]));
+    }
+
+    #[test]
+    fn rotation_turns_about_the_start() {
+        let l = Letter::from_numbers(&[0.0, 0.0, 0.0, 2.0, 90.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]).unwrap();
+        let (m, missing) = l.motions("\u{e9}.", None, 6.0);
+        assert_eq!(missing, vec!['\u{e9}']);
+        // The dot of the second character sits 2 units along the turned baseline.
+        let dot = m.iter().rev().find_map(|m| if let Motion::Feed(p, _) = m { Some(*p) } else { None }).unwrap();
+        assert!(dot[0].abs() < 1e-9 && (dot[1] - 2.0 - 2.0).abs() < 1e-9, "{dot:?}");
+    }
+}

@@ -1,0 +1,136 @@
+//! Helpers of the `postp` tests: post a CL text through a controller and
+//! compare the program with a committed snapshot in `tests/snapshots/postp/`
+//! (`POSTC_BLESS=1` rewrites the snapshots).
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+use postc::postp::{Controller, Settings, post};
+use postc_ir::SourceMap;
+use postc_runtime::{Finished, Output};
+
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// What a run gave: the program (empty on failure) and the diagnostics as
+/// `CODE message` lines.
+pub struct Run {
+    pub program: String,
+    pub diagnostics: Vec<String>,
+    pub ok: bool,
+}
+
+impl Run {
+    /// The program followed by its diagnostics, as the snapshots hold it.
+    pub fn text(&self) -> String {
+        let mut s = self.program.clone();
+        if !self.diagnostics.is_empty() {
+            s.push_str("---- diagnostics\n");
+            for d in &self.diagnostics {
+                s.push_str(d);
+                s.push('\n');
+            }
+        }
+        s
+    }
+
+    pub fn has(&self, code: &str) -> bool {
+        self.diagnostics.iter().any(|d| d.starts_with(code))
+    }
+}
+
+/// Posts `cl` (written to a temporary `cl.tap`) with an optional options
+/// file text and controller override.
+pub fn run_with(cl: &str, options: Option<&str>, machine: Option<Controller>) -> Run {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cl.tap");
+    std::fs::write(&path, cl).unwrap();
+    let options = options.map(|text| {
+        let p = dir.path().join("options.ron");
+        std::fs::write(&p, text).unwrap();
+        p
+    });
+    run_file(&path, Settings { options, machine })
+}
+
+pub fn run_file(path: &Path, settings: Settings) -> Run {
+    let mut sources = SourceMap::new();
+    let line = |d: &postc_ir::Diagnostic| format!("{} {}", d.code, d.message);
+    match post(path, &settings, Output::memory(), &mut sources) {
+        Ok(r) => {
+            let Finished::Memory(parts) = r.output else { panic!("memory output") };
+            let program = parts.into_iter().map(|p| String::from_utf8_lossy(&p).into_owned()).collect();
+            Run { program, diagnostics: r.warnings.iter().map(line).collect(), ok: true }
+        }
+        Err(d) => Run { program: String::new(), diagnostics: d.iter().map(line).collect(), ok: false },
+    }
+}
+
+/// Posts `body` after `MACHIN/<machine>` and `UNITS/MM`.
+pub fn run(machine: &str, body: &str) -> Run {
+    run_with(&format!("MACHIN/{machine}\nUNITS/MM\n{body}"), None, None)
+}
+
+/// Compares `text` with `tests/snapshots/postp/<name>.nc`.
+pub fn snapshot(name: &str, text: &str) {
+    let path = root().join("tests/snapshots/postp").join(format!("{name}.nc"));
+    if std::env::var_os("POSTC_BLESS").is_some() {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(&path, text).unwrap();
+        return;
+    }
+    let expected = std::fs::read_to_string(&path)
+        .unwrap_or_else(|_| panic!("no snapshot {}; run with POSTC_BLESS=1 to write it", path.display()));
+    assert!(expected == text, "{name}: the output differs from {}\n---- got\n{text}---- expected\n{expected}", path.display());
+}
+
+/// Posts on a controller and compares with the snapshot `<name>.<MACHINE>`.
+pub fn check(name: &str, machine: &str, body: &str) -> Run {
+    let r = run(machine, body);
+    snapshot(&format!("{name}.{machine}"), &r.text());
+    r
+}
+
+/// LinuxCNC's rs274, when it is on PATH.
+pub fn rs274() -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    std::env::split_paths(&path).map(|d| d.join("rs274")).find(|p| p.is_file())
+}
+
+/// Runs rs274 on a program: its complaints (empty when it reads cleanly)
+/// and the number of moves it made (traverses, feeds, arcs).
+pub fn interpret(rs274: &Path, program: &str) -> (Vec<String>, usize) {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("program.ngc");
+    std::fs::write(&file, program).unwrap();
+    // rs274 keeps its parameter file in the working folder: one folder per run.
+    let out = std::process::Command::new(rs274)
+        .current_dir(dir.path())
+        .args(["-g", "-t"])
+        .arg(root().join("corpus/tool.tbl"))
+        .arg(&file)
+        .output()
+        .unwrap();
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let mut complaints = Vec::new();
+    let mut moves = 0;
+    for line in text.lines().map(str::trim) {
+        let mut words = line.splitn(3, char::is_whitespace);
+        match (words.next(), words.next(), words.next()) {
+            (Some(n), Some(b), Some(call)) if n.bytes().all(|c| c.is_ascii_digit()) && b.starts_with('N') => {
+                let call = call.trim();
+                if call.starts_with("STRAIGHT_TRAVERSE") || call.starts_with("STRAIGHT_FEED") || call.starts_with("ARC_FEED") {
+                    moves += 1;
+                }
+            }
+            _ if line.is_empty() || line == "executing" => {}
+            _ => complaints.push(line.to_string()),
+        }
+    }
+    if !out.status.success() && complaints.is_empty() {
+        complaints.push(format!("rs274 exit {:?}", out.status.code()));
+    }
+    (complaints, moves)
+}

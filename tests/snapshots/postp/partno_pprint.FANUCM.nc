@@ -1,0 +1,3 @@
+(BRACKET [REV B])
+(check the clamps)
+N5 M01
