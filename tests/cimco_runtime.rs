@@ -1,0 +1,198 @@
+//! CIMCO host semantics, end to end: formats and output variables, modal
+//! memory shared by native code and scripts, errors and runaway loops
+//! reported at the JavaScript line, and posts that must not panic.
+
+use std::path::Path;
+
+use postc_ir::event::{Event, FeedMove, Move, Tool, ToolpathStart, VecSource};
+use postc_ir::{Body, FileId, Post, SourceMap};
+use postc_runtime::{Finished, Output, RunOptions};
+
+fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>, SourceMap) {
+    let mut sources = SourceMap::new();
+    let (post, diags) = cimco(Path::new("test.js"), js.as_bytes(), &mut sources);
+    (post, diags, sources)
+}
+
+fn cimco(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<postc_ir::Diagnostic>) {
+    let c = postc_frontends::compile_post_bytes(path, bytes, Some(postc_ir::Dialect::Cimco), sources);
+    (c.post.unwrap_or_default(), c.diagnostics)
+}
+
+fn events() -> Vec<Event> {
+    vec![
+        Event::Job(Box::default()),
+        Event::Tool(Tool { number: 1, cut_feed: 1000.0, plunge_feed: 300.0, spindle_speed: 8000.0, ..Tool::default() }),
+        Event::ToolpathStart(ToolpathStart::default()),
+        Event::Rapid(Move { x: 1.0, y: 2.0, z: 5.0, ..Move::default() }),
+        Event::Feed(FeedMove { x: 3.0, y: 2.0, z: 5.0, ..FeedMove::default() }),
+        Event::Feed(FeedMove { x: 3.0, y: 2.5, z: 5.0, ..FeedMove::default() }),
+        Event::End,
+    ]
+}
+
+fn run(post: &Post) -> Result<String, Vec<postc_ir::Diagnostic>> {
+    let mut source = VecSource::new(events(), FileId(0));
+    let report = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default())?;
+    match report.output {
+        Finished::Memory(parts) => Ok(String::from_utf8_lossy(&parts.concat()).into_owned()),
+        _ => unreachable!("memory output"),
+    }
+}
+
+fn post_output(js: &str) -> String {
+    let (post, diags, _) = compile(js);
+    assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+    run(&post).unwrap_or_else(|d| panic!("{d:?}"))
+}
+
+#[test]
+fn formats_trim_pad_sign_and_scale() {
+    let out = post_output(
+        r#"
+        var linebreak = "\n";
+        var a = createFormat({decimals: 3});
+        var b = createFormat({decimals: 3, forceDecimal: true});
+        var c = createFormat({width: 4, zeropad: true, decimals: 0});
+        var d = createFormat({decimals: 2, forceSign: true});
+        var e = createFormat({decimals: 1, scale: 2});
+        var f = createFormat({decimals: 0, forceDecimal: true});
+        function onOpen() {
+            return [a.format(3), a.format(2.5), a.format(2.0005), a.format(-0.0001), b.format(3), c.format(1),
+                    d.format(4.25), d.format(-1), e.format(1.26), f.format(80)].join(" ") + "\n";
+        }
+        function onLinear(x, y, z, m) { return ""; }
+        "#,
+    );
+    assert_eq!(out, "3 2.5 2.001 0 3.000 0001 +4.25 -1 2.5 80.\n");
+}
+
+#[test]
+fn modal_memory_is_shared_by_native_code_and_scripts() {
+    let js = r#"
+        var linebreak = "\n";
+        var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 1}));
+        var seen = [];
+        function onLinear(x, y, z, m) { return "L" + xOutput.format(x) + "\n"; }
+        // Objects make this one a script.
+        function onClose() { seen.push(1); return "C" + xOutput.format(3) + "|" + xOutput.getLast() + "\n"; }
+    "#;
+    let (post, diags, _) = compile(js);
+    assert!(diags.is_empty(), "{diags:?}");
+    let kind = |name: &str| post.functions.iter().find(|f| f.name == name).map(|f| matches!(f.body, Body::Native(_)));
+    assert_eq!(kind("onLinear"), Some(true));
+    assert_eq!(kind("onClose"), Some(false));
+    // X3 was printed natively last; the script's X3 is modal and prints nothing.
+    assert_eq!(run(&post).unwrap(), "LX1\nLX3\nL\nC|3\n");
+}
+
+#[test]
+fn script_errors_point_at_the_javascript() {
+    let js = "var linebreak = \"\\n\";\nvar o = null;\nfunction onOpen() {\n    return \"O\" + o.name;\n}\nfunction onLinear(x, y, z, m) { return \"\"; }\n";
+    let (post, _, sources) = compile(js);
+    let d = run(&post).expect_err("the post fails");
+    let d = d.iter().find(|d| d.code == "RT020").expect("an RT020 error");
+    let span = d.primary_span().expect("a span");
+    assert_eq!(sources.line_column(span.file, span.start), Some((4, 18)), "{d:?}");
+}
+
+#[test]
+fn runaway_loops_stop_at_their_line() {
+    for (body, line) in [("while (true) { n++; }", 4), ("for (;;) { list.push(n); if (list.length < 0) break; }", 4)] {
+        let js = format!(
+            "var linebreak = \"\\n\";\nvar n = 0, list = [];\nfunction onOpen() {{\n    {body}\n    return \"\";\n}}\nfunction onLinear(x, y, z, m) {{ return \"\"; }}\n"
+        );
+        let (mut post, diags, sources) = compile(&js);
+        assert!(diags.is_empty(), "{diags:?}");
+        post.options.step_budget = 100_000;
+        let d = run(&post).expect_err("the post is stopped");
+        let d = d.iter().find(|d| d.code == "RT002").unwrap_or_else(|| panic!("no RT002: {d:?}"));
+        let span = d.primary_span().expect("a span");
+        assert_eq!(sources.line_column(span.file, span.start).map(|(l, _)| l), Some(line), "{body}: {d:?}");
+    }
+}
+
+#[test]
+fn posts_have_no_file_network_or_process_access() {
+    let js = r#"
+        var linebreak = "\n";
+        function onOpen() { var fs = require("fs"); return fs.readFileSync("/etc/passwd"); }
+        function onLinear(x, y, z, m) { return ""; }
+    "#;
+    let (post, diags, _) = compile(js);
+    assert!(diags.iter().any(|d| d.code == "JS102"), "{diags:?}");
+    let d = run(&post).expect_err("require is not there");
+    assert!(d.iter().any(|d| d.message.contains("require is not defined")), "{d:?}");
+}
+
+#[test]
+fn javascript_semantics_in_scripts() {
+    let out = post_output(
+        r#"
+        var linebreak = "\n";
+        function Point(x) { this.x = x; }
+        Point.prototype.twice = function () { return this.x * 2; };
+        function counter(start) { var n = start; return function () { return n++; }; }
+        function onOpen() {
+            var c = counter(5);
+            c();
+            var p = new Point(4);
+            var parts = [];
+            switch (p.twice()) {
+                case 8: parts.push("eight");
+                case 9: parts.push("nine"); break;
+                default: parts.push("other");
+            }
+            for (var k in {a: 1, b: 2}) { parts.push(k); }
+            var s = "a(b)c".replace(/[()]/g, "-");
+            try { throw "boom"; } catch (e) { parts.push(e); }
+            return [c(), p.twice(), parts.join("+"), s, typeof p, 1 + "2", "3" * 2, 7 / 2, (1 / 3).toFixed(3), parseInt("12px"), 0.1 + 0.2].join(" ") + "\n";
+        }
+        function onLinear(x, y, z, m) { return ""; }
+        "#,
+    );
+    assert_eq!(out, "6 8 eight+nine+a+b+boom a-b-c object 12 6 3.5 0.333 12 0.30000000000000004\n");
+}
+
+/// Posts cut short or with bytes changed still compile and run or fail
+/// cleanly: no panic.
+#[test]
+fn mutated_posts_never_panic() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut posts: Vec<String> = Vec::new();
+    for d in ["corpus/posts/cimco", "frontends/cimco/tests/fixtures/valid"] {
+        for e in std::fs::read_dir(dir.join(d)).expect("a folder").flatten() {
+            posts.push(std::fs::read_to_string(e.path()).expect("a post"));
+        }
+    }
+    let mut seed = 12345u64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    for text in &posts {
+        for _ in 0..12 {
+            let mut bytes = text.as_bytes().to_vec();
+            match next() % 3 {
+                0 => bytes.truncate((next() as usize) % bytes.len().max(1)),
+                1 => {
+                    let i = (next() as usize) % bytes.len().max(1);
+                    bytes[i] = b"{}();+-.\"x0 "[(next() % 12) as usize];
+                }
+                _ => {
+                    let i = (next() as usize) % bytes.len().max(1);
+                    bytes.insert(i, b'(');
+                }
+            }
+            let mut sources = SourceMap::new();
+            let (post, diags) = cimco(Path::new("m.js"), &bytes, &mut sources);
+            if !postc_ir::diagnostic::has_errors(&diags) {
+                let mut p = post;
+                p.options.step_budget = 200_000;
+                let _ = run(&p);
+            }
+        }
+    }
+}
