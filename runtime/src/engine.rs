@@ -171,6 +171,11 @@ impl<'p> Engine<'p> {
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
                                 put_number(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
                             }
+                            Op::Position { var, axis, format, modal } => {
+                                let n = self.machine.pos[*axis as usize];
+                                let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
+                                put_number(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                            }
                             Op::Piece(piece) => self.write_piece(piece)?,
                         }
                     }
@@ -440,6 +445,8 @@ pub(crate) enum Op<'p> {
     ShortText(SmallBytes),
     /// A numeric quantity through a variable: no lookups left to do.
     Number { var: u16, quantity: Quantity, format: u16, modal: bool },
+    /// X, Y or Z of the current position (no rotary wrap): read directly.
+    Position { var: u16, axis: u8, format: u16, modal: bool },
     /// Anything else (text quantities, block numbers, assigned variables, expressions).
     Piece(&'p Piece),
 }
@@ -459,6 +466,16 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>>
                         Piece::Var(id) => {
                             let var = &post.variables[*id as usize];
                             match var.source {
+                                ValueSource::Quantity(q @ (Quantity::X | Quantity::Y | Quantity::Z))
+                                    if post.options.rotary_wrap.is_none() =>
+                                {
+                                    Op::Position {
+                                        var: *id,
+                                        axis: [Quantity::X, Quantity::Y, Quantity::Z].iter().position(|a| *a == q).unwrap_or(0) as u8,
+                                        format: var.format,
+                                        modal: is_modal(var),
+                                    }
+                                }
                                 ValueSource::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => Op::Number {
                                     var: *id,
                                     quantity: q,

@@ -121,13 +121,18 @@ pub fn run<S: EventSource + ?Sized>(
         diagnostics.push(*d);
         return fail(diagnostics, engine);
     }
-    while let Some((event, span)) = source.next_event(&mut diagnostics) {
+    let cimco = post.info.dialect == postc_ir::Dialect::Cimco;
+    while let Some((mut event, span)) = source.next_event(&mut diagnostics) {
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
         }
         engine.event_span = span;
-        let event = if lathe { script::turn_event(event) } else { event };
-        script::observe(&mut engine, &event);
+        if lathe {
+            event = script::turn_event(event);
+        }
+        if cimco {
+            script::observe(&mut engine, &event);
+        }
         if let Err(d) = dispatch.event(&mut engine, &event) {
             diagnostics.push(*d);
             return fail(diagnostics, engine);
