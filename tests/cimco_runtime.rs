@@ -91,7 +91,7 @@ fn script_errors_point_at_the_javascript() {
     let js = "var linebreak = \"\\n\";\nvar o = null;\nfunction onOpen() {\n    return \"O\" + o.name;\n}\nfunction onLinear(x, y, z, m) { return \"\"; }\n";
     let (post, _, sources) = compile(js);
     let d = run(&post).expect_err("the post fails");
-    let d = d.iter().find(|d| d.code == "RT020").expect("an RT020 error");
+    let d = d.iter().find(|d| d.code == "RT023").expect("an RT023 error");
     let span = d.primary_span().expect("a span");
     assert_eq!(sources.line_column(span.file, span.start), Some((4, 18)), "{d:?}");
 }

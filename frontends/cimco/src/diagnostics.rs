@@ -46,6 +46,13 @@
 //! | JS041 | number forms outside ES5: `0b101`, `0o17`, `10n`, legacy octal `010` |
 //! | JS042 | a comma after the last argument or parameter |
 //! | JS043 | empty slots in an array literal (`[1, , 2]`) |
+//! | JS100 | the post could not be turned into a script (a construct the Rhai translation lacks); report it |
+//! | JS101 | a property postc does not know in `createFormat`/`createVariable`/`globals`/`PostInfo`; it is ignored |
+//! | JS102 | a name the post never defines and postc's host does not provide |
+//! | JS103 | `decimalMark` is neither `.` nor `,` |
+//! | JS104 | a format asks for more than 15 decimals |
+//! | JS105 | the post has no `onLinear`, so moves print nothing |
+//! | JS106 | the post assigns to the name of a function |
 
 use postc_ir::{Diagnostic, FileId, Span};
 

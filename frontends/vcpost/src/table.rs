@@ -43,6 +43,7 @@
 //! | PT013 | error | a #Save row not right after a #Cycle row |
 //! | PT014 | error | a #Retract row not after a #Cycle or #Save row |
 //! | PT015 | warning | a table without rows |
+//! | PT016 | error | `postc probe-table` on a post with no probe-cycle Subs (no keyword comments) |
 
 use postc_ir::{CallValue, Diagnostic, FileId, MissingSub, Post, Span, SubCall};
 

@@ -178,9 +178,9 @@ impl ScriptHost {
                 Diagnostic::error("RT004", format!("calls nest too deep in `{name}` (endless recursion?)"))
             }
             EvalAltResult::ErrorRuntime(v, _) => {
-                Diagnostic::error("RT020", format!("the post stopped with an error: {}", values::to_string(v)))
+                Diagnostic::error("RT023", format!("the post stopped with an error: {}", values::to_string(v)))
             }
-            other => Diagnostic::error("RT020", format!("the post stopped with an error: {}", message(other))),
+            other => Diagnostic::error("RT023", format!("the post stopped with an error: {}", message(other))),
         };
         let label = if inner.to_string().contains("many operations") { "this loop did not finish" } else { "while running this" };
         match span {
