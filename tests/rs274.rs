@@ -11,7 +11,6 @@
 //! `.ci/run` installs rs274; without it the test says it is skipped.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use postc_ir::event::{ArcDir, Event};
 use postc_ir::{EventSource, Post, Quantity, SourceMap, ValueSource};
@@ -25,20 +24,9 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn rs274() -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path).map(|d| d.join("rs274")).find(|p| p.is_file())
-}
+mod rs274_common;
 
-/// A move as rs274 reports it.
-#[derive(Debug, Clone, Copy)]
-enum Canon {
-    /// X Y Z A B C.
-    Traverse([f64; 6]),
-    Feed([f64; 6]),
-    /// End point, centre (x, y), rotation (+1 counter-clockwise).
-    Arc([f64; 6], [f64; 2], i32),
-}
+use rs274_common::{Kind, Motion};
 
 /// A move the toolpath asks for.
 #[derive(Debug, Clone, Copy)]
@@ -47,53 +35,6 @@ enum Expected {
     Traverse([f64; 6]),
     Feed([f64; 6]),
     Arc([f64; 6], [f64; 2], ArcDir),
-}
-
-fn numbers(args: &str) -> Vec<f64> {
-    args.split(',').filter_map(|a| a.trim().parse().ok()).collect()
-}
-
-/// Runs rs274 on a program; returns its moves or the lines it complained with.
-fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Canon>, String> {
-    let output = Command::new(rs274)
-        .args(["-g", "-t"])
-        .arg(root().join("corpus/tool.tbl"))
-        .arg(program)
-        .output()
-        .map_err(|e| format!("cannot run rs274: {e}"))?;
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    let mut moves = Vec::new();
-    let mut complaints = Vec::new();
-    for line in stdout.lines().chain(stderr.lines()) {
-        let line = line.trim();
-        // Canonical calls read `<count> N<block or .....> CALL(args)`.
-        let mut words = line.splitn(3, char::is_whitespace);
-        let call = match (words.next(), words.next(), words.next()) {
-            (Some(count), Some(block), Some(call)) if count.bytes().all(|b| b.is_ascii_digit()) && block.starts_with('N') => {
-                call.trim()
-            }
-            _ => {
-                if !line.is_empty() && line != "executing" {
-                    complaints.push(line.to_string());
-                }
-                continue;
-            }
-        };
-        let call = call.trim_end_matches("executing");
-        let Some((name, args)) = call.split_once('(') else { continue };
-        let n = numbers(args.trim_end_matches(')'));
-        match name {
-            "STRAIGHT_TRAVERSE" if n.len() >= 6 => moves.push(Canon::Traverse([n[0], n[1], n[2], n[3], n[4], n[5]])),
-            "STRAIGHT_FEED" if n.len() >= 6 => moves.push(Canon::Feed([n[0], n[1], n[2], n[3], n[4], n[5]])),
-            "ARC_FEED" if n.len() >= 9 => moves.push(Canon::Arc([n[0], n[1], n[5], n[6], n[7], n[8]], [n[2], n[3]], n[4] as i32)),
-            _ => {}
-        }
-    }
-    if !output.status.success() || !complaints.is_empty() {
-        return Err(format!("rs274 exit {:?}: {}", output.status.code(), complaints.join(" | ")));
-    }
-    Ok(moves)
 }
 
 /// How a wrapped post prints an axis: the axis index that turns into A, the
@@ -172,13 +113,14 @@ fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
 }
 
 /// Whether an rs274 move is the expected one.
-fn matches(e: &Expected, c: &Canon, tol: f64) -> bool {
-    match (e, c) {
-        (Expected::Traverse(p), Canon::Traverse(q)) | (Expected::Feed(p), Canon::Feed(q)) => close(*p, *q, tol),
-        (Expected::Arc(p, _, _), Canon::Feed(q)) => close(*p, *q, tol),
-        (Expected::Arc(p, centre, dir), Canon::Arc(q, cq, rotation)) => {
+fn matches(e: &Expected, c: &Motion, tol: f64) -> bool {
+    match (e, c.kind) {
+        (Expected::Traverse(p), Kind::Traverse) | (Expected::Feed(p), Kind::Feed) | (Expected::Arc(p, _, _), Kind::Feed) => {
+            close(*p, c.end, tol)
+        }
+        (Expected::Arc(p, centre, dir), Kind::Arc { centre: cq, rotation }) => {
             let turn = if *dir == ArcDir::Ccw { 1 } else { -1 };
-            close(*p, *q, tol) && (!centre[0].is_finite() || close(*centre, *cq, 2.0 * tol)) && *rotation == turn
+            close(*p, c.end, tol) && (!centre[0].is_finite() || close(*centre, cq, 2.0 * tol)) && rotation == turn
         }
         _ => false,
     }
@@ -196,11 +138,10 @@ fn tolerance(post: &Post) -> f64 {
 
 #[test]
 fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
-    let Some(rs274) = rs274() else {
+    let Some(rs274) = rs274_common::find() else {
         println!("skipped: rs274 not found on PATH (bash .ci/run installs it from Debian's linuxcnc-uspace)");
         return;
     };
-    let dir = tempfile::tempdir().unwrap();
     let mut toolpaths: Vec<PathBuf> = std::fs::read_dir(root().join("corpus/toolpaths"))
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -241,9 +182,7 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
             if program.len() != 1 {
                 continue; // tape-split programs are checked part by part elsewhere
             }
-            let file = dir.path().join("program.ngc");
-            std::fs::write(&file, &program[0]).unwrap();
-            let actual = match interpret(&rs274, &file) {
+            let actual = match rs274_common::run(&rs274, &String::from_utf8_lossy(&program[0])) {
                 Ok(m) => m,
                 Err(e) => {
                     failures.push(format!("{label}: {e}"));

@@ -15,7 +15,6 @@
 //! `../shared/corpus` only the native toolpaths are checked.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use postc_ir::event::{ArcDir, Event, Plane};
 use postc_ir::{EventSource, Post, SourceMap};
@@ -25,10 +24,9 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn rs274() -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path).map(|d| d.join("rs274")).find(|p| p.is_file())
-}
+mod rs274_common;
+
+use rs274_common::{Kind, Motion, axes};
 
 /// A move: kind (0 traverse, 1 feed, 2 arc), end point, arc centre in plane
 /// coordinates, arc rotation (+1 counter-clockwise), plane.
@@ -41,64 +39,15 @@ struct Move {
     plane: Plane,
 }
 
-/// Axis indices of a plane's first and second axes and its normal, as the
-/// canonical ARC_FEED orders them.
-fn axes(plane: Plane) -> [usize; 3] {
-    match plane {
-        Plane::Xy => [0, 1, 2],
-        Plane::Yz => [1, 2, 0],
-        Plane::Zx => [2, 0, 1],
-    }
-}
-
-fn numbers(args: &str) -> Vec<f64> {
-    args.split(',').filter_map(|a| a.trim().parse().ok()).collect()
-}
-
-/// Runs rs274; its moves, or the lines it complained with.
-fn interpret(rs274: &Path, program: &Path) -> Result<Vec<Move>, String> {
-    let output = Command::new(rs274)
-        .args(["-g", "-t"])
-        .arg(root().join("corpus/tool.tbl"))
-        .arg(program)
-        .output()
-        .map_err(|e| format!("cannot run rs274: {e}"))?;
-    let (stdout, stderr) = (String::from_utf8_lossy(&output.stdout), String::from_utf8_lossy(&output.stderr));
-    let (mut moves, mut complaints, mut plane) = (Vec::new(), Vec::new(), Plane::Xy);
-    for line in stdout.lines().chain(stderr.lines()) {
-        let line = line.trim();
-        let mut words = line.splitn(3, char::is_whitespace);
-        let call = match (words.next(), words.next(), words.next()) {
-            (Some(n), Some(block), Some(call)) if n.bytes().all(|b| b.is_ascii_digit()) && block.starts_with('N') => call.trim(),
-            _ => {
-                if !line.is_empty() && line != "executing" {
-                    complaints.push(line.to_string());
-                }
-                continue;
-            }
-        };
-        let Some((name, args)) = call.trim_end_matches("executing").split_once('(') else { continue };
-        let n = numbers(args.trim_end_matches(')'));
-        let line_move = |kind| Move { kind, end: [n[0], n[1], n[2]], centre: [0.0; 2], rotation: 0, plane };
-        match name {
-            "SELECT_PLANE" if args.contains("YZ") => plane = Plane::Yz,
-            "SELECT_PLANE" if args.contains("XZ") => plane = Plane::Zx,
-            "SELECT_PLANE" => plane = Plane::Xy,
-            "STRAIGHT_TRAVERSE" if n.len() >= 3 => moves.push(line_move(0)),
-            "STRAIGHT_FEED" if n.len() >= 3 => moves.push(line_move(1)),
-            "ARC_FEED" if n.len() >= 6 => {
-                let [u, v, w] = axes(plane);
-                let mut end = [0.0; 3];
-                (end[u], end[v], end[w]) = (n[0], n[1], n[5]);
-                moves.push(Move { kind: 2, end, centre: [n[2], n[3]], rotation: n[4] as i32, plane });
-            }
-            _ => {}
+impl From<&Motion> for Move {
+    fn from(m: &Motion) -> Move {
+        let end = [m.end[0], m.end[1], m.end[2]];
+        match m.kind {
+            Kind::Traverse => Move { kind: 0, end, centre: [0.0; 2], rotation: 0, plane: m.plane },
+            Kind::Feed => Move { kind: 1, end, centre: [0.0; 2], rotation: 0, plane: m.plane },
+            Kind::Arc { centre, rotation } => Move { kind: 2, end, centre, rotation, plane: m.plane },
         }
     }
-    if !output.status.success() || !complaints.is_empty() {
-        return Err(format!("rs274 exit {:?}: {}", output.status.code(), complaints.join(" | ")));
-    }
-    Ok(moves)
 }
 
 /// The toolpath's moves, leaving out moves to where the tool already is;
@@ -174,7 +123,7 @@ fn toolpaths() -> Vec<PathBuf> {
 
 #[test]
 fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
-    let Some(rs274) = rs274() else {
+    let Some(rs274) = rs274_common::find() else {
         println!("skipped: rs274 not found on PATH (bash .ci/run installs it)");
         return;
     };
@@ -183,7 +132,6 @@ fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
     assert!(compiled.diagnostics.is_empty(), "{:?}", compiled.diagnostics);
     let post = compiled.post.unwrap();
     let tol = 1e-4 + 1e-4;
-    let dir = tempfile::tempdir().unwrap();
     let (mut checked, mut failures) = (0, Vec::new());
     for toolpath in toolpaths() {
         let label = toolpath.file_name().unwrap().to_string_lossy().into_owned();
@@ -195,10 +143,8 @@ fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
                 continue;
             }
         };
-        let file = dir.path().join("program.ngc");
-        std::fs::write(&file, &program).unwrap();
-        let actual = match interpret(&rs274, &file) {
-            Ok(m) => m,
+        let actual: Vec<Move> = match rs274_common::run(&rs274, &String::from_utf8_lossy(&program)) {
+            Ok(m) => m.iter().map(Move::from).collect(),
             Err(e) => {
                 failures.push(format!("{label}: {e}"));
                 continue;

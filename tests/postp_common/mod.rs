@@ -4,6 +4,9 @@
 
 #![allow(dead_code)]
 
+#[path = "../rs274_common/mod.rs"]
+mod rs274_common;
+
 use std::path::{Path, PathBuf};
 
 use postc::postp::{Controller, Settings, post};
@@ -95,42 +98,14 @@ pub fn check(name: &str, machine: &str, body: &str) -> Run {
 
 /// LinuxCNC's rs274, when it is on PATH.
 pub fn rs274() -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path).map(|d| d.join("rs274")).find(|p| p.is_file())
+    rs274_common::find()
 }
 
 /// Runs rs274 on a program: its complaints (empty when it reads cleanly)
 /// and the number of moves it made (traverses, feeds, arcs).
 pub fn interpret(rs274: &Path, program: &str) -> (Vec<String>, usize) {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("program.ngc");
-    std::fs::write(&file, program).unwrap();
-    // rs274 keeps its parameter file in the working folder: one folder per run.
-    let out = std::process::Command::new(rs274)
-        .current_dir(dir.path())
-        .args(["-g", "-t"])
-        .arg(root().join("corpus/tool.tbl"))
-        .arg(&file)
-        .output()
-        .unwrap();
-    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    let mut complaints = Vec::new();
-    let mut moves = 0;
-    for line in text.lines().map(str::trim) {
-        let mut words = line.splitn(3, char::is_whitespace);
-        match (words.next(), words.next(), words.next()) {
-            (Some(n), Some(b), Some(call)) if n.bytes().all(|c| c.is_ascii_digit()) && b.starts_with('N') => {
-                let call = call.trim();
-                if call.starts_with("STRAIGHT_TRAVERSE") || call.starts_with("STRAIGHT_FEED") || call.starts_with("ARC_FEED") {
-                    moves += 1;
-                }
-            }
-            _ if line.is_empty() || line == "executing" => {}
-            _ => complaints.push(line.to_string()),
-        }
+    match rs274_common::run(rs274, program) {
+        Ok(moves) => (Vec::new(), moves.len()),
+        Err(complaint) => (vec![complaint], 0),
     }
-    if !out.status.success() && complaints.is_empty() {
-        complaints.push(format!("rs274 exit {:?}", out.status.code()));
-    }
-    (complaints, moves)
 }
