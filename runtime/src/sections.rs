@@ -539,13 +539,25 @@ impl SectionDispatch {
         if reference < clear {
             self.rapid_to(eng, [at[0], at[1], reference])?;
         }
-        let peck = cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
+        let mut peck = cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
+        if let Some(p) = peck
+            && (reference - depth) / p > f64::from(MAX_PECKS)
+        {
+            eng.warn_once(
+                Diagnostic::warning(
+                    "RT018",
+                    format!("a peck of {p} would need more than {MAX_PECKS} pecks for this hole; it is drilled in {MAX_PECKS}"),
+                )
+                .at(eng.event_span, "this hole"),
+            );
+            peck = Some((reference - depth) / f64::from(MAX_PECKS));
+        }
         let mut z = reference;
         while let Some(step) = peck.filter(|_| z - depth > 1e-9) {
             z = (z - step).max(depth);
             self.feed_to(eng, [at[0], at[1], z], Intent::Plunge, feed)?;
             if z > depth {
-                let back = if cycle.kind == DrillKind::Deep { reference } else { z + step.min(0.5 * step) };
+                let back = if cycle.kind == DrillKind::Deep { reference } else { z + 0.5 * step };
                 self.rapid_to(eng, [at[0], at[1], back])?;
                 self.rapid_to(eng, [at[0], at[1], z])?;
             }
@@ -590,6 +602,9 @@ impl SectionDispatch {
         Ok(())
     }
 }
+
+/// A longhand peck cycle drills a hole in at most this many pecks.
+const MAX_PECKS: u32 = 1_000;
 
 /// Linearized arcs are cut into at most this many chords.
 const MAX_CHORDS: u32 = 10_000;
