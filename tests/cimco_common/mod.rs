@@ -1,12 +1,14 @@
 //! What the CIMCO corpus tests share: the corpus posts, the toolpaths each
 //! posts (milling posts the milling, drilling and standard jobs; lathe
 //! posts the lathe job), posting into memory, JSON Lines export of a
-//! toolpath for the Node.js referee, and a readable diff.
+//! toolpath for the Node.js referee, running that referee, and a readable
+//! diff. Also used by `benches/cimco_vs_node.rs`.
 
 #![allow(dead_code)]
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::process::Command;
 
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{EventSource, Post, SourceMap};
@@ -116,4 +118,30 @@ pub fn diff(expected: &[u8], actual: &[u8]) -> String {
         }
     }
     out
+}
+
+/// The installed Node.js version, if `node` is on PATH.
+pub fn node() -> Option<String> {
+    let out = Command::new("node").arg("--version").output().ok()?;
+    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+/// The referee host that runs a CIMCO post under Node.js.
+pub fn host_script() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/run.js")
+}
+
+/// Runs a post under Node.js over a JSON Lines toolpath; its output.
+pub fn run_node(post: &Path, jsonl: &Path, extra: &[&str]) -> Result<Vec<u8>, String> {
+    let out = Command::new("node")
+        .arg(host_script())
+        .arg(post)
+        .arg(jsonl)
+        .args(extra)
+        .output()
+        .map_err(|e| format!("cannot run node: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("node failed:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(out.stdout)
 }
