@@ -246,6 +246,13 @@ impl<'p> Engine<'p> {
             None => self.out.buf.extend_from_slice(&self.post.options.line_ending),
         }
         self.out.end_block();
+        self.advance_block_number();
+    }
+
+    /// After a block that printed `[N]`: the next block number, wrapping
+    /// past the maximum to the start.
+    #[inline]
+    pub(crate) fn advance_block_number(&mut self) {
         if self.block.printed {
             self.block.printed = false;
             let b = self.post.options.block_numbers;

@@ -209,22 +209,7 @@ impl NumberWriter {
             }
         }
         if m > 0 || self.leading_zero || self.decimals == 0 {
-            while m >= 100 {
-                let pair = (m % 100) as usize * 2;
-                m /= 100;
-                i -= 2;
-                buf[i] = PAIRS[pair];
-                buf[i + 1] = PAIRS[pair + 1];
-            }
-            if m >= 10 {
-                let pair = m as usize * 2;
-                i -= 2;
-                buf[i] = PAIRS[pair];
-                buf[i + 1] = PAIRS[pair + 1];
-            } else {
-                i -= 1;
-                buf[i] = b'0' + m as u8;
-            }
+            i = digits_before(m, &mut buf, i);
         }
         if r.negative {
             i -= 1;
@@ -384,25 +369,32 @@ fn append_word(out: &mut Vec<u8>, buf: &[u8; WORD_END + WINDOW], start: usize) {
 
 /// Writes the decimal digits of `m` at the end of `tmp`; returns where they start.
 #[inline]
-fn write_digits(mut m: u64, tmp: &mut [u8; 24]) -> usize {
-    let mut n = 24;
+fn write_digits(m: u64, tmp: &mut [u8; 24]) -> usize {
+    digits_before(m, tmp, 24)
+}
+
+/// Writes the decimal digits of `m` (at least one) right to left so that
+/// they end at `end`, two at a time; returns where they start.
+#[inline]
+fn digits_before<const N: usize>(mut m: u64, buf: &mut [u8; N], end: usize) -> usize {
+    let mut i = end;
     while m >= 100 {
-        let d = (m % 100) as usize * 2;
+        let pair = (m % 100) as usize * 2;
         m /= 100;
-        n -= 2;
-        tmp[n] = PAIRS[d];
-        tmp[n + 1] = PAIRS[d + 1];
+        i -= 2;
+        buf[i] = PAIRS[pair];
+        buf[i + 1] = PAIRS[pair + 1];
     }
     if m >= 10 {
-        let d = m as usize * 2;
-        n -= 2;
-        tmp[n] = PAIRS[d];
-        tmp[n + 1] = PAIRS[d + 1];
+        let pair = m as usize * 2;
+        i -= 2;
+        buf[i] = PAIRS[pair];
+        buf[i + 1] = PAIRS[pair + 1];
     } else {
-        n -= 1;
-        tmp[n] = b'0' + m as u8;
+        i -= 1;
+        buf[i] = b'0' + m as u8;
     }
-    n
+    i
 }
 
 /// Two-digit pairs "00" to "99".

@@ -43,14 +43,7 @@ impl Engine<'_> {
         }
         for _ in 0..lines {
             self.out.end_block();
-            if self.block.printed {
-                self.block.printed = false;
-                let b = self.post.options.block_numbers;
-                self.block.next += b.increment;
-                if self.block.next > b.maximum {
-                    self.block.next = b.start;
-                }
-            }
+            self.advance_block_number();
         }
     }
 }
