@@ -6,17 +6,17 @@
 
 #![allow(dead_code)]
 
-use std::fmt::Write as _;
+#[path = "../golden_common/mod.rs"]
+mod golden_common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+#[allow(unused_imports)]
+pub use golden_common::{compile, corpus, diff, post_parts, stem};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{EventSource, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
 
-pub fn corpus() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus")
-}
 
 /// The corpus CIMCO posts, sorted.
 pub fn posts() -> Vec<PathBuf> {
@@ -40,36 +40,11 @@ pub fn toolpaths(post: &Post) -> Vec<PathBuf> {
     }
 }
 
-pub fn stem(path: &Path) -> String {
-    path.file_stem().expect("a file name").to_string_lossy().into_owned()
-}
 
-/// Compiles a corpus post; any diagnostic is a failure.
-pub fn compile(path: &Path) -> Result<Post, String> {
-    let mut sources = SourceMap::new();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
-    if !compiled.diagnostics.is_empty() {
-        let list: Vec<String> = compiled.diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
-        return Err(format!("{} does not compile cleanly:\n{}", path.display(), list.join("\n")));
-    }
-    compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
-}
 
-/// Posts a toolpath into memory (one part).
+/// Posts a toolpath into memory: the whole program.
 pub fn post_toolpath(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources)
-        .map_err(|d| format!("cannot open {}: {} {}", toolpath.display(), d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
-        Ok(report) => match report.output {
-            Finished::Memory(mut parts) if parts.len() == 1 => Ok(parts.remove(0)),
-            _ => Err("the run did not give one part in memory".into()),
-        },
-        Err(diagnostics) => {
-            let list: Vec<String> = diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
-            Err(format!("posting failed:\n{}", list.join("\n")))
-        }
-    }
+    post_parts(post, toolpath).map(|parts| parts.concat())
 }
 
 /// Writes a toolpath as JSON Lines (the referee host's input).
@@ -84,41 +59,7 @@ pub fn export_jsonl(toolpath: &Path, target: &Path) -> Result<(), String> {
     std::fs::write(target, text).map_err(|e| e.to_string())
 }
 
-fn show(line: &[u8]) -> String {
-    let mut s = String::new();
-    for c in String::from_utf8_lossy(line).chars() {
-        match c {
-            '\r' => s.push_str("\\r"),
-            '\n' => s.push_str("\\n"),
-            c => s.push(c),
-        }
-    }
-    s
-}
 
-/// The first differing lines of two programs, with context.
-pub fn diff(expected: &[u8], actual: &[u8]) -> String {
-    let e: Vec<&[u8]> = expected.split_inclusive(|&b| b == b'\n').collect();
-    let a: Vec<&[u8]> = actual.split_inclusive(|&b| b == b'\n').collect();
-    let first = e.iter().zip(&a).position(|(x, y)| x != y).unwrap_or(e.len().min(a.len()));
-    let mut out = format!("  first difference at line {} ({} vs {} lines)\n", first + 1, e.len(), a.len());
-    for i in first.saturating_sub(2)..(first + 4).min(e.len().max(a.len())) {
-        match (e.get(i), a.get(i)) {
-            (Some(x), Some(y)) if x == y => {
-                let _ = writeln!(out, "    {:>5}   {}", i + 1, show(x));
-            }
-            (x, y) => {
-                if let Some(x) = x {
-                    let _ = writeln!(out, "    {:>5} - {}", i + 1, show(x));
-                }
-                if let Some(y) = y {
-                    let _ = writeln!(out, "    {:>5} + {}", i + 1, show(y));
-                }
-            }
-        }
-    }
-    out
-}
 
 /// The installed Node.js version, if `node` is on PATH.
 pub fn node() -> Option<String> {
