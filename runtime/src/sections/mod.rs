@@ -29,11 +29,14 @@
 //!   that starts at a toolpath boundary starts like a program: the header
 //!   carries the tool and toolpath, with no TOOLCHANGE or NEW_SEGMENT.
 
-use postc_ir::event::{ArcDir, ArcMove, DrillCycle, DrillKind, DrillPoint, Event, FeedMove, Intent, Move, Plane};
+use postc_ir::event::{ArcDir, DrillCycle, Event, FeedMove, Intent, Move};
 use postc_ir::{Diagnostic, Quantity, Section};
 
+mod arcs;
+mod drill;
+mod tape;
+
 use crate::engine::Engine;
-use crate::geometry::ArcGeometry;
 
 type Result<T> = std::result::Result<T, Box<Diagnostic>>;
 
@@ -285,19 +288,6 @@ impl SectionDispatch {
         Ok(())
     }
 
-    /// Ends the current tape-split part with the footer when a split is
-    /// due; the next part starts (with the header) at its first block.
-    fn split_if_pending(&mut self, eng: &mut Engine) -> Result<()> {
-        if !self.split_pending {
-            return Ok(());
-        }
-        self.split_pending = false;
-        eng.run_section(Section::Footer)?;
-        eng.out.new_part();
-        self.started = false;
-        Ok(())
-    }
-
     fn start_program(&mut self, eng: &mut Engine) -> Result<()> {
         eng.run_section(Section::Header)?;
         self.spindle_on = Self::spindle_tool(eng) && eng.run_section(Section::SpindleOn)?;
@@ -410,103 +400,6 @@ impl SectionDispatch {
         Ok(())
     }
 
-    fn arc(&mut self, eng: &mut Engine, a: &ArcMove) -> Result<()> {
-        let start = eng.machine.pos;
-        let end = Self::point(eng, a.x, a.y, a.z);
-        let centre = Self::point(eng, a.cx, a.cy, a.cz);
-        let geometry = ArcGeometry::new(start, end, centre, a.dir, a.plane);
-        let feed = a.feed.map(|f| eng.machine.len(f));
-        let options = &eng.post.options;
-        let unit = eng.machine.output_units.factor_to(postc_ir::Units::Mm).recip();
-        if options.min_arc_radius.is_some_and(|min| geometry.radius < min) {
-            return self.feed_to(eng, end, a.intent, feed);
-        }
-        let too_big = options.max_arc_radius.is_some_and(|max| geometry.radius > max);
-        let tolerance = options.arc_tolerance * unit;
-        if too_big || a.plane != Plane::Xy || !geometry.radius.is_finite() || geometry.radius <= 0.0 {
-            return self.linearize(eng, &geometry, a.intent, feed, tolerance);
-        }
-        let Some((family, section)) = self.arc_section(eng, &geometry, a) else {
-            return self.linearize(eng, &geometry, a.intent, feed, tolerance);
-        };
-        let feed = Self::feed_for(eng, a.intent, feed);
-        eng.machine.arc = if self.exact_arcs { self.exact(eng, &geometry, a.dir) } else { geometry };
-        eng.machine.move_from = start;
-        eng.machine.move_length = Some(geometry.length());
-        eng.machine.pos = end;
-        self.print_feed_section(eng, family, Some(section), feed)?;
-        self.after_move(eng, false)
-    }
-
-    /// The section an arc prints through, or `None` to linearize it.
-    fn arc_section(&self, eng: &Engine, g: &ArcGeometry, a: &ArcMove) -> Option<(Family, Section)> {
-        let feed = Self::feed_for(eng, a.intent, a.feed.map(|f| eng.machine.len(f)));
-        let first = |fam: Family| self.family != fam || self.last_feed != Some(feed);
-        let cw = a.dir == ArcDir::Cw;
-        let flat = if cw { (Section::FirstCwArcMove, Section::CwArcMove) } else { (Section::FirstCcwArcMove, Section::CcwArcMove) };
-        if g.is_helical() {
-            if a.intent == Intent::Plunge {
-                let (f, p) = if cw {
-                    (Section::FirstCwHelicalArcPlungeMove, Section::CwHelicalArcPlungeMove)
-                } else {
-                    (Section::FirstCcwHelicalArcPlungeMove, Section::CcwHelicalArcPlungeMove)
-                };
-                let fam = Family::Arc(a.dir, Helix::Plunge);
-                if let Some(s) = pick(eng, f, p, first(fam)) {
-                    return Some((fam, s));
-                }
-            }
-            let (f, p) = if cw {
-                (Section::FirstCwHelicalArcMove, Section::CwHelicalArcMove)
-            } else {
-                (Section::FirstCcwHelicalArcMove, Section::CcwHelicalArcMove)
-            };
-            let fam = Family::Arc(a.dir, Helix::Helical);
-            if let Some(s) = pick(eng, f, p, first(fam)) {
-                return Some((fam, s));
-            }
-            let fam = Family::Arc(a.dir, Helix::Flat);
-            let s = pick(eng, flat.0, flat.1, first(fam))?;
-            return eng.section_prints(s, Quantity::Z).then_some((fam, s));
-        }
-        let fam = Family::Arc(a.dir, Helix::Flat);
-        pick(eng, flat.0, flat.1, first(fam)).map(|s| (fam, s))
-    }
-
-    /// The arc as the controller reads it: printed start and end points and
-    /// a centre equidistant from both.
-    fn exact(&self, eng: &Engine, g: &ArcGeometry, dir: ArcDir) -> ArcGeometry {
-        let printed = |p: [f64; 3]| {
-            let mut q = p;
-            for (axis, format) in self.xy_formats.iter().enumerate() {
-                if let Some(f) = format {
-                    q[axis] = eng.writers[*f as usize].printed_value(p[axis]);
-                }
-            }
-            q
-        };
-        g.exact(printed(g.start), printed(g.end), dir)
-    }
-
-    fn linearize(&mut self, eng: &mut Engine, g: &ArcGeometry, intent: Intent, feed: Option<f64>, tol: f64) -> Result<()> {
-        let mut n = g.segments(tol);
-        if n > MAX_CHORDS {
-            eng.warn_once(
-                Diagnostic::warning(
-                    "RT017",
-                    format!("an arc of radius {:.3} needs more than {MAX_CHORDS} chords to stay within the tolerance; it is cut into {MAX_CHORDS}", g.radius),
-                )
-                .at(eng.event_span, "this arc"),
-            );
-            n = MAX_CHORDS;
-        }
-        for i in 1..=n {
-            let p = g.point_at(f64::from(i) / f64::from(n));
-            self.feed_to(eng, p, intent, feed)?;
-        }
-        Ok(())
-    }
-
     fn dwell(&mut self, eng: &mut Engine) -> Result<()> {
         if !eng.run_section(Section::DwellMove)? {
             eng.warn_once(Diagnostic::warning("RT010", "the post has no DWELL_MOVE section, so dwells are skipped"));
@@ -514,93 +407,6 @@ impl SectionDispatch {
         Ok(())
     }
 
-    /// One hole: through DRILL_POINT, or as moves when the post has no drilling sections.
-    fn drill_point(&mut self, eng: &mut Engine, p: DrillPoint) -> Result<()> {
-        let at = Self::point(eng, p.x, p.y, p.z);
-        if eng.has(Section::DrillPoint) {
-            eng.machine.pos = at;
-            eng.run_section(Section::DrillPoint)?;
-            return Ok(());
-        }
-        let Some(cycle) = self.drill.clone() else {
-            return Err(Box::new(
-                Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle").at(eng.event_span, "this hole"),
-            ));
-        };
-        let factor = eng.machine.factor;
-        let len = |v: f64| v * factor;
-        let (clear, reference, depth) = (len(cycle.retract_plane), len(cycle.reference_plane), len(cycle.depth));
-        let feed = cycle.feed.map(len);
-        let pos = eng.machine.pos;
-        if pos[2] < clear {
-            self.rapid_to(eng, [pos[0], pos[1], clear])?;
-        }
-        self.rapid_to(eng, [at[0], at[1], clear])?;
-        if reference < clear {
-            self.rapid_to(eng, [at[0], at[1], reference])?;
-        }
-        let mut peck = cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
-        if let Some(p) = peck
-            && (reference - depth) / p > f64::from(MAX_PECKS)
-        {
-            eng.warn_once(
-                Diagnostic::warning(
-                    "RT018",
-                    format!("a peck of {p} would need more than {MAX_PECKS} pecks for this hole; it is drilled in {MAX_PECKS}"),
-                )
-                .at(eng.event_span, "this hole"),
-            );
-            peck = Some((reference - depth) / f64::from(MAX_PECKS));
-        }
-        let mut z = reference;
-        while let Some(step) = peck.filter(|_| z - depth > 1e-9) {
-            z = (z - step).max(depth);
-            self.feed_to(eng, [at[0], at[1], z], Intent::Plunge, feed)?;
-            if z > depth {
-                let back = if cycle.kind == DrillKind::Deep { reference } else { z + 0.5 * step };
-                self.rapid_to(eng, [at[0], at[1], back])?;
-                self.rapid_to(eng, [at[0], at[1], z])?;
-            }
-        }
-        if peck.is_none() {
-            self.feed_to(eng, [at[0], at[1], depth], Intent::Plunge, feed)?;
-        }
-        if let Some(d) = cycle.dwell.filter(|d| *d > 0.0) {
-            eng.machine.dwell = d;
-            self.dwell(eng)?;
-        }
-        self.rapid_to(eng, [at[0], at[1], clear])
-    }
-
-    /// Tape splitting after a move.
-    fn after_move(&mut self, eng: &mut Engine, retract: bool) -> Result<()> {
-        let Some(tape) = &eng.post.options.tape_splitting else { return Ok(()) };
-        let blocks = eng.out.blocks_in_part();
-        // A retract that stops below safe Z (a peck back to the R plane, a
-        // feed retract before the rapid up) is no place to end a part: the
-        // next part would start from the header's position with a move
-        // down into the cut.
-        let clear = eng.machine.job.safe_z.is_none_or(|z| eng.machine.pos[2] >= z - 1e-9 * z.abs().max(1.0));
-        let soft = retract && clear && blocks + tape.tolerance >= tape.max_lines;
-        let hard = blocks >= tape.max_lines;
-        if !(soft || hard) {
-            return Ok(());
-        }
-        if self.split_pending {
-            return Ok(());
-        }
-        if hard && !soft {
-            eng.warn_once(Diagnostic::warning(
-                "RT014",
-                format!(
-                    "a part reached {} lines with no retract in its last {}; it was split inside a cut",
-                    tape.max_lines, tape.tolerance
-                ),
-            ).help("raise the TAPE_SPLITTING tolerance so that a retract falls inside it"));
-        }
-        self.split_pending = true;
-        Ok(())
-    }
 }
 
 /// A longhand peck cycle drills a hole in at most this many pecks.
@@ -651,160 +457,4 @@ fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
 }
 
 #[cfg(test)]
-mod tests {
-    use postc_ir::event::{Job, Tool, ToolpathStart, VecSource};
-    use postc_ir::post::TapeSplitting;
-    use postc_ir::{FileId, Handler, HandlerKey, NumberFormat, Piece, Post, Stmt, ValueSource, Variable};
-
-    use super::*;
-    use crate::{Finished, Output, RunOptions};
-
-    /// A post that prints each section's name and, for moves, Z; split
-    /// into parts of at most `max` blocks, at a retract once a part has
-    /// `max - tolerance`.
-    fn tape_post(max_lines: u64, tolerance: u64) -> Post {
-        let mut post = Post::default();
-        post.formats.push(NumberFormat { decimals: 0, ..NumberFormat::default() });
-        post.variables.push(Variable {
-            name: "Z".into(),
-            source: ValueSource::Quantity(Quantity::Z),
-            prefix: b"Z".to_vec(),
-            format: 0,
-            modality: postc_ir::Modality::Always,
-        });
-        post.variables.push(Variable {
-            name: "T".into(),
-            source: ValueSource::Quantity(Quantity::Tool),
-            prefix: b"T".to_vec(),
-            format: 0,
-            modality: postc_ir::Modality::Always,
-        });
-        let line = |text: &str, var: Option<u16>| {
-            let mut pieces = vec![Piece::Text(text.as_bytes().to_vec())];
-            pieces.extend(var.map(Piece::Var));
-            Stmt::Line(pieces)
-        };
-        for (section, text, var) in [
-            (Section::Header, "HEADER ", Some(1)),
-            (Section::Footer, "FOOTER ", Some(1)),
-            (Section::ToolChange, "TOOLCHANGE ", Some(1)),
-            (Section::NewSegment, "NEW_SEGMENT", None),
-            (Section::RapidMove, "RAPID ", Some(0)),
-            (Section::FeedMove, "FEED ", Some(0)),
-        ] {
-            post.handlers.push(Handler { key: HandlerKey::Section(section), body: vec![line(text, var)], span: None });
-        }
-        post.options.tape_splitting = Some(TapeSplitting {
-            max_lines,
-            tolerance,
-            name_format: "%s_%d.nc".into(),
-            start_index: 1,
-            index_on_first_file: true,
-        });
-        post
-    }
-
-    fn parts(post: &Post, events: Vec<Event>) -> Vec<String> {
-        let mut source = VecSource::new(events, FileId(0));
-        let report = crate::run(post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
-        match report.output {
-            Finished::Memory(parts) => parts.into_iter().map(|p| String::from_utf8(p).unwrap()).collect(),
-            _ => unreachable!(),
-        }
-    }
-
-    /// A pass away from home (so its first rapid is no retract) that ends
-    /// with a retract.
-    fn pass(x: f64) -> Vec<Event> {
-        vec![
-            Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
-            Event::Feed(FeedMove { x, y: 0.0, z: -1.0, ..FeedMove::default() }),
-            Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
-        ]
-    }
-
-    fn tool(number: u32) -> Event {
-        Event::Tool(Tool { number, ..Tool::default() })
-    }
-
-    #[test]
-    fn a_split_due_at_the_last_retract_makes_no_empty_part() {
-        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
-        events.extend(pass(1.0));
-        events.push(Event::ToolpathEnd);
-        events.push(Event::End);
-        assert_eq!(parts(&tape_post(4, 2), events), ["HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n"]);
-    }
-
-    #[test]
-    fn a_split_waits_for_the_next_move_and_restarts_with_the_header() {
-        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
-        events.extend(pass(1.0));
-        events.extend(pass(2.0));
-        events.push(Event::End);
-        assert_eq!(
-            parts(&tape_post(4, 2), events),
-            [
-                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
-                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
-            ]
-        );
-    }
-
-    #[test]
-    fn a_split_at_a_tool_change_starts_the_part_like_a_program() {
-        let mut events = vec![Event::Job(Box::default()), tool(1), Event::ToolpathStart(ToolpathStart::default())];
-        events.extend(pass(1.0));
-        events.push(Event::ToolpathEnd);
-        events.push(tool(2));
-        events.push(Event::ToolpathStart(ToolpathStart::default()));
-        events.extend(pass(1.0));
-        events.push(Event::End);
-        // The old part's footer still has tool 1; the new part's header
-        // loads tool 2, with no TOOLCHANGE or NEW_SEGMENT.
-        assert_eq!(
-            parts(&tape_post(4, 2), events),
-            [
-                "HEADER T1\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T1\n",
-                "HEADER T2\nRAPID Z5\nFEED Z-1\nRAPID Z5\nFOOTER T2\n",
-            ]
-        );
-    }
-
-    #[test]
-    fn a_part_ends_only_at_a_retract_that_reaches_safe_z() {
-        let job = Job { safe_z: Some(5.0), ..Job::default() };
-        let mut events = vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default())];
-        for x in [1.0, 2.0] {
-            events.extend([
-                Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
-                Event::Feed(FeedMove { x, y: 0.0, z: -1.0, ..FeedMove::default() }),
-                // A feed retract to just above the surface: no split here,
-                // or the next part would start with the rapid up alone.
-                Event::Feed(FeedMove { x, y: 0.0, z: 0.0, intent: Intent::Retract, ..FeedMove::default() }),
-                Event::Rapid(Move { x, y: 0.0, z: 5.0, ..Move::default() }),
-            ]);
-        }
-        events.push(Event::End);
-        let pass = "RAPID Z5\nFEED Z-1\nFEED Z0\nRAPID Z5\n";
-        assert_eq!(
-            parts(&tape_post(6, 3), events),
-            [format!("HEADER T1\n{pass}FOOTER T1\n"), format!("HEADER T1\n{pass}FOOTER T1\n")]
-        );
-    }
-
-    #[test]
-    fn a_wrapped_post_warns_when_the_job_has_no_wrap_diameter() {
-        let mut post = tape_post(100, 10);
-        post.options.rotary_wrap =
-            Some(postc_ir::post::RotaryWrap { axis: postc_ir::post::WrappedAxis::Y, letter: Some('A'), reversed: false });
-        let run = |job: Job| {
-            let events = vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default()), Event::End];
-            let mut source = VecSource::new(events, FileId(0));
-            let report = crate::run(&post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
-            report.warnings.iter().map(|w| w.code.to_string()).collect::<Vec<_>>()
-        };
-        assert_eq!(run(Job::default()), ["RT015"]);
-        assert!(run(Job { wrap_diameter: Some(40.0), ..Job::default() }).is_empty());
-    }
-}
+mod tests;
