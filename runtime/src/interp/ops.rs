@@ -1,0 +1,230 @@
+//! Operators and built-in functions of the IR's expression language:
+//! arithmetic, comparison (loose and strict), bitwise and text operators
+//! with JavaScript's number conversions where CIMCO needs them, the
+//! built-ins VcPost and CIMCO lower to, and VB-style picture formats.
+
+use std::rc::Rc;
+
+use postc_ir::{BinaryOp, Builtin};
+
+use crate::script::js;
+use crate::value::Value;
+
+pub(super) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
+    use BinaryOp::*;
+    match op {
+        Add => match (a, b) {
+            (Value::Text(_), _) | (_, Value::Text(_)) => concat(a, b),
+            _ => Value::Num(a.num() + b.num()),
+        },
+        Concat => concat(a, b),
+        Sub => Value::Num(a.num() - b.num()),
+        Mul => Value::Num(a.num() * b.num()),
+        Div => Value::Num(a.num() / b.num()),
+        Rem => Value::Num(a.num() % b.num()),
+        Pow => Value::Num(a.num().powf(b.num())),
+        IntDiv => {
+            let d = b.num().round();
+            Value::Num(if d == 0.0 { f64::NAN } else { (a.num().round() / d).trunc() })
+        }
+        Eq | Ne | Lt | Le | Gt | Ge => {
+            let ord = match (a, b) {
+                (Value::Text(x), Value::Text(y)) => x.partial_cmp(y),
+                _ => a.num().partial_cmp(&b.num()),
+            };
+            let r = match op {
+                Eq => ord == Some(std::cmp::Ordering::Equal),
+                Ne => ord != Some(std::cmp::Ordering::Equal),
+                Lt => ord == Some(std::cmp::Ordering::Less),
+                Le => matches!(ord, Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)),
+                Gt => ord == Some(std::cmp::Ordering::Greater),
+                _ => matches!(ord, Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)),
+            };
+            Value::Bool(r)
+        }
+        And => Value::Bool(a.truthy() && b.truthy()),
+        Or => Value::Bool(a.truthy() || b.truthy()),
+        StrictEq => Value::Bool(strict_eq(a, b)),
+        StrictNe => Value::Bool(!strict_eq(a, b)),
+        BitAnd | BitOr | BitXor | Shl | Shr => {
+            let (x, y) = (js::to_int32(js_number(a)), js::to_int32(js_number(b)));
+            let shift = (y as u32) & 31;
+            Value::Num(f64::from(match op {
+                BitAnd => x & y,
+                BitOr => x | y,
+                BitXor => x ^ y,
+                Shl => x.wrapping_shl(shift),
+                _ => x >> shift,
+            }))
+        }
+        UShr => Value::Num(f64::from(js::to_uint32(js_number(a)) >> (js::to_uint32(js_number(b)) & 31))),
+    }
+}
+
+/// JavaScript `===` over the interpreter's values.
+fn strict_eq(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Num(x), Value::Num(y)) => x == y,
+        (Value::Text(x), Value::Text(y)) => x == y,
+        (Value::Bool(x), Value::Bool(y)) => x == y,
+        (Value::Null, Value::Null) => true,
+        _ => false,
+    }
+}
+
+/// A value as JavaScript's `Number()` reads it.
+pub(super) fn js_number(v: &Value) -> f64 {
+    match v {
+        Value::Text(s) => js::text_to_number(s),
+        Value::Null => f64::NAN,
+        other => other.num(),
+    }
+}
+
+fn concat(a: &Value, b: &Value) -> Value {
+    let mut s = String::new();
+    a.append_to(&mut s);
+    b.append_to(&mut s);
+    Value::Text(Rc::from(s))
+}
+
+/// Appends an integer's decimal digits without allocating.
+pub(super) fn push_integer(out: &mut Vec<u8>, n: i64) {
+    let mut buf = [0u8; 20];
+    let mut i = buf.len();
+    let mut m = n.unsigned_abs();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (m % 10) as u8;
+        m /= 10;
+        if m == 0 {
+            break;
+        }
+    }
+    if n < 0 {
+        out.push(b'-');
+    }
+    out.extend_from_slice(&buf[i..]);
+}
+
+/// Rounds half away from zero to `decimals` places.
+fn round_to(v: f64, decimals: f64) -> f64 {
+    let p = 10f64.powi(decimals.clamp(0.0, 15.0) as i32);
+    (v * p).round() / p
+}
+
+pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
+    let n = |i: usize| args.get(i).map_or(0.0, Value::num);
+    let s = |i: usize| args.get(i).map(Value::to_text).unwrap_or_else(|| Rc::from(""));
+    let chars = |t: &str| t.chars().collect::<Vec<_>>();
+    match b {
+        Builtin::Abs => Value::Num(n(0).abs()),
+        Builtin::Sqrt => Value::Num(n(0).sqrt()),
+        Builtin::Sin => Value::Num(n(0).sin()),
+        Builtin::Cos => Value::Num(n(0).cos()),
+        Builtin::Tan => Value::Num(n(0).tan()),
+        Builtin::Atan => Value::Num(n(0).atan()),
+        Builtin::Atan2 => Value::Num(n(0).atan2(n(1))),
+        Builtin::Floor => Value::Num(n(0).floor()),
+        Builtin::Ceil => Value::Num(n(0).ceil()),
+        Builtin::Round => Value::Num(round_to(n(0), n(1))),
+        Builtin::Trunc => Value::Num(n(0).trunc()),
+        Builtin::Min => Value::Num(args.iter().map(Value::num).fold(f64::INFINITY, f64::min)),
+        Builtin::Max => Value::Num(args.iter().map(Value::num).fold(f64::NEG_INFINITY, f64::max)),
+        Builtin::Len => Value::Num(s(0).chars().count() as f64),
+        Builtin::Left => {
+            let c = chars(&s(0));
+            let k = (n(1).max(0.0) as usize).min(c.len());
+            Value::text(&c[..k].iter().collect::<String>())
+        }
+        Builtin::Right => {
+            let c = chars(&s(0));
+            let k = (n(1).max(0.0) as usize).min(c.len());
+            Value::text(&c[c.len() - k..].iter().collect::<String>())
+        }
+        Builtin::Mid => {
+            let c = chars(&s(0));
+            let start = ((n(1).max(1.0) as usize) - 1).min(c.len());
+            let len = if args.len() > 2 { n(2).max(0.0) as usize } else { c.len() };
+            let end = start.saturating_add(len).min(c.len());
+            Value::text(&c[start..end].iter().collect::<String>())
+        }
+        Builtin::Upper => Value::text(&s(0).to_uppercase()),
+        Builtin::Lower => Value::text(&s(0).to_lowercase()),
+        Builtin::Str => Value::Text(args.first().map(Value::to_text).unwrap_or_else(|| Rc::from(""))),
+        Builtin::Val => {
+            let t = s(0);
+            let t = t.trim();
+            let end = t
+                .char_indices()
+                .take_while(|(i, c)| c.is_ascii_digit() || *c == '.' || ((*c == '-' || *c == '+') && *i == 0))
+                .map(|(i, c)| i + c.len_utf8())
+                .last()
+                .unwrap_or(0);
+            Value::Num(t[..end].parse().unwrap_or(0.0))
+        }
+        Builtin::FormatPicture => Value::text(&format_picture(n(0), &s(1))),
+        Builtin::Chr => Value::text(&char::from_u32(n(0) as u32).map(String::from).unwrap_or_default()),
+        Builtin::Asin => Value::Num(n(0).asin()),
+        Builtin::Acos => Value::Num(n(0).acos()),
+        Builtin::Exp => Value::Num(n(0).exp()),
+        Builtin::Log => Value::Num(n(0).ln()),
+        Builtin::JsRound => Value::Num(js::math_round(n(0))),
+        Builtin::ParseInt => Value::Num(js::parse_int(&s(0), n(1))),
+        Builtin::ParseFloat => Value::Num(js::parse_float(&s(0))),
+        Builtin::IsNaN => Value::Bool(args.first().map_or(f64::NAN, js_number).is_nan()),
+        Builtin::ToNumber => Value::Num(args.first().map_or(0.0, js_number)),
+        Builtin::ToFixed => Value::text(&js::to_fixed(args.first().map_or(f64::NAN, js_number), n(1))),
+    }
+}
+
+/// VB-style picture formats: `0.000` (fixed decimals), `#.###` (trimmed),
+/// `0000` (zero-padded integer).
+fn format_picture(v: f64, picture: &str) -> String {
+    let (int_pic, frac_pic) = picture.split_once('.').unwrap_or((picture, ""));
+    let fixed = frac_pic.chars().filter(|&c| c == '0').count();
+    let optional = frac_pic.chars().filter(|&c| c == '#').count();
+    let decimals = fixed + optional;
+    let rounded = round_to(v, decimals as f64);
+    let mut text = format!("{:.*}", decimals, rounded.abs());
+    if optional > 0 {
+        while text.ends_with('0') && text.len() - text.find('.').unwrap_or(text.len()) - 1 > fixed {
+            text.pop();
+        }
+        if text.ends_with('.') {
+            text.pop();
+        }
+    }
+    let min_int = int_pic.chars().filter(|&c| c == '0').count();
+    let int_len = text.find('.').unwrap_or(text.len());
+    if int_len < min_int {
+        text.insert_str(0, &"0".repeat(min_int - int_len));
+    }
+    if rounded < 0.0 && rounded != 0.0 {
+        text.insert(0, '-');
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pictures() {
+        assert_eq!(format_picture(12.34567, "0.000"), "12.346");
+        assert_eq!(format_picture(2.5, "#.###"), "2.5");
+        assert_eq!(format_picture(7.0, "0000"), "0007");
+        assert_eq!(format_picture(-0.25, "0.00"), "-0.25");
+    }
+
+    #[test]
+    fn text_builtins() {
+        let t = |s: &str| Value::text(s);
+        assert_eq!(builtin(Builtin::Mid, &[t("ABCDEF"), Value::Num(2.0), Value::Num(3.0)]), t("BCD"));
+        assert_eq!(builtin(Builtin::Right, &[t("ABC"), Value::Num(5.0)]), t("ABC"));
+        assert_eq!(builtin(Builtin::Val, &[t(" 12.5mm")]), Value::Num(12.5));
+        assert_eq!(binary(BinaryOp::Concat, &Value::Num(3.0), &t("x")), t("3x"));
+        assert_eq!(binary(BinaryOp::Add, &Value::Num(3.0), &Value::Num(0.5)), Value::Num(3.5));
+    }
+}
