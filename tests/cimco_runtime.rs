@@ -154,6 +154,37 @@ fn javascript_semantics_in_scripts() {
     assert_eq!(out, "6 8 eight+nine+a+b+boom a-b-c object 12 6 3.5 0.333 12 0.30000000000000004\n");
 }
 
+#[test]
+fn regular_expressions_as_javascript_runs_them() {
+    // A text longer than 4,096 characters, an empty-match replace, split
+    // with a group and search: what Node.js prints for the same code.
+    let out = post_output(
+        r#"
+        var linebreak = "\n";
+        function onOpen() {
+            var long = "";
+            for (var i = 0; i < 5000; i++) { long += "y"; }
+            long += "(x)";
+            var stripped = long.replace(/[()]/g, "");
+            return [stripped.length, "baaac".replace(/a*/g, "-"), "a-b".split(/(-)/).join("|"), long.search(/\(/), /^\d+$/.test("12")].join(" ") + "\n";
+        }
+        function onLinear(x, y, z, m) { return ""; }
+        "#,
+    );
+    assert_eq!(out, "5001 -b--c- a|-|b 5000 true\n");
+}
+
+#[test]
+fn regular_expressions_without_a_linear_form_are_errors_at_their_line() {
+    let js = "var linebreak = \"\\n\";\nfunction onOpen() {\n    return \"aa\".replace(/(a)\\1/, \"b\");\n}\nfunction onLinear(x, y, z, m) { return \"\"; }\n";
+    let (post, _, sources) = compile(js);
+    let d = run(&post).expect_err("the post fails");
+    let d = d.iter().find(|d| d.code == "RT023").unwrap_or_else(|| panic!("an RT023 error: {d:?}"));
+    assert!(d.message.contains("backreference"), "{d:?}");
+    let span = d.primary_span().expect("a span");
+    assert_eq!(sources.line_column(span.file, span.start).map(|(l, _)| l), Some(3), "{d:?}");
+}
+
 /// Posts cut short or with bytes changed still compile and run or fail
 /// cleanly: no panic.
 #[test]

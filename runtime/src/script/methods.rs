@@ -100,7 +100,7 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
             }
         }
         "search" => match a(0).try_cast::<JsRegex>() {
-            Some(r) => num(r.0.find_at(&chars, 0).and_then(|c| c[0]).map_or(-1.0, |(st, _)| st as f64)),
+            Some(r) => num(regex::search(&r.0, s) as f64),
             None => num(s.find(&to_string(&a(0))).map_or(-1.0, |i| s[..i].chars().count() as f64)),
         },
         _ => return Err(fail(format!("TypeError: text has no method '{name}'"))),

@@ -229,10 +229,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
     }
     if let Some(r) = o.clone().try_cast::<JsRegex>() {
         return match name {
-            "test" => {
-                let chars: Vec<char> = to_string(&arg(&args, 0)).chars().collect();
-                Ok(Dynamic::from_bool(r.0.find_at(&chars, 0).is_some()))
-            }
+            "test" => Ok(Dynamic::from_bool(r.0.is_match(&to_string(&arg(&args, 0))))),
             _ => Err(fail(format!("TypeError: a regular expression has no method '{name}'"))),
         };
     }

@@ -1,380 +1,263 @@
 //! The regular expressions posts use in `replace`, `split`, `search` and
-//! `test`: literals, `.`, classes (`[()]`, `[^0-9]`, `\d \w \s` and their
-//! capitals), anchors `^ $`, groups `( )` and `(?: )`, alternation `|`,
-//! and the quantifiers `* + ? {n} {n,} {n,m}` (greedy, or lazy with `?`);
-//! flags `g`, `i`, `m`. A backtracking matcher over characters, with a
-//! step limit so that a pathological pattern cannot hang a post.
+//! `test`, run by the `regex` crate after a translation from JavaScript's
+//! syntax and meaning.
+//!
+//! The `regex` crate matches in time linear in the text, so no pattern can
+//! hang a post and no text is too long (the hand-written backtracker this
+//! replaces gave up silently past 4,096 characters and on a step overflow).
+//! The translation keeps what JavaScript means where the two syntaxes
+//! differ (`docs/cimco.md`, "Regular expressions"):
+//!
+//! - `.` is any character but the line terminators `\n \r \u2028 \u2029`;
+//! - `\d \w` are ASCII (`[0-9]`, `[0-9A-Za-z_]`), `\s` is JavaScript's
+//!   white space and line terminators, and their capitals are the
+//!   complements; `\b \B` are ASCII word boundaries;
+//! - `\xHH`, `\uHHHH`, `\cX`, `\0`, `\/` and escaped punctuation;
+//! - Annex B leniencies: a `{` that does not start a quantifier and a `]`
+//!   outside a class are literal; `[]` matches nothing and `[^]` anything;
+//! - flags `g` (every match), `i` (`(?i)`), `m` (`(?m)`).
+//!
+//! Backreferences (`\1`) and lookaround (`(?=`, `(?!`, `(?<=`, `(?<!`) have
+//! no linear-time form: such a pattern is a `SyntaxError` naming the
+//! construct, never a silent mismatch.
 
-use std::cell::Cell;
+mod text;
+
+pub use text::{replace, search, split};
 
 /// A compiled pattern.
 #[derive(Debug)]
 pub struct Regex {
+    /// The pattern as the post wrote it, `/source/flags`.
     pub source: String,
-    node: Node,
     pub global: bool,
-    ignore_case: bool,
-    multiline: bool,
-    groups: usize,
+    compiled: regex::Regex,
 }
 
-#[derive(Debug, Clone)]
-enum Node {
-    Empty,
-    Char(char),
-    Any,
-    Class(Vec<ClassItem>, bool),
-    Start,
-    End,
-    Group(Box<Node>, Option<usize>),
-    Concat(Vec<Node>),
-    Alt(Vec<Node>),
-    Repeat { node: Box<Node>, min: usize, max: usize, lazy: bool },
-}
+/// JavaScript's `\s`: white space and line terminators.
+const JS_SPACE: &str = r"\t\n\x0B\x0C\r \xA0\x{1680}\x{2000}-\x{200A}\x{2028}\x{2029}\x{202F}\x{205F}\x{3000}\x{FEFF}";
 
-#[derive(Debug, Clone)]
-enum ClassItem {
-    Range(char, char),
-    Digit(bool),
-    Word(bool),
-    Space(bool),
-}
-
-/// A match: the span of the whole match and of each group, in characters.
-pub type Captures = Vec<Option<(usize, usize)>>;
-
-const MAX_STEPS: usize = 1_000_000;
-/// Longer texts are not matched.
-const MAX_TEXT: usize = 4096;
+/// Generous compile-size limits: a post's patterns are short, and a huge
+/// one is refused rather than allowed to take the memory.
+const SIZE_LIMIT: usize = 1 << 20;
 
 impl Regex {
-    /// Compiles a pattern; `Err` says what is wrong with it.
+    /// Compiles a JavaScript pattern; `Err` says what is wrong with it.
     pub fn new(source: &str, flags: &str) -> Result<Regex, String> {
-        let chars: Vec<char> = source.chars().collect();
-        let mut p = Parser { chars: &chars, pos: 0, groups: 0 };
-        let node = p.alt()?;
-        if p.pos < chars.len() {
-            return Err(format!("unexpected `{}` in the regular expression", chars[p.pos]));
+        let mut prefix = String::new();
+        for f in flags.chars() {
+            match f {
+                'g' => {}
+                'i' => prefix.push('i'),
+                'm' => prefix.push('m'),
+                other => return Err(format!("the flag `{other}` is not supported (only g, i and m)")),
+            }
         }
-        Ok(Regex {
-            source: format!("/{source}/{flags}"),
-            node,
-            global: flags.contains('g'),
-            ignore_case: flags.contains('i'),
-            multiline: flags.contains('m'),
-            groups: p.groups,
-        })
+        let body = translate(source)?;
+        let pattern = if prefix.is_empty() { body } else { format!("(?{prefix}){body}") };
+        let compiled = regex::RegexBuilder::new(&pattern)
+            .size_limit(SIZE_LIMIT)
+            .dfa_size_limit(SIZE_LIMIT)
+            .build()
+            .map_err(|e| match e {
+                regex::Error::CompiledTooBig(_) => "the regular expression is too large".to_string(),
+                other => format!("the regular expression does not read: {}", first_line(&other.to_string())),
+            })?;
+        Ok(Regex { source: format!("/{source}/{flags}"), global: flags.contains('g'), compiled })
     }
 
-    /// The first match at or after character `from`.
-    pub fn find_at(&self, text: &[char], from: usize) -> Option<Captures> {
-        if text.len() > MAX_TEXT {
-            // Matching recurses per character; such texts are not posts'.
-            return None;
-        }
-        let m = Matcher { re: self, text, steps: Cell::new(0) };
-        for start in from..=text.len() {
-            let mut caps = vec![None; self.groups + 1];
-            if let Some(end) = m.run(&self.node, start, &mut caps, &mut |_, e| Some(e)) {
-                caps[0] = Some((start, end));
-                return Some(caps);
-            }
-            if m.steps.get() > MAX_STEPS {
-                return None;
-            }
-        }
-        None
+    /// The first match at or after byte `from` of `text`, with its groups.
+    pub fn captures_at<'t>(&self, text: &'t str, from: usize) -> Option<regex::Captures<'t>> {
+        self.compiled.captures_at(text, from)
+    }
+
+    /// Whether the pattern matches anywhere in `text`.
+    pub fn is_match(&self, text: &str) -> bool {
+        self.compiled.is_match(text)
     }
 }
 
-struct Parser<'c> {
-    chars: &'c [char],
-    pos: usize,
-    groups: usize,
+fn first_line(s: &str) -> &str {
+    s.lines().rev().find(|l| l.starts_with("error:")).map_or(s.lines().next().unwrap_or(s), |l| l.trim_start_matches("error: "))
 }
 
-impl Parser<'_> {
-    fn peek(&self) -> Option<char> {
-        self.chars.get(self.pos).copied()
-    }
-
-    fn alt(&mut self) -> Result<Node, String> {
-        let mut options = vec![self.concat()?];
-        while self.peek() == Some('|') {
-            self.pos += 1;
-            options.push(self.concat()?);
-        }
-        Ok(if options.len() == 1 { options.pop().unwrap_or(Node::Empty) } else { Node::Alt(options) })
-    }
-
-    fn concat(&mut self) -> Result<Node, String> {
-        let mut items = Vec::new();
-        while let Some(c) = self.peek() {
-            if c == '|' || c == ')' {
-                break;
+/// JavaScript pattern syntax to `regex` crate syntax, keeping the meaning.
+fn translate(source: &str) -> Result<String, String> {
+    let chars: Vec<char> = source.chars().collect();
+    let mut out = String::with_capacity(source.len() + 16);
+    let mut i = 0;
+    let mut open_groups = 0usize;
+    while i < chars.len() {
+        let c = chars[i];
+        match c {
+            '\\' => {
+                i += 1;
+                let Some(&e) = chars.get(i) else { return Err("the pattern ends with `\\`".into()) };
+                i = escape(&chars, i, e, false, &mut out)?;
+                continue;
             }
-            let atom = self.atom()?;
-            items.push(self.quantified(atom)?);
-        }
-        Ok(Node::Concat(items))
-    }
-
-    fn quantified(&mut self, atom: Node) -> Result<Node, String> {
-        let (min, max) = match self.peek() {
-            Some('*') => (0, usize::MAX),
-            Some('+') => (1, usize::MAX),
-            Some('?') => (0, 1),
-            Some('{') => {
-                let save = self.pos;
-                match self.braces() {
-                    Some(r) => {
-                        self.pos -= 1;
-                        r
-                    }
-                    None => {
-                        self.pos = save;
-                        return Ok(atom);
-                    }
+            '.' => out.push_str(r"[^\n\r\x{2028}\x{2029}]"),
+            '[' => {
+                i = class(&chars, i, &mut out)?;
+                continue;
+            }
+            ']' => out.push_str(r"\]"),
+            '{' => {
+                if let Some(end) = quantifier_braces(&chars, i) {
+                    out.extend(&chars[i..=end]);
+                    i = end + 1;
+                    continue;
                 }
+                out.push_str(r"\{");
             }
-            _ => return Ok(atom),
-        };
-        self.pos += 1;
-        let lazy = self.peek() == Some('?');
-        if lazy {
-            self.pos += 1;
-        }
-        Ok(Node::Repeat { node: Box::new(atom), min, max, lazy })
-    }
-
-    /// `{n}`, `{n,}`, `{n,m}`; leaves `pos` after the `}`.
-    fn braces(&mut self) -> Option<(usize, usize)> {
-        self.pos += 1;
-        let num = |p: &mut Self| {
-            let start = p.pos;
-            while p.peek().is_some_and(|c| c.is_ascii_digit()) {
-                p.pos += 1;
-            }
-            p.chars[start..p.pos].iter().collect::<String>().parse::<usize>().ok()
-        };
-        let min = num(self)?;
-        let max = if self.peek() == Some(',') {
-            self.pos += 1;
-            num(self).unwrap_or(usize::MAX)
-        } else {
-            min
-        };
-        (self.peek() == Some('}')).then(|| {
-            self.pos += 1;
-            (min, max)
-        })
-    }
-
-    fn atom(&mut self) -> Result<Node, String> {
-        let Some(c) = self.peek() else { return Ok(Node::Empty) };
-        self.pos += 1;
-        Ok(match c {
-            '.' => Node::Any,
-            '^' => Node::Start,
-            '$' => Node::End,
+            '}' => out.push_str(r"\}"),
             '(' => {
-                let index = if self.chars[self.pos..].starts_with(&['?', ':']) {
-                    self.pos += 2;
-                    None
-                } else {
-                    self.groups += 1;
-                    Some(self.groups)
-                };
-                let inner = self.alt()?;
-                if self.peek() != Some(')') {
-                    return Err("a `(` in the regular expression is not closed".into());
+                open_groups += 1;
+                if chars.get(i + 1) == Some(&'?') {
+                    match (chars.get(i + 2), chars.get(i + 3)) {
+                        (Some(':'), _) => {
+                            out.push_str("(?:");
+                            i += 3;
+                            continue;
+                        }
+                        (Some('='), _) | (Some('!'), _) | (Some('<'), Some('=')) | (Some('<'), Some('!')) => {
+                            return Err("lookaround (`(?=`, `(?!`, `(?<=`, `(?<!`) is not supported".into());
+                        }
+                        (Some('<'), _) => {
+                            out.push_str("(?P<");
+                            i += 3;
+                            continue;
+                        }
+                        _ => return Err("`(?` starts no group JavaScript knows".into()),
+                    }
                 }
-                self.pos += 1;
-                Node::Group(Box::new(inner), index)
+                out.push('(');
             }
-            '[' => self.class()?,
-            '\\' => self.escape(false)?,
-            '*' | '+' | '?' => return Err(format!("`{c}` has nothing to repeat")),
-            c => Node::Char(c),
-        })
+            ')' => {
+                if open_groups == 0 {
+                    return Err("unmatched `)`".into());
+                }
+                open_groups -= 1;
+                out.push(')');
+            }
+            '#' | '&' | '~' | '-' => {
+                out.push('\\');
+                out.push(c);
+            }
+            _ => out.push(c),
+        }
+        i += 1;
     }
+    Ok(out)
+}
 
-    fn escape(&mut self, in_class: bool) -> Result<Node, String> {
-        let Some(c) = self.peek() else { return Err("a `\\` ends the regular expression".into()) };
-        self.pos += 1;
-        let class = |item| Node::Class(vec![item], false);
-        Ok(match c {
-            'd' => class(ClassItem::Digit(true)),
-            'D' => class(ClassItem::Digit(false)),
-            'w' => class(ClassItem::Word(true)),
-            'W' => class(ClassItem::Word(false)),
-            's' => class(ClassItem::Space(true)),
-            'S' => class(ClassItem::Space(false)),
-            'n' => Node::Char('\n'),
-            'r' => Node::Char('\r'),
-            't' => Node::Char('\t'),
-            'b' if in_class => Node::Char('\u{8}'),
-            c => Node::Char(c),
-        })
+/// `{n}`, `{n,}` or `{n,m}` at `start`: the index of its `}`.
+fn quantifier_braces(chars: &[char], start: usize) -> Option<usize> {
+    let mut i = start + 1;
+    let digits = |i: &mut usize| {
+        let from = *i;
+        while chars.get(*i).is_some_and(char::is_ascii_digit) {
+            *i += 1;
+        }
+        *i > from
+    };
+    if !digits(&mut i) {
+        return None;
     }
+    if chars.get(i) == Some(&',') {
+        i += 1;
+        digits(&mut i);
+    }
+    (chars.get(i) == Some(&'}')).then_some(i)
+}
 
-    fn class(&mut self) -> Result<Node, String> {
-        let negated = self.peek() == Some('^');
+/// An escape whose letter is at `i`; the index after it.
+fn escape(chars: &[char], i: usize, e: char, in_class: bool, out: &mut String) -> Result<usize, String> {
+    let class_or_set = |set: &str, negated: bool, out: &mut String| {
+        // Inside a class, a nested class is a union in the `regex` crate.
+        out.push('[');
         if negated {
-            self.pos += 1;
+            out.push('^');
         }
-        let mut items = Vec::new();
-        let mut first = true;
-        loop {
-            let Some(c) = self.peek() else { return Err("a `[` in the regular expression is not closed".into()) };
-            if c == ']' && !first {
-                self.pos += 1;
-                break;
+        out.push_str(set);
+        out.push(']');
+    };
+    match e {
+        'd' | 'D' => class_or_set("0-9", e == 'D', out),
+        'w' | 'W' => class_or_set("0-9A-Za-z_", e == 'W', out),
+        's' | 'S' => class_or_set(JS_SPACE, e == 'S', out),
+        'b' if in_class => out.push_str(r"\x08"),
+        'b' => out.push_str(r"(?-u:\b)"),
+        'B' if !in_class => out.push_str(r"(?-u:\B)"),
+        'n' => out.push_str(r"\n"),
+        'r' => out.push_str(r"\r"),
+        't' => out.push_str(r"\t"),
+        'v' => out.push_str(r"\x0B"),
+        'f' => out.push_str(r"\x0C"),
+        '0' if !chars.get(i + 1).is_some_and(char::is_ascii_digit) => out.push_str(r"\x00"),
+        '1'..='9' if !in_class => return Err(format!("the backreference `\\{e}` is not supported")),
+        'x' | 'u' => {
+            let len = if e == 'x' { 2 } else { 4 };
+            let hex: String = chars.iter().skip(i + 1).take(len).collect();
+            if hex.len() == len && hex.chars().all(|h| h.is_ascii_hexdigit()) {
+                out.push_str(&format!(r"\x{{{hex}}}"));
+                return Ok(i + 1 + len);
             }
-            first = false;
-            self.pos += 1;
-            let lo = if c == '\\' {
-                match self.escape(true)? {
-                    Node::Char(ch) => ch,
-                    Node::Class(mut inner, _) => {
-                        items.append(&mut inner);
-                        continue;
-                    }
-                    _ => continue,
-                }
-            } else {
-                c
-            };
-            if self.peek() == Some('-') && self.chars.get(self.pos + 1).is_some_and(|&n| n != ']') {
-                self.pos += 1;
-                let mut hi = self.peek().unwrap_or(lo);
-                self.pos += 1;
-                if hi == '\\'
-                    && let Node::Char(ch) = self.escape(true)?
-                {
-                    hi = ch;
-                }
-                items.push(ClassItem::Range(lo, hi));
-            } else {
-                items.push(ClassItem::Range(lo, lo));
-            }
+            out.push(e);
         }
-        Ok(Node::Class(items, negated))
+        'c' if chars.get(i + 1).is_some_and(char::is_ascii_alphabetic) => {
+            let letter = chars[i + 1] as u32;
+            out.push_str(&format!(r"\x{:02X}", letter % 32));
+            return Ok(i + 2);
+        }
+        _ if e.is_ascii_alphanumeric() => out.push(e),
+        // Escaped punctuation is itself (`regex::escape` escapes what is
+        // special to the `regex` crate: `& ~ - #` included).
+        _ => out.push_str(&regex::escape(e.encode_utf8(&mut [0; 4]))),
     }
+    Ok(i + 1)
 }
 
-struct Matcher<'r, 't> {
-    re: &'r Regex,
-    text: &'t [char],
-    steps: Cell<usize>,
+/// A class `[...]` starting at `start`; the index after its `]`.
+fn class(chars: &[char], start: usize, out: &mut String) -> Result<usize, String> {
+    let mut i = start + 1;
+    let negated = chars.get(i) == Some(&'^');
+    if negated {
+        i += 1;
+    }
+    if chars.get(i) == Some(&']') {
+        // `[]` matches nothing, `[^]` any character.
+        out.push_str(if negated { r"[\x00-\x{10FFFF}]" } else { r"[^\x00-\x{10FFFF}]" });
+        return Ok(i + 1);
+    }
+    out.push('[');
+    if negated {
+        out.push('^');
+    }
+    while i < chars.len() {
+        let c = chars[i];
+        match c {
+            ']' => {
+                out.push(']');
+                return Ok(i + 1);
+            }
+            '\\' => {
+                i += 1;
+                let Some(&e) = chars.get(i) else { break };
+                i = escape(chars, i, e, true, out)?;
+                continue;
+            }
+            '[' | '&' | '~' | '^' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '-' if i == start + 1 + usize::from(negated) || chars.get(i + 1) == Some(&']') => out.push_str(r"\-"),
+            _ => out.push(c),
+        }
+        i += 1;
+    }
+    Err("a character class `[` has no closing `]`".into())
 }
-
-type Cont<'k> = dyn FnMut(&mut Captures, usize) -> Option<usize> + 'k;
-
-impl Matcher<'_, '_> {
-    fn eq(&self, a: char, b: char) -> bool {
-        a == b || (self.re.ignore_case && a.to_lowercase().eq(b.to_lowercase()))
-    }
-
-    fn class_has(&self, items: &[ClassItem], c: char) -> bool {
-        items.iter().any(|i| match *i {
-            ClassItem::Range(lo, hi) => {
-                (lo..=hi).contains(&c)
-                    || (self.re.ignore_case && c.to_lowercase().chain(c.to_uppercase()).any(|x| (lo..=hi).contains(&x)))
-            }
-            ClassItem::Digit(yes) => c.is_ascii_digit() == yes,
-            ClassItem::Word(yes) => (c.is_ascii_alphanumeric() || c == '_') == yes,
-            ClassItem::Space(yes) => c.is_whitespace() == yes,
-        })
-    }
-
-    /// Matches `node` at `at`, then the continuation `k`.
-    fn run(&self, node: &Node, at: usize, caps: &mut Captures, k: &mut Cont) -> Option<usize> {
-        self.steps.set(self.steps.get() + 1);
-        if self.steps.get() > MAX_STEPS {
-            return None;
-        }
-        let text = self.text;
-        match node {
-            Node::Empty => k(caps, at),
-            Node::Char(c) => {
-                if at < text.len() && self.eq(text[at], *c) { k(caps, at + 1) } else { None }
-            }
-            Node::Any => {
-                if at < text.len() && text[at] != '\n' { k(caps, at + 1) } else { None }
-            }
-            Node::Class(items, neg) => {
-                if at < text.len() && self.class_has(items, text[at]) != *neg { k(caps, at + 1) } else { None }
-            }
-            Node::Start => {
-                if at == 0 || (self.re.multiline && text[at - 1] == '\n') { k(caps, at) } else { None }
-            }
-            Node::End => {
-                if at == text.len() || (self.re.multiline && text[at] == '\n') { k(caps, at) } else { None }
-            }
-            Node::Group(inner, index) => {
-                let index = *index;
-                self.run(inner, at, caps, &mut |caps: &mut Captures, end| {
-                    let saved = index.and_then(|i| caps[i]);
-                    if let Some(i) = index {
-                        caps[i] = Some((at, end));
-                    }
-                    let r = k(caps, end);
-                    if r.is_none()
-                        && let Some(i) = index
-                    {
-                        caps[i] = saved;
-                    }
-                    r
-                })
-            }
-            Node::Concat(items) => self.concat(items, at, caps, k),
-            Node::Alt(options) => options.iter().find_map(|o| self.run(o, at, caps, k)),
-            Node::Repeat { node, min, max, lazy } => self.repeat(node, (*min, *max, *lazy), at, 0, caps, k),
-        }
-    }
-
-    fn concat(&self, items: &[Node], at: usize, caps: &mut Captures, k: &mut Cont) -> Option<usize> {
-        match items.split_first() {
-            None => k(caps, at),
-            Some((first, rest)) => self.run(first, at, caps, &mut |caps: &mut Captures, end| self.concat(rest, end, caps, k)),
-        }
-    }
-
-    fn repeat(&self, node: &Node, bounds: (usize, usize, bool), at: usize, count: usize, caps: &mut Captures, k: &mut Cont) -> Option<usize> {
-        let (min, max, lazy) = bounds;
-        let more = |caps: &mut Captures, k: &mut Cont| -> Option<usize> {
-            if count >= max {
-                return None;
-            }
-            self.run(node, at, caps, &mut |caps: &mut Captures, end| {
-                if end == at && count >= min {
-                    // An empty repetition would loop forever.
-                    return None;
-                }
-                self.repeat(node, bounds, end, count + 1, caps, k)
-            })
-        };
-        if count < min {
-            return more(caps, k);
-        }
-        if lazy {
-            if let Some(e) = k(caps, at) {
-                return Some(e);
-            }
-            more(caps, k)
-        } else {
-            if let Some(e) = more(caps, k) {
-                return Some(e);
-            }
-            k(caps, at)
-        }
-    }
-}
-
-mod text;
-
-pub use text::{replace, split};
 
 #[cfg(test)]
 mod tests {
@@ -392,20 +275,61 @@ mod tests {
         assert_eq!(replace(&re, "fOo", "0"), "f00");
         let re = Regex::new("a*?b", "").unwrap();
         assert_eq!(replace(&re, "aaab", "X"), "X");
+        // Empty matches advance one character, as JavaScript's do.
+        let re = Regex::new("a*", "g").unwrap();
+        assert_eq!(replace(&re, "baaac", "-"), "-b--c-");
+        assert_eq!(replace(&re, "aaa", "X"), "XX");
+        let re = Regex::new("x", "").unwrap();
+        assert_eq!(replace(&re, "axb", "[$&|$$|$0]"), "a[x|$|$0]b");
     }
 
     #[test]
     fn splits_like_javascript() {
         let re = Regex::new(",\\s*", "").unwrap();
         assert_eq!(split(&re, "a, b,c"), ["a", "b", "c"]);
+        let re = Regex::new("(-)", "").unwrap();
+        assert_eq!(split(&re, "a-b"), ["a", "-", "b"]);
+        let re = Regex::new("", "").unwrap();
+        assert_eq!(split(&re, "abc"), ["a", "b", "c"]);
         assert!(Regex::new("(", "").is_err());
         assert!(Regex::new("*", "").is_err());
     }
 
     #[test]
-    fn pathological_patterns_stop() {
+    fn javascript_meaning_is_kept() {
+        // `.` stops at line terminators; `\d` and `\w` are ASCII.
+        assert!(!Regex::new("^.$", "").unwrap().is_match("\r"));
+        assert!(!Regex::new("\\d", "").unwrap().is_match("\u{0663}"));
+        assert!(Regex::new("^\\s$", "").unwrap().is_match("\u{FEFF}"));
+        // Annex B: lone braces and brackets are literal; `[]` and `[^]`.
+        assert!(Regex::new("a{", "").unwrap().is_match("a{"));
+        assert!(Regex::new("a]", "").unwrap().is_match("a]"));
+        assert!(!Regex::new("[]", "").unwrap().is_match("abc"));
+        assert!(Regex::new("^[^]$", "").unwrap().is_match("\n"));
+        assert!(Regex::new("^\\x41\\u0042\\cA$", "").unwrap().is_match("AB\u{1}"));
+        assert!(Regex::new("[&~-]", "").unwrap().is_match("~"));
+        assert!(Regex::new("\\/", "").unwrap().is_match("a/b"));
+        assert!(Regex::new("^a b$", "").unwrap().is_match("a b"));
+        assert!(Regex::new("\\bx", "").unwrap().is_match("a x"));
+        assert!(Regex::new("^x$", "m").unwrap().is_match("a\nx\nb"));
+    }
+
+    #[test]
+    fn what_has_no_linear_form_is_refused() {
+        assert!(Regex::new("(a)\\1", "").unwrap_err().contains("backreference"));
+        assert!(Regex::new("a(?=b)", "").unwrap_err().contains("lookaround"));
+        assert!(Regex::new("(?<!a)b", "").unwrap_err().contains("lookaround"));
+        assert!(Regex::new("a", "y").unwrap_err().contains("flag"));
+    }
+
+    #[test]
+    fn pathological_patterns_and_long_texts_are_linear() {
         let re = Regex::new("(a*)*b", "").unwrap();
-        let text: Vec<char> = "a".repeat(40).chars().collect();
-        assert!(re.find_at(&text, 0).is_none());
+        assert!(!re.is_match(&"a".repeat(100_000)));
+        // Texts past the old 4,096-character limit match.
+        let long = format!("{}(x)", "y".repeat(10_000));
+        let re = Regex::new("[()]", "g").unwrap();
+        assert_eq!(replace(&re, &long, ""), format!("{}x", "y".repeat(10_000)));
+        assert_eq!(search(&re, &long), 10_000);
     }
 }
