@@ -6,7 +6,6 @@
 //! print with the shortest digits that read back as the same double,
 //! switching to exponent form at 1e21 and below 1e-6 as JavaScript does.
 
-use std::fmt::Write as _;
 
 /// The text JavaScript gives a number (`String(n)`, `"" + n`).
 pub fn number_to_string(n: f64) -> String {
@@ -15,54 +14,18 @@ pub fn number_to_string(n: f64) -> String {
     s
 }
 
-/// Appends the text JavaScript gives a number.
+/// Appends the text JavaScript gives a number: `ryu-js` implements
+/// ECMAScript's Number::toString (shortest round-trip digits, exponent
+/// form from 1e21 and below 1e-6, `NaN`, `Infinity`, `-0` as `0`);
+/// whole numbers go through `itoa`.
 pub fn push_number(out: &mut String, n: f64) {
-    if n.is_nan() {
-        out.push_str("NaN");
-        return;
-    }
-    if n.is_infinite() {
-        out.push_str(if n > 0.0 { "Infinity" } else { "-Infinity" });
-        return;
-    }
-    if n == 0.0 {
-        out.push('0');
-        return;
-    }
     if n == n.trunc() && n.abs() < 9_007_199_254_740_992.0 {
-        let _ = write!(out, "{}", n as i64);
+        // Exact: every such double is an integer that fits an i64 (and
+        // -0 prints `0`, as JavaScript prints it).
+        out.push_str(itoa::Buffer::new().format(n as i64));
         return;
     }
-    // Shortest round-trip digits and the decimal exponent.
-    let e = format!("{:e}", n.abs());
-    let (mantissa, exp) = e.split_once('e').unwrap_or((&e, "0"));
-    let exp: i32 = exp.parse().unwrap_or(0);
-    let digits: String = mantissa.chars().filter(|c| c.is_ascii_digit()).collect();
-    let k = digits.len() as i32;
-    // JavaScript's n: the position of the decimal point after the first digit.
-    let point = exp + 1;
-    if n < 0.0 {
-        out.push('-');
-    }
-    if k <= point && point <= 21 {
-        out.push_str(&digits);
-        out.extend(std::iter::repeat_n('0', (point - k) as usize));
-    } else if 0 < point && point <= 21 {
-        out.push_str(&digits[..point as usize]);
-        out.push('.');
-        out.push_str(&digits[point as usize..]);
-    } else if -6 < point && point <= 0 {
-        out.push_str("0.");
-        out.extend(std::iter::repeat_n('0', (-point) as usize));
-        out.push_str(&digits);
-    } else {
-        out.push_str(&digits[..1]);
-        if k > 1 {
-            out.push('.');
-            out.push_str(&digits[1..]);
-        }
-        let _ = write!(out, "e{}{}", if point > 0 { "+" } else { "-" }, (point - 1).abs());
-    }
+    out.push_str(ryu_js::Buffer::new().format(n));
 }
 
 /// JavaScript's `Number(text)`: blanks around are ignored, empty text is
