@@ -4,7 +4,7 @@
 //! - [`cli`]: argument parsing and one module per subcommand (`post`,
 //!   `check`, `inspect`, `bench`, `toolpath gen`);
 //! - [`synthetic`]: generated toolpaths of any length;
-//! - [`postp`]: the APT post processor of seed 004 (`postc postp DIR`) and
+//! - [`postp`]: the APT CL post processor `postp` (`postc postp DIR`), reimplemented, and
 //!   its eight controllers;
 //! - [`default_post`]: the G-code post embedded in the binary, used when
 //!   `postc post` is given only a toolpath.

@@ -49,7 +49,7 @@ enum Command {
     Bench(bench::Args),
     /// Print an empty probe-cycle table (CSV) for a VcPost post, from its keyword comments.
     ProbeTable(probe::Args),
-    /// Post DIR/cl.tap for the controller its MACHIN names (the APT `postp` of seed 004).
+    /// Post DIR/cl.tap for the controller its MACHIN names (a reimplementation of `postp`, the APT CL post processor for ACORN, FANUC, HAAS and TORMACH controllers).
     Postp(postp::Args),
     /// Toolpath utilities.
     Toolpath {

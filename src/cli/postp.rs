@@ -1,4 +1,4 @@
-//! `postc postp DIR [--options FILE]`: the APT post processor of seed 004.
+//! `postc postp DIR [--options FILE]`: the APT CL post processor `postp` (a Windows console program, `postp DIR > out`), reimplemented.
 //! Reads `DIR/cl.tap` and writes the program for the controller its
 //! `MACHIN` names to standard output (whole, or nothing on an error).
 //!

@@ -1,4 +1,4 @@
-//! `postp`: the APT post processor of seed 004. It reads `DIR/cl.tap`, and
+//! `postp`: the APT CL post processor (a Windows console program), reimplemented. It reads `DIR/cl.tap`, and
 //! the file's `MACHIN/name[,axis type]` chooses one of eight controllers
 //! (ACORNM, ACORNL, FANUCM, FANUCL, HAASM, HAASL, TORMM, TORML).
 //!
