@@ -4,12 +4,9 @@
 //! - [`cli`]: argument parsing and one module per subcommand (`post`,
 //!   `check`, `inspect`, `bench`, `toolpath gen`);
 //! - [`synthetic`]: generated toolpaths of any length;
-//! - [`postp`]: the APT CL post processor `postp` (`postc postp DIR`), reimplemented, and
-//!   its eight controllers;
 //! - [`default_post`]: the G-code post embedded in the binary, used when
 //!   `postc post` is given only a toolpath.
 
 pub mod cli;
 pub mod default_post;
-pub mod postp;
 pub mod synthetic;

@@ -8,7 +8,7 @@ mod postp_common;
 
 use std::process::Command;
 
-use postc::postp::{Controller, Settings};
+use postc_postp::{Controller, Settings};
 use postp_common::{check, interpret, root, rs274, run, run_with};
 
 #[test]
@@ -243,8 +243,8 @@ fn the_options_example_in_docs_apt_md_reads() {
     let doc = std::fs::read_to_string(root().join("docs/apt.md")).unwrap();
     let start = doc.find("```ron\n").expect("an options example") + 7;
     let end = start + doc[start..].find("```").unwrap();
-    let patch = postc::postp::Patch::parse(&doc[start..end]).unwrap();
+    let patch = postc_postp::Patch::parse(&doc[start..end]).unwrap();
     assert!(patch.is_complete());
-    let fanuc = postc::postp::Patch::parse(Controller::FanucM.default_options()).unwrap();
+    let fanuc = postc_postp::Patch::parse(Controller::FanucM.default_options()).unwrap();
     assert_eq!(patch, fanuc, "the example is FANUCM's file");
 }

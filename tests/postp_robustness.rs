@@ -4,7 +4,7 @@
 
 mod postp_common;
 
-use postc::postp::Controller;
+use postc_postp::Controller;
 use proptest::prelude::*;
 
 const WORDS: &[&str] = &[

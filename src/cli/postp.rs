@@ -14,7 +14,7 @@ use postc_ir::SourceMap;
 use postc_runtime::Output;
 
 use super::{Failed, report};
-use crate::postp::Settings;
+use postc_postp::Settings;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -55,7 +55,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = SourceMap::new();
     let settings = Settings { options: args.options, ..Settings::default() };
     let cl = args.dir.join("cl.tap");
-    match crate::postp::post(&cl, &settings, Output::stdout(), &mut sources) {
+    match postc_postp::post(&cl, &settings, Output::stdout(), &mut sources) {
         Ok(r) => {
             report::eprint(&mut sources, &r.warnings);
             Ok(())

@@ -9,7 +9,7 @@ mod rs274_common;
 
 use std::path::{Path, PathBuf};
 
-use postc::postp::{Controller, Settings, post};
+use postc_postp::{Controller, Settings, post};
 use postc_ir::SourceMap;
 use postc_runtime::{Finished, Output};
 

@@ -10,7 +10,7 @@
 //! to z at zf, feed along the stroke at f, rapid up to zc. The tool first
 //! rises to zc where it stands, and ends at zc over the last stroke.
 
-use crate::postp::font;
+use crate::font;
 
 /// A LETTER statement's parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]

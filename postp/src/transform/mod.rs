@@ -24,10 +24,10 @@ use std::collections::{HashSet, VecDeque};
 use postc_ir::event::{Arg, Command, CompSide, Coolant, Event};
 use postc_ir::{Diagnostic, EventSource, Span, Units};
 
-use crate::postp::controller::Kind;
-use crate::postp::letter::Letter;
-use crate::postp::options::RetractZ;
-use crate::postp::records::{ClText, Fedrat};
+use crate::controller::Kind;
+use crate::letter::Letter;
+use crate::options::RetractZ;
+use crate::records::{ClText, Fedrat};
 
 pub use motion::Mapping;
 

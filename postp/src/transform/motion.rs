@@ -12,7 +12,7 @@ use postc_ir::{Diagnostic, EventSource, Units};
 use postc_runtime::geometry::ArcGeometry;
 
 use super::{Transform, codes, word};
-use crate::postp::letter::{Letter, Motion};
+use crate::letter::{Letter, Motion};
 
 /// Chord tolerance of arcs cut into moves under cylindrical mapping, mm.
 const CHORD_MM: f64 = 0.01;
@@ -162,8 +162,8 @@ impl<S: EventSource> Transform<S> {
         // with the part); `retractz` is where the machine goes, untranslated.
         let z = match (self.clearp, self.machine.retractz) {
             (Some(z), _) => z,
-            (None, crate::postp::options::RetractZ::At(z)) => z - self.trans[2],
-            (None, crate::postp::options::RetractZ::Home) => {
+            (None, crate::options::RetractZ::At(z)) => z - self.trans[2],
+            (None, crate::options::RetractZ::Home) => {
                 self.command("RETRCT", Vec::new());
                 self.pos = None;
                 return;

@@ -7,7 +7,7 @@ use postc_ir::event::{Arg, Command};
 use postc_ir::EventSource;
 
 use super::{Kind, Transform, codes, word};
-use crate::postp::letter::Letter;
+use crate::letter::Letter;
 
 fn num(a: Option<&Arg>) -> Option<f64> {
     match a {
