@@ -4,6 +4,7 @@
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
 //! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
@@ -16,6 +17,7 @@
 
 mod bench;
 mod check;
+mod convert;
 mod inspect;
 mod post;
 mod postp;
@@ -41,6 +43,8 @@ pub struct Cli {
 enum Command {
     /// Post a toolpath: POST TOOLPATH, or TOOLPATH alone with the embedded G-code post.
     Post(post::Args),
+    /// Convert a post to another dialect (Vectric .pp, or the IR as RON); refused with reasons when the target cannot hold it.
+    Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),
     /// Print a post's IR as RON.
@@ -87,6 +91,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
+        Command::Convert(args) => convert::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Bench(args) => bench::run(args),
         Command::ProbeTable(args) => probe::run(args),

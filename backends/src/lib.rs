@@ -1,0 +1,68 @@
+//! # postc backends
+//!
+//! A backend prints a compiled post IR ([`postc_ir::Post`]) as the text of
+//! a post in one target: a Vectric `.pp` post ([`vectric`]) or the IR
+//! itself as RON ([`ron`]). Backends read only the IR, never a dialect's
+//! syntax tree, so a post of any dialect converts to any target that can
+//! say what it does.
+//!
+//! A backend never writes a post that would post differently from its
+//! source. What a target cannot express is refused with a
+//! [`Diagnostic`] (codes `CV001`–`CV009`) that names the construct, points
+//! at it in the source post where the IR knows where it came from, and
+//! says why; nothing is written then. `tests/convert.rs` posts every
+//! converted corpus post over every corpus toolpath and requires the same
+//! bytes as the source post, and `docs/convert.md` holds the matrix of
+//! what converts.
+//!
+//! Every converted post starts with a comment that names the file and
+//! dialect it was converted from.
+
+pub mod ron;
+pub mod vectric;
+
+use postc_ir::{Diagnostic, Dialect, Post};
+
+/// The dialects `postc convert` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// A Vectric `.pp` post.
+    Vectric,
+    /// The IR as RON (loads back with `postc post converted.ron ...`).
+    Ron,
+}
+
+impl Target {
+    /// The extension a converted post gets.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Target::Vectric => "pp",
+            Target::Ron => "ron",
+        }
+    }
+}
+
+/// Prints `post` as a post of `target`: the bytes of the post file, or
+/// every reason the target cannot hold it.
+pub fn convert(post: &Post, target: Target) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    match target {
+        Target::Vectric => vectric::print(post),
+        Target::Ron => ron::print(post).map(String::into_bytes),
+    }
+}
+
+/// The dialect's name as people write it, for header comments.
+pub(crate) fn dialect_name(d: Dialect) -> &'static str {
+    match d {
+        Dialect::Vectric => "Vectric",
+        Dialect::Cimco => "CIMCO CNC-Calc JavaScript",
+        Dialect::VcPost => "Vericut VcPost",
+        Dialect::Ron => "postc IR (RON)",
+    }
+}
+
+/// The file name of the post's source, without its folder.
+pub(crate) fn source_name(post: &Post) -> &str {
+    let s = post.info.source.as_str();
+    s.rsplit(['/', '\\']).next().unwrap_or(s)
+}

@@ -1,0 +1,85 @@
++================================================
++ Converted by postc from heidenhain_mm.pp (Vectric)
++================================================
+
+POST_NAME = "Heidenhain conversational (mm) (*.h)"
+FILE_EXTENSION = "h"
+UNITS = "MM"
+LINE_ENDING = "[13][10]"
+LINE_NUMBER_START = 0
+LINE_NUMBER_INCREMENT = 1
+LINE_NUMBER_MAXIMUM = 99999
+MIN_ARC_RADIUS = 0.5
+MAX_ARC_RADIUS = 500
+
+VAR LINE_NUMBER = [N|A||1.0]
+VAR SPINDLE_SPEED = [S|A| S|1.0]
+VAR FEED_RATE = [F|C| F|1.0]
+VAR TOOL_NUMBER = [T|A||1.0]
+VAR PREVIOUS_TOOL_NUMBER = [TP|A|T|03.0]
+VAR TOOL_DIAMETER = [TDIA|A||-8,3]
+VAR X_POSITION = [X|A| X|+1,3]
+VAR Y_POSITION = [Y|A| Y|+1,3]
+VAR Z_POSITION = [Z|A| Z|+1,3]
+VAR ARC_CENTRE_I_ABS_POSITION = [IA|A| X|+1,3]
+VAR ARC_CENTRE_J_ABS_POSITION = [JA|A| Y|+1,3]
+VAR X_HOME_POSITION = [XH|A| X|+1,3]
+VAR Y_HOME_POSITION = [YH|A| Y|+1,3]
+VAR Z_HOME_POSITION = [ZH|A| Z|+1,3]
+VAR X_MIN = [XMIN|A| X|+1,3]
+VAR Y_MIN = [YMIN|A| Y|+1,3]
+VAR Z_MIN = [ZMIN|A| Z|+1,3]
+VAR X_MAX = [XMAX|A| X|+1,3]
+VAR Y_MAX = [YMAX|A| Y|+1,3]
+VAR Z_MAX = [ZMAX|A| Z|+1,3]
+VAR DWELL_TIME = [DWELL|A||1,2]
+VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
+VAR FILE_NOTES = [FILE_NOTES|A||1.0]
+VAR TOOL_NAME = [TOOLNAME|A||1.0]
+VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
+
+begin HEADER
+"[N] BEGIN PGM [TP_FILENAME] MM"
+"[N] ; [FILE_NOTES]"
+"[N] BLK FORM 0.1 Z[XMIN][YMIN][ZMIN]"
+"[N] BLK FORM 0.2[XMAX][YMAX][ZMAX]"
+"[N] ; T[T] DIA [TDIA] [TOOLNAME]"
+"[N] TOOL CALL [T] Z[S]"
+
+begin SPINDLE_ON
+"[N] L[ZH] R0 FMAX M3"
+
+begin TOOLCHANGE
+"[N] L[ZH] R0 FMAX M5"
+"[N] ; T[T] DIA [TDIA] [TOOLNAME] REPLACES [TP]"
+"[N] TOOL CALL [T] Z[S]"
+
+begin NEW_SEGMENT
+"[N] ; [TOOLPATH_NAME]"
+
+begin RAPID_MOVE
+"[N] L[X][Y][Z] R0 FMAX"
+
+begin FEED_MOVE
+"[N] L[X][Y][Z][F]"
+
+begin RETRACT_MOVE
+"[N] L[Z] R0 FMAX"
+
+begin CW_ARC_MOVE
+"[N] CC[IA][JA]"
+"[N] C[X][Y] DR-[F]"
+
+begin CCW_ARC_MOVE
+"[N] CC[IA][JA]"
+"[N] C[X][Y] DR+[F]"
+
+begin DWELL_MOVE
+"[N] CYCL DEF 9.0 DWELL TIME"
+"[N] CYCL DEF 9.1 DWELL [DWELL]"
+
+begin FOOTER
+"[N] L[ZH] R0 FMAX M5"
+"[N] L[XH][YH] R0 FMAX M30"
+"[N] END PGM [TP_FILENAME] MM"
+

@@ -1,0 +1,84 @@
++================================================
++ Converted by postc from laser_mm.pp (Vectric)
++================================================
+
+POST_NAME = "grbl Laser and Spindle (mm) (*.gcode)"
+FILE_EXTENSION = "gcode"
+UNITS = "MM"
+LASER_SUPPORT = "YES"
+LINE_ENDING = "[10]"
+LINE_NUMBER_START = 0
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM = 999999
+
+VAR POWER = [P|C|S|1.0|10]
+VAR SPINDLE_SPEED = [S|A|S|1.0]
+VAR FEED_RATE = [F|C|F|1.0]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A|I|1.3]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A|J|1.3]
+VAR X_HOME_POSITION = [XH|A|X|1.3]
+VAR Y_HOME_POSITION = [YH|A|Y|1.3]
+VAR Z_HOME_POSITION = [ZH|A|Z|1.3]
+VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
+VAR TOOLS_USED = [TOOLS_USED|A||1.0]
+VAR TOOL_NUMBER = [T|A||1.0]
+VAR TOOL_NAME = [TOOLNAME|A||1.0]
+VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
+
+begin HEADER
+"; [TP_FILENAME] - [TOOLS_USED]"
+"G21 G90 G17"
+"G0[ZH]"
+"G0[XH][YH]"
+
+begin SPINDLE_ON
+"M3[S]"
+
+begin TOOLCHANGE
+"M5"
+"G0[ZH]"
+"; change to tool [T] [TOOLNAME], then resume"
+"M0"
+
+begin NEW_SEGMENT
+"; [TOOLPATH_NAME]"
+
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+
+begin FIRST_FEED_MOVE
+"G1[X][Y][Z][F]"
+
+begin FEED_MOVE
+"G1[X][Y][Z]"
+
+begin FIRST_CW_ARC_MOVE
+"G2[X][Y][Z][I][J][F]"
+
+begin CW_ARC_MOVE
+"G2[X][Y][Z][I][J]"
+
+begin FIRST_CCW_ARC_MOVE
+"G3[X][Y][Z][I][J][F]"
+
+begin CCW_ARC_MOVE
+"G3[X][Y][Z][I][J]"
+
+begin JET_TOOL_ON
+"M4[P]"
+
+begin JET_TOOL_POWER
+"[P]"
+
+begin JET_TOOL_OFF
+"M5"
+
+begin FOOTER
+"M5"
+"G0[ZH]"
+"G0[XH][YH]"
+"M2"
+

@@ -1,0 +1,79 @@
++================================================
++ Converted by postc from noarcs_wrap_x_mm.pp (Vectric)
++================================================
+
+POST_NAME = "G-Code no arcs, WrapX2B (mm) (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+LINE_ENDING = "[13][10]"
+LINE_NUMBER_START = 10
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM = 990
+SUBSTITUTE = "([91])]"
+SPINDLE_SPEED_RANGE = 1 15 4500 18000
+ROTARY_WRAP_X = "B"
+
+VAR LINE_NUMBER = [N|A|N|1.0]
+VAR SPINDLE_SPEED = [S|A|S|1.0]
+VAR FEED_RATE = [F|A|F|#1.0]
+VAR TOOL_NUMBER = [T|A||1.0]
+VAR PREVIOUS_TOOL_NUMBER = [TP|A|T|1.0]
+VAR TOOL_DIAMETER = [TDIA|A||1.2]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR X_HOME_POSITION = [XH|A|X|1.3]
+VAR Y_HOME_POSITION = [YH|A|Y|1.3]
+VAR Z_HOME_POSITION = [ZH|A|Z|1.3]
+VAR DWELL_TIME = [DWELL|A|P|1.0|1000]
+VAR WRAP_DIAMETER = [WRAP_DIA|A||1.3]
+VAR A_POSITION = [A|A||1.3]
+VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
+VAR TOOL_NAME = [TOOLNAME|A||1.0]
+VAR TOOL_NOTES = [TOOL_NOTES|A||1.0]
+VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
+
+begin HEADER
+"%"
+"O0200 ([TP_FILENAME] WRAPPED ON D[WRAP_DIA])"
+"[N] G21 G90 G17 G40 G80"
+"[N] (TOOL T[T] DIA [TDIA] [TOOLNAME] - [TOOL_NOTES])"
+"[N] G91 G28 Z0"
+"[N] G90 T[T] M6"
+"[N] G43 H[T]"
+"[N] G0[ZH]"
+
+begin SPINDLE_ON
+"[N] [S] M3"
+
+begin TOOLCHANGE
+"[N] M5"
+"[N] (TOOL T[T] DIA [TDIA] [TOOLNAME] - [TOOL_NOTES] AFTER [TP])"
+"[N] G91 G28 Z0"
+"[N] G90 T[T] M6"
+"[N] G43 H[T]"
+"[N] G0[ZH]"
+
+begin NEW_SEGMENT
+"[N] ([TOOLPATH_NAME])"
+
+begin RAPID_MOVE
+"[N] G0[X][Y][Z]"
+
+begin FEED_MOVE
+"[N] G1[X][Y][Z]"
+
+begin FEED_RATE_CHANGE
+"[N] [F]"
+
+begin DWELL_MOVE
+"[N] G4 [DWELL]"
+
+begin FOOTER
+"[N] M5"
+"[N] G91 G28 Z0"
+"[N] (B AT [A] DEG)"
+"[N] G90 G0 B0[YH]"
+"[N] M30"
+"%"
+

@@ -1,0 +1,110 @@
++================================================
++ Converted by postc from shopbot_inch.pp (Vectric)
++================================================
+
+POST_NAME = "ShopBot TC (inch) (*.sbp)"
+FILE_EXTENSION = "sbp"
+UNITS = "INCHES"
+LINE_ENDING = "[13][10]"
+LINE_NUMBER_START = 0
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM = 999999
+SUBSTITUTE = ",;"
+
+VAR SPINDLE_SPEED = [S|A||1.0]
+VAR FEED_RATE = [F|A||1.3|0.0166667]
+VAR CUT_RATE = [FC|A||1.3|0.0166667]
+VAR PLUNGE_RATE = [FP|A||1.3|0.0166667]
+VAR X_POSITION = [X|A||1.4]
+VAR Y_POSITION = [Y|A||1.4]
+VAR Z_POSITION = [Z|A||1.4]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A||1.4]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A||1.4]
+VAR X_HOME_POSITION = [XH|A||1.4]
+VAR Y_HOME_POSITION = [YH|A||1.4]
+VAR Z_HOME_POSITION = [ZH|A||1.4]
+VAR SAFE_Z_HEIGHT = [SAFEZ|A||1.4]
+VAR Z_LENGTH = [ZLENGTH|A||1.4]
+VAR X_ORIGIN_POS = [X_ORIGIN_POS|A||1.4]
+VAR Y_ORIGIN_POS = [Y_ORIGIN_POS|A||1.4]
+VAR DWELL_TIME = [DWELL|A||1.2]
+VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
+VAR PRODUCT = [PRODUCT|A||1.0]
+VAR DATE = [DATE|A||1.0]
+VAR TIME = [TIME|A||1.0]
+VAR X_MIN = [XMIN|A| |1.3]
+VAR X_MAX = [XMAX|A| |1.3]
+VAR Y_MIN = [YMIN|A| |1.3]
+VAR Y_MAX = [YMAX|A| |1.3]
+VAR Z_MIN = [ZMIN|A| |1.3]
+VAR Z_MAX = [ZMAX|A| |1.3]
+VAR XY_ORIGIN = [XY_ORIGIN|A||1.0]
+VAR FILE_NOTES = [FILE_NOTES|A||1.0]
+VAR TOOLPATHS_OUTPUT = [TOOLPATHS_OUTPUT|A||1.0]
+VAR Z_ORIGIN = [Z_ORIGIN|A||1.0]
+VAR TOOL_NUMBER = [T|A||1.0]
+VAR TOOL_NAME = [TOOLNAME|A||1.0]
+VAR PREVIOUS_TOOL_NUMBER = [TP|A||1.0]
+VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
+
+begin HEADER
+"'[TP_FILENAME]"
+"'Made by [PRODUCT] on [DATE] at [TIME]"
+"'Material X[XMIN] to[XMAX], Y[YMIN] to[YMAX], Z[ZMIN] to[ZMAX]"
+"'Origin [XY_ORIGIN] at [X_ORIGIN_POS], [Y_ORIGIN_POS]"
+"'Notes: [FILE_NOTES]"
+"'Toolpaths: [TOOLPATHS_OUTPUT]"
+"&PWZorigin = [Z_ORIGIN]"
+"&PWSafeZ = [SAFEZ]"
+"&PWMaterial = [ZLENGTH]"
+"SA"
+"'Tool [T]: [TOOLNAME]"
+"&Tool = [T]"
+"C9"
+"MS,[FC],[FP]"
+"JZ,[ZH]"
+"J2,[XH],[YH]"
+
+begin SPINDLE_ON
+"TR,[S]"
+"C6"
+"PAUSE 2"
+
+begin TOOLCHANGE
+"C7"
+"'Tool [T]: [TOOLNAME] replaces tool [TP]"
+"&Tool = [T]"
+"C9"
+
+begin NEW_SEGMENT
+"'Toolpath: [TOOLPATH_NAME]"
+"MS,[FC],[FP]"
+
+begin INITIAL_RAPID_MOVE
+"J2,[X],[Y]"
+"JZ,[Z]"
+
+begin RAPID_MOVE
+"J3,[X],[Y],[Z]"
+
+begin FEED_MOVE
+"M3,[X],[Y],[Z]"
+
+begin CW_ARC_MOVE
+"CG,,[X],[Y],[I],[J],T,1"
+
+begin CCW_ARC_MOVE
+"CG,,[X],[Y],[I],[J],T,-1"
+
+begin FEED_RATE_CHANGE
+"MS,[F],[FP]"
+
+begin DWELL_MOVE
+"PAUSE [DWELL]"
+
+begin FOOTER
+"C7"
+"JZ,[ZH]"
+"J2,[XH],[YH]"
+"END"
+

@@ -1,0 +1,71 @@
+//! `postc convert POST --to vectric|ron [-o OUT]`: prints a post of any
+//! dialect as a post of another (`postc_backends`). A post the target
+//! cannot hold is refused with a diagnostic per reason, and nothing is
+//! written; `-o` writes the whole file or none of it.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use postc_backends::Target;
+use postc_ir::{Diagnostic, SourceMap};
+
+use super::{DialectArg, Failed, fail, load_post, report};
+
+/// The dialects `convert` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum TargetArg {
+    /// A Vectric .pp post.
+    Vectric,
+    /// The post's IR as RON (postc post reads it back).
+    Ron,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The post to convert.
+    post: PathBuf,
+    /// The dialect to write.
+    #[arg(long, value_enum)]
+    to: TargetArg,
+    /// Write the converted post here instead of standard output.
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// The source post's dialect, when its extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+}
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
+    let target = match args.to {
+        TargetArg::Vectric => Target::Vectric,
+        TargetArg::Ron => Target::Ron,
+    };
+    let text = match postc_backends::convert(&post, target) {
+        Ok(text) => text,
+        Err(diagnostics) => {
+            report::eprint(&mut sources, &diagnostics);
+            eprintln!(
+                "postc: `{}` cannot be converted to {:?}; nothing was written",
+                args.post.display(),
+                args.to
+            );
+            return Err(Failed);
+        }
+    };
+    let written = match &args.output {
+        Some(path) => {
+            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
+            tempfile::NamedTempFile::new_in(dir).and_then(|mut tmp| {
+                tmp.write_all(&text)?;
+                tmp.persist(path).map(|_| ()).map_err(|e| e.error)
+            })
+        }
+        None => {
+            let mut stdout = std::io::stdout().lock();
+            stdout.write_all(&text).and_then(|()| stdout.flush())
+        }
+    };
+    written.map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot write the converted post: {e}"))))
+}

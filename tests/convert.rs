@@ -1,0 +1,272 @@
+//! `postc convert`: every corpus post converted to every target either is
+//! refused with a diagnostic, or posts every toolpath it applies to with
+//! the same bytes and the same warnings as its source.
+//!
+//! - the project's posts (`corpus/posts/`): each converted post is
+//!   pinned in `corpus/converted/<target>/<source dialect>/` (bless with
+//!   `POSTC_BLESS=1`);
+//! - the real Vectric posts of `../shared/corpus/vectric`: converted and
+//!   posted, not pinned (their text is not the project's to commit);
+//! - converting a converted post to its own target gives the same text (a
+//!   fixed point), and a converted post compiles with no diagnostic the
+//!   source did not have.
+//!
+//! The test prints the matrix (source dialect x target: converted /
+//! refused, by reason) that `docs/convert.md` records.
+
+mod golden_common;
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+use golden_common::{corpus, diff, files, stem};
+use postc_backends::Target;
+use postc_ir::{Dialect, Post, SourceMap};
+use postc_runtime::{Finished, Output, RunOptions};
+
+const TARGETS: [Target; 2] = [Target::Vectric, Target::Ron];
+
+struct Case {
+    post: PathBuf,
+    /// Where the source post comes from: "own" or "real".
+    origin: &'static str,
+    toolpaths: Vec<PathBuf>,
+}
+
+fn shared_vectric() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
+    dir.is_dir().then_some(dir)
+}
+
+fn cases() -> Vec<Case> {
+    let toolpaths = files(&corpus().join("toolpaths"), "ron");
+    let mut cases = Vec::new();
+    for post in files(&corpus().join("posts/vectric"), "pp") {
+        cases.push(Case { post, origin: "own", toolpaths: toolpaths.clone() });
+    }
+    let cimco = corpus().join("toolpaths/cimco");
+    for post in files(&corpus().join("posts/cimco"), "js") {
+        let lathe = stem(&post).contains("lathe");
+        let toolpaths = if lathe {
+            vec![cimco.join("lathe.ron")]
+        } else {
+            vec![cimco.join("mill.ron"), cimco.join("drill.ron"), corpus().join("toolpaths/standard.ron")]
+        };
+        cases.push(Case { post, origin: "own", toolpaths });
+    }
+    for post in files(&corpus().join("posts/vcpost"), "VcPost") {
+        let toolpaths = if stem(&post) == "fanuc_mill" {
+            let mut t = toolpaths.clone();
+            t.extend(files(&corpus().join("toolpaths/vcpost"), "ron"));
+            t
+        } else {
+            // Probe-table and composites posts run over Sub calls; their
+            // conversions are checked as IR below.
+            Vec::new()
+        };
+        cases.push(Case { post, origin: "own", toolpaths });
+    }
+    match shared_vectric() {
+        Some(dir) => {
+            let mut real = Vec::new();
+            for entry in std::fs::read_dir(&dir).expect("list ../shared/corpus/vectric").flatten() {
+                if entry.path().is_dir() {
+                    real.extend(files(&entry.path(), "pp"));
+                }
+            }
+            real.sort();
+            let standard = vec![corpus().join("toolpaths/standard.ron"), corpus().join("toolpaths/arcs_mm.ron")];
+            for post in real {
+                cases.push(Case { post, origin: "real", toolpaths: standard.clone() });
+            }
+        }
+        None => eprintln!("convert: ../shared/corpus/vectric is absent; the real Vectric posts are skipped"),
+    }
+    cases
+}
+
+/// Compiles post bytes; the diagnostics as `CODE message` lines.
+fn compile_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>) -> (Option<Post>, Vec<String>) {
+    let mut sources = SourceMap::new();
+    let compiled = postc_frontends::compile_post_bytes(path, bytes, dialect, &mut sources);
+    let errors = compiled.has_errors();
+    let diags = compiled.diagnostics.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
+    (if errors { None } else { compiled.post }, diags)
+}
+
+/// The parts of a program, or the diagnostics of a failed run.
+type Program = Result<Vec<Vec<u8>>, Vec<String>>;
+
+/// Posts a toolpath: the program, and the warnings.
+fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
+    let mut sources = SourceMap::new();
+    let mut source = match postc_frontends::open_toolpath(toolpath, &mut sources) {
+        Ok(s) => s,
+        Err(d) => return (Err(vec![format!("{} {}", d.code, d.message)]), Vec::new()),
+    };
+    let options = RunOptions { date: Some("2026-01-01".into()), time: Some("12:00".into()), ..RunOptions::default() };
+    match postc_runtime::run(post, &mut source, Output::memory(), options) {
+        Ok(report) => {
+            let warnings = report.warnings.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
+            match report.output {
+                Finished::Memory(parts) => (Ok(parts), warnings),
+                _ => (Err(vec!["a memory run did not finish in memory".into()]), warnings),
+            }
+        }
+        Err(d) => (Err(d.iter().map(|d| format!("{} {}", d.code, d.message)).collect()), Vec::new()),
+    }
+}
+
+fn target_name(t: Target) -> &'static str {
+    match t {
+        Target::Vectric => "vectric",
+        Target::Ron => "ron",
+    }
+}
+
+fn target_dialect(t: Target) -> Dialect {
+    match t {
+        Target::Vectric => Dialect::Vectric,
+        Target::Ron => Dialect::Ron,
+    }
+}
+
+/// The IR with what a RON post cannot keep (spans) left out.
+fn without_spans(post: &Post) -> Post {
+    let text = String::from_utf8(postc_backends::convert(post, Target::Ron).expect("every post converts to RON"))
+        .expect("RON is text");
+    ron::from_str(&text).expect("the RON backend's text reads back")
+}
+
+#[test]
+fn converted_posts_post_as_their_sources() {
+    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0");
+    let scratch = tempfile::tempdir().expect("a scratch folder");
+    let mut failures = Vec::new();
+    // (source dialect and origin, target) -> outcome -> count
+    let mut matrix: BTreeMap<(String, &str), BTreeMap<String, usize>> = BTreeMap::new();
+    let mut pinned = BTreeSet::new();
+    let mut programs = 0usize;
+    for case in cases() {
+        let name = case.post.display().to_string();
+        let bytes = std::fs::read(&case.post).expect("read the post");
+        let (source, source_diags) = compile_bytes(&case.post, &bytes, None);
+        let Some(source) = source else {
+            failures.push(format!("{name}: the source does not compile: {source_diags:?}"));
+            continue;
+        };
+        let dialect = format!("{:?} ({})", source.info.dialect, case.origin);
+        for target in TARGETS {
+            let outcome = matrix.entry((dialect.clone(), target_name(target))).or_default();
+            let converted = match postc_backends::convert(&source, target) {
+                Ok(c) => c,
+                Err(refusals) => {
+                    if refusals.is_empty() {
+                        failures.push(format!("{name} -> {}: refused without a reason", target_name(target)));
+                    }
+                    let codes: BTreeSet<&str> = refusals.iter().map(|d| d.code).collect();
+                    let key = format!("refused: {}", codes.into_iter().collect::<Vec<_>>().join(" "));
+                    *outcome.entry(key).or_default() += 1;
+                    continue;
+                }
+            };
+            *outcome.entry("converted".into()).or_default() += 1;
+            let file = format!("{}.{}", stem(&case.post), target.extension());
+            let folder = format!("{:?}", source.info.dialect).to_ascii_lowercase();
+            std::fs::create_dir_all(scratch.path().join(&folder)).expect("a scratch folder");
+            let path = scratch.path().join(&folder).join(&file);
+            std::fs::write(&path, &converted).expect("write the converted post");
+            let (back, back_diags) = compile_bytes(&path, &converted, Some(target_dialect(target)));
+            let Some(back) = back else {
+                failures.push(format!("{name} -> {file}: the converted post does not compile: {back_diags:?}"));
+                continue;
+            };
+            let old: BTreeSet<&str> = source_diags.iter().map(|d| d.split(' ').next().unwrap_or("")).collect();
+            // PP027 (no UNITS) is not said of a post with a POST_BASE, which
+            // might set them; the converted post is whole, and says it.
+            let based = String::from_utf8_lossy(&bytes).to_ascii_uppercase().contains("POST_BASE");
+            let new: Vec<&String> = back_diags
+                .iter()
+                .filter(|d| !old.contains(d.split(' ').next().unwrap_or("")))
+                .filter(|d| !(based && d.starts_with("PP027")))
+                .collect();
+            if !new.is_empty() {
+                failures.push(format!("{name} -> {file}: the converted post has new diagnostics: {new:?}"));
+            }
+            if target == Target::Ron && without_spans(&source) != back {
+                failures.push(format!("{name} -> {file}: the RON post reads back as a different IR"));
+            }
+            // A fixed point: converting the converted post again gives the same text.
+            match postc_backends::convert(&back, target) {
+                Ok(again) if again == converted => {}
+                Ok(again) => failures.push(format!("{name} -> {file}: converting again differs\n{}", diff(&converted, &again))),
+                Err(d) => failures.push(format!("{name} -> {file}: converting again is refused: {:?}", d[0].message)),
+            }
+            for toolpath in &case.toolpaths {
+                programs += 1;
+                let pair = format!("{} over {}", file, stem(toolpath));
+                let (want, want_warnings) = post(&source, toolpath);
+                let (got, got_warnings) = post(&back, toolpath);
+                match (want, got) {
+                    (Ok(want), Ok(got)) => {
+                        if want != got {
+                            failures.push(format!("{pair}: the program differs\n{}", diff(&want.concat(), &got.concat())));
+                        }
+                    }
+                    (Err(want), Err(got)) => {
+                        if want != got {
+                            failures.push(format!("{pair}: fails differently: {want:?} vs {got:?}"));
+                        }
+                    }
+                    (want, got) => failures.push(format!("{pair}: source {:?}, converted {:?}", want.err(), got.err())),
+                }
+                if want_warnings != got_warnings {
+                    failures.push(format!("{pair}: warnings differ: {want_warnings:?} vs {got_warnings:?}"));
+                }
+            }
+            if case.origin == "own" {
+                let dir = corpus().join("converted").join(target_name(target)).join(&folder);
+                let pin = dir.join(&file);
+                pinned.insert(pin.clone());
+                let old = std::fs::read(&pin).ok();
+                if bless {
+                    std::fs::create_dir_all(&dir).expect("create corpus/converted");
+                    if old.as_deref() != Some(converted.as_slice()) {
+                        std::fs::write(&pin, &converted).expect("write a converted post");
+                    }
+                } else {
+                    match old {
+                        None => failures.push(format!("{}: not pinned; bless with POSTC_BLESS=1", pin.display())),
+                        Some(old) if old != converted => {
+                            failures.push(format!("{}: differs\n{}", pin.display(), diff(&old, &converted)))
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+    }
+    for target in TARGETS {
+        let dir = corpus().join("converted").join(target_name(target));
+        let folders = std::fs::read_dir(&dir).into_iter().flatten().flatten().filter(|e| e.path().is_dir());
+        for entry in folders.flat_map(|f| std::fs::read_dir(f.path()).into_iter().flatten().flatten()) {
+            if !pinned.contains(&entry.path()) {
+                if bless {
+                    let _ = std::fs::remove_file(entry.path());
+                } else {
+                    failures.push(format!("{}: no corpus post converts to it any more", entry.path().display()));
+                }
+            }
+        }
+    }
+    eprintln!("convert matrix ({programs} programs compared):");
+    for ((dialect, target), outcomes) in &matrix {
+        eprintln!("  {dialect} -> {target}: {outcomes:?}");
+    }
+    assert!(
+        failures.is_empty(),
+        "{} conversion failures:\n\n{}\n\nIf pinned posts changed on purpose, read them and bless: POSTC_BLESS=1 cargo test --test convert",
+        failures.len(),
+        failures.join("\n\n")
+    );
+}
