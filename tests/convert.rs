@@ -270,3 +270,51 @@ fn converted_posts_post_as_their_sources() {
         failures.join("\n\n")
     );
 }
+
+/// A RON post with any of its numbers changed (ids out of range, formats
+/// that do not exist, budgets of 0) gives diagnostics or posts: never a
+/// panic. Posts of all three dialects, each number set to 0 and to 65535.
+#[test]
+fn mutated_ron_posts_never_panic() {
+    let posts = [
+        corpus().join("converted/ron/vectric/gcode_mm.ron"),
+        corpus().join("converted/ron/cimco/fanuc_mill.ron"),
+        corpus().join("converted/ron/vcpost/fanuc_mill.ron"),
+    ];
+    let toolpath = corpus().join("toolpaths/seed_job.ron");
+    let mut refused = 0;
+    let mut tried = 0;
+    for path in posts {
+        let text = std::fs::read_to_string(&path).expect("a pinned RON post");
+        // The start of every run of digits that stands alone (an id, a count).
+        let numbers: Vec<(usize, usize)> = text
+            .char_indices()
+            .filter(|&(i, c)| c.is_ascii_digit() && !text[..i].ends_with(|p: char| p.is_ascii_alphanumeric() || p == '.' || p == '-'))
+            .map(|(i, _)| (i, text[i..].find(|c: char| !c.is_ascii_digit()).map_or(text.len(), |n| i + n)))
+            .filter(|&(_, end)| !text[end..].starts_with('.'))
+            .step_by(3)
+            .take(400)
+            .collect();
+        for (start, end) in numbers {
+            for replacement in ["0", "65535"] {
+                tried += 1;
+                let mutated = format!("{}{replacement}{}", &text[..start], &text[end..]);
+                if std::env::var_os("POSTC_TRACE_MUTATIONS").is_some() {
+                    let line = text[..start].lines().count();
+                    eprintln!("{}:{line}: {} -> {replacement}", path.display(), &text[start..end]);
+                }
+                let (back, _) = compile_bytes(Path::new("mutated.ron"), mutated.as_bytes(), Some(Dialect::Ron));
+                match back {
+                    Some(mut back) => {
+                        // A mutated loop runs to the step budget (RT002):
+                        // a small one keeps the test quick.
+                        back.options.step_budget = back.options.step_budget.min(20_000);
+                        let _ = post(&back, &toolpath);
+                    }
+                    None => refused += 1,
+                }
+            }
+        }
+    }
+    assert!(tried > 1000 && refused > 0, "{tried} mutations, {refused} refused");
+}

@@ -6,7 +6,8 @@
 //! a diagnostic to the wrong place. Everything else is kept, so the RON
 //! post posts exactly as its source does.
 
-use postc_ir::{Body, Diagnostic, Post, Stmt};
+use postc_ir::visit::{VisitMut, walk_stmt_mut};
+use postc_ir::{Diagnostic, Post, Stmt};
 
 /// The IR of `post` as RON, after a header comment naming its source.
 pub fn print(post: &Post) -> Result<String, Vec<Diagnostic>> {
@@ -26,35 +27,25 @@ pub fn print(post: &Post) -> Result<String, Vec<Diagnostic>> {
 fn drop_spans(post: &mut Post) {
     for h in &mut post.handlers {
         h.span = None;
-        drop_in(&mut h.body);
     }
     for f in &mut post.functions {
         f.span = None;
-        if let Body::Native(body) = &mut f.body {
-            drop_in(body);
-        }
     }
-    drop_in(&mut post.init);
     for s in &mut post.scripts {
         s.span = None;
         s.span_map.clear();
     }
+    DropLoopSpans.visit_post_mut(post);
 }
 
-fn drop_in(body: &mut [Stmt]) {
-    for stmt in body {
-        match stmt {
-            Stmt::While { body, span, .. } => {
-                *span = None;
-                drop_in(body);
-            }
-            Stmt::If { branches, otherwise } => {
-                for (_, b) in branches {
-                    drop_in(b);
-                }
-                drop_in(otherwise);
-            }
-            _ => {}
+/// Clears the span of every loop.
+struct DropLoopSpans;
+
+impl VisitMut for DropLoopSpans {
+    fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
+        if let Stmt::While { span, .. } = stmt {
+            *span = None;
         }
+        walk_stmt_mut(self, stmt);
     }
 }

@@ -14,10 +14,11 @@
 //! APT CL; `.ron`, `.jsonl` for the native stream) or its content.
 
 pub mod native;
+mod ron_locate;
 
 use std::path::Path;
 
-use postc_ir::{Dialect, Diagnostic, EventSource, Post, SourceMap};
+use postc_ir::{Dialect, Diagnostic, EventSource, FileId, Post, SourceMap, Span};
 
 /// A compiled post and everything its frontend had to say.
 pub struct Compiled {
@@ -78,7 +79,7 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
                 .help("name it .pp (Vectric), .js (CIMCO), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
         );
     };
-    match dialect {
+    let mut compiled = match dialect {
         Dialect::Vectric => {
             let (post, diagnostics) = postc_front_vectric::compile(path, bytes, sources);
             Compiled { post: Some(post), diagnostics }
@@ -91,7 +92,45 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
             let (post, diagnostics) = postc_front_cimco::compile(path, bytes, sources);
             Compiled { post: Some(post), diagnostics }
         }
-        Dialect::Ron => compile_ron(path, bytes, sources),
+        Dialect::Ron => return compile_ron(path, bytes, sources),
+    };
+    validated(&mut compiled, None, sources);
+    compiled
+}
+
+/// Runs [`postc_ir::validate`] on a compiled post: what the runtime and the
+/// backends trust. A RON post's problems point at the item of the text
+/// that holds them; a frontend's would be a postc bug, reported at the
+/// handler or function when it has a span.
+fn validated(compiled: &mut Compiled, ron_file: Option<FileId>, sources: &SourceMap) {
+    let Some(post) = &compiled.post else { return };
+    let problems = postc_ir::validate::validate(post);
+    if problems.is_empty() {
+        return;
+    }
+    for p in problems {
+        let (field, index) = p.at.field();
+        let place = match index {
+            Some(i) => format!("{field}[{i}]"),
+            None => field.to_string(),
+        };
+        let mut d = Diagnostic::error("IR002", format!("{place}: {}", p.message))
+            .help("a post's ids must name formats, variables, functions, globals and scripts it has");
+        let span = match ron_file {
+            Some(file) => sources
+                .text(file)
+                .and_then(|text| ron_locate::item(text, field, index))
+                .map(|(start, end)| Span::new(file, start, end)),
+            None => match p.at {
+                postc_ir::validate::Item::Handler(i) => post.handlers.get(i).and_then(|h| h.span),
+                postc_ir::validate::Item::Function(i) => post.functions.get(i).and_then(|f| f.span),
+                _ => None,
+            },
+        };
+        if let Some(span) = span {
+            d = d.at(span, "here");
+        }
+        compiled.diagnostics.push(d);
     }
 }
 
@@ -100,7 +139,11 @@ fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
     let text = String::from_utf8_lossy(bytes).into_owned();
     let file = sources.add(path.display().to_string(), text.clone());
     match ron::from_str::<Post>(&text) {
-        Ok(post) => Compiled { post: Some(post), diagnostics: Vec::new() },
+        Ok(post) => {
+            let mut compiled = Compiled { post: Some(post), diagnostics: Vec::new() };
+            validated(&mut compiled, Some(file), sources);
+            compiled
+        }
         Err(e) => {
             let offset = line_col_offset(&text, e.span.start.line, e.span.start.col);
             Compiled::failed(

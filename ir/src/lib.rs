@@ -101,6 +101,8 @@ pub mod format;
 pub mod post;
 pub mod quantity;
 pub mod units;
+pub mod validate;
+pub mod visit;
 
 pub use calls::{CallSource, CallValue, MissingSub, SubCall};
 pub use code::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
