@@ -57,8 +57,8 @@ pub struct Machine {
     pub move_length: Option<f64>,
     pub spindle_speed: f64,
     /// Jet power: the jet tool's own, or the last Power event's since the
-    /// tool was loaded; `None` while no power is set (a spindle tool, or a
-    /// jet tool before its power).
+    /// tool was loaded; `None` while no power is set (a spindle tool prints
+    /// nothing, a jet tool 0).
     pub power: Option<f64>,
     /// Dwell time in seconds; [`NO_VALUE`] before any dwell.
     pub dwell: f64,
@@ -229,7 +229,7 @@ impl Machine {
             Quantity::PlungeFeed => given(self.tool.plunge_feed),
             Quantity::InverseTimeFeed => self.inverse_time(),
             Quantity::SpindleSpeed => self.spindle_output(),
-            Quantity::Power => self.power.unwrap_or(NO_VALUE),
+            Quantity::Power => self.jet_power(),
             Quantity::Tool => tool(f64::from(self.tool.number)),
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),
@@ -258,6 +258,21 @@ impl Machine {
             Quantity::BlockNumber => 0.0,
             // Text quantities have no number.
             _ => 0.0,
+        }
+    }
+
+    /// Jet power: the power set for the tool; 0 for a jet tool no power has
+    /// been set for yet (the jet is off: "M4 S0 laser off", as the corpus's
+    /// Snapmaker laser post writes it, while leaving the word out would let
+    /// the controller's last S, often a spindle speed, drive the jet); no
+    /// value while a spindle tool has no power, so a router's cuts carry no
+    /// `S0`.
+    #[inline]
+    fn jet_power(&self) -> f64 {
+        match self.power {
+            Some(p) => p,
+            None if self.has_tool && self.tool.jet => 0.0,
+            None => NO_VALUE,
         }
     }
 
@@ -371,7 +386,7 @@ mod tests {
         m.set_tool(Tool { number: 1, spindle_speed: 18000.0, ..Tool::default() });
         assert!(m.number(Quantity::Power).is_nan(), "a spindle tool has no power");
         m.set_tool(Tool { number: 3, jet: true, ..Tool::default() });
-        assert!(m.number(Quantity::Power).is_nan(), "a jet tool before its power");
+        assert_eq!(m.number(Quantity::Power), 0.0, "a jet tool before its power is off");
         m.power = Some(40.0);
         m.set_tool(Tool { number: 3, jet: true, ..Tool::default() });
         assert_eq!(m.number(Quantity::Power), 40.0, "the same jet tool keeps its power");
