@@ -478,7 +478,7 @@ pub(crate) enum Op<'p> {
 
 /// Whether a handler prints a move: the position is known when it runs.
 fn is_move_section(key: &HandlerKey) -> bool {
-    matches!(key, HandlerKey::Section(s) if (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(&s))
+    matches!(key, HandlerKey::Section(s) if (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(s))
 }
 
 /// Prepares a handler body: lines become flat operations. In move sections
