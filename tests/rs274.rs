@@ -8,6 +8,13 @@
 //! Extra moves (the header's and footer's, linearized arcs' intermediate
 //! chords, expanded drilling cycles) are allowed between them.
 //!
+//! Posts that wrap an axis around a cylinder (ROTARY_WRAP) must cut every
+//! arc into straight feed moves (a G2/G3 cannot turn a rotary axis): in
+//! their programs each of the arc's moves is a STRAIGHT_FEED whose end,
+//! unrolled from the rotary angle back onto the plane, lies on the arc.
+//! Besides the project's posts, the real wrapping posts with arc sections
+//! of `../shared/corpus/vectric` are checked when that corpus is there.
+//!
 //! `.ci/run` installs rs274; without it the test says it is skipped.
 
 use std::path::{Path, PathBuf};
@@ -35,10 +42,14 @@ enum Expected {
     Traverse([f64; 6]),
     Feed([f64; 6]),
     Arc([f64; 6], [f64; 2], ArcDir),
+    /// An arc of a wrapped post: its end as rs274 sees it, and the circle
+    /// (centre and radius) in the unrolled plane.
+    WrappedArc([f64; 6], [f64; 2], f64),
 }
 
 /// How a wrapped post prints an axis: the axis index that turns into A, the
 /// cylinder diameter and the direction.
+#[derive(Clone, Copy)]
 struct Wrap {
     axis: usize,
     /// Where the angle goes: 3, 4, 5 for A, B, C (the wrapped axis itself when the post keeps its letter).
@@ -63,10 +74,19 @@ impl Wrap {
         }
         q
     }
+
+    /// The plane point (X, Y) of an rs274 end point: the rotary angle
+    /// unrolled back into a length.
+    fn unroll(&self, end: [f64; 6]) -> [f64; 2] {
+        let mut xy = [end[0], end[1]];
+        let v = end[self.rotary];
+        xy[self.axis] = if self.diameter > 0.0 { self.sign * v / 360.0 * std::f64::consts::PI * self.diameter } else { v };
+        xy
+    }
 }
 
-/// The toolpath's moves in the post's units.
-fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
+/// The toolpath's moves in the post's units, and the post's wrap.
+fn expected_moves(toolpath: &Path, post: &Post) -> (Vec<Expected>, Option<Wrap>) {
     let mut sources = SourceMap::new();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
     let mut diags = Vec::new();
@@ -97,6 +117,10 @@ fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
             }
             Event::Rapid(m) => moves.push(Expected::Traverse(p(m.x, m.y, m.z))),
             Event::Feed(m) => moves.push(Expected::Feed(p(m.x, m.y, m.z))),
+            Event::Arc(a) if a.plane == postc_ir::event::Plane::Xy && wrap.is_some() => {
+                let radius = (a.x - a.cx).hypot(a.y - a.cy) * factor;
+                moves.push(Expected::WrappedArc(p(a.x, a.y, a.z), [a.cx * factor, a.cy * factor], radius))
+            }
             Event::Arc(a) => {
                 let centre = if wrap.is_some() { [f64::NAN; 2] } else { [a.cx * factor, a.cy * factor] };
                 moves.push(Expected::Arc(p(a.x, a.y, a.z), centre, a.dir))
@@ -105,7 +129,7 @@ fn expected_moves(toolpath: &Path, post: &Post) -> Vec<Expected> {
         }
     }
     assert!(diags.is_empty(), "{}: {diags:?}", toolpath.display());
-    moves
+    (moves, wrap)
 }
 
 fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
@@ -115,9 +139,10 @@ fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
 /// Whether an rs274 move is the expected one.
 fn matches(e: &Expected, c: &Motion, tol: f64) -> bool {
     match (e, c.kind) {
-        (Expected::Traverse(p), Kind::Traverse) | (Expected::Feed(p), Kind::Feed) | (Expected::Arc(p, _, _), Kind::Feed) => {
-            close(*p, c.end, tol)
-        }
+        (Expected::Traverse(p), Kind::Traverse)
+        | (Expected::Feed(p), Kind::Feed)
+        | (Expected::Arc(p, _, _), Kind::Feed)
+        | (Expected::WrappedArc(p, _, _), Kind::Feed) => close(*p, c.end, tol),
         (Expected::Arc(p, centre, dir), Kind::Arc { centre: cq, rotation }) => {
             let turn = if *dir == ArcDir::Ccw { 1 } else { -1 };
             close(*p, c.end, tol) && (!centre[0].is_finite() || close(*centre, cq, 2.0 * tol)) && rotation == turn
@@ -135,6 +160,11 @@ fn tolerance(post: &Post) -> f64 {
         .map_or(3, |v| post.formats[v.format as usize].decimals);
     10f64.powi(-(decimals as i32)) + 1e-4
 }
+
+/// Real posts (`../shared/corpus/vectric`) that wrap an axis and have arc
+/// sections: their arcs must come out as chords.
+const REAL_WRAPPING_POSTS: &[&str] =
+    &["MakeraInc__CarveraProfiles/Carvera Wrap X2A ATC (mm) (!.cnc).pp", "neilferreri__V-Carve-PPs/Grbl_mm_TC_Rotary.pp"];
 
 #[test]
 fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
@@ -156,6 +186,7 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         .filter(|p| p.extension().is_some_and(|e| e == "pp"))
         .collect();
     posts.sort();
+    posts.extend(REAL_WRAPPING_POSTS.iter().map(|rel| root().join("../shared/corpus/vectric").join(rel)).filter(|p| p.is_file()));
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy();
         let mut sources = SourceMap::new();
@@ -189,11 +220,29 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
                     continue;
                 }
             };
-            let expected = expected_moves(toolpath, &post);
+            let (expected, wrap) = expected_moves(toolpath, &post);
+            if wrap.is_some()
+                && let Some(arc) = actual.iter().find(|c| matches!(c.kind, Kind::Arc { .. }))
+            {
+                failures.push(format!("{label}: a wrapped post printed an arc (G2/G3 cannot turn the rotary axis): {arc:?}"));
+                continue;
+            }
             let mut at = 0;
             for (i, e) in expected.iter().enumerate() {
                 match actual[at..].iter().position(|c| matches(e, c, tol)) {
-                    Some(k) => at += k + 1,
+                    Some(k) => {
+                        if let (Expected::WrappedArc(_, centre, radius), Some(w)) = (e, &wrap) {
+                            // Every chord of the arc ends on it, once unrolled.
+                            for c in &actual[at..=at + k] {
+                                let [x, y] = w.unroll(c.end);
+                                let off = ((x - centre[0]).hypot(y - centre[1]) - radius).abs();
+                                if c.kind != Kind::Feed || off > 2.0 * tol {
+                                    failures.push(format!("{label}: move {i} (a wrapped arc): {c:?} is not a feed move ending on the arc (off by {off:.4})"));
+                                }
+                            }
+                        }
+                        at += k + 1;
+                    }
                     None => {
                         failures.push(format!("{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"));
                         break;

@@ -1,5 +1,5 @@
 %
-O0200 (drill_mm WRAPPED ON D0.000)
+O0200 (drill_mm WRAPPED ON D)
 N10 G21 G90 G17 G40 G80
 N20 (TOOL T4 DIA 5.00 5 mm Drill - HSS jobber)
 N30 G91 G28 Z0

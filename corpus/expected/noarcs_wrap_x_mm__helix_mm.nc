@@ -1,5 +1,5 @@
 %
-O0200 (helix_mm WRAPPED ON D0.000)
+O0200 (helix_mm WRAPPED ON D)
 N10 G21 G90 G17 G40 G80
 N20 (TOOL T2 DIA 6.00 6 mm End Mill [2 flute] - carbide, 2 flutes)
 N30 G91 G28 Z0

@@ -1,5 +1,5 @@
 %
-O0200 (seed_job WRAPPED ON D0.000)
+O0200 (seed_job WRAPPED ON D)
 N10 G21 G90 G17 G40 G80
 N20 (TOOL T1 DIA 6.35 End Mill [0.25 inch] - )
 N30 G91 G28 Z0

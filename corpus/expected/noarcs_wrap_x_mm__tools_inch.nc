@@ -1,5 +1,5 @@
 %
-O0200 (tools_inch WRAPPED ON D0.000)
+O0200 (tools_inch WRAPPED ON D)
 N10 G21 G90 G17 G40 G80
 N20 (TOOL T5 DIA 0.20 Laser [5 W] - diode)
 N30 G91 G28 Z0

@@ -146,7 +146,7 @@ quantities! {
     Date = "DATE", Text;
     Time = "TIME", Text;
     Product = "PRODUCT", Text;
-    /// The post's output units ("MM" or "INCH").
+    /// The post's output units ("MM" or "INCHES").
     UnitsText = "UNITS", Text;
     /// Text of the current comment or insert event.
     CommentText = "COMMENT", Text;

@@ -184,6 +184,7 @@ impl AptDispatch {
         eng.machine.move_from = eng.machine.pos;
         eng.machine.move_length = None;
         eng.machine.pos = p;
+        eng.machine.pos_known = true;
         self.set_xyz(eng, p);
         self.num(eng, "G", g);
         self.set_axis(eng, axis);
@@ -212,6 +213,7 @@ impl AptDispatch {
         eng.machine.move_from = start;
         eng.machine.move_length = Some(g.length());
         eng.machine.pos = end;
+        eng.machine.pos_known = true;
         self.set_xyz(eng, end);
         self.num(eng, "G", if a.dir == ArcDir::Cw { 2.0 } else { 3.0 });
         let plane = match a.plane {
@@ -244,6 +246,7 @@ impl AptDispatch {
         let peck = cycle.peck.map(len).unwrap_or(0.0);
         let feed = cycle.feed.map(len).unwrap_or(eng.machine.tool.plunge_feed);
         eng.machine.pos = top;
+        eng.machine.pos_known = true;
         self.set_xyz(eng, [top[0], top[1], depth]);
         self.num(eng, "R", reference);
         self.num(eng, "Q", peck);
@@ -331,7 +334,7 @@ impl AptDispatch {
             }
             Event::CutterComp(c) => {
                 let register = c.register.unwrap_or(eng.machine.tool.number);
-                eng.machine.comp_register = f64::from(register);
+                eng.machine.comp_register = Some(f64::from(register));
                 self.num(eng, "D", f64::from(register));
                 let minor = match c.side {
                     CompSide::Off => "OFF",

@@ -75,7 +75,7 @@ impl<'p> Engine<'p> {
             }
         }
         let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
-        let prepared = post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body))).collect();
+        let prepared = post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body, is_move_section(&h.key)))).collect();
         Engine {
             post,
             machine,
@@ -169,12 +169,12 @@ impl<'p> Engine<'p> {
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
-                                put_number(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                                put_quantity(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
                             }
                             Op::Position { var, axis, format, modal } => {
                                 let n = self.machine.pos[*axis as usize];
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
-                                put_number(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                                put_quantity(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
                             }
                             Op::Piece(piece) => self.write_piece(piece)?,
                         }
@@ -291,7 +291,7 @@ impl<'p> Engine<'p> {
             }
             ValueSource::Quantity(q) => {
                 let w = &self.writers[var.format as usize];
-                put_number(is_modal(var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
+                put_quantity(is_modal(var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
                 let v = state.value.clone();
@@ -369,6 +369,21 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
 /// what it printed last.
 #[inline(always)]
 pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+    put::<false>(modal, w, state, prefix, n, out);
+}
+
+/// Prints a runtime quantity through a variable: like [`put_number`], but a
+/// quantity with no value ([`crate::machine::NO_VALUE`]) prints nothing,
+/// prefix included, and leaves the modal memory as it was (the controller
+/// still holds what was printed last). The check sits on the slow path,
+/// which NaN takes anyway: the fast path pays nothing.
+#[inline(always)]
+pub(crate) fn put_quantity(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+    put::<true>(modal, w, state, prefix, n, out);
+}
+
+#[inline(always)]
+fn put<const ABSENT_PRINTS_NOTHING: bool>(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
     match w.round(n) {
         Some(r) => {
             if modal {
@@ -395,6 +410,9 @@ pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, pr
             w.write_rounded_after(prefix, r, out);
         }
         None => {
+            if ABSENT_PRINTS_NOTHING && n.is_nan() {
+                return;
+            }
             if let Some(k) = state.key.take() {
                 state.last.clear();
                 state.last.extend_from_slice(prefix);
@@ -458,8 +476,16 @@ pub(crate) enum Op<'p> {
     Piece(&'p Piece),
 }
 
-/// Prepares a handler body: lines become flat operations.
-pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>> {
+/// Whether a handler prints a move: the position is known when it runs.
+fn is_move_section(key: &HandlerKey) -> bool {
+    matches!(key, HandlerKey::Section(s) if (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(s))
+}
+
+/// Prepares a handler body: lines become flat operations. In move sections
+/// X, Y and Z are read straight from the position; elsewhere (a HEADER
+/// runs before the first move) they go through [`Machine::number`], which
+/// knows whether the position is known yet.
+pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
             Stmt::Line(pieces) => Prepared::Line(
@@ -474,7 +500,7 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt]) -> Vec<Prepared<'p>>
                             let var = &post.variables[*id as usize];
                             match var.source {
                                 ValueSource::Quantity(q @ (Quantity::X | Quantity::Y | Quantity::Z))
-                                    if post.options.rotary_wrap.is_none() =>
+                                    if moves && post.options.rotary_wrap.is_none() =>
                                 {
                                     Op::Position {
                                         var: *id,

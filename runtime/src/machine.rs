@@ -4,12 +4,32 @@
 //! Events arrive in the toolpath's units; [`Machine`] converts lengths and
 //! feeds by one factor as they come in, so that every quantity is already in
 //! output units when a handler formats it.
+//!
+//! A quantity nothing has given a value (jet power while a spindle tool
+//! cuts, the A axis before any move sets it, a spindle speed or feed of 0,
+//! the home position of a job that has none, ...) is [`NO_VALUE`] (NaN):
+//! the variable that prints it prints nothing, prefix included, never a
+//! made-up number the machine would obey (`S0` in a router's feed moves,
+//! `G0 Z0` for a home Z the job never gave). `docs/vectric.md` lists every
+//! quantity and what it prints without a source.
 
 use postc_ir::event::{Job, Tool, ToolpathStart, ZOrigin};
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, WrappedAxis};
 use postc_ir::{Quantity, Units};
 
 use crate::geometry::ArcGeometry;
+
+/// The value of a quantity that has no source: the word prints nothing.
+/// Events never carry NaN (they are checked on the way in, RT016), so NaN
+/// here always means "no value".
+pub const NO_VALUE: f64 = f64::NAN;
+
+/// A number that means "not given" when it is 0 (a tool's feeds and speed:
+/// the toolpath format writes 0 for a value it does not know).
+#[inline]
+fn given(v: f64) -> f64 {
+    if v == 0.0 { NO_VALUE } else { v }
+}
 
 /// The current state of the machine and the job.
 #[derive(Clone, Debug)]
@@ -23,7 +43,12 @@ pub struct Machine {
     pub toolpath: ToolpathStart,
     /// Current position (end of the last move).
     pub pos: [f64; 3],
-    pub rotary: [f64; 3],
+    /// Whether `pos` is known: after the first move, or from the job's home.
+    pub pos_known: bool,
+    /// Rotary positions (degrees) as the toolpath last set them.
+    pub rotary: [Option<f64>; 3],
+    /// Whether a Tool event has come.
+    pub has_tool: bool,
     /// Current feed rate.
     pub feed: f64,
     /// Start of the current move, and its length when it is not straight
@@ -31,7 +56,11 @@ pub struct Machine {
     pub move_from: [f64; 3],
     pub move_length: Option<f64>,
     pub spindle_speed: f64,
-    pub power: f64,
+    /// Jet power: the jet tool's own, or the last Power event's since the
+    /// tool was loaded; `None` while no power is set (a spindle tool prints
+    /// nothing, a jet tool 0).
+    pub power: Option<f64>,
+    /// Dwell time in seconds; [`NO_VALUE`] before any dwell.
     pub dwell: f64,
     /// Geometry of the arc being printed.
     pub arc: ArcGeometry,
@@ -46,7 +75,8 @@ pub struct Machine {
     pub file_name: String,
     pub file_dir: String,
     pub file_ext: String,
-    pub comp_register: f64,
+    /// Cutter compensation register a CutterComp event named.
+    pub comp_register: Option<f64>,
     /// `[TOOLS_USED]` and `[TOOLPATHS_OUTPUT]`: the job's lists, joined.
     pub tools_used: String,
     pub toolpaths_output: String,
@@ -65,13 +95,15 @@ impl Machine {
             previous_tool: None,
             toolpath: ToolpathStart::default(),
             pos: [0.0; 3],
-            rotary: [0.0; 3],
+            pos_known: false,
+            rotary: [None; 3],
+            has_tool: false,
             feed: 0.0,
             move_from: [0.0; 3],
             move_length: None,
             spindle_speed: 0.0,
-            power: 0.0,
-            dwell: 0.0,
+            power: None,
+            dwell: NO_VALUE,
             arc: ArcGeometry::default(),
             comment: String::new(),
             date: String::new(),
@@ -81,7 +113,7 @@ impl Machine {
             file_name: String::new(),
             file_dir: String::new(),
             file_ext: String::new(),
-            comp_register: 0.0,
+            comp_register: None,
             tools_used: String::new(),
             toolpaths_output: String::new(),
             spindle_range,
@@ -110,6 +142,7 @@ impl Machine {
             h.y *= f;
             h.z *= f;
             self.pos = [h.x, h.y, h.z];
+            self.pos_known = true;
         }
         job.safe_z = job.safe_z.map(|z| z * f);
         job.wrap_diameter = job.wrap_diameter.map(|d| d * f);
@@ -139,13 +172,21 @@ impl Machine {
         tool.cut_feed *= self.factor;
         tool.plunge_feed *= self.factor;
         self.feed = tool.cut_feed;
-        if self.tool.number != tool.number || self.previous_tool.is_none() {
+        // The first tool has no previous one: `[TP]` prints nothing until a
+        // second tool comes.
+        if self.has_tool && self.tool.number != tool.number {
             self.previous_tool = Some(self.tool.number);
         }
         self.spindle_speed = tool.spindle_speed;
-        if let Some(p) = tool.power {
-            self.power = p;
-        }
+        // Power belongs to jet tools: a spindle tool has none, and a new
+        // jet tool has its own or none until a Power event. The same jet
+        // tool given again keeps the power it was set to.
+        self.power = match tool.power {
+            Some(p) => Some(p),
+            None if tool.jet && self.has_tool && tool.number == self.tool.number => self.power,
+            None => None,
+        };
+        self.has_tool = true;
         self.tool = tool;
     }
 
@@ -155,19 +196,20 @@ impl Machine {
         v * self.factor
     }
 
-    /// The value of a numeric quantity.
+    /// The value of a numeric quantity; [`NO_VALUE`] when nothing gave it one.
     pub fn number(&self, q: Quantity) -> f64 {
         let arc = &self.arc;
-        let material = || self.job.material.unwrap_or_default();
-        let home = || self.job.home.unwrap_or_default();
-        let origin = || self.job.origin.as_ref();
+        let material = |f: fn(&postc_ir::event::Material) -> f64| self.job.material.as_ref().map_or(NO_VALUE, f);
+        let home = |f: fn(&postc_ir::event::Point) -> f64| self.job.home.as_ref().map_or(NO_VALUE, f);
+        let origin = self.job.origin.as_ref();
+        let tool = |v: f64| if self.has_tool { v } else { NO_VALUE };
         match q {
-            Quantity::X => self.axis_value(0),
-            Quantity::Y => self.axis_value(1),
-            Quantity::Z => self.pos[2],
+            Quantity::X => self.position(self.axis_value(0)),
+            Quantity::Y => self.position(self.axis_value(1)),
+            Quantity::Z => self.position(self.pos[2]),
             Quantity::A => self.a_value(),
-            Quantity::B => self.rotary[1],
-            Quantity::C => self.rotary[2],
+            Quantity::B => self.rotary[1].unwrap_or(NO_VALUE),
+            Quantity::C => self.rotary[2].unwrap_or(NO_VALUE),
             Quantity::I => arc.centre[0] - arc.start[0],
             Quantity::J => arc.centre[1] - arc.start[1],
             Quantity::K => arc.centre[2] - arc.start[2],
@@ -182,38 +224,63 @@ impl Machine {
             Quantity::ArcMidYI => arc.mid[1] - arc.start[1],
             Quantity::Radius => arc.radius,
             Quantity::Angle => arc.sweep,
-            Quantity::Feed => self.feed,
-            Quantity::CutFeed => self.tool.cut_feed,
-            Quantity::PlungeFeed => self.tool.plunge_feed,
+            Quantity::Feed => given(self.feed),
+            Quantity::CutFeed => given(self.tool.cut_feed),
+            Quantity::PlungeFeed => given(self.tool.plunge_feed),
             Quantity::InverseTimeFeed => self.inverse_time(),
             Quantity::SpindleSpeed => self.spindle_output(),
-            Quantity::Power => self.power,
-            Quantity::Tool => f64::from(self.tool.number),
-            Quantity::PreviousTool => f64::from(self.previous_tool.unwrap_or(self.tool.number)),
-            Quantity::ToolDiameter => self.tool.diameter,
+            Quantity::Power => self.jet_power(),
+            Quantity::Tool => tool(f64::from(self.tool.number)),
+            Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
+            Quantity::ToolDiameter => tool(self.tool.diameter),
             Quantity::DwellTime => self.dwell,
-            Quantity::HomeX => home().x,
-            Quantity::HomeY => home().y,
-            Quantity::HomeZ => home().z,
-            Quantity::SafeZ => self.job.safe_z.unwrap_or(home().z),
-            Quantity::WrapDiameter => self.job.wrap_diameter.unwrap_or(0.0),
-            Quantity::XLength => material().max.x - material().min.x,
-            Quantity::YLength => material().max.y - material().min.y,
-            Quantity::ZLength => material().max.z - material().min.z,
-            Quantity::XMin => material().min.x,
-            Quantity::YMin => material().min.y,
-            Quantity::ZMin => material().min.z,
-            Quantity::XMax => material().max.x,
-            Quantity::YMax => material().max.y,
-            Quantity::ZMax => material().max.z,
-            Quantity::XOrigin => origin().map_or(0.0, |o| o.x),
-            Quantity::YOrigin => origin().map_or(0.0, |o| o.y),
-            Quantity::CompRegister => self.comp_register,
-            Quantity::LengthOffset => f64::from(self.tool.length_offset.unwrap_or(self.tool.number)),
+            Quantity::HomeX => home(|h| h.x),
+            Quantity::HomeY => home(|h| h.y),
+            Quantity::HomeZ => home(|h| h.z),
+            Quantity::SafeZ => self.job.safe_z.unwrap_or_else(|| home(|h| h.z)),
+            Quantity::WrapDiameter => self.job.wrap_diameter.unwrap_or(NO_VALUE),
+            Quantity::XLength => material(|m| m.max.x - m.min.x),
+            Quantity::YLength => material(|m| m.max.y - m.min.y),
+            Quantity::ZLength => material(|m| m.max.z - m.min.z),
+            Quantity::XMin => material(|m| m.min.x),
+            Quantity::YMin => material(|m| m.min.y),
+            Quantity::ZMin => material(|m| m.min.z),
+            Quantity::XMax => material(|m| m.max.x),
+            Quantity::YMax => material(|m| m.max.y),
+            Quantity::ZMax => material(|m| m.max.z),
+            Quantity::XOrigin => origin.map_or(NO_VALUE, |o| o.x),
+            Quantity::YOrigin => origin.map_or(NO_VALUE, |o| o.y),
+            Quantity::CompRegister => match self.comp_register {
+                Some(d) => d,
+                None => tool(f64::from(self.tool.diameter_offset.unwrap_or(self.tool.number))),
+            },
+            Quantity::LengthOffset => tool(f64::from(self.tool.length_offset.unwrap_or(self.tool.number))),
             Quantity::BlockNumber => 0.0,
             // Text quantities have no number.
             _ => 0.0,
         }
+    }
+
+    /// Jet power: the power set for the tool; 0 for a jet tool no power has
+    /// been set for yet (the jet is off: "M4 S0 laser off", as the corpus's
+    /// Snapmaker laser post writes it, while leaving the word out would let
+    /// the controller's last S, often a spindle speed, drive the jet); no
+    /// value while a spindle tool has no power, so a router's cuts carry no
+    /// `S0`.
+    #[inline]
+    fn jet_power(&self) -> f64 {
+        match self.power {
+            Some(p) => p,
+            None if self.has_tool && self.tool.jet => 0.0,
+            None => NO_VALUE,
+        }
+    }
+
+    /// A position coordinate, or no value before the first move of a job
+    /// without a home position.
+    #[inline]
+    fn position(&self, v: f64) -> f64 {
+        if self.pos_known { v } else { NO_VALUE }
     }
 
     /// The value of a text quantity.
@@ -263,10 +330,12 @@ impl Machine {
         }
     }
 
+    /// A: the wrapped axis's angle under ROTARY_WRAP, else the A position
+    /// the toolpath last gave (no value before it gives one).
     fn a_value(&self) -> f64 {
         match self.wrap {
-            Some(w) => self.wrap_angle(self.pos[if w.axis == WrappedAxis::X { 0 } else { 1 }], w),
-            None => self.rotary[0],
+            Some(w) => self.position(self.wrap_angle(self.pos[if w.axis == WrappedAxis::X { 0 } else { 1 }], w)),
+            None => self.rotary[0].unwrap_or(NO_VALUE),
         }
     }
 
@@ -280,6 +349,10 @@ impl Machine {
         if wrap.reversed { -angle } else { angle }
     }
 
+    /// The spindle speed, through SPINDLE_SPEED_RANGE. A speed of 0 (a jet
+    /// tool, an APT tool before its SPINDL) still prints: a spindle that is
+    /// not turning is the true state, and leaving `S` out would let an `M3`
+    /// run at whatever speed the controller last had.
     fn spindle_output(&self) -> f64 {
         match self.spindle_range {
             Some(r) if r.rpm_max > r.rpm_min => {
@@ -299,9 +372,44 @@ mod tests {
     fn the_feed_is_the_new_tools_cut_feed_until_a_move_sets_it() {
         let mut m = Machine::new(Some(Units::Mm), None, None);
         m.set_job(Job { units: Units::Inch, ..Job::default() }, Some(Units::Mm));
-        assert_eq!(m.number(Quantity::Feed), 0.0);
+        // No tool, no move: the feed has no value and prints nothing.
+        assert!(m.number(Quantity::Feed).is_nan());
         m.set_tool(Tool { number: 1, cut_feed: 10.0, plunge_feed: 5.0, ..Tool::default() });
         assert!((m.number(Quantity::Feed) - 254.0).abs() < 1e-9);
         assert!((m.number(Quantity::PlungeFeed) - 127.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn power_belongs_to_jet_tools() {
+        let mut m = Machine::new(Some(Units::Mm), None, None);
+        assert!(m.number(Quantity::Power).is_nan());
+        m.set_tool(Tool { number: 1, spindle_speed: 18000.0, ..Tool::default() });
+        assert!(m.number(Quantity::Power).is_nan(), "a spindle tool has no power");
+        m.set_tool(Tool { number: 3, jet: true, ..Tool::default() });
+        assert_eq!(m.number(Quantity::Power), 0.0, "a jet tool before its power is off");
+        m.power = Some(40.0);
+        m.set_tool(Tool { number: 3, jet: true, ..Tool::default() });
+        assert_eq!(m.number(Quantity::Power), 40.0, "the same jet tool keeps its power");
+        m.set_tool(Tool { number: 4, jet: true, power: Some(70.0), ..Tool::default() });
+        assert_eq!(m.number(Quantity::Power), 70.0);
+        m.set_tool(Tool { number: 1, spindle_speed: 18000.0, ..Tool::default() });
+        assert!(m.number(Quantity::Power).is_nan(), "power is forgotten with the jet tool");
+    }
+
+    #[test]
+    fn values_without_a_source_have_none() {
+        let mut m = Machine::new(Some(Units::Mm), None, None);
+        for q in [Quantity::A, Quantity::B, Quantity::C, Quantity::Tool, Quantity::PreviousTool, Quantity::X, Quantity::HomeZ, Quantity::SafeZ, Quantity::DwellTime, Quantity::XLength, Quantity::WrapDiameter] {
+            assert!(m.number(q).is_nan(), "{q:?}");
+        }
+        m.set_job(Job { home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }), ..Job::default() }, None);
+        m.set_tool(Tool { number: 2, ..Tool::default() });
+        assert_eq!(m.number(Quantity::Z), 20.0, "the tool starts at home");
+        assert_eq!(m.number(Quantity::SafeZ), 20.0, "safe Z falls back to home Z");
+        assert_eq!(m.number(Quantity::Tool), 2.0);
+        assert!(m.number(Quantity::PreviousTool).is_nan(), "the first tool has no previous one");
+        assert_eq!(m.number(Quantity::SpindleSpeed), 0.0, "a speed of 0 prints: the spindle is not turning");
+        m.set_tool(Tool { number: 5, ..Tool::default() });
+        assert_eq!(m.number(Quantity::PreviousTool), 2.0);
     }
 }

@@ -216,7 +216,9 @@ impl Engine<'_> {
         } else if q == Quantity::BlockNumber {
             Value::Num(self.block.next)
         } else {
-            Value::Num(self.machine.number(q))
+            // A quantity with no value reads as null: it prints nothing.
+            let n = self.machine.number(q);
+            if n.is_nan() { Value::Null } else { Value::Num(n) }
         }
     }
 
@@ -360,7 +362,14 @@ impl Engine<'_> {
                 postc_ir::Piece::Var(id) => self.write_var(*id),
                 postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
                     let n = match &**value {
-                        Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => self.machine.number(*q),
+                        Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => match self.machine.number(*q) {
+                            // No value: nothing prints and the variable holds null.
+                            n if n.is_nan() => {
+                                self.set_var(*var, Value::Null);
+                                continue;
+                            }
+                            n => n,
+                        },
                         Expr::Number(n) => *n,
                         other => match self.eval(other, frame)? {
                             Value::Num(n) => n,

@@ -1,7 +1,8 @@
 //! Arcs under the section rules: which arc section prints an arc, the
 //! helix fallbacks, radius-exact arc words, and linearization into feed
 //! moves (for posts without arc sections, arcs past MAX_ARC_RADIUS, arcs
-//! outside the XY plane).
+//! outside the XY plane, arcs of a post that wraps an axis around a
+//! cylinder).
 
 use postc_ir::event::{ArcDir, ArcMove, Intent, Plane};
 use postc_ir::{Diagnostic, Quantity, Section};
@@ -24,7 +25,11 @@ impl SectionDispatch {
         }
         let too_big = options.max_arc_radius.is_some_and(|max| geometry.radius > max);
         let tolerance = options.arc_tolerance * unit;
-        if too_big || a.plane != Plane::Xy || !geometry.radius.is_finite() || geometry.radius <= 0.0 {
+        // Under ROTARY_WRAP one of X and Y turns a rotary axis: a G2/G3
+        // cannot move it, so wrapped arcs are cut into feed moves, as for
+        // posts without arc sections.
+        let wrapped = options.rotary_wrap.is_some();
+        if too_big || wrapped || a.plane != Plane::Xy || !geometry.radius.is_finite() || geometry.radius <= 0.0 {
             return self.linearize(eng, &geometry, a.intent, feed, tolerance);
         }
         let Some((family, section)) = self.arc_section(eng, &geometry, a) else {
@@ -35,6 +40,7 @@ impl SectionDispatch {
         eng.machine.move_from = start;
         eng.machine.move_length = Some(geometry.length());
         eng.machine.pos = end;
+        eng.machine.pos_known = true;
         self.print_feed_section(eng, family, Some(section), feed)?;
         self.after_move(eng, false)
     }

@@ -15,6 +15,7 @@ impl SectionDispatch {
         let at = Self::point(eng, p.x, p.y, p.z);
         if eng.has(Section::DrillPoint) {
             eng.machine.pos = at;
+            eng.machine.pos_known = true;
             eng.run_section(Section::DrillPoint)?;
             return Ok(());
         }

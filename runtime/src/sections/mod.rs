@@ -12,8 +12,9 @@
 //!   A missing `FIRST_` section falls back to the plain one, and the other
 //!   way round. Plunges without plunge sections, and retracts without
 //!   `RETRACT_MOVE`, print as feed (or rapid) moves.
-//! - Arcs without arc sections, arcs larger than `MAX_ARC_RADIUS` and arcs
-//!   outside the XY plane are linearized into feed moves; arcs smaller than
+//! - Arcs without arc sections, arcs larger than `MAX_ARC_RADIUS`, arcs
+//!   outside the XY plane and arcs of a post with ROTARY_WRAP (a G2/G3
+//!   cannot turn the rotary axis) are linearized into feed moves; arcs smaller than
 //!   `MIN_ARC_RADIUS` print as one straight move. A helix without helical
 //!   sections prints through the arc section only when that section prints
 //!   `[Z]`; otherwise it is linearized.
@@ -188,7 +189,7 @@ impl SectionDispatch {
                 eng.run_section(Section::JetToolOff)?;
             }
             Event::Power(p) => {
-                eng.machine.power = p.value;
+                eng.machine.power = Some(p.value);
                 self.ensure_started(eng)?;
                 eng.run_section(Section::JetToolPower)?;
             }
@@ -198,7 +199,8 @@ impl SectionDispatch {
                 }
             }
             Event::CutterComp(c) => {
-                eng.machine.comp_register = f64::from(c.register.unwrap_or(eng.machine.tool.number));
+                let tool = &eng.machine.tool;
+                eng.machine.comp_register = Some(f64::from(c.register.or(tool.diameter_offset).unwrap_or(tool.number)));
                 if self.started {
                     eng.run_section(Section::CutterComp)?;
                 }
@@ -308,7 +310,7 @@ impl SectionDispatch {
     fn set_rotary(eng: &mut Engine, a: Option<f64>, b: Option<f64>, c: Option<f64>) {
         for (slot, v) in [a, b, c].into_iter().enumerate() {
             if let Some(v) = v {
-                eng.machine.rotary[slot] = v;
+                eng.machine.rotary[slot] = Some(v);
             }
         }
     }
@@ -324,6 +326,7 @@ impl SectionDispatch {
         let pos = eng.machine.pos;
         let retract = same_xy(pos, target) && target[2] > pos[2];
         eng.machine.pos = target;
+        eng.machine.pos_known = true;
         let section = if self.initial_rapid && eng.has(Section::InitialRapidMove) {
             Section::InitialRapidMove
         } else if retract && eng.has(Section::RetractMove) {
@@ -364,6 +367,7 @@ impl SectionDispatch {
         eng.machine.move_from = pos;
         eng.machine.move_length = None;
         eng.machine.pos = target;
+        eng.machine.pos_known = true;
         let first_run = |fam: Family, s: &Self| s.family != fam || s.last_feed != Some(feed);
         let (family, section) = match intent {
             Intent::Plunge if first_run(Family::Plunge, self) && eng.has(Section::FirstPlungeMove) => {
