@@ -8,7 +8,7 @@
 //! - every id is in range: variables' formats, `Var`/`Previous`/
 //!   `FormatVar` variables, `Format` formats, `Call` functions, `Global`
 //!   globals, `Script` and script bodies' scripts;
-//! - a function has at least as many slots as parameters;
+//! - a native function has at least as many slots as parameters;
 //! - numbers that steer the output are finite and sensible: format
 //!   multipliers, the decimal mark (ASCII), block numbering, the chord
 //!   tolerance (above zero), arc radius limits, tape splitting (at least
@@ -113,11 +113,13 @@ pub fn validate(post: &Post) -> Vec<Invalid> {
     }
     for (i, f) in post.functions.iter().enumerate() {
         ids.at = Item::Function(i);
-        if f.params.len() > usize::from(f.slots) {
-            ids.bad(format!("`{}` has {} parameters and only {} slots", f.name, f.params.len(), f.slots));
-        }
         match &f.body {
-            Body::Native(body) => body.iter().for_each(|s| ids.visit_stmt(s)),
+            Body::Native(body) => {
+                if f.params.len() > usize::from(f.slots) {
+                    ids.bad(format!("`{}` has {} parameters and only {} slots", f.name, f.params.len(), f.slots));
+                }
+                body.iter().for_each(|s| ids.visit_stmt(s));
+            }
             Body::Script(id) => ids.script(*id),
         }
     }
