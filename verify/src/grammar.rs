@@ -123,6 +123,42 @@ fn blanks<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
     })
 }
 
+/// `( ... )`, nested parentheses included (the interpreter reports them for
+/// the controllers that refuse them); the item spans the whole comment.
+fn paren_comment<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
+    custom(|inp: &mut InputRef<'s, '_, &'s [u8], Extra>| {
+        let at = *inp.cursor().inner();
+        let all: &'s [u8] = inp.full_slice();
+        let rest = all.get(at..).unwrap_or_default();
+        if rest.first() != Some(&b'(') {
+            return Err(Cheap::new(SimpleSpan::new((), at..at + 1)));
+        }
+        let mut depth = 0u32;
+        let mut close = None;
+        for (i, &b) in rest.iter().enumerate() {
+            match b {
+                b'(' => depth += 1,
+                b')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        close = Some(i + 1);
+                        break;
+                    }
+                }
+                _ => {}
+            }
+        }
+        let Some(n) = close else {
+            return Err(Cheap::new(SimpleSpan::new((), all.len()..all.len())));
+        };
+        for _ in 0..n {
+            inp.skip();
+        }
+        inp.state().push(Item { kind: ItemKind::Comment, start: at as u32, end: (at + n) as u32, value: 0.0, decimals: 0 });
+        Ok(())
+    })
+}
+
 /// A number lexeme: value and decimals.
 fn number<'s>() -> impl Parser<'s, &'s [u8], (f64, u8), Extra> + Copy {
     custom(|inp: &mut InputRef<'s, '_, &'s [u8], Extra>| {
@@ -151,13 +187,15 @@ pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
         .try_map_with(|(letter, (value, decimals)): (u8, (f64, u8)), e| {
             push(e, ItemKind::Word(letter.to_ascii_uppercase()), value, decimals)
         });
-    let paren = just(b'(')
-        .then(none_of(b")\n").repeated())
-        .then(just(b')'))
-        .try_map_with(|_, e| push(e, ItemKind::Comment, 0.0, 0));
+    let paren = paren_comment();
+    // ISO tape's `:` program number, as `O`.
+    let colon = just(b':')
+        .ignore_then(blank)
+        .ignore_then(number())
+        .try_map_with(|(value, decimals), e| push(e, ItemKind::Word(b'O'), value, decimals));
     let semicolon = just(b';').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Comment, 0.0, 0));
     let percent = just(b'%').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Percent, 0.0, 0));
-    let item = choice((word, paren, semicolon, percent));
+    let item = choice((word, paren, semicolon, percent, colon));
     let delete = just(b'/').try_map_with(|_, e| push(e, ItemKind::Delete, 0.0, 0));
     blank
         .then(delete.or_not())
@@ -212,6 +250,10 @@ mod tests {
         assert_eq!(words("G1 X"), Err(4));
         assert_eq!(words("G1 #1=2"), Err(3));
         assert!(words("(open comment").is_err());
+        assert!(words("(a (b) c").is_err());
+        let w = words("(Laser (5 W), End Mill (1/4\"))").unwrap();
+        assert_eq!((w.len(), w[0].0), (1, ItemKind::Comment));
+        assert_eq!(words(":1248").unwrap()[0].0, ItemKind::Word(b'O'));
         assert!(words("X1..2").is_err());
         assert_eq!(words("X123456789012345678901234.5").unwrap()[0].2, 123456789012345678901234.5);
     }

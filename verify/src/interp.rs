@@ -27,6 +27,8 @@ use crate::{Controller, MAX_SHOWN, Report, Settings};
 
 /// Longest line read; the rest of a longer line is skipped with a finding.
 const MAX_LINE: usize = 64 * 1024;
+/// Unreadable blocks before the first move after which a program is taken for another language.
+const NOT_GCODE: u32 = 20;
 /// How many expected moves one program move may cover or skip.
 const LOOKAHEAD: usize = 64;
 
@@ -124,6 +126,8 @@ struct Run<'a> {
     plane: Plane,
     motion: Option<u32>,
     feed: f64,
+    /// The feed's rounding as printed, mm/min.
+    feed_step: f64,
     inverse_time: bool,
     spindle: bool,
     pos: [f64; 3],
@@ -134,13 +138,14 @@ struct Run<'a> {
     last_n: Option<f64>,
     first_n: Option<f64>,
     max_decimals: Option<u8>,
-    ended: bool,
+    stopped: bool,
     // Comparison state.
     progress: f64,
     no_feed_reported: bool,
     spindle_reported: bool,
     feed_reported: (f64, f64),
-    units_broken: bool,
+    stop_comparing: bool,
+    syntax_errors: u32,
     block: Block,
 }
 
@@ -164,6 +169,7 @@ pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSour
         plane: Plane::Xy,
         motion: None,
         feed: f64::NAN,
+        feed_step: 0.0,
         inverse_time: false,
         spindle: false,
         pos: [f64::NAN; 3],
@@ -174,12 +180,13 @@ pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSour
         last_n: None,
         first_n: None,
         max_decimals: None,
-        ended: false,
+        stopped: false,
         progress: 0.0,
         no_feed_reported: false,
         spindle_reported: false,
         feed_reported: (f64::NAN, f64::NAN),
-        units_broken: false,
+        stop_comparing: false,
+        syntax_errors: 0,
         block: Block::default(),
     };
     run.path.start();
@@ -212,7 +219,7 @@ pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSour
             run.finding(Severity::Error, "VF003", format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024), 0, 1, None);
             continue;
         }
-        if run.ended {
+        if run.stopped {
             continue;
         }
         if buf.contains(&0) {
@@ -332,7 +339,20 @@ impl Run<'_> {
     // ----- blocks -----
 
     fn line(&mut self, text: &[u8], items: &mut Items) {
-        if let Err(at) = grammar::parse(text, items) {
+        // Marlin's M117/M118 show the rest of the line as a message.
+        let (text, message) = match message_word(text) {
+            Some(k) => (&text[..k], Some(k)),
+            None => (text, None),
+        };
+        let mut parsed = grammar::parse(text, items);
+        // Marlin's M0/M1 take a message too: `M0 Load the 6 mm end mill`.
+        if let Err(at) = parsed
+            && message.is_none()
+            && let Some(k) = stop_with_message(&text[..at.min(text.len())])
+        {
+            parsed = grammar::parse(&text[..k], items);
+        }
+        if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
                 None if text.contains(&b'(') && !text.contains(&b')') => ("this comment is not closed".to_string(), "close it with `)` on the same line"),
                 None => ("the block ends where a number is expected".into(), "every word is a letter and a number, as `X1.5`"),
@@ -352,6 +372,20 @@ impl Run<'_> {
             };
             let d = self.finding(Severity::Error, "VF004", message, at, at + 1, None);
             Self::help(d, help);
+            self.syntax_errors += 1;
+            if self.syntax_errors >= NOT_GCODE && self.stats.motions == 0 {
+                let d = self.finding(
+                    Severity::Error,
+                    "VF001",
+                    format!("{NOT_GCODE} blocks could not be read and none moved the tool: this is not a G-code program; verify stops here"),
+                    0,
+                    self.line_len,
+                    None,
+                );
+                Self::help(d, format!("verify reads {}", crate::FAMILIES));
+                self.stopped = true;
+                self.stop_comparing = true;
+            }
             return;
         }
         self.block.clear();
@@ -406,9 +440,13 @@ impl Run<'_> {
             return;
         }
         let body = if text.first() == Some(&b'(') { &text[1..text.len().saturating_sub(1)] } else { &text[1..] };
-        if text.first() == Some(&b'(') && controller != Controller::Grbl {
+        if text.first() == Some(&b'(') {
             if let Some(i) = body.iter().position(|&b| b == b'(') {
-                let d = self.finding(Severity::Error, "VF042", format!("{} refuses a `(` inside a comment", controller.name()), start + 1 + i, start + 2 + i, None);
+                let (severity, what) = match controller {
+                    Controller::Generic => (Severity::Warning, "LinuxCNC, Fanuc, Haas and grbl refuse".to_string()),
+                    c => (Severity::Error, format!("{} refuses", c.name())),
+                };
+                let d = self.finding(severity, "VF042", format!("{what} a `(` inside a comment"), start + 1 + i, start + 2 + i, None);
                 Self::help(d, "the post should replace `(` in comment text (Vectric: SUBSTITUTE)");
                 return;
             }
@@ -489,7 +527,8 @@ impl Run<'_> {
                 }
                 280 | 300 => home = Some((start, end)),
                 530 => machine = true,
-                400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 100 | 50 | 51 | 641 => {}
+                400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
+                100 => dwell = true,
                 900 => self.absolute = true,
                 910 => self.absolute = false,
                 901 => self.arc_absolute = true,
@@ -502,6 +541,7 @@ impl Run<'_> {
                     let d = self.finding(Severity::Warning, "VF008", "verify does not replay G92 coordinate offsets; positions after it are not compared", start as usize, end as usize, None);
                     Self::help(d, "posts that shift coordinates with G92 are verified without the shift");
                     self.pos = [f64::NAN; 3];
+                    dwell = true;
                 }
                 _ => {
                     let d = self.finding(Severity::Warning, "VF005", format!("verify does not know G{}; it is ignored", format_code(code)), start as usize, end as usize, None);
@@ -512,8 +552,10 @@ impl Run<'_> {
         // Feed, spindle, tool change.
         if let Some(f) = b.get(b'F')
             && !self.inverse_time
+            && !dwell
         {
             self.feed = f.value * self.unit / self.settings.feed_multiplier;
+            self.feed_step = 10f64.powi(-i32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
         for &(code, start, end) in &b.m[..b.ms] {
             match (code * 10.0).round() as u32 {
@@ -525,12 +567,21 @@ impl Run<'_> {
                 }
                 50 | 1070 | 630 | 650 => self.spindle = false,
                 60 => self.tool_change(start, end),
-                20 | 300 => self.ended = true,
+                20 | 300 => {
+                    // The end of the program (or of a tape part): what follows
+                    // is read as the next part, from the modes a program starts in.
+                    self.spindle = false;
+                    self.motion = None;
+                    self.absolute = true;
+                    self.inverse_time = false;
+                }
                 _ => {}
             }
         }
-        let _ = dwell;
         // Motion.
+        if dwell {
+            return; // G4, G10 and G92 read the block's axis words as their own arguments
+        }
         let any_axis = b.get(b'X').is_some() || b.get(b'Y').is_some() || b.get(b'Z').is_some();
         if let Some(w) = home {
             // G28/G30: through the given point to a home position verify does not know.
@@ -612,14 +663,19 @@ impl Run<'_> {
         if !z.is_finite() {
             return; // after G28/G53 Z: at the machine's home height
         }
-        let safe = self.path.job.safe_z.or(self.path.max_rapid_z.is_finite().then_some(self.path.max_rapid_z));
-        if let Some(safe) = safe
-            && z < safe - self.tol()
-        {
+        // In the material (below its top) when the job gives the material box;
+        // otherwise below the toolpath's safe height.
+        let (limit, what) = match (self.path.job.material, self.path.job.safe_z) {
+            (Some((_, max)), _) => (max[2], "the top of the material"),
+            (None, Some(safe)) => (safe, "the toolpath's safe height"),
+            (None, None) if self.path.max_rapid_z.is_finite() => (self.path.max_rapid_z, "the toolpath's highest rapid"),
+            _ => return,
+        };
+        if z < limit - self.tol() {
             let d = self.finding(
                 Severity::Error,
                 "VF038",
-                format!("tool change with the tool at Z{z:.3} mm, below the toolpath's safe height Z{safe:.3} mm"),
+                format!("tool change with the tool at Z{z:.3} mm, below {what} (Z{limit:.3} mm)"),
                 start as usize,
                 end as usize,
                 None,
@@ -737,7 +793,7 @@ impl Run<'_> {
         if p.cutting() {
             self.cut_state(&p);
         }
-        if self.settings.rotary_wrap || self.units_broken || !known(p.end) {
+        if self.settings.rotary_wrap || self.stop_comparing || !known(p.end) {
             return;
         }
         self.compare(p);
@@ -764,7 +820,7 @@ impl Run<'_> {
                 }
                 self.path.pop();
                 self.stats.matched += 1;
-                self.made(&p, &e, tol, true);
+                self.made(&p, &e, tol);
                 self.progress = 0.0;
                 return;
             }
@@ -780,7 +836,7 @@ impl Run<'_> {
                 self.motion_finding(Severity::Error, "VF012", "a rapid move along a cut of the toolpath", &p, Some(&e), Some("the toolpath cuts here at a feed rate".into()));
             }
             if p.cutting() {
-                self.made(&p, &e, tol, false);
+                self.made(&p, &e, tol);
             }
             self.progress = self.progress.max(t);
             return;
@@ -835,7 +891,7 @@ impl Run<'_> {
     }
 
     /// Checks a program move that makes (all or part of) expected move `e`.
-    fn made(&mut self, p: &Motion, e: &Expected, tol: f64, whole: bool) {
+    fn made(&mut self, p: &Motion, e: &Expected, tol: f64) {
         match (p.kind, e.kind) {
             (MKind::Rapid, Kind::Feed | Kind::Arc) => {
                 if !Self::retract_like(e) {
@@ -843,7 +899,7 @@ impl Run<'_> {
                 }
                 return;
             }
-            (MKind::Arc, Kind::Arc) => self.same_arc(p, e, tol, whole),
+            (MKind::Arc, Kind::Arc) => self.same_arc(p, e, tol),
             (MKind::Feed, Kind::Arc) if known(p.start) => {
                 let arc = Arc { start: e.start, end: e.end, centre: e.centre, dir: e.dir, plane: e.plane };
                 let chord = self.settings.chord_tolerance;
@@ -876,37 +932,46 @@ impl Run<'_> {
         }
     }
 
-    fn same_arc(&mut self, p: &Motion, e: &Expected, tol: f64, whole: bool) {
+    fn same_arc(&mut self, p: &Motion, e: &Expected, tol: f64) {
         if p.plane != e.plane {
             self.motion_finding(Severity::Error, "VF013", "this arc is in another plane than the toolpath's", p, Some(e), None);
             return;
         }
         let [u, v, _] = axes(e.plane);
-        let centre_off = (p.centre[u] - e.centre[u]).hypot(p.centre[v] - e.centre[v]);
-        let radius = (e.end[u] - e.centre[u]).hypot(e.end[v] - e.centre[v]);
+        let off = |c: [f64; 3]| (c[u] - e.centre[u]).hypot(c[v] - e.centre[v]);
         if p.dir != e.dir {
             let (g, other) = if p.dir == ArcDir::Cw { ("G2 (clockwise)", "counter-clockwise") } else { ("G3 (counter-clockwise)", "clockwise") };
             self.motion_finding(Severity::Error, "VF013", format!("this arc turns {g}; the toolpath's turns {other}"), p, Some(e), Some("the post prints the arc sections' G codes the wrong way round".into()));
             return;
         }
-        if let (Some(r), true) = (p.r, whole && known(e.start)) {
-            let arc = Arc { start: e.start, end: e.end, centre: e.centre, dir: e.dir, plane: e.plane };
-            let long = arc.sweep(tol) > std::f64::consts::PI + 1e-6;
-            if long && r > 0.0 {
-                self.motion_finding(Severity::Error, "VF022", format!("this arc turns {:.1}° but R is positive: the controller cuts the short arc", arc.sweep(tol).to_degrees()), p, Some(e), Some("R arcs over 180° need a negative R".into()));
-                return;
-            }
+        let centre_off = off(p.centre);
+        if centre_off <= 2.0 * tol {
+            return;
         }
-        if centre_off > 2.0 * tol + 1e-3 * radius.max(1.0) * 0.0 {
+        if let Some(r) = p.r
+            && let Some(other) = r_centre(p.start, p.end, -r, p.dir, p.plane, tol)
+            && off(other) <= 2.0 * tol
+        {
+            let sweep = Arc { centre: other, ..p.arc() }.sweep(tol).to_degrees();
+            let (form, why) = if r > 0.0 { ("positive", "R arcs over 180° need a negative R") } else { ("negative", "R arcs under 180° need a positive R") };
             self.motion_finding(
                 Severity::Error,
-                "VF013",
-                format!("this arc's centre is {} off the toolpath's by {centre_off:.4} mm", fmt_point(p.centre)),
+                "VF022",
+                format!("this arc turns {sweep:.1}° but R is {form}: the controller cuts the other arc"),
                 p,
                 Some(e),
-                Some(format!("the toolpath's centre is {}", fmt_point(e.centre))),
+                Some(why.into()),
             );
+            return;
         }
+        self.motion_finding(
+            Severity::Error,
+            "VF013",
+            format!("this arc's centre is {}, {centre_off:.4} mm from the toolpath's", fmt_point(p.centre)),
+            p,
+            Some(e),
+            Some(format!("the toolpath's centre is {}", fmt_point(e.centre))),
+        );
     }
 
     fn check_feed_and_spindle(&mut self, p: &Motion, e: &Expected) {
@@ -925,7 +990,7 @@ impl Run<'_> {
             return;
         }
         let (got, want) = (self.feed, e.feed);
-        if (got - want).abs() > (0.005 * want).max(1.5) && self.feed_reported != (got, want) {
+        if (got - want).abs() > (0.005 * want).max(0.5 * self.feed_step + 1e-6) && self.feed_reported != (got, want) {
             self.feed_reported = (got, want);
             let per_unit = if self.unit > 1.0 { "in/min" } else { "mm/min" };
             self.motion_finding(
@@ -969,7 +1034,7 @@ impl Run<'_> {
         for (scale, what) in [(25.4, "inches in a millimetre (G21) program"), (1.0 / 25.4, "millimetres in an inch (G20) program")] {
             let scaled = p.end.map(|v| v * scale);
             if dist(scaled, e.end) <= tol * scale.max(1.0) {
-                self.units_broken = true;
+                self.stop_comparing = true;
                 self.motion_finding(
                     Severity::Error,
                     "VF030",
@@ -1005,7 +1070,7 @@ impl Run<'_> {
     fn finish(&mut self) {
         let mut missing = 0u64;
         let mut first: Option<Expected> = None;
-        if !self.settings.rotary_wrap && !self.units_broken {
+        if !self.settings.rotary_wrap && !self.stop_comparing {
             while let Some(e) = self.path.pop() {
                 if e.cutting() {
                     missing += 1;
@@ -1032,6 +1097,32 @@ impl Run<'_> {
             self.push(d, error);
         }
     }
+}
+
+/// Where the message of an `M117`/`M118` word starts (after the word).
+fn message_word(text: &[u8]) -> Option<usize> {
+    let upper = |i: usize| text.get(i).map(u8::to_ascii_uppercase);
+    (0..text.len()).find_map(|i| {
+        let boundary = i == 0 || !text[i - 1].is_ascii_alphanumeric();
+        let word = upper(i) == Some(b'M') && text.get(i + 1..i + 4).is_some_and(|d| d == b"117" || d == b"118");
+        let after = text.get(i + 4).is_none_or(|b| !b.is_ascii_digit() && *b != b'.');
+        (boundary && word && after).then_some(i + 4)
+    })
+}
+
+/// When a block that failed to read has an `M0`/`M1` word (followed by a
+/// blank) before the failure: where its message starts.
+fn stop_with_message(prefix: &[u8]) -> Option<usize> {
+    (0..prefix.len()).find_map(|i| {
+        let boundary = i == 0 || !prefix[i - 1].is_ascii_alphanumeric();
+        if !boundary || !prefix[i].eq_ignore_ascii_case(&b'M') {
+            return None;
+        }
+        let digits = prefix[i + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let end = i + 1 + digits;
+        let code = std::str::from_utf8(&prefix[i + 1..end]).ok()?.parse::<u32>().ok()?;
+        (digits > 0 && code <= 1 && matches!(prefix.get(end), Some(b' ' | b'\t'))).then_some(end)
+    })
 }
 
 fn format_code(code: f64) -> String {
