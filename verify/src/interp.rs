@@ -525,7 +525,7 @@ impl Run<'_> {
                         Self::help(d, "the units word must match the units the post prints its numbers in");
                     }
                 }
-                280 | 300 => home = Some((start, end)),
+                280 | 300 | 382..=385 => home = Some((start, end)),
                 530 => machine = true,
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
                 100 => dwell = true,
@@ -559,7 +559,7 @@ impl Run<'_> {
         }
         for &(code, start, end) in &b.m[..b.ms] {
             match (code * 10.0).round() as u32 {
-                30 | 40 | 1060 | 620 | 640 => {
+                30 | 40 | 130 | 140 | 1060 | 620 | 640 => {
                     if !self.spindle {
                         self.spindle_reported = false;
                     }
@@ -793,7 +793,7 @@ impl Run<'_> {
         if p.cutting() {
             self.cut_state(&p);
         }
-        if self.settings.rotary_wrap || self.stop_comparing || !known(p.end) {
+        if self.settings.rotary_wrap || self.stop_comparing || !(p.end[0].is_finite() && p.end[1].is_finite()) {
             return;
         }
         self.compare(p);
@@ -810,10 +810,40 @@ impl Run<'_> {
         }
     }
 
-    fn compare(&mut self, p: Motion) {
+    /// The next expected moves, flattened onto Z0 when the program writes no Z.
+    fn expected(&mut self, k: usize, flat: bool) -> Option<Expected> {
+        let mut e = self.path.get(k).copied()?;
+        if flat {
+            e.start[2] = 0.0;
+            e.end[2] = 0.0;
+            e.centre[2] = 0.0;
+            if e.kind == Kind::Arc && e.plane != Plane::Xy {
+                // Seen from above, an arc across Z is a straight move.
+                e.kind = Kind::Feed;
+            }
+        }
+        Some(e)
+    }
+
+    fn compare(&mut self, mut p: Motion) {
         let tol = self.tol();
+        // A program that has not written Z (2D laser and plasma posts) is compared in X and Y.
+        let flat = !p.end[2].is_finite();
+        if flat {
+            p.start[2] = 0.0;
+            p.end[2] = 0.0;
+            p.centre[2] = 0.0;
+        }
+        // Moves that flattening made zero-length (straight plunges) are made where the program is.
+        while let Some(e) = self.expected(0, flat)
+            && flat
+            && e.kind != Kind::Arc
+            && dist(e.start, e.end) <= 1e-9
+        {
+            self.skip();
+        }
         let mut k = 0;
-        while let Some(e) = self.path.get(k).copied() {
+        while let Some(e) = self.expected(k, flat) {
             if dist(p.end, e.end) <= tol {
                 for _ in 0..k {
                     self.skip();
@@ -829,7 +859,7 @@ impl Run<'_> {
             }
             k += 1;
         }
-        if let Some(e) = self.path.get(0).copied()
+        if let Some(e) = self.expected(0, flat)
             && let Some(t) = self.on_path(&p, &e, tol)
         {
             if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
@@ -845,7 +875,10 @@ impl Run<'_> {
             self.extra_rapid(&p, tol);
             return;
         }
-        self.off_path(&p, tol);
+        if !flat && self.in_the_air(&p, tol) {
+            return; // a header or footer feed move above the material cuts nothing
+        }
+        self.off_path(&p, tol, flat);
     }
 
     /// Moves over an expected move the program skipped (covered on its way).
@@ -862,8 +895,10 @@ impl Run<'_> {
         if !known(p.start) {
             return false;
         }
-        match p.kind {
-            MKind::Arc => p.arc().deviation(e.end, tol).0 <= tol,
+        match (p.kind, e.kind) {
+            // A straight move never covers an arc of the toolpath.
+            (_, Kind::Arc) if p.kind != MKind::Arc => false,
+            (MKind::Arc, _) => p.arc().deviation(e.end, tol).0 <= tol && dist(e.end, p.start) > tol,
             _ => to_segment(e.end, p.start, p.end).0 <= tol,
         }
     }
@@ -1026,8 +1061,20 @@ impl Run<'_> {
         );
     }
 
-    fn off_path(&mut self, p: &Motion, tol: f64) {
-        let Some(e) = self.path.get(0).copied() else {
+    /// Whether a move stays above the material (its top, or without a
+    /// material box, the toolpath's lowest rapid height).
+    fn in_the_air(&self, p: &Motion, tol: f64) -> bool {
+        let top = match self.path.job.material {
+            Some((_, max)) => max[2],
+            None if self.path.min_rapid_z.is_finite() => self.path.min_rapid_z,
+            None => return false,
+        };
+        let low = if p.kind == MKind::Arc { p.start[2].min(p.end[2]) } else { p.start[2].min(p.end[2]) };
+        known(p.start) && low >= top - tol
+    }
+
+    fn off_path(&mut self, p: &Motion, tol: f64, flat: bool) {
+        let Some(e) = self.expected(0, flat) else {
             self.motion_finding(Severity::Error, "VF010", format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)), p, None, None);
             return;
         };
@@ -1056,7 +1103,7 @@ impl Run<'_> {
         );
         // Resynchronise on a later toolpath move this one ends at.
         for k in 1..LOOKAHEAD {
-            let Some(later) = self.path.get(k).copied() else { break };
+            let Some(later) = self.expected(k, flat) else { break };
             if dist(p.end, later.end) <= tol {
                 for _ in 0..=k {
                     self.skip();
