@@ -331,7 +331,9 @@ impl Run<'_> {
     // ----- tolerances -----
 
     fn tol(&self) -> f64 {
-        let decimals = self.settings.decimals.or(self.max_decimals).unwrap_or(if self.unit > 1.0 { 4 } else { 3 });
+        // Without the post, the program's own rounding: the most decimals its
+        // X Y Z words have shown, but no coarser than three decimals.
+        let decimals = self.settings.decimals.unwrap_or(self.max_decimals.unwrap_or(3).max(3));
         let unit = self.settings.units.map_or(self.unit, |u| u.mm_per_unit());
         self.settings.tolerance.max(10f64.powi(-i32::from(decimals)) * unit + 1e-6)
     }
@@ -872,7 +874,9 @@ impl Run<'_> {
             return;
         }
         if p.kind == MKind::Rapid {
-            self.extra_rapid(&p, tol);
+            if !self.wrong_units(&p, tol, flat) {
+                self.extra_rapid(&p, tol);
+            }
             return;
         }
         if !flat && self.in_the_air(&p, tol) {
@@ -1073,25 +1077,37 @@ impl Run<'_> {
         known(p.start) && low >= top - tol
     }
 
+    /// Whether a move off the toolpath lands on one of its next moves once
+    /// its numbers are read in the other unit; reports it (VF030) if so.
+    fn wrong_units(&mut self, p: &Motion, tol: f64, flat: bool) -> bool {
+        for k in 0..8 {
+            let Some(e) = self.expected(k, flat) else { break };
+            for (scale, what) in [(25.4, "inches in a millimetre (G21) program"), (1.0 / 25.4, "millimetres in an inch (G20) program")] {
+                let scaled = p.end.map(|v| v * scale);
+                if dist(p.end, e.end) > tol && dist(scaled, e.end) <= tol * scale.max(1.0) {
+                    self.stop_comparing = true;
+                    self.motion_finding(
+                        Severity::Error,
+                        "VF030",
+                        format!("the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}", fmt_point(p.end), fmt_point(e.end)),
+                        p,
+                        Some(&e),
+                        Some("the post's units and the program's G20/G21 must agree; verify stops comparing motion here".into()),
+                    );
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
     fn off_path(&mut self, p: &Motion, tol: f64, flat: bool) {
         let Some(e) = self.expected(0, flat) else {
             self.motion_finding(Severity::Error, "VF010", format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)), p, None, None);
             return;
         };
-        for (scale, what) in [(25.4, "inches in a millimetre (G21) program"), (1.0 / 25.4, "millimetres in an inch (G20) program")] {
-            let scaled = p.end.map(|v| v * scale);
-            if dist(scaled, e.end) <= tol * scale.max(1.0) {
-                self.stop_comparing = true;
-                self.motion_finding(
-                    Severity::Error,
-                    "VF030",
-                    format!("the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}", fmt_point(p.end), fmt_point(e.end)),
-                    p,
-                    Some(&e),
-                    Some("the post's units and the program's G20/G21 must agree; verify stops comparing motion here".into()),
-                );
-                return;
-            }
+        if self.wrong_units(p, tol, flat) {
+            return;
         }
         self.motion_finding(
             Severity::Error,
