@@ -23,7 +23,7 @@ mod postp;
 mod probe;
 pub mod report;
 mod toolpath;
-mod verify;
+pub(crate) mod verify;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
