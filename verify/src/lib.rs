@@ -202,3 +202,28 @@ pub const MAX_SHOWN: usize = 20;
 pub fn verify(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
     interp::run(program, file, toolpath, settings)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The LinuxCNC limit as LinuxCNC's `rs274` applies it (measured: a G2
+    /// from X0 to X10 with I5.014 is read, I5.0145 refused; from X0 to X2000
+    /// I1000.5 is read, I1001 refused).
+    #[test]
+    fn the_linuxcnc_radius_limit_agrees_with_rs274() {
+        let check = |i: f64, end: f64| Controller::LinuxCnc.radius_error(i, end - i, false).is_some();
+        assert!(!check(5.014, 10.0));
+        assert!(check(5.0145, 10.0));
+        assert!(!check(1000.5, 2000.0));
+        assert!(check(1001.0, 2000.0));
+    }
+
+    #[test]
+    fn the_grbl_radius_limit() {
+        assert!(Controller::Grbl.radius_error(5.0, 5.004, false).is_none());
+        assert!(Controller::Grbl.radius_error(5.0, 5.006, false).is_some());
+        assert!(Controller::Grbl.radius_error(1000.0, 1000.4, false).is_none());
+        assert!(Controller::Grbl.radius_error(1000.0, 1000.6, false).is_some());
+    }
+}
