@@ -143,6 +143,7 @@ impl<'a> ExpectedPath<'a> {
         if self.jet_tool { self.jet } else { self.spindle }
     }
 
+    #[allow(clippy::too_many_arguments)] // one expected move's fields, filled from five event kinds
     fn push(&mut self, kind: Kind, end: [f64; 3], centre: [f64; 3], dir: ArcDir, plane: Plane, intent: Intent, feed: f64, span: Span) {
         if kind == Kind::Rapid {
             self.min_rapid_z = self.min_rapid_z.min(end[2]);

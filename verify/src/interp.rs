@@ -442,37 +442,33 @@ impl Run<'_> {
             return;
         }
         let body = if text.first() == Some(&b'(') { &text[1..text.len().saturating_sub(1)] } else { &text[1..] };
-        if text.first() == Some(&b'(') {
-            if let Some(i) = body.iter().position(|&b| b == b'(') {
-                let (severity, what) = match controller {
-                    Controller::Generic => (Severity::Warning, "LinuxCNC, Fanuc, Haas and grbl refuse".to_string()),
-                    c => (Severity::Error, format!("{} refuses", c.name())),
-                };
-                let d = self.finding(severity, "VF042", format!("{what} a `(` inside a comment"), start + 1 + i, start + 2 + i, None);
-                Self::help(d, "the post should replace `(` in comment text (Vectric: SUBSTITUTE)");
-                return;
-            }
+        if text.first() == Some(&b'(')
+            && let Some(i) = body.iter().position(|&b| b == b'(')
+        {
+            let (severity, what) = match controller {
+                Controller::Generic => (Severity::Warning, "LinuxCNC, Fanuc, Haas and grbl refuse".to_string()),
+                c => (Severity::Error, format!("{} refuses", c.name())),
+            };
+            let d = self.finding(severity, "VF042", format!("{what} a `(` inside a comment"), start + 1 + i, start + 2 + i, None);
+            Self::help(d, "the post should replace `(` in comment text (Vectric: SUBSTITUTE)");
+            return;
         }
         if let Some(i) = body.iter().position(|&b| b < 32 && b != b'\t' || b == 127) {
             self.finding(Severity::Error, "VF042", "a control character in a comment", start + 1 + i, start + 2 + i, None);
             return;
         }
-        if matches!(controller, Controller::Fanuc | Controller::Haas) {
-            if let Some(i) = body.iter().position(|&b| b == b'%') {
-                let d = self.finding(Severity::Error, "VF042", format!("{} reads `%` as the end of the program, even in a comment", controller.name()), start + 1 + i, start + 2 + i, None);
-                Self::help(d, "the post should replace `%` in comment text");
-                return;
-            }
+        if matches!(controller, Controller::Fanuc | Controller::Haas)
+            && let Some(i) = body.iter().position(|&b| b == b'%')
+        {
+            let d = self.finding(Severity::Error, "VF042", format!("{} reads `%` as the end of the program, even in a comment", controller.name()), start + 1 + i, start + 2 + i, None);
+            Self::help(d, "the post should replace `%` in comment text");
+            return;
         }
         if let Some(i) = body.iter().position(|&b| b >= 128) {
             let severity = if strict { Severity::Error } else { Severity::Warning };
             let d = self.finding(severity, "VF042", format!("a character outside ASCII in a comment; {} may refuse it", controller.name()), start + 1 + i, start + 2 + i, None);
             Self::help(d, "the post should replace accented and other non-ASCII characters in comment text");
         }
-    }
-
-    fn word_span(w: (u32, u32)) -> (usize, usize) {
-        (w.0 as usize, w.1 as usize)
     }
 
     fn execute(&mut self) {
@@ -487,21 +483,18 @@ impl Run<'_> {
             self.block_number(n);
         }
         // G codes that set modes, in the RS274/NGC order of execution.
-        let mut home: Option<(u32, u32)> = None;
+        let mut home = false;
         let mut machine = false;
         let mut dwell = false;
-        let mut motion_word: Option<(u32, u32)> = None;
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = (code * 10.0).round() as u32;
             match tenths {
                 0 | 10 | 20 | 30 | 810..=890 | 730 | 740 | 760 => {
-                    if (810..=890).contains(&tenths) || matches!(tenths, 730 | 740 | 760) {
-                        if !self.motion.is_some_and(|m| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760)) {
-                            self.cycle_initial_z = self.pos[2];
-                        }
+                    let cycle = |m: u32| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760);
+                    if cycle(tenths) && !self.motion.is_some_and(cycle) {
+                        self.cycle_initial_z = self.pos[2];
                     }
                     self.motion = Some(tenths);
-                    motion_word = Some((start, end));
                 }
                 800 => self.motion = None,
                 40 => dwell = true,
@@ -527,7 +520,7 @@ impl Run<'_> {
                         Self::help(d, "the units word must match the units the post prints its numbers in");
                     }
                 }
-                280 | 300 | 382..=385 => home = Some((start, end)),
+                280 | 300 | 382..=385 => home = true,
                 530 => machine = true,
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
                 100 => dwell = true,
@@ -539,7 +532,7 @@ impl Run<'_> {
                 940 | 950 => self.inverse_time = false,
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
-                920 | 921 | 922 | 923 => {
+                920..=923 => {
                     let d = self.finding(Severity::Warning, "VF008", "verify does not replay G92 coordinate offsets; positions after it are not compared", start as usize, end as usize, None);
                     Self::help(d, "posts that shift coordinates with G92 are verified without the shift");
                     self.pos = [f64::NAN; 3];
@@ -585,9 +578,9 @@ impl Run<'_> {
             return; // G4, G10 and G92 read the block's axis words as their own arguments
         }
         let any_axis = b.get(b'X').is_some() || b.get(b'Y').is_some() || b.get(b'Z').is_some();
-        if let Some(w) = home {
-            // G28/G30: through the given point to a home position verify does not know.
-            let _ = w;
+        if home {
+            // G28/G30 (through the given point to a home position) and G38.x
+            // probes end where verify cannot know.
             let axes_given = [b'X', b'Y', b'Z'].map(|l| b.get(l).is_some());
             for (i, given) in axes_given.iter().enumerate() {
                 if *given || !any_axis {
@@ -606,7 +599,7 @@ impl Run<'_> {
             return;
         }
         let has_ijkr = [b'I', b'J', b'K', b'R'].iter().any(|l| b.get(*l).is_some());
-        if !any_axis && !(has_ijkr && matches!(self.motion, Some(20 | 30))) {
+        if !(any_axis || has_ijkr && matches!(self.motion, Some(20 | 30))) {
             return;
         }
         let Some(motion) = self.motion else {
@@ -627,14 +620,12 @@ impl Run<'_> {
             }
         }
         let span = self.whole_line();
-        let word = motion_word.map(Self::word_span);
         match motion {
             0 => self.emit(Motion { kind: MKind::Rapid, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
             10 => self.emit(Motion { kind: MKind::Feed, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
             20 | 30 => self.arc(b, motion == 20, target, span),
             _ => self.cycle(b, motion, target, span),
         }
-        let _ = word;
     }
 
     fn block_number(&mut self, n: Word) {
@@ -1073,7 +1064,8 @@ impl Run<'_> {
             None if self.path.min_rapid_z.is_finite() => self.path.min_rapid_z,
             None => return false,
         };
-        let low = if p.kind == MKind::Arc { p.start[2].min(p.end[2]) } else { p.start[2].min(p.end[2]) };
+        // A helix's Z runs monotonically from start to end, so the ends bound it.
+        let low = p.start[2].min(p.end[2]);
         known(p.start) && low >= top - tol
     }
 
