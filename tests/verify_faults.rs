@@ -290,6 +290,17 @@ fn hand_written_faults_are_caught_at_their_line() {
     let truncated: String = PROGRAM[..10].join("\n");
     let found = check(&truncated, Controller::LinuxCnc);
     assert!(errors(&found).iter().any(|f| f.code == "VF011"), "{found:#?}");
+    // The arc linearized into one chord, 3 mm from the arc: over the chord tolerance.
+    caught(&program_with(&[(8, "N80 G1 X40.35 Y20.35")]), Controller::LinuxCnc, "VF014", 9);
+    // Linearized into chords within 0.01 mm of the arc, it verifies.
+    let chords: Vec<String> = (1..=40)
+        .map(|k| {
+            let a = -std::f64::consts::FRAC_PI_2 + std::f64::consts::FRAC_PI_2 * f64::from(k) / 40.0;
+            format!("X{:.4} Y{:.4}", 30.0 + 10.35 * a.cos(), 20.35 + 10.35 * a.sin())
+        })
+        .collect();
+    let program = program_with(&[(8, &format!("N80 G1 {}", chords.join("\nG1 ")))]);
+    assert!(errors(&check(&program, Controller::LinuxCnc)).is_empty(), "{program}");
     // An R full circle.
     caught(&program_with(&[(8, "N80 G3 X30 Y10 R5")]), Controller::LinuxCnc, "VF023", 9);
 }
