@@ -155,12 +155,14 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
                 not_posted += 1;
                 continue;
             };
-            if postc_verify::foreign_family(&program).is_some() {
+            if let Some(family) = postc_verify::foreign_family(&program) {
+                println!("refused by content: {name} ({family})");
                 *refused.entry("not G-code (by content)").or_insert(0) += 1;
                 break;
             }
             let errors = verify(&post, &program, toolpath);
             if errors.iter().any(|e| e.0 == "VF001") {
+                println!("refused as not G-code: {name}");
                 *refused.entry("not G-code (VF001: text output)").or_insert(0) += 1;
                 break;
             }

@@ -86,7 +86,8 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
                     return slow(s);
                 }
             }
-            b'.' if !point => point = true,
+            // The decimal comma some European controls print (`X10,000`).
+            b'.' | b',' if !point && (b == b'.' || s.get(i + 1).is_some_and(u8::is_ascii_digit)) => point = true,
             _ => break,
         }
         i += 1;
@@ -95,7 +96,7 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
     if !body.iter().any(u8::is_ascii_digit) {
         return None;
     }
-    let written = body.iter().position(|&b| b == b'.').map_or(0, |p| body.len() - p - 1);
+    let written = body.iter().position(|&b| b == b'.' || b == b',').map_or(0, |p| body.len() - p - 1);
     let value = mantissa as f64 / 10f64.powi(decimals as i32);
     Some((i, if negative { -value } else { value }, written.min(255) as u8))
 }
@@ -242,6 +243,8 @@ mod tests {
         assert_eq!(words("%").unwrap()[0].0, ItemKind::Percent);
         assert_eq!(words("").unwrap().len(), 0);
         assert_eq!(words("G90.1").unwrap()[0].2, 90.1);
+        assert_eq!(words("X10,250Y-2,5").unwrap()[1].2, -2.5);
+        assert_eq!(words("X10,250").unwrap()[0].3, 3);
         assert_eq!(words("X 1.0\r").unwrap()[0].2, 1.0);
     }
 

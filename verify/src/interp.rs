@@ -501,8 +501,9 @@ impl Run<'_> {
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
                 190 => self.plane = Plane::Yz,
-                200 | 210 => {
-                    let inch = tenths == 200;
+                200 | 210 | 700 | 710 => {
+                    // G20/G21, and G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM).
+                    let inch = tenths == 200 || tenths == 700;
                     self.unit = if inch { 25.4 } else { 1.0 };
                     self.units_stated = true;
                     if let Some(units) = self.settings.units
@@ -512,7 +513,7 @@ impl Run<'_> {
                         let d = self.finding(
                             Severity::Error,
                             "VF031",
-                            format!("the program says {} but {post} writes {}", if inch { "G20 (inch)" } else { "G21 (mm)" }, if inch { "millimetres" } else { "inches" }),
+                            format!("the program says {} but {post} writes {}", if inch { "inches (G20/G70)" } else { "millimetres (G21/G71)" }, if inch { "millimetres" } else { "inches" }),
                             start as usize,
                             end as usize,
                             None,
@@ -1074,7 +1075,7 @@ impl Run<'_> {
     fn wrong_units(&mut self, p: &Motion, tol: f64, flat: bool) -> bool {
         for k in 0..8 {
             let Some(e) = self.expected(k, flat) else { break };
-            for (scale, what) in [(25.4, "inches in a millimetre (G21) program"), (1.0 / 25.4, "millimetres in an inch (G20) program")] {
+            for (scale, what) in [(25.4, "inches in a program read in millimetres"), (1.0 / 25.4, "millimetres in a program read in inches")] {
                 let scaled = p.end.map(|v| v * scale);
                 if dist(p.end, e.end) > tol && dist(scaled, e.end) <= tol * scale.max(1.0) {
                     self.stop_comparing = true;

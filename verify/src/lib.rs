@@ -156,6 +156,12 @@ impl Settings {
 /// The program families verify knows, for the refusal message.
 pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style)";
 
+/// ShopBot commands that start a line with a comma after them.
+const SHOPBOT: &[&str] = &[
+    "MS", "JS", "VS", "J2", "J3", "J4", "J5", "JX", "JY", "JZ", "JA", "JB", "M2", "M3", "M4", "M5", "MX", "MY", "MZ", "MA", "MB", "MH", "JH",
+    "CG", "CR", "CP", "TR", "SO", "PA", "PS", "C2", "C3", "C6", "C7", "C9", "TC", "FP", "ZX", "ZY", "ZZ", "ZT", "SR", "SF", "VA", "VR",
+];
+
 /// Output families verify does not read, told apart by a program's first bytes.
 pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
     let text = String::from_utf8_lossy(&head[..head.len().min(4096)]);
@@ -167,11 +173,12 @@ pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
         if ["IN;", "PU;", "PD;", "SP1;", "DF;"].iter().any(|p| upper.starts_with(p)) || (upper.starts_with("PU") && upper.ends_with(';')) {
             return Some("HPGL");
         }
+        // ShopBot's two-character commands take comma-separated arguments (`MS,1,0.5`, `J3,0,0,1`).
         let b = upper.as_bytes();
-        if b.len() >= 3 && b[0].is_ascii_alphabetic() && (b[1].is_ascii_alphanumeric()) && b[2] == b',' {
+        if b.len() >= 3 && b[2] == b',' && SHOPBOT.iter().any(|c| c.as_bytes() == &b[..2]) {
             return Some("ShopBot");
         }
-        if upper.starts_with('&') || upper.starts_with("SA") && upper.len() == 2 {
+        if upper.starts_with('&') || upper == "SA" {
             return Some("ShopBot");
         }
     }
@@ -225,5 +232,20 @@ mod tests {
         assert!(Controller::Grbl.radius_error(5.0, 5.006, false).is_some());
         assert!(Controller::Grbl.radius_error(1000.0, 1000.4, false).is_none());
         assert!(Controller::Grbl.radius_error(1000.0, 1000.6, false).is_some());
+    }
+}
+
+#[cfg(test)]
+mod family_tests {
+    use super::*;
+
+    #[test]
+    fn families_by_their_first_lines() {
+        assert_eq!(foreign_family(b"IN;\nSP1;\nPU0,0;\n"), Some("HPGL"));
+        assert_eq!(foreign_family(b"'job\nSA\nMS,1,0.5\nJ3,1,2,3\n"), Some("ShopBot"));
+        assert_eq!(foreign_family(b"0 BEGIN PGM 1 MM\n1 BLK FORM\n"), Some("Heidenhain conversational"));
+        // Decimal commas are G-code too.
+        assert_eq!(foreign_family(b"%\nG90G17G71\nG00X10,000Y10,000\nX5,000Y2,5\n"), None);
+        assert_eq!(foreign_family(b"G21 G90\nG0 X1 Y2\n"), None);
     }
 }
