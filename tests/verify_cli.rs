@@ -103,3 +103,17 @@ fn post_with_verify_checks_what_it_wrote() {
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o).contains("IO007"), "{}", text(&o));
 }
+
+#[test]
+fn postp_programs_verify_against_their_cl_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(root().join("corpus/toolpaths/apt/postp_demo.apt"), dir.path().join("cl.tap")).unwrap();
+    let o = postc(&["postp", dir.path().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let program = dir.path().join("out.nc");
+    std::fs::write(&program, &o.stdout).unwrap();
+    let cl = dir.path().join("cl.tap");
+    let o = postc(&["verify", program.to_str().unwrap(), "--toolpath", cl.to_str().unwrap(), "--postp", "--controller", "fanuc"]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("0 error(s)"), "{}", text(&o));
+}

@@ -143,6 +143,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                         controller: postc_verify::Controller::Generic,
                         tolerance: 0.01,
                         format: report::Format::Human,
+                        postp: None,
                     };
                     super::verify::verify(&job, &mut sources)
                 }

@@ -33,6 +33,9 @@ pub struct Args {
     /// The post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    /// The program was written by `postc postp` from TOOLPATH (a CL file): compare with the moves postp posts from, with its controller's post.
+    #[arg(long, conflicts_with = "post")]
+    postp: bool,
 }
 
 /// Controllers as `--controller` names them.
@@ -67,11 +70,36 @@ const FOREIGN_EXTENSIONS: &[(&str, &str)] = &[("plt", "HPGL"), ("hpgl", "HPGL"),
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = SourceMap::new();
+    let mut postp = None;
     let post = match &args.post {
         Some(path) => Some(load_post(Some(path), args.dialect, &mut sources)?),
+        None if args.postp => {
+            let report = |sources: &mut SourceMap, d: Vec<Diagnostic>| {
+                report::eprint(sources, &d);
+                Failed
+            };
+            let head = crate::postp::head(&args.toolpath, None, &mut sources).map_err(|d| report(&mut sources, d))?;
+            let options = crate::postp::load_options(head.controller, None, &mut sources).map_err(|d| report(&mut sources, vec![d]))?;
+            let post = crate::postp::compile(&head, &options, &mut sources).map_err(|d| report(&mut sources, d))?;
+            postp = Some(crate::postp::transform::Machine {
+                kind: head.controller.kind(),
+                name: head.controller.name(),
+                axes: crate::postp::controller::rotary_axes(head.axis_type),
+                retractz: options.retractz,
+            });
+            Some(post)
+        }
         None => None,
     };
-    let job = Job { program: &args.program, toolpath: &args.toolpath, post: post.as_ref(), controller: args.controller.into(), tolerance: args.tolerance, format: args.format };
+    let job = Job {
+        program: &args.program,
+        toolpath: &args.toolpath,
+        post: post.as_ref(),
+        controller: args.controller.into(),
+        tolerance: args.tolerance,
+        format: args.format,
+        postp,
+    };
     verify(&job, &mut sources)
 }
 
@@ -83,6 +111,8 @@ pub struct Job<'a> {
     pub controller: Controller,
     pub tolerance: f64,
     pub format: Format,
+    /// The program came from `postc postp`: the toolpath's events go through postp's transform.
+    pub postp: Option<crate::postp::transform::Machine>,
 }
 
 pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
@@ -154,7 +184,11 @@ pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
         reader = BufReader::with_capacity(1 << 16, std::fs::File::open(job.program).map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?);
         sources.add_streamed(name.clone())
     };
-    let mut source = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
+    let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
+    let mut source: Box<dyn postc_ir::EventSource> = match &job.postp {
+        Some(machine) => Box::new(crate::postp::transform::Transform::new(reader_events, crate::postp::records::ClText::open(job.toolpath), machine.clone())),
+        None => reader_events,
+    };
     let report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
     let shown = report.findings.len() as u64;
     let total = report.errors + report.warnings;
