@@ -280,6 +280,8 @@ fn hand_written_faults_are_caught_at_their_line() {
     caught(&program_with(&[(1, "N10 G21 G90 G17 (JOB 100%)")]), Controller::Fanuc, "VF042", 2);
     // A rapid where the toolpath cuts.
     caught(&program_with(&[(9, "N90 G0 Y40")]), Controller::LinuxCnc, "VF012", 10);
+    // A rapid over a cut and on past its end.
+    caught(&program_with(&[(9, "N90 G0 Y45")]), Controller::LinuxCnc, "VF012", 10);
     // A rapid down into the material that the toolpath does not make.
     caught(&program_with(&[(13, "N130 S18000 M3 G0 X60 Y60 Z-3")]), Controller::LinuxCnc, "VF037", 14);
     // A cut off the toolpath.

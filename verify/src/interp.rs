@@ -866,6 +866,19 @@ impl Run<'_> {
             return;
         }
         if p.kind == MKind::Rapid {
+            if let Some(e) = self.expected(0, flat)
+                && e.cutting()
+                && !Self::retract_like(&e)
+                && known(p.start)
+                && dist(e.end, p.start) > tol
+                && to_segment(e.end, p.start, p.end).0 <= tol
+            {
+                // The rapid passes over the end of the next cut: it makes that cut at rapid.
+                self.motion_finding(Severity::Error, "VF012", "a rapid move over a cut of the toolpath", &p, Some(&e), Some("the toolpath makes this move at a feed rate".into()));
+                self.skip();
+                self.progress = 0.0;
+                return;
+            }
             if !self.wrong_units(&p, tol, flat) {
                 self.extra_rapid(&p, tol);
             }
@@ -887,6 +900,9 @@ impl Run<'_> {
     fn skippable(&self, p: &Motion, e: &Expected, tol: f64) -> bool {
         if e.kind == Kind::Rapid && (p.kind == MKind::Rapid || dist(e.end, p.start) <= tol) {
             return true;
+        }
+        if p.kind == MKind::Rapid && !Self::retract_like(e) {
+            return false; // a rapid never makes a cut (VF012 below)
         }
         if !known(p.start) {
             return false;
