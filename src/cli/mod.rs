@@ -10,6 +10,7 @@
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
 //! postc probe-table POST                                      # empty probe-cycle table of a VcPost post
 //! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
+//! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -24,6 +25,7 @@ mod postp;
 mod probe;
 pub mod report;
 mod toolpath;
+pub(crate) mod verify;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -55,6 +57,8 @@ enum Command {
     ProbeTable(probe::Args),
     /// Post DIR/cl.tap for the controller its MACHIN names (a reimplementation of `postp`, the APT CL post processor for ACORN, FANUC, HAAS and TORMACH controllers).
     Postp(postp::Args),
+    /// Replay a G-code program and compare its motion with the toolpath it was posted from; exit 1 when anything is out of tolerance.
+    Verify(verify::Args),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -96,6 +100,7 @@ pub fn main() -> ExitCode {
         Command::Bench(args) => bench::run(args),
         Command::ProbeTable(args) => probe::run(args),
         Command::Postp(args) => postp::run(args),
+        Command::Verify(args) => verify::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {

@@ -31,6 +31,9 @@ pub struct Args {
     /// VcPost composites: run this #Primer Sub before the event file's calls (repeatable).
     #[arg(long, value_name = "NAME")]
     primer: Vec<String>,
+    /// After posting to OUT, replay what was written and compare it with the toolpath (`postc verify`); needs -o.
+    #[arg(long)]
+    verify: bool,
 }
 
 /// `--set` names and what they do.
@@ -90,6 +93,12 @@ pub fn run(args: Args) -> Result<(), Failed> {
                 .help("give a post and a toolpath (`postc post POST TOOLPATH`), or a toolpath alone to use the embedded G-code post"),
         ));
     }
+    if args.verify && args.output.is_none() {
+        return Err(fail(
+            &mut sources,
+            Diagnostic::error("IO007", "`--verify` checks the file that was written: give it with `-o OUT`"),
+        ));
+    }
     let post = load_post(post_path, args.dialect, &mut sources)?;
     let mut options = RunOptions { exact_arcs: args.exact_arcs, ..RunOptions::default() };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
@@ -125,7 +134,25 @@ pub fn run(args: Args) -> Result<(), Failed> {
             {
                 eprintln!("postc: wrote {} parts: {}", files.len(), files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", "));
             }
-            Ok(())
+            match (&report.output, args.verify) {
+                (Finished::Files(files), true) if files.len() == 1 => {
+                    let job = super::verify::Job {
+                        program: &files[0],
+                        toolpath,
+                        post: Some(&post),
+                        controller: postc_verify::Controller::Generic,
+                        tolerance: 0.01,
+                        format: report::Format::Human,
+                        postp: None,
+                    };
+                    super::verify::verify(&job, &mut sources)
+                }
+                (Finished::Files(_), true) => {
+                    report::eprint(&mut sources, &[Diagnostic::warning("VF009", "the post split its output into parts; `--verify` reads one program, so the parts were not verified")]);
+                    Ok(())
+                }
+                _ => Ok(()),
+            }
         }
         Err(diagnostics) => {
             report::eprint(&mut sources, &diagnostics);

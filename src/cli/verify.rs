@@ -1,0 +1,211 @@
+//! `postc verify`: reads a G-code program, replays it and compares its
+//! motion with the toolpath it was posted from (`docs/verify.md`). Exits 1
+//! when anything is out of tolerance.
+
+use std::io::{BufReader, Read};
+use std::path::{Path, PathBuf};
+
+use postc_ir::{Diagnostic, Post, SourceMap};
+use postc_verify::{Controller, Settings};
+
+use super::report::{self, Format};
+use super::{DialectArg, Failed, fail, load_post};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The G-code program to verify.
+    program: PathBuf,
+    /// The toolpath the program was posted from (.ron, .jsonl, APT CL).
+    #[arg(long, value_name = "TOOLPATH")]
+    toolpath: PathBuf,
+    /// The post that wrote the program: verify learns its units, rounding, arc tolerance and block numbering.
+    #[arg(long, value_name = "POST")]
+    post: Option<PathBuf>,
+    /// The controller whose limits apply (arc radius, block numbers, comment characters).
+    #[arg(long, value_enum, default_value = "generic")]
+    controller: ControllerArg,
+    /// Tolerance in mm; the post's own rounding when that is coarser.
+    #[arg(long, value_name = "MM", default_value_t = 0.01)]
+    tolerance: f64,
+    /// Findings for people, or one JSON array as `check --format json` prints.
+    #[arg(long, value_enum, default_value = "human")]
+    format: Format,
+    /// The post's dialect, when its extension does not say.
+    #[arg(long, value_enum)]
+    dialect: Option<DialectArg>,
+    /// The program was written by `postc postp` from TOOLPATH (a CL file): compare with the moves postp posts from, with its controller's post.
+    #[arg(long, conflicts_with = "post")]
+    postp: bool,
+}
+
+/// Controllers as `--controller` names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ControllerArg {
+    #[value(name = "linuxcnc")]
+    LinuxCnc,
+    Fanuc,
+    Haas,
+    Grbl,
+    Generic,
+}
+
+impl From<ControllerArg> for Controller {
+    fn from(c: ControllerArg) -> Controller {
+        match c {
+            ControllerArg::LinuxCnc => Controller::LinuxCnc,
+            ControllerArg::Fanuc => Controller::Fanuc,
+            ControllerArg::Haas => Controller::Haas,
+            ControllerArg::Grbl => Controller::Grbl,
+            ControllerArg::Generic => Controller::Generic,
+        }
+    }
+}
+
+/// Program files up to this size are loaded whole so findings show their
+/// lines; larger ones are streamed and only located by line and column.
+const LOAD_LIMIT: u64 = 16 << 20;
+
+/// Output extensions of families verify does not read.
+const FOREIGN_EXTENSIONS: &[(&str, &str)] = &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
+
+pub fn run(args: Args) -> Result<(), Failed> {
+    let mut sources = SourceMap::new();
+    let mut postp = None;
+    let post = match &args.post {
+        Some(path) => Some(load_post(Some(path), args.dialect, &mut sources)?),
+        None if args.postp => {
+            let report = |sources: &mut SourceMap, d: Vec<Diagnostic>| {
+                report::eprint(sources, &d);
+                Failed
+            };
+            let head = postc_postp::head(&args.toolpath, None, &mut sources).map_err(|d| report(&mut sources, d))?;
+            let options = postc_postp::load_options(head.controller, None, &mut sources).map_err(|d| report(&mut sources, vec![d]))?;
+            let post = postc_postp::compile(&head, &options, &mut sources).map_err(|d| report(&mut sources, d))?;
+            postp = Some(postc_postp::transform::Machine {
+                kind: head.controller.kind(),
+                name: head.controller.name(),
+                axes: postc_postp::controller::rotary_axes(head.axis_type),
+                retractz: options.retractz,
+            });
+            Some(post)
+        }
+        None => None,
+    };
+    let job = Job {
+        program: &args.program,
+        toolpath: &args.toolpath,
+        post: post.as_ref(),
+        controller: args.controller.into(),
+        tolerance: args.tolerance,
+        format: args.format,
+        postp,
+    };
+    verify(&job, &mut sources)
+}
+
+/// One verification: what `postc verify` and `postc post --verify` run.
+pub struct Job<'a> {
+    pub program: &'a Path,
+    pub toolpath: &'a Path,
+    pub post: Option<&'a Post>,
+    pub controller: Controller,
+    pub tolerance: f64,
+    pub format: Format,
+    /// The program came from `postc postp`: the toolpath's events go through postp's transform.
+    pub postp: Option<postc_postp::transform::Machine>,
+}
+
+pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
+    let name = job.program.display().to_string();
+    if !(job.tolerance.is_finite() && job.tolerance > 0.0) {
+        return Err(fail(sources, Diagnostic::error("IO007", format!("`--tolerance {}`: the tolerance must be a positive number of mm", job.tolerance))));
+    }
+    let settings = match job.post {
+        Some(post) => Settings::from_post(post, job.controller, job.tolerance),
+        None => Settings { controller: job.controller, tolerance: job.tolerance, ..Settings::default() },
+    };
+    let refuse = |sources: &mut SourceMap, family: &str, why: &str| {
+        fail(
+            sources,
+            Diagnostic::error("VF001", format!("`{name}` is {family}, not G-code: {why}"))
+                .help(format!("verify reads {}; HPGL, ShopBot and Heidenhain conversational programs are not verified", postc_verify::FAMILIES)),
+        )
+    };
+    if let Some(post) = job.post {
+        let ext = post.info.file_extension.to_ascii_lowercase();
+        if let Some((_, family)) = FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext) {
+            return Err(refuse(sources, family, &format!("the post writes `.{ext}` files")));
+        }
+        if post.options.lathe {
+            return Err(fail(
+                sources,
+                Diagnostic::error("VF007", format!("`{}` is a lathe post; verify compares milling programs only", post.info.name))
+                    .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
+            ));
+        }
+        if settings.rotary_wrap {
+            return Err(fail(
+                sources,
+                Diagnostic::error("VF006", format!("`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs", post.info.name))
+                    .help("verify compares X Y Z motion; a wrapped program moves the rotary axis instead of the wrapped one"),
+            ));
+        }
+    }
+    let file = std::fs::File::open(job.program)
+        .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?;
+    let size = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut reader = BufReader::with_capacity(1 << 16, file);
+    let mut head = Vec::with_capacity(4096);
+    if let Err(e) = reader.by_ref().take(4096).read_to_end(&mut head) {
+        return Err(fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))));
+    }
+    if postc_verify::looks_binary(&head) {
+        return Err(fail(
+            sources,
+            Diagnostic::error("VF002", format!("`{name}` is binary data, not a G-code program")).help("verify reads text programs as posts write them"),
+        ));
+    }
+    let ext = job.program.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
+    if let Some((_, family)) = FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext) {
+        return Err(refuse(sources, family, &format!("its extension is `.{ext}`")));
+    }
+    if let Some(family) = postc_verify::foreign_family(&head) {
+        return Err(refuse(sources, family, "its first lines are in that language"));
+    }
+    let file_id = if size <= LOAD_LIMIT {
+        let mut bytes = head;
+        if let Err(e) = reader.read_to_end(&mut bytes) {
+            return Err(fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))));
+        }
+        let id = sources.add(name.clone(), String::from_utf8_lossy(&bytes).into_owned());
+        reader = BufReader::with_capacity(1 << 16, std::fs::File::open(job.program).map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?);
+        id
+    } else {
+        reader = BufReader::with_capacity(1 << 16, std::fs::File::open(job.program).map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?);
+        sources.add_streamed(name.clone())
+    };
+    let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
+    let mut source: Box<dyn postc_ir::EventSource> = match &job.postp {
+        Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, postc_postp::records::ClText::open(job.toolpath), machine.clone())),
+        None => reader_events,
+    };
+    let report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
+    let shown = report.findings.len() as u64;
+    let total = report.errors + report.warnings;
+    match job.format {
+        Format::Json => {
+            let all: Vec<_> = report.findings.iter().map(|d| (name.clone(), d.clone())).collect();
+            report::out(&(report::json(sources, &all) + "\n"));
+        }
+        Format::Human => {
+            report::eprint(sources, &report.findings);
+            let more = if total > shown { format!(" ({} more not shown)", total - shown) } else { String::new() };
+            let s = report.stats;
+            eprintln!(
+                "postc verify: `{name}`: {} error(s), {} warning(s){more}; {} lines, {} moves replayed, {} of {} toolpath moves made",
+                report.errors, report.warnings, s.lines, s.motions, s.matched, s.expected
+            );
+        }
+    }
+    if report.errors > 0 { Err(Failed) } else { Ok(()) }
+}

@@ -1,0 +1,185 @@
+//! `postc verify` over the corpus: every G-code post of `corpus/posts/`
+//! (Vectric and CIMCO) and of `../shared/corpus/vectric` posts every corpus
+//! toolpath it applies to, and verify finds nothing out of tolerance in what
+//! it wrote. The exceptions are listed in [`EXCEPTIONS`], each a documented,
+//! deliberate property of its post (`docs/verify.md`, "Corpus exceptions").
+//!
+//! Programs are posted in memory and verified from memory; tape-split
+//! programs are verified with their parts joined.
+
+use std::collections::BTreeMap;
+use std::io::Cursor;
+use std::path::{Path, PathBuf};
+
+use postc_ir::{Post, SourceMap};
+use postc_runtime::{Finished, Output, RunOptions};
+use postc_verify::{Controller, Settings};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// (post file name, or a prefix ending in `*`; toolpath file name or "*";
+/// finding code; why): findings that are deliberate properties of the post.
+/// `docs/verify.md` ("Corpus exceptions") gives the evidence for each.
+const EXCEPTIONS: &[(&str, &str, &str, &str)] = &[
+    ("gcode_noarcs_mm.pp", "*", "VF035", "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet"),
+    ("tape_split_mm.pp", "*", "VF035", "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet"),
+    ("siemens_840d.js", "*", "*", "Siemens 840D syntax (G0 SUPA Z0, MCALL CYCLE83(...)) is not the ISO family verify reads"),
+    ("Grbl_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
+    ("Grbl_mm_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
+    ("Shapeoko_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
+    ("Shapeoko_mm_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
+    ("estlcam-eding-vectric-v11.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
+    ("Marlin M3 support - mm.pp", "*", "VF004", "the dwell prints `G4 1.5` style words with no P"),
+    ("G2Core_Laser_Arcs_inch.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
+    ("G2Core_Laser_Arcs_inch.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
+    ("G2Core_Laser_Arcs_mm.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
+    ("G2Core_Laser_Arcs_mm.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
+    ("Grbl_mm_TC_wLaser.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
+    ("Grbl_mm_TC_wLaser.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
+    ("Onefinity Laser*", "*", "VF010", "a 2D laser post (no Z): PLUNGE_MOVE prints nothing, so linearized helical plunges lose their X and Y"),
+    ("Generator_Laguna_SmartShopM.pp", "*", "VF023", "full circles print as `G03 R10` with no end point"),
+    ("Generator_Laguna_SmartShopM.pp", "*", "VF010", "full circles print as `G03 R10` with no end point"),
+    ("Langmuir_crossfire_arc_inch.pp", "*", "*", "a plasma post: plunges become a pierce (M3, G4) and retracts `M5 G0 Z1`, so Z is not the toolpath's"),
+    ("Marlin*", "*", "VF033", "FEED_MOVE and the arc sections print the cut feed [FC]: plunges run at the cut feed and feed changes are not printed"),
+    ("Marlin Bit Change - inch.pp", "*", "VF031", "the bit-change TOOLCHANGE switches to G21 and never back to G20"),
+    ("Marlin_in_w_bit_change.pp", "*", "VF031", "the bit-change TOOLCHANGE switches to G21 and never back to G20"),
+    ("Marlin_in_w_spindle_control.pp", "*", "VF031", "the TOOLCHANGE switches to G21 and never back to G20"),
+    ("Marlin Bit Change*", "*", "VF037", "the bit change probes the new bit: G91 rapids down toward the work before G38.2"),
+    ("Marlin Bit Change*", "*", "VF010", "the bit change probes the new bit and resets Z with G92"),
+    ("Marlin Bit Change*", "*", "VF012", "the bit change probes the new bit and resets Z with G92"),
+    ("Marlin_in_with_arcs_and_fan_control.pp", "*", "*", "UNITS = INCHES but the header prints G21: inch numbers read as millimetres"),
+    ("OpenBuilds_inch.pp", "*", "*", "the corpus copy ends after SPINDLE_ON: no move sections, so no move is written"),
+    ("OpenBuilds_mm.pp", "*", "*", "the corpus copy ends after SPINDLE_ON: no move sections, so no move is written"),
+    ("RepRapMarlin-gcode.pp", "*", "VF035", "a post with no spindle control: it never prints M3"),
+    ("snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp", "*", "VF013", "prints absolute arc centres (IA/JA) as I J without G90.1"),
+    ("snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp", "*", "VF020", "prints absolute arc centres (IA/JA) as I J without G90.1"),
+];
+
+fn is_excepted(post: &str, toolpath: &str, code: &str) -> bool {
+    EXCEPTIONS.iter().any(|(p, t, c, _)| {
+        let post_matches = match p.strip_suffix('*') {
+            Some(prefix) => post.starts_with(prefix),
+            None => post == *p,
+        };
+        post_matches && (*t == "*" || *t == toolpath) && (*c == "*" || *c == code)
+    })
+}
+
+/// Output families verify refuses (by the post's output extension).
+const FOREIGN: &[&str] = &["plt", "hpgl", "hpg", "sbp", "h"];
+
+fn files(dir: &Path, ext: &[&str], recurse: bool) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let Ok(entries) = std::fs::read_dir(dir) else { return out };
+    for entry in entries.flatten() {
+        let path = entry.path();
+        if path.is_dir() && recurse {
+            out.extend(files(&path, ext, true));
+        } else if path.extension().is_some_and(|e| ext.iter().any(|x| e.eq_ignore_ascii_case(x))) {
+            out.push(path);
+        }
+    }
+    out.sort();
+    out
+}
+
+fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
+    let mut sources = SourceMap::new();
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
+    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+        Ok(report) => match report.output {
+            Finished::Memory(parts) => Ok(parts.concat()),
+            _ => Err("not in memory".into()),
+        },
+        Err(d) => Err(d.iter().map(|d| format!("{} {}", d.code, d.message)).collect::<Vec<_>>().join("; ")),
+    }
+}
+
+/// Verifies `program` against `toolpath`: the error findings as (code, line, message).
+fn verify(post: &Post, program: &[u8], toolpath: &Path) -> Vec<(&'static str, usize, String)> {
+    let mut sources = SourceMap::new();
+    let file = sources.add("program", String::from_utf8_lossy(program).into_owned());
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("toolpath opens");
+    let settings = Settings::from_post(post, Controller::Generic, 0.01);
+    let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, &settings);
+    report
+        .findings
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| {
+            let line = d.primary_span().and_then(|s| sources.line_column(s.file, s.start)).map_or(0, |p| p.0);
+            (d.code, line, d.message.clone())
+        })
+        .collect()
+}
+
+#[test]
+fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
+    let mut posts = files(&root().join("corpus/posts/vectric"), &["pp"], false);
+    posts.extend(files(&root().join("corpus/posts/cimco"), &["js"], false));
+    let shared = root().join("../shared/corpus/vectric");
+    let shared_found = shared.is_dir();
+    posts.extend(files(&shared, &["pp"], true));
+    // Vectric posts post the Vectric-style toolpaths; CIMCO mill posts the
+    // CIMCO mill and drill toolpaths and the standard job (as their goldens do).
+    let vectric_toolpaths = files(&root().join("corpus/toolpaths"), &["ron"], false);
+    let cimco_toolpaths: Vec<PathBuf> = ["cimco/mill.ron", "cimco/drill.ron", "standard.ron"].iter().map(|t| root().join("corpus/toolpaths").join(t)).collect();
+
+    let (mut pairs, mut excepted, mut refused, mut not_posted) = (0, 0, BTreeMap::new(), 0);
+    let mut failures = Vec::new();
+    for post_path in &posts {
+        let name = post_path.file_name().unwrap().to_string_lossy().into_owned();
+        let mut sources = SourceMap::new();
+        let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
+        let errors = compiled.has_errors();
+        let Some(post) = compiled.post.filter(|_| !errors) else { continue };
+        let ext = post.info.file_extension.to_ascii_lowercase();
+        if FOREIGN.contains(&ext.as_str()) {
+            *refused.entry("not G-code (HPGL, ShopBot, Heidenhain)").or_insert(0) += 1;
+            continue;
+        }
+        if post.options.lathe {
+            *refused.entry("lathe (VF007)").or_insert(0) += 1;
+            continue;
+        }
+        let toolpaths = if post_path.extension().is_some_and(|e| e == "js") { &cimco_toolpaths } else { &vectric_toolpaths };
+        if post.options.rotary_wrap.is_some() {
+            *refused.entry("rotary wrap (VF006)").or_insert(0) += 1;
+            continue;
+        }
+        for toolpath in toolpaths {
+            let tp = toolpath.file_name().unwrap().to_string_lossy().into_owned();
+            let Ok(program) = post_program(&post, toolpath) else {
+                not_posted += 1;
+                continue;
+            };
+            if let Some(family) = postc_verify::foreign_family(&program) {
+                println!("refused by content: {name} ({family})");
+                *refused.entry("not G-code (by content)").or_insert(0) += 1;
+                break;
+            }
+            let errors = verify(&post, &program, toolpath);
+            if errors.iter().any(|e| e.0 == "VF001") {
+                println!("refused as not G-code: {name}");
+                *refused.entry("not G-code (VF001: text output)").or_insert(0) += 1;
+                break;
+            }
+            pairs += 1;
+            let (allowed, other): (Vec<_>, Vec<_>) = errors.into_iter().partition(|(code, _, _)| is_excepted(&name, &tp, code));
+            if !allowed.is_empty() {
+                excepted += 1;
+            }
+            for (code, line, message) in other.iter().take(3) {
+                failures.push(format!("{name} over {tp}: {code} at line {line}: {message}"));
+            }
+        }
+    }
+    println!(
+        "verify: {pairs} post x toolpath pairs verified ({excepted} with documented exceptions), {not_posted} pairs the post refuses to post, refused: {refused:?}; shared corpus {}",
+        if shared_found { "found" } else { "not found" }
+    );
+    assert!(failures.is_empty(), "{} findings:\n{}", failures.len(), failures.join("\n"));
+    assert!(pairs > 50, "only {pairs} pairs verified");
+}

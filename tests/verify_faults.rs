@@ -1,0 +1,368 @@
+//! `postc verify` finds seeded faults: deliberately wrong variants of the
+//! corpus post `corpus/posts/vectric/gcode_mm.pp` (arc direction swapped,
+//! I and J swapped, arc words with too few decimals, inch numbers under
+//! G21, no feed on the first cut, the spindle started after the first cut,
+//! Z not raised before a tool change), each caught with its code at the
+//! program line that shows the fault; and hand-written programs for the
+//! checks a post variant cannot reach. The unmodified post verifies clean
+//! over the same toolpaths, so every finding is the fault's.
+//!
+//! Bad programs (truncated, binary, unknown words, a 10 MB line, random
+//! bytes) give findings, never a panic.
+
+use std::io::Cursor;
+use std::path::{Path, PathBuf};
+
+use postc_ir::{Post, Severity, SourceMap};
+use postc_runtime::{Finished, Output, RunOptions};
+use postc_verify::{Controller, Settings};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A job of two tools: a plunge, a line, an arc whose centre offset
+/// (J10.35) needs decimals, and a first toolpath that ends down in the
+/// material (no retract), so the post must raise Z before the tool change.
+const JOB: &str = r#"Job(units:Mm,material:(min:(x:0.0,y:0.0,z:-10.0),max:(x:100.0,y:100.0,z:0.0)),safe_z:5.0)
+Tool(number:1,name:"6 mm End Mill",diameter:6.0,spindle_speed:16000.0,cut_feed:1000.0,plunge_feed:300.0)
+ToolpathStart(name:"One")
+Rapid(x:10.0,y:10.0,z:5.0)
+Feed(x:10.0,y:10.0,z:-2.0,intent:Plunge)
+Feed(x:30.0,y:10.0,z:-2.0)
+Arc(dir:Ccw,x:40.35,y:20.35,z:-2.0,cx:30.0,cy:20.35)
+Feed(x:40.35,y:40.0,z:-2.0)
+ToolpathEnd
+Tool(number:2,name:"3 mm End Mill",diameter:3.0,spindle_speed:18000.0,cut_feed:800.0,plunge_feed:200.0)
+ToolpathStart(name:"Two")
+Rapid(x:60.0,y:60.0,z:5.0)
+Feed(x:60.0,y:60.0,z:-1.0,intent:Plunge)
+Feed(x:80.0,y:60.0,z:-1.0)
+Rapid(x:80.0,y:60.0,z:5.0)
+ToolpathEnd
+End
+"#;
+
+fn job_file(dir: &Path) -> PathBuf {
+    let path = dir.join("job.ron");
+    std::fs::write(&path, JOB).unwrap();
+    path
+}
+
+fn good_post() -> String {
+    std::fs::read_to_string(root().join("corpus/posts/vectric/gcode_mm.pp")).unwrap()
+}
+
+fn compile(text: &str) -> Post {
+    let mut sources = SourceMap::new();
+    let compiled = postc_frontends::compile_post_bytes(Path::new("seeded.pp"), text.as_bytes(), None, &mut sources);
+    assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
+    compiled.post.unwrap()
+}
+
+fn post(post: &Post, toolpath: &Path) -> String {
+    let mut sources = SourceMap::new();
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+        Ok(r) => match r.output {
+            Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
+            _ => unreachable!(),
+        },
+        Err(d) => panic!("{d:?}"),
+    }
+}
+
+/// A finding: code, severity, line and message.
+#[derive(Debug)]
+struct Found {
+    code: &'static str,
+    severity: Severity,
+    line: usize,
+    message: String,
+}
+
+fn verify(program: &[u8], toolpath: &Path, settings: &Settings) -> Vec<Found> {
+    let mut sources = SourceMap::new();
+    let file = sources.add("program.ngc", String::from_utf8_lossy(program).into_owned());
+    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, settings);
+    report
+        .findings
+        .iter()
+        .map(|d| {
+            let span = d.primary_span().unwrap();
+            let line = if span.file == file { sources.line_column(file, span.start).unwrap().0 } else { 0 };
+            Found { code: d.code, severity: d.severity, line, message: d.message.clone() }
+        })
+        .collect()
+}
+
+fn errors(found: &[Found]) -> Vec<&Found> {
+    found.iter().filter(|f| f.severity == Severity::Error).collect()
+}
+
+/// The 1-based number of the first program line that satisfies `pred`.
+fn line_of(program: &str, pred: impl Fn(&str) -> bool) -> usize {
+    program.lines().position(pred).map(|i| i + 1).expect("the program has the line")
+}
+
+/// Posts JOB through the post text and verifies it, with the post known.
+fn seeded(text: &str) -> (String, Vec<Found>) {
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = job_file(dir.path());
+    let p = compile(text);
+    let program = post(&p, &toolpath);
+    let found = verify(program.as_bytes(), &toolpath, &Settings::from_post(&p, Controller::LinuxCnc, 0.01));
+    (program, found)
+}
+
+fn assert_caught(program: &str, found: &[Found], code: &str, line: usize) {
+    let errs = errors(found);
+    assert!(
+        errs.iter().any(|f| f.code == code && f.line == line),
+        "expected {code} at line {line}; found {errs:#?}\nprogram:\n{program}"
+    );
+}
+
+#[test]
+fn the_unmodified_post_verifies_clean() {
+    let (program, found) = seeded(&good_post());
+    assert!(found.is_empty(), "{found:#?}\n{program}");
+    // And over the corpus's standard job.
+    let p = compile(&good_post());
+    let standard = root().join("corpus/toolpaths/standard.ron");
+    let program = post(&p, &standard);
+    let found = verify(program.as_bytes(), &standard, &Settings::from_post(&p, Controller::LinuxCnc, 0.01));
+    assert!(found.is_empty(), "{found:#?}");
+}
+
+#[test]
+fn arc_direction_swapped() {
+    let text = good_post().replace("\"G2[X]", "\"GX2[X]").replace("\"G3[X]", "\"G2[X]").replace("\"GX2[X]", "\"G3[X]");
+    let (program, found) = seeded(&text);
+    // The toolpath's arc turns counter-clockwise; the seeded post prints it as G2.
+    let line = line_of(&program, |l| l.starts_with("G2X"));
+    assert_caught(&program, &found, "VF013", line);
+    assert!(found.iter().any(|f| f.message.contains("turns G2")));
+}
+
+#[test]
+fn i_and_j_swapped() {
+    let text = good_post()
+        .replace("[I|A|I|1.4]", "[J|A|I|1.4]")
+        .replace("[J|A|J|1.4]", "[I|A|J|1.4]");
+    let (program, found) = seeded(&text);
+    let line = line_of(&program, |l| l.starts_with("G3"));
+    let errs = errors(&found);
+    assert!(errs.iter().any(|f| (f.code == "VF013" || f.code == "VF020") && f.line == line), "{errs:#?}\n{program}");
+}
+
+#[test]
+fn arc_words_with_too_few_decimals() {
+    let text = good_post().replace("[I|A|I|1.4]", "[I|A|I|1.0]").replace("[J|A|J|1.4]", "[J|A|J|1.0]");
+    let (program, found) = seeded(&text);
+    let line = line_of(&program, |l| l.starts_with("G3"));
+    assert_caught(&program, &found, "VF020", line);
+    // grbl's limit catches it too.
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = job_file(dir.path());
+    let p = compile(&text);
+    let found = verify(program.as_bytes(), &toolpath, &Settings::from_post(&p, Controller::Grbl, 0.01));
+    assert_caught(&program, &found, "VF020", line);
+}
+
+#[test]
+fn inch_numbers_in_a_g21_program() {
+    let text = good_post().replace("UNITS = \"MM\"", "UNITS = \"INCH\"");
+    let (program, found) = seeded(&text);
+    // With the post known: its G21 contradicts its inch numbers.
+    let line = line_of(&program, |l| l.starts_with("G21"));
+    assert_caught(&program, &found, "VF031", line);
+    // Without the post: the numbers are read as millimetres and are 25.4 times too small.
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = job_file(dir.path());
+    let found = verify(program.as_bytes(), &toolpath, &Settings::default());
+    let first_move = line_of(&program, |l| l.starts_with("G0X"));
+    assert_caught(&program, &found, "VF030", first_move);
+}
+
+#[test]
+fn feed_missing_on_the_first_cut() {
+    let text = good_post().replace("\"G1[X][Y][Z][F]\"", "\"G1[X][Y][Z]\"");
+    let (program, found) = seeded(&text);
+    let line = line_of(&program, |l| l.starts_with("G1"));
+    assert_caught(&program, &found, "VF034", line);
+}
+
+#[test]
+fn spindle_started_after_the_first_cut() {
+    let text = good_post()
+        .replace("begin SPINDLE_ON\n\"[S] M3\"", "begin SPINDLE_ON\n")
+        .replace("begin SPINDLE_ON\r\n\"[S] M3\"", "begin SPINDLE_ON\r\n")
+        .replace("begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"", "begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"\n\"[S] M3\"");
+    assert!(!text.contains("begin SPINDLE_ON\n\"[S] M3\""), "the seeded post still starts the spindle");
+    let (program, found) = seeded(&text);
+    let first_cut = line_of(&program, |l| l.starts_with("G1"));
+    assert!(program.lines().position(|l| l.ends_with("M3")).unwrap() + 1 > first_cut, "{program}");
+    assert_caught(&program, &found, "VF035", first_cut);
+}
+
+#[test]
+fn z_not_raised_before_a_tool_change() {
+    let text = good_post().replace("begin TOOLCHANGE\n\"M5\"\n\"G53 G0 Z0\"", "begin TOOLCHANGE\n\"M5\"");
+    assert!(!text.contains("begin TOOLCHANGE\n\"M5\"\n\"G53"), "the seeded post still raises Z");
+    let (program, found) = seeded(&text);
+    let line = line_of(&program, |l| l.starts_with("T2 M6"));
+    assert_caught(&program, &found, "VF038", line);
+}
+
+/// Verifies a hand-written program against JOB (mm, generic controller unless given).
+fn check(program: &str, controller: Controller) -> Vec<Found> {
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = job_file(dir.path());
+    verify(program.as_bytes(), &toolpath, &Settings { controller, ..Settings::default() })
+}
+
+/// JOB as a correct hand-written program, each line replaceable.
+const PROGRAM: &[&str] = &[
+    "%",
+    "N10 G21 G90 G17 (JOB)",
+    "N20 G53 G0 Z0",
+    "N30 T1 M6",
+    "N40 S16000 M3",
+    "N50 G0 X10 Y10 Z5",
+    "N60 G1 Z-2 F300",
+    "N70 X30 F1000",
+    "N80 G3 X40.35 Y20.35 I0 J10.35",
+    "N90 G1 Y40",
+    "N100 M5",
+    "N110 G53 G0 Z0",
+    "N120 T2 M6",
+    "N130 S18000 M3",
+    "N140 G0 X60 Y60 Z5",
+    "N150 G1 Z-1 F200",
+    "N160 X80 F800",
+    "N170 G0 Z5",
+    "N180 M30",
+    "%",
+];
+
+fn program_with(replace: &[(usize, &str)]) -> String {
+    let mut lines: Vec<String> = PROGRAM.iter().map(|s| s.to_string()).collect();
+    for (i, text) in replace {
+        lines[*i] = text.to_string();
+    }
+    lines.join("\n") + "\n"
+}
+
+#[test]
+fn the_hand_written_program_verifies_clean() {
+    let found = check(&program_with(&[]), Controller::LinuxCnc);
+    assert!(found.is_empty(), "{found:#?}");
+}
+
+fn caught(program: &str, controller: Controller, code: &str, line: usize) {
+    let found = check(program, controller);
+    assert_caught(program, &found, code, line);
+}
+
+#[test]
+fn hand_written_faults_are_caught_at_their_line() {
+    // R arc over 180 degrees needs a negative R: this one is the 90 degree arc's R form with R negative.
+    caught(&program_with(&[(8, "N80 G3 X40.35 Y20.35 R-10.35")]), Controller::LinuxCnc, "VF022", 9);
+    // K in the XY plane.
+    caught(&program_with(&[(8, "N80 G3 X40.35 Y20.35 I0 J10.35 K0")]), Controller::LinuxCnc, "VF021", 9);
+    // Block numbers that go back, and over the controller's maximum.
+    caught(&program_with(&[(9, "N75 G1 Y40")]), Controller::LinuxCnc, "VF040", 10);
+    caught(&program_with(&[(9, "N100000 G1 Y40")]), Controller::Fanuc, "VF041", 10);
+    // A nested parenthesis in a comment; a `%` in a Fanuc comment.
+    caught(&program_with(&[(1, "N10 G21 G90 G17 (JOB (1))")]), Controller::LinuxCnc, "VF042", 2);
+    caught(&program_with(&[(1, "N10 G21 G90 G17 (JOB 100%)")]), Controller::Fanuc, "VF042", 2);
+    // A rapid where the toolpath cuts.
+    caught(&program_with(&[(9, "N90 G0 Y40")]), Controller::LinuxCnc, "VF012", 10);
+    // A rapid over a cut and on past its end.
+    caught(&program_with(&[(9, "N90 G0 Y45")]), Controller::LinuxCnc, "VF012", 10);
+    // A rapid down into the material that the toolpath does not make.
+    caught(&program_with(&[(13, "N130 S18000 M3 G0 X60 Y60 Z-3")]), Controller::LinuxCnc, "VF037", 14);
+    // A cut off the toolpath.
+    caught(&program_with(&[(7, "N70 X31 F1000")]), Controller::LinuxCnc, "VF010", 8);
+    // A wrong feed.
+    caught(&program_with(&[(7, "N70 X30 F1500")]), Controller::LinuxCnc, "VF033", 8);
+    // Truncated after N90: the second toolpath is never cut.
+    let truncated: String = PROGRAM[..10].join("\n");
+    let found = check(&truncated, Controller::LinuxCnc);
+    assert!(errors(&found).iter().any(|f| f.code == "VF011"), "{found:#?}");
+    // The arc linearized into one chord, 3 mm from the arc: over the chord tolerance.
+    caught(&program_with(&[(8, "N80 G1 X40.35 Y20.35")]), Controller::LinuxCnc, "VF014", 9);
+    // Linearized into chords within 0.01 mm of the arc, it verifies.
+    let chords: Vec<String> = (1..=40)
+        .map(|k| {
+            let a = -std::f64::consts::FRAC_PI_2 + std::f64::consts::FRAC_PI_2 * f64::from(k) / 40.0;
+            format!("X{:.4} Y{:.4}", 30.0 + 10.35 * a.cos(), 20.35 + 10.35 * a.sin())
+        })
+        .collect();
+    let program = program_with(&[(8, &format!("N80 G1 {}", chords.join("\nG1 ")))]);
+    assert!(errors(&check(&program, Controller::LinuxCnc)).is_empty(), "{program}");
+    // An R full circle.
+    caught(&program_with(&[(8, "N80 G3 X30 Y10 R5")]), Controller::LinuxCnc, "VF023", 9);
+}
+
+#[test]
+fn bad_programs_give_findings_never_a_panic() {
+    // Unknown words and letters.
+    let found = check(&program_with(&[(7, "N70 X30 F1000 E5"), (8, "N80 G3 X40.35 Y20.35 I0 J10.35 G7.7")]), Controller::Grbl);
+    assert!(found.iter().any(|f| f.code == "VF005" && f.line == 8), "{found:#?}");
+    assert!(found.iter().any(|f| f.code == "VF005" && f.line == 9), "{found:#?}");
+    // Parameters and expressions.
+    let found = check(&program_with(&[(7, "N70 X[#1+2] F1000")]), Controller::LinuxCnc);
+    assert!(found.iter().any(|f| f.code == "VF004" && f.line == 8), "{found:#?}");
+    // Binary data in a line.
+    let mut bytes = program_with(&[]).into_bytes();
+    bytes.splice(40..40, [0u8, 1, 2, 0xFF, 0xFE, b'\n']);
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = job_file(dir.path());
+    let found = verify(&bytes, &toolpath, &Settings::default());
+    assert!(found.iter().any(|f| f.code == "VF002"), "{found:#?}");
+    // A 10 MB line.
+    let mut big = program_with(&[]);
+    big.insert_str(big.find("N90").unwrap(), &format!("({})\n", "A".repeat(10 << 20)));
+    let found = verify(big.as_bytes(), &toolpath, &Settings::default());
+    assert!(found.iter().any(|f| f.code == "VF003" && f.line == 10), "{found:#?}");
+    // Not G-code at all.
+    let text: String = (0..50).map(|i| format!("{i},{i},0\n")).collect();
+    let found = verify(text.as_bytes(), &toolpath, &Settings::default());
+    assert!(found.iter().any(|f| f.code == "VF001"), "{found:#?}");
+    // Random mutations of a real program: findings, never a panic.
+    let p = compile(&good_post());
+    let standard = root().join("corpus/toolpaths/standard.ron");
+    let program = post(&p, &standard).into_bytes();
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    for _ in 0..300 {
+        let mut mutated = program.clone();
+        for _ in 0..(next() % 8 + 1) {
+            let at = (next() as usize) % mutated.len();
+            match next() % 4 {
+                0 => mutated[at] = next() as u8,
+                1 => {
+                    mutated.remove(at);
+                }
+                2 => {
+                    let alphabet = b"GXYZIJKRFNM-.%()/;:0123456789 \n\r";
+                    mutated.insert(at, alphabet[(next() as usize) % alphabet.len()]);
+                }
+                _ => mutated.truncate(at),
+            }
+            if mutated.is_empty() {
+                break;
+            }
+        }
+        let _ = verify(&mutated, &standard, &Settings::from_post(&p, Controller::LinuxCnc, 0.01));
+        let _ = verify(&mutated, &standard, &Settings::default());
+    }
+}

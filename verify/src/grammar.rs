@@ -1,0 +1,263 @@
+//! The block grammar (chumsky): one program line in, a flat list of
+//! [`Item`]s out.
+//!
+//! ```text
+//! line    = blank ( "/" )? blank ( item blank )* END
+//! item    = word | "(" [^)]* ")" | ";" anything | "%" anything
+//! word    = letter blank number                 G1, x-1.5, F 1200., N0010
+//! number  = sign? ( digits ( "." digits? )? | "." digits )
+//! blank   = ( " " | "\t" | "\r" )*
+//! ```
+//!
+//! Letters are case-insensitive, as RS274/NGC reads them. The structure is
+//! chumsky combinators; the number lexeme is a hand-written `custom`
+//! parser, because it runs for every word of a ten-million-line program.
+//! The parser writes items into a state vector the reader reuses for every
+//! line, so a block is parsed without allocating. Errors are [`Cheap`] (a
+//! span only): the interpreter words the message itself.
+
+use chumsky::error::Cheap;
+use chumsky::extra::Full;
+use chumsky::input::{InputRef, MapExtra};
+use chumsky::inspector::TruncateState;
+use chumsky::prelude::*;
+use chumsky::primitive::custom;
+
+/// What an item is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ItemKind {
+    /// A word: its letter, upper case.
+    Word(u8),
+    /// `( ... )` or `; ...`: the item spans the whole comment.
+    Comment,
+    /// A `/` at the start of the block: block delete.
+    Delete,
+    /// `%`: the program start/end marker (and whatever follows it).
+    Percent,
+}
+
+/// One piece of a block: its kind, its bytes in the line and, for words,
+/// its value and how many decimals it was written with.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Item {
+    pub kind: ItemKind,
+    pub start: u32,
+    pub end: u32,
+    pub value: f64,
+    pub decimals: u8,
+}
+
+pub type Items = TruncateState<Item>;
+type Extra = Full<Cheap, Items, ()>;
+
+fn push<'s, 'b>(e: &mut MapExtra<'s, 'b, &'s [u8], Extra>, kind: ItemKind, value: f64, decimals: u8) -> Result<(), Cheap> {
+    let span: SimpleSpan = e.span();
+    e.state().push(Item { kind, start: span.start as u32, end: span.end as u32, value, decimals });
+    Ok(())
+}
+
+/// Reads a number at the start of `s`: bytes used, value, decimals.
+pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
+    let mut i = 0;
+    let negative = match s.first() {
+        Some(b'-') => {
+            i += 1;
+            true
+        }
+        Some(b'+') => {
+            i += 1;
+            false
+        }
+        _ => false,
+    };
+    let (mut mantissa, mut digits, mut decimals, mut point) = (0u64, 0u32, 0u32, false);
+    while let Some(&b) = s.get(i) {
+        match b {
+            b'0'..=b'9' => {
+                if digits < 18 {
+                    mantissa = mantissa * 10 + u64::from(b - b'0');
+                    if mantissa > 0 {
+                        digits += 1;
+                    }
+                    if point {
+                        decimals += 1;
+                    }
+                } else if !point {
+                    return slow(s);
+                }
+            }
+            // The decimal comma some European controls print (`X10,000`).
+            b'.' | b',' if !point && (b == b'.' || s.get(i + 1).is_some_and(u8::is_ascii_digit)) => point = true,
+            _ => break,
+        }
+        i += 1;
+    }
+    let body = &s[usize::from(negative || s.first() == Some(&b'+'))..i];
+    if !body.iter().any(u8::is_ascii_digit) {
+        return None;
+    }
+    let written = body.iter().position(|&b| b == b'.' || b == b',').map_or(0, |p| body.len() - p - 1);
+    let value = mantissa as f64 / 10f64.powi(decimals as i32);
+    Some((i, if negative { -value } else { value }, written.min(255) as u8))
+}
+
+/// Numbers with more than 18 integer digits: the standard library reads them.
+fn slow(s: &[u8]) -> Option<(usize, f64, u8)> {
+    let n = s.iter().enumerate().position(|(k, &b)| !(b.is_ascii_digit() || b == b'.' || (k == 0 && (b == b'-' || b == b'+')))).unwrap_or(s.len());
+    let text = std::str::from_utf8(&s[..n]).ok()?;
+    let value: f64 = text.parse().ok()?;
+    let decimals = text.find('.').map_or(0, |p| text.len() - p - 1);
+    Some((n, value, decimals.min(255) as u8))
+}
+
+/// Skips blanks, tabs and carriage returns.
+fn blanks<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
+    custom(|inp: &mut InputRef<'s, '_, &'s [u8], Extra>| {
+        let at = *inp.cursor().inner();
+        let all: &'s [u8] = inp.full_slice();
+        let rest = all.get(at..).unwrap_or_default();
+        let n = rest.iter().position(|&b| !matches!(b, b' ' | b'\t' | b'\r')).unwrap_or(rest.len());
+        for _ in 0..n {
+            inp.skip();
+        }
+        Ok(())
+    })
+}
+
+/// `( ... )`, nested parentheses included (the interpreter reports them for
+/// the controllers that refuse them); the item spans the whole comment.
+fn paren_comment<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
+    custom(|inp: &mut InputRef<'s, '_, &'s [u8], Extra>| {
+        let at = *inp.cursor().inner();
+        let all: &'s [u8] = inp.full_slice();
+        let rest = all.get(at..).unwrap_or_default();
+        if rest.first() != Some(&b'(') {
+            return Err(Cheap::new(SimpleSpan::new((), at..at + 1)));
+        }
+        let mut depth = 0u32;
+        let mut close = None;
+        for (i, &b) in rest.iter().enumerate() {
+            match b {
+                b'(' => depth += 1,
+                b')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        close = Some(i + 1);
+                        break;
+                    }
+                }
+                _ => {}
+            }
+        }
+        let Some(n) = close else {
+            return Err(Cheap::new(SimpleSpan::new((), all.len()..all.len())));
+        };
+        for _ in 0..n {
+            inp.skip();
+        }
+        inp.state().push(Item { kind: ItemKind::Comment, start: at as u32, end: (at + n) as u32, value: 0.0, decimals: 0 });
+        Ok(())
+    })
+}
+
+/// A number lexeme: value and decimals.
+fn number<'s>() -> impl Parser<'s, &'s [u8], (f64, u8), Extra> + Copy {
+    custom(|inp: &mut InputRef<'s, '_, &'s [u8], Extra>| {
+        let at = *inp.cursor().inner();
+        let all: &'s [u8] = inp.full_slice();
+        let rest = all.get(at..).unwrap_or_default();
+        match scan_number(rest) {
+            Some((n, value, decimals)) => {
+                for _ in 0..n {
+                    inp.skip();
+                }
+                Ok((value, decimals))
+            }
+            None => Err(Cheap::new(SimpleSpan::new((), at..at + 1))),
+        }
+    })
+}
+
+/// The parser of one line.
+pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
+    let blank = blanks();
+    let word = any()
+        .filter(u8::is_ascii_alphabetic)
+        .then_ignore(blank)
+        .then(number())
+        .try_map_with(|(letter, (value, decimals)): (u8, (f64, u8)), e| {
+            push(e, ItemKind::Word(letter.to_ascii_uppercase()), value, decimals)
+        });
+    let paren = paren_comment();
+    // ISO tape's `:` program number, as `O`.
+    let colon = just(b':')
+        .ignore_then(blank)
+        .ignore_then(number())
+        .try_map_with(|(value, decimals), e| push(e, ItemKind::Word(b'O'), value, decimals));
+    let semicolon = just(b';').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Comment, 0.0, 0));
+    let percent = just(b'%').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Percent, 0.0, 0));
+    let item = choice((word, paren, semicolon, percent, colon));
+    let delete = just(b'/').try_map_with(|_, e| push(e, ItemKind::Delete, 0.0, 0));
+    blank
+        .then(delete.or_not())
+        .then(blank)
+        .then(item.then(blank).repeated())
+        .then(end())
+        .ignored()
+}
+
+/// Parses a line into `items`; on an error, the byte offset where reading stopped.
+pub fn parse(text: &[u8], items: &mut Items) -> Result<(), usize> {
+    items.0.clear();
+    let result = line().parse_with_state(text, items);
+    match result.into_result() {
+        Ok(()) => Ok(()),
+        Err(errors) => Err(errors.first().map_or(0, |e| e.span().start)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(text: &str) -> Result<Vec<(ItemKind, String, f64, u8)>, usize> {
+        let mut items = TruncateState(Vec::new());
+        parse(text.as_bytes(), &mut items)?;
+        Ok(items.iter().map(|i| (i.kind, text[i.start as usize..i.end as usize].to_string(), i.value, i.decimals)).collect())
+    }
+
+    #[test]
+    fn blocks_of_every_shape() {
+        let w = words("N10 G1X-1.5 y2. Z.25 F1200 (cut) ; rest").unwrap();
+        assert_eq!(w.len(), 8);
+        assert_eq!(w[0].0, ItemKind::Word(b'N'));
+        assert_eq!(w[2].2, -1.5);
+        assert_eq!(w[2].3, 1);
+        assert_eq!(w[3].0, ItemKind::Word(b'Y'));
+        assert_eq!(w[3].2, 2.0);
+        assert_eq!(w[4].2, 0.25);
+        assert_eq!(w[5].3, 0);
+        assert_eq!(w[6].0, ItemKind::Comment);
+        assert_eq!(w[7].1, "; rest");
+        assert_eq!(words("/G0 X1").unwrap()[0].0, ItemKind::Delete);
+        assert_eq!(words("%").unwrap()[0].0, ItemKind::Percent);
+        assert_eq!(words("").unwrap().len(), 0);
+        assert_eq!(words("G90.1").unwrap()[0].2, 90.1);
+        assert_eq!(words("X10,250Y-2,5").unwrap()[1].2, -2.5);
+        assert_eq!(words("X10,250").unwrap()[0].3, 3);
+        assert_eq!(words("X 1.0\r").unwrap()[0].2, 1.0);
+    }
+
+    #[test]
+    fn errors_say_where() {
+        assert_eq!(words("G1 X"), Err(4));
+        assert_eq!(words("G1 #1=2"), Err(3));
+        assert!(words("(open comment").is_err());
+        assert!(words("(a (b) c").is_err());
+        let w = words("(Laser (5 W), End Mill (1/4\"))").unwrap();
+        assert_eq!((w.len(), w[0].0), (1, ItemKind::Comment));
+        assert_eq!(words(":1248").unwrap()[0].0, ItemKind::Word(b'O'));
+        assert!(words("X1..2").is_err());
+        assert_eq!(words("X123456789012345678901234.5").unwrap()[0].2, 123456789012345678901234.5);
+    }
+}

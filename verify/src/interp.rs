@@ -1,0 +1,1202 @@
+//! The modal interpreter and the comparison with the toolpath.
+//!
+//! Each line is parsed by [`crate::grammar`]; the block's words set the
+//! modal state of the RS274/NGC groups (motion, plane, units, distance
+//! modes, feed mode, spindle, canned cycles) and its motion, if any, is
+//! replayed in millimetres and compared with the expected path:
+//!
+//! 1. a move whose end point is the end of the next expected move (after
+//!    expected moves it covers on its way, and expected rapids a rapid
+//!    makes unnecessary) is that move: its kind, arc direction and centre,
+//!    chord error, feed and spindle are checked;
+//! 2. a move that ends on the next expected move is part of it (a split
+//!    move, a chord of a linearized arc, a peck of a drilling cycle);
+//! 3. any other rapid is the post's own (header, footer, tool change):
+//!    it must not go below the toolpath's rapid heights into the material;
+//! 4. any other cutting move is off the toolpath.
+
+use std::io::BufRead;
+
+use postc_ir::event::{ArcDir, Intent, Plane};
+use postc_ir::{Diagnostic, EventSource, FileId, Severity, Span};
+
+use crate::expect::{Expected, ExpectedPath, Kind};
+use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
+use crate::grammar::{self, ItemKind, Items};
+use crate::{Controller, MAX_SHOWN, Report, Settings};
+
+/// Longest line read; the rest of a longer line is skipped with a finding.
+const MAX_LINE: usize = 64 * 1024;
+/// Unreadable blocks before the first move after which a program is taken for another language.
+const NOT_GCODE: u32 = 20;
+/// How many expected moves one program move may cover or skip.
+const LOOKAHEAD: usize = 64;
+
+/// Counts of a verification.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Stats {
+    pub lines: u64,
+    pub motions: u64,
+    /// Expected moves (toolpath moves, drilled holes counted as their moves).
+    pub expected: u64,
+    /// Expected moves the program made.
+    pub matched: u64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MKind {
+    Rapid,
+    Feed,
+    Arc,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Motion {
+    kind: MKind,
+    start: [f64; 3],
+    end: [f64; 3],
+    centre: [f64; 3],
+    dir: ArcDir,
+    plane: Plane,
+    /// The R word of an R-form arc.
+    r: Option<f64>,
+    span: Span,
+}
+
+impl Motion {
+    fn cutting(&self) -> bool {
+        self.kind != MKind::Rapid
+    }
+
+    fn arc(&self) -> Arc {
+        Arc { start: self.start, end: self.end, centre: self.centre, dir: self.dir, plane: self.plane }
+    }
+}
+
+/// A word of the current block: value, decimals, span in the line.
+#[derive(Clone, Copy, Debug)]
+struct Word {
+    value: f64,
+    decimals: u8,
+    start: u32,
+    end: u32,
+}
+
+const MAX_CODES: usize = 8;
+
+/// The words of one block.
+#[derive(Default)]
+struct Block {
+    letters: [Option<Word>; 26],
+    g: [(f64, u32, u32); MAX_CODES],
+    gs: usize,
+    m: [(f64, u32, u32); MAX_CODES],
+    ms: usize,
+}
+
+impl Block {
+    fn clear(&mut self) {
+        self.letters = [None; 26];
+        self.gs = 0;
+        self.ms = 0;
+    }
+
+    fn get(&self, letter: u8) -> Option<Word> {
+        self.letters[(letter - b'A') as usize]
+    }
+}
+
+struct Run<'a> {
+    settings: &'a Settings,
+    file: FileId,
+    path: ExpectedPath<'a>,
+    findings: Vec<Diagnostic>,
+    shown: Vec<(&'static str, usize)>,
+    errors: u64,
+    warnings: u64,
+    stats: Stats,
+    line_start: usize,
+    line_len: usize,
+    // Modal state.
+    unit: f64,
+    units_stated: bool,
+    units_reported: bool,
+    absolute: bool,
+    arc_absolute: bool,
+    plane: Plane,
+    motion: Option<u32>,
+    feed: f64,
+    /// The feed's rounding as printed, mm/min.
+    feed_step: f64,
+    inverse_time: bool,
+    spindle: bool,
+    pos: [f64; 3],
+    cycle_initial_z: f64,
+    cycle_r: f64,
+    cycle_z: f64,
+    retract_to_r: bool,
+    last_n: Option<f64>,
+    first_n: Option<f64>,
+    max_decimals: Option<u8>,
+    stopped: bool,
+    // Comparison state.
+    progress: f64,
+    no_feed_reported: bool,
+    spindle_reported: bool,
+    feed_reported: (f64, f64),
+    stop_comparing: bool,
+    syntax_errors: u32,
+    block: Block,
+}
+
+pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
+    let mut run = Run {
+        settings,
+        file,
+        path: ExpectedPath::new(toolpath),
+        findings: Vec::new(),
+        shown: Vec::new(),
+        errors: 0,
+        warnings: 0,
+        stats: Stats::default(),
+        line_start: 0,
+        line_len: 0,
+        unit: settings.units.map_or(1.0, |u| u.mm_per_unit()),
+        units_stated: false,
+        units_reported: false,
+        absolute: true,
+        arc_absolute: false,
+        plane: Plane::Xy,
+        motion: None,
+        feed: f64::NAN,
+        feed_step: 0.0,
+        inverse_time: false,
+        spindle: false,
+        pos: [f64::NAN; 3],
+        cycle_initial_z: f64::NAN,
+        cycle_r: f64::NAN,
+        cycle_z: f64::NAN,
+        retract_to_r: false,
+        last_n: None,
+        first_n: None,
+        max_decimals: None,
+        stopped: false,
+        progress: 0.0,
+        no_feed_reported: false,
+        spindle_reported: false,
+        feed_reported: (f64::NAN, f64::NAN),
+        stop_comparing: false,
+        syntax_errors: 0,
+        block: Block::default(),
+    };
+    run.path.start();
+    let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
+    let mut buf: Vec<u8> = Vec::with_capacity(256);
+    let mut offset = 0usize;
+    loop {
+        buf.clear();
+        let (consumed, overlong) = match read_line(program, &mut buf) {
+            Ok(r) => r,
+            Err(e) => {
+                run.line_start = offset;
+                run.line_len = 0;
+                let d = Diagnostic::error("VF002", format!("cannot read the program: {e}"));
+                run.push(d, true);
+                break;
+            }
+        };
+        if consumed == 0 {
+            break;
+        }
+        run.line_start = offset;
+        offset += consumed;
+        run.stats.lines += 1;
+        while matches!(buf.last(), Some(b'\n' | b'\r')) {
+            buf.pop();
+        }
+        run.line_len = buf.len();
+        if overlong {
+            run.finding(Severity::Error, "VF003", format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024), 0, 1, None);
+            continue;
+        }
+        if run.stopped {
+            continue;
+        }
+        if buf.contains(&0) {
+            run.finding(Severity::Error, "VF002", "this line holds binary data (NUL bytes), not G-code", 0, 1, None);
+            continue;
+        }
+        run.line(&buf, &mut items);
+    }
+    run.finish();
+    let Run { findings, errors, warnings, stats, .. } = run;
+    Report { findings, errors, warnings, stats }
+}
+
+/// Reads one line (up to and with its `\n`) into `buf`, keeping at most
+/// [`MAX_LINE`] bytes; the bytes consumed and whether the line was longer.
+fn read_line(r: &mut dyn BufRead, buf: &mut Vec<u8>) -> std::io::Result<(usize, bool)> {
+    let (mut total, mut overlong) = (0, false);
+    loop {
+        let avail = match r.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if avail.is_empty() {
+            return Ok((total, overlong));
+        }
+        let (take, done) = match avail.iter().position(|&b| b == b'\n') {
+            Some(i) => (i + 1, true),
+            None => (avail.len(), false),
+        };
+        let room = MAX_LINE.saturating_sub(buf.len());
+        if take > room {
+            overlong = true;
+            buf.extend_from_slice(&avail[..room]);
+        } else {
+            buf.extend_from_slice(&avail[..take]);
+        }
+        r.consume(take);
+        total += take;
+        if done {
+            return Ok((total, overlong));
+        }
+    }
+}
+
+fn fmt_point(p: [f64; 3]) -> String {
+    let f = |v: f64| if v.is_finite() { format!("{:.4}", v).trim_end_matches('0').trim_end_matches('.').to_string() } else { "?".into() };
+    format!("X{} Y{} Z{}", f(p[0]), f(p[1]), f(p[2]))
+}
+
+impl Run<'_> {
+    // ----- findings -----
+
+    fn push(&mut self, d: Diagnostic, error: bool) {
+        if error {
+            self.errors += 1;
+        } else {
+            self.warnings += 1;
+        }
+        let code = d.code;
+        let shown = match self.shown.iter_mut().find(|(c, _)| *c == code) {
+            Some((_, n)) => n,
+            None => {
+                self.shown.push((code, 0));
+                &mut self.shown.last_mut().expect("just pushed").1
+            }
+        };
+        *shown += 1;
+        if *shown <= MAX_SHOWN {
+            self.findings.push(d);
+        }
+    }
+
+    /// A finding at bytes `start..end` of the current line, with the
+    /// toolpath move it concerns.
+    fn finding(&mut self, severity: Severity, code: &'static str, message: impl Into<String>, start: usize, end: usize, expected: Option<&Expected>) -> Option<&mut Diagnostic> {
+        let start = start.min(self.line_len);
+        let end = end.min(self.line_len).max(start + usize::from(self.line_len > start));
+        let span = Span::new(self.file, self.line_start + start, self.line_start + end);
+        let mut d = Diagnostic::new(severity, code, message).at(span, "here");
+        if let Some(e) = expected {
+            d = d.also(e.span, "the toolpath move");
+        }
+        let before = self.findings.len();
+        self.push(d, severity == Severity::Error);
+        if self.findings.len() > before { self.findings.last_mut() } else { None }
+    }
+
+    fn help(d: Option<&mut Diagnostic>, help: impl Into<String>) {
+        if let Some(d) = d {
+            d.help = Some(help.into());
+        }
+    }
+
+    fn whole_line(&self) -> Span {
+        Span::new(self.file, self.line_start, self.line_start + self.line_len)
+    }
+
+    /// A finding on a motion (the whole block).
+    fn motion_finding(&mut self, severity: Severity, code: &'static str, message: impl Into<String>, m: &Motion, expected: Option<&Expected>, help: Option<String>) {
+        let mut d = Diagnostic::new(severity, code, message).at(m.span, "this move");
+        if let Some(e) = expected {
+            d = d.also(e.span, "the toolpath move it should make");
+        }
+        d.help = help;
+        self.push(d, severity == Severity::Error);
+    }
+
+    // ----- tolerances -----
+
+    fn tol(&self) -> f64 {
+        // Without the post, the program's own rounding: the most decimals its
+        // X Y Z words have shown, but no coarser than three decimals.
+        let decimals = self.settings.decimals.unwrap_or(self.max_decimals.unwrap_or(3).max(3));
+        let unit = self.settings.units.map_or(self.unit, |u| u.mm_per_unit());
+        self.settings.tolerance.max(10f64.powi(-i32::from(decimals)) * unit + 1e-6)
+    }
+
+    // ----- blocks -----
+
+    fn line(&mut self, text: &[u8], items: &mut Items) {
+        // Marlin's M117/M118 show the rest of the line as a message.
+        let (text, message) = match message_word(text) {
+            Some(k) => (&text[..k], Some(k)),
+            None => (text, None),
+        };
+        let mut parsed = grammar::parse(text, items);
+        // Marlin's M0/M1 take a message too: `M0 Load the 6 mm end mill`.
+        if let Err(at) = parsed
+            && message.is_none()
+            && let Some(k) = stop_with_message(&text[..at.min(text.len())])
+        {
+            parsed = grammar::parse(&text[..k], items);
+        }
+        if let Err(at) = parsed {
+            let (message, help) = match text.get(at) {
+                None if text.contains(&b'(') && !text.contains(&b')') => ("this comment is not closed".to_string(), "close it with `)` on the same line"),
+                None => ("the block ends where a number is expected".into(), "every word is a letter and a number, as `X1.5`"),
+                Some(b) if b.is_ascii_digit() || *b == b'.' || *b == b'-' => (
+                    "a number without a letter".into(),
+                    "every word is a letter and a number, as `X1.5`",
+                ),
+                Some(b) if b.is_ascii_alphabetic() => (
+                    format!("`{}` is not followed by a number", *b as char),
+                    "every word is a letter and a number, as `X1.5`",
+                ),
+                Some(&b) if b.is_ascii_graphic() => (
+                    format!("unexpected `{}`: verify reads words, comments and `%`, not parameters or expressions", b as char),
+                    "verify reads the G-code posts write: words, ( ) and ; comments, block delete and `%`",
+                ),
+                Some(&b) => (format!("unexpected byte 0x{b:02X} in a block"), "the program holds bytes that are not G-code text"),
+            };
+            let d = self.finding(Severity::Error, "VF004", message, at, at + 1, None);
+            Self::help(d, help);
+            self.syntax_errors += 1;
+            if self.syntax_errors >= NOT_GCODE && self.stats.motions == 0 {
+                let d = self.finding(
+                    Severity::Error,
+                    "VF001",
+                    format!("{NOT_GCODE} blocks could not be read and none moved the tool: this is not a G-code program; verify stops here"),
+                    0,
+                    self.line_len,
+                    None,
+                );
+                Self::help(d, format!("verify reads {}", crate::FAMILIES));
+                self.stopped = true;
+                self.stop_comparing = true;
+            }
+            return;
+        }
+        self.block.clear();
+        for item in items.iter() {
+            let (start, end) = (item.start as usize, item.end as usize);
+            match item.kind {
+                ItemKind::Comment => self.comment(&text[start..end], start),
+                ItemKind::Delete | ItemKind::Percent => {}
+                ItemKind::Word(letter) => {
+                    let w = Word { value: item.value, decimals: item.decimals, start: item.start, end: item.end };
+                    match letter {
+                        b'G' => {
+                            if self.block.gs < MAX_CODES {
+                                self.block.g[self.block.gs] = (w.value, w.start, w.end);
+                                self.block.gs += 1;
+                            }
+                        }
+                        b'M' => {
+                            if self.block.ms < MAX_CODES {
+                                self.block.m[self.block.ms] = (w.value, w.start, w.end);
+                                self.block.ms += 1;
+                            }
+                        }
+                        _ => {
+                            let index = (letter - b'A') as usize;
+                            if self.block.letters[index].is_some() {
+                                let d = self.finding(Severity::Error, "VF004", format!("a second {} word in one block", letter as char), start, end, None);
+                                Self::help(d, "a controller reads one word of each letter per block");
+                            }
+                            self.block.letters[index] = Some(w);
+                            if !b"NXYZABCIJKRFSTPQLHDOUVW".contains(&letter) {
+                                let d = self.finding(Severity::Warning, "VF005", format!("verify does not know the {} word; it is ignored", letter as char), start, end, None);
+                                Self::help(d, "a controller that does not know it either refuses the block");
+                            }
+                            if matches!(letter, b'X' | b'Y' | b'Z') {
+                                self.max_decimals = Some(self.max_decimals.map_or(w.decimals, |d| d.max(w.decimals)));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        self.execute();
+    }
+
+    fn comment(&mut self, text: &[u8], start: usize) {
+        let controller = self.settings.controller;
+        let strict = matches!(controller, Controller::Fanuc | Controller::Haas | Controller::Grbl);
+        if text.first() == Some(&b';') && matches!(controller, Controller::Fanuc | Controller::Haas) {
+            let d = self.finding(Severity::Error, "VF042", format!("{} reads `;` as the end of a block, not as a comment", controller.name()), start, start + 1, None);
+            Self::help(d, "write the comment in parentheses");
+            return;
+        }
+        let body = if text.first() == Some(&b'(') { &text[1..text.len().saturating_sub(1)] } else { &text[1..] };
+        if text.first() == Some(&b'(')
+            && let Some(i) = body.iter().position(|&b| b == b'(')
+        {
+            let (severity, what) = match controller {
+                Controller::Generic => (Severity::Warning, "LinuxCNC, Fanuc, Haas and grbl refuse".to_string()),
+                c => (Severity::Error, format!("{} refuses", c.name())),
+            };
+            let d = self.finding(severity, "VF042", format!("{what} a `(` inside a comment"), start + 1 + i, start + 2 + i, None);
+            Self::help(d, "the post should replace `(` in comment text (Vectric: SUBSTITUTE)");
+            return;
+        }
+        if let Some(i) = body.iter().position(|&b| b < 32 && b != b'\t' || b == 127) {
+            self.finding(Severity::Error, "VF042", "a control character in a comment", start + 1 + i, start + 2 + i, None);
+            return;
+        }
+        if matches!(controller, Controller::Fanuc | Controller::Haas)
+            && let Some(i) = body.iter().position(|&b| b == b'%')
+        {
+            let d = self.finding(Severity::Error, "VF042", format!("{} reads `%` as the end of the program, even in a comment", controller.name()), start + 1 + i, start + 2 + i, None);
+            Self::help(d, "the post should replace `%` in comment text");
+            return;
+        }
+        if let Some(i) = body.iter().position(|&b| b >= 128) {
+            let severity = if strict { Severity::Error } else { Severity::Warning };
+            let d = self.finding(severity, "VF042", format!("a character outside ASCII in a comment; {} may refuse it", controller.name()), start + 1 + i, start + 2 + i, None);
+            Self::help(d, "the post should replace accented and other non-ASCII characters in comment text");
+        }
+    }
+
+    fn execute(&mut self) {
+        let b = std::mem::take(&mut self.block);
+        self.execute_block(&b);
+        self.block = b;
+    }
+
+    fn execute_block(&mut self, b: &Block) {
+        // Block number.
+        if let Some(n) = b.get(b'N') {
+            self.block_number(n);
+        }
+        // G codes that set modes, in the RS274/NGC order of execution.
+        let mut home = false;
+        let mut machine = false;
+        let mut dwell = false;
+        for &(code, start, end) in &b.g[..b.gs] {
+            let tenths = (code * 10.0).round() as u32;
+            match tenths {
+                0 | 10 | 20 | 30 | 810..=890 | 730 | 740 | 760 => {
+                    let cycle = |m: u32| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760);
+                    if cycle(tenths) && !self.motion.is_some_and(cycle) {
+                        self.cycle_initial_z = self.pos[2];
+                    }
+                    self.motion = Some(tenths);
+                }
+                800 => self.motion = None,
+                40 => dwell = true,
+                170 => self.plane = Plane::Xy,
+                180 => self.plane = Plane::Zx,
+                190 => self.plane = Plane::Yz,
+                200 | 210 | 700 | 710 => {
+                    // G20/G21, and G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM).
+                    let inch = tenths == 200 || tenths == 700;
+                    self.unit = if inch { 25.4 } else { 1.0 };
+                    self.units_stated = true;
+                    if let Some(units) = self.settings.units
+                        && (units == postc_ir::Units::Inch) != inch
+                    {
+                        let post = self.settings.post.as_deref().unwrap_or("the post");
+                        let d = self.finding(
+                            Severity::Error,
+                            "VF031",
+                            format!("the program says {} but {post} writes {}", if inch { "inches (G20/G70)" } else { "millimetres (G21/G71)" }, if inch { "millimetres" } else { "inches" }),
+                            start as usize,
+                            end as usize,
+                            None,
+                        );
+                        Self::help(d, "the units word must match the units the post prints its numbers in");
+                    }
+                }
+                280 | 300 | 382..=385 => home = true,
+                530 => machine = true,
+                400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
+                100 => dwell = true,
+                900 => self.absolute = true,
+                910 => self.absolute = false,
+                901 => self.arc_absolute = true,
+                911 => self.arc_absolute = false,
+                930 => self.inverse_time = true,
+                940 | 950 => self.inverse_time = false,
+                980 => self.retract_to_r = false,
+                990 => self.retract_to_r = true,
+                920..=923 => {
+                    let d = self.finding(Severity::Warning, "VF008", "verify does not replay G92 coordinate offsets; positions after it are not compared", start as usize, end as usize, None);
+                    Self::help(d, "posts that shift coordinates with G92 are verified without the shift");
+                    self.pos = [f64::NAN; 3];
+                    dwell = true;
+                }
+                _ => {
+                    let d = self.finding(Severity::Warning, "VF005", format!("verify does not know G{}; it is ignored", format_code(code)), start as usize, end as usize, None);
+                    Self::help(d, "a controller that does not know it refuses the block");
+                }
+            }
+        }
+        // Feed, spindle, tool change.
+        if let Some(f) = b.get(b'F')
+            && !self.inverse_time
+            && !dwell
+        {
+            self.feed = f.value * self.unit / self.settings.feed_multiplier;
+            self.feed_step = 10f64.powi(-i32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
+        }
+        for &(code, start, end) in &b.m[..b.ms] {
+            match (code * 10.0).round() as u32 {
+                30 | 40 | 130 | 140 | 1060 | 620 | 640 => {
+                    if !self.spindle {
+                        self.spindle_reported = false;
+                    }
+                    self.spindle = true;
+                }
+                50 | 1070 | 630 | 650 => self.spindle = false,
+                60 => self.tool_change(start, end),
+                20 | 300 => {
+                    // The end of the program (or of a tape part): what follows
+                    // is read as the next part, from the modes a program starts in.
+                    self.spindle = false;
+                    self.motion = None;
+                    self.absolute = true;
+                    self.inverse_time = false;
+                }
+                _ => {}
+            }
+        }
+        // Motion.
+        if dwell {
+            return; // G4, G10 and G92 read the block's axis words as their own arguments
+        }
+        let any_axis = b.get(b'X').is_some() || b.get(b'Y').is_some() || b.get(b'Z').is_some();
+        if home {
+            // G28/G30 (through the given point to a home position) and G38.x
+            // probes end where verify cannot know.
+            let axes_given = [b'X', b'Y', b'Z'].map(|l| b.get(l).is_some());
+            for (i, given) in axes_given.iter().enumerate() {
+                if *given || !any_axis {
+                    self.pos[i] = f64::NAN;
+                }
+            }
+            return;
+        }
+        if machine {
+            // G53: machine coordinates; the work position is unknown on those axes.
+            for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
+                if b.get(*l).is_some() {
+                    self.pos[i] = f64::NAN;
+                }
+            }
+            return;
+        }
+        let has_ijkr = [b'I', b'J', b'K', b'R'].iter().any(|l| b.get(*l).is_some());
+        if !(any_axis || has_ijkr && matches!(self.motion, Some(20 | 30))) {
+            return;
+        }
+        let Some(motion) = self.motion else {
+            self.finding(Severity::Warning, "VF005", "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block", 0, self.line_len, None);
+            return;
+        };
+        if !self.units_stated && !self.units_reported {
+            self.units_reported = true;
+            let unit = if self.unit > 1.0 { "inches" } else { "millimetres" };
+            let d = self.finding(Severity::Warning, "VF032", format!("the program moves before it says G20 or G21; verify reads it in {unit}"), 0, self.line_len, None);
+            Self::help(d, "a controller uses whatever units were last active; state them in the header");
+        }
+        let mut target = self.pos;
+        for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
+            if let Some(w) = b.get(*l) {
+                let v = w.value * self.unit;
+                target[i] = if self.absolute { v } else { self.pos[i] + v };
+            }
+        }
+        let span = self.whole_line();
+        match motion {
+            0 => self.emit(Motion { kind: MKind::Rapid, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
+            10 => self.emit(Motion { kind: MKind::Feed, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
+            20 | 30 => self.arc(b, motion == 20, target, span),
+            _ => self.cycle(b, motion, target, span),
+        }
+    }
+
+    fn block_number(&mut self, n: Word) {
+        let (start, end) = (n.start as usize, n.end as usize);
+        let maximum = self.settings.block_maximum.unwrap_or(self.settings.controller.block_maximum());
+        if n.value > maximum {
+            let d = self.finding(Severity::Error, "VF041", format!("block number {} is over the maximum {maximum}", n.value), start, end, None);
+            Self::help(d, "the post's LINE_NUMBER_MAXIMUM (or the controller's limit) must bound its block numbers");
+        }
+        if let Some(prev) = self.last_n
+            && n.value <= prev
+        {
+            let wrapped = match (self.settings.block_start, self.settings.block_maximum) {
+                (Some(s), Some(_)) => n.value <= s + 1e-9,
+                _ => self.first_n.is_some_and(|f| (n.value - f).abs() < 1e-9),
+            };
+            if !wrapped {
+                let d = self.finding(Severity::Error, "VF040", format!("block number {} does not increase (the block before is N{prev})", n.value), start, end, None);
+                Self::help(d, "block numbers must increase; a controller that searches by number finds the wrong block");
+            }
+        }
+        self.first_n.get_or_insert(n.value);
+        self.last_n = Some(n.value);
+    }
+
+    fn tool_change(&mut self, start: u32, end: u32) {
+        let z = self.pos[2];
+        if !z.is_finite() {
+            return; // after G28/G53 Z: at the machine's home height
+        }
+        // In the material (below its top) when the job gives the material box;
+        // otherwise below the toolpath's safe height.
+        let (limit, what) = match (self.path.job.material, self.path.job.safe_z) {
+            (Some((_, max)), _) => (max[2], "the top of the material"),
+            (None, Some(safe)) => (safe, "the toolpath's safe height"),
+            (None, None) if self.path.max_rapid_z.is_finite() => (self.path.max_rapid_z, "the toolpath's highest rapid"),
+            _ => return,
+        };
+        if z < limit - self.tol() {
+            let d = self.finding(
+                Severity::Error,
+                "VF038",
+                format!("tool change with the tool at Z{z:.3} mm, below {what} (Z{limit:.3} mm)"),
+                start as usize,
+                end as usize,
+                None,
+            );
+            Self::help(d, "the post must raise Z (to safe Z or machine home, e.g. G53 G0 Z0 or G28 G91 Z0) before M6");
+        }
+    }
+
+    fn arc(&mut self, b: &Block, cw: bool, target: [f64; 3], span: Span) {
+        let dir = if cw { ArcDir::Cw } else { ArcDir::Ccw };
+        let start = self.pos;
+        let [u, v, w] = axes(self.plane);
+        let letters = [b'I', b'J', b'K'];
+        let plane_name = match self.plane {
+            Plane::Xy => "G17 (XY)",
+            Plane::Zx => "G18 (XZ)",
+            Plane::Yz => "G19 (YZ)",
+        };
+        if let Some(off) = b.get(letters[w]) {
+            let d = self.finding(
+                Severity::Error,
+                "VF021",
+                format!("{} word in an arc of the {plane_name} plane", letters[w] as char),
+                off.start as usize,
+                off.end as usize,
+                None,
+            );
+            Self::help(d, format!("in {plane_name} an arc's centre is given by the plane's two offset words only; LinuxCNC and grbl refuse the block"));
+        }
+        if !(start[u].is_finite() && start[v].is_finite()) {
+            return; // the start is unknown (after G28/G53): nothing to replay
+        }
+        let tol = self.tol();
+        let (centre, r) = if let Some(rw) = b.get(b'R') {
+            let r = rw.value * self.unit;
+            let closed = (target[u] - start[u]).hypot(target[v] - start[v]) <= 1e-9;
+            if closed {
+                let d = self.finding(Severity::Error, "VF023", "an R arc that ends where it starts: R cannot describe a full circle", rw.start as usize, rw.end as usize, None);
+                Self::help(d, "full circles need the I J K form");
+                self.pos = target;
+                return;
+            }
+            match r_centre(start, target, r, dir, self.plane, tol) {
+                Some(c) => (c, Some(r)),
+                None => {
+                    let d = self.finding(Severity::Error, "VF023", format!("R{} is smaller than half the distance to the arc's end", rw.value), rw.start as usize, rw.end as usize, None);
+                    Self::help(d, "the controller refuses an arc whose radius cannot reach its end point");
+                    self.pos = target;
+                    return;
+                }
+            }
+        } else {
+            let mut c = start;
+            for axis in [u, v] {
+                let value = b.get(letters[axis]).map_or(0.0, |x| x.value * self.unit);
+                c[axis] = if self.arc_absolute { value } else { start[axis] + value };
+            }
+            let arc = Arc { start, end: target, centre: c, dir, plane: self.plane };
+            let (r0, r1) = (arc.start_radius(), arc.end_radius());
+            if let Some(limit) = self.settings.controller.radius_error(r0, r1, self.unit > 1.0) {
+                let word = b.get(letters[u]).or(b.get(letters[v]));
+                let (s, e) = word.map_or((0, self.line_len), |x| (x.start as usize, x.end as usize));
+                let d = self.finding(
+                    Severity::Error,
+                    "VF020",
+                    format!("the arc's radius is {r0:.4} mm at its start and {r1:.4} mm at its end ({:.4} mm apart)", (r0 - r1).abs()),
+                    s,
+                    e,
+                    None,
+                );
+                Self::help(d, format!("{limit}; print the arc words with more decimals, or compute them from the printed end points (--exact-arcs)"));
+            }
+            (c, None)
+        };
+        self.emit(Motion { kind: MKind::Arc, start, end: target, centre, dir, plane: self.plane, r, span });
+    }
+
+    /// A canned drilling cycle, expanded into its moves.
+    fn cycle(&mut self, b: &Block, code: u32, target: [f64; 3], span: Span) {
+        if let Some(r) = b.get(b'R') {
+            let r = r.value * self.unit;
+            self.cycle_r = if self.absolute { r } else { self.cycle_initial_z + r };
+        }
+        if let Some(z) = b.get(b'Z') {
+            let z = z.value * self.unit;
+            self.cycle_z = if self.absolute { z } else { self.cycle_r + z };
+        }
+        let (r, depth) = (self.cycle_r, self.cycle_z);
+        if !r.is_finite() || !depth.is_finite() {
+            self.finding(Severity::Error, "VF024", "a drilling cycle without its R and Z words", 0, self.line_len, None);
+            return;
+        }
+        let (x, y) = (target[0], target[1]);
+        let make = |kind, start, end| Motion { kind, start, end, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: Plane::Xy, r: None, span };
+        if self.pos[2] < r {
+            let to = [self.pos[0], self.pos[1], r];
+            self.emit(make(MKind::Rapid, self.pos, to));
+        }
+        let z0 = self.pos[2];
+        self.emit(make(MKind::Rapid, self.pos, [x, y, z0]));
+        self.emit(make(MKind::Rapid, self.pos, [x, y, r]));
+        self.emit(make(MKind::Feed, self.pos, [x, y, depth]));
+        let clear = if self.retract_to_r { r } else { self.cycle_initial_z.max(r) };
+        if matches!(code, 850 | 890 | 840 | 740) {
+            self.emit(make(MKind::Feed, self.pos, [x, y, r]));
+        }
+        self.emit(make(MKind::Rapid, self.pos, [x, y, clear]));
+    }
+
+    // ----- comparison -----
+
+    fn emit(&mut self, p: Motion) {
+        self.pos = p.end;
+        self.stats.motions += 1;
+        if p.cutting() {
+            self.cut_state(&p);
+        }
+        if self.settings.rotary_wrap || self.stop_comparing || !(p.end[0].is_finite() && p.end[1].is_finite()) {
+            return;
+        }
+        self.compare(p);
+    }
+
+    /// Feed and spindle state of a cutting move (before the comparison, which checks them against the toolpath).
+    fn cut_state(&mut self, p: &Motion) {
+        if self.inverse_time {
+            return;
+        }
+        if !self.feed.is_finite() && !self.no_feed_reported {
+            self.no_feed_reported = true;
+            self.motion_finding(Severity::Error, "VF034", "a cutting move before any feed rate (F) is set", p, None, Some("the post must print F on the first cutting move (Vectric: FIRST_FEED_MOVE with [F])".into()));
+        }
+    }
+
+    /// The next expected moves, flattened onto Z0 when the program writes no Z.
+    fn expected(&mut self, k: usize, flat: bool) -> Option<Expected> {
+        let mut e = self.path.get(k).copied()?;
+        if flat {
+            e.start[2] = 0.0;
+            e.end[2] = 0.0;
+            e.centre[2] = 0.0;
+            if e.kind == Kind::Arc && e.plane != Plane::Xy {
+                // Seen from above, an arc across Z is a straight move.
+                e.kind = Kind::Feed;
+            }
+        }
+        Some(e)
+    }
+
+    fn compare(&mut self, mut p: Motion) {
+        let tol = self.tol();
+        // A program that has not written Z (2D laser and plasma posts) is compared in X and Y.
+        let flat = !p.end[2].is_finite();
+        if flat {
+            p.start[2] = 0.0;
+            p.end[2] = 0.0;
+            p.centre[2] = 0.0;
+        }
+        // Moves that flattening made zero-length (straight plunges) are made where the program is.
+        while let Some(e) = self.expected(0, flat)
+            && flat
+            && e.kind != Kind::Arc
+            && dist(e.start, e.end) <= 1e-9
+        {
+            self.skip();
+        }
+        let mut k = 0;
+        while let Some(e) = self.expected(k, flat) {
+            if dist(p.end, e.end) <= tol {
+                for _ in 0..k {
+                    self.skip();
+                }
+                self.path.pop();
+                self.stats.matched += 1;
+                self.made(&p, &e, tol);
+                self.progress = 0.0;
+                return;
+            }
+            if k >= LOOKAHEAD || !self.skippable(&p, &e, tol) {
+                break;
+            }
+            k += 1;
+        }
+        if let Some(e) = self.expected(0, flat)
+            && let Some(t) = self.on_path(&p, &e, tol)
+        {
+            if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
+                self.motion_finding(Severity::Error, "VF012", "a rapid move along a cut of the toolpath", &p, Some(&e), Some("the toolpath cuts here at a feed rate".into()));
+            }
+            if p.cutting() {
+                self.made(&p, &e, tol);
+            }
+            self.progress = self.progress.max(t);
+            return;
+        }
+        if p.kind == MKind::Rapid {
+            if let Some(e) = self.expected(0, flat)
+                && e.cutting()
+                && !Self::retract_like(&e)
+                && known(p.start)
+                && dist(e.end, p.start) > tol
+                && to_segment(e.end, p.start, p.end).0 <= tol
+            {
+                // The rapid passes over the end of the next cut: it makes that cut at rapid.
+                self.motion_finding(Severity::Error, "VF012", "a rapid move over a cut of the toolpath", &p, Some(&e), Some("the toolpath makes this move at a feed rate".into()));
+                self.skip();
+                self.progress = 0.0;
+                return;
+            }
+            if !self.wrong_units(&p, tol, flat) {
+                self.extra_rapid(&p, tol);
+            }
+            return;
+        }
+        if !flat && self.in_the_air(&p, tol) {
+            return; // a header or footer feed move above the material cuts nothing
+        }
+        self.off_path(&p, tol, flat);
+    }
+
+    /// Moves over an expected move the program skipped (covered on its way).
+    fn skip(&mut self) {
+        if self.path.pop().is_some() {
+            self.stats.matched += 1;
+        }
+    }
+
+    fn skippable(&self, p: &Motion, e: &Expected, tol: f64) -> bool {
+        if e.kind == Kind::Rapid && (p.kind == MKind::Rapid || dist(e.end, p.start) <= tol) {
+            return true;
+        }
+        if p.kind == MKind::Rapid && !Self::retract_like(e) {
+            return false; // a rapid never makes a cut (VF012 below)
+        }
+        if !known(p.start) {
+            return false;
+        }
+        match (p.kind, e.kind) {
+            // A straight move never covers an arc of the toolpath.
+            (_, Kind::Arc) if p.kind != MKind::Arc => false,
+            (MKind::Arc, _) => p.arc().deviation(e.end, tol).0 <= tol && dist(e.end, p.start) > tol,
+            _ => to_segment(e.end, p.start, p.end).0 <= tol,
+        }
+    }
+
+    fn on_path(&self, p: &Motion, e: &Expected, tol: f64) -> Option<f64> {
+        if !known(e.start) {
+            return None;
+        }
+        match e.kind {
+            Kind::Arc => {
+                let arc = Arc { start: e.start, end: e.end, centre: e.centre, dir: e.dir, plane: e.plane };
+                let (d, t) = arc.deviation(p.end, tol);
+                (d <= tol + self.settings.chord_tolerance).then_some(t)
+            }
+            _ => {
+                let (d, t) = to_segment(p.end, e.start, e.end);
+                (d <= tol).then_some(t)
+            }
+        }
+    }
+
+    fn retract_like(e: &Expected) -> bool {
+        e.intent == Intent::Retract
+            || (known(e.start) && e.end[2] > e.start[2] && (e.end[0] - e.start[0]).abs() < 1e-6 && (e.end[1] - e.start[1]).abs() < 1e-6)
+    }
+
+    /// Checks a program move that makes (all or part of) expected move `e`.
+    fn made(&mut self, p: &Motion, e: &Expected, tol: f64) {
+        match (p.kind, e.kind) {
+            (MKind::Rapid, Kind::Feed | Kind::Arc) => {
+                if !Self::retract_like(e) {
+                    self.motion_finding(Severity::Error, "VF012", "a rapid move where the toolpath cuts", p, Some(e), Some("the toolpath makes this move at a feed rate".into()));
+                }
+                return;
+            }
+            (MKind::Arc, Kind::Arc) => self.same_arc(p, e, tol),
+            (MKind::Feed, Kind::Arc) if known(p.start) => {
+                let arc = Arc { start: e.start, end: e.end, centre: e.centre, dir: e.dir, plane: e.plane };
+                let chord = self.settings.chord_tolerance;
+                let on = !known(e.start) || arc.deviation(p.start, tol).0 <= tol + chord;
+                let sag = arc.chord_error(p.start, p.end);
+                if known(e.start) && on && sag > chord + tol {
+                    self.motion_finding(
+                        Severity::Error,
+                        "VF014",
+                        format!("this chord of a linearized arc lies {sag:.4} mm from the arc (chord tolerance {chord} mm)"),
+                        p,
+                        Some(e),
+                        Some("the post's arc tolerance bounds how far chords may stray from the arc".into()),
+                    );
+                }
+            }
+            (MKind::Arc, Kind::Feed) => {
+                let arc = p.arc();
+                let sweep = arc.sweep(tol);
+                let r = arc.end_radius();
+                let bulge = if sweep <= std::f64::consts::PI { r * (1.0 - (sweep / 2.0).cos()) } else { r };
+                if bulge > tol {
+                    self.motion_finding(Severity::Error, "VF010", format!("an arc where the toolpath moves straight (it bulges {bulge:.3} mm off the line)"), p, Some(e), None);
+                }
+            }
+            _ => {}
+        }
+        if p.cutting() && e.cutting() {
+            self.check_feed_and_spindle(p, e);
+        }
+    }
+
+    fn same_arc(&mut self, p: &Motion, e: &Expected, tol: f64) {
+        if p.plane != e.plane {
+            self.motion_finding(Severity::Error, "VF013", "this arc is in another plane than the toolpath's", p, Some(e), None);
+            return;
+        }
+        let [u, v, _] = axes(e.plane);
+        let off = |c: [f64; 3]| (c[u] - e.centre[u]).hypot(c[v] - e.centre[v]);
+        if p.dir != e.dir {
+            let (g, other) = if p.dir == ArcDir::Cw { ("G2 (clockwise)", "counter-clockwise") } else { ("G3 (counter-clockwise)", "clockwise") };
+            self.motion_finding(Severity::Error, "VF013", format!("this arc turns {g}; the toolpath's turns {other}"), p, Some(e), Some("the post prints the arc sections' G codes the wrong way round".into()));
+            return;
+        }
+        let centre_off = off(p.centre);
+        if centre_off <= 2.0 * tol {
+            return;
+        }
+        if let Some(r) = p.r
+            && let Some(other) = r_centre(p.start, p.end, -r, p.dir, p.plane, tol)
+            && off(other) <= 2.0 * tol
+        {
+            let sweep = Arc { centre: other, ..p.arc() }.sweep(tol).to_degrees();
+            let (form, why) = if r > 0.0 { ("positive", "R arcs over 180° need a negative R") } else { ("negative", "R arcs under 180° need a positive R") };
+            self.motion_finding(
+                Severity::Error,
+                "VF022",
+                format!("this arc turns {sweep:.1}° but R is {form}: the controller cuts the other arc"),
+                p,
+                Some(e),
+                Some(why.into()),
+            );
+            return;
+        }
+        self.motion_finding(
+            Severity::Error,
+            "VF013",
+            format!("this arc's centre is {}, {centre_off:.4} mm from the toolpath's", fmt_point(p.centre)),
+            p,
+            Some(e),
+            Some(format!("the toolpath's centre is {}", fmt_point(e.centre))),
+        );
+    }
+
+    fn check_feed_and_spindle(&mut self, p: &Motion, e: &Expected) {
+        if e.powered && !self.spindle && !self.spindle_reported {
+            self.spindle_reported = true;
+            self.motion_finding(
+                Severity::Error,
+                "VF035",
+                "a cut with the spindle (or jet) off",
+                p,
+                Some(e),
+                Some("the spindle must run (M3/M4; jets: M3/M4, M106, M62/M64) before the first cut".into()),
+            );
+        }
+        if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
+            return;
+        }
+        let (got, want) = (self.feed, e.feed);
+        if (got - want).abs() > (0.005 * want).max(0.5 * self.feed_step + 1e-6) && self.feed_reported != (got, want) {
+            self.feed_reported = (got, want);
+            let per_unit = if self.unit > 1.0 { "in/min" } else { "mm/min" };
+            self.motion_finding(
+                Severity::Error,
+                "VF033",
+                format!("this cut runs at {:.1} mm/min; the toolpath's feed is {want:.1} mm/min", got),
+                p,
+                Some(e),
+                Some(format!("the program's F is read in {per_unit} (G94); check the post's feed variable, its units and multiplier")),
+            );
+        }
+    }
+
+    fn extra_rapid(&mut self, p: &Motion, tol: f64) {
+        let floor = self.path.min_rapid_z;
+        let z = p.end[2];
+        if !floor.is_finite() || z >= floor - tol {
+            return;
+        }
+        if let Some((min, max)) = self.path.job.material {
+            let inside = p.end[0] >= min[0] - tol && p.end[0] <= max[0] + tol && p.end[1] >= min[1] - tol && p.end[1] <= max[1] + tol;
+            if z >= max[2] || !inside {
+                return;
+            }
+        }
+        self.motion_finding(
+            Severity::Error,
+            "VF037",
+            format!("a rapid move to Z{z:.3} mm, below the toolpath's lowest rapid height (Z{floor:.3} mm), into the material"),
+            p,
+            None,
+            Some("the post moves at rapid where the toolpath does not: raise Z first".into()),
+        );
+    }
+
+    /// Whether a move stays above the material (its top, or without a
+    /// material box, the toolpath's lowest rapid height).
+    fn in_the_air(&self, p: &Motion, tol: f64) -> bool {
+        let top = match self.path.job.material {
+            Some((_, max)) => max[2],
+            None if self.path.min_rapid_z.is_finite() => self.path.min_rapid_z,
+            None => return false,
+        };
+        // A helix's Z runs monotonically from start to end, so the ends bound it.
+        let low = p.start[2].min(p.end[2]);
+        known(p.start) && low >= top - tol
+    }
+
+    /// Whether a move off the toolpath lands on one of its next moves once
+    /// its numbers are read in the other unit; reports it (VF030) if so.
+    fn wrong_units(&mut self, p: &Motion, tol: f64, flat: bool) -> bool {
+        for k in 0..8 {
+            let Some(e) = self.expected(k, flat) else { break };
+            for (scale, what) in [(25.4, "inches in a program read in millimetres"), (1.0 / 25.4, "millimetres in a program read in inches")] {
+                let scaled = p.end.map(|v| v * scale);
+                if dist(p.end, e.end) > tol && dist(scaled, e.end) <= tol * scale.max(1.0) {
+                    self.stop_comparing = true;
+                    self.motion_finding(
+                        Severity::Error,
+                        "VF030",
+                        format!("the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}", fmt_point(p.end), fmt_point(e.end)),
+                        p,
+                        Some(&e),
+                        Some("the post's units and the program's G20/G21 must agree; verify stops comparing motion here".into()),
+                    );
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    fn off_path(&mut self, p: &Motion, tol: f64, flat: bool) {
+        let Some(e) = self.expected(0, flat) else {
+            self.motion_finding(Severity::Error, "VF010", format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)), p, None, None);
+            return;
+        };
+        if self.wrong_units(p, tol, flat) {
+            return;
+        }
+        self.motion_finding(
+            Severity::Error,
+            "VF010",
+            format!("this cutting move goes to {}, off the toolpath: its next move goes to {} ({:.4} mm away)", fmt_point(p.end), fmt_point(e.end), dist(p.end, e.end)),
+            p,
+            Some(&e),
+            None,
+        );
+        // Resynchronise on a later toolpath move this one ends at.
+        for k in 1..LOOKAHEAD {
+            let Some(later) = self.expected(k, flat) else { break };
+            if dist(p.end, later.end) <= tol {
+                for _ in 0..=k {
+                    self.skip();
+                }
+                self.progress = 0.0;
+                return;
+            }
+        }
+    }
+
+    fn finish(&mut self) {
+        let mut missing = 0u64;
+        let mut first: Option<Expected> = None;
+        if !self.settings.rotary_wrap && !self.stop_comparing {
+            while let Some(e) = self.path.pop() {
+                if e.cutting() {
+                    missing += 1;
+                    first.get_or_insert(e);
+                }
+            }
+        } else {
+            while self.path.pop().is_some() {}
+        }
+        self.stats.expected = self.path.count;
+        if let Some(e) = first {
+            let line = Span::new(self.file, self.line_start, self.line_start + self.line_len);
+            let d = Diagnostic::error(
+                "VF011",
+                format!("the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}", fmt_point(e.end)),
+            )
+            .at(e.span, "the first move the program does not make")
+            .also(line, "the program's last line")
+            .help("the program is truncated, or the post dropped moves");
+            self.push(d, true);
+        }
+        for d in std::mem::take(&mut self.path.diagnostics) {
+            let error = d.is_error();
+            self.push(d, error);
+        }
+    }
+}
+
+/// Where the message of an `M117`/`M118` word starts (after the word).
+fn message_word(text: &[u8]) -> Option<usize> {
+    let upper = |i: usize| text.get(i).map(u8::to_ascii_uppercase);
+    (0..text.len()).find_map(|i| {
+        let boundary = i == 0 || !text[i - 1].is_ascii_alphanumeric();
+        let word = upper(i) == Some(b'M') && text.get(i + 1..i + 4).is_some_and(|d| d == b"117" || d == b"118");
+        let after = text.get(i + 4).is_none_or(|b| !b.is_ascii_digit() && *b != b'.');
+        (boundary && word && after).then_some(i + 4)
+    })
+}
+
+/// When a block that failed to read has an `M0`/`M1` word (followed by a
+/// blank) before the failure: where its message starts.
+fn stop_with_message(prefix: &[u8]) -> Option<usize> {
+    (0..prefix.len()).find_map(|i| {
+        let boundary = i == 0 || !prefix[i - 1].is_ascii_alphanumeric();
+        if !boundary || !prefix[i].eq_ignore_ascii_case(&b'M') {
+            return None;
+        }
+        let digits = prefix[i + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let end = i + 1 + digits;
+        let code = std::str::from_utf8(&prefix[i + 1..end]).ok()?.parse::<u32>().ok()?;
+        (digits > 0 && code <= 1 && matches!(prefix.get(end), Some(b' ' | b'\t'))).then_some(end)
+    })
+}
+
+fn format_code(code: f64) -> String {
+    if code.fract().abs() < 1e-9 { format!("{}", code as i64) } else { format!("{code}") }
+}

@@ -1,0 +1,251 @@
+//! # postc verify
+//!
+//! Reads a G-code program (ISO/Fanuc/Haas/LinuxCNC/grbl style), replays it
+//! with a modal interpreter of the RS274/NGC groups, and compares the
+//! resulting tool motion, move by move, with the toolpath the program was
+//! posted from. Every finding is a [`Diagnostic`] with a `VF` code, a span
+//! in the program (line and column) and, where it came from a toolpath
+//! move, a second label at that move.
+//!
+//! Both sides stream: the program is read line by line into one reused
+//! buffer, the toolpath through a bounded window of expected moves
+//! ([`expect::WINDOW`]); memory stays flat whatever the length.
+//! `docs/verify.md` describes the checks, the tolerances and the
+//! controllers' limits.
+
+pub mod expect;
+pub mod geometry;
+pub mod grammar;
+mod interp;
+
+use std::io::BufRead;
+
+use postc_ir::{Diagnostic, EventSource, FileId, Post, Quantity, Units, ValueSource};
+
+pub use interp::Stats;
+
+/// The controller a program is checked for: its arc radius limit, block
+/// number maximum and the comment characters it accepts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Controller {
+    LinuxCnc,
+    Fanuc,
+    Haas,
+    Grbl,
+    #[default]
+    Generic,
+}
+
+impl Controller {
+    pub fn name(self) -> &'static str {
+        match self {
+            Controller::LinuxCnc => "LinuxCNC",
+            Controller::Fanuc => "Fanuc",
+            Controller::Haas => "Haas",
+            Controller::Grbl => "grbl",
+            Controller::Generic => "generic",
+        }
+    }
+
+    /// Whether an arc whose start and end radii are `r0` and `r1` (mm)
+    /// is out of this controller's limit. `inch` is the program's units.
+    pub fn radius_error(self, r0: f64, r1: f64, inch: bool) -> Option<String> {
+        let diff = (r0 - r1).abs();
+        let r = r0.max(r1);
+        match self {
+            // interp_internal.hh: CENTER_ARC_RADIUS_TOLERANCE_{MM,INCH} = 2 * 0.01 mm (0.001 in) * sqrt(2);
+            // interp_arc.cc: an error when the difference is over 100 times that, or over it and over 0.1% of the radius.
+            Controller::LinuxCnc | Controller::Generic => {
+                let abs = if inch { 2.0 * 0.001 * 25.4 } else { 2.0 * 0.01 } * std::f64::consts::SQRT_2;
+                (diff > 100.0 * abs || (diff > abs && diff / r > 0.001))
+                    .then(|| format!("LinuxCNC refuses a difference over {abs:.4} mm that is also over 0.1% of the radius"))
+            }
+            // grbl gcode.c: STATUS_GCODE_INVALID_TARGET when the difference is over 0.005 mm and over 0.5 mm or 0.1% of the radius.
+            Controller::Grbl => (diff > 0.005 && (diff > 0.5 || diff > 0.001 * r))
+                .then(|| "grbl refuses a difference over 0.005 mm that is also over 0.5 mm or 0.1% of the radius".into()),
+            // Fanuc parameter 3410 (and Haas' equivalent) is set by the machine builder; 0.01 mm is assumed.
+            Controller::Fanuc | Controller::Haas => (diff > 0.01)
+                .then(|| format!("{} refuses (by its arc radius parameter, assumed 0.01 mm) a larger difference", self.name())),
+        }
+    }
+
+    /// The highest block number the controller reads.
+    pub fn block_maximum(self) -> f64 {
+        match self {
+            Controller::Grbl => 9_999_999.0,
+            Controller::LinuxCnc | Controller::Fanuc | Controller::Haas => 99_999.0,
+            Controller::Generic => f64::INFINITY,
+        }
+    }
+}
+
+/// What verify knows about the program before reading it.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub controller: Controller,
+    /// The tolerance asked for, mm (default 0.01).
+    pub tolerance: f64,
+    /// The post's output units, when the post is known.
+    pub units: Option<Units>,
+    /// Decimals of the post's X/Y/Z words, when the post is known.
+    pub decimals: Option<u8>,
+    /// Chord tolerance of arcs the post linearizes, mm.
+    pub chord_tolerance: f64,
+    /// The post's block numbering: start and maximum.
+    pub block_start: Option<f64>,
+    pub block_maximum: Option<f64>,
+    /// The multiplier of the post's feed word (1 for per-minute feeds).
+    pub feed_multiplier: f64,
+    /// The post wraps an axis onto a rotary one.
+    pub rotary_wrap: bool,
+    /// The post's name, for messages.
+    pub post: Option<String>,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            controller: Controller::Generic,
+            tolerance: 0.01,
+            units: None,
+            decimals: None,
+            chord_tolerance: 0.01,
+            block_start: None,
+            block_maximum: None,
+            feed_multiplier: 1.0,
+            rotary_wrap: false,
+            post: None,
+        }
+    }
+}
+
+impl Settings {
+    /// Learns from a compiled post: output units, the decimals of its X
+    /// word, the chord tolerance, block numbering and the feed multiplier.
+    pub fn from_post(post: &Post, controller: Controller, tolerance: f64) -> Settings {
+        let format_of = |q: Quantity| {
+            post.variables
+                .iter()
+                .find(|v| v.source == ValueSource::Quantity(q))
+                .and_then(|v| post.formats.get(v.format as usize))
+        };
+        let decimals = [Quantity::X, Quantity::Y, Quantity::Z].into_iter().filter_map(format_of).map(|f| f.decimals).min();
+        let feed_multiplier = [Quantity::Feed, Quantity::CutFeed, Quantity::PlungeFeed]
+            .into_iter()
+            .filter_map(format_of)
+            .map(|f| f.multiplier)
+            .find(|m| m.is_finite() && *m > 0.0)
+            .unwrap_or(1.0);
+        let numbers = post.options.block_numbers;
+        let has_n = post.variables.iter().any(|v| v.source == ValueSource::Quantity(Quantity::BlockNumber));
+        Settings {
+            controller,
+            tolerance,
+            units: post.info.units,
+            decimals,
+            chord_tolerance: post.options.arc_tolerance,
+            block_start: has_n.then_some(numbers.start),
+            block_maximum: (has_n && numbers.maximum > 0.0).then_some(numbers.maximum),
+            feed_multiplier,
+            rotary_wrap: post.options.rotary_wrap.is_some(),
+            post: Some(post.info.name.clone()),
+        }
+    }
+}
+
+/// The program families verify knows, for the refusal message.
+pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style)";
+
+/// ShopBot commands that start a line with a comma after them.
+const SHOPBOT: &[&str] = &[
+    "MS", "JS", "VS", "J2", "J3", "J4", "J5", "JX", "JY", "JZ", "JA", "JB", "M2", "M3", "M4", "M5", "MX", "MY", "MZ", "MA", "MB", "MH", "JH",
+    "CG", "CR", "CP", "TR", "SO", "PA", "PS", "C2", "C3", "C6", "C7", "C9", "TC", "FP", "ZX", "ZY", "ZZ", "ZT", "SR", "SF", "VA", "VR",
+];
+
+/// Output families verify does not read, told apart by a program's first bytes.
+pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
+    let text = String::from_utf8_lossy(&head[..head.len().min(4096)]);
+    for line in text.lines().map(str::trim).filter(|l| !l.is_empty()).take(40) {
+        let upper = line.to_ascii_uppercase();
+        if upper.starts_with("BEGIN PGM") || upper.split_whitespace().nth(1) == Some("BEGIN") && upper.contains(" PGM ") {
+            return Some("Heidenhain conversational");
+        }
+        if ["IN;", "PU;", "PD;", "SP1;", "DF;"].iter().any(|p| upper.starts_with(p)) || (upper.starts_with("PU") && upper.ends_with(';')) {
+            return Some("HPGL");
+        }
+        // ShopBot's two-character commands take comma-separated arguments (`MS,1,0.5`, `J3,0,0,1`).
+        let b = upper.as_bytes();
+        if b.len() >= 3 && b[2] == b',' && SHOPBOT.iter().any(|c| c.as_bytes() == &b[..2]) {
+            return Some("ShopBot");
+        }
+        if upper.starts_with('&') || upper == "SA" {
+            return Some("ShopBot");
+        }
+    }
+    None
+}
+
+/// Whether the head of a file looks binary (NUL bytes or mostly control bytes).
+pub fn looks_binary(head: &[u8]) -> bool {
+    let head = &head[..head.len().min(4096)];
+    let control = head.iter().filter(|&&b| b < 32 && !matches!(b, b'\n' | b'\r' | b'\t' | 12)).count();
+    head.contains(&0) || control * 10 > head.len()
+}
+
+/// What a verification found.
+pub struct Report {
+    /// Findings, at most [`MAX_SHOWN`] of each code; `counts` has them all.
+    pub findings: Vec<Diagnostic>,
+    pub errors: u64,
+    pub warnings: u64,
+    pub stats: Stats,
+}
+
+/// Findings kept of each code; the rest are counted.
+pub const MAX_SHOWN: usize = 20;
+
+/// Verifies a program (read from `program`, its spans in `file`) against
+/// the toolpath it was posted from.
+pub fn verify(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
+    interp::run(program, file, toolpath, settings)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The LinuxCNC limit as LinuxCNC's `rs274` applies it (measured: a G2
+    /// from X0 to X10 with I5.014 is read, I5.0145 refused; from X0 to X2000
+    /// I1000.5 is read, I1001 refused).
+    #[test]
+    fn the_linuxcnc_radius_limit_agrees_with_rs274() {
+        let check = |i: f64, end: f64| Controller::LinuxCnc.radius_error(i, end - i, false).is_some();
+        assert!(!check(5.014, 10.0));
+        assert!(check(5.0145, 10.0));
+        assert!(!check(1000.5, 2000.0));
+        assert!(check(1001.0, 2000.0));
+    }
+
+    #[test]
+    fn the_grbl_radius_limit() {
+        assert!(Controller::Grbl.radius_error(5.0, 5.004, false).is_none());
+        assert!(Controller::Grbl.radius_error(5.0, 5.006, false).is_some());
+        assert!(Controller::Grbl.radius_error(1000.0, 1000.4, false).is_none());
+        assert!(Controller::Grbl.radius_error(1000.0, 1000.6, false).is_some());
+    }
+}
+
+#[cfg(test)]
+mod family_tests {
+    use super::*;
+
+    #[test]
+    fn families_by_their_first_lines() {
+        assert_eq!(foreign_family(b"IN;\nSP1;\nPU0,0;\n"), Some("HPGL"));
+        assert_eq!(foreign_family(b"'job\nSA\nMS,1,0.5\nJ3,1,2,3\n"), Some("ShopBot"));
+        assert_eq!(foreign_family(b"0 BEGIN PGM 1 MM\n1 BLK FORM\n"), Some("Heidenhain conversational"));
+        // Decimal commas are G-code too.
+        assert_eq!(foreign_family(b"%\nG90G17G71\nG00X10,000Y10,000\nX5,000Y2,5\n"), None);
+        assert_eq!(foreign_family(b"G21 G90\nG0 X1 Y2\n"), None);
+    }
+}
