@@ -185,4 +185,51 @@ mod tests {
             assert_eq!(back, events, "{text}");
         }
     }
+
+    /// Issue 14, fault 1: a JSON number is read as the double nearest to
+    /// its decimal text, as RON and Rust read it, not the next one.
+    #[test]
+    fn json_numbers_are_read_correctly_rounded() {
+        let (json, dj) = read("{\"Rapid\":{\"x\":36.207499999999996,\"y\":0,\"z\":0}}\n", None);
+        let (ron, dr) = read("Rapid(x: 36.207499999999996, y: 0, z: 0)\n", None);
+        assert!(dj.is_empty() && dr.is_empty());
+        let x = |e: &Event| match e {
+            Event::Rapid(m) => m.x,
+            _ => panic!("{e:?}"),
+        };
+        assert_eq!(x(&json[0]).to_bits(), 36.207499999999996f64.to_bits());
+        assert_eq!(x(&json[0]).to_bits(), x(&ron[0]).to_bits());
+        assert!(x(&json[0]) < 36.2075);
+    }
+
+    proptest::proptest! {
+        /// Any finite double, written as JSON by the writer or as a long
+        /// decimal or exponent text, reads back as the same bits as
+        /// Rust's own correctly rounded parse of that text.
+        #[test]
+        fn json_doubles_read_back_exactly(bits in proptest::num::u64::ANY, digits in 0usize..30) {
+            let x = f64::from_bits(bits);
+            proptest::prop_assume!(x.is_finite());
+            let event = Event::Rapid(Move { x, ..Move::default() });
+            let mut line = String::new();
+            write_event(&event, Syntax::JsonLines, &mut line);
+            let (back, diags) = read(&line, Some(Syntax::JsonLines));
+            proptest::prop_assert!(diags.is_empty(), "{line}: {diags:?}");
+            proptest::prop_assert_eq!(back.len(), 1);
+            match &back[0] {
+                Event::Rapid(m) => proptest::prop_assert_eq!(m.x.to_bits(), x.to_bits(), "{}", line),
+                e => proptest::prop_assert!(false, "{e:?}"),
+            }
+            for text in [format!("{x:.digits$e}"), format!("{:.digits$}", x.abs().min(1e30).max(1e-30) * x.signum())] {
+                let expected: f64 = text.parse().unwrap();
+                let line = format!("{{\"Rapid\":{{\"x\":{text},\"y\":0,\"z\":0}}}}\n");
+                let (back, diags) = read(&line, Some(Syntax::JsonLines));
+                proptest::prop_assert!(diags.is_empty(), "{line}: {diags:?}");
+                match &back[0] {
+                    Event::Rapid(m) => proptest::prop_assert_eq!(m.x.to_bits(), expected.to_bits(), "{}", line),
+                    e => proptest::prop_assert!(false, "{e:?}"),
+                }
+            }
+        }
+    }
 }

@@ -10,8 +10,9 @@
 //! command line. `docs/diagnostics.md` lists them all.
 
 use std::fmt;
-use std::io::{self, Read};
+use std::io::{self, Read, Seek, SeekFrom};
 use std::path::Path;
+use std::sync::OnceLock;
 
 use codespan_reporting::diagnostic as cs;
 use codespan_reporting::files::{self, Files};
@@ -155,6 +156,70 @@ struct SourceFile {
     /// held; their text is read back from `name` only to render a diagnostic.
     text: Option<String>,
     line_starts: Vec<usize>,
+    /// The line index of a streamed file, built by one pass over it the
+    /// first time a diagnostic's position in it is asked for, so that every
+    /// position costs a binary search whatever its place in the file.
+    streamed: OnceLock<Option<StreamIndex>>,
+}
+
+/// Where the lines of a streamed file start, and which lines hold bytes
+/// outside ASCII (only there must a column be counted in characters by
+/// reading the line back).
+#[derive(Debug, Default)]
+struct StreamIndex {
+    line_starts: Vec<usize>,
+    /// One bit per line: set when the line has a byte outside ASCII.
+    non_ascii: Vec<u64>,
+    len: usize,
+}
+
+impl StreamIndex {
+    fn build(path: &str) -> io::Result<StreamIndex> {
+        let mut file = io::BufReader::with_capacity(1 << 16, std::fs::File::open(Path::new(path))?);
+        let mut index = StreamIndex { line_starts: vec![0], non_ascii: vec![0], len: 0 };
+        let mut buf = [0u8; 1 << 16];
+        loop {
+            let n = match file.read(&mut buf) {
+                Ok(0) => break,
+                Ok(n) => n,
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(e),
+            };
+            for (i, &b) in buf[..n].iter().enumerate() {
+                if b == b'\n' {
+                    index.line_starts.push(index.len + i + 1);
+                    let line = index.line_starts.len() - 1;
+                    if line / 64 >= index.non_ascii.len() {
+                        index.non_ascii.push(0);
+                    }
+                } else if b >= 0x80 {
+                    let line = index.line_starts.len() - 1;
+                    index.non_ascii[line / 64] |= 1 << (line % 64);
+                }
+            }
+            index.len += n;
+        }
+        Ok(index)
+    }
+
+    /// 1-based line and column (in characters) of a byte offset.
+    fn line_column(&self, path: &str, offset: usize) -> (usize, usize) {
+        let offset = offset.min(self.len);
+        let line = self.line_starts.partition_point(|&s| s <= offset).saturating_sub(1);
+        let start = self.line_starts[line];
+        let ascii = self.non_ascii[line / 64] & (1 << (line % 64)) == 0;
+        let column = if ascii { offset - start } else { chars_between(path, start, offset).unwrap_or(offset - start) };
+        (line + 1, column + 1)
+    }
+}
+
+/// Characters between two byte offsets of one line of a file.
+fn chars_between(path: &str, start: usize, end: usize) -> io::Result<usize> {
+    let mut file = std::fs::File::open(Path::new(path))?;
+    file.seek(SeekFrom::Start(start as u64))?;
+    let mut bytes = Vec::with_capacity(end - start);
+    file.take((end - start) as u64).read_to_end(&mut bytes)?;
+    Ok(bytes.iter().filter(|&&b| b & 0xC0 != 0x80).count())
 }
 
 /// Files larger than this are not read back to render a snippet.
@@ -169,13 +234,13 @@ impl SourceMap {
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         let text = text.into();
         let line_starts = files::line_starts(&text).collect();
-        self.files.push(SourceFile { name: name.into(), text: Some(text), line_starts });
+        self.files.push(SourceFile { name: name.into(), text: Some(text), line_starts, streamed: OnceLock::new() });
         FileId(self.files.len() as u32 - 1)
     }
 
     /// Adds a file that is streamed from disk and not held in memory.
     pub fn add_streamed(&mut self, path: impl Into<String>) -> FileId {
-        self.files.push(SourceFile { name: path.into(), text: None, line_starts: Vec::new() });
+        self.files.push(SourceFile { name: path.into(), text: None, line_starts: Vec::new(), streamed: OnceLock::new() });
         FileId(self.files.len() as u32 - 1)
     }
 
@@ -219,33 +284,12 @@ impl SourceMap {
                     .map_or(offset - start, |s| s.chars().count());
                 Some((line + 1, column + 1))
             }
-            None => line_column_streamed(&f.name, offset).ok(),
-        }
-    }
-}
-
-/// Line and column of an offset in a file that is not held, by reading it
-/// through once.
-fn line_column_streamed(path: &str, offset: usize) -> io::Result<(usize, usize)> {
-    let mut file = io::BufReader::new(std::fs::File::open(Path::new(path))?);
-    let mut buf = [0u8; 1 << 16];
-    let (mut line, mut column, mut pos) = (1usize, 1usize, 0usize);
-    while pos < offset {
-        let n = file.read(&mut buf)?;
-        if n == 0 {
-            break;
-        }
-        for &b in &buf[..n.min(offset - pos)] {
-            if b == b'\n' {
-                line += 1;
-                column = 1;
-            } else if b & 0xC0 != 0x80 {
-                column += 1;
+            None => {
+                let index = f.streamed.get_or_init(|| StreamIndex::build(&f.name).ok()).as_ref()?;
+                Some(index.line_column(&f.name, offset))
             }
         }
-        pos += n;
     }
-    Ok((line, column))
 }
 
 impl<'a> Files<'a> for SourceMap {

@@ -80,6 +80,7 @@ pub const DECLARED_TWICE: &str = "VC034";
 pub const BYREF: &str = "VC035";
 pub const NOT_A_VALUE: &str = "VC036";
 pub const OPTION_IGNORED: &str = "VC037";
+pub const UNCLOSED_REGISTER: &str = "VC038";
 
 /// Every code with its one-line meaning, in order (for documentation and
 /// for a test that the table above stays complete).
@@ -121,6 +122,7 @@ pub const ALL: &[&str] = &[
     BYREF,
     NOT_A_VALUE,
     OPTION_IGNORED,
+    UNCLOSED_REGISTER,
 ];
 
 /// Message the lexer gives an unterminated string (mapped to VC002).

@@ -255,3 +255,23 @@ fn sniffing() {
     assert!(!looks_like_vcpost(b"function onLinear(x, y, z, feed) {\n  writeBlock(\"G1\");\n}\n"));
     assert!(!looks_like_vcpost(b""));
 }
+
+/// Issue 14, fault 7: `<Name` never closed with `>` in an `Out` string is
+/// an error at its line and column (it used to print literally, silently).
+#[test]
+fn an_unclosed_register_in_out_is_an_error_at_its_place() {
+    let text = "Sub ToolChange\n  Out \"<N> T1\"\nEnd Sub\n\nSub Linear\n  Out \"<N> G1 \"\"A\"\" <X<Y>\"\n  Out \"<N> G1<FeedRate\"\n  Out \"(X<0) a < b (DIST<MAX)\"\nEnd Sub\n";
+    let mut sources = SourceMap::new();
+    let (_, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
+    let found: Vec<_> = diagnostics
+        .iter()
+        .map(|d| {
+            let span = d.primary_span().expect("a span");
+            let (line, col) = sources.line_column(span.file, span.start).expect("a position");
+            let (end_line, end_col) = sources.line_column(span.file, span.end).expect("a position");
+            (d.code, d.severity, line, col, end_line, end_col)
+        })
+        .collect();
+    use postc_ir::Severity::Error;
+    assert_eq!(found, vec![("VC038", Error, 6, 21, 6, 23), ("VC038", Error, 7, 14, 7, 23)], "{}", sources.render(&diagnostics, false));
+}

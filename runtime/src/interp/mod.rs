@@ -27,8 +27,35 @@ pub(crate) enum Flow {
 
 type Result<T> = std::result::Result<T, Box<Diagnostic>>;
 
+/// The code of a text past [`MAX_TEXT_BYTES`].
+pub const TEXT_BUDGET: &str = "RT031";
+
+/// The error of a text past [`MAX_TEXT_BYTES`] (native code and scripts).
+pub fn text_budget_error(len: usize) -> Diagnostic {
+    Diagnostic::error(
+        TEXT_BUDGET,
+        format!(
+            "the post built a text of more than {} MiB ({len} bytes) and was stopped (text doubled in a loop?)",
+            MAX_TEXT_BYTES >> 20
+        ),
+    )
+    .note("no output is written; a post writes its program block by block and never needs text this long")
+}
+
 /// Calls nest at most this deep.
 const MAX_DEPTH: usize = 200;
+
+/// The longest text a post's code may build, in bytes (16 MiB), in native
+/// code and in scripts alike: a post is code from strangers, and
+/// `s = s + s` in a loop doubles its memory every step, long before the
+/// step budget stops it. No real post comes near: a whole program is
+/// written block by block, never held in one value.
+pub const MAX_TEXT_BYTES: usize = 16 << 20;
+
+/// Text longer than this costs one more step per this many bytes, so that
+/// a loop growing a long text (`s = s + "x"`, each step a copy of all of
+/// it) meets the step budget in seconds rather than hours.
+const TEXT_STEP_BYTES: usize = 256;
 
 impl Engine<'_> {
     /// Runs statements with a frame of locals.
@@ -142,6 +169,7 @@ impl Engine<'_> {
     fn in_loop(e: Box<Diagnostic>, span: Option<postc_ir::Span>) -> Box<Diagnostic> {
         match span {
             Some(s) if e.code == "RT002" && e.labels.is_empty() => Box::new(e.at(s, "this loop did not finish")),
+            Some(s) if e.code == TEXT_BUDGET && e.labels.is_empty() => Box::new(e.at(s, "this loop builds the text")),
             _ => e,
         }
     }
@@ -271,7 +299,9 @@ impl Engine<'_> {
             Expr::Binary(op, a, b) => {
                 let a = self.eval(a, frame)?;
                 let b = self.eval(b, frame)?;
-                binary(*op, &a, &b)
+                let v = binary(*op, &a, &b);
+                self.check_text(&v)?;
+                v
             }
             Expr::Choose(c, a, b) => {
                 if self.eval(c, frame)?.truthy() {
@@ -292,9 +322,24 @@ impl Engine<'_> {
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
-                builtin(*b, &values)
+                let v = builtin(*b, &values);
+                self.check_text(&v)?;
+                v
             }
         })
+    }
+
+    /// Text a post built: past [`MAX_TEXT_BYTES`] the run stops (RT031);
+    /// long text costs steps by its length.
+    fn check_text(&mut self, v: &Value) -> Result<()> {
+        let Value::Text(t) = v else { return Ok(()) };
+        if t.len() > TEXT_STEP_BYTES {
+            self.steps += (t.len() / TEXT_STEP_BYTES) as u64;
+            if t.len() > MAX_TEXT_BYTES {
+                return Err(Box::new(text_budget_error(t.len())));
+            }
+        }
+        Ok(())
     }
 
     /// Formats a value through a variable (prefix, format, modality) and
@@ -341,7 +386,12 @@ impl Engine<'_> {
             Body::Script(id) => self.call_script(*id, &function.name, args),
         };
         self.depth -= 1;
-        result
+        match (result, function.span) {
+            (Err(e), Some(s)) if e.code == TEXT_BUDGET && e.labels.is_empty() => {
+                Err(Box::new(e.at(s, "in this function")))
+            }
+            (result, _) => result,
+        }
     }
 
     fn call_script(&mut self, id: u16, name: &str, args: Vec<Value>) -> Result<Value> {

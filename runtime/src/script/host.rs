@@ -101,8 +101,11 @@ impl ScriptHost {
         engine.set_max_operations(post.options.step_budget.max(1).saturating_mul(64));
         engine.set_max_call_levels(48);
         engine.set_max_expr_depths(256, 256);
-        engine.set_max_string_size(16 << 20);
-        engine.set_max_array_size(1 << 20);
+        // The same text budget as native code (RT031); arrays and object
+        // tables get one too, so no post can take all the memory.
+        engine.set_max_string_size(crate::interp::MAX_TEXT_BYTES);
+        engine.set_max_array_size(MAX_ITEMS);
+        engine.set_max_map_size(MAX_ITEMS);
         engine.disable_symbol("eval");
         engine.register_iterator::<Array>();
         engine.on_print(|_| {});
@@ -166,6 +169,12 @@ impl ScriptHost {
         {
             span = Some(Span::new(whole.file, at as usize, at as usize + 1));
         }
+        // Rhai gives a too-large value no position: the loop it grew in.
+        if let (EvalAltResult::ErrorDataTooLarge(..), None, Some(at), Some(whole)) =
+            (inner, span, self.state.borrow().last_loop, self.script.span)
+        {
+            span = Some(Span::new(whole.file, at as usize, at as usize + 1));
+        }
         let d = match inner {
             EvalAltResult::ErrorTooManyOperations(_) => Diagnostic::error(
                 "RT002",
@@ -177,18 +186,36 @@ impl ScriptHost {
             EvalAltResult::ErrorStackOverflow(_) | EvalAltResult::ErrorTooManyModules(_) => {
                 Diagnostic::error("RT004", format!("calls nest too deep in `{name}` (endless recursion?)"))
             }
+            EvalAltResult::ErrorDataTooLarge(what, _) if what.contains("Length of string") => {
+                crate::interp::text_budget_error(crate::interp::MAX_TEXT_BYTES + 1)
+            }
+            EvalAltResult::ErrorDataTooLarge(what, _) => Diagnostic::error(
+                crate::interp::TEXT_BUDGET,
+                format!(
+                    "the post built an array or object of more than {MAX_ITEMS} items in `{name}` and was stopped ({})",
+                    what.to_lowercase()
+                ),
+            )
+            .note("no output is written"),
             EvalAltResult::ErrorRuntime(v, _) => {
                 Diagnostic::error("RT023", format!("the post stopped with an error: {}", values::to_string(v)))
             }
             other => Diagnostic::error("RT023", format!("the post stopped with an error: {}", message(other))),
         };
-        let label = if inner.to_string().contains("many operations") { "this loop did not finish" } else { "while running this" };
+        let label = match inner {
+            EvalAltResult::ErrorDataTooLarge(..) => "this loop builds it",
+            _ if inner.to_string().contains("many operations") => "this loop did not finish",
+            _ => "while running this",
+        };
         match span {
             Some(s) => d.at(s, label),
             None => d,
         }
     }
 }
+
+/// The most items an array or object table of a script may hold.
+pub const MAX_ITEMS: usize = 1 << 20;
 
 /// The innermost error of a chain of calls, and where it happened.
 fn innermost(err: &EvalAltResult) -> (&EvalAltResult, Position) {

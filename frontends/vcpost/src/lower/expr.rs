@@ -8,13 +8,13 @@
 //! replaces by name.
 
 use postc_ir::{
-    BinaryOp as IrOp, Body, Builtin, Diagnostic, Expr as IrExpr, Function, Piece, Stmt as IrStmt, UnaryOp as IrUnary,
+    BinaryOp as IrOp, Body, Builtin, Diagnostic, Expr as IrExpr, Function, Piece, Span, Stmt as IrStmt, UnaryOp as IrUnary,
 };
 
 use postc_ir::post::FunctionId;
 
 use super::Lowerer;
-use super::template::{TemplatePart, out_parts, split};
+use super::template::{TemplatePart, out_parts, split, unclosed};
 use crate::ast::{BinaryOp, Expr, ExprKind, Name, ProcKind, UnaryOp};
 use crate::builtins::{self, Lowering};
 use crate::diagnostics as codes;
@@ -279,6 +279,20 @@ impl Lowerer<'_> {
                 pieces.push(Piece::Expr(value));
                 continue;
             };
+            for range in unclosed(text) {
+                // Source offsets: after the opening quote, each `"` of the
+                // text was written `""`.
+                let at = |i: usize| part.span.start + 1 + i + text[..i].matches('"').count();
+                let name = &text[range.start + 1..range.end];
+                self.diagnostics.push(
+                    Diagnostic::error(
+                        codes::UNCLOSED_REGISTER,
+                        format!("`<{name}` is never closed: `>` is missing, so it would print as text"),
+                    )
+                    .at(Span::new(part.span.file, at(range.start), at(range.end)), "this register has no `>`")
+                    .help(format!("write `<{name}>` to print the register, or move the `<` out of the template")),
+                );
+            }
             for piece in split(text) {
                 match piece {
                     TemplatePart::Text(t) => self.push_text(&mut pieces, t),

@@ -66,6 +66,26 @@ pub fn split(text: &str) -> Vec<TemplatePart<'_>> {
     parts
 }
 
+/// The register references of a template that are never closed: each
+/// `<NAME` (NAME a valid name, taken as long as it goes) followed by the
+/// end of the string or by another `<` instead of `>`. Returns the byte
+/// range of `<NAME` in `text`. Any other `<` is text (`(X<0)`, `a < b`,
+/// `(DIST<MAX)`), as a less-than sign in a comment must stay.
+pub fn unclosed(text: &str) -> Vec<std::ops::Range<usize>> {
+    let mut out = Vec::new();
+    for (open, _) in text.match_indices('<') {
+        let rest = &text[open + 1..];
+        if !rest.chars().next().is_some_and(char::is_alphabetic) {
+            continue;
+        }
+        let len = rest.find(|c: char| !(c.is_alphanumeric() || c == '_')).unwrap_or(rest.len());
+        if matches!(rest[len..].chars().next(), None | Some('<')) {
+            out.push(open..open + 1 + len);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,5 +98,15 @@ mod tests {
         assert_eq!(split("<<X>>"), vec![T("<"), R("X"), T(">")]);
         assert_eq!(split("a < b"), vec![T("a < b")]);
         assert_eq!(split(""), vec![]);
+    }
+
+    #[test]
+    fn finds_unclosed_registers() {
+        assert_eq!(unclosed("<N><X"), vec![3..5]);
+        assert_eq!(unclosed("<N> G0<X<Y>"), vec![6..8]);
+        assert_eq!(unclosed("<FeedRate"), vec![0..9]);
+        for closed in ["<N> G0<X><Y>", "(X<0)", "a < b", "(DIST<MAX)", "<<X>>", "<>", "x<", ""] {
+            assert_eq!(unclosed(closed), Vec::<std::ops::Range<usize>>::new(), "{closed}");
+        }
     }
 }
