@@ -15,7 +15,7 @@ fn bad_cl(bytes: usize) -> String {
     let mut i = 0u32;
     while text.len() < bytes {
         let x = f64::from(i) * 0.01;
-        if i % 2 == 0 {
+        if i.is_multiple_of(2) {
             text.push_str(&format!("GOTO  /   {x:.4},Q    1.7270,    3.1466, 0.0000000, 0.0000000, 1.0000000\n"));
         } else {
             text.push_str(&format!("GOTO  /   {x:.4},    0.7247,    2.2967, 0.0085511,-0.0050286, 0.9999508\n"));
