@@ -63,6 +63,9 @@ pub enum Stmt {
     /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
     /// does with a value: each line that is not empty becomes a block.
     Blocks(u16),
+    /// Make a variable forget what it printed last, so that the next value
+    /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
+    Forget(VarId),
 }
 
 /// One piece of an output block.

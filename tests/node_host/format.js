@@ -8,7 +8,8 @@
 // (and then the point) are dropped; width pads the integer digits (zeros
 // with zeropad, blanks otherwise) after the sign; forceSign writes "+".
 // createVariable({prefix, force}, format): format(v) returns "" when the
-// text is the one it returned last (unless force); getLast() the last value.
+// text is the one it returned last (unless force); getLast() the last value;
+// reset() forgets the text, so the next format(v) returns it.
 "use strict";
 
 // The digits of |v| as JavaScript prints it: a digit string and the number
@@ -136,32 +137,30 @@ function createFormat(props, decimalMark) {
     return { format: format };
 }
 
-// Output variables; `host.epoch` counts the toolpath starts, each of which
-// makes every variable forget what it printed.
-function makeCreateVariable(host) {
-    return function createVariable(props, format) {
-        props = props || {};
-        var prefix = props.prefix === undefined ? "" : String(props.prefix);
-        var force = !!props.force;
-        var fmt = format || createFormat({}, ".");
-        var lastText = null;
-        var lastEpoch = -1;
-        var lastValue = 0;
-        return {
-            format: function (value) {
-                var v = Number(value);
-                var text = prefix + fmt.format(v);
-                lastValue = v;
-                var same = !force && lastEpoch === host.epoch && lastText === text;
-                lastText = text;
-                lastEpoch = host.epoch;
-                return same ? "" : text;
-            },
-            getLast: function () {
-                return lastValue;
-            },
-        };
+// Output variables: modal for the whole program; reset() forgets.
+function createVariable(props, format) {
+    props = props || {};
+    var prefix = props.prefix === undefined ? "" : String(props.prefix);
+    var force = !!props.force;
+    var fmt = format || createFormat({}, ".");
+    var lastText = null;
+    var lastValue = 0;
+    return {
+        format: function (value) {
+            var v = Number(value);
+            var text = prefix + fmt.format(v);
+            lastValue = v;
+            var same = !force && lastText === text;
+            lastText = text;
+            return same ? "" : text;
+        },
+        getLast: function () {
+            return lastValue;
+        },
+        reset: function () {
+            lastText = null;
+        },
     };
 }
 
-module.exports = { createFormat: createFormat, makeCreateVariable: makeCreateVariable, roundHalfAway: roundHalfAway };
+module.exports = { createFormat: createFormat, createVariable: createVariable, roundHalfAway: roundHalfAway };

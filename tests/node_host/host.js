@@ -4,8 +4,10 @@
 //
 // Call order: the post's top level, onInit(); at the first toolpath
 // onOpen(false) and onToolChange(...) for the first tool; later toolpaths
-// with another tool onToolChange(...); every toolpath start makes the
-// output variables forget what they printed. Moves call onLinear and
+// with another tool onToolChange(...). Output variables keep what they
+// printed for the whole program (seed 002: a variable without force "will
+// only be written if it has changed since the last time it was used");
+// only their reset() makes them forget. Moves call onLinear and
 // onCircular (split under useRadius so that no part turns 180 degrees or
 // more); cutter compensation onCompensation(0|1|2); milling drill cycles
 // onDrillingHeader(drillHeader), onDrillingPoint(x, y), onDrillingFooter();
@@ -23,11 +25,10 @@ var RAPID = 0, CUTTING = 1, PLUNGE = 2;
 
 function Host(source, fileName) {
     var host = this;
-    this.epoch = 0;
     this.out = [];
     this.bytes = 0;
     this.keepOutput = true;
-    var createVariable = fmt.makeCreateVariable(this);
+    var createVariable = fmt.createVariable;
     var sandbox = {
         MOVEMENT_RAPID: RAPID, MOVEMENT_CUTTING: CUTTING, MOVEMENT_FEED: CUTTING, MOVEMENT_PLUNGE: PLUNGE, MOVEMENT_RETRACT: 3,
         COMPENSATION_OFF: 0, COMPENSATION_LEFT: 1, COMPENSATION_RIGHT: 2,
@@ -148,7 +149,6 @@ Host.prototype.beginToolpath = function () {
     }
     this.toolChanged = false;
     this.lastTool = this.tool.number;
-    this.epoch++;
 };
 
 Host.prototype.ensureStarted = function () {

@@ -71,6 +71,11 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock(" ; " + name.toUpperCase())
         + writeBlock(" TOOL CALL " + tool + " Z S" + Math.round(spindleSpeed))
         + writeBlock(" L Z+100.000 R0 FMAX M3");
@@ -165,6 +170,8 @@ function onDrillingPoint(x, y) {
     if (!cycleDefined) {
         cycleDefined = true;
         out = cycleDefinition();
+        // The cycle starts from the clearance height: always say it.
+        zOutput.reset();
         out += writeBlock(" L" + zOutput.format(drill.retractPlane) + " R0 FMAX");
     }
     return out + writeBlock(" L" + xOutput.format(x) + yOutput.format(y) + " R0 FMAX M99");

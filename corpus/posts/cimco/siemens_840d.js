@@ -60,6 +60,12 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock(" ; " + name) + writeBlock(" T" + tool + " D1") + writeBlock(" M6")
         + writeBlock(" S" + Math.round(spindleSpeed) + " M3");
 }
@@ -162,7 +168,13 @@ function longhand(x, y) {
 }
 
 function onDrillingFooter() {
-    var out = cycleOn ? writeBlock(" MCALL") : "";
+    var out = "";
+    if (cycleOn) {
+        out = writeBlock(" MCALL");
+        // The cycle's own moves leave G and Z to the controller: print them again.
+        gMotion.reset();
+        zOutput.reset();
+    }
     cycleOn = false;
     drill = null;
     return out;

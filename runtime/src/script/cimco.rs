@@ -89,7 +89,8 @@ fn format_with(st: &State, id: u16, v: f64) -> String {
     String::from_utf8_lossy(&buf).into_owned()
 }
 
-/// `format` and `getLast` of output variables and formats, whichever way
+/// `format`, `getLast` and `reset` of output variables and `format` of
+/// formats, whichever way
 /// they were made.
 pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> Option<R> {
     let a0 = || args.first().map_or(f64::NAN, to_number);
@@ -97,6 +98,13 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
         return Some(match name {
             "format" => Ok(text(format_var(&mut state.borrow_mut(), id, a0()))),
             "getLast" => Ok(num(last(&state.borrow(), id))),
+            "reset" => {
+                if let Some(v) = state.borrow_mut().vars.get_mut(id as usize) {
+                    v.has_last = false;
+                    v.key = None;
+                }
+                Ok(Dynamic::UNIT)
+            }
             _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
         });
     }
@@ -131,6 +139,10 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
                 Ok(text(if same { String::new() } else { t }))
             }
             "getLast" => Ok(num(var.last_value)),
+            "reset" => {
+                var.last_text = None;
+                Ok(Dynamic::UNIT)
+            }
             _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
         });
     }

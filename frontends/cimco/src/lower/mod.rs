@@ -72,6 +72,10 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     let arity = |name: &str| info(name).map(|f| f.params.len());
     settings(&model, post, diags);
     post.options.lathe = is_lathe(&model, arity("onLinear"));
+    // Seed 002: a variable without force "will only be written if it has
+    // changed since the last time it was used" -- a toolpath start does not
+    // make it forget (a post that wants that calls `reset()`).
+    post.options.forget_modal_at_toolpath_start = false;
 
     // Formats and variables, and the one getFeedrate formats through.
     post.formats = setup.formats.clone();

@@ -211,6 +211,10 @@ impl Native<'_, '_> {
                 let op = if *op == UpdateOp::Increment { IrBin::Add } else { IrBin::Sub };
                 Some(IrStmt::Assign(place, Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)))))
             }
+            ExprKind::Call { callee, args } if args.is_empty() => match self.reset_of(callee) {
+                Some(var) => Some(IrStmt::Forget(var)),
+                None => Some(IrStmt::Eval(self.expr(e)?)),
+            },
             _ => Some(IrStmt::Eval(self.expr(e)?)),
         }
     }
