@@ -7,8 +7,6 @@
 
 mod cimco_common;
 
-use std::path::Path;
-
 use cimco_common::*;
 
 /// Posts `js` over the native toolpath `ron` with postc and (when it is
@@ -90,4 +88,90 @@ function onLinear(x, y, z, m) {
     // And through variables made while the post runs.
     let dynamic = js.replace("var gOut", "var gOut;\nfunction onInit() { gOut = createVariable({prefix: \"G\"}, createFormat({decimals: Number(\"0\")})); }\nvar unused");
     check(&dynamic, TWO_TOOLPATHS, expected);
+}
+
+const LATHE_PER_REV: &str = "Job(units: Mm)
+Tool(number: 1, cut_feed: 0.15, plunge_feed: 0.08, spindle_speed: 1500)
+ToolpathStart(name: \"rough\", feed_per_rev: true)
+Rapid(x: 20, y: 0, z: 2)
+Feed(x: 20, y: 0, z: -30)
+Feed(x: 22, y: 0, z: -30, feed: 0.0025)
+ToolpathStart(name: \"per minute\")
+Feed(x: 24, y: 0, z: -30, feed: 47.25)
+End
+";
+
+/// A lathe post in G95/G99 prints 0.15 mm/rev as F0.15, not F0.2.
+#[test]
+fn feeds_per_revolution_keep_their_decimals() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 3, forceDecimal: true});
+var xOut = createVariable({prefix: " X"}, f);
+var zOut = createVariable({prefix: " Z"}, f);
+function onLinear(x, z, m) {
+    return "G" + (m == MOVEMENT_RAPID ? 0 : 1) + xOut.format(x) + zOut.format(z) + (m == MOVEMENT_RAPID ? "" : " " + getFeedrate(m)) + "\n";
+}
+"#;
+    let expected = "G0 X20.000 Z2.000\nG1 Z-30.000 F0.15\nG1 X22.000 F0.0025\nG1 X24.000 F47.3\n";
+    check(js, LATHE_PER_REV, expected);
+    // The host's getFeedrate from a script.
+    let script = js.replace("function onLinear(x, z, m) {", "function onLinear(x, z, m) {\n    var o = {};");
+    check(&script, LATHE_PER_REV, expected);
+}
+
+const DRILL: &str = "Job(units: Mm)
+Tool(number: 3, cut_feed: 200, plunge_feed: 100, spindle_speed: 3000)
+ToolpathStart(name: \"holes\")
+DrillCycle(kind: Drill, retract_plane: 15, reference_plane: 2, surface: -1, depth: -11, feed: 80)
+DrillPoint(x: 5, y: 5, z: -1)
+DrillEnd
+ToolpathStart(name: \"no surface given\")
+DrillCycle(kind: Drill, retract_plane: 15, reference_plane: 2, depth: -11, feed: 80)
+DrillPoint(x: 9, y: 5, z: -1)
+DrillEnd
+End
+";
+
+/// The drill header's referencePlane is the top of the hole (seed 002:
+/// safe distance and end depth "are relative to this plane"), so a
+/// set-up clearance (Heidenhain Q200 = safe distance - reference plane)
+/// is the real one, not 0.
+#[test]
+fn drill_header_reference_plane_is_the_hole_top() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 3});
+var drill;
+function onLinear(x, y, z, m) { return ""; }
+function onDrillingHeader(h) { drill = h; return ""; }
+function onDrillingPoint(x, y) {
+    return "RET " + f.format(drill.retractPlane) + " REF " + f.format(drill.referencePlane)
+        + " SAFE " + f.format(drill.safeDistance) + " Q200 " + f.format(drill.safeDistance - drill.referencePlane)
+        + " END " + f.format(drill.endDepth) + "\n";
+}
+"#;
+    let expected = "RET 15 REF -1 SAFE 2 Q200 3 END -11\nRET 15 REF 2 SAFE 2 Q200 0 END -11\n";
+    check(js, DRILL, expected);
+}
+
+/// APT CYCLE measures its clearance from the hole's top: the reader
+/// gives the cycle that surface.
+#[test]
+fn apt_cycles_carry_the_hole_top() {
+    let cl = "PARTNO/T\nLOADTL/1\nGOTO/0,0,50\nCYCLE/DRILL,10,MMPM,100,3\nGOTO/5,5,-1\nCYCLE/OFF\nFINI\n";
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("job.cl");
+    std::fs::write(&path, cl).expect("write the CL file");
+    let mut sources = postc_ir::SourceMap::new();
+    let mut source = postc_frontends::open_toolpath(&path, &mut sources).unwrap_or_else(|d| panic!("{}", d.message));
+    let mut diags = Vec::new();
+    let mut cycle = None;
+    while let Some((e, _)) = postc_ir::EventSource::next_event(&mut source, &mut diags) {
+        if let postc_ir::event::Event::DrillCycle(c) = e {
+            cycle = Some(c);
+        }
+    }
+    let c = cycle.expect("a drill cycle");
+    assert_eq!((c.surface, c.reference_plane, c.depth), (Some(-1.0), 2.0, -11.0));
 }

@@ -42,7 +42,7 @@ function Host(source, fileName) {
             if (movement == RAPID) {
                 return "";
             }
-            return host.feedVariable.format(host.feed);
+            return (host.feedPerRev ? host.feedRevVariable : host.feedVariable).format(host.feed);
         },
     };
     // The post runs as an ordinary script in this context, so that its
@@ -52,7 +52,11 @@ function Host(source, fileName) {
         globalThis[k] = sandbox[k];
     });
     vm.runInThisContext(source, { filename: fileName });
+    // getFeedrate: one decimal per minute, four per revolution (0.15
+    // mm/rev prints F0.15).
     this.feedVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 1 }, this.setting("decimalMark")));
+    this.feedRevVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 4 }, this.setting("decimalMark")));
+    this.feedPerRev = false;
     var info = this.ctx.PostInfo;
     var onLinear = this.ctx.onLinear;
     if (info && info.type !== undefined) {
@@ -259,7 +263,9 @@ Host.prototype.millHeader = function () {
     var dwell = c.dwell != null && c.dwell > 0 ? c.dwell : null;
     return {
         name: n.name, isLonghand: n.longhand,
-        retractPlane: c.retract_plane || 0, referencePlane: c.reference_plane || 0,
+        // referencePlane is the top of the holes (seed 002: safe distance
+        // and end depth are relative to it); safeDistance the R plane.
+        retractPlane: c.retract_plane || 0, referencePlane: c.surface != null ? c.surface : c.reference_plane || 0,
         safeDistanceIsAbsolute: true, safeDistance: c.reference_plane || 0,
         endDepthIsAbsolute: true, endDepth: c.depth || 0,
         firstDepth: c.peck != null && c.peck > 0 ? c.peck : 0,
@@ -314,6 +320,7 @@ Host.prototype.event = function (e) {
             this.feed = this.tool.cut_feed;
             break;
         case "ToolpathStart":
+            this.feedPerRev = !!d.feed_per_rev;
             this.beginToolpath();
             break;
         case "ToolpathEnd":

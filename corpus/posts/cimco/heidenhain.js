@@ -148,17 +148,31 @@ function onDrillingHeader(drillHeader) {
     return "";
 }
 
+// The drill header's heights as absolute Z (seed 002): the surface
+// (referencePlane), the R plane (safe distance) and the bottom of the hole.
+function rPlane() {
+    return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
+}
+
+function holeBottom() {
+    return drill.endDepthIsAbsolute ? drill.endDepth : drill.referencePlane - Math.abs(drill.endDepth);
+}
+
+// Cycle 200 measures from the surface coordinate Q203: Q200 the set-up
+// clearance above it (the seed's safe distance), Q201 the depth below it,
+// Q204 the 2nd set-up clearance (the retract plane) above it.
 function cycleDefinition() {
-    var depth = drill.endDepth - drill.safeDistance;
+    var surface = drill.referencePlane;
+    var depth = holeBottom() - surface;
     var peck = drill.firstDepth > 0 ? drill.firstDepth : -depth;
     return writeBlock(" CYCL DEF 200 DRILLING ~")
-        + "  Q200=" + qFormat.format(drill.safeDistance - drill.endDepth > 0 ? 2 : 0) + " ;SET-UP CLEARANCE ~" + linebreak
+        + "  Q200=" + qFormat.format(rPlane() - surface) + " ;SET-UP CLEARANCE ~" + linebreak
         + "  Q201=" + qFormat.format(depth) + " ;DEPTH ~" + linebreak
         + "  Q206=" + qFormat.format(drill.plungingFeedrate) + " ;FEED RATE FOR PLNGNG ~" + linebreak
         + "  Q202=" + qFormat.format(peck) + " ;PLUNGING DEPTH ~" + linebreak
         + "  Q210=" + qFormat.format(drill.useTopDwelling ? drill.topDwelling : 0) + " ;DWELL TIME AT TOP ~" + linebreak
-        + "  Q203=" + qFormat.format(drill.safeDistance) + " ;SURFACE COORDINATE ~" + linebreak
-        + "  Q204=" + qFormat.format(drill.retractPlane - drill.safeDistance) + " ;2ND SET-UP CLEARANCE ~" + linebreak
+        + "  Q203=" + qFormat.format(surface) + " ;SURFACE COORDINATE ~" + linebreak
+        + "  Q204=" + qFormat.format(drill.retractPlane - surface) + " ;2ND SET-UP CLEARANCE ~" + linebreak
         + "  Q211=" + qFormat.format(drill.useBottomDwelling ? drill.bottomDwelling : 0) + " ;DWELL TIME AT DEPTH" + linebreak;
 }
 

@@ -36,16 +36,7 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     let s = state.clone();
     engine.register_fn("__ffmt", move |id: i64, v: Dynamic| text(format_with(&s.borrow(), id as u16, to_number(&v))));
     let s = state.clone();
-    engine.register_fn("__feedrate", move |m: Dynamic| {
-        let mut st = s.borrow_mut();
-        match st.feed_var {
-            Some(var) if to_number(&m) != 0.0 => {
-                let feed = st.ctx.feed;
-                text(format_var(&mut st, var, feed))
-            }
-            _ => text(""),
-        }
-    });
+    engine.register_fn("__feedrate", move |m: Dynamic| text(feedrate(&mut s.borrow_mut(), &m)));
     let s = state.clone();
     engine.register_fn("__comp", move || {
         num(match s.borrow().ctx.comp {
@@ -58,6 +49,19 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn("__drill_header", move || drill_header(&s.borrow()));
     let s = state.clone();
     engine.register_fn("__turn_drill", move || turn_drill(&s.borrow()));
+}
+
+/// The host's `getFeedrate(movement)`: nothing for a rapid, else the feed
+/// of the move with one decimal, or four when it is per revolution.
+fn feedrate(st: &mut State, movement: &Dynamic) -> String {
+    let var = if st.ctx.feed_per_rev { st.feed_rev_var } else { st.feed_var };
+    match var {
+        Some(var) if to_number(movement) != 0.0 => {
+            let feed = st.ctx.feed;
+            format_var(st, var, feed)
+        }
+        _ => String::new(),
+    }
 }
 
 /// Formats through a compile-time variable; shares the engine's modal memory.
@@ -208,16 +212,7 @@ pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Arr
             Dynamic::from(o)
         }
         "getCompensation" => text(""),
-        "getFeedrate" => {
-            let mut st = state.borrow_mut();
-            match st.feed_var {
-                Some(var) if to_number(&a(0)) != 0.0 => {
-                    let feed = st.ctx.feed;
-                    text(format_var(&mut st, var, feed))
-                }
-                _ => text(""),
-            }
-        }
+        "getFeedrate" => text(feedrate(&mut state.borrow_mut(), &a(0))),
         "createFormat" => {
             let st = state.borrow();
             let mark = match to_string(&[global(&st, "decimalMark"), global(&st, "globals.decimalMark")].into_iter().find(|v| !v.is_unit()).unwrap_or(Dynamic::UNIT)).as_str() {
@@ -290,7 +285,10 @@ fn drill_header(st: &State) -> Dynamic {
     set("name", text(name));
     set("isLonghand", b(longhand));
     set("retractPlane", num(c.retract_plane * f));
-    set("referencePlane", num(c.reference_plane * f));
+    // Seed 002: "the absolute reference plane. If either the safe distance
+    // or end depth is given as relative coordinates, they are relative to
+    // this plane" -- the top of the holes; safeDistance is the R plane.
+    set("referencePlane", num(c.surface.unwrap_or(c.reference_plane) * f));
     set("safeDistanceIsAbsolute", b(true));
     set("safeDistance", num(c.reference_plane * f));
     set("endDepthIsAbsolute", b(true));
