@@ -175,3 +175,49 @@ fn apt_cycles_carry_the_hole_top() {
     let c = cycle.expect("a drill cycle");
     assert_eq!((c.surface, c.reference_plane, c.depth), (Some(-1.0), 2.0, -11.0));
 }
+
+const ONE_MOVE: &str = "Job(units: Mm)
+Tool(number: 1, cut_feed: 1000, plunge_feed: 300, spindle_speed: 8000)
+ToolpathStart(name: \"one\")
+Rapid(x: 1, y: 2, z: 3)
+End
+";
+
+/// `finally` runs however its `try` is left: by a `return`, `break` or
+/// `continue` (also through a `switch`), by a `throw` from the `catch`,
+/// and through nested `try`s.
+#[test]
+fn finally_runs_after_return_break_continue_and_throw() {
+    let js = r#"
+var linebreak = "\n";
+var log = "";
+function f(n) {
+    try { if (n > 0) return "r" + n; log += "t"; } finally { log += "F"; }
+    return "end";
+}
+function g() {
+    var s = "";
+    for (var i = 0; i < 4; i++) {
+        try { if (i == 1) continue; if (i == 3) break; s += i; } finally { s += "f"; }
+    }
+    return s;
+}
+function h() { try { try { return 1; } finally { log += "a"; } } finally { log += "b"; } }
+function k() { try { throw "x"; } catch (e) { throw "y" + e; } finally { log += "c"; } }
+function sw() {
+    var s = "";
+    for (var i = 0; i < 3; i++) {
+        try { switch (i) { case 1: continue; default: s += i; } } finally { s += "."; }
+    }
+    return s;
+}
+function over() { try { return "try"; } finally { return "finally"; } }
+function onOpen() {
+    var r = f(1) + f(0) + g() + h() + sw() + over();
+    try { k(); } catch (e) { r += e; }
+    return r + "|" + log + "\n";
+}
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(js, ONE_MOVE, "r1end0ff2ff10..2.finallyyx|FtFabc\n");
+}
