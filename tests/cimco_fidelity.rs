@@ -221,3 +221,30 @@ function onLinear(x, y, z, m) { return ""; }
 "#;
     check(js, ONE_MOVE, "r1end0ff2ff10..2.finallyyx|FtFabc\n");
 }
+
+/// In native code, text that is not a number reads as NaN in arithmetic
+/// and comparisons, as in JavaScript (BASIC's `Val` reads it as 0, which
+/// VcPost keeps), and NaN joins to text as "NaN".
+#[test]
+fn text_that_is_not_a_number_is_nan_in_native_code() {
+    let js = r#"
+var linebreak = "\n";
+var nothing = null;
+function nan(s, n) {
+    var a = s * 1;
+    var b = n;
+    b -= s;
+    return "" + a + " " + (-s) + " " + b + " " + (s == 0) + " " + (s < 1) + " " + (s >= 1) + " " + (s != 0)
+        + " " + (nothing == 0) + " " + (n == "5") + " " + ("10" < "9") + " " + (n < "10") + " " + ("" == 0) + " " + (" 12 " * 2);
+}
+function onOpen() { return nan("abc", 5) + "\n"; }
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("nan.js");
+    std::fs::write(&path, js).expect("write the post");
+    let post = compile(&path).unwrap_or_else(|e| panic!("{e}"));
+    let f = post.functions.iter().find(|f| f.name == "nan").expect("nan()");
+    assert!(matches!(f.body, postc_ir::Body::Native(_)), "nan() must run natively");
+    check(js, ONE_MOVE, "NaN NaN NaN false false false true false true true true true 24\n");
+}
