@@ -248,3 +248,26 @@ function onLinear(x, y, z, m) { return ""; }
     assert!(matches!(f.body, postc_ir::Body::Native(_)), "nan() must run natively");
     check(js, ONE_MOVE, "NaN NaN NaN false false false true false true true true true 24\n");
 }
+
+/// Number-to-text in CIMCO formats is the JavaScript engine's: the binary
+/// double is rounded (as `toFixed` does), so 1.005 at two decimals prints
+/// 1.00 (the double is 1.00499999999999989...), where rounding the decimal
+/// value half away from zero would print 1.01. Exact ties (0.125) round
+/// away from zero.
+#[test]
+fn formats_round_the_binary_double_as_javascript_does() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 2, forceDecimal: true});
+var xOut = createVariable({prefix: "X", force: true}, f);
+function line() { return f.format(1.005) + " " + f.format(2.675) + " " + f.format(0.125) + " " + xOut.format(-1.005) + " " + (1.005).toFixed(2); }
+function dynamic() {
+    var o = {};
+    var g = createFormat({decimals: Number("2"), forceDecimal: true});
+    return g.format(1.005) + " " + g.format(2.675) + " " + g.format(0.125);
+}
+function onOpen() { return line() + "|" + dynamic() + "\n"; }
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(js, ONE_MOVE, "1.00 2.67 0.13 X-1.00 1.00|1.00 2.67 0.13\n");
+}

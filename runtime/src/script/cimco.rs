@@ -189,6 +189,7 @@ pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
         decimal_mark: mark,
         multiplier: if scale.is_finite() { scale } else { 1.0 },
         prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
+        rounding: postc_ir::Rounding::Binary,
     }
 }
 

@@ -86,6 +86,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
         decimal_mark: setup::decimal_mark(&model),
+        rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
     post.variables.push(Variable {
@@ -104,6 +105,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
         decimal_mark: setup::decimal_mark(&model),
+        rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
     post.variables.push(Variable {
