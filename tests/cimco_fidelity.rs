@@ -30,16 +30,6 @@ fn check(js: &str, ron: &str, expected: &str) {
     assert_eq!(String::from_utf8_lossy(&theirs), expected, "Node.js");
 }
 
-fn run_js(js: &str, ron: &str) -> String {
-    let dir = tempfile::tempdir().expect("a temporary folder");
-    let post_path = dir.path().join("post.js");
-    let toolpath = dir.path().join("job.ron");
-    std::fs::write(&post_path, js).expect("write the post");
-    std::fs::write(&toolpath, ron).expect("write the toolpath");
-    let post = compile(&post_path).unwrap_or_else(|e| panic!("{e}"));
-    String::from_utf8_lossy(&post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{e}"))).into_owned()
-}
-
 const TWO_TOOLPATHS: &str = "Job(units: Mm)
 Tool(number: 1, cut_feed: 1000, plunge_feed: 300, spindle_speed: 8000)
 ToolpathStart(name: \"one\")
