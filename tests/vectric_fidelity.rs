@@ -143,7 +143,7 @@ fn a_jet_tool_without_power_prints_power_zero_until_one_is_set() {
         vec![
             job(),
             Event::Tool(laser),
-            Event::ToolpathStart(ToolpathStart { name: "Engrave".into(), notes: String::new() }),
+            Event::ToolpathStart(ToolpathStart { name: "Engrave".into(), notes: String::new(), ..ToolpathStart::default() }),
             Event::Rapid(Move { x: 0.0, y: 0.0, z: 0.0, ..Move::default() }),
             Event::JetOn,
             feed(10.0),
@@ -171,7 +171,7 @@ fn power_is_forgotten_when_a_spindle_tool_is_loaded() {
     };
     let laser = Tool { number: 3, jet: true, power: Some(80.0), cut_feed: 1000.0, ..Tool::default() };
     let mill = Tool { number: 1, spindle_speed: 18000.0, cut_feed: 1000.0, plunge_feed: 300.0, ..Tool::default() };
-    let start = |name: &str| Event::ToolpathStart(ToolpathStart { name: name.into(), notes: String::new() });
+    let start = |name: &str| Event::ToolpathStart(ToolpathStart { name: name.into(), notes: String::new(), ..ToolpathStart::default() });
     let program = post_events(
         &compile(&path),
         vec![

@@ -12,10 +12,11 @@
 //! - a handler for an event Vectric has no section for (coolant, drill
 //!   cycles, comments, ...) or a post dispatched by APT words is `CV001`;
 //! - a number format Vectric's `W.D` formats cannot write (trimmed zeros,
-//!   width of the integer digits, no leading zero, a format prefix) is
-//!   `CV003`;
+//!   width of the integer digits, no leading zero, a format prefix,
+//!   rounding of the binary double) is `CV003`;
 //! - an output option with no Vectric statement (a lathe, a chord
-//!   tolerance, a step budget other than the defaults) is `CV004`;
+//!   tolerance, a step budget other than the defaults, modal memory kept
+//!   across toolpaths) is `CV004`;
 //! - a variable Vectric cannot declare (assigned by code, a prefix holding
 //!   `|`, `]` or a line break, two variables printing one quantity in one
 //!   post) is `CV005`.
@@ -145,6 +146,7 @@ impl Printer<'_> {
         no_statement("a lathe coordinate mapping", o.lathe);
         no_statement("a chord tolerance for linearized arcs", o.arc_tolerance != d.arc_tolerance);
         no_statement("exact arc words", o.exact_arcs);
+        no_statement("modal memory kept across toolpaths", !o.forget_modal_at_toolpath_start);
         no_statement("a step budget", o.step_budget != d.step_budget);
         if let Some(w) = &o.rotary_wrap
             && w.letter.is_none()
@@ -393,6 +395,9 @@ impl Printer<'_> {
         }
         if f.decimals > 15 {
             why.push("it has more than 15 decimals");
+        }
+        if f.rounding == postc_ir::Rounding::Binary {
+            why.push("it rounds the binary double (as JavaScript does), and Vectric rounds the decimal value");
         }
         if !why.is_empty() {
             self.refuse(

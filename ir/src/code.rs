@@ -63,6 +63,9 @@ pub enum Stmt {
     /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
     /// does with a value: each line that is not empty becomes a block.
     Blocks(u16),
+    /// Make a variable forget what it printed last, so that the next value
+    /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
+    Forget(VarId),
 }
 
 /// One piece of an output block.
@@ -139,6 +142,14 @@ pub enum UnaryOp {
 
 /// Binary operators. `Add` adds numbers and joins text; `Concat` always
 /// joins as text (BASIC `&`).
+///
+/// Number conversions: the arithmetic and comparison operators read text
+/// that is not a number as 0, and null as 0 (BASIC's `Val`, which VcPost
+/// needs). JavaScript reads such text as NaN: a dialect with JavaScript's
+/// meaning (CIMCO) converts operands explicitly with [`UnaryOp::Plus`]
+/// (JavaScript `Number()`: NaN for text that is not a number and for
+/// null) before `Sub`, `Mul`, `Div`, `Rem` and [`UnaryOp::Neg`], and
+/// compares with the `Js*` operators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BinaryOp {
     Add,
@@ -169,6 +180,17 @@ pub enum BinaryOp {
     /// Arithmetic (`>>`) and logical (`>>>`) right shift.
     Shr,
     UShr,
+    /// JavaScript's loose `==` and `!=`: text with text compares as text;
+    /// null equals only null; otherwise both sides are read as JavaScript
+    /// numbers (so `"abc" == 0` is false, NaN equals nothing).
+    JsEq,
+    JsNe,
+    /// JavaScript's `<`, `<=`, `>`, `>=`: text with text compares as text,
+    /// otherwise as JavaScript numbers (false when either is NaN).
+    JsLt,
+    JsLe,
+    JsGt,
+    JsGe,
 }
 
 /// Built-in functions, shared by the dialects that lower to native code.

@@ -3,7 +3,8 @@
 //!
 //! A toolpath is a stream of [`Event`]s. Positions are absolute, in the units
 //! the [`Job`] names (millimetres unless it says otherwise); feeds are in
-//! those units per minute, spindle speeds in revolutions per minute, dwell
+//! those units per minute (per spindle revolution in a toolpath whose
+//! [`ToolpathStart::feed_per_rev`] is set), spindle speeds in revolutions per minute, dwell
 //! times in seconds. The same serde types are read from RON (one event per
 //! line) and from JSON Lines; `docs/toolpath-format.md` documents every field
 //! with a complete example.
@@ -220,6 +221,10 @@ pub struct Tool {
 pub struct ToolpathStart {
     pub name: String,
     pub notes: String,
+    /// The toolpath's feeds are per spindle revolution (mm/rev or in/rev,
+    /// G95/G99 on a lathe) instead of per minute.
+    #[serde(skip_serializing_if = "is_default")]
+    pub feed_per_rev: bool,
 }
 
 /// A rapid move to an absolute position.
@@ -424,6 +429,11 @@ pub struct DrillCycle {
     pub retract_plane: f64,
     /// Plane where feeding starts (R plane).
     pub reference_plane: f64,
+    /// Top of the holes: the material surface the cycle starts from (APT
+    /// CYCLE's clearance is measured from it; Heidenhain Q203, Siemens RFP,
+    /// CIMCO `referencePlane`). When absent the R plane stands for it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub surface: Option<f64>,
     /// Bottom of the hole.
     pub depth: f64,
     /// Feed rate; the tool's plunge feed when absent.

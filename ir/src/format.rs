@@ -8,7 +8,9 @@
 //! 1. multiply by `multiplier` (unit conversion has happened before);
 //! 2. round half away from zero to `decimals` places, on the decimal value
 //!    of the number (2.675 rounds to 2.68 even though the binary double is a
-//!    hair below);
+//!    hair below), or on the binary double itself under
+//!    [`Rounding::Binary`] (2.675 rounds to 2.67, as JavaScript's
+//!    `toFixed` does: CIMCO formats);
 //! 3. drop trailing fraction zeros when `trim_zeros`; write the decimal mark
 //!    as `point` says;
 //! 4. write the sign (`-` for negatives, `+` too under `SignStyle::Always`;
@@ -47,6 +49,30 @@ pub struct NumberFormat {
     pub multiplier: f64,
     /// Text written before the number (after the variable's own prefix).
     pub prefix: String,
+    /// Which value is rounded: the decimal the double's shortest form names
+    /// (Vectric, VcPost) or the binary double (CIMCO, as a JavaScript
+    /// engine rounds). Written out (RON) only when it is `Binary`.
+    #[serde(skip_serializing_if = "Rounding::is_decimal")]
+    pub rounding: Rounding,
+}
+
+/// Which value a format rounds to its decimals, half away from zero.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Rounding {
+    /// The decimal value the double's shortest round-trip form names:
+    /// 1.005 (stored as 1.00499999999999989...) prints 1.01 at two decimals.
+    #[default]
+    Decimal,
+    /// The exact binary value of the double, as JavaScript's
+    /// `Number.prototype.toFixed` rounds: 1.005 prints 1.00; an exact tie
+    /// (0.125 at two decimals) rounds away from zero (0.13).
+    Binary,
+}
+
+impl Rounding {
+    fn is_decimal(&self) -> bool {
+        *self == Rounding::Decimal
+    }
 }
 
 impl Default for NumberFormat {
@@ -64,6 +90,7 @@ impl Default for NumberFormat {
             decimal_mark: '.',
             multiplier: 1.0,
             prefix: String::new(),
+            rounding: Rounding::Decimal,
         }
     }
 }

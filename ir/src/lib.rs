@@ -108,7 +108,7 @@ pub use calls::{CallSource, CallValue, MissingSub, SubCall};
 pub use code::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
 pub use diagnostic::{Diagnostic, FileId, Label, Severity, SourceMap, Span};
 pub use event::{Event, EventSource};
-pub use format::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
+pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 pub use post::{
     Body, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo, Script,
     ScriptLanguage, Section, ValueSource, Variable,

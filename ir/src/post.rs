@@ -126,6 +126,20 @@ pub struct OutputOptions {
     /// the runtime's XY plane (x, y, z become z, x, y) before dispatch, so
     /// that turning arcs reach the arc sections instead of being linearized.
     pub lathe: bool,
+    /// Every output variable forgets what it printed when a toolpath
+    /// starts, so the first block of each toolpath prints every word: the
+    /// Vectric rule (docs/vectric.md, decision 4). A CIMCO post keeps its
+    /// modal memory for the whole program, as seed 002 says a variable
+    /// without `force` "will only be written if it has changed since the
+    /// last time it was used"; it forgets through [`crate::Stmt::Forget`]
+    /// (`xOutput.reset()`). Each frontend sets this explicitly. Written
+    /// out (RON) only when it is `false`.
+    #[serde(skip_serializing_if = "is_true")]
+    pub forget_modal_at_toolpath_start: bool,
+}
+
+fn is_true(b: &bool) -> bool {
+    *b
 }
 
 impl Default for OutputOptions {
@@ -144,6 +158,7 @@ impl Default for OutputOptions {
             exact_arcs: false,
             step_budget: 10_000_000,
             lathe: false,
+            forget_modal_at_toolpath_start: true,
         }
     }
 }

@@ -81,6 +81,9 @@ quantities! {
     Angle = "Angle", Plain;
     /// Current feed rate.
     Feed = "F", Feed;
+    /// 1 while the toolpath's feeds are per spindle revolution
+    /// ([`crate::event::ToolpathStart::feed_per_rev`]), else 0.
+    FeedPerRev = "FEED_PER_REV", Plain;
     /// The tool's cut feed rate.
     CutFeed = "FC", Feed;
     /// The tool's plunge feed rate.

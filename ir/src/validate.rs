@@ -5,7 +5,7 @@
 //! the runtime or a backend sees it (`postc_frontends::compile_post_bytes`),
 //! so that they can index without checking:
 //!
-//! - every id is in range: variables' formats, `Var`/`Previous`/
+//! - every id is in range: variables' formats, `Var`/`Previous`/`Forget`/
 //!   `FormatVar` variables, `Format` formats, `Call` functions, `Global`
 //!   globals, `Script` and script bodies' scripts;
 //! - a native function has at least as many slots as parameters;
@@ -158,7 +158,7 @@ impl Visit for Ids<'_> {
     fn visit_stmt(&mut self, stmt: &Stmt) {
         match stmt {
             Stmt::Script(id) => self.script(*id),
-            Stmt::Assign(Place::Var(id), _) => self.var(*id),
+            Stmt::Assign(Place::Var(id), _) | Stmt::Forget(id) => self.var(*id),
             Stmt::Assign(Place::Global(g), _) => self.check("global", usize::from(*g), self.post.globals.len()),
             _ => {}
         }

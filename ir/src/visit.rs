@@ -65,7 +65,8 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
         | Stmt::Mark(_)
         | Stmt::MoveBack { .. }
         | Stmt::Truncate(_)
-        | Stmt::Blocks(_) => {}
+        | Stmt::Blocks(_)
+        | Stmt::Forget(_) => {}
     }
 }
 
@@ -160,7 +161,8 @@ pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
         | Stmt::Mark(_)
         | Stmt::MoveBack { .. }
         | Stmt::Truncate(_)
-        | Stmt::Blocks(_) => {}
+        | Stmt::Blocks(_)
+        | Stmt::Forget(_) => {}
     }
 }
 

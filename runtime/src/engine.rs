@@ -157,6 +157,15 @@ impl<'p> Engine<'p> {
         }
     }
 
+    /// Forgets what one variable printed last (`xOutput.reset()`): its next
+    /// value prints whatever it is.
+    pub fn forget_var(&mut self, var: u16) {
+        if let Some(v) = self.vars.get_mut(var as usize) {
+            v.has_last = false;
+            v.key = None;
+        }
+    }
+
     /// Runs a prepared handler body: the hot path.
     fn run_prepared(&mut self, body: &[Prepared<'p>]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {

@@ -225,6 +225,7 @@ impl Machine {
             Quantity::Radius => arc.radius,
             Quantity::Angle => arc.sweep,
             Quantity::Feed => given(self.feed),
+            Quantity::FeedPerRev => f64::from(u8::from(self.toolpath.feed_per_rev)),
             Quantity::CutFeed => given(self.tool.cut_feed),
             Quantity::PlungeFeed => given(self.tool.plunge_feed),
             Quantity::InverseTimeFeed => self.inverse_time(),

@@ -14,10 +14,16 @@
 //! digits of the double and rounds them as decimal text.
 //! Either way the digits land in a stack buffer and are appended to the
 //! caller's output; nothing is allocated once the output has capacity.
+//!
+//! Under [`Rounding::Binary`] (CIMCO) the rounding is on the exact binary
+//! value instead, as JavaScript's `toFixed` does: 2.675 prints 2.67. The
+//! fast path is the same; near a tie it compares the double with the tie
+//! point exactly in integers, and the slow path rounds the exact decimal
+//! expansion of the double.
 
 use std::io::Write as _;
 
-use postc_ir::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
+use postc_ir::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 
 /// Powers of ten that are exact doubles.
 const POW10: [f64; 23] = [
@@ -33,6 +39,10 @@ pub const MAX_DECIMALS: u8 = 15;
 
 /// Room for every digit of a finite double printed without exponent.
 const DIGITS: usize = 400;
+
+/// Room for the fraction digits of an exact binary expansion (half of it
+/// is asked for, past the format's decimals).
+const EXACT_FRACTION: usize = 160;
 
 /// A [`NumberFormat`] ready to print.
 #[derive(Clone, Debug)]
@@ -53,6 +63,8 @@ pub struct NumberWriter {
     prefix: Vec<u8>,
     /// Nothing to pad or trim: the fast right-to-left writer applies.
     plain: bool,
+    /// Round the binary double, not its shortest decimal form.
+    binary: bool,
 }
 
 impl NumberWriter {
@@ -76,6 +88,7 @@ impl NumberWriter {
             multiplier: if format.multiplier.is_finite() { format.multiplier } else { 1.0 },
             prefix: format.prefix.as_bytes().to_vec(),
             plain: format.width <= 1 && !format.trim_zeros,
+            binary: format.rounding == Rounding::Binary,
         }
     }
 
@@ -96,7 +109,7 @@ impl NumberWriter {
                 digits.fill_scaled_integer(r.m, self.decimals);
                 r.negative
             }
-            None => digits.round(value * self.multiplier, self.decimals),
+            None => digits.round(value * self.multiplier, self.decimals, self.binary),
         };
         let mut v = 0.0;
         for &d in digits.integer() {
@@ -133,6 +146,8 @@ impl NumberWriter {
         let margin = 8.0 * f64::EPSILON * scaled.max(1.0);
         let up = if (frac - 0.5).abs() > margin {
             frac > 0.5
+        } else if self.binary {
+            at_or_above_binary_tie(magnitude, floor as u64, self.scale as u64)
         } else {
             // Near a tie. The tie point t = (2k+1) / (2·10^d) is a decimal
             // with d+1 digits; dividing two exact integers gives the double
@@ -227,7 +242,7 @@ impl NumberWriter {
 
     fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
         let mut digits = Digits::new();
-        let negative = digits.round(value * self.multiplier, self.decimals);
+        let negative = digits.round(value * self.multiplier, self.decimals, self.binary);
         self.emit(&[], negative, digits.integer(), digits.fraction(), out);
     }
 
@@ -431,12 +446,12 @@ impl Digits {
     }
 
     /// Rounds `value` half away from zero to `decimals` places on its
-    /// shortest decimal digits; returns whether it is negative. Non-finite
-    /// values print as zero.
-    fn round(&mut self, value: f64, decimals: usize) -> bool {
+    /// shortest decimal digits, or on its exact binary value when `binary`;
+    /// returns whether it is negative. Non-finite values print as zero.
+    fn round(&mut self, value: f64, decimals: usize, binary: bool) -> bool {
         let value = if value.is_finite() { value } else { 0.0 };
         let negative = value.is_sign_negative() && value != 0.0;
-        self.fill_shortest_decimal(value.abs(), decimals);
+        self.fill_decimal(value.abs(), decimals, binary);
         negative
     }
 
@@ -458,14 +473,23 @@ impl Digits {
         self.int_len = total - decimals;
     }
 
-    /// Digits from the shortest round-trip decimal form of `magnitude`,
-    /// rounded as decimal text.
-    fn fill_shortest_decimal(&mut self, magnitude: f64, decimals: usize) {
-        let mut text = [0u8; DIGITS];
+    /// Digits from the shortest round-trip decimal form of `magnitude`
+    /// (or, when `binary`, its exact decimal expansion), rounded as decimal
+    /// text.
+    fn fill_decimal(&mut self, magnitude: f64, decimals: usize, binary: bool) {
+        let mut text = [0u8; DIGITS + EXACT_FRACTION];
         let len = {
             let mut cursor = std::io::Cursor::new(&mut text[..]);
-            // `{}` on f64 writes the shortest digits that round-trip, with no exponent.
-            let _ = write!(cursor, "{magnitude}");
+            if binary {
+                // The slow path has magnitude · 10^decimals >= 1e14 (or a
+                // zero), so the magnitude is at least 0.1 and its ulp at
+                // least 2^-57: the exact expansion ends within 57 fraction
+                // digits, and this prints it whole, unrounded.
+                let _ = write!(cursor, "{magnitude:.prec$}", prec = decimals + EXACT_FRACTION / 2);
+            } else {
+                // `{}` on f64 writes the shortest digits that round-trip, with no exponent.
+                let _ = write!(cursor, "{magnitude}");
+            }
             cursor.position() as usize
         };
         let text = &text[..len];
@@ -502,6 +526,26 @@ impl Digits {
         self.buf.copy_within(start..end, 0);
         self.len = end - start;
         self.int_len = self.len - decimals;
+    }
+}
+
+/// Whether `magnitude` (finite, not negative) is at or above the tie point
+/// (2k+1) / (2·10^d) of rounding to d decimals, compared exactly on the
+/// binary value (`pow10` is 10^d, at most 10^15).
+fn at_or_above_binary_tie(magnitude: f64, k: u64, pow10: u64) -> bool {
+    let bits = magnitude.to_bits();
+    let exp_bits = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (mant, exp) = if exp_bits == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp_bits - 1075) };
+    // magnitude = mant · 2^exp: compare 2 · mant · 10^d · 2^exp with 2k+1.
+    let lhs = u128::from(mant) * u128::from(pow10) * 2;
+    let odd = u128::from(2 * k + 1);
+    if exp >= 0 {
+        // The scaled value is below 1e14 here, so this does not overflow.
+        (lhs << exp as u32) >= odd
+    } else {
+        let s = exp.unsigned_abs();
+        s < 128 && odd.leading_zeros() > s && lhs >= odd << s
     }
 }
 

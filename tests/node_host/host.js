@@ -4,8 +4,10 @@
 //
 // Call order: the post's top level, onInit(); at the first toolpath
 // onOpen(false) and onToolChange(...) for the first tool; later toolpaths
-// with another tool onToolChange(...); every toolpath start makes the
-// output variables forget what they printed. Moves call onLinear and
+// with another tool onToolChange(...). Output variables keep what they
+// printed for the whole program (seed 002: a variable without force "will
+// only be written if it has changed since the last time it was used");
+// only their reset() makes them forget. Moves call onLinear and
 // onCircular (split under useRadius so that no part turns 180 degrees or
 // more); cutter compensation onCompensation(0|1|2); milling drill cycles
 // onDrillingHeader(drillHeader), onDrillingPoint(x, y), onDrillingFooter();
@@ -23,11 +25,10 @@ var RAPID = 0, CUTTING = 1, PLUNGE = 2;
 
 function Host(source, fileName) {
     var host = this;
-    this.epoch = 0;
     this.out = [];
     this.bytes = 0;
     this.keepOutput = true;
-    var createVariable = fmt.makeCreateVariable(this);
+    var createVariable = fmt.createVariable;
     var sandbox = {
         MOVEMENT_RAPID: RAPID, MOVEMENT_CUTTING: CUTTING, MOVEMENT_FEED: CUTTING, MOVEMENT_PLUNGE: PLUNGE, MOVEMENT_RETRACT: 3,
         COMPENSATION_OFF: 0, COMPENSATION_LEFT: 1, COMPENSATION_RIGHT: 2,
@@ -41,7 +42,7 @@ function Host(source, fileName) {
             if (movement == RAPID) {
                 return "";
             }
-            return host.feedVariable.format(host.feed);
+            return (host.feedPerRev ? host.feedRevVariable : host.feedVariable).format(host.feed);
         },
     };
     // The post runs as an ordinary script in this context, so that its
@@ -51,7 +52,11 @@ function Host(source, fileName) {
         globalThis[k] = sandbox[k];
     });
     vm.runInThisContext(source, { filename: fileName });
+    // getFeedrate: one decimal per minute, four per revolution (0.15
+    // mm/rev prints F0.15).
     this.feedVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 1 }, this.setting("decimalMark")));
+    this.feedRevVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 4 }, this.setting("decimalMark")));
+    this.feedPerRev = false;
     var info = this.ctx.PostInfo;
     var onLinear = this.ctx.onLinear;
     if (info && info.type !== undefined) {
@@ -148,7 +153,6 @@ Host.prototype.beginToolpath = function () {
     }
     this.toolChanged = false;
     this.lastTool = this.tool.number;
-    this.epoch++;
 };
 
 Host.prototype.ensureStarted = function () {
@@ -259,7 +263,9 @@ Host.prototype.millHeader = function () {
     var dwell = c.dwell != null && c.dwell > 0 ? c.dwell : null;
     return {
         name: n.name, isLonghand: n.longhand,
-        retractPlane: c.retract_plane || 0, referencePlane: c.reference_plane || 0,
+        // referencePlane is the top of the holes (seed 002: safe distance
+        // and end depth are relative to it); safeDistance the R plane.
+        retractPlane: c.retract_plane || 0, referencePlane: c.surface != null ? c.surface : c.reference_plane || 0,
         safeDistanceIsAbsolute: true, safeDistance: c.reference_plane || 0,
         endDepthIsAbsolute: true, endDepth: c.depth || 0,
         firstDepth: c.peck != null && c.peck > 0 ? c.peck : 0,
@@ -314,6 +320,7 @@ Host.prototype.event = function (e) {
             this.feed = this.tool.cut_feed;
             break;
         case "ToolpathStart":
+            this.feedPerRev = !!d.feed_per_rev;
             this.beginToolpath();
             break;
         case "ToolpathEnd":

@@ -103,6 +103,12 @@ function onOpen(isClipboard) {
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
     toolNumber = tool;
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return comment("T" + tool + " " + name + " D" + xyzFormat.format(diameter))
         + writeBlock(" T" + toolFormat.format(tool) + " M6")
         + writeBlock(" S" + rpmFormat.format(spindleSpeed) + " M3");
@@ -193,8 +199,6 @@ function onDrillingPoint(x, y) {
         block += " P" + Math.round(drill.bottomDwelling * 1000);
     }
     block += " F" + feedFormat.format(drill.plungingFeedrate);
-    // The canned cycle leaves the tool at the R plane: Z must print again.
-    zOutput.format(rPlane());
     return writeBlock(block);
 }
 
@@ -228,6 +232,10 @@ function onDrillingFooter() {
     var out = "";
     if (cycleStarted && !drill.isLonghand) {
         out = writeBlock(" G80");
+        // G98 leaves the tool at the level it started the cycle from, and
+        // G80 cancels the motion mode: Z and G print again.
+        gMotion.reset();
+        zOutput.reset();
     }
     cycleStarted = false;
     drill = null;

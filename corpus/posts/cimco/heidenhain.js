@@ -71,6 +71,11 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock(" ; " + name.toUpperCase())
         + writeBlock(" TOOL CALL " + tool + " Z S" + Math.round(spindleSpeed))
         + writeBlock(" L Z+100.000 R0 FMAX M3");
@@ -143,17 +148,31 @@ function onDrillingHeader(drillHeader) {
     return "";
 }
 
+// The drill header's heights as absolute Z (seed 002): the surface
+// (referencePlane), the R plane (safe distance) and the bottom of the hole.
+function rPlane() {
+    return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
+}
+
+function holeBottom() {
+    return drill.endDepthIsAbsolute ? drill.endDepth : drill.referencePlane - Math.abs(drill.endDepth);
+}
+
+// Cycle 200 measures from the surface coordinate Q203: Q200 the set-up
+// clearance above it (the seed's safe distance), Q201 the depth below it,
+// Q204 the 2nd set-up clearance (the retract plane) above it.
 function cycleDefinition() {
-    var depth = drill.endDepth - drill.safeDistance;
+    var surface = drill.referencePlane;
+    var depth = holeBottom() - surface;
     var peck = drill.firstDepth > 0 ? drill.firstDepth : -depth;
     return writeBlock(" CYCL DEF 200 DRILLING ~")
-        + "  Q200=" + qFormat.format(drill.safeDistance - drill.endDepth > 0 ? 2 : 0) + " ;SET-UP CLEARANCE ~" + linebreak
+        + "  Q200=" + qFormat.format(rPlane() - surface) + " ;SET-UP CLEARANCE ~" + linebreak
         + "  Q201=" + qFormat.format(depth) + " ;DEPTH ~" + linebreak
         + "  Q206=" + qFormat.format(drill.plungingFeedrate) + " ;FEED RATE FOR PLNGNG ~" + linebreak
         + "  Q202=" + qFormat.format(peck) + " ;PLUNGING DEPTH ~" + linebreak
         + "  Q210=" + qFormat.format(drill.useTopDwelling ? drill.topDwelling : 0) + " ;DWELL TIME AT TOP ~" + linebreak
-        + "  Q203=" + qFormat.format(drill.safeDistance) + " ;SURFACE COORDINATE ~" + linebreak
-        + "  Q204=" + qFormat.format(drill.retractPlane - drill.safeDistance) + " ;2ND SET-UP CLEARANCE ~" + linebreak
+        + "  Q203=" + qFormat.format(surface) + " ;SURFACE COORDINATE ~" + linebreak
+        + "  Q204=" + qFormat.format(drill.retractPlane - surface) + " ;2ND SET-UP CLEARANCE ~" + linebreak
         + "  Q211=" + qFormat.format(drill.useBottomDwelling ? drill.bottomDwelling : 0) + " ;DWELL TIME AT DEPTH" + linebreak;
 }
 
@@ -165,6 +184,8 @@ function onDrillingPoint(x, y) {
     if (!cycleDefined) {
         cycleDefined = true;
         out = cycleDefinition();
+        // The cycle starts from the clearance height: always say it.
+        zOutput.reset();
         out += writeBlock(" L" + zOutput.format(drill.retractPlane) + " R0 FMAX");
     }
     return out + writeBlock(" L" + xOutput.format(x) + yOutput.format(y) + " R0 FMAX M99");

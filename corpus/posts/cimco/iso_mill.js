@@ -63,6 +63,12 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock("T" + tool + "M06") + writeBlock("S" + Math.round(spindleSpeed) + "M03");
 }
 

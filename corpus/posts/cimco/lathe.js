@@ -82,6 +82,11 @@ function onOpen(isClipboard) {
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
     var t = toolFormat.format(tool);
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    zOutput.reset();
     return writeBlock(" T" + t + t + " (" + name.toUpperCase() + ")") + writeBlock(" G97 S" + spindleSpeed + " M3");
 }
 
@@ -137,6 +142,8 @@ function onDrilling(drillHeader) {
         var p = d.useLowerDwell ? " P" + Math.round(d.lowerDwell * 1000) : "";
         out += writeBlock(" G83" + zOutput.format(d.endDepth) + " R" + zFormat.format(d.safeDistance - d.startDepth) + q + p + feed);
         out += writeBlock(" G80");
+        // G80 cancels the motion mode: G prints again.
+        gMotion.reset();
         zOutput.format(d.safeDistance);
     }
     return out + writeBlock(gMotion.format(0) + zOutput.format(d.retractDistance));

@@ -59,6 +59,12 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock(" T" + tool + " M6") + writeBlock(" S" + spindleSpeed + " M3");
 }
 
@@ -104,7 +110,10 @@ function onDrillingPoint(x, y) {
 }
 
 function onDrillingFooter() {
-    zOutput.format(drill.retractPlane);
+    // G81 leaves the tool at the level it started the cycle from, and G80
+    // cancels the motion mode: Z and G print again.
+    gMotion.reset();
+    zOutput.reset();
     drill = null;
     return writeBlock(" G80");
 }

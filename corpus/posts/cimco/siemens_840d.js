@@ -60,6 +60,12 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
     return writeBlock(" ; " + name) + writeBlock(" T" + tool + " D1") + writeBlock(" M6")
         + writeBlock(" S" + Math.round(spindleSpeed) + " M3");
 }
@@ -117,11 +123,16 @@ function onDrillingHeader(drillHeader) {
 }
 
 // CYCLE81(RTP, RFP, SDIS, DP, DPR) and CYCLE83(RTP, RFP, SDIS, DP, DPR,
-// FDEP, FDPR, DAM, DTB, DTS, FRF, VARI): the reference plane is the
-// R plane, and the safety clearance is zero.
+// FDEP, FDPR, DAM, DTB, DTS, FRF, VARI): the reference plane RFP is the
+// top of the hole (the seed's referencePlane) and the safety clearance SDIS
+// the R plane above it (the seed's safe distance).
+function rPlane() {
+    return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
+}
+
 function cycleCall() {
     var p = function (v) { return paramFormat.format(v); };
-    var common = p(drill.retractPlane) + ", " + p(drill.referencePlane) + ", 0, " + p(drill.endDepth) + ", ";
+    var common = p(drill.retractPlane) + ", " + p(drill.referencePlane) + ", " + p(rPlane() - drill.referencePlane) + ", " + p(drill.endDepth) + ", ";
     if (drill.name == "Peck drilling (G83)") {
         var first = drill.referencePlane - drill.firstDepth;
         var dwell = drill.useBottomDwelling ? p(drill.bottomDwelling) : "0";
@@ -147,13 +158,13 @@ function onDrillingPoint(x, y) {
 
 function longhand(x, y) {
     var out = writeBlock(gMotion.format(0) + xOutput.format(x) + yOutput.format(y));
-    out += writeBlock(zOutput.format(drill.referencePlane));
-    var depth = drill.referencePlane;
+    out += writeBlock(zOutput.format(rPlane()));
+    var depth = rPlane();
     var step = drill.firstDepth > 0 ? drill.firstDepth : depth - drill.endDepth;
     for (var n = 0; depth > drill.endDepth && n < 100; n++) {
         depth = Math.max(depth - step, drill.endDepth);
         out += writeBlock(gMotion.format(1) + zOutput.format(depth) + fOutput.format(drill.plungingFeedrate));
-        out += writeBlock(gMotion.format(0) + zOutput.format(drill.referencePlane));
+        out += writeBlock(gMotion.format(0) + zOutput.format(rPlane()));
     }
     if (drill.useBottomDwelling) {
         out += writeBlock(" G4 F" + paramFormat.format(drill.bottomDwelling));
@@ -162,7 +173,13 @@ function longhand(x, y) {
 }
 
 function onDrillingFooter() {
-    var out = cycleOn ? writeBlock(" MCALL") : "";
+    var out = "";
+    if (cycleOn) {
+        out = writeBlock(" MCALL");
+        // The cycle's own moves leave G and Z to the controller: print them again.
+        gMotion.reset();
+        zOutput.reset();
+    }
     cycleOn = false;
     drill = null;
     return out;

@@ -177,6 +177,7 @@ pub(crate) fn drill_cycle(spec: &CycleSpec, z: f64, clearance_z: Option<f64>, fe
         name: spec.name.clone(),
         retract_plane: retract,
         reference_plane: reference,
+        surface: Some(z),
         depth: z - spec.depth.unwrap_or(0.0).abs(),
         feed,
         peck: spec.peck.filter(|&p| p > 0.0),

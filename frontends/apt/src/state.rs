@@ -275,7 +275,7 @@ impl Core {
             }
         }
         self.toolpath = Toolpath::Explicit;
-        self.emit(Event::ToolpathStart(ToolpathStart { name, notes: String::new() }), span);
+        self.emit(Event::ToolpathStart(ToolpathStart { name, notes: String::new(), ..ToolpathStart::default() }), span);
     }
 
     pub fn end_toolpath(&mut self, span: Span, diags: &mut Vec<Diagnostic>) {

@@ -81,6 +81,7 @@ impl FormatSpec {
             decimal_mark: self.separator,
             multiplier,
             prefix: String::new(),
+            rounding: postc_ir::Rounding::Decimal,
         }
     }
 }

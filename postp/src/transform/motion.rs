@@ -145,6 +145,9 @@ impl<S: EventSource> Transform<S> {
         let dz = self.trans[2];
         c.retract_plane += dz;
         c.reference_plane += dz;
+        if let Some(s) = &mut c.surface {
+            *s += dz;
+        }
         c.depth += dz;
         self.push(Event::DrillCycle(c));
     }

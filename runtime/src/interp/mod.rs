@@ -135,6 +135,7 @@ impl Engine<'_> {
                     let at = self.mark(*k, frame);
                     self.blocks_since(at);
                 }
+                Stmt::Forget(v) => self.forget_var(*v),
                 Stmt::Script(_) => self.warn_once(
                     Diagnostic::warning("RT003", "this post calls Lua scripts, which postc does not run; those lines are skipped")
                         .note("the rest of the post runs as written"),

@@ -58,6 +58,32 @@ pub(super) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
             }))
         }
         UShr => Value::Num(f64::from(js::to_uint32(js_number(a)) >> (js::to_uint32(js_number(b)) & 31))),
+        JsEq => Value::Bool(js_loose_eq(a, b)),
+        JsNe => Value::Bool(!js_loose_eq(a, b)),
+        JsLt | JsLe | JsGt | JsGe => {
+            let ord = match (a, b) {
+                (Value::Text(x), Value::Text(y)) => x.partial_cmp(y),
+                _ => js_number(a).partial_cmp(&js_number(b)),
+            };
+            use std::cmp::Ordering::{Equal, Greater, Less};
+            Value::Bool(match op {
+                JsLt => ord == Some(Less),
+                JsLe => matches!(ord, Some(Less | Equal)),
+                JsGt => ord == Some(Greater),
+                _ => matches!(ord, Some(Greater | Equal)),
+            })
+        }
+    }
+}
+
+/// JavaScript `==` over the interpreter's values (null stands for both
+/// `null` and `undefined`).
+fn js_loose_eq(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Null, Value::Null) => true,
+        (Value::Null, _) | (_, Value::Null) => false,
+        (Value::Text(x), Value::Text(y)) => x == y,
+        _ => js_number(a) == js_number(b),
     }
 }
 

@@ -46,6 +46,34 @@ fn rounds_on_the_decimal_value() {
     assert_eq!(fmt("1.4", 0.92178), "0.9218");
 }
 
+fn binary(decimals: u8, v: f64) -> String {
+    let f = NumberFormat { decimals, rounding: Rounding::Binary, ..NumberFormat::default() };
+    let mut out = Vec::new();
+    NumberWriter::new(&f).write(v, &mut out);
+    String::from_utf8(out).unwrap()
+}
+
+/// CIMCO formats round the binary double as JavaScript's `toFixed` does.
+#[test]
+fn binary_rounding_is_javascripts_to_fixed() {
+    assert_eq!(binary(2, 1.005), "1.00");
+    assert_eq!(binary(2, 2.675), "2.67");
+    assert_eq!(binary(2, -2.675), "-2.67");
+    assert_eq!(binary(3, 1.0005), "1.000");
+    assert_eq!(binary(4, 8.49655), "8.4965");
+    // Exact binary ties round away from zero (toFixed picks the larger n).
+    assert_eq!(binary(2, 0.125), "0.13");
+    assert_eq!(binary(1, 0.25), "0.3");
+    assert_eq!(binary(0, 2.5), "3");
+    assert_eq!(binary(0, -2.5), "-3");
+    assert_eq!(binary(1, 0.35), "0.3");
+    // The slow path (past 1e14 scaled): exact too.
+    assert_eq!(binary(2, 1e13 + 0.125), "10000000000000.13");
+    assert_eq!(binary(3, 123456789012.0005), "123456789012.001");
+    assert_eq!(binary(3, 123456789012.0004), "123456789012.000");
+    assert_eq!(binary(1, f64::NAN), "0.0");
+}
+
 #[test]
 fn negative_zero_has_no_sign() {
     assert_eq!(fmt("1.3", -0.0), "0.000");
@@ -136,7 +164,16 @@ fn printed_value_reads_back() {
 
 /// Reference: round the shortest decimal text of `v` half away from zero.
 fn reference(v: f64, decimals: usize) -> String {
-    let text = format!("{}", v.abs());
+    reference_of(v, decimals, format!("{}", v.abs()))
+}
+
+/// Reference for `Rounding::Binary`: round the exact decimal expansion of
+/// the double half away from zero (JavaScript's `toFixed`).
+fn reference_binary(v: f64, decimals: usize) -> String {
+    reference_of(v, decimals, format!("{:.1100}", v.abs()))
+}
+
+fn reference_of(v: f64, decimals: usize, text: String) -> String {
     let (int, frac) = text.split_once('.').unwrap_or((&text, ""));
     let mut digits: Vec<u8> = int.bytes().chain(frac.bytes().chain(std::iter::repeat(b'0')).take(decimals)).collect();
     if frac.as_bytes().get(decimals).is_some_and(|&d| d >= b'5') {
@@ -172,6 +209,17 @@ proptest! {
         let mut out = Vec::new();
         NumberWriter::new(&f).write(v, &mut out);
         prop_assert_eq!(String::from_utf8(out).unwrap(), reference(v, decimals));
+    }
+
+    #[test]
+    fn binary_matches_exact_binary_rounding(v in -1e12f64..1e12, decimals in 0usize..10) {
+        prop_assert_eq!(binary(decimals as u8, v), reference_binary(v, decimals));
+    }
+
+    #[test]
+    fn binary_matches_on_short_decimals(n in -10_000_000i64..10_000_000, scale in 1u32..7, decimals in 0usize..6) {
+        let v = n as f64 / 10f64.powi(scale as i32);
+        prop_assert_eq!(binary(decimals as u8, v), reference_binary(v, decimals));
     }
 
     #[test]

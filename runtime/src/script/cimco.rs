@@ -36,16 +36,7 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     let s = state.clone();
     engine.register_fn("__ffmt", move |id: i64, v: Dynamic| text(format_with(&s.borrow(), id as u16, to_number(&v))));
     let s = state.clone();
-    engine.register_fn("__feedrate", move |m: Dynamic| {
-        let mut st = s.borrow_mut();
-        match st.feed_var {
-            Some(var) if to_number(&m) != 0.0 => {
-                let feed = st.ctx.feed;
-                text(format_var(&mut st, var, feed))
-            }
-            _ => text(""),
-        }
-    });
+    engine.register_fn("__feedrate", move |m: Dynamic| text(feedrate(&mut s.borrow_mut(), &m)));
     let s = state.clone();
     engine.register_fn("__comp", move || {
         num(match s.borrow().ctx.comp {
@@ -58,6 +49,19 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn("__drill_header", move || drill_header(&s.borrow()));
     let s = state.clone();
     engine.register_fn("__turn_drill", move || turn_drill(&s.borrow()));
+}
+
+/// The host's `getFeedrate(movement)`: nothing for a rapid, else the feed
+/// of the move with one decimal, or four when it is per revolution.
+fn feedrate(st: &mut State, movement: &Dynamic) -> String {
+    let var = if st.ctx.feed_per_rev { st.feed_rev_var } else { st.feed_var };
+    match var {
+        Some(var) if to_number(movement) != 0.0 => {
+            let feed = st.ctx.feed;
+            format_var(st, var, feed)
+        }
+        _ => String::new(),
+    }
 }
 
 /// Formats through a compile-time variable; shares the engine's modal memory.
@@ -89,7 +93,8 @@ fn format_with(st: &State, id: u16, v: f64) -> String {
     String::from_utf8_lossy(&buf).into_owned()
 }
 
-/// `format` and `getLast` of output variables and formats, whichever way
+/// `format`, `getLast` and `reset` of output variables and `format` of
+/// formats, whichever way
 /// they were made.
 pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> Option<R> {
     let a0 = || args.first().map_or(f64::NAN, to_number);
@@ -97,6 +102,13 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
         return Some(match name {
             "format" => Ok(text(format_var(&mut state.borrow_mut(), id, a0()))),
             "getLast" => Ok(num(last(&state.borrow(), id))),
+            "reset" => {
+                if let Some(v) = state.borrow_mut().vars.get_mut(id as usize) {
+                    v.has_last = false;
+                    v.key = None;
+                }
+                Ok(Dynamic::UNIT)
+            }
             _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
         });
     }
@@ -131,6 +143,10 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
                 Ok(text(if same { String::new() } else { t }))
             }
             "getLast" => Ok(num(var.last_value)),
+            "reset" => {
+                var.last_text = None;
+                Ok(Dynamic::UNIT)
+            }
             _ => Err(fail(format!("TypeError: an output variable has no method '{name}'"))),
         });
     }
@@ -173,6 +189,7 @@ pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
         decimal_mark: mark,
         multiplier: if scale.is_finite() { scale } else { 1.0 },
         prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
+        rounding: postc_ir::Rounding::Binary,
     }
 }
 
@@ -196,16 +213,7 @@ pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Arr
             Dynamic::from(o)
         }
         "getCompensation" => text(""),
-        "getFeedrate" => {
-            let mut st = state.borrow_mut();
-            match st.feed_var {
-                Some(var) if to_number(&a(0)) != 0.0 => {
-                    let feed = st.ctx.feed;
-                    text(format_var(&mut st, var, feed))
-                }
-                _ => text(""),
-            }
-        }
+        "getFeedrate" => text(feedrate(&mut state.borrow_mut(), &a(0))),
         "createFormat" => {
             let st = state.borrow();
             let mark = match to_string(&[global(&st, "decimalMark"), global(&st, "globals.decimalMark")].into_iter().find(|v| !v.is_unit()).unwrap_or(Dynamic::UNIT)).as_str() {
@@ -278,7 +286,10 @@ fn drill_header(st: &State) -> Dynamic {
     set("name", text(name));
     set("isLonghand", b(longhand));
     set("retractPlane", num(c.retract_plane * f));
-    set("referencePlane", num(c.reference_plane * f));
+    // Seed 002: "the absolute reference plane. If either the safe distance
+    // or end depth is given as relative coordinates, they are relative to
+    // this plane" -- the top of the holes; safeDistance is the R plane.
+    set("referencePlane", num(c.surface.unwrap_or(c.reference_plane) * f));
     set("safeDistanceIsAbsolute", b(true));
     set("safeDistance", num(c.reference_plane * f));
     set("endDepthIsAbsolute", b(true));

@@ -32,6 +32,8 @@ pub(crate) struct State {
     /// Names of globals, to find `MillDrillingFields` and friends.
     pub global_names: Vec<String>,
     pub feed_var: Option<u16>,
+    /// The variable of feeds per revolution (more decimals).
+    pub feed_rev_var: Option<u16>,
     /// Loop iterations of the current call, the most allowed, and the
     /// post offset of the loop that ran last.
     pub ticks: u64,
@@ -43,6 +45,7 @@ pub(crate) struct State {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Context {
     pub feed: f64,
+    pub feed_per_rev: bool,
     pub factor: f64,
     pub plunge_feed: f64,
     pub spindle: f64,
@@ -91,6 +94,7 @@ impl ScriptHost {
             ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),
             feed_var: post.variables.iter().position(|v| v.name == "__postc_feed").map(|i| i as u16),
+            feed_rev_var: post.variables.iter().position(|v| v.name == "__postc_feed_rev").map(|i| i as u16),
             ticks: 0,
             max_ticks: post.options.step_budget.max(1),
             last_loop: None,
@@ -133,6 +137,7 @@ impl ScriptHost {
             st.globals = std::mem::take(&mut eng.globals);
             let m = &eng.machine;
             st.ctx.feed = m.feed;
+            st.ctx.feed_per_rev = m.toolpath.feed_per_rev;
             st.ctx.factor = m.factor;
             st.ctx.plunge_feed = m.tool.plunge_feed;
             st.ctx.spindle = m.spindle_speed;

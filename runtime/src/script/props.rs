@@ -49,6 +49,13 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn("__get", |o: Dynamic, k: Dynamic| -> R { get(&o, &k) });
     engine.register_fn("__set", |o: Dynamic, k: Dynamic, v: Dynamic| -> R { set(&o, &k, v) });
     engine.register_fn("__keys", |o: Dynamic| -> Array { keys(&o) });
+    // A `return`, `break` or `continue` leaving a `try` is thrown as a
+    // jump and caught by the translation of that `try`, which runs the
+    // `finally` and then jumps (kind 1, 2, 3); other thrown values are 0.
+    engine.register_type_with_name::<Jump>("jump");
+    engine.register_fn("__jump", |kind: i64, value: Dynamic| Dynamic::from(Jump(kind, value)));
+    engine.register_fn("__jump_kind", |e: Dynamic| e.try_cast::<Jump>().map_or(0, |j| j.0));
+    engine.register_fn("__jump_value", |e: Dynamic| e.try_cast::<Jump>().map_or(Dynamic::UNIT, |j| j.1));
     engine.register_fn("__caught", |e: Dynamic| -> Dynamic {
         match e.clone().try_cast::<Map>() {
             Some(m) => {
@@ -307,3 +314,8 @@ pub fn math(name: &str, args: &Array) -> R {
     };
     Ok(num(v))
 }
+
+/// A `return` (1), `break` (2) or `continue` (3) on its way out of a `try`,
+/// with the returned value.
+#[derive(Clone)]
+struct Jump(i64, Dynamic);

@@ -298,7 +298,9 @@ impl SectionDispatch {
     }
 
     fn fresh_modal_state(&mut self, eng: &mut Engine) {
-        eng.clear_modal();
+        if eng.post.options.forget_modal_at_toolpath_start {
+            eng.clear_modal();
+        }
         self.family = Family::None;
         self.last_feed = None;
     }

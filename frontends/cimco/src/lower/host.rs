@@ -97,6 +97,7 @@ pub fn plain_method(name: &str) -> bool {
         name,
         "format"
             | "getLast"
+            | "reset"
             | "toUpperCase"
             | "toLowerCase"
             | "substr"

@@ -17,6 +17,10 @@ pub const DRILL_HEADER: &str = "__postc_drilling_header";
 pub const TURN_DRILL: &str = "__postc_drilling";
 /// The output variable `getFeedrate` formats through.
 pub const FEED_VAR: &str = "__postc_feed";
+/// The output variable `getFeedrate` formats feeds per revolution through.
+pub const FEED_REV_VAR: &str = "__postc_feed_rev";
+/// Decimals of a feed per revolution (a feed per minute has one).
+pub const FEED_PER_REV_DECIMALS: u8 = 4;
 
 /// IR indices of globals and functions.
 pub struct Layout {

@@ -72,6 +72,10 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     let arity = |name: &str| info(name).map(|f| f.params.len());
     settings(&model, post, diags);
     post.options.lathe = is_lathe(&model, arity("onLinear"));
+    // Seed 002: a variable without force "will only be written if it has
+    // changed since the last time it was used" -- a toolpath start does not
+    // make it forget (a post that wants that calls `reset()`).
+    post.options.forget_modal_at_toolpath_start = false;
 
     // Formats and variables, and the one getFeedrate formats through.
     post.formats = setup.formats.clone();
@@ -82,6 +86,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
         decimal_mark: setup::decimal_mark(&model),
+        rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
     post.variables.push(Variable {
@@ -92,6 +97,25 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         modality: Modality::Always,
     });
     let feed_var = (post.variables.len() - 1) as u16;
+    // Feeds per revolution (mm/rev, in/rev) keep four decimals: 0.15
+    // mm/rev prints F0.15, 0.0025 in/rev F0.0025.
+    post.formats.push(NumberFormat {
+        decimals: layout::FEED_PER_REV_DECIMALS,
+        trim_zeros: true,
+        width: 0,
+        width_of: postc_ir::WidthOf::IntegerDigits,
+        decimal_mark: setup::decimal_mark(&model),
+        rounding: postc_ir::Rounding::Binary,
+        ..NumberFormat::default()
+    });
+    post.variables.push(Variable {
+        name: layout::FEED_REV_VAR.into(),
+        source: ValueSource::Assigned,
+        prefix: b"F".to_vec(),
+        format: (post.formats.len() - 1) as u16,
+        modality: Modality::Always,
+    });
+    let feed_rev_var = (post.variables.len() - 1) as u16;
 
     // postc's functions after the post's own.
     let own_feedrate = info(layout::FEEDRATE).is_some();
@@ -129,6 +153,16 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
                     branches: vec![(
                         Expr::Binary(postc_ir::BinaryOp::Eq, Box::new(Expr::Local(0)), Box::new(Expr::Number(host::MOVEMENT_RAPID))),
                         vec![Stmt::Return(Some(Expr::Text(String::new())))],
+                    )],
+                    otherwise: vec![],
+                },
+                Stmt::If {
+                    branches: vec![(
+                        Expr::Quantity(Quantity::FeedPerRev),
+                        vec![Stmt::Return(Some(Expr::FormatVar {
+                            var: feed_rev_var,
+                            value: Box::new(Expr::Quantity(Quantity::Feed)),
+                        }))],
                     )],
                     otherwise: vec![],
                 },

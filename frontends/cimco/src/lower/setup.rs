@@ -248,6 +248,8 @@ fn number_format(props: &[(String, Const)], mark: char, span: postc_ir::Span, di
         decimal_mark: mark,
         multiplier: if scale.is_finite() { scale } else { 1.0 },
         prefix: get("prefix").and_then(|p| p.text()).unwrap_or_default(),
+        // A post is JavaScript: numbers round as its engine rounds them.
+        rounding: postc_ir::Rounding::Binary,
     }
 }
 

@@ -246,6 +246,9 @@ fn options(model: &Model, diags: &mut Vec<Diagnostic>) -> OutputOptions {
     let mut options = OutputOptions {
         line_ending: b"\r\n".to_vec(),
         block_numbers: DEFAULT_BLOCK_NUMBERS,
+        // Decision 4 (docs/vectric.md): all modal memory is cleared when a
+        // toolpath starts.
+        forget_modal_at_toolpath_start: true,
         ..OutputOptions::default()
     };
     for global in &model.globals {

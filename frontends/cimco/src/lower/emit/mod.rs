@@ -368,10 +368,12 @@ impl<'f> Emitter<'f> {
         };
         let empty = |e: &Expr| matches!(e, Expr::Text(t) if t.is_empty());
         match c {
-            Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq, a, b) if region(a).is_some() && empty(b) => {
+            Expr::Binary(BinaryOp::Eq | BinaryOp::JsEq | BinaryOp::StrictEq, a, b) if region(a).is_some() && empty(b) => {
                 Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?))))
             }
-            Expr::Binary(BinaryOp::Ne | BinaryOp::StrictNe, a, b) if region(a).is_some() && empty(b) => Some(Expr::Written(region(a)?)),
+            Expr::Binary(BinaryOp::Ne | BinaryOp::JsNe | BinaryOp::StrictNe, a, b) if region(a).is_some() && empty(b) => {
+                Some(Expr::Written(region(a)?))
+            }
             Expr::Unary(UnaryOp::Not, a) if region(a).is_some() => Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?)))),
             e if region(e).is_some() => Some(Expr::Written(region(e)?)),
             other => value(other, fr),

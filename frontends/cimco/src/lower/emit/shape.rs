@@ -72,7 +72,11 @@ pub(super) fn cond_ok(c: &Expr, k: u16) -> bool {
     let is_k = |e: &Expr| matches!(e, Expr::Local(x) if *x == k);
     let empty = |e: &Expr| matches!(e, Expr::Text(t) if t.is_empty());
     match c {
-        Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq | BinaryOp::Ne | BinaryOp::StrictNe, a, b) if is_k(a) => empty(b),
+        Expr::Binary(
+            BinaryOp::Eq | BinaryOp::JsEq | BinaryOp::StrictEq | BinaryOp::Ne | BinaryOp::JsNe | BinaryOp::StrictNe,
+            a,
+            b,
+        ) if is_k(a) => empty(b),
         Expr::Unary(UnaryOp::Not, a) if is_k(a) => true,
         e if is_k(e) => true,
         other => !expr_reads(other, k),

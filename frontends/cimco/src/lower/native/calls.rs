@@ -95,6 +95,17 @@ impl Native<'_, '_> {
     }
 
     /// The variable or format a global is bound to, if the name is that global.
+    /// The output variable of `xOutput.reset`, when it is one made at
+    /// compile time.
+    pub(super) fn reset_of(&self, callee: &Expr) -> Option<u16> {
+        let ExprKind::Member { object, property } = &callee.kind else { return None };
+        let ExprKind::Ident(o) = &object.kind else { return None };
+        match self.binding(o) {
+            Some(Binding::Var(var)) if property.name == "reset" => Some(var),
+            _ => None,
+        }
+    }
+
     fn binding(&self, name: &str) -> Option<Binding> {
         match self.model.scopes.resolve(name, self.at) {
             Symbol::Global(g) => self.setup.bindings.get(&g).copied(),

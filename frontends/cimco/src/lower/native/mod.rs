@@ -201,7 +201,7 @@ impl Native<'_, '_> {
                 let v = self.expr(value)?;
                 let v = match op.binary() {
                     None => v,
-                    Some(b) => Ir::Binary(bin(b), Box::new(self.expr(target)?), Box::new(v)),
+                    Some(b) => binary_js(bin(b), self.expr(target)?, v),
                 };
                 Some(IrStmt::Assign(place, v))
             }
@@ -211,6 +211,10 @@ impl Native<'_, '_> {
                 let op = if *op == UpdateOp::Increment { IrBin::Add } else { IrBin::Sub };
                 Some(IrStmt::Assign(place, Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)))))
             }
+            ExprKind::Call { callee, args } if args.is_empty() => match self.reset_of(callee) {
+                Some(var) => Some(IrStmt::Forget(var)),
+                None => Some(IrStmt::Eval(self.expr(e)?)),
+            },
             _ => Some(IrStmt::Eval(self.expr(e)?)),
         }
     }
@@ -295,14 +299,14 @@ impl Native<'_, '_> {
                 }
                 let a = Box::new(self.expr(operand)?);
                 match op {
-                    UnaryOp::Neg => Ir::Unary(IrUn::Neg, a),
+                    UnaryOp::Neg => Ir::Unary(IrUn::Neg, Box::new(to_number(*a))),
                     UnaryOp::Plus => Ir::Unary(IrUn::Plus, a),
                     UnaryOp::Not => Ir::Unary(IrUn::Not, a),
                     UnaryOp::BitNot => Ir::Unary(IrUn::BitNot, a),
                     UnaryOp::Typeof => Ir::Unary(IrUn::Typeof, a),
                 }
             }
-            ExprKind::Binary { op, left, right } => Ir::Binary(bin(*op), Box::new(self.expr(left)?), Box::new(self.expr(right)?)),
+            ExprKind::Binary { op, left, right } => binary_js(bin(*op), self.expr(left)?, self.expr(right)?),
             ExprKind::Logical { op, left, right } => {
                 let op = if *op == LogicalOp::And { IrBin::And } else { IrBin::Or };
                 Ir::Binary(op, Box::new(self.expr(left)?), Box::new(self.expr(right)?))
@@ -328,6 +332,16 @@ pub fn to_number(v: Ir) -> Ir {
     }
 }
 
+/// A JavaScript binary operator over IR operands: arithmetic reads its
+/// operands as JavaScript numbers (`UnaryOp::Plus`: text that is not a
+/// number is NaN, not 0 as in BASIC).
+pub fn binary_js(op: IrBin, a: Ir, b: Ir) -> Ir {
+    match op {
+        IrBin::Sub | IrBin::Mul | IrBin::Div | IrBin::Rem => Ir::Binary(op, Box::new(to_number(a)), Box::new(to_number(b))),
+        _ => Ir::Binary(op, Box::new(a), Box::new(b)),
+    }
+}
+
 /// The IR operator of a JavaScript binary operator.
 pub fn bin(op: BinaryOp) -> IrBin {
     match op {
@@ -342,14 +356,14 @@ pub fn bin(op: BinaryOp) -> IrBin {
         BinaryOp::BitAnd => IrBin::BitAnd,
         BinaryOp::BitOr => IrBin::BitOr,
         BinaryOp::BitXor => IrBin::BitXor,
-        BinaryOp::Eq => IrBin::Eq,
-        BinaryOp::Ne => IrBin::Ne,
+        BinaryOp::Eq => IrBin::JsEq,
+        BinaryOp::Ne => IrBin::JsNe,
         BinaryOp::StrictEq => IrBin::StrictEq,
         BinaryOp::StrictNe => IrBin::StrictNe,
-        BinaryOp::Lt => IrBin::Lt,
-        BinaryOp::Le => IrBin::Le,
-        BinaryOp::Gt => IrBin::Gt,
-        BinaryOp::Ge => IrBin::Ge,
+        BinaryOp::Lt => IrBin::JsLt,
+        BinaryOp::Le => IrBin::JsLe,
+        BinaryOp::Gt => IrBin::JsGt,
+        BinaryOp::Ge => IrBin::JsGe,
     }
 }
 

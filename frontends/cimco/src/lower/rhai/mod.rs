@@ -23,7 +23,10 @@
 //! - statements: `for` becomes `loop` with a first-pass flag (so that
 //!   `continue` runs the update), `switch` a `loop` with a matched index
 //!   (fallthrough and `break` as in JavaScript), `for-in` a loop over
-//!   `__keys(o)`; `finally` runs after the `try`.
+//!   `__keys(o)`; `finally` runs however the `try` is left: normally, by
+//!   a `throw` (also from the `catch`), or by a `return`, `break` or
+//!   `continue`, which are thrown past it as a jump and carried on after
+//!   the `finally` (see `Jump::Try`).
 //!
 //! Every statement and every call, member access and operator records in
 //! the span map where it came from in the post, so that an error in the
@@ -64,6 +67,11 @@ enum Jump {
     Loop,
     /// A switch, with the flag that carries a `continue` out of it.
     Switch(String),
+    /// The body or `catch` of a `try`: a `return`, `break` or `continue`
+    /// that leaves it is thrown as a jump (`__jump(kind, value)`: 1 return,
+    /// 2 break, 3 continue), which the `try`'s translation catches and
+    /// records; the `finally` runs, then the jump goes on.
+    Try,
 }
 
 impl<'c, 'a> Gen<'c, 'a> {

@@ -108,18 +108,16 @@ impl Gen<'_, '_> {
                 self.w("}\n");
             }
             StmtKind::Switch { discriminant, cases } => self.switch(discriminant, cases),
-            StmtKind::Break => self.w("break;\n"),
-            StmtKind::Continue => match self.jumps.iter().rev().find(|_| true).cloned() {
-                Some(Jump::Switch(flag)) => self.w(&format!("{flag} = true;\nbreak;\n")),
-                _ => self.w("continue;\n"),
-            },
+            StmtKind::Break => self.jump_break(),
+            StmtKind::Continue => self.jump_continue(),
             StmtKind::Return(e) => {
-                self.w("return ");
+                let tried = self.jumps.iter().any(|j| matches!(j, Jump::Try));
+                self.w(if tried { "throw __jump(1, " } else { "return " });
                 match e {
                     Some(e) => self.expr(e),
                     None => self.w("()"),
                 }
-                self.w(";\n");
+                self.w(if tried { ");\n" } else { ";\n" });
             }
             StmtKind::Throw(e) => {
                 self.w("throw ");
@@ -127,6 +125,25 @@ impl Gen<'_, '_> {
                 self.w(";\n");
             }
             StmtKind::Try { block, handler, finalizer } => self.try_stmt(block, handler.as_ref(), finalizer.as_deref()),
+        }
+    }
+
+    /// `break`: out of the innermost loop or switch, or, first, out of a
+    /// `try` whose `finally` must run.
+    fn jump_break(&mut self) {
+        match self.jumps.last().cloned() {
+            Some(Jump::Try) => self.w("throw __jump(2, ());\n"),
+            _ => self.w("break;\n"),
+        }
+    }
+
+    /// `continue`: to the next pass of the innermost loop, through the
+    /// switches and `try`s around it.
+    fn jump_continue(&mut self) {
+        match self.jumps.last().cloned() {
+            Some(Jump::Switch(flag)) => self.w(&format!("{flag} = true;\nbreak;\n")),
+            Some(Jump::Try) => self.w("throw __jump(3, ());\n"),
+            _ => self.w("continue;\n"),
         }
     }
 
@@ -173,43 +190,61 @@ impl Gen<'_, '_> {
         }
         self.jumps.pop();
         self.w("break;\n}\n");
-        match self.jumps.last().cloned() {
-            Some(Jump::Switch(outer)) => self.w(&format!("if {c} {{ {outer} = true; break; }}\n")),
-            Some(Jump::Loop) => self.w(&format!("if {c} {{ continue; }}\n")),
-            None => {}
+        if !self.jumps.is_empty() {
+            self.w(&format!("if {c} {{\n"));
+            self.jump_continue();
+            self.w("}\n");
         }
     }
 
+    /// `try`: the body and the `catch` run inside Rhai `try`s; what leaves
+    /// them (a jump or an error, also an error of the `catch`) is recorded
+    /// in a completion variable (0 normal, 1 return, 2 break, 3 continue,
+    /// 4 throw) and a value; then the `finally` runs, then the recorded
+    /// jump or error goes on, as JavaScript does.
     fn try_stmt(&mut self, block: &[Stmt], handler: Option<&CatchClause>, finalizer: Option<&[Stmt]>) {
-        self.w("try {\n");
+        let (c, v, e) = (self.temp("c"), self.temp("v"), self.temp("e"));
+        let record = format!("let {c}_k = __jump_kind({e});\nif {c}_k > 0 {{\n{c} = {c}_k;\n{v} = __jump_value({e});\n}} else {{\n");
+        self.w(&format!("let {c} = 0;\nlet {v} = ();\ntry {{\n"));
+        self.jumps.push(Jump::Try);
         for s in block {
             self.stmt(s);
         }
-        self.w("} catch (");
+        self.w(&format!("}} catch ({e}) {{\n{record}"));
         match handler {
             Some(h) => {
-                let e = self.temp("e");
-                self.w(&format!("{e}) {{\n"));
+                let e2 = self.temp("e");
+                self.w("try {\n");
                 let target = Expr::new(ExprKind::Ident(h.param.name.clone()), h.param.span);
                 self.store(&target, &format!("__caught({e})"));
                 self.w(";\n");
                 for s in &h.body {
                     self.stmt(s);
                 }
-                self.w("}\n");
+                let c2 = format!("{c}_k2");
+                self.w(&format!(
+                    "}} catch ({e2}) {{\nlet {c2} = __jump_kind({e2});\nif {c2} > 0 {{\n{c} = {c2};\n{v} = __jump_value({e2});\n}} else {{\n{c} = 4;\n{v} = {e2};\n}}\n}}\n"
+                ));
             }
-            None => {
-                let e = self.temp("e");
-                self.w(&format!("{e}) {{\n"));
-                for s in finalizer.unwrap_or(&[]) {
-                    self.stmt(s);
-                }
-                self.w(&format!("throw {e};\n}}\n"));
-            }
+            None => self.w(&format!("{c} = 4;\n{v} = {e};\n")),
         }
+        self.jumps.pop();
+        self.w("}\n}\n");
         for s in finalizer.unwrap_or(&[]) {
             self.stmt(s);
         }
+        self.w(&format!("if {c} == 1 {{\n"));
+        let tried = self.jumps.iter().any(|j| matches!(j, Jump::Try));
+        self.w(&if tried { format!("throw __jump(1, {v});\n") } else { format!("return {v};\n") });
+        // Outside any loop a `break` or `continue` cannot have left the
+        // `try` (and Rhai refuses one there).
+        if !self.jumps.is_empty() {
+            self.w(&format!("}} else if {c} == 2 {{\n"));
+            self.jump_break();
+            self.w(&format!("}} else if {c} == 3 {{\n"));
+            self.jump_continue();
+        }
+        self.w(&format!("}} else if {c} == 4 {{\nthrow {v};\n}}\n"));
     }
 
     /// `target = value` as a statement.

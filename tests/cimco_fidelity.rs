@@ -1,0 +1,263 @@
+//! Issue 14, CIMCO fidelity: modal memory for the whole program and
+//! `reset()`, feeds per revolution, the drill header's reference plane,
+//! `finally`, NaN in native code, and number-to-text as a JavaScript
+//! engine does it. Each case runs under postc and, when `node` is
+//! installed, under the Node.js referee host (`tests/node_host/`), and both
+//! must print the expected program.
+
+mod cimco_common;
+
+use cimco_common::*;
+
+/// Posts `js` over the native toolpath `ron` with postc and (when it is
+/// installed) Node.js; both must print `expected`.
+fn check(js: &str, ron: &str, expected: &str) {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post_path = dir.path().join("post.js");
+    let toolpath = dir.path().join("job.ron");
+    std::fs::write(&post_path, js).expect("write the post");
+    std::fs::write(&toolpath, ron).expect("write the toolpath");
+    let post = compile(&post_path).unwrap_or_else(|e| panic!("{e}"));
+    let ours = post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(String::from_utf8_lossy(&ours), expected, "postc");
+    if node().is_none() {
+        eprintln!("cimco_fidelity: `node` is not installed; the Node.js referee is skipped");
+        return;
+    }
+    let jsonl = dir.path().join("job.jsonl");
+    export_jsonl(&toolpath, &jsonl).unwrap_or_else(|e| panic!("{e}"));
+    let theirs = run_node(&post_path, &jsonl, &[]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(String::from_utf8_lossy(&theirs), expected, "Node.js");
+}
+
+const TWO_TOOLPATHS: &str = "Job(units: Mm)
+Tool(number: 1, cut_feed: 1000, plunge_feed: 300, spindle_speed: 8000)
+ToolpathStart(name: \"one\")
+Rapid(x: 10, y: 20, z: 5)
+Feed(x: 30, y: 20, z: 5)
+ToolpathStart(name: \"two\")
+Rapid(x: 30, y: 20, z: 5)
+Feed(x: 30, y: 40, z: 5)
+Tool(number: 2, cut_feed: 1000, plunge_feed: 300, spindle_speed: 8000)
+ToolpathStart(name: \"three\")
+Rapid(x: 30, y: 40, z: 5)
+Feed(x: 50, y: 40, z: 5)
+End
+";
+
+/// Seed 002: a variable without force "will only be written if it has
+/// changed since the last time it was used" -- a toolpath start does not
+/// make it forget; `reset()` (here in `onToolChange`) does.
+#[test]
+fn output_variables_remember_across_toolpaths_until_reset() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 1});
+var gOut = createVariable({prefix: "G"}, createFormat({decimals: 0}));
+var xOut = createVariable({prefix: "X"}, f);
+var yOut = createVariable({prefix: "Y"}, f);
+var zOut = createVariable({prefix: "Z"}, f);
+var tools = 0;
+function onToolChange(tool) {
+    tools++;
+    if (tools > 1) {
+        gOut.reset(); xOut.reset(); yOut.reset(); zOut.reset();
+    }
+    return "T" + tool + "\n";
+}
+function onLinear(x, y, z, m) {
+    var xyz = xOut.format(x) + yOut.format(y) + zOut.format(z);
+    return xyz == "" ? "" : gOut.format(m == MOVEMENT_RAPID ? 0 : 1) + xyz + "\n";
+}
+"#;
+    let expected = "T1\nG0X10Y20Z5\nG1X30\nY40\nT2\nG0X30Y40Z5\nG1X50\n";
+    check(js, TWO_TOOLPATHS, expected);
+    // The same from a script (objects make onToolChange a Rhai script).
+    let script = js.replace("function onToolChange(tool) {", "function onToolChange(tool) {\n    var o = {};");
+    check(&script, TWO_TOOLPATHS, expected);
+    // And through variables made while the post runs.
+    let dynamic = js.replace("var gOut", "var gOut;\nfunction onInit() { gOut = createVariable({prefix: \"G\"}, createFormat({decimals: Number(\"0\")})); }\nvar unused");
+    check(&dynamic, TWO_TOOLPATHS, expected);
+}
+
+const LATHE_PER_REV: &str = "Job(units: Mm)
+Tool(number: 1, cut_feed: 0.15, plunge_feed: 0.08, spindle_speed: 1500)
+ToolpathStart(name: \"rough\", feed_per_rev: true)
+Rapid(x: 20, y: 0, z: 2)
+Feed(x: 20, y: 0, z: -30)
+Feed(x: 22, y: 0, z: -30, feed: 0.0025)
+ToolpathStart(name: \"per minute\")
+Feed(x: 24, y: 0, z: -30, feed: 47.25)
+End
+";
+
+/// A lathe post in G95/G99 prints 0.15 mm/rev as F0.15, not F0.2.
+#[test]
+fn feeds_per_revolution_keep_their_decimals() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 3, forceDecimal: true});
+var xOut = createVariable({prefix: " X"}, f);
+var zOut = createVariable({prefix: " Z"}, f);
+function onLinear(x, z, m) {
+    return "G" + (m == MOVEMENT_RAPID ? 0 : 1) + xOut.format(x) + zOut.format(z) + (m == MOVEMENT_RAPID ? "" : " " + getFeedrate(m)) + "\n";
+}
+"#;
+    let expected = "G0 X20.000 Z2.000\nG1 Z-30.000 F0.15\nG1 X22.000 F0.0025\nG1 X24.000 F47.3\n";
+    check(js, LATHE_PER_REV, expected);
+    // The host's getFeedrate from a script.
+    let script = js.replace("function onLinear(x, z, m) {", "function onLinear(x, z, m) {\n    var o = {};");
+    check(&script, LATHE_PER_REV, expected);
+}
+
+const DRILL: &str = "Job(units: Mm)
+Tool(number: 3, cut_feed: 200, plunge_feed: 100, spindle_speed: 3000)
+ToolpathStart(name: \"holes\")
+DrillCycle(kind: Drill, retract_plane: 15, reference_plane: 2, surface: -1, depth: -11, feed: 80)
+DrillPoint(x: 5, y: 5, z: -1)
+DrillEnd
+ToolpathStart(name: \"no surface given\")
+DrillCycle(kind: Drill, retract_plane: 15, reference_plane: 2, depth: -11, feed: 80)
+DrillPoint(x: 9, y: 5, z: -1)
+DrillEnd
+End
+";
+
+/// The drill header's referencePlane is the top of the hole (seed 002:
+/// safe distance and end depth "are relative to this plane"), so a
+/// set-up clearance (Heidenhain Q200 = safe distance - reference plane)
+/// is the real one, not 0.
+#[test]
+fn drill_header_reference_plane_is_the_hole_top() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 3});
+var drill;
+function onLinear(x, y, z, m) { return ""; }
+function onDrillingHeader(h) { drill = h; return ""; }
+function onDrillingPoint(x, y) {
+    return "RET " + f.format(drill.retractPlane) + " REF " + f.format(drill.referencePlane)
+        + " SAFE " + f.format(drill.safeDistance) + " Q200 " + f.format(drill.safeDistance - drill.referencePlane)
+        + " END " + f.format(drill.endDepth) + "\n";
+}
+"#;
+    let expected = "RET 15 REF -1 SAFE 2 Q200 3 END -11\nRET 15 REF 2 SAFE 2 Q200 0 END -11\n";
+    check(js, DRILL, expected);
+}
+
+/// APT CYCLE measures its clearance from the hole's top: the reader
+/// gives the cycle that surface.
+#[test]
+fn apt_cycles_carry_the_hole_top() {
+    let cl = "PARTNO/T\nLOADTL/1\nGOTO/0,0,50\nCYCLE/DRILL,10,MMPM,100,3\nGOTO/5,5,-1\nCYCLE/OFF\nFINI\n";
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("job.cl");
+    std::fs::write(&path, cl).expect("write the CL file");
+    let mut sources = postc_ir::SourceMap::new();
+    let mut source = postc_frontends::open_toolpath(&path, &mut sources).unwrap_or_else(|d| panic!("{}", d.message));
+    let mut diags = Vec::new();
+    let mut cycle = None;
+    while let Some((e, _)) = postc_ir::EventSource::next_event(&mut source, &mut diags) {
+        if let postc_ir::event::Event::DrillCycle(c) = e {
+            cycle = Some(c);
+        }
+    }
+    let c = cycle.expect("a drill cycle");
+    assert_eq!((c.surface, c.reference_plane, c.depth), (Some(-1.0), 2.0, -11.0));
+}
+
+const ONE_MOVE: &str = "Job(units: Mm)
+Tool(number: 1, cut_feed: 1000, plunge_feed: 300, spindle_speed: 8000)
+ToolpathStart(name: \"one\")
+Rapid(x: 1, y: 2, z: 3)
+End
+";
+
+/// `finally` runs however its `try` is left: by a `return`, `break` or
+/// `continue` (also through a `switch`), by a `throw` from the `catch`,
+/// and through nested `try`s.
+#[test]
+fn finally_runs_after_return_break_continue_and_throw() {
+    let js = r#"
+var linebreak = "\n";
+var log = "";
+function f(n) {
+    try { if (n > 0) return "r" + n; log += "t"; } finally { log += "F"; }
+    return "end";
+}
+function g() {
+    var s = "";
+    for (var i = 0; i < 4; i++) {
+        try { if (i == 1) continue; if (i == 3) break; s += i; } finally { s += "f"; }
+    }
+    return s;
+}
+function h() { try { try { return 1; } finally { log += "a"; } } finally { log += "b"; } }
+function k() { try { throw "x"; } catch (e) { throw "y" + e; } finally { log += "c"; } }
+function sw() {
+    var s = "";
+    for (var i = 0; i < 3; i++) {
+        try { switch (i) { case 1: continue; default: s += i; } } finally { s += "."; }
+    }
+    return s;
+}
+function over() { try { return "try"; } finally { return "finally"; } }
+function onOpen() {
+    var r = f(1) + f(0) + g() + h() + sw() + over();
+    try { k(); } catch (e) { r += e; }
+    return r + "|" + log + "\n";
+}
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(js, ONE_MOVE, "r1end0ff2ff10..2.finallyyx|FtFabc\n");
+}
+
+/// In native code, text that is not a number reads as NaN in arithmetic
+/// and comparisons, as in JavaScript (BASIC's `Val` reads it as 0, which
+/// VcPost keeps), and NaN joins to text as "NaN".
+#[test]
+fn text_that_is_not_a_number_is_nan_in_native_code() {
+    let js = r#"
+var linebreak = "\n";
+var nothing = null;
+function nan(s, n) {
+    var a = s * 1;
+    var b = n;
+    b -= s;
+    return "" + a + " " + (-s) + " " + b + " " + (s == 0) + " " + (s < 1) + " " + (s >= 1) + " " + (s != 0)
+        + " " + (nothing == 0) + " " + (n == "5") + " " + ("10" < "9") + " " + (n < "10") + " " + ("" == 0) + " " + (" 12 " * 2);
+}
+function onOpen() { return nan("abc", 5) + "\n"; }
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("nan.js");
+    std::fs::write(&path, js).expect("write the post");
+    let post = compile(&path).unwrap_or_else(|e| panic!("{e}"));
+    let f = post.functions.iter().find(|f| f.name == "nan").expect("nan()");
+    assert!(matches!(f.body, postc_ir::Body::Native(_)), "nan() must run natively");
+    check(js, ONE_MOVE, "NaN NaN NaN false false false true false true true true true 24\n");
+}
+
+/// Number-to-text in CIMCO formats is the JavaScript engine's: the binary
+/// double is rounded (as `toFixed` does), so 1.005 at two decimals prints
+/// 1.00 (the double is 1.00499999999999989...), where rounding the decimal
+/// value half away from zero would print 1.01. Exact ties (0.125) round
+/// away from zero.
+#[test]
+fn formats_round_the_binary_double_as_javascript_does() {
+    let js = r#"
+var linebreak = "\n";
+var f = createFormat({decimals: 2, forceDecimal: true});
+var xOut = createVariable({prefix: "X", force: true}, f);
+function line() { return f.format(1.005) + " " + f.format(2.675) + " " + f.format(0.125) + " " + xOut.format(-1.005) + " " + (1.005).toFixed(2); }
+function dynamic() {
+    var o = {};
+    var g = createFormat({decimals: Number("2"), forceDecimal: true});
+    return g.format(1.005) + " " + g.format(2.675) + " " + g.format(0.125);
+}
+function onOpen() { return line() + "|" + dynamic() + "\n"; }
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(js, ONE_MOVE, "1.00 2.67 0.13 X-1.00 1.00|1.00 2.67 0.13\n");
+}
