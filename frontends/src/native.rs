@@ -220,7 +220,7 @@ mod tests {
                 Event::Rapid(m) => proptest::prop_assert_eq!(m.x.to_bits(), x.to_bits(), "{}", line),
                 e => proptest::prop_assert!(false, "{e:?}"),
             }
-            for text in [format!("{x:.digits$e}"), format!("{:.digits$}", x.abs().min(1e30).max(1e-30) * x.signum())] {
+            for text in [format!("{x:.digits$e}"), format!("{:.digits$}", x.abs().clamp(1e-30, 1e30) * x.signum())] {
                 let expected: f64 = text.parse().unwrap();
                 let line = format!("{{\"Rapid\":{{\"x\":{text},\"y\":0,\"z\":0}}}}\n");
                 let (back, diags) = read(&line, Some(Syntax::JsonLines));
