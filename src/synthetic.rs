@@ -97,7 +97,11 @@ impl Synthetic {
             plunge_feed: 500.0,
             ..Tool::default()
         }));
-        q.push_back(Event::ToolpathStart(ToolpathStart { name: "Synthetic".into(), notes: String::new(), ..ToolpathStart::default() }));
+        q.push_back(Event::ToolpathStart(ToolpathStart {
+            name: "Synthetic".into(),
+            notes: String::new(),
+            ..ToolpathStart::default()
+        }));
         q.push_back(Event::Rapid(Move { x: 0.0, y: 0.0, z: SAFE, ..Move::default() }));
         q.push_back(Event::Feed(FeedMove { x: 0.0, y: 0.0, z: DEPTH, intent: Intent::Plunge, ..FeedMove::default() }));
         self.pos = [0.0, 0.0, DEPTH];
@@ -113,7 +117,13 @@ impl Synthetic {
             // Retract, move over, plunge: three moves of the budget.
             let [x, y, _] = self.pos;
             self.queue.push_back(Event::Rapid(Move { x, y: y + STEP, z: SAFE, ..Move::default() }));
-            self.queue.push_back(Event::Feed(FeedMove { x, y: y + STEP, z: DEPTH, intent: Intent::Plunge, ..FeedMove::default() }));
+            self.queue.push_back(Event::Feed(FeedMove {
+                x,
+                y: y + STEP,
+                z: DEPTH,
+                intent: Intent::Plunge,
+                ..FeedMove::default()
+            }));
             self.pos = [x, y + STEP, DEPTH];
             self.done_moves += 3;
             return Event::Rapid(Move { x, y, z: SAFE, ..Move::default() });
@@ -193,7 +203,9 @@ impl EventSource for Synthetic {
 pub fn standard_job() -> Vec<Event> {
     let rapid = |x, y, z| Event::Rapid(Move { x, y, z, ..Move::default() });
     let feed = |x, y, z, intent| Event::Feed(FeedMove { x, y, z, intent, ..FeedMove::default() });
-    let arc = |dir, x, y, z, cx, cy, intent| Event::Arc(ArcMove { dir, x, y, z, cx, cy, cz: z, intent, ..ArcMove::default() });
+    let arc = |dir, x, y, z, cx, cy, intent| {
+        Event::Arc(ArcMove { dir, x, y, z, cx, cy, cz: z, intent, ..ArcMove::default() })
+    };
     let tool = |number, name: &str, diameter, jet| Tool {
         number,
         name: name.into(),
@@ -227,7 +239,11 @@ pub fn standard_job() -> Vec<Event> {
             part: None,
         })),
         Event::Tool(tool(1, "6 mm End Mill", 6.0, false)),
-        Event::ToolpathStart(ToolpathStart { name: "Pocket".into(), notes: "helical entry, arcs both ways".into(), ..ToolpathStart::default() }),
+        Event::ToolpathStart(ToolpathStart {
+            name: "Pocket".into(),
+            notes: "helical entry, arcs both ways".into(),
+            ..ToolpathStart::default()
+        }),
         rapid(50.0, 40.0, 5.0),
         feed(50.0, 40.0, 0.5, Intent::Plunge),
         arc(ArcDir::Ccw, 50.0, 40.0, -1.5, 45.0, 40.0, Intent::Plunge),
@@ -240,7 +256,11 @@ pub fn standard_job() -> Vec<Event> {
         feed(90.0, 80.0, 0.0, Intent::Retract),
         rapid(90.0, 80.0, 5.0),
         Event::ToolpathEnd,
-        Event::ToolpathStart(ToolpathStart { name: "Profile".into(), notes: "same tool".into(), ..ToolpathStart::default() }),
+        Event::ToolpathStart(ToolpathStart {
+            name: "Profile".into(),
+            notes: "same tool".into(),
+            ..ToolpathStart::default()
+        }),
         rapid(10.0, 10.0, 5.0),
         feed(10.0, 10.0, -2.0, Intent::Plunge),
         feed(10.0, 20.0, -2.0, Intent::LeadIn),
@@ -250,7 +270,11 @@ pub fn standard_job() -> Vec<Event> {
         rapid(70.0, 0.0, 5.0),
         Event::ToolpathEnd,
         Event::Tool(tool(2, "3 mm Ball Nose", 3.0, false)),
-        Event::ToolpathStart(ToolpathStart { name: "Ball finish".into(), notes: String::new(), ..ToolpathStart::default() }),
+        Event::ToolpathStart(ToolpathStart {
+            name: "Ball finish".into(),
+            notes: String::new(),
+            ..ToolpathStart::default()
+        }),
         rapid(20.0, 100.0, 5.0),
         feed(20.0, 100.0, -0.5, Intent::Plunge),
         feed(40.0, 102.0, -0.8, Intent::Cut),
@@ -260,7 +284,11 @@ pub fn standard_job() -> Vec<Event> {
         rapid(20.0, 110.0, 5.0),
         Event::ToolpathEnd,
         Event::Tool(tool(3, "Laser", 0.2, true)),
-        Event::ToolpathStart(ToolpathStart { name: "Laser engrave".into(), notes: "jet tool".into(), ..ToolpathStart::default() }),
+        Event::ToolpathStart(ToolpathStart {
+            name: "Laser engrave".into(),
+            notes: "jet tool".into(),
+            ..ToolpathStart::default()
+        }),
         rapid(100.0, 100.0, 0.0),
         Event::Power(Power { value: 80.0 }),
         Event::JetOn,

@@ -72,10 +72,6 @@ fn streamed_positions_match_the_held_text() {
         if !text.is_char_boundary(offset.min(text.len())) {
             continue;
         }
-        assert_eq!(
-            streamed.line_column(streamed_id, offset),
-            held.line_column(held_id, offset),
-            "offset {offset}"
-        );
+        assert_eq!(streamed.line_column(streamed_id, offset), held.line_column(held_id, offset), "offset {offset}");
     }
 }

@@ -33,10 +33,13 @@ fn corpus_posts() -> Vec<(PathBuf, Post)> {
     paths.extend(files(&root.join("cimco"), "js"));
     paths.extend(files(&root.join("vcpost"), "VcPost"));
     paths.extend(files(&root.join("postp"), "VcPost"));
-    paths.into_iter().map(|p| {
-        let post = compile(&p).unwrap_or_else(|e| panic!("{e}"));
-        (p, post)
-    }).collect()
+    paths
+        .into_iter()
+        .map(|p| {
+            let post = compile(&p).unwrap_or_else(|e| panic!("{e}"));
+            (p, post)
+        })
+        .collect()
 }
 
 fn read_events(path: &Path) -> Vec<Event> {
@@ -80,7 +83,8 @@ fn write(path: &Path, events: &[Event], syntax: Syntax) {
 }
 
 fn post(post: &Post, toolpath: &Path) -> Result<Vec<Vec<u8>>, String> {
-    post_parts(post, toolpath).map_err(|e| e.lines().skip(1).map(|l| l.split_whitespace().next().unwrap_or("")).collect::<Vec<_>>().join(" "))
+    post_parts(post, toolpath)
+        .map_err(|e| e.lines().skip(1).map(|l| l.split_whitespace().next().unwrap_or("")).collect::<Vec<_>>().join(" "))
 }
 
 #[test]
@@ -101,9 +105,10 @@ fn json_lines_toolpaths_post_byte_identically_to_ron() {
             write(&ron, &events, Syntax::Ron);
             write(&jsonl, &events, Syntax::JsonLines);
             let from_json = read_events(&jsonl);
-            let same_bits = read_events(&ron).iter().zip(&from_json).all(|(a, b)| {
-                serde_json::to_value(a).ok() == serde_json::to_value(b).ok() && a == b
-            });
+            let same_bits = read_events(&ron)
+                .iter()
+                .zip(&from_json)
+                .all(|(a, b)| serde_json::to_value(a).ok() == serde_json::to_value(b).ok() && a == b);
             if !same_bits || from_json.len() != events.len() {
                 failures.push(format!("{} ({variant}): JSON Lines read back different events", stem(toolpath)));
             }
@@ -117,9 +122,12 @@ fn json_lines_toolpaths_post_byte_identically_to_ron() {
                             let (a, b) = (a.concat(), b.concat());
                             let (la, lb) = (golden_common::lines(&a), golden_common::lines(&b));
                             let i = la.iter().zip(&lb).position(|(x, y)| x != y).unwrap_or(la.len().min(lb.len()));
-                            format!("line {}: RON `{}`, JSON Lines `{}`", i + 1,
+                            format!(
+                                "line {}: RON `{}`, JSON Lines `{}`",
+                                i + 1,
                                 la.get(i).map_or(String::new(), |l| golden_common::show(l)),
-                                lb.get(i).map_or(String::new(), |l| golden_common::show(l)))
+                                lb.get(i).map_or(String::new(), |l| golden_common::show(l))
+                            )
                         }
                         _ => format!("RON {a:?}, JSON Lines {b:?}"),
                     };

@@ -13,7 +13,8 @@ const NATIVE_JS: &str = "var linebreak = \"\\n\";\nfunction onOpen() { return \"
 /// An object table makes `onLinear` a script (run by Rhai).
 const SCRIPT_JS: &str = "var linebreak = \"\\n\";\nvar seen = {count: 0};\nfunction onOpen() { return \"%\\n\"; }\nfunction onLinear(x, y, z, feed) {\n  var s = \"x\";\n  while (true) { s = s + s; seen.count = s.length; }\n  return \"G1\\n\";\n}\n";
 
-const GROW_VCPOST: &str = "Sub GOTO\n  Dim S\n  S = \"x\"\n  Do While True\n    S = S & S\n  Loop\n  Out \"<N> G1<X>\"\nEnd Sub\n";
+const GROW_VCPOST: &str =
+    "Sub GOTO\n  Dim S\n  S = \"x\"\n  Do While True\n    S = S & S\n  Loop\n  Out \"<N> G1<X>\"\nEnd Sub\n";
 
 /// Growing by a little each step: every step copies the whole text, so
 /// long text costs steps by its length and the step budget stops it soon.
@@ -80,7 +81,8 @@ fn the_scripted_post_really_runs_as_a_script() {
     let post = compiled.post.unwrap();
     let f = post.functions.iter().find(|f| f.name == "onLinear").unwrap();
     assert!(matches!(f.body, postc_ir::Body::Script(_)));
-    let f = postc_frontends::compile_post_bytes(Path::new("n.js"), NATIVE_JS.as_bytes(), None, &mut sources).post.unwrap();
+    let f =
+        postc_frontends::compile_post_bytes(Path::new("n.js"), NATIVE_JS.as_bytes(), None, &mut sources).post.unwrap();
     let f = f.functions.iter().find(|f| f.name == "onLinear").unwrap();
     assert!(matches!(f.body, postc_ir::Body::Native(_)));
 }

@@ -83,14 +83,7 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            code,
-            severity,
-            message: message.into(),
-            labels: Vec::new(),
-            notes: Vec::new(),
-            help: None,
-        }
+        Diagnostic { code, severity, message: message.into(), labels: Vec::new(), notes: Vec::new(), help: None }
     }
 
     pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
@@ -129,11 +122,7 @@ impl Diagnostic {
 
     /// The primary label's span, if any.
     pub fn primary_span(&self) -> Option<Span> {
-        self.labels
-            .iter()
-            .find(|l| l.primary)
-            .or(self.labels.first())
-            .map(|l| l.span)
+        self.labels.iter().find(|l| l.primary).or(self.labels.first()).map(|l| l.span)
     }
 }
 
@@ -240,7 +229,12 @@ impl SourceMap {
 
     /// Adds a file that is streamed from disk and not held in memory.
     pub fn add_streamed(&mut self, path: impl Into<String>) -> FileId {
-        self.files.push(SourceFile { name: path.into(), text: None, line_starts: Vec::new(), streamed: OnceLock::new() });
+        self.files.push(SourceFile {
+            name: path.into(),
+            text: None,
+            line_starts: Vec::new(),
+            streamed: OnceLock::new(),
+        });
         FileId(self.files.len() as u32 - 1)
     }
 
@@ -279,9 +273,7 @@ impl SourceMap {
                 let offset = offset.min(text.len());
                 let line = f.line_starts.partition_point(|&s| s <= offset).saturating_sub(1);
                 let start = f.line_starts[line];
-                let column = text
-                    .get(start..offset)
-                    .map_or(offset - start, |s| s.chars().count());
+                let column = text.get(start..offset).map_or(offset - start, |s| s.chars().count());
                 Some((line + 1, column + 1))
             }
             None => {
@@ -313,10 +305,10 @@ impl<'a> Files<'a> for SourceMap {
     fn line_range(&'a self, id: FileId, line_index: usize) -> Result<std::ops::Range<usize>, files::Error> {
         let f = self.files.get(id.0 as usize).ok_or(files::Error::FileMissing)?;
         let text = f.text.as_deref().ok_or(files::Error::FileMissing)?;
-        let start = *f.line_starts.get(line_index).ok_or(files::Error::LineTooLarge {
-            given: line_index,
-            max: f.line_starts.len().saturating_sub(1),
-        })?;
+        let start = *f
+            .line_starts
+            .get(line_index)
+            .ok_or(files::Error::LineTooLarge { given: line_index, max: f.line_starts.len().saturating_sub(1) })?;
         let end = f.line_starts.get(line_index + 1).copied().unwrap_or(text.len());
         Ok(start..end)
     }

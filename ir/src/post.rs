@@ -431,10 +431,7 @@ sections! {
 impl Section {
     /// The section a Vectric `begin` name (case-insensitive) stands for.
     pub fn from_name(name: &str) -> Option<Section> {
-        Section::ALL
-            .iter()
-            .copied()
-            .find(|s| s.name().eq_ignore_ascii_case(name))
+        Section::ALL.iter().copied().find(|s| s.name().eq_ignore_ascii_case(name))
     }
 }
 
@@ -446,8 +443,6 @@ impl Post {
 
     /// The handler for a section, if the post has one.
     pub fn section(&self, section: Section) -> Option<&Handler> {
-        self.handlers
-            .iter()
-            .find(|h| h.key == HandlerKey::Section(section))
+        self.handlers.iter().find(|h| h.key == HandlerKey::Section(section))
     }
 }

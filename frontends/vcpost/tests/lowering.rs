@@ -273,5 +273,10 @@ fn an_unclosed_register_in_out_is_an_error_at_its_place() {
         })
         .collect();
     use postc_ir::Severity::Error;
-    assert_eq!(found, vec![("VC038", Error, 6, 21, 6, 23), ("VC038", Error, 7, 14, 7, 23)], "{}", sources.render(&diagnostics, false));
+    assert_eq!(
+        found,
+        vec![("VC038", Error, 6, 21, 6, 23), ("VC038", Error, 7, 14, 7, 23)],
+        "{}",
+        sources.render(&diagnostics, false)
+    );
 }

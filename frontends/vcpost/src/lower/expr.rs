@@ -8,7 +8,8 @@
 //! replaces by name.
 
 use postc_ir::{
-    BinaryOp as IrOp, Body, Builtin, Diagnostic, Expr as IrExpr, Function, Piece, Span, Stmt as IrStmt, UnaryOp as IrUnary,
+    BinaryOp as IrOp, Body, Builtin, Diagnostic, Expr as IrExpr, Function, Piece, Span, Stmt as IrStmt,
+    UnaryOp as IrUnary,
 };
 
 use postc_ir::post::FunctionId;

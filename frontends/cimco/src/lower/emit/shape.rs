@@ -65,7 +65,9 @@ pub(super) fn region_local(body: &[Stmt], params: usize, slots: usize) -> Option
 }
 
 pub(super) fn stmt_mentions(s: &Stmt, k: u16) -> bool {
-    matches!(s, Stmt::Assign(Place::Local(x), _) if *x == k) || reads(std::slice::from_ref(s), k) || assigns(std::slice::from_ref(s), k)
+    matches!(s, Stmt::Assign(Place::Local(x), _) if *x == k)
+        || reads(std::slice::from_ref(s), k)
+        || assigns(std::slice::from_ref(s), k)
 }
 
 pub(super) fn cond_ok(c: &Expr, k: u16) -> bool {
@@ -94,7 +96,9 @@ pub(super) fn leaf_only(e: &Expr, k: u16) -> bool {
 pub(super) fn reads(body: &[Stmt], k: u16) -> bool {
     body.iter().any(|s| match s {
         Stmt::Return(Some(e)) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) => expr_reads(e, k),
-        Stmt::If { branches, otherwise } => branches.iter().any(|(c, b)| expr_reads(c, k) || reads(b, k)) || reads(otherwise, k),
+        Stmt::If { branches, otherwise } => {
+            branches.iter().any(|(c, b)| expr_reads(c, k) || reads(b, k)) || reads(otherwise, k)
+        }
         Stmt::While { cond, body, .. } => expr_reads(cond, k) || reads(body, k),
         _ => false,
     })
@@ -193,7 +197,9 @@ pub(super) fn has_loop(body: &[Stmt]) -> bool {
 pub(super) fn count(body: &[Stmt]) -> usize {
     body.iter()
         .map(|s| match s {
-            Stmt::If { branches, otherwise } => 1 + branches.iter().map(|(_, b)| count(b)).sum::<usize>() + count(otherwise),
+            Stmt::If { branches, otherwise } => {
+                1 + branches.iter().map(|(_, b)| count(b)).sum::<usize>() + count(otherwise)
+            }
             Stmt::While { body, .. } => 1 + count(body),
             _ => 1,
         })
@@ -232,7 +238,9 @@ pub(super) fn all_returns(body: &[Stmt], ok: &dyn Fn(&Expr) -> bool) -> bool {
     body.iter().all(|s| match s {
         Stmt::Return(Some(e)) => ok(e),
         Stmt::Return(None) => false,
-        Stmt::If { branches, otherwise } => branches.iter().all(|(_, b)| all_returns(b, ok)) && all_returns(otherwise, ok),
+        Stmt::If { branches, otherwise } => {
+            branches.iter().all(|(_, b)| all_returns(b, ok)) && all_returns(otherwise, ok)
+        }
         Stmt::While { body, .. } => all_returns(body, ok),
         _ => true,
     })

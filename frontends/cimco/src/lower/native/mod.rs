@@ -101,7 +101,10 @@ impl Native<'_, '_> {
                 let mut b = Vec::new();
                 self.stmt(body, &mut b)?;
                 let c = self.expr(cond)?;
-                b.push(IrStmt::If { branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])], otherwise: vec![] });
+                b.push(IrStmt::If {
+                    branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])],
+                    otherwise: vec![],
+                });
                 out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span) });
             }
             StmtKind::For { init, test, update, body } => {
@@ -319,7 +322,6 @@ impl Native<'_, '_> {
             _ => return None,
         })
     }
-
 }
 
 /// A value as a number, unless it surely is one.
@@ -337,7 +339,9 @@ pub fn to_number(v: Ir) -> Ir {
 /// number is NaN, not 0 as in BASIC).
 pub fn binary_js(op: IrBin, a: Ir, b: Ir) -> Ir {
     match op {
-        IrBin::Sub | IrBin::Mul | IrBin::Div | IrBin::Rem => Ir::Binary(op, Box::new(to_number(a)), Box::new(to_number(b))),
+        IrBin::Sub | IrBin::Mul | IrBin::Div | IrBin::Rem => {
+            Ir::Binary(op, Box::new(to_number(a)), Box::new(to_number(b)))
+        }
         _ => Ir::Binary(op, Box::new(a), Box::new(b)),
     }
 }
@@ -389,7 +393,11 @@ fn breaks_switch(s: &Stmt) -> bool {
         StmtKind::If { branches, otherwise } => {
             branches.iter().any(|b| breaks_switch(&b.body)) || otherwise.as_ref().is_some_and(|o| breaks_switch(o))
         }
-        StmtKind::Switch { .. } | StmtKind::While { .. } | StmtKind::DoWhile { .. } | StmtKind::For { .. } | StmtKind::ForIn { .. } => false,
+        StmtKind::Switch { .. }
+        | StmtKind::While { .. }
+        | StmtKind::DoWhile { .. }
+        | StmtKind::For { .. }
+        | StmtKind::ForIn { .. } => false,
         StmtKind::Try { .. } => true,
         _ => false,
     }

@@ -204,7 +204,9 @@ impl Gen<'_, '_> {
     /// jump or error goes on, as JavaScript does.
     fn try_stmt(&mut self, block: &[Stmt], handler: Option<&CatchClause>, finalizer: Option<&[Stmt]>) {
         let (c, v, e) = (self.temp("c"), self.temp("v"), self.temp("e"));
-        let record = format!("let {c}_k = __jump_kind({e});\nif {c}_k > 0 {{\n{c} = {c}_k;\n{v} = __jump_value({e});\n}} else {{\n");
+        let record = format!(
+            "let {c}_k = __jump_kind({e});\nif {c}_k > 0 {{\n{c} = {c}_k;\n{v} = __jump_value({e});\n}} else {{\n"
+        );
         self.w(&format!("let {c} = 0;\nlet {v} = ();\ntry {{\n"));
         self.jumps.push(Jump::Try);
         for s in block {
