@@ -48,7 +48,7 @@ fn entry(name: &str, what: &str, doc: &str) -> String {
 pub fn hover(dialect: Dialect, text: &str, at: usize) -> Option<Hover> {
     let (start, end) = word_at(text, at)?;
     let word = &text[start..end];
-    let before = text[..start].as_bytes().last().copied();
+    let before = text.as_bytes()[..start].last().copied();
     let (line_start, _) = line_around(text, start);
     let line_head = text[line_start..start].trim();
     let markdown = match dialect {
@@ -99,10 +99,10 @@ fn cimco_hover(text: &str, word: &str) -> Option<String> {
 }
 
 fn vcpost_hover(text: &str, word: &str, before: Option<u8>) -> Option<String> {
-    if before == Some(b'.') {
-        if let Some((n, d)) = lookup(vocab::VCPOST_PROPERTIES, word) {
-            return Some(entry(n, "register property", d));
-        }
+    if before == Some(b'.')
+        && let Some((n, d)) = lookup(vocab::VCPOST_PROPERTIES, word)
+    {
+        return Some(entry(n, "register property", d));
     }
     if let Some((line, _, _)) = vcpost_definition(text, word) {
         let mut s = format!("```vb\n{}\n```", line.trim());
@@ -155,10 +155,10 @@ fn cimco_definition<'t>(text: &'t str, name: &str) -> Option<(&'t str, usize, us
                 (line, start, start + n.len())
             })
         };
-        if let Some(rest) = strip_keyword(trimmed, "function") {
-            if let Some(hit) = found(rest) {
-                return Some(hit);
-            }
+        if let Some(rest) = strip_keyword(trimmed, "function")
+            && let Some(hit) = found(rest)
+        {
+            return Some(hit);
         }
         if fallback.is_some() {
             continue;

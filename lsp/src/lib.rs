@@ -263,12 +263,13 @@ pub fn path_of(uri: &str) -> PathBuf {
     let mut i = 0;
     while i < bytes.len() {
         let hex = |b: u8| (b as char).to_digit(16);
-        if bytes[i] == b'%' && i + 2 < bytes.len() {
-            if let (Some(h), Some(l)) = (hex(bytes[i + 1]), hex(bytes[i + 2])) {
-                out.push((h * 16 + l) as u8);
-                i += 3;
-                continue;
-            }
+        if bytes[i] == b'%'
+            && i + 2 < bytes.len()
+            && let (Some(h), Some(l)) = (hex(bytes[i + 1]), hex(bytes[i + 2]))
+        {
+            out.push((h * 16 + l) as u8);
+            i += 3;
+            continue;
         }
         out.push(bytes[i]);
         i += 1;
@@ -339,4 +340,25 @@ pub fn convert(path: &Path, text: &str, sources: &SourceMap, diagnostics: &[post
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_uris_become_paths() {
+        assert_eq!(path_of("file:///home/a/Pi%C3%A8ce%201.pp"), PathBuf::from("/home/a/Pièce 1.pp"));
+        assert_eq!(path_of("file:///C:/posts/x.pp"), PathBuf::from("C:/posts/x.pp"));
+        assert_eq!(path_of("untitled:Untitled-1"), PathBuf::from("untitled:Untitled-1"));
+        assert_eq!(path_of("file:///a%2"), PathBuf::from("/a%2"));
+    }
+
+    #[test]
+    fn dialects_from_extensions() {
+        assert_eq!(dialect_of("file:///a/b.PP"), Some(Dialect::Vectric));
+        assert_eq!(dialect_of("file:///a/b.VcPost"), Some(Dialect::VcPost));
+        assert_eq!(dialect_of("file:///a/b.js"), Some(Dialect::Cimco));
+        assert_eq!(dialect_of("file:///a.d/b"), None);
+    }
 }
