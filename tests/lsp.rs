@@ -246,6 +246,15 @@ fn an_editor_session() {
     c.notify("textDocument/didClose", json!({"textDocument": {"uri": vc}}));
     assert_eq!(c.diagnostics(vc), Vec::<Value>::new());
 
+    // A request the server does not offer: MethodNotFound, and the server
+    // goes on.
+    c.send(json!({"jsonrpc": "2.0", "id": 999, "method": "textDocument/formatting", "params": {}}));
+    let answer = c.recv();
+    assert_eq!(answer["id"], 999);
+    assert_eq!(answer["error"]["code"], -32601, "{answer}");
+    let hover = c.at("textDocument/hover", js, 0, 20);
+    assert!(hover["contents"]["value"].as_str().is_some());
+
     // shutdown, exit: the process ends with status 0.
     assert_eq!(c.request("shutdown", Value::Null), Value::Null);
     c.notify("exit", Value::Null);

@@ -195,6 +195,44 @@ fn vcpost_definition<'t>(text: &'t str, name: &str) -> Option<(&'t str, usize, u
     None
 }
 
+/// The functions and top-level `var`s a CIMCO post defines, with their
+/// lines (host names the tables describe are left to the tables).
+fn cimco_names(text: &str) -> Vec<(&str, CompletionKind, &str)> {
+    let mut out: Vec<(&str, CompletionKind, &str)> = Vec::new();
+    for (_, line) in lines(text) {
+        let (rest, kind) = if let Some(rest) = strip_keyword(line, "function") {
+            (rest, CompletionKind::Function)
+        } else if let Some(rest) = strip_keyword(line, "var") {
+            (rest, CompletionKind::Variable)
+        } else {
+            continue;
+        };
+        let name = leading_name(rest);
+        let known = vocab::CIMCO_FUNCTIONS.iter().any(|f| f.0 == name) || vocab::CIMCO_GLOBALS.iter().any(|g| g.0 == name);
+        if !name.is_empty() && !known && !out.iter().any(|o| o.0 == name) {
+            out.push((name, kind, line));
+        }
+    }
+    out
+}
+
+/// The Subs and Functions a VcPost post defines, with their lines.
+fn vcpost_subs(text: &str) -> Vec<(&str, &str)> {
+    let mut out: Vec<(&str, &str)> = Vec::new();
+    for (_, line) in lines(text) {
+        let mut rest = line.trim_start();
+        for scope in ["Public", "Private"] {
+            rest = strip_keyword(rest, scope).unwrap_or(rest);
+        }
+        let Some(rest) = strip_keyword(rest, "Sub").or_else(|| strip_keyword(rest, "Function")) else { continue };
+        let name = leading_name(rest);
+        if !name.is_empty() && !out.iter().any(|o| o.0.eq_ignore_ascii_case(name)) {
+            out.push((name, line));
+        }
+    }
+    out
+}
+
 /// Where the name at a byte offset is defined in the same document.
 pub fn definition(dialect: Dialect, text: &str, at: usize) -> Option<(usize, usize)> {
     let (start, end) = word_at(text, at)?;
@@ -260,6 +298,9 @@ pub fn completion(dialect: Dialect, text: &str, at: usize) -> Vec<Completion> {
                 for (n, d) in vocab::CIMCO_GLOBALS {
                     add(n, CompletionKind::Constant, d);
                 }
+                for (name, kind, line) in cimco_names(text) {
+                    add(name, kind, line.trim());
+                }
             }
         }
         Dialect::VcPost => {
@@ -284,6 +325,9 @@ pub fn completion(dialect: Dialect, text: &str, at: usize) -> Vec<Completion> {
                 }
                 for (n, d) in vocab::VCPOST_REGISTERS {
                     add(n, CompletionKind::Variable, d);
+                }
+                for (name, line) in vcpost_subs(text) {
+                    add(name, CompletionKind::Function, line.trim());
                 }
             }
         }
@@ -361,6 +405,11 @@ mod tests {
         let (s, e) = definition(Dialect::VcPost, vb, vb.find("Helper").unwrap()).unwrap();
         assert_eq!(&vb[s..e], "Helper");
         assert!(s > vb.find("End Sub").unwrap());
+        let names: Vec<String> = completion(Dialect::VcPost, vb, vb.len()).into_iter().map(|c| c.label).collect();
+        assert!(names.contains(&"Helper".to_owned()) && names.contains(&"Sqr".to_owned()), "{names:?}");
+        let names: Vec<String> = completion(Dialect::Cimco, js, js.len()).into_iter().map(|c| c.label).collect();
+        assert!(names.contains(&"writeBlock".to_owned()) && names.contains(&"xyzFormat".to_owned()), "{names:?}");
+        assert!(names.contains(&"MOVEMENT_RAPID".to_owned()) && names.iter().filter(|n| *n == "onLinear").count() == 1);
         let h = hover(Dialect::VcPost, vb, vb.find("<X>").unwrap() + 1).unwrap();
         assert!(h.markdown.contains("end point"), "{}", h.markdown);
     }

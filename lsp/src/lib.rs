@@ -140,6 +140,11 @@ fn handle_notification(docs: &mut HashMap<String, Document>, not: Notification) 
 
 fn handle_request(docs: &HashMap<String, Document>, req: Request) -> Response {
     let id = req.id.clone();
+    let known = [HoverRequest::METHOD, GotoDefinition::METHOD, Completion::METHOD, CodeActionRequest::METHOD];
+    if !known.contains(&req.method.as_str()) {
+        let message = format!("postc lsp does not handle `{}`", req.method);
+        return Response::new_err(id, lsp_server::ErrorCode::MethodNotFound as i32, message);
+    }
     match dispatch(docs, req) {
         Ok(value) => Response { id, result: Some(value), error: None },
         Err(message) => Response::new_err(id, lsp_server::ErrorCode::InvalidParams as i32, message),
@@ -286,8 +291,21 @@ pub fn path_of(uri: &str) -> PathBuf {
 fn diagnose(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
     let path = path_of(uri.as_str());
     let mut sources = SourceMap::new();
-    let compiled = postc_frontends::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources);
-    convert(&path, &doc.text, &sources, &compiled.diagnostics)
+    // A frontend bug must not take the editor's server down with it: the
+    // panic becomes one diagnostic at the top of the document.
+    let compiled = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        postc_frontends::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources)
+    }));
+    match compiled {
+        Ok(compiled) => convert(&path, &doc.text, &sources, &compiled.diagnostics),
+        Err(_) => vec![Diagnostic {
+            range: Range::default(),
+            severity: Some(DiagnosticSeverity::ERROR),
+            source: Some("postc".into()),
+            message: "postc failed while checking this post (a postc bug: please report it with the post)".into(),
+            ..Diagnostic::default()
+        }],
+    }
 }
 
 /// Converts postc diagnostics into LSP ones for the document at `path`.
