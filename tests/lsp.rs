@@ -216,6 +216,16 @@ fn an_editor_session() {
     );
     assert_eq!(none, json!([]));
 
+    // A Vectric post whose POST_BASE (read from disk, next to it) has an
+    // error: shown at the top of the document, naming the base's line.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("base.pp"), "UNITS = \"MM\"\nVAR X_POSITION = [X|Q|X|1.3]\nbegin HEADER\n\"G0 [X]\"\n").unwrap();
+    let child = format!("file://{}/child.pp", dir.path().display());
+    let d = c.open(&child, "vectric", "POST_BASE = \"base.pp\"\nbegin FOOTER\n\"M30\"\n");
+    let base = find(&d, "PP004");
+    assert_eq!(base["range"], range(0, 0, 0, 0), "{base}");
+    assert!(base["message"].as_str().unwrap().contains("base.pp:2:21: `Q` is not A or C"), "{base}");
+
     // A CIMCO post: its syntax error, a hover on a host function, a
     // definition of a format.
     let js = "file:///work/posts/mill.js";
