@@ -188,6 +188,10 @@ fn an_editor_session() {
     for s in ["HEADER", "FOOTER", "FEED_MOVE", "CW_ARC_MOVE", "TOOLCHANGE"] {
         assert!(after_begin.contains(&s.to_owned()), "{s} missing from {after_begin:?}");
     }
+    // Typing the blank after `begin` asks too (trigger character " ").
+    let typed = json!({"textDocument": {"uri": pp}, "position": {"line": 4, "character": 6},
+                       "context": {"triggerKind": 2, "triggerCharacter": " "}});
+    assert_eq!(labels(&c.request("textDocument/completion", typed)), after_begin);
     let after_bracket = labels(&c.at("textDocument/completion", pp, 5, 5));
     for l in ["X", "Y", "F", "S", "T", "TOOLNAME", "SAFEZ"] {
         assert!(after_bracket.contains(&l.to_owned()), "{l} missing from {after_bracket:?}");
@@ -250,6 +254,10 @@ fn an_editor_session() {
     let def = c.at("textDocument/definition", vc, 2, 4);
     assert_eq!(def["range"], range(4, 4, 4, 10), "{def}");
     let regs = labels(&c.at("textDocument/completion", vc, 1, 11));
+    // A blank typed in a VcPost line offers nothing.
+    let typed = json!({"textDocument": {"uri": vc}, "position": {"line": 2, "character": 2},
+                       "context": {"triggerKind": 2, "triggerCharacter": " "}});
+    assert!(labels(&c.request("textDocument/completion", typed)).is_empty());
     assert!(regs.contains(&"X".to_owned()) && regs.contains(&"Minor".to_owned()), "{regs:?}");
 
     // Closing a document clears its diagnostics.

@@ -46,6 +46,11 @@ fn entry(name: &str, what: &str, doc: &str) -> String {
 
 /// The hover at a byte offset.
 pub fn hover(dialect: Dialect, text: &str, at: usize) -> Option<Hover> {
+    // On the opening `[` or `<` of a label or register: the name after it.
+    let at = match text.as_bytes().get(at) {
+        Some(b'[' | b'<') => at + 1,
+        _ => at,
+    };
     let (start, end) = word_at(text, at)?;
     let word = &text[start..end];
     let before = text.as_bytes()[..start].last().copied();
@@ -249,14 +254,20 @@ pub fn definition(dialect: Dialect, text: &str, at: usize) -> Option<(usize, usi
     found.map(|(_, s, e)| (s, e))
 }
 
-/// Completions at a byte offset.
-pub fn completion(dialect: Dialect, text: &str, at: usize) -> Vec<Completion> {
+/// Completions at a byte offset. `after_space`: the editor asks because
+/// a blank was typed; only a section name after `begin ` (or a `VAR`
+/// name after `VAR `) is worth offering then.
+pub fn completion(dialect: Dialect, text: &str, at: usize, after_space: bool) -> Vec<Completion> {
     let at = at.min(text.len());
     let (line_start, _) = line_around(text, at);
     let head = &text[line_start..at];
     let word_start = head.len() - head.bytes().rev().take_while(|&b| crate::text::is_name_byte(b)).count();
     let before_word = &head[..word_start];
     let mut out = Vec::new();
+    let keyword_before = ["begin", "var"].iter().any(|k| before_word.trim().eq_ignore_ascii_case(k));
+    if after_space && (dialect != Dialect::Vectric || !keyword_before) {
+        return Vec::new();
+    }
     let mut add = |label: &str, kind, detail: &str| {
         out.push(Completion { label: label.to_owned(), kind, detail: detail.to_owned() })
     };
@@ -405,12 +416,13 @@ mod tests {
         let (s, e) = definition(Dialect::VcPost, vb, vb.find("Helper").unwrap()).unwrap();
         assert_eq!(&vb[s..e], "Helper");
         assert!(s > vb.find("End Sub").unwrap());
-        let names: Vec<String> = completion(Dialect::VcPost, vb, vb.len()).into_iter().map(|c| c.label).collect();
+        let names: Vec<String> = completion(Dialect::VcPost, vb, vb.len(), false).into_iter().map(|c| c.label).collect();
         assert!(names.contains(&"Helper".to_owned()) && names.contains(&"Sqr".to_owned()), "{names:?}");
-        let names: Vec<String> = completion(Dialect::Cimco, js, js.len()).into_iter().map(|c| c.label).collect();
+        let names: Vec<String> = completion(Dialect::Cimco, js, js.len(), false).into_iter().map(|c| c.label).collect();
         assert!(names.contains(&"writeBlock".to_owned()) && names.contains(&"xyzFormat".to_owned()), "{names:?}");
         assert!(names.contains(&"MOVEMENT_RAPID".to_owned()) && names.iter().filter(|n| *n == "onLinear").count() == 1);
-        let h = hover(Dialect::VcPost, vb, vb.find("<X>").unwrap() + 1).unwrap();
+        assert!(completion(Dialect::Cimco, js, js.len(), true).is_empty());
+        let h = hover(Dialect::VcPost, vb, vb.find("<X>").unwrap()).unwrap();
         assert!(h.markdown.contains("end point"), "{}", h.markdown);
     }
 }

@@ -191,7 +191,8 @@ fn dispatch(docs: &HashMap<String, Document>, req: Request) -> Result<serde_json
             let pos = p.text_document_position;
             let Some((doc, dialect)) = doc_of(&pos.text_document.uri) else { return Ok(serde_json::Value::Null) };
             let at = text::offset(&doc.text, pos.position);
-            let items = analysis::completion(dialect, &doc.text, at)
+            let after_space = p.context.is_some_and(|c| c.trigger_character.as_deref() == Some(" "));
+            let items = analysis::completion(dialect, &doc.text, at, after_space)
                 .into_iter()
                 .map(|c| CompletionItem {
                     label: c.label,
