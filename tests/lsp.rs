@@ -127,8 +127,10 @@ fn find<'a>(diagnostics: &'a [Value], code: &str) -> &'a Value {
 /// column 19 (1-based, characters), LSP wants character 19 (0-based,
 /// UTF-16 units).
 const PP_BROKEN: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|Q|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X] [QQ]\"\n";
-const PP_FIXED: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X]\"\nbegin FEED_MOVE\n\"G1 [X]\"\n";
-const PP_TYPO: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"G0 [X]\"\nbegin FEED_MOVEE\n\"G1 [X]\"\n";
+const PP_FIXED: &str =
+    "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X]\"\nbegin FEED_MOVE\n\"G1 [X]\"\n";
+const PP_TYPO: &str =
+    "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"G0 [X]\"\nbegin FEED_MOVEE\n\"G1 [X]\"\n";
 
 const JS: &str = "var xyzFormat = createFormat({decimals: 3});\nfunction onLinear(x, y, z, movement) {\n  return \"G1\" + xyzFormat.format(x);\n}\nfunction onOpen( {\n";
 const VCPOST: &str = "Sub GOTO\n  Out \"G1 <X> <Y>\"\n  Helper\nEnd Sub\nSub Helper\n  If X > 1 Then\nEnd Sub\n";
@@ -223,7 +225,11 @@ fn an_editor_session() {
     // A Vectric post whose POST_BASE (read from disk, next to it) has an
     // error: shown at the top of the document, naming the base's line.
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("base.pp"), "UNITS = \"MM\"\nVAR X_POSITION = [X|Q|X|1.3]\nbegin HEADER\n\"G0 [X]\"\n").unwrap();
+    std::fs::write(
+        dir.path().join("base.pp"),
+        "UNITS = \"MM\"\nVAR X_POSITION = [X|Q|X|1.3]\nbegin HEADER\n\"G0 [X]\"\n",
+    )
+    .unwrap();
     let child = format!("file://{}/child.pp", dir.path().display());
     let d = c.open(&child, "vectric", "POST_BASE = \"base.pp\"\nbegin FOOTER\n\"M30\"\n");
     let base = find(&d, "PP004");

@@ -174,7 +174,10 @@ fn cimco_definition<'t>(text: &'t str, name: &str) -> Option<(&'t str, usize, us
             .unwrap_or(trimmed);
         if let Some(hit) = found(rest) {
             let after = rest[name.len()..].trim_start();
-            if (after.starts_with('=') && !after.starts_with("==")) || after.starts_with(';') || rest.len() != trimmed.len() {
+            if (after.starts_with('=') && !after.starts_with("=="))
+                || after.starts_with(';')
+                || rest.len() != trimmed.len()
+            {
                 fallback = Some(hit);
             }
         }
@@ -213,7 +216,8 @@ fn cimco_names(text: &str) -> Vec<(&str, CompletionKind, &str)> {
             continue;
         };
         let name = leading_name(rest);
-        let known = vocab::CIMCO_FUNCTIONS.iter().any(|f| f.0 == name) || vocab::CIMCO_GLOBALS.iter().any(|g| g.0 == name);
+        let known =
+            vocab::CIMCO_FUNCTIONS.iter().any(|f| f.0 == name) || vocab::CIMCO_GLOBALS.iter().any(|g| g.0 == name);
         if !name.is_empty() && !known && !out.iter().any(|o| o.0 == name) {
             out.push((name, kind, line));
         }
@@ -416,7 +420,8 @@ mod tests {
         let (s, e) = definition(Dialect::VcPost, vb, vb.find("Helper").unwrap()).unwrap();
         assert_eq!(&vb[s..e], "Helper");
         assert!(s > vb.find("End Sub").unwrap());
-        let names: Vec<String> = completion(Dialect::VcPost, vb, vb.len(), false).into_iter().map(|c| c.label).collect();
+        let names: Vec<String> =
+            completion(Dialect::VcPost, vb, vb.len(), false).into_iter().map(|c| c.label).collect();
         assert!(names.contains(&"Helper".to_owned()) && names.contains(&"Sqr".to_owned()), "{names:?}");
         let names: Vec<String> = completion(Dialect::Cimco, js, js.len(), false).into_iter().map(|c| c.label).collect();
         assert!(names.contains(&"writeBlock".to_owned()) && names.contains(&"xyzFormat".to_owned()), "{names:?}");

@@ -29,8 +29,8 @@ use lsp_types::{
     CodeAction, CodeActionKind, CodeActionOrCommand, CodeActionParams, CodeActionProviderCapability, CompletionItem,
     CompletionItemKind, CompletionOptions, CompletionParams, CompletionResponse, Diagnostic, DiagnosticSeverity,
     DidChangeTextDocumentParams, DidCloseTextDocumentParams, DidOpenTextDocumentParams, GotoDefinitionParams,
-    GotoDefinitionResponse, Hover, HoverContents, HoverProviderCapability, Location, MarkupContent,
-    MarkupKind, NumberOrString, OneOf, Position, PublishDiagnosticsParams, Range, ServerCapabilities, ServerInfo,
+    GotoDefinitionResponse, Hover, HoverContents, HoverProviderCapability, Location, MarkupContent, MarkupKind,
+    NumberOrString, OneOf, Position, PublishDiagnosticsParams, Range, ServerCapabilities, ServerInfo,
     TextDocumentSyncCapability, TextDocumentSyncKind, TextEdit, Uri, WorkspaceEdit,
 };
 use postc_ir::{Dialect, Severity, SourceMap};
@@ -180,9 +180,8 @@ fn dispatch(docs: &HashMap<String, Document>, req: Request) -> Result<serde_json
             let uri = pos.text_document.uri;
             let Some((doc, dialect)) = doc_of(&uri) else { return Ok(serde_json::Value::Null) };
             let at = text::offset(&doc.text, pos.position);
-            let def = analysis::definition(dialect, &doc.text, at).map(|(s, e)| {
-                GotoDefinitionResponse::Scalar(Location::new(uri.clone(), text::range(&doc.text, s, e)))
-            });
+            let def = analysis::definition(dialect, &doc.text, at)
+                .map(|(s, e)| GotoDefinitionResponse::Scalar(Location::new(uri.clone(), text::range(&doc.text, s, e))));
             json(serde_json::to_value(def))
         }
         Completion::METHOD => {

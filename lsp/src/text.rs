@@ -93,11 +93,7 @@ pub fn strip_keyword<'a>(s: &'a str, keyword: &str) -> Option<&'a str> {
         return None;
     }
     let rest = &s[keyword.len()..];
-    if rest.starts_with([' ', '\t']) {
-        Some(rest.trim_start())
-    } else {
-        None
-    }
+    if rest.starts_with([' ', '\t']) { Some(rest.trim_start()) } else { None }
 }
 
 /// The leading name of `s` (possibly empty).

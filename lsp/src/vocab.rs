@@ -27,7 +27,10 @@ pub const VECTRIC_SECTIONS: &[(&str, &str)] = &[
     ("CW_HELICAL_ARC_MOVE", "A clockwise arc that also moves in Z."),
     ("FIRST_CCW_HELICAL_ARC_MOVE", "The first counter-clockwise helix after a move of another kind."),
     ("CCW_HELICAL_ARC_MOVE", "A counter-clockwise arc that also moves in Z."),
-    ("FIRST_CW_HELICAL_ARC_PLUNGE_MOVE", "The first clockwise helical plunge (ramping down) after a move of another kind."),
+    (
+        "FIRST_CW_HELICAL_ARC_PLUNGE_MOVE",
+        "The first clockwise helical plunge (ramping down) after a move of another kind.",
+    ),
     ("CW_HELICAL_ARC_PLUNGE_MOVE", "A clockwise helix used to plunge (ramp) into the material."),
     ("FIRST_CCW_HELICAL_ARC_PLUNGE_MOVE", "The first counter-clockwise helical plunge after a move of another kind."),
     ("CCW_HELICAL_ARC_PLUNGE_MOVE", "A counter-clockwise helix used to plunge (ramp) into the material."),
@@ -141,25 +144,73 @@ pub const VECTRIC_GLOBALS: &[(&str, &str)] = &[
 /// CIMCO host functions the post defines (called by the host) or calls.
 /// (name, signature, description)
 pub const CIMCO_FUNCTIONS: &[(&str, &str, &str)] = &[
-    ("onInit", "onInit()", "Called first, before anything else: set up formats, output variables and defaults here. It writes nothing."),
-    ("onOpen", "onOpen(isClipboard)", "Called at the start of the program; returns the opening blocks. isClipboard tells a program from a snippet (postc always passes false)."),
+    (
+        "onInit",
+        "onInit()",
+        "Called first, before anything else: set up formats, output variables and defaults here. It writes nothing.",
+    ),
+    (
+        "onOpen",
+        "onOpen(isClipboard)",
+        "Called at the start of the program; returns the opening blocks. isClipboard tells a program from a snippet (postc always passes false).",
+    ),
     ("onClose", "onClose()", "Called last; returns the closing blocks (M30 and the like)."),
-    ("onLinear", "onLinear(x, y, z, movement) / lathe onLinear(x, z, movement)", "Called for every straight move; movement is MOVEMENT_RAPID, MOVEMENT_CUTTING or MOVEMENT_PLUNGE. Returns the block."),
-    ("onCircular", "onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) / lathe onCircular(cx, cz, ex, ez, isCW, movement)", "Called for every arc with its absolute centre and end point; isCW is true for clockwise (G2). Without it arcs come as short onLinear moves."),
-    ("onCompensation", "onCompensation(comp)", "Called when cutter compensation changes: COMPENSATION_OFF, _LEFT or _RIGHT. Keep it for the next move."),
-    ("getCompensation", "getCompensation()", "Written by the post: returns the compensation code kept by onCompensation (the host's returns \"\")."),
-    ("onDrillingHeader", "onDrillingHeader(drillHeader)", "Called before the holes of a milling drill cycle with the cycle's parameters; save drillHeader for the points."),
+    (
+        "onLinear",
+        "onLinear(x, y, z, movement) / lathe onLinear(x, z, movement)",
+        "Called for every straight move; movement is MOVEMENT_RAPID, MOVEMENT_CUTTING or MOVEMENT_PLUNGE. Returns the block.",
+    ),
+    (
+        "onCircular",
+        "onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) / lathe onCircular(cx, cz, ex, ez, isCW, movement)",
+        "Called for every arc with its absolute centre and end point; isCW is true for clockwise (G2). Without it arcs come as short onLinear moves.",
+    ),
+    (
+        "onCompensation",
+        "onCompensation(comp)",
+        "Called when cutter compensation changes: COMPENSATION_OFF, _LEFT or _RIGHT. Keep it for the next move.",
+    ),
+    (
+        "getCompensation",
+        "getCompensation()",
+        "Written by the post: returns the compensation code kept by onCompensation (the host's returns \"\").",
+    ),
+    (
+        "onDrillingHeader",
+        "onDrillingHeader(drillHeader)",
+        "Called before the holes of a milling drill cycle with the cycle's parameters; save drillHeader for the points.",
+    ),
     ("onDrillingPoint", "onDrillingPoint(x, y)", "Called for each hole of a milling drill cycle."),
     ("onDrillingFooter", "onDrillingFooter()", "Called after the last hole of a milling drill cycle."),
     ("onDrilling", "onDrilling(drillHeader)", "Called for each hole of a turning drill cycle."),
-    ("onToolChange", "onToolChange(tool, name, diameter, spindleSpeed)", "postc extension: called when a toolpath uses another tool."),
+    (
+        "onToolChange",
+        "onToolChange(tool, name, diameter, spindleSpeed)",
+        "postc extension: called when a toolpath uses another tool.",
+    ),
     ("onDwell", "onDwell(seconds)", "postc extension: called for a dwell; without it dwells are skipped."),
     ("onComment", "onComment(text)", "postc extension: called for an operator comment."),
     ("onToolpathEnd", "onToolpathEnd()", "postc extension: called at the end of each toolpath."),
-    ("createFormat", "createFormat({prefix, width, zeropad, decimals, scale, forceDecimal, forceSign})", "Makes a number format: prefix text, minimum width, zero padding, decimals, a scale factor, a forced decimal point and a forced sign."),
-    ("createVariable", "createVariable({prefix, force}, format)", "Makes a modal output variable from a format: it writes its value only when it changed, unless force is true."),
-    ("getFeedrate", "getFeedrate(movement)", "Returns the feed word of the move being posted (\"F1500\"), or \"\" for MOVEMENT_RAPID. A post may define its own."),
-    ("format", "variable.format(value)", "Formats a value with a format or output variable; an output variable returns \"\" when the value did not change."),
+    (
+        "createFormat",
+        "createFormat({prefix, width, zeropad, decimals, scale, forceDecimal, forceSign})",
+        "Makes a number format: prefix text, minimum width, zero padding, decimals, a scale factor, a forced decimal point and a forced sign.",
+    ),
+    (
+        "createVariable",
+        "createVariable({prefix, force}, format)",
+        "Makes a modal output variable from a format: it writes its value only when it changed, unless force is true.",
+    ),
+    (
+        "getFeedrate",
+        "getFeedrate(movement)",
+        "Returns the feed word of the move being posted (\"F1500\"), or \"\" for MOVEMENT_RAPID. A post may define its own.",
+    ),
+    (
+        "format",
+        "variable.format(value)",
+        "Formats a value with a format or output variable; an output variable returns \"\" when the value did not change.",
+    ),
     ("getLast", "variable.getLast()", "Returns the last value an output variable wrote."),
 ];
 
@@ -291,9 +342,9 @@ pub const VCPOST_WORDS: &[(&str, &str)] = &[
 
 /// VcPost keywords.
 pub const VCPOST_KEYWORDS: &[&str] = &[
-    "And", "As", "Call", "Case", "Const", "Dim", "Do", "Else", "ElseIf", "End", "Exit", "False", "For", "Function", "If",
-    "Is", "Let", "Loop", "Mod", "Next", "Not", "Or", "Out", "Private", "Public", "Rem", "Select", "Step", "Sub", "Then",
-    "To", "True", "Until", "Wend", "While", "Xor",
+    "And", "As", "Call", "Case", "Const", "Dim", "Do", "Else", "ElseIf", "End", "Exit", "False", "For", "Function",
+    "If", "Is", "Let", "Loop", "Mod", "Next", "Not", "Or", "Out", "Private", "Public", "Rem", "Select", "Step", "Sub",
+    "Then", "To", "True", "Until", "Wend", "While", "Xor",
 ];
 
 /// The description of a table entry, by name (case-insensitive).
