@@ -10,6 +10,7 @@
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
 //! postc probe-table POST                                      # empty probe-cycle table of a VcPost post
 //! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
+//! postc lsp                                                   # language server on stdio (docs/editors.md)
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! ```
 //!
@@ -20,6 +21,7 @@ mod bench;
 mod check;
 mod convert;
 mod inspect;
+mod lsp;
 mod post;
 mod postp;
 mod probe;
@@ -59,6 +61,8 @@ enum Command {
     Postp(postp::Args),
     /// Replay a G-code program and compare its motion with the toolpath it was posted from; exit 1 when anything is out of tolerance.
     Verify(verify::Args),
+    /// Run the language server (LSP on stdio) for editors: diagnostics, hover, definition, completion, quick fixes.
+    Lsp(lsp::Args),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -101,6 +105,7 @@ pub fn main() -> ExitCode {
         Command::ProbeTable(args) => probe::run(args),
         Command::Postp(args) => postp::run(args),
         Command::Verify(args) => verify::run(args),
+        Command::Lsp(args) => lsp::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {
