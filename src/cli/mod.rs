@@ -11,6 +11,7 @@
 //! postc probe-table POST                                      # empty probe-cycle table of a VcPost post
 //! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
+//! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -20,6 +21,7 @@ mod bench;
 mod check;
 mod convert;
 mod inspect;
+mod plot;
 mod post;
 mod postp;
 mod probe;
@@ -59,6 +61,8 @@ enum Command {
     Postp(postp::Args),
     /// Replay a G-code program and compare its motion with the toolpath it was posted from; exit 1 when anything is out of tolerance.
     Verify(verify::Args),
+    /// Draw a program over its toolpath, top (XY) and front (XZ), with verify's findings marked: SVG, or PNG.
+    Plot(plot::Args),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -101,6 +105,7 @@ pub fn main() -> ExitCode {
         Command::ProbeTable(args) => probe::run(args),
         Command::Postp(args) => postp::run(args),
         Command::Verify(args) => verify::run(args),
+        Command::Plot(args) => plot::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {
