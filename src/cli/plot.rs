@@ -5,9 +5,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use postc_ir::{Diagnostic, Severity, SourceMap};
-use postc_verify::expect::ExpectedPath;
-use postc_verify::plot::{Mark, Plot};
+use postc_ir::{Diagnostic, SourceMap};
 
 use super::verify::{ControllerArg, Job, Opened, open, post_for, toolpath};
 use super::report::Format;
@@ -87,30 +85,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
 /// The findings are printed as `postc verify` prints them (they do not fail the plot).
 pub(crate) fn plot(job: &Job, sources: &mut SourceMap) -> Result<String, Failed> {
     let Opened { mut reader, file, settings, name } = open(job, sources)?;
-    let mut plot = Plot::new();
-    plot.title = format!("{} over {}", file_name(job.program), file_name(job.toolpath));
-    // The toolpath, read on its own (verify reads it again, through a window).
-    {
-        let mut source = toolpath(job, sources)?;
-        let mut path = ExpectedPath::new(&mut source);
-        path.start();
-        while let Some(e) = path.pop() {
-            plot.toolpath(&e);
-        }
-    }
+    let mut drawn = toolpath(job, sources)?;
     let mut source = toolpath(job, sources)?;
-    let report = postc_verify::verify_observed(&mut reader, file, &mut source, &settings, &mut plot);
-    plot.inch = report.stats.inch;
-    let marks = report
-        .findings
-        .iter()
-        .zip(&report.at)
-        .map(|(d, at)| {
-            let line = d.labels.iter().find(|l| l.span.file == file).and_then(|l| sources.line_column(l.span.file, l.span.start)).map(|(line, _)| line);
-            Mark { code: d.code.to_string(), error: d.severity == Severity::Error, line, message: d.message.clone(), at: *at }
-        })
-        .collect();
-    plot.marks(marks);
+    let (mut plot, report) = postc_verify::plot::draw(&mut reader, file, &mut drawn, &mut source, &settings, sources);
+    plot.title = format!("{} over {}", file_name(job.program), file_name(job.toolpath));
     report_findings(sources, &report, &name);
     Ok(plot.svg())
 }

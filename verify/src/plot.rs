@@ -16,9 +16,46 @@ use std::fmt::Write;
 
 use postc_ir::event::{ArcDir, Plane};
 
-use crate::expect::{Expected, Kind};
+use std::io::BufRead;
+
+use postc_ir::{EventSource, FileId, Severity, SourceMap};
+
+use crate::expect::{Expected, ExpectedPath, Kind};
 use crate::geometry::{Arc, axes};
-use crate::{Move, Observer};
+use crate::{Move, Observer, Report, Settings};
+
+/// Draws a program over its toolpath: the toolpath is read from `toolpath`
+/// for the drawing, and again from `again` for the verification (two
+/// sources over the same toolpath); the program's findings are marked, at
+/// their program lines as `sources` knows them. The plot and verify's report.
+pub fn draw(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn EventSource,
+    again: &mut dyn EventSource,
+    settings: &Settings,
+    sources: &SourceMap,
+) -> (Plot, Report) {
+    let mut plot = Plot::new();
+    let mut path = ExpectedPath::new(toolpath);
+    path.start();
+    while let Some(e) = path.pop() {
+        plot.toolpath(&e);
+    }
+    let report = crate::verify_observed(program, file, again, settings, &mut plot);
+    plot.inch = report.stats.inch;
+    let marks = report
+        .findings
+        .iter()
+        .zip(&report.at)
+        .map(|(d, at)| {
+            let line = d.labels.iter().find(|l| l.span.file == file).and_then(|l| sources.line_column(l.span.file, l.span.start)).map(|(line, _)| line);
+            Mark { code: d.code.to_string(), error: d.severity == Severity::Error, line, message: d.message.clone(), at: *at }
+        })
+        .collect();
+    plot.marks(marks);
+    (plot, report)
+}
 
 /// Path points kept per layer; the moves after are counted, not drawn.
 pub const MAX_POINTS: usize = 100_000;
@@ -541,6 +578,21 @@ mod tests {
             Cmd::Move(x, _) | Cmd::Line(x, _) | Cmd::Arc(x, ..) => x,
         }).collect();
         assert!(xs.iter().any(|x| (x + 10.0).abs() < 0.1), "{xs:?}");
+    }
+
+    #[test]
+    fn an_xz_arc_turns_the_way_g18_says_seen_from_the_front() {
+        // G18 G3 turns from Z toward X (counterclockwise seen from +Y): from Z10 to X10 it
+        // goes over the top to the right, clockwise seen from the front, SVG sweep 1.
+        let mut p = Plot::new();
+        let mut m = mv(Kind::Arc, [0.0, 0.0, 10.0], [10.0, 0.0, 0.0], [0.0; 3], ArcDir::Ccw);
+        m.plane = Plane::Zx;
+        p.motion(&m);
+        assert!(matches!(p.layers[1][1][1].cmds[..], [Cmd::Move(..), Cmd::Arc(_, _, _, true)]), "{:?}", p.layers[1][1][1].cmds);
+        // Seen from the top it is the line from X0 to X10 (drawn through points).
+        assert!(p.layers[0][1][1].cmds.iter().all(|c| !matches!(c, Cmd::Arc(..))));
+        // Its bounds reach the arc's top: Z10 at X0 and X10 at Z0, nothing beyond.
+        assert!((p.bounds.max[2] - 10.0).abs() < 1e-9 && (p.bounds.max[0] - 10.0).abs() < 1e-9);
     }
 
     #[test]
