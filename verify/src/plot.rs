@@ -228,6 +228,7 @@ impl Plot {
     fn add(&mut self, src: usize, kind: Kind, start: [f64; 3], end: [f64; 3], centre: [f64; 3], dir: ArcDir, plane: Plane) {
         self.moves[src] += 1;
         let feed = usize::from(kind != Kind::Rapid);
+        self.bounds.add(start);
         self.bounds.add(end);
         if kind == Kind::Arc && start.iter().chain(&end).chain(&centre).all(|v| v.is_finite()) {
             self.add_arc(src, Arc { start, end, centre, dir, plane });
