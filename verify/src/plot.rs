@@ -72,6 +72,8 @@ enum Cmd {
     /// An arc of at most half a turn to (u, v): radius, and whether it
     /// turns clockwise as seen in the view.
     Arc(f64, f64, f64, bool),
+    /// A feed seen end on (a plunge or a drilled hole from the top): a small ring.
+    Dot(f64, f64),
 }
 
 #[derive(Default)]
@@ -124,6 +126,17 @@ impl Layer {
         self.cmds.push(Cmd::Line(b.0, b.1));
         self.anchor = Some(a);
         self.pen = Some(b);
+    }
+
+    fn dot(&mut self, a: (f64, f64)) {
+        if let Some(Cmd::Dot(x, y)) = self.cmds.last()
+            && (x - a.0).hypot(y - a.1) <= MERGE
+        {
+            return;
+        }
+        self.cmds.push(Cmd::Dot(a.0, a.1));
+        self.pen = None;
+        self.anchor = None;
     }
 
     fn arc(&mut self, a: (f64, f64), b: (f64, f64), r: f64, cw: bool) {
@@ -240,6 +253,11 @@ impl Plot {
                 continue;
             }
             if layer.full() {
+                continue;
+            }
+            let seen = (end[u] - start[u]).hypot(end[w] - start[w]);
+            if feed == 1 && seen <= MERGE && crate::geometry::known(start) && crate::geometry::dist(start, end) > MERGE {
+                layer.dot((end[u], end[w]));
                 continue;
             }
             layer.line((start[u], start[w]), (end[u], end[w]));
@@ -401,6 +419,9 @@ impl Plot {
                             }
                             Cmd::Line(x, y) => {
                                 let _ = write!(out, "L{:.2} {:.2} ", tx(x), ty(y));
+                            }
+                            Cmd::Dot(x, y) => {
+                                let _ = write!(out, "M{:.2} {:.2} m-3 0 a3 3 0 1 0 6 0 a3 3 0 1 0 -6 0 ", tx(x), ty(y));
                             }
                             Cmd::Arc(x, y, r, cw) => {
                                 // The view flips its vertical axis: clockwise in the view is SVG's positive sweep.
@@ -576,7 +597,7 @@ mod tests {
         assert_eq!(p.layers[0][1][1].cmds.iter().filter(|c| matches!(c, Cmd::Arc(..))).count(), 3);
         // Seen from the front the circle is a line across its diameter.
         let xs: Vec<f64> = p.layers[1][1][1].cmds.iter().map(|c| match *c {
-            Cmd::Move(x, _) | Cmd::Line(x, _) | Cmd::Arc(x, ..) => x,
+            Cmd::Move(x, _) | Cmd::Line(x, _) | Cmd::Arc(x, ..) | Cmd::Dot(x, _) => x,
         }).collect();
         assert!(xs.iter().any(|x| (x + 10.0).abs() < 0.1), "{xs:?}");
     }
