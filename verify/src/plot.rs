@@ -58,7 +58,7 @@ pub fn draw(
 }
 
 /// Path points kept per layer; the moves after are counted, not drawn.
-pub const MAX_POINTS: usize = 100_000;
+pub const MAX_POINTS: usize = 50_000;
 /// Findings listed under the views (all are marked).
 pub const MAX_LISTED: usize = 60;
 /// Segments closer than this to the line through their neighbours are merged (mm).
@@ -72,79 +72,181 @@ enum Cmd {
     /// An arc of at most half a turn to (u, v): radius, and whether it
     /// turns clockwise as seen in the view.
     Arc(f64, f64, f64, bool),
-    /// A feed seen end on (a plunge or a drilled hole from the top): a small ring.
+    /// A feed along Z seen from the top (a plunge, a drilled hole): a small ring.
     Dot(f64, f64),
 }
 
-#[derive(Default)]
+#[derive(Clone)]
 struct Layer {
     cmds: Vec<Cmd>,
-    /// Where the pen is (NaN before the first command).
+    /// The end of the last command written (None before the first, and after a dot).
     pen: Option<(f64, f64)>,
+    /// Where the tool is: ahead of the pen by less than `res` when short moves were held back.
+    at: Option<(f64, f64)>,
     /// The start of the last line command (for merging).
     anchor: Option<(f64, f64)>,
-    /// Moves not drawn because the layer was full.
+    /// The resolution (mm): points closer than this to the pen are held back.
+    /// It doubles each time the layer fills, and the layer is thinned to it.
+    res: f64,
+    /// Moves not drawn because the layer was full even so.
     dropped: u64,
 }
 
+impl Default for Layer {
+    fn default() -> Layer {
+        Layer { cmds: Vec::new(), pen: None, at: None, anchor: None, res: MERGE, dropped: 0 }
+    }
+}
+
+fn near(a: (f64, f64), b: (f64, f64), d: f64) -> bool {
+    (a.0 - b.0).hypot(a.1 - b.1) <= d
+}
+
 impl Layer {
-    fn full(&mut self) -> bool {
-        if self.cmds.len() + 2 > MAX_POINTS {
+    /// Whether there is room for a move's commands: a full layer is thinned
+    /// at a coarser resolution first; counted as dropped when even that fails.
+    fn room(&mut self, finest: f64) -> bool {
+        if self.cmds.len() + 8 > MAX_POINTS {
+            self.coarsen(finest);
+        }
+        if self.cmds.len() + 8 > MAX_POINTS {
             self.dropped += 1;
-            true
-        } else {
             false
+        } else {
+            true
         }
     }
 
+    /// Doubles the resolution until the layer is at most half full, leaving
+    /// out the points of a chain closer than it to the last one kept; but
+    /// not past `coarsest` (about a pixel of the drawing): what does not fit
+    /// then is left out, and said.
+    fn coarsen(&mut self, coarsest: f64) {
+        while self.cmds.len() > MAX_POINTS / 2 && self.res * 2.0 <= coarsest {
+            self.res *= 2.0;
+            let res = self.res;
+            let mut kept = 0;
+            let mut last = (f64::NAN, f64::NAN);
+            for i in 0..self.cmds.len() {
+                let c = self.cmds[i];
+                let chained = matches!(self.cmds.get(i + 1), Some(Cmd::Line(..) | Cmd::Arc(..)));
+                let keep = match c {
+                    Cmd::Move(x, y) => {
+                        last = (x, y);
+                        true
+                    }
+                    Cmd::Dot(..) => true,
+                    Cmd::Line(x, y) | Cmd::Arc(x, y, ..) => {
+                        let keep = !chained || !near((x, y), last, res);
+                        if keep {
+                            last = (x, y);
+                        }
+                        keep
+                    }
+                };
+                if keep {
+                    // An arc whose start was left out is drawn as a line.
+                    let c = match c {
+                        Cmd::Arc(x, y, ..) if i > 0 && kept > 0 && !same_end(self.cmds[kept - 1], self.cmds[i - 1]) => Cmd::Line(x, y),
+                        c => c,
+                    };
+                    self.cmds[kept] = c;
+                    kept += 1;
+                }
+            }
+            self.cmds.truncate(kept);
+        }
+        self.anchor = None;
+    }
+
+    /// Starts a stroke at `a` unless the tool is there already.
     fn pen_to(&mut self, a: (f64, f64)) {
-        let here = self.pen.is_some_and(|p| (p.0 - a.0).hypot(p.1 - a.1) <= MERGE);
-        if !here {
-            self.cmds.push(Cmd::Move(a.0, a.1));
-            self.pen = Some(a);
-            self.anchor = None;
+        let continuing = self.at.is_some_and(|p| near(p, a, MERGE));
+        if continuing && self.pen.is_some() {
+            return;
+        }
+        self.flush();
+        self.cmds.push(Cmd::Move(a.0, a.1));
+        self.pen = Some(a);
+        self.at = Some(a);
+        self.anchor = None;
+    }
+
+    /// Draws to where the tool is, when short moves were held back.
+    fn flush(&mut self) {
+        if let (Some(pen), Some(at)) = (self.pen, self.at)
+            && !near(pen, at, MERGE)
+        {
+            self.cmds.push(Cmd::Line(at.0, at.1));
+            self.anchor = Some(pen);
+            self.pen = Some(at);
         }
     }
 
     fn line(&mut self, a: (f64, f64), b: (f64, f64)) {
-        if (a.0 - b.0).hypot(a.1 - b.1) <= MERGE {
+        if near(a, b, MERGE) {
             return;
         }
         self.pen_to(a);
-        // a..b continues the last line anchor..a: replace its end.
+        self.at = Some(b);
+        let Some(pen) = self.pen else { return };
+        if near(pen, b, self.res) && self.res > MERGE {
+            return;
+        }
+        // pen..b continues the last line anchor..pen: move its end.
         if let (Some(o), Some(Cmd::Line(..))) = (self.anchor, self.cmds.last()) {
             let (dx, dy) = (b.0 - o.0, b.1 - o.1);
             let len = dx.hypot(dy);
-            let off = ((a.0 - o.0) * dy - (a.1 - o.1) * dx).abs() / len.max(1e-12);
-            let forward = (a.0 - o.0) * dx + (a.1 - o.1) * dy > 0.0 && (b.0 - a.0) * dx + (b.1 - a.1) * dy > 0.0;
-            if off <= MERGE && forward {
+            let off = ((pen.0 - o.0) * dy - (pen.1 - o.1) * dx).abs() / len.max(1e-12);
+            let forward = (pen.0 - o.0) * dx + (pen.1 - o.1) * dy > 0.0 && (b.0 - pen.0) * dx + (b.1 - pen.1) * dy > 0.0;
+            if off <= self.res && forward {
                 *self.cmds.last_mut().expect("a line") = Cmd::Line(b.0, b.1);
                 self.pen = Some(b);
                 return;
             }
         }
         self.cmds.push(Cmd::Line(b.0, b.1));
-        self.anchor = Some(a);
+        self.anchor = Some(pen);
         self.pen = Some(b);
     }
 
     fn dot(&mut self, a: (f64, f64)) {
         if let Some(Cmd::Dot(x, y)) = self.cmds.last()
-            && (x - a.0).hypot(y - a.1) <= MERGE
+            && near((*x, *y), a, self.res)
         {
             return;
         }
+        self.flush();
         self.cmds.push(Cmd::Dot(a.0, a.1));
+        // The ring moves SVG's current point: the next stroke starts afresh.
         self.pen = None;
         self.anchor = None;
     }
 
     fn arc(&mut self, a: (f64, f64), b: (f64, f64), r: f64, cw: bool) {
         self.pen_to(a);
-        self.cmds.push(Cmd::Arc(b.0, b.1, r, cw));
+        self.flush();
+        if self.pen.is_some_and(|p| !near(p, a, MERGE)) {
+            // Held back points put the pen off the arc's start: a line there.
+            self.cmds.push(Cmd::Line(a.0, a.1));
+        }
+        if r <= self.res && self.res > MERGE {
+            self.cmds.push(Cmd::Line(b.0, b.1));
+        } else {
+            self.cmds.push(Cmd::Arc(b.0, b.1, r, cw));
+        }
         self.anchor = None;
         self.pen = Some(b);
+        self.at = Some(b);
     }
+}
+
+/// Whether two commands end at the same point.
+fn same_end(a: Cmd, b: Cmd) -> bool {
+    let end = |c: Cmd| match c {
+        Cmd::Move(x, y) | Cmd::Line(x, y) | Cmd::Arc(x, y, ..) | Cmd::Dot(x, y) => (x, y),
+    };
+    near(end(a), end(b), 1e-12)
 }
 
 /// The two views: top (X right, Y up) and front (X right, Z up).
@@ -247,16 +349,17 @@ impl Plot {
             self.add_arc(src, Arc { start, end, centre, dir, plane });
             return;
         }
+        let coarsest = self.coarsest();
         for (v, &(u, w, _)) in VIEWS.iter().enumerate() {
             let layer = &mut self.layers[v][src][feed];
             if ![start[u], start[w], end[u], end[w]].iter().all(|c| c.is_finite()) {
                 continue;
             }
-            if layer.full() {
+            if !layer.room(coarsest) {
                 continue;
             }
             let seen = (end[u] - start[u]).hypot(end[w] - start[w]);
-            if feed == 1 && seen <= MERGE && crate::geometry::known(start) && crate::geometry::dist(start, end) > MERGE {
+            if v == 0 && feed == 1 && seen <= MERGE && (end[2] - start[2]).abs() > 10.0 * MERGE {
                 layer.dot((end[u], end[w]));
                 continue;
             }
@@ -289,9 +392,10 @@ impl Plot {
         for k in 1..samples {
             self.bounds.add(at(k as f64 / samples as f64));
         }
+        let coarsest = self.coarsest();
         for (v, &(u, w, _)) in VIEWS.iter().enumerate() {
             let layer = &mut self.layers[v][src][1];
-            if layer.full() {
+            if !layer.room(coarsest) {
                 continue;
             }
             let in_view = (a == u && b == w) || (a == w && b == u);
@@ -317,6 +421,13 @@ impl Plot {
                 }
             }
         }
+    }
+
+    /// The coarsest resolution a full layer is thinned to: a 2000th of the
+    /// largest extent so far (half a pixel of the 900 px wide drawing, or finer).
+    fn coarsest(&self) -> f64 {
+        let b = &self.bounds;
+        (0..3).map(|i| b.max[i] - b.min[i]).filter(|d| d.is_finite()).fold(0.0, f64::max) / 2000.0
     }
 
     /// Writes the SVG document.
@@ -409,25 +520,43 @@ impl Plot {
                     }
                     let (class, style) = layer_style(src, feed);
                     let _ = write!(out, r##"<path class="{class}" {style} fill="none" stroke-linecap="round" stroke-linejoin="round" d=""##);
-                    for (i, c) in layer.cmds.iter().enumerate() {
-                        if i > 0 && i % 8 == 0 {
+                    // Points closer than half a pixel to the last one written are left out.
+                    let mut last = (f64::NAN, f64::NAN);
+                    let mut written = 0usize;
+                    for c in &layer.cmds {
+                        if written > 0 && written % 8 == 0 {
                             out.push('\n');
                         }
+                        written += 1;
                         match *c {
                             Cmd::Move(x, y) => {
-                                let _ = write!(out, "M{:.2} {:.2} ", tx(x), ty(y));
+                                last = (tx(x), ty(y));
+                                let _ = write!(out, "M{:.2} {:.2} ", last.0, last.1);
                             }
                             Cmd::Line(x, y) => {
-                                let _ = write!(out, "L{:.2} {:.2} ", tx(x), ty(y));
+                                let p = (tx(x), ty(y));
+                                if (p.0 - last.0).hypot(p.1 - last.1) < 0.5 {
+                                    written -= 1;
+                                    continue;
+                                }
+                                last = p;
+                                let _ = write!(out, "L{:.2} {:.2} ", p.0, p.1);
                             }
                             Cmd::Dot(x, y) => {
+                                last = (f64::NAN, f64::NAN);
                                 let _ = write!(out, "M{:.2} {:.2} m-3 0 a3 3 0 1 0 6 0 a3 3 0 1 0 -6 0 ", tx(x), ty(y));
                             }
                             Cmd::Arc(x, y, r, cw) => {
                                 // The view flips its vertical axis: clockwise in the view is SVG's positive sweep.
-                                let _ = write!(out, "A {:.2} {:.2} 0 0 {} {:.2} {:.2} ", r * scale, r * scale, u8::from(cw), tx(x), ty(y));
+                                last = (tx(x), ty(y));
+                                let _ = write!(out, "A {:.2} {:.2} 0 0 {} {:.2} {:.2} ", r * scale, r * scale, u8::from(cw), last.0, last.1);
                             }
                         }
+                    }
+                    if let (Some(pen), Some(at)) = (layer.pen, layer.at)
+                        && !near(pen, at, MERGE)
+                    {
+                        let _ = write!(out, "L{:.2} {:.2}", tx(at.0), ty(at.1));
                     }
                     let _ = writeln!(out, r##""/>"##);
                 }
@@ -518,6 +647,11 @@ impl Plot {
                 let n: u64 = self.layers[v][src].iter().map(|l| l.dropped).sum();
                 if n > 0 {
                     notes.push(format!("{name}: {n} {who} move(s) not drawn (over {MAX_POINTS} path points per layer)"));
+                }
+                let res = self.layers[v][src].iter().map(|l| l.res).fold(MERGE, f64::max);
+                if res > MERGE {
+                    let (r, u) = if self.inch { (res / 25.4, "in") } else { (res, "mm") };
+                    notes.push(format!("{name}: the {who} is drawn to {r:.3} {u} (at most {MAX_POINTS} path points per layer)"));
                 }
             }
         }
@@ -622,11 +756,25 @@ mod tests {
         let mut p = Plot::new();
         for i in 0..(MAX_POINTS + 500) {
             let x = i as f64;
-            let y = if i % 2 == 0 { 0.0 } else { 1.0 };
-            p.motion(&mv(Kind::Feed, [x, 1.0 - y, 0.0], [x + 1.0, y, 0.0], [0.0; 3], ArcDir::Cw));
+            let y = if i % 2 == 0 { 0.0 } else { 100.0 };
+            p.motion(&mv(Kind::Feed, [x, 100.0 - y, 0.0], [x + 1.0, y, 0.0], [0.0; 3], ArcDir::Cw));
         }
         assert!(p.layers[0][1][1].cmds.len() <= MAX_POINTS);
+        // Over 100 km of zigzag: thinned to about a pixel, and what does not fit then is left out, and said.
+        assert!(p.layers[0][1][1].res > MERGE);
+        assert!(p.layers[0][1][1].dropped > 0);
         assert!(p.svg().contains("not drawn"));
+        // A dense job (many short moves in a small area) fits once thinned: all of it is drawn.
+        let mut p = Plot::new();
+        // (A shaky line: short moves, no two collinear.)
+        let at = |i: usize| [i as f64 * 0.005, if i % 2 == 0 { 0.0 } else { 0.004 }, 0.0];
+        for i in 0..(2 * MAX_POINTS) {
+            p.motion(&mv(Kind::Feed, at(i), at(i + 1), [0.0; 3], ArcDir::Cw));
+        }
+        assert_eq!(p.layers[0][1][1].dropped, 0);
+        let svg = p.svg();
+        assert!(svg.contains("is drawn to"), "{}", &svg[svg.len() - 2000..]);
+        assert!(!svg.contains("not drawn"));
     }
 
     #[test]
