@@ -211,3 +211,38 @@ fn bad_inputs_give_diagnostics_and_no_file() {
     let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
     assert_eq!(left.len(), 2, "{left:?}");
 }
+
+/// The README's plot (docs/img/seed_job.svg) is what `postc plot` draws
+/// today; `POSTC_BLESS=1` writes it again.
+#[test]
+fn the_readme_plot_is_current() {
+    let dir = temp();
+    let program = dir.path().join("seed.tap");
+    assert!(postc(&["post", POST, JOB, "-o", program.to_str().unwrap()]).status.success());
+    let svg = dir.path().join("seed_job.svg");
+    let out = postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    let committed = root().join("docs/img/seed_job.svg");
+    if std::env::var_os("POSTC_BLESS").is_some() {
+        std::fs::write(&committed, &drawn).unwrap();
+    }
+    assert_eq!(std::fs::read_to_string(&committed).unwrap(), drawn, "docs/img/seed_job.svg is out of date: POSTC_BLESS=1 cargo test --test plot");
+}
+
+/// Without any font the PNG is still drawn (resvg leaves the text out): what docs/plot.md promises.
+#[test]
+fn a_png_without_fonts_is_still_drawn() {
+    let text = good_post().replace("[I|A|I|1.4]", "[J|A|I|1.4]").replace("[J|A|J|1.4]", "[I|A|J|1.4]");
+    let (svg, _) = plot(&text);
+    let options = resvg::usvg::Options::default();
+    assert_eq!(options.fontdb.len(), 0);
+    let tree = resvg::usvg::Tree::from_str(&svg, &options).unwrap();
+    let size = tree.size().to_int_size();
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height()).unwrap();
+    resvg::render(&tree, resvg::tiny_skia::Transform::default(), &mut pixmap.as_mut());
+    // The findings' red discs are there.
+    let red = pixmap.pixels().iter().filter(|p| p.red() > 200 && p.green() < 80 && p.blue() < 80 && p.alpha() == 255).count();
+    assert!(red > 500, "{red} red pixels");
+    assert!(pixmap.encode_png().unwrap().starts_with(b"\x89PNG"));
+}
