@@ -260,11 +260,13 @@ struct Bounds {
 }
 
 impl Bounds {
+    /// Widens the bounds to take in `p`; coordinates beyond 10 km (a wild
+    /// move) are left out so that the job stays visible.
     fn add(&mut self, p: [f64; 3]) {
-        for i in 0..3 {
-            if p[i].is_finite() {
-                self.min[i] = self.min[i].min(p[i]);
-                self.max[i] = self.max[i].max(p[i]);
+        for (i, v) in p.into_iter().enumerate() {
+            if v.is_finite() && v.abs() <= 1e7 {
+                self.min[i] = self.min[i].min(v);
+                self.max[i] = self.max[i].max(v);
             }
         }
     }
@@ -480,8 +482,9 @@ impl Plot {
             let ox = left;
             let oy = origins[v];
             let h = heights[v];
-            let tx = |x: f64| ox + (x - b.min[u]) * scale;
-            let ty = |y: f64| oy + h - (y - b.min[w]) * scale;
+            // Points far outside the drawing (a wild move) are clamped to a finite distance off it.
+            let tx = |x: f64| (ox + (x - b.min[u]) * scale).clamp(-1e6, 1e6);
+            let ty = |y: f64| (oy + h - (y - b.min[w]) * scale).clamp(-1e6, 1e6);
             let _ = writeln!(out, r##"<g class="view" id="view-{}">"##, if v == 0 { "xy" } else { "xz" });
             let _ = writeln!(out, r##"<rect x="{ox:.2}" y="{oy:.2}" width="{:.2}" height="{h:.2}" fill="#fbfbf8" stroke="#888888" stroke-width="1"/>"##, xr * scale);
             let _ = writeln!(out, r##"<text x="{ox:.2}" y="{:.2}" font-weight="bold">{name}</text>"##, oy - 8.0);
@@ -489,8 +492,12 @@ impl Plot {
             let axis = |out: &mut String, lo: f64, hi: f64, horizontal: bool| {
                 let step = nice_step((hi - lo) / unit / 8.0);
                 let decimals = (-step.log10().floor()).max(0.0) as usize;
-                let mut t = (lo / unit / step).ceil() * step;
-                while t <= hi / unit + 1e-9 {
+                let first = (lo / unit / step).ceil();
+                for k in 0..40 {
+                    let t = (first + f64::from(k)) * step;
+                    if t > hi / unit + 1e-9 {
+                        break;
+                    }
                     let label = format!("{:.*}", decimals, if t.abs() < step * 1e-6 { 0.0 } else { t });
                     if horizontal {
                         let x = tx(t * unit);
@@ -503,7 +510,6 @@ impl Plot {
                         let _ = writeln!(out, r##"<line x1="{ox:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="#e4e4e4" stroke-width="0.5"/>"##, ox + xr * scale);
                         let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="11">{label}</text>"##, ox - 8.0, y + 4.0);
                     }
-                    t += step;
                 }
             };
             axis(&mut out, b.min[u], b.max[u], true);
@@ -524,7 +530,7 @@ impl Plot {
                     let mut last = (f64::NAN, f64::NAN);
                     let mut written = 0usize;
                     for c in &layer.cmds {
-                        if written > 0 && written % 8 == 0 {
+                        if written > 0 && written.is_multiple_of(8) {
                             out.push('\n');
                         }
                         written += 1;
@@ -549,7 +555,8 @@ impl Plot {
                             Cmd::Arc(x, y, r, cw) => {
                                 // The view flips its vertical axis: clockwise in the view is SVG's positive sweep.
                                 last = (tx(x), ty(y));
-                                let _ = write!(out, "A {:.2} {:.2} 0 0 {} {:.2} {:.2} ", r * scale, r * scale, u8::from(cw), last.0, last.1);
+                                let rs = (r * scale).min(1e7);
+                                let _ = write!(out, "A {rs:.2} {rs:.2} 0 0 {} {:.2} {:.2} ", u8::from(cw), last.0, last.1);
                             }
                         }
                     }
@@ -767,7 +774,7 @@ mod tests {
         // A dense job (many short moves in a small area) fits once thinned: all of it is drawn.
         let mut p = Plot::new();
         // (A shaky line: short moves, no two collinear.)
-        let at = |i: usize| [i as f64 * 0.005, if i % 2 == 0 { 0.0 } else { 0.004 }, 0.0];
+        let at = |i: usize| [i as f64 * 0.005, if i.is_multiple_of(2) { 0.0 } else { 0.004 }, 0.0];
         for i in 0..(2 * MAX_POINTS) {
             p.motion(&mv(Kind::Feed, at(i), at(i + 1), [0.0; 3], ArcDir::Cw));
         }
@@ -775,6 +782,17 @@ mod tests {
         let svg = p.svg();
         assert!(svg.contains("is drawn to"), "{}", &svg[svg.len() - 2000..]);
         assert!(!svg.contains("not drawn"));
+    }
+
+    #[test]
+    fn wild_coordinates_draw_a_finite_svg() {
+        let mut p = Plot::new();
+        p.motion(&mv(Kind::Feed, [0.0, 0.0, 0.0], [10.0, 10.0, -1.0], [0.0; 3], ArcDir::Cw));
+        p.motion(&mv(Kind::Feed, [10.0, 10.0, -1.0], [1e300, -1e300, f64::MAX], [0.0; 3], ArcDir::Cw));
+        p.motion(&mv(Kind::Arc, [1e300, -1e300, f64::MAX], [0.0, 1e20, 0.0], [1e-300, 0.0, 0.0], ArcDir::Cw));
+        let svg = p.svg();
+        assert!(!svg.contains("NaN") && !svg.contains("inf"), "{svg}");
+        assert!(svg.len() < 100_000);
     }
 
     #[test]
