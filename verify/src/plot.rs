@@ -516,7 +516,7 @@ impl Plot {
             axis(&mut out, b.min[w], b.max[w], false);
             let axis_name = |i: usize| ["X", "Y", "Z"][i];
             let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="12">{} ({unit_name})</text>"##, ox + xr * scale, oy + h + 32.0, axis_name(u));
-            let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="start" font-size="12">{} ({unit_name})</text>"##, ox - 70.0, oy - 8.0 + 0.0 * h, axis_name(w));
+            let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="start" font-size="12">{} ({unit_name})</text>"##, ox - 70.0, oy - 8.0, axis_name(w));
             // Layers: the toolpath wide and light under the program, thin and dark.
             for src in 0..2 {
                 for feed in 0..2 {
@@ -653,7 +653,7 @@ impl Plot {
             for (src, who) in ["toolpath", "program"].iter().enumerate() {
                 let n: u64 = self.layers[v][src].iter().map(|l| l.dropped).sum();
                 if n > 0 {
-                    notes.push(format!("{name}: {n} {who} move(s) not drawn (over {MAX_POINTS} path points per layer)"));
+                    notes.push(format!("{name}: {n} later {who} move(s) not drawn (a layer holds {MAX_POINTS} path points; the findings cover them all)"));
                 }
                 let res = self.layers[v][src].iter().map(|l| l.res).fold(MERGE, f64::max);
                 if res > MERGE {
