@@ -19,10 +19,14 @@ const TARGET_BYTES: usize = 64 << 20;
 
 /// A generated stand-in for a real file: moves, arcs and feed changes.
 fn generated() -> Vec<u8> {
-    let mut text = String::from("PARTNO/BENCH\nUNITS/MM\nLOADTL/1\nCUTTER/6.\nSPINDL/12000,RPM,CLW\nRAPID\nGOTO/0,0,25.\n");
+    let mut text =
+        String::from("PARTNO/BENCH\nUNITS/MM\nLOADTL/1\nCUTTER/6.\nSPINDL/12000,RPM,CLW\nRAPID\nGOTO/0,0,25.\n");
     for i in 0..10_000 {
         let x = f64::from(i) * 0.01;
-        text.push_str(&format!("FEDRAT/1645.92,MMPM\nGOTO/{x:.6},33.799705,-3.\nGOTO/{:.6},5.7625,-3.,0,0,1.\n", x + 1.0));
+        text.push_str(&format!(
+            "FEDRAT/1645.92,MMPM\nGOTO/{x:.6},33.799705,-3.\nGOTO/{:.6},5.7625,-3.,0,0,1.\n",
+            x + 1.0
+        ));
         text.push_str(&format!("CIRCLE/{:.6},5.7625,-3.,0,0,-1.\nGOTO/{:.6},3.0,-3.\n", x + 1.0, x + 3.7625));
     }
     text.into_bytes()
@@ -34,7 +38,11 @@ fn unit(name: &str) -> Vec<u8> {
     match std::fs::read(corpus.join(name)) {
         Ok(bytes) => {
             let text = String::from_utf8_lossy(&bytes);
-            text.lines().filter(|l| !l.trim_start().starts_with("FINI")).flat_map(|l| [l, "\n"]).collect::<String>().into_bytes()
+            text.lines()
+                .filter(|l| !l.trim_start().starts_with("FINI"))
+                .flat_map(|l| [l, "\n"])
+                .collect::<String>()
+                .into_bytes()
         }
         Err(_) => generated(),
     }
@@ -63,7 +71,10 @@ fn read_all(bytes: &[u8]) -> usize {
 fn apt_read(c: &mut Criterion) {
     let mut group = c.benchmark_group("apt_read");
     group.sample_size(10);
-    for (label, name) in [("solidworks_boss", "aamorim1913__AptPostProcessor/boss.apt"), ("nx_ust_a2", "HumMan__CLSFProcessor/ust_a2.cls")] {
+    for (label, name) in [
+        ("solidworks_boss", "aamorim1913__AptPostProcessor/boss.apt"),
+        ("nx_ust_a2", "HumMan__CLSFProcessor/ust_a2.cls"),
+    ] {
         let input = repeated(&unit(name));
         group.throughput(Throughput::Bytes(input.len() as u64));
         group.bench_function(label, |b| b.iter(|| read_all(black_box(&input))));

@@ -52,7 +52,8 @@ fn main() {
         let mut sources = postc_ir::SourceMap::new();
         let mut source = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
-        let report = postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
+        let report =
+            postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
         events = report.events;
         start.elapsed().as_secs_f64()
     });

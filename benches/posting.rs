@@ -31,7 +31,8 @@ begin FEED_MOVE
 
 fn post() -> Post {
     let mut sources = SourceMap::new();
-    let (post, diagnostics) = postc_front_vectric::compile(std::path::Path::new("bench.pp"), POST.as_bytes(), &mut sources);
+    let (post, diagnostics) =
+        postc_front_vectric::compile(std::path::Path::new("bench.pp"), POST.as_bytes(), &mut sources);
     assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{diagnostics:?}");
     post
 }

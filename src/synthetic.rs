@@ -113,7 +113,13 @@ impl Synthetic {
             // Retract, move over, plunge: three moves of the budget.
             let [x, y, _] = self.pos;
             self.queue.push_back(Event::Rapid(Move { x, y: y + STEP, z: SAFE, ..Move::default() }));
-            self.queue.push_back(Event::Feed(FeedMove { x, y: y + STEP, z: DEPTH, intent: Intent::Plunge, ..FeedMove::default() }));
+            self.queue.push_back(Event::Feed(FeedMove {
+                x,
+                y: y + STEP,
+                z: DEPTH,
+                intent: Intent::Plunge,
+                ..FeedMove::default()
+            }));
             self.pos = [x, y + STEP, DEPTH];
             self.done_moves += 3;
             return Event::Rapid(Move { x, y, z: SAFE, ..Move::default() });
@@ -193,7 +199,9 @@ impl EventSource for Synthetic {
 pub fn standard_job() -> Vec<Event> {
     let rapid = |x, y, z| Event::Rapid(Move { x, y, z, ..Move::default() });
     let feed = |x, y, z, intent| Event::Feed(FeedMove { x, y, z, intent, ..FeedMove::default() });
-    let arc = |dir, x, y, z, cx, cy, intent| Event::Arc(ArcMove { dir, x, y, z, cx, cy, cz: z, intent, ..ArcMove::default() });
+    let arc = |dir, x, y, z, cx, cy, intent| {
+        Event::Arc(ArcMove { dir, x, y, z, cx, cy, cz: z, intent, ..ArcMove::default() })
+    };
     let tool = |number, name: &str, diameter, jet| Tool {
         number,
         name: name.into(),

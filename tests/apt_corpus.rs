@@ -243,9 +243,16 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     }
     let own = program.lines().filter(|l| l.starts_with("G53")).count();
     if motions != expected.motions + own {
-        return Err(format!("rs274 made {motions} motions; expected {} from the events and {own} G53 retracts", expected.motions));
+        return Err(format!(
+            "rs274 made {motions} motions; expected {} from the events and {own} G53 retracts",
+            expected.motions
+        ));
     }
-    Ok(format!("{} GOTO, {} CIRCLE: {arcs} arcs, {linear} straight moves; {motions} motions in rs274", n("GOTO"), n("CIRCLE")))
+    Ok(format!(
+        "{} GOTO, {} CIRCLE: {arcs} arcs, {linear} straight moves; {motions} motions in rs274",
+        n("GOTO"),
+        n("CIRCLE")
+    ))
 }
 
 #[test]

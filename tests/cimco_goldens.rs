@@ -52,13 +52,16 @@ fn cimco_posts_match_their_goldens() {
             let old = std::fs::read(&target).ok();
             if bless {
                 if old.as_deref() != Some(program.as_slice()) {
-                    std::fs::write(&target, &program).unwrap_or_else(|e| panic!("cannot write {}: {e}", target.display()));
+                    std::fs::write(&target, &program)
+                        .unwrap_or_else(|e| panic!("cannot write {}: {e}", target.display()));
                 }
                 continue;
             }
             match old {
                 None => failures.push(format!("{name}: no expected file; bless with POSTC_BLESS=1")),
-                Some(old) if old != program => failures.push(format!("{name}: output differs\n{}", diff(&old, &program))),
+                Some(old) if old != program => {
+                    failures.push(format!("{name}: output differs\n{}", diff(&old, &program)))
+                }
                 Some(_) => {}
             }
         }
@@ -92,7 +95,10 @@ fn fanuc_moves_are_native() {
     }
     // The move handlers build their text in the output: no `Write` left.
     for h in &post.handlers {
-        if let postc_ir::HandlerKey::Section(s @ (postc_ir::Section::FeedMove | postc_ir::Section::RapidMove | postc_ir::Section::CwArcMove)) = h.key {
+        if let postc_ir::HandlerKey::Section(
+            s @ (postc_ir::Section::FeedMove | postc_ir::Section::RapidMove | postc_ir::Section::CwArcMove),
+        ) = h.key
+        {
             let text = format!("{:?}", h.body);
             assert!(!text.contains("Write("), "{s:?} still writes a returned string: {text}");
             assert!(text.contains("Emit("), "{s:?} does not emit");

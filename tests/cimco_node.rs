@@ -9,7 +9,6 @@
 
 mod cimco_common;
 
-
 use cimco_common::*;
 
 #[test]
@@ -46,7 +45,9 @@ fn node_prints_what_postc_prints() {
             };
             match run_node(&post_path, &jsonl, &[]) {
                 Ok(theirs) if theirs == ours => compared += 1,
-                Ok(theirs) => failures.push(format!("{pair}: Node.js (-) and postc (+) differ\n{}", diff(&theirs, &ours))),
+                Ok(theirs) => {
+                    failures.push(format!("{pair}: Node.js (-) and postc (+) differ\n{}", diff(&theirs, &ours)))
+                }
                 Err(e) => failures.push(format!("{pair}: {e}")),
             }
         }

@@ -199,7 +199,9 @@ fn converted_posts_post_as_their_sources() {
             // A fixed point: converting the converted post again gives the same text.
             match postc_backends::convert(&back, target) {
                 Ok(again) if again == converted => {}
-                Ok(again) => failures.push(format!("{name} -> {file}: converting again differs\n{}", diff(&converted, &again))),
+                Ok(again) => {
+                    failures.push(format!("{name} -> {file}: converting again differs\n{}", diff(&converted, &again)))
+                }
                 Err(d) => failures.push(format!("{name} -> {file}: converting again is refused: {:?}", d[0].message)),
             }
             for toolpath in &case.toolpaths {
@@ -210,7 +212,8 @@ fn converted_posts_post_as_their_sources() {
                 match (want, got) {
                     (Ok(want), Ok(got)) => {
                         if want != got {
-                            failures.push(format!("{pair}: the program differs\n{}", diff(&want.concat(), &got.concat())));
+                            failures
+                                .push(format!("{pair}: the program differs\n{}", diff(&want.concat(), &got.concat())));
                         }
                     }
                     (Err(want), Err(got)) => {
@@ -289,7 +292,9 @@ fn mutated_ron_posts_never_panic() {
         // The start of every run of digits that stands alone (an id, a count).
         let numbers: Vec<(usize, usize)> = text
             .char_indices()
-            .filter(|&(i, c)| c.is_ascii_digit() && !text[..i].ends_with(|p: char| p.is_ascii_alphanumeric() || p == '.' || p == '-'))
+            .filter(|&(i, c)| {
+                c.is_ascii_digit() && !text[..i].ends_with(|p: char| p.is_ascii_alphanumeric() || p == '.' || p == '-')
+            })
             .map(|(i, _)| (i, text[i..].find(|c: char| !c.is_ascii_digit()).map_or(text.len(), |n| i + n)))
             .filter(|&(_, end)| !text[end..].starts_with('.'))
             .step_by(3)

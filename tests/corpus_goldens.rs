@@ -50,7 +50,8 @@ fn corpus_posts_match_their_goldens() {
                 continue;
             }
         };
-        let ext = if post.info.file_extension.is_empty() { "out" } else { post.info.file_extension.trim_start_matches('.') };
+        let ext =
+            if post.info.file_extension.is_empty() { "out" } else { post.info.file_extension.trim_start_matches('.') };
         for toolpath in &toolpaths {
             let pair = format!("{}__{}", stem(post_path), stem(toolpath));
             let parts = match post_toolpath(&post, toolpath) {

@@ -39,7 +39,10 @@ fn every_code_is_documented_once() {
         codes_in(&root.join(dir), &mut found);
     }
     let doc = std::fs::read_to_string(root.join("docs/diagnostics.md")).unwrap();
-    let rows: Vec<&str> = doc.lines().filter(|l| l.starts_with("| ") && l.as_bytes().get(2).is_some_and(u8::is_ascii_uppercase)).collect();
+    let rows: Vec<&str> = doc
+        .lines()
+        .filter(|l| l.starts_with("| ") && l.as_bytes().get(2).is_some_and(u8::is_ascii_uppercase))
+        .collect();
     let missing: Vec<_> = found.iter().filter(|c| !rows.iter().any(|r| r.starts_with(&format!("| {c} |")))).collect();
     assert!(missing.is_empty(), "codes reported in the source but not in docs/diagnostics.md: {missing:?}");
     for code in &found {

@@ -52,7 +52,14 @@ fn plot(text: &str) -> (String, usize) {
     let mut drawn = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
     let mut again = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
     let settings = Settings::from_post(&post_ir, postc_verify::Controller::Generic, 0.01);
-    let (plot, report) = postc_verify::plot::draw(&mut Cursor::new(program.as_bytes()), file, &mut drawn, &mut again, &settings, &sources);
+    let (plot, report) = postc_verify::plot::draw(
+        &mut Cursor::new(program.as_bytes()),
+        file,
+        &mut drawn,
+        &mut again,
+        &settings,
+        &sources,
+    );
     (plot.svg(), report.findings.len())
 }
 
@@ -94,7 +101,16 @@ fn the_seed_job_is_drawn_in_two_views_with_arcs_dashed_rapids_and_a_legend() {
         assert!(!line.contains("stroke-dasharray"), "{line}");
     }
     // The legend and the axes.
-    for text in ["toolpath feed", "toolpath rapid", "program feed / arc", "program rapid", "X (mm)", "Y (mm)", "Z (mm)", "No findings"] {
+    for text in [
+        "toolpath feed",
+        "toolpath rapid",
+        "program feed / arc",
+        "program rapid",
+        "X (mm)",
+        "Y (mm)",
+        "Z (mm)",
+        "No findings",
+    ] {
         assert!(svg.contains(text), "{text}");
     }
     assert!(!svg.contains("class=\"finding\""));
@@ -130,14 +146,28 @@ fn plot_writes_svg_and_png() {
     let out = postc(&["post", POST, JOB, "-o", program.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let svg = dir.path().join("plot.svg");
-    let out = postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
+    let out =
+        postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = std::fs::read_to_string(&svg).unwrap();
     parses(&text);
     assert!(text.contains("seed.tap over seed_job.ron"));
 
     let png = dir.path().join("plot.png");
-    let out = postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", png.to_str().unwrap(), "--controller", "linuxcnc", "--tolerance", "0.02"]);
+    let out = postc(&[
+        "plot",
+        program.to_str().unwrap(),
+        "--toolpath",
+        JOB,
+        "--post",
+        POST,
+        "-o",
+        png.to_str().unwrap(),
+        "--controller",
+        "linuxcnc",
+        "--tolerance",
+        "0.02",
+    ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
@@ -153,7 +183,8 @@ fn plot_writes_svg_and_png() {
 fn a_faulty_program_is_plotted_and_its_findings_printed() {
     let dir = temp();
     let program = dir.path().join("bad.tap");
-    std::fs::write(&program, "G21 G90 G17\nG0 X0 Y0 Z5\nS1000 M3\nG1 Z-1 F300\nG2 X20 Y0 I0 J10 F1000\nG0 Z5\nM30\n").unwrap();
+    std::fs::write(&program, "G21 G90 G17\nG0 X0 Y0 Z5\nS1000 M3\nG1 Z-1 F300\nG2 X20 Y0 I0 J10 F1000\nG0 Z5\nM30\n")
+        .unwrap();
     let job = dir.path().join("job.ron");
     std::fs::write(
         &job,
@@ -161,7 +192,8 @@ fn a_faulty_program_is_plotted_and_its_findings_printed() {
     )
     .unwrap();
     let svg = dir.path().join("bad.svg");
-    let out = postc(&["plot", program.to_str().unwrap(), "--toolpath", job.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    let out =
+        postc(&["plot", program.to_str().unwrap(), "--toolpath", job.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     // Findings do not fail the plot; they are printed as verify prints them.
     assert!(out.status.success(), "{stderr}");
@@ -180,9 +212,21 @@ fn bad_inputs_give_diagnostics_and_no_file() {
     let p = program.to_str().unwrap();
     let cases: Vec<(Vec<String>, &str, PathBuf)> = vec![
         (vec!["-o".into(), dir.path().join("plot.pdf").display().to_string()], "IO007", dir.path().join("plot.pdf")),
-        (vec!["-o".into(), dir.path().join("no/such/dir/plot.svg").display().to_string()], "IO003", dir.path().join("no/such/dir/plot.svg")),
-        (vec!["-o".into(), dir.path().join("t.svg").display().to_string(), "--tolerance".into(), "0".into()], "IO007", dir.path().join("t.svg")),
-        (vec!["-o".into(), dir.path().join("m.svg").display().to_string(), "--post".into(), "no-such.pp".into()], "IO001", dir.path().join("m.svg")),
+        (
+            vec!["-o".into(), dir.path().join("no/such/dir/plot.svg").display().to_string()],
+            "IO003",
+            dir.path().join("no/such/dir/plot.svg"),
+        ),
+        (
+            vec!["-o".into(), dir.path().join("t.svg").display().to_string(), "--tolerance".into(), "0".into()],
+            "IO007",
+            dir.path().join("t.svg"),
+        ),
+        (
+            vec!["-o".into(), dir.path().join("m.svg").display().to_string(), "--post".into(), "no-such.pp".into()],
+            "IO001",
+            dir.path().join("m.svg"),
+        ),
     ];
     for (extra, code, path) in cases {
         let mut args = vec!["plot".to_string(), p.to_string(), "--toolpath".into(), JOB.into()];
@@ -204,7 +248,8 @@ fn bad_inputs_give_diagnostics_and_no_file() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("IO001"), "{}", String::from_utf8_lossy(&out.stderr));
     let binary = dir.path().join("bin.tap");
     std::fs::write(&binary, [0u8, 1, 2, 3, 0, 255]).unwrap();
-    let out = postc(&["plot", binary.to_str().unwrap(), "--toolpath", JOB, "-o", dir.path().join("c.svg").to_str().unwrap()]);
+    let out =
+        postc(&["plot", binary.to_str().unwrap(), "--toolpath", JOB, "-o", dir.path().join("c.svg").to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("VF002"));
     // Nothing was left behind, not even a temporary file.
@@ -220,14 +265,19 @@ fn the_readme_plot_is_current() {
     let program = dir.path().join("seed.tap");
     assert!(postc(&["post", POST, JOB, "-o", program.to_str().unwrap()]).status.success());
     let svg = dir.path().join("seed_job.svg");
-    let out = postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
+    let out =
+        postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let drawn = std::fs::read_to_string(&svg).unwrap();
     let committed = root().join("docs/img/seed_job.svg");
     if std::env::var_os("POSTC_BLESS").is_some() {
         std::fs::write(&committed, &drawn).unwrap();
     }
-    assert_eq!(std::fs::read_to_string(&committed).unwrap(), drawn, "docs/img/seed_job.svg is out of date: POSTC_BLESS=1 cargo test --test plot");
+    assert_eq!(
+        std::fs::read_to_string(&committed).unwrap(),
+        drawn,
+        "docs/img/seed_job.svg is out of date: POSTC_BLESS=1 cargo test --test plot"
+    );
 }
 
 /// Without any font the PNG is still drawn (resvg leaves the text out): what docs/plot.md promises.
@@ -242,7 +292,8 @@ fn a_png_without_fonts_is_still_drawn() {
     let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height()).unwrap();
     resvg::render(&tree, resvg::tiny_skia::Transform::default(), &mut pixmap.as_mut());
     // The findings' red discs are there.
-    let red = pixmap.pixels().iter().filter(|p| p.red() > 200 && p.green() < 80 && p.blue() < 80 && p.alpha() == 255).count();
+    let red =
+        pixmap.pixels().iter().filter(|p| p.red() > 200 && p.green() < 80 && p.blue() < 80 && p.alpha() == 255).count();
     assert!(red > 500, "{red} red pixels");
     assert!(pixmap.encode_png().unwrap().starts_with(b"\x89PNG"));
 }

@@ -15,8 +15,12 @@ use postp_common::{check, interpret, root, rs274, run, run_with};
 fn every_embedded_post_compiles_without_a_diagnostic() {
     for c in Controller::ALL {
         let mut sources = postc_ir::SourceMap::new();
-        let compiled =
-            postc_frontends::compile_post_bytes(std::path::Path::new(&c.post_name()), c.post_source(), None, &mut sources);
+        let compiled = postc_frontends::compile_post_bytes(
+            std::path::Path::new(&c.post_name()),
+            c.post_source(),
+            None,
+            &mut sources,
+        );
         assert!(compiled.diagnostics.is_empty(), "{c}: {:?}", compiled.diagnostics);
     }
 }
@@ -60,12 +64,28 @@ fn mills_differ_in_codes_comments_offsets_and_dwells() {
     let haas = check("mill_job", "HAASM", MILL_JOB);
     let tormach = check("mill_job", "TORMM", MILL_JOB);
     let acorn = check("mill_job", "ACORNM", MILL_JOB);
-    assert!(fanuc.program.contains("O1234\n(Mill job)\nN10 G17 G21") && fanuc.program.contains("T07 M06"), "{}", fanuc.program);
+    assert!(
+        fanuc.program.contains("O1234\n(Mill job)\nN10 G17 G21") && fanuc.program.contains("T07 M06"),
+        "{}",
+        fanuc.program
+    );
     assert!(fanuc.program.contains("G04 P500") && fanuc.program.contains("G54 P2 G43 H07 X10."), "{}", fanuc.program);
-    assert!(haas.program.contains("O01234\n(Mill job)\nN10 G00 G17") && haas.program.contains("T7 M06"), "{}", haas.program);
+    assert!(
+        haas.program.contains("O01234\n(Mill job)\nN10 G00 G17") && haas.program.contains("T7 M06"),
+        "{}",
+        haas.program
+    );
     assert!(haas.program.contains("G04 P0.5") && haas.program.contains("G154 P2 G43 H07 X10."), "{}", haas.program);
-    assert!(tormach.program.contains("(O1234)\n(Mill job)") && tormach.program.contains("T7 M6\n"), "{}", tormach.program);
-    assert!(tormach.program.contains("G4 P0.5") && tormach.program.contains("G54.1 P2 G43 H7 X10."), "{}", tormach.program);
+    assert!(
+        tormach.program.contains("(O1234)\n(Mill job)") && tormach.program.contains("T7 M6\n"),
+        "{}",
+        tormach.program
+    );
+    assert!(
+        tormach.program.contains("G4 P0.5") && tormach.program.contains("G54.1 P2 G43 H7 X10."),
+        "{}",
+        tormach.program
+    );
     assert!(acorn.program.contains("O01234\n; Mill job") && acorn.program.contains("G41 D7 Y20."), "{}", acorn.program);
 }
 
@@ -125,9 +145,21 @@ fn lathes_differ_in_spindle_limits_incremental_words_and_threading() {
     let haas = check("lathe_job", "HAASL", LATHE_JOB);
     let tormach = check("lathe_job", "TORML", LATHE_JOB);
     let acorn = check("lathe_job", "ACORNL", LATHE_JOB);
-    assert!(fanuc.program.contains("G50 S3000\nN40 G96 S180 M03") && fanuc.program.contains("G01 U3. F0.25"), "{}", fanuc.program);
-    assert!(fanuc.program.contains("G76 P021060 Q50 R0.05\nN") && fanuc.program.contains("G04 U1."), "{}", fanuc.program);
-    assert!(haas.program.contains("G76 X10.2 Z-18. K0.9 D0.3 F1.5 A60") && haas.program.contains("G04 P1."), "{}", haas.program);
+    assert!(
+        fanuc.program.contains("G50 S3000\nN40 G96 S180 M03") && fanuc.program.contains("G01 U3. F0.25"),
+        "{}",
+        fanuc.program
+    );
+    assert!(
+        fanuc.program.contains("G76 P021060 Q50 R0.05\nN") && fanuc.program.contains("G04 U1."),
+        "{}",
+        fanuc.program
+    );
+    assert!(
+        haas.program.contains("G76 X10.2 Z-18. K0.9 D0.3 F1.5 A60") && haas.program.contains("G04 P1."),
+        "{}",
+        haas.program
+    );
     assert!(tormach.program.contains("G96 D2000 S180 M3") && tormach.program.contains("G91\n"), "{}", tormach.program);
     assert!(tormach.program.contains("G76 P1.5 Z-18. I-1. J0.3 K0.9 Q30. H2 E1.5 L2"), "{}", tormach.program);
     assert!(acorn.program.contains("; Shaft") && acorn.program.contains("G4 P1."), "{}", acorn.program);
@@ -155,7 +187,9 @@ fn words_on_the_wrong_machine_are_errors() {
 
 #[test]
 fn bad_arguments_have_a_code() {
-    for body in ["AUXFUN/NOW", "MODE/92", "ORIGIN/61", "SEQNO/10,10", "TMARK/300", "TRANS/A", "ROTABL/AAXIS,90", "DELETE/MAYBE"] {
+    for body in
+        ["AUXFUN/NOW", "MODE/92", "ORIGIN/61", "SEQNO/10,10", "TMARK/300", "TRANS/A", "ROTABL/AAXIS,90", "DELETE/MAYBE"]
+    {
         let r = run_with(&format!("MACHIN/FANUCM,1\n{body}\n"), None, None);
         assert!(!r.ok && r.has("PX012"), "{body}: {:?}", r.diagnostics);
     }

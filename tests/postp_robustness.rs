@@ -13,8 +13,29 @@ const WORDS: &[&str] = &[
     "THREAD", "TMARK", "TRANS", "TURRET", "CYCLE", "MACHIN",
 ];
 const ARGS: &[&str] = &[
-    "0", "-1", "1e9", "54.3", "91", "NOW", "NEXT", "ON", "OFF", "LINEAR", "AAXIS", "INCR", "ATANGL", "XYPLAN", "RADIUS",
-    "SFM", "MAXRPM", "IPR", "REV", "(PLANE/0,0,1,2)", "NOMORE", "CLW", "",
+    "0",
+    "-1",
+    "1e9",
+    "54.3",
+    "91",
+    "NOW",
+    "NEXT",
+    "ON",
+    "OFF",
+    "LINEAR",
+    "AAXIS",
+    "INCR",
+    "ATANGL",
+    "XYPLAN",
+    "RADIUS",
+    "SFM",
+    "MAXRPM",
+    "IPR",
+    "REV",
+    "(PLANE/0,0,1,2)",
+    "NOMORE",
+    "CLW",
+    "",
 ];
 
 fn demo() -> Vec<String> {
@@ -35,7 +56,8 @@ fn edit() -> impl Strategy<Value = Edit> {
         any::<usize>().prop_map(Edit::Drop),
         any::<usize>().prop_map(Edit::Repeat),
         (any::<usize>(), any::<usize>()).prop_map(|(a, b)| Edit::Cut(a, b)),
-        (any::<usize>(), any::<usize>(), prop::collection::vec(any::<usize>(), 0..12)).prop_map(|(a, b, c)| Edit::Word(a, b, c)),
+        (any::<usize>(), any::<usize>(), prop::collection::vec(any::<usize>(), 0..12))
+            .prop_map(|(a, b, c)| Edit::Word(a, b, c)),
     ]
 }
 

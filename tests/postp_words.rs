@@ -59,9 +59,14 @@ fn coolnt_default_now_and_next() {
 
 #[test]
 fn cutcom_left_right_off_with_d() {
-    let body = "CUTCOM/LEFT\nGOTO/5,0,10\nCUTCOM/OFF\nGOTO/6,0,10\nCUTCOM/RIGHT,12\nGOTO/7,0,10\nCUTCOM/OFF\nGOTO/8,0,10\n";
+    let body =
+        "CUTCOM/LEFT\nGOTO/5,0,10\nCUTCOM/OFF\nGOTO/6,0,10\nCUTCOM/RIGHT,12\nGOTO/7,0,10\nCUTCOM/OFF\nGOTO/8,0,10\n";
     let r = check("cutcom", "FANUCM", &with_start(body));
-    assert!(r.program.contains("G41 X5.") && r.program.contains("G40 X6.") && r.program.contains("G42 D12 X7."), "{}", r.program);
+    assert!(
+        r.program.contains("G41 X5.") && r.program.contains("G40 X6.") && r.program.contains("G42 D12 X7."),
+        "{}",
+        r.program
+    );
 }
 
 #[test]
@@ -110,7 +115,11 @@ fn letter_engraves_the_next_pprint() {
     let r = check("letter", "FANUCM", &with_start(body));
     // H: three strokes, I: three, each a plunge at 100 and cuts at 200.
     assert_eq!(r.program.matches("G01 Z-0.2 F100.").count(), 6, "{}", r.program);
-    assert!(r.program.contains("(HI)\nZ5.\nX10. Y20.\nZ1.\nG01 Z-0.2 F100.\nY25.08 F200.\nG00 Z5.\nX13.387 Y20.\n"), "{}", r.program);
+    assert!(
+        r.program.contains("(HI)\nZ5.\nX10. Y20.\nZ1.\nG01 Z-0.2 F100.\nY25.08 F200.\nG00 Z5.\nX13.387 Y20.\n"),
+        "{}",
+        r.program
+    );
 }
 
 #[test]
@@ -155,7 +164,8 @@ fn origin_default_now_next_and_extended() {
 
 #[test]
 fn partno_and_pprint_are_comments_as_written_without_numbers() {
-    let r = check("partno_pprint", "FANUCM", "SEQNO/5,INCR,5\nPARTNO BRACKET (REV B)\nPPRINT check the clamps\nOPSTOP\n");
+    let r =
+        check("partno_pprint", "FANUCM", "SEQNO/5,INCR,5\nPARTNO BRACKET (REV B)\nPPRINT check the clamps\nOPSTOP\n");
     assert_eq!(r.program, "(BRACKET [REV B])\n(check the clamps)\nN5 M01\n");
 }
 

@@ -38,7 +38,8 @@ fn posts(dir: &Path) -> Vec<PathBuf> {
 /// The program a post writes for the standard toolpath, parts joined.
 fn post_standard(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = SourceMap::new();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
+    let mut source =
+        postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
     match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),

@@ -80,7 +80,8 @@ impl Wrap {
     fn unroll(&self, end: [f64; 6]) -> [f64; 2] {
         let mut xy = [end[0], end[1]];
         let v = end[self.rotary];
-        xy[self.axis] = if self.diameter > 0.0 { self.sign * v / 360.0 * std::f64::consts::PI * self.diameter } else { v };
+        xy[self.axis] =
+            if self.diameter > 0.0 { self.sign * v / 360.0 * std::f64::consts::PI * self.diameter } else { v };
         xy
     }
 }
@@ -163,8 +164,10 @@ fn tolerance(post: &Post) -> f64 {
 
 /// Real posts (`../shared/corpus/vectric`) that wrap an axis and have arc
 /// sections: their arcs must come out as chords.
-const REAL_WRAPPING_POSTS: &[&str] =
-    &["MakeraInc__CarveraProfiles/Carvera Wrap X2A ATC (mm) (!.cnc).pp", "neilferreri__V-Carve-PPs/Grbl_mm_TC_Rotary.pp"];
+const REAL_WRAPPING_POSTS: &[&str] = &[
+    "MakeraInc__CarveraProfiles/Carvera Wrap X2A ATC (mm) (!.cnc).pp",
+    "neilferreri__V-Carve-PPs/Grbl_mm_TC_Rotary.pp",
+];
 
 #[test]
 fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
@@ -186,7 +189,9 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         .filter(|p| p.extension().is_some_and(|e| e == "pp"))
         .collect();
     posts.sort();
-    posts.extend(REAL_WRAPPING_POSTS.iter().map(|rel| root().join("../shared/corpus/vectric").join(rel)).filter(|p| p.is_file()));
+    posts.extend(
+        REAL_WRAPPING_POSTS.iter().map(|rel| root().join("../shared/corpus/vectric").join(rel)).filter(|p| p.is_file()),
+    );
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy();
         let mut sources = SourceMap::new();
@@ -224,7 +229,9 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
             if wrap.is_some()
                 && let Some(arc) = actual.iter().find(|c| matches!(c.kind, Kind::Arc { .. }))
             {
-                failures.push(format!("{label}: a wrapped post printed an arc (G2/G3 cannot turn the rotary axis): {arc:?}"));
+                failures.push(format!(
+                    "{label}: a wrapped post printed an arc (G2/G3 cannot turn the rotary axis): {arc:?}"
+                ));
                 continue;
             }
             let mut at = 0;
@@ -244,7 +251,9 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
                         at += k + 1;
                     }
                     None => {
-                        failures.push(format!("{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"));
+                        failures.push(format!(
+                            "{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"
+                        ));
                         break;
                     }
                 }

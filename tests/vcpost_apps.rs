@@ -81,15 +81,25 @@ fn composites_functions_read_the_calls_lists() {
     let mut sources = SourceMap::new();
     let (post, diagnostics) = compile(text, &mut sources);
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
-    let call = |vars: Vec<(String, CallValue)>| SubCall { sub: "goto".into(), vars, span: Span::default(), missing: MissingSub::Warn };
+    let call = |vars: Vec<(String, CallValue)>| SubCall {
+        sub: "goto".into(),
+        vars,
+        span: Span::default(),
+        missing: MissingSub::Warn,
+    };
     let calls = vec![
-        call(vec![("getNthLength1".into(), CallValue::List(vec![5.0, 6.0, 7.5])), ("GETNTHLENGTH3".into(), CallValue::List(vec![1.0, 2.0]))]),
+        call(vec![
+            ("getNthLength1".into(), CallValue::List(vec![5.0, 6.0, 7.5])),
+            ("GETNTHLENGTH3".into(), CallValue::List(vec![1.0, 2.0])),
+        ]),
         call(Vec::new()),
         call(vec![("Unknown".into(), CallValue::Number(1.0)), ("Missing".into(), CallValue::List(vec![1.0]))]),
         SubCall { sub: "NoSuchSub".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Warn },
         SubCall { sub: "Optional".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Skip },
     ];
-    let report = postc_runtime::calls::run_calls(&post, &mut calls.into_iter(), Output::memory(), RunOptions::default()).unwrap();
+    let report =
+        postc_runtime::calls::run_calls(&post, &mut calls.into_iter(), Output::memory(), RunOptions::default())
+            .unwrap();
     let Finished::Memory(parts) = report.output else { panic!() };
     assert_eq!(String::from_utf8_lossy(&parts[0]), "L5,7.5,2,0\nL0,0,0,0\nL0,0,0,0\n");
     assert_eq!(report.warnings.iter().map(|d| d.code).collect::<Vec<_>>(), ["RT030"]);
@@ -97,7 +107,11 @@ fn composites_functions_read_the_calls_lists() {
 
 fn postc(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_postc")).args(args).current_dir(root()).output().unwrap();
-    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned())
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }
 
 #[test]
@@ -115,18 +129,25 @@ fn post_runs_tables_and_event_files_and_refuses_bad_ones() {
     let bad = dir.path().join("bad.csv");
     std::fs::write(&bad, "Initialize\nRapid,1,2\nTerminate\n").unwrap();
     let out = dir.path().join("out.mpf");
-    let (code, _, stderr) =
-        postc(&["post", "corpus/posts/vcpost/siemens_probe.VcPost", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let (code, _, stderr) = postc(&[
+        "post",
+        "corpus/posts/vcpost/siemens_probe.VcPost",
+        bad.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(code, 1, "{stderr}");
     assert!(stderr.contains("PT008") && stderr.contains("bad.csv:2:10"), "{stderr}");
     assert!(!out.exists(), "no output is written for a bad table");
 
-    let (code, stdout, stderr) = postc(&["post", "corpus/posts/vcpost/siemens_probe.VcPost", "corpus/probe/siemens_probe__housing.csv"]);
+    let (code, stdout, stderr) =
+        postc(&["post", "corpus/posts/vcpost/siemens_probe.VcPost", "corpus/probe/siemens_probe__housing.csv"]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("CYCLE979"));
 
     let events = "corpus/composites/afp_roller__spar_ply90.vcp.jsonl";
-    let (code, stdout, stderr) = postc(&["post", "corpus/posts/vcpost/afp_roller.VcPost", events, "--primer", "S5_Horizontal"]);
+    let (code, stdout, stderr) =
+        postc(&["post", "corpus/posts/vcpost/afp_roller.VcPost", events, "--primer", "S5_Horizontal"]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("M38 S5"), "the primer ran first: {stdout}");
     let (code, _, stderr) = postc(&["post", "corpus/posts/vcpost/afp_roller.VcPost", events, "--primer", "Nope"]);

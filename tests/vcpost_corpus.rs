@@ -61,7 +61,10 @@ fn compile(stem: &str) -> Result<Post, String> {
     compiled.post.ok_or_else(|| format!("{stem}: no post"))
 }
 
-fn memory(result: Result<postc_runtime::RunReport, Vec<postc_ir::Diagnostic>>, sources: &mut SourceMap) -> Result<Vec<u8>, String> {
+fn memory(
+    result: Result<postc_runtime::RunReport, Vec<postc_ir::Diagnostic>>,
+    sources: &mut SourceMap,
+) -> Result<Vec<u8>, String> {
     match result {
         Ok(report) => match report.output {
             Finished::Memory(mut parts) if parts.len() == 1 => Ok(parts.remove(0)),
@@ -82,7 +85,8 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         if !diagnostics.is_empty() {
             return Err(sources.render(&diagnostics, false));
         }
-        let result = postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
+        let result =
+            postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
         memory(result, &mut sources)
     } else if postc_front_vcpost::composites::is_composites_file(input) {
         let mut reader =
@@ -175,7 +179,8 @@ fn vcpost_corpus_matches_its_goldens() {
             let first = old.as_deref().map_or(0, |o| {
                 o.split(|&b| b == b'\n').zip(output.split(|&b| b == b'\n')).take_while(|(a, b)| a == b).count() + 1
             });
-            failures.push(format!("{target}: differs from the golden (first at line {first}); bless with POSTC_BLESS=1"));
+            failures
+                .push(format!("{target}: differs from the golden (first at line {first}); bless with POSTC_BLESS=1"));
         }
     }
     if have_shared {

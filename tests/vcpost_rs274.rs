@@ -128,7 +128,8 @@ fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
         return;
     };
     let mut sources = SourceMap::new();
-    let compiled = postc_frontends::compile_post(&root().join("corpus/posts/vcpost/fanuc_mill.VcPost"), None, &mut sources);
+    let compiled =
+        postc_frontends::compile_post(&root().join("corpus/posts/vcpost/fanuc_mill.VcPost"), None, &mut sources);
     assert!(compiled.diagnostics.is_empty(), "{:?}", compiled.diagnostics);
     let post = compiled.post.unwrap();
     let tol = 1e-4 + 1e-4;

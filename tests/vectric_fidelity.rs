@@ -62,7 +62,9 @@ fn motion_lines(program: &str) -> Vec<String> {
         .lines()
         .map(|l| {
             let l = l.trim();
-            let l = l.strip_prefix('N').map_or(l, |rest| rest.trim_start_matches(|c: char| c.is_ascii_digit()).trim_start());
+            let l = l
+                .strip_prefix('N')
+                .map_or(l, |rest| rest.trim_start_matches(|c: char| c.is_ascii_digit()).trim_start());
             l.replace(' ', "")
         })
         .filter(|l| is_cut(l) || l.starts_with('X') || l.starts_with('Y') || l.starts_with('Z'))
@@ -78,7 +80,8 @@ fn is_cut(l: &str) -> bool {
 /// Whether a block carries the word `S0` (S followed by a zero value).
 fn has_s0(line: &str) -> bool {
     line.match_indices('S').any(|(i, _)| {
-        let value: String = line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == '-').collect();
+        let value: String =
+            line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == '-').collect();
         !value.is_empty() && value.parse::<f64>().is_ok_and(|v| v == 0.0)
     })
 }
@@ -112,7 +115,10 @@ fn router_cuts_of_real_posts_print_no_power_word() {
         let bad: Vec<&String> = motion.iter().filter(|l| has_s0(l)).collect();
         assert!(bad.is_empty(), "{rel}: motion blocks print S0 (spindle speed 0 on the controller):\n{bad:#?}");
         if !laser_word.is_empty() {
-            assert!(program.contains(laser_word), "{rel}: the laser toolpath's power {laser_word} is missing:\n{program}");
+            assert!(
+                program.contains(laser_word),
+                "{rel}: the laser toolpath's power {laser_word} is missing:\n{program}"
+            );
         }
         checked += 1;
     }
@@ -155,9 +161,15 @@ fn a_jet_tool_without_power_prints_power_zero_until_one_is_set() {
         ],
     );
     let lines: Vec<&str> = program.lines().collect();
-    let on = lines.iter().position(|l| *l == "M4S0").unwrap_or_else(|| panic!("JET_TOOL_ON before any power prints M4S0:\n{program}"));
+    let on = lines
+        .iter()
+        .position(|l| *l == "M4S0")
+        .unwrap_or_else(|| panic!("JET_TOOL_ON before any power prints M4S0:\n{program}"));
     // `[P]` is on-change (`C`): JET_TOOL_POWER prints S500, the JET_TOOL_ON after it M4.
-    let power = lines.iter().position(|l| *l == "S500").unwrap_or_else(|| panic!("the Power event's S500 is missing:\n{program}"));
+    let power = lines
+        .iter()
+        .position(|l| *l == "S500")
+        .unwrap_or_else(|| panic!("the Power event's S500 is missing:\n{program}"));
     assert!(on < power && lines[power + 1] == "M4", "{program}");
 }
 
@@ -223,7 +235,11 @@ fn a_prints_nothing_before_the_toolpath_sets_it() {
 fn units_print_mm_or_inches() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let pp = dir.path().join("units.pp");
-    std::fs::write(&pp, "POST_NAME = \"units\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"INCHES\"\nbegin HEADER\n\"([UNITS])\"\n").unwrap();
+    std::fs::write(
+        &pp,
+        "POST_NAME = \"units\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"INCHES\"\nbegin HEADER\n\"([UNITS])\"\n",
+    )
+    .unwrap();
     let program = post_events(&compile(&pp), vec![job(), Event::End]);
     assert_eq!(program.lines().next(), Some("(INCHES)"), "{program}");
 }
@@ -240,7 +256,10 @@ fn wrapped_arcs_of_a_real_post_are_linearized() {
     let program = post_file(&compile(&path), &manifest().join("corpus/toolpaths/standard.ron"));
     let arcs: Vec<&str> = program.lines().filter(|l| is_cut(l) && !l.starts_with("G1")).collect();
     assert!(arcs.is_empty(), "wrapped arcs must be linearized, found:\n{}", arcs.join("\n"));
-    assert!(program.lines().any(|l| l.contains('A') && (l.starts_with("G1") || l.starts_with('X') || l.starts_with('A'))), "{program}");
+    assert!(
+        program.lines().any(|l| l.contains('A') && (l.starts_with("G1") || l.starts_with('X') || l.starts_with('A'))),
+        "{program}"
+    );
 }
 
 /// The same with the corpus's own wrapping post given arc sections: every
@@ -258,7 +277,11 @@ fn wrapped_arc_chords_lie_on_the_arc() {
     let post = compile(&pp);
     let diameter = 40.0;
     let events = vec![
-        Event::Job(Box::new(Job { wrap_diameter: Some(diameter), home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }), ..Job::default() })),
+        Event::Job(Box::new(Job {
+            wrap_diameter: Some(diameter),
+            home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }),
+            ..Job::default()
+        })),
         Event::Tool(Tool { number: 1, spindle_speed: 10000.0, cut_feed: 600.0, plunge_feed: 200.0, ..Tool::default() }),
         Event::ToolpathStart(ToolpathStart::default()),
         Event::Rapid(Move { x: 20.0, y: 10.0, z: 1.0, ..Move::default() }),
@@ -281,7 +304,14 @@ fn wrapped_arc_chords_lie_on_the_arc() {
     let mut chords = 0;
     for line in program.lines().filter(|l| l.starts_with("G1")) {
         let word = |letter: char| {
-            line.find(letter).map(|i| line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == '-').collect::<String>().parse::<f64>().unwrap())
+            line.find(letter).map(|i| {
+                line[i + 1..]
+                    .chars()
+                    .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == '-')
+                    .collect::<String>()
+                    .parse::<f64>()
+                    .unwrap()
+            })
         };
         let (Some(x), Some(a)) = (word('X'), word('A')) else { continue };
         let y = -a / 360.0 * std::f64::consts::PI * diameter;

@@ -41,7 +41,8 @@ fn a_wrong_program_exits_1_with_json_findings_at_their_line() {
     let line = wrong.lines().position(|l| l.starts_with("G2X80.000")).unwrap() + 1;
     let path = dir.path().join("wrong.ngc");
     std::fs::write(&path, wrong).unwrap();
-    let o = postc(&["verify", path.to_str().unwrap(), "--toolpath", "corpus/toolpaths/standard.ron", "--format", "json"]);
+    let o =
+        postc(&["verify", path.to_str().unwrap(), "--toolpath", "corpus/toolpaths/standard.ron", "--format", "json"]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     let findings: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let arc = findings.as_array().unwrap().iter().find(|f| f["code"] == "VF013").expect("a VF013 finding");
@@ -62,11 +63,25 @@ fn other_families_are_refused_with_the_families_verify_reads() {
         assert!(text(&o).contains("VF001") && text(&o).contains("verify reads G-code"), "{}", text(&o));
     }
     // By the post, too.
-    let o = postc(&["verify", "corpus/expected/gcode_mm__standard.ngc", "--toolpath", "corpus/toolpaths/standard.ron", "--post", "corpus/posts/vectric/hpgl_arcs.pp"]);
+    let o = postc(&[
+        "verify",
+        "corpus/expected/gcode_mm__standard.ngc",
+        "--toolpath",
+        "corpus/toolpaths/standard.ron",
+        "--post",
+        "corpus/posts/vectric/hpgl_arcs.pp",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o).contains("VF001"), "{}", text(&o));
     // Rotary-wrapped posts are refused.
-    let o = postc(&["verify", "corpus/expected/gcode_mm__standard.ngc", "--toolpath", "corpus/toolpaths/standard.ron", "--post", "corpus/posts/vectric/rotary_wrap_mm.pp"]);
+    let o = postc(&[
+        "verify",
+        "corpus/expected/gcode_mm__standard.ngc",
+        "--toolpath",
+        "corpus/toolpaths/standard.ron",
+        "--post",
+        "corpus/posts/vectric/rotary_wrap_mm.pp",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o).contains("VF006"), "{}", text(&o));
 }
@@ -88,14 +103,28 @@ fn binary_and_missing_programs_are_clear_errors() {
 fn post_with_verify_checks_what_it_wrote() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.ngc");
-    let o = postc(&["post", "corpus/posts/vectric/gcode_mm.pp", "corpus/toolpaths/standard.ron", "-o", out.to_str().unwrap(), "--verify"]);
+    let o = postc(&[
+        "post",
+        "corpus/posts/vectric/gcode_mm.pp",
+        "corpus/toolpaths/standard.ron",
+        "-o",
+        out.to_str().unwrap(),
+        "--verify",
+    ]);
     assert!(o.status.success(), "{}", text(&o));
     assert!(text(&o).contains("postc verify"), "{}", text(&o));
     // A post that drops the spindle: the program is written, verify fails.
     let bad = std::fs::read_to_string(root().join("corpus/posts/vectric/gcode_noarcs_mm.pp")).unwrap();
     let post = dir.path().join("noarcs.pp");
     std::fs::write(&post, bad).unwrap();
-    let o = postc(&["post", post.to_str().unwrap(), "corpus/toolpaths/standard.ron", "-o", out.to_str().unwrap(), "--verify"]);
+    let o = postc(&[
+        "post",
+        post.to_str().unwrap(),
+        "corpus/toolpaths/standard.ron",
+        "-o",
+        out.to_str().unwrap(),
+        "--verify",
+    ]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     assert!(text(&o).contains("VF035"), "{}", text(&o));
     // --verify needs -o.
@@ -113,7 +142,15 @@ fn postp_programs_verify_against_their_cl_file() {
     let program = dir.path().join("out.nc");
     std::fs::write(&program, &o.stdout).unwrap();
     let cl = dir.path().join("cl.tap");
-    let o = postc(&["verify", program.to_str().unwrap(), "--toolpath", cl.to_str().unwrap(), "--postp", "--controller", "fanuc"]);
+    let o = postc(&[
+        "verify",
+        program.to_str().unwrap(),
+        "--toolpath",
+        cl.to_str().unwrap(),
+        "--postp",
+        "--controller",
+        "fanuc",
+    ]);
     assert!(o.status.success(), "{}", text(&o));
     assert!(text(&o).contains("0 error(s)"), "{}", text(&o));
 }

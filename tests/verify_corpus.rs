@@ -23,38 +23,118 @@ fn root() -> PathBuf {
 /// finding code; why): findings that are deliberate properties of the post.
 /// `docs/verify.md` ("Corpus exceptions") gives the evidence for each.
 const EXCEPTIONS: &[(&str, &str, &str, &str)] = &[
-    ("gcode_noarcs_mm.pp", "*", "VF035", "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet"),
-    ("tape_split_mm.pp", "*", "VF035", "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet"),
-    ("siemens_840d.js", "*", "*", "Siemens 840D syntax (G0 SUPA Z0, MCALL CYCLE83(...)) is not the ISO family verify reads"),
+    (
+        "gcode_noarcs_mm.pp",
+        "*",
+        "VF035",
+        "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet",
+    ),
+    (
+        "tape_split_mm.pp",
+        "*",
+        "VF035",
+        "no JET_TOOL_ON section: the laser toolpath is cut with no code that starts the jet",
+    ),
+    (
+        "siemens_840d.js",
+        "*",
+        "*",
+        "Siemens 840D syntax (G0 SUPA Z0, MCALL CYCLE83(...)) is not the ISO family verify reads",
+    ),
     ("Grbl_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Grbl_mm_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Shapeoko_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Shapeoko_mm_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("estlcam-eding-vectric-v11.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Marlin M3 support - mm.pp", "*", "VF004", "the dwell prints `G4 1.5` style words with no P"),
-    ("G2Core_Laser_Arcs_inch.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
-    ("G2Core_Laser_Arcs_inch.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
-    ("G2Core_Laser_Arcs_mm.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
-    ("G2Core_Laser_Arcs_mm.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
-    ("Grbl_mm_TC_wLaser.pp", "*", "VF010", "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y"),
-    ("Grbl_mm_TC_wLaser.pp", "*", "VF013", "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start"),
-    ("Onefinity Laser*", "*", "VF010", "a 2D laser post (no Z): PLUNGE_MOVE prints nothing, so linearized helical plunges lose their X and Y"),
+    (
+        "G2Core_Laser_Arcs_inch.pp",
+        "*",
+        "VF010",
+        "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y",
+    ),
+    (
+        "G2Core_Laser_Arcs_inch.pp",
+        "*",
+        "VF013",
+        "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start",
+    ),
+    (
+        "G2Core_Laser_Arcs_mm.pp",
+        "*",
+        "VF010",
+        "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y",
+    ),
+    (
+        "G2Core_Laser_Arcs_mm.pp",
+        "*",
+        "VF013",
+        "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start",
+    ),
+    (
+        "Grbl_mm_TC_wLaser.pp",
+        "*",
+        "VF010",
+        "PLUNGE_MOVE prints only [Z]: the chords of a linearized helical plunge lose their X and Y",
+    ),
+    (
+        "Grbl_mm_TC_wLaser.pp",
+        "*",
+        "VF013",
+        "PLUNGE_MOVE prints only [Z]: after a helical plunge the next I J is taken from the wrong start",
+    ),
+    (
+        "Onefinity Laser*",
+        "*",
+        "VF010",
+        "a 2D laser post (no Z): PLUNGE_MOVE prints nothing, so linearized helical plunges lose their X and Y",
+    ),
     ("Generator_Laguna_SmartShopM.pp", "*", "VF023", "full circles print as `G03 R10` with no end point"),
     ("Generator_Laguna_SmartShopM.pp", "*", "VF010", "full circles print as `G03 R10` with no end point"),
-    ("Langmuir_crossfire_arc_inch.pp", "*", "*", "a plasma post: plunges become a pierce (M3, G4) and retracts `M5 G0 Z1`, so Z is not the toolpath's"),
-    ("Marlin*", "*", "VF033", "FEED_MOVE and the arc sections print the cut feed [FC]: plunges run at the cut feed and feed changes are not printed"),
+    (
+        "Langmuir_crossfire_arc_inch.pp",
+        "*",
+        "*",
+        "a plasma post: plunges become a pierce (M3, G4) and retracts `M5 G0 Z1`, so Z is not the toolpath's",
+    ),
+    (
+        "Marlin*",
+        "*",
+        "VF033",
+        "FEED_MOVE and the arc sections print the cut feed [FC]: plunges run at the cut feed and feed changes are not printed",
+    ),
     ("Marlin Bit Change - inch.pp", "*", "VF031", "the bit-change TOOLCHANGE switches to G21 and never back to G20"),
     ("Marlin_in_w_bit_change.pp", "*", "VF031", "the bit-change TOOLCHANGE switches to G21 and never back to G20"),
     ("Marlin_in_w_spindle_control.pp", "*", "VF031", "the TOOLCHANGE switches to G21 and never back to G20"),
-    ("Marlin Bit Change*", "*", "VF037", "the bit change probes the new bit: G91 rapids down toward the work before G38.2"),
+    (
+        "Marlin Bit Change*",
+        "*",
+        "VF037",
+        "the bit change probes the new bit: G91 rapids down toward the work before G38.2",
+    ),
     ("Marlin Bit Change*", "*", "VF010", "the bit change probes the new bit and resets Z with G92"),
     ("Marlin Bit Change*", "*", "VF012", "the bit change probes the new bit and resets Z with G92"),
-    ("Marlin_in_with_arcs_and_fan_control.pp", "*", "*", "UNITS = INCHES but the header prints G21: inch numbers read as millimetres"),
+    (
+        "Marlin_in_with_arcs_and_fan_control.pp",
+        "*",
+        "*",
+        "UNITS = INCHES but the header prints G21: inch numbers read as millimetres",
+    ),
     ("OpenBuilds_inch.pp", "*", "*", "the corpus copy ends after SPINDLE_ON: no move sections, so no move is written"),
     ("OpenBuilds_mm.pp", "*", "*", "the corpus copy ends after SPINDLE_ON: no move sections, so no move is written"),
     ("RepRapMarlin-gcode.pp", "*", "VF035", "a post with no spindle control: it never prints M3"),
-    ("snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp", "*", "VF013", "prints absolute arc centres (IA/JA) as I J without G90.1"),
-    ("snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp", "*", "VF020", "prints absolute arc centres (IA/JA) as I J without G90.1"),
+    (
+        "snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp",
+        "*",
+        "VF013",
+        "prints absolute arc centres (IA/JA) as I J without G90.1",
+    ),
+    (
+        "snapmaker-vcarve-configuration__Snapmaker_cnc_mm.pp",
+        "*",
+        "VF020",
+        "prints absolute arc centres (IA/JA) as I J without G90.1",
+    ),
 ];
 
 fn is_excepted(post: &str, toolpath: &str, code: &str) -> bool {
@@ -125,7 +205,10 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
     // Vectric posts post the Vectric-style toolpaths; CIMCO mill posts the
     // CIMCO mill and drill toolpaths and the standard job (as their goldens do).
     let vectric_toolpaths = files(&root().join("corpus/toolpaths"), &["ron"], false);
-    let cimco_toolpaths: Vec<PathBuf> = ["cimco/mill.ron", "cimco/drill.ron", "standard.ron"].iter().map(|t| root().join("corpus/toolpaths").join(t)).collect();
+    let cimco_toolpaths: Vec<PathBuf> = ["cimco/mill.ron", "cimco/drill.ron", "standard.ron"]
+        .iter()
+        .map(|t| root().join("corpus/toolpaths").join(t))
+        .collect();
 
     let (mut pairs, mut excepted, mut refused, mut not_posted) = (0, 0, BTreeMap::new(), 0);
     let mut failures = Vec::new();
@@ -144,7 +227,8 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
             *refused.entry("lathe (VF007)").or_insert(0) += 1;
             continue;
         }
-        let toolpaths = if post_path.extension().is_some_and(|e| e == "js") { &cimco_toolpaths } else { &vectric_toolpaths };
+        let toolpaths =
+            if post_path.extension().is_some_and(|e| e == "js") { &cimco_toolpaths } else { &vectric_toolpaths };
         if post.options.rotary_wrap.is_some() {
             *refused.entry("rotary wrap (VF006)").or_insert(0) += 1;
             continue;
@@ -167,7 +251,8 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
                 break;
             }
             pairs += 1;
-            let (allowed, other): (Vec<_>, Vec<_>) = errors.into_iter().partition(|(code, _, _)| is_excepted(&name, &tp, code));
+            let (allowed, other): (Vec<_>, Vec<_>) =
+                errors.into_iter().partition(|(code, _, _)| is_excepted(&name, &tp, code));
             if !allowed.is_empty() {
                 excepted += 1;
             }

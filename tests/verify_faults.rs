@@ -148,9 +148,7 @@ fn arc_direction_swapped() {
 
 #[test]
 fn i_and_j_swapped() {
-    let text = good_post()
-        .replace("[I|A|I|1.4]", "[J|A|I|1.4]")
-        .replace("[J|A|J|1.4]", "[I|A|J|1.4]");
+    let text = good_post().replace("[I|A|I|1.4]", "[J|A|I|1.4]").replace("[J|A|J|1.4]", "[I|A|J|1.4]");
     let (program, found) = seeded(&text);
     let line = line_of(&program, |l| l.starts_with("G3"));
     let errs = errors(&found);
@@ -199,7 +197,10 @@ fn spindle_started_after_the_first_cut() {
     let text = good_post()
         .replace("begin SPINDLE_ON\n\"[S] M3\"", "begin SPINDLE_ON\n")
         .replace("begin SPINDLE_ON\r\n\"[S] M3\"", "begin SPINDLE_ON\r\n")
-        .replace("begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"", "begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"\n\"[S] M3\"");
+        .replace(
+            "begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"",
+            "begin FIRST_CCW_ARC_MOVE\n\"G3[X][Y][Z][I][J][F]\"\n\"[S] M3\"",
+        );
     assert!(!text.contains("begin SPINDLE_ON\n\"[S] M3\""), "the seeded post still starts the spindle");
     let (program, found) = seeded(&text);
     let first_cut = line_of(&program, |l| l.starts_with("G1"));
@@ -310,7 +311,8 @@ fn hand_written_faults_are_caught_at_their_line() {
 #[test]
 fn bad_programs_give_findings_never_a_panic() {
     // Unknown words and letters.
-    let found = check(&program_with(&[(7, "N70 X30 F1000 E5"), (8, "N80 G3 X40.35 Y20.35 I0 J10.35 G7.7")]), Controller::Grbl);
+    let found =
+        check(&program_with(&[(7, "N70 X30 F1000 E5"), (8, "N80 G3 X40.35 Y20.35 I0 J10.35 G7.7")]), Controller::Grbl);
     assert!(found.iter().any(|f| f.code == "VF005" && f.line == 8), "{found:#?}");
     assert!(found.iter().any(|f| f.code == "VF005" && f.line == 9), "{found:#?}");
     // Parameters and expressions.

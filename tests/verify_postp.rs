@@ -8,11 +8,11 @@ use std::collections::BTreeMap;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
+use postc_ir::SourceMap;
 use postc_postp::controller::{self, Controller as Mill};
 use postc_postp::records::ClText;
 use postc_postp::transform::{Machine, Transform};
 use postc_postp::{self as postp, Settings as PostpSettings};
-use postc_ir::SourceMap;
 use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
@@ -22,10 +22,26 @@ fn root() -> PathBuf {
 
 /// (CL file name or "*", finding code, why).
 const EXCEPTIONS: &[(&str, &str, &str)] = &[
-    ("*", "VF004", "postp writes PPRINT text and tool-holder notes (`[HOLDER=...] 6MM CRB ...`) as bare lines, not comments"),
-    ("*", "VF038", "postp's M06 relies on the machine's tool-change macro to raise Z; the CL files go to the tool change without a retract"),
-    ("Haas_Machine__mworks.ncl", "VF030", "an inch CL file (UNITS/INCHES); postp's program has no G20, so it reads as millimetres"),
-    ("sketched-tools-inch__mworks.ncl", "VF030", "an inch CL file (UNITS/INCHES); postp's program has no G20, so it reads as millimetres"),
+    (
+        "*",
+        "VF004",
+        "postp writes PPRINT text and tool-holder notes (`[HOLDER=...] 6MM CRB ...`) as bare lines, not comments",
+    ),
+    (
+        "*",
+        "VF038",
+        "postp's M06 relies on the machine's tool-change macro to raise Z; the CL files go to the tool change without a retract",
+    ),
+    (
+        "Haas_Machine__mworks.ncl",
+        "VF030",
+        "an inch CL file (UNITS/INCHES); postp's program has no G20, so it reads as millimetres",
+    ),
+    (
+        "sketched-tools-inch__mworks.ncl",
+        "VF030",
+        "an inch CL file (UNITS/INCHES); postp's program has no G20, so it reads as millimetres",
+    ),
 ];
 
 /// CL files larger than this are skipped to keep the test's time reasonable in debug builds.
@@ -82,7 +98,12 @@ fn postp_mill_programs_verify_against_their_cl_files() {
                 retractz: options.retractz,
             };
             let mut source = Transform::new(reader, ClText::open(file), machine_data);
-            let verdict = postc_verify::verify(&mut Cursor::new(&program), file_id, &mut source, &Settings::from_post(&post, controller, 0.01));
+            let verdict = postc_verify::verify(
+                &mut Cursor::new(&program),
+                file_id,
+                &mut source,
+                &Settings::from_post(&post, controller, 0.01),
+            );
             pairs += 1;
             for d in verdict.findings.iter().filter(|d| d.is_error()) {
                 if EXCEPTIONS.iter().any(|(f, c, _)| (*f == "*" || *f == name) && *c == d.code) {
@@ -97,6 +118,9 @@ fn postp_mill_programs_verify_against_their_cl_files() {
             }
         }
     }
-    println!("verify postp: {} CL files, {pairs} CL file x controller pairs verified, {not_posted} not posted; findings by code {by_code:?}", files.len());
+    println!(
+        "verify postp: {} CL files, {pairs} CL file x controller pairs verified, {not_posted} not posted; findings by code {by_code:?}",
+        files.len()
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -14,9 +14,8 @@ pub fn print(post: &Post) -> Result<String, Vec<Diagnostic>> {
     let mut post = post.clone();
     drop_spans(&mut post);
     let config = ::ron::ser::PrettyConfig::new().struct_names(false).compact_arrays(true);
-    let text = ::ron::ser::to_string_pretty(&post, config).map_err(|e| {
-        vec![Diagnostic::error("CV009", format!("the IR cannot be written as RON: {e}"))]
-    })?;
+    let text = ::ron::ser::to_string_pretty(&post, config)
+        .map_err(|e| vec![Diagnostic::error("CV009", format!("the IR cannot be written as RON: {e}"))])?;
     Ok(format!(
         "// Converted by postc from {} ({})\n{text}\n",
         crate::source_name(&post),

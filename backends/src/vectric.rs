@@ -31,8 +31,8 @@ use postc_front_vectric::defaults::default_format;
 use postc_front_vectric::names::{label_of_var_name, var_name_of_label};
 use postc_ir::post::{Dispatch, RotaryWrap, Section, WrappedAxis};
 use postc_ir::{
-    Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post, SignStyle,
-    Span, Stmt, Units, ValueSource, WidthOf,
+    Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post,
+    SignStyle, Span, Stmt, Units, ValueSource, WidthOf,
 };
 
 /// The guides' order of sections.
@@ -112,7 +112,8 @@ impl Printer<'_> {
             self.refuse(
                 "CV001",
                 None,
-                "this post is driven by APT words (one Sub per GOTO, FEDRAT, ...), which Vectric has no form for".into(),
+                "this post is driven by APT words (one Sub per GOTO, FEDRAT, ...), which Vectric has no form for"
+                    .into(),
                 "a Vectric post prints sections chosen by the kind of move; it cannot run a Sub per APT record",
             );
         }
@@ -200,7 +201,9 @@ impl Printer<'_> {
                             self.refuse(
                                 "CV005",
                                 h.span,
-                                format!("two variables print [{label}] (`{name}` is one), and a Vectric label names one"),
+                                format!(
+                                    "two variables print [{label}] (`{name}` is one), and a Vectric label names one"
+                                ),
                                 "a Vectric line names a variable by its label",
                             );
                             return labels;
@@ -276,7 +279,8 @@ impl Printer<'_> {
                 self.refuse(
                     "CV004",
                     None,
-                    "this post substitutes text longer than one character, and SUBSTITUTE takes single characters".into(),
+                    "this post substitutes text longer than one character, and SUBSTITUTE takes single characters"
+                        .into(),
                     "SUBSTITUTE holds pairs of characters",
                 );
             }
@@ -333,7 +337,11 @@ impl Printer<'_> {
                     self.refuse(
                         "CV005",
                         None,
-                        format!("`{}` prints [{}] in a way of its own, and Vectric has no VAR name to declare it", v.name, q.label()),
+                        format!(
+                            "`{}` prints [{}] in a way of its own, and Vectric has no VAR name to declare it",
+                            v.name,
+                            q.label()
+                        ),
                         "a label without a VAR name always prints with its default format",
                     );
                 }

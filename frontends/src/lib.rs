@@ -18,7 +18,7 @@ mod ron_locate;
 
 use std::path::Path;
 
-use postc_ir::{Dialect, Diagnostic, EventSource, FileId, Post, SourceMap, Span};
+use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceMap, Span};
 
 /// A compiled post and everything its frontend had to say.
 pub struct Compiled {
@@ -183,7 +183,9 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
     let text = String::from_utf8_lossy(head);
     let first = text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with("//"));
     match first {
-        Some(l) if l.starts_with('{') || l.starts_with("Job(") || l.starts_with("Tool(") => Some(ToolpathFormat::Native),
+        Some(l) if l.starts_with('{') || l.starts_with("Job(") || l.starts_with("Tool(") => {
+            Some(ToolpathFormat::Native)
+        }
         _ if postc_front_apt::looks_like_cl(head) => Some(ToolpathFormat::Apt),
         _ => None,
     }

@@ -163,7 +163,8 @@ mod tests {
 
     #[test]
     fn bad_lines_are_reported_and_skipped() {
-        let (events, diags) = read("Rapid(x: 1, y: 2, z: 3)\nRapid(x: 1, y: 2\nFeed(x: 1, y: 2, z: 0, speed: 3)\nEnd\n", None);
+        let (events, diags) =
+            read("Rapid(x: 1, y: 2, z: 3)\nRapid(x: 1, y: 2\nFeed(x: 1, y: 2, z: 0, speed: 3)\nEnd\n", None);
         assert_eq!(events.len(), 2);
         assert_eq!(diags.len(), 2);
         assert!(diags.iter().all(|d| d.code == "TP001"));
@@ -171,10 +172,8 @@ mod tests {
 
     #[test]
     fn written_events_read_back() {
-        let events = vec![
-            Event::Rapid(Move { x: 1.5, y: -2.0, z: 3.0, a: Some(90.0), ..Move::default() }),
-            Event::ToolpathEnd,
-        ];
+        let events =
+            vec![Event::Rapid(Move { x: 1.5, y: -2.0, z: 3.0, a: Some(90.0), ..Move::default() }), Event::ToolpathEnd];
         for syntax in [Syntax::Ron, Syntax::JsonLines] {
             let mut text = String::new();
             for e in &events {

@@ -27,17 +27,10 @@ pub enum Stmt {
     /// Evaluate for effect (a call whose result is not used).
     Eval(Expr),
     /// `if` / `else if` / `else`.
-    If {
-        branches: Vec<(Expr, Vec<Stmt>)>,
-        otherwise: Vec<Stmt>,
-    },
+    If { branches: Vec<(Expr, Vec<Stmt>)>, otherwise: Vec<Stmt> },
     /// A loop; the runtime stops it with a diagnostic at `span` when the
     /// post's step budget runs out.
-    While {
-        cond: Expr,
-        body: Vec<Stmt>,
-        span: Option<Span>,
-    },
+    While { cond: Expr, body: Vec<Stmt>, span: Option<Span> },
     /// Leave the innermost loop.
     Break,
     /// Next iteration of the innermost loop.
@@ -111,9 +104,15 @@ pub enum Expr {
     Previous(VarId),
     /// Format a value through a variable: its prefix, format and modality;
     /// updates what the variable last printed (CIMCO `xOutput.format(v)`).
-    FormatVar { var: VarId, value: Box<Expr> },
+    FormatVar {
+        var: VarId,
+        value: Box<Expr>,
+    },
     /// Format a value with a format alone (CIMCO `xyzFormat.format(v)`).
-    Format { format: FormatId, value: Box<Expr> },
+    Format {
+        format: FormatId,
+        value: Box<Expr>,
+    },
     Unary(UnaryOp, Box<Expr>),
     Binary(BinaryOp, Box<Expr>, Box<Expr>),
     /// `cond ? a : b`

@@ -82,14 +82,7 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            code,
-            severity,
-            message: message.into(),
-            labels: Vec::new(),
-            notes: Vec::new(),
-            help: None,
-        }
+        Diagnostic { code, severity, message: message.into(), labels: Vec::new(), notes: Vec::new(), help: None }
     }
 
     pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
@@ -128,11 +121,7 @@ impl Diagnostic {
 
     /// The primary label's span, if any.
     pub fn primary_span(&self) -> Option<Span> {
-        self.labels
-            .iter()
-            .find(|l| l.primary)
-            .or(self.labels.first())
-            .map(|l| l.span)
+        self.labels.iter().find(|l| l.primary).or(self.labels.first()).map(|l| l.span)
     }
 }
 
@@ -214,9 +203,7 @@ impl SourceMap {
                 let offset = offset.min(text.len());
                 let line = f.line_starts.partition_point(|&s| s <= offset).saturating_sub(1);
                 let start = f.line_starts[line];
-                let column = text
-                    .get(start..offset)
-                    .map_or(offset - start, |s| s.chars().count());
+                let column = text.get(start..offset).map_or(offset - start, |s| s.chars().count());
                 Some((line + 1, column + 1))
             }
             None => line_column_streamed(&f.name, offset).ok(),
@@ -269,10 +256,10 @@ impl<'a> Files<'a> for SourceMap {
     fn line_range(&'a self, id: FileId, line_index: usize) -> Result<std::ops::Range<usize>, files::Error> {
         let f = self.files.get(id.0 as usize).ok_or(files::Error::FileMissing)?;
         let text = f.text.as_deref().ok_or(files::Error::FileMissing)?;
-        let start = *f.line_starts.get(line_index).ok_or(files::Error::LineTooLarge {
-            given: line_index,
-            max: f.line_starts.len().saturating_sub(1),
-        })?;
+        let start = *f
+            .line_starts
+            .get(line_index)
+            .ok_or(files::Error::LineTooLarge { given: line_index, max: f.line_starts.len().saturating_sub(1) })?;
         let end = f.line_starts.get(line_index + 1).copied().unwrap_or(text.len());
         Ok(start..end)
     }

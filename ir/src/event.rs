@@ -481,11 +481,17 @@ pub trait EventSource {
     /// The next event and the span of the record it came from; `None` at the
     /// end of the stream. Problems go into `diagnostics`; after an error a
     /// source resynchronises at the next record, so a checker sees them all.
-    fn next_event(&mut self, diagnostics: &mut Vec<crate::diagnostic::Diagnostic>) -> Option<(Event, crate::diagnostic::Span)>;
+    fn next_event(
+        &mut self,
+        diagnostics: &mut Vec<crate::diagnostic::Diagnostic>,
+    ) -> Option<(Event, crate::diagnostic::Span)>;
 }
 
 impl<S: EventSource + ?Sized> EventSource for Box<S> {
-    fn next_event(&mut self, diagnostics: &mut Vec<crate::diagnostic::Diagnostic>) -> Option<(Event, crate::diagnostic::Span)> {
+    fn next_event(
+        &mut self,
+        diagnostics: &mut Vec<crate::diagnostic::Diagnostic>,
+    ) -> Option<(Event, crate::diagnostic::Span)> {
         (**self).next_event(diagnostics)
     }
 }

@@ -416,10 +416,7 @@ sections! {
 impl Section {
     /// The section a Vectric `begin` name (case-insensitive) stands for.
     pub fn from_name(name: &str) -> Option<Section> {
-        Section::ALL
-            .iter()
-            .copied()
-            .find(|s| s.name().eq_ignore_ascii_case(name))
+        Section::ALL.iter().copied().find(|s| s.name().eq_ignore_ascii_case(name))
     }
 }
 
@@ -431,8 +428,6 @@ impl Post {
 
     /// The handler for a section, if the post has one.
     pub fn section(&self, section: Section) -> Option<&Handler> {
-        self.handlers
-            .iter()
-            .find(|h| h.key == HandlerKey::Section(section))
+        self.handlers.iter().find(|h| h.key == HandlerKey::Section(section))
     }
 }

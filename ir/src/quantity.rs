@@ -155,10 +155,7 @@ quantities! {
 impl Quantity {
     /// The quantity a Vectric label (case-insensitive) stands for.
     pub fn from_label(label: &str) -> Option<Quantity> {
-        Quantity::ALL
-            .iter()
-            .copied()
-            .find(|q| q.label().eq_ignore_ascii_case(label))
+        Quantity::ALL.iter().copied().find(|q| q.label().eq_ignore_ascii_case(label))
     }
 
     /// Whether the quantity is text rather than a number.

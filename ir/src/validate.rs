@@ -78,7 +78,10 @@ pub fn validate(post: &Post) -> Vec<Invalid> {
     }
     for (i, v) in post.variables.iter().enumerate() {
         if usize::from(v.format) >= post.formats.len() {
-            bad(Item::Variable(i), format!("`{}` uses format {}, and the post has {} formats", v.name, v.format, post.formats.len()));
+            bad(
+                Item::Variable(i),
+                format!("`{}` uses format {}, and the post has {} formats", v.name, v.format, post.formats.len()),
+            );
         }
     }
     let o = &post.options;

@@ -66,7 +66,8 @@ impl Letter {
             });
             let origin = i as f64 * pitch;
             for stroke in strokes {
-                let points: Vec<[f64; 2]> = stroke.iter().map(|&(gx, gy)| at(origin + gx * unit_x, gy * unit_y)).collect();
+                let points: Vec<[f64; 2]> =
+                    stroke.iter().map(|&(gx, gy)| at(origin + gx * unit_x, gy * unit_y)).collect();
                 let (Some(first), Some(last)) = (points.first(), points.last()) else { continue };
                 out.push(Motion::Rapid([first[0], first[1], self.zc]));
                 if self.zr != self.zc {

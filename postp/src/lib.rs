@@ -31,7 +31,7 @@ pub mod transform;
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Arg, Event, FileInfo};
-use postc_ir::{Dialect, Diagnostic, EventSource, Post, SourceMap, Span, Units};
+use postc_ir::{Diagnostic, Dialect, EventSource, Post, SourceMap, Span, Units};
 use postc_runtime::{Output, RunOptions, RunReport};
 
 pub use controller::{Controller, Kind};
@@ -71,7 +71,9 @@ pub fn head(cl: &Path, forced: Option<Controller>, sources: &mut SourceMap) -> R
                 found = Some((c.args, span));
                 break;
             }
-            Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::Tool(_) | Event::DrillCycle(_) | Event::End => break,
+            Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::Tool(_) | Event::DrillCycle(_) | Event::End => {
+                break;
+            }
             // The reader makes these itself, stamped with a later record.
             Event::ToolpathStart(_) | Event::ToolpathEnd => {}
             _ => {
@@ -87,8 +89,11 @@ pub fn head(cl: &Path, forced: Option<Controller>, sources: &mut SourceMap) -> R
         (_, Some(c)) => (c, 0),
         (None, None) => {
             return Err(vec![
-                Diagnostic::error(codes::NO_MACHIN, format!("{} has no MACHIN statement before its first motion", cl.display()))
-                    .help(format!("start the file with MACHIN/name, name one of {}", controller::names())),
+                Diagnostic::error(
+                    codes::NO_MACHIN,
+                    format!("{} has no MACHIN statement before its first motion", cl.display()),
+                )
+                .help(format!("start the file with MACHIN/name, name one of {}", controller::names())),
             ]);
         }
         (Some((args, span)), None) => {
@@ -112,9 +117,12 @@ pub fn head(cl: &Path, forced: Option<Controller>, sources: &mut SourceMap) -> R
                 Some(0) => {}
                 Some(_) if c.kind() == Kind::Mill && args.len() == 2 => {}
                 _ => {
-                    let d = Diagnostic::error(codes::BAD_AXIS_TYPE, format!("MACHIN/{name}: the axis type is 0 to 6, on mills only"))
-                        .at(span, "this axis type")
-                        .help("1: A, 2: B, 3: A and B (head), 4: A and B, 5: A and C, 6: B and C");
+                    let d = Diagnostic::error(
+                        codes::BAD_AXIS_TYPE,
+                        format!("MACHIN/{name}: the axis type is 0 to 6, on mills only"),
+                    )
+                    .at(span, "this axis type")
+                    .help("1: A, 2: B, 3: A and B (head), 4: A and B, 5: A and C, 6: B and C");
                     return Err(vec![d]);
                 }
             }
@@ -163,7 +171,8 @@ fn offset(text: &str, line: usize, col: usize) -> usize {
 pub fn compile(head: &Head, options: &Options, sources: &mut SourceMap) -> Result<Post, Vec<Diagnostic>> {
     let c = head.controller;
     let name = c.post_name();
-    let compiled = postc_frontends::compile_post_bytes(Path::new(&name), c.post_source(), Some(Dialect::VcPost), sources);
+    let compiled =
+        postc_frontends::compile_post_bytes(Path::new(&name), c.post_source(), Some(Dialect::VcPost), sources);
     match compiled.post {
         Some(mut post) if !compiled.has_errors() => {
             options.inject(&mut post, head.units, head.axis_type, c.name());
@@ -178,7 +187,12 @@ pub fn compile(head: &Head, options: &Options, sources: &mut SourceMap) -> Resul
 }
 
 /// Posts a CL file (`DIR/cl.tap` for `postc postp DIR`) into `out`.
-pub fn post(cl: &Path, settings: &Settings, out: Output, sources: &mut SourceMap) -> Result<RunReport, Vec<Diagnostic>> {
+pub fn post(
+    cl: &Path,
+    settings: &Settings,
+    out: Output,
+    sources: &mut SourceMap,
+) -> Result<RunReport, Vec<Diagnostic>> {
     if !cl.is_file() {
         return Err(vec![
             Diagnostic::error(codes::NO_CL, format!("there is no CL file {}", cl.display()))

@@ -143,7 +143,21 @@ impl Options {
         macro_rules! take {
             ($($f:ident),*) => { $( if let Some(v) = p.$f { self.$f = v; } )* };
         }
-        take!(startup, end, gohome, rewind, tmark, retractz, zhome, maxspeed, height_offset, program_number, sequence, decimals, diameter);
+        take!(
+            startup,
+            end,
+            gohome,
+            rewind,
+            tmark,
+            retractz,
+            zhome,
+            maxspeed,
+            height_offset,
+            program_number,
+            sequence,
+            decimals,
+            diameter
+        );
         self
     }
 
@@ -172,7 +186,10 @@ impl Options {
             ("OptTmark", text(&self.tmark)),
             ("OptZHome", text(&self.zhome)),
             ("OptMaxSpeed", Expr::Number(self.maxspeed)),
-            ("OptHeightOffset", Expr::Text(if self.height_offset == HeightOffset::NextZ { "NEXTZ" } else { "BLOCK" }.into())),
+            (
+                "OptHeightOffset",
+                Expr::Text(if self.height_offset == HeightOffset::NextZ { "NEXTZ" } else { "BLOCK" }.into()),
+            ),
             ("OptProgram", Expr::Number(f64::from(self.program_number))),
             ("OptSeqOn", Expr::Bool(seq_on)),
             ("OptSeqStart", Expr::Number(start)),

@@ -38,7 +38,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::event::{Arg, ArcDir, ArcMove, CompSide, Coolant, DrillCycle, DrillKind, Event, Intent, Plane};
+use postc_ir::event::{ArcDir, ArcMove, Arg, CompSide, Coolant, DrillCycle, DrillKind, Event, Intent, Plane};
 use postc_ir::{Diagnostic, HandlerKey};
 
 use crate::engine::Engine;
@@ -111,7 +111,10 @@ impl AptDispatch {
             Some(&i) => eng.run_handler(i),
             None => {
                 if self.warned.insert(word.to_string()) {
-                    let mut d = Diagnostic::warning("RT020", format!("the post has no Sub for {word}; those records are skipped"));
+                    let mut d = Diagnostic::warning(
+                        "RT020",
+                        format!("the post has no Sub for {word}; those records are skipped"),
+                    );
                     if eng.event_span.end > eng.event_span.start {
                         d = d.at(eng.event_span, "the first one");
                     }
@@ -200,9 +203,13 @@ impl AptDispatch {
         self.feed(eng, feed)?;
         if !self.handlers.contains_key("CIRCLE") {
             if self.warned.insert("CIRCLE".into()) {
-                eng.warn_once(Diagnostic::warning("RT021", "the post has no Sub for CIRCLE; arcs are cut into GOTO moves"));
+                eng.warn_once(Diagnostic::warning(
+                    "RT021",
+                    "the post has no Sub for CIRCLE; arcs are cut into GOTO moves",
+                ));
             }
-            let tolerance = eng.post.options.arc_tolerance * eng.machine.output_units.factor_to(postc_ir::Units::Mm).recip();
+            let tolerance =
+                eng.post.options.arc_tolerance * eng.machine.output_units.factor_to(postc_ir::Units::Mm).recip();
             let n = g.segments(tolerance).min(10_000);
             for i in 1..=n {
                 self.goto(eng, g.point_at(f64::from(i) / f64::from(n)), 1.0, None)?;
@@ -234,7 +241,10 @@ impl AptDispatch {
 
     fn hole(&mut self, eng: &mut Engine, x: f64, y: f64, z: f64) -> Result<()> {
         let Some(cycle) = self.cycle.clone() else {
-            return Err(Box::new(Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle").at(eng.event_span, "this hole")));
+            return Err(Box::new(
+                Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle")
+                    .at(eng.event_span, "this hole"),
+            ));
         };
         let top = Self::point(eng, x, y, z);
         if self.cycle_called {
@@ -362,8 +372,16 @@ impl AptDispatch {
             }
             Event::Command(c) => {
                 let word = c.word.to_ascii_uppercase();
-                let minor = c.args.iter().find_map(|a| if let Arg::Word(w) = a { Some(w.as_str()) } else { None }).unwrap_or("");
-                let text = c.args.iter().find_map(|a| if let Arg::Text(t) = a { Some(t.as_str()) } else { None }).unwrap_or("");
+                let minor = c
+                    .args
+                    .iter()
+                    .find_map(|a| if let Arg::Word(w) = a { Some(w.as_str()) } else { None })
+                    .unwrap_or("");
+                let text = c
+                    .args
+                    .iter()
+                    .find_map(|a| if let Arg::Text(t) = a { Some(t.as_str()) } else { None })
+                    .unwrap_or("");
                 self.num(eng, "ARGS", c.args.len() as f64);
                 for (i, a) in c.args.iter().enumerate().take(16) {
                     let value = match a {

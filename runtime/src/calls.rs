@@ -46,7 +46,8 @@ pub fn run_calls<S: CallSource + ?Sized>(
         Some((p, t)) => (&*patched.insert(p), t),
         None => (post, Tables::default()),
     };
-    let mut machine = crate::machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+    let mut machine =
+        crate::machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
     (machine.default_date, machine.default_time) = crate::clock::now();
@@ -142,8 +143,11 @@ impl Runner {
             if call.missing == MissingSub::Warn && !self.warned.contains(&upper) {
                 self.warned.push(upper);
                 eng.warn_once(
-                    Diagnostic::warning("RT030", format!("the post has no Sub `{}`; those calls are skipped", call.sub))
-                        .at(call.span, "first call"),
+                    Diagnostic::warning(
+                        "RT030",
+                        format!("the post has no Sub `{}`; those calls are skipped", call.sub),
+                    )
+                    .at(call.span, "first call"),
                 );
             }
             return Ok(());

@@ -75,7 +75,8 @@ impl<'p> Engine<'p> {
             }
         }
         let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
-        let prepared = post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body, is_move_section(&h.key)))).collect();
+        let prepared =
+            post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body, is_move_section(&h.key)))).collect();
         Engine {
             post,
             machine,
@@ -141,9 +142,9 @@ impl<'p> Engine<'p> {
     pub fn section_prints(&self, section: Section, q: Quantity) -> bool {
         let Some(i) = self.sections[section as usize] else { return false };
         self.post.handlers[i as usize].body.iter().any(|s| match s {
-            Stmt::Line(pieces) => pieces.iter().any(|p| {
-                matches!(p, Piece::Var(v) if self.post.variables[*v as usize].source == ValueSource::Quantity(q))
-            }),
+            Stmt::Line(pieces) => pieces.iter().any(
+                |p| matches!(p, Piece::Var(v) if self.post.variables[*v as usize].source == ValueSource::Quantity(q)),
+            ),
             _ => false,
         })
     }
@@ -169,12 +170,26 @@ impl<'p> Engine<'p> {
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
-                                put_quantity(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                                put_quantity(
+                                    *modal,
+                                    &self.writers[*format as usize],
+                                    state,
+                                    prefix,
+                                    n,
+                                    &mut self.out.buf,
+                                );
                             }
                             Op::Position { var, axis, format, modal } => {
                                 let n = self.machine.pos[*axis as usize];
                                 let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
-                                put_quantity(*modal, &self.writers[*format as usize], state, prefix, n, &mut self.out.buf);
+                                put_quantity(
+                                    *modal,
+                                    &self.writers[*format as usize],
+                                    state,
+                                    prefix,
+                                    n,
+                                    &mut self.out.buf,
+                                );
                             }
                             Op::Piece(piece) => self.write_piece(piece)?,
                         }
@@ -281,9 +296,14 @@ impl<'p> Engine<'p> {
         let var = &post.variables[id as usize];
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match var.source {
-            ValueSource::Quantity(q) if q.is_text() => {
-                put_text(is_modal(var), state, prefix, self.machine.text(q).as_bytes(), &post.options.substitutions, &mut self.out.buf)
-            }
+            ValueSource::Quantity(q) if q.is_text() => put_text(
+                is_modal(var),
+                state,
+                prefix,
+                self.machine.text(q).as_bytes(),
+                &post.options.substitutions,
+                &mut self.out.buf,
+            ),
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
                 let w = &self.writers[var.format as usize];
@@ -312,7 +332,9 @@ impl<'p> Engine<'p> {
         let var = &post.variables[id as usize];
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match v {
-            Value::Text(s) => put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf),
+            Value::Text(s) => {
+                put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf)
+            }
             other => {
                 let w = &self.writers[var.format as usize];
                 put_number(is_modal(var), w, state, prefix, other.num(), &mut self.out.buf);
@@ -368,7 +390,14 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
 /// Prints a number through a variable, unless it is on-change and prints
 /// what it printed last.
 #[inline(always)]
-pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+pub(crate) fn put_number(
+    modal: bool,
+    w: &NumberWriter,
+    state: &mut VarState,
+    prefix: &[u8],
+    n: f64,
+    out: &mut Vec<u8>,
+) {
     put::<false>(modal, w, state, prefix, n, out);
 }
 
@@ -378,12 +407,26 @@ pub(crate) fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, pr
 /// still holds what was printed last). The check sits on the slow path,
 /// which NaN takes anyway: the fast path pays nothing.
 #[inline(always)]
-pub(crate) fn put_quantity(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+pub(crate) fn put_quantity(
+    modal: bool,
+    w: &NumberWriter,
+    state: &mut VarState,
+    prefix: &[u8],
+    n: f64,
+    out: &mut Vec<u8>,
+) {
     put::<true>(modal, w, state, prefix, n, out);
 }
 
 #[inline(always)]
-fn put<const ABSENT_PRINTS_NOTHING: bool>(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
+fn put<const ABSENT_PRINTS_NOTHING: bool>(
+    modal: bool,
+    w: &NumberWriter,
+    state: &mut VarState,
+    prefix: &[u8],
+    n: f64,
+    out: &mut Vec<u8>,
+) {
     match w.round(n) {
         Some(r) => {
             if modal {
@@ -429,7 +472,14 @@ fn put<const ABSENT_PRINTS_NOTHING: bool>(modal: bool, w: &NumberWriter, state: 
 
 /// Prints text through a variable, unless it is on-change and prints what
 /// it printed last.
-pub(crate) fn put_text(modal: bool, state: &mut VarState, prefix: &[u8], text: &[u8], subs: &[Substitution], out: &mut Vec<u8>) {
+pub(crate) fn put_text(
+    modal: bool,
+    state: &mut VarState,
+    prefix: &[u8],
+    text: &[u8],
+    subs: &[Substitution],
+    out: &mut Vec<u8>,
+) {
     state.key = None;
     let start = out.len();
     out.extend_from_slice(prefix);
@@ -504,17 +554,17 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<
                                 {
                                     Op::Position {
                                         var: *id,
-                                        axis: [Quantity::X, Quantity::Y, Quantity::Z].iter().position(|a| *a == q).unwrap_or(0) as u8,
+                                        axis: [Quantity::X, Quantity::Y, Quantity::Z]
+                                            .iter()
+                                            .position(|a| *a == q)
+                                            .unwrap_or(0) as u8,
                                         format: var.format,
                                         modal: is_modal(var),
                                     }
                                 }
-                                ValueSource::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => Op::Number {
-                                    var: *id,
-                                    quantity: q,
-                                    format: var.format,
-                                    modal: is_modal(var),
-                                },
+                                ValueSource::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => {
+                                    Op::Number { var: *id, quantity: q, format: var.format, modal: is_modal(var) }
+                                }
                                 _ => Op::Piece(piece),
                             }
                         }

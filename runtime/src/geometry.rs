@@ -46,7 +46,13 @@ impl ArcGeometry {
         let closed = (end[u] - start[u]).hypot(end[v] - start[v]) <= 1e-9 * radius.max(1.0);
         let ccw = if closed { TAU } else { (a1 - a0).rem_euclid(TAU) };
         let sweep = match dir {
-            ArcDir::Ccw => if ccw <= 1e-12 { TAU } else { ccw },
+            ArcDir::Ccw => {
+                if ccw <= 1e-12 {
+                    TAU
+                } else {
+                    ccw
+                }
+            }
             ArcDir::Cw => {
                 let cw = if closed { TAU } else { (a0 - a1).rem_euclid(TAU) };
                 -(if cw <= 1e-12 { TAU } else { cw })

@@ -94,8 +94,12 @@ impl Tables {
 
     /// Empties the tables a call did not fill, so no value outlives its call.
     pub(crate) fn clear_except(&mut self, eng: &mut Engine, filled: &[String]) {
-        let names: Vec<String> =
-            self.tables.iter().filter(|(n, _, used)| *used > 0 && !filled.contains(n)).map(|(n, ..)| n.clone()).collect();
+        let names: Vec<String> = self
+            .tables
+            .iter()
+            .filter(|(n, _, used)| *used > 0 && !filled.contains(n))
+            .map(|(n, ..)| n.clone())
+            .collect();
         for name in names {
             self.fill(eng, &name, &[]);
         }

@@ -88,11 +88,8 @@ pub fn run<S: EventSource + ?Sized>(
         post_storage.options.arc_tolerance = tol;
         post = &post_storage;
     }
-    let mut machine = machine::Machine::new(
-        post.info.units,
-        post.options.spindle_speed_range,
-        post.options.rotary_wrap,
-    );
+    let mut machine =
+        machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
     (machine.default_date, machine.default_time) = clock::now();

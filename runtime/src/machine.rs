@@ -85,7 +85,11 @@ pub struct Machine {
 }
 
 impl Machine {
-    pub fn new(output_units: Option<Units>, spindle_range: Option<SpindleSpeedRange>, wrap: Option<RotaryWrap>) -> Machine {
+    pub fn new(
+        output_units: Option<Units>,
+        spindle_range: Option<SpindleSpeedRange>,
+        wrap: Option<RotaryWrap>,
+    ) -> Machine {
         let units = output_units.unwrap_or_default();
         Machine {
             factor: 1.0,
@@ -399,7 +403,19 @@ mod tests {
     #[test]
     fn values_without_a_source_have_none() {
         let mut m = Machine::new(Some(Units::Mm), None, None);
-        for q in [Quantity::A, Quantity::B, Quantity::C, Quantity::Tool, Quantity::PreviousTool, Quantity::X, Quantity::HomeZ, Quantity::SafeZ, Quantity::DwellTime, Quantity::XLength, Quantity::WrapDiameter] {
+        for q in [
+            Quantity::A,
+            Quantity::B,
+            Quantity::C,
+            Quantity::Tool,
+            Quantity::PreviousTool,
+            Quantity::X,
+            Quantity::HomeZ,
+            Quantity::SafeZ,
+            Quantity::DwellTime,
+            Quantity::XLength,
+            Quantity::WrapDiameter,
+        ] {
             assert!(m.number(q).is_nan(), "{q:?}");
         }
         m.set_job(Job { home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }), ..Job::default() }, None);

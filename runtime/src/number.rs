@@ -21,8 +21,8 @@ use postc_ir::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
 
 /// Powers of ten that are exact doubles.
 const POW10: [f64; 23] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
-    1e20, 1e21, 1e22,
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
+    1e21, 1e22,
 ];
 
 /// Scaled magnitudes below this round on the fast path.
@@ -261,7 +261,9 @@ impl NumberWriter {
         if total > buf.room() {
             // Huge widths or prefixes: assemble on the heap.
             let mut v = Vec::with_capacity(total);
-            self.assemble(extra, sign, integer, mark, fraction, int_pad, outer_pad, &mut |b: &[u8]| v.extend_from_slice(b));
+            self.assemble(extra, sign, integer, mark, fraction, int_pad, outer_pad, &mut |b: &[u8]| {
+                v.extend_from_slice(b)
+            });
             out.extend_from_slice(&v);
             return;
         }

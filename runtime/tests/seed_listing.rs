@@ -52,7 +52,8 @@ impl Builder {
 }
 
 fn seed_events() -> Vec<Event> {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../corpus/toolpaths/seed_job.ron")).unwrap();
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../corpus/toolpaths/seed_job.ron")).unwrap();
     let options = ron::Options::default().with_default_extension(
         ron::extensions::Extensions::IMPLICIT_SOME | ron::extensions::Extensions::UNWRAP_VARIANT_NEWTYPES,
     );
@@ -86,7 +87,10 @@ fn gcode_arcs_inch() -> Post {
     let xh = b.var(Q::HomeX, Modality::Always, "X", 4, 1.0);
     let yh = b.var(Q::HomeY, Modality::Always, "Y", 4, 1.0);
     let zh = b.var(Q::HomeZ, Modality::Always, "Z", 4, 1.0);
-    b.section(Section::Header, &[&[T("T"), V(t), T("M6")], &[T("G17")], &[T("G0"), V(zh)], &[T("G0"), V(xh), V(yh), V(s), T("M3")]]);
+    b.section(
+        Section::Header,
+        &[&[T("T"), V(t), T("M6")], &[T("G17")], &[T("G0"), V(zh)], &[T("G0"), V(xh), V(yh), V(s), T("M3")]],
+    );
     b.section(Section::RapidMove, &[&[T("G0"), V(x), V(y), V(z)]]);
     b.section(Section::FirstFeedMove, &[&[T("G1"), V(x), V(y), V(z), V(f)]]);
     b.section(Section::FeedMove, &[&[T("G1"), V(x), V(y), V(z)]]);

@@ -73,7 +73,12 @@ pub fn run(args: Args) -> Result<(), Failed> {
     Ok(())
 }
 
-fn measure(post: &postc_ir::Post, source: &mut Box<dyn EventSource>, options: RunOptions, sources: &mut SourceMap) -> Result<Measured, Failed> {
+fn measure(
+    post: &postc_ir::Post,
+    source: &mut Box<dyn EventSource>,
+    options: RunOptions,
+    sources: &mut SourceMap,
+) -> Result<Measured, Failed> {
     let start = Instant::now();
     match postc_runtime::run(post, source, Output::discard(), options) {
         Ok(r) => Ok(Measured { events: r.events, bytes: r.bytes, seconds: start.elapsed().as_secs_f64() }),
@@ -94,5 +99,9 @@ fn print_measured(args: &Args, m: &Measured) {
     report::out(&format!("events:     {}\n", m.events));
     report::out(&format!("output:     {:.1} MB\n", m.bytes as f64 / 1e6));
     report::out(&format!("time:       {:.3} s\n", m.seconds));
-    report::out(&format!("throughput: {:.0} moves/s ({:.1} MB/s of output)\n", m.events as f64 / m.seconds, m.bytes as f64 / 1e6 / m.seconds));
+    report::out(&format!(
+        "throughput: {:.0} moves/s ({:.1} MB/s of output)\n",
+        m.events as f64 / m.seconds,
+        m.bytes as f64 / 1e6 / m.seconds
+    ));
 }

@@ -46,11 +46,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         Ok(text) => text,
         Err(diagnostics) => {
             report::eprint(&mut sources, &diagnostics);
-            eprintln!(
-                "postc: `{}` cannot be converted to {:?}; nothing was written",
-                args.post.display(),
-                args.to
-            );
+            eprintln!("postc: `{}` cannot be converted to {:?}; nothing was written", args.post.display(), args.to);
             return Err(Failed);
         }
     };

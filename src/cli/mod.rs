@@ -33,7 +33,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use postc_ir::{Dialect, Diagnostic, Post, SourceMap};
+use postc_ir::{Diagnostic, Dialect, Post, SourceMap};
 
 /// postc: posts CNC toolpaths through Vectric, CIMCO and VcPost post processors.
 #[derive(Parser, Debug)]
@@ -120,7 +120,11 @@ pub struct Failed;
 
 /// Compiles a post (or the embedded default), printing its diagnostics;
 /// fails when it has errors.
-pub(crate) fn load_post(path: Option<&PathBuf>, dialect: Option<DialectArg>, sources: &mut SourceMap) -> Result<Post, Failed> {
+pub(crate) fn load_post(
+    path: Option<&PathBuf>,
+    dialect: Option<DialectArg>,
+    sources: &mut SourceMap,
+) -> Result<Post, Failed> {
     let compiled = match path {
         Some(p) => postc_frontends::compile_post(p, dialect.map(Into::into), sources),
         None => postc_frontends::compile_post_bytes(

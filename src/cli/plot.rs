@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::{Diagnostic, SourceMap};
 
-use super::verify::{ControllerArg, Job, Opened, open, post_for, toolpath};
 use super::report::Format;
+use super::verify::{ControllerArg, Job, Opened, open, post_for, toolpath};
 use super::{DialectArg, Failed, fail};
 
 #[derive(clap::Args, Debug)]
@@ -54,8 +54,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
         _ => {
             return Err(fail(
                 &mut sources,
-                Diagnostic::error("IO007", format!("`-o {}`: a plot is written as `.svg` or `.png`", args.output.display()))
-                    .help("name the output file `plot.svg` or `plot.png`"),
+                Diagnostic::error(
+                    "IO007",
+                    format!("`-o {}`: a plot is written as `.svg` or `.png`", args.output.display()),
+                )
+                .help("name the output file `plot.svg` or `plot.png`"),
             ));
         }
     };
@@ -72,7 +75,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let svg = plot(&job, &mut sources)?;
     let bytes = match kind {
         Kind::Svg => svg.into_bytes(),
-        Kind::Png => png(&svg).map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot render the plot as PNG: {e}"))))?,
+        Kind::Png => png(&svg).map_err(|e| {
+            fail(&mut sources, Diagnostic::error("IO003", format!("cannot render the plot as PNG: {e}")))
+        })?,
     };
     write(&args.output, &bytes).map_err(|e| {
         fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", args.output.display())))
@@ -113,7 +118,8 @@ pub fn png(svg: &str) -> Result<Vec<u8>, String> {
     options.fontdb_mut().load_system_fonts();
     let tree = usvg::Tree::from_str(svg, &options).map_err(|e| e.to_string())?;
     let size = tree.size().to_int_size();
-    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height()).ok_or_else(|| format!("a {}x{} image is too large", size.width(), size.height()))?;
+    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| format!("a {}x{} image is too large", size.width(), size.height()))?;
     resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
     pixmap.encode_png().map_err(|e| e.to_string())
 }

@@ -51,7 +51,12 @@ pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<()
             "time" => options.time = Some(value.to_string()),
             "tolerance" | "arc_tolerance" => match value.trim().parse::<f64>() {
                 Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
-                _ => return Err(Diagnostic::error("IO007", format!("`--set {set}`: the tolerance must be a positive number of mm"))),
+                _ => {
+                    return Err(Diagnostic::error(
+                        "IO007",
+                        format!("`--set {set}`: the tolerance must be a positive number of mm"),
+                    ));
+                }
             },
             other => {
                 return Err(Diagnostic::error("IO007", format!("`--set {other}` is not a setting postc knows"))
@@ -83,7 +88,15 @@ pub fn run(args: Args) -> Result<(), Failed> {
         let mut options = RunOptions::default();
         apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
         options.file = args.output.as_deref().map(file_info);
-        let job = super::probe::Job { post: post_path, input: toolpath, kind, dialect: args.dialect, primers: &args.primer, output: args.output.as_ref(), options };
+        let job = super::probe::Job {
+            post: post_path,
+            input: toolpath,
+            kind,
+            dialect: args.dialect,
+            primers: &args.primer,
+            output: args.output.as_ref(),
+            options,
+        };
         return super::probe::run_calls(job);
     }
     if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
@@ -114,7 +127,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
             if post.options.tape_splitting.is_some() {
                 report::eprint(
                     &mut sources,
-                    &[Diagnostic::warning("IO008", "the post splits its output into parts, but there is no -o; all parts go to standard output one after the other")],
+                    &[Diagnostic::warning(
+                        "IO008",
+                        "the post splits its output into parts, but there is no -o; all parts go to standard output one after the other",
+                    )],
                 );
             }
             Output::stdout()
@@ -132,7 +148,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
             if let Finished::Files(files) = &report.output
                 && files.len() > 1
             {
-                eprintln!("postc: wrote {} parts: {}", files.len(), files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", "));
+                eprintln!(
+                    "postc: wrote {} parts: {}",
+                    files.len(),
+                    files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
+                );
             }
             match (&report.output, args.verify) {
                 (Finished::Files(files), true) if files.len() == 1 => {
@@ -148,7 +168,13 @@ pub fn run(args: Args) -> Result<(), Failed> {
                     super::verify::verify(&job, &mut sources)
                 }
                 (Finished::Files(_), true) => {
-                    report::eprint(&mut sources, &[Diagnostic::warning("VF009", "the post split its output into parts; `--verify` reads one program, so the parts were not verified")]);
+                    report::eprint(
+                        &mut sources,
+                        &[Diagnostic::warning(
+                            "VF009",
+                            "the post split its output into parts; `--verify` reads one program, so the parts were not verified",
+                        )],
+                    );
                     Ok(())
                 }
                 _ => Ok(()),

@@ -40,8 +40,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         None => Err(fail(
             &mut sources,
-            Diagnostic::error("PT016", format!("`{}` has no probe-cycle Subs", args.post.display()))
-                .help("probe-cycle Subs carry a keyword comment: `' #Init`, `' #Rapid !X !Y !Z`, `' #Cycle !X !Y Width`, ..."),
+            Diagnostic::error("PT016", format!("`{}` has no probe-cycle Subs", args.post.display())).help(
+                "probe-cycle Subs carry a keyword comment: `' #Init`, `' #Rapid !X !Y !Z`, `' #Cycle !X !Y Width`, ...",
+            ),
         )),
     }
 }
@@ -97,7 +98,10 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
         ));
     }
     if job.kind == JobKind::ProbeTable && !job.primers.is_empty() {
-        report::eprint(&mut sources, &[Diagnostic::warning("IO007", "--primer only applies to composites event files; ignored")]);
+        report::eprint(
+            &mut sources,
+            &[Diagnostic::warning("IO007", "--primer only applies to composites event files; ignored")],
+        );
     }
     let mut source = open(&job, &post, &mut sources)?;
     let out = match job.output {
@@ -139,7 +143,10 @@ fn open(job: &Job<'_>, post: &Post, sources: &mut SourceMap) -> Result<Box<dyn C
                 fail(sources, Diagnostic::error("IO001", format!("cannot read `{}`: {e}", job.input.display())))
             })?;
             let Ok(text) = String::from_utf8(bytes) else {
-                return Err(fail(sources, Diagnostic::error("PT001", format!("`{}` is not UTF-8 text", job.input.display()))));
+                return Err(fail(
+                    sources,
+                    Diagnostic::error("PT001", format!("`{}` is not UTF-8 text", job.input.display())),
+                ));
             };
             let text = text.strip_prefix('\u{FEFF}').map(str::to_string).unwrap_or(text);
             let file = sources.add(job.input.display().to_string(), text);
@@ -158,7 +165,8 @@ fn open(job: &Job<'_>, post: &Post, sources: &mut SourceMap) -> Result<Box<dyn C
             if postc_ir::diagnostic::has_errors(&diagnostics) {
                 return Err(Failed);
             }
-            let reader = postc_front_vcpost::composites::open(job.input, sources, post, primers).map_err(|d| fail(sources, d))?;
+            let reader = postc_front_vcpost::composites::open(job.input, sources, post, primers)
+                .map_err(|d| fail(sources, d))?;
             Ok(Box::new(reader))
         }
     }

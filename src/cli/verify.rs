@@ -66,7 +66,8 @@ impl From<ControllerArg> for Controller {
 const LOAD_LIMIT: u64 = 16 << 20;
 
 /// Output extensions of families verify does not read.
-const FOREIGN_EXTENSIONS: &[(&str, &str)] = &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
+const FOREIGN_EXTENSIONS: &[(&str, &str)] =
+    &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = SourceMap::new();
@@ -99,7 +100,8 @@ pub(crate) fn post_for(
                 Failed
             };
             let head = postc_postp::head(toolpath, None, sources).map_err(|d| report(sources, d))?;
-            let options = postc_postp::load_options(head.controller, None, sources).map_err(|d| report(sources, vec![d]))?;
+            let options =
+                postc_postp::load_options(head.controller, None, sources).map_err(|d| report(sources, vec![d]))?;
             let post = postc_postp::compile(&head, &options, sources).map_err(|d| report(sources, d))?;
             let machine = postc_postp::transform::Machine {
                 kind: head.controller.kind(),
@@ -162,7 +164,13 @@ pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
 pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed> {
     let name = job.program.display().to_string();
     if !(job.tolerance.is_finite() && job.tolerance > 0.0) {
-        return Err(fail(sources, Diagnostic::error("IO007", format!("`--tolerance {}`: the tolerance must be a positive number of mm", job.tolerance))));
+        return Err(fail(
+            sources,
+            Diagnostic::error(
+                "IO007",
+                format!("`--tolerance {}`: the tolerance must be a positive number of mm", job.tolerance),
+            ),
+        ));
     }
     let settings = match job.post {
         Some(post) => Settings::from_post(post, job.controller, job.tolerance),
@@ -171,8 +179,10 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
     let refuse = |sources: &mut SourceMap, family: &str, why: &str| {
         fail(
             sources,
-            Diagnostic::error("VF001", format!("`{name}` is {family}, not G-code: {why}"))
-                .help(format!("verify reads {}; HPGL, ShopBot and Heidenhain conversational programs are not verified", postc_verify::FAMILIES)),
+            Diagnostic::error("VF001", format!("`{name}` is {family}, not G-code: {why}")).help(format!(
+                "verify reads {}; HPGL, ShopBot and Heidenhain conversational programs are not verified",
+                postc_verify::FAMILIES
+            )),
         )
     };
     if let Some(post) = job.post {
@@ -183,15 +193,26 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
         if post.options.lathe {
             return Err(fail(
                 sources,
-                Diagnostic::error("VF007", format!("`{}` is a lathe post; verify compares milling programs only", post.info.name))
-                    .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
+                Diagnostic::error(
+                    "VF007",
+                    format!("`{}` is a lathe post; verify compares milling programs only", post.info.name),
+                )
+                .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
             ));
         }
         if settings.rotary_wrap {
             return Err(fail(
                 sources,
-                Diagnostic::error("VF006", format!("`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs", post.info.name))
-                    .help("verify compares X Y Z motion; a wrapped program moves the rotary axis instead of the wrapped one"),
+                Diagnostic::error(
+                    "VF006",
+                    format!(
+                        "`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs",
+                        post.info.name
+                    ),
+                )
+                .help(
+                    "verify compares X Y Z motion; a wrapped program moves the rotary axis instead of the wrapped one",
+                ),
             ));
         }
     }
@@ -206,7 +227,8 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
     if postc_verify::looks_binary(&head) {
         return Err(fail(
             sources,
-            Diagnostic::error("VF002", format!("`{name}` is binary data, not a G-code program")).help("verify reads text programs as posts write them"),
+            Diagnostic::error("VF002", format!("`{name}` is binary data, not a G-code program"))
+                .help("verify reads text programs as posts write them"),
         ));
     }
     let ext = job.program.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
@@ -222,10 +244,18 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
             return Err(fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))));
         }
         let id = sources.add(name.clone(), String::from_utf8_lossy(&bytes).into_owned());
-        reader = BufReader::with_capacity(1 << 16, std::fs::File::open(job.program).map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?);
+        reader = BufReader::with_capacity(
+            1 << 16,
+            std::fs::File::open(job.program)
+                .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?,
+        );
         id
     } else {
-        reader = BufReader::with_capacity(1 << 16, std::fs::File::open(job.program).map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?);
+        reader = BufReader::with_capacity(
+            1 << 16,
+            std::fs::File::open(job.program)
+                .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?,
+        );
         sources.add_streamed(name.clone())
     };
     Ok(Opened { reader, file: file_id, settings, name })
@@ -235,7 +265,11 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
 pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
     let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
     Ok(match &job.postp {
-        Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, postc_postp::records::ClText::open(job.toolpath), machine.clone())),
+        Some(machine) => Box::new(postc_postp::transform::Transform::new(
+            reader_events,
+            postc_postp::records::ClText::open(job.toolpath),
+            machine.clone(),
+        )),
         None => reader_events,
     })
 }

@@ -17,7 +17,6 @@ pub use golden_common::{compile, corpus, diff, post_parts, stem};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{EventSource, Post, SourceMap};
 
-
 /// The corpus CIMCO posts, sorted.
 pub fn posts() -> Vec<PathBuf> {
     let dir = corpus().join("posts/cimco");
@@ -40,8 +39,6 @@ pub fn toolpaths(post: &Post) -> Vec<PathBuf> {
     }
 }
 
-
-
 /// Posts a toolpath into memory: the whole program.
 pub fn post_toolpath(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     post_parts(post, toolpath).map(|parts| parts.concat())
@@ -58,8 +55,6 @@ pub fn export_jsonl(toolpath: &Path, target: &Path) -> Result<(), String> {
     }
     std::fs::write(target, text).map_err(|e| e.to_string())
 }
-
-
 
 /// The installed Node.js version, if `node` is on PATH.
 pub fn node() -> Option<String> {

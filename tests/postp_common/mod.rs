@@ -9,8 +9,8 @@ mod rs274_common;
 
 use std::path::{Path, PathBuf};
 
-use postc_postp::{Controller, Settings, post};
 use postc_ir::SourceMap;
+use postc_postp::{Controller, Settings, post};
 use postc_runtime::{Finished, Output};
 
 pub fn root() -> PathBuf {
@@ -86,7 +86,11 @@ pub fn snapshot(name: &str, text: &str) {
     }
     let expected = std::fs::read_to_string(&path)
         .unwrap_or_else(|_| panic!("no snapshot {}; run with POSTC_BLESS=1 to write it", path.display()));
-    assert!(expected == text, "{name}: the output differs from {}\n---- got\n{text}---- expected\n{expected}", path.display());
+    assert!(
+        expected == text,
+        "{name}: the output differs from {}\n---- got\n{text}---- expected\n{expected}",
+        path.display()
+    );
 }
 
 /// Posts on a controller and compares with the snapshot `<name>.<MACHINE>`.

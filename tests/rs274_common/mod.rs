@@ -28,7 +28,10 @@ pub enum Kind {
     Feed,
     /// Centre in the plane's first and second axes; rotation +1 is
     /// counter-clockwise.
-    Arc { centre: [f64; 2], rotation: i32 },
+    Arc {
+        centre: [f64; 2],
+        rotation: i32,
+    },
 }
 
 /// One move: its kind, its end point X Y Z A B C, and the active plane.
@@ -83,7 +86,9 @@ pub fn run(rs274: &Path, program: &str) -> Result<Vec<Motion>, String> {
         // Canonical calls read `<count> N<block or .....> CALL(args)`.
         let mut words = line.splitn(3, char::is_whitespace);
         let call = match (words.next(), words.next(), words.next()) {
-            (Some(n), Some(block), Some(call)) if n.bytes().all(|b| b.is_ascii_digit()) && block.starts_with('N') => call.trim(),
+            (Some(n), Some(block), Some(call)) if n.bytes().all(|b| b.is_ascii_digit()) && block.starts_with('N') => {
+                call.trim()
+            }
             _ => {
                 if !line.is_empty() && line != "executing" {
                     complaints.push(line.to_string());

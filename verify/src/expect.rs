@@ -144,7 +144,17 @@ impl<'a> ExpectedPath<'a> {
     }
 
     #[allow(clippy::too_many_arguments)] // one expected move's fields, filled from five event kinds
-    fn push(&mut self, kind: Kind, end: [f64; 3], centre: [f64; 3], dir: ArcDir, plane: Plane, intent: Intent, feed: f64, span: Span) {
+    fn push(
+        &mut self,
+        kind: Kind,
+        end: [f64; 3],
+        centre: [f64; 3],
+        dir: ArcDir,
+        plane: Plane,
+        intent: Intent,
+        feed: f64,
+        span: Span,
+    ) {
         if kind == Kind::Rapid {
             self.min_rapid_z = self.min_rapid_z.min(end[2]);
             self.max_rapid_z = self.max_rapid_z.max(end[2]);
@@ -174,7 +184,9 @@ impl<'a> ExpectedPath<'a> {
             Event::Job(job) => {
                 self.factor = job.units.mm_per_unit();
                 let f = self.factor;
-                self.job.material = job.material.map(|m| ([m.min.x * f, m.min.y * f, m.min.z * f], [m.max.x * f, m.max.y * f, m.max.z * f]));
+                self.job.material = job
+                    .material
+                    .map(|m| ([m.min.x * f, m.min.y * f, m.min.z * f], [m.max.x * f, m.max.y * f, m.max.z * f]));
                 self.job.safe_z = job.safe_z.map(|z| z * f);
             }
             Event::Tool(tool) => {
@@ -191,7 +203,16 @@ impl<'a> ExpectedPath<'a> {
             Event::JetOff => self.jet = false,
             Event::Rapid(m) => {
                 self.job.rotary |= m.a.is_some() || m.b.is_some() || m.c.is_some();
-                self.push(Kind::Rapid, [m.x * f, m.y * f, m.z * f], nan, ArcDir::Cw, Plane::Xy, Intent::Cut, f64::NAN, span)
+                self.push(
+                    Kind::Rapid,
+                    [m.x * f, m.y * f, m.z * f],
+                    nan,
+                    ArcDir::Cw,
+                    Plane::Xy,
+                    Intent::Cut,
+                    f64::NAN,
+                    span,
+                )
             }
             Event::Feed(m) => {
                 self.job.rotary |= m.a.is_some() || m.b.is_some() || m.c.is_some();

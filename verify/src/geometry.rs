@@ -161,7 +161,13 @@ mod tests {
 
     #[test]
     fn points_on_an_arc() {
-        let arc = Arc { start: [10.0, 0.0, 0.0], end: [0.0, 10.0, -1.0], centre: [0.0, 0.0, 0.0], dir: ArcDir::Ccw, plane: Plane::Xy };
+        let arc = Arc {
+            start: [10.0, 0.0, 0.0],
+            end: [0.0, 10.0, -1.0],
+            centre: [0.0, 0.0, 0.0],
+            dir: ArcDir::Ccw,
+            plane: Plane::Xy,
+        };
         let h = std::f64::consts::FRAC_1_SQRT_2 * 10.0;
         let (d, t) = arc.deviation([h, h, -0.5], 1e-3);
         assert!(d < 1e-9 && (t - 0.5).abs() < 1e-9);

@@ -50,7 +50,12 @@ pub struct Item {
 pub type Items = TruncateState<Item>;
 type Extra = Full<Cheap, Items, ()>;
 
-fn push<'s, 'b>(e: &mut MapExtra<'s, 'b, &'s [u8], Extra>, kind: ItemKind, value: f64, decimals: u8) -> Result<(), Cheap> {
+fn push<'s, 'b>(
+    e: &mut MapExtra<'s, 'b, &'s [u8], Extra>,
+    kind: ItemKind,
+    value: f64,
+    decimals: u8,
+) -> Result<(), Cheap> {
     let span: SimpleSpan = e.span();
     e.state().push(Item { kind, start: span.start as u32, end: span.end as u32, value, decimals });
     Ok(())
@@ -103,7 +108,11 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
 
 /// Numbers with more than 18 integer digits: the standard library reads them.
 fn slow(s: &[u8]) -> Option<(usize, f64, u8)> {
-    let n = s.iter().enumerate().position(|(k, &b)| !(b.is_ascii_digit() || b == b'.' || (k == 0 && (b == b'-' || b == b'+')))).unwrap_or(s.len());
+    let n = s
+        .iter()
+        .enumerate()
+        .position(|(k, &b)| !(b.is_ascii_digit() || b == b'.' || (k == 0 && (b == b'-' || b == b'+'))))
+        .unwrap_or(s.len());
     let text = std::str::from_utf8(&s[..n]).ok()?;
     let value: f64 = text.parse().ok()?;
     let decimals = text.find('.').map_or(0, |p| text.len() - p - 1);
@@ -155,7 +164,13 @@ fn paren_comment<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
         for _ in 0..n {
             inp.skip();
         }
-        inp.state().push(Item { kind: ItemKind::Comment, start: at as u32, end: (at + n) as u32, value: 0.0, decimals: 0 });
+        inp.state().push(Item {
+            kind: ItemKind::Comment,
+            start: at as u32,
+            end: (at + n) as u32,
+            value: 0.0,
+            decimals: 0,
+        });
         Ok(())
     })
 }
@@ -181,13 +196,11 @@ fn number<'s>() -> impl Parser<'s, &'s [u8], (f64, u8), Extra> + Copy {
 /// The parser of one line.
 pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
     let blank = blanks();
-    let word = any()
-        .filter(u8::is_ascii_alphabetic)
-        .then_ignore(blank)
-        .then(number())
-        .try_map_with(|(letter, (value, decimals)): (u8, (f64, u8)), e| {
+    let word = any().filter(u8::is_ascii_alphabetic).then_ignore(blank).then(number()).try_map_with(
+        |(letter, (value, decimals)): (u8, (f64, u8)), e| {
             push(e, ItemKind::Word(letter.to_ascii_uppercase()), value, decimals)
-        });
+        },
+    );
     let paren = paren_comment();
     // ISO tape's `:` program number, as `O`.
     let colon = just(b':')
@@ -198,12 +211,7 @@ pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
     let percent = just(b'%').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Percent, 0.0, 0));
     let item = choice((word, paren, semicolon, percent, colon));
     let delete = just(b'/').try_map_with(|_, e| push(e, ItemKind::Delete, 0.0, 0));
-    blank
-        .then(delete.or_not())
-        .then(blank)
-        .then(item.then(blank).repeated())
-        .then(end())
-        .ignored()
+    blank.then(delete.or_not()).then(blank).then(item.then(blank).repeated()).then(end()).ignored()
 }
 
 /// Parses a line into `items`; on an error, the byte offset where reading stopped.
@@ -223,7 +231,10 @@ mod tests {
     fn words(text: &str) -> Result<Vec<(ItemKind, String, f64, u8)>, usize> {
         let mut items = TruncateState(Vec::new());
         parse(text.as_bytes(), &mut items)?;
-        Ok(items.iter().map(|i| (i.kind, text[i.start as usize..i.end as usize].to_string(), i.value, i.decimals)).collect())
+        Ok(items
+            .iter()
+            .map(|i| (i.kind, text[i.start as usize..i.end as usize].to_string(), i.value, i.decimals))
+            .collect())
     }
 
     #[test]

@@ -154,7 +154,13 @@ struct Run<'a> {
     block: Block,
 }
 
-pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings, observer: &mut dyn Observer) -> Report {
+pub fn run(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn EventSource,
+    settings: &Settings,
+    observer: &mut dyn Observer,
+) -> Report {
     let mut run = Run {
         settings,
         observer,
@@ -223,7 +229,14 @@ pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSour
         }
         run.line_len = buf.len();
         if overlong {
-            run.finding(Severity::Error, "VF003", format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024), 0, 1, None);
+            run.finding(
+                Severity::Error,
+                "VF003",
+                format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024),
+                0,
+                1,
+                None,
+            );
             continue;
         }
         if run.stopped {
@@ -275,7 +288,13 @@ fn read_line(r: &mut dyn BufRead, buf: &mut Vec<u8>) -> std::io::Result<(usize, 
 }
 
 fn fmt_point(p: [f64; 3]) -> String {
-    let f = |v: f64| if v.is_finite() { format!("{:.4}", v).trim_end_matches('0').trim_end_matches('.').to_string() } else { "?".into() };
+    let f = |v: f64| {
+        if v.is_finite() {
+            format!("{:.4}", v).trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            "?".into()
+        }
+    };
     format!("X{} Y{} Z{}", f(p[0]), f(p[1]), f(p[2]))
 }
 
@@ -311,7 +330,15 @@ impl Run<'_> {
 
     /// A finding at bytes `start..end` of the current line, with the
     /// toolpath move it concerns.
-    fn finding(&mut self, severity: Severity, code: &'static str, message: impl Into<String>, start: usize, end: usize, expected: Option<&Expected>) -> Option<&mut Diagnostic> {
+    fn finding(
+        &mut self,
+        severity: Severity,
+        code: &'static str,
+        message: impl Into<String>,
+        start: usize,
+        end: usize,
+        expected: Option<&Expected>,
+    ) -> Option<&mut Diagnostic> {
         let start = start.min(self.line_len);
         let end = end.min(self.line_len).max(start + usize::from(self.line_len > start));
         let span = Span::new(self.file, self.line_start + start, self.line_start + end);
@@ -335,7 +362,15 @@ impl Run<'_> {
     }
 
     /// A finding on a motion (the whole block).
-    fn motion_finding(&mut self, severity: Severity, code: &'static str, message: impl Into<String>, m: &Motion, expected: Option<&Expected>, help: Option<String>) {
+    fn motion_finding(
+        &mut self,
+        severity: Severity,
+        code: &'static str,
+        message: impl Into<String>,
+        m: &Motion,
+        expected: Option<&Expected>,
+        help: Option<String>,
+    ) {
         let mut d = Diagnostic::new(severity, code, message).at(m.span, "this move");
         if let Some(e) = expected {
             d = d.also(e.span, "the toolpath move it should make");
@@ -372,21 +407,31 @@ impl Run<'_> {
         }
         if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
-                None if text.contains(&b'(') && !text.contains(&b')') => ("this comment is not closed".to_string(), "close it with `)` on the same line"),
-                None => ("the block ends where a number is expected".into(), "every word is a letter and a number, as `X1.5`"),
-                Some(b) if b.is_ascii_digit() || *b == b'.' || *b == b'-' => (
-                    "a number without a letter".into(),
+                None if text.contains(&b'(') && !text.contains(&b')') => {
+                    ("this comment is not closed".to_string(), "close it with `)` on the same line")
+                }
+                None => (
+                    "the block ends where a number is expected".into(),
                     "every word is a letter and a number, as `X1.5`",
                 ),
+                Some(b) if b.is_ascii_digit() || *b == b'.' || *b == b'-' => {
+                    ("a number without a letter".into(), "every word is a letter and a number, as `X1.5`")
+                }
                 Some(b) if b.is_ascii_alphabetic() => (
                     format!("`{}` is not followed by a number", *b as char),
                     "every word is a letter and a number, as `X1.5`",
                 ),
                 Some(&b) if b.is_ascii_graphic() => (
-                    format!("unexpected `{}`: verify reads words, comments and `%`, not parameters or expressions", b as char),
+                    format!(
+                        "unexpected `{}`: verify reads words, comments and `%`, not parameters or expressions",
+                        b as char
+                    ),
                     "verify reads the G-code posts write: words, ( ) and ; comments, block delete and `%`",
                 ),
-                Some(&b) => (format!("unexpected byte 0x{b:02X} in a block"), "the program holds bytes that are not G-code text"),
+                Some(&b) => (
+                    format!("unexpected byte 0x{b:02X} in a block"),
+                    "the program holds bytes that are not G-code text",
+                ),
             };
             let d = self.finding(Severity::Error, "VF004", message, at, at + 1, None);
             Self::help(d, help);
@@ -430,12 +475,26 @@ impl Run<'_> {
                         _ => {
                             let index = (letter - b'A') as usize;
                             if self.block.letters[index].is_some() {
-                                let d = self.finding(Severity::Error, "VF004", format!("a second {} word in one block", letter as char), start, end, None);
+                                let d = self.finding(
+                                    Severity::Error,
+                                    "VF004",
+                                    format!("a second {} word in one block", letter as char),
+                                    start,
+                                    end,
+                                    None,
+                                );
                                 Self::help(d, "a controller reads one word of each letter per block");
                             }
                             self.block.letters[index] = Some(w);
                             if !b"NXYZABCIJKRFSTPQLHDOUVW".contains(&letter) {
-                                let d = self.finding(Severity::Warning, "VF005", format!("verify does not know the {} word; it is ignored", letter as char), start, end, None);
+                                let d = self.finding(
+                                    Severity::Warning,
+                                    "VF005",
+                                    format!("verify does not know the {} word; it is ignored", letter as char),
+                                    start,
+                                    end,
+                                    None,
+                                );
                                 Self::help(d, "a controller that does not know it either refuses the block");
                             }
                             if matches!(letter, b'X' | b'Y' | b'Z') {
@@ -453,7 +512,14 @@ impl Run<'_> {
         let controller = self.settings.controller;
         let strict = matches!(controller, Controller::Fanuc | Controller::Haas | Controller::Grbl);
         if text.first() == Some(&b';') && matches!(controller, Controller::Fanuc | Controller::Haas) {
-            let d = self.finding(Severity::Error, "VF042", format!("{} reads `;` as the end of a block, not as a comment", controller.name()), start, start + 1, None);
+            let d = self.finding(
+                Severity::Error,
+                "VF042",
+                format!("{} reads `;` as the end of a block, not as a comment", controller.name()),
+                start,
+                start + 1,
+                None,
+            );
             Self::help(d, "write the comment in parentheses");
             return;
         }
@@ -465,24 +531,52 @@ impl Run<'_> {
                 Controller::Generic => (Severity::Warning, "LinuxCNC, Fanuc, Haas and grbl refuse".to_string()),
                 c => (Severity::Error, format!("{} refuses", c.name())),
             };
-            let d = self.finding(severity, "VF042", format!("{what} a `(` inside a comment"), start + 1 + i, start + 2 + i, None);
+            let d = self.finding(
+                severity,
+                "VF042",
+                format!("{what} a `(` inside a comment"),
+                start + 1 + i,
+                start + 2 + i,
+                None,
+            );
             Self::help(d, "the post should replace `(` in comment text (Vectric: SUBSTITUTE)");
             return;
         }
         if let Some(i) = body.iter().position(|&b| b < 32 && b != b'\t' || b == 127) {
-            self.finding(Severity::Error, "VF042", "a control character in a comment", start + 1 + i, start + 2 + i, None);
+            self.finding(
+                Severity::Error,
+                "VF042",
+                "a control character in a comment",
+                start + 1 + i,
+                start + 2 + i,
+                None,
+            );
             return;
         }
         if matches!(controller, Controller::Fanuc | Controller::Haas)
             && let Some(i) = body.iter().position(|&b| b == b'%')
         {
-            let d = self.finding(Severity::Error, "VF042", format!("{} reads `%` as the end of the program, even in a comment", controller.name()), start + 1 + i, start + 2 + i, None);
+            let d = self.finding(
+                Severity::Error,
+                "VF042",
+                format!("{} reads `%` as the end of the program, even in a comment", controller.name()),
+                start + 1 + i,
+                start + 2 + i,
+                None,
+            );
             Self::help(d, "the post should replace `%` in comment text");
             return;
         }
         if let Some(i) = body.iter().position(|&b| b >= 128) {
             let severity = if strict { Severity::Error } else { Severity::Warning };
-            let d = self.finding(severity, "VF042", format!("a character outside ASCII in a comment; {} may refuse it", controller.name()), start + 1 + i, start + 2 + i, None);
+            let d = self.finding(
+                severity,
+                "VF042",
+                format!("a character outside ASCII in a comment; {} may refuse it", controller.name()),
+                start + 1 + i,
+                start + 2 + i,
+                None,
+            );
             Self::help(d, "the post should replace accented and other non-ASCII characters in comment text");
         }
     }
@@ -529,7 +623,11 @@ impl Run<'_> {
                         let d = self.finding(
                             Severity::Error,
                             "VF031",
-                            format!("the program says {} but {post} writes {}", if inch { "inches (G20/G70)" } else { "millimetres (G21/G71)" }, if inch { "millimetres" } else { "inches" }),
+                            format!(
+                                "the program says {} but {post} writes {}",
+                                if inch { "inches (G20/G70)" } else { "millimetres (G21/G71)" },
+                                if inch { "millimetres" } else { "inches" }
+                            ),
                             start as usize,
                             end as usize,
                             None,
@@ -550,13 +648,27 @@ impl Run<'_> {
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
                 920..=923 => {
-                    let d = self.finding(Severity::Warning, "VF008", "verify does not replay G92 coordinate offsets; positions after it are not compared", start as usize, end as usize, None);
+                    let d = self.finding(
+                        Severity::Warning,
+                        "VF008",
+                        "verify does not replay G92 coordinate offsets; positions after it are not compared",
+                        start as usize,
+                        end as usize,
+                        None,
+                    );
                     Self::help(d, "posts that shift coordinates with G92 are verified without the shift");
                     self.pos = [f64::NAN; 3];
                     dwell = true;
                 }
                 _ => {
-                    let d = self.finding(Severity::Warning, "VF005", format!("verify does not know G{}; it is ignored", format_code(code)), start as usize, end as usize, None);
+                    let d = self.finding(
+                        Severity::Warning,
+                        "VF005",
+                        format!("verify does not know G{}; it is ignored", format_code(code)),
+                        start as usize,
+                        end as usize,
+                        None,
+                    );
                     Self::help(d, "a controller that does not know it refuses the block");
                 }
             }
@@ -620,13 +732,27 @@ impl Run<'_> {
             return;
         }
         let Some(motion) = self.motion else {
-            self.finding(Severity::Warning, "VF005", "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block", 0, self.line_len, None);
+            self.finding(
+                Severity::Warning,
+                "VF005",
+                "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block",
+                0,
+                self.line_len,
+                None,
+            );
             return;
         };
         if !self.units_stated && !self.units_reported {
             self.units_reported = true;
             let unit = if self.unit > 1.0 { "inches" } else { "millimetres" };
-            let d = self.finding(Severity::Warning, "VF032", format!("the program moves before it says G20 or G21; verify reads it in {unit}"), 0, self.line_len, None);
+            let d = self.finding(
+                Severity::Warning,
+                "VF032",
+                format!("the program moves before it says G20 or G21; verify reads it in {unit}"),
+                0,
+                self.line_len,
+                None,
+            );
             Self::help(d, "a controller uses whatever units were last active; state them in the header");
         }
         let mut target = self.pos;
@@ -638,8 +764,26 @@ impl Run<'_> {
         }
         let span = self.whole_line();
         match motion {
-            0 => self.emit(Motion { kind: MKind::Rapid, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
-            10 => self.emit(Motion { kind: MKind::Feed, start: self.pos, end: target, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: self.plane, r: None, span }),
+            0 => self.emit(Motion {
+                kind: MKind::Rapid,
+                start: self.pos,
+                end: target,
+                centre: [f64::NAN; 3],
+                dir: ArcDir::Cw,
+                plane: self.plane,
+                r: None,
+                span,
+            }),
+            10 => self.emit(Motion {
+                kind: MKind::Feed,
+                start: self.pos,
+                end: target,
+                centre: [f64::NAN; 3],
+                dir: ArcDir::Cw,
+                plane: self.plane,
+                r: None,
+                span,
+            }),
             20 | 30 => self.arc(b, motion == 20, target, span),
             _ => self.cycle(b, motion, target, span),
         }
@@ -649,7 +793,14 @@ impl Run<'_> {
         let (start, end) = (n.start as usize, n.end as usize);
         let maximum = self.settings.block_maximum.unwrap_or(self.settings.controller.block_maximum());
         if n.value > maximum {
-            let d = self.finding(Severity::Error, "VF041", format!("block number {} is over the maximum {maximum}", n.value), start, end, None);
+            let d = self.finding(
+                Severity::Error,
+                "VF041",
+                format!("block number {} is over the maximum {maximum}", n.value),
+                start,
+                end,
+                None,
+            );
             Self::help(d, "the post's LINE_NUMBER_MAXIMUM (or the controller's limit) must bound its block numbers");
         }
         if let Some(prev) = self.last_n
@@ -660,8 +811,18 @@ impl Run<'_> {
                 _ => self.first_n.is_some_and(|f| (n.value - f).abs() < 1e-9),
             };
             if !wrapped {
-                let d = self.finding(Severity::Error, "VF040", format!("block number {} does not increase (the block before is N{prev})", n.value), start, end, None);
-                Self::help(d, "block numbers must increase; a controller that searches by number finds the wrong block");
+                let d = self.finding(
+                    Severity::Error,
+                    "VF040",
+                    format!("block number {} does not increase (the block before is N{prev})", n.value),
+                    start,
+                    end,
+                    None,
+                );
+                Self::help(
+                    d,
+                    "block numbers must increase; a controller that searches by number finds the wrong block",
+                );
             }
         }
         self.first_n.get_or_insert(n.value);
@@ -678,7 +839,9 @@ impl Run<'_> {
         let (limit, what) = match (self.path.job.material, self.path.job.safe_z) {
             (Some((_, max)), _) => (max[2], "the top of the material"),
             (None, Some(safe)) => (safe, "the toolpath's safe height"),
-            (None, None) if self.path.max_rapid_z.is_finite() => (self.path.max_rapid_z, "the toolpath's highest rapid"),
+            (None, None) if self.path.max_rapid_z.is_finite() => {
+                (self.path.max_rapid_z, "the toolpath's highest rapid")
+            }
             _ => return,
         };
         if z < limit - self.tol() {
@@ -713,7 +876,12 @@ impl Run<'_> {
                 off.end as usize,
                 None,
             );
-            Self::help(d, format!("in {plane_name} an arc's centre is given by the plane's two offset words only; LinuxCNC and grbl refuse the block"));
+            Self::help(
+                d,
+                format!(
+                    "in {plane_name} an arc's centre is given by the plane's two offset words only; LinuxCNC and grbl refuse the block"
+                ),
+            );
         }
         if !(start[u].is_finite() && start[v].is_finite()) {
             return; // the start is unknown (after G28/G53): nothing to replay
@@ -723,7 +891,14 @@ impl Run<'_> {
             let r = rw.value * self.unit;
             let closed = (target[u] - start[u]).hypot(target[v] - start[v]) <= 1e-9;
             if closed {
-                let d = self.finding(Severity::Error, "VF023", "an R arc that ends where it starts: R cannot describe a full circle", rw.start as usize, rw.end as usize, None);
+                let d = self.finding(
+                    Severity::Error,
+                    "VF023",
+                    "an R arc that ends where it starts: R cannot describe a full circle",
+                    rw.start as usize,
+                    rw.end as usize,
+                    None,
+                );
                 Self::help(d, "full circles need the I J K form");
                 self.pos = target;
                 return;
@@ -731,7 +906,14 @@ impl Run<'_> {
             match r_centre(start, target, r, dir, self.plane, tol) {
                 Some(c) => (c, Some(r)),
                 None => {
-                    let d = self.finding(Severity::Error, "VF023", format!("R{} is smaller than half the distance to the arc's end", rw.value), rw.start as usize, rw.end as usize, None);
+                    let d = self.finding(
+                        Severity::Error,
+                        "VF023",
+                        format!("R{} is smaller than half the distance to the arc's end", rw.value),
+                        rw.start as usize,
+                        rw.end as usize,
+                        None,
+                    );
                     Self::help(d, "the controller refuses an arc whose radius cannot reach its end point");
                     self.pos = target;
                     return;
@@ -751,12 +933,20 @@ impl Run<'_> {
                 let d = self.finding(
                     Severity::Error,
                     "VF020",
-                    format!("the arc's radius is {r0:.4} mm at its start and {r1:.4} mm at its end ({:.4} mm apart)", (r0 - r1).abs()),
+                    format!(
+                        "the arc's radius is {r0:.4} mm at its start and {r1:.4} mm at its end ({:.4} mm apart)",
+                        (r0 - r1).abs()
+                    ),
                     s,
                     e,
                     None,
                 );
-                Self::help(d, format!("{limit}; print the arc words with more decimals, or compute them from the printed end points (--exact-arcs)"));
+                Self::help(
+                    d,
+                    format!(
+                        "{limit}; print the arc words with more decimals, or compute them from the printed end points (--exact-arcs)"
+                    ),
+                );
             }
             (c, None)
         };
@@ -775,11 +965,27 @@ impl Run<'_> {
         }
         let (r, depth) = (self.cycle_r, self.cycle_z);
         if !r.is_finite() || !depth.is_finite() {
-            self.finding(Severity::Error, "VF024", "a drilling cycle without its R and Z words", 0, self.line_len, None);
+            self.finding(
+                Severity::Error,
+                "VF024",
+                "a drilling cycle without its R and Z words",
+                0,
+                self.line_len,
+                None,
+            );
             return;
         }
         let (x, y) = (target[0], target[1]);
-        let make = |kind, start, end| Motion { kind, start, end, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane: Plane::Xy, r: None, span };
+        let make = |kind, start, end| Motion {
+            kind,
+            start,
+            end,
+            centre: [f64::NAN; 3],
+            dir: ArcDir::Cw,
+            plane: Plane::Xy,
+            r: None,
+            span,
+        };
         if self.pos[2] < r {
             let to = [self.pos[0], self.pos[1], r];
             self.emit(make(MKind::Rapid, self.pos, to));
@@ -803,7 +1009,15 @@ impl Run<'_> {
             MKind::Feed => Kind::Feed,
             MKind::Arc => Kind::Arc,
         };
-        self.observer.motion(&Move { kind, start: p.start, end: p.end, centre: p.centre, dir: p.dir, plane: p.plane, span: p.span });
+        self.observer.motion(&Move {
+            kind,
+            start: p.start,
+            end: p.end,
+            centre: p.centre,
+            dir: p.dir,
+            plane: p.plane,
+            span: p.span,
+        });
         self.pos = p.end;
         self.stats.motions += 1;
         if p.cutting() {
@@ -822,7 +1036,14 @@ impl Run<'_> {
         }
         if !self.feed.is_finite() && !self.no_feed_reported {
             self.no_feed_reported = true;
-            self.motion_finding(Severity::Error, "VF034", "a cutting move before any feed rate (F) is set", p, None, Some("the post must print F on the first cutting move (Vectric: FIRST_FEED_MOVE with [F])".into()));
+            self.motion_finding(
+                Severity::Error,
+                "VF034",
+                "a cutting move before any feed rate (F) is set",
+                p,
+                None,
+                Some("the post must print F on the first cutting move (Vectric: FIRST_FEED_MOVE with [F])".into()),
+            );
         }
     }
 
@@ -879,7 +1100,14 @@ impl Run<'_> {
             && let Some(t) = self.on_path(&p, &e, tol)
         {
             if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
-                self.motion_finding(Severity::Error, "VF012", "a rapid move along a cut of the toolpath", &p, Some(&e), Some("the toolpath cuts here at a feed rate".into()));
+                self.motion_finding(
+                    Severity::Error,
+                    "VF012",
+                    "a rapid move along a cut of the toolpath",
+                    &p,
+                    Some(&e),
+                    Some("the toolpath cuts here at a feed rate".into()),
+                );
             }
             if p.cutting() {
                 self.made(&p, &e, tol);
@@ -896,7 +1124,14 @@ impl Run<'_> {
                 && to_segment(e.end, p.start, p.end).0 <= tol
             {
                 // The rapid passes over the end of the next cut: it makes that cut at rapid.
-                self.motion_finding(Severity::Error, "VF012", "a rapid move over a cut of the toolpath", &p, Some(&e), Some("the toolpath makes this move at a feed rate".into()));
+                self.motion_finding(
+                    Severity::Error,
+                    "VF012",
+                    "a rapid move over a cut of the toolpath",
+                    &p,
+                    Some(&e),
+                    Some("the toolpath makes this move at a feed rate".into()),
+                );
                 self.skip();
                 self.progress = 0.0;
                 return;
@@ -956,7 +1191,10 @@ impl Run<'_> {
 
     fn retract_like(e: &Expected) -> bool {
         e.intent == Intent::Retract
-            || (known(e.start) && e.end[2] > e.start[2] && (e.end[0] - e.start[0]).abs() < 1e-6 && (e.end[1] - e.start[1]).abs() < 1e-6)
+            || (known(e.start)
+                && e.end[2] > e.start[2]
+                && (e.end[0] - e.start[0]).abs() < 1e-6
+                && (e.end[1] - e.start[1]).abs() < 1e-6)
     }
 
     /// Checks a program move that makes (all or part of) expected move `e`.
@@ -964,7 +1202,14 @@ impl Run<'_> {
         match (p.kind, e.kind) {
             (MKind::Rapid, Kind::Feed | Kind::Arc) => {
                 if !Self::retract_like(e) {
-                    self.motion_finding(Severity::Error, "VF012", "a rapid move where the toolpath cuts", p, Some(e), Some("the toolpath makes this move at a feed rate".into()));
+                    self.motion_finding(
+                        Severity::Error,
+                        "VF012",
+                        "a rapid move where the toolpath cuts",
+                        p,
+                        Some(e),
+                        Some("the toolpath makes this move at a feed rate".into()),
+                    );
                 }
                 return;
             }
@@ -978,7 +1223,9 @@ impl Run<'_> {
                     self.motion_finding(
                         Severity::Error,
                         "VF014",
-                        format!("this chord of a linearized arc lies {sag:.4} mm from the arc (chord tolerance {chord} mm)"),
+                        format!(
+                            "this chord of a linearized arc lies {sag:.4} mm from the arc (chord tolerance {chord} mm)"
+                        ),
                         p,
                         Some(e),
                         Some("the post's arc tolerance bounds how far chords may stray from the arc".into()),
@@ -991,7 +1238,14 @@ impl Run<'_> {
                 let r = arc.end_radius();
                 let bulge = if sweep <= std::f64::consts::PI { r * (1.0 - (sweep / 2.0).cos()) } else { r };
                 if bulge > tol {
-                    self.motion_finding(Severity::Error, "VF010", format!("an arc where the toolpath moves straight (it bulges {bulge:.3} mm off the line)"), p, Some(e), None);
+                    self.motion_finding(
+                        Severity::Error,
+                        "VF010",
+                        format!("an arc where the toolpath moves straight (it bulges {bulge:.3} mm off the line)"),
+                        p,
+                        Some(e),
+                        None,
+                    );
                 }
             }
             _ => {}
@@ -1003,14 +1257,32 @@ impl Run<'_> {
 
     fn same_arc(&mut self, p: &Motion, e: &Expected, tol: f64) {
         if p.plane != e.plane {
-            self.motion_finding(Severity::Error, "VF013", "this arc is in another plane than the toolpath's", p, Some(e), None);
+            self.motion_finding(
+                Severity::Error,
+                "VF013",
+                "this arc is in another plane than the toolpath's",
+                p,
+                Some(e),
+                None,
+            );
             return;
         }
         let [u, v, _] = axes(e.plane);
         let off = |c: [f64; 3]| (c[u] - e.centre[u]).hypot(c[v] - e.centre[v]);
         if p.dir != e.dir {
-            let (g, other) = if p.dir == ArcDir::Cw { ("G2 (clockwise)", "counter-clockwise") } else { ("G3 (counter-clockwise)", "clockwise") };
-            self.motion_finding(Severity::Error, "VF013", format!("this arc turns {g}; the toolpath's turns {other}"), p, Some(e), Some("the post prints the arc sections' G codes the wrong way round".into()));
+            let (g, other) = if p.dir == ArcDir::Cw {
+                ("G2 (clockwise)", "counter-clockwise")
+            } else {
+                ("G3 (counter-clockwise)", "clockwise")
+            };
+            self.motion_finding(
+                Severity::Error,
+                "VF013",
+                format!("this arc turns {g}; the toolpath's turns {other}"),
+                p,
+                Some(e),
+                Some("the post prints the arc sections' G codes the wrong way round".into()),
+            );
             return;
         }
         let centre_off = off(p.centre);
@@ -1022,7 +1294,11 @@ impl Run<'_> {
             && off(other) <= 2.0 * tol
         {
             let sweep = Arc { centre: other, ..p.arc() }.sweep(tol).to_degrees();
-            let (form, why) = if r > 0.0 { ("positive", "R arcs over 180° need a negative R") } else { ("negative", "R arcs under 180° need a positive R") };
+            let (form, why) = if r > 0.0 {
+                ("positive", "R arcs over 180° need a negative R")
+            } else {
+                ("negative", "R arcs under 180° need a positive R")
+            };
             self.motion_finding(
                 Severity::Error,
                 "VF022",
@@ -1080,7 +1356,10 @@ impl Run<'_> {
             return;
         }
         if let Some((min, max)) = self.path.job.material {
-            let inside = p.end[0] >= min[0] - tol && p.end[0] <= max[0] + tol && p.end[1] >= min[1] - tol && p.end[1] <= max[1] + tol;
+            let inside = p.end[0] >= min[0] - tol
+                && p.end[0] <= max[0] + tol
+                && p.end[1] >= min[1] - tol
+                && p.end[1] <= max[1] + tol;
             if z >= max[2] || !inside {
                 return;
             }
@@ -1113,17 +1392,27 @@ impl Run<'_> {
     fn wrong_units(&mut self, p: &Motion, tol: f64, flat: bool) -> bool {
         for k in 0..8 {
             let Some(e) = self.expected(k, flat) else { break };
-            for (scale, what) in [(25.4, "inches in a program read in millimetres"), (1.0 / 25.4, "millimetres in a program read in inches")] {
+            for (scale, what) in [
+                (25.4, "inches in a program read in millimetres"),
+                (1.0 / 25.4, "millimetres in a program read in inches"),
+            ] {
                 let scaled = p.end.map(|v| v * scale);
                 if dist(p.end, e.end) > tol && dist(scaled, e.end) <= tol * scale.max(1.0) {
                     self.stop_comparing = true;
                     self.motion_finding(
                         Severity::Error,
                         "VF030",
-                        format!("the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}", fmt_point(p.end), fmt_point(e.end)),
+                        format!(
+                            "the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}",
+                            fmt_point(p.end),
+                            fmt_point(e.end)
+                        ),
                         p,
                         Some(&e),
-                        Some("the post's units and the program's G20/G21 must agree; verify stops comparing motion here".into()),
+                        Some(
+                            "the post's units and the program's G20/G21 must agree; verify stops comparing motion here"
+                                .into(),
+                        ),
                     );
                     return true;
                 }
@@ -1134,7 +1423,14 @@ impl Run<'_> {
 
     fn off_path(&mut self, p: &Motion, tol: f64, flat: bool) {
         let Some(e) = self.expected(0, flat) else {
-            self.motion_finding(Severity::Error, "VF010", format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)), p, None, None);
+            self.motion_finding(
+                Severity::Error,
+                "VF010",
+                format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)),
+                p,
+                None,
+                None,
+            );
             return;
         };
         if self.wrong_units(p, tol, flat) {
@@ -1143,7 +1439,12 @@ impl Run<'_> {
         self.motion_finding(
             Severity::Error,
             "VF010",
-            format!("this cutting move goes to {}, off the toolpath: its next move goes to {} ({:.4} mm away)", fmt_point(p.end), fmt_point(e.end), dist(p.end, e.end)),
+            format!(
+                "this cutting move goes to {}, off the toolpath: its next move goes to {} ({:.4} mm away)",
+                fmt_point(p.end),
+                fmt_point(e.end),
+                dist(p.end, e.end)
+            ),
             p,
             Some(&e),
             None,
@@ -1179,7 +1480,10 @@ impl Run<'_> {
             let line = Span::new(self.file, self.line_start, self.line_start + self.line_len);
             let d = Diagnostic::error(
                 "VF011",
-                format!("the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}", fmt_point(e.end)),
+                format!(
+                    "the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}",
+                    fmt_point(e.end)
+                ),
             )
             .at(e.span, "the first move the program does not make")
             .also(line, "the program's last line")

@@ -58,15 +58,18 @@ impl Controller {
             // interp_arc.cc: an error when the difference is over 100 times that, or over it and over 0.1% of the radius.
             Controller::LinuxCnc | Controller::Generic => {
                 let abs = if inch { 2.0 * 0.001 * 25.4 } else { 2.0 * 0.01 } * std::f64::consts::SQRT_2;
-                (diff > 100.0 * abs || (diff > abs && diff / r > 0.001))
-                    .then(|| format!("LinuxCNC refuses a difference over {abs:.4} mm that is also over 0.1% of the radius"))
+                (diff > 100.0 * abs || (diff > abs && diff / r > 0.001)).then(|| {
+                    format!("LinuxCNC refuses a difference over {abs:.4} mm that is also over 0.1% of the radius")
+                })
             }
             // grbl gcode.c: STATUS_GCODE_INVALID_TARGET when the difference is over 0.005 mm and over 0.5 mm or 0.1% of the radius.
-            Controller::Grbl => (diff > 0.005 && (diff > 0.5 || diff > 0.001 * r))
-                .then(|| "grbl refuses a difference over 0.005 mm that is also over 0.5 mm or 0.1% of the radius".into()),
+            Controller::Grbl => (diff > 0.005 && (diff > 0.5 || diff > 0.001 * r)).then(|| {
+                "grbl refuses a difference over 0.005 mm that is also over 0.5 mm or 0.1% of the radius".into()
+            }),
             // Fanuc parameter 3410 (and Haas' equivalent) is set by the machine builder; 0.01 mm is assumed.
-            Controller::Fanuc | Controller::Haas => (diff > 0.01)
-                .then(|| format!("{} refuses (by its arc radius parameter, assumed 0.01 mm) a larger difference", self.name())),
+            Controller::Fanuc | Controller::Haas => (diff > 0.01).then(|| {
+                format!("{} refuses (by its arc radius parameter, assumed 0.01 mm) a larger difference", self.name())
+            }),
         }
     }
 
@@ -130,7 +133,8 @@ impl Settings {
                 .find(|v| v.source == ValueSource::Quantity(q))
                 .and_then(|v| post.formats.get(v.format as usize))
         };
-        let decimals = [Quantity::X, Quantity::Y, Quantity::Z].into_iter().filter_map(format_of).map(|f| f.decimals).min();
+        let decimals =
+            [Quantity::X, Quantity::Y, Quantity::Z].into_iter().filter_map(format_of).map(|f| f.decimals).min();
         let feed_multiplier = [Quantity::Feed, Quantity::CutFeed, Quantity::PlungeFeed]
             .into_iter()
             .filter_map(format_of)
@@ -159,8 +163,9 @@ pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style)";
 
 /// ShopBot commands that start a line with a comma after them.
 const SHOPBOT: &[&str] = &[
-    "MS", "JS", "VS", "J2", "J3", "J4", "J5", "JX", "JY", "JZ", "JA", "JB", "M2", "M3", "M4", "M5", "MX", "MY", "MZ", "MA", "MB", "MH", "JH",
-    "CG", "CR", "CP", "TR", "SO", "PA", "PS", "C2", "C3", "C6", "C7", "C9", "TC", "FP", "ZX", "ZY", "ZZ", "ZT", "SR", "SF", "VA", "VR",
+    "MS", "JS", "VS", "J2", "J3", "J4", "J5", "JX", "JY", "JZ", "JA", "JB", "M2", "M3", "M4", "M5", "MX", "MY", "MZ",
+    "MA", "MB", "MH", "JH", "CG", "CR", "CP", "TR", "SO", "PA", "PS", "C2", "C3", "C6", "C7", "C9", "TC", "FP", "ZX",
+    "ZY", "ZZ", "ZT", "SR", "SF", "VA", "VR",
 ];
 
 /// Output families verify does not read, told apart by a program's first bytes.
@@ -168,10 +173,13 @@ pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
     let text = String::from_utf8_lossy(&head[..head.len().min(4096)]);
     for line in text.lines().map(str::trim).filter(|l| !l.is_empty()).take(40) {
         let upper = line.to_ascii_uppercase();
-        if upper.starts_with("BEGIN PGM") || upper.split_whitespace().nth(1) == Some("BEGIN") && upper.contains(" PGM ") {
+        if upper.starts_with("BEGIN PGM") || upper.split_whitespace().nth(1) == Some("BEGIN") && upper.contains(" PGM ")
+        {
             return Some("Heidenhain conversational");
         }
-        if ["IN;", "PU;", "PD;", "SP1;", "DF;"].iter().any(|p| upper.starts_with(p)) || (upper.starts_with("PU") && upper.ends_with(';')) {
+        if ["IN;", "PU;", "PD;", "SP1;", "DF;"].iter().any(|p| upper.starts_with(p))
+            || (upper.starts_with("PU") && upper.ends_with(';'))
+        {
             return Some("HPGL");
         }
         // ShopBot's two-character commands take comma-separated arguments (`MS,1,0.5`, `J3,0,0,1`).
@@ -243,7 +251,13 @@ impl Observer for () {
 }
 
 /// [`verify`], showing each program move to `observer` as it is replayed.
-pub fn verify_observed(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings, observer: &mut dyn Observer) -> Report {
+pub fn verify_observed(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn EventSource,
+    settings: &Settings,
+    observer: &mut dyn Observer,
+) -> Report {
     interp::run(program, file, toolpath, settings, observer)
 }
 

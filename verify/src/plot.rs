@@ -49,8 +49,19 @@ pub fn draw(
         .iter()
         .zip(&report.at)
         .map(|(d, at)| {
-            let line = d.labels.iter().find(|l| l.span.file == file).and_then(|l| sources.line_column(l.span.file, l.span.start)).map(|(line, _)| line);
-            Mark { code: d.code.to_string(), error: d.severity == Severity::Error, line, message: d.message.clone(), at: *at }
+            let line = d
+                .labels
+                .iter()
+                .find(|l| l.span.file == file)
+                .and_then(|l| sources.line_column(l.span.file, l.span.start))
+                .map(|(line, _)| line);
+            Mark {
+                code: d.code.to_string(),
+                error: d.severity == Severity::Error,
+                line,
+                message: d.message.clone(),
+                at: *at,
+            }
         })
         .collect();
     plot.marks(marks);
@@ -147,7 +158,9 @@ impl Layer {
                 if keep {
                     // An arc whose start was left out is drawn as a line.
                     let c = match c {
-                        Cmd::Arc(x, y, ..) if i > 0 && kept > 0 && !same_end(self.cmds[kept - 1], self.cmds[i - 1]) => Cmd::Line(x, y),
+                        Cmd::Arc(x, y, ..) if i > 0 && kept > 0 && !same_end(self.cmds[kept - 1], self.cmds[i - 1]) => {
+                            Cmd::Line(x, y)
+                        }
                         c => c,
                     };
                     self.cmds[kept] = c;
@@ -198,7 +211,8 @@ impl Layer {
             let (dx, dy) = (b.0 - o.0, b.1 - o.1);
             let len = dx.hypot(dy);
             let off = ((pen.0 - o.0) * dy - (pen.1 - o.1) * dx).abs() / len.max(1e-12);
-            let forward = (pen.0 - o.0) * dx + (pen.1 - o.1) * dy > 0.0 && (b.0 - pen.0) * dx + (b.1 - pen.1) * dy > 0.0;
+            let forward =
+                (pen.0 - o.0) * dx + (pen.1 - o.1) * dy > 0.0 && (b.0 - pen.0) * dx + (b.1 - pen.1) * dy > 0.0;
             if off <= self.res && forward {
                 *self.cmds.last_mut().expect("a line") = Cmd::Line(b.0, b.1);
                 self.pen = Some(b);
@@ -342,7 +356,16 @@ impl Plot {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn add(&mut self, src: usize, kind: Kind, start: [f64; 3], end: [f64; 3], centre: [f64; 3], dir: ArcDir, plane: Plane) {
+    fn add(
+        &mut self,
+        src: usize,
+        kind: Kind,
+        start: [f64; 3],
+        end: [f64; 3],
+        centre: [f64; 3],
+        dir: ArcDir,
+        plane: Plane,
+    ) {
         self.moves[src] += 1;
         let feed = usize::from(kind != Kind::Rapid);
         self.bounds.add(start);
@@ -477,7 +500,11 @@ impl Plot {
             h = height
         );
         let _ = writeln!(out, r##"<rect width="100%" height="100%" fill="#ffffff"/>"##);
-        let _ = writeln!(out, r##"<text x="{left}" y="28" font-size="16" font-weight="bold">{}</text>"##, escape(&self.title));
+        let _ = writeln!(
+            out,
+            r##"<text x="{left}" y="28" font-size="16" font-weight="bold">{}</text>"##,
+            escape(&self.title)
+        );
         for (v, &(u, w, name)) in VIEWS.iter().enumerate() {
             let ox = left;
             let oy = origins[v];
@@ -486,7 +513,11 @@ impl Plot {
             let tx = |x: f64| (ox + (x - b.min[u]) * scale).clamp(-1e6, 1e6);
             let ty = |y: f64| (oy + h - (y - b.min[w]) * scale).clamp(-1e6, 1e6);
             let _ = writeln!(out, r##"<g class="view" id="view-{}">"##, if v == 0 { "xy" } else { "xz" });
-            let _ = writeln!(out, r##"<rect x="{ox:.2}" y="{oy:.2}" width="{:.2}" height="{h:.2}" fill="#fbfbf8" stroke="#888888" stroke-width="1"/>"##, xr * scale);
+            let _ = writeln!(
+                out,
+                r##"<rect x="{ox:.2}" y="{oy:.2}" width="{:.2}" height="{h:.2}" fill="#fbfbf8" stroke="#888888" stroke-width="1"/>"##,
+                xr * scale
+            );
             let _ = writeln!(out, r##"<text x="{ox:.2}" y="{:.2}" font-weight="bold">{name}</text>"##, oy - 8.0);
             // Axes: ticks and labels in the program's units.
             let axis = |out: &mut String, lo: f64, hi: f64, horizontal: bool| {
@@ -501,22 +532,60 @@ impl Plot {
                     let label = format!("{:.*}", decimals, if t.abs() < step * 1e-6 { 0.0 } else { t });
                     if horizontal {
                         let x = tx(t * unit);
-                        let _ = writeln!(out, r##"<line x1="{x:.2}" y1="{:.2}" x2="{x:.2}" y2="{:.2}" stroke="#888888"/>"##, oy + h, oy + h + 5.0);
-                        let _ = writeln!(out, r##"<line x1="{x:.2}" y1="{oy:.2}" x2="{x:.2}" y2="{:.2}" stroke="#e4e4e4" stroke-width="0.5"/>"##, oy + h);
-                        let _ = writeln!(out, r##"<text x="{x:.2}" y="{:.2}" text-anchor="middle" font-size="11">{label}</text>"##, oy + h + 17.0);
+                        let _ = writeln!(
+                            out,
+                            r##"<line x1="{x:.2}" y1="{:.2}" x2="{x:.2}" y2="{:.2}" stroke="#888888"/>"##,
+                            oy + h,
+                            oy + h + 5.0
+                        );
+                        let _ = writeln!(
+                            out,
+                            r##"<line x1="{x:.2}" y1="{oy:.2}" x2="{x:.2}" y2="{:.2}" stroke="#e4e4e4" stroke-width="0.5"/>"##,
+                            oy + h
+                        );
+                        let _ = writeln!(
+                            out,
+                            r##"<text x="{x:.2}" y="{:.2}" text-anchor="middle" font-size="11">{label}</text>"##,
+                            oy + h + 17.0
+                        );
                     } else {
                         let y = ty(t * unit);
-                        let _ = writeln!(out, r##"<line x1="{:.2}" y1="{y:.2}" x2="{ox:.2}" y2="{y:.2}" stroke="#888888"/>"##, ox - 5.0);
-                        let _ = writeln!(out, r##"<line x1="{ox:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="#e4e4e4" stroke-width="0.5"/>"##, ox + xr * scale);
-                        let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="11">{label}</text>"##, ox - 8.0, y + 4.0);
+                        let _ = writeln!(
+                            out,
+                            r##"<line x1="{:.2}" y1="{y:.2}" x2="{ox:.2}" y2="{y:.2}" stroke="#888888"/>"##,
+                            ox - 5.0
+                        );
+                        let _ = writeln!(
+                            out,
+                            r##"<line x1="{ox:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="#e4e4e4" stroke-width="0.5"/>"##,
+                            ox + xr * scale
+                        );
+                        let _ = writeln!(
+                            out,
+                            r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="11">{label}</text>"##,
+                            ox - 8.0,
+                            y + 4.0
+                        );
                     }
                 }
             };
             axis(&mut out, b.min[u], b.max[u], true);
             axis(&mut out, b.min[w], b.max[w], false);
             let axis_name = |i: usize| ["X", "Y", "Z"][i];
-            let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="12">{} ({unit_name})</text>"##, ox + xr * scale, oy + h + 32.0, axis_name(u));
-            let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}" text-anchor="start" font-size="12">{} ({unit_name})</text>"##, ox - 70.0, oy - 8.0, axis_name(w));
+            let _ = writeln!(
+                out,
+                r##"<text x="{:.2}" y="{:.2}" text-anchor="end" font-size="12">{} ({unit_name})</text>"##,
+                ox + xr * scale,
+                oy + h + 32.0,
+                axis_name(u)
+            );
+            let _ = writeln!(
+                out,
+                r##"<text x="{:.2}" y="{:.2}" text-anchor="start" font-size="12">{} ({unit_name})</text>"##,
+                ox - 70.0,
+                oy - 8.0,
+                axis_name(w)
+            );
             // Layers: the toolpath wide and light under the program, thin and dark.
             for src in 0..2 {
                 for feed in 0..2 {
@@ -525,7 +594,10 @@ impl Plot {
                         continue;
                     }
                     let (class, style) = layer_style(src, feed);
-                    let _ = write!(out, r##"<path class="{class}" {style} fill="none" stroke-linecap="round" stroke-linejoin="round" d=""##);
+                    let _ = write!(
+                        out,
+                        r##"<path class="{class}" {style} fill="none" stroke-linecap="round" stroke-linejoin="round" d=""##
+                    );
                     // Points closer than half a pixel to the last one written are left out.
                     let mut last = (f64::NAN, f64::NAN);
                     let mut written = 0usize;
@@ -556,7 +628,8 @@ impl Plot {
                                 // The view flips its vertical axis: clockwise in the view is SVG's positive sweep.
                                 last = (tx(x), ty(y));
                                 let rs = (r * scale).min(1e7);
-                                let _ = write!(out, "A {rs:.2} {rs:.2} 0 0 {} {:.2} {:.2} ", u8::from(cw), last.0, last.1);
+                                let _ =
+                                    write!(out, "A {rs:.2} {rs:.2} 0 0 {} {:.2} {:.2} ", u8::from(cw), last.0, last.1);
                             }
                         }
                     }
@@ -589,7 +662,10 @@ impl Plot {
                 placed.push((px, py));
                 let fill = if m.error { "#d62728" } else { "#ff9f1c" };
                 if turn > 0 {
-                    let _ = writeln!(out, r##"<line x1="{cx:.2}" y1="{cy:.2}" x2="{px:.2}" y2="{py:.2}" stroke="{fill}" stroke-width="1"/>"##);
+                    let _ = writeln!(
+                        out,
+                        r##"<line x1="{cx:.2}" y1="{cy:.2}" x2="{px:.2}" y2="{py:.2}" stroke="{fill}" stroke-width="1"/>"##
+                    );
                 }
                 let _ = writeln!(
                     out,
@@ -603,20 +679,38 @@ impl Plot {
         // Legend.
         let lx = left;
         let _ = writeln!(out, r##"<g class="legend">"##);
-        let entries = [(0, 1, "toolpath feed"), (0, 0, "toolpath rapid"), (1, 1, "program feed / arc"), (1, 0, "program rapid")];
+        let entries =
+            [(0, 1, "toolpath feed"), (0, 0, "toolpath rapid"), (1, 1, "program feed / arc"), (1, 0, "program rapid")];
         let mut x = lx;
         for (src, feed, label) in entries {
             let (class, style) = layer_style(src, feed);
-            let _ = writeln!(out, r##"<path class="{class}" {style} fill="none" d="M{x:.2} {legend_y:.2} L{:.2} {legend_y:.2}"/>"##, x + 40.0);
+            let _ = writeln!(
+                out,
+                r##"<path class="{class}" {style} fill="none" d="M{x:.2} {legend_y:.2} L{:.2} {legend_y:.2}"/>"##,
+                x + 40.0
+            );
             let _ = writeln!(out, r##"<text x="{:.2}" y="{:.2}">{label}</text>"##, x + 48.0, legend_y + 4.0);
             x += 48.0 + 7.5 * label.len() as f64 + 28.0;
         }
-        let _ = writeln!(out, r##"<circle cx="{:.2}" cy="{legend_y:.2}" r="7" fill="#d62728"/><text x="{:.2}" y="{:.2}">error</text>"##, x + 7.0, x + 20.0, legend_y + 4.0);
-        let _ = writeln!(out, r##"<circle cx="{:.2}" cy="{legend_y:.2}" r="7" fill="#ff9f1c"/><text x="{:.2}" y="{:.2}">warning</text>"##, x + 77.0, x + 90.0, legend_y + 4.0);
+        let _ = writeln!(
+            out,
+            r##"<circle cx="{:.2}" cy="{legend_y:.2}" r="7" fill="#d62728"/><text x="{:.2}" y="{:.2}">error</text>"##,
+            x + 7.0,
+            x + 20.0,
+            legend_y + 4.0
+        );
+        let _ = writeln!(
+            out,
+            r##"<circle cx="{:.2}" cy="{legend_y:.2}" r="7" fill="#ff9f1c"/><text x="{:.2}" y="{:.2}">warning</text>"##,
+            x + 77.0,
+            x + 90.0,
+            legend_y + 4.0
+        );
         let _ = writeln!(out, "</g>");
         let mut y = legend_y + 30.0;
         for note in &dropped {
-            let _ = writeln!(out, r##"<text class="note" x="{lx:.2}" y="{y:.2}" fill="#555555">{}</text>"##, escape(note));
+            let _ =
+                writeln!(out, r##"<text class="note" x="{lx:.2}" y="{y:.2}" fill="#555555">{}</text>"##, escape(note));
             y += 18.0;
         }
         // The findings' list.
@@ -641,7 +735,11 @@ impl Plot {
             y += 18.0;
         }
         if self.marks.len() > MAX_LISTED {
-            let _ = writeln!(out, r##"<text x="{lx:.2}" y="{y:.2}">… and {} more (all are marked above; `postc verify` lists them)</text>"##, self.marks.len() - MAX_LISTED);
+            let _ = writeln!(
+                out,
+                r##"<text x="{lx:.2}" y="{y:.2}">… and {} more (all are marked above; `postc verify` lists them)</text>"##,
+                self.marks.len() - MAX_LISTED
+            );
         }
         let _ = writeln!(out, "</g>\n</svg>");
         out
@@ -658,7 +756,9 @@ impl Plot {
                 let res = self.layers[v][src].iter().map(|l| l.res).fold(MERGE, f64::max);
                 if res > MERGE {
                     let (r, u) = if self.inch { (res / 25.4, "in") } else { (res, "mm") };
-                    notes.push(format!("{name}: the {who} is drawn to {r:.3} {u} (at most {MAX_POINTS} path points per layer)"));
+                    notes.push(format!(
+                        "{name}: the {who} is drawn to {r:.3} {u} (at most {MAX_POINTS} path points per layer)"
+                    ));
                 }
             }
         }
@@ -737,9 +837,13 @@ mod tests {
         p.motion(&mv(Kind::Arc, [10.0, 0.0, 0.0], [10.0, 0.0, 0.0], [0.0; 3], ArcDir::Ccw));
         assert_eq!(p.layers[0][1][1].cmds.iter().filter(|c| matches!(c, Cmd::Arc(..))).count(), 3);
         // Seen from the front the circle is a line across its diameter.
-        let xs: Vec<f64> = p.layers[1][1][1].cmds.iter().map(|c| match *c {
-            Cmd::Move(x, _) | Cmd::Line(x, _) | Cmd::Arc(x, ..) | Cmd::Dot(x, _) => x,
-        }).collect();
+        let xs: Vec<f64> = p.layers[1][1][1]
+            .cmds
+            .iter()
+            .map(|c| match *c {
+                Cmd::Move(x, _) | Cmd::Line(x, _) | Cmd::Arc(x, ..) | Cmd::Dot(x, _) => x,
+            })
+            .collect();
         assert!(xs.iter().any(|x| (x + 10.0).abs() < 0.1), "{xs:?}");
     }
 
@@ -751,7 +855,11 @@ mod tests {
         let mut m = mv(Kind::Arc, [0.0, 0.0, 10.0], [10.0, 0.0, 0.0], [0.0; 3], ArcDir::Ccw);
         m.plane = Plane::Zx;
         p.motion(&m);
-        assert!(matches!(p.layers[1][1][1].cmds[..], [Cmd::Move(..), Cmd::Arc(_, _, _, true)]), "{:?}", p.layers[1][1][1].cmds);
+        assert!(
+            matches!(p.layers[1][1][1].cmds[..], [Cmd::Move(..), Cmd::Arc(_, _, _, true)]),
+            "{:?}",
+            p.layers[1][1][1].cmds
+        );
         // Seen from the top it is the line from X0 to X10 (drawn through points).
         assert!(p.layers[0][1][1].cmds.iter().all(|c| !matches!(c, Cmd::Arc(..))));
         // Its bounds reach the arc's top: Z10 at X0 and X10 at Z0, nothing beyond.

@@ -147,10 +147,7 @@ pub(crate) fn parse_circle(rec: &Rec<'_>) -> Result<(CircleSpec, Option<usize>),
         message: "the axis of this CIRCLE (values 4 to 6) is a zero vector".to_string(),
         arg: Some(3),
     })?;
-    Ok((
-        CircleSpec { centre: [v[0], v[1], v[2]], axis, ccw: word_dir.unwrap_or(default_ccw), convention },
-        ignored,
-    ))
+    Ok((CircleSpec { centre: [v[0], v[1], v[2]], axis, ccw: word_dir.unwrap_or(default_ccw), convention }, ignored))
 }
 
 /// What a CIRCLE and its end point become.
@@ -167,9 +164,17 @@ pub(crate) enum ArcOutcome {
 
 /// The arc from `start` to `end` around `spec`. `tolerance` is the chord
 /// error allowed when a tilted arc is cut into straight moves.
-pub(crate) fn build_arc(spec: &CircleSpec, start: Option<V3>, end: V3, feed: Option<f64>, tolerance: f64) -> ArcOutcome {
+pub(crate) fn build_arc(
+    spec: &CircleSpec,
+    start: Option<V3>,
+    end: V3,
+    feed: Option<f64>,
+    tolerance: f64,
+) -> ArcOutcome {
     let a = spec.axis;
-    let (dominant, component) = (0..3).map(|i| (i, a[i])).fold((2usize, 0.0f64), |best, (i, c)| if c.abs() > best.1.abs() { (i, c) } else { best });
+    let (dominant, component) = (0..3)
+        .map(|i| (i, a[i]))
+        .fold((2usize, 0.0f64), |best, (i, c)| if c.abs() > best.1.abs() { (i, c) } else { best });
     if component.abs() < 0.99999 {
         return ArcOutcome::Linear(linearize(spec, start.unwrap_or(end), end, tolerance));
     }
@@ -247,7 +252,11 @@ pub(crate) fn linearize(spec: &CircleSpec, start: V3, end: V3, tolerance: f64) -
 
 /// A CATIA `TLON,GOFWD/(CIRCLE/...),ON,(LINE/...)` record: the circle and
 /// the end point, with the direction taken from the INDIRV before it.
-pub(crate) fn parse_drive_circle(rec: &Rec<'_>, start: Option<V3>, indirv: Option<V3>) -> Result<(CircleSpec, V3), Problem> {
+pub(crate) fn parse_drive_circle(
+    rec: &Rec<'_>,
+    start: Option<V3>,
+    indirv: Option<V3>,
+) -> Result<(CircleSpec, V3), Problem> {
     let mut circle = [0.0; 8];
     let mut line = [0.0; 7];
     let (mut nc, mut nl) = (0, 0);
@@ -287,7 +296,9 @@ pub(crate) fn parse_drive_circle(rec: &Rec<'_>, start: Option<V3>, indirv: Optio
         7 => unit([circle[3], circle[4], circle[5]]),
         _ => {
             return Err(Problem {
-                message: format!("the (CIRCLE/...) of a TLON,GOFWD record needs 4 values (centre, radius) or 7; it has {nc}"),
+                message: format!(
+                    "the (CIRCLE/...) of a TLON,GOFWD record needs 4 values (centre, radius) or 7; it has {nc}"
+                ),
                 arg: None,
             });
         }

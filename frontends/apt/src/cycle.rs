@@ -80,7 +80,10 @@ pub(crate) fn parse_cycle(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Resu
         return Ok(CycleRecord::Prepare);
     }
     let Some(kind) = first.word().and_then(kind_of) else {
-        return Err(Problem::new("unknown cycle type: CYCLE needs DRILL, DEEP, DEEP2, BRKCHP, TAP, BORE, REAM or OFF first", Some(0)));
+        return Err(Problem::new(
+            "unknown cycle type: CYCLE needs DRILL, DEEP, DEEP2, BRKCHP, TAP, BORE, REAM or OFF first",
+            Some(0),
+        ));
     };
     let mut spec = CycleSpec {
         kind,

@@ -151,6 +151,8 @@ mod tests {
         assert!(matches!(sniff(b"P(1)=POINT/1,2,3\n"), Content::PartProgram(..)));
         assert_eq!(sniff(b"POST_NAME = \"Mach3\"\n+ comment\n"), Content::Other);
         assert_eq!(sniff(b"G0 X1 Y2\nG1 Z-1\n"), Content::Other);
-        assert!(matches!(sniff(&[1, 0, 0, 0, 2, 0, 0, 0, 0xe8, 3, 0, 0, 1, 0, 0, 0]), Content::Binary(k) if k.contains("APT360")));
+        assert!(
+            matches!(sniff(&[1, 0, 0, 0, 2, 0, 0, 0, 0xe8, 3, 0, 0, 1, 0, 0, 0]), Content::Binary(k) if k.contains("APT360"))
+        );
     }
 }

@@ -78,8 +78,11 @@ pub(crate) fn ignored_word(span: Span, word: &str, record: &str) -> Diagnostic {
 }
 
 pub(crate) fn circle_without_goto(span: Span, next: Option<Span>) -> Diagnostic {
-    let d = Diagnostic::warning(CIRCLE_WITHOUT_GOTO, "CIRCLE is not followed by the GOTO that ends the arc; the circle is dropped")
-        .at(span, "this circle has no end point");
+    let d = Diagnostic::warning(
+        CIRCLE_WITHOUT_GOTO,
+        "CIRCLE is not followed by the GOTO that ends the arc; the circle is dropped",
+    )
+    .at(span, "this circle has no end point");
     match next {
         Some(next) => d.also(next, "the next record is not a GOTO"),
         None => d,
@@ -96,8 +99,11 @@ pub(crate) fn arc_off_circle(span: Span, start_radius: f64, end_radius: f64) -> 
 }
 
 pub(crate) fn tilted_arc(span: Span, segments: usize) -> Diagnostic {
-    Diagnostic::warning(TILTED_ARC, format!("this arc lies in a tilted plane (not XY, ZX or YZ); it is cut as {segments} straight feed moves"))
-        .at(span, "tilted arc")
+    Diagnostic::warning(
+        TILTED_ARC,
+        format!("this arc lies in a tilted plane (not XY, ZX or YZ); it is cut as {segments} straight feed moves"),
+    )
+    .at(span, "tilted arc")
 }
 
 pub(crate) fn open_cycle(span: Span, closed_by: Option<Span>) -> Diagnostic {
@@ -123,10 +129,13 @@ pub(crate) fn after_fini(span: Span) -> Diagnostic {
 }
 
 pub(crate) fn nurbs(span: Span) -> Diagnostic {
-    Diagnostic::warning(NURBS, "NURBS spline motion is not supported: the tool moves straight to the next GOTO instead of along the spline")
-        .at(span, "spline")
-        .note("the spline records (NURBS, KNOT, CNTRL) pass through as commands; only this first one is reported")
-        .help("output the operation as GOTO points (NX: turn off NURBS output in the operation's machine control)")
+    Diagnostic::warning(
+        NURBS,
+        "NURBS spline motion is not supported: the tool moves straight to the next GOTO instead of along the spline",
+    )
+    .at(span, "spline")
+    .note("the spline records (NURBS, KNOT, CNTRL) pass through as commands; only this first one is reported")
+    .help("output the operation as GOTO points (NX: turn off NURBS output in the operation's machine control)")
 }
 
 pub(crate) fn eof_continuation(span: Span) -> Diagnostic {
@@ -135,8 +144,11 @@ pub(crate) fn eof_continuation(span: Span) -> Diagnostic {
 }
 
 pub(crate) fn feed_per_rev(span: Span) -> Diagnostic {
-    Diagnostic::warning(FEED_PER_REV, "a feed per revolution is used before any spindle speed is known; it is passed on as a feed per minute")
-        .at(span, "feed per revolution")
+    Diagnostic::warning(
+        FEED_PER_REV,
+        "a feed per revolution is used before any spindle speed is known; it is passed on as a feed per minute",
+    )
+    .at(span, "feed per revolution")
 }
 
 pub(crate) fn long_line(span: Span) -> Diagnostic {
@@ -149,6 +161,9 @@ pub(crate) fn io(span: Span, error: &std::io::Error) -> Diagnostic {
 }
 
 pub(crate) fn no_indirv(span: Span) -> Diagnostic {
-    Diagnostic::warning(NO_INDIRV, "an arc given with TLON,GOFWD has no INDIRV before it; it is taken as counter-clockwise")
-        .at(span, "direction unknown")
+    Diagnostic::warning(
+        NO_INDIRV,
+        "an arc given with TLON,GOFWD has no INDIRV before it; it is taken as counter-clockwise",
+    )
+    .at(span, "direction unknown")
 }

@@ -30,7 +30,9 @@ impl Core {
             Major::Gohome => self.gohome(rec, diags),
             Major::DriveMotion => return self.drive_motion(rec, diags),
             Major::SourceMotion if matches!(rec.arg(0), Some(Arg::Open(_))) => return self.drive_motion(rec, diags),
-            Major::SourceMotion => return Flow::PartProgram("a motion statement that drives along named geometry", span),
+            Major::SourceMotion => {
+                return Flow::PartProgram("a motion statement that drives along named geometry", span);
+            }
             Major::Indirv => {
                 let mut v = [0.0; 3];
                 if rec.numbers(&mut v) == 3 {
@@ -89,7 +91,8 @@ impl Core {
             Major::Units => machine::parse_units(rec).map(|u| self.units_record(u, span, diags)),
             Major::ToolPath => {
                 let name = rec.arg(0).map(|_| rec.arg_text(0)).unwrap_or_default();
-                let tool = (0..rec.len()).find(|&i| rec.arg(i).is_some_and(|a| a.is("TOOL"))).filter(|&i| i + 1 < rec.len());
+                let tool =
+                    (0..rec.len()).find(|&i| rec.arg(i).is_some_and(|a| a.is("TOOL"))).filter(|&i| i + 1 < rec.len());
                 if let Some(i) = tool {
                     let name = rec.arg_text(i + 1);
                     if name != self.tool_name {
@@ -137,7 +140,11 @@ impl Core {
         };
         if let Err(problem) = result {
             let at = problem.arg.map_or(span, |i| rec.arg_span(i));
-            diags.push(diag::bad_args(at, format!("{}: {}", word(), problem.message), "see the record's forms in docs/apt.md"));
+            diags.push(diag::bad_args(
+                at,
+                format!("{}: {}", word(), problem.message),
+                "see the record's forms in docs/apt.md",
+            ));
         }
         Flow::Continue
     }

@@ -31,9 +31,9 @@
 use chumsky::error::Cheap;
 use chumsky::extra::Full;
 use chumsky::input::{InputRef, MapExtra};
-use chumsky::primitive::custom;
 use chumsky::inspector::TruncateState;
 use chumsky::prelude::*;
+use chumsky::primitive::custom;
 
 use crate::number::{parse_number, scan_value};
 
@@ -200,25 +200,19 @@ fn paren_expr<'s>() -> impl Parser<'s, &'s [u8], (), Extra> {
         .ignored()
         .or(just(b'.').then(digits.at_least(1)).ignored());
     let exponent = one_of(b"eEdD").then(one_of(b"+-").or_not()).then(digits.at_least(1));
-    let unsigned = mantissa
-        .then(exponent.or_not())
-        .to_slice()
-        .try_map(|s: &[u8], span| parse_number(s).ok_or(Cheap::new(span)));
+    let unsigned =
+        mantissa.then(exponent.or_not()).to_slice().try_map(|s: &[u8], span| parse_number(s).ok_or(Cheap::new(span)));
     let factor = one_of(b"+-")
         .or_not()
         .then_ignore(blank)
         .then(unsigned)
         .map(|(sign, v)| if sign == Some(b'-') { -v } else { v })
         .padded_by(blank);
-    let term = factor
-        .foldl(one_of(b"*/").then(factor).repeated(), |a, (op, b)| if op == b'*' { a * b } else { a / b });
+    let term = factor.foldl(one_of(b"*/").then(factor).repeated(), |a, (op, b)| if op == b'*' { a * b } else { a / b });
     let expr = term
         .foldl(one_of(b"+-").then(term).repeated(), |a, (op, b)| if op == b'+' { a + b } else { a - b })
         .try_map(|v: f64, span| if v.is_finite() { Ok(v) } else { Err(Cheap::new(span)) });
-    just(b'(')
-        .ignore_then(expr)
-        .then_ignore(just(b')'))
-        .try_map_with(|v, e| push_ok(e, ItemKind::Number, v))
+    just(b'(').ignore_then(expr).then_ignore(just(b')')).try_map_with(|v, e| push_ok(e, ItemKind::Number, v))
 }
 
 /// `(WORD/value,...)`: a nested record, as in `CLEARP/(PLANE/0,0,1,3.5)`
@@ -268,7 +262,12 @@ fn arguments<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Copy {
                 }
                 Some(&b) if n > 0 && (VALUE_BYTE[b as usize] || b == b'(') => {
                     advance(inp, n);
-                    inp.state().push(Item { kind: ItemKind::MissingComma, start: at as u32, end: (at + n) as u32, value: 0.0 });
+                    inp.state().push(Item {
+                        kind: ItemKind::MissingComma,
+                        start: at as u32,
+                        end: (at + n) as u32,
+                        value: 0.0,
+                    });
                 }
                 _ => return Ok(()),
             }
@@ -305,10 +304,7 @@ mod tests {
         match result.into_result() {
             Ok(shape) => Ok((
                 shape,
-                items
-                    .iter()
-                    .map(|i| (i.kind, text[i.start as usize..i.end as usize].to_string(), i.value))
-                    .collect(),
+                items.iter().map(|i| (i.kind, text[i.start as usize..i.end as usize].to_string(), i.value)).collect(),
             )),
             Err(errors) => Err(errors.first().map_or(0, |e| e.span().start)),
         }

@@ -333,9 +333,8 @@ impl<R: BufRead> Lexer<R> {
                 return Ok(RawKind::Statement);
             }
             let (na, nb) = trim(&self.line);
-            let numbers = !self.line_info.too_long
-                && na < nb
-                && matches!(self.line[na], b'0'..=b'9' | b'+' | b'-' | b'.');
+            let numbers =
+                !self.line_info.too_long && na < nb && matches!(self.line[na], b'0'..=b'9' | b'+' | b'-' | b'.');
             if !numbers {
                 self.held = true;
                 return Ok(RawKind::Statement);

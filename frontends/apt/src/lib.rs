@@ -93,8 +93,8 @@
 mod circle;
 mod cycle;
 mod detect;
-mod dispatch;
 mod diagnostics;
+mod dispatch;
 mod grammar;
 mod lexer;
 mod lines;

@@ -180,7 +180,8 @@ pub(crate) fn parse_cutcom(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Res
                 } else {
                     if is("ON") {
                         on = true;
-                    } else if !(is("XYPLAN") || is("YZPLAN") || is("ZXPLAN") || is("NOW") || is("NEXT") || is("ADJUST")) {
+                    } else if !(is("XYPLAN") || is("YZPLAN") || is("ZXPLAN") || is("NOW") || is("NEXT") || is("ADJUST"))
+                    {
                         ignored(i);
                     }
                     continue;
@@ -192,7 +193,10 @@ pub(crate) fn parse_cutcom(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Res
     }
     match (comp, register) {
         (Some(mut c), Some(r)) => {
-            c.register = Some(register_number(r).ok_or_else(|| Problem::new("a compensation register is a whole number from 0", None))?);
+            c.register = Some(
+                register_number(r)
+                    .ok_or_else(|| Problem::new("a compensation register is a whole number from 0", None))?,
+            );
             Ok(Some(c))
         }
         (Some(c), None) => Ok(Some(c)),
@@ -257,7 +261,8 @@ pub(crate) fn parse_tool_load(rec: &Rec<'_>, skip: usize, ignored: &mut dyn FnMu
     let number = numbers[0]
         .ok_or_else(|| Problem::new("a tool load needs the tool number: LOADTL/3", None))
         .and_then(|v| register_number(v).ok_or_else(|| bad("tool number")))?;
-    let length = adjust.or(numbers[1]).map(|v| register_number(v).ok_or_else(|| bad("length offset register"))).transpose()?;
+    let length =
+        adjust.or(numbers[1]).map(|v| register_number(v).ok_or_else(|| bad("length offset register"))).transpose()?;
     let diameter = numbers[2].map(|v| register_number(v).ok_or_else(|| bad("diameter offset register"))).transpose()?;
     Ok(ToolLoad { number, length_offset: length, diameter_offset: diameter })
 }

@@ -64,7 +64,17 @@ impl Core {
                 _ => Intent::Cut,
             };
             let feed = self.feed_now(span, diags);
-            Event::Feed(FeedMove { x: p[0], y: p[1], z: p[2], intent, feed, a: None, b: None, c: None, tool_axis: self.axis })
+            Event::Feed(FeedMove {
+                x: p[0],
+                y: p[1],
+                z: p[2],
+                intent,
+                feed,
+                a: None,
+                b: None,
+                c: None,
+                tool_axis: self.axis,
+            })
         };
         self.pos = Some(p);
         self.emit_motion(event, span);
@@ -202,7 +212,12 @@ impl Core {
                 [a[0] * v[0], a[1] * v[0], a[2] * v[0]]
             }
             3 => v,
-            n => return Err(Problem::new(format!("GODLTA needs 1 value (along the tool axis) or 3 (dx,dy,dz); this one has {n}"), None)),
+            n => {
+                return Err(Problem::new(
+                    format!("GODLTA needs 1 value (along the tool axis) or 3 (dx,dy,dz); this one has {n}"),
+                    None,
+                ));
+            }
         };
         let Some(s) = self.pos else {
             return Err(Problem::new("GODLTA moves from the current position, and no position is known yet", None));

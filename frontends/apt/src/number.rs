@@ -84,7 +84,10 @@ pub(crate) fn scan_value(tail: &[u8]) -> (usize, Option<f64>) {
         let value = mantissa as f64 / POW10[decimals];
         return (i, Some(if negative { -value } else { value }));
     }
-    let n = i + tail[i.min(tail.len())..].iter().position(|&b| !VALUE_BYTE[b as usize]).unwrap_or(tail.len() - i.min(tail.len()));
+    let n = i + tail[i.min(tail.len())..]
+        .iter()
+        .position(|&b| !VALUE_BYTE[b as usize])
+        .unwrap_or(tail.len() - i.min(tail.len()));
     (n, parse_number(&tail[..n]))
 }
 
@@ -98,9 +101,10 @@ fn parse_number_slow(s: &[u8]) -> Option<f64> {
         }
     }
     // A sign only at the start or after the exponent letter.
-    let signs_ok = s.iter().enumerate().all(|(i, &b)| {
-        !matches!(b, b'+' | b'-') || i == 0 || matches!(s[i - 1], b'e' | b'E' | b'd' | b'D')
-    });
+    let signs_ok = s
+        .iter()
+        .enumerate()
+        .all(|(i, &b)| !matches!(b, b'+' | b'-') || i == 0 || matches!(s[i - 1], b'e' | b'E' | b'd' | b'D'));
     if !digits || !signs_ok {
         return None;
     }

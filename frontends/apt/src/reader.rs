@@ -130,7 +130,8 @@ impl<R: BufRead> AptReader<R> {
             return;
         }
         if let Content::PartProgram(a, b) = sniff(head) {
-            diags.push(diag::part_program(Span::new(self.core.file, a, b), "a geometry definition: CL files have none"));
+            diags
+                .push(diag::part_program(Span::new(self.core.file, a, b), "a geometry definition: CL files have none"));
             self.phase = Phase::Done;
             return;
         }
@@ -221,8 +222,14 @@ impl<R: BufRead> AptReader<R> {
                 }
                 let at = errors.first().map_or(0, |e| e.span().start);
                 let (message, help) = match text.get(at) {
-                    None => ("this record ends where a value is expected".to_string(), "a comma must be followed by a value; end a line with `$` when the record goes on at the next line"),
-                    Some(b'$') => ("a `$` continues a record only at the end of a line".to_string(), "move the rest of the record to the next line, or remove the `$`"),
+                    None => (
+                        "this record ends where a value is expected".to_string(),
+                        "a comma must be followed by a value; end a line with `$` when the record goes on at the next line",
+                    ),
+                    Some(b'$') => (
+                        "a `$` continues a record only at the end of a line".to_string(),
+                        "move the rest of the record to the next line, or remove the `$`",
+                    ),
                     Some(&b) => (
                         format!("unexpected `{}` in this record", decode(&[b])),
                         "a CL record is WORD or WORD/value,value,...: values are numbers or words, separated by commas",
@@ -243,7 +250,9 @@ impl<R: BufRead> AptReader<R> {
         }
         let items = &self.items.0;
         let heads = items.iter().take_while(|i| i.kind == ItemKind::Head).count();
-        let head = |n: usize| items.get(n).filter(|_| n < heads).map_or(&b"?"[..], |i| &text[i.start as usize..i.end as usize]);
+        let head = |n: usize| {
+            items.get(n).filter(|_| n < heads).map_or(&b"?"[..], |i| &text[i.start as usize..i.end as usize])
+        };
         let major = if heads == 1 && head(0).eq_ignore_ascii_case(b"GOTO") {
             Major::Goto
         } else {

@@ -162,13 +162,18 @@ impl Core {
     pub fn flush(&mut self) {
         self.place_tool();
         if self.window.synth_before.is_some() {
-            let span = self.window.synth_before.and_then(|i| self.window.events.get(i)).map_or(Span::new(self.file, 0, 0), |e| e.1);
+            let span = self
+                .window
+                .synth_before
+                .and_then(|i| self.window.events.get(i))
+                .map_or(Span::new(self.file, 0, 0), |e| e.1);
             self.window.place_synth(Event::ToolpathStart(ToolpathStart::default()), span);
         }
         if let Some(job) = self.job.take() {
             self.units = job.units.or(job.feed_units).unwrap_or(Units::Mm);
             let span = job.span.unwrap_or(Span::new(self.file, 0, 0));
-            let event = Job { units: self.units, part: job.part, home: job.home, product: job.product, ..Job::default() };
+            let event =
+                Job { units: self.units, part: job.part, home: job.home, product: job.product, ..Job::default() };
             self.out.push_back((Event::Job(Box::new(event)), Span::new(self.file, span.start, span.start)));
         }
         self.window.drain_into(&mut self.out);
@@ -191,7 +196,10 @@ impl Core {
             diameter_offset: load.diameter_offset.filter(|&d| d != load.number),
             ..Tool::default()
         };
-        let same = self.last_tool.as_ref().is_some_and(|t| t.number == tool.number && t.name == tool.name && t.diameter == tool.diameter);
+        let same = self
+            .last_tool
+            .as_ref()
+            .is_some_and(|t| t.number == tool.number && t.name == tool.name && t.diameter == tool.diameter);
         if forced || !same {
             let at = self.window.tool_position(at);
             self.window.insert(at, Event::Tool(tool.clone()), span);

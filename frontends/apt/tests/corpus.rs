@@ -120,7 +120,9 @@ fn every_corpus_file_is_recognised_by_content() {
         let head = &bytes[..bytes.len().min(16 << 10)];
         assert!(postc_front_apt::looks_like_cl(head), "{}", path.display());
     }
-    for other in [&b"G0 X1 Y2\nG1 Z-1 F100\n"[..], b"POST_NAME = \"Mach3\"\n", b"{\"Job\":{}}\n", b"\x89PNG\r\n\x1a\n\0\0"] {
+    for other in
+        [&b"G0 X1 Y2\nG1 Z-1 F100\n"[..], b"POST_NAME = \"Mach3\"\n", b"{\"Job\":{}}\n", b"\x89PNG\r\n\x1a\n\0\0"]
+    {
         assert!(!postc_front_apt::looks_like_cl(other), "{}", String::from_utf8_lossy(other));
     }
 }
@@ -188,7 +190,10 @@ fn corpus_arcs_mostly_turn_the_short_way() {
             }
         }
         if short + long + nearly_full > 0 {
-            println!("{}: {short} arcs under half a turn, {nearly_full} nearly full circles, {long} between", path.display());
+            println!(
+                "{}: {short} arcs under half a turn, {nearly_full} nearly full circles, {long} between",
+                path.display()
+            );
             assert!(short >= 9 * long, "{}: {short} short, {long} long", path.display());
         }
     }

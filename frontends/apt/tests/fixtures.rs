@@ -61,7 +61,13 @@ fn circle_solidworks_turns_counter_clockwise_about_its_axis() {
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(
         arcs(&read),
-        [(ArcDir::Ccw, Plane::Xy), (ArcDir::Ccw, Plane::Xy), (ArcDir::Cw, Plane::Xy), (ArcDir::Cw, Plane::Yz), (ArcDir::Ccw, Plane::Xy)]
+        [
+            (ArcDir::Ccw, Plane::Xy),
+            (ArcDir::Ccw, Plane::Xy),
+            (ArcDir::Cw, Plane::Xy),
+            (ArcDir::Cw, Plane::Yz),
+            (ArcDir::Ccw, Plane::Xy)
+        ]
     );
 }
 
@@ -127,7 +133,9 @@ fn seed_words_read_without_problems() {
 fn every_error_is_reported_and_reading_goes_on() {
     let read = snapshot("errors.cl");
     let codes = read.codes();
-    for code in ["CL003", "CL004", "CL005", "CL006", "CL008", "CL009", "CL010", "CL014", "CL015", "CL016", "CL017", "CL019"] {
+    for code in
+        ["CL003", "CL004", "CL005", "CL006", "CL008", "CL009", "CL010", "CL014", "CL015", "CL016", "CL017", "CL019"]
+    {
         assert!(codes.contains(&code), "{code} missing from {codes:?}");
     }
     assert_eq!(read.events.last().map(|e| e.0.name()), Some("End"));

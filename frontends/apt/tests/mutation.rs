@@ -11,9 +11,14 @@ use proptest::prelude::*;
 /// Seeds: the hand-written fixtures and a slice of two corpus files.
 fn seeds() -> Vec<Vec<u8>> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
-    let mut seeds: Vec<Vec<u8>> = std::fs::read_dir(dir).into_iter().flatten().flatten().filter_map(|e| std::fs::read(e.path()).ok()).collect();
+    let mut seeds: Vec<Vec<u8>> =
+        std::fs::read_dir(dir).into_iter().flatten().flatten().filter_map(|e| std::fs::read(e.path()).ok()).collect();
     if let Some(corpus) = common::corpus_dir() {
-        for name in ["MichaHofft__CreoPost/profilfraesen_2.ncl.2", "HumMan__CLSFProcessor/cutcom.clsf", "aamorim1913__AptPostProcessor/Interface-glue.clt"] {
+        for name in [
+            "MichaHofft__CreoPost/profilfraesen_2.ncl.2",
+            "HumMan__CLSFProcessor/cutcom.clsf",
+            "aamorim1913__AptPostProcessor/Interface-glue.clt",
+        ] {
             if let Ok(bytes) = std::fs::read(corpus.join(name)) {
                 seeds.push(bytes[..bytes.len().min(6000)].to_vec());
             }

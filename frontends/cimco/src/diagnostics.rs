@@ -230,10 +230,7 @@ impl Construct {
         let verb = if self.is_plural() { "are" } else { "is" };
         Diagnostic::error(
             self.code(),
-            format!(
-                "{} {verb} not part of the JavaScript that CNC-Calc posts use",
-                self.name()
-            ),
+            format!("{} {verb} not part of the JavaScript that CNC-Calc posts use", self.name()),
         )
         .at(span, "not supported by postc")
         .help(self.help())

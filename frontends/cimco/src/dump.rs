@@ -14,15 +14,8 @@ use crate::strings::quote;
 /// Dumps `program`; `text` is the source it was parsed from (for line and
 /// column numbers).
 pub fn dump(program: &Program, text: &str) -> String {
-    let line_starts: Vec<usize> = std::iter::once(0)
-        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
-        .collect();
-    let mut d = Dumper {
-        text,
-        line_starts,
-        out: String::new(),
-        depth: 0,
-    };
+    let line_starts: Vec<usize> = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
+    let mut d = Dumper { text, line_starts, out: String::new(), depth: 0 };
     for s in &program.body {
         d.stmt(s);
     }
@@ -41,10 +34,7 @@ impl Dumper<'_> {
         let offset = offset.min(self.text.len());
         let line = self.line_starts.partition_point(|&s| s <= offset).saturating_sub(1);
         let start = self.line_starts.get(line).copied().unwrap_or(0);
-        let column = self
-            .text
-            .get(start..offset)
-            .map_or(offset - start, |s| s.chars().count());
+        let column = self.text.get(start..offset).map_or(offset - start, |s| s.chars().count());
         format!("{}:{}", line + 1, column + 1)
     }
 
@@ -124,12 +114,7 @@ impl Dumper<'_> {
                 }
                 self.depth -= 1;
             }
-            StmtKind::For {
-                init,
-                test,
-                update,
-                body,
-            } => {
+            StmtKind::For { init, test, update, body } => {
                 let init = match init {
                     Some(ForInit::Var(d)) => format!("var {}", declarators(d, &mut fns)),
                     Some(ForInit::Expr(e)) => expr(e, &mut fns),
@@ -140,12 +125,7 @@ impl Dumper<'_> {
                 self.line(at, &format!("for {init}; {test}; {update}"), fns);
                 self.block(std::slice::from_ref(body));
             }
-            StmtKind::ForIn {
-                declared,
-                name,
-                object,
-                body,
-            } => {
+            StmtKind::ForIn { declared, name, object, body } => {
                 let var = if *declared { "var " } else { "" };
                 let text = format!("for {var}{} in {}", name.name, expr(object, &mut fns));
                 self.line(at, &text, fns);
@@ -174,11 +154,7 @@ impl Dumper<'_> {
                 let text = format!("throw {}", expr(v, &mut fns));
                 self.line(at, &text, fns);
             }
-            StmtKind::Try {
-                block,
-                handler,
-                finalizer,
-            } => {
+            StmtKind::Try { block, handler, finalizer } => {
                 self.line(at, "try", fns);
                 self.block(block);
                 if let Some(h) = handler {
@@ -259,17 +235,8 @@ fn expr<'a>(e: &'a Expr, fns: &mut Vec<&'a Function>) -> String {
         ExprKind::Assign { op, target, value } => {
             format!("({} {} {})", op.as_str(), expr(target, fns), expr(value, fns))
         }
-        ExprKind::Conditional {
-            test,
-            consequent,
-            alternate,
-        } => {
-            format!(
-                "(? {} {} {})",
-                expr(test, fns),
-                expr(consequent, fns),
-                expr(alternate, fns)
-            )
+        ExprKind::Conditional { test, consequent, alternate } => {
+            format!("(? {} {} {})", expr(test, fns), expr(consequent, fns), expr(alternate, fns))
         }
         ExprKind::Sequence(items) => format!("(,{})", list(items, fns)),
         ExprKind::Error => "<error>".to_string(),

@@ -21,14 +21,7 @@ pub type Tokens<'src> = Vec<(Token<'src>, SimpleSpan)>;
 
 /// Splits post text into tokens. Problems are reported and lexing goes on.
 pub fn lex(text: &str, file: FileId) -> (Tokens<'_>, Vec<Diagnostic>) {
-    let mut lexer = Lexer {
-        text,
-        pos: 0,
-        file,
-        tokens: Vec::new(),
-        diagnostics: Vec::new(),
-        newline: false,
-    };
+    let mut lexer = Lexer { text, pos: 0, file, tokens: Vec::new(), diagnostics: Vec::new(), newline: false };
     lexer.run();
     (lexer.tokens, lexer.diagnostics)
 }
@@ -71,15 +64,11 @@ impl<'src> Lexer<'src> {
     }
 
     fn error(&mut self, code: &'static str, start: usize, end: usize, message: impl Into<String>, label: &'static str) {
-        self.diagnostics
-            .push(d::lexical(code, self.file, start, end, message, label));
+        self.diagnostics.push(d::lexical(code, self.file, start, end, message, label));
     }
 
     fn push(&mut self, kind: TokenKind<'src>, start: usize) {
-        let token = Token {
-            kind,
-            newline_before: self.newline,
-        };
+        let token = Token { kind, newline_before: self.newline };
         self.tokens.push((token, SimpleSpan::from(start..self.pos)));
         self.newline = false;
     }
@@ -114,13 +103,7 @@ impl<'src> Lexer<'src> {
                         c as u32
                     ),
                 };
-                self.error(
-                    d::UNEXPECTED_CHARACTER,
-                    start,
-                    self.pos,
-                    message,
-                    "unexpected character",
-                );
+                self.error(d::UNEXPECTED_CHARACTER, start, self.pos, message, "unexpected character");
             }
         }
     }
@@ -164,10 +147,7 @@ impl<'src> Lexer<'src> {
     }
 
     fn ident(&mut self, start: usize) {
-        let len = self
-            .rest()
-            .find(|c: char| !is_ident_part(c))
-            .unwrap_or(self.rest().len());
+        let len = self.rest().find(|c: char| !is_ident_part(c)).unwrap_or(self.rest().len());
         self.pos += len;
         let word = &self.text[start..self.pos];
         if self.peek() == Some('\\') {
@@ -202,18 +182,14 @@ impl<'src> Lexer<'src> {
                         "no digits",
                     );
                 }
-                digits
-                    .chars()
-                    .fold(0.0, |v, c| v * 16.0 + f64::from(c.to_digit(16).unwrap_or(0)))
+                digits.chars().fold(0.0, |v, c| v * 16.0 + f64::from(c.to_digit(16).unwrap_or(0)))
             }
             Some("0b") | Some("0o") => {
                 self.pos += 2;
                 let radix = if lower.as_deref() == Some("0b") { 2 } else { 8 };
                 let digits = self.take_while(|c| c.is_ascii_digit());
                 self.unsupported(Construct::BinaryOctal, start);
-                digits.chars().fold(0.0, |v, c| {
-                    v * f64::from(radix) + f64::from(c.to_digit(10).unwrap_or(0))
-                })
+                digits.chars().fold(0.0, |v, c| v * f64::from(radix) + f64::from(c.to_digit(10).unwrap_or(0)))
             }
             _ if rest.starts_with('0') && rest[1..].starts_with(|c: char| c.is_ascii_digit()) => {
                 let digits = self.take_while(|c| c.is_ascii_digit());
@@ -317,10 +293,7 @@ impl<'src> Lexer<'src> {
             );
         }
         for problem in strings::decode(body).1 {
-            let (s, e) = (
-                body_start + problem.range.start,
-                body_start + problem.range.end.min(body.len()),
-            );
+            let (s, e) = (body_start + problem.range.start, body_start + problem.range.end.min(body.len()));
             self.error(d::BAD_ESCAPE, s, e, problem.message, "bad escape");
         }
         self.push(TokenKind::String(body), start);
@@ -375,14 +348,12 @@ impl<'src> Lexer<'src> {
             | TokenKind::String(_)
             | TokenKind::Regex { .. }
             | TokenKind::Template(_) => false,
-            TokenKind::Keyword(k) => !matches!(
-                k,
-                Keyword::This | Keyword::Null | Keyword::True | Keyword::False | Keyword::Super
-            ),
-            TokenKind::Punct(p) => !matches!(
-                p,
-                Punct::RParen | Punct::RBracket | Punct::RBrace | Punct::PlusPlus | Punct::MinusMinus
-            ),
+            TokenKind::Keyword(k) => {
+                !matches!(k, Keyword::This | Keyword::Null | Keyword::True | Keyword::False | Keyword::Super)
+            }
+            TokenKind::Punct(p) => {
+                !matches!(p, Punct::RParen | Punct::RBracket | Punct::RBrace | Punct::PlusPlus | Punct::MinusMinus)
+            }
         }
     }
 
@@ -453,10 +424,7 @@ mod tests {
     fn regex_or_division() {
         assert!(matches!(
             kinds("s.replace(/a\\/b[/]/g, \"\")")[4],
-            TokenKind::Regex {
-                pattern: "a\\/b[/]",
-                flags: "g"
-            }
+            TokenKind::Regex { pattern: "a\\/b[/]", flags: "g" }
         ));
         assert_eq!(kinds("a / b / c")[1], TokenKind::Punct(Punct::Slash));
         assert_eq!(kinds("(a) / 2")[3], TokenKind::Punct(Punct::Slash));
@@ -466,10 +434,7 @@ mod tests {
 
     #[test]
     fn numbers() {
-        assert_eq!(
-            kinds("0x1F 1.5e3 .25 7.")[..4],
-            [31.0, 1500.0, 0.25, 7.0].map(TokenKind::Number)
-        );
+        assert_eq!(kinds("0x1F 1.5e3 .25 7.")[..4], [31.0, 1500.0, 0.25, 7.0].map(TokenKind::Number));
     }
 
     #[test]

@@ -56,10 +56,7 @@ pub fn parse(text: &str, file: FileId) -> (Program, Vec<Diagnostic>) {
     let brackets = parser::match_brackets(&tokens);
     let (program, errors, too_deep) = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone());
     diagnostics.extend(parser::report::diagnostics(errors, file, &brackets, too_deep));
-    let program = program.unwrap_or_else(|| Program {
-        body: Vec::new(),
-        span: Span::new(file, 0, text.len()),
-    });
+    let program = program.unwrap_or_else(|| Program { body: Vec::new(), span: Span::new(file, 0, text.len()) });
     diagnostics.extend(validate::check(&program));
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     diagnostics.dedup_by(|a, b| a.code == b.code && a.primary_span() == b.primary_span() && a.message == b.message);

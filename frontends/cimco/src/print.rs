@@ -12,10 +12,7 @@ use crate::strings::quote;
 
 /// The program as JavaScript text.
 pub fn to_js(program: &Program) -> String {
-    let mut p = Printer {
-        out: String::new(),
-        indent: 0,
-    };
+    let mut p = Printer { out: String::new(), indent: 0 };
     for s in &program.body {
         p.stmt(s);
     }
@@ -24,10 +21,7 @@ pub fn to_js(program: &Program) -> String {
 
 /// One expression as JavaScript text.
 pub fn expr_to_js(e: &Expr) -> String {
-    let mut p = Printer {
-        out: String::new(),
-        indent: 0,
-    };
+    let mut p = Printer { out: String::new(), indent: 0 };
     p.expr(e, 0);
     p.out
 }
@@ -96,10 +90,7 @@ impl Printer {
     }
 
     fn text(&mut self, e: &Expr, min: u8) -> String {
-        let mut p = Printer {
-            out: String::new(),
-            indent: self.indent,
-        };
+        let mut p = Printer { out: String::new(), indent: self.indent };
         p.expr(e, min);
         p.out
     }
@@ -157,34 +148,18 @@ impl Printer {
                 }
                 self.line("}");
             }
-            StmtKind::For {
-                init,
-                test,
-                update,
-                body,
-            } => {
+            StmtKind::For { init, test, update, body } => {
                 let init = match init {
                     Some(ForInit::Var(d)) => format!("var {}", self.declarators(d)),
                     Some(ForInit::Expr(e)) => self.text(e, 0),
                     None => String::new(),
                 };
-                let test = test
-                    .as_ref()
-                    .map(|t| format!(" {}", self.text(t, 0)))
-                    .unwrap_or_default();
-                let update = update
-                    .as_ref()
-                    .map(|u| format!(" {}", self.text(u, 0)))
-                    .unwrap_or_default();
+                let test = test.as_ref().map(|t| format!(" {}", self.text(t, 0))).unwrap_or_default();
+                let update = update.as_ref().map(|u| format!(" {}", self.text(u, 0))).unwrap_or_default();
                 self.line(&format!("for ({init};{test};{update})"));
                 self.nested(body);
             }
-            StmtKind::ForIn {
-                declared,
-                name,
-                object,
-                body,
-            } => {
+            StmtKind::ForIn { declared, name, object, body } => {
                 let var = if *declared { "var " } else { "" };
                 let object = self.text(object, 0);
                 self.line(&format!("for ({var}{} in {object})", name.name));
@@ -212,11 +187,7 @@ impl Printer {
                 let e = self.text(e, 0);
                 self.line(&format!("throw {e};"));
             }
-            StmtKind::Try {
-                block,
-                handler,
-                finalizer,
-            } => {
+            StmtKind::Try { block, handler, finalizer } => {
                 self.line("try {");
                 self.body(block);
                 if let Some(h) = handler {
@@ -323,10 +294,7 @@ impl Printer {
             ExprKind::Function(f) => {
                 let head = self.function_head(f);
                 let _ = writeln!(self.out, "{head} {{");
-                let mut inner = Printer {
-                    out: String::new(),
-                    indent: self.indent + 1,
-                };
+                let mut inner = Printer { out: String::new(), indent: self.indent + 1 };
                 for s in &f.body {
                     inner.stmt(s);
                 }
@@ -370,11 +338,7 @@ impl Printer {
                 }
                 self.out.push_str(&text);
             }
-            ExprKind::Update {
-                op,
-                prefix: true,
-                target,
-            } => {
+            ExprKind::Update { op, prefix: true, target } => {
                 let text = self.text(target, own);
                 self.out.push_str(op.as_str());
                 if text.starts_with(['+', '-']) {
@@ -382,11 +346,7 @@ impl Printer {
                 }
                 self.out.push_str(&text);
             }
-            ExprKind::Update {
-                op,
-                prefix: false,
-                target,
-            } => {
+            ExprKind::Update { op, prefix: false, target } => {
                 self.expr(target, 16);
                 self.out.push_str(op.as_str());
             }
@@ -397,11 +357,7 @@ impl Printer {
                 let _ = write!(self.out, " {} ", op.as_str());
                 self.expr(value, 1);
             }
-            ExprKind::Conditional {
-                test,
-                consequent,
-                alternate,
-            } => {
+            ExprKind::Conditional { test, consequent, alternate } => {
                 self.expr(test, 3);
                 self.out.push_str(" ? ");
                 self.expr(consequent, 1);

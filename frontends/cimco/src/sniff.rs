@@ -65,9 +65,7 @@ impl<'a> Iterator for Words<'a> {
         let is_word = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '$';
         let rest = &self.text[self.pos..];
         let start = self.pos + rest.find(is_word)?;
-        let len = self.text[start..]
-            .find(|c: char| !is_word(c))
-            .unwrap_or(self.text.len() - start);
+        let len = self.text[start..].find(|c: char| !is_word(c)).unwrap_or(self.text.len() - start);
         self.pos = start + len;
         Some((&self.text[start..start + len], &self.text[start + len..]))
     }
@@ -87,9 +85,7 @@ mod tests {
 
     #[test]
     fn rejects_other_dialects() {
-        assert!(!looks_like_cimco(
-            b"+ Vectric post\nPOST_NAME = \"x\"\nbegin HEADER\n\"G21\"\n"
-        ));
+        assert!(!looks_like_cimco(b"+ Vectric post\nPOST_NAME = \"x\"\nbegin HEADER\n\"G21\"\n"));
         assert!(!looks_like_cimco(b"Sub GOTO\n  Out \"<N><X><Y>\"\nEnd Sub\n"));
         assert!(!looks_like_cimco(b"function foo() { return onLinear; }"));
         assert!(!looks_like_cimco(&[0xff, 0xfe, 0x00]));

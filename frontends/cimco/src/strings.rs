@@ -26,10 +26,8 @@ pub(crate) fn decode(body: &str) -> (String, Vec<EscapeProblem>) {
             continue;
         }
         let Some((_, e)) = chars.next() else {
-            problems.push(EscapeProblem {
-                range: at..at + 1,
-                message: "a `\\` at the end of the text escapes nothing",
-            });
+            problems
+                .push(EscapeProblem { range: at..at + 1, message: "a `\\` at the end of the text escapes nothing" });
             break;
         };
         if e != 'u' {

@@ -24,10 +24,7 @@ impl PartialEq for Token<'_> {
 
 impl<'src> Token<'src> {
     pub fn new(kind: TokenKind<'src>) -> Token<'src> {
-        Token {
-            kind,
-            newline_before: false,
-        }
+        Token { kind, newline_before: false }
     }
 
     pub fn punct(p: Punct) -> Token<'static> {

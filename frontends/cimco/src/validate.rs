@@ -9,14 +9,8 @@ use crate::diagnostics as d;
 
 /// The problems in `program`.
 pub fn check(program: &Program) -> Vec<Diagnostic> {
-    let mut v = Validator {
-        diagnostics: Vec::new(),
-    };
-    let top = Context {
-        in_function: false,
-        in_loop: false,
-        in_switch: false,
-    };
+    let mut v = Validator { diagnostics: Vec::new() };
+    let top = Context { in_function: false, in_loop: false, in_switch: false };
     for s in &program.body {
         v.stmt(s, top);
     }
@@ -36,11 +30,7 @@ struct Validator {
 
 impl Validator {
     fn function(&mut self, f: &Function) {
-        let cx = Context {
-            in_function: true,
-            in_loop: false,
-            in_switch: false,
-        };
+        let cx = Context { in_function: true, in_loop: false, in_switch: false };
         for s in &f.body {
             self.stmt(s, cx);
         }
@@ -79,12 +69,7 @@ impl Validator {
                     self.stmts(&c.body, inner);
                 }
             }
-            StmtKind::For {
-                init,
-                test,
-                update,
-                body,
-            } => {
+            StmtKind::For { init, test, update, body } => {
                 match init {
                     Some(ForInit::Var(decls)) => self.declarators(decls),
                     Some(ForInit::Expr(e)) => self.expr(e),
@@ -106,11 +91,8 @@ impl Validator {
             StmtKind::Break => {
                 if !cx.in_loop && !cx.in_switch {
                     self.diagnostics.push(
-                        Diagnostic::error(
-                            d::JUMP_OUTSIDE_LOOP,
-                            "`break` is only allowed inside a loop or a `switch`",
-                        )
-                        .at(s.span, "nothing to break out of"),
+                        Diagnostic::error(d::JUMP_OUTSIDE_LOOP, "`break` is only allowed inside a loop or a `switch`")
+                            .at(s.span, "nothing to break out of"),
                     );
                 }
             }
@@ -134,11 +116,7 @@ impl Validator {
                     );
                 }
             }
-            StmtKind::Try {
-                block,
-                handler,
-                finalizer,
-            } => {
+            StmtKind::Try { block, handler, finalizer } => {
                 self.stmts(block, cx);
                 if let Some(h) = handler {
                     self.stmts(&h.body, cx);
@@ -170,9 +148,7 @@ impl Validator {
             ExprKind::Index { object: a, index: b }
             | ExprKind::Binary { left: a, right: b, .. }
             | ExprKind::Logical { left: a, right: b, .. }
-            | ExprKind::Assign {
-                target: a, value: b, ..
-            } => {
+            | ExprKind::Assign { target: a, value: b, .. } => {
                 self.expr(a);
                 self.expr(b);
             }
@@ -180,11 +156,7 @@ impl Validator {
                 self.expr(callee);
                 args.iter().for_each(|a| self.expr(a));
             }
-            ExprKind::Conditional {
-                test,
-                consequent,
-                alternate,
-            } => {
+            ExprKind::Conditional { test, consequent, alternate } => {
                 self.expr(test);
                 self.expr(consequent);
                 self.expr(alternate);

@@ -54,10 +54,7 @@ fn restricted_productions() {
 fn statement_before_closing_brace_and_end() {
     assert_eq!(tree("function f() { return 1 }"), "function f()\n  return 1");
     assert_eq!(tree("x = 1"), "(= x 1)");
-    assert_eq!(
-        tree("do x++\nwhile (x < 3) y()"),
-        "do-while (< x 3)\n  (post++ x)\n(call y)"
-    );
+    assert_eq!(tree("do x++\nwhile (x < 3) y()"), "do-while (< x 3)\n  (post++ x)\n(call y)");
 }
 
 #[test]
@@ -69,10 +66,7 @@ fn missing_semicolon_on_one_line() {
 #[test]
 fn regex_and_division() {
     assert_eq!(tree("x = a / b / c"), "(= x (/ (/ a b) c))");
-    assert_eq!(
-        tree("x = s.replace(/ab+/g, \"\")"),
-        "(= x (call (. s replace) /ab+/g \"\"))"
-    );
+    assert_eq!(tree("x = s.replace(/ab+/g, \"\")"), "(= x (call (. s replace) /ab+/g \"\"))");
     assert_eq!(tree("x = (a) / 2"), "(= x (/ a 2))");
     assert_eq!(tree("x = [/a/, /b/i]"), "(= x [/a/ /b/i])");
     assert_eq!(tree("if (/x/.test(s)) y()"), "if (call (. /x/ test) s)\n  (call y)");
@@ -106,10 +100,7 @@ fn if_else_chains_are_flat() {
         "if a\n  (call x)\nelse if b\n  (call y)\nelse\n  (call z)"
     );
     // A dangling `else` belongs to the nearest `if`.
-    assert_eq!(
-        tree("if (a) if (b) x(); else y()"),
-        "if a\n  if b\n    (call x)\n  else\n    (call y)"
-    );
+    assert_eq!(tree("if (a) if (b) x(); else y()"), "if a\n  if b\n    (call x)\n  else\n    (call y)");
 }
 
 #[test]

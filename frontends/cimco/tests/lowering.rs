@@ -69,10 +69,24 @@ fn plain_functions_are_native_and_object_users_are_scripts() {
 fn entry_points_occupy_their_sections() {
     let (post, _) = compile(MILL);
     let s = sections(&post);
-    for want in [Section::Header, Section::RapidMove, Section::FeedMove, Section::PlungeMove, Section::CwArcMove, Section::CcwArcMove, Section::CwHelicalArcMove] {
+    for want in [
+        Section::Header,
+        Section::RapidMove,
+        Section::FeedMove,
+        Section::PlungeMove,
+        Section::CwArcMove,
+        Section::CcwArcMove,
+        Section::CwHelicalArcMove,
+    ] {
         assert!(s.contains(&want), "{want:?} missing from {s:?}");
     }
-    for absent in [Section::FirstFeedMove, Section::RetractMove, Section::InitialRapidMove, Section::DrillHeader, Section::CutterComp] {
+    for absent in [
+        Section::FirstFeedMove,
+        Section::RetractMove,
+        Section::InitialRapidMove,
+        Section::DrillHeader,
+        Section::CutterComp,
+    ] {
         assert!(!s.contains(&absent), "{absent:?} should be left to the fallbacks");
     }
     assert!(!post.options.lathe);

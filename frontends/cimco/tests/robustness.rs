@@ -43,10 +43,7 @@ fn deep_and_long_inputs_are_refused_once() {
         ("if chain", format!("{}x();", "if (a) ".repeat(n))),
         ("conditionals", format!("x = {}c;", "a ? b : ".repeat(n))),
         ("assignments", format!("x{};", " = x".repeat(n))),
-        (
-            "functions",
-            format!("x = {}1{};", "function(){ return ".repeat(n / 10), "}".repeat(n / 10)),
-        ),
+        ("functions", format!("x = {}1{};", "function(){ return ".repeat(n / 10), "}".repeat(n / 10))),
     ];
     for (name, text) in cases {
         let start = Instant::now();

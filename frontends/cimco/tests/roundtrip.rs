@@ -12,10 +12,7 @@ use postc_ir::FileId;
 /// differently laid-out text compare equal.
 fn shape(text: &str) -> String {
     let (program, diagnostics) = parse(text, FileId(0));
-    assert!(
-        diagnostics.is_empty(),
-        "printed text did not parse:\n{text}\n{diagnostics:#?}"
-    );
+    assert!(diagnostics.is_empty(), "printed text did not parse:\n{text}\n{diagnostics:#?}");
     dump(&program, text)
         .lines()
         .map(|l| {
@@ -37,12 +34,7 @@ fn valid_fixtures_print_back() {
         let printed = to_js(&program);
         let (reparsed, _) = parse(&printed, FileId(0));
         assert_eq!(to_js(&reparsed), printed, "{}: printing is not stable", path.display());
-        assert_eq!(
-            shape(&printed),
-            shape(&text),
-            "{}: the printed tree differs",
-            path.display()
-        );
+        assert_eq!(shape(&printed), shape(&text), "{}: the printed tree differs", path.display());
         count += 1;
     }
     assert!(count >= 2);

@@ -37,10 +37,7 @@ fn snapshot(kind: &str, path: &Path) -> (String, Vec<String>) {
     let (program, diagnostics) = parse(&text, file);
     let codes = diagnostics.iter().map(|d| d.code.to_string()).collect();
     let rendered = sources.render(&diagnostics, false);
-    (
-        format!("--- tree\n{}--- diagnostics\n{rendered}", dump(&program, &text)),
-        codes,
-    )
+    (format!("--- tree\n{}--- diagnostics\n{rendered}", dump(&program, &text)), codes)
 }
 
 /// The codes named on the first line of an invalid fixture.
@@ -108,10 +105,8 @@ fn fixtures_match_snapshots() {
             }
             match fs::read_to_string(&snap) {
                 Ok(expected) if expected == actual => {}
-                Ok(expected) => failures.push(format!(
-                    "{name}: differs from its snapshot at {}",
-                    first_difference(&expected, &actual)
-                )),
+                Ok(expected) => failures
+                    .push(format!("{name}: differs from its snapshot at {}", first_difference(&expected, &actual))),
                 Err(_) => failures.push(format!("{name}: no snapshot (run with POSTC_BLESS=1)")),
             }
         }
@@ -123,10 +118,5 @@ fn fixtures_match_snapshots() {
             failures.push(format!("{}: a snapshot without a fixture", path.display()));
         }
     }
-    assert!(
-        failures.is_empty(),
-        "{} snapshot failures:\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    assert!(failures.is_empty(), "{} snapshot failures:\n{}", failures.len(), failures.join("\n"));
 }

@@ -117,7 +117,13 @@ pub fn split(line: &str, base: usize, file: FileId) -> Result<Vec<Field>, Diagno
                     .help("put the whole value inside the quotes"));
             }
         }
-        fields.push(Field { name, value, quoted, value_span: span(value_start, value_end), span: span(start, value_end) });
+        fields.push(Field {
+            name,
+            value,
+            quoted,
+            value_span: span(value_start, value_end),
+            span: span(start, value_end),
+        });
         if i >= bytes.len() {
             break;
         }
@@ -176,7 +182,10 @@ mod tests {
             (Some("Note".into()), "x=1".into(), true),
         ];
         assert_eq!(got, want);
-        assert_eq!(cells("Rapid,,1"), vec![(None, "Rapid".into(), false), (None, "".into(), false), (None, "1".into(), false)]);
+        assert_eq!(
+            cells("Rapid,,1"),
+            vec![(None, "Rapid".into(), false), (None, "".into(), false), (None, "1".into(), false)]
+        );
         assert_eq!(cells("a b=1"), vec![(None, "a b=1".into(), false)]);
     }
 

@@ -132,7 +132,10 @@ fn row(
     if !sigs.iter().any(|s| s.name.eq_ignore_ascii_case(name)) && subs.iter().any(|s| s.eq_ignore_ascii_case(name)) {
         diags.push(
             Diagnostic::error("PT003", format!("`{name}` is not a probe-cycle Sub"))
-                .at(head.value_span, "it has no #Init, #Rapid, #Move, #Approach, #Cycle, #Save, #Retract or #End comment")
+                .at(
+                    head.value_span,
+                    "it has no #Init, #Rapid, #Move, #Approach, #Cycle, #Save, #Retract or #End comment",
+                )
                 .help(format!("the post's probe-cycle Subs are: {}", listing())),
         );
         return None;
@@ -150,7 +153,8 @@ fn row(
     let sig = &sigs[index];
     let keyword = sig.keyword?;
     let params = &sig.params;
-    let mut row = Row { sig: index, keyword, vars: Vec::new(), given: vec![false; params.len()], cells: Vec::new(), span, end };
+    let mut row =
+        Row { sig: index, keyword, vars: Vec::new(), given: vec![false; params.len()], cells: Vec::new(), span, end };
     let mut named_seen = false;
     let mut positional = 0;
     for field in &fields[1..] {
@@ -198,8 +202,7 @@ fn row(
                 };
                 if row.given[k] {
                     diags.push(
-                        Diagnostic::error("PT007", format!("`{name}` is given twice"))
-                            .at(field.span, "second value"),
+                        Diagnostic::error("PT007", format!("`{name}` is given twice")).at(field.span, "second value"),
                     );
                     continue;
                 }
@@ -230,7 +233,10 @@ fn value(field: &Field, param: &str) -> Result<Option<CallValue>, Diagnostic> {
         return Ok(Some(CallValue::Text(field.value.clone())));
     }
     let v = field.value.as_str();
-    if v.is_empty() || v.eq_ignore_ascii_case(param) || v.strip_prefix('!').is_some_and(|n| n.eq_ignore_ascii_case(param)) {
+    if v.is_empty()
+        || v.eq_ignore_ascii_case(param)
+        || v.strip_prefix('!').is_some_and(|n| n.eq_ignore_ascii_case(param))
+    {
         return Ok(None);
     }
     let numeric = v.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.'));
@@ -238,7 +244,9 @@ fn value(field: &Field, param: &str) -> Result<Option<CallValue>, Diagnostic> {
         Ok(n) if numeric && n.is_finite() => Ok(Some(CallValue::Number(n))),
         _ => Err(Diagnostic::error("PT009", format!("`{v}` is not a number"))
             .at(field.value_span, format!("value of `{param}`"))
-            .help(format!("quote text values (\"{v}\"); leave the cell empty, or write `{param}`, to keep the register's value"))),
+            .help(format!(
+                "quote text values (\"{v}\"); leave the cell empty, or write `{param}`, to keep the register's value"
+            ))),
     }
 }
 
@@ -298,7 +306,9 @@ fn sequence(rows: &[Row], sigs: &[SubSignature], file: FileId, diags: &mut Vec<D
             }
             SubKeyword::Approach => {}
             SubKeyword::Save => diags.push(order("PT013", r, "a #Save row must come right after a #Cycle row")),
-            SubKeyword::Retract => diags.push(order("PT014", r, "a #Retract row must come after a #Cycle or #Save row")),
+            SubKeyword::Retract => {
+                diags.push(order("PT014", r, "a #Retract row must come after a #Cycle or #Save row"))
+            }
             SubKeyword::Cycle => {
                 let approach_row = (i >= 2).then(|| &rows[i - 2]).filter(|p| p.keyword == SubKeyword::Approach);
                 match (approach_row, find(SubKeyword::Approach)) {
@@ -338,9 +348,9 @@ fn sequence(rows: &[Row], sigs: &[SubSignature], file: FileId, diags: &mut Vec<D
 }
 
 fn order(code: &'static str, r: &Row, message: &str) -> Diagnostic {
-    Diagnostic::error(code, message.to_string())
-        .at(r.span, "this row")
-        .help("rows run: #Init, then #Rapid/#Move rows and features (#Approach, a #Cycle Sub, #Save, #Retract), then #End")
+    Diagnostic::error(code, message.to_string()).at(r.span, "this row").help(
+        "rows run: #Init, then #Rapid/#Move rows and features (#Approach, a #Cycle Sub, #Save, #Retract), then #End",
+    )
 }
 
 /// An empty table for a post: a comment header, then one row per probe

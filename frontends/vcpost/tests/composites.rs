@@ -5,9 +5,9 @@
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
+use postc_front_vcpost::compile;
 use postc_front_vcpost::composites::calls::{LayingCall, LinkHeader, Modals, PacketPoint, ProbingCall};
 use postc_front_vcpost::composites::{self, CompositesReader, Syntax};
-use postc_front_vcpost::compile;
 use postc_ir::{CallSource, CallValue, Diagnostic, FileId, Post, SourceMap, SubCall};
 use proptest::prelude::*;
 
@@ -56,9 +56,22 @@ fn json(call: &LayingCall) -> String {
 
 /// A whole small ply as JSON lines.
 fn ply() -> Vec<String> {
-    let length = |n: f64| json(&LayingCall::Length(postc_front_vcpost::composites::calls::Length { TowArea: 1.0, TowLen: 2.0, TowNum: n }));
+    let length = |n: f64| {
+        json(&LayingCall::Length(postc_front_vcpost::composites::calls::Length {
+            TowArea: 1.0,
+            TowLen: 2.0,
+            TowNum: n,
+        }))
+    };
     let link = |t: f64| json(&LayingCall::LinkHeader(LinkHeader { LinkType: t, Rotation: 0.0, TowWidth: None }));
-    let goto = PacketPoint { AddCutA: "0110".into(), AddCutB: "0110".into(), AddCutI: 6.0, AddCutJ: 6.0, TowsInPacket: 4.0, ..Default::default() };
+    let goto = PacketPoint {
+        AddCutA: "0110".into(),
+        AddCutB: "0110".into(),
+        AddCutI: 6.0,
+        AddCutJ: 6.0,
+        TowsInPacket: 4.0,
+        ..Default::default()
+    };
     vec![
         r#"{"VcpFile":{"kind":"Laying"}}"#.to_string(),
         json(&LayingCall::Modals(Box::<Modals>::default())),
@@ -113,7 +126,10 @@ fn routines_the_post_leaves_out() {
     let (calls, diagnostics) = read(&ply().join("\n"), &post, Vec::new());
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
     let subs: Vec<&str> = calls.iter().map(|c| c.sub.as_str()).collect();
-    assert!(subs.contains(&"TraverseHeader") && !subs.contains(&"TraverseTo") && !subs.contains(&"TraverseTrailer"), "{subs:?}");
+    assert!(
+        subs.contains(&"TraverseHeader") && !subs.contains(&"TraverseTo") && !subs.contains(&"TraverseTrailer"),
+        "{subs:?}"
+    );
     let modals = calls.iter().find(|c| c.sub == "Modals").unwrap();
     assert_eq!(modals.vars.len(), 70, "every Modals variable of seed 003");
 }
@@ -151,7 +167,10 @@ fn every_problem_is_reported_at_its_line() {
     for (text, code, line) in &cases {
         let (_, diagnostics) = read(text, &post, Vec::new());
         let found = lines_of(&diagnostics, text);
-        assert!(found.iter().any(|(c, l)| c == code && l == line), "expected {code} at line {line}, got {found:?}\n{text}");
+        assert!(
+            found.iter().any(|(c, l)| c == code && l == line),
+            "expected {code} at line {line}, got {found:?}\n{text}"
+        );
     }
 }
 

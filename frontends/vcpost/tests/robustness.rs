@@ -213,7 +213,9 @@ fn pathological_inputs_are_refused_not_overflowed() {
     for (i, case) in cases.into_iter().enumerate() {
         run_big_stack(move || {
             let elapsed = compile_checked(case.as_bytes());
-            if std::env::var_os("VCPOST_TIMING").is_some() { eprintln!("case {i}: {elapsed:?}"); }
+            if std::env::var_os("VCPOST_TIMING").is_some() {
+                eprintln!("case {i}: {elapsed:?}");
+            }
             assert!(elapsed < Duration::from_secs(20), "case {i} took {elapsed:?}");
         });
     }

@@ -80,7 +80,18 @@ fn calls_follow_the_seed_order() {
     assert!(diagnostics.iter().all(|d| !d.is_error()), "{diagnostics:?}");
     assert_eq!(
         names(&calls),
-        ["Initialize", "Rapid", "Approach", "WallThick", "Store", "Retract", "Approach", "Bore", "Retract", "Terminate"]
+        [
+            "Initialize",
+            "Rapid",
+            "Approach",
+            "WallThick",
+            "Store",
+            "Retract",
+            "Approach",
+            "Bore",
+            "Retract",
+            "Terminate"
+        ]
     );
     assert_eq!(calls[0].vars, vec![("Clearance".to_string(), CallValue::Number(5.0))]);
     assert_eq!(calls[3].vars[2], ("Width".to_string(), CallValue::Number(12.5)));

@@ -39,8 +39,7 @@ impl Encoding {
                 let mut out = Vec::with_capacity(text.len());
                 for c in text.chars() {
                     let mut buf = [0u8; 4];
-                    let (bytes, _, unmappable) =
-                        encoding_rs::WINDOWS_1252.encode(c.encode_utf8(&mut buf));
+                    let (bytes, _, unmappable) = encoding_rs::WINDOWS_1252.encode(c.encode_utf8(&mut buf));
                     if unmappable {
                         out.push(b'?');
                     } else {

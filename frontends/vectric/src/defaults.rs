@@ -57,11 +57,7 @@ pub struct DefaultFormat {
 /// The default of a quantity (every quantity has one).
 pub fn default_format(quantity: Quantity) -> DefaultFormat {
     let (modality, prefix, format) = default_text(quantity);
-    DefaultFormat {
-        modality,
-        prefix,
-        format: parse_format(format).unwrap_or_default(),
-    }
+    DefaultFormat { modality, prefix, format: parse_format(format).unwrap_or_default() }
 }
 
 /// The default of a quantity as written: modality, prefix, format text.
@@ -100,18 +96,11 @@ fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
         | Q::XMax
         | Q::YMax
         | Q::ZMax => (Modality::Always, " ", "1.3"),
-        Q::A
-        | Q::B
-        | Q::C
-        | Q::InverseTimeFeed
-        | Q::ToolDiameter
-        | Q::WrapDiameter
-        | Q::XOrigin
-        | Q::YOrigin => (Modality::Always, "", "1.3"),
-        Q::DwellTime => (Modality::Always, "", "1.2"),
-        Q::Tool | Q::PreviousTool | Q::Power | Q::CompRegister | Q::LengthOffset => {
-            (Modality::Always, "", "1.0")
+        Q::A | Q::B | Q::C | Q::InverseTimeFeed | Q::ToolDiameter | Q::WrapDiameter | Q::XOrigin | Q::YOrigin => {
+            (Modality::Always, "", "1.3")
         }
+        Q::DwellTime => (Modality::Always, "", "1.2"),
+        Q::Tool | Q::PreviousTool | Q::Power | Q::CompRegister | Q::LengthOffset => (Modality::Always, "", "1.0"),
         _ => (Modality::Always, "", "1.0"),
     }
 }
@@ -123,15 +112,9 @@ mod tests {
     #[test]
     fn seed_defaults() {
         let x = default_format(Quantity::X);
-        assert_eq!(
-            (x.modality, x.prefix, x.format.decimals),
-            (Modality::Always, " ", 3)
-        );
+        assert_eq!((x.modality, x.prefix, x.format.decimals), (Modality::Always, " ", 3));
         let fc = default_format(Quantity::CutFeed);
-        assert_eq!(
-            (fc.modality, fc.prefix, fc.format.decimals),
-            (Modality::OnChange, "", 0)
-        );
+        assert_eq!((fc.modality, fc.prefix, fc.format.decimals), (Modality::OnChange, "", 0));
         let n = default_format(Quantity::BlockNumber);
         assert_eq!((n.prefix, n.format.decimals), ("", 0));
     }

@@ -21,29 +21,16 @@ pub fn looks_like_vectric(bytes: &[u8]) -> bool {
         let mut words = line.split_whitespace();
         let first = words.next().unwrap_or("");
         if first.eq_ignore_ascii_case("begin") {
-            if words
-                .next()
-                .is_some_and(|name| Section::from_name(name).is_some())
-            {
+            if words.next().is_some_and(|name| Section::from_name(name).is_some()) {
                 sections += 1;
             }
         } else if first.eq_ignore_ascii_case("var") {
-            let rest: String = line
-                .chars()
-                .skip(3)
-                .filter(|c| !c.is_whitespace())
-                .collect();
+            let rest: String = line.chars().skip(3).filter(|c| !c.is_whitespace()).collect();
             if rest.contains("=[") {
                 others += 1;
             }
-        } else if line
-            .get(..9)
-            .is_some_and(|head| head.eq_ignore_ascii_case("POST_NAME"))
-        {
-            if line
-                .get(9..)
-                .is_some_and(|rest| rest.trim_start().starts_with('='))
-            {
+        } else if line.get(..9).is_some_and(|head| head.eq_ignore_ascii_case("POST_NAME")) {
+            if line.get(9..).is_some_and(|rest| rest.trim_start().starts_with('=')) {
                 others += 1;
             }
         } else if line.starts_with('"') && line.trim_end().ends_with('"') {
@@ -61,19 +48,13 @@ mod tests {
     fn vectric_posts_are_recognised() {
         let post = b"POST_NAME = \"x\"\r\nbegin HEADER\r\n\"G21\"\r\n";
         assert!(looks_like_vectric(post));
-        assert!(looks_like_vectric(
-            b"var X_POSITION = [X|A|X|1.3]\nBEGIN feed_move\n"
-        ));
+        assert!(looks_like_vectric(b"var X_POSITION = [X|A|X|1.3]\nBEGIN feed_move\n"));
     }
 
     #[test]
     fn other_dialects_are_not() {
-        assert!(!looks_like_vectric(
-            b"function onOpen() {\n  writeBlock(\"G21\");\n}\n"
-        ));
-        assert!(!looks_like_vectric(
-            b"Sub GOTO\n  Out \"<N><X><Y>\"\nEnd Sub\n"
-        ));
+        assert!(!looks_like_vectric(b"function onOpen() {\n  writeBlock(\"G21\");\n}\n"));
+        assert!(!looks_like_vectric(b"Sub GOTO\n  Out \"<N><X><Y>\"\nEnd Sub\n"));
         assert!(!looks_like_vectric(&[0xff, 0xfe, 0x00, 0x01]));
         assert!(!looks_like_vectric(b""));
     }

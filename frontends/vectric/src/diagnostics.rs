@@ -128,17 +128,8 @@ mod tests {
                 Severity::Note => "note",
             };
             let row = format!("//! | {} | {severity}", code.id());
-            let found = doc.lines().any(|l| {
-                l.split_whitespace()
-                    .collect::<Vec<_>>()
-                    .join(" ")
-                    .starts_with(&row)
-            });
-            assert!(
-                found,
-                "doc table lacks a row for {} ({severity})",
-                code.id()
-            );
+            let found = doc.lines().any(|l| l.split_whitespace().collect::<Vec<_>>().join(" ").starts_with(&row));
+            assert!(found, "doc table lacks a row for {} ({severity})", code.id());
         }
     }
 }

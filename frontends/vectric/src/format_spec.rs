@@ -56,26 +56,10 @@ impl FormatSpec {
             decimals: self.decimals,
             width: self.width,
             width_of: WidthOf::Whole,
-            padding: if self.zero {
-                Padding::Zero
-            } else {
-                Padding::Space
-            },
-            justify: if self.left {
-                Justify::Left
-            } else {
-                Justify::Right
-            },
-            sign: if self.plus {
-                SignStyle::Always
-            } else {
-                SignStyle::Negative
-            },
-            point: if self.point {
-                PointStyle::Always
-            } else {
-                PointStyle::WithDecimals
-            },
+            padding: if self.zero { Padding::Zero } else { Padding::Space },
+            justify: if self.left { Justify::Left } else { Justify::Right },
+            sign: if self.plus { SignStyle::Always } else { SignStyle::Negative },
+            point: if self.point { PointStyle::Always } else { PointStyle::WithDecimals },
             trim_zeros: false,
             leading_zero: true,
             decimal_mark: self.separator,
@@ -104,9 +88,7 @@ enum Flag {
 type Extra<'a> = extra::Err<Rich<'a, char>>;
 
 fn number<'a>() -> impl Parser<'a, &'a str, (u32, SimpleSpan), Extra<'a>> + Clone {
-    text::digits(10)
-        .to_slice()
-        .map_with(|s: &str, e| (s.parse::<u32>().unwrap_or(u32::MAX), e.span()))
+    text::digits(10).to_slice().map_with(|s: &str, e| (s.parse::<u32>().unwrap_or(u32::MAX), e.span()))
 }
 
 fn spec_parser<'a>() -> impl Parser<'a, &'a str, FormatSpec, Extra<'a>> {
@@ -114,9 +96,7 @@ fn spec_parser<'a>() -> impl Parser<'a, &'a str, FormatSpec, Extra<'a>> {
         just('-').to(Flag::Left),
         just('+').to(Flag::Plus),
         just('#').to(Flag::Point),
-        just('0')
-            .then(one_of("0123456789-+#").rewind())
-            .to(Flag::Zero),
+        just('0').then(one_of("0123456789-+#").rewind()).to(Flag::Zero),
     ));
     let blanks = one_of(" \t").repeated();
     blanks
@@ -138,9 +118,7 @@ fn spec_parser<'a>() -> impl Parser<'a, &'a str, FormatSpec, Extra<'a>> {
             if let Some((w, span)) = width {
                 match u8::try_from(w) {
                     Ok(w) => spec.width = w,
-                    Err(_) => {
-                        emitter.emit(Rich::custom(span, "the width is at most 255 characters"))
-                    }
+                    Err(_) => emitter.emit(Rich::custom(span, "the width is at most 255 characters")),
                 }
             }
             match fraction {
@@ -149,10 +127,7 @@ fn spec_parser<'a>() -> impl Parser<'a, &'a str, FormatSpec, Extra<'a>> {
                     if let Some((d, span)) = decimals {
                         match u8::try_from(d) {
                             Ok(d) if u32::from(d) <= MAX_DECIMALS => spec.decimals = d,
-                            _ => emitter.emit(Rich::custom(
-                                span,
-                                format!("at most {MAX_DECIMALS} decimals"),
-                            )),
+                            _ => emitter.emit(Rich::custom(span, format!("at most {MAX_DECIMALS} decimals"))),
                         }
                     }
                 }
@@ -178,9 +153,7 @@ pub fn parse_format(text: &str) -> Result<FormatSpec, FormatError> {
     }
     if text.trim().is_empty() {
         return Err(FormatError {
-            message:
-                "the value format is empty: write a width, `.` or `,` and the decimals, like 1.3"
-                    .to_string(),
+            message: "the value format is empty: write a width, `.` or `,` and the decimals, like 1.3".to_string(),
             range: 0..text.len(),
         });
     }
@@ -201,10 +174,7 @@ mod tests {
     #[test]
     fn plain_width_and_decimals() {
         let s = spec("1.3");
-        assert_eq!(
-            (s.width, s.decimals, s.separator, s.has_separator),
-            (1, 3, '.', true)
-        );
+        assert_eq!((s.width, s.decimals, s.separator, s.has_separator), (1, 3, '.', true));
         assert!(!s.left && !s.plus && !s.zero && !s.point);
         assert_eq!(spec("1.0").decimals, 0);
     }
@@ -258,10 +228,7 @@ mod tests {
         assert_eq!(f.sign, SignStyle::Always);
         assert_eq!(f.padding, Padding::Zero);
         assert_eq!(f.point, PointStyle::Always);
-        assert_eq!(
-            (f.width, f.decimals, f.decimal_mark, f.multiplier),
-            (6, 2, ',', 0.5)
-        );
+        assert_eq!((f.width, f.decimals, f.decimal_mark, f.multiplier), (6, 2, ',', 0.5));
         assert_eq!(f.width_of, WidthOf::Whole);
         assert!(!f.trim_zeros && f.leading_zero);
     }

@@ -72,18 +72,12 @@ pub const VAR_NAMES: &[(&str, &str)] = &[
 
 /// The label a `VAR` name (case-insensitive) stands for.
 pub fn label_of_var_name(name: &str) -> Option<&'static str> {
-    VAR_NAMES
-        .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(name))
-        .map(|&(_, l)| l)
+    VAR_NAMES.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)).map(|&(_, l)| l)
 }
 
 /// The `VAR` name whose label is `label` (case-insensitive).
 pub fn var_name_of_label(label: &str) -> Option<&'static str> {
-    VAR_NAMES
-        .iter()
-        .find(|(_, l)| l.eq_ignore_ascii_case(label))
-        .map(|&(n, _)| n)
+    VAR_NAMES.iter().find(|(_, l)| l.eq_ignore_ascii_case(label)).map(|&(n, _)| n)
 }
 
 /// Global statements: what may stand before `=` outside any section.
@@ -140,18 +134,12 @@ const GLOBAL_NAMES: &[(&str, GlobalName)] = &[
 impl GlobalName {
     /// The statement a name (case-insensitive) stands for.
     pub fn from_name(name: &str) -> Option<GlobalName> {
-        GLOBAL_NAMES
-            .iter()
-            .find(|(n, _)| n.eq_ignore_ascii_case(name))
-            .map(|&(_, g)| g)
+        GLOBAL_NAMES.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)).map(|&(_, g)| g)
     }
 
     /// The usual spelling.
     pub fn name(self) -> &'static str {
-        GLOBAL_NAMES
-            .iter()
-            .find(|(_, g)| *g == self)
-            .map_or("?", |&(n, _)| n)
+        GLOBAL_NAMES.iter().find(|(_, g)| *g == self).map_or("?", |&(n, _)| n)
     }
 
     /// An example of the statement, for help lines.

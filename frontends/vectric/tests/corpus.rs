@@ -13,16 +13,9 @@ fn corpus_posts(dir: &Path) -> Vec<PathBuf> {
         if !folder.path().is_dir() {
             continue;
         }
-        for file in std::fs::read_dir(folder.path())
-            .into_iter()
-            .flatten()
-            .flatten()
-        {
+        for file in std::fs::read_dir(folder.path()).into_iter().flatten().flatten() {
             let path = file.path();
-            if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("pp"))
-            {
+            if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("pp")) {
                 posts.push(path);
             }
         }
@@ -46,35 +39,18 @@ fn every_corpus_post_compiles_without_errors() {
         let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let mut sources = SourceMap::new();
         let (post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
-        let errors: Vec<_> = diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .cloned()
-            .collect();
+        let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
         if !errors.is_empty() {
             failures.push_str(&sources.render(&errors, false));
         }
         for d in diagnostics.iter().filter(|d| !d.is_error()) {
-            *warnings
-                .entry(format!("{} {}", d.code, d.message))
-                .or_default() += 1;
+            *warnings.entry(format!("{} {}", d.code, d.message)).or_default() += 1;
         }
-        assert!(
-            !post.info.name.is_empty(),
-            "{}: no POST_NAME",
-            path.display()
-        );
+        assert!(!post.info.name.is_empty(), "{}: no POST_NAME", path.display());
         assert!(!post.handlers.is_empty(), "{}: no sections", path.display());
-        assert!(
-            postc_front_vectric::looks_like_vectric(&bytes),
-            "{}: not recognised as Vectric",
-            path.display()
-        );
+        assert!(postc_front_vectric::looks_like_vectric(&bytes), "{}: not recognised as Vectric", path.display());
     }
-    println!(
-        "{} corpus posts compiled without errors; warnings:",
-        posts.len()
-    );
+    println!("{} corpus posts compiled without errors; warnings:", posts.len());
     for (warning, count) in &warnings {
         println!("  {count:3} x {warning}");
     }
@@ -100,11 +76,7 @@ fn project_posts_compile_without_errors() {
         let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let mut sources = SourceMap::new();
         let (_, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
-        let errors: Vec<_> = diagnostics
-            .iter()
-            .filter(|d| d.is_error())
-            .cloned()
-            .collect();
+        let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
         assert!(errors.is_empty(), "{}", sources.render(&errors, false));
     }
 }

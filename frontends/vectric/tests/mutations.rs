@@ -56,10 +56,8 @@ fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
         (any::<Index>(), 0u8..8).prop_map(|(i, bit)| Mutation::Flip(i, bit)),
         (any::<Index>(), 1usize..40).prop_map(|(i, n)| Mutation::Delete(i, n)),
-        (any::<Index>(), prop::sample::select(INTERESTING))
-            .prop_map(|(i, b)| Mutation::Insert(i, b.to_vec())),
-        (any::<Index>(), prop::collection::vec(any::<u8>(), 1..8))
-            .prop_map(|(i, b)| Mutation::Insert(i, b)),
+        (any::<Index>(), prop::sample::select(INTERESTING)).prop_map(|(i, b)| Mutation::Insert(i, b.to_vec())),
+        (any::<Index>(), prop::collection::vec(any::<u8>(), 1..8)).prop_map(|(i, b)| Mutation::Insert(i, b)),
         any::<Index>().prop_map(Mutation::Truncate),
     ]
 }

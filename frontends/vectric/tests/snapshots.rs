@@ -38,10 +38,7 @@ fn listing(post: &Post) -> String {
                                 }
                             }
                             Piece::Var(id) => {
-                                let name = post
-                                    .variables
-                                    .get(usize::from(*id))
-                                    .map_or("?", |v| v.name.as_str());
+                                let name = post.variables.get(usize::from(*id)).map_or("?", |v| v.name.as_str());
                                 let _ = write!(out, "[{name}]");
                             }
                             Piece::Expr(_) => out.push_str("[expr]"),
@@ -50,10 +47,7 @@ fn listing(post: &Post) -> String {
                     out.push_str("\"\n");
                 }
                 Stmt::Script(id) => {
-                    let source = post
-                        .scripts
-                        .get(usize::from(*id))
-                        .map_or("?", |s| s.source.as_str());
+                    let source = post.scripts.get(usize::from(*id)).map_or("?", |s| s.source.as_str());
                     let _ = writeln!(out, "  <!>{source}");
                 }
                 other => {
@@ -82,8 +76,7 @@ fn snapshot(path: &Path) -> (String, bool) {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let mut sources = SourceMap::new();
     let (post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
-    let ron = ron::ser::to_string_pretty(&post, ron::ser::PrettyConfig::default())
-        .expect("the IR serializes to RON");
+    let ron = ron::ser::to_string_pretty(&post, ron::ser::PrettyConfig::default()).expect("the IR serializes to RON");
     let mut out = format!(
         "# {}\n\n## handlers\n\n{}\n## post (RON)\n\n{ron}\n\n## diagnostics\n\n",
         path.display(),
@@ -95,8 +88,7 @@ fn snapshot(path: &Path) -> (String, bool) {
         out.push_str(&sources.render(&diagnostics, false));
         out.push_str("\n## diagnostics (JSON)\n\n");
         for d in &diagnostics {
-            let json = serde_json::to_string(&sources.to_json(d, &path.display().to_string()))
-                .expect("JSON");
+            let json = serde_json::to_string(&sources.to_json(d, &path.display().to_string())).expect("JSON");
             let _ = writeln!(out, "{json}");
         }
     }
@@ -111,18 +103,11 @@ fn fixtures_match_their_snapshots() {
     let mut names = std::collections::BTreeSet::new();
     for (kind, expect_errors) in [("valid", false), ("invalid", true)] {
         for path in fixtures(kind) {
-            let name = path
-                .file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default();
+            let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
             assert!(names.insert(name.clone()), "two fixtures are named {name}");
             let (text, has_errors) = snapshot(&path);
             if has_errors != expect_errors {
-                failures.push(format!(
-                    "{}: expected {}errors",
-                    path.display(),
-                    if expect_errors { "" } else { "no " }
-                ));
+                failures.push(format!("{}: expected {}errors", path.display(), if expect_errors { "" } else { "no " }));
             }
             let snap = snapshots.join(format!("{name}.snap"));
             if bless {
@@ -137,10 +122,7 @@ fn fixtures_match_their_snapshots() {
                         .lines()
                         .zip(text.lines())
                         .position(|(a, b)| a != b)
-                        .map_or_else(
-                            || expected.lines().count().min(text.lines().count()) + 1,
-                            |i| i + 1,
-                        );
+                        .map_or_else(|| expected.lines().count().min(text.lines().count()) + 1, |i| i + 1);
                     failures.push(format!(
                         "{} differs from {} from line {line}:\n  expected: {:?}\n  actual:   {:?}",
                         path.display(),
@@ -149,11 +131,7 @@ fn fixtures_match_their_snapshots() {
                         text.lines().nth(line - 1).unwrap_or("")
                     ));
                 }
-                Err(_) => failures.push(format!(
-                    "{} has no snapshot {}",
-                    path.display(),
-                    snap.display()
-                )),
+                Err(_) => failures.push(format!("{} has no snapshot {}", path.display(), snap.display())),
             }
         }
     }

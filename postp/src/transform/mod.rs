@@ -175,14 +175,19 @@ impl<S: EventSource> Transform<S> {
                 self.push(Event::Job(job));
             }
             Event::Tool(tool) => {
-                let Some(r) = self.cl.record(self.span).filter(|r| r.word == "LOADTL" || r.word == "LOAD") else { return };
+                let Some(r) = self.cl.record(self.span).filter(|r| r.word == "LOADTL" || r.word == "LOAD") else {
+                    return;
+                };
                 if self.needs(Kind::Mill, "LOADTL", diags) {
                     // The event leaves out offsets equal to the tool number;
                     // the record says whether they were given.
                     let (h, d) = offsets(&r.args);
                     let reg = |v: Option<f64>, e: Option<u32>| Arg::Number(v.or(e.map(f64::from)).unwrap_or(-1.0));
-                    let args =
-                        vec![Arg::Number(f64::from(tool.number)), reg(h, tool.length_offset), reg(d, tool.diameter_offset)];
+                    let args = vec![
+                        Arg::Number(f64::from(tool.number)),
+                        reg(h, tool.length_offset),
+                        reg(d, tool.diameter_offset),
+                    ];
                     self.command("LOADTL", args);
                 }
             }
@@ -295,7 +300,10 @@ impl<S: EventSource> Transform<S> {
                 self.warn_once(
                     diags,
                     what,
-                    Diagnostic::warning(codes::COOLANT, format!("postp knows COOLNT MIST, FLOOD, ON and OFF; {what} is taken as FLOOD")),
+                    Diagnostic::warning(
+                        codes::COOLANT,
+                        format!("postp knows COOLNT MIST, FLOOD, ON and OFF; {what} is taken as FLOOD"),
+                    ),
                 );
                 "FLOOD"
             }
@@ -318,8 +326,11 @@ impl<S: EventSource> Transform<S> {
             self.warn_once(
                 diags,
                 "TOOLAXIS",
-                Diagnostic::warning(codes::AXIS_IGNORED, "postp writes 3-axis positions; the tool axis of multi-axis GOTOs is ignored")
-                    .note("ROTABL positions rotary axes; 5-axis tool-axis output is not implemented"),
+                Diagnostic::warning(
+                    codes::AXIS_IGNORED,
+                    "postp writes 3-axis positions; the tool axis of multi-axis GOTOs is ignored",
+                )
+                .note("ROTABL positions rotary axes; 5-axis tool-axis output is not implemented"),
             );
         }
     }

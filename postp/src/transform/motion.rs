@@ -170,7 +170,12 @@ impl<S: EventSource> Transform<S> {
             }
         };
         let Some(p) = self.pos else {
-            self.error(diags, codes::POSITION_UNKNOWN, "RETRCT needs to know where the tool is".into(), "no position yet");
+            self.error(
+                diags,
+                codes::POSITION_UNKNOWN,
+                "RETRCT needs to know where the tool is".into(),
+                "no position yet",
+            );
             return;
         };
         self.move_to(true, [p[0], p[1], z], None, diags);
@@ -179,11 +184,21 @@ impl<S: EventSource> Transform<S> {
     /// CLRSRF/NOW: the tool tip to the plane, along its normal.
     pub(super) fn clear_surface(&mut self, diags: &mut Vec<Diagnostic>) {
         let Some((n, d)) = self.clrsrf else {
-            self.error(diags, codes::BAD_PLANE, "CLRSRF/NOW needs a plane: CLRSRF/XYPLAN,d first".into(), "no plane defined");
+            self.error(
+                diags,
+                codes::BAD_PLANE,
+                "CLRSRF/NOW needs a plane: CLRSRF/XYPLAN,d first".into(),
+                "no plane defined",
+            );
             return;
         };
         let Some(p) = self.pos else {
-            self.error(diags, codes::POSITION_UNKNOWN, "CLRSRF/NOW needs to know where the tool is".into(), "no position yet");
+            self.error(
+                diags,
+                codes::POSITION_UNKNOWN,
+                "CLRSRF/NOW needs to know where the tool is".into(),
+                "no position yet",
+            );
             return;
         };
         let s = n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - d;
@@ -224,7 +239,12 @@ impl<S: EventSource> Transform<S> {
     /// ROTABL/LINEAR,AAXIS|BAXIS[,RADIUS,r] starts cylindrical mapping.
     pub(super) fn start_mapping(&mut self, axis: usize, radius: Option<f64>, diags: &mut Vec<Diagnostic>) -> bool {
         let Some(p) = self.pos else {
-            self.error(diags, codes::POSITION_UNKNOWN, "ROTABL/LINEAR needs to know where the tool is".into(), "no position yet");
+            self.error(
+                diags,
+                codes::POSITION_UNKNOWN,
+                "ROTABL/LINEAR needs to know where the tool is".into(),
+                "no position yet",
+            );
             return false;
         };
         let q = self.translated(p);

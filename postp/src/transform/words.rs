@@ -3,8 +3,8 @@
 //! RETRCT) or given to the post with fixed, normalized arguments.
 
 use postc_ir::Diagnostic;
-use postc_ir::event::{Arg, Command};
 use postc_ir::EventSource;
+use postc_ir::event::{Arg, Command};
 
 use super::{Kind, Transform, codes, word};
 use crate::letter::Letter;
@@ -54,10 +54,18 @@ fn plane(args: &[Arg]) -> Result<[f64; 4], String> {
     } else if is(first, "ZXPLAN") {
         axis([0.0, 1.0, 0.0])
     } else if let (Some(Arg::Word(w)), true) = (first, args.len() == 1) {
-        Err(format!("`{w}` names a plane defined in the part program; CL data does not carry it, so give the plane itself (XYPLAN,d or a,b,c,d)"))
-    } else if let ([a, b, c, d], true) = (n.as_slice(), first.is_none_or(|f| is(Some(f), "PLANE") || num(Some(f)).is_some())) {
+        Err(format!(
+            "`{w}` names a plane defined in the part program; CL data does not carry it, so give the plane itself (XYPLAN,d or a,b,c,d)"
+        ))
+    } else if let ([a, b, c, d], true) =
+        (n.as_slice(), first.is_none_or(|f| is(Some(f), "PLANE") || num(Some(f)).is_some()))
+    {
         let len = (a * a + b * b + c * c).sqrt();
-        if len > 1e-12 { Ok([a / len, b / len, c / len, d / len]) } else { Err("the plane's normal a,b,c is zero".into()) }
+        if len > 1e-12 {
+            Ok([a / len, b / len, c / len, d / len])
+        } else {
+            Err("the plane's normal a,b,c is zero".into())
+        }
     } else {
         Err("a plane is (PLANE/a,b,c,d), a,b,c,d, XYPLAN,d, YZPLAN,d or ZXPLAN,d".into())
     }
@@ -87,8 +95,11 @@ impl<S: EventSource> Transform<S> {
             "MACHIN" => {
                 if !is(a.first(), self.machine.name) {
                     diags.push(
-                        Diagnostic::warning(codes::MACHIN_NOT_FIRST, "a second MACHIN is ignored; the first one chose the controller")
-                            .at(self.span, "ignored"),
+                        Diagnostic::warning(
+                            codes::MACHIN_NOT_FIRST,
+                            "a second MACHIN is ignored; the first one chose the controller",
+                        )
+                        .at(self.span, "ignored"),
                     );
                 }
             }
@@ -140,7 +151,11 @@ impl<S: EventSource> Transform<S> {
                         n @ [_, _, _, _, _, _, _, _, _, _] if n[0] > 0.0 => {
                             self.command("THREAD", n.iter().map(|v| Arg::Number(*v)).collect())
                         }
-                        _ => self.bad(diags, &w, "give pitch,fd,z,dfc,mdc,dlp,pocd,taper,ia,sp (10 numbers, pitch > 0)".into()),
+                        _ => self.bad(
+                            diags,
+                            &w,
+                            "give pitch,fd,z,dfc,mdc,dlp,pocd,taper,ia,sp (10 numbers, pitch > 0)".into(),
+                        ),
                     }
                 }
             }
@@ -148,7 +163,9 @@ impl<S: EventSource> Transform<S> {
                 if self.needs(Kind::Lathe, "TURRET", diags) {
                     match numbers(a).as_slice() {
                         [t] if *t >= 0.0 => self.command("TURRET", vec![Arg::Number(*t), Arg::Number(*t)]),
-                        [t, o] if *t >= 0.0 && *o >= 0.0 => self.command("TURRET", vec![Arg::Number(*t), Arg::Number(*o)]),
+                        [t, o] if *t >= 0.0 && *o >= 0.0 => {
+                            self.command("TURRET", vec![Arg::Number(*t), Arg::Number(*o)])
+                        }
                         _ => self.bad(diags, &w, "give the position and optionally the offset: TURRET/3,13".into()),
                     }
                 }
@@ -164,11 +181,21 @@ impl<S: EventSource> Transform<S> {
                 if is(a.first(), "OFF") && a.len() == 1 {
                     self.clearp = None;
                 } else if is(a.first(), "YZPLAN") || is(a.first(), "ZXPLAN") {
-                    self.error(diags, codes::BAD_PLANE, "CLEARP must be parallel to the XY plane (XYPLAN)".into(), "not valid here");
+                    self.error(
+                        diags,
+                        codes::BAD_PLANE,
+                        "CLEARP must be parallel to the XY plane (XYPLAN)".into(),
+                        "not valid here",
+                    );
                 } else {
                     match plane(a) {
                         Ok([x, y, z, d]) if x.abs() < 1e-9 && y.abs() < 1e-9 => self.clearp = Some(d / z),
-                        Ok(_) => self.error(diags, codes::BAD_PLANE, "CLEARP must be parallel to the XY plane".into(), "a tilted plane"),
+                        Ok(_) => self.error(
+                            diags,
+                            codes::BAD_PLANE,
+                            "CLEARP must be parallel to the XY plane".into(),
+                            "a tilted plane",
+                        ),
                         Err(e) => self.error(diags, codes::BAD_PLANE, format!("CLEARP: {e}"), "this plane"),
                     }
                 }
@@ -192,7 +219,9 @@ impl<S: EventSource> Transform<S> {
                 if self.needs(Kind::Mill, "LETTER", diags) {
                     match Letter::from_numbers(&numbers(a)) {
                         Some(l) if a.len() == 11 && l.sx > 0.0 && l.sy > 0.0 => self.letter = Some((l, self.span)),
-                        _ => self.bad(diags, &w, "give x,y,z,dx,r,sx,sy,zc,zr,f,zf (11 numbers, scales above 0)".into()),
+                        _ => {
+                            self.bad(diags, &w, "give x,y,z,dx,r,sx,sy,zc,zr,f,zf (11 numbers, scales above 0)".into())
+                        }
                     }
                 }
             }
@@ -230,7 +259,11 @@ impl<S: EventSource> Transform<S> {
             (Some(s), Some(i), 3 | 4) if s >= 0.0 && i > 0.0 && (a.len() == 3 || program.is_some_and(|p| p >= 0.0)) => {
                 self.command("SEQNO", vec![Arg::Number(s), Arg::Number(i), Arg::Number(program.unwrap_or(0.0))])
             }
-            _ => self.bad(diags, "SEQNO", "give start,INCR,increment[,program]: SEQNO/10,INCR,10,1001 (or SEQNO/OFF)".into()),
+            _ => self.bad(
+                diags,
+                "SEQNO",
+                "give start,INCR,increment[,program]: SEQNO/10,INCR,10,1001 (or SEQNO/OFF)".into(),
+            ),
         }
     }
 

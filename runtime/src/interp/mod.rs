@@ -109,8 +109,11 @@ impl Engine<'_> {
                     self.blocks_since(at);
                 }
                 Stmt::Script(_) => self.warn_once(
-                    Diagnostic::warning("RT003", "this post calls Lua scripts, which postc does not run; those lines are skipped")
-                        .note("the rest of the post runs as written"),
+                    Diagnostic::warning(
+                        "RT003",
+                        "this post calls Lua scripts, which postc does not run; those lines are skipped",
+                    )
+                    .note("the rest of the post runs as written"),
                 ),
             }
         }
@@ -306,8 +309,12 @@ impl Engine<'_> {
         let mut buf = Vec::with_capacity(16);
         let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
         match &v {
-            Value::Text(s) => put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf),
-            other => put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, other.num(), &mut buf),
+            Value::Text(s) => {
+                put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf)
+            }
+            other => {
+                put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, other.num(), &mut buf)
+            }
         }
         self.set_var(id, v);
         Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
@@ -322,7 +329,8 @@ impl Engine<'_> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             self.depth -= 1;
-            let d = Diagnostic::error("RT004", format!("calls nest deeper than {MAX_DEPTH} levels (endless recursion?)"));
+            let d =
+                Diagnostic::error("RT004", format!("calls nest deeper than {MAX_DEPTH} levels (endless recursion?)"));
             return Err(Box::new(match function.span {
                 Some(s) => d.at(s, "in this function"),
                 None => d,
@@ -362,14 +370,16 @@ impl Engine<'_> {
                 postc_ir::Piece::Var(id) => self.write_var(*id),
                 postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
                     let n = match &**value {
-                        Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => match self.machine.number(*q) {
-                            // No value: nothing prints and the variable holds null.
-                            n if n.is_nan() => {
-                                self.set_var(*var, Value::Null);
-                                continue;
+                        Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
+                            match self.machine.number(*q) {
+                                // No value: nothing prints and the variable holds null.
+                                n if n.is_nan() => {
+                                    self.set_var(*var, Value::Null);
+                                    continue;
+                                }
+                                n => n,
                             }
-                            n => n,
-                        },
+                        }
                         Expr::Number(n) => *n,
                         other => match self.eval(other, frame)? {
                             Value::Num(n) => n,

@@ -15,7 +15,9 @@ use rhai::{Array, Dynamic, Engine, EvalAltResult, NativeCallContext};
 use super::host::{Shared, State};
 use super::js;
 use super::ops::fail;
-use super::values::{self, DynFormat, DynVar, DynVarState, FmtRef, JsArr, JsObj, ObjKind, VarRef, num, text, to_number, to_string};
+use super::values::{
+    self, DynFormat, DynVar, DynVarState, FmtRef, JsArr, JsObj, ObjKind, VarRef, num, text, to_number, to_string,
+};
 use crate::engine::put_number;
 use crate::number::NumberWriter;
 use crate::value::Value;
@@ -30,7 +32,9 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn("__vref", |id: i64| VarRef(id as u16));
     engine.register_fn("__fref", |id: i64| FmtRef(id as u16));
     let s = state.clone();
-    engine.register_fn("__vfmt", move |id: i64, v: Dynamic| text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v))));
+    engine.register_fn("__vfmt", move |id: i64, v: Dynamic| {
+        text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v)))
+    });
     let s = state.clone();
     engine.register_fn("__vlast", move |id: i64| num(last(&s.borrow(), id as u16)));
     let s = state.clone();
@@ -208,7 +212,14 @@ pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Arr
         }
         "createFormat" => {
             let st = state.borrow();
-            let mark = match to_string(&[global(&st, "decimalMark"), global(&st, "globals.decimalMark")].into_iter().find(|v| !v.is_unit()).unwrap_or(Dynamic::UNIT)).as_str() {
+            let mark = match to_string(
+                &[global(&st, "decimalMark"), global(&st, "globals.decimalMark")]
+                    .into_iter()
+                    .find(|v| !v.is_unit())
+                    .unwrap_or(Dynamic::UNIT),
+            )
+            .as_str()
+            {
                 "," => ',',
                 _ => '.',
             };
@@ -257,7 +268,8 @@ fn name_and_longhand(st: &State, list: &str) -> (String, bool) {
         .and_then(|a| {
             a.0.borrow().iter().find_map(|e| {
                 let o = e.clone().try_cast::<JsObj>()?;
-                (o.get("name").map(|n| to_string(&n)) == Some(name.clone())).then(|| o.get("isLonghand").is_some_and(|v| values::truthy(&v)))
+                (o.get("name").map(|n| to_string(&n)) == Some(name.clone()))
+                    .then(|| o.get("isLonghand").is_some_and(|v| values::truthy(&v)))
             })
         })
         .unwrap_or(false);

@@ -6,7 +6,7 @@ use std::rc::Rc;
 
 use postc_ir::event::{CompSide, DrillCycle};
 use postc_ir::{Diagnostic, Script, Span};
-use rhai::{Array, CallFnOptions, Dynamic, EvalAltResult, Position, Scope, AST};
+use rhai::{AST, Array, CallFnOptions, Dynamic, EvalAltResult, Position, Scope};
 
 use super::values::{self, JsObj};
 use crate::engine::{Engine, VarState};
@@ -112,7 +112,10 @@ impl ScriptHost {
         super::cimco::register(&mut engine, &state);
         let ast = engine.compile(&script.source).map_err(|e| {
             let pos = e.position();
-            let d = Diagnostic::error("RT022", format!("the script made from this post does not compile: {}", e.err_type()));
+            let d = Diagnostic::error(
+                "RT022",
+                format!("the script made from this post does not compile: {}", e.err_type()),
+            );
             match span_at(&script, pos) {
                 Some(s) => d.at(s, "here"),
                 None => d,
@@ -182,7 +185,11 @@ impl ScriptHost {
             }
             other => Diagnostic::error("RT023", format!("the post stopped with an error: {}", message(other))),
         };
-        let label = if inner.to_string().contains("many operations") { "this loop did not finish" } else { "while running this" };
+        let label = if inner.to_string().contains("many operations") {
+            "this loop did not finish"
+        } else {
+            "while running this"
+        };
         match span {
             Some(s) => d.at(s, label),
             None => d,

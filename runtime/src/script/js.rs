@@ -6,7 +6,6 @@
 //! print with the shortest digits that read back as the same double,
 //! switching to exponent form at 1e21 and below 1e-6 as JavaScript does.
 
-
 /// The text JavaScript gives a number (`String(n)`, `"" + n`).
 pub fn number_to_string(n: f64) -> String {
     let mut s = String::new();

@@ -28,7 +28,9 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
     let chars: Vec<char> = s.chars().collect();
     let len = chars.len();
     let a = |i: usize| arg(args, i);
-    let sub = |from: usize, to: usize| -> Dynamic { text(chars[from.min(len)..to.min(len).max(from.min(len))].iter().collect::<String>()) };
+    let sub = |from: usize, to: usize| -> Dynamic {
+        text(chars[from.min(len)..to.min(len).max(from.min(len))].iter().collect::<String>())
+    };
     Ok(match name {
         "toUpperCase" => text(s.to_uppercase()),
         "toLowerCase" => text(s.to_lowercase()),
@@ -46,9 +48,12 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
             let needle: Vec<char> = to_string(&a(0)).chars().collect();
             let found = if name == "indexOf" {
                 let from = if a(1).is_unit() { 0 } else { clamp_index(to_number(&a(1)).max(0.0), len) };
-                (from..=len.saturating_sub(needle.len())).find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
+                (from..=len.saturating_sub(needle.len()))
+                    .find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
             } else {
-                (0..=len.saturating_sub(needle.len())).rev().find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
+                (0..=len.saturating_sub(needle.len()))
+                    .rev()
+                    .find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
             };
             num(found.map_or(-1.0, |i| i as f64))
         }
@@ -82,7 +87,11 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
                 regex::split(&r.0, s)
             } else {
                 let sep = to_string(&sep);
-                if sep.is_empty() { chars.iter().map(|c| c.to_string()).collect() } else { s.split(sep.as_str()).map(String::from).collect() }
+                if sep.is_empty() {
+                    chars.iter().map(|c| c.to_string()).collect()
+                } else {
+                    s.split(sep.as_str()).map(String::from).collect()
+                }
             };
             Dynamic::from(JsArr::new(parts.into_iter().map(text).collect()))
         }
@@ -93,7 +102,12 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
                 None => {
                     let pattern = to_string(&a(0));
                     match s.find(&pattern) {
-                        Some(i) => text(format!("{}{}{}", &s[..i], with.replace("$&", &pattern).replace("$$", "$"), &s[i + pattern.len()..])),
+                        Some(i) => text(format!(
+                            "{}{}{}",
+                            &s[..i],
+                            with.replace("$&", &pattern).replace("$$", "$"),
+                            &s[i + pattern.len()..]
+                        )),
                         None => text(s),
                     }
                 }
@@ -130,7 +144,10 @@ pub(super) fn array_method(a: &JsArr, name: &str, args: Array) -> R {
         "join" => {
             let sep = if args.first().is_none_or(|s| s.is_unit()) { ",".to_string() } else { to_string(&args[0]) };
             let items = a.0.borrow();
-            let parts: Vec<String> = items.iter().map(|x| if x.is_unit() || values::is_null(x) { String::new() } else { to_string(x) }).collect();
+            let parts: Vec<String> = items
+                .iter()
+                .map(|x| if x.is_unit() || values::is_null(x) { String::new() } else { to_string(x) })
+                .collect();
             text(parts.join(&sep))
         }
         "toString" => text(to_string(&Dynamic::from(a.clone()))),
@@ -161,4 +178,3 @@ pub(super) fn array_method(a: &JsArr, name: &str, args: Array) -> R {
         _ => return Err(fail(format!("TypeError: an array has no method '{name}'"))),
     })
 }
-

@@ -49,15 +49,21 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn("__seq", |a: Dynamic, b: Dynamic| values::strict_eq(&a, &b));
     engine.register_fn("__sne", |a: Dynamic, b: Dynamic| !values::strict_eq(&a, &b));
     engine.register_fn("__lt", |a: Dynamic, b: Dynamic| values::compare(&a, &b) == Some(Ordering::Less));
-    engine.register_fn("__le", |a: Dynamic, b: Dynamic| matches!(values::compare(&a, &b), Some(Ordering::Less | Ordering::Equal)));
+    engine.register_fn("__le", |a: Dynamic, b: Dynamic| {
+        matches!(values::compare(&a, &b), Some(Ordering::Less | Ordering::Equal))
+    });
     engine.register_fn("__gt", |a: Dynamic, b: Dynamic| values::compare(&a, &b) == Some(Ordering::Greater));
-    engine.register_fn("__ge", |a: Dynamic, b: Dynamic| matches!(values::compare(&a, &b), Some(Ordering::Greater | Ordering::Equal)));
+    engine.register_fn("__ge", |a: Dynamic, b: Dynamic| {
+        matches!(values::compare(&a, &b), Some(Ordering::Greater | Ordering::Equal))
+    });
     engine.register_fn("__t", |a: Dynamic| values::truthy(&a));
     engine.register_fn("__typeof", |a: Dynamic| values::text(values::type_of(&a)));
     engine.register_fn("__arg", |a: Array, i: i64| -> Dynamic {
         usize::try_from(i).ok().and_then(|i| a.get(i).cloned()).unwrap_or(Dynamic::UNIT)
     });
-    engine.register_fn("__undef", |name: ImmutableString| -> R { Err(fail(format!("ReferenceError: {name} is not defined"))) });
+    engine.register_fn("__undef", |name: ImmutableString| -> R {
+        Err(fail(format!("ReferenceError: {name} is not defined")))
+    });
     engine.register_fn("__assign_error", |name: ImmutableString| -> R {
         Err(fail(format!("TypeError: cannot assign to `{name}`")))
     });

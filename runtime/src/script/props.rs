@@ -70,7 +70,9 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         call(&ctx, &s, &f, Dynamic::UNIT, args)
     });
     let s = state.clone();
-    engine.register_fn("__new", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R { construct(&ctx, &s, &f, args) });
+    engine.register_fn("__new", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
+        construct(&ctx, &s, &f, args)
+    });
     let s = state.clone();
     engine.register_fn("__host", move |ctx: NativeCallContext, name: ImmutableString, args: Array| -> R {
         super::cimco::host_call(&ctx, &s, &name, args)
@@ -294,8 +296,14 @@ pub fn math(name: &str, args: &Array) -> R {
         "exp" => n(0).exp(),
         "floor" => n(0).floor(),
         "log" => n(0).ln(),
-        "max" => args.iter().map(to_number).fold(f64::NEG_INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }),
-        "min" => args.iter().map(to_number).fold(f64::INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }),
+        "max" => args
+            .iter()
+            .map(to_number)
+            .fold(f64::NEG_INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }),
+        "min" => args
+            .iter()
+            .map(to_number)
+            .fold(f64::INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }),
         "pow" => n(0).powf(n(1)),
         // Posts must print the same program every time.
         "random" => 0.5,

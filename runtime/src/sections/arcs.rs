@@ -50,7 +50,11 @@ impl SectionDispatch {
         let feed = Self::feed_for(eng, a.intent, a.feed.map(|f| eng.machine.len(f)));
         let first = |fam: Family| self.family != fam || self.last_feed != Some(feed);
         let cw = a.dir == ArcDir::Cw;
-        let flat = if cw { (Section::FirstCwArcMove, Section::CwArcMove) } else { (Section::FirstCcwArcMove, Section::CcwArcMove) };
+        let flat = if cw {
+            (Section::FirstCwArcMove, Section::CwArcMove)
+        } else {
+            (Section::FirstCcwArcMove, Section::CcwArcMove)
+        };
         if g.is_helical() {
             if a.intent == Intent::Plunge {
                 let (f, p) = if cw {
@@ -95,7 +99,14 @@ impl SectionDispatch {
         g.exact(printed(g.start), printed(g.end), dir)
     }
 
-    fn linearize(&mut self, eng: &mut Engine, g: &ArcGeometry, intent: Intent, feed: Option<f64>, tol: f64) -> Result<()> {
+    fn linearize(
+        &mut self,
+        eng: &mut Engine,
+        g: &ArcGeometry,
+        intent: Intent,
+        feed: Option<f64>,
+        tol: f64,
+    ) -> Result<()> {
         let mut n = g.segments(tol);
         if n > MAX_CHORDS {
             eng.warn_once(

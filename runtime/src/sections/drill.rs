@@ -21,7 +21,8 @@ impl SectionDispatch {
         }
         let Some(cycle) = self.drill.clone() else {
             return Err(Box::new(
-                Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle").at(eng.event_span, "this hole"),
+                Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle")
+                    .at(eng.event_span, "this hole"),
             ));
         };
         let factor = eng.machine.factor;
@@ -36,7 +37,8 @@ impl SectionDispatch {
         if reference < clear {
             self.rapid_to(eng, [at[0], at[1], reference])?;
         }
-        let mut peck = cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
+        let mut peck =
+            cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
         if let Some(p) = peck
             && (reference - depth) / p > f64::from(MAX_PECKS)
         {

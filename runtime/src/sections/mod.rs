@@ -79,13 +79,8 @@ pub struct SectionDispatch {
 
 impl SectionDispatch {
     pub fn new(eng: &Engine, exact_arcs: bool) -> SectionDispatch {
-        let format_of = |q| {
-            eng.post
-                .variables
-                .iter()
-                .find(|v| v.source == postc_ir::ValueSource::Quantity(q))
-                .map(|v| v.format)
-        };
+        let format_of =
+            |q| eng.post.variables.iter().find(|v| v.source == postc_ir::ValueSource::Quantity(q)).map(|v| v.format);
         SectionDispatch {
             started: false,
             finished: false,
@@ -108,8 +103,10 @@ impl SectionDispatch {
         match event {
             Event::Job(job) => {
                 if self.started {
-                    eng.warn_once(Diagnostic::warning("RT011", "a second Job event came after output began; it is ignored")
-                        .at(eng.event_span, "this Job event"));
+                    eng.warn_once(
+                        Diagnostic::warning("RT011", "a second Job event came after output began; it is ignored")
+                            .at(eng.event_span, "this Job event"),
+                    );
                 } else {
                     if let Some(wrap) = eng.post.options.rotary_wrap
                         && !job.wrap_diameter.is_some_and(|d| d > 0.0)
@@ -385,7 +382,13 @@ impl SectionDispatch {
     }
 
     /// Prints a feed-rate section, with FEED_RATE_CHANGE first when the feed changed.
-    fn print_feed_section(&mut self, eng: &mut Engine, family: Family, section: Option<Section>, feed: f64) -> Result<()> {
+    fn print_feed_section(
+        &mut self,
+        eng: &mut Engine,
+        family: Family,
+        section: Option<Section>,
+        feed: f64,
+    ) -> Result<()> {
         eng.machine.feed = feed;
         if self.last_feed != Some(feed) {
             eng.run_section(Section::FeedRateChange)?;
@@ -410,7 +413,6 @@ impl SectionDispatch {
         }
         Ok(())
     }
-
 }
 
 /// A longhand peck cycle drills a hole in at most this many pecks.
@@ -427,7 +429,9 @@ fn check_finite(eng: &Engine, event: &Event) -> Result<()> {
         Event::Feed(m) => &[m.x, m.y, m.z, m.feed.unwrap_or(0.0)],
         Event::Arc(a) => &[a.x, a.y, a.z, a.cx, a.cy, a.cz, a.feed.unwrap_or(0.0)],
         Event::DrillPoint(p) => &[p.x, p.y, p.z],
-        Event::DrillCycle(c) => &[c.retract_plane, c.reference_plane, c.depth, c.peck.unwrap_or(0.0), c.dwell.unwrap_or(0.0)],
+        Event::DrillCycle(c) => {
+            &[c.retract_plane, c.reference_plane, c.depth, c.peck.unwrap_or(0.0), c.dwell.unwrap_or(0.0)]
+        }
         Event::Dwell(d) => &[d.seconds],
         Event::Power(p) => &[p.value],
         _ => return Ok(()),

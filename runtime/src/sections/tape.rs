@@ -40,13 +40,16 @@ impl SectionDispatch {
             return Ok(());
         }
         if hard && !soft {
-            eng.warn_once(Diagnostic::warning(
-                "RT014",
-                format!(
-                    "a part reached {} lines with no retract in its last {}; it was split inside a cut",
-                    tape.max_lines, tape.tolerance
-                ),
-            ).help("raise the TAPE_SPLITTING tolerance so that a retract falls inside it"));
+            eng.warn_once(
+                Diagnostic::warning(
+                    "RT014",
+                    format!(
+                        "a part reached {} lines with no retract in its last {}; it was split inside a cut",
+                        tape.max_lines, tape.tolerance
+                    ),
+                )
+                .help("raise the TAPE_SPLITTING tolerance so that a retract falls inside it"),
+            );
         }
         self.split_pending = true;
         Ok(())

@@ -54,7 +54,8 @@ fn tape_post(max_lines: u64, tolerance: u64) -> Post {
 
 fn parts(post: &Post, events: Vec<Event>) -> Vec<String> {
     let mut source = VecSource::new(events, FileId(0));
-    let report = crate::run(post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
+    let report =
+        crate::run(post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
     match report.output {
         Finished::Memory(parts) => parts.into_iter().map(|p| String::from_utf8(p).unwrap()).collect(),
         _ => unreachable!(),
@@ -147,9 +148,11 @@ fn a_wrapped_post_warns_when_the_job_has_no_wrap_diameter() {
     post.options.rotary_wrap =
         Some(postc_ir::post::RotaryWrap { axis: postc_ir::post::WrappedAxis::Y, letter: Some('A'), reversed: false });
     let run = |job: Job| {
-        let events = vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default()), Event::End];
+        let events =
+            vec![Event::Job(Box::new(job)), tool(1), Event::ToolpathStart(ToolpathStart::default()), Event::End];
         let mut source = VecSource::new(events, FileId(0));
-        let report = crate::run(&post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
+        let report =
+            crate::run(&post, &mut source, Output::memory(), RunOptions::default()).unwrap_or_else(|d| panic!("{d:?}"));
         report.warnings.iter().map(|w| w.code.to_string()).collect::<Vec<_>>()
     };
     assert_eq!(run(Job::default()), ["RT015"]);

@@ -140,7 +140,9 @@ pub fn check_order(name: &str, events: &[(postc_ir::event::Event, postc_ir::Span
                 assert!(open && !cycle, "{name}: ToolpathEnd at {i}");
                 open = false;
             }
-            Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) => assert!(open && !cycle, "{name}: move outside a toolpath at {i}"),
+            Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) => {
+                assert!(open && !cycle, "{name}: move outside a toolpath at {i}")
+            }
             Event::DrillCycle(_) => {
                 assert!(open && !cycle, "{name}: DrillCycle at {i}");
                 cycle = true;

@@ -38,15 +38,9 @@ pub(super) fn expr_children_depth(kind: &ExprKind) -> u32 {
         ExprKind::Index { object: a, index: b }
         | ExprKind::Binary { left: a, right: b, .. }
         | ExprKind::Logical { left: a, right: b, .. }
-        | ExprKind::Assign {
-            target: a, value: b, ..
-        } => a.depth.max(b.depth),
+        | ExprKind::Assign { target: a, value: b, .. } => a.depth.max(b.depth),
         ExprKind::Call { callee, args } | ExprKind::New { callee, args } => callee.depth.max(max_expr(args)),
-        ExprKind::Conditional {
-            test,
-            consequent,
-            alternate,
-        } => test.depth.max(consequent.depth).max(alternate.depth),
+        ExprKind::Conditional { test, consequent, alternate } => test.depth.max(consequent.depth).max(alternate.depth),
     }
 }
 
@@ -65,18 +59,9 @@ pub(super) fn stmt_children_depth(kind: &StmtKind) -> u32 {
             .max()
             .unwrap_or(0),
         StmtKind::Switch { discriminant, cases } => discriminant.depth.max(
-            1 + cases
-                .iter()
-                .map(|c| c.test.as_ref().map_or(0, |t| t.depth).max(max_stmt(&c.body)))
-                .max()
-                .unwrap_or(0),
+            1 + cases.iter().map(|c| c.test.as_ref().map_or(0, |t| t.depth).max(max_stmt(&c.body))).max().unwrap_or(0),
         ),
-        StmtKind::For {
-            init,
-            test,
-            update,
-            body,
-        } => {
+        StmtKind::For { init, test, update, body } => {
             let init = match init {
                 Some(ForInit::Var(d)) => declarators_depth(d),
                 Some(ForInit::Expr(e)) => e.depth,
@@ -86,11 +71,7 @@ pub(super) fn stmt_children_depth(kind: &StmtKind) -> u32 {
         }
         StmtKind::ForIn { object, body, .. } => object.depth.max(body.depth),
         StmtKind::While { cond, body } | StmtKind::DoWhile { body, cond } => cond.depth.max(body.depth),
-        StmtKind::Try {
-            block,
-            handler,
-            finalizer,
-        } => max_stmt(block)
+        StmtKind::Try { block, handler, finalizer } => max_stmt(block)
             .max(handler.as_ref().map_or(0, |h| 1 + max_stmt(&h.body)))
             .max(finalizer.as_ref().map_or(0, max_stmt)),
     }

@@ -305,10 +305,7 @@ impl Expr {
 
     /// Whether this expression can be assigned to (`x`, `a.b`, `a[i]`).
     pub fn is_assignable(&self) -> bool {
-        matches!(
-            self.kind,
-            ExprKind::Ident(_) | ExprKind::Member { .. } | ExprKind::Index { .. } | ExprKind::Error
-        )
+        matches!(self.kind, ExprKind::Ident(_) | ExprKind::Member { .. } | ExprKind::Index { .. } | ExprKind::Error)
     }
 }
 

@@ -118,7 +118,10 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                 }
                 let mut body = stmts(body);
                 // `while (true) { ...; break; }` with no other way out runs once.
-                if matches!(cond, Expr::Bool(true)) && matches!(body.last(), Some(Stmt::Break)) && !leaves(&body[..body.len() - 1]) {
+                if matches!(cond, Expr::Bool(true))
+                    && matches!(body.last(), Some(Stmt::Break))
+                    && !leaves(&body[..body.len() - 1])
+                {
                     body.pop();
                     out.extend(body);
                     continue;

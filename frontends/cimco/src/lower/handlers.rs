@@ -146,7 +146,14 @@ impl Entry<'_> {
             // Turned: the arc's X is the lathe's Z, its Y the radius.
             args.extend([Expr::Quantity(Quantity::JA), Expr::Quantity(Quantity::IA), ey, ex]);
         } else {
-            args.extend([Expr::Quantity(Quantity::IA), Expr::Quantity(Quantity::JA), Expr::Quantity(Quantity::KA), ex, ey, ez]);
+            args.extend([
+                Expr::Quantity(Quantity::IA),
+                Expr::Quantity(Quantity::JA),
+                Expr::Quantity(Quantity::KA),
+                ex,
+                ey,
+                ez,
+            ]);
         }
         args.push(Expr::Bool(cw));
         args.push(Expr::Number(host::MOVEMENT_CUTTING));
@@ -159,7 +166,8 @@ impl Entry<'_> {
     fn arc(&self, cw: bool) -> Vec<Stmt> {
         let Some(f) = self.has("onCircular") else { return Vec::new() };
         let q = |q: Quantity| Expr::Quantity(q);
-        let whole = Stmt::Write(Expr::Call(f, self.circular_args(cw, (q(Quantity::X), q(Quantity::Y), q(Quantity::Z)))));
+        let whole =
+            Stmt::Write(Expr::Call(f, self.circular_args(cw, (q(Quantity::X), q(Quantity::Y), q(Quantity::Z)))));
         let split = |radius_cond: Option<Expr>| -> Vec<Stmt> {
             let num = |n: f64| Expr::Number(n);
             let b = |op, a: Expr, c: Expr| Expr::Binary(op, Box::new(a), Box::new(c));
@@ -167,7 +175,14 @@ impl Entry<'_> {
             let (n, a0, i, t) = (0u16, 1u16, 2u16, 3u16);
             let parts = b(
                 BinaryOp::Add,
-                call(Builtin::Floor, vec![b(BinaryOp::Add, b(BinaryOp::Div, call(Builtin::Abs, vec![q(Quantity::Angle)]), num(std::f64::consts::PI)), num(1e-9))]),
+                call(
+                    Builtin::Floor,
+                    vec![b(
+                        BinaryOp::Add,
+                        b(BinaryOp::Div, call(Builtin::Abs, vec![q(Quantity::Angle)]), num(std::f64::consts::PI)),
+                        num(1e-9),
+                    )],
+                ),
                 num(1.0),
             );
             let start_angle = call(
@@ -179,9 +194,21 @@ impl Entry<'_> {
             );
             let angle = b(BinaryOp::Add, Expr::Local(a0), b(BinaryOp::Mul, q(Quantity::Angle), Expr::Local(t)));
             let end = (
-                b(BinaryOp::Add, q(Quantity::IA), b(BinaryOp::Mul, q(Quantity::Radius), call(Builtin::Cos, vec![angle.clone()]))),
-                b(BinaryOp::Add, q(Quantity::JA), b(BinaryOp::Mul, q(Quantity::Radius), call(Builtin::Sin, vec![angle]))),
-                b(BinaryOp::Add, q(Quantity::KA), b(BinaryOp::Mul, b(BinaryOp::Sub, q(Quantity::Z), q(Quantity::KA)), Expr::Local(t))),
+                b(
+                    BinaryOp::Add,
+                    q(Quantity::IA),
+                    b(BinaryOp::Mul, q(Quantity::Radius), call(Builtin::Cos, vec![angle.clone()])),
+                ),
+                b(
+                    BinaryOp::Add,
+                    q(Quantity::JA),
+                    b(BinaryOp::Mul, q(Quantity::Radius), call(Builtin::Sin, vec![angle])),
+                ),
+                b(
+                    BinaryOp::Add,
+                    q(Quantity::KA),
+                    b(BinaryOp::Mul, b(BinaryOp::Sub, q(Quantity::Z), q(Quantity::KA)), Expr::Local(t)),
+                ),
             );
             let part = Stmt::Write(Expr::Call(f, self.circular_args(cw, end)));
             let mut body = vec![
@@ -207,7 +234,9 @@ impl Entry<'_> {
         match self.use_radius {
             RadiusSetting::Known(false) => vec![whole],
             RadiusSetting::Known(true) => split(None),
-            RadiusSetting::Global(g) => split(Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Unary(UnaryOp::Not, Box::new(Expr::Global(g))))))),
+            RadiusSetting::Global(g) => {
+                split(Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Unary(UnaryOp::Not, Box::new(Expr::Global(g)))))))
+            }
         }
     }
 }

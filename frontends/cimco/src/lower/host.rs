@@ -87,7 +87,15 @@ pub fn knows(name: &str) -> bool {
 pub fn plain_function(name: &str) -> bool {
     matches!(
         name,
-        "getFeedrate" | "getCompensation" | "parseInt" | "parseFloat" | "isNaN" | "isFinite" | "String" | "Number" | "Boolean"
+        "getFeedrate"
+            | "getCompensation"
+            | "parseInt"
+            | "parseFloat"
+            | "isNaN"
+            | "isFinite"
+            | "String"
+            | "Number"
+            | "Boolean"
     )
 }
 

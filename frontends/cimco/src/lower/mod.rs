@@ -31,8 +31,8 @@ mod warn;
 use std::path::Path;
 
 use postc_ir::{
-    Body, Diagnostic, Dialect, Expr, Function, Modality, NumberFormat, Post, Quantity, Script, ScriptLanguage, SourceMap,
-    Span, Stmt, ValueSource, Variable,
+    Body, Diagnostic, Dialect, Expr, Function, Modality, NumberFormat, Post, Quantity, Script, ScriptLanguage,
+    SourceMap, Span, Stmt, ValueSource, Variable,
 };
 
 use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
@@ -66,9 +66,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     let setup = Setup::build(program, &model, diags);
     warn::check(program, &model, &setup, diags);
     let mut layout = Layout::new(&model);
-    let info = |name: &str| {
-        model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]])
-    };
+    let info = |name: &str| model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]]);
     let arity = |name: &str| info(name).map(|f| f.params.len());
     settings(&model, post, diags);
     post.options.lathe = is_lathe(&model, arity("onLinear"));
@@ -127,7 +125,11 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             body: Body::Native(vec![
                 Stmt::If {
                     branches: vec![(
-                        Expr::Binary(postc_ir::BinaryOp::Eq, Box::new(Expr::Local(0)), Box::new(Expr::Number(host::MOVEMENT_RAPID))),
+                        Expr::Binary(
+                            postc_ir::BinaryOp::Eq,
+                            Box::new(Expr::Local(0)),
+                            Box::new(Expr::Number(host::MOVEMENT_RAPID)),
+                        ),
                         vec![Stmt::Return(Some(Expr::Text(String::new())))],
                     )],
                     otherwise: vec![],
@@ -263,11 +265,18 @@ fn init_statements(program: &Program, model: &Model, setup: &Setup) -> Vec<ast::
                             }
                             let object = ast::Expr::new(ExprKind::Ident(name.clone()), target.span);
                             let member = ast::Expr::new(
-                                ExprKind::Member { object: Box::new(object), property: Ident { name: p.key.name.clone(), span: p.key.span } },
+                                ExprKind::Member {
+                                    object: Box::new(object),
+                                    property: Ident { name: p.key.name.clone(), span: p.key.span },
+                                },
                                 p.span,
                             );
                             let assign = ast::Expr::new(
-                                ExprKind::Assign { op: AssignOp::Assign, target: Box::new(member), value: Box::new(p.value.clone()) },
+                                ExprKind::Assign {
+                                    op: AssignOp::Assign,
+                                    target: Box::new(member),
+                                    value: Box::new(p.value.clone()),
+                                },
                                 p.span,
                             );
                             out.push(ast::Stmt::new(StmtKind::Expr(assign), p.span));

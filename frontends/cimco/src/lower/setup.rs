@@ -84,7 +84,14 @@ impl Setup {
     }
 
     /// Runs `G = createFormat(...)` / `G = createVariable(...)` (or `var G = ...`).
-    fn statement(&mut self, stmt: &Stmt, model: &Model, env: &HashMap<String, Const>, mark: char, diags: &mut Vec<Diagnostic>) {
+    fn statement(
+        &mut self,
+        stmt: &Stmt,
+        model: &Model,
+        env: &HashMap<String, Const>,
+        mark: char,
+        diags: &mut Vec<Diagnostic>,
+    ) {
         let (name, value) = match &stmt.kind {
             StmtKind::Var(ds) if ds.len() == 1 => match &ds[0].init {
                 Some(init) => (ds[0].name.name.as_str(), init),
@@ -221,14 +228,21 @@ fn props(
 }
 
 /// The IR format of `createFormat` properties (see docs/cimco.md).
-fn number_format(props: &[(String, Const)], mark: char, span: postc_ir::Span, diags: &mut Vec<Diagnostic>) -> NumberFormat {
+fn number_format(
+    props: &[(String, Const)],
+    mark: char,
+    span: postc_ir::Span,
+    diags: &mut Vec<Diagnostic>,
+) -> NumberFormat {
     let get = |k: &str| props.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone());
     let mut decimals = get("decimals").map_or(0.0, |d| d.num());
     if !decimals.is_finite() || decimals < 0.0 {
         decimals = 0.0;
     }
     if decimals > 15.0 {
-        diags.push(Diagnostic::warning("JS104", "a format prints at most 15 decimals").at(span, "more decimals than that"));
+        diags.push(
+            Diagnostic::warning("JS104", "a format prints at most 15 decimals").at(span, "more decimals than that"),
+        );
         decimals = 15.0;
     }
     let width = get("width").map_or(0.0, |w| w.num());

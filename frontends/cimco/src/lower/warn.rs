@@ -30,7 +30,9 @@ pub fn check(program: &Program, model: &Model, setup: &Setup, diags: &mut Vec<Di
         diags.push(
             Diagnostic::warning("JS105", "this post has no `onLinear` function, so moves print nothing")
                 .at(Span::new(program.span.file, 0, 0), "in this post")
-                .help("CNC-Calc posts define onLinear(vx, vy, vz, movement) (or onLinear(vx, vz, movement) for lathes)"),
+                .help(
+                    "CNC-Calc posts define onLinear(vx, vy, vz, movement) (or onLinear(vx, vz, movement) for lathes)",
+                ),
         );
     }
 }
@@ -53,9 +55,12 @@ impl<'a> Visit<'a> for Names<'_, 'a, '_> {
                     && self.seen.insert(g.clone())
                 {
                     self.diags.push(
-                        Diagnostic::warning("JS102", format!("`{g}` is not defined in this post, and postc's host does not provide it"))
-                            .at(e.span, "not defined")
-                            .note("using it stops the post with an error when this line runs"),
+                        Diagnostic::warning(
+                            "JS102",
+                            format!("`{g}` is not defined in this post, and postc's host does not provide it"),
+                        )
+                        .at(e.span, "not defined")
+                        .note("using it stops the post with an error when this line runs"),
                     );
                 }
             }
@@ -64,13 +69,18 @@ impl<'a> Visit<'a> for Names<'_, 'a, '_> {
                     && let Symbol::TopFn(_) = self.model.scopes.resolve(name, self.at)
                 {
                     self.diags.push(
-                        Diagnostic::error("JS106", format!("`{name}` is a function; postc does not let a post assign to a function's name"))
-                            .at(target.span, "assigned here")
-                            .help("keep the function in a variable of its own: `var handler = name;`"),
+                        Diagnostic::error(
+                            "JS106",
+                            format!("`{name}` is a function; postc does not let a post assign to a function's name"),
+                        )
+                        .at(target.span, "assigned here")
+                        .help("keep the function in a variable of its own: `var handler = name;`"),
                     );
                 }
             }
-            ExprKind::Unary { op: UnaryOp::Typeof, operand } if matches!(operand.kind, ExprKind::Ident(_)) => return false,
+            ExprKind::Unary { op: UnaryOp::Typeof, operand } if matches!(operand.kind, ExprKind::Ident(_)) => {
+                return false;
+            }
             ExprKind::Function(f) => {
                 if let Some(id) = self.model.scopes.id_of(f) {
                     let at = self.at;
@@ -96,11 +106,15 @@ pub fn check_script(script: &Script, whole: Span) -> Option<Diagnostic> {
     let err = engine.compile(&script.source).err()?;
     let pos = err.position();
     let offset = line_col_offset(&script.source, pos.line().unwrap_or(1), pos.position().unwrap_or(1));
-    let js = script.span_map.iter().rev().find(|(r, _)| *r as usize <= offset).map_or(whole.start, |(_, j)| *j as usize);
+    let js =
+        script.span_map.iter().rev().find(|(r, _)| *r as usize <= offset).map_or(whole.start, |(_, j)| *j as usize);
     Some(
-        Diagnostic::error("JS100", format!("postc could not turn this part of the post into a script: {}", err.err_type()))
-            .at(Span::new(whole.file, js, js + 1), "here")
-            .note("this is a bug in postc; please report it with the post"),
+        Diagnostic::error(
+            "JS100",
+            format!("postc could not turn this part of the post into a script: {}", err.err_type()),
+        )
+        .at(Span::new(whole.file, js, js + 1), "here")
+        .note("this is a bug in postc; please report it with the post"),
     )
 }
 

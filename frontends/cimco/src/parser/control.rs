@@ -26,31 +26,16 @@ where
 {
     #[derive(Clone)]
     enum Head {
-        In {
-            declared: bool,
-            name: crate::ast::Ident,
-            object: Expr,
-        },
-        Classic {
-            init: Option<ForInit>,
-            test: Option<Expr>,
-            update: Option<Expr>,
-        },
+        In { declared: bool, name: crate::ast::Ident, object: Expr },
+        Classic { init: Option<ForInit>, test: Option<Expr>, update: Option<Expr> },
     }
-    let declared = kw(Keyword::Var)
-        .to(true)
-        .or(let_or_const.clone().validate(|(c, s), _, emitter| {
-            emitter.emit(unsupported(c, s));
-            true
-        }));
+    let declared = kw(Keyword::Var).to(true).or(let_or_const.clone().validate(|(c, s), _, emitter| {
+        emitter.emit(unsupported(c, s));
+        true
+    }));
     // Once `var k in` or `var k of` is seen, the head is that form: the
     // classic form is not tried after it fails.
-    let in_ahead = declared
-        .clone()
-        .or_not()
-        .then(name(file))
-        .then(kw(Keyword::In))
-        .rewind();
+    let in_ahead = declared.clone().or_not().then(name(file)).then(kw(Keyword::In)).rewind();
     let of_ahead = declared.clone().or_not().then(name(file)).then(word("of")).rewind();
     let for_in = in_ahead
         .clone()
@@ -58,11 +43,7 @@ where
         .then(name(file))
         .then_ignore(kw(Keyword::In))
         .then(seq.clone())
-        .map(|((declared, name), object)| Head::In {
-            declared: declared.is_some(),
-            name,
-            object,
-        });
+        .map(|((declared, name), object)| Head::In { declared: declared.is_some(), name, object });
     let for_of = of_ahead
         .clone()
         .ignore_then(declared.or_not())
@@ -71,11 +52,7 @@ where
         .then(seq.clone())
         .validate(|(((declared, name), at), object), _, emitter| {
             emitter.emit(unsupported(Construct::ForOf, at));
-            Head::In {
-                declared: declared.is_some(),
-                name,
-                object,
-            }
+            Head::In { declared: declared.is_some(), name, object }
         });
     let init = choice((
         kw(Keyword::Var).ignore_then(declarators.clone()).map(ForInit::Var),
@@ -103,18 +80,8 @@ where
         .map_with(move |(head, body), e| {
             let body = Box::new(body);
             let kind = match head {
-                Head::In { declared, name, object } => StmtKind::ForIn {
-                    declared,
-                    name,
-                    object,
-                    body,
-                },
-                Head::Classic { init, test, update } => StmtKind::For {
-                    init,
-                    test,
-                    update,
-                    body,
-                },
+                Head::In { declared, name, object } => StmtKind::ForIn { declared, name, object, body },
+                Head::Classic { init, test, update } => StmtKind::For { init, test, update, body },
             };
             Stmt::new(kind, span(file, e.span()))
         })
@@ -138,29 +105,13 @@ where
         .or(kw(Keyword::Default).to(None))
         .map_with(|test, e| (test, e.span()))
         .then_ignore(punct(Punct::Colon));
-    let case_body = kw(Keyword::Case)
-        .or(kw(Keyword::Default))
-        .not()
-        .ignore_then(stmt)
-        .repeated()
-        .collect::<Vec<_>>();
-    let case = label.then(case_body).map_with(move |((test, at), body), e| {
-        (
-            at,
-            SwitchCase {
-                test,
-                body,
-                span: span(file, e.span()),
-            },
-        )
-    });
+    let case_body = kw(Keyword::Case).or(kw(Keyword::Default)).not().ignore_then(stmt).repeated().collect::<Vec<_>>();
+    let case = label
+        .then(case_body)
+        .map_with(move |((test, at), body), e| (at, SwitchCase { test, body, span: span(file, e.span()) }));
     kw(Keyword::Switch)
         .ignore_then(cond)
-        .then(
-            case.repeated()
-                .collect::<Vec<_>>()
-                .delimited_by(punct(Punct::LBrace), punct(Punct::RBrace)),
-        )
+        .then(case.repeated().collect::<Vec<_>>().delimited_by(punct(Punct::LBrace), punct(Punct::RBrace)))
         .validate(move |(discriminant, cases), e, emitter| {
             let mut seen_default = false;
             let mut kept = Vec::with_capacity(cases.len());
@@ -181,13 +132,7 @@ where
                 }
                 kept.push(case);
             }
-            Stmt::new(
-                StmtKind::Switch {
-                    discriminant,
-                    cases: kept,
-                },
-                span(file, e.span()),
-            )
+            Stmt::new(StmtKind::Switch { discriminant, cases: kept }, span(file, e.span()))
         })
         .boxed()
 }

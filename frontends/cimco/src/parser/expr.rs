@@ -90,10 +90,7 @@ where
                 }
                 seen.push(c);
             }
-            let kind = ExprKind::Regex {
-                pattern: pattern.to_string(),
-                flags: flags.to_string(),
-            };
+            let kind = ExprKind::Regex { pattern: pattern.to_string(), flags: flags.to_string() };
             Expr::new(kind, span(file, e.span()))
         },
     );
@@ -112,9 +109,7 @@ where
     let paren = seq
         .clone()
         .delimited_by(punct(Punct::LParen), punct(Punct::RParen))
-        .recover_with(via_parser(
-            balanced(Punct::LParen).map(move |at| Expr::error(span(file, at))),
-        ));
+        .recover_with(via_parser(balanced(Punct::LParen).map(move |at| Expr::error(span(file, at)))));
 
     let array = array(file, assign.clone());
     let object = object(file, assign.clone(), stmt.clone());
@@ -175,16 +170,11 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
         Token { kind: TokenKind::Ident(n), .. } => n,
         Token { kind: TokenKind::Keyword(k), .. } => k.as_str(),
     }
-    .map_with(move |n, e| Ident {
-        name: n.to_string(),
-        span: span(file, e.span()),
-    })
+    .map_with(move |n, e| Ident { name: n.to_string(), span: span(file, e.span()) })
     .labelled("a property name");
     let index = seq
         .delimited_by(punct(Punct::LBracket), punct(Punct::RBracket))
-        .recover_with(via_parser(
-            balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at))),
-        ));
+        .recover_with(via_parser(balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at)))));
     let member = punct(Punct::Dot).ignore_then(property).map(Suffix::Member);
     let optional = punct(Punct::QuestionDot)
         .map_with(|_, e| e.span())
@@ -198,47 +188,28 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
             suffix
         });
     let member_suffix = choice((member.clone(), index.clone().map(Suffix::Index))).boxed();
-    let suffix = choice((
-        member,
-        optional.boxed(),
-        index.map(Suffix::Index),
-        arguments(file, assign.clone()).map(Suffix::Call),
-    ))
-    .boxed();
+    let suffix =
+        choice((member, optional.boxed(), index.map(Suffix::Index), arguments(file, assign.clone()).map(Suffix::Call)))
+            .boxed();
 
     let apply = move |object: Expr, suffix: Suffix, e: &mut chumsky::input::MapExtra<'t, '_, I, Extra<'t, 's>>| {
         let at = span(file, e.span());
         let kind = match suffix {
-            Suffix::Member(property) => ExprKind::Member {
-                object: Box::new(object),
-                property,
-            },
-            Suffix::Index(index) => ExprKind::Index {
-                object: Box::new(object),
-                index: Box::new(index),
-            },
-            Suffix::Call(args) => ExprKind::Call {
-                callee: Box::new(object),
-                args,
-            },
+            Suffix::Member(property) => ExprKind::Member { object: Box::new(object), property },
+            Suffix::Index(index) => ExprKind::Index { object: Box::new(object), index: Box::new(index) },
+            Suffix::Call(args) => ExprKind::Call { callee: Box::new(object), args },
         };
         let s = e.span();
         cap_expr(Expr::new(kind, at), e.state(), s)
     };
     let new_callee = primary.clone().foldl_with(member_suffix.repeated(), apply);
-    let new = kw(Keyword::New)
-        .ignore_then(new_callee)
-        .then(arguments(file, assign).or_not())
-        .map_with(move |(callee, args), e| {
-            let kind = ExprKind::New {
-                callee: Box::new(callee),
-                args: args.unwrap_or_default(),
-            };
+    let new = kw(Keyword::New).ignore_then(new_callee).then(arguments(file, assign).or_not()).map_with(
+        move |(callee, args), e| {
+            let kind = ExprKind::New { callee: Box::new(callee), args: args.unwrap_or_default() };
             Expr::new(kind, span(file, e.span()))
-        });
-    choice((new.boxed(), primary))
-        .foldl_with(suffix.repeated(), apply)
-        .boxed()
+        },
+    );
+    choice((new.boxed(), primary)).foldl_with(suffix.repeated(), apply).boxed()
 }
 
 /// Postfix `++` / `--` (on the same line only).
@@ -253,11 +224,7 @@ fn postfix<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, chain: Boxed<'t, 's,
             None => target,
             Some(op) => {
                 check_target(&target, emitter);
-                let kind = ExprKind::Update {
-                    op,
-                    prefix: false,
-                    target: Box::new(target),
-                };
+                let kind = ExprKind::Update { op, prefix: false, target: Box::new(target) };
                 Expr::new(kind, span(file, e.span()))
             }
         })
@@ -294,11 +261,7 @@ fn unary<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, operand: Boxed<'t, 's,
     let awaiting = word("await")
         .to(Construct::Async)
         .or(word("yield").to(Construct::Generator))
-        .then_ignore(
-            any()
-                .filter(|t: &Token<'s>| !t.newline_before && t.starts_expression())
-                .rewind(),
-        );
+        .then_ignore(any().filter(|t: &Token<'s>| !t.newline_before && t.starts_expression()).rewind());
     let op = choice((
         punct(Punct::Bang).to(Prefix::Unary(UnaryOp::Not)),
         punct(Punct::Tilde).to(Prefix::Unary(UnaryOp::BitNot)),
@@ -316,13 +279,7 @@ fn unary<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, operand: Boxed<'t, 's,
         .foldr_with(operand, move |(op, at), operand: Expr, e| {
             let whole = span(file, at).to(operand.span);
             let node = match op {
-                Prefix::Unary(op) => Expr::new(
-                    ExprKind::Unary {
-                        op,
-                        operand: Box::new(operand),
-                    },
-                    whole,
-                ),
+                Prefix::Unary(op) => Expr::new(ExprKind::Unary { op, operand: Box::new(operand) }, whole),
                 Prefix::Update(op) => {
                     if !operand.is_assignable() {
                         e.emit(Rich::custom(
@@ -336,14 +293,7 @@ fn unary<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, operand: Boxed<'t, 's,
                             ),
                         ));
                     }
-                    Expr::new(
-                        ExprKind::Update {
-                            op,
-                            prefix: true,
-                            target: Box::new(operand),
-                        },
-                        whole,
-                    )
+                    Expr::new(ExprKind::Update { op, prefix: true, target: Box::new(operand) }, whole)
                 }
                 Prefix::Unsupported(construct) => {
                     e.emit(unsupported(construct, at));

@@ -28,25 +28,16 @@ where
     I: TokenInput<'t, 's>,
     S: Parser<'t, I, Stmt, Extra<'t, 's>> + Clone + 't,
 {
-    let rest = punct(Punct::Ellipsis)
-        .map_with(|_, e| e.span())
-        .then(name(file))
-        .validate(|(at, n), _, emitter| {
-            emitter.emit(unsupported(Construct::Spread, at));
-            n
-        });
-    let destructured = balanced(Punct::LBrace)
-        .or(balanced(Punct::LBracket))
-        .validate(move |at, _, emitter| {
-            emitter.emit(unsupported(Construct::Destructuring, at));
-            Ident {
-                name: String::new(),
-                span: span(file, at),
-            }
-        });
-    let plain = name(file)
-        .then(punct(Punct::Assign).ignore_then(assign).or_not())
-        .validate(|(n, default), e, emitter| {
+    let rest = punct(Punct::Ellipsis).map_with(|_, e| e.span()).then(name(file)).validate(|(at, n), _, emitter| {
+        emitter.emit(unsupported(Construct::Spread, at));
+        n
+    });
+    let destructured = balanced(Punct::LBrace).or(balanced(Punct::LBracket)).validate(move |at, _, emitter| {
+        emitter.emit(unsupported(Construct::Destructuring, at));
+        Ident { name: String::new(), span: span(file, at) }
+    });
+    let plain =
+        name(file).then(punct(Punct::Assign).ignore_then(assign).or_not()).validate(|(n, default), e, emitter| {
             if default.is_some() {
                 emitter.emit(unsupported(Construct::DefaultParam, e.span()));
             }
@@ -68,27 +59,18 @@ where
             if let Some(at) = star {
                 emitter.emit(unsupported(Construct::Generator, at));
             }
-            Function {
-                name,
-                params,
-                body,
-                body_span: span(file, body_span),
-                span: span(file, e.span()),
-            }
+            Function { name, params, body, body_span: span(file, body_span), span: span(file, e.span()) }
         })
         .boxed()
 }
 
 /// An optional comma before a closing bracket, reported when present.
 fn trailing_comma<'t, 's: 't, I: TokenInput<'t, 's>>() -> impl Parser<'t, I, (), Extra<'t, 's>> + Clone {
-    punct(Punct::Comma)
-        .map_with(|_, e| e.span())
-        .or_not()
-        .validate(|at, _, emitter| {
-            if let Some(at) = at {
-                emitter.emit(unsupported(Construct::TrailingComma, at));
-            }
-        })
+    punct(Punct::Comma).map_with(|_, e| e.span()).or_not().validate(|at, _, emitter| {
+        if let Some(at) = at {
+            emitter.emit(unsupported(Construct::TrailingComma, at));
+        }
+    })
 }
 
 /// `...x` where only `x` is allowed: reported, and `x` kept.
@@ -131,9 +113,7 @@ pub(super) fn array<'t, 's: 't, I: TokenInput<'t, 's>>(
             }
             Expr::new(ExprKind::Array(items), span(file, e.span()))
         })
-        .recover_with(via_parser(
-            balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at))),
-        ))
+        .recover_with(via_parser(balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at)))))
         .boxed()
 }
 
@@ -145,11 +125,7 @@ fn property_key<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> Boxed<'t, 's
         Token { kind: TokenKind::String(s), .. } => (strings::decode(s).0, KeyForm::String),
         Token { kind: TokenKind::Number(n), .. } => (js_number(n), KeyForm::Number),
     }
-    .map_with(move |(name, written), e| PropertyKey {
-        name,
-        written,
-        span: span(file, e.span()),
-    })
+    .map_with(move |(name, written), e| PropertyKey { name, written, span: span(file, e.span()) })
     .labelled("a property name")
     .boxed()
 }
@@ -165,49 +141,27 @@ where
     let error_value = move |key: PropertyKey, construct: Construct, at, emitter: &mut chumsky::input::Emitter<_>| {
         emitter.emit(unsupported(construct, at));
         let value = Expr::error(key.span);
-        Property {
-            span: key.span,
-            key,
-            value,
-        }
+        Property { span: key.span, key, value }
     };
     let accessor = word("get")
         .or(word("set"))
         .ignore_then(key.clone())
         .then(method_tail.clone())
         .validate(move |(key, _), e, emitter| error_value(key, Construct::GetterSetter, e.span(), emitter));
-    let computed = balanced(Punct::LBracket)
-        .then_ignore(punct(Punct::Colon))
-        .then(assign.clone())
-        .validate(move |(at, value), _, emitter| {
+    let computed = balanced(Punct::LBracket).then_ignore(punct(Punct::Colon)).then(assign.clone()).validate(
+        move |(at, value), _, emitter| {
             emitter.emit(unsupported(Construct::ComputedKey, at));
-            let key = PropertyKey {
-                name: String::new(),
-                written: KeyForm::String,
-                span: span(file, at),
-            };
-            Property {
-                span: key.span.to(value.span),
-                key,
-                value,
-            }
-        });
-    let spread = punct(Punct::Ellipsis)
-        .map_with(|_, e| e.span())
-        .then(assign.clone())
-        .validate(move |(at, value), _, emitter| {
+            let key = PropertyKey { name: String::new(), written: KeyForm::String, span: span(file, at) };
+            Property { span: key.span.to(value.span), key, value }
+        },
+    );
+    let spread = punct(Punct::Ellipsis).map_with(|_, e| e.span()).then(assign.clone()).validate(
+        move |(at, value), _, emitter| {
             emitter.emit(unsupported(Construct::Spread, at));
-            let key = PropertyKey {
-                name: String::new(),
-                written: KeyForm::String,
-                span: span(file, at),
-            };
-            Property {
-                span: key.span.to(value.span),
-                key,
-                value,
-            }
-        });
+            let key = PropertyKey { name: String::new(), written: KeyForm::String, span: span(file, at) };
+            Property { span: key.span.to(value.span), key, value }
+        },
+    );
     // After a key: `: value`, or (reported) a method or a shorthand.
     #[derive(Clone)]
     enum Tail {
@@ -218,18 +172,11 @@ where
     let tail = choice((
         punct(Punct::Colon).ignore_then(assign).map(Tail::Value),
         method_tail.to(Tail::Method),
-        punct(Punct::Comma)
-            .or(punct(Punct::RBrace))
-            .rewind()
-            .to(Tail::Shorthand),
+        punct(Punct::Comma).or(punct(Punct::RBrace)).rewind().to(Tail::Shorthand),
     ))
     .labelled("`:`");
     let keyed = key.then(tail).validate(move |(key, tail), e, emitter| match tail {
-        Tail::Value(value) => Property {
-            span: key.span.to(value.span),
-            key,
-            value,
-        },
+        Tail::Value(value) => Property { span: key.span.to(value.span), key, value },
         Tail::Method => error_value(key, Construct::Method, e.span(), emitter),
         Tail::Shorthand => error_value(key, Construct::Shorthand, e.span(), emitter),
     });
@@ -239,9 +186,7 @@ where
         .collect::<Vec<_>>()
         .delimited_by(punct(Punct::LBrace), punct(Punct::RBrace))
         .map_with(move |props, e| Expr::new(ExprKind::Object(props), span(file, e.span())))
-        .recover_with(via_parser(
-            balanced(Punct::LBrace).map(move |at| Expr::error(span(file, at))),
-        ))
+        .recover_with(via_parser(balanced(Punct::LBrace).map(move |at| Expr::error(span(file, at)))))
         .boxed()
 }
 
@@ -256,8 +201,6 @@ pub(super) fn arguments<'t, 's: 't, I: TokenInput<'t, 's>>(
         .collect::<Vec<_>>()
         .then_ignore(trailing_comma())
         .delimited_by(punct(Punct::LParen), punct(Punct::RParen))
-        .recover_with(via_parser(
-            balanced(Punct::LParen).map(move |at| vec![Expr::error(span(file, at))]),
-        ))
+        .recover_with(via_parser(balanced(Punct::LParen).map(move |at| vec![Expr::error(span(file, at))])))
         .boxed()
 }

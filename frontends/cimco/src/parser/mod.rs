@@ -131,16 +131,9 @@ pub(crate) fn parse_tokens<'t, 's: 't>(
     file: FileId,
     closers: HashMap<usize, usize>,
 ) -> (Option<Program>, Vec<Error<'t, 's>>, Option<SimpleSpan>) {
-    let input = tokens
-        .as_slice()
-        .map(SimpleSpan::from(text_len..text_len), |(t, s)| (t, s));
-    let mut state = ParseState {
-        closers,
-        ..ParseState::default()
-    };
-    let (program, errors) = stmt::program(file)
-        .parse_with_state(input, &mut state)
-        .into_output_errors();
+    let input = tokens.as_slice().map(SimpleSpan::from(text_len..text_len), |(t, s)| (t, s));
+    let mut state = ParseState { closers, ..ParseState::default() };
+    let (program, errors) = stmt::program(file).parse_with_state(input, &mut state).into_output_errors();
     (program, errors, state.too_deep)
 }
 
@@ -183,10 +176,7 @@ pub(crate) const TERMINATOR: &str = "`;`";
 pub(crate) fn terminator<'t, 's: 't, I: TokenInput<'t, 's>>() -> impl Parser<'t, I, (), Extra<'t, 's>> + Clone {
     punct(Punct::Semi)
         .ignored()
-        .or(any()
-            .filter(|t: &Token<'s>| t.newline_before || t.is_punct(Punct::RBrace))
-            .rewind()
-            .ignored())
+        .or(any().filter(|t: &Token<'s>| t.newline_before || t.is_punct(Punct::RBrace)).rewind().ignored())
         .or(end())
         .labelled(TERMINATOR)
 }
@@ -196,10 +186,7 @@ pub(crate) fn name<'t, 's: 't, I: TokenInput<'t, 's>>(
     file: FileId,
 ) -> impl Parser<'t, I, crate::ast::Ident, Extra<'t, 's>> + Clone {
     select! { Token { kind: TokenKind::Ident(n), .. } => n }
-        .map_with(move |n: &str, e| crate::ast::Ident {
-            name: n.to_string(),
-            span: span(file, e.span()),
-        })
+        .map_with(move |n: &str, e| crate::ast::Ident { name: n.to_string(), span: span(file, e.span()) })
         .labelled("a name")
 }
 

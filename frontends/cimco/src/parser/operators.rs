@@ -31,22 +31,8 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
                      e: &mut chumsky::input::MapExtra<'t, '_, I, Extra<'t, 's>>| {
         let whole = l.span.to(r.span);
         let node = match op {
-            Op::Binary(op) => Expr::new(
-                ExprKind::Binary {
-                    op,
-                    left: Box::new(l),
-                    right: Box::new(r),
-                },
-                whole,
-            ),
-            Op::Logical(op) => Expr::new(
-                ExprKind::Logical {
-                    op,
-                    left: Box::new(l),
-                    right: Box::new(r),
-                },
-                whole,
-            ),
+            Op::Binary(op) => Expr::new(ExprKind::Binary { op, left: Box::new(l), right: Box::new(r) }, whole),
+            Op::Logical(op) => Expr::new(ExprKind::Logical { op, left: Box::new(l), right: Box::new(r) }, whole),
             Op::Unsupported(construct) => {
                 e.emit(unsupported(construct, at));
                 Expr::error(whole)
@@ -61,10 +47,8 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
             .boxed()
     };
     use BinaryOp as B;
-    let or = ops(vec![
-        (Punct::PipePipe, Op::Logical(LogicalOp::Or)),
-        (Punct::Nullish, Op::Unsupported(Construct::Nullish)),
-    ]);
+    let or =
+        ops(vec![(Punct::PipePipe, Op::Logical(LogicalOp::Or)), (Punct::Nullish, Op::Unsupported(Construct::Nullish))]);
     let and = ops(vec![(Punct::AmpAmp, Op::Logical(LogicalOp::And))]);
     let bit_or = ops(vec![(Punct::Pipe, Op::Binary(B::BitOr))]);
     let bit_xor = ops(vec![(Punct::Caret, Op::Binary(B::BitXor))]);
@@ -81,21 +65,14 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
         (Punct::Lt, Op::Binary(B::Lt)),
         (Punct::Gt, Op::Binary(B::Gt)),
     ])
-    .or(kw(Keyword::In)
-        .to(Op::Unsupported(Construct::In))
-        .map_with(|op, e| (op, e.span())))
-    .or(kw(Keyword::Instanceof)
-        .to(Op::Unsupported(Construct::Instanceof))
-        .map_with(|op, e| (op, e.span())));
+    .or(kw(Keyword::In).to(Op::Unsupported(Construct::In)).map_with(|op, e| (op, e.span())))
+    .or(kw(Keyword::Instanceof).to(Op::Unsupported(Construct::Instanceof)).map_with(|op, e| (op, e.span())));
     let shift = ops(vec![
         (Punct::UShr, Op::Binary(B::UShr)),
         (Punct::Shl, Op::Binary(B::Shl)),
         (Punct::Shr, Op::Binary(B::Shr)),
     ]);
-    let additive = ops(vec![
-        (Punct::Plus, Op::Binary(B::Add)),
-        (Punct::Minus, Op::Binary(B::Sub)),
-    ]);
+    let additive = ops(vec![(Punct::Plus, Op::Binary(B::Add)), (Punct::Minus, Op::Binary(B::Sub))]);
     let multiplicative = ops(vec![
         (Punct::Star, Op::Binary(B::Mul)),
         (Punct::Slash, Op::Binary(B::Div)),
@@ -187,19 +164,10 @@ where
         let (op, construct) = op.unwrap_or((AssignOp::Assign, None));
         (op, construct, e.span())
     });
-    let assignment = op
-        .then(assign.clone())
-        .map(|((op, construct, at), value)| Tail::Assign(op, construct, at, value));
+    let assignment = op.then(assign.clone()).map(|((op, construct, at), value)| Tail::Assign(op, construct, at, value));
     let brace = punct(Punct::LBrace).rewind();
-    let arrow_body = brace
-        .clone()
-        .ignore_then(braced(stmt))
-        .ignored()
-        .or(brace.not().ignore_then(assign).ignored());
-    let arrow = punct(Punct::Arrow)
-        .map_with(|_, e| e.span())
-        .then_ignore(arrow_body)
-        .map(Tail::Arrow);
+    let arrow_body = brace.clone().ignore_then(braced(stmt)).ignored().or(brace.not().ignore_then(assign).ignored());
+    let arrow = punct(Punct::Arrow).map_with(|_, e| e.span()).then_ignore(arrow_body).map(Tail::Arrow);
     conditional
         .then(choice((assignment, arrow)).or_not())
         .validate(move |(target, tail), e, emitter| match tail {
@@ -213,11 +181,7 @@ where
                     emitter.emit(unsupported(construct, at));
                 }
                 check_target(&target, emitter);
-                let kind = ExprKind::Assign {
-                    op,
-                    target: Box::new(target),
-                    value: Box::new(value),
-                };
+                let kind = ExprKind::Assign { op, target: Box::new(target), value: Box::new(value) };
                 Expr::new(kind, span(file, e.span()))
             }
         })

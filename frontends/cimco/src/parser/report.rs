@@ -19,11 +19,7 @@ pub(crate) fn diagnostics(
     brackets: &Brackets,
     too_deep: Option<SimpleSpan>,
 ) -> Vec<Diagnostic> {
-    let mut out: Vec<Diagnostic> = errors
-        .iter()
-        .filter(|e| !is_internal(e))
-        .map(|e| one(e, file, brackets))
-        .collect();
+    let mut out: Vec<Diagnostic> = errors.iter().filter(|e| !is_internal(e)).map(|e| one(e, file, brackets)).collect();
     if let Some(at) = too_deep {
         out.push(too_deep_diagnostic(span(file, at)));
     }
@@ -45,10 +41,7 @@ fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets) -> Diagnostic {
                     .at(at, "the file ends here");
                     if let Some((open, open_at)) = brackets.unclosed.last() {
                         diag = diag
-                            .also(
-                                span(file, *open_at),
-                                format!("this `{}` is never closed", open.as_str()),
-                            )
+                            .also(span(file, *open_at), format!("this `{}` is never closed", open.as_str()))
                             .help("check that every `(`, `[` and `{` has its closing bracket");
                     }
                     diag
@@ -75,8 +68,7 @@ fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets) -> Diagnostic {
 }
 
 fn expects_terminator(e: &Error<'_, '_>) -> bool {
-    e.expected()
-        .any(|p| matches!(p, RichPattern::Label(l) if l == TERMINATOR))
+    e.expected().any(|p| matches!(p, RichPattern::Label(l) if l == TERMINATOR))
 }
 
 /// Tokens that begin a statement, so that "missing `;`" is the likely
@@ -154,9 +146,7 @@ fn continues_expression(t: &Token<'_>) -> bool {
 fn describe_expected(expected: &[RichPattern<'_, Token<'_>>]) -> String {
     let mut items: Vec<String> = Vec::new();
     let mut operators = 0;
-    let after_expression = expected
-        .iter()
-        .any(|p| matches!(p, RichPattern::Token(t) if is_operator(t)));
+    let after_expression = expected.iter().any(|p| matches!(p, RichPattern::Token(t) if is_operator(t)));
     for p in expected {
         let item = match p {
             RichPattern::Token(t) => {

@@ -43,10 +43,7 @@ pub(super) fn program<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> impl P
         .repeated()
         .collect::<Vec<_>>()
         .then_ignore(end())
-        .map_with(move |body, e| Program {
-            body,
-            span: span(file, e.span()),
-        })
+        .map_with(move |body, e| Program { body, span: span(file, e.span()) })
 }
 
 /// `{ statements }`, with the span of the braces. At the end of the file a
@@ -92,32 +89,19 @@ where
     let cond = seq
         .clone()
         .delimited_by(punct(Punct::LParen), punct(Punct::RParen))
-        .recover_with(via_parser(
-            super::balanced(Punct::LParen).map(move |s| Expr::error(at(s))),
-        ))
+        .recover_with(via_parser(super::balanced(Punct::LParen).map(move |s| Expr::error(at(s)))))
         .boxed();
 
     let declarator = name(file)
         .then(punct(Punct::Assign).ignore_then(assign.clone()).or_not())
-        .map_with(move |(name, init), e| VarDeclarator {
-            name,
-            init,
-            span: at(e.span()),
-        });
+        .map_with(move |(name, init), e| VarDeclarator { name, init, span: at(e.span()) });
     let destructured = super::balanced(Punct::LBrace)
         .or(super::balanced(Punct::LBracket))
         .then(punct(Punct::Assign).ignore_then(assign.clone()).or_not())
         .validate(move |(s, init), e, emitter| {
             emitter.emit(unsupported(Construct::Destructuring, s));
-            let name = crate::ast::Ident {
-                name: String::new(),
-                span: at(s),
-            };
-            VarDeclarator {
-                name,
-                init,
-                span: at(e.span()),
-            }
+            let name = crate::ast::Ident { name: String::new(), span: at(s) };
+            VarDeclarator { name, init, span: at(e.span()) }
         });
     let declarators = declarator
         .or(destructured)
@@ -147,14 +131,12 @@ where
         .ignore_then(declarators.clone())
         .then_ignore(terminator())
         .map_with(move |decls, e| mk(StmtKind::Var(decls), e.span()));
-    let let_const = let_or_const
-        .clone()
-        .then(declarators.clone())
-        .then_ignore(terminator())
-        .validate(move |((c, s), decls), e, emitter| {
+    let let_const = let_or_const.clone().then(declarators.clone()).then_ignore(terminator()).validate(
+        move |((c, s), decls), e, emitter| {
             emitter.emit(unsupported(c, s));
             mk(StmtKind::Var(decls), e.span())
-        });
+        },
+    );
     let function = function_parts(file, stmt.clone(), assign.clone()).validate(move |f, e, emitter| {
         if f.name.is_none() {
             emitter.emit(Rich::custom(
@@ -184,41 +166,19 @@ where
         .then(kw(Keyword::Else).ignore_then(stmt.clone()).or_not())
         .map_with(move |((first, mut rest), otherwise), e| {
             rest.insert(0, first);
-            mk(
-                StmtKind::If {
-                    branches: rest,
-                    otherwise: otherwise.map(Box::new),
-                },
-                e.span(),
-            )
+            mk(StmtKind::If { branches: rest, otherwise: otherwise.map(Box::new) }, e.span())
         });
 
     let while_ = kw(Keyword::While)
         .ignore_then(cond.clone())
         .then(stmt.clone())
-        .map_with(move |(cond, body), e| {
-            mk(
-                StmtKind::While {
-                    cond,
-                    body: Box::new(body),
-                },
-                e.span(),
-            )
-        });
+        .map_with(move |(cond, body), e| mk(StmtKind::While { cond, body: Box::new(body) }, e.span()));
     let do_while = kw(Keyword::Do)
         .ignore_then(stmt.clone())
         .then_ignore(kw(Keyword::While))
         .then(cond.clone())
         .then_ignore(punct(Punct::Semi).or_not())
-        .map_with(move |(body, cond), e| {
-            mk(
-                StmtKind::DoWhile {
-                    body: Box::new(body),
-                    cond,
-                },
-                e.span(),
-            )
-        });
+        .map_with(move |(body, cond), e| mk(StmtKind::DoWhile { body: Box::new(body), cond }, e.span()));
 
     let for_ = for_statement(file, stmt.clone(), seq.clone(), declarators, let_or_const);
     let switch = switch_statement(file, stmt.clone(), seq.clone(), cond.clone());
@@ -226,11 +186,7 @@ where
     let catch = kw(Keyword::Catch)
         .ignore_then(name(file).delimited_by(punct(Punct::LParen), punct(Punct::RParen)))
         .then(body.clone())
-        .map_with(move |(param, (body, _)), e| CatchClause {
-            param,
-            body,
-            span: at(e.span()),
-        });
+        .map_with(move |(param, (body, _)), e| CatchClause { param, body, span: at(e.span()) });
     let try_ = kw(Keyword::Try)
         .ignore_then(body.clone())
         .then(catch.or_not())
@@ -247,19 +203,12 @@ where
                     ),
                 ));
             }
-            let kind = StmtKind::Try {
-                block,
-                handler,
-                finalizer: finalizer.map(|(b, _)| b),
-            };
+            let kind = StmtKind::Try { block, handler, finalizer: finalizer.map(|(b, _)| b) };
             mk(kind, e.span())
         });
 
-    let label_after = same_line()
-        .ignore_then(name(file))
-        .map_with(|_, e| e.span())
-        .or_not()
-        .validate(|label, _, emitter| {
+    let label_after =
+        same_line().ignore_then(name(file)).map_with(|_, e| e.span()).or_not().validate(|label, _, emitter| {
             if let Some(s) = label {
                 emitter.emit(unsupported(Construct::Label, s));
             }

@@ -28,14 +28,12 @@ where
         Stmt::error(span(file, whole))
     };
     let keyword_at = |k: Keyword| kw(k).map_with(|_, e| e.span());
-    let label = name(file)
-        .map_with(|_, e| e.span())
-        .then_ignore(punct(Punct::Colon))
-        .then(stmt.clone())
-        .validate(|(s, inner), _, emitter| {
+    let label = name(file).map_with(|_, e| e.span()).then_ignore(punct(Punct::Colon)).then(stmt.clone()).validate(
+        |(s, inner), _, emitter| {
             emitter.emit(unsupported(Construct::Label, s));
             inner
-        });
+        },
+    );
     let with = keyword_at(Keyword::With)
         .then_ignore(cond)
         .then_ignore(stmt.clone())
@@ -48,20 +46,15 @@ where
         .then_ignore(super::balanced(Punct::LBrace))
         .validate(move |s, e, emitter| error(Construct::Class, s, e.span(), emitter));
     let import = keyword_at(Keyword::Import)
-        .then_ignore(
-            any()
-                .filter(|t: &Token<'s>| !t.newline_before && !t.is_punct(Punct::Semi))
-                .repeated(),
-        )
+        .then_ignore(any().filter(|t: &Token<'s>| !t.newline_before && !t.is_punct(Punct::Semi)).repeated())
         .then_ignore(terminator())
         .validate(move |s, e, emitter| error(Construct::Module, s, e.span(), emitter));
-    let export = keyword_at(Keyword::Export)
-        .then_ignore(kw(Keyword::Default).or_not())
-        .then(stmt.clone())
-        .validate(|(s, inner), _, emitter| {
+    let export = keyword_at(Keyword::Export).then_ignore(kw(Keyword::Default).or_not()).then(stmt.clone()).validate(
+        |(s, inner), _, emitter| {
             emitter.emit(unsupported(Construct::Module, s));
             inner
-        });
+        },
+    );
     let async_function = word("async")
         .map_with(|_, e| e.span())
         .then_ignore(same_line().then(kw(Keyword::Function).rewind()))

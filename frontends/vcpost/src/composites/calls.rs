@@ -296,14 +296,25 @@ macro_rules! calls {
 }
 
 calls!(LayingCall {
-    units: [CamHeader, CamTrailer, PlyHeader, PulloutHeader, PulloutTrailer, OffForm, OnForm, TraverseHeader,
-        TraverseTrailer, LinkTrailer, PacketHeader, RestartHeader, RestartTrailer, PacketTrailer, PlyTrailer],
+    units: [
+        CamHeader,
+        CamTrailer,
+        PlyHeader,
+        PulloutHeader,
+        PulloutTrailer,
+        OffForm,
+        OnForm,
+        TraverseHeader,
+        TraverseTrailer,
+        LinkTrailer,
+        PacketHeader,
+        RestartHeader,
+        RestartTrailer,
+        PacketTrailer,
+        PlyTrailer
+    ],
     data: [Modals, Extent, Length, CamPoint, LinkHeader, MoveTo, TraverseTo, RestartBuffer, GoTo],
     named: [Option]
 });
 
-calls!(ProbingCall {
-    units: [ProgramHeader, ProgramTrailer],
-    data: [Modals, SetAngle, MoveTo],
-    named: [Probe]
-});
+calls!(ProbingCall { units: [ProgramHeader, ProgramTrailer], data: [Modals, SetAngle, MoveTo], named: [Probe] });

@@ -76,7 +76,9 @@ fn unit(name: &str, v: f64, span: Span, diagnostics: &mut Vec<Diagnostic>) {
 
 fn goto(p: &PacketPoint, span: Span, diagnostics: &mut Vec<Diagnostic>) {
     add_cut(&p.AddCutA, &p.AddCutB, p.AddCutI, p.AddCutJ, span, diagnostics);
-    for (name, list) in [("getNthLength1", &p.getNthLength1), ("getNthLength2", &p.getNthLength2), ("getNthLength3", &p.getNthLength3)] {
+    for (name, list) in
+        [("getNthLength1", &p.getNthLength1), ("getNthLength2", &p.getNthLength2), ("getNthLength3", &p.getNthLength3)]
+    {
         let Some(list) = list else { continue };
         if list_too_long(name, list, span, diagnostics) {
             continue;
@@ -132,9 +134,9 @@ fn add_cut(a: &str, b: &str, i: f64, j: f64, span: Span, diagnostics: &mut Vec<D
     };
     if let Some(message) = problem {
         diagnostics.push(
-            Diagnostic::warning("CP008", message)
-                .at(span, "in this call")
-                .help("seed 003: AddCutA \"0001111111111100\", AddCutB \"0011111111111000\", AddCutI 8188, AddCutJ 16376"),
+            Diagnostic::warning("CP008", message).at(span, "in this call").help(
+                "seed 003: AddCutA \"0001111111111100\", AddCutB \"0011111111111000\", AddCutI 8188, AddCutJ 16376",
+            ),
         );
     }
 }

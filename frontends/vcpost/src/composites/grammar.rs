@@ -37,17 +37,27 @@ pub enum State {
     // Laying.
     AfterModals,
     /// After an Extent: Length calls follow; `ply` says whose.
-    Lengths { ply: bool },
+    Lengths {
+        ply: bool,
+    },
     /// The ply's Length calls are done.
     PlyLengths,
     Cam,
     CamDone,
     AfterPlyHeader,
-    Link { kind: i8 },
-    Pullout { kind: i8 },
-    Traverse { kind: i8 },
+    Link {
+        kind: i8,
+    },
+    Pullout {
+        kind: i8,
+    },
+    Traverse {
+        kind: i8,
+    },
     /// After a LinkTrailer of a link of this kind.
-    AfterLink { kind: i8 },
+    AfterLink {
+        kind: i8,
+    },
     /// A packet's Extent and Lengths are done; PacketHeader follows.
     PacketReady,
     Packet,
@@ -235,15 +245,46 @@ mod tests {
     #[test]
     fn a_ply_with_two_packets() {
         let ply = [
-            ("Modals", 0.0), ("Extent", 0.0), ("Length", 1.0), ("Length", 2.0), ("Length", 0.0),
-            ("CamHeader", 0.0), ("CamPoint", 0.0), ("CamTrailer", 0.0), ("PlyHeader", 0.0),
-            ("LinkHeader", -1.0), ("MoveTo", 0.0), ("OnForm", 0.0), ("LinkTrailer", 0.0),
-            ("Extent", 0.0), ("Length", 0.0), ("PacketHeader", 0.0), ("GoTo", 0.0), ("Option", 0.0),
-            ("RestartHeader", 0.0), ("RestartBuffer", 0.0), ("RestartTrailer", 0.0), ("GoTo", 0.0), ("PacketTrailer", 0.0),
-            ("LinkHeader", 0.0), ("PulloutHeader", 0.0), ("MoveTo", 0.0), ("PulloutTrailer", 0.0),
-            ("TraverseHeader", 0.0), ("TraverseTo", 0.0), ("TraverseTrailer", 0.0), ("MoveTo", 0.0), ("LinkTrailer", 0.0),
-            ("PacketHeader", 0.0), ("GoTo", 0.0), ("PacketTrailer", 0.0),
-            ("LinkHeader", 1.0), ("OffForm", 0.0), ("MoveTo", 0.0), ("LinkTrailer", 0.0), ("PlyTrailer", 0.0),
+            ("Modals", 0.0),
+            ("Extent", 0.0),
+            ("Length", 1.0),
+            ("Length", 2.0),
+            ("Length", 0.0),
+            ("CamHeader", 0.0),
+            ("CamPoint", 0.0),
+            ("CamTrailer", 0.0),
+            ("PlyHeader", 0.0),
+            ("LinkHeader", -1.0),
+            ("MoveTo", 0.0),
+            ("OnForm", 0.0),
+            ("LinkTrailer", 0.0),
+            ("Extent", 0.0),
+            ("Length", 0.0),
+            ("PacketHeader", 0.0),
+            ("GoTo", 0.0),
+            ("Option", 0.0),
+            ("RestartHeader", 0.0),
+            ("RestartBuffer", 0.0),
+            ("RestartTrailer", 0.0),
+            ("GoTo", 0.0),
+            ("PacketTrailer", 0.0),
+            ("LinkHeader", 0.0),
+            ("PulloutHeader", 0.0),
+            ("MoveTo", 0.0),
+            ("PulloutTrailer", 0.0),
+            ("TraverseHeader", 0.0),
+            ("TraverseTo", 0.0),
+            ("TraverseTrailer", 0.0),
+            ("MoveTo", 0.0),
+            ("LinkTrailer", 0.0),
+            ("PacketHeader", 0.0),
+            ("GoTo", 0.0),
+            ("PacketTrailer", 0.0),
+            ("LinkHeader", 1.0),
+            ("OffForm", 0.0),
+            ("MoveTo", 0.0),
+            ("LinkTrailer", 0.0),
+            ("PlyTrailer", 0.0),
         ];
         assert_eq!(run(laying, &ply), Ok(State::Done));
     }
@@ -259,7 +300,14 @@ mod tests {
         lengths_open.extend([("Length", 3.0), ("PlyHeader", 0.0)]);
         assert_eq!(run(laying, &lengths_open), Err(3));
         assert_eq!(run(probing, &[("Modals", 0.0), ("ProgramHeader", 0.0), ("MoveTo", 0.0)]), Err(2));
-        let points = [("Modals", 0.0), ("ProgramHeader", 0.0), ("SetAngle", 0.0), ("MoveTo", 0.0), ("Probe", 0.0), ("ProgramTrailer", 0.0)];
+        let points = [
+            ("Modals", 0.0),
+            ("ProgramHeader", 0.0),
+            ("SetAngle", 0.0),
+            ("MoveTo", 0.0),
+            ("Probe", 0.0),
+            ("ProgramTrailer", 0.0),
+        ];
         assert_eq!(run(probing, &points), Ok(State::Done));
     }
 }

@@ -117,8 +117,11 @@ impl PostFacts {
         };
         match self.subs.get(&name.to_ascii_uppercase()) {
             None => Err(with(
-                Diagnostic::error("CP005", format!("the post has no Sub `{name}`"))
-                    .help(format!("an {} Sub is declared with `Sub {name}()` and a `' #{}` comment", want.as_str(), want.as_str())),
+                Diagnostic::error("CP005", format!("the post has no Sub `{name}`")).help(format!(
+                    "an {} Sub is declared with `Sub {name}()` and a `' #{}` comment",
+                    want.as_str(),
+                    want.as_str()
+                )),
                 "named here",
             )),
             Some(k) if *k != Some(want) => Ok(Some(with(
@@ -139,7 +142,12 @@ pub fn primers(post: &Post, names: &[String], diagnostics: &mut Vec<Diagnostic>)
         match facts.named(name, SubKeyword::Primer, None) {
             Ok(warning) => {
                 diagnostics.extend(warning);
-                out.push(SubCall { sub: name.clone(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Warn });
+                out.push(SubCall {
+                    sub: name.clone(),
+                    vars: Vec::new(),
+                    span: Span::default(),
+                    missing: MissingSub::Warn,
+                });
             }
             Err(d) => diagnostics.push(d),
         }
@@ -164,7 +172,12 @@ pub struct CompositesReader<R> {
 }
 
 /// Opens an event file for a post; `primers` are the calls to make first.
-pub fn open(path: &Path, sources: &mut SourceMap, post: &Post, primers: Vec<SubCall>) -> Result<CompositesReader<BufReader<File>>, Diagnostic> {
+pub fn open(
+    path: &Path,
+    sources: &mut SourceMap,
+    post: &Post,
+    primers: Vec<SubCall>,
+) -> Result<CompositesReader<BufReader<File>>, Diagnostic> {
     let f = File::open(path)
         .map_err(|e| Diagnostic::error("CP010", format!("cannot open the event file `{}`: {e}", path.display())))?;
     let id = sources.add_streamed(path.display().to_string());
@@ -178,7 +191,13 @@ pub fn open(path: &Path, sources: &mut SourceMap, post: &Post, primers: Vec<SubC
 }
 
 impl<R: BufRead> CompositesReader<R> {
-    pub fn new(input: R, syntax: Option<Syntax>, file: FileId, post: &Post, primers: Vec<SubCall>) -> CompositesReader<R> {
+    pub fn new(
+        input: R,
+        syntax: Option<Syntax>,
+        file: FileId,
+        post: &Post,
+        primers: Vec<SubCall>,
+    ) -> CompositesReader<R> {
         let ron = ron::Options::default().with_default_extension(
             ron::extensions::Extensions::IMPLICIT_SOME | ron::extensions::Extensions::UNWRAP_VARIANT_NEWTYPES,
         );
@@ -228,8 +247,14 @@ impl<R: BufRead> CompositesReader<R> {
         None
     }
 
-    fn parse<T: serde::de::DeserializeOwned>(&mut self, text: &str, span: Span, code: &'static str) -> Result<T, Diagnostic> {
-        let syntax = *self.syntax.get_or_insert(if text.starts_with(['{', '"']) { Syntax::JsonLines } else { Syntax::Ron });
+    fn parse<T: serde::de::DeserializeOwned>(
+        &mut self,
+        text: &str,
+        span: Span,
+        code: &'static str,
+    ) -> Result<T, Diagnostic> {
+        let syntax =
+            *self.syntax.get_or_insert(if text.starts_with(['{', '"']) { Syntax::JsonLines } else { Syntax::Ron });
         let (message, col) = match syntax {
             Syntax::Ron => match self.ron.from_str::<T>(text) {
                 Ok(v) => return Ok(v),
@@ -249,7 +274,12 @@ impl<R: BufRead> CompositesReader<R> {
     }
 
     /// Checks one call against the sequence and the post, and makes its Sub call.
-    fn accept<C: Call + check::Checked>(&mut self, call: C, span: Span, diagnostics: &mut Vec<Diagnostic>) -> Option<SubCall> {
+    fn accept<C: Call + check::Checked>(
+        &mut self,
+        call: C,
+        span: Span,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Option<SubCall> {
         let step = Step { routine: call.routine(), number: call.number() };
         let probing = self.kind == Some(Application::Probing);
         let next = if probing { grammar::probing(self.state, step) } else { grammar::laying(self.state, step) };
@@ -280,8 +310,22 @@ impl<R: BufRead> CompositesReader<R> {
         if dropped {
             return None;
         }
-        let core = ["Modals", "PlyHeader", "LinkHeader", "MoveTo", "LinkTrailer", "PacketHeader", "GoTo", "PacketTrailer",
-            "PlyTrailer", "ProgramHeader", "SetAngle", "ProgramTrailer", "Option", "Probe"];
+        let core = [
+            "Modals",
+            "PlyHeader",
+            "LinkHeader",
+            "MoveTo",
+            "LinkTrailer",
+            "PacketHeader",
+            "GoTo",
+            "PacketTrailer",
+            "PlyTrailer",
+            "ProgramHeader",
+            "SetAngle",
+            "ProgramTrailer",
+            "Option",
+            "Probe",
+        ];
         let missing = if core.contains(&routine) { MissingSub::Warn } else { MissingSub::Skip };
         Some(SubCall { sub: call.sub().to_string(), vars: call.vars(), span, missing })
     }
@@ -303,7 +347,12 @@ impl<R: BufRead> CallSource for CompositesReader<R> {
                             match self.facts.named(name, SubKeyword::Primer, Some(span)) {
                                 Ok(w) => {
                                     diagnostics.extend(w);
-                                    let call = SubCall { sub: name.clone(), vars: Vec::new(), span, missing: MissingSub::Warn };
+                                    let call = SubCall {
+                                        sub: name.clone(),
+                                        vars: Vec::new(),
+                                        span,
+                                        missing: MissingSub::Warn,
+                                    };
                                     self.pending.push_front(call);
                                 }
                                 Err(d) => diagnostics.push(d),
@@ -323,8 +372,12 @@ impl<R: BufRead> CallSource for CompositesReader<R> {
                 continue;
             };
             let call = match kind {
-                Application::Laying => self.parse::<LayingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics)),
-                Application::Probing => self.parse::<ProbingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics)),
+                Application::Laying => {
+                    self.parse::<LayingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics))
+                }
+                Application::Probing => {
+                    self.parse::<ProbingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics))
+                }
             };
             match call {
                 Ok(Some(c)) => return Some(c),

@@ -50,13 +50,21 @@ pub(super) fn line(tokens: &[Token], span: Span) -> Vec<LineItem> {
         (Some(Kw::End), Some(Kw::If)) => LineItem::EndIf { span },
         (Some(Kw::End), Some(Kw::Select)) => LineItem::EndSelect { span },
         (Some(Kw::End), Some(Kw::While)) => LineItem::LoopEnd { kind: LoopKind::While, test: None, span },
-        (Some(Kw::End), k) if proc_kind(k).is_some() => LineItem::ProcEnd { kind: proc_kind(k).unwrap_or(ProcKind::Sub), span },
-        (k, _) if proc_kind(k).is_some() => {
-            LineItem::ProcStart { kind: proc_kind(k).unwrap_or(ProcKind::Sub), name: name_after(1), params: Vec::new(), span }
+        (Some(Kw::End), k) if proc_kind(k).is_some() => {
+            LineItem::ProcEnd { kind: proc_kind(k).unwrap_or(ProcKind::Sub), span }
         }
-        (Some(Kw::Public | Kw::Private), k) if proc_kind(k).is_some() => {
-            LineItem::ProcStart { kind: proc_kind(k).unwrap_or(ProcKind::Sub), name: name_after(2), params: Vec::new(), span }
-        }
+        (k, _) if proc_kind(k).is_some() => LineItem::ProcStart {
+            kind: proc_kind(k).unwrap_or(ProcKind::Sub),
+            name: name_after(1),
+            params: Vec::new(),
+            span,
+        },
+        (Some(Kw::Public | Kw::Private), k) if proc_kind(k).is_some() => LineItem::ProcStart {
+            kind: proc_kind(k).unwrap_or(ProcKind::Sub),
+            name: name_after(2),
+            params: Vec::new(),
+            span,
+        },
         _ => LineItem::Stmt(Stmt { kind: StmtKind::Error, span }),
     };
     vec![item]

@@ -30,11 +30,7 @@ fn load(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mut Vec<Diag
     let file = sources.add(path.display().to_string(), text);
     let (ast, parse_diags) = parse(sources.text(file).unwrap_or(""), file);
     diags.extend(parse_diags);
-    Loaded {
-        ast,
-        encoding,
-        path: path.to_path_buf(),
-    }
+    Loaded { ast, encoding, path: path.to_path_buf() }
 }
 
 /// The file named by the last `POST_BASE` of a post, and where it is named.
@@ -79,29 +75,16 @@ fn resolve(post: &Path, name: &str) -> PathBuf {
     };
     let wanted = file_name.to_string_lossy().into_owned();
     let parent = parent.to_path_buf();
-    let lookup = if parent.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        parent.as_path()
-    };
+    let lookup = if parent.as_os_str().is_empty() { Path::new(".") } else { parent.as_path() };
     let Ok(entries) = std::fs::read_dir(lookup) else {
         return exact;
     };
-    let found = entries.flatten().find(|e| {
-        e.file_name()
-            .to_string_lossy()
-            .eq_ignore_ascii_case(&wanted)
-    });
+    let found = entries.flatten().find(|e| e.file_name().to_string_lossy().eq_ignore_ascii_case(&wanted));
     found.map_or(exact, |e| parent.join(e.file_name()))
 }
 
 /// The post and its bases, the deepest base first.
-pub fn load_chain(
-    path: &Path,
-    bytes: &[u8],
-    sources: &mut SourceMap,
-    diags: &mut Vec<Diagnostic>,
-) -> Vec<Loaded> {
+pub fn load_chain(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mut Vec<Diagnostic>) -> Vec<Loaded> {
     let mut chain = vec![load(path, bytes, sources, diags)];
     let mut seen = vec![std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())];
     while let Some(current) = chain.last() {
@@ -121,9 +104,7 @@ pub fn load_chain(
         if chain.len() > MAX_DEPTH {
             diags.push(
                 Code::BaseChain
-                    .diag(format!(
-                        "more than {MAX_DEPTH} POST_BASE files in a chain; the chain stops here"
-                    ))
+                    .diag(format!("more than {MAX_DEPTH} POST_BASE files in a chain; the chain stops here"))
                     .at(at, "too deep"),
             );
             break;
@@ -144,7 +125,9 @@ pub fn load_chain(
                     Code::MissingBase
                         .diag(format!("cannot read the POST_BASE file {}: {why}", base.display()))
                         .at(at, "base post not found")
-                        .note("the post compiles without its base: sections, VARs and statements of the base are missing")
+                        .note(
+                            "the post compiles without its base: sections, VARs and statements of the base are missing",
+                        )
                         .help("put the base post in the same folder as this post"),
                 );
                 break;

@@ -6,9 +6,7 @@
 
 use postc_ir::{Diagnostic, Modality, Quantity, Section, Span};
 
-use crate::ast::{
-    BeginLine, ItemKind, OutputMode, PostFile, QuotedText, Spanned, TextPiece, VarBody, VarFields,
-};
+use crate::ast::{BeginLine, ItemKind, OutputMode, PostFile, QuotedText, Spanned, TextPiece, VarBody, VarFields};
 use crate::decode::Encoding;
 use crate::diagnostics::Code;
 use crate::lower::globals::interpret;
@@ -26,12 +24,7 @@ enum Target {
 }
 
 /// Applies one file to the model.
-pub fn collect(
-    model: &mut Model,
-    post: &PostFile,
-    encoding: Encoding,
-    diags: &mut Vec<Diagnostic>,
-) {
+pub fn collect(model: &mut Model, post: &PostFile, encoding: Encoding, diags: &mut Vec<Diagnostic>) {
     let mut target = Target::Nowhere;
     for item in &post.items {
         match &item.kind {
@@ -114,12 +107,7 @@ fn lines_of<'m>(
 }
 
 /// `begin NAME`: starts (or replaces) a section.
-fn begin_section(
-    model: &mut Model,
-    begin: &BeginLine,
-    line: Span,
-    diags: &mut Vec<Diagnostic>,
-) -> Target {
+fn begin_section(model: &mut Model, begin: &BeginLine, line: Span, diags: &mut Vec<Diagnostic>) -> Target {
     let Some(first) = begin.words.first() else {
         return Target::Dropped;
     };
@@ -128,10 +116,7 @@ fn begin_section(
     let section = if let Some(s) = Section::from_name(&joined).filter(|_| begin.words.len() > 1) {
         diags.push(
             Code::BlankInSectionName
-                .diag(format!(
-                    "stray blank in the section name; read as {}",
-                    s.name()
-                ))
+                .diag(format!("stray blank in the section name; read as {}", s.name()))
                 .at(first.span.to(last), "blank inside the name")
                 .help(format!("write `begin {}`", s.name())),
         );
@@ -157,11 +142,7 @@ fn begin_section(
         );
         return Target::Dropped;
     };
-    let fresh = SectionDef {
-        section,
-        span: line,
-        lines: Vec::new(),
-    };
+    let fresh = SectionDef { section, span: line, lines: Vec::new() };
     match model.sections.iter().position(|d| d.section == section) {
         Some(i) => {
             let earlier = model.sections[i].span;
@@ -218,22 +199,14 @@ fn set_global(
         return;
     };
     let seq = model.seq();
-    let entry = GlobalEntry {
-        name,
-        value,
-        span: line,
-        seq,
-    };
+    let entry = GlobalEntry { name, value, span: line, seq };
     match model.globals.iter().position(|g| g.name == name) {
         Some(i) => {
             let earlier = model.globals[i].span;
             if earlier.file == line.file {
                 diags.push(
                     Code::Duplicate
-                        .diag(format!(
-                            "{} is set twice; the later one is used",
-                            name.name()
-                        ))
+                        .diag(format!("{} is set twice; the later one is used", name.name()))
                         .at(line, "this one is used")
                         .also(earlier, "this one is overridden"),
                 );
@@ -258,10 +231,7 @@ fn declare_var(
     let quantity = match label_of_var_name(&name.value) {
         None => {
             let mut d = Code::UnknownVarName
-                .diag(format!(
-                    "`{}` is not a variable name postc knows",
-                    name.value
-                ))
+                .diag(format!("`{}` is not a variable name postc knows", name.value))
                 .at(name.span, "unknown variable name");
             d = match GlobalName::from_name(&name.value) {
                 Some(g) => d.help(format!("{} is a statement, not a variable: write {}", g.name(), g.example())),
@@ -321,9 +291,7 @@ fn declare_var(
         seq,
     };
     if let Some(other) = model.vars.iter().find(|v| {
-        v.label.eq_ignore_ascii_case(&def.label)
-            && v.name != def.name
-            && v.label_span.file == def.label_span.file
+        v.label.eq_ignore_ascii_case(&def.label) && v.name != def.name && v.label_span.file == def.label_span.file
     }) {
         diags.push(
             Code::Duplicate
@@ -341,10 +309,7 @@ fn declare_var(
             if earlier.file == def.label_span.file {
                 diags.push(
                     Code::Duplicate
-                        .diag(format!(
-                            "VAR {} is declared twice; the later one is used",
-                            def.name
-                        ))
+                        .diag(format!("VAR {} is declared twice; the later one is used", def.name))
                         .at(name.span, "this one is used")
                         .also(earlier, "this one is overridden"),
                 );

@@ -8,8 +8,8 @@ use std::collections::HashMap;
 
 use postc_ir::post::{BlockNumbers, VarId};
 use postc_ir::{
-    Diagnostic, Dialect, Dispatch, Handler, HandlerKey, OutputOptions, Piece, Post, PostInfo,
-    Quantity, Script, ScriptLanguage, Span, Stmt, ValueSource, Variable,
+    Diagnostic, Dialect, Dispatch, Handler, HandlerKey, OutputOptions, Piece, Post, PostInfo, Quantity, Script,
+    ScriptLanguage, Span, Stmt, ValueSource, Variable,
 };
 
 use crate::defaults::default_format;
@@ -20,30 +20,17 @@ use crate::names::{GlobalName, var_name_of_label};
 
 /// Block numbering when the post says nothing: the values the seed's
 /// "Block Numbering" section shows.
-const DEFAULT_BLOCK_NUMBERS: BlockNumbers = BlockNumbers {
-    start: 0.0,
-    increment: 10.0,
-    maximum: 999_999.0,
-};
+const DEFAULT_BLOCK_NUMBERS: BlockNumbers = BlockNumbers { start: 0.0, increment: 10.0, maximum: 999_999.0 };
 
 /// Builds the post. `source` names the post file; `anchor` is where
 /// diagnostics about the whole post point.
 pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnostic>) -> Post {
-    let mut post = Post {
-        info: info(model, source),
-        options: options(model, diags),
-        ..Post::default()
-    };
+    let mut post = Post { info: info(model, source), options: options(model, diags), ..Post::default() };
     if model.global(GlobalName::Units).is_none() && !model.has_post_base {
         diags.push(
             Code::NoUnits
                 .diag("this post has no UNITS statement: it writes the toolpath's own units")
-                .at(
-                    model
-                        .global(GlobalName::PostName)
-                        .map_or(anchor, |g| g.span),
-                    "no UNITS in this post",
-                )
+                .at(model.global(GlobalName::PostName).map_or(anchor, |g| g.span), "no UNITS in this post")
                 .help("add UNITS = \"MM\" or UNITS = \"INCHES\""),
         );
     }
@@ -73,9 +60,7 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
         let mut body = Vec::with_capacity(section.lines.len());
         for line in &section.lines {
             match line {
-                LineDef::Output(pieces) => {
-                    body.push(Stmt::Line(line_pieces(&mut post, &mut vars, pieces, diags)))
-                }
+                LineDef::Output(pieces) => body.push(Stmt::Line(line_pieces(&mut post, &mut vars, pieces, diags))),
                 LineDef::Script(script) => {
                     if let Some(id) = push_script(&mut post, script) {
                         body.push(Stmt::Script(id));
@@ -83,11 +68,7 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
                 }
             }
         }
-        post.handlers.push(Handler {
-            key: HandlerKey::Section(section.section),
-            body,
-            span: Some(section.span),
-        });
+        post.handlers.push(Handler { key: HandlerKey::Section(section.section), body, span: Some(section.span) });
     }
     crate::lower::lint::coarse_arc_words(&post, &vars, diags);
     post
@@ -137,9 +118,7 @@ impl Variables {
         let quantity = Quantity::from_label(label)?;
         let default = default_format(quantity);
         let variable = Variable {
-            name: var_name_of_label(quantity.label())
-                .unwrap_or(quantity.label())
-                .to_string(),
+            name: var_name_of_label(quantity.label()).unwrap_or(quantity.label()).to_string(),
             source: ValueSource::Quantity(quantity),
             prefix: default.prefix.as_bytes().to_vec(),
             format: 0,
@@ -152,12 +131,7 @@ impl Variables {
 }
 
 /// The pieces of one output line, adjacent literal bytes merged.
-fn line_pieces(
-    post: &mut Post,
-    vars: &mut Variables,
-    pieces: &[PieceDef],
-    diags: &mut Vec<Diagnostic>,
-) -> Vec<Piece> {
+fn line_pieces(post: &mut Post, vars: &mut Variables, pieces: &[PieceDef], diags: &mut Vec<Diagnostic>) -> Vec<Piece> {
     let mut out: Vec<Piece> = Vec::with_capacity(pieces.len());
     let push_bytes = |out: &mut Vec<Piece>, bytes: &[u8]| match out.last_mut() {
         Some(Piece::Text(t)) => t.extend_from_slice(bytes),
@@ -167,11 +141,7 @@ fn line_pieces(
     for piece in pieces {
         match piece {
             PieceDef::Bytes(b) => push_bytes(&mut out, b),
-            PieceDef::Label {
-                label,
-                span,
-                literal,
-            } => match vars.resolve(post, label, *span) {
+            PieceDef::Label { label, span, literal } => match vars.resolve(post, label, *span) {
                 Some(id) => out.push(Piece::Var(id)),
                 None => {
                     diags.push(
@@ -208,10 +178,7 @@ fn text(model: &Model, name: GlobalName) -> Option<String> {
 }
 
 fn flag(model: &Model, name: GlobalName) -> bool {
-    matches!(
-        model.global(name).map(|g| &g.value),
-        Some(GlobalValue::Flag(true))
-    )
+    matches!(model.global(name).map(|g| &g.value), Some(GlobalValue::Flag(true)))
 }
 
 fn number(model: &Model, name: GlobalName) -> Option<f64> {
@@ -251,13 +218,9 @@ fn options(model: &Model, diags: &mut Vec<Diagnostic>) -> OutputOptions {
     for global in &model.globals {
         match (&global.name, &global.value) {
             (GlobalName::LineEnding, GlobalValue::Bytes(b)) => options.line_ending = b.clone(),
-            (GlobalName::Substitute, GlobalValue::Substitutions(s)) => {
-                options.substitutions = s.clone()
-            }
+            (GlobalName::Substitute, GlobalValue::Substitutions(s)) => options.substitutions = s.clone(),
             (GlobalName::TapeSplitting, GlobalValue::Tape(t)) => options.tape_splitting = t.clone(),
-            (GlobalName::SpindleSpeedRange, GlobalValue::SpindleRange(r)) => {
-                options.spindle_speed_range = Some(*r)
-            }
+            (GlobalName::SpindleSpeedRange, GlobalValue::SpindleRange(r)) => options.spindle_speed_range = Some(*r),
             _ => {}
         }
     }
@@ -281,10 +244,7 @@ fn options(model: &Model, diags: &mut Vec<Diagnostic>) -> OutputOptions {
         let (used, ignored) = if x.seq > y.seq { (x, y) } else { (y, x) };
         diags.push(
             Code::TwoRotaryWraps
-                .diag(format!(
-                    "both ROTARY_WRAP_X and ROTARY_WRAP_Y are set; only {} is used",
-                    used.name.name()
-                ))
+                .diag(format!("both ROTARY_WRAP_X and ROTARY_WRAP_Y are set; only {} is used", used.name.name()))
                 .at(used.span, "used")
                 .also(ignored.span, "ignored"),
         );

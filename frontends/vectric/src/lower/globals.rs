@@ -30,25 +30,14 @@ pub fn interpret(
         );
         None
     };
-    let whole = values.first().map_or(line, |first| {
-        values.iter().fold(first.span, |s, v| s.to(v.span))
-    });
-    let one =
-        |bad: &mut dyn FnMut(Span, String) -> Option<GlobalValue>| -> Option<&Spanned<Value>> {
-            match values {
-                [v] => Some(v),
-                [] => bad(line, format!("{} needs a value", name.name())).and(None),
-                _ => bad(
-                    whole,
-                    format!(
-                        "{} takes one value, this line has {}",
-                        name.name(),
-                        values.len()
-                    ),
-                )
-                .and(None),
-            }
-        };
+    let whole = values.first().map_or(line, |first| values.iter().fold(first.span, |s, v| s.to(v.span)));
+    let one = |bad: &mut dyn FnMut(Span, String) -> Option<GlobalValue>| -> Option<&Spanned<Value>> {
+        match values {
+            [v] => Some(v),
+            [] => bad(line, format!("{} needs a value", name.name())).and(None),
+            _ => bad(whole, format!("{} takes one value, this line has {}", name.name(), values.len())).and(None),
+        }
+    };
     use GlobalName as G;
     match name {
         G::PostName | G::FileExtension | G::DirectOutput | G::PostBase => {
@@ -60,10 +49,7 @@ pub fn interpret(
             match text_of(&v.value).trim().to_ascii_uppercase().as_str() {
                 "MM" => Some(GlobalValue::Units(Units::Mm)),
                 "INCH" | "INCHES" => Some(GlobalValue::Units(Units::Inch)),
-                other => bad(
-                    v.span,
-                    format!("UNITS must be \"MM\" or \"INCHES\", not \"{other}\""),
-                ),
+                other => bad(v.span, format!("UNITS must be \"MM\" or \"INCHES\", not \"{other}\"")),
             }
         }
         G::PrintDirect | G::RapidPlungeToStartZ | G::LaserSupport | G::InverseTimeMode => {
@@ -73,11 +59,7 @@ pub fn interpret(
                 None => bad(v.span, format!("{} is \"YES\" or \"NO\"", name.name())),
             }
         }
-        G::LineNumberStart
-        | G::LineNumberIncrement
-        | G::LineNumberMaximum
-        | G::MinArcRadius
-        | G::MaxArcRadius => {
+        G::LineNumberStart | G::LineNumberIncrement | G::LineNumberMaximum | G::MinArcRadius | G::MaxArcRadius => {
             let v = one(&mut bad)?;
             match number(&v.value) {
                 Some(n) if n >= 0.0 => Some(GlobalValue::Number(n)),
@@ -87,32 +69,21 @@ pub fn interpret(
         G::LineEnding => {
             let v = one(&mut bad)?;
             match &v.value {
-                Value::Text(q)
-                    if q.pieces
-                        .iter()
-                        .all(|p| !matches!(p.value, TextPiece::Label(_))) =>
-                {
+                Value::Text(q) if q.pieces.iter().all(|p| !matches!(p.value, TextPiece::Label(_))) => {
                     Some(GlobalValue::Bytes(characters(q, encoding).concat()))
                 }
-                _ => bad(
-                    v.span,
-                    "LINE_ENDING holds characters and [nn] codes between quotes, like \"[13][10]\""
-                        .into(),
-                ),
+                _ => {
+                    bad(v.span, "LINE_ENDING holds characters and [nn] codes between quotes, like \"[13][10]\"".into())
+                }
             }
         }
         G::Substitute => {
             let v = one(&mut bad)?;
             let Value::Text(q) = &v.value else {
-                return bad(
-                    v.span,
-                    "SUBSTITUTE holds pairs of characters between quotes, like \"({)}\"".into(),
-                );
+                return bad(v.span, "SUBSTITUTE holds pairs of characters between quotes, like \"({)}\"".into());
             };
-            let chars: Vec<Vec<u8>> = characters(q, encoding)
-                .into_iter()
-                .filter(|c| c.as_slice() != b" " && c.as_slice() != b"\t")
-                .collect();
+            let chars: Vec<Vec<u8>> =
+                characters(q, encoding).into_iter().filter(|c| c.as_slice() != b" " && c.as_slice() != b"\t").collect();
             if chars.len() % 2 == 1 {
                 diags.push(
                     Code::OddSubstitute
@@ -121,13 +92,7 @@ pub fn interpret(
                         .help("write each character followed by its replacement; write [32] for a blank"),
                 );
             }
-            let pairs = chars
-                .chunks_exact(2)
-                .map(|p| Substitution {
-                    from: p[0].clone(),
-                    to: p[1].clone(),
-                })
-                .collect();
+            let pairs = chars.chunks_exact(2).map(|p| Substitution { from: p[0].clone(), to: p[1].clone() }).collect();
             Some(GlobalValue::Substitutions(pairs))
         }
         G::TapeSplitting => tape_splitting(values, whole, line, &mut bad),
@@ -137,25 +102,18 @@ pub fn interpret(
                 &[out_min, out_max, rpm_min, rpm_max] if values.len() == 4 => {
                     Some(GlobalValue::SpindleRange(SpindleSpeedRange { out_min, out_max, rpm_min, rpm_max }))
                 }
-                _ => bad(whole, "SPINDLE_SPEED_RANGE takes four numbers: lowest and highest output, lowest and highest rpm".into()),
+                _ => bad(
+                    whole,
+                    "SPINDLE_SPEED_RANGE takes four numbers: lowest and highest output, lowest and highest rpm".into(),
+                ),
             }
         }
         G::RotaryWrapX | G::RotaryWrapY => {
             let v = one(&mut bad)?;
-            let axis = if name == G::RotaryWrapX {
-                WrappedAxis::X
-            } else {
-                WrappedAxis::Y
-            };
+            let axis = if name == G::RotaryWrapX { WrappedAxis::X } else { WrappedAxis::Y };
             match rotary_wrap(&text_of(&v.value), axis) {
                 Some(wrap) => Some(GlobalValue::Wrap(wrap)),
-                None => bad(
-                    v.span,
-                    format!(
-                        "{} is an axis letter (A, \"-A\") or \"YES\" / \"NO\"",
-                        name.name()
-                    ),
-                ),
+                None => bad(v.span, format!("{} is an axis letter (A, \"-A\") or \"YES\" / \"NO\"", name.name())),
             }
         }
     }
@@ -169,49 +127,28 @@ fn tape_splitting(
     line: Span,
     bad: &mut dyn FnMut(Span, String) -> Option<GlobalValue>,
 ) -> Option<GlobalValue> {
-    if let [
-        Spanned {
-            value: Value::Text(q),
-            ..
-        },
-    ] = values
+    if let [Spanned { value: Value::Text(q), .. }] = values
         && q.plain().trim().is_empty()
     {
         return Some(GlobalValue::Tape(None));
     }
-    let count = |v: &Spanned<Value>| {
-        number(&v.value)
-            .filter(|n| *n >= 0.0 && n.fract() == 0.0)
-            .map(|n| n as u64)
-    };
+    let count = |v: &Spanned<Value>| number(&v.value).filter(|n| *n >= 0.0 && n.fract() == 0.0).map(|n| n as u64);
     let parsed = match values {
-        [
-            max,
-            tol,
-            Spanned {
-                value: Value::Text(fmt),
-                ..
-            },
-            start,
-            rest @ ..,
-        ] if rest.len() <= 1 => {
+        [max, tol, Spanned { value: Value::Text(fmt), .. }, start, rest @ ..] if rest.len() <= 1 => {
             let index_on_first = match rest.first() {
                 Some(v) => flag(&v.value),
                 None => Some(false),
             };
             match (count(max), count(tol), count(start), index_on_first) {
-                (
-                    Some(max_lines),
-                    Some(tolerance),
-                    Some(start_index),
-                    Some(index_on_first_file),
-                ) => Some(TapeSplitting {
-                    max_lines,
-                    tolerance,
-                    name_format: fmt.plain(),
-                    start_index,
-                    index_on_first_file,
-                }),
+                (Some(max_lines), Some(tolerance), Some(start_index), Some(index_on_first_file)) => {
+                    Some(TapeSplitting {
+                        max_lines,
+                        tolerance,
+                        name_format: fmt.plain(),
+                        start_index,
+                        index_on_first_file,
+                    })
+                }
                 _ => None,
             }
         }
@@ -231,11 +168,7 @@ fn rotary_wrap(text: &str, axis: WrappedAxis) -> Option<Option<RotaryWrap>> {
     let t = text.trim().to_ascii_uppercase();
     match t.as_str() {
         "YES" | "TRUE" | "ON" | "1" => {
-            return Some(Some(RotaryWrap {
-                axis,
-                letter: None,
-                reversed: false,
-            }));
+            return Some(Some(RotaryWrap { axis, letter: None, reversed: false }));
         }
         "NO" | "FALSE" | "OFF" | "0" | "" => return Some(None),
         _ => {}
@@ -246,11 +179,7 @@ fn rotary_wrap(text: &str, axis: WrappedAxis) -> Option<Option<RotaryWrap>> {
     };
     let mut chars = letter.chars();
     match (chars.next(), chars.next()) {
-        (Some(c), None) if c.is_ascii_alphabetic() => Some(Some(RotaryWrap {
-            axis,
-            letter: Some(c),
-            reversed,
-        })),
+        (Some(c), None) if c.is_ascii_alphabetic() => Some(Some(RotaryWrap { axis, letter: Some(c), reversed })),
         _ => None,
     }
 }
@@ -277,12 +206,7 @@ fn flag(value: &Value) -> Option<bool> {
 fn number(value: &Value) -> Option<f64> {
     match value {
         Value::Number(n) => Some(*n),
-        Value::Text(q) => q
-            .plain()
-            .trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|n| n.is_finite()),
+        Value::Text(q) => q.plain().trim().parse::<f64>().ok().filter(|n| n.is_finite()),
         Value::Word(_) => None,
     }
 }

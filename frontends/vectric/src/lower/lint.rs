@@ -15,13 +15,7 @@ use postc_ir::{Diagnostic, Piece, Post, Quantity, Stmt, ValueSource};
 use crate::diagnostics::Code;
 use crate::lower::emit::Variables;
 
-const ARC_WORDS: &[Quantity] = &[
-    Quantity::I,
-    Quantity::J,
-    Quantity::IA,
-    Quantity::JA,
-    Quantity::Radius,
-];
+const ARC_WORDS: &[Quantity] = &[Quantity::I, Quantity::J, Quantity::IA, Quantity::JA, Quantity::Radius];
 
 /// The variables the handlers print.
 fn used_variables(post: &Post) -> BTreeSet<VarId> {
@@ -47,26 +41,16 @@ fn step(post: &Post, id: VarId) -> Option<(Quantity, u8, f64)> {
     };
     let format = post.formats.get(usize::from(var.format))?;
     let m = format.multiplier.abs();
-    (m > 0.0).then(|| {
-        (
-            q,
-            format.decimals,
-            10f64.powi(-i32::from(format.decimals)) / m,
-        )
-    })
+    (m > 0.0).then(|| (q, format.decimals, 10f64.powi(-i32::from(format.decimals)) / m))
 }
 
 /// Warns about arc words printed more coarsely than positions.
 pub fn coarse_arc_words(post: &Post, vars: &Variables, diags: &mut Vec<Diagnostic>) {
     let used = used_variables(post);
-    let steps: Vec<(VarId, Quantity, u8, f64)> = used
-        .iter()
-        .filter_map(|&id| step(post, id).map(|(q, d, s)| (id, q, d, s)))
-        .collect();
-    let finest = steps
-        .iter()
-        .filter(|(_, q, _, _)| matches!(q, Quantity::X | Quantity::Y))
-        .min_by(|a, b| a.3.total_cmp(&b.3));
+    let steps: Vec<(VarId, Quantity, u8, f64)> =
+        used.iter().filter_map(|&id| step(post, id).map(|(q, d, s)| (id, q, d, s))).collect();
+    let finest =
+        steps.iter().filter(|(_, q, _, _)| matches!(q, Quantity::X | Quantity::Y)).min_by(|a, b| a.3.total_cmp(&b.3));
     let Some(&(_, _, pos_decimals, pos_step)) = finest else {
         return;
     };
@@ -74,11 +58,7 @@ pub fn coarse_arc_words(post: &Post, vars: &Variables, diags: &mut Vec<Diagnosti
         if !ARC_WORDS.contains(&q) || arc_step <= pos_step * (1.0 + 1e-9) {
             continue;
         }
-        let Some(at) = vars
-            .declared_at
-            .get(&id)
-            .or_else(|| vars.first_use.get(&id))
-        else {
+        let Some(at) = vars.declared_at.get(&id).or_else(|| vars.first_use.get(&id)) else {
             continue;
         };
         let declared = vars.declared_at.contains_key(&id);

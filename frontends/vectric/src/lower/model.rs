@@ -88,11 +88,7 @@ pub enum PieceDef {
     Bytes(Vec<u8>),
     /// `[LABEL]`, resolved when the post is emitted; `literal` is what
     /// prints if no variable has that label.
-    Label {
-        label: String,
-        span: Span,
-        literal: Vec<u8>,
-    },
+    Label { label: String, span: Span, literal: Vec<u8> },
 }
 
 /// Lua code and where it sits.

@@ -39,15 +39,12 @@ pub fn rest<'a>() -> impl Parser<'a, &'a str, &'a str, Extra> + Clone {
 
 /// A keyword, in any letter case, as a whole word.
 pub fn keyword<'a>(word: &'static str) -> impl Parser<'a, &'a str, (), Extra> + Clone {
-    text::ascii::ident()
-        .filter(move |s: &&str| s.eq_ignore_ascii_case(word))
-        .ignored()
+    text::ascii::ident().filter(move |s: &&str| s.eq_ignore_ascii_case(word)).ignored()
 }
 
 /// A name (`POST_NAME`, `X_POSITION`) with its span.
 pub fn name<'a>(file: FileId) -> impl Parser<'a, &'a str, Spanned<String>, Extra> + Clone {
-    text::ascii::ident()
-        .map_with(move |s: &str, e| Spanned::new(s.to_string(), span(file, e.span())))
+    text::ascii::ident().map_with(move |s: &str, e| Spanned::new(s.to_string(), span(file, e.span())))
 }
 
 /// Whether a bare word starts a trailing comment (`+ ...`, `| ...`) rather
@@ -63,10 +60,7 @@ fn starts_comment(word: &str) -> bool {
 
 /// The rest of a line after what it holds: blanks and a trailing comment
 /// are fine, anything else is reported as ignored.
-pub fn trailing<'a>(
-    file: FileId,
-    after: &'static str,
-) -> impl Parser<'a, &'a str, (), Extra> + Clone {
+pub fn trailing<'a>(file: FileId, after: &'static str) -> impl Parser<'a, &'a str, (), Extra> + Clone {
     rest().validate(move |text: &str, e, emitter| {
         let trimmed = text.trim();
         if trimmed.is_empty() || starts_comment(trimmed) {
@@ -125,56 +119,38 @@ pub fn quoted<'a>(file: FileId) -> impl Parser<'a, &'a str, QuotedText, Extra> +
         .repeated()
         .at_least(1)
         .to_slice()
-        .map_with(move |s: &str, e| {
-            Spanned::new(TextPiece::Text(s.to_string()), span(file, e.span()))
-        });
+        .map_with(move |s: &str, e| Spanned::new(TextPiece::Text(s.to_string()), span(file, e.span())));
     let pieces = choice((text_run, bracket_piece(file)))
         .repeated()
         .collect::<Vec<_>>()
         .map_with(|pieces, e| (pieces, e.slice()));
-    just('"')
-        .ignore_then(pieces)
-        .then(just('"').or_not())
-        .validate(
-            move |((pieces, raw), close): ((Vec<_>, &str), Option<char>), e, emitter| {
-                if close.is_none() {
-                    emit(
-                        emitter,
-                        Code::UnterminatedString
-                            .diag("this string has no closing quote")
-                            .at(
-                                span(file, e.span()),
-                                "the string starts here and runs to the end of the line",
-                            )
-                            .help("end the string with \"; to print a quote inside it, write [34]"),
-                    );
-                }
-                QuotedText {
-                    pieces,
-                    raw: raw.to_string(),
-                    closed: close.is_some(),
-                }
-            },
-        )
+    just('"').ignore_then(pieces).then(just('"').or_not()).validate(
+        move |((pieces, raw), close): ((Vec<_>, &str), Option<char>), e, emitter| {
+            if close.is_none() {
+                emit(
+                    emitter,
+                    Code::UnterminatedString
+                        .diag("this string has no closing quote")
+                        .at(span(file, e.span()), "the string starts here and runs to the end of the line")
+                        .help("end the string with \"; to print a quote inside it, write [34]"),
+                );
+            }
+            QuotedText { pieces, raw: raw.to_string(), closed: close.is_some() }
+        },
+    )
 }
 
 /// One value of a global statement: a quoted string, a number or a word.
 fn value<'a>(file: FileId) -> impl Parser<'a, &'a str, Spanned<Value>, Extra> + Clone {
-    let bare = none_of(" \t\r\n\"")
-        .repeated()
-        .at_least(1)
-        .to_slice()
-        .filter(|w: &&str| !starts_comment(w))
-        .map(|w: &str| {
-            let numeric =
-                w.starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+' || c == '.');
+    let bare =
+        none_of(" \t\r\n\"").repeated().at_least(1).to_slice().filter(|w: &&str| !starts_comment(w)).map(|w: &str| {
+            let numeric = w.starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+' || c == '.');
             match w.parse::<f64>() {
                 Ok(n) if numeric && n.is_finite() => Value::Number(n),
                 _ => Value::Word(w.to_string()),
             }
         });
-    choice((quoted(file).map(Value::Text), bare))
-        .map_with(move |v, e| Spanned::new(v, span(file, e.span())))
+    choice((quoted(file).map(Value::Text), bare)).map_with(move |v, e| Spanned::new(v, span(file, e.span())))
 }
 
 /// The values after `=`, then the rest of the line.

@@ -11,9 +11,7 @@ use crate::ast::{BeginLine, ItemKind, OutputMode, Spanned, VarBody, VarDecl, Var
 use crate::diagnostics::Code;
 use crate::format_spec::parse_format;
 use crate::names::GlobalName;
-use crate::parser::common::{
-    Extra, emit, eol, hspace, keyword, name, quoted, rest, span, trailing, values,
-};
+use crate::parser::common::{Extra, emit, eol, hspace, keyword, name, quoted, rest, span, trailing, values};
 
 const VAR_EXAMPLE: &str = "VAR X_POSITION = [X|C|X|1.3]";
 
@@ -24,10 +22,7 @@ pub fn blank<'a>() -> impl Parser<'a, &'a str, Option<ItemKind>, Extra> + Clone 
 
 /// `+ ...` or `| ...`.
 pub fn comment<'a>() -> impl Parser<'a, &'a str, Option<ItemKind>, Extra> + Clone {
-    hspace()
-        .ignore_then(one_of("+|"))
-        .ignore_then(rest())
-        .map(|text: &str| Some(ItemKind::Comment(text.to_string())))
+    hspace().ignore_then(one_of("+|")).ignore_then(rest()).map(|text: &str| Some(ItemKind::Comment(text.to_string())))
 }
 
 /// `"..."`: an output line.
@@ -55,10 +50,7 @@ pub fn script_call<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind
                     emitter,
                     Code::UnterminatedString
                         .diag("this script call has no closing quote")
-                        .at(
-                            span(file, e.span()),
-                            "the string starts here and runs to the end of the line",
-                        )
+                        .at(span(file, e.span()), "the string starts here and runs to the end of the line")
                         .help("end the line with \""),
                 );
             }
@@ -66,9 +58,7 @@ pub fn script_call<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind
         })
         .then_ignore(trailing(file, "after the closing quote"));
     let bare_call = just("<!>").ignore_then(code("\r\n"));
-    hspace()
-        .ignore_then(choice((quoted_call, bare_call)))
-        .map(|code| Some(ItemKind::ScriptCall(code)))
+    hspace().ignore_then(choice((quoted_call, bare_call))).map(|code| Some(ItemKind::ScriptCall(code)))
 }
 
 /// `SCRIPT` ... `ENDSCRIPT`: a Lua block.
@@ -78,41 +68,23 @@ pub fn script_block<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKin
         .then(keyword("SCRIPT"))
         .map_with(move |_, e| span(file, e.span()))
         .then_ignore(trailing(file, "after SCRIPT"));
-    let body = eol()
-        .then(end_line.clone().not())
-        .then(rest())
-        .repeated()
-        .to_slice()
-        .map_with(move |s: &str, e| {
-            let skip = if s.starts_with("\r\n") {
-                2
-            } else {
-                usize::from(!s.is_empty())
-            };
-            let start = e.span().start + skip;
-            Spanned::new(
-                s.get(skip..).unwrap_or("").to_string(),
-                Span::new(file, start, e.span().end),
-            )
-        });
-    start
-        .then(body)
-        .then(eol().then(end_line).or_not())
-        .validate(move |((start, body), end), _, emitter| {
-            if end.is_none() {
-                emit(
-                    emitter,
-                    Code::UnterminatedScript
-                        .diag("this SCRIPT block has no ENDSCRIPT line")
-                        .at(
-                            start,
-                            "the block starts here and runs to the end of the file",
-                        )
-                        .help("end the Lua block with a line that says ENDSCRIPT"),
-                );
-            }
-            Some(ItemKind::ScriptBlock(body))
-        })
+    let body = eol().then(end_line.clone().not()).then(rest()).repeated().to_slice().map_with(move |s: &str, e| {
+        let skip = if s.starts_with("\r\n") { 2 } else { usize::from(!s.is_empty()) };
+        let start = e.span().start + skip;
+        Spanned::new(s.get(skip..).unwrap_or("").to_string(), Span::new(file, start, e.span().end))
+    });
+    start.then(body).then(eol().then(end_line).or_not()).validate(move |((start, body), end), _, emitter| {
+        if end.is_none() {
+            emit(
+                emitter,
+                Code::UnterminatedScript
+                    .diag("this SCRIPT block has no ENDSCRIPT line")
+                    .at(start, "the block starts here and runs to the end of the file")
+                    .help("end the Lua block with a line that says ENDSCRIPT"),
+            );
+        }
+        Some(ItemKind::ScriptBlock(body))
+    })
 }
 
 /// `begin NAME`.
@@ -123,14 +95,7 @@ pub fn begin<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Ext
         .map_with(move |s: &str, e| Spanned::new(s.to_string(), span(file, e.span())));
     hspace()
         .ignore_then(keyword("BEGIN"))
-        .ignore_then(
-            one_of(" \t")
-                .repeated()
-                .at_least(1)
-                .ignore_then(word)
-                .repeated()
-                .collect::<Vec<_>>(),
-        )
+        .ignore_then(one_of(" \t").repeated().at_least(1).ignore_then(word).repeated().collect::<Vec<_>>())
         .validate(move |words, e, emitter| {
             if words.is_empty() {
                 emit(
@@ -165,14 +130,16 @@ pub fn stray<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Ext
         let at = Span::new(file, e.span().start, e.span().start + trimmed.len());
         let first: String = trimmed.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
         if let Some(global) = GlobalName::from_name(&first) {
-            emit(emitter,
+            emit(
+                emitter,
                 Code::GlobalWithoutValue
                     .diag(format!("{} needs `=` and a value", global.name()))
                     .at(at, "no `=` here")
                     .help(format!("write it like this: {}", global.example())),
             );
         } else {
-            emit(emitter,
+            emit(
+                emitter,
                 Code::StrayText
                     .diag("text outside quotes is ignored")
                     .at(at, "not a comment, a statement or a quoted output line")
@@ -186,27 +153,15 @@ pub fn stray<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Ext
 /// `VAR NAME = [label|mode|prefix|format|multiplier]` (or `VAR NAME = value`
 /// for the global statements some posts write with `VAR`).
 pub fn var<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Extra> + Clone {
-    let field = none_of("|]\r\n")
-        .repeated()
-        .to_slice()
-        .map_with(|s: &str, e| (s, e.span()));
+    let field = none_of("|]\r\n").repeated().to_slice().map_with(|s: &str, e| (s, e.span()));
     let fields = just('[')
         .ignore_then(field.separated_by(just('|')).collect::<Vec<_>>())
         .then(just(']').or_not())
         .validate(move |(fields, close), e, emitter| {
-            check_fields(
-                file,
-                &fields,
-                close.is_some(),
-                span(file, e.span()),
-                emitter,
-            )
+            check_fields(file, &fields, close.is_some(), span(file, e.span()), emitter)
         });
-    let body = choice((
-        fields,
-        values(file).filter(|v| !v.is_empty()).map(VarBody::Values),
-        rest().to(VarBody::Missing),
-    ));
+    let body =
+        choice((fields, values(file).filter(|v| !v.is_empty()).map(VarBody::Values), rest().to(VarBody::Missing)));
     let head = hspace()
         .ignore_then(keyword("VAR"))
         .map_with(move |_, e| span(file, e.span()))
@@ -215,9 +170,8 @@ pub fn var<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Extra
         .then_ignore(hspace())
         .then(just('=').or_not())
         .then_ignore(hspace());
-    head.then(body)
-        .then_ignore(trailing(file, "after the closing ]"))
-        .validate(move |(((var_at, name), equals), body), e, emitter| {
+    head.then(body).then_ignore(trailing(file, "after the closing ]")).validate(
+        move |(((var_at, name), equals), body), e, emitter| {
             let line = span(file, e.span());
             let problem = if name.is_none() {
                 Some("`VAR` must be followed by a variable name")
@@ -237,13 +191,10 @@ pub fn var<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Extra
                         .help(format!("write it like this: {VAR_EXAMPLE}")),
                 );
             }
-            let body = if name.is_some() && body != VarBody::Missing {
-                body
-            } else {
-                VarBody::Malformed
-            };
+            let body = if name.is_some() && body != VarBody::Missing { body } else { VarBody::Malformed };
             Some(ItemKind::Var(VarDecl { name, body }))
-        })
+        },
+    )
 }
 
 /// Checks the fields between `[` and `]` and builds the VAR's format.
@@ -266,11 +217,10 @@ fn check_fields(
     }
     let n = fields.len();
     if !(3..=5).contains(&n) {
-        emit(emitter,
+        emit(
+            emitter,
             Code::MalformedVar
-                .diag(format!(
-                    "this VAR line needs 4 or 5 fields between [ and ], like [X|C|X|1.3]; it has {n}"
-                ))
+                .diag(format!("this VAR line needs 4 or 5 fields between [ and ], like [X|C|X|1.3]; it has {n}"))
                 .at(whole, "label | A or C | prefix | format | optional multiplier")
                 .help(format!("write it like this: {VAR_EXAMPLE}")),
         );
@@ -284,9 +234,7 @@ fn check_fields(
             Code::MalformedVar
                 .diag("the label of this VAR is empty")
                 .at(at(label_span), "no label")
-                .help(format!(
-                    "the first field is the label the output lines use, like X in {VAR_EXAMPLE}"
-                )),
+                .help(format!("the first field is the label the output lines use, like X in {VAR_EXAMPLE}")),
         );
         return VarBody::Malformed;
     }
@@ -308,9 +256,14 @@ fn check_fields(
     let prefix_omitted = n == 3;
     let (prefix, format_field) = if prefix_omitted {
         let empty = SimpleSpan::new((), mode_span.end..mode_span.end);
-        emit(emitter,
+        emit(
+            emitter,
             Code::MissingPrefixField
-                .diag(format!("this VAR has no prefix field; read as [{label}|{}||{}]", mode_text.trim(), fields[2].0.trim()))
+                .diag(format!(
+                    "this VAR has no prefix field; read as [{label}|{}||{}]",
+                    mode_text.trim(),
+                    fields[2].0.trim()
+                ))
                 .at(whole, "3 fields")
                 .help("write the prefix between the second and third bar, even when it is empty: [N|A||1.0]"),
         );
@@ -321,11 +274,17 @@ fn check_fields(
     let format = match parse_format(format_field.0) {
         Ok(spec) => {
             if !spec.has_separator {
-                emit(emitter,
+                emit(
+                    emitter,
                     Code::FormatWithoutSeparator
-                        .diag(format!("value format `{}` has no decimal separator; it prints whole numbers", format_field.0.trim()))
+                        .diag(format!(
+                            "value format `{}` has no decimal separator; it prints whole numbers",
+                            format_field.0.trim()
+                        ))
                         .at(at(format_field.1), "no `.` or `,`")
-                        .help("write the decimals after `.` or `,`, like 1.0 for whole numbers or 1.3 for three decimals"),
+                        .help(
+                            "write the decimals after `.` or `,`, like 1.0 for whole numbers or 1.3 for three decimals",
+                        ),
                 );
             }
             spec
@@ -333,12 +292,9 @@ fn check_fields(
         Err(error) => {
             let start = format_field.1.start + error.range.start;
             let end = format_field.1.start + error.range.end.max(error.range.start);
-            let bad = if end > start {
-                Span::new(file, start, end)
-            } else {
-                at(format_field.1)
-            };
-            emit(emitter,
+            let bad = if end > start { Span::new(file, start, end) } else { at(format_field.1) };
+            emit(
+                emitter,
                 Code::BadFormat
                     .diag(error.message)
                     .at(bad, "bad value format")
@@ -353,10 +309,7 @@ fn check_fields(
             return None;
         }
         match compact.parse::<f64>() {
-            Ok(m)
-                if m.is_finite()
-                    && compact.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c)) =>
-            {
+            Ok(m) if m.is_finite() && compact.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c)) => {
                 Some(Spanned::new(m, at(s)))
             }
             _ => {
@@ -373,10 +326,7 @@ fn check_fields(
     });
     let label_start = label_span.start + (label_text.len() - label_text.trim_start().len());
     VarBody::Fields(Box::new(VarFields {
-        label: Spanned::new(
-            label.to_string(),
-            Span::new(file, label_start, label_start + label.len()),
-        ),
+        label: Spanned::new(label.to_string(), Span::new(file, label_start, label_start + label.len())),
         mode: Spanned::new(mode, at(mode_span)),
         prefix: Spanned::new(prefix.0.to_string(), at(prefix.1)),
         prefix_omitted,

@@ -30,12 +30,7 @@ fn file_parser<'a>(file: FileId) -> impl Parser<'a, &'a str, Vec<Item>, Extra> {
         lines::global(file),
         lines::stray(file),
     ))
-    .map_with(move |kind, e| {
-        kind.map(|kind| Item {
-            kind,
-            span: span(file, e.span()),
-        })
-    });
+    .map_with(move |kind, e| kind.map(|kind| Item { kind, span: span(file, e.span()) }));
     just('\u{feff}')
         .or_not()
         .ignore_then(line.separated_by(eol()).collect::<Vec<_>>())
@@ -58,13 +53,7 @@ pub fn parse(text: &str, file: FileId) -> (PostFile, Vec<Diagnostic>) {
         })
         .collect();
     diagnostics.sort_by_key(|d| d.primary_span().map_or(0, |s| s.start));
-    (
-        PostFile {
-            file,
-            items: items.unwrap_or_default(),
-        },
-        diagnostics,
-    )
+    (PostFile { file, items: items.unwrap_or_default() }, diagnostics)
 }
 
 #[cfg(test)]
@@ -82,15 +71,9 @@ mod tests {
         let text = "VAR X_POSITION [X|A|X|1.3]\n\"G0 [300]\"\nbegin\n\"G1[X]\"\nVAR Y_POSITION = [Y|Q|Y|1.3]\n";
         let (items, diags) = items(text);
         assert_eq!(items.len(), 5);
-        let errors: Vec<(&str, usize)> = diags
-            .iter()
-            .filter(|d| d.is_error())
-            .map(|d| (d.code, d.labels[0].span.start))
-            .collect();
-        assert_eq!(
-            errors,
-            vec![("PP001", 0), ("PP008", 31), ("PP013", 38), ("PP004", 72)]
-        );
+        let errors: Vec<(&str, usize)> =
+            diags.iter().filter(|d| d.is_error()).map(|d| (d.code, d.labels[0].span.start)).collect();
+        assert_eq!(errors, vec![("PP001", 0), ("PP008", 31), ("PP013", 38), ("PP004", 72)]);
         assert!(matches!(&items[3], ItemKind::Output(q) if q.closed && q.pieces.len() == 2));
     }
 
@@ -98,9 +81,7 @@ mod tests {
     fn output_pieces() {
         let (items, diags) = items("  \"G0[X][13][10]x\"  + comment\r\n");
         assert!(diags.is_empty(), "{diags:?}");
-        let ItemKind::Output(q) = &items[0] else {
-            panic!("{items:?}")
-        };
+        let ItemKind::Output(q) = &items[0] else { panic!("{items:?}") };
         let pieces: Vec<&TextPiece> = q.pieces.iter().map(|p| &p.value).collect();
         assert_eq!(
             pieces,
@@ -118,12 +99,8 @@ mod tests {
     fn keywords_in_any_case_and_prefix_blanks_kept() {
         let (items, diags) = items("var X_POSITION = [X|c| X |1.3]\nBEGIN header\n");
         assert!(diags.is_empty(), "{diags:?}");
-        let ItemKind::Var(v) = &items[0] else {
-            panic!("{items:?}")
-        };
-        let VarBody::Fields(f) = &v.body else {
-            panic!("{v:?}")
-        };
+        let ItemKind::Var(v) = &items[0] else { panic!("{items:?}") };
+        let VarBody::Fields(f) = &v.body else { panic!("{v:?}") };
         assert_eq!(f.prefix.value, " X ");
         assert!(matches!(&items[1], ItemKind::Begin(b) if b.words[0].value == "header"));
     }

@@ -55,14 +55,13 @@ impl Regex {
         }
         let body = translate(source)?;
         let pattern = if prefix.is_empty() { body } else { format!("(?{prefix}){body}") };
-        let compiled = regex::RegexBuilder::new(&pattern)
-            .size_limit(SIZE_LIMIT)
-            .dfa_size_limit(SIZE_LIMIT)
-            .build()
-            .map_err(|e| match e {
-                regex::Error::CompiledTooBig(_) => "the regular expression is too large".to_string(),
-                other => format!("the regular expression does not read: {}", first_line(&other.to_string())),
-            })?;
+        let compiled =
+            regex::RegexBuilder::new(&pattern).size_limit(SIZE_LIMIT).dfa_size_limit(SIZE_LIMIT).build().map_err(
+                |e| match e {
+                    regex::Error::CompiledTooBig(_) => "the regular expression is too large".to_string(),
+                    other => format!("the regular expression does not read: {}", first_line(&other.to_string())),
+                },
+            )?;
         Ok(Regex { source: format!("/{source}/{flags}"), global: flags.contains('g'), compiled })
     }
 
@@ -78,7 +77,10 @@ impl Regex {
 }
 
 fn first_line(s: &str) -> &str {
-    s.lines().rev().find(|l| l.starts_with("error:")).map_or(s.lines().next().unwrap_or(s), |l| l.trim_start_matches("error: "))
+    s.lines()
+        .rev()
+        .find(|l| l.starts_with("error:"))
+        .map_or(s.lines().next().unwrap_or(s), |l| l.trim_start_matches("error: "))
 }
 
 /// JavaScript pattern syntax to `regex` crate syntax, keeping the meaning.

@@ -45,10 +45,13 @@ fn expand(replacement: &str, caps: &regex::Captures<'_>, out: &mut String) {
             b'&' => (caps.get(0).map(|m| m.as_str()), 2),
             d @ b'1'..=b'9' => {
                 // Two digits when that group exists, as JavaScript reads `$10`.
-                let two = r.get(i + 2).filter(|c| c.is_ascii_digit()).map(|c| (d - b'0') as usize * 10 + (c - b'0') as usize);
+                let two =
+                    r.get(i + 2).filter(|c| c.is_ascii_digit()).map(|c| (d - b'0') as usize * 10 + (c - b'0') as usize);
                 match two.filter(|&n| n < caps.len()) {
                     Some(n) => (Some(caps.get(n).map_or("", |m| m.as_str())), 3),
-                    None if ((d - b'0') as usize) < caps.len() => (Some(caps.get((d - b'0') as usize).map_or("", |m| m.as_str())), 2),
+                    None if ((d - b'0') as usize) < caps.len() => {
+                        (Some(caps.get((d - b'0') as usize).map_or("", |m| m.as_str())), 2)
+                    }
                     None => (None, 0),
                 }
             }
@@ -99,7 +102,5 @@ pub fn split(re: &Regex, text: &str) -> Vec<String> {
 
 /// `text.search(re)`: the UTF-16 index of the first match, or -1.
 pub fn search(re: &Regex, text: &str) -> i64 {
-    re.captures_at(text, 0)
-        .and_then(|c| c.get(0))
-        .map_or(-1, |m| text[..m.start()].encode_utf16().count() as i64)
+    re.captures_at(text, 0).and_then(|c| c.get(0)).map_or(-1, |m| text[..m.start()].encode_utf16().count() as i64)
 }

@@ -18,9 +18,9 @@ mod shape;
 
 use postc_ir::{BinaryOp, Body, Expr, Function, Piece, Place, Stmt, UnaryOp};
 
-use shape::*;
 pub(crate) use marks::tidy;
 pub(crate) use shape::max_slot;
+use shape::*;
 
 /// Rewrites handler bodies.
 pub struct Emitter<'f> {
@@ -64,7 +64,8 @@ enum Binding {
 impl<'f> Emitter<'f> {
     pub fn new(functions: &'f [Function], first_free_slot: u16) -> Emitter<'f> {
         let always = functions.iter().map(|f| matches!(&f.body, Body::Native(b) if always_returns(b))).collect();
-        let mut e = Emitter { functions, returns_text: vec![false; functions.len()], always, next: first_free_slot, budget: 0 };
+        let mut e =
+            Emitter { functions, returns_text: vec![false; functions.len()], always, next: first_free_slot, budget: 0 };
         e.infer_text_returns();
         e
     }
@@ -138,7 +139,14 @@ impl<'f> Emitter<'f> {
 
     /// `call`, with parameter `bound.0` already written as the text since
     /// mark `bound.1` (the caller's region, passed on).
-    fn call_bound(&mut self, f: u16, args: &[Expr], depth: usize, in_text: bool, bound: Option<(usize, u16)>) -> Option<Vec<Stmt>> {
+    fn call_bound(
+        &mut self,
+        f: u16,
+        args: &[Expr],
+        depth: usize,
+        in_text: bool,
+        bound: Option<(usize, u16)>,
+    ) -> Option<Vec<Stmt>> {
         if depth >= MAX_DEPTH {
             return None;
         }
@@ -183,7 +191,8 @@ impl<'f> Emitter<'f> {
                 let s = self.slot();
                 // A local starts undefined, unless it is set before any use.
                 let first = body.iter().find(|st| stmt_mentions(st, k as u16));
-                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if *x as usize == k && !expr_reads(e, k as u16)) {
+                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if *x as usize == k && !expr_reads(e, k as u16))
+                {
                     out.push(Stmt::Assign(Place::Local(s), Expr::Null));
                 }
                 map.push(Binding::Slot(s));
@@ -210,7 +219,8 @@ impl<'f> Emitter<'f> {
                 out.push(Stmt::Eval(extra.clone()));
             }
         }
-        let frame = Frame { identity: false, map, base, depth, pending: std::cell::Cell::new(region_local.map(|k| k as u16)) };
+        let frame =
+            Frame { identity: false, map, base, depth, pending: std::cell::Cell::new(region_local.map(|k| k as u16)) };
         let mut inner = self.stmts(body, &frame)?;
         let ends = matches!(inner.last(), Some(Stmt::Break));
         if ends {
@@ -371,8 +381,12 @@ impl<'f> Emitter<'f> {
             Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq, a, b) if region(a).is_some() && empty(b) => {
                 Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?))))
             }
-            Expr::Binary(BinaryOp::Ne | BinaryOp::StrictNe, a, b) if region(a).is_some() && empty(b) => Some(Expr::Written(region(a)?)),
-            Expr::Unary(UnaryOp::Not, a) if region(a).is_some() => Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?)))),
+            Expr::Binary(BinaryOp::Ne | BinaryOp::StrictNe, a, b) if region(a).is_some() && empty(b) => {
+                Some(Expr::Written(region(a)?))
+            }
+            Expr::Unary(UnaryOp::Not, a) if region(a).is_some() => {
+                Some(Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(region(a)?))))
+            }
             e if region(e).is_some() => Some(Expr::Written(region(e)?)),
             other => value(other, fr),
         }
@@ -433,7 +447,9 @@ fn value(e: &Expr, fr: &Frame) -> Option<Expr> {
         Expr::Format { format, value: v } => Expr::Format { format: *format, value: Box::new(value(v, fr)?) },
         Expr::Unary(op, a) => Expr::Unary(*op, Box::new(value(a, fr)?)),
         Expr::Binary(op, a, b) => Expr::Binary(*op, Box::new(value(a, fr)?), Box::new(value(b, fr)?)),
-        Expr::Choose(c, a, b) => Expr::Choose(Box::new(value(c, fr)?), Box::new(value(a, fr)?), Box::new(value(b, fr)?)),
+        Expr::Choose(c, a, b) => {
+            Expr::Choose(Box::new(value(c, fr)?), Box::new(value(a, fr)?), Box::new(value(b, fr)?))
+        }
         Expr::Call(f, args) => Expr::Call(*f, args.iter().map(|a| value(a, fr)).collect::<Option<_>>()?),
         Expr::Builtin(b, args) => Expr::Builtin(*b, args.iter().map(|a| value(a, fr)).collect::<Option<_>>()?),
         other => other.clone(),
@@ -453,4 +469,3 @@ fn region_in(e: &Expr, fr: &Frame) -> Option<u16> {
         _ => None,
     })
 }
-

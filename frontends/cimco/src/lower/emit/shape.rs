@@ -65,14 +65,18 @@ pub(super) fn region_local(body: &[Stmt], params: usize, slots: usize) -> Option
 }
 
 pub(super) fn stmt_mentions(s: &Stmt, k: u16) -> bool {
-    matches!(s, Stmt::Assign(Place::Local(x), _) if *x == k) || reads(std::slice::from_ref(s), k) || assigns(std::slice::from_ref(s), k)
+    matches!(s, Stmt::Assign(Place::Local(x), _) if *x == k)
+        || reads(std::slice::from_ref(s), k)
+        || assigns(std::slice::from_ref(s), k)
 }
 
 pub(super) fn cond_ok(c: &Expr, k: u16) -> bool {
     let is_k = |e: &Expr| matches!(e, Expr::Local(x) if *x == k);
     let empty = |e: &Expr| matches!(e, Expr::Text(t) if t.is_empty());
     match c {
-        Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq | BinaryOp::Ne | BinaryOp::StrictNe, a, b) if is_k(a) => empty(b),
+        Expr::Binary(BinaryOp::Eq | BinaryOp::StrictEq | BinaryOp::Ne | BinaryOp::StrictNe, a, b) if is_k(a) => {
+            empty(b)
+        }
         Expr::Unary(UnaryOp::Not, a) if is_k(a) => true,
         e if is_k(e) => true,
         other => !expr_reads(other, k),
@@ -90,7 +94,9 @@ pub(super) fn leaf_only(e: &Expr, k: u16) -> bool {
 pub(super) fn reads(body: &[Stmt], k: u16) -> bool {
     body.iter().any(|s| match s {
         Stmt::Return(Some(e)) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) => expr_reads(e, k),
-        Stmt::If { branches, otherwise } => branches.iter().any(|(c, b)| expr_reads(c, k) || reads(b, k)) || reads(otherwise, k),
+        Stmt::If { branches, otherwise } => {
+            branches.iter().any(|(c, b)| expr_reads(c, k) || reads(b, k)) || reads(otherwise, k)
+        }
         Stmt::While { cond, body, .. } => expr_reads(cond, k) || reads(body, k),
         _ => false,
     })
@@ -189,7 +195,9 @@ pub(super) fn has_loop(body: &[Stmt]) -> bool {
 pub(super) fn count(body: &[Stmt]) -> usize {
     body.iter()
         .map(|s| match s {
-            Stmt::If { branches, otherwise } => 1 + branches.iter().map(|(_, b)| count(b)).sum::<usize>() + count(otherwise),
+            Stmt::If { branches, otherwise } => {
+                1 + branches.iter().map(|(_, b)| count(b)).sum::<usize>() + count(otherwise)
+            }
             Stmt::While { body, .. } => 1 + count(body),
             _ => 1,
         })
@@ -228,7 +236,9 @@ pub(super) fn all_returns(body: &[Stmt], ok: &dyn Fn(&Expr) -> bool) -> bool {
     body.iter().all(|s| match s {
         Stmt::Return(Some(e)) => ok(e),
         Stmt::Return(None) => false,
-        Stmt::If { branches, otherwise } => branches.iter().all(|(_, b)| all_returns(b, ok)) && all_returns(otherwise, ok),
+        Stmt::If { branches, otherwise } => {
+            branches.iter().all(|(_, b)| all_returns(b, ok)) && all_returns(otherwise, ok)
+        }
         Stmt::While { body, .. } => all_returns(body, ok),
         _ => true,
     })

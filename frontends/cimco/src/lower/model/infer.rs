@@ -45,14 +45,20 @@ impl<'a> Model<'a> {
     /// Whether an expression can only be a number, text, boolean or nothing.
     pub fn plain(&self, e: &Expr, at: FnId) -> bool {
         match &e.kind {
-            ExprKind::Number(_) | ExprKind::String(_) | ExprKind::Bool(_) | ExprKind::Null | ExprKind::Undefined => true,
+            ExprKind::Number(_) | ExprKind::String(_) | ExprKind::Bool(_) | ExprKind::Null | ExprKind::Undefined => {
+                true
+            }
             ExprKind::Unary { .. } | ExprKind::Binary { .. } | ExprKind::Update { .. } => true,
             ExprKind::Logical { left, right, .. } => self.plain(left, at) && self.plain(right, at),
-            ExprKind::Conditional { consequent, alternate, .. } => self.plain(consequent, at) && self.plain(alternate, at),
+            ExprKind::Conditional { consequent, alternate, .. } => {
+                self.plain(consequent, at) && self.plain(alternate, at)
+            }
             ExprKind::Assign { op, value, .. } => *op != AssignOp::Assign || self.plain(value, at),
             ExprKind::Sequence(items) => items.last().is_none_or(|l| self.plain(l, at)),
             ExprKind::Ident(name) => match self.scopes.resolve(name, at) {
-                Symbol::Local { func, slot } => self.local_plain.get(func).and_then(|l| l.get(slot)).copied().unwrap_or(false),
+                Symbol::Local { func, slot } => {
+                    self.local_plain.get(func).and_then(|l| l.get(slot)).copied().unwrap_or(false)
+                }
                 Symbol::TopFn(_) => false,
                 Symbol::Global(name) => match self.global(&name) {
                     Some(g) => g.plain,

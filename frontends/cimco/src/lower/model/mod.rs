@@ -253,7 +253,6 @@ impl<'a> Model<'a> {
         }
         host::constant(name)
     }
-
 }
 
 /// `NAME = {...}` or `var NAME = {...}` at the top of a program.
@@ -359,4 +358,3 @@ impl<'a> Visit<'a> for Assigns<'_, 'a> {
 
     fn function_decl(&mut self, _f: &'a Function) {}
 }
-

@@ -28,7 +28,10 @@ impl Native<'_, '_> {
                 Symbol::TopFn(i) => {
                     let id = self.model.scopes.top_fns[i];
                     let info = &self.model.scopes.funcs[id];
-                    if self.model.fn_reassigned.contains(&i) || args.len() > info.params.len() || !self.model.returns_plain[id] {
+                    if self.model.fn_reassigned.contains(&i)
+                        || args.len() > info.params.len()
+                        || !self.model.returns_plain[id]
+                    {
                         return None;
                     }
                     let f = *self.layout.top_fn.get(i)?;

@@ -101,7 +101,10 @@ impl Native<'_, '_> {
                 let mut b = Vec::new();
                 self.stmt(body, &mut b)?;
                 let c = self.expr(cond)?;
-                b.push(IrStmt::If { branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])], otherwise: vec![] });
+                b.push(IrStmt::If {
+                    branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])],
+                    otherwise: vec![],
+                });
                 out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span) });
             }
             StmtKind::For { init, test, update, body } => {
@@ -302,7 +305,9 @@ impl Native<'_, '_> {
                     UnaryOp::Typeof => Ir::Unary(IrUn::Typeof, a),
                 }
             }
-            ExprKind::Binary { op, left, right } => Ir::Binary(bin(*op), Box::new(self.expr(left)?), Box::new(self.expr(right)?)),
+            ExprKind::Binary { op, left, right } => {
+                Ir::Binary(bin(*op), Box::new(self.expr(left)?), Box::new(self.expr(right)?))
+            }
             ExprKind::Logical { op, left, right } => {
                 let op = if *op == LogicalOp::And { IrBin::And } else { IrBin::Or };
                 Ir::Binary(op, Box::new(self.expr(left)?), Box::new(self.expr(right)?))
@@ -315,7 +320,6 @@ impl Native<'_, '_> {
             _ => return None,
         })
     }
-
 }
 
 /// A value as a number, unless it surely is one.
@@ -375,7 +379,11 @@ fn breaks_switch(s: &Stmt) -> bool {
         StmtKind::If { branches, otherwise } => {
             branches.iter().any(|b| breaks_switch(&b.body)) || otherwise.as_ref().is_some_and(|o| breaks_switch(o))
         }
-        StmtKind::Switch { .. } | StmtKind::While { .. } | StmtKind::DoWhile { .. } | StmtKind::For { .. } | StmtKind::ForIn { .. } => false,
+        StmtKind::Switch { .. }
+        | StmtKind::While { .. }
+        | StmtKind::DoWhile { .. }
+        | StmtKind::For { .. }
+        | StmtKind::ForIn { .. } => false,
         StmtKind::Try { .. } => true,
         _ => false,
     }

@@ -107,9 +107,7 @@ impl Gen<'_, '_> {
                     _ => {}
                 }
                 let result = if prefix { format!("{u} + {delta}") } else { u.clone() };
-                self.w(&format!(
-                    "; let {u} = __pos(__get({o}, {k})); __set({o}, {k}, {u} + {delta}); {result} }}"
-                ));
+                self.w(&format!("; let {u} = __pos(__get({o}, {k})); __set({o}, {k}, {u} + {delta}); {result} }}"));
             }
             _ => self.w("__assign_error(\"?\")"),
         }

@@ -157,7 +157,13 @@ impl Gen<'_, '_> {
                     && self.model.global(n).is_none()
                     && host::constant(n).is_none()
                 {
-                    let t = if n == "Math" { "object" } else if host::knows(n) { "function" } else { "undefined" };
+                    let t = if n == "Math" {
+                        "object"
+                    } else if host::knows(n) {
+                        "function"
+                    } else {
+                        "undefined"
+                    };
                     return self.w(&quote(t));
                 }
                 self.mark(e.span);
@@ -296,9 +302,7 @@ impl Gen<'_, '_> {
                         self.w(")");
                     }
                 }
-                Symbol::Global(g)
-                    if self.model.global(&g).is_none() && !self.setup.bindings.contains_key(&g) =>
-                {
+                Symbol::Global(g) if self.model.global(&g).is_none() && !self.setup.bindings.contains_key(&g) => {
                     if g == "getFeedrate" {
                         self.w(&format!("{}(", fn_name("getFeedrate")));
                     } else if host::FUNCTIONS.contains(&g.as_str()) {
@@ -333,7 +337,6 @@ impl Gen<'_, '_> {
             None => self.w("()"),
         }
     }
-
 }
 
 /// The terms of a left-associated chain of `+`.

@@ -37,10 +37,10 @@ use postc_ir::Span;
 
 use crate::ast::*;
 
+use super::layout::Layout;
 use super::model::Model;
 use super::scope::FnId;
 use super::setup::Setup;
-use super::layout::Layout;
 
 /// Writes the Rhai script of a post.
 pub struct Gen<'c, 'a> {
@@ -68,7 +68,17 @@ enum Jump {
 
 impl<'c, 'a> Gen<'c, 'a> {
     pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c Layout) -> Gen<'c, 'a> {
-        Gen { model, setup, layout, out: String::new(), span_map: Vec::new(), temps: 0, at: 0, jumps: Vec::new(), loop_at: 0 }
+        Gen {
+            model,
+            setup,
+            layout,
+            out: String::new(),
+            span_map: Vec::new(),
+            temps: 0,
+            at: 0,
+            jumps: Vec::new(),
+            loop_at: 0,
+        }
     }
 
     /// Records that the text written next comes from `span`.
