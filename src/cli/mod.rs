@@ -12,6 +12,7 @@
 //! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
 //! postc lsp                                                   # language server on stdio (docs/editors.md)
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
+//! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -22,6 +23,7 @@ mod check;
 mod convert;
 mod inspect;
 mod lsp;
+mod plot;
 mod post;
 mod postp;
 mod probe;
@@ -63,6 +65,8 @@ enum Command {
     Verify(verify::Args),
     /// Run the language server (LSP on stdio) for editors: diagnostics, hover, definition, completion, quick fixes.
     Lsp(lsp::Args),
+    /// Draw a program over its toolpath, top (XY) and front (XZ), with verify's findings marked: SVG, or PNG.
+    Plot(plot::Args),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -106,6 +110,7 @@ pub fn main() -> ExitCode {
         Command::Postp(args) => postp::run(args),
         Command::Verify(args) => verify::run(args),
         Command::Lsp(args) => lsp::run(args),
+        Command::Plot(args) => plot::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {

@@ -71,28 +71,7 @@ const FOREIGN_EXTENSIONS: &[(&str, &str)] =
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = SourceMap::new();
-    let mut postp = None;
-    let post = match &args.post {
-        Some(path) => Some(load_post(Some(path), args.dialect, &mut sources)?),
-        None if args.postp => {
-            let report = |sources: &mut SourceMap, d: Vec<Diagnostic>| {
-                report::eprint(sources, &d);
-                Failed
-            };
-            let head = postc_postp::head(&args.toolpath, None, &mut sources).map_err(|d| report(&mut sources, d))?;
-            let options = postc_postp::load_options(head.controller, None, &mut sources)
-                .map_err(|d| report(&mut sources, vec![d]))?;
-            let post = postc_postp::compile(&head, &options, &mut sources).map_err(|d| report(&mut sources, d))?;
-            postp = Some(postc_postp::transform::Machine {
-                kind: head.controller.kind(),
-                name: head.controller.name(),
-                axes: postc_postp::controller::rotary_axes(head.axis_type),
-                retractz: options.retractz,
-            });
-            Some(post)
-        }
-        None => None,
-    };
+    let (post, postp) = post_for(args.post.as_ref(), args.dialect, args.postp, &args.toolpath, &mut sources)?;
     let job = Job {
         program: &args.program,
         toolpath: &args.toolpath,
@@ -103,6 +82,37 @@ pub fn run(args: Args) -> Result<(), Failed> {
         postp,
     };
     verify(&job, &mut sources)
+}
+
+/// The post a program was written by (`--post`, or postp's for `--postp`), and postp's machine.
+pub(crate) fn post_for(
+    path: Option<&PathBuf>,
+    dialect: Option<DialectArg>,
+    postp: bool,
+    toolpath: &Path,
+    sources: &mut SourceMap,
+) -> Result<(Option<Post>, Option<postc_postp::transform::Machine>), Failed> {
+    match path {
+        Some(path) => Ok((Some(load_post(Some(path), dialect, sources)?), None)),
+        None if postp => {
+            let report = |sources: &mut SourceMap, d: Vec<Diagnostic>| {
+                report::eprint(sources, &d);
+                Failed
+            };
+            let head = postc_postp::head(toolpath, None, sources).map_err(|d| report(sources, d))?;
+            let options =
+                postc_postp::load_options(head.controller, None, sources).map_err(|d| report(sources, vec![d]))?;
+            let post = postc_postp::compile(&head, &options, sources).map_err(|d| report(sources, d))?;
+            let machine = postc_postp::transform::Machine {
+                kind: head.controller.kind(),
+                name: head.controller.name(),
+                axes: postc_postp::controller::rotary_axes(head.axis_type),
+                retractz: options.retractz,
+            };
+            Ok((Some(post), Some(machine)))
+        }
+        None => Ok((None, None)),
+    }
 }
 
 /// One verification: what `postc verify` and `postc post --verify` run.
@@ -117,7 +127,41 @@ pub struct Job<'a> {
     pub postp: Option<postc_postp::transform::Machine>,
 }
 
+/// A program opened for verification: its reader, its id in the source
+/// map, the settings, and the toolpath's events.
+pub(crate) struct Opened {
+    pub reader: BufReader<std::fs::File>,
+    pub file: postc_ir::FileId,
+    pub settings: Settings,
+    pub name: String,
+}
+
 pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
+    let Opened { mut reader, file: file_id, settings, name } = open(job, sources)?;
+    let mut source = toolpath(job, sources)?;
+    let report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
+    let shown = report.findings.len() as u64;
+    let total = report.errors + report.warnings;
+    match job.format {
+        Format::Json => {
+            let all: Vec<_> = report.findings.iter().map(|d| (name.clone(), d.clone())).collect();
+            report::out(&(report::json(sources, &all) + "\n"));
+        }
+        Format::Human => {
+            report::eprint(sources, &report.findings);
+            let more = if total > shown { format!(" ({} more not shown)", total - shown) } else { String::new() };
+            let s = report.stats;
+            eprintln!(
+                "postc verify: `{name}`: {} error(s), {} warning(s){more}; {} lines, {} moves replayed, {} of {} toolpath moves made",
+                report.errors, report.warnings, s.lines, s.motions, s.matched, s.expected
+            );
+        }
+    }
+    if report.errors > 0 { Err(Failed) } else { Ok(()) }
+}
+
+/// Opens the program: settings from the post, refusals of other families, the reader.
+pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed> {
     let name = job.program.display().to_string();
     if !(job.tolerance.is_finite() && job.tolerance > 0.0) {
         return Err(fail(
@@ -214,32 +258,18 @@ pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
         );
         sources.add_streamed(name.clone())
     };
+    Ok(Opened { reader, file: file_id, settings, name })
+}
+
+/// The toolpath's events, through postp's transform for a postp program.
+pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
     let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
-    let mut source: Box<dyn postc_ir::EventSource> = match &job.postp {
+    Ok(match &job.postp {
         Some(machine) => Box::new(postc_postp::transform::Transform::new(
             reader_events,
             postc_postp::records::ClText::open(job.toolpath),
             machine.clone(),
         )),
         None => reader_events,
-    };
-    let report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
-    let shown = report.findings.len() as u64;
-    let total = report.errors + report.warnings;
-    match job.format {
-        Format::Json => {
-            let all: Vec<_> = report.findings.iter().map(|d| (name.clone(), d.clone())).collect();
-            report::out(&(report::json(sources, &all) + "\n"));
-        }
-        Format::Human => {
-            report::eprint(sources, &report.findings);
-            let more = if total > shown { format!(" ({} more not shown)", total - shown) } else { String::new() };
-            let s = report.stats;
-            eprintln!(
-                "postc verify: `{name}`: {} error(s), {} warning(s){more}; {} lines, {} moves replayed, {} of {} toolpath moves made",
-                report.errors, report.warnings, s.lines, s.motions, s.matched, s.expected
-            );
-        }
-    }
-    if report.errors > 0 { Err(Failed) } else { Ok(()) }
+    })
 }

@@ -23,7 +23,7 @@ use postc_ir::{Diagnostic, EventSource, FileId, Severity, Span};
 use crate::expect::{Expected, ExpectedPath, Kind};
 use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
 use crate::grammar::{self, ItemKind, Items};
-use crate::{Controller, MAX_SHOWN, Report, Settings};
+use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
 
 /// Longest line read; the rest of a longer line is skipped with a finding.
 const MAX_LINE: usize = 64 * 1024;
@@ -41,6 +41,8 @@ pub struct Stats {
     pub expected: u64,
     /// Expected moves the program made.
     pub matched: u64,
+    /// The program's units at its end were inches (G20, or the post's).
+    pub inch: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -108,6 +110,9 @@ impl Block {
 
 struct Run<'a> {
     settings: &'a Settings,
+    observer: &'a mut dyn Observer,
+    /// Where each kept finding is (mm), parallel to `findings`.
+    at: Vec<[f64; 3]>,
     file: FileId,
     path: ExpectedPath<'a>,
     findings: Vec<Diagnostic>,
@@ -149,9 +154,17 @@ struct Run<'a> {
     block: Block,
 }
 
-pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
+pub fn run(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn EventSource,
+    settings: &Settings,
+    observer: &mut dyn Observer,
+) -> Report {
     let mut run = Run {
         settings,
+        observer,
+        at: Vec::new(),
         file,
         path: ExpectedPath::new(toolpath),
         findings: Vec::new(),
@@ -236,8 +249,10 @@ pub fn run(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSour
         run.line(&buf, &mut items);
     }
     run.finish();
-    let Run { findings, errors, warnings, stats, .. } = run;
-    Report { findings, errors, warnings, stats }
+    let mut stats = run.stats;
+    stats.inch = run.unit > 1.0;
+    let Run { findings, at, errors, warnings, .. } = run;
+    Report { findings, at, errors, warnings, stats }
 }
 
 /// Reads one line (up to and with its `\n`) into `buf`, keeping at most
@@ -287,6 +302,12 @@ impl Run<'_> {
     // ----- findings -----
 
     fn push(&mut self, d: Diagnostic, error: bool) {
+        let at = self.pos;
+        self.push_at(d, error, at);
+    }
+
+    /// A finding at a point of the path (mm): the move it concerns.
+    fn push_at(&mut self, d: Diagnostic, error: bool, at: [f64; 3]) {
         if error {
             self.errors += 1;
         } else {
@@ -303,6 +324,7 @@ impl Run<'_> {
         *shown += 1;
         if *shown <= MAX_SHOWN {
             self.findings.push(d);
+            self.at.push(at);
         }
     }
 
@@ -982,6 +1004,20 @@ impl Run<'_> {
     // ----- comparison -----
 
     fn emit(&mut self, p: Motion) {
+        let kind = match p.kind {
+            MKind::Rapid => Kind::Rapid,
+            MKind::Feed => Kind::Feed,
+            MKind::Arc => Kind::Arc,
+        };
+        self.observer.motion(&Move {
+            kind,
+            start: p.start,
+            end: p.end,
+            centre: p.centre,
+            dir: p.dir,
+            plane: p.plane,
+            span: p.span,
+        });
         self.pos = p.end;
         self.stats.motions += 1;
         if p.cutting() {
@@ -1452,7 +1488,7 @@ impl Run<'_> {
             .at(e.span, "the first move the program does not make")
             .also(line, "the program's last line")
             .help("the program is truncated, or the post dropped moves");
-            self.push(d, true);
+            self.push_at(d, true, e.end);
         }
         for d in std::mem::take(&mut self.path.diagnostics) {
             let error = d.is_error();

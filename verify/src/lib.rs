@@ -17,6 +17,7 @@ pub mod expect;
 pub mod geometry;
 pub mod grammar;
 mod interp;
+pub mod plot;
 
 use std::io::BufRead;
 
@@ -204,6 +205,10 @@ pub fn looks_binary(head: &[u8]) -> bool {
 pub struct Report {
     /// Findings, at most [`MAX_SHOWN`] of each code; `counts` has them all.
     pub findings: Vec<Diagnostic>,
+    /// Where each finding is on the path (mm; NaN where not known),
+    /// parallel to `findings`: the end of the program move it concerns,
+    /// or the toolpath move the program does not make.
+    pub at: Vec<[f64; 3]>,
     pub errors: u64,
     pub warnings: u64,
     pub stats: Stats,
@@ -215,7 +220,45 @@ pub const MAX_SHOWN: usize = 20;
 /// Verifies a program (read from `program`, its spans in `file`) against
 /// the toolpath it was posted from.
 pub fn verify(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
-    interp::run(program, file, toolpath, settings)
+    interp::run(program, file, toolpath, settings, &mut ())
+}
+
+/// One move of the program as the interpreter replayed it, in mm. A
+/// coordinate the program has not set yet is NaN (the first moves, and Z
+/// of programs that never write it).
+#[derive(Clone, Copy, Debug)]
+pub struct Move {
+    pub kind: expect::Kind,
+    pub start: [f64; 3],
+    pub end: [f64; 3],
+    /// The arc's centre (arcs only).
+    pub centre: [f64; 3],
+    pub dir: postc_ir::event::ArcDir,
+    pub plane: postc_ir::event::Plane,
+    /// The block in the program.
+    pub span: postc_ir::Span,
+}
+
+/// Sees every program move as it is replayed (a backplot draws them);
+/// called once per move, in order, before the move is compared.
+pub trait Observer {
+    fn motion(&mut self, m: &Move);
+}
+
+/// Observes nothing.
+impl Observer for () {
+    fn motion(&mut self, _: &Move) {}
+}
+
+/// [`verify`], showing each program move to `observer` as it is replayed.
+pub fn verify_observed(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn EventSource,
+    settings: &Settings,
+    observer: &mut dyn Observer,
+) -> Report {
+    interp::run(program, file, toolpath, settings, observer)
 }
 
 #[cfg(test)]
