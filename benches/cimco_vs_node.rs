@@ -36,7 +36,7 @@ fn main() {
     let jsonl = dir.path().join("zigzag.jsonl");
     {
         let mut file = std::io::BufWriter::new(std::fs::File::create(&jsonl).expect("the toolpath file"));
-        let mut generator = postc::synthetic::Synthetic::new("zigzag", moves).expect("the zigzag pattern");
+        let mut generator = postc_frontends::synthetic::Synthetic::new("zigzag", moves).expect("the zigzag pattern");
         let (mut line, mut diags) = (String::new(), Vec::new());
         while let Some((event, _)) = generator.next_event(&mut diags) {
             line.clear();

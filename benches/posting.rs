@@ -6,7 +6,7 @@
 //! least 0.8 of the hand-written formatter's speed.
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use postc::synthetic::Synthetic;
+use postc_frontends::synthetic::Synthetic;
 use postc_ir::event::{Event, Intent};
 use postc_ir::{EventSource, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions, run};

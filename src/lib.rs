@@ -3,10 +3,8 @@
 //!
 //! - [`cli`]: argument parsing and one module per subcommand (`post`,
 //!   `check`, `inspect`, `bench`, `toolpath gen`);
-//! - [`synthetic`]: generated toolpaths of any length;
 //! - [`default_post`]: the G-code post embedded in the binary, used when
 //!   `postc post` is given only a toolpath.
 
 pub mod cli;
 pub mod default_post;
-pub mod synthetic;

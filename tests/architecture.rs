@@ -44,3 +44,14 @@ fn verify_reads_programs_and_events_only() {
 fn the_ir_depends_on_no_postc_crate() {
     assert_eq!(postc_crates("ir"), Vec::<String>::new());
 }
+
+/// `src/` holds the command line only: every other module of the binary
+/// crate is a library crate that tests and benches use directly.
+#[test]
+fn the_binary_crate_holds_the_command_line() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut entries: Vec<String> =
+        std::fs::read_dir(&src).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    entries.sort();
+    assert_eq!(entries, ["cli", "default_post.rs", "lib.rs", "main.rs"]);
+}

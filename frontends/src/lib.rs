@@ -6,6 +6,7 @@
 //! - `postc-front-vcpost` (`frontends/vcpost`): Vericut VcPost posts;
 //! - `postc-front-apt` (`frontends/apt`): APT CL toolpaths;
 //! - [`native`] (here): the native toolpath stream, RON or JSON Lines;
+//! - [`synthetic`] (here): generated toolpaths of any length (`postc toolpath gen`, `postc bench`, the benchmarks);
 //! - posts written directly as IR in RON (`.ron`), read here.
 //!
 //! A post's dialect comes from its extension (`.pp`, `.js`, `.VcPost`,
@@ -15,6 +16,7 @@
 
 pub mod native;
 mod ron_locate;
+pub mod synthetic;
 
 use std::path::Path;
 

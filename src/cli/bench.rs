@@ -9,7 +9,7 @@ use postc_ir::{Diagnostic, EventSource, SourceMap};
 use postc_runtime::{Output, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
-use crate::synthetic::{PATTERNS, Synthetic};
+use postc_frontends::synthetic::{PATTERNS, Synthetic};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {

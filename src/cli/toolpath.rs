@@ -7,7 +7,7 @@ use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Diagnostic, EventSource, SourceMap};
 
 use super::{Failed, fail};
-use crate::synthetic::{PATTERNS, Synthetic};
+use postc_frontends::synthetic::{PATTERNS, Synthetic};
 
 #[derive(clap::Subcommand, Debug)]
 pub enum Command {
