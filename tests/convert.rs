@@ -255,7 +255,12 @@ fn converted_posts_post_as_their_sources() {
     }
     for target in TARGETS {
         let dir = corpus().join("converted").join(target_name(target));
-        let folders = std::fs::read_dir(&dir).into_iter().flatten().flatten().filter(|e| e.path().is_dir());
+        // `postp/` belongs to `postp_controllers_convert`.
+        let folders = std::fs::read_dir(&dir)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .filter(|e| e.path().is_dir() && e.file_name() != "postp");
         for entry in folders.flat_map(|f| std::fs::read_dir(f.path()).into_iter().flatten().flatten()) {
             if !pinned.contains(&entry.path()) {
                 if bless {
@@ -276,6 +281,71 @@ fn converted_posts_post_as_their_sources() {
         failures.len(),
         failures.join("\n\n")
     );
+}
+
+/// A short turning job for the lathe controllers (the mill controllers post
+/// `corpus/toolpaths/apt/postp_demo.apt`).
+const TURNING: &str = "MACHIN/FANUCL\nUNITS/MM\nPARTNO SHAFT\nTURRET/1\nSPINDL/180,SFM,CLW\nCOOLNT/FLOOD\n\
+FEDRAT/0.25,MMPR\nRAPID\nGOTO/15,0,2\nGOTO/12.5,0,0\nGOTO/12.5,0,-25\nCIRCLE/18.5,0,-25,0,1,0,6\nGOTO/18.5,0,-31\n\
+GOTO/20,0,-31\nCOOLNT/OFF\nSPINDL/OFF\nFINI\n";
+
+/// The eight `postp` controllers: each controller post, compiled with its
+/// options for a CL file, converts to RON (and is refused by Vectric: it
+/// runs one Sub per APT word), and posting the CL file through the RON post
+/// writes the same program as through the source.
+#[test]
+fn postp_controllers_convert() {
+    let mill = corpus().join("toolpaths/apt/postp_demo.apt");
+    let scratch = tempfile::tempdir().expect("a scratch folder");
+    let lathe = scratch.path().join("shaft.apt");
+    std::fs::write(&lathe, TURNING).expect("write the turning job");
+    let mut failures = Vec::new();
+    for controller in postc_postp::Controller::ALL {
+        let cl = if controller.kind() == postc_postp::Kind::Lathe { &lathe } else { &mill };
+        let cl = cl.as_path();
+        let mut sources = SourceMap::new();
+        let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
+        let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
+        let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
+        let refusals =
+            postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no Vectric form");
+        assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        let ron = postc_backends::convert(&source, Target::Ron).expect("every post converts to RON");
+        let pin = corpus().join("converted/ron/postp").join(format!("{}.ron", controller.name()));
+        if std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0") {
+            std::fs::create_dir_all(pin.parent().expect("a folder")).expect("create corpus/converted/ron/postp");
+            std::fs::write(&pin, &ron).expect("write a converted post");
+        } else if std::fs::read(&pin).ok().as_deref() != Some(ron.as_slice()) {
+            failures.push(format!("{}: missing or differs; bless with POSTC_BLESS=1", pin.display()));
+        }
+        let (back, diags) = compile_bytes(Path::new("controller.ron"), &ron, Some(Dialect::Ron));
+        let Some(back) = back else {
+            failures.push(format!("{controller:?}: the RON post does not compile: {diags:?}"));
+            continue;
+        };
+        let program = |post: &Post, sources: &mut SourceMap| match postc_postp::post_compiled(
+            post,
+            cl,
+            &head,
+            &options,
+            Output::memory(),
+            sources,
+        ) {
+            Ok(report) => match report.output {
+                Finished::Memory(parts) => Ok(parts.concat()),
+                _ => Err("not in memory".to_string()),
+            },
+            Err(d) => Err(d.iter().map(|d| format!("{} {}", d.code, d.message)).collect::<Vec<_>>().join("; ")),
+        };
+        let want = program(&source, &mut sources);
+        let got = program(&back, &mut sources);
+        match (want, got) {
+            (Ok(w), Ok(g)) if w == g => {}
+            (Ok(w), Ok(g)) => failures.push(format!("{controller:?}: the program differs\n{}", diff(&w, &g))),
+            (w, g) => failures.push(format!("{controller:?}: source {:?}, converted {:?}", w.err(), g.err())),
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
 /// A RON post with any of its numbers changed (ids out of range, formats

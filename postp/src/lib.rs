@@ -202,6 +202,20 @@ pub fn post(
     let head = head(cl, settings.machine, sources)?;
     let options = load_options(head.controller, settings.options.as_deref(), sources).map_err(|d| vec![d])?;
     let post = compile(&head, &options, sources)?;
+    post_compiled(&post, cl, &head, &options, out, sources)
+}
+
+/// Posts `cl` with a controller post already compiled (by [`compile`], or
+/// converted from it and read back): the CL file's words go through the
+/// [`transform`] to the post.
+pub fn post_compiled(
+    post: &Post,
+    cl: &Path,
+    head: &Head,
+    options: &Options,
+    out: Output,
+    sources: &mut SourceMap,
+) -> Result<RunReport, Vec<Diagnostic>> {
     let reader = postc_frontends::open_toolpath(cl, sources).map_err(|d| vec![d])?;
     let machine = Machine {
         kind: head.controller.kind(),
@@ -216,7 +230,7 @@ pub fn post(
         d.splice(0..0, head.warnings.iter().cloned());
         d
     };
-    match postc_runtime::run(&post, &mut source, out, run) {
+    match postc_runtime::run(post, &mut source, out, run) {
         Ok(mut report) => {
             report.warnings = prepend(std::mem::take(&mut report.warnings));
             Ok(report)
