@@ -225,9 +225,9 @@ impl Printer<'_> {
             crate::source_name(post),
             crate::dialect_name(post.info.dialect)
         ));
-        // The encoding note is about the source's bytes; the converted post
-        // writes every byte that is not ASCII as a `[nn]` code.
-        for note in post.info.notes.iter().filter(|n| !n.starts_with("encoding:")) {
+        // The source's encoding does not matter: the converted post writes
+        // every byte that is not ASCII as a `[nn]` code.
+        for note in &post.info.notes {
             for l in note.lines() {
                 self.line(&format!("+ {l}"));
             }

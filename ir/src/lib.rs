@@ -111,7 +111,7 @@ pub use event::{Event, EventSource};
 pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 pub use post::{
     Body, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo, Script,
-    ScriptLanguage, Section, ValueSource, Variable,
+    ScriptLanguage, Section, TextEncoding, ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
 pub use units::Units;

@@ -63,8 +63,20 @@ pub struct PostInfo {
     pub print_direct: bool,
     /// Vectric `RAPID_PLUNGE_TO_STARTZ` (a CAM-side setting, kept).
     pub rapid_plunge_to_start_z: bool,
+    /// The encoding of the post file's text: literal output bytes and
+    /// prefixes are in it, and are written back unchanged.
+    pub text_encoding: TextEncoding,
     /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
     pub notes: Vec<String>,
+}
+
+/// The encoding a post file was read in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum TextEncoding {
+    #[default]
+    Utf8,
+    /// Windows-1252 (a file that is not UTF-8: older Vectric and VcPost posts).
+    Windows1252,
 }
 
 /// Post dialects.

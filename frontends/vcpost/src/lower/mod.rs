@@ -117,6 +117,9 @@ pub fn lower(program: &Program, legacy_encoding: bool) -> (Post, Vec<Diagnostic>
     };
     l.post.info.dialect = Dialect::VcPost;
     l.post.info.dispatch = Dispatch::AptWords;
+    if legacy_encoding {
+        l.post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
+    }
     l.collect_procs();
     names::collect(&mut l);
     let mut index = 0;

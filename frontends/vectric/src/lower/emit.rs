@@ -205,6 +205,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         direct_output: text(model, GlobalName::DirectOutput),
         print_direct: flag(model, GlobalName::PrintDirect),
         rapid_plunge_to_start_z: flag(model, GlobalName::RapidPlungeToStartZ),
+        text_encoding: postc_ir::post::TextEncoding::Utf8,
         notes: Vec::new(),
     }
 }

@@ -20,9 +20,6 @@ use postc_ir::{Diagnostic, Post, SourceMap, Span};
 
 use model::Model;
 
-/// The note that says literal bytes are Windows-1252, not UTF-8.
-pub const ENCODING_NOTE: &str = "encoding: windows-1252 (literal output bytes and prefixes are Windows-1252)";
-
 /// Compiles a post file and its bases.
 pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<Diagnostic>) {
     let mut diags = Vec::new();
@@ -33,10 +30,8 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     }
     let main = chain.last().map(|l| l.ast.file).unwrap_or_default();
     let mut post = emit::emit(&model, &path.display().to_string(), Span::new(main, 0, 0), &mut diags);
-    // The IR has no field for the encoding of literal bytes; a note keeps it
-    // for backends and the runtime (see the crate's report to the lead).
     if chain.iter().any(|l| l.encoding == crate::decode::Encoding::Windows1252) {
-        post.info.notes.push(ENCODING_NOTE.to_string());
+        post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
     }
     diags.sort_by_key(|d| d.primary_span().map_or((main.0, 0), |s| (s.file.0, s.start)));
     (post, diags)
