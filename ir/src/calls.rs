@@ -34,6 +34,41 @@ pub struct SubCall {
     pub missing: MissingSub,
 }
 
+/// What a post says about one of its Subs for the applications that call
+/// Subs by name (VcPost keyword comments: `'#Cycle !X !Y Depth`): its role
+/// keyword, its parameters in table order, and the tips of its input
+/// fields. Kept in [`crate::PostInfo::subs`], so that probe tables and
+/// composites files can be read against a compiled post.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SubSignature {
+    /// The Sub's name, as written.
+    pub name: String,
+    /// Its role keyword without the `#` (`Init`, `Cycle`, `Option`, ...), when
+    /// it has one.
+    pub keyword: Option<String>,
+    /// Parameters in table order.
+    pub params: Vec<SubParam>,
+    /// Tips of an option Sub's input fields.
+    pub tips: Vec<SubTip>,
+}
+
+/// One parameter of a [`SubSignature`].
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct SubParam {
+    pub name: String,
+    /// A table row must give it (`!Name`).
+    pub required: bool,
+}
+
+/// The tip of one input field of an option Sub (`#C1 Operator message`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct SubTip {
+    /// The field, without the `#` (`C1`, `N2`, `S1`, ...).
+    pub slot: String,
+    pub text: String,
+}
+
 /// A value a call sets.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum CallValue {

@@ -104,7 +104,7 @@ pub mod units;
 pub mod validate;
 pub mod visit;
 
-pub use calls::{CallSource, CallValue, MissingSub, SubCall};
+pub use calls::{CallSource, CallValue, MissingSub, SubCall, SubParam, SubSignature, SubTip};
 pub use code::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
 pub use diagnostic::{Diagnostic, FileId, Label, Severity, SourceMap, Span};
 pub use event::{Event, EventSource};

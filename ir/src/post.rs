@@ -66,6 +66,9 @@ pub struct PostInfo {
     /// The encoding of the post file's text: literal output bytes and
     /// prefixes are in it, and are written back unchanged.
     pub text_encoding: TextEncoding,
+    /// What the post says about its Subs for the applications that call
+    /// them by name (VcPost keyword comments).
+    pub subs: Vec<crate::calls::SubSignature>,
     /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
     pub notes: Vec<String>,
 }

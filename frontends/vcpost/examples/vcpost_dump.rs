@@ -20,8 +20,8 @@ fn main() {
     let mut sources = postc_ir::SourceMap::new();
     let (post, diagnostics) = postc_front_vcpost::compile(Path::new(path), &bytes, &mut sources);
     print!("{}", sources.render(&diagnostics, false));
-    for note in &post.info.notes {
-        println!("{note}");
+    for sub in &post.info.subs {
+        println!("{sub:?}");
     }
     if args.iter().any(|a| a == "--ir") {
         println!("{post:#?}");

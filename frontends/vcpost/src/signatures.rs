@@ -3,17 +3,10 @@
 //! the #Init Sub, which parameters a #Cycle Sub takes and which of them are
 //! mandatory, the tips of an #Option Sub).
 //!
-//! They are also kept in the compiled post, one line each in
-//! `PostInfo::notes`, so that the runtime reads them without the syntax
-//! tree:
-//!
-//! ```text
-//! vcpost.sub WallThick #Cycle !X !Y !Width !Depth !Angle !Correction Offset MaxSafe
-//! vcpost.sub OpMessage #Option
-//! vcpost.tip OpMessage #C1 Operator message
-//! ```
-//!
-//! [`to_notes`] writes these lines and [`from_post`] reads them back.
+//! They are also kept in the compiled post, typed, in `PostInfo::subs`
+//! ([`postc_ir::SubSignature`]), so that the runtime and the applications
+//! read them without the syntax tree: [`to_ir`] writes them and
+//! [`from_post`] reads them back.
 
 use postc_ir::{Post, Span};
 use serde::{Deserialize, Serialize};
@@ -35,11 +28,6 @@ pub struct SubSignature {
     /// The Sub's header line.
     pub span: Span,
 }
-
-/// Prefix of a signature note.
-pub const SUB_NOTE: &str = "vcpost.sub ";
-/// Prefix of a tip note.
-pub const TIP_NOTE: &str = "vcpost.tip ";
 
 /// The signatures of every Sub that has a keyword or a tip, in file order.
 /// A Sub's keyword is its first one; its parameters are those of all its
@@ -85,59 +73,45 @@ pub fn probe_cycles(program: &Program) -> Vec<SubSignature> {
     signatures(program).into_iter().filter(|s| s.keyword.is_some()).collect()
 }
 
-/// Signatures as `PostInfo::notes` lines.
-pub fn to_notes(signatures: &[SubSignature]) -> Vec<String> {
-    let mut notes = Vec::new();
-    for s in signatures {
-        let mut line =
-            format!("{SUB_NOTE}{} {}", s.name, s.keyword.map_or("-".to_string(), |k| format!("#{}", k.as_str())));
-        for (name, mandatory) in &s.params {
-            line.push(' ');
-            if *mandatory {
-                line.push('!');
-            }
-            line.push_str(name);
-        }
-        notes.push(line);
-        for (slot, text) in &s.tips {
-            notes.push(format!("{TIP_NOTE}{} #{} {}", s.name, slot.as_str(), text).trim_end().to_string());
-        }
-    }
-    notes
+/// Signatures as the IR keeps them.
+pub fn to_ir(signatures: &[SubSignature]) -> Vec<postc_ir::SubSignature> {
+    signatures
+        .iter()
+        .map(|s| postc_ir::SubSignature {
+            name: s.name.clone(),
+            keyword: s.keyword.map(|k| k.as_str().to_string()),
+            params: s
+                .params
+                .iter()
+                .map(|(name, required)| postc_ir::SubParam { name: name.clone(), required: *required })
+                .collect(),
+            tips: s
+                .tips
+                .iter()
+                .map(|(slot, text)| postc_ir::SubTip { slot: slot.as_str().to_string(), text: text.clone() })
+                .collect(),
+        })
+        .collect()
 }
 
-/// Reads signatures back from a compiled post's notes; spans come from the
-/// post's functions.
+/// Reads signatures back from a compiled post; spans come from the post's
+/// functions. A keyword or tip slot the post's IR names but VcPost does
+/// not know (a hand-written RON post) is left out.
 pub fn from_post(post: &Post) -> Vec<SubSignature> {
-    let mut out: Vec<SubSignature> = Vec::new();
-    for note in &post.info.notes {
-        if let Some(rest) = note.strip_prefix(SUB_NOTE) {
-            let mut words = rest.split_whitespace();
-            let (Some(name), Some(keyword)) = (words.next(), words.next()) else { continue };
-            let span = post
+    post.info
+        .subs
+        .iter()
+        .map(|s| SubSignature {
+            name: s.name.clone(),
+            keyword: s.keyword.as_deref().and_then(SubKeyword::from_word),
+            params: s.params.iter().map(|p| (p.name.clone(), p.required)).collect(),
+            tips: s.tips.iter().filter_map(|t| Some((TipSlot::from_word(&t.slot)?, t.text.clone()))).collect(),
+            span: post
                 .functions
                 .iter()
-                .find(|f| f.name.eq_ignore_ascii_case(name))
+                .find(|f| f.name.eq_ignore_ascii_case(&s.name))
                 .and_then(|f| f.span)
-                .unwrap_or_default();
-            out.push(SubSignature {
-                name: name.to_string(),
-                keyword: keyword.strip_prefix('#').and_then(SubKeyword::from_word),
-                params: words
-                    .map(|w| w.strip_prefix('!').map_or((w.to_string(), false), |n| (n.to_string(), true)))
-                    .collect(),
-                tips: Vec::new(),
-                span,
-            });
-        } else if let Some(rest) = note.strip_prefix(TIP_NOTE) {
-            let mut parts = rest.splitn(3, ' ');
-            let (Some(name), Some(slot)) = (parts.next(), parts.next()) else { continue };
-            let Some(slot) = slot.strip_prefix('#').and_then(TipSlot::from_word) else { continue };
-            let text = parts.next().unwrap_or("").to_string();
-            if let Some(sig) = out.iter_mut().rev().find(|s| s.name == name) {
-                sig.tips.push((slot, text));
-            }
-        }
-    }
-    out
+                .unwrap_or_default(),
+        })
+        .collect()
 }

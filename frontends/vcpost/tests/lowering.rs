@@ -176,7 +176,15 @@ fn handlers_for_apt_words_and_composites_routines_only() {
         ]
     );
     assert_eq!(p.handlers[0].body, vec![Stmt::Eval(Expr::Call(0, vec![]))]);
-    assert_eq!(p.info.notes, vec!["vcpost.sub Rapid #Rapid !X".to_string()]);
+    assert_eq!(
+        p.info.subs,
+        vec![postc_ir::SubSignature {
+            name: "Rapid".into(),
+            keyword: Some("Rapid".into()),
+            params: vec![postc_ir::SubParam { name: "X".into(), required: true }],
+            tips: Vec::new(),
+        }]
+    );
 }
 
 #[test]

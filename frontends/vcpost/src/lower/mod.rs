@@ -9,7 +9,7 @@
 //! - Registers become [`Variable`]s (`ValueSource::Assigned`, or the block
 //!   number for `N`) with one [`postc_ir::NumberFormat`] each; every other
 //!   name outside a Sub's locals is a [`Global`].
-//! - Keyword comments are kept as `PostInfo::notes` lines
+//! - Keyword comments are kept as `PostInfo::subs`
 //!   ([`mod@crate::signatures`]).
 //!
 //! The passes: collect Subs, collect registers, collect what each global
@@ -197,7 +197,7 @@ impl Lowerer<'_> {
         self.handlers();
         self.never_set();
         let signatures = crate::signatures::signatures(self.program);
-        self.post.info.notes = crate::signatures::to_notes(&signatures);
+        self.post.info.subs = crate::signatures::to_ir(&signatures);
     }
 
     fn handlers(&mut self) {

@@ -206,6 +206,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         print_direct: flag(model, GlobalName::PrintDirect),
         rapid_plunge_to_start_z: flag(model, GlobalName::RapidPlungeToStartZ),
         text_encoding: postc_ir::post::TextEncoding::Utf8,
+        subs: Vec::new(),
         notes: Vec::new(),
     }
 }
