@@ -534,6 +534,10 @@ impl Digits {
 /// Whether `magnitude` (finite, not negative) is at or above the tie point
 /// (2k+1) / (2·10^d) of rounding to d decimals, compared exactly on the
 /// binary value (`pow10` is 10^d, at most 10^15).
+// Out of line and cold: near-ties are rare, and inlined into the hot
+// rounding path this integer arithmetic slowed every move (criterion `posting`).
+#[cold]
+#[inline(never)]
 fn at_or_above_binary_tie(magnitude: f64, k: u64, pow10: u64) -> bool {
     let bits = magnitude.to_bits();
     let exp_bits = ((bits >> 52) & 0x7ff) as i32;
