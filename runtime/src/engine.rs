@@ -145,7 +145,7 @@ impl<'p> Engine<'p> {
     pub fn section_prints(&self, section: Section, q: Quantity) -> bool {
         let Some(i) = self.sections[section as usize] else { return false };
         self.post.handlers[i as usize].body.iter().any(|s| match s {
-            Stmt::Line(pieces) => pieces.iter().any(
+            Stmt::Line { pieces, .. } => pieces.iter().any(
                 |p| matches!(p, Piece::Var(v) if self.post.variables[v.index()].source == ValueSource::Quantity(q)),
             ),
             _ => false,
@@ -226,7 +226,7 @@ impl<'p> Engine<'p> {
     pub fn run_body(&mut self, body: &[Stmt]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {
             match stmt {
-                Stmt::Line(pieces) => self.write_line(pieces)?,
+                Stmt::Line { pieces, .. } => self.write_line(pieces)?,
                 other => {
                     self.steps = 0;
                     let mut frame = Vec::new();
@@ -550,7 +550,7 @@ fn is_move_section(key: &HandlerKey) -> bool {
 pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
-            Stmt::Line(pieces) => Prepared::Line(
+            Stmt::Line { pieces, .. } => Prepared::Line(
                 pieces
                     .iter()
                     .map(|piece| match piece {

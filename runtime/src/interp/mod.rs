@@ -69,7 +69,7 @@ impl Engine<'_> {
                 return Err(Box::new(self.budget_error(None)));
             }
             match stmt {
-                Stmt::Line(pieces) => self.write_line_in(pieces, frame)?,
+                Stmt::Line { pieces, .. } => self.write_line_in(pieces, frame)?,
                 Stmt::Write(e) => {
                     let v = self.eval(e, frame)?;
                     self.write_blocks(&v.to_text());

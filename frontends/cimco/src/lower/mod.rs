@@ -93,6 +93,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         prefix: b"F".to_vec(),
         format: FormatId::new((post.formats.len() - 1) as u16),
         modality: Modality::Always,
+        span: None,
     });
     let feed_var = VarId::new((post.variables.len() - 1) as u16);
     // Feeds per revolution (mm/rev, in/rev) keep four decimals: 0.15
@@ -112,6 +113,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         prefix: b"F".to_vec(),
         format: FormatId::new((post.formats.len() - 1) as u16),
         modality: Modality::Always,
+        span: None,
     });
     let feed_rev_var = VarId::new((post.variables.len() - 1) as u16);
 
