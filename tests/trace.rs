@@ -216,3 +216,30 @@ fn a_failed_run_writes_no_trace() {
     assert!(!status.success());
     assert!(!trace.exists());
 }
+
+#[test]
+fn verify_findings_name_the_post_line_from_the_trace() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = corpus();
+    // Arc directions swapped: every arc is a finding.
+    let text = std::fs::read_to_string(root.join("posts/vectric/gcode_mm.pp")).unwrap();
+    let swapped = text.replace("\"G2", "\"G#").replace("\"G3", "\"G2").replace("\"G#", "\"G3");
+    assert_ne!(swapped, text);
+    let post = dir.path().join("swapped.pp");
+    std::fs::write(&post, swapped).unwrap();
+    let out = dir.path().join("out.tap");
+    let trace = dir.path().join("out.trace.jsonl");
+    let run = postc()
+        .arg("post")
+        .arg(&post)
+        .arg(root.join("toolpaths/arcs_mm.ron"))
+        .args(["-o".as_ref(), out.as_os_str(), "--trace".as_ref(), trace.as_os_str(), "--verify".as_ref()])
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.contains("the post wrote this line here"), "{stderr}");
+    assert!(stderr.contains("swapped.pp"), "{stderr}");
+    assert!(stderr.contains("while the post handled CW_ARC_MOVE") || stderr.contains("ARC_MOVE"), "{stderr}");
+    assert!(stderr.contains("toolpath event"), "{stderr}");
+}

@@ -187,6 +187,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                         tolerance: 0.01,
                         format: report::Format::Human,
                         postp: None,
+                        trace: args.trace.as_deref(),
                     };
                     super::verify::verify(&job, &mut sources)
                 }

@@ -300,6 +300,67 @@ pub fn explain(trace: &Path, line: u64, output: Option<&str>, sources: &mut Sour
     Ok(text)
 }
 
+/// Adds to each finding about a line of `program` the post statement
+/// that wrote the line and the toolpath event it was written for, from
+/// the trace of the run that wrote the program.
+pub fn annotate(
+    trace: &Path,
+    program: &Path,
+    findings: &mut [Diagnostic],
+    sources: &mut SourceMap,
+) -> Result<(), Diagnostic> {
+    let read_error = |e: &dyn std::fmt::Display| {
+        Diagnostic::error("IO001", format!("cannot read the trace `{}`: {e}", trace.display()))
+    };
+    let mut wanted: Vec<(u64, usize)> = Vec::new();
+    for (i, d) in findings.iter().enumerate() {
+        if let Some(span) = d.primary_span()
+            && let Some((line, _)) = sources.line_column(span.file, span.start)
+        {
+            wanted.push((line as u64, i));
+        }
+    }
+    if wanted.is_empty() {
+        return Ok(());
+    }
+    wanted.sort_unstable();
+    let name = program.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let file = File::open(trace).map_err(|e| read_error(&e))?;
+    for text in BufReader::new(file).lines() {
+        let text = text.map_err(|e| read_error(&e))?;
+        let record: Record = serde_json::from_str(&text).map_err(|e| read_error(&e))?;
+        if Path::new(&record.output).file_name().is_none_or(|n| n.to_string_lossy() != name) {
+            continue;
+        }
+        let from = wanted.partition_point(|w| w.0 < record.line);
+        for &(_, i) in wanted[from..].iter().take_while(|w| w.0 == record.line) {
+            let d = &mut findings[i];
+            if let Some(p) = &record.post {
+                match span_of_place(sources, p) {
+                    Some(s) => d.labels.push(Label {
+                        span: s,
+                        message: "the post wrote this line here".into(),
+                        primary: false,
+                    }),
+                    None => d.notes.push(format!("the post wrote this line at {}:{}:{}", p.file, p.line, p.column)),
+                }
+            }
+            if let Some(h) = &record.handler {
+                d.notes.push(format!("while the post handled {h}"));
+            }
+            if let Some(e) = &record.event {
+                match e.at.as_ref().and_then(|p| span_of_place(sources, p)) {
+                    Some(s) => {
+                        d.labels.push(Label { span: s, message: format!("toolpath event {}", e.index), primary: false })
+                    }
+                    None => d.notes.push(format!("for toolpath event {}", e.index)),
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Line `n` (from 1) of a file.
 fn read_line(path: &Path, n: u64) -> Option<String> {
     let file = File::open(path).ok()?;
