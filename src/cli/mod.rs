@@ -3,7 +3,7 @@
 //! ```text
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
-//! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
