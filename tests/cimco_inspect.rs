@@ -51,3 +51,28 @@ fn inspect_names_the_construct_and_its_place() {
     let line = text.lines().find(|l| l.starts_with("// function onLinear")).unwrap_or_default();
     assert!(line.contains("script: calls `writeBlock` with more arguments than its parameters"), "{line}");
 }
+
+#[test]
+fn bench_profile_shows_where_the_time_goes() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("args.js");
+    std::fs::write(
+        &post,
+        "var xyzFormat = createFormat({decimals: 3});\nfunction writeBlock() {\n  var s = \"\";\n  for (var i = 0; i < arguments.length; ++i) { s += arguments[i]; }\n  return s;\n}\nfunction onLinear(x, y, z, movement) { return writeBlock(\"G1\", \"X\", xyzFormat.format(x)); }\n",
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc"))
+        .args(["bench".as_ref(), post.as_os_str(), "--moves".as_ref(), "2000".as_ref(), "--profile".as_ref()])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("where the time goes"), "{text}");
+    // onLinear passes writeBlock more arguments than it declares: both are
+    // scripts, and the script calls inside Rhai are onLinear's time.
+    let row = text.lines().find(|l| l.starts_with("onLinear")).unwrap_or_default();
+    assert!(row.contains("script"), "{text}");
+    let row = text.lines().find(|l| l.starts_with("FEED_MOVE")).unwrap_or_default();
+    assert!(row.contains("handler"), "{text}");
+    assert!(text.contains("`onLinear` runs as a script: calls `writeBlock` with more arguments"), "{text}");
+}
