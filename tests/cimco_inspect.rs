@@ -8,6 +8,13 @@ mod golden_common;
 
 use golden_common::{corpus, files};
 
+/// Move handlers of corpus posts that still run as scripts: the field-style
+/// posts of issue 13, whose variadic `writeBlock(a, b, c)` (it reads
+/// `arguments`) has no native form yet. The list only shrinks: a handler
+/// that becomes native must come off it.
+const KNOWN_SCRIPTS: &[(&str, &str)] =
+    &[("haas_field", "writeBlock"), ("haas_field", "onLinear"), ("haas_field", "onCircular")];
+
 #[test]
 fn every_script_function_says_why_and_the_move_handlers_are_native() {
     let mut problems = Vec::new();
@@ -24,10 +31,15 @@ fn every_script_function_says_why_and_the_move_handlers_are_native() {
                 }
                 _ => {}
             }
-            if ["onLinear", "onCircular", "onRapid", "writeBlock"].contains(&f.name.as_str())
-                && matches!(f.body, Body::Script(_))
-            {
-                problems.push(format!("{}: `{}` runs as a script", path.display(), f.name));
+            let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+            let known = KNOWN_SCRIPTS.iter().any(|(p, func)| *p == stem && *func == f.name);
+            let script = matches!(f.body, Body::Script(_));
+            if ["onLinear", "onCircular", "onRapid", "writeBlock"].contains(&f.name.as_str()) && script != known {
+                problems.push(if script {
+                    format!("{}: `{}` runs as a script", path.display(), f.name)
+                } else {
+                    format!("{}: `{}` is native now: take it off KNOWN_SCRIPTS", path.display(), f.name)
+                });
             }
         }
     }
