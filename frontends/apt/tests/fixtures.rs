@@ -1,6 +1,6 @@
 //! Hand-written fixtures, one per lexing rule, CIRCLE convention, CYCLE
 //! form and diagnostic, with their events and diagnostics kept as
-//! snapshots in `tests/snapshots/` (rewritten with `POSTC_BLESS=1`).
+//! `insta` snapshots in `tests/snapshots/` (`cargo insta review` accepts new output).
 
 mod common;
 

@@ -1,28 +1,19 @@
 //! Snapshot tests: every fixture under `tests/fixtures/{valid,invalid}` is
 //! parsed, and its tree dump plus every diagnostic (rendered as people
-//! see them) must equal `tests/snapshots/<name>.snap`. Run with
-//! `POSTC_BLESS=1` to rewrite the snapshots after an intended change.
+//! see them) must equal the `insta` snapshot `tests/snapshots/<name>.snap`.
+//! After an intended change, `cargo insta review` (or
+//! `INSTA_UPDATE=always cargo test -p postc-front-cimco --test snapshots`)
+//! accepts the new output.
 //!
 //! Valid fixtures must parse without any diagnostic. Invalid fixtures must
 //! report at least one error, and every code named on their first line
 //! (`// expect: JS019 JS007`) must be among the codes reported.
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use postc_front_cimco::{dump::dump, parse};
 use postc_ir::SourceMap;
-
-fn fixtures(kind: &str) -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures").join(kind);
-    let mut files: Vec<PathBuf> = fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|entry| entry.expect("directory entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "js"))
-        .collect();
-    files.sort();
-    files
-}
 
 fn name_of(path: &Path) -> String {
     path.file_stem().expect("file name").to_string_lossy().into_owned()
@@ -50,71 +41,45 @@ fn expected_codes(path: &Path) -> Vec<String> {
         .unwrap_or_default()
 }
 
-/// The first line where two texts differ, for the failure message.
-fn first_difference(expected: &str, actual: &str) -> String {
-    let mut e = expected.lines();
-    let mut a = actual.lines();
-    for line in 1.. {
-        match (e.next(), a.next()) {
-            (None, None) => return "texts differ only in line endings".to_string(),
-            (x, y) if x != y => {
-                return format!(
-                    "line {line}:\n  snapshot: {}\n  actual:   {}",
-                    x.unwrap_or("<end>"),
-                    y.unwrap_or("<end>")
-                );
-            }
-            _ => {}
-        }
-    }
-    unreachable!()
-}
-
 #[test]
 fn fixtures_match_snapshots() {
-    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| v == "1");
     let snapshots = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
-    fs::create_dir_all(&snapshots).expect("snapshot directory");
     let mut failures = Vec::new();
     let mut seen = Vec::new();
-    for kind in ["valid", "invalid"] {
-        let files = fixtures(kind);
-        assert!(!files.is_empty(), "no {kind} fixtures");
-        for path in files {
-            let name = name_of(&path);
-            assert!(!seen.contains(&name), "two fixtures are called {name}");
-            seen.push(name.clone());
-            let (actual, codes) = snapshot(kind, &path);
-            if kind == "valid" && !codes.is_empty() {
-                failures.push(format!("{name}: a valid fixture reported {codes:?}"));
+    let mut kinds = Vec::new();
+    insta::glob!("fixtures/{valid,invalid}/*.js", |path| {
+        let kind = path.parent().and_then(Path::file_name).and_then(|k| k.to_str()).unwrap_or_default().to_string();
+        let name = name_of(path);
+        assert!(!seen.contains(&name), "two fixtures are called {name}");
+        seen.push(name.clone());
+        let (actual, codes) = snapshot(&kind, path);
+        kinds.push(kind.clone());
+        if kind == "valid" && !codes.is_empty() {
+            failures.push(format!("{name}: a valid fixture reported {codes:?}"));
+        }
+        if kind == "invalid" {
+            if codes.is_empty() {
+                failures.push(format!("{name}: an invalid fixture reported nothing"));
             }
-            if kind == "invalid" {
-                if codes.is_empty() {
-                    failures.push(format!("{name}: an invalid fixture reported nothing"));
+            for code in expected_codes(path) {
+                if !codes.contains(&code) {
+                    failures.push(format!("{name}: expected {code}, reported {codes:?}"));
                 }
-                for code in expected_codes(&path) {
-                    if !codes.contains(&code) {
-                        failures.push(format!("{name}: expected {code}, reported {codes:?}"));
-                    }
-                }
-            }
-            let snap = snapshots.join(format!("{name}.snap"));
-            if bless {
-                fs::write(&snap, &actual).expect("write snapshot");
-                continue;
-            }
-            match fs::read_to_string(&snap) {
-                Ok(expected) if expected == actual => {}
-                Ok(expected) => failures
-                    .push(format!("{name}: differs from its snapshot at {}", first_difference(&expected, &actual))),
-                Err(_) => failures.push(format!("{name}: no snapshot (run with POSTC_BLESS=1)")),
             }
         }
+        // `tests/snapshots/<name>.snap`, whatever folder the fixture is in.
+        let mut settings = insta::Settings::clone_current();
+        settings.remove_snapshot_suffix();
+        settings.set_prepend_module_to_snapshot(false);
+        settings.set_omit_expression(true);
+        settings.bind(|| insta::assert_snapshot!(name, actual));
+    });
+    for kind in ["valid", "invalid"] {
+        assert!(kinds.iter().any(|k| k == kind), "no {kind} fixtures");
     }
     for entry in fs::read_dir(&snapshots).expect("snapshot directory") {
         let path = entry.expect("directory entry").path();
-        let name = name_of(&path);
-        if !seen.contains(&name) {
+        if path.extension().is_some_and(|e| e == "snap") && !seen.contains(&name_of(&path)) {
             failures.push(format!("{}: a snapshot without a fixture", path.display()));
         }
     }

@@ -1,8 +1,9 @@
 //! Snapshot tests: every fixture post under `tests/fixtures/valid` and
 //! `tests/fixtures/invalid` is compiled, and its diagnostics (rendered as
 //! people see them), Sub signatures and lowered IR (RON) are compared with
-//! `tests/snapshots/<name>.snap`. Any difference fails; `POSTC_BLESS=1`
-//! rewrites the snapshots.
+//! the `insta` snapshot `tests/snapshots/<name>.snap`. Any difference
+//! fails; `cargo insta review` (or `INSTA_UPDATE=always cargo test -p
+//! postc-front-vcpost --test snapshots`) accepts new output.
 //!
 //! Valid fixtures must compile without any diagnostic. Invalid fixtures are
 //! named after the code they show (`vc006_missing_end_if.VcPost`) and must
@@ -16,17 +17,6 @@ use postc_ir::{Severity, SourceMap};
 
 fn crate_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn fixtures(kind: &str) -> Vec<PathBuf> {
-    let dir = crate_dir().join("tests/fixtures").join(kind);
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("vcpost")))
-        .collect();
-    files.sort();
-    files
 }
 
 struct Outcome {
@@ -103,38 +93,23 @@ fn compact_byte_arrays(ron: &str) -> String {
     out
 }
 
-fn check_snapshot(path: &Path, actual: &str) -> Result<(), String> {
-    let name = path.file_stem().unwrap().to_string_lossy();
-    let snap = crate_dir().join("tests/snapshots").join(format!("{name}.snap"));
-    if std::env::var_os("POSTC_BLESS").is_some_and(|v| v == "1") {
-        std::fs::write(&snap, actual).unwrap();
-        return Ok(());
-    }
-    let expected = std::fs::read_to_string(&snap)
-        .map_err(|_| format!("{}: no snapshot; run with POSTC_BLESS=1 to write it", snap.display()))?;
-    if expected == actual {
-        return Ok(());
-    }
-    let (line, want, got) = expected
-        .lines()
-        .zip(actual.lines())
-        .enumerate()
-        .find(|(_, (a, b))| a != b)
-        .map(|(i, (a, b))| (i + 1, a.to_string(), b.to_string()))
-        .unwrap_or((expected.lines().count().min(actual.lines().count()) + 1, "<end>".into(), "<end>".into()));
-    Err(format!(
-        "{}: differs at line {line}\n  expected: {want}\n  actual:   {got}\n(POSTC_BLESS=1 rewrites snapshots)",
-        snap.display()
-    ))
+/// Compares `actual` with the snapshot `tests/snapshots/<stem>.snap`.
+fn check_snapshot(path: &Path, actual: &str) {
+    let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+    let mut settings = insta::Settings::clone_current();
+    settings.remove_snapshot_suffix();
+    settings.set_prepend_module_to_snapshot(false);
+    settings.set_omit_expression(true);
+    settings.bind(|| insta::assert_snapshot!(name, actual));
 }
 
 #[test]
 fn valid_fixtures_compile_cleanly_and_match_their_snapshots() {
     let mut failures = Vec::new();
-    let files = fixtures("valid");
-    assert!(files.len() >= 4, "expected the four application posts");
-    for path in files {
-        let outcome = run(&path);
+    let mut count = 0;
+    insta::glob!("fixtures/valid/*.vcpost", |path| {
+        count += 1;
+        let outcome = run(path);
         if !outcome.codes.is_empty() {
             failures.push(format!(
                 "{}: unexpected diagnostics {:?}\n{}",
@@ -142,41 +117,38 @@ fn valid_fixtures_compile_cleanly_and_match_their_snapshots() {
                 outcome.codes,
                 outcome.snapshot
             ));
-            continue;
+            return;
         }
-        if let Err(e) = check_snapshot(&path, &outcome.snapshot) {
-            failures.push(e);
-        }
-    }
+        check_snapshot(path, &outcome.snapshot);
+    });
+    assert!(count >= 4, "expected the four application posts");
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
 #[test]
 fn invalid_fixtures_report_their_code_and_match_their_snapshots() {
     let mut failures = Vec::new();
-    for path in fixtures("invalid") {
-        let outcome = run(&path);
+    insta::glob!("fixtures/invalid/*.vcpost", |path| {
+        let outcome = run(path);
         let stem = path.file_stem().unwrap().to_string_lossy().to_uppercase();
         let code = stem.split('_').next().unwrap_or_default().to_string();
         if !outcome.codes.iter().any(|(c, _)| *c == code) {
             failures.push(format!("{}: no {code} among {:?}\n{}", path.display(), outcome.codes, outcome.snapshot));
-            continue;
+            return;
         }
-        if let Err(e) = check_snapshot(&path, &outcome.snapshot) {
-            failures.push(e);
-        }
-    }
+        check_snapshot(path, &outcome.snapshot);
+    });
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
 #[test]
 fn every_code_has_an_invalid_fixture() {
-    let have: Vec<String> = fixtures("invalid")
-        .iter()
-        .map(|p| {
-            p.file_stem().unwrap().to_string_lossy().to_uppercase().split('_').next().unwrap_or_default().to_string()
-        })
-        .collect();
+    let mut have = Vec::new();
+    insta::glob!("fixtures/invalid/*.vcpost", |p| {
+        have.push(
+            p.file_stem().unwrap().to_string_lossy().to_uppercase().split('_').next().unwrap_or_default().to_string(),
+        );
+    });
     let missing: Vec<&str> =
         postc_front_vcpost::diagnostics::ALL.iter().copied().filter(|c| !have.iter().any(|h| h == c)).collect();
     assert!(missing.is_empty(), "codes without an invalid fixture: {missing:?}");

@@ -1,13 +1,15 @@
 //! Fixture snapshots: every post in `tests/fixtures/valid` and
 //! `tests/fixtures/invalid` is compiled and compared with
 //! `tests/snapshots/<name>.snap`: the lowered IR as RON, then every
-//! diagnostic rendered for people and as JSON. Any difference fails;
-//! `POSTC_BLESS=1 cargo test -p postc-front-vectric` rewrites the snapshots.
+//! diagnostic rendered for people and as JSON. These are `insta`
+//! snapshots: any difference fails, and `cargo insta review` (or
+//! `INSTA_UPDATE=always cargo test -p postc-front-vectric`) accepts new
+//! output.
 //! Valid fixtures must compile without errors, invalid ones with at least
 //! one.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use postc_ir::{HandlerKey, Piece, Post, SourceMap, Stmt};
 
@@ -59,18 +61,6 @@ fn listing(post: &Post) -> String {
     out
 }
 
-fn fixtures(kind: &str) -> Vec<PathBuf> {
-    let dir = Path::new("tests/fixtures").join(kind);
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "pp"))
-        .collect();
-    files.sort();
-    files
-}
-
 /// The snapshot text of one fixture, and whether it had errors.
 fn snapshot(path: &Path) -> (String, bool) {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
@@ -97,47 +87,25 @@ fn snapshot(path: &Path) -> (String, bool) {
 
 #[test]
 fn fixtures_match_their_snapshots() {
-    let bless = std::env::var_os("POSTC_BLESS").is_some_and(|v| v == "1");
-    let snapshots = Path::new("tests/snapshots");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut failures = Vec::new();
     let mut names = std::collections::BTreeSet::new();
-    for (kind, expect_errors) in [("valid", false), ("invalid", true)] {
-        for path in fixtures(kind) {
-            let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-            assert!(names.insert(name.clone()), "two fixtures are named {name}");
-            let (text, has_errors) = snapshot(&path);
-            if has_errors != expect_errors {
-                failures.push(format!("{}: expected {}errors", path.display(), if expect_errors { "" } else { "no " }));
-            }
-            let snap = snapshots.join(format!("{name}.snap"));
-            if bless {
-                std::fs::create_dir_all(snapshots).expect("snapshot folder");
-                std::fs::write(&snap, &text).expect("write snapshot");
-                continue;
-            }
-            match std::fs::read_to_string(&snap) {
-                Ok(expected) if expected == text => {}
-                Ok(expected) => {
-                    let line = expected
-                        .lines()
-                        .zip(text.lines())
-                        .position(|(a, b)| a != b)
-                        .map_or_else(|| expected.lines().count().min(text.lines().count()) + 1, |i| i + 1);
-                    failures.push(format!(
-                        "{} differs from {} from line {line}:\n  expected: {:?}\n  actual:   {:?}",
-                        path.display(),
-                        snap.display(),
-                        expected.lines().nth(line - 1).unwrap_or(""),
-                        text.lines().nth(line - 1).unwrap_or("")
-                    ));
-                }
-                Err(_) => failures.push(format!("{} has no snapshot {}", path.display(), snap.display())),
-            }
+    insta::glob!("fixtures/{valid,invalid}/*.pp", |absolute| {
+        let path = absolute.strip_prefix(root).unwrap_or(absolute);
+        let kind = path.parent().and_then(Path::file_name).and_then(|k| k.to_str()).unwrap_or_default();
+        let expect_errors = kind == "invalid";
+        let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        assert!(names.insert(name.clone()), "two fixtures are named {name}");
+        let (text, has_errors) = snapshot(path);
+        if has_errors != expect_errors {
+            failures.push(format!("{}: expected {}errors", path.display(), if expect_errors { "" } else { "no " }));
         }
-    }
-    assert!(
-        failures.is_empty(),
-        "{}\n\nrun `POSTC_BLESS=1 cargo test -p postc-front-vectric` to accept the new output",
-        failures.join("\n")
-    );
+        // `tests/snapshots/<name>.snap`, whatever folder the fixture is in.
+        let mut settings = insta::Settings::clone_current();
+        settings.remove_snapshot_suffix();
+        settings.set_prepend_module_to_snapshot(false);
+        settings.set_omit_expression(true);
+        settings.bind(|| insta::assert_snapshot!(name, text));
+    });
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

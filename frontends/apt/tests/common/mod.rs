@@ -101,25 +101,14 @@ pub fn render(read: &Read) -> String {
     out
 }
 
-/// Compares `actual` with `tests/snapshots/NAME.snap`; rewrites it when
-/// `POSTC_BLESS=1`.
+/// Compares `actual` with the `insta` snapshot `tests/snapshots/NAME.snap`
+/// (`cargo insta review` or `INSTA_UPDATE=always` accepts new output).
 pub fn assert_snapshot(name: &str, actual: &str) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots").join(format!("{name}.snap"));
-    if std::env::var("POSTC_BLESS").is_ok_and(|v| v == "1") {
-        std::fs::write(&path, actual).expect("write snapshot");
-        return;
-    }
-    let expected = std::fs::read_to_string(&path)
-        .unwrap_or_else(|_| panic!("no snapshot {}: run with POSTC_BLESS=1 to write it", path.display()));
-    if expected != actual {
-        let first = expected.lines().zip(actual.lines()).position(|(a, b)| a != b).unwrap_or(0);
-        panic!(
-            "snapshot {name} differs at line {}:\n  expected: {}\n  actual:   {}\n(run with POSTC_BLESS=1 to accept)",
-            first + 1,
-            expected.lines().nth(first).unwrap_or("<end>"),
-            actual.lines().nth(first).unwrap_or("<end>")
-        );
-    }
+    let mut settings = insta::Settings::clone_current();
+    settings.set_snapshot_path(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots"));
+    settings.set_prepend_module_to_snapshot(false);
+    settings.set_omit_expression(true);
+    settings.bind(|| insta::assert_snapshot!(name, actual));
 }
 
 /// The order the event contract asks for: one Job first; toolpaths that
