@@ -7,16 +7,16 @@
 //! `cargo bench --bench cimco_vs_node` (says so and stops when `node` is
 //! not installed).
 
-#[path = "../tests/cimco_common/mod.rs"]
-mod cimco_common;
+#[path = "../tests/support/mod.rs"]
+mod support;
 
 use std::io::Write;
 use std::time::Instant;
 
-use cimco_common::{compile, corpus, node, run_node};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::EventSource;
 use postc_runtime::{Output, RunOptions};
+use support::cimco::{compile, corpus, node, run_node};
 
 fn best_of_three(mut f: impl FnMut() -> f64) -> f64 {
     (0..3).map(|_| f()).fold(f64::INFINITY, f64::min)

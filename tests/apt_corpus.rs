@@ -38,10 +38,12 @@ use postc_ir::{Diagnostic, EventSource, Post, SourceMap, Span};
 use postc_runtime::geometry::ArcGeometry;
 use postc_runtime::{Finished, Output, RunOptions};
 
-mod postp_common;
+mod support;
+
+use support::postp;
 
 fn corpus() -> Option<Vec<PathBuf>> {
-    let dir = postp_common::root().join("../shared/corpus/apt");
+    let dir = postp::root().join("../shared/corpus/apt");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .ok()?
         .filter_map(|e| e.ok())
@@ -237,7 +239,7 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     let Some(rs274) = rs274 else {
         return Ok(format!("{arcs} arcs, {linear} straight moves (rs274 not on PATH)"));
     };
-    let (complaints, motions) = postp_common::interpret(rs274, &program);
+    let (complaints, motions) = postp::interpret(rs274, &program);
     if !complaints.is_empty() {
         return Err(format!("rs274: {complaints:?}"));
     }
@@ -261,7 +263,7 @@ fn every_corpus_cl_file_reads_posts_and_reads_back_in_rs274() {
         println!("skipped: ../shared/corpus/apt is not there");
         return;
     };
-    let rs274 = postp_common::rs274();
+    let rs274 = postp::rs274();
     if rs274.is_none() {
         println!("rs274 not found on PATH: the programs are posted but not read back");
     }
@@ -278,15 +280,15 @@ fn every_corpus_cl_file_reads_posts_and_reads_back_in_rs274() {
 
 #[test]
 fn the_acceptance_file_posts_and_reads_in_rs274() {
-    let path = postp_common::root().join("../shared/corpus/apt/HumMan__CLSFProcessor/_3_PAZ_125_N2.cls");
+    let path = postp::root().join("../shared/corpus/apt/HumMan__CLSFProcessor/_3_PAZ_125_N2.cls");
     if !path.exists() {
         println!("skipped: ../shared/corpus/apt is not there");
         return;
     }
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc")).arg("post").arg(&path).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    if let Some(rs274) = postp_common::rs274() {
-        let (complaints, motions) = postp_common::interpret(&rs274, &String::from_utf8_lossy(&out.stdout));
+    if let Some(rs274) = postp::rs274() {
+        let (complaints, motions) = postp::interpret(&rs274, &String::from_utf8_lossy(&out.stdout));
         assert!(complaints.is_empty(), "{complaints:?}");
         assert!(motions > 0);
     }

@@ -11,29 +11,23 @@
 //! `POSTC_BLESS=1 cargo test --test cimco_goldens` rewrites the expected
 //! files from the current output and deletes the ones no pair makes.
 
-mod cimco_common;
+mod support;
 
-use std::collections::BTreeSet;
-
-use cimco_common::*;
 use postc_ir::Body;
+use support::cimco::*;
+use support::{Goldens, all_files};
 
 #[test]
 fn cimco_posts_match_their_goldens() {
-    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0");
     let expected_dir = corpus().join("expected/cimco");
     let posts = posts();
     assert!(posts.len() >= 7, "the corpus has {} CIMCO posts", posts.len());
-    if bless {
-        std::fs::create_dir_all(&expected_dir).expect("create corpus/expected/cimco");
-    }
-    let mut failures = Vec::new();
-    let mut made = BTreeSet::new();
+    let mut goldens = Goldens::new();
     for post_path in &posts {
         let post = match compile(post_path) {
             Ok(p) => p,
             Err(e) => {
-                failures.push(e);
+                goldens.fail(e);
                 continue;
             }
         };
@@ -42,48 +36,15 @@ fn cimco_posts_match_their_goldens() {
             let program = match post_toolpath(&post, &toolpath) {
                 Ok(p) => p,
                 Err(e) => {
-                    failures.push(format!("{pair}: {e}"));
+                    goldens.fail(format!("{pair}: {e}"));
                     continue;
                 }
             };
-            let name = format!("{pair}.{}", post.info.file_extension);
-            let target = expected_dir.join(&name);
-            made.insert(name.clone());
-            let old = std::fs::read(&target).ok();
-            if bless {
-                if old.as_deref() != Some(program.as_slice()) {
-                    std::fs::write(&target, &program)
-                        .unwrap_or_else(|e| panic!("cannot write {}: {e}", target.display()));
-                }
-                continue;
-            }
-            match old {
-                None => failures.push(format!("{name}: no expected file; bless with POSTC_BLESS=1")),
-                Some(old) if old != program => {
-                    failures.push(format!("{name}: output differs\n{}", diff(&old, &program)))
-                }
-                Some(_) => {}
-            }
+            goldens.check(&expected_dir.join(format!("{pair}.{}", post.info.file_extension)), &program);
         }
     }
-    if let Ok(entries) = std::fs::read_dir(&expected_dir) {
-        for e in entries.flatten() {
-            let name = e.file_name().to_string_lossy().into_owned();
-            if e.path().is_file() && !made.contains(&name) {
-                if bless {
-                    let _ = std::fs::remove_file(e.path());
-                } else {
-                    failures.push(format!("{name}: no post and toolpath make this file any more"));
-                }
-            }
-        }
-    }
-    assert!(
-        failures.is_empty(),
-        "{} CIMCO goldens fail:\n\n{}\n\nIf the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test cimco_goldens",
-        failures.len(),
-        failures.join("\n\n")
-    );
+    goldens.sweep(all_files(&expected_dir), "no post and toolpath make this file any more");
+    goldens.finish("CIMCO goldens", "cimco_goldens");
 }
 
 #[test]

@@ -4,9 +4,9 @@
 
 use postc_ir::{Body, SourceMap};
 
-mod golden_common;
+mod support;
 
-use golden_common::{corpus, files};
+use support::{corpus, files};
 
 /// Move handlers of corpus posts that still run as scripts: the field-style
 /// posts of issue 13, whose variadic `writeBlock(a, b, c)` (it reads

@@ -7,9 +7,9 @@
 //! `cargo bench --bench cimco_vs_node` measures both engines over a
 //! million-move toolpath (docs/performance.md).
 
-mod cimco_common;
+mod support;
 
-use cimco_common::*;
+use support::cimco::*;
 
 #[test]
 fn node_prints_what_postc_prints() {

@@ -3,8 +3,8 @@
 //! the same bytes and the same warnings as its source.
 //!
 //! - the project's posts (`corpus/posts/`): each converted post is
-//!   pinned in `corpus/converted/<target>/<source dialect>/` (bless with
-//!   `POSTC_BLESS=1`);
+//!   pinned in `corpus/converted/<target>/<source dialect>/` (a byte-exact
+//!   golden of `tests/support`: bless with `POSTC_BLESS=1`);
 //! - the real Vectric posts of `../shared/corpus/vectric`: converted and
 //!   posted, not pinned (their text is not the project's to commit);
 //! - converting a converted post to its own target gives the same text (a
@@ -14,15 +14,15 @@
 //! The test prints the matrix (source dialect x target: converted /
 //! refused, by reason) that `docs/convert.md` records.
 
-mod golden_common;
+mod support;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-use golden_common::{corpus, diff, files, stem};
 use postc_backends::Target;
 use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
+use support::{blessing, check_golden, corpus, diff, files, stem};
 
 const TARGETS: [Target; 2] = [Target::Vectric, Target::Ron];
 
@@ -140,7 +140,6 @@ fn without_spans(post: &Post) -> Post {
 
 #[test]
 fn converted_posts_post_as_their_sources() {
-    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0");
     let scratch = tempfile::tempdir().expect("a scratch folder");
     let mut failures = Vec::new();
     // (source dialect and origin, target) -> outcome -> count
@@ -260,20 +259,8 @@ fn converted_posts_post_as_their_sources() {
                 let dir = corpus().join("converted").join(target_name(target)).join(&folder);
                 let pin = dir.join(&file);
                 pinned.insert(pin.clone());
-                let old = std::fs::read(&pin).ok();
-                if bless {
-                    std::fs::create_dir_all(&dir).expect("create corpus/converted");
-                    if old.as_deref() != Some(converted.as_slice()) {
-                        std::fs::write(&pin, &converted).expect("write a converted post");
-                    }
-                } else {
-                    match old {
-                        None => failures.push(format!("{}: not pinned; bless with POSTC_BLESS=1", pin.display())),
-                        Some(old) if old != converted => {
-                            failures.push(format!("{}: differs\n{}", pin.display(), diff(&old, &converted)))
-                        }
-                        Some(_) => {}
-                    }
+                if let Err(e) = check_golden(&pin, &converted) {
+                    failures.push(e);
                 }
             }
         }
@@ -288,7 +275,7 @@ fn converted_posts_post_as_their_sources() {
             .filter(|e| e.path().is_dir() && e.file_name() != "postp");
         for entry in folders.flat_map(|f| std::fs::read_dir(f.path()).into_iter().flatten().flatten()) {
             if !pinned.contains(&entry.path()) {
-                if bless {
+                if blessing() {
                     let _ = std::fs::remove_file(entry.path());
                 } else {
                     failures.push(format!("{}: no corpus post converts to it any more", entry.path().display()));
@@ -337,11 +324,8 @@ fn postp_controllers_convert() {
         assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
         let ron = postc_backends::convert(&source, Target::Ron).expect("every post converts to RON");
         let pin = corpus().join("converted/ron/postp").join(format!("{}.ron", controller.name()));
-        if std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0") {
-            std::fs::create_dir_all(pin.parent().expect("a folder")).expect("create corpus/converted/ron/postp");
-            std::fs::write(&pin, &ron).expect("write a converted post");
-        } else if std::fs::read(&pin).ok().as_deref() != Some(ron.as_slice()) {
-            failures.push(format!("{}: missing or differs; bless with POSTC_BLESS=1", pin.display()));
+        if let Err(e) = check_golden(&pin, &ron) {
+            failures.push(e);
         }
         let (back, diags) = compile_bytes(Path::new("controller.ron"), &ron, Some(Dialect::Ron));
         let Some(back) = back else {

@@ -17,36 +17,27 @@
 //! files from the current output and deletes expected files no pair makes
 //! any more. Read every blessed file before committing it.
 
-use std::collections::BTreeSet;
-use std::path::PathBuf;
-
 use postc_runtime::output::part_names;
 
-mod golden_common;
+mod support;
 
-use golden_common::{compile, corpus, diff, files, post_parts as post_toolpath, stem};
+use support::{Goldens, all_files, compile, corpus, diff, files, post_parts as post_toolpath, stem};
 
 #[test]
 fn corpus_posts_match_their_goldens() {
-    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0");
     let root = corpus();
     let expected_dir = root.join("expected");
     let posts = files(&root.join("posts/vectric"), "pp");
     let toolpaths = files(&root.join("toolpaths"), "ron");
     assert!(posts.len() >= 10, "the corpus has {} posts", posts.len());
     assert!(toolpaths.len() >= 8, "the corpus has {} toolpaths", toolpaths.len());
-    if bless {
-        std::fs::create_dir_all(&expected_dir).expect("create corpus/expected");
-    }
 
-    let mut failures = Vec::new();
-    let mut made = BTreeSet::new();
-    let mut written = 0;
+    let mut goldens = Goldens::new();
     for post_path in &posts {
         let post = match compile(post_path) {
             Ok(p) => p,
             Err(e) => {
-                failures.push(e);
+                goldens.fail(e);
                 continue;
             }
         };
@@ -57,7 +48,7 @@ fn corpus_posts_match_their_goldens() {
             let parts = match post_toolpath(&post, toolpath) {
                 Ok(parts) => parts,
                 Err(e) => {
-                    failures.push(format!("{pair}: {e}"));
+                    goldens.fail(format!("{pair}: {e}"));
                     continue;
                 }
             };
@@ -65,59 +56,18 @@ fn corpus_posts_match_their_goldens() {
             let names = part_names(&target, parts.len(), post.options.tape_splitting.as_ref());
             assert_eq!(names.len(), parts.len(), "{pair}: one name per part");
             for (name, part) in names.iter().zip(&parts) {
-                let file = name.file_name().expect("a part name").to_string_lossy().into_owned();
-                made.insert(file.clone());
-                let old = std::fs::read(name).ok();
-                if bless {
-                    if old.as_deref() != Some(part.as_slice()) {
-                        std::fs::write(name, part).unwrap_or_else(|e| panic!("cannot write {}: {e}", name.display()));
-                        written += 1;
-                    }
-                    continue;
-                }
-                match old {
-                    None => failures.push(format!(
-                        "{file}: no expected file (posting {pair} gave {} bytes); bless with POSTC_BLESS=1",
-                        part.len()
-                    )),
-                    Some(old) if old != *part => failures.push(format!("{file}: output differs\n{}", diff(&old, part))),
-                    Some(_) => {}
-                }
+                goldens.check(name, part);
             }
         }
     }
 
     // Expected files no pair makes any more (a post or toolpath renamed, or
-    // a program that no longer splits).
-    if let Ok(entries) = std::fs::read_dir(&expected_dir) {
-        let mut stale: Vec<PathBuf> = entries
-            .map(|e| e.expect("directory entry").path())
-            .filter(|p| {
-                let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-                p.is_file() && !name.starts_with('.') && !made.contains(&name)
-            })
-            .collect();
-        stale.sort();
-        for path in stale {
-            if bless {
-                std::fs::remove_file(&path).unwrap_or_else(|e| panic!("cannot remove {}: {e}", path.display()));
-                eprintln!("removed stale {}", path.display());
-            } else {
-                failures.push(format!("{}: no post and toolpath make this file any more", path.display()));
-            }
-        }
-    }
-
-    if bless {
-        eprintln!("blessed {written} changed files of {} in {}", made.len(), expected_dir.display());
-    }
-    assert!(
-        failures.is_empty(),
-        "{} of {} expected files fail:\n\n{}\n\nIf the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test corpus_goldens",
-        failures.len(),
-        made.len(),
-        failures.join("\n\n")
-    );
+    // a program that no longer splits). Dot files are not goldens.
+    let stale = all_files(&expected_dir)
+        .into_iter()
+        .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')));
+    goldens.sweep(stale, "no post and toolpath make this file any more");
+    goldens.finish("expected files", "corpus_goldens");
 }
 
 #[test]

@@ -14,9 +14,9 @@ use std::path::{Path, PathBuf};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Event, Post, SourceMap};
 
-mod golden_common;
+mod support;
 
-use golden_common::{compile, corpus, files, post_parts, stem};
+use support::{compile, corpus, files, post_parts, stem};
 
 fn corpus_toolpaths() -> Vec<PathBuf> {
     let root = corpus().join("toolpaths");
@@ -120,13 +120,13 @@ fn json_lines_toolpaths_post_byte_identically_to_ron() {
                     let first = match (&a, &b) {
                         (Ok(a), Ok(b)) => {
                             let (a, b) = (a.concat(), b.concat());
-                            let (la, lb) = (golden_common::lines(&a), golden_common::lines(&b));
+                            let (la, lb) = (support::lines(&a), support::lines(&b));
                             let i = la.iter().zip(&lb).position(|(x, y)| x != y).unwrap_or(la.len().min(lb.len()));
                             format!(
                                 "line {}: RON `{}`, JSON Lines `{}`",
                                 i + 1,
-                                la.get(i).map_or(String::new(), |l| golden_common::show(l)),
-                                lb.get(i).map_or(String::new(), |l| golden_common::show(l))
+                                la.get(i).map_or(String::new(), |l| support::show(l)),
+                                lb.get(i).map_or(String::new(), |l| support::show(l))
                             )
                         }
                         _ => format!("RON {a:?}, JSON Lines {b:?}"),

@@ -9,9 +9,9 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::SourceMap;
 
-mod golden_common;
+mod support;
 
-use golden_common::{corpus, files};
+use support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
     let mut sources = SourceMap::new();

@@ -13,6 +13,8 @@ use postc_ir::{Post, SourceMap};
 use postc_runtime::{Finished, RunOptions};
 use postc_verify::Settings;
 
+mod support;
+
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
@@ -258,7 +260,8 @@ fn bad_inputs_give_diagnostics_and_no_file() {
 }
 
 /// The README's plot (docs/img/seed_job.svg) is what `postc plot` draws
-/// today; `POSTC_BLESS=1` writes it again.
+/// today: a byte-exact golden of `tests/support` (`POSTC_BLESS=1` writes it
+/// again).
 #[test]
 fn the_readme_plot_is_current() {
     let dir = temp();
@@ -268,16 +271,10 @@ fn the_readme_plot_is_current() {
     let out =
         postc(&["plot", program.to_str().unwrap(), "--toolpath", JOB, "--post", POST, "-o", svg.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let drawn = std::fs::read_to_string(&svg).unwrap();
-    let committed = root().join("docs/img/seed_job.svg");
-    if std::env::var_os("POSTC_BLESS").is_some() {
-        std::fs::write(&committed, &drawn).unwrap();
+    let drawn = std::fs::read(&svg).unwrap();
+    if let Err(e) = support::check_golden(&root().join("docs/img/seed_job.svg"), &drawn) {
+        panic!("docs/img/seed_job.svg is out of date: {e}\n{}", support::bless_hint("plot"));
     }
-    assert_eq!(
-        std::fs::read_to_string(&committed).unwrap(),
-        drawn,
-        "docs/img/seed_job.svg is out of date: POSTC_BLESS=1 cargo test --test plot"
-    );
 }
 
 /// Without any font the PNG is still drawn (resvg leaves the text out): what docs/plot.md promises.

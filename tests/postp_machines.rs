@@ -4,12 +4,14 @@
 //! options files, the `postc postp DIR` and `postp DIR` command lines, and
 //! the demo CL file read back by LinuxCNC's rs274.
 
-mod postp_common;
+mod support;
+
+use support::postp;
 
 use std::process::Command;
 
 use postc_postp::{Controller, Settings};
-use postp_common::{check, interpret, root, rs274, run, run_with};
+use postp::{check, interpret, root, rs274, run, run_with};
 
 #[test]
 fn every_embedded_post_compiles_without_a_diagnostic() {
@@ -205,7 +207,7 @@ fn machin_is_required_known_and_first() {
     assert!(!r.ok && r.has("PX004"), "{:?}", r.diagnostics);
     let r = run_with("PARTNO LATE\nMACHIN/fanucm\nFEDRAT/100\nGOTO/1,1,1\n", None, None);
     assert!(r.ok && r.has("PX013"), "{:?}", r.diagnostics);
-    let r = postp_common::run_file(std::path::Path::new("/nonexistent/cl.tap"), Settings::default());
+    let r = postp::run_file(std::path::Path::new("/nonexistent/cl.tap"), Settings::default());
     assert!(!r.ok && r.has("PX001"), "{:?}", r.diagnostics);
 }
 
@@ -222,7 +224,7 @@ fn an_options_file_replaces_the_fields_it_gives() {
 #[test]
 fn the_machine_can_be_forced() {
     let path = root().join("corpus/toolpaths/apt/postp_demo.apt");
-    let r = postp_common::run_file(&path, Settings { machine: Some(Controller::TormM), ..Settings::default() });
+    let r = postp::run_file(&path, Settings { machine: Some(Controller::TormM), ..Settings::default() });
     assert!(r.ok && r.program.contains("T1 M6"), "{:?}", r.diagnostics);
 }
 

@@ -2,7 +2,9 @@
 //! cut short or replaced by postp words with random arguments posts or
 //! fails with diagnostics, on every controller.
 
-mod postp_common;
+mod support;
+
+use support::postp;
 
 use postc_postp::Controller;
 use proptest::prelude::*;
@@ -39,7 +41,7 @@ const ARGS: &[&str] = &[
 ];
 
 fn demo() -> Vec<String> {
-    let text = std::fs::read_to_string(postp_common::root().join("corpus/toolpaths/apt/postp_demo.apt")).unwrap();
+    let text = std::fs::read_to_string(postp::root().join("corpus/toolpaths/apt/postp_demo.apt")).unwrap();
     text.lines().map(String::from).collect()
 }
 
@@ -85,7 +87,7 @@ proptest! {
             }
         }
         let cl = lines.join("\n");
-        let r = postp_common::run_with(&cl, None, Some(Controller::ALL[machine]));
+        let r = postp::run_with(&cl, None, Some(Controller::ALL[machine]));
         prop_assert!(r.ok || !r.diagnostics.is_empty());
     }
 }

@@ -3,9 +3,11 @@
 //! snapshot in `tests/snapshots/postp/` (`POSTC_BLESS=1` rewrites them).
 //! Every CL file starts `MACHIN/<controller>` and `UNITS/MM`.
 
-mod postp_common;
+mod support;
 
-use postp_common::{check, run};
+use support::postp;
+
+use postp::{check, run};
 
 /// A tool, a feed and a first position: the start of most tests.
 const START: &str = "LOADTL/1\nFEDRAT/300,MMPM\nRAPID\nGOTO/0,0,10\n";
@@ -184,8 +186,8 @@ fn retrct_without_a_plane_goes_home() {
 #[test]
 fn rotabl_absolute_incremental_and_mapped() {
     let body = "ROTABL/AAXIS,ATANGL,90\nROTABL/AAXIS,INCR,30,CCLW,NEXT\nGOTO/0,10,10\nROTABL/LINEAR,AAXIS,RADIUS,10\nGOTO/15.70796,10,10\nROTABL/LINEAR,NOMORE\nGOTO/5,10,10\n";
-    let r = postp_common::run_with(&format!("MACHIN/FANUCM,1\nUNITS/MM\n{START}{body}"), None, None);
-    postp_common::snapshot("rotabl.FANUCM", &r.text());
+    let r = postp::run_with(&format!("MACHIN/FANUCM,1\nUNITS/MM\n{START}{body}"), None, None);
+    postp::snapshot("rotabl.FANUCM", &r.text());
     // 15.708 mm on a 10 mm radius is 90 degrees more than the 60 where the mapping began.
     assert!(r.program.ends_with("G00 A90.\nG01 A60. Y10. F300.\nA150.\nX5.\n"), "{}", r.program);
 }

@@ -31,9 +31,11 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-mod rs274_common;
+mod support;
 
-use rs274_common::{Kind, Motion};
+use support::rs274;
+
+use rs274::{Kind, Motion};
 
 /// A move the toolpath asks for.
 #[derive(Debug, Clone, Copy)]
@@ -171,24 +173,14 @@ const REAL_WRAPPING_POSTS: &[&str] = &[
 
 #[test]
 fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
-    let Some(rs274) = rs274_common::find() else {
+    let Some(rs274) = rs274::find() else {
         println!("skipped: rs274 not found on PATH (bash .ci/run installs it from Debian's linuxcnc-uspace)");
         return;
     };
-    let mut toolpaths: Vec<PathBuf> = std::fs::read_dir(root().join("corpus/toolpaths"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
-        .collect();
-    toolpaths.sort();
+    let toolpaths = support::files(&root().join("corpus/toolpaths"), "ron");
     let mut checked = 0;
     let mut failures = Vec::new();
-    let mut posts: Vec<PathBuf> = std::fs::read_dir(root().join("corpus/posts/vectric"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "pp"))
-        .collect();
-    posts.sort();
+    let mut posts = support::files(&root().join("corpus/posts/vectric"), "pp");
     posts.extend(
         REAL_WRAPPING_POSTS.iter().map(|rel| root().join("../shared/corpus/vectric").join(rel)).filter(|p| p.is_file()),
     );
@@ -218,7 +210,7 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
             if program.len() != 1 {
                 continue; // tape-split programs are checked part by part elsewhere
             }
-            let actual = match rs274_common::run(&rs274, &String::from_utf8_lossy(&program[0])) {
+            let actual = match rs274::run(&rs274, &String::from_utf8_lossy(&program[0])) {
                 Ok(m) => m,
                 Err(e) => {
                     failures.push(format!("{label}: {e}"));

@@ -11,9 +11,9 @@ use std::rc::Rc;
 use postc_ir::{Dialect, SourceMap, Span};
 use postc_runtime::{Finished, Output, RunOptions};
 
-mod golden_common;
+mod support;
 
-use golden_common::{corpus, files, lines};
+use support::{corpus, files, lines};
 
 /// One traced line: part, line, the span's text (or why there is none).
 type Traced = (usize, u64, Result<String, String>);

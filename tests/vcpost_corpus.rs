@@ -19,11 +19,13 @@
 //! `tests/corpus_goldens.rs` does. Read every blessed file before
 //! committing it.
 
-use std::collections::BTreeSet;
+mod support;
+
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
+use support::{Goldens, all_files as files};
 
 /// The APT CL files of `../shared/corpus/apt/` with a golden: a drilling
 /// file, arcs, an NX CLSF, a Creo file, an inch file, an NCL file without
@@ -100,15 +102,6 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
     }
 }
 
-/// The files of a directory, sorted.
-fn files(dir: &Path) -> Vec<PathBuf> {
-    let mut out: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.is_file()).collect())
-        .unwrap_or_default();
-    out.sort();
-    out
-}
-
 /// An input's name without its extension (`.vcp.ron` counts as one).
 fn input_stem(path: &Path) -> String {
     let name = path.file_name().unwrap().to_string_lossy().into_owned();
@@ -144,60 +137,34 @@ fn jobs() -> (Vec<(String, PathBuf, String)>, bool) {
 
 #[test]
 fn vcpost_corpus_matches_its_goldens() {
-    let bless = std::env::var("POSTC_BLESS").is_ok_and(|v| !v.is_empty() && v != "0");
     let expected_dir = root().join("corpus/expected/vcpost");
-    std::fs::create_dir_all(&expected_dir).unwrap();
     let (jobs, have_shared) = jobs();
     assert!(jobs.len() >= 14, "only {} corpus jobs", jobs.len());
-    let (mut failures, mut made, mut written) = (Vec::new(), BTreeSet::new(), 0);
+    let mut goldens = Goldens::new();
     let mut posts = std::collections::HashMap::new();
     for (stem, input, target) in &jobs {
         let post = posts.entry(stem.clone()).or_insert_with(|| compile(stem));
         let post = match post {
             Ok(p) => &*p,
             Err(e) => {
-                failures.push(e.clone());
-                continue;
-            }
-        };
-        made.insert(target.clone());
-        let output = match run(post, input) {
-            Ok(o) => o,
-            Err(e) => {
-                failures.push(format!("{target}: {} failed:\n{e}", input.display()));
+                goldens.fail(e.clone());
                 continue;
             }
         };
         let path = expected_dir.join(target);
-        let old = std::fs::read(&path).ok();
-        if bless {
-            if old.as_deref() != Some(&output[..]) {
-                std::fs::write(&path, &output).unwrap();
-                written += 1;
-            }
-        } else if old.as_deref() != Some(&output[..]) {
-            let first = old.as_deref().map_or(0, |o| {
-                o.split(|&b| b == b'\n').zip(output.split(|&b| b == b'\n')).take_while(|(a, b)| a == b).count() + 1
-            });
-            failures
-                .push(format!("{target}: differs from the golden (first at line {first}); bless with POSTC_BLESS=1"));
-        }
-    }
-    if have_shared {
-        for stale in files(&expected_dir) {
-            let name = stale.file_name().unwrap().to_string_lossy().into_owned();
-            if made.contains(&name) {
+        // A golden whose input fails to run is not stale.
+        goldens.made.insert(path.clone());
+        let output = match run(post, input) {
+            Ok(o) => o,
+            Err(e) => {
+                goldens.fail(format!("{target}: {} failed:\n{e}", input.display()));
                 continue;
             }
-            if bless {
-                std::fs::remove_file(&stale).unwrap();
-            } else {
-                failures.push(format!("{name}: no input makes this file any more"));
-            }
-        }
+        };
+        goldens.check(&path, &output);
     }
-    if bless {
-        eprintln!("blessed {written} of {} files in {}", made.len(), expected_dir.display());
+    if have_shared {
+        goldens.sweep(files(&expected_dir), "no input makes this file any more");
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    goldens.finish("VcPost goldens", "vcpost_corpus");
 }

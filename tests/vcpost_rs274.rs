@@ -24,9 +24,11 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-mod rs274_common;
+mod support;
 
-use rs274_common::{Kind, Motion, axes};
+use support::rs274;
+
+use rs274::{Kind, Motion, axes};
 
 /// A move: kind (0 traverse, 1 feed, 2 arc), end point, arc centre in plane
 /// coordinates, arc rotation (+1 counter-clockwise), plane.
@@ -123,7 +125,7 @@ fn toolpaths() -> Vec<PathBuf> {
 
 #[test]
 fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
-    let Some(rs274) = rs274_common::find() else {
+    let Some(rs274) = rs274::find() else {
         println!("skipped: rs274 not found on PATH (bash .ci/run installs it)");
         return;
     };
@@ -144,7 +146,7 @@ fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
                 continue;
             }
         };
-        let actual: Vec<Move> = match rs274_common::run(&rs274, &String::from_utf8_lossy(&program)) {
+        let actual: Vec<Move> = match rs274::run(&rs274, &String::from_utf8_lossy(&program)) {
             Ok(m) => m.iter().map(Move::from).collect(),
             Err(e) => {
                 failures.push(format!("{label}: {e}"));

@@ -4,29 +4,17 @@
 //! toolpath for the Node.js referee, running that referee, and a readable
 //! diff. Also used by `benches/cimco_vs_node.rs`.
 
-#![allow(dead_code)]
-
-#[path = "../golden_common/mod.rs"]
-mod golden_common;
-
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 #[allow(unused_imports)]
-pub use golden_common::{compile, corpus, diff, post_parts, stem};
+pub use super::{compile, corpus, diff, post_parts, stem};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{EventSource, Post, SourceMap};
 
 /// The corpus CIMCO posts, sorted.
 pub fn posts() -> Vec<PathBuf> {
-    let dir = corpus().join("posts/cimco");
-    let mut out: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
-        .map(|e| e.expect("directory entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "js"))
-        .collect();
-    out.sort();
-    out
+    super::files(&corpus().join("posts/cimco"), "js")
 }
 
 /// The toolpaths a post is posted over.

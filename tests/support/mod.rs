@@ -1,10 +1,30 @@
-//! What the golden tests share (`corpus_goldens`, `cimco_goldens` and the
-//! CIMCO referee): the corpus folder, compiling a corpus post (any
-//! diagnostic is a failure), posting a toolpath into memory, and a readable
-//! diff of two programs that spells out line endings.
+//! The one test harness of the byte-exact goldens (NC programs, converted
+//! posts, `postp` programs, the backplot image): every test that compares
+//! output with a committed file goes through here, with `mod support;`.
+//!
+//! - listing fixtures: [`files`] (by extension) and [`all_files`];
+//! - comparing and blessing: [`check_golden`] compares bytes and, when
+//!   [`blessing`] (`POSTC_BLESS=1`, and only that), rewrites the file;
+//!   [`Goldens`] does it for a folder of goldens and removes (or reports)
+//!   the files nothing makes any more;
+//! - the readable [`diff`] that spells out line endings (`\r\n`);
+//! - compiling a corpus post (any diagnostic is a failure) and posting a
+//!   toolpath into memory.
+//!
+//! Text snapshots (IR listings, diagnostics, reader events) are not here:
+//! they are `insta` snapshots in the frontends' tests.
+//!
+//! Beside it: [`cimco`] (the CIMCO corpus and its Node.js referee),
+//! [`postp`] (the `postp` controllers' runs) and [`rs274`] (LinuxCNC's
+//! interpreter as a referee).
 
 #![allow(dead_code)]
 
+pub mod cimco;
+pub mod postp;
+pub mod rs274;
+
+use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -24,6 +44,112 @@ pub fn files(dir: &Path, ext: &str) -> Vec<PathBuf> {
         .collect();
     out.sort();
     out
+}
+
+/// Every file of `dir` (no folders), sorted; none when `dir` is missing.
+pub fn all_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.is_file()).collect())
+        .unwrap_or_default();
+    out.sort();
+    out
+}
+
+/// Whether this run rewrites the goldens: `POSTC_BLESS=1`.
+pub fn blessing() -> bool {
+    std::env::var_os("POSTC_BLESS").is_some_and(|v| v == "1")
+}
+
+/// How a failure message tells to bless.
+pub fn bless_hint(test: &str) -> String {
+    format!("If the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test {test}")
+}
+
+/// Compares `actual`, byte for byte, with the golden at `path`. When
+/// [`blessing`], a missing or different golden is written instead (its
+/// folder created): `Ok(true)`. `Ok(false)` when it already matched; an
+/// error naming the file, with the [`diff`], when it does not.
+pub fn check_golden(path: &Path, actual: &[u8]) -> Result<bool, String> {
+    let old = std::fs::read(path).ok();
+    if old.as_deref() == Some(actual) {
+        return Ok(false);
+    }
+    if blessing() {
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
+        }
+        std::fs::write(path, actual).unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
+        return Ok(true);
+    }
+    Err(match old {
+        None => {
+            format!("{}: no golden (the output has {} bytes); bless with POSTC_BLESS=1", path.display(), actual.len())
+        }
+        Some(old) => format!("{}: output differs\n{}", path.display(), diff(&old, actual)),
+    })
+}
+
+/// The goldens of one test: each file checked with [`check_golden`], the
+/// files made remembered, failures gathered.
+#[derive(Default)]
+pub struct Goldens {
+    /// The golden files this run made (compared or wrote).
+    pub made: BTreeSet<PathBuf>,
+    /// How many goldens a blessing run wrote.
+    pub written: usize,
+    pub failures: Vec<String>,
+}
+
+impl Goldens {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Checks (or blesses) one golden.
+    pub fn check(&mut self, path: &Path, actual: &[u8]) {
+        self.made.insert(path.to_path_buf());
+        match check_golden(path, actual) {
+            Ok(written) => self.written += usize::from(written),
+            Err(e) => self.failures.push(e),
+        }
+    }
+
+    pub fn fail(&mut self, failure: impl Into<String>) {
+        self.failures.push(failure.into());
+    }
+
+    /// The `candidates` this run did not make: removed when [`blessing`],
+    /// failures (`<path>: <why>`) otherwise.
+    pub fn sweep(&mut self, candidates: impl IntoIterator<Item = PathBuf>, why: &str) {
+        for path in candidates {
+            if self.made.contains(&path) {
+                continue;
+            }
+            if blessing() {
+                std::fs::remove_file(&path).unwrap_or_else(|e| panic!("cannot remove {}: {e}", path.display()));
+                eprintln!("removed stale {}", path.display());
+            } else {
+                self.failures.push(format!("{}: {why}", path.display()));
+            }
+        }
+    }
+
+    /// Fails with every failure gathered, and how to bless (`test` is the
+    /// test target's name); when blessing, says how many files it wrote.
+    #[track_caller]
+    pub fn finish(self, what: &str, test: &str) {
+        if blessing() {
+            eprintln!("blessed {} changed files of {} {what}", self.written, self.made.len());
+        }
+        assert!(
+            self.failures.is_empty(),
+            "{} of {} {what} fail:\n\n{}\n\n{}",
+            self.failures.len(),
+            self.made.len(),
+            self.failures.join("\n\n"),
+            bless_hint(test)
+        );
+    }
 }
 
 pub fn stem(path: &Path) -> String {

@@ -2,11 +2,6 @@
 //! compare the program with a committed snapshot in `tests/snapshots/postp/`
 //! (`POSTC_BLESS=1` rewrites the snapshots).
 
-#![allow(dead_code)]
-
-#[path = "../rs274_common/mod.rs"]
-mod rs274_common;
-
 use std::path::{Path, PathBuf};
 
 use postc_ir::SourceMap;
@@ -76,21 +71,13 @@ pub fn run(machine: &str, body: &str) -> Run {
     run_with(&format!("MACHIN/{machine}\nUNITS/MM\n{body}"), None, None)
 }
 
-/// Compares `text` with `tests/snapshots/postp/<name>.nc`.
+/// Compares `text`, byte for byte, with the golden
+/// `tests/snapshots/postp/<name>.nc` (`POSTC_BLESS=1` rewrites it).
 pub fn snapshot(name: &str, text: &str) {
     let path = root().join("tests/snapshots/postp").join(format!("{name}.nc"));
-    if std::env::var_os("POSTC_BLESS").is_some() {
-        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        std::fs::write(&path, text).unwrap();
-        return;
+    if let Err(e) = super::check_golden(&path, text.as_bytes()) {
+        panic!("{name}: {e}");
     }
-    let expected = std::fs::read_to_string(&path)
-        .unwrap_or_else(|_| panic!("no snapshot {}; run with POSTC_BLESS=1 to write it", path.display()));
-    assert!(
-        expected == text,
-        "{name}: the output differs from {}\n---- got\n{text}---- expected\n{expected}",
-        path.display()
-    );
 }
 
 /// Posts on a controller and compares with the snapshot `<name>.<MACHINE>`.
@@ -102,13 +89,13 @@ pub fn check(name: &str, machine: &str, body: &str) -> Run {
 
 /// LinuxCNC's rs274, when it is on PATH.
 pub fn rs274() -> Option<PathBuf> {
-    rs274_common::find()
+    super::rs274::find()
 }
 
 /// Runs rs274 on a program: its complaints (empty when it reads cleanly)
 /// and the number of moves it made (traverses, feeds, arcs).
 pub fn interpret(rs274: &Path, program: &str) -> (Vec<String>, usize) {
-    match rs274_common::run(rs274, program) {
+    match super::rs274::run(rs274, program) {
         Ok(moves) => (Vec::new(), moves.len()),
         Err(complaint) => (vec![complaint], 0),
     }

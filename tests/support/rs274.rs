@@ -8,8 +8,6 @@
 //! under heavy parallel load, and a crash of the referee is not a verdict on
 //! the program.
 
-#![allow(dead_code)]
-
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
