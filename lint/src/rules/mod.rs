@@ -2,11 +2,13 @@
 //! them with what each means and how many of the real Vectric posts it
 //! fires on.
 
+mod arc_words_coarse;
 mod comment_parentheses;
 mod feed_never_printed;
 mod post_name;
 mod product_support;
 mod spindle_never_printed;
+mod tape_split_spindle;
 mod toolchange_without_retract;
 mod unused;
 
@@ -25,4 +27,6 @@ pub const ALL: &[Rule] = &[
     unused::VARIABLE,
     unused::FORMAT,
     unused::FUNCTION,
+    arc_words_coarse::RULE,
+    tape_split_spindle::RULE,
 ];
