@@ -3,6 +3,7 @@
 //! fires on.
 
 mod arc_words_coarse;
+mod block_numbers_wrap;
 mod comment_parentheses;
 mod feed_never_printed;
 mod post_name;
@@ -29,4 +30,5 @@ pub const ALL: &[Rule] = &[
     unused::FUNCTION,
     arc_words_coarse::RULE,
     tape_split_spindle::RULE,
+    block_numbers_wrap::RULE,
 ];
