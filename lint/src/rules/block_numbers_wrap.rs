@@ -23,7 +23,7 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         return;
     }
     let b = cx.post.options.block_numbers;
-    if !(b.increment > 0.0) {
+    if b.increment.is_nan() || b.increment <= 0.0 {
         return;
     }
     let blocks = ((b.maximum - b.start) / b.increment).floor() + 1.0;
