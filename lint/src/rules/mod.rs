@@ -8,6 +8,7 @@ mod comment_parentheses;
 mod feed_never_printed;
 mod post_name;
 mod product_support;
+mod register_never_set;
 mod spindle_never_printed;
 mod tape_split_spindle;
 mod toolchange_without_retract;
@@ -31,4 +32,5 @@ pub const ALL: &[Rule] = &[
     arc_words_coarse::RULE,
     tape_split_spindle::RULE,
     block_numbers_wrap::RULE,
+    register_never_set::RULE,
 ];
