@@ -19,6 +19,7 @@
 //! `tests/corpus_goldens.rs` does. Read every blessed file before
 //! committing it.
 
+use postc_report::Render as _;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -53,7 +54,7 @@ fn extension(post: &str) -> &'static str {
 
 fn compile(stem: &str) -> Result<Post, String> {
     let path = root().join("corpus/posts/vcpost").join(format!("{stem}.VcPost"));
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(&path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         return Err(format!("{stem}: {}", sources.render(&compiled.diagnostics, false)));
@@ -76,7 +77,7 @@ fn memory(
 
 /// Runs one input through a post: a toolpath, a probe table or an event file.
 fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let name = input.to_string_lossy().to_ascii_lowercase();
     if name.ends_with(".csv") {
         let text = std::fs::read_to_string(input).map_err(|e| e.to_string())?;

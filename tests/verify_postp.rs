@@ -8,7 +8,6 @@ use std::collections::BTreeMap;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
 use postc_postp::controller::{self, Controller as Mill};
 use postc_postp::records::ClText;
 use postc_postp::transform::{Machine, Transform};
@@ -72,8 +71,8 @@ fn postp_mill_programs_verify_against_their_cl_files() {
     for file in &files {
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
         for machine in mills {
-            let mut sources = SourceMap::new();
-            let settings = PostpSettings { options: None, machine: Some(machine) };
+            let mut sources = postc_report::source_map();
+            let settings = PostpSettings { options: None, machine: Some(machine), ..PostpSettings::default() };
             let Ok(report) = postp::post(file, &settings, Output::memory(), &mut sources) else {
                 not_posted += 1;
                 continue;

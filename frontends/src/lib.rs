@@ -65,9 +65,9 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     }
 }
 
-/// Reads and compiles a post file.
+/// Reads (through the source map's loader) and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
-    match std::fs::read(path) {
+    match sources.loader().read(path) {
         Ok(bytes) => compile_post_bytes(path, &bytes, dialect, sources),
         Err(e) => Compiled::failed(Diagnostic::error("IO001", format!("cannot read post `{}`: {e}", path.display()))),
     }

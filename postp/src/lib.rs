@@ -45,6 +45,9 @@ pub struct Settings {
     pub options: Option<PathBuf>,
     /// A controller instead of the file's MACHIN (tests).
     pub machine: Option<Controller>,
+    /// Now, as a Unix time: what the post prints as the date and time
+    /// (see [`RunOptions::now`]); the caller reads the clock.
+    pub now: Option<i64>,
 }
 
 /// The controller and machine a CL file asks for.
@@ -202,7 +205,7 @@ pub fn post(
     let head = head(cl, settings.machine, sources)?;
     let options = load_options(head.controller, settings.options.as_deref(), sources).map_err(|d| vec![d])?;
     let post = compile(&head, &options, sources)?;
-    post_compiled(&post, cl, &head, &options, out, sources)
+    post_compiled(&post, cl, &head, &options, settings.now, out, sources)
 }
 
 /// Posts `cl` with a controller post already compiled (by [`compile`], or
@@ -213,6 +216,7 @@ pub fn post_compiled(
     cl: &Path,
     head: &Head,
     options: &Options,
+    now: Option<i64>,
     out: Output,
     sources: &mut SourceMap,
 ) -> Result<RunReport, Vec<Diagnostic>> {
@@ -225,7 +229,7 @@ pub fn post_compiled(
     };
     let mut source = Transform::new(reader, records::ClText::open(cl), machine);
     // No file name: the program's first PARTNO is the CL file's own.
-    let run = RunOptions { file: Some(FileInfo::default()), ..RunOptions::default() };
+    let run = RunOptions { file: Some(FileInfo::default()), now, ..RunOptions::default() };
     let prepend = |mut d: Vec<Diagnostic>| {
         d.splice(0..0, head.warnings.iter().cloned());
         d

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use postc_ir::{Diagnostic, SourceMap};
+use postc_ir::Diagnostic;
 
 use super::report::{self, Format};
 use super::{DialectArg, Failed};
@@ -22,7 +22,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();

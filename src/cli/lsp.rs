@@ -10,7 +10,7 @@ pub struct Args {
 }
 
 pub fn run(_args: Args) -> Result<(), Failed> {
-    postc_lsp::run_stdio().map_err(|e| {
+    postc_lsp::run_stdio(std::sync::Arc::new(postc_report::FsLoader)).map_err(|e| {
         eprintln!("postc lsp: {e}");
         Failed
     })

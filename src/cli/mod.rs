@@ -20,6 +20,7 @@
 
 mod bench;
 mod check;
+pub mod clock;
 mod convert;
 mod inspect;
 mod lsp;
@@ -28,6 +29,7 @@ mod post;
 mod postp;
 mod probe;
 pub mod report;
+pub mod sink;
 mod toolpath;
 pub(crate) mod verify;
 

@@ -1,15 +1,16 @@
 //! Lowering: small posts and the exact IR they become.
 
+use postc_report::Render as _;
 use std::path::Path;
 
 use postc_front_vcpost::{compile, looks_like_vcpost, signatures};
 use postc_ir::{
-    BinaryOp, Body, Builtin, Dialect, Dispatch, Expr, HandlerKey, Modality, Piece, Place, Post, Quantity, SourceMap,
-    Stmt, UnaryOp, ValueSource,
+    BinaryOp, Body, Builtin, Dialect, Dispatch, Expr, HandlerKey, Modality, Piece, Place, Post, Quantity, Stmt,
+    UnaryOp, ValueSource,
 };
 
 fn post(text: &str) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     assert!(diagnostics.is_empty(), "{}", sources.render(&diagnostics, false));
     post
@@ -269,7 +270,7 @@ fn sniffing() {
 #[test]
 fn an_unclosed_register_in_out_is_an_error_at_its_place() {
     let text = "Sub ToolChange\n  Out \"<N> T1\"\nEnd Sub\n\nSub Linear\n  Out \"<N> G1 \"\"A\"\" <X<Y>\"\n  Out \"<N> G1<FeedRate\"\n  Out \"(X<0) a < b (DIST<MAX)\"\nEnd Sub\n";
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (_, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     let found: Vec<_> = diagnostics
         .iter()
