@@ -27,7 +27,7 @@ impl Builder {
             name: q.label().into(),
             source: ValueSource::Quantity(q),
             prefix: prefix.as_bytes().to_vec(),
-            format: self.post.formats.len() as u16 - 1,
+            format: FormatId::new(self.post.formats.len() as u16 - 1),
             modality: modal,
         });
         self.post.variables.len() as u16 - 1
@@ -41,7 +41,7 @@ impl Builder {
                     l.iter()
                         .map(|p| match p {
                             P::T(t) => Piece::Text(t.as_bytes().to_vec()),
-                            P::V(v) => Piece::Var(*v),
+                            P::V(v) => Piece::Var(VarId::new(*v)),
                         })
                         .collect(),
                 )

@@ -89,7 +89,7 @@ impl ScriptHost {
             writers: eng.writers.clone(),
             prefixes: eng.prefixes.clone(),
             modal: post.variables.iter().map(crate::engine::is_modal).collect(),
-            var_formats: post.variables.iter().map(|v| v.format).collect(),
+            var_formats: post.variables.iter().map(|v| v.format.raw()).collect(),
             functions: Default::default(),
             ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),

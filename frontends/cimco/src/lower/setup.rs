@@ -7,7 +7,9 @@
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::{Diagnostic, Modality, NumberFormat, Padding, PointStyle, SignStyle, ValueSource, Variable, WidthOf};
+use postc_ir::{
+    Diagnostic, FormatId, Modality, NumberFormat, Padding, PointStyle, SignStyle, ValueSource, VarId, Variable, WidthOf,
+};
 
 use crate::ast::*;
 
@@ -18,8 +20,8 @@ use super::scope::{Symbol, Visit, walk_stmt};
 /// What a global is bound to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Binding {
-    Format(u16),
-    Var(u16),
+    Format(FormatId),
+    Var(VarId),
 }
 
 /// Formats, variables and the globals bound to them.
@@ -138,7 +140,7 @@ impl Setup {
                 let props = props(args.first(), model, env, at, FORMAT_KEYS, "createFormat", diags)?;
                 let format = number_format(&props, mark, args.first().map_or(e.span, |a| a.span), diags);
                 self.formats.push(format);
-                Some(Binding::Format((self.formats.len() - 1) as u16))
+                Some(Binding::Format(FormatId::new((self.formats.len() - 1) as u16)))
             }
             "createVariable" => {
                 let vprops = props(args.first(), model, env, at, VARIABLE_KEYS, "createVariable", diags)?;
@@ -153,7 +155,7 @@ impl Setup {
                     },
                     None => {
                         self.formats.push(number_format(&[], mark, e.span, diags));
-                        (self.formats.len() - 1) as u16
+                        FormatId::new((self.formats.len() - 1) as u16)
                     }
                     _ => return None,
                 };
@@ -167,7 +169,7 @@ impl Setup {
                     format,
                     modality: if force { Modality::Always } else { Modality::OnChange },
                 });
-                Some(Binding::Var((self.variables.len() - 1) as u16))
+                Some(Binding::Var(VarId::new((self.variables.len() - 1) as u16)))
             }
             _ => None,
         }

@@ -236,7 +236,7 @@ impl Lowerer<'_> {
         if let Some(id) = self.host_functions.get(canonical) {
             return Some(*id);
         }
-        let id = FunctionId::try_from(self.post.functions.len()).ok()?;
+        let id = FunctionId::from_usize(self.post.functions.len())?;
         self.post.functions.push(Function {
             name: canonical.to_string(),
             params: params.iter().map(|p| p.to_string()).collect(),

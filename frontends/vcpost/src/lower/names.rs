@@ -8,7 +8,7 @@
 //! Anything else is a new global: as in VcPost, a variable set in one Sub is
 //! seen by every later call.
 
-use postc_ir::post::VarId;
+use postc_ir::post::{LocalId, VarId};
 use postc_ir::{Diagnostic, Expr as IrExpr, Place, Quantity};
 
 use super::template::{TemplatePart, out_parts, split};
@@ -124,7 +124,7 @@ impl Lowerer<'_> {
         if key == "n" || self.registers.contains_key(&key) || Kw::from_word(name).is_some() {
             return;
         }
-        let Ok(id) = VarId::try_from(self.specs.len()) else {
+        let Some(id) = VarId::from_usize(self.specs.len()) else {
             self.too_many("registers");
             return;
         };
@@ -137,7 +137,7 @@ impl Lowerer<'_> {
         if let Some(id) = self.sequence {
             return id;
         }
-        let id = VarId::try_from(self.specs.len()).unwrap_or(0);
+        let id = VarId::from_usize(self.specs.len()).unwrap_or(VarId::new(0));
         self.specs.push(RegisterSpec::new("N"));
         self.sequence = Some(id);
         id
@@ -152,7 +152,7 @@ impl Lowerer<'_> {
         self.registers.get(&key).copied()
     }
 
-    fn local(&self, key: &str) -> Option<(u16, bool)> {
+    fn local(&self, key: &str) -> Option<(LocalId, bool)> {
         let scope = self.scope.as_ref()?;
         if let Some(l) = scope.locals.get(key) {
             return Some(*l);
@@ -265,7 +265,7 @@ impl Lowerer<'_> {
         self.hidden += 1;
         let name = format!("${what}{}", self.hidden);
         if let Some(scope) = self.scope.as_mut() {
-            let slot = u16::try_from(scope.names.len()).unwrap_or(u16::MAX);
+            let slot = LocalId::new(u16::try_from(scope.names.len()).unwrap_or(u16::MAX));
             scope.names.push(name);
             return (Place::Local(slot), IrExpr::Local(slot));
         }

@@ -11,6 +11,7 @@ use postc_ir::{
     Diagnostic, Dialect, Dispatch, Handler, HandlerKey, OutputOptions, Piece, Post, PostInfo, Quantity, Script,
     ScriptLanguage, Span, Stmt, ValueSource, Variable,
 };
+use postc_ir::{FormatId, ScriptId};
 
 use crate::defaults::default_format;
 use crate::diagnostics::Code;
@@ -42,7 +43,7 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
                 name: def.name.clone(),
                 source: ValueSource::Quantity(def.quantity),
                 prefix: def.prefix.clone(),
-                format: 0,
+                format: FormatId::new(0),
                 modality: def.modality,
             },
             def.format,
@@ -94,11 +95,8 @@ impl Variables {
         multiplier: f64,
         label: Option<(&str, usize)>,
     ) -> Option<VarId> {
-        let id = VarId::try_from(post.variables.len()).ok()?;
-        let format_id = u16::try_from(post.formats.len()).ok()?;
-        post.formats.push(format.to_number_format(multiplier));
-        variable.format = format_id;
-        post.variables.push(variable);
+        variable.format = post.push_format(format.to_number_format(multiplier))?;
+        let id = post.push_variable(variable)?;
         if let Some((label, seq)) = label {
             let key = label.to_ascii_uppercase();
             if self.by_label.get(&key).is_none_or(|&(_, s)| s < seq) {
@@ -121,7 +119,7 @@ impl Variables {
             name: var_name_of_label(quantity.label()).unwrap_or(quantity.label()).to_string(),
             source: ValueSource::Quantity(quantity),
             prefix: default.prefix.as_bytes().to_vec(),
-            format: 0,
+            format: FormatId::new(0),
             modality: default.modality,
         };
         let id = self.add(post, variable, default.format, 1.0, Some((label, 0)))?;
@@ -159,15 +157,13 @@ fn line_pieces(post: &mut Post, vars: &mut Variables, pieces: &[PieceDef], diags
 }
 
 /// Adds a Lua script to the post.
-fn push_script(post: &mut Post, script: &ScriptDef) -> Option<u16> {
-    let id = u16::try_from(post.scripts.len()).ok()?;
-    post.scripts.push(Script {
+fn push_script(post: &mut Post, script: &ScriptDef) -> Option<ScriptId> {
+    post.push_script(Script {
         language: ScriptLanguage::Lua,
         source: script.code.clone(),
         span: Some(script.span),
         span_map: vec![(0, u32::try_from(script.span.start).unwrap_or(u32::MAX))],
-    });
-    Some(id)
+    })
 }
 
 fn text(model: &Model, name: GlobalName) -> Option<String> {
