@@ -89,7 +89,7 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         let result =
             postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
         memory(result, &mut sources)
-    } else if postc_front_vcpost::composites::is_composites_file(input) {
+    } else if postc_front_vcpost::composites::is_composites_file(input, &postc_report::FsLoader) {
         let mut reader =
             postc_front_vcpost::composites::open(input, &mut sources, post, Vec::new()).map_err(|d| d.message)?;
         let result = postc_runtime::calls::run_calls(post, &mut reader, Output::memory(), RunOptions::default());

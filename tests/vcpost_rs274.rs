@@ -116,7 +116,7 @@ fn toolpaths() -> Vec<PathBuf> {
             list(vendor, &mut out);
         }
     }
-    out.retain(|p| postc_frontends::is_toolpath(p));
+    out.retain(|p| postc_frontends::is_toolpath(p, &postc_report::FsLoader));
     out.sort();
     out
 }

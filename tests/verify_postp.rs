@@ -52,7 +52,9 @@ fn cl_files(dir: &Path, out: &mut Vec<PathBuf>) {
         let path = entry.path();
         if path.is_dir() {
             cl_files(&path, out);
-        } else if postc_frontends::is_toolpath(&path) && path.metadata().is_ok_and(|m| m.len() <= MAX_BYTES) {
+        } else if postc_frontends::is_toolpath(&path, &postc_report::FsLoader)
+            && path.metadata().is_ok_and(|m| m.len() <= MAX_BYTES)
+        {
             out.push(path);
         }
     }
@@ -96,7 +98,7 @@ fn postp_mill_programs_verify_against_their_cl_files() {
                 axes: controller::rotary_axes(head.axis_type),
                 retractz: options.retractz,
             };
-            let mut source = Transform::new(reader, ClText::open(file), machine_data);
+            let mut source = Transform::new(reader, ClText::open(sources.loader(), file), machine_data);
             let verdict = postc_verify::verify(
                 &mut Cursor::new(&program),
                 file_id,

@@ -7,8 +7,9 @@
 //! (RON) are skipped. The reader holds one line at a time, so memory stays
 //! flat whatever the file's length; each event carries the span of its line.
 
-use std::fs::File;
 use std::io::{self, BufRead, BufReader};
+
+use postc_ir::source::SourceReader;
 use std::path::Path;
 
 use postc_ir::{Diagnostic, Event, EventSource, FileId, SourceMap, Span};
@@ -33,8 +34,10 @@ pub struct NativeReader<R> {
 
 /// Opens a native toolpath file; the syntax comes from the extension
 /// (`.ron`, `.jsonl`, `.json`) or, failing that, from the first line.
-pub fn open(path: &Path, sources: &mut SourceMap) -> Result<NativeReader<BufReader<File>>, Diagnostic> {
-    let file = File::open(path)
+pub fn open(path: &Path, sources: &mut SourceMap) -> Result<NativeReader<BufReader<SourceReader>>, Diagnostic> {
+    let file = sources
+        .loader()
+        .open(path)
         .map_err(|e| Diagnostic::error("IO001", format!("cannot open toolpath `{}`: {e}", path.display())))?;
     let id = sources.add_streamed(path.display().to_string());
     let syntax = match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {

@@ -12,25 +12,44 @@
 
 use std::collections::HashMap;
 use std::ffi::OsString;
-use std::io::{self, Read};
+use std::io::{self, Read, Seek, SeekFrom};
 use std::path::{Path, PathBuf};
+
+/// A file opened through a [`SourceLoader`]: read from the start, or from
+/// anywhere after a seek.
+pub trait ReadSeek: Read + Seek {}
+
+impl<T: Read + Seek> ReadSeek for T {}
+
+/// An open file of a [`SourceLoader`].
+pub type SourceReader = Box<dyn ReadSeek + Send>;
 
 /// Where source files come from.
 pub trait SourceLoader: Send + Sync {
     /// The whole file.
     fn read(&self, path: &Path) -> io::Result<Vec<u8>>;
 
-    /// A reader from the start of the file, for files too large to hold.
-    fn open(&self, path: &Path) -> io::Result<Box<dyn Read + Send + '_>>;
+    /// The file opened for reading, for files too large to hold
+    /// (toolpaths are streamed through it). Unbuffered: callers buffer.
+    fn open(&self, path: &Path) -> io::Result<SourceReader>;
 
     /// `len` bytes of the file from byte `offset` (fewer at its end).
-    fn read_at(&self, path: &Path, offset: u64, len: u64) -> io::Result<Vec<u8>>;
+    fn read_at(&self, path: &Path, offset: u64, len: u64) -> io::Result<Vec<u8>> {
+        let mut file = self.open(path)?;
+        file.seek(SeekFrom::Start(offset))?;
+        let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0).min(1 << 20));
+        file.take(len).read_to_end(&mut bytes)?;
+        Ok(bytes)
+    }
 
     /// The file's size in bytes.
     fn len(&self, path: &Path) -> io::Result<u64>;
 
     /// Whether something (a file or a folder) is at `path`.
     fn exists(&self, path: &Path) -> bool;
+
+    /// Whether a file (not a folder) is at `path`.
+    fn is_file(&self, path: &Path) -> bool;
 
     /// The names of the entries of a folder.
     fn read_dir(&self, dir: &Path) -> io::Result<Vec<OsString>>;
@@ -55,11 +74,7 @@ impl SourceLoader for NoFiles {
         Err(not_found(path))
     }
 
-    fn open(&self, path: &Path) -> io::Result<Box<dyn Read + Send + '_>> {
-        Err(not_found(path))
-    }
-
-    fn read_at(&self, path: &Path, _offset: u64, _len: u64) -> io::Result<Vec<u8>> {
+    fn open(&self, path: &Path) -> io::Result<SourceReader> {
         Err(not_found(path))
     }
 
@@ -68,6 +83,10 @@ impl SourceLoader for NoFiles {
     }
 
     fn exists(&self, _path: &Path) -> bool {
+        false
+    }
+
+    fn is_file(&self, _path: &Path) -> bool {
         false
     }
 
@@ -104,8 +123,8 @@ impl SourceLoader for MemoryLoader {
         self.get(path).map(<[u8]>::to_vec)
     }
 
-    fn open(&self, path: &Path) -> io::Result<Box<dyn Read + Send + '_>> {
-        Ok(Box::new(self.get(path)?))
+    fn open(&self, path: &Path) -> io::Result<SourceReader> {
+        Ok(Box::new(io::Cursor::new(self.get(path)?.to_vec())))
     }
 
     fn read_at(&self, path: &Path, offset: u64, len: u64) -> io::Result<Vec<u8>> {
@@ -121,6 +140,10 @@ impl SourceLoader for MemoryLoader {
 
     fn exists(&self, path: &Path) -> bool {
         self.files.contains_key(path) || self.files.keys().any(|p| p.parent() == Some(path))
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        self.files.contains_key(path)
     }
 
     fn read_dir(&self, dir: &Path) -> io::Result<Vec<OsString>> {

@@ -31,7 +31,7 @@ pub mod transform;
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Arg, Event, FileInfo};
-use postc_ir::{Diagnostic, Dialect, EventSource, Post, SourceMap, Span, Units};
+use postc_ir::{Diagnostic, Dialect, EventSource, Post, SourceLoader, SourceMap, Span, Units};
 use postc_runtime::{Output, RunOptions, RunReport};
 
 pub use controller::{Controller, Kind};
@@ -155,13 +155,19 @@ pub fn load_options(c: Controller, file: Option<&Path>, sources: &mut SourceMap)
         .map_err(|e| bad(&format!("<embedded>/postp/{}.ron", c.name()), c.default_options(), e, sources))?;
     let mut options = Options::default().apply(defaults);
     if let Some(path) = file {
-        let text = std::fs::read_to_string(path).map_err(|e| {
+        let text = read_text(sources.loader(), path).map_err(|e| {
             Diagnostic::error(codes::BAD_OPTIONS, format!("cannot read the options file {}: {e}", path.display()))
         })?;
         let patch = Patch::parse(&text).map_err(|e| bad(&path.display().to_string(), &text, e, sources))?;
         options = options.apply(patch);
     }
     Ok(options)
+}
+
+/// A text file read through the loader, refused when it is not UTF-8.
+fn read_text(loader: &dyn SourceLoader, path: &Path) -> std::io::Result<String> {
+    String::from_utf8(loader.read(path)?)
+        .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "stream did not contain valid UTF-8"))
 }
 
 /// The byte offset of a 1-based line and column.
@@ -196,7 +202,7 @@ pub fn post(
     out: Output,
     sources: &mut SourceMap,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    if !cl.is_file() {
+    if !sources.loader().is_file(cl) {
         return Err(vec![
             Diagnostic::error(codes::NO_CL, format!("there is no CL file {}", cl.display()))
                 .help("postp DIR reads DIR/cl.tap, the CL file of the part program"),
@@ -227,7 +233,7 @@ pub fn post_compiled(
         axes: controller::rotary_axes(head.axis_type),
         retractz: options.retractz,
     };
-    let mut source = Transform::new(reader, records::ClText::open(cl), machine);
+    let mut source = Transform::new(reader, records::ClText::open(sources.loader(), cl), machine);
     // No file name: the program's first PARTNO is the CL file's own.
     let run = RunOptions { file: Some(FileInfo::default()), now, ..RunOptions::default() };
     let prepend = |mut d: Vec<Diagnostic>| {

@@ -4,13 +4,14 @@
 //! `CUTTER`, and the unit of a `FEDRAT` (which makes no event at all). Every
 //! event carries the byte span of its record, so this module reads the
 //! record's text again, and the text between events for FEDRAT records.
-//! Only small pieces are read, through a second handle on the file.
+//! Only small pieces are read, through a second handle on the file that
+//! the source map's loader opens (`postp` opens no file itself).
 
-use std::fs::File;
 use std::io::{Read, Seek, SeekFrom};
 use std::path::Path;
 
-use postc_ir::Span;
+use postc_ir::source::SourceReader;
+use postc_ir::{SourceLoader, Span};
 
 /// The most of a gap between two events scanned for FEDRAT records.
 const MAX_GAP: usize = 4 << 20;
@@ -32,14 +33,14 @@ impl Record {
 
 /// A second handle on the CL file.
 pub struct ClText {
-    file: Option<File>,
+    file: Option<SourceReader>,
     /// Everything before this offset has been scanned for FEDRAT.
     scanned: usize,
 }
 
 impl ClText {
-    pub fn open(path: &Path) -> ClText {
-        ClText { file: File::open(path).ok(), scanned: 0 }
+    pub fn open(loader: &dyn SourceLoader, path: &Path) -> ClText {
+        ClText { file: loader.open(path).ok(), scanned: 0 }
     }
 
     fn read(&mut self, start: usize, end: usize) -> String {

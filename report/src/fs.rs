@@ -2,10 +2,11 @@
 
 use std::ffi::OsString;
 use std::fs::File;
-use std::io::{self, Read, Seek, SeekFrom};
+use std::io;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use postc_ir::source::SourceReader;
 use postc_ir::{SourceLoader, SourceMap};
 
 /// The [`SourceLoader`] of the command line: files on disk.
@@ -17,16 +18,8 @@ impl SourceLoader for FsLoader {
         std::fs::read(path)
     }
 
-    fn open(&self, path: &Path) -> io::Result<Box<dyn Read + Send + '_>> {
-        Ok(Box::new(io::BufReader::with_capacity(1 << 16, File::open(path)?)))
-    }
-
-    fn read_at(&self, path: &Path, offset: u64, len: u64) -> io::Result<Vec<u8>> {
-        let mut file = File::open(path)?;
-        file.seek(SeekFrom::Start(offset))?;
-        let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0).min(1 << 20));
-        file.take(len).read_to_end(&mut bytes)?;
-        Ok(bytes)
+    fn open(&self, path: &Path) -> io::Result<SourceReader> {
+        Ok(Box::new(File::open(path)?))
     }
 
     fn len(&self, path: &Path) -> io::Result<u64> {
@@ -35,6 +28,10 @@ impl SourceLoader for FsLoader {
 
     fn exists(&self, path: &Path) -> bool {
         path.exists()
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        path.is_file()
     }
 
     fn read_dir(&self, dir: &Path) -> io::Result<Vec<OsString>> {

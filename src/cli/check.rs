@@ -28,7 +28,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         let name = file.display().to_string();
         let diagnostics = if !file.exists() {
             vec![Diagnostic::error("IO001", format!("`{name}` does not exist"))]
-        } else if postc_frontends::is_toolpath(file) {
+        } else if postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
             postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources).diagnostics

@@ -99,7 +99,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         };
         return super::probe::run_calls(job);
     }
-    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
+    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
             &mut sources,
             Diagnostic::error("IO006", format!("`{}` is not a toolpath", toolpath.display()))

@@ -61,7 +61,7 @@ pub fn job_kind(path: &Path) -> Option<JobKind> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     if ext.as_deref() == Some("csv") {
         Some(JobKind::ProbeTable)
-    } else if postc_front_vcpost::composites::is_composites_file(path) {
+    } else if postc_front_vcpost::composites::is_composites_file(path, &postc_report::FsLoader) {
         Some(JobKind::Composites)
     } else {
         None

@@ -267,7 +267,7 @@ pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn pos
     Ok(match &job.postp {
         Some(machine) => Box::new(postc_postp::transform::Transform::new(
             reader_events,
-            postc_postp::records::ClText::open(job.toolpath),
+            postc_postp::records::ClText::open(sources.loader(), job.toolpath),
             machine.clone(),
         )),
         None => reader_events,

@@ -106,19 +106,23 @@ mod state;
 mod window;
 mod words;
 
-use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
 
 use postc_ir::diagnostic::{Diagnostic, SourceMap};
 use postc_ir::event::EventSource;
+use postc_ir::source::SourceReader;
 
 pub use detect::{Content, sniff};
 pub use reader::AptReader;
 
-/// Opens a CL file for streaming; spans point into it through `sources`.
-pub fn open(path: &Path, sources: &mut SourceMap) -> Result<AptReader<BufReader<File>>, Diagnostic> {
-    let file = File::open(path).map_err(|e| {
+/// A CL file streamed through the source map's loader.
+pub type FileReader = AptReader<BufReader<SourceReader>>;
+
+/// Opens a CL file for streaming (through the source map's loader); spans
+/// point into it through `sources`.
+pub fn open(path: &Path, sources: &mut SourceMap) -> Result<FileReader, Diagnostic> {
+    let file = sources.loader().open(path).map_err(|e| {
         Diagnostic::error(diagnostics::IO, format!("cannot open the CL file {}: {e}", path.display()))
             .help("check the path and that the file can be read")
     })?;

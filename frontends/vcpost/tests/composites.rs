@@ -105,7 +105,7 @@ fn corpus_files_read_cleanly() {
         ("afp_probe__wing_check.vcp.ron", "afp_probe"),
     ] {
         let path = corpus().join("composites").join(file);
-        assert!(composites::is_composites_file(&path), "{file}");
+        assert!(composites::is_composites_file(&path, &postc_report::FsLoader), "{file}");
         let post = corpus_post(post);
         let mut sources = postc_report::source_map();
         let (calls, diagnostics) = drain(composites::open(&path, &mut sources, &post, Vec::new()).unwrap());
@@ -200,7 +200,7 @@ fn recognised_by_name_or_header() {
     assert!(composites::looks_like_composites(b"// c\nVcpFile(kind: Laying)\n"));
     assert!(composites::looks_like_composites(b"{\"VcpFile\": {\"kind\": \"Probing\"}}\n"));
     assert!(!composites::looks_like_composites(b"Job(units: Mm)\n"));
-    assert!(composites::is_composites_file(Path::new("/nonexistent/ply.VCP.JSONL")));
+    assert!(composites::is_composites_file(Path::new("/nonexistent/ply.VCP.JSONL"), &postc_report::FsLoader));
 }
 
 proptest! {
