@@ -149,3 +149,51 @@ fn only_the_edge_renders_diagnostics() {
         );
     }
 }
+
+/// Only the edge touches the file system, the clock and the terminal: the
+/// command line (`src/`) and `postc-report` (rendering, the file-system
+/// loader). Every library crate reads through the loader it is given,
+/// writes through the sink it is given and takes "now" as an input.
+#[test]
+fn only_the_edge_touches_files_the_clock_and_the_terminal() {
+    let needles = [
+        "std::fs",
+        "File::",
+        "tempfile",
+        "SystemTime",
+        "Instant::now",
+        "stdout()",
+        "stderr()",
+        "stdin()",
+        "Connection::stdio",
+        "println!",
+        "eprintln!",
+        "print!(",
+        "eprint!(",
+    ];
+    let mut found = Vec::new();
+    for folder in [
+        "ir/src",
+        "runtime/src",
+        "frontends/src",
+        "frontends/vectric/src",
+        "frontends/cimco/src",
+        "frontends/vcpost/src",
+        "frontends/apt/src",
+        "postp/src",
+        "verify/src",
+        "backends/src",
+        "lsp/src",
+    ] {
+        found.extend(uses(folder, &needles));
+    }
+    assert_eq!(found, Vec::<String>::new());
+}
+
+/// `postp` reads its CL file once, through the reader's events: no second
+/// handle on the file (the events keep FEDRAT units, COOLNT placement and
+/// tool loads as written).
+#[test]
+fn postp_reads_its_cl_file_through_events_only() {
+    assert_eq!(uses("postp/src", &["ClText", ".open(", "read_at("]), Vec::<String>::new());
+}

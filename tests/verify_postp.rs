@@ -9,7 +9,6 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use postc_postp::controller::{self, Controller as Mill};
-use postc_postp::records::ClText;
 use postc_postp::transform::{Machine, Transform};
 use postc_postp::{self as postp, Settings as PostpSettings};
 use postc_runtime::{Finished, Output};
@@ -98,7 +97,7 @@ fn postp_mill_programs_verify_against_their_cl_files() {
                 axes: controller::rotary_axes(head.axis_type),
                 retractz: options.retractz,
             };
-            let mut source = Transform::new(reader, ClText::open(sources.loader(), file), machine_data);
+            let mut source = Transform::new(reader, machine_data);
             let verdict = postc_verify::verify(
                 &mut Cursor::new(&program),
                 file_id,

@@ -91,8 +91,8 @@
 //!
 //! [`Diagnostic`] is the one error type of the project: a code, a severity,
 //! a message, labels over byte [`Span`]s of files in a [`SourceMap`], notes
-//! and help. The IR only holds it: the command line renders it (for people
-//! with codespan-reporting, and as JSON) through `postc_report`. Files
+//! and help. The IR only holds it: the command line renders it (for people,
+//! and as JSON) through `postc_report`. Files
 //! beyond the bytes a frontend is given are read through the map's
 //! [`SourceLoader`] (module [`source`]), which the caller provides.
 

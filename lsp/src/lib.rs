@@ -46,17 +46,6 @@ struct Document {
     dialect: Option<Dialect>,
 }
 
-/// Runs the server on stdin/stdout until the client says `exit`. `loader`
-/// reads the files a document names (a Vectric post's `POST_BASE`): the
-/// command line gives the file system, tests can give files in memory.
-pub fn run_stdio(loader: Arc<dyn SourceLoader>) -> Result<(), BoxError> {
-    let (connection, io_threads) = Connection::stdio();
-    serve(&connection, loader)?;
-    drop(connection);
-    io_threads.join()?;
-    Ok(())
-}
-
 /// The server's capabilities.
 pub fn capabilities() -> ServerCapabilities {
     ServerCapabilities {
@@ -72,8 +61,11 @@ pub fn capabilities() -> ServerCapabilities {
     }
 }
 
-/// Serves one client over a connection: the handshake, then messages until
-/// `shutdown` and `exit`.
+/// Serves one client over a connection (the command line opens it on
+/// stdin/stdout): the handshake, then messages until `shutdown` and `exit`.
+/// `loader` reads the files a document names (a Vectric post's
+/// `POST_BASE`): the command line gives the file system, tests can give
+/// files in memory.
 pub fn serve(connection: &Connection, loader: Arc<dyn SourceLoader>) -> Result<(), BoxError> {
     let (id, _params) = connection.initialize_start()?;
     let result = serde_json::json!({

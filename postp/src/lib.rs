@@ -25,7 +25,6 @@ pub mod controller;
 pub mod font;
 pub mod letter;
 pub mod options;
-pub mod records;
 pub mod transform;
 
 use std::path::{Path, PathBuf};
@@ -233,7 +232,7 @@ pub fn post_compiled(
         axes: controller::rotary_axes(head.axis_type),
         retractz: options.retractz,
     };
-    let mut source = Transform::new(reader, records::ClText::open(sources.loader(), cl), machine);
+    let mut source = Transform::new(reader, machine);
     // No file name: the program's first PARTNO is the CL file's own.
     let run = RunOptions { file: Some(FileInfo::default()), now, ..RunOptions::default() };
     let prepend = |mut d: Vec<Diagnostic>| {

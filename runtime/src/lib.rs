@@ -134,6 +134,11 @@ pub fn run<S: EventSource + ?Sized>(
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
         }
+        // What a FEDRAT record said is for toolpath readers (postp's
+        // transform); posts see the feed on the moves.
+        if matches!(event, postc_ir::Event::FeedRate(_)) {
+            continue;
+        }
         engine.event_span = span;
         if lathe {
             event = script::turn_event(event);

@@ -265,11 +265,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
 pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
     let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
     Ok(match &job.postp {
-        Some(machine) => Box::new(postc_postp::transform::Transform::new(
-            reader_events,
-            postc_postp::records::ClText::open(sources.loader(), job.toolpath),
-            machine.clone(),
-        )),
+        Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, machine.clone())),
         None => reader_events,
     })
 }

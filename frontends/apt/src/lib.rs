@@ -21,7 +21,7 @@
 //! | record | event |
 //! |---|---|
 //! | (start) | `Job`: units from `UNITS`/`UNIT` or the first feed unit, part from `PARTNO`, home from `FROM`, product from Creo's `$$*` line |
-//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`) |
+//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`; `load` keeps the offset registers as written) |
 //! | `CUTTER`, `TLDATA` (without a load) | `Tool` when the cutter changes |
 //! | `TOOL PATH/name`, `OPFEATSTART/name` | `ToolpathStart` |
 //! | `END-OF-PATH`, `OPFEATEND` | `ToolpathEnd` |
@@ -33,9 +33,9 @@
 //! | `GOHOME/x,y,z` | `Rapid`; bare `GOHOME` is a `Command` |
 //! | `FROM/x,y,z` | sets the position; `Command` |
 //! | `RAPID` | the next move only is rapid |
-//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR) |
+//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR), and a `FeedRate` event with the value and unit as written (posts never see it; `postp` reads it) |
 //! | `SPINDL/...` | `SpindleOn` / `SpindleOff` |
-//! | `COOLNT/...` | `Coolant` |
+//! | `COOLNT/...` | `Coolant`, with its placement when `NOW` or `NEXT` is written |
 //! | `CUTCOM/LEFT\|RIGHT\|OFF[,n]` | `CutterComp` (`CUTCOM/ON` alone: none) |
 //! | `CYCLE/kind,...` + `GOTO`s + `CYCLE/OFF` | `DrillCycle`, `DrillPoint`s, `DrillEnd` |
 //! | `DELAY`, `DWELL` | `Dwell` |
