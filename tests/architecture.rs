@@ -142,6 +142,7 @@ fn only_the_edge_renders_diagnostics() {
         "verify",
         "backends",
         "lsp",
+        "lint",
     ] {
         assert!(
             !dependencies(krate).iter().any(|d| d == "codespan-reporting"),
@@ -184,6 +185,7 @@ fn only_the_edge_touches_files_the_clock_and_the_terminal() {
         "verify/src",
         "backends/src",
         "lsp/src",
+        "lint/src",
     ] {
         found.extend(uses(folder, &needles));
     }

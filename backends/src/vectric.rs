@@ -193,7 +193,7 @@ impl Printer<'_> {
         // Variables that lines print must be the ones their labels name.
         for h in &self.post.handlers {
             for stmt in &h.body {
-                if let Stmt::Line(pieces) = stmt {
+                if let Stmt::Line { pieces, .. } = stmt {
                     for piece in pieces {
                         if let Piece::Var(id) = piece
                             && let Some(label) = labels.get(id)
@@ -488,7 +488,7 @@ impl Printer<'_> {
                     break;
                 }
                 match stmt {
-                    Stmt::Line(pieces) => {
+                    Stmt::Line { pieces, .. } => {
                         let mut bytes = vec![b'"'];
                         for piece in pieces {
                             match piece {
@@ -567,8 +567,9 @@ fn statement_kind(s: &Stmt) -> &'static str {
 /// Whether a variable prints its label exactly as the label's default does.
 fn is_default(post: &Post, v: &postc_ir::Variable, q: postc_ir::Quantity) -> bool {
     let d = default_format(q);
-    let format = post.formats.get(v.format.index());
-    v.prefix == d.prefix.as_bytes() && v.modality == d.modality && format == Some(&d.format.to_number_format(1.0))
+    // Where the format was written does not matter, only how it prints.
+    let format = post.formats.get(v.format.index()).map(|f| NumberFormat { span: None, ..f.clone() });
+    v.prefix == d.prefix.as_bytes() && v.modality == d.modality && format == Some(d.format.to_number_format(1.0))
 }
 
 /// A name a VAR can have: letters, digits and `_`.

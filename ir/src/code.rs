@@ -17,8 +17,14 @@ use crate::quantity::Quantity;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Stmt {
     /// Write one block: the pieces, then the line ending. Vectric output
-    /// strings, VcPost `Out`, CIMCO lines.
-    Line(Vec<Piece>),
+    /// strings, VcPost `Out`, CIMCO lines. `span` is the post text that
+    /// wrote it (the section line, the `Out` statement), for diagnostics
+    /// and `--trace`.
+    Line {
+        pieces: Vec<Piece>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
+    },
     /// Write the value of an expression as output text; each line of the
     /// text becomes a block (CIMCO handlers return their blocks as text).
     Write(Expr),

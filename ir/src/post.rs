@@ -64,6 +64,9 @@ pub struct PostInfo {
     pub subs: Vec<crate::calls::SubSignature>,
     /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
     pub notes: Vec<String>,
+    /// Where the post names itself (the Vectric `POST_NAME` statement).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 /// The encoding a post file was read in.
@@ -250,6 +253,11 @@ pub struct Variable {
     pub format: FormatId,
     /// When the value prints.
     pub modality: Modality,
+    /// Where the post defines the variable (a Vectric `VAR` line or the
+    /// first use of a label left to its default, a CIMCO
+    /// `createVariable` call, a VcPost register's first use).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 /// Where a variable's value comes from.
@@ -495,6 +503,33 @@ impl Post {
     #[inline]
     pub fn function(&self, id: FunctionId) -> &Function {
         &self.functions[id.index()]
+    }
+
+    /// Forgets every span: of the post's name, handlers, functions, scripts, variables,
+    /// formats, output lines and loops. A post whose spans point into
+    /// files it does not come with (a RON conversion) drops them, so that
+    /// no diagnostic points into the wrong file.
+    pub fn drop_spans(&mut self) {
+        struct Drop;
+        impl crate::visit::VisitMut for Drop {
+            fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
+                match stmt {
+                    Stmt::While { span, .. } | Stmt::Line { span, .. } => *span = None,
+                    _ => {}
+                }
+                crate::visit::walk_stmt_mut(self, stmt);
+            }
+        }
+        self.info.span = None;
+        self.handlers.iter_mut().for_each(|h| h.span = None);
+        self.functions.iter_mut().for_each(|f| f.span = None);
+        self.variables.iter_mut().for_each(|v| v.span = None);
+        self.formats.iter_mut().for_each(|f| f.span = None);
+        for s in &mut self.scripts {
+            s.span = None;
+            s.span_map.clear();
+        }
+        crate::visit::VisitMut::visit_post_mut(&mut Drop, self);
     }
 
     /// The handler for a key, if the post has one.

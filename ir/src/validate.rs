@@ -202,10 +202,14 @@ mod tests {
                 prefix: b"X".to_vec(),
                 format: crate::FormatId::new(0),
                 modality: Modality::OnChange,
+                span: None,
             }],
             handlers: vec![Handler {
                 key: HandlerKey::Section(Section::RapidMove),
-                body: vec![Stmt::Line(vec![Piece::Text(b"G0".to_vec()), Piece::Var(crate::VarId::new(0))])],
+                body: vec![Stmt::Line {
+                    pieces: vec![Piece::Text(b"G0".to_vec()), Piece::Var(crate::VarId::new(0))],
+                    span: None,
+                }],
                 span: None,
             }],
             ..Post::default()
@@ -220,7 +224,7 @@ mod tests {
     #[test]
     fn ids_out_of_range_are_found_where_they_are() {
         let mut p = post();
-        p.handlers[0].body.push(Stmt::Line(vec![Piece::Var(crate::VarId::new(9))]));
+        p.handlers[0].body.push(Stmt::Line { pieces: vec![Piece::Var(crate::VarId::new(9))], span: None });
         p.variables[0].format = crate::FormatId::new(3);
         p.handlers[0]
             .body

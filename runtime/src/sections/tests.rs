@@ -20,6 +20,7 @@ fn tape_post(max_lines: u64, tolerance: u64) -> Post {
         prefix: b"Z".to_vec(),
         format: FormatId::new(0),
         modality: postc_ir::Modality::Always,
+        span: None,
     });
     post.variables.push(Variable {
         name: "T".into(),
@@ -27,11 +28,12 @@ fn tape_post(max_lines: u64, tolerance: u64) -> Post {
         prefix: b"T".to_vec(),
         format: FormatId::new(0),
         modality: postc_ir::Modality::Always,
+        span: None,
     });
     let line = |text: &str, var: Option<u16>| {
         let mut pieces = vec![Piece::Text(text.as_bytes().to_vec())];
         pieces.extend(var.map(|v| Piece::Var(postc_ir::VarId::new(v))));
-        Stmt::Line(pieces)
+        Stmt::Line { pieces, span: None }
     };
     for (section, text, var) in [
         (Section::Header, "HEADER ", Some(1)),

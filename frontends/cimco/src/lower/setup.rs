@@ -168,6 +168,7 @@ impl Setup {
                     prefix: prefix.into_bytes(),
                     format,
                     modality: if force { Modality::Always } else { Modality::OnChange },
+                    span: Some(e.span),
                 });
                 Some(Binding::Var(VarId::new((self.variables.len() - 1) as u16)))
             }
@@ -266,6 +267,7 @@ fn number_format(
         prefix: get("prefix").and_then(|p| p.text()).unwrap_or_default(),
         // A post is JavaScript: numbers round as its engine rounds them.
         rounding: postc_ir::Rounding::Binary,
+        span: Some(span),
     }
 }
 

@@ -191,7 +191,14 @@ impl Lowerer<'_> {
             } else {
                 ValueSource::Assigned
             };
-            variables.push(Variable { name: spec.name.clone(), source, prefix, format: format_id, modality });
+            variables.push(Variable {
+                name: spec.name.clone(),
+                source,
+                prefix,
+                format: format_id,
+                modality,
+                span: spec.span,
+            });
         }
         self.post.variables = variables;
         self.handlers();

@@ -131,7 +131,7 @@ impl Lowerer<'_> {
             StmtKind::Dim(items) => items.iter().flat_map(|i| self.dim(i)).collect(),
             StmtKind::Const(items) => items.iter().flat_map(|(n, v)| self.constant(n, v)).collect(),
             StmtKind::Call { name, args } => self.call_stmt(name, args, s.span).into_iter().collect(),
-            StmtKind::Out(e) => vec![self.out_line(e.as_ref())],
+            StmtKind::Out(e) => vec![self.out_line(e.as_ref(), s.span)],
             StmtKind::Exit(kind) => self.exit(*kind, s).into_iter().collect(),
             StmtKind::If { branches, otherwise } => {
                 let branches = branches.iter().map(|(c, b)| (self.expr_checked(c), self.block(b))).collect();

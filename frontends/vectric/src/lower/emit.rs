@@ -8,10 +8,9 @@ use std::collections::HashMap;
 
 use postc_ir::post::{BlockNumbers, VarId};
 use postc_ir::{
-    Diagnostic, Dialect, Dispatch, Handler, HandlerKey, OutputOptions, Piece, Post, PostInfo, Quantity, Script,
-    ScriptLanguage, Span, Stmt, ValueSource, Variable,
+    Diagnostic, Dialect, Dispatch, FormatId, Handler, HandlerKey, NumberFormat, OutputOptions, Piece, Post, PostInfo,
+    Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, ValueSource, Variable,
 };
-use postc_ir::{FormatId, ScriptId};
 
 use crate::defaults::default_format;
 use crate::diagnostics::Code;
@@ -45,8 +44,10 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
                 prefix: def.prefix.clone(),
                 format: FormatId::new(0),
                 modality: def.modality,
+                span: Some(def.span),
             },
             def.format,
+            Some(def.format_span),
             def.multiplier,
             Some((&def.label, def.seq)),
         );
@@ -61,7 +62,8 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
         let mut body = Vec::with_capacity(section.lines.len());
         for line in &section.lines {
             match line {
-                LineDef::Output(pieces) => body.push(Stmt::Line(line_pieces(&mut post, &mut vars, pieces, diags))),
+                LineDef::Output(pieces, span) => body
+                    .push(Stmt::Line { pieces: line_pieces(&mut post, &mut vars, pieces, diags), span: Some(*span) }),
                 LineDef::Script(script) => {
                     if let Some(id) = push_script(&mut post, script) {
                         body.push(Stmt::Script(id));
@@ -92,10 +94,12 @@ impl Variables {
         post: &mut Post,
         mut variable: Variable,
         format: FormatSpec,
+        format_span: Option<Span>,
         multiplier: f64,
         label: Option<(&str, usize)>,
     ) -> Option<VarId> {
-        variable.format = post.push_format(format.to_number_format(multiplier))?;
+        variable.format =
+            post.push_format(NumberFormat { span: format_span, ..format.to_number_format(multiplier) })?;
         let id = post.push_variable(variable)?;
         if let Some((label, seq)) = label {
             let key = label.to_ascii_uppercase();
@@ -121,8 +125,9 @@ impl Variables {
             prefix: default.prefix.as_bytes().to_vec(),
             format: FormatId::new(0),
             modality: default.modality,
+            span: Some(at),
         };
-        let id = self.add(post, variable, default.format, 1.0, Some((label, 0)))?;
+        let id = self.add(post, variable, default.format, None, 1.0, Some((label, 0)))?;
         self.first_use.insert(id, at);
         Some(id)
     }
@@ -204,6 +209,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         text_encoding: postc_ir::post::TextEncoding::Utf8,
         subs: Vec::new(),
         notes: Vec::new(),
+        span: model.global(GlobalName::PostName).map(|g| g.span),
     }
 }
 

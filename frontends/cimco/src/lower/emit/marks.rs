@@ -152,7 +152,7 @@ fn reads(body: &[Stmt], read: &mut HashSet<LocalId>) {
                 reads(body, read);
             }
             Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) | Stmt::Return(Some(e)) => expr(e, read),
-            Stmt::Emit(p) | Stmt::Line(p) => p.iter().for_each(|p| {
+            Stmt::Emit(p) | Stmt::Line { pieces: p, .. } => p.iter().for_each(|p| {
                 if let Piece::Expr(e) = p {
                     expr(e, read)
                 }

@@ -164,7 +164,7 @@ pub(crate) fn max_slot(body: &[Stmt]) -> Option<LocalId> {
                 e(x, &mut m);
             }
             Stmt::Eval(x) | Stmt::Write(x) | Stmt::Return(Some(x)) => e(x, &mut m),
-            Stmt::Emit(pieces) | Stmt::Line(pieces) => pieces.iter().for_each(|p| {
+            Stmt::Emit(pieces) | Stmt::Line { pieces, .. } => pieces.iter().for_each(|p| {
                 if let Piece::Expr(x) = p {
                     e(x, &mut m)
                 }
