@@ -29,6 +29,7 @@ mod plot;
 mod post;
 mod postp;
 mod probe;
+mod profile;
 pub mod report;
 pub mod sink;
 mod toolpath;
