@@ -49,7 +49,7 @@ fn main() {
 
     let mut events = 0;
     let postc_total = best_of_three(|| {
-        let mut sources = postc_ir::SourceMap::new();
+        let mut sources = postc_report::source_map();
         let mut source = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
         let report =
@@ -57,7 +57,7 @@ fn main() {
         events = report.events;
         start.elapsed().as_secs_f64()
     });
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut reader = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
     let (mut all, mut diags) = (Vec::new(), Vec::new());
     while let Some((e, _)) = reader.next_event(&mut diags) {

@@ -175,7 +175,7 @@ fn default_post(sources: &mut SourceMap) -> Post {
 
 /// Reads, posts and checks one file; returns what went wrong.
 fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let diags = postc_frontends::check_toolpath(path, &mut sources);
     let errors: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
     if is_binary(path) {

@@ -9,7 +9,7 @@ use postc_ir::{Body, FileId, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
 
 fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>, SourceMap) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diags) = cimco(Path::new("test.js"), js.as_bytes(), &mut sources);
     (post, diags, sources)
 }
@@ -217,7 +217,7 @@ fn mutated_posts_never_panic() {
                     bytes.insert(i, b'(');
                 }
             }
-            let mut sources = SourceMap::new();
+            let mut sources = postc_report::source_map();
             let (post, diags) = cimco(Path::new("m.js"), &bytes, &mut sources);
             if !postc_ir::diagnostic::has_errors(&diags) {
                 let mut p = post;

@@ -7,7 +7,6 @@
 
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
 use postc_runtime::{Finished, Output, RunOptions};
 
 fn root() -> PathBuf {
@@ -15,7 +14,7 @@ fn root() -> PathBuf {
 }
 
 fn post(post: &Path, toolpath: &Path, exact_arcs: bool) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(post, None, &mut sources);
     let post = compiled.post.unwrap();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();

@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use postc_ir::event::*;
-use postc_ir::{FileId, Post, SourceMap};
+use postc_ir::{FileId, Post};
 use postc_runtime::{Output, RunOptions, run};
 use proptest::prelude::*;
 
@@ -18,7 +18,7 @@ fn corpus_posts() -> Vec<Post> {
         .iter()
         .filter(|p| p.extension().is_some_and(|e| e == "pp"))
         .map(|p| {
-            let mut sources = SourceMap::new();
+            let mut sources = postc_report::source_map();
             postc_frontends::compile_post(p, None, &mut sources).post.unwrap()
         })
         .collect()

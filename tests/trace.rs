@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::rc::Rc;
 
-use postc_ir::{Dialect, SourceMap, Span};
+use postc_ir::{Dialect, Span};
 use postc_runtime::{Finished, Output, RunOptions};
 
 mod golden_common;
@@ -24,7 +24,7 @@ type RawTrace = Rc<RefCell<Vec<(usize, u64, Option<Span>)>>>;
 /// Posts `toolpath` through the post at `path` with a trace; the program's
 /// parts and the trace, or `None` when the post does not post it.
 fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Traced>)> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     let post = compiled.post?;
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).ok()?;

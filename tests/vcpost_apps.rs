@@ -3,6 +3,7 @@
 //! composites functions, and the `postc post` / `postc probe-table` command
 //! lines for probe tables and composites event files.
 
+use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -26,7 +27,7 @@ fn toolpath() -> PathBuf {
 /// its primary label in the post.
 fn runaway(body: &str, budget: Option<u64>) -> (String, usize) {
     let text = format!("Sub GOTO\n  Dim I\n{body}\nEnd Sub\n");
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (mut post, diagnostics) = compile(&text, &mut sources);
     assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{}", sources.render(&diagnostics, false));
     if let Some(b) = budget {
@@ -53,7 +54,7 @@ fn a_runaway_loop_stops_at_its_line() {
 
 #[test]
 fn endless_recursion_stops() {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, _) = compile("Sub Again\n  Again\nEnd Sub\nSub GOTO\n  Again\nEnd Sub\n", &mut sources);
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
     let errors = postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()).err().unwrap();
@@ -69,7 +70,7 @@ fn a_post_has_no_file_or_process_access() {
         ("  X = CreateObject(\"WScript.Shell\")", "VC023"),
         ("  Kill \"/tmp/x\"", "VC025"),
     ] {
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (_, diagnostics) = compile(&format!("Sub GOTO\n{line}\nEnd Sub\n"), &mut sources);
         assert!(diagnostics.iter().any(|d| d.code == code && d.is_error()), "{line}: {diagnostics:?}");
     }
@@ -78,7 +79,7 @@ fn a_post_has_no_file_or_process_access() {
 #[test]
 fn composites_functions_read_the_calls_lists() {
     let text = "Sub GoTo\n  Out \"L\" & getNthLength1(0) & \",\" & getNthLength1(2) & \",\" & getNthLength3(1) & \",\" & getNthLength1(99)\nEnd Sub\n";
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(text, &mut sources);
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
     let call = |vars: Vec<(String, CallValue)>| SubCall {

@@ -19,6 +19,7 @@
 //! `tests/corpus_goldens.rs` does. Read every blessed file before
 //! committing it.
 
+use postc_report::Render as _;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -53,7 +54,7 @@ fn extension(post: &str) -> &'static str {
 
 fn compile(stem: &str) -> Result<Post, String> {
     let path = root().join("corpus/posts/vcpost").join(format!("{stem}.VcPost"));
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(&path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         return Err(format!("{stem}: {}", sources.render(&compiled.diagnostics, false)));
@@ -76,7 +77,7 @@ fn memory(
 
 /// Runs one input through a post: a toolpath, a probe table or an event file.
 fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let name = input.to_string_lossy().to_ascii_lowercase();
     if name.ends_with(".csv") {
         let text = std::fs::read_to_string(input).map_err(|e| e.to_string())?;
@@ -88,7 +89,7 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         let result =
             postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
         memory(result, &mut sources)
-    } else if postc_front_vcpost::composites::is_composites_file(input) {
+    } else if postc_front_vcpost::composites::is_composites_file(input, &postc_report::FsLoader) {
         let mut reader =
             postc_front_vcpost::composites::open(input, &mut sources, post, Vec::new()).map_err(|d| d.message)?;
         let result = postc_runtime::calls::run_calls(post, &mut reader, Output::memory(), RunOptions::default());

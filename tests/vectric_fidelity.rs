@@ -8,7 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Event, FeedMove, Intent, Job, Move, Power, Tool, ToolpathStart, VecSource};
-use postc_ir::{FileId, Post, SourceMap};
+use postc_ir::{FileId, Post};
 use postc_runtime::{Finished, Output, RunOptions};
 
 fn manifest() -> &'static Path {
@@ -22,7 +22,7 @@ fn real_post(rel: &str) -> Option<PathBuf> {
 }
 
 fn compile(path: &Path) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
     compiled.post.expect("a compiled post")
@@ -33,7 +33,7 @@ fn text(parts: Vec<Vec<u8>>) -> String {
 }
 
 fn post_file(post: &Post, toolpath: &Path) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("open the toolpath");
     match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
         Ok(report) => match report.output {

@@ -20,7 +20,7 @@ pub mod synthetic;
 
 use std::path::Path;
 
-use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceMap, Span};
+use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceLoader, SourceMap, Span};
 
 /// A compiled post and everything its frontend had to say.
 pub struct Compiled {
@@ -65,9 +65,9 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     }
 }
 
-/// Reads and compiles a post file.
+/// Reads (through the source map's loader) and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
-    match std::fs::read(path) {
+    match sources.loader().read(path) {
         Ok(bytes) => compile_post_bytes(path, &bytes, dialect, sources),
         Err(e) => Compiled::failed(Diagnostic::error("IO001", format!("cannot read post `{}`: {e}", path.display()))),
     }
@@ -194,9 +194,10 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
 }
 
 /// Whether a path names a toolpath rather than a post. A `.ron` file is a
-/// post when it holds an IR post (it has `handlers`), else a toolpath.
-pub fn is_toolpath(path: &Path) -> bool {
-    let head = read_head(path);
+/// post when it holds an IR post (it has `handlers`), else a toolpath. The
+/// file's head is read through `loader`.
+pub fn is_toolpath(path: &Path, loader: &dyn SourceLoader) -> bool {
+    let head = read_head(loader, path);
     match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("pp" | "js" | "vcpost") => false,
         Some("ron") => !looks_like_ir_post(&head),
@@ -209,20 +210,22 @@ fn looks_like_ir_post(head: &[u8]) -> bool {
     text.contains("handlers") && text.contains("formats")
 }
 
-fn read_head(path: &Path) -> Vec<u8> {
+/// The first 16 KiB of a file (fewer when one read returns fewer), or
+/// nothing when it cannot be read.
+fn read_head(loader: &dyn SourceLoader, path: &Path) -> Vec<u8> {
     use std::io::Read;
     let mut head = vec![0u8; 1 << 14];
-    let n = std::fs::File::open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
+    let n = loader.open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
     head.truncate(n);
     head
 }
 
 /// Opens a toolpath as a stream of events.
 pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
-    if !path.exists() {
+    if !sources.loader().exists(path) {
         return Err(Diagnostic::error("IO001", format!("toolpath `{}` does not exist", path.display())));
     }
-    match toolpath_format(path, &read_head(path)) {
+    match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
         Some(ToolpathFormat::Apt) => Ok(Box::new(postc_front_apt::open(path, sources)?)),
         None => Err(Diagnostic::error("IO006", format!("cannot tell what kind of toolpath `{}` is", path.display()))
@@ -232,7 +235,7 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
 
 /// Reads a whole toolpath and returns every diagnostic (for `postc check`).
 pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
-    if toolpath_format(path, &read_head(path)) == Some(ToolpathFormat::Apt) {
+    if toolpath_format(path, &read_head(sources.loader(), path)) == Some(ToolpathFormat::Apt) {
         return postc_front_apt::check(path, sources);
     }
     let mut source = match open_toolpath(path, sources) {

@@ -91,7 +91,10 @@
 //!
 //! [`Diagnostic`] is the one error type of the project: a code, a severity,
 //! a message, labels over byte [`Span`]s of files in a [`SourceMap`], notes
-//! and help. It renders with codespan-reporting and as JSON.
+//! and help. The IR only holds it: the command line renders it (for people,
+//! and as JSON) through `postc_report`. Files
+//! beyond the bytes a frontend is given are read through the map's
+//! [`SourceLoader`] (module [`source`]), which the caller provides.
 
 pub mod calls;
 pub mod code;
@@ -101,6 +104,7 @@ pub mod format;
 pub mod id;
 pub mod post;
 pub mod quantity;
+pub mod source;
 pub mod units;
 pub mod validate;
 pub mod visit;
@@ -116,4 +120,5 @@ pub use post::{
     ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
+pub use source::{MemoryLoader, NoFiles, SourceLoader};
 pub use units::Units;

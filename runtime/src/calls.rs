@@ -50,7 +50,7 @@ pub fn run_calls<S: CallSource + ?Sized>(
         crate::machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
-    (machine.default_date, machine.default_time) = crate::clock::now();
+    (machine.default_date, machine.default_time) = crate::clock::format_utc(options.now.unwrap_or(0));
     if let Some(f) = options.file.take() {
         machine.file_name = f.name;
         machine.file_dir = f.dir;

@@ -20,8 +20,14 @@
 //!   functions the runtime provides to those posts;
 //! - [`script`]: the Rhai host for CIMCO functions that do not lower to
 //!   native IR, and what CIMCO posts need of events;
-//! - [`output`]: sinks that write whole programs or nothing, and tape
-//!   splitting into parts.
+//! - [`output`]: the [`output::Sink`] trait the caller's sinks implement
+//!   (files, standard output: the command line), the memory and discard
+//!   sinks, and the names of tape-split parts;
+//! - [`clock`]: dates and times as posts print them, from the Unix time the
+//!   caller passes as [`RunOptions::now`].
+//!
+//! The runtime touches neither the file system, the clock nor the terminal:
+//! output goes to a sink, and "now" is an input.
 //!
 //! [`run`] pulls events one at a time from an [`EventSource`], so memory
 //! stays flat whatever the toolpath's length.
@@ -57,6 +63,11 @@ pub struct RunOptions {
     /// `[DATE]` and `[TIME]`, overriding the job's.
     pub date: Option<String>,
     pub time: Option<String>,
+    /// Now, as a Unix time in seconds: what `[DATE]` and `[TIME]` print (in
+    /// UTC) when neither the job nor `date`/`time` give them. The runtime
+    /// never reads the clock; the caller does (the command line: the system
+    /// clock, or `SOURCE_DATE_EPOCH`). `None` prints 1970-01-01 00:00.
+    pub now: Option<i64>,
     /// The output file, overriding the job's (`-o`).
     pub file: Option<FileInfo>,
     /// Chord tolerance in mm for linearized arcs, overriding the post's.
@@ -98,7 +109,7 @@ pub fn run<S: EventSource + ?Sized>(
         machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
-    (machine.default_date, machine.default_time) = clock::now();
+    (machine.default_date, machine.default_time) = clock::format_utc(options.now.unwrap_or(0));
     if let Some(f) = options.file.take() {
         machine.file_name = f.name;
         machine.file_dir = f.dir;
@@ -130,6 +141,11 @@ pub fn run<S: EventSource + ?Sized>(
     while let Some((mut event, span)) = source.next_event(&mut diagnostics) {
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
+        }
+        // What a FEDRAT record said is for toolpath readers (postp's
+        // transform); posts see the feed on the moves.
+        if matches!(event, postc_ir::Event::FeedRate(_)) {
+            continue;
         }
         engine.event_span = span;
         if let Some(t) = engine.trace.as_deref_mut() {

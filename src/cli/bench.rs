@@ -39,7 +39,7 @@ pub struct Measured {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let (mut source, total): (Box<dyn EventSource>, Option<u64>) = match &args.toolpath {
         Some(path) => (postc_frontends::open_toolpath(path, &mut sources).map_err(|d| fail(&mut sources, d))?, None),
@@ -54,7 +54,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
         },
     };
-    let mut options = RunOptions::default();
+    let mut options = super::clock::run_options();
     let profiler = args.profile.then(super::profile::Profiler::default);
     if let Some(p) = &profiler {
         options.profile = Some(Box::new(p.clone()));

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use postc_ir::{Diagnostic, SourceMap};
+use postc_ir::Diagnostic;
 
 use super::report::{self, Format};
 use super::{DialectArg, Failed};
@@ -50,11 +50,11 @@ impl From<ProductArg> for postc_lint::Product {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();
-        if args.fix && file.exists() && !postc_frontends::is_toolpath(file) {
+        if args.fix && file.exists() && !postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             match fix(file, args.dialect) {
                 Ok(0) => {}
                 Ok(n) => eprintln!("postc: fixed {n} problem(s) in `{name}`"),
@@ -66,7 +66,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         let diagnostics = if !file.exists() {
             vec![Diagnostic::error("IO001", format!("`{name}` does not exist"))]
-        } else if postc_frontends::is_toolpath(file) {
+        } else if postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
             let compiled = postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources);

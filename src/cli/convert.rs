@@ -7,7 +7,7 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use postc_backends::Target;
-use postc_ir::{Diagnostic, SourceMap};
+use postc_ir::Diagnostic;
 
 use super::{DialectArg, Failed, fail, load_post, report};
 
@@ -36,7 +36,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,

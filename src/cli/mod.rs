@@ -21,6 +21,7 @@
 
 mod bench;
 mod check;
+pub mod clock;
 mod convert;
 mod inspect;
 mod lsp;
@@ -30,6 +31,7 @@ mod postp;
 mod probe;
 mod profile;
 pub mod report;
+pub mod sink;
 mod toolpath;
 mod trace;
 pub(crate) mod verify;

@@ -46,7 +46,7 @@ enum Kind {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let ext = args.output.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
     let kind = match ext.as_str() {
         "svg" => Kind::Svg,

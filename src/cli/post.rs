@@ -5,9 +5,9 @@
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
+use postc_ir::Diagnostic;
 use postc_ir::event::FileInfo;
-use postc_ir::{Diagnostic, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
 
@@ -81,14 +81,14 @@ fn file_info(path: &Path) -> FileInfo {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post_path, toolpath) = match args.files.as_slice() {
         [toolpath] => (None, toolpath),
         [post, toolpath] => (Some(post), toolpath),
         _ => unreachable!("clap takes one or two files"),
     };
     if let Some(kind) = super::probe::job_kind(toolpath) {
-        let mut options = RunOptions::default();
+        let mut options = super::clock::run_options();
         apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
         options.file = args.output.as_deref().map(file_info);
         let job = super::probe::Job {
@@ -102,7 +102,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         };
         return super::probe::run_calls(job);
     }
-    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
+    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
             &mut sources,
             Diagnostic::error("IO006", format!("`{}` is not a toolpath", toolpath.display()))
@@ -116,14 +116,14 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ));
     }
     let post = load_post(post_path, args.dialect, &mut sources)?;
-    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..RunOptions::default() };
+    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..super::clock::run_options() };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));
     }
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
     let out = match &args.output {
-        Some(path) => Output::file(path).map_err(|e| {
+        Some(path) => super::sink::file(path).map_err(|e| {
             fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
         })?,
         None => {
@@ -136,7 +136,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                     )],
                 );
             }
-            Output::stdout()
+            super::sink::stdout()
         }
     };
     let recorder = match &args.trace {

@@ -15,7 +15,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{CallSource, Diagnostic, Dialect, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
 
@@ -31,7 +31,7 @@ pub struct Args {
 
 /// `postc probe-table POST`.
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     match postc_front_vcpost::table::template(&post) {
         Some(text) => {
@@ -61,7 +61,7 @@ pub fn job_kind(path: &Path) -> Option<JobKind> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     if ext.as_deref() == Some("csv") {
         Some(JobKind::ProbeTable)
-    } else if postc_front_vcpost::composites::is_composites_file(path) {
+    } else if postc_front_vcpost::composites::is_composites_file(path, &postc_report::FsLoader) {
         Some(JobKind::Composites)
     } else {
         None
@@ -81,7 +81,7 @@ pub struct Job<'a> {
 
 /// Runs a probe table or a composites event file through a VcPost post.
 pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let Some(post_path) = job.post else {
         return Err(fail(
             &mut sources,
@@ -105,10 +105,10 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     }
     let mut source = open(&job, &post, &mut sources)?;
     let out = match job.output {
-        Some(path) => Output::file(path).map_err(|e| {
+        Some(path) => super::sink::file(path).map_err(|e| {
             fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
         })?,
-        None => Output::stdout(),
+        None => super::sink::stdout(),
     };
     let mut options = job.options;
     let big = std::fs::metadata(job.input).map(|m| m.len() > (32 << 20)).unwrap_or(false);

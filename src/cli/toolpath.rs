@@ -4,7 +4,7 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use postc_frontends::native::{Syntax, write_event};
-use postc_ir::{Diagnostic, EventSource, SourceMap};
+use postc_ir::{Diagnostic, EventSource};
 
 use super::{Failed, fail};
 use postc_frontends::synthetic::{PATTERNS, Synthetic};
@@ -26,7 +26,7 @@ pub enum Command {
 }
 
 pub fn run(command: Command) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let Command::Gen { pattern, moves, output } = command;
     let Some(mut generator) = Synthetic::new(&pattern, moves) else {
         return Err(fail(

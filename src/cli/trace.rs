@@ -8,6 +8,7 @@
 //! (the source map knows the post's files and the toolpath) and the trace
 //! is written whole beside its target, or not at all.
 
+use postc_report::Render as _;
 use std::cell::RefCell;
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, BufWriter, Write};
@@ -217,7 +218,7 @@ pub struct ExplainArgs {
 
 /// Runs `postc explain TRACE LINE`.
 pub fn run_explain(args: ExplainArgs) -> Result<(), super::Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     match explain(&args.trace, args.line, args.output.as_deref(), &mut sources) {
         Ok(text) => {
             super::report::out(&text);

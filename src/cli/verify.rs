@@ -73,7 +73,7 @@ const FOREIGN_EXTENSIONS: &[(&str, &str)] =
     &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, postp) = post_for(args.post.as_ref(), args.dialect, args.postp, &args.toolpath, &mut sources)?;
     let job = Job {
         program: &args.program,
@@ -275,11 +275,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
 pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
     let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
     Ok(match &job.postp {
-        Some(machine) => Box::new(postc_postp::transform::Transform::new(
-            reader_events,
-            postc_postp::records::ClText::open(job.toolpath),
-            machine.clone(),
-        )),
+        Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, machine.clone())),
         None => reader_events,
     })
 }

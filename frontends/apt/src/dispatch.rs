@@ -3,7 +3,7 @@
 //! need no more than a parse and a state change.
 
 use postc_ir::diagnostic::{Diagnostic, Span};
-use postc_ir::event::{Command, Event, Text};
+use postc_ir::event::{Command, Event, FeedRate, Text};
 
 use crate::circle::unit;
 use crate::cycle::{CycleRecord, parse_cycle};
@@ -47,6 +47,7 @@ impl Core {
                 machine::parse_fedrat(rec, &mut ignored).map(|feed| {
                     self.note_units(feed.units, true);
                     self.feed = Some(feed);
+                    self.note(Event::FeedRate(FeedRate { value: feed.value, unit: feed.unit }), span);
                 })
             }
             Major::Spindl => {

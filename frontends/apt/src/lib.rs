@@ -21,7 +21,7 @@
 //! | record | event |
 //! |---|---|
 //! | (start) | `Job`: units from `UNITS`/`UNIT` or the first feed unit, part from `PARTNO`, home from `FROM`, product from Creo's `$$*` line |
-//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`) |
+//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`; `load` keeps the offset registers as written) |
 //! | `CUTTER`, `TLDATA` (without a load) | `Tool` when the cutter changes |
 //! | `TOOL PATH/name`, `OPFEATSTART/name` | `ToolpathStart` |
 //! | `END-OF-PATH`, `OPFEATEND` | `ToolpathEnd` |
@@ -33,9 +33,9 @@
 //! | `GOHOME/x,y,z` | `Rapid`; bare `GOHOME` is a `Command` |
 //! | `FROM/x,y,z` | sets the position; `Command` |
 //! | `RAPID` | the next move only is rapid |
-//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR) |
+//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR), and a `FeedRate` event with the value and unit as written (posts never see it; `postp` reads it) |
 //! | `SPINDL/...` | `SpindleOn` / `SpindleOff` |
-//! | `COOLNT/...` | `Coolant` |
+//! | `COOLNT/...` | `Coolant`, with its placement when `NOW` or `NEXT` is written |
 //! | `CUTCOM/LEFT\|RIGHT\|OFF[,n]` | `CutterComp` (`CUTCOM/ON` alone: none) |
 //! | `CYCLE/kind,...` + `GOTO`s + `CYCLE/OFF` | `DrillCycle`, `DrillPoint`s, `DrillEnd` |
 //! | `DELAY`, `DWELL` | `Dwell` |
@@ -106,19 +106,23 @@ mod state;
 mod window;
 mod words;
 
-use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
 
 use postc_ir::diagnostic::{Diagnostic, SourceMap};
 use postc_ir::event::EventSource;
+use postc_ir::source::SourceReader;
 
 pub use detect::{Content, sniff};
 pub use reader::AptReader;
 
-/// Opens a CL file for streaming; spans point into it through `sources`.
-pub fn open(path: &Path, sources: &mut SourceMap) -> Result<AptReader<BufReader<File>>, Diagnostic> {
-    let file = File::open(path).map_err(|e| {
+/// A CL file streamed through the source map's loader.
+pub type FileReader = AptReader<BufReader<SourceReader>>;
+
+/// Opens a CL file for streaming (through the source map's loader); spans
+/// point into it through `sources`.
+pub fn open(path: &Path, sources: &mut SourceMap) -> Result<FileReader, Diagnostic> {
+    let file = sources.loader().open(path).map_err(|e| {
         Diagnostic::error(diagnostics::IO, format!("cannot open the CL file {}: {e}", path.display()))
             .help("check the path and that the file can be read")
     })?;

@@ -131,13 +131,22 @@ impl Core {
             job.span.get_or_insert(span);
         }
         self.window.push(event, span);
-        if self.window.len() >= LIMIT {
+        if self.window.len() - self.window.notes >= LIMIT {
             self.flush();
         }
     }
 
     /// Emits a move (or a drill cycle event), opening a toolpath if none is
     /// open, and flushes the window when the header is settled.
+    /// Holds an event that records what the file said without changing
+    /// what the others mean (`FeedRate`): it neither dates the `Job` nor
+    /// counts toward a forced flush, so every other event comes out as it
+    /// would without it.
+    pub fn note(&mut self, event: Event, span: Span) {
+        self.window.push(event, span);
+        self.window.notes += 1;
+    }
+
     pub fn emit_motion(&mut self, event: Event, span: Span) {
         if self.toolpath == Toolpath::None {
             self.toolpath = Toolpath::Synthesized;
@@ -194,6 +203,12 @@ impl Core {
             spindle_speed: speed,
             length_offset: load.length_offset.filter(|&h| h != load.number),
             diameter_offset: load.diameter_offset.filter(|&d| d != load.number),
+            load: forced.then(|| {
+                Box::new(postc_ir::event::ToolLoad {
+                    length_offset: load.length_offset,
+                    diameter_offset: load.diameter_offset,
+                })
+            }),
             ..Tool::default()
         };
         let same = self

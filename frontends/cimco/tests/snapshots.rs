@@ -7,11 +7,11 @@
 //! report at least one error, and every code named on their first line
 //! (`// expect: JS019 JS007`) must be among the codes reported.
 
+use postc_report::Render as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
 use postc_front_cimco::{dump::dump, parse};
-use postc_ir::SourceMap;
 
 fn fixtures(kind: &str) -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures").join(kind);
@@ -32,7 +32,7 @@ fn name_of(path: &Path) -> String {
 fn snapshot(kind: &str, path: &Path) -> (String, Vec<String>) {
     let bytes = fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let text = String::from_utf8_lossy(&bytes).into_owned();
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add(format!("{kind}/{}.js", name_of(path)), text.clone());
     let (program, diagnostics) = parse(&text, file);
     let codes = diagnostics.iter().map(|d| d.code.to_string()).collect();

@@ -50,26 +50,26 @@ pub mod check;
 pub mod grammar;
 
 use std::collections::{HashMap, VecDeque};
-use std::fs::File;
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
-use postc_ir::{CallSource, Diagnostic, FileId, MissingSub, Post, SourceMap, Span, SubCall};
+use postc_ir::source::SourceReader;
+use postc_ir::{CallSource, Diagnostic, FileId, MissingSub, Post, SourceLoader, SourceMap, Span, SubCall};
 
 use crate::ast::SubKeyword;
 use calls::{Application, Call, HeaderLine, LayingCall, ProbingCall};
 use grammar::{State, Step};
 
 /// Whether a path names a composites event file: `.vcp.ron`, `.vcp.jsonl`
-/// or `.vcp.json` (any case), or a file whose first line is the header.
-pub fn is_composites_file(path: &Path) -> bool {
+/// or `.vcp.json` (any case), or a file whose first line is the header
+/// (read through `loader`).
+pub fn is_composites_file(path: &Path, loader: &dyn SourceLoader) -> bool {
     let name = path.file_name().map(|n| n.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
     if [".vcp.ron", ".vcp.jsonl", ".vcp.json"].iter().any(|e| name.ends_with(e)) {
         return true;
     }
     let mut head = Vec::new();
-    if let Ok(f) = File::open(path) {
-        use std::io::Read;
+    if let Ok(f) = loader.open(path) {
         let _ = f.take(4096).read_to_end(&mut head);
     }
     looks_like_composites(&head)
@@ -177,8 +177,10 @@ pub fn open(
     sources: &mut SourceMap,
     post: &Post,
     primers: Vec<SubCall>,
-) -> Result<CompositesReader<BufReader<File>>, Diagnostic> {
-    let f = File::open(path)
+) -> Result<CompositesReader<BufReader<SourceReader>>, Diagnostic> {
+    let f = sources
+        .loader()
+        .open(path)
         .map_err(|e| Diagnostic::error("CP010", format!("cannot open the event file `{}`: {e}", path.display())))?;
     let id = sources.add_streamed(path.display().to_string());
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
