@@ -33,7 +33,7 @@ fn runaway(body: &str, budget: Option<u64>) -> (String, usize) {
         post.options.step_budget = b;
     }
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
+    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
         Ok(_) => panic!("{body}: the runaway loop was not stopped"),
         Err(d) => d,
     };
@@ -56,7 +56,8 @@ fn endless_recursion_stops() {
     let mut sources = SourceMap::new();
     let (post, _) = compile("Sub Again\n  Again\nEnd Sub\nSub GOTO\n  Again\nEnd Sub\n", &mut sources);
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()).err().unwrap();
+    let errors =
+        postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)).err().unwrap();
     assert!(errors.iter().any(|d| d.code == "RT004"), "{errors:?}");
 }
 

@@ -95,7 +95,7 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         memory(result, &mut sources)
     } else {
         let mut source = postc_frontends::open_toolpath(input, &mut sources).map_err(|d| d.message)?;
-        let result = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default());
+        let result = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post));
         memory(result, &mut sources)
     }
 }

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Event, FeedMove, Intent, Job, Move, Power, Tool, ToolpathStart, VecSource};
 use postc_ir::{FileId, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -35,7 +35,7 @@ fn text(parts: Vec<Vec<u8>>) -> String {
 fn post_file(post: &Post, toolpath: &Path) -> String {
     let mut sources = SourceMap::new();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("open the toolpath");
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),
@@ -46,7 +46,7 @@ fn post_file(post: &Post, toolpath: &Path) -> String {
 
 fn post_events(post: &Post, events: Vec<Event>) -> String {
     let mut source = VecSource::new(events, FileId(0));
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),

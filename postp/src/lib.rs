@@ -225,7 +225,7 @@ pub fn post_compiled(
     };
     let mut source = Transform::new(reader, records::ClText::open(cl), machine);
     // No file name: the program's first PARTNO is the CL file's own.
-    let run = RunOptions { file: Some(FileInfo::default()), ..RunOptions::default() };
+    let run = RunOptions { file: Some(FileInfo::default()), ..postc_frontends::run_options(post) };
     let prepend = |mut d: Vec<Diagnostic>| {
         d.splice(0..0, head.warnings.iter().cloned());
         d

@@ -51,7 +51,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
         },
     };
-    let mut options = RunOptions::default();
+    let mut options = postc_frontends::run_options(&post);
     if std::io::stderr().is_terminal() {
         let bar = match total {
             Some(n) => indicatif::ProgressBar::new(n),

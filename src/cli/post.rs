@@ -113,7 +113,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ));
     }
     let post = load_post(post_path, args.dialect, &mut sources)?;
-    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..RunOptions::default() };
+    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..postc_frontends::run_options(&post) };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));

@@ -14,7 +14,7 @@ mod ops;
 use ops::{binary, builtin, js_number, push_integer};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
-use crate::script::js;
+use crate::js;
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -401,10 +401,6 @@ impl Engine<'_> {
             }
             (result, _) => result,
         }
-    }
-
-    fn call_script(&mut self, id: u16, name: &str, args: Vec<Value>) -> Result<Value> {
-        crate::script::call(self, id, name, args)
     }
 
     /// A mark stored by [`Stmt::Mark`], within the output buffer.

@@ -24,7 +24,7 @@
 
 use postc_ir::{BinaryOp, Builtin, Expr, Handler, HandlerKey, Place, Quantity, Section, Stmt, UnaryOp};
 
-use super::host;
+use super::builtins;
 use super::layout::{self, Layout};
 
 /// What the handlers need to know about the post.
@@ -65,9 +65,9 @@ impl Entry<'_> {
         add(Section::ToolChange, tool);
         let (x, y, z) = self.axes();
         for (section, movement) in [
-            (Section::RapidMove, host::MOVEMENT_RAPID),
-            (Section::FeedMove, host::MOVEMENT_CUTTING),
-            (Section::PlungeMove, host::MOVEMENT_PLUNGE),
+            (Section::RapidMove, builtins::MOVEMENT_RAPID),
+            (Section::FeedMove, builtins::MOVEMENT_CUTTING),
+            (Section::PlungeMove, builtins::MOVEMENT_PLUNGE),
         ] {
             let mut args = vec![x.clone()];
             if !self.lathe {
@@ -156,7 +156,7 @@ impl Entry<'_> {
             ]);
         }
         args.push(Expr::Bool(cw));
-        args.push(Expr::Number(host::MOVEMENT_CUTTING));
+        args.push(Expr::Number(builtins::MOVEMENT_CUTTING));
         args
     }
 

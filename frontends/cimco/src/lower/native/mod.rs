@@ -17,8 +17,8 @@ use crate::ast::*;
 
 mod calls;
 
+use super::builtins;
 use super::consts::Const;
-use super::host;
 use super::layout::{self, Layout};
 use super::model::Model;
 use super::scope::{FnId, Symbol};
@@ -257,7 +257,7 @@ impl Native<'_, '_> {
                 }
                 Some(Ir::Global(*self.layout.global_index.get(name)?))
             }
-            None => match host::constant(name)? {
+            None => match builtins::constant(name)? {
                 Const::Num(n) => Some(Ir::Number(n)),
                 c => Some(layout::const_expr(&c)),
             },
@@ -283,7 +283,7 @@ impl Native<'_, '_> {
                     && o == "Math"
                     && self.is_host("Math")
                 {
-                    return host::math_constant(&property.name).map(Ir::Number);
+                    return builtins::math_constant(&property.name).map(Ir::Number);
                 }
                 if property.name == "length" {
                     return Some(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
@@ -296,9 +296,9 @@ impl Native<'_, '_> {
                     && let ExprKind::Ident(n) = &operand.kind
                     && matches!(self.model.scopes.resolve(n, self.at), Symbol::Global(_))
                     && self.model.global(n).is_none()
-                    && host::constant(n).is_none()
+                    && builtins::constant(n).is_none()
                 {
-                    return Some(Ir::Text(if host::knows(n) { "function" } else { "undefined" }.into()));
+                    return Some(Ir::Text(if builtins::knows(n) { "function" } else { "undefined" }.into()));
                 }
                 let a = Box::new(self.expr(operand)?);
                 match op {
