@@ -158,7 +158,7 @@ fn tolerance(post: &Post) -> f64 {
         .variables
         .iter()
         .find(|v| v.source == ValueSource::Quantity(Quantity::X))
-        .map_or(3, |v| post.formats[v.format as usize].decimals);
+        .map_or(3, |v| post.formats[v.format.index()].decimals);
     10f64.powi(-(decimals as i32)) + 1e-4
 }
 

@@ -32,8 +32,8 @@ use postc_front_vectric::defaults::default_format;
 use postc_front_vectric::names::{label_of_var_name, var_name_of_label};
 use postc_ir::post::{Dispatch, RotaryWrap, Section, WrappedAxis};
 use postc_ir::{
-    Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post,
-    SignStyle, Span, Stmt, Units, ValueSource, WidthOf,
+    Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post, ScriptId,
+    SignStyle, Span, Stmt, Units, ValueSource, VarId, WidthOf,
 };
 
 /// The guides' order of sections.
@@ -164,7 +164,7 @@ impl Printer<'_> {
 
     /// The label each variable prints under, refusing variables Vectric
     /// cannot declare.
-    fn labels(&mut self) -> HashMap<u16, &'static str> {
+    fn labels(&mut self) -> HashMap<VarId, &'static str> {
         let mut labels = HashMap::new();
         let mut by_quantity: HashMap<&'static str, usize> = HashMap::new();
         let mut assigned = Vec::new();
@@ -176,7 +176,7 @@ impl Printer<'_> {
             // A later VAR with the same label replaces an earlier one, so
             // only the last of each label can be printed.
             by_quantity.insert(q.label(), i);
-            labels.insert(i as u16, q.label());
+            labels.insert(VarId::new(i as u16), q.label());
         }
         if !assigned.is_empty() {
             self.refuse(
@@ -193,13 +193,13 @@ impl Printer<'_> {
         // Variables that lines print must be the ones their labels name.
         for h in &self.post.handlers {
             for stmt in &h.body {
-                if let Stmt::Line(pieces) = stmt {
+                if let Stmt::Line { pieces, .. } = stmt {
                     for piece in pieces {
                         if let Piece::Var(id) = piece
                             && let Some(label) = labels.get(id)
-                            && by_quantity.get(label) != Some(&(*id as usize))
+                            && by_quantity.get(label) != Some(&id.index())
                         {
-                            let name = &self.post.variables[*id as usize].name;
+                            let name = &self.post.variables[id.index()].name;
                             self.refuse(
                                 "CV005",
                                 h.span,
@@ -358,7 +358,7 @@ impl Printer<'_> {
                 );
                 continue;
             }
-            let Some(format) = post.formats.get(v.format as usize) else { continue };
+            let Some(format) = post.formats.get(v.format.index()) else { continue };
             let Some(spec) = self.format_spec(&v.name, format) else { continue };
             let modality = match v.modality {
                 Modality::Always => "A",
@@ -435,14 +435,14 @@ impl Printer<'_> {
 
     fn scripts(&mut self) {
         let post = self.post;
-        let called: Vec<u16> = post
+        let called: Vec<ScriptId> = post
             .handlers
             .iter()
             .flat_map(|h| h.body.iter())
             .filter_map(|s| if let Stmt::Script(id) = s { Some(*id) } else { None })
             .collect();
         for (i, script) in post.scripts.iter().enumerate() {
-            if called.contains(&(i as u16)) {
+            if called.contains(&ScriptId::new(i as u16)) {
                 continue;
             }
             self.line("SCRIPT");
@@ -454,7 +454,7 @@ impl Printer<'_> {
         }
     }
 
-    fn sections(&mut self, labels: &HashMap<u16, &'static str>) {
+    fn sections(&mut self, labels: &HashMap<VarId, &'static str>) {
         let post = self.post;
         let mut order: Vec<&postc_ir::Handler> = Vec::new();
         for h in &post.handlers {
@@ -488,7 +488,7 @@ impl Printer<'_> {
                     break;
                 }
                 match stmt {
-                    Stmt::Line(pieces) => {
+                    Stmt::Line { pieces, .. } => {
                         let mut bytes = vec![b'"'];
                         for piece in pieces {
                             match piece {
@@ -515,7 +515,7 @@ impl Printer<'_> {
                         bytes.extend_from_slice(b"\"\r\n");
                         self.out.extend_from_slice(&bytes);
                     }
-                    Stmt::Script(id) => match post.scripts.get(*id as usize) {
+                    Stmt::Script(id) => match post.scripts.get(id.index()) {
                         Some(script) if !script.source.contains(['\r', '\n']) => {
                             self.line(&format!("<!>{}", script.source));
                         }
@@ -567,8 +567,9 @@ fn statement_kind(s: &Stmt) -> &'static str {
 /// Whether a variable prints its label exactly as the label's default does.
 fn is_default(post: &Post, v: &postc_ir::Variable, q: postc_ir::Quantity) -> bool {
     let d = default_format(q);
-    let format = post.formats.get(v.format as usize);
-    v.prefix == d.prefix.as_bytes() && v.modality == d.modality && format == Some(&d.format.to_number_format(1.0))
+    // Where the format was written does not matter, only how it prints.
+    let format = post.formats.get(v.format.index()).map(|f| NumberFormat { span: None, ..f.clone() });
+    v.prefix == d.prefix.as_bytes() && v.modality == d.modality && format == Some(d.format.to_number_format(1.0))
 }
 
 /// A name a VAR can have: letters, digits and `_`.

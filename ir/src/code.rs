@@ -10,15 +10,21 @@
 use serde::{Deserialize, Serialize};
 
 use crate::diagnostic::Span;
-use crate::post::{FormatId, FunctionId, ScriptId, VarId};
+use crate::id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 use crate::quantity::Quantity;
 
 /// One statement.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Stmt {
     /// Write one block: the pieces, then the line ending. Vectric output
-    /// strings, VcPost `Out`, CIMCO lines.
-    Line(Vec<Piece>),
+    /// strings, VcPost `Out`, CIMCO lines. `span` is the post text that
+    /// wrote it (the section line, the `Out` statement), for diagnostics
+    /// and `--trace`.
+    Line {
+        pieces: Vec<Piece>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
+    },
     /// Write the value of an expression as output text; each line of the
     /// text becomes a block (CIMCO handlers return their blocks as text).
     Write(Expr),
@@ -47,15 +53,15 @@ pub enum Stmt {
     /// Store the output's current length in a local: a mark for
     /// [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`] and
     /// [`Expr::Written`].
-    Mark(u16),
+    Mark(LocalId),
     /// Move the text written since mark `from` back to mark `to`, before
     /// the text written between the two marks (`text = "N10 " + text`).
-    MoveBack { to: u16, from: u16 },
+    MoveBack { to: LocalId, from: LocalId },
     /// Drop the text written since a mark.
-    Truncate(u16),
+    Truncate(LocalId),
     /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
     /// does with a value: each line that is not empty becomes a block.
-    Blocks(u16),
+    Blocks(LocalId),
     /// Make a variable forget what it printed last, so that the next value
     /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
     Forget(VarId),
@@ -76,9 +82,9 @@ pub enum Piece {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Place {
     /// A function parameter or local, by slot.
-    Local(u16),
+    Local(LocalId),
     /// A global.
-    Global(u16),
+    Global(GlobalId),
     /// The value of a variable (VcPost register).
     Var(VarId),
 }
@@ -92,14 +98,14 @@ pub enum Expr {
     /// No value (JavaScript `null` and `undefined`).
     Null,
     /// Whether any text was written since a mark ([`Stmt::Mark`]).
-    Written(u16),
+    Written(LocalId),
     /// A value the runtime knows (position, feed, tool name, ...), in the
     /// post's units.
     Quantity(Quantity),
     /// A function parameter or local.
-    Local(u16),
+    Local(LocalId),
     /// A global.
-    Global(u16),
+    Global(GlobalId),
     /// A variable's current value.
     Var(VarId),
     /// The value a variable had before its last assignment (VcPost

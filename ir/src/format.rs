@@ -21,6 +21,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::Span;
+
 /// How one number prints.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -54,6 +56,10 @@ pub struct NumberFormat {
     /// engine rounds). Written out (RON) only when it is `Binary`.
     #[serde(skip_serializing_if = "Rounding::is_decimal")]
     pub rounding: Rounding,
+    /// Where the post defines the format (a Vectric `VAR` line, a CIMCO
+    /// `createFormat` call); `None` for formats a frontend made up.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 /// Which value a format rounds to its decimals, half away from zero.
@@ -91,6 +97,7 @@ impl Default for NumberFormat {
             multiplier: 1.0,
             prefix: String::new(),
             rounding: Rounding::Decimal,
+            span: None,
         }
     }
 }

@@ -98,6 +98,7 @@ pub mod code;
 pub mod diagnostic;
 pub mod event;
 pub mod format;
+pub mod id;
 pub mod post;
 pub mod quantity;
 pub mod units;
@@ -109,6 +110,7 @@ pub use code::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
 pub use diagnostic::{Diagnostic, FileId, Label, Severity, SourceMap, Span};
 pub use event::{Event, EventSource};
 pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
+pub use id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 pub use post::{
     Body, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo, Script,
     ScriptLanguage, Section, TextEncoding, ValueSource, Variable,

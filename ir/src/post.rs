@@ -8,14 +8,7 @@ use crate::format::NumberFormat;
 use crate::quantity::Quantity;
 use crate::units::Units;
 
-/// Index of a [`NumberFormat`] in [`Post::formats`].
-pub type FormatId = u16;
-/// Index of a [`Variable`] in [`Post::variables`].
-pub type VarId = u16;
-/// Index of a [`Function`] in [`Post::functions`].
-pub type FunctionId = u16;
-/// Index of a [`Script`] in [`Post::scripts`].
-pub type ScriptId = u16;
+pub use crate::id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 
 /// A compiled post processor.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -257,6 +250,11 @@ pub struct Variable {
     pub format: FormatId,
     /// When the value prints.
     pub modality: Modality,
+    /// Where the post defines the variable (a Vectric `VAR` line or the
+    /// first use of a label left to its default, a CIMCO
+    /// `createVariable` call, a VcPost register's first use).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 /// Where a variable's value comes from.
@@ -451,6 +449,85 @@ impl Section {
 }
 
 impl Post {
+    /// Adds a format; `None` when the post has 65,536 already.
+    pub fn push_format(&mut self, format: NumberFormat) -> Option<FormatId> {
+        let id = FormatId::from_usize(self.formats.len())?;
+        self.formats.push(format);
+        Some(id)
+    }
+
+    /// Adds a variable; `None` when the post has 65,536 already.
+    pub fn push_variable(&mut self, variable: Variable) -> Option<VarId> {
+        let id = VarId::from_usize(self.variables.len())?;
+        self.variables.push(variable);
+        Some(id)
+    }
+
+    /// Adds a global; `None` when the post has 65,536 already.
+    pub fn push_global(&mut self, global: Global) -> Option<GlobalId> {
+        let id = GlobalId::from_usize(self.globals.len())?;
+        self.globals.push(global);
+        Some(id)
+    }
+
+    /// Adds a function; `None` when the post has 65,536 already.
+    pub fn push_function(&mut self, function: Function) -> Option<FunctionId> {
+        let id = FunctionId::from_usize(self.functions.len())?;
+        self.functions.push(function);
+        Some(id)
+    }
+
+    /// Adds a script; `None` when the post has 65,536 already.
+    pub fn push_script(&mut self, script: Script) -> Option<ScriptId> {
+        let id = ScriptId::from_usize(self.scripts.len())?;
+        self.scripts.push(script);
+        Some(id)
+    }
+
+    /// A variable of the post (the id must be valid: [`crate::validate`]).
+    #[inline]
+    pub fn variable(&self, id: VarId) -> &Variable {
+        &self.variables[id.index()]
+    }
+
+    /// A format of the post (the id must be valid: [`crate::validate`]).
+    #[inline]
+    pub fn format(&self, id: FormatId) -> &NumberFormat {
+        &self.formats[id.index()]
+    }
+
+    /// A function of the post (the id must be valid: [`crate::validate`]).
+    #[inline]
+    pub fn function(&self, id: FunctionId) -> &Function {
+        &self.functions[id.index()]
+    }
+
+    /// Forgets every span: of handlers, functions, scripts, variables,
+    /// formats, output lines and loops. A post whose spans point into
+    /// files it does not come with (a RON conversion) drops them, so that
+    /// no diagnostic points into the wrong file.
+    pub fn drop_spans(&mut self) {
+        struct Drop;
+        impl crate::visit::VisitMut for Drop {
+            fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
+                match stmt {
+                    Stmt::While { span, .. } | Stmt::Line { span, .. } => *span = None,
+                    _ => {}
+                }
+                crate::visit::walk_stmt_mut(self, stmt);
+            }
+        }
+        self.handlers.iter_mut().for_each(|h| h.span = None);
+        self.functions.iter_mut().for_each(|f| f.span = None);
+        self.variables.iter_mut().for_each(|v| v.span = None);
+        self.formats.iter_mut().for_each(|f| f.span = None);
+        for s in &mut self.scripts {
+            s.span = None;
+            s.span_map.clear();
+        }
+        crate::visit::VisitMut::visit_post_mut(&mut Drop, self);
+    }
+
     /// The handler for a key, if the post has one.
     pub fn handler(&self, key: &HandlerKey) -> Option<&Handler> {
         self.handlers.iter().find(|h| &h.key == key)

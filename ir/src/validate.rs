@@ -148,12 +148,12 @@ impl Ids<'_> {
         }
     }
 
-    fn var(&mut self, id: u16) {
-        self.check("variable", usize::from(id), self.post.variables.len());
+    fn var(&mut self, id: crate::VarId) {
+        self.check("variable", id.index(), self.post.variables.len());
     }
 
-    fn script(&mut self, id: u16) {
-        self.check("script", usize::from(id), self.post.scripts.len());
+    fn script(&mut self, id: crate::ScriptId) {
+        self.check("script", id.index(), self.post.scripts.len());
     }
 }
 
@@ -200,12 +200,16 @@ mod tests {
                 name: "X".into(),
                 source: ValueSource::Quantity(crate::Quantity::X),
                 prefix: b"X".to_vec(),
-                format: 0,
+                format: crate::FormatId::new(0),
                 modality: Modality::OnChange,
+                span: None,
             }],
             handlers: vec![Handler {
                 key: HandlerKey::Section(Section::RapidMove),
-                body: vec![Stmt::Line(vec![Piece::Text(b"G0".to_vec()), Piece::Var(0)])],
+                body: vec![Stmt::Line {
+                    pieces: vec![Piece::Text(b"G0".to_vec()), Piece::Var(crate::VarId::new(0))],
+                    span: None,
+                }],
                 span: None,
             }],
             ..Post::default()
@@ -220,9 +224,11 @@ mod tests {
     #[test]
     fn ids_out_of_range_are_found_where_they_are() {
         let mut p = post();
-        p.handlers[0].body.push(Stmt::Line(vec![Piece::Var(9)]));
-        p.variables[0].format = 3;
-        p.handlers[0].body.push(Stmt::Eval(Expr::Call(2, vec![Expr::Global(1)])));
+        p.handlers[0].body.push(Stmt::Line { pieces: vec![Piece::Var(crate::VarId::new(9))], span: None });
+        p.variables[0].format = crate::FormatId::new(3);
+        p.handlers[0]
+            .body
+            .push(Stmt::Eval(Expr::Call(crate::FunctionId::new(2), vec![Expr::Global(crate::GlobalId::new(1))])));
         let found = validate(&p);
         let at: Vec<Item> = found.iter().map(|i| i.at).collect();
         assert_eq!(at, [Item::Variable(0), Item::Handler(0), Item::Handler(0), Item::Handler(0)], "{found:?}");

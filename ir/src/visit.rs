@@ -45,7 +45,7 @@ pub fn walk_post<V: Visit + ?Sized>(v: &mut V, post: &Post) {
 
 pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
     match stmt {
-        Stmt::Line(pieces) | Stmt::Emit(pieces) => pieces.iter().for_each(|p| v.visit_piece(p)),
+        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => pieces.iter().for_each(|p| v.visit_piece(p)),
         Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => v.visit_expr(e),
         Stmt::If { branches, otherwise } => {
             for (cond, body) in branches {
@@ -135,7 +135,7 @@ pub fn walk_post_mut<V: VisitMut + ?Sized>(v: &mut V, post: &mut Post) {
 
 pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
     match stmt {
-        Stmt::Line(pieces) | Stmt::Emit(pieces) => {
+        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => {
             for p in pieces {
                 if let Piece::Expr(e) = p {
                     v.visit_expr_mut(e);

@@ -60,8 +60,12 @@ pub(crate) fn patch(post: &Post) -> Option<(Post, Tables)> {
         }
         let branches = (0..MAX_ENTRIES)
             .map(|k| {
-                let test = Expr::Binary(BinaryOp::Eq, Box::new(Expr::Local(0)), Box::new(Expr::Number(k as f64)));
-                (test, vec![Stmt::Return(Some(Expr::Global(first + k as u16)))])
+                let test = Expr::Binary(
+                    BinaryOp::Eq,
+                    Box::new(Expr::Local(postc_ir::LocalId::new(0))),
+                    Box::new(Expr::Number(k as f64)),
+                );
+                (test, vec![Stmt::Return(Some(Expr::Global(postc_ir::GlobalId::new(first + k as u16))))])
             })
             .collect();
         let f = &mut post.functions[i];
@@ -84,10 +88,10 @@ impl Tables {
         let Some((_, first, used)) = self.tables.iter_mut().find(|(n, ..)| n == upper) else { return };
         let n = values.len().min(MAX_ENTRIES);
         for (k, v) in values.iter().take(n).enumerate() {
-            eng.set_global(*first + k as u16, Value::Num(*v));
+            eng.set_global(postc_ir::GlobalId::new(*first + k as u16), Value::Num(*v));
         }
         for k in n..*used {
-            eng.set_global(*first + k as u16, Value::Num(0.0));
+            eng.set_global(postc_ir::GlobalId::new(*first + k as u16), Value::Num(0.0));
         }
         *used = n;
     }

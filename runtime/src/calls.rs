@@ -106,7 +106,7 @@ pub fn run_calls<S: CallSource + ?Sized>(
 struct Runner {
     slots: Slots,
     /// Upper-case Sub name to function index.
-    subs: HashMap<String, u16>,
+    subs: HashMap<String, postc_ir::FunctionId>,
     tables: Tables,
     warned: Vec<String>,
 }
@@ -115,7 +115,7 @@ impl Runner {
     fn new(post: &Post, tables: Tables) -> Runner {
         let mut subs = HashMap::new();
         for (i, f) in post.functions.iter().enumerate() {
-            if let Ok(i) = u16::try_from(i) {
+            if let Some(i) = postc_ir::FunctionId::from_usize(i) {
                 subs.entry(f.name.to_ascii_uppercase()).or_insert(i);
             }
         }

@@ -10,7 +10,10 @@
 //! interpreted by the `interp` module on the same engine.
 
 use postc_ir::post::{Substitution, WrappedAxis};
-use postc_ir::{Diagnostic, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource, Variable};
+use postc_ir::{
+    Diagnostic, FormatId, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource, VarId,
+    Variable,
+};
 
 use crate::machine::MachineState;
 use crate::number::{NumberWriter, Rounded};
@@ -149,8 +152,8 @@ impl<'p> Engine<'p> {
     pub fn section_prints(&self, section: Section, q: Quantity) -> bool {
         let Some(i) = self.sections[section as usize] else { return false };
         self.post.handlers[i as usize].body.iter().any(|s| match s {
-            Stmt::Line(pieces) => pieces.iter().any(
-                |p| matches!(p, Piece::Var(v) if self.post.variables[*v as usize].source == ValueSource::Quantity(q)),
+            Stmt::Line { pieces, .. } => pieces.iter().any(
+                |p| matches!(p, Piece::Var(v) if self.post.variables[v.index()].source == ValueSource::Quantity(q)),
             ),
             _ => false,
         })
@@ -167,8 +170,8 @@ impl<'p> Engine<'p> {
 
     /// Forgets what one variable printed last (`xOutput.reset()`): its next
     /// value prints whatever it is.
-    pub fn forget_var(&mut self, var: u16) {
-        if let Some(v) = self.vars.get_mut(var as usize) {
+    pub fn forget_var(&mut self, var: VarId) {
+        if let Some(v) = self.vars.get_mut(var.index()) {
             v.has_last = false;
             v.key = None;
         }
@@ -185,10 +188,10 @@ impl<'p> Engine<'p> {
                             Op::ShortText(small) => small.append_to(&mut self.out.buf),
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
-                                let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
+                                let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
                                 put_quantity(
                                     *modal,
-                                    &self.writers[*format as usize],
+                                    &self.writers[format.index()],
                                     state,
                                     prefix,
                                     n,
@@ -197,10 +200,10 @@ impl<'p> Engine<'p> {
                             }
                             Op::Position { var, axis, format, modal } => {
                                 let n = self.machine.pos[*axis as usize];
-                                let (state, prefix) = (&mut self.vars[*var as usize], &self.prefixes[*var as usize]);
+                                let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
                                 put_quantity(
                                     *modal,
-                                    &self.writers[*format as usize],
+                                    &self.writers[format.index()],
                                     state,
                                     prefix,
                                     n,
@@ -230,7 +233,7 @@ impl<'p> Engine<'p> {
     pub fn run_body(&mut self, body: &[Stmt]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {
             match stmt {
-                Stmt::Line(pieces) => self.write_line(pieces)?,
+                Stmt::Line { pieces, .. } => self.write_line(pieces)?,
                 other => {
                     self.steps = 0;
                     let mut frame = Vec::new();
@@ -307,10 +310,10 @@ impl<'p> Engine<'p> {
 
     /// Formats a variable from its source into the output, honouring its modality.
     #[inline]
-    pub(crate) fn write_var(&mut self, id: u16) {
+    pub(crate) fn write_var(&mut self, id: VarId) {
         let post = self.post;
-        let var = &post.variables[id as usize];
-        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
+        let var = &post.variables[id.index()];
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         match var.source {
             ValueSource::Quantity(q) if q.is_text() => put_text(
                 is_modal(var),
@@ -322,11 +325,11 @@ impl<'p> Engine<'p> {
             ),
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
-                let w = &self.writers[var.format as usize];
+                let w = &self.writers[var.format.index()];
                 put_number(is_modal(var), w, state, prefix, self.block.next, &mut self.out.buf);
             }
             ValueSource::Quantity(q) => {
-                let w = &self.writers[var.format as usize];
+                let w = &self.writers[var.format.index()];
                 put_quantity(is_modal(var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
@@ -337,22 +340,22 @@ impl<'p> Engine<'p> {
     }
 
     /// Gives a variable a value and prints it (CIMCO `xOutput.format(v)` in a block).
-    pub(crate) fn write_assigned(&mut self, id: u16, v: Value) {
+    pub(crate) fn write_assigned(&mut self, id: VarId, v: Value) {
         self.print_value(id, &v);
         self.set_var(id, v);
     }
 
     /// Prints a value through a variable's prefix, format and modality.
-    fn print_value(&mut self, id: u16, v: &Value) {
+    fn print_value(&mut self, id: VarId, v: &Value) {
         let post = self.post;
-        let var = &post.variables[id as usize];
-        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
+        let var = &post.variables[id.index()];
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         match v {
             Value::Text(s) => {
                 put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut self.out.buf)
             }
             other => {
-                let w = &self.writers[var.format as usize];
+                let w = &self.writers[var.format.index()];
                 put_number(is_modal(var), w, state, prefix, other.num(), &mut self.out.buf);
             }
         }
@@ -535,9 +538,9 @@ pub(crate) enum Op<'p> {
     /// Literal bytes that fit a small window: appended as one fixed-size copy.
     ShortText(SmallBytes),
     /// A numeric quantity through a variable: no lookups left to do.
-    Number { var: u16, quantity: Quantity, format: u16, modal: bool },
+    Number { var: VarId, quantity: Quantity, format: FormatId, modal: bool },
     /// X, Y or Z of the current position (no rotary wrap): read directly.
-    Position { var: u16, axis: u8, format: u16, modal: bool },
+    Position { var: VarId, axis: u8, format: FormatId, modal: bool },
     /// Anything else (text quantities, block numbers, assigned variables, expressions).
     Piece(&'p Piece),
 }
@@ -554,7 +557,7 @@ fn is_move_section(key: &HandlerKey) -> bool {
 pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
-            Stmt::Line(pieces) => Prepared::Line(
+            Stmt::Line { pieces, .. } => Prepared::Line(
                 pieces
                     .iter()
                     .map(|piece| match piece {
@@ -563,7 +566,7 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<
                             None => Op::Text(bytes),
                         },
                         Piece::Var(id) => {
-                            let var = &post.variables[*id as usize];
+                            let var = &post.variables[id.index()];
                             match var.source {
                                 ValueSource::Quantity(q @ (Quantity::X | Quantity::Y | Quantity::Z))
                                     if moves && post.options.rotary_wrap.is_none() =>

@@ -15,7 +15,7 @@
 //! ([`Engine::return_shared`]), so an output variable formatted natively
 //! and from a script keeps one modal memory.
 
-use postc_ir::{Diagnostic, Event, Variable};
+use postc_ir::{Diagnostic, Event, ScriptId, Variable};
 
 use crate::engine::Engine;
 use crate::number::NumberWriter;
@@ -90,10 +90,10 @@ impl Engine<'_> {
     }
 
     /// Calls a script function through the run's host.
-    pub(crate) fn call_script(&mut self, id: u16, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+    pub(crate) fn call_script(&mut self, id: ScriptId, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
         let Some(mut host) = self.script_host.take() else {
             let why = if self.post.scripts.is_empty() {
-                format!("this post has no script to run it (script {id})")
+                format!("this post has no script to run it (script {})", id.raw())
             } else {
                 "this run has no script host for the post's scripts".to_string()
             };

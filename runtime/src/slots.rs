@@ -17,9 +17,9 @@ use crate::value::Value;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Slot {
     /// A register (IR variable with an assigned value).
-    Var(u16),
+    Var(postc_ir::VarId),
     /// A global.
-    Global(u16),
+    Global(postc_ir::GlobalId),
 }
 
 /// The settable names of a post, keyed in ASCII upper case.
@@ -33,13 +33,13 @@ impl Slots {
     pub(crate) fn new(post: &Post) -> Slots {
         let mut map = HashMap::new();
         for (i, g) in post.globals.iter().enumerate() {
-            if let Ok(i) = u16::try_from(i) {
+            if let Some(i) = postc_ir::GlobalId::from_usize(i) {
                 map.insert(g.name.to_ascii_uppercase(), Slot::Global(i));
             }
         }
         for (i, v) in post.variables.iter().enumerate() {
             if v.source == ValueSource::Assigned
-                && let Ok(i) = u16::try_from(i)
+                && let Some(i) = postc_ir::VarId::from_usize(i)
             {
                 map.insert(v.name.to_ascii_uppercase(), Slot::Var(i));
             }

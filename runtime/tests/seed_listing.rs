@@ -27,8 +27,9 @@ impl Builder {
             name: q.label().into(),
             source: ValueSource::Quantity(q),
             prefix: prefix.as_bytes().to_vec(),
-            format: self.post.formats.len() as u16 - 1,
+            format: FormatId::new(self.post.formats.len() as u16 - 1),
             modality: modal,
+            span: None,
         });
         self.post.variables.len() as u16 - 1
     }
@@ -36,15 +37,15 @@ impl Builder {
     fn section(&mut self, s: Section, lines: &[&[P]]) {
         let body = lines
             .iter()
-            .map(|l| {
-                Stmt::Line(
-                    l.iter()
-                        .map(|p| match p {
-                            P::T(t) => Piece::Text(t.as_bytes().to_vec()),
-                            P::V(v) => Piece::Var(*v),
-                        })
-                        .collect(),
-                )
+            .map(|l| Stmt::Line {
+                pieces: l
+                    .iter()
+                    .map(|p| match p {
+                        P::T(t) => Piece::Text(t.as_bytes().to_vec()),
+                        P::V(v) => Piece::Var(VarId::new(*v)),
+                    })
+                    .collect(),
+                span: None,
             })
             .collect();
         self.post.handlers.push(Handler { key: HandlerKey::Section(s), body, span: None });

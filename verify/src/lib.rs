@@ -131,7 +131,7 @@ impl Settings {
             post.variables
                 .iter()
                 .find(|v| v.source == ValueSource::Quantity(q))
-                .and_then(|v| post.formats.get(v.format as usize))
+                .and_then(|v| post.formats.get(v.format.index()))
         };
         let decimals =
             [Quantity::X, Quantity::Y, Quantity::Z].into_iter().filter_map(format_of).map(|f| f.decimals).min();

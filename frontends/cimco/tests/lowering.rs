@@ -48,11 +48,11 @@ fn formats_variables_and_settings() {
     let x = post.variables.iter().find(|v| v.name == "xOut").expect("xOut");
     assert_eq!(x.prefix, b"X");
     assert_eq!(x.modality, Modality::OnChange);
-    let f = &post.formats[x.format as usize];
+    let f = &post.formats[x.format.index()];
     assert_eq!((f.decimals, f.point, f.trim_zeros, f.sign), (3, PointStyle::Always, false, SignStyle::Always));
     let fo = post.variables.iter().find(|v| v.name == "fOut").expect("fOut");
     assert_eq!(fo.modality, Modality::Always);
-    assert!(post.formats[fo.format as usize].trim_zeros);
+    assert!(post.formats[fo.format.index()].trim_zeros);
 }
 
 #[test]
@@ -105,7 +105,7 @@ fn the_globals_object_and_a_lathe() {
     assert!(diags.is_empty(), "{diags:?}");
     assert!(post.options.lathe);
     assert_eq!(post.info.name, "Lathe");
-    let f = &post.formats[post.variables[0].format as usize];
+    let f = &post.formats[post.variables[0].format.index()];
     assert_eq!((f.multiplier, f.decimal_mark), (2.0, ','));
     assert!(native(&post, "onLinear"));
 }

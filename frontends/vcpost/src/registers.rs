@@ -64,6 +64,8 @@ pub struct RegisterSpec {
     /// `Width`, and where it was set.
     pub width: Option<(u8, Span)>,
     pub modality: Modality,
+    /// The register's first mention in the post.
+    pub span: Option<Span>,
 }
 
 impl RegisterSpec {
@@ -80,6 +82,7 @@ impl RegisterSpec {
                 ..NumberFormat::default()
             },
             integer_digits: if sequence { 6 } else { 4 },
+            span: None,
             leading_zeros: None,
             width: None,
             modality: Modality::Always,

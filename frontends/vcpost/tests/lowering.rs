@@ -7,12 +7,19 @@ use postc_ir::{
     BinaryOp, Body, Builtin, Dialect, Dispatch, Expr, HandlerKey, Modality, Piece, Place, Post, Quantity, SourceMap,
     Stmt, UnaryOp, ValueSource,
 };
+use postc_ir::{FunctionId, GlobalId, LocalId, VarId};
 
 fn post(text: &str) -> Post {
     let mut sources = SourceMap::new();
     let (post, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     assert!(diagnostics.is_empty(), "{}", sources.render(&diagnostics, false));
+    let mut post = post;
+    post.drop_spans();
     post
+}
+
+fn line(pieces: Vec<Piece>) -> Stmt {
+    Stmt::Line { pieces, span: None }
 }
 
 fn body<'a>(post: &'a Post, name: &str) -> &'a [Stmt] {
@@ -47,9 +54,9 @@ fn out_templates_become_lines_of_pieces() {
     assert_eq!(
         body(&p, "GOTO"),
         &[
-            Stmt::Line(vec![Piece::Var(n), text(" G0"), Piece::Var(x), Piece::Var(y)]),
-            Stmt::Line(vec![Piece::Var(n), text("("), Piece::Expr(Expr::Global(opt)), text(")")]),
-            Stmt::Line(vec![]),
+            line(vec![Piece::Var(VarId::new(n)), text(" G0"), Piece::Var(VarId::new(x)), Piece::Var(VarId::new(y))]),
+            line(vec![Piece::Var(VarId::new(n)), text("("), Piece::Expr(Expr::Global(GlobalId::new(opt))), text(")")]),
+            line(vec![]),
         ]
     );
     assert_eq!(p.variables[n as usize].source, ValueSource::Quantity(Quantity::BlockNumber));
@@ -70,16 +77,16 @@ fn register_properties_and_defaults() {
     let x = &p.variables[var(&p, "X") as usize];
     assert_eq!(x.prefix, b" X");
     assert_eq!(x.modality, Modality::OnChange);
-    let fx = &p.formats[x.format as usize];
+    let fx = &p.formats[x.format.index()];
     assert_eq!(
         (fx.decimals, fx.sign, fx.point, fx.trim_zeros),
         (3, postc_ir::SignStyle::Always, postc_ir::PointStyle::Always, true)
     );
     let y = &p.variables[var(&p, "Y") as usize];
-    let fy = &p.formats[y.format as usize];
+    let fy = &p.formats[y.format.index()];
     assert_eq!((y.prefix.as_slice(), y.modality, fy.decimals, fy.trim_zeros), (&b"Y"[..], Modality::Always, 4, true));
     let t = &p.variables[var(&p, "T") as usize];
-    let ft = &p.formats[t.format as usize];
+    let ft = &p.formats[t.format.index()];
     assert_eq!((ft.width, ft.width_of, ft.padding), (2, postc_ir::WidthOf::IntegerDigits, postc_ir::Padding::Zero));
     assert_eq!(p.init.len(), 1, "properties are not runtime statements");
 }
@@ -90,18 +97,18 @@ fn for_loops_keep_bounds_and_pick_the_test_by_the_step() {
         "Sub A\n  Dim i\n  Count = 3\n  For i = 10 To 1 Step -2\n    Out \"x\"\n  Next\n  For i = 1 To Count Step S\n  Next i\nEnd Sub\n",
     );
     let b = body(&p, "A");
-    assert_eq!(b[2], Stmt::Assign(Place::Local(0), Expr::Number(10.0)));
+    assert_eq!(b[2], Stmt::Assign(Place::Local(LocalId::new(0)), Expr::Number(10.0)));
     let Stmt::While { cond, body: inner, span } = &b[3] else { panic!("{:?}", b[3]) };
     assert!(span.is_some());
-    assert_eq!(*cond, bin(BinaryOp::Ge, Expr::Local(0), Expr::Number(1.0)));
+    assert_eq!(*cond, bin(BinaryOp::Ge, Expr::Local(LocalId::new(0)), Expr::Number(1.0)));
     assert_eq!(
         inner.last(),
         Some(&Stmt::Assign(
-            Place::Local(0),
-            bin(BinaryOp::Add, Expr::Local(0), Expr::Unary(UnaryOp::Neg, Box::new(Expr::Number(2.0))))
+            Place::Local(LocalId::new(0)),
+            bin(BinaryOp::Add, Expr::Local(LocalId::new(0)), Expr::Unary(UnaryOp::Neg, Box::new(Expr::Number(2.0))))
         ))
     );
-    assert_eq!(b[5], Stmt::Assign(Place::Local(1), Expr::Global(global(&p, "Count"))));
+    assert_eq!(b[5], Stmt::Assign(Place::Local(LocalId::new(1)), Expr::Global(GlobalId::new(global(&p, "Count")))));
     let Stmt::While { cond, .. } = &b[7] else { panic!("{:?}", b[7]) };
     assert!(matches!(cond, Expr::Choose(..)), "{cond:?}");
 }
@@ -112,7 +119,11 @@ fn do_loops_select_case_xor_and_exits() {
         "Sub A\n  Do\n    If X > 3 Then Exit Do\n  Loop Until X Xor Y\n  Select Case T\n    Case 1, 2 To 3, Is > 4\n      Out \"a\"\n    Case Else\n      Out \"b\"\n  End Select\nEnd Sub\n",
     );
     let b = body(&p, "A");
-    let (x, y, t) = (Expr::Global(global(&p, "X")), Expr::Global(global(&p, "Y")), Expr::Global(global(&p, "T")));
+    let (x, y, t) = (
+        Expr::Global(GlobalId::new(global(&p, "X"))),
+        Expr::Global(GlobalId::new(global(&p, "Y"))),
+        Expr::Global(GlobalId::new(global(&p, "T"))),
+    );
     let Stmt::While { cond, body: inner, .. } = &b[0] else { panic!() };
     assert_eq!(*cond, Expr::Bool(true));
     assert_eq!(
@@ -133,7 +144,7 @@ fn do_loops_select_case_xor_and_exits() {
     );
     let is = bin(BinaryOp::Gt, t, Expr::Number(4.0));
     assert_eq!(branches[0].0, bin(BinaryOp::Or, bin(BinaryOp::Or, one, range), is));
-    assert_eq!(otherwise, &vec![Stmt::Line(vec![text("b")])]);
+    assert_eq!(otherwise, &vec![line(vec![text("b")])]);
 }
 
 #[test]
@@ -144,20 +155,32 @@ fn functions_return_their_own_name() {
     let f = p.functions.iter().find(|f| f.name == "Half").unwrap();
     assert_eq!((f.params.clone(), f.slots), (vec!["V".to_string()], 2));
     let b = body(&p, "Half");
-    assert_eq!(b[0], Stmt::Assign(Place::Local(1), Expr::Number(0.0)));
+    assert_eq!(b[0], Stmt::Assign(Place::Local(LocalId::new(1)), Expr::Number(0.0)));
     assert_eq!(
         b[1],
         Stmt::If {
             branches: vec![(
-                bin(BinaryOp::Lt, Expr::Local(0), Expr::Number(0.0)),
-                vec![Stmt::Return(Some(Expr::Local(1)))]
+                bin(BinaryOp::Lt, Expr::Local(LocalId::new(0)), Expr::Number(0.0)),
+                vec![Stmt::Return(Some(Expr::Local(LocalId::new(1))))]
             )],
             otherwise: vec![]
         }
     );
-    assert_eq!(b[2], Stmt::Assign(Place::Local(1), bin(BinaryOp::Div, Expr::Local(0), Expr::Number(2.0))));
-    assert_eq!(b[3], Stmt::Return(Some(Expr::Local(1))));
-    assert_eq!(body(&p, "A")[0], Stmt::Assign(Place::Global(global(&p, "Z")), Expr::Call(0, vec![Expr::Number(4.0)])));
+    assert_eq!(
+        b[2],
+        Stmt::Assign(
+            Place::Local(LocalId::new(1)),
+            bin(BinaryOp::Div, Expr::Local(LocalId::new(0)), Expr::Number(2.0))
+        )
+    );
+    assert_eq!(b[3], Stmt::Return(Some(Expr::Local(LocalId::new(1)))));
+    assert_eq!(
+        body(&p, "A")[0],
+        Stmt::Assign(
+            Place::Global(GlobalId::new(global(&p, "Z"))),
+            Expr::Call(FunctionId::new(0), vec![Expr::Number(4.0)])
+        )
+    );
 }
 
 #[test]
@@ -175,7 +198,7 @@ fn handlers_for_apt_words_and_composites_routines_only() {
             &HandlerKey::Word("END".into()),
         ]
     );
-    assert_eq!(p.handlers[0].body, vec![Stmt::Eval(Expr::Call(0, vec![]))]);
+    assert_eq!(p.handlers[0].body, vec![Stmt::Eval(Expr::Call(FunctionId::new(0), vec![]))]);
     assert_eq!(
         p.info.subs,
         vec![postc_ir::SubSignature {
@@ -193,7 +216,7 @@ fn builtins_map_to_the_ir() {
         "A = Format(X, \"0.00\") & Str(1) & Format(2)\nB = IIf(X > 1, 1, 2)\nC = Sqr(Abs(-4)) + Int(1.5) + Fix(-1.5) + Round(2.5, 1)\nD = Mid(\"abc\", 2) & UCase(Left$(\"ab\", 1))\n",
     );
     let Stmt::Assign(_, a) = &p.init[0] else { panic!() };
-    let x = Expr::Global(global(&p, "X"));
+    let x = Expr::Global(GlobalId::new(global(&p, "X")));
     let expected = bin(
         BinaryOp::Concat,
         bin(
@@ -217,9 +240,9 @@ fn language_is_case_insensitive_and_lines_continue() {
     );
     let x = var(&p, "x");
     let b = body(&p, "goto");
-    assert_eq!(b[0], Stmt::Assign(Place::Var(x), bin(BinaryOp::Add, Expr::Number(1.0), Expr::Number(2.0))));
+    assert_eq!(b[0], Stmt::Assign(Place::Var(VarId::new(x)), bin(BinaryOp::Add, Expr::Number(1.0), Expr::Number(2.0))));
     let Stmt::If { otherwise, .. } = &b[1] else { panic!() };
-    assert_eq!(otherwise[0], Stmt::Line(vec![Piece::Var(var(&p, "N"))]));
+    assert_eq!(otherwise[0], line(vec![Piece::Var(VarId::new(var(&p, "N")))]));
 }
 
 #[test]
@@ -228,9 +251,15 @@ fn previous_and_host_functions() {
     let z = var(&p, "Z");
     let b = body(&p, "GoTo");
     let Stmt::If { branches, .. } = &b[0] else { panic!() };
-    assert_eq!(branches[0].0, bin(BinaryOp::Lt, Expr::Var(z), Expr::Previous(z)));
+    assert_eq!(branches[0].0, bin(BinaryOp::Lt, Expr::Var(VarId::new(z)), Expr::Previous(VarId::new(z))));
     let host = p.functions.iter().position(|f| f.name == "getNthLength1").unwrap() as u16;
-    assert_eq!(b[1], Stmt::Assign(Place::Global(global(&p, "L")), Expr::Call(host, vec![Expr::Number(0.0)])));
+    assert_eq!(
+        b[1],
+        Stmt::Assign(
+            Place::Global(GlobalId::new(global(&p, "L"))),
+            Expr::Call(FunctionId::new(host), vec![Expr::Number(0.0)])
+        )
+    );
 }
 
 #[test]

@@ -228,5 +228,6 @@ fn windows_1252_text_is_read_and_written_back() {
     let (post, diagnostics) = compile(Path::new("legacy.VcPost"), bytes, &mut sources);
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
     let postc_ir::Body::Native(body) = &post.functions[0].body else { panic!() };
-    assert_eq!(body[0], postc_ir::Stmt::Line(vec![postc_ir::Piece::Text(b"(L\xE4nge 90\xB0)".to_vec())]));
+    let postc_ir::Stmt::Line { pieces, .. } = &body[0] else { panic!() };
+    assert_eq!(pieces, &vec![postc_ir::Piece::Text(b"(L\xE4nge 90\xB0)".to_vec())]);
 }

@@ -66,6 +66,7 @@ impl FormatSpec {
             multiplier,
             prefix: String::new(),
             rounding: postc_ir::Rounding::Decimal,
+            span: None,
         }
     }
 }

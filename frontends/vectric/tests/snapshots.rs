@@ -24,7 +24,7 @@ fn listing(post: &Post) -> String {
         let _ = writeln!(out, "begin {name}");
         for stmt in &handler.body {
             match stmt {
-                Stmt::Line(pieces) => {
+                Stmt::Line { pieces, .. } => {
                     out.push_str("  \"");
                     for piece in pieces {
                         match piece {

@@ -7,7 +7,9 @@
 
 use std::rc::Rc;
 
-use postc_ir::{BinaryOp, Body, Diagnostic, Expr, Place, Quantity, Stmt, UnaryOp, ValueSource};
+use postc_ir::{
+    BinaryOp, Body, Diagnostic, Expr, FunctionId, GlobalId, LocalId, Place, Quantity, Stmt, UnaryOp, ValueSource, VarId,
+};
 
 mod ops;
 
@@ -66,7 +68,7 @@ impl Engine<'_> {
                 return Err(Box::new(self.budget_error(None)));
             }
             match stmt {
-                Stmt::Line(pieces) => self.write_line_in(pieces, frame)?,
+                Stmt::Line { pieces, .. } => self.write_line_in(pieces, frame)?,
                 Stmt::Write(e) => {
                     let v = self.eval(e, frame)?;
                     self.write_blocks(&v.to_text());
@@ -208,7 +210,7 @@ impl Engine<'_> {
     fn assign(&mut self, place: Place, v: Value, frame: &mut Vec<Value>) {
         match place {
             Place::Local(i) => {
-                let i = i as usize;
+                let i = i.index();
                 if frame.len() <= i {
                     frame.resize(i + 1, Value::Null);
                 }
@@ -220,8 +222,8 @@ impl Engine<'_> {
     }
 
     /// Sets a global's value.
-    pub fn set_global(&mut self, i: u16, v: Value) {
-        let i = i as usize;
+    pub fn set_global(&mut self, i: GlobalId, v: Value) {
+        let i = i.index();
         if self.globals.len() <= i {
             self.globals.resize(i + 1, Value::Null);
         }
@@ -229,16 +231,16 @@ impl Engine<'_> {
     }
 
     /// Sets a variable's value, keeping the old one as its previous value.
-    pub fn set_var(&mut self, id: u16, v: Value) {
-        let state = &mut self.vars[id as usize];
+    pub fn set_var(&mut self, id: VarId, v: Value) {
+        let state = &mut self.vars[id.index()];
         state.previous = std::mem::replace(&mut state.value, v);
     }
 
     /// A variable's current value.
-    pub fn var_value(&self, id: u16) -> Value {
-        match self.post.variables[id as usize].source {
+    pub fn var_value(&self, id: VarId) -> Value {
+        match self.post.variables[id.index()].source {
             ValueSource::Quantity(q) => self.quantity(q),
-            ValueSource::Assigned => self.vars[id as usize].value.clone(),
+            ValueSource::Assigned => self.vars[id.index()].value.clone(),
         }
     }
 
@@ -263,10 +265,10 @@ impl Engine<'_> {
             Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::Quantity(q) => self.quantity(*q),
-            Expr::Local(i) => frame.get(*i as usize).cloned().unwrap_or_default(),
-            Expr::Global(i) => self.globals.get(*i as usize).cloned().unwrap_or_default(),
+            Expr::Local(i) => frame.get(i.index()).cloned().unwrap_or_default(),
+            Expr::Global(i) => self.globals.get(i.index()).cloned().unwrap_or_default(),
             Expr::Var(id) => self.var_value(*id),
-            Expr::Previous(id) => self.vars[*id as usize].previous.clone(),
+            Expr::Previous(id) => self.vars[id.index()].previous.clone(),
             Expr::FormatVar { var, value } => {
                 let v = self.eval(value, frame)?;
                 self.format_through_var(*var, v)
@@ -274,7 +276,7 @@ impl Engine<'_> {
             Expr::Format { format, value } => {
                 let n = self.eval(value, frame)?.num();
                 let mut buf = Vec::new();
-                self.writers[*format as usize].write(n, &mut buf);
+                self.writers[format.index()].write(n, &mut buf);
                 Value::text(&String::from_utf8_lossy(&buf))
             }
             Expr::Unary(op, a) => {
@@ -349,27 +351,25 @@ impl Engine<'_> {
     /// Formats a value through a variable (prefix, format, modality) and
     /// returns the text; an on-change variable returns "" when the text is
     /// the one it returned last.
-    pub fn format_through_var(&mut self, id: u16, v: Value) -> Value {
+    pub fn format_through_var(&mut self, id: VarId, v: Value) -> Value {
         let post = self.post;
-        let var = &post.variables[id as usize];
+        let var = &post.variables[id.index()];
         let mut buf = Vec::with_capacity(16);
-        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         match &v {
             Value::Text(s) => {
                 put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf)
             }
-            other => {
-                put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, other.num(), &mut buf)
-            }
+            other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
         Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
     }
 
     /// Calls a post function with arguments.
-    pub fn call(&mut self, f: u16, args: Vec<Value>) -> Result<Value> {
+    pub fn call(&mut self, f: FunctionId, args: Vec<Value>) -> Result<Value> {
         let post = self.post;
-        let Some(function) = post.functions.get(f as usize) else {
+        let Some(function) = post.functions.get(f.index()) else {
             return Ok(Value::Null);
         };
         self.depth += 1;
@@ -404,8 +404,8 @@ impl Engine<'_> {
     }
 
     /// A mark stored by [`Stmt::Mark`], within the output buffer.
-    fn mark(&self, k: u16, frame: &[Value]) -> usize {
-        let at = frame.get(k as usize).map_or(0.0, Value::num);
+    fn mark(&self, k: LocalId, frame: &[Value]) -> usize {
+        let at = frame.get(k.index()).map_or(0.0, Value::num);
         (at.max(0.0) as usize).min(self.out.buf.len())
     }
 
@@ -448,11 +448,11 @@ impl Engine<'_> {
     }
 
     /// Prints a number through an assigned variable and keeps it as its value.
-    fn write_number_var(&mut self, id: u16, n: f64) {
+    fn write_number_var(&mut self, id: VarId, n: f64) {
         let post = self.post;
-        let var = &post.variables[id as usize];
-        let (state, prefix) = (&mut self.vars[id as usize], &self.prefixes[id as usize]);
-        put_number(is_modal(var), &self.writers[var.format as usize], state, prefix, n, &mut self.out.buf);
+        let var = &post.variables[id.index()];
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
+        put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut self.out.buf);
         state.previous = std::mem::replace(&mut state.value, Value::Num(n));
     }
 }

@@ -91,7 +91,7 @@ impl SectionDispatch {
             let mut q = p;
             for (axis, format) in self.xy_formats.iter().enumerate() {
                 if let Some(f) = format {
-                    q[axis] = eng.writers[*f as usize].printed_value(p[axis]);
+                    q[axis] = eng.writers[f.index()].printed_value(p[axis]);
                 }
             }
             q

@@ -73,7 +73,7 @@ pub struct SectionDispatch {
     /// Tape splitting: the current part ends before the next block.
     split_pending: bool,
     /// Formats of the X and Y variables, to know the printed points.
-    xy_formats: [Option<u16>; 2],
+    xy_formats: [Option<postc_ir::FormatId>; 2],
     exact_arcs: bool,
 }
 

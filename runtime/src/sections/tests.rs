@@ -6,6 +6,7 @@ use postc_ir::{FileId, Handler, HandlerKey, NumberFormat, Piece, Post, Stmt, Val
 
 use super::*;
 use crate::{Finished, Output, RunOptions};
+use postc_ir::FormatId;
 
 /// A post that prints each section's name and, for moves, Z; split
 /// into parts of at most `max` blocks, at a retract once a part has
@@ -17,20 +18,22 @@ fn tape_post(max_lines: u64, tolerance: u64) -> Post {
         name: "Z".into(),
         source: ValueSource::Quantity(Quantity::Z),
         prefix: b"Z".to_vec(),
-        format: 0,
+        format: FormatId::new(0),
         modality: postc_ir::Modality::Always,
+        span: None,
     });
     post.variables.push(Variable {
         name: "T".into(),
         source: ValueSource::Quantity(Quantity::Tool),
         prefix: b"T".to_vec(),
-        format: 0,
+        format: FormatId::new(0),
         modality: postc_ir::Modality::Always,
+        span: None,
     });
     let line = |text: &str, var: Option<u16>| {
         let mut pieces = vec![Piece::Text(text.as_bytes().to_vec())];
-        pieces.extend(var.map(Piece::Var));
-        Stmt::Line(pieces)
+        pieces.extend(var.map(|v| Piece::Var(postc_ir::VarId::new(v))));
+        Stmt::Line { pieces, span: None }
     };
     for (section, text, var) in [
         (Section::Header, "HEADER ", Some(1)),

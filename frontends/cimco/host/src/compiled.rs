@@ -88,7 +88,7 @@ impl Compiled {
             writers: eng.writers().to_vec(),
             prefixes: eng.prefixes().to_vec(),
             modal: post.variables.iter().map(runtime::is_modal).collect(),
-            var_formats: post.variables.iter().map(|v| v.format).collect(),
+            var_formats: post.variables.iter().map(|v| v.format.raw()).collect(),
             functions: Default::default(),
             ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),

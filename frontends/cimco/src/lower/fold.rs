@@ -167,7 +167,7 @@ fn leaves(body: &[Stmt]) -> bool {
 pub fn intern_stmts(body: &mut [Stmt], layout: &mut Layout) {
     for s in body {
         match s {
-            Stmt::Line(pieces) | Stmt::Emit(pieces) => {
+            Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => {
                 for p in pieces {
                     if let Piece::Expr(e) = p {
                         intern(e, layout);

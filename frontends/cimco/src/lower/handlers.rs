@@ -22,7 +22,10 @@
 //! `onLinear` calls along the arc. Each handler body is one statement, so
 //! that its locals live in one frame.
 
-use postc_ir::{BinaryOp, Builtin, Expr, Handler, HandlerKey, Place, Quantity, Section, Stmt, UnaryOp};
+use postc_ir::{
+    BinaryOp, Builtin, Expr, FunctionId, GlobalId, Handler, HandlerKey, LocalId, Place, Quantity, Section, Stmt,
+    UnaryOp,
+};
 
 use super::builtins;
 use super::layout::{self, Layout};
@@ -40,11 +43,11 @@ pub struct Entry<'l> {
 /// How the post sets `useRadius`.
 pub enum RadiusSetting {
     Known(bool),
-    Global(u16),
+    Global(GlobalId),
 }
 
 impl Entry<'_> {
-    fn has(&self, name: &str) -> Option<u16> {
+    fn has(&self, name: &str) -> Option<FunctionId> {
         (self.arity)(name)?;
         self.layout.function(name)
     }
@@ -172,7 +175,7 @@ impl Entry<'_> {
             let num = |n: f64| Expr::Number(n);
             let b = |op, a: Expr, c: Expr| Expr::Binary(op, Box::new(a), Box::new(c));
             let call = |bu: Builtin, args: Vec<Expr>| Expr::Builtin(bu, args);
-            let (n, a0, i, t) = (0u16, 1u16, 2u16, 3u16);
+            let (n, a0, i, t) = (LocalId::new(0), LocalId::new(1), LocalId::new(2), LocalId::new(3));
             let parts = b(
                 BinaryOp::Add,
                 call(

@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use postc_ir::{Expr, Global};
+use postc_ir::{Expr, FunctionId, Global, GlobalId};
 
 use super::consts::Const;
 use super::model::Model;
@@ -23,11 +23,11 @@ pub const FEED_PER_REV_DECIMALS: u8 = 4;
 /// IR indices of globals and functions.
 pub struct Layout {
     pub globals: Vec<Global>,
-    pub global_index: HashMap<String, u16>,
+    pub global_index: HashMap<String, GlobalId>,
     /// IR function of each top-level JS function.
-    pub top_fn: Vec<u16>,
+    pub top_fn: Vec<FunctionId>,
     /// IR functions by name (the post's and postc's).
-    pub fn_index: HashMap<String, u16>,
+    pub fn_index: HashMap<String, FunctionId>,
     pub fn_names: Vec<String>,
 }
 
@@ -55,11 +55,11 @@ impl Layout {
         l
     }
 
-    pub fn add_global(&mut self, name: &str, initial: Expr) -> u16 {
+    pub fn add_global(&mut self, name: &str, initial: Expr) -> GlobalId {
         if let Some(&i) = self.global_index.get(name) {
             return i;
         }
-        let i = self.globals.len() as u16;
+        let i = GlobalId::new(self.globals.len() as u16);
         self.globals.push(Global { name: name.to_string(), initial });
         self.global_index.insert(name.to_string(), i);
         i
@@ -67,20 +67,20 @@ impl Layout {
 
     /// Adds a function; a second function of the same name (a JavaScript
     /// redeclaration) gets its own index, and calls by name reach the last.
-    pub fn add_fn(&mut self, name: &str) -> u16 {
-        let i = self.fn_names.len() as u16;
+    pub fn add_fn(&mut self, name: &str) -> FunctionId {
+        let i = FunctionId::new(self.fn_names.len() as u16);
         self.fn_names.push(name.to_string());
         self.fn_index.insert(name.to_string(), i);
         i
     }
 
-    pub fn function(&self, name: &str) -> Option<u16> {
+    pub fn function(&self, name: &str) -> Option<FunctionId> {
         self.fn_index.get(name).copied()
     }
 
     /// A global holding a text constant, so that native code reads it
     /// without allocating.
-    pub fn text_constant(&mut self, text: &str) -> u16 {
+    pub fn text_constant(&mut self, text: &str) -> GlobalId {
         let name = format!("__postc_text:{text}");
         self.add_global(&name, Expr::Text(text.to_string()))
     }

@@ -32,8 +32,8 @@ use crate::host_names as names;
 use std::path::Path;
 
 use postc_ir::{
-    Body, Diagnostic, Dialect, Expr, Function, Modality, NumberFormat, Post, Quantity, Script, ScriptLanguage,
-    SourceMap, Span, Stmt, ValueSource, Variable,
+    Body, Diagnostic, Dialect, Expr, FormatId, Function, LocalId, Modality, NumberFormat, Post, Quantity, Script,
+    ScriptId, ScriptLanguage, SourceMap, Span, Stmt, ValueSource, VarId, Variable,
 };
 
 use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
@@ -92,10 +92,11 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         name: layout::FEED_VAR.into(),
         source: ValueSource::Assigned,
         prefix: b"F".to_vec(),
-        format: (post.formats.len() - 1) as u16,
+        format: FormatId::new((post.formats.len() - 1) as u16),
         modality: Modality::Always,
+        span: None,
     });
-    let feed_var = (post.variables.len() - 1) as u16;
+    let feed_var = VarId::new((post.variables.len() - 1) as u16);
     // Feeds per revolution (mm/rev, in/rev) keep four decimals: 0.15
     // mm/rev prints F0.15, 0.0025 in/rev F0.0025.
     post.formats.push(NumberFormat {
@@ -111,10 +112,11 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         name: layout::FEED_REV_VAR.into(),
         source: ValueSource::Assigned,
         prefix: b"F".to_vec(),
-        format: (post.formats.len() - 1) as u16,
+        format: FormatId::new((post.formats.len() - 1) as u16),
         modality: Modality::Always,
+        span: None,
     });
-    let feed_rev_var = (post.variables.len() - 1) as u16;
+    let feed_rev_var = VarId::new((post.variables.len() - 1) as u16);
 
     // postc's functions after the post's own.
     let own_feedrate = info(layout::FEEDRATE).is_some();
@@ -138,7 +140,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             name: f.name.clone().unwrap_or_default(),
             params: f.params.clone(),
             slots,
-            body: body.unwrap_or(Body::Script(0)),
+            body: body.unwrap_or(Body::Script(ScriptId::new(0))),
             span: Some(func.span),
         });
     }
@@ -152,7 +154,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
                     branches: vec![(
                         Expr::Binary(
                             postc_ir::BinaryOp::Eq,
-                            Box::new(Expr::Local(0)),
+                            Box::new(Expr::Local(LocalId::new(0))),
                             Box::new(Expr::Number(builtins::MOVEMENT_RAPID)),
                         ),
                         vec![Stmt::Return(Some(Expr::Text(String::new())))],
@@ -185,12 +187,12 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         slots: init_native.as_ref().map_or(0, |(_, s)| *s),
         body: match init_native {
             Some((b, _)) => Body::Native(b),
-            None => Body::Script(0),
+            None => Body::Script(ScriptId::new(0)),
         },
         span: Some(whole),
     });
     for (g, entry) in glue.iter().zip(["onCompensation", "onDrillingHeader", "onDrilling"]) {
-        let body = if arity(entry).is_some() { Body::Script(0) } else { Body::Native(vec![]) };
+        let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
         functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span: None });
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());

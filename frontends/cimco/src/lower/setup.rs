@@ -7,7 +7,9 @@
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::{Diagnostic, Modality, NumberFormat, Padding, PointStyle, SignStyle, ValueSource, Variable, WidthOf};
+use postc_ir::{
+    Diagnostic, FormatId, Modality, NumberFormat, Padding, PointStyle, SignStyle, ValueSource, VarId, Variable, WidthOf,
+};
 
 use crate::ast::*;
 
@@ -18,8 +20,8 @@ use super::scope::{Symbol, Visit, walk_stmt};
 /// What a global is bound to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Binding {
-    Format(u16),
-    Var(u16),
+    Format(FormatId),
+    Var(VarId),
 }
 
 /// Formats, variables and the globals bound to them.
@@ -138,7 +140,7 @@ impl Setup {
                 let props = props(args.first(), model, env, at, FORMAT_KEYS, "createFormat", diags)?;
                 let format = number_format(&props, mark, args.first().map_or(e.span, |a| a.span), diags);
                 self.formats.push(format);
-                Some(Binding::Format((self.formats.len() - 1) as u16))
+                Some(Binding::Format(FormatId::new((self.formats.len() - 1) as u16)))
             }
             "createVariable" => {
                 let vprops = props(args.first(), model, env, at, VARIABLE_KEYS, "createVariable", diags)?;
@@ -153,7 +155,7 @@ impl Setup {
                     },
                     None => {
                         self.formats.push(number_format(&[], mark, e.span, diags));
-                        (self.formats.len() - 1) as u16
+                        FormatId::new((self.formats.len() - 1) as u16)
                     }
                     _ => return None,
                 };
@@ -166,8 +168,9 @@ impl Setup {
                     prefix: prefix.into_bytes(),
                     format,
                     modality: if force { Modality::Always } else { Modality::OnChange },
+                    span: Some(e.span),
                 });
-                Some(Binding::Var((self.variables.len() - 1) as u16))
+                Some(Binding::Var(VarId::new((self.variables.len() - 1) as u16)))
             }
             _ => None,
         }
@@ -264,6 +267,7 @@ fn number_format(
         prefix: get("prefix").and_then(|p| p.text()).unwrap_or_default(),
         // A post is JavaScript: numbers round as its engine rounds them.
         rounding: postc_ir::Rounding::Binary,
+        span: Some(span),
     }
 }
 

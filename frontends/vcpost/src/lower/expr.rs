@@ -236,7 +236,7 @@ impl Lowerer<'_> {
         if let Some(id) = self.host_functions.get(canonical) {
             return Some(*id);
         }
-        let id = FunctionId::try_from(self.post.functions.len()).ok()?;
+        let id = FunctionId::from_usize(self.post.functions.len())?;
         self.post.functions.push(Function {
             name: canonical.to_string(),
             params: params.iter().map(|p| p.to_string()).collect(),
@@ -267,12 +267,13 @@ impl Lowerer<'_> {
         self.diagnostics.push(d);
     }
 
-    /// `Out` and what follows it.
-    pub(super) fn out_line(&mut self, e: Option<&Expr>) -> IrStmt {
+    /// `Out` and what follows it; `span` is the whole statement's.
+    pub(super) fn out_line(&mut self, e: Option<&Expr>, span: Span) -> IrStmt {
+        let span = Some(span);
         let mut pieces: Vec<Piece> = Vec::new();
-        let Some(e) = e else { return IrStmt::Line(pieces) };
+        let Some(e) = e else { return IrStmt::Line { pieces, span } };
         if e.depth() > super::MAX_EXPR_DEPTH {
-            return IrStmt::Line(vec![Piece::Expr(self.expr_checked(e))]);
+            return IrStmt::Line { pieces: vec![Piece::Expr(self.expr_checked(e))], span };
         }
         for part in out_parts(e) {
             let ExprKind::Text(text) = &part.kind else {
@@ -310,7 +311,7 @@ impl Lowerer<'_> {
                     }
                     TemplatePart::Register(name) => {
                         if self.register_var(name).is_none() {
-                            self.add_register(name);
+                            self.add_register(name, part.span);
                         }
                         match self.register_var(name) {
                             Some(var) => pieces.push(Piece::Var(var)),
@@ -320,7 +321,7 @@ impl Lowerer<'_> {
                 }
             }
         }
-        IrStmt::Line(pieces)
+        IrStmt::Line { pieces, span }
     }
 
     fn push_text(&self, pieces: &mut Vec<Piece>, text: &str) {

@@ -26,7 +26,7 @@ mod walk;
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::post::{FunctionId, VarId};
+use postc_ir::post::{FormatId, FunctionId, GlobalId, LocalId, VarId};
 use postc_ir::{
     Body, Diagnostic, Dialect, Dispatch, Expr as IrExpr, Function, Global, Handler, HandlerKey, Post, Quantity,
     Stmt as IrStmt, ValueSource, Variable,
@@ -52,7 +52,7 @@ struct ProcInfo {
 /// A global as the lowering tracks it.
 #[derive(Clone, Debug)]
 struct GlobalInfo {
-    index: u16,
+    index: GlobalId,
     constant: bool,
     declared: bool,
     first_read: Option<postc_ir::Span>,
@@ -61,10 +61,10 @@ struct GlobalInfo {
 /// The locals of the Sub being lowered.
 #[derive(Debug, Default)]
 struct Scope {
-    locals: HashMap<String, (u16, bool)>,
+    locals: HashMap<String, (LocalId, bool)>,
     names: Vec<String>,
     function: Option<String>,
-    ret: Option<u16>,
+    ret: Option<LocalId>,
 }
 
 /// Kinds of loops `Exit` can leave.
@@ -143,7 +143,7 @@ impl Lowerer<'_> {
     fn collect_procs(&mut self) {
         for item in &self.program.items {
             let Item::Proc(p) = item else { continue };
-            let id = self.post.functions.len() as FunctionId;
+            let id = FunctionId::new(self.post.functions.len() as u16);
             self.proc_ids.push(id);
             self.post.functions.push(Function {
                 name: p.name.text.clone(),
@@ -167,7 +167,7 @@ impl Lowerer<'_> {
                 continue;
             }
             if let Some(first) = self.procs.get(&key) {
-                let first_span = self.post.functions[first.id as usize].span.unwrap_or(p.header);
+                let first_span = self.post.functions[first.id.index()].span.unwrap_or(p.header);
                 self.diagnostics.push(
                     Diagnostic::error(codes::DUPLICATE_SUB, format!("`{}` is defined twice", p.name.text))
                         .at(p.name.span, "second definition")
@@ -184,14 +184,21 @@ impl Lowerer<'_> {
         let mut variables = Vec::with_capacity(self.specs.len());
         for (index, spec) in self.specs.iter().enumerate() {
             let (prefix, format, modality) = spec.finish(&mut self.diagnostics);
-            let format_id = self.post.formats.len() as u16;
+            let format_id = FormatId::new(self.post.formats.len() as u16);
             self.post.formats.push(format);
-            let source = if Some(index as VarId) == self.sequence {
+            let source = if VarId::from_usize(index) == self.sequence {
                 ValueSource::Quantity(Quantity::BlockNumber)
             } else {
                 ValueSource::Assigned
             };
-            variables.push(Variable { name: spec.name.clone(), source, prefix, format: format_id, modality });
+            variables.push(Variable {
+                name: spec.name.clone(),
+                source,
+                prefix,
+                format: format_id,
+                modality,
+                span: spec.span,
+            });
         }
         self.post.variables = variables;
         self.handlers();
@@ -247,7 +254,7 @@ impl Lowerer<'_> {
             {
                 continue;
             }
-            let name = self.post.globals.get(g.index as usize).map_or(key.clone(), |g| g.name.clone());
+            let name = self.post.globals.get(g.index.index()).map_or(key.clone(), |g| g.name.clone());
             unset.push((name, at));
         }
         unset.sort_by_key(|(_, at)| at.start);
@@ -275,14 +282,14 @@ impl Lowerer<'_> {
 
     /// A new global; its initial value is text when the post only ever
     /// assigns text to it or the runtime sets it to text.
-    fn new_global(&mut self, name: &str, initial: Option<IrExpr>, constant: bool, declared: bool) -> u16 {
+    fn new_global(&mut self, name: &str, initial: Option<IrExpr>, constant: bool, declared: bool) -> GlobalId {
         let key = name.to_lowercase();
         if let Some(g) = self.globals.get(&key) {
             return g.index;
         }
         let index = match u16::try_from(self.post.globals.len()) {
-            Ok(i) if i < u16::MAX => i,
-            _ => return self.too_many("variables"),
+            Ok(i) if i < u16::MAX => GlobalId::new(i),
+            _ => return GlobalId::new(self.too_many("variables")),
         };
         let text = self.text_globals.get(&key).copied().unwrap_or(false)
             || crate::routines::runtime_variable(name) == Some(crate::routines::VarType::Text);

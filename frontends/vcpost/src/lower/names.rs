@@ -8,8 +8,8 @@
 //! Anything else is a new global: as in VcPost, a variable set in one Sub is
 //! seen by every later call.
 
-use postc_ir::post::VarId;
-use postc_ir::{Diagnostic, Expr as IrExpr, Place, Quantity};
+use postc_ir::post::{LocalId, VarId};
+use postc_ir::{Diagnostic, Expr as IrExpr, Place, Quantity, Span};
 
 use super::template::{TemplatePart, out_parts, split};
 use super::walk::{each_expr, each_stmt, stmt_exprs};
@@ -21,7 +21,7 @@ use crate::token::{Kw, is_reserved, is_valid_name};
 
 /// What the pre-pass finds, in file order.
 enum Found<'a> {
-    Register(&'a str),
+    Register(&'a str, Span),
     Assigned(&'a str, bool),
 }
 
@@ -36,7 +36,7 @@ pub(super) fn collect(l: &mut Lowerer) {
                 for kc in &p.keyword_comments {
                     if let CommentKind::Keyword(_) = kc.kind {
                         for param in kc.params.iter().filter(|p| is_valid_name(&p.name) && !is_reserved(&p.name)) {
-                            found.push(Found::Register(&param.name));
+                            found.push(Found::Register(&param.name, param.span));
                         }
                     }
                 }
@@ -46,7 +46,7 @@ pub(super) fn collect(l: &mut Lowerer) {
     }
     for f in found {
         match f {
-            Found::Register(name) => l.add_register(name),
+            Found::Register(name, span) => l.add_register(name, span),
             Found::Assigned(name, text) => {
                 let key = name.to_lowercase();
                 let entry = l.text_globals.entry(key.clone()).or_insert(text);
@@ -74,14 +74,14 @@ fn scan<'a>(stmts: &'a [Stmt], locals: &[String], found: &mut Vec<Found<'a>>) {
     each_stmt(stmts, &mut |s| {
         match &s.kind {
             StmtKind::SetProperty { register, .. } if !is_local(register) => {
-                found.push(Found::Register(&register.text))
+                found.push(Found::Register(&register.text, register.span))
             }
             StmtKind::Out(Some(e)) => {
                 for part in out_parts(e) {
                     if let ExprKind::Text(t) = &part.kind {
                         for piece in split(t) {
                             if let TemplatePart::Register(name) = piece {
-                                found.push(Found::Register(name));
+                                found.push(Found::Register(name, part.span));
                             }
                         }
                     }
@@ -98,7 +98,7 @@ fn scan<'a>(stmts: &'a [Stmt], locals: &[String], found: &mut Vec<Found<'a>>) {
                 if let ExprKind::Previous(name) = &x.kind
                     && !is_local(name)
                 {
-                    found.push(Found::Register(&name.text));
+                    found.push(Found::Register(&name.text, name.span));
                 }
             })
         });
@@ -119,16 +119,16 @@ fn is_text(e: &Expr) -> bool {
 
 impl Lowerer<'_> {
     /// Makes a name a register (once; `N` and keywords excepted).
-    pub(super) fn add_register(&mut self, name: &str) {
+    pub(super) fn add_register(&mut self, name: &str, span: Span) {
         let key = name.to_lowercase();
         if key == "n" || self.registers.contains_key(&key) || Kw::from_word(name).is_some() {
             return;
         }
-        let Ok(id) = VarId::try_from(self.specs.len()) else {
+        let Some(id) = VarId::from_usize(self.specs.len()) else {
             self.too_many("registers");
             return;
         };
-        self.specs.push(RegisterSpec::new(name));
+        self.specs.push(RegisterSpec { span: Some(span), ..RegisterSpec::new(name) });
         self.registers.insert(key, id);
     }
 
@@ -137,7 +137,7 @@ impl Lowerer<'_> {
         if let Some(id) = self.sequence {
             return id;
         }
-        let id = VarId::try_from(self.specs.len()).unwrap_or(0);
+        let id = VarId::from_usize(self.specs.len()).unwrap_or(VarId::new(0));
         self.specs.push(RegisterSpec::new("N"));
         self.sequence = Some(id);
         id
@@ -152,7 +152,7 @@ impl Lowerer<'_> {
         self.registers.get(&key).copied()
     }
 
-    fn local(&self, key: &str) -> Option<(u16, bool)> {
+    fn local(&self, key: &str) -> Option<(LocalId, bool)> {
         let scope = self.scope.as_ref()?;
         if let Some(l) = scope.locals.get(key) {
             return Some(*l);
@@ -265,7 +265,7 @@ impl Lowerer<'_> {
         self.hidden += 1;
         let name = format!("${what}{}", self.hidden);
         if let Some(scope) = self.scope.as_mut() {
-            let slot = u16::try_from(scope.names.len()).unwrap_or(u16::MAX);
+            let slot = LocalId::new(u16::try_from(scope.names.len()).unwrap_or(u16::MAX));
             scope.names.push(name);
             return (Place::Local(slot), IrExpr::Local(slot));
         }

@@ -1,7 +1,7 @@
 //! Lowering statements and Sub bodies: locals, declarations, assignments,
 //! register properties, calls and `Out`; control flow is in `control`.
 
-use postc_ir::{Body, Diagnostic, Expr as IrExpr, Function, Stmt as IrStmt};
+use postc_ir::{Body, Diagnostic, Expr as IrExpr, Function, LocalId, Stmt as IrStmt};
 
 use super::{Lowerer, Scope};
 use crate::ast::{DimItem, Name, ProcKind, Procedure, Stmt, StmtKind};
@@ -62,7 +62,7 @@ impl Lowerer<'_> {
         if let Some(ret) = scope.ret {
             body.push(IrStmt::Return(Some(IrExpr::Local(ret))));
         }
-        if let Some(f) = self.post.functions.get_mut(id as usize) {
+        if let Some(f) = self.post.functions.get_mut(id.index()) {
             *f = Function {
                 name: p.name.text.clone(),
                 params: p.params.iter().map(|f| f.name.text.clone()).collect(),
@@ -73,7 +73,7 @@ impl Lowerer<'_> {
         }
     }
 
-    fn declare_local(&mut self, scope: &mut Scope, name: &Name, constant: bool) -> u16 {
+    fn declare_local(&mut self, scope: &mut Scope, name: &Name, constant: bool) -> LocalId {
         let key = name.key();
         if let Some((slot, _)) = scope.locals.get(&key) {
             self.diagnostics.push(
@@ -95,7 +95,7 @@ impl Lowerer<'_> {
                 )),
             );
         }
-        let slot = u16::try_from(scope.names.len()).unwrap_or(u16::MAX);
+        let slot = LocalId::new(u16::try_from(scope.names.len()).unwrap_or(u16::MAX));
         scope.names.push(name.text.clone());
         scope.locals.insert(key, (slot, constant));
         slot
@@ -131,7 +131,7 @@ impl Lowerer<'_> {
             StmtKind::Dim(items) => items.iter().flat_map(|i| self.dim(i)).collect(),
             StmtKind::Const(items) => items.iter().flat_map(|(n, v)| self.constant(n, v)).collect(),
             StmtKind::Call { name, args } => self.call_stmt(name, args, s.span).into_iter().collect(),
-            StmtKind::Out(e) => vec![self.out_line(e.as_ref())],
+            StmtKind::Out(e) => vec![self.out_line(e.as_ref(), s.span)],
             StmtKind::Exit(kind) => self.exit(*kind, s).into_iter().collect(),
             StmtKind::If { branches, otherwise } => {
                 let branches = branches.iter().map(|(c, b)| (self.expr_checked(c), self.block(b))).collect();
@@ -157,7 +157,7 @@ impl Lowerer<'_> {
             return;
         }
         let Some(var) = self.register_var(&register.text) else { return };
-        let Some(spec) = self.specs.get_mut(var as usize) else { return };
+        let Some(spec) = self.specs.get_mut(var.index()) else { return };
         if let Err(d) = crate::registers::apply(spec, property, value, &mut self.post.options.block_numbers) {
             self.diagnostics.push(d);
         }
@@ -189,7 +189,7 @@ impl Lowerer<'_> {
                     );
                 }
                 g.declared = true;
-                let index = g.index as usize;
+                let index = g.index.index();
                 if let (Some(ty), Some(global)) = (&item.ty, self.post.globals.get_mut(index)) {
                     global.initial = default_value(Some(ty));
                 }

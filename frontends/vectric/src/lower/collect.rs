@@ -32,7 +32,7 @@ pub fn collect(model: &mut Model, post: &PostFile, encoding: Encoding, diags: &m
             ItemKind::Begin(begin) => target = begin_section(model, begin, item.span, diags),
             ItemKind::Output(text) => {
                 if let Some(lines) = lines_of(model, &target, item.span, diags) {
-                    lines.push(LineDef::Output(pieces(text, encoding)));
+                    lines.push(LineDef::Output(pieces(text, encoding), item.span));
                 }
             }
             ItemKind::ScriptCall(code) => {
@@ -287,8 +287,10 @@ fn declare_var(
         },
         prefix: encoding.encode(&fields.prefix.value).into_owned(),
         format: fields.format.value,
+        format_span: fields.format.span,
         multiplier: fields.multiplier.as_ref().map_or(1.0, |m| m.value),
         seq,
+        span: fields.span,
     };
     if let Some(other) = model.vars.iter().find(|v| {
         v.label.eq_ignore_ascii_case(&def.label) && v.name != def.name && v.label_span.file == def.label_span.file

@@ -8,8 +8,8 @@ use std::collections::HashMap;
 
 use postc_ir::post::{BlockNumbers, VarId};
 use postc_ir::{
-    Diagnostic, Dialect, Dispatch, Handler, HandlerKey, OutputOptions, Piece, Post, PostInfo, Quantity, Script,
-    ScriptLanguage, Span, Stmt, ValueSource, Variable,
+    Diagnostic, Dialect, Dispatch, FormatId, Handler, HandlerKey, NumberFormat, OutputOptions, Piece, Post, PostInfo,
+    Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, ValueSource, Variable,
 };
 
 use crate::defaults::default_format;
@@ -42,10 +42,12 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
                 name: def.name.clone(),
                 source: ValueSource::Quantity(def.quantity),
                 prefix: def.prefix.clone(),
-                format: 0,
+                format: FormatId::new(0),
                 modality: def.modality,
+                span: Some(def.span),
             },
             def.format,
+            Some(def.format_span),
             def.multiplier,
             Some((&def.label, def.seq)),
         );
@@ -60,7 +62,8 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
         let mut body = Vec::with_capacity(section.lines.len());
         for line in &section.lines {
             match line {
-                LineDef::Output(pieces) => body.push(Stmt::Line(line_pieces(&mut post, &mut vars, pieces, diags))),
+                LineDef::Output(pieces, span) => body
+                    .push(Stmt::Line { pieces: line_pieces(&mut post, &mut vars, pieces, diags), span: Some(*span) }),
                 LineDef::Script(script) => {
                     if let Some(id) = push_script(&mut post, script) {
                         body.push(Stmt::Script(id));
@@ -91,14 +94,13 @@ impl Variables {
         post: &mut Post,
         mut variable: Variable,
         format: FormatSpec,
+        format_span: Option<Span>,
         multiplier: f64,
         label: Option<(&str, usize)>,
     ) -> Option<VarId> {
-        let id = VarId::try_from(post.variables.len()).ok()?;
-        let format_id = u16::try_from(post.formats.len()).ok()?;
-        post.formats.push(format.to_number_format(multiplier));
-        variable.format = format_id;
-        post.variables.push(variable);
+        variable.format =
+            post.push_format(NumberFormat { span: format_span, ..format.to_number_format(multiplier) })?;
+        let id = post.push_variable(variable)?;
         if let Some((label, seq)) = label {
             let key = label.to_ascii_uppercase();
             if self.by_label.get(&key).is_none_or(|&(_, s)| s < seq) {
@@ -121,10 +123,11 @@ impl Variables {
             name: var_name_of_label(quantity.label()).unwrap_or(quantity.label()).to_string(),
             source: ValueSource::Quantity(quantity),
             prefix: default.prefix.as_bytes().to_vec(),
-            format: 0,
+            format: FormatId::new(0),
             modality: default.modality,
+            span: Some(at),
         };
-        let id = self.add(post, variable, default.format, 1.0, Some((label, 0)))?;
+        let id = self.add(post, variable, default.format, None, 1.0, Some((label, 0)))?;
         self.first_use.insert(id, at);
         Some(id)
     }
@@ -159,15 +162,13 @@ fn line_pieces(post: &mut Post, vars: &mut Variables, pieces: &[PieceDef], diags
 }
 
 /// Adds a Lua script to the post.
-fn push_script(post: &mut Post, script: &ScriptDef) -> Option<u16> {
-    let id = u16::try_from(post.scripts.len()).ok()?;
-    post.scripts.push(Script {
+fn push_script(post: &mut Post, script: &ScriptDef) -> Option<ScriptId> {
+    post.push_script(Script {
         language: ScriptLanguage::Lua,
         source: script.code.clone(),
         span: Some(script.span),
         span_map: vec![(0, u32::try_from(script.span.start).unwrap_or(u32::MAX))],
-    });
-    Some(id)
+    })
 }
 
 fn text(model: &Model, name: GlobalName) -> Option<String> {

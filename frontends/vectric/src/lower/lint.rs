@@ -22,7 +22,7 @@ fn used_variables(post: &Post) -> BTreeSet<VarId> {
     let mut used = BTreeSet::new();
     for handler in &post.handlers {
         for stmt in &handler.body {
-            if let Stmt::Line(pieces) = stmt {
+            if let Stmt::Line { pieces, .. } = stmt {
                 used.extend(pieces.iter().filter_map(|p| match p {
                     Piece::Var(id) => Some(*id),
                     _ => None,

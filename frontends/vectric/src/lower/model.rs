@@ -61,8 +61,12 @@ pub struct VarDef {
     /// In the bytes of its file's encoding.
     pub prefix: Vec<u8>,
     pub format: FormatSpec,
+    /// The format as written in the `VAR`.
+    pub format_span: Span,
     pub multiplier: f64,
     pub seq: usize,
+    /// The `VAR`'s fields, `[` to `]`.
+    pub span: Span,
 }
 
 /// One section in force.
@@ -77,7 +81,8 @@ pub struct SectionDef {
 /// A line of a section.
 #[derive(Clone, Debug)]
 pub enum LineDef {
-    Output(Vec<PieceDef>),
+    /// An output line and where it is in its file.
+    Output(Vec<PieceDef>, Span),
     Script(ScriptDef),
 }
 

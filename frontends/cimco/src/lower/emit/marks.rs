@@ -6,7 +6,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::{Expr, Piece, Stmt};
+use postc_ir::{Expr, LocalId, Piece, Stmt};
 
 /// Tidies a handler body.
 pub fn tidy(body: Vec<Stmt>) -> Vec<Stmt> {
@@ -24,8 +24,8 @@ fn silent(s: &Stmt) -> bool {
     matches!(s, Stmt::Assign(..))
 }
 
-fn find_aliases(body: &[Stmt], alias: &mut HashMap<u16, u16>) {
-    let mut current: Option<u16> = None;
+fn find_aliases(body: &[Stmt], alias: &mut HashMap<LocalId, LocalId>) {
+    let mut current: Option<LocalId> = None;
     for s in body {
         match s {
             Stmt::Mark(m) => match current {
@@ -49,8 +49,8 @@ fn find_aliases(body: &[Stmt], alias: &mut HashMap<u16, u16>) {
     }
 }
 
-fn rename(body: Vec<Stmt>, alias: &HashMap<u16, u16>) -> Vec<Stmt> {
-    let to = |m: u16| *alias.get(&m).unwrap_or(&m);
+fn rename(body: Vec<Stmt>, alias: &HashMap<LocalId, LocalId>) -> Vec<Stmt> {
+    let to = |m: LocalId| *alias.get(&m).unwrap_or(&m);
     body.into_iter()
         .filter(|s| !matches!(s, Stmt::Mark(m) if alias.contains_key(m)))
         .map(|s| match s {
@@ -67,7 +67,7 @@ fn rename(body: Vec<Stmt>, alias: &HashMap<u16, u16>) -> Vec<Stmt> {
         .collect()
 }
 
-fn rename_expr(e: Expr, alias: &HashMap<u16, u16>) -> Expr {
+fn rename_expr(e: Expr, alias: &HashMap<LocalId, LocalId>) -> Expr {
     match e {
         Expr::Written(m) => Expr::Written(*alias.get(&m).unwrap_or(&m)),
         Expr::Unary(op, a) => Expr::Unary(op, Box::new(rename_expr(*a, alias))),
@@ -79,7 +79,7 @@ fn rename_expr(e: Expr, alias: &HashMap<u16, u16>) -> Expr {
 /// Removes `Truncate(m)` where nothing was written since `Mark(m)`.
 fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
     let mut out: Vec<Stmt> = Vec::with_capacity(body.len());
-    let mut fresh: Option<u16> = None;
+    let mut fresh: Option<LocalId> = None;
     for s in body {
         match s {
             Stmt::Mark(m) => {
@@ -108,9 +108,9 @@ fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
     out
 }
 
-fn reads(body: &[Stmt], read: &mut HashSet<u16>) {
-    let expr = |e: &Expr, read: &mut HashSet<u16>| {
-        fn walk(e: &Expr, read: &mut HashSet<u16>) {
+fn reads(body: &[Stmt], read: &mut HashSet<LocalId>) {
+    let expr = |e: &Expr, read: &mut HashSet<LocalId>| {
+        fn walk(e: &Expr, read: &mut HashSet<LocalId>) {
             match e {
                 Expr::Written(m) | Expr::Local(m) => {
                     read.insert(*m);
@@ -152,7 +152,7 @@ fn reads(body: &[Stmt], read: &mut HashSet<u16>) {
                 reads(body, read);
             }
             Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) | Stmt::Return(Some(e)) => expr(e, read),
-            Stmt::Emit(p) | Stmt::Line(p) => p.iter().for_each(|p| {
+            Stmt::Emit(p) | Stmt::Line { pieces: p, .. } => p.iter().for_each(|p| {
                 if let Piece::Expr(e) = p {
                     expr(e, read)
                 }
@@ -162,7 +162,7 @@ fn reads(body: &[Stmt], read: &mut HashSet<u16>) {
     }
 }
 
-fn drop_unread(body: Vec<Stmt>, read: &HashSet<u16>) -> Vec<Stmt> {
+fn drop_unread(body: Vec<Stmt>, read: &HashSet<LocalId>) -> Vec<Stmt> {
     body.into_iter()
         .filter(|s| !matches!(s, Stmt::Mark(m) if !read.contains(m)))
         .map(|s| match s {

@@ -16,7 +16,7 @@
 mod marks;
 mod shape;
 
-use postc_ir::{BinaryOp, Body, Expr, Function, Piece, Place, Stmt, UnaryOp};
+use postc_ir::{BinaryOp, Body, Expr, Function, FunctionId, LocalId, Piece, Place, Stmt, UnaryOp};
 
 pub(crate) use marks::tidy;
 pub(crate) use shape::max_slot;
@@ -45,20 +45,20 @@ struct Frame {
     /// Callee slot -> what it reads as.
     map: Vec<Binding>,
     /// The mark where this function's text starts.
-    base: u16,
+    base: LocalId,
     depth: usize,
     /// A region local not assigned yet (its first assignment starts it).
-    pending: std::cell::Cell<Option<u16>>,
+    pending: std::cell::Cell<Option<LocalId>>,
 }
 
 #[derive(Clone)]
 enum Binding {
     /// A slot of the handler's frame.
-    Slot(u16),
+    Slot(LocalId),
     /// An argument substituted where it is read (pure and never assigned).
     Value(Expr),
     /// Text already written since the mark in this slot.
-    Region(u16),
+    Region(LocalId),
 }
 
 impl<'f> Emitter<'f> {
@@ -125,15 +125,15 @@ impl<'f> Emitter<'f> {
         }
     }
 
-    fn slot(&mut self) -> u16 {
+    fn slot(&mut self) -> LocalId {
         self.next += 1;
-        self.next - 1
+        LocalId::new(self.next - 1)
     }
 
     /// The statements that write what `f(args)` returns, wrapped so that
     /// a `return` leaves. `in_text`: the call sits inside a concatenation,
     /// where only functions that always return text may be inlined.
-    fn call(&mut self, f: u16, args: &[Expr], depth: usize, in_text: bool) -> Option<Vec<Stmt>> {
+    fn call(&mut self, f: FunctionId, args: &[Expr], depth: usize, in_text: bool) -> Option<Vec<Stmt>> {
         self.call_bound(f, args, depth, in_text, None)
     }
 
@@ -141,20 +141,20 @@ impl<'f> Emitter<'f> {
     /// mark `bound.1` (the caller's region, passed on).
     fn call_bound(
         &mut self,
-        f: u16,
+        f: FunctionId,
         args: &[Expr],
         depth: usize,
         in_text: bool,
-        bound: Option<(usize, u16)>,
+        bound: Option<(usize, LocalId)>,
     ) -> Option<Vec<Stmt>> {
         if depth >= MAX_DEPTH {
             return None;
         }
-        let function = self.functions.get(f as usize)?;
+        let function = self.functions.get(f.index())?;
         let Body::Native(body) = &function.body else { return None };
         // Inside a concatenation, a function that can return nothing would
         // add nothing either way; one that may fall off its end is left alone.
-        if in_text && !self.always[f as usize] {
+        if in_text && !self.always[f.index()] {
             return None;
         }
         if has_loop(body) {
@@ -175,7 +175,7 @@ impl<'f> Emitter<'f> {
         };
         let mut map = Vec::with_capacity(slots);
         let region_param = match bound {
-            Some((k, _)) => (k < params && region_uses_ok(body, k as u16)).then_some(k),
+            Some((k, _)) => (k < params && region_uses_ok(body, LocalId::new(k as u16))).then_some(k),
             None => region_param(body, params, args),
         };
         if bound.is_some() && region_param.is_none() {
@@ -190,8 +190,8 @@ impl<'f> Emitter<'f> {
             if k >= params {
                 let s = self.slot();
                 // A local starts undefined, unless it is set before any use.
-                let first = body.iter().find(|st| stmt_mentions(st, k as u16));
-                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if *x as usize == k && !expr_reads(e, k as u16))
+                let first = body.iter().find(|st| stmt_mentions(st, LocalId::new(k as u16)));
+                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if x.index() == k && !expr_reads(e, LocalId::new(k as u16)))
                 {
                     out.push(Stmt::Assign(Place::Local(s), Expr::Null));
                 }
@@ -205,7 +205,7 @@ impl<'f> Emitter<'f> {
                     out.extend(self.text(&arg, &Frame::root(), depth + 1)?);
                 }
                 map.push(Binding::Region(base));
-            } else if is_pure(&arg) && !assigns(body, k as u16) {
+            } else if is_pure(&arg) && !assigns(body, LocalId::new(k as u16)) {
                 map.push(Binding::Value(arg));
             } else {
                 let s = self.slot();
@@ -219,8 +219,13 @@ impl<'f> Emitter<'f> {
                 out.push(Stmt::Eval(extra.clone()));
             }
         }
-        let frame =
-            Frame { identity: false, map, base, depth, pending: std::cell::Cell::new(region_local.map(|k| k as u16)) };
+        let frame = Frame {
+            identity: false,
+            map,
+            base,
+            depth,
+            pending: std::cell::Cell::new(region_local.map(|k| LocalId::new(k as u16))),
+        };
         let mut inner = self.stmts(body, &frame)?;
         let ends = matches!(inner.last(), Some(Stmt::Break));
         if ends {
@@ -255,7 +260,7 @@ impl<'f> Emitter<'f> {
                     }
                     out.push(Stmt::If { branches: bs, otherwise: self.stmts(otherwise, fr)? });
                 }
-                Stmt::Assign(Place::Local(k), e) => match fr.map.get(*k as usize)? {
+                Stmt::Assign(Place::Local(k), e) => match fr.map.get(k.index())? {
                     Binding::Slot(s) => out.push(Stmt::Assign(Place::Local(*s), value(e, fr)?)),
                     Binding::Region(mark) => {
                         let mark = *mark;
@@ -305,14 +310,14 @@ impl<'f> Emitter<'f> {
 
     /// `return g(..., text-with-region, ...)`: the region is extended to
     /// the argument's text and handed to `g` as its text parameter.
-    fn pass_region(&mut self, g: u16, args: &[Expr], fr: &Frame) -> Option<Vec<Stmt>> {
+    fn pass_region(&mut self, g: FunctionId, args: &[Expr], fr: &Frame) -> Option<Vec<Stmt>> {
         let with = |a: &Expr| region_in(a, fr);
         let i = args.iter().position(|a| with(a).is_some())?;
         if args.iter().enumerate().any(|(j, a)| j != i && mentions_region(a, fr)) {
             return None;
         }
         let k = with(&args[i])?;
-        let Binding::Region(mark) = fr.map.get(k as usize)? else { return None };
+        let Binding::Region(mark) = fr.map.get(k.index())? else { return None };
         let mark = *mark;
         let mut hargs = Vec::with_capacity(args.len());
         for (j, a) in args.iter().enumerate() {
@@ -334,7 +339,7 @@ impl<'f> Emitter<'f> {
 
     /// Writes `e`, a concatenation with region local `k` once in it, so
     /// that the region (starting at `mark`) holds its text afterwards.
-    fn region_text(&mut self, e: &Expr, k: u16, mark: u16, fr: &Frame) -> Option<Vec<Stmt>> {
+    fn region_text(&mut self, e: &Expr, k: LocalId, mark: LocalId, fr: &Frame) -> Option<Vec<Stmt>> {
         let mut leaves = Vec::new();
         concat_leaves(e, &mut leaves);
         let pos = leaves.iter().position(|l| matches!(l, Expr::Local(x) if *x == k));
@@ -370,7 +375,7 @@ impl<'f> Emitter<'f> {
     /// A condition, with tests of a region's emptiness rewritten.
     fn cond(&self, c: &Expr, fr: &Frame) -> Option<Expr> {
         let region = |e: &Expr| match e {
-            Expr::Local(k) => match fr.map.get(*k as usize) {
+            Expr::Local(k) => match fr.map.get(k.index()) {
                 Some(Binding::Region(m)) => Some(*m),
                 _ => None,
             },
@@ -432,7 +437,7 @@ impl<'f> Emitter<'f> {
 impl Frame {
     /// The handler's own frame: expressions are already in its terms.
     fn root() -> Frame {
-        Frame { identity: true, map: Vec::new(), base: 0, depth: 0, pending: std::cell::Cell::new(None) }
+        Frame { identity: true, map: Vec::new(), base: LocalId::new(0), depth: 0, pending: std::cell::Cell::new(None) }
     }
 }
 
@@ -442,7 +447,7 @@ fn value(e: &Expr, fr: &Frame) -> Option<Expr> {
         return Some(e.clone());
     }
     Some(match e {
-        Expr::Local(k) => match fr.map.get(*k as usize)? {
+        Expr::Local(k) => match fr.map.get(k.index())? {
             Binding::Slot(s) => Expr::Local(*s),
             Binding::Value(v) => v.clone(),
             Binding::Region(_) => return None,
@@ -465,11 +470,11 @@ fn mentions_region(e: &Expr, fr: &Frame) -> bool {
 }
 
 /// The region local a concatenation has as one of its parts.
-fn region_in(e: &Expr, fr: &Frame) -> Option<u16> {
+fn region_in(e: &Expr, fr: &Frame) -> Option<LocalId> {
     let mut leaves = Vec::new();
     concat_leaves(e, &mut leaves);
     leaves.iter().find_map(|l| match l {
-        Expr::Local(k) if matches!(fr.map.get(*k as usize), Some(Binding::Region(_))) => Some(*k),
+        Expr::Local(k) if matches!(fr.map.get(k.index()), Some(Binding::Region(_))) => Some(*k),
         _ => None,
     })
 }

@@ -2,7 +2,7 @@
 //! kept as text in the output (a "region"), which functions always return
 //! text, and the small analyses over IR statements they need.
 
-use postc_ir::{BinaryOp, Builtin, Expr, Piece, Place, Stmt, UnaryOp};
+use postc_ir::{BinaryOp, Builtin, Expr, LocalId, Piece, Place, Stmt, UnaryOp};
 
 /// The parts of a left-associated chain of `+`.
 pub(super) fn concat_leaves<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {
@@ -20,12 +20,12 @@ pub(super) fn concat_leaves<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {
 pub(super) fn region_param(body: &[Stmt], params: usize, args: &[Expr]) -> Option<usize> {
     (0..params).find(|&k| {
         args.get(k).is_some_and(|a| is_text(a, &[]) || matches!(a, Expr::Call(..)))
-            && region_uses_ok(body, k as u16)
-            && reads(body, k as u16)
+            && region_uses_ok(body, LocalId::new(k as u16))
+            && reads(body, LocalId::new(k as u16))
     })
 }
 
-pub(super) fn region_uses_ok(body: &[Stmt], k: u16) -> bool {
+pub(super) fn region_uses_ok(body: &[Stmt], k: LocalId) -> bool {
     body.iter().all(|s| match s {
         Stmt::Return(Some(e)) => ret_ok(e, k),
         Stmt::Assign(Place::Local(x), e) if *x == k => leaf_only(e, k),
@@ -40,7 +40,7 @@ pub(super) fn region_uses_ok(body: &[Stmt], k: u16) -> bool {
 
 /// A returned value that may use region `k`: a concatenation with it as a
 /// part, or a choice between such values.
-pub(super) fn ret_ok(e: &Expr, k: u16) -> bool {
+pub(super) fn ret_ok(e: &Expr, k: LocalId) -> bool {
     match e {
         Expr::Choose(c, a, b) => cond_ok(c, k) && ret_ok(a, k) && ret_ok(b, k),
         // Passed on to a function as one of its arguments.
@@ -56,7 +56,7 @@ pub(super) fn ret_ok(e: &Expr, k: u16) -> bool {
 /// body, assigns it text (or a call's result), and every use fits.
 pub(super) fn region_local(body: &[Stmt], params: usize, slots: usize) -> Option<usize> {
     (params..slots).find(|&k| {
-        let k16 = k as u16;
+        let k16 = LocalId::new(k as u16);
         let first = body.iter().find(|s| stmt_mentions(s, k16));
         let starts = matches!(first, Some(Stmt::Assign(Place::Local(x), e))
             if *x == k16 && !expr_reads(e, k16) && (is_text(e, &[]) || matches!(e, Expr::Call(..))));
@@ -64,13 +64,13 @@ pub(super) fn region_local(body: &[Stmt], params: usize, slots: usize) -> Option
     })
 }
 
-pub(super) fn stmt_mentions(s: &Stmt, k: u16) -> bool {
+pub(super) fn stmt_mentions(s: &Stmt, k: LocalId) -> bool {
     matches!(s, Stmt::Assign(Place::Local(x), _) if *x == k)
         || reads(std::slice::from_ref(s), k)
         || assigns(std::slice::from_ref(s), k)
 }
 
-pub(super) fn cond_ok(c: &Expr, k: u16) -> bool {
+pub(super) fn cond_ok(c: &Expr, k: LocalId) -> bool {
     let is_k = |e: &Expr| matches!(e, Expr::Local(x) if *x == k);
     let empty = |e: &Expr| matches!(e, Expr::Text(t) if t.is_empty());
     match c {
@@ -86,14 +86,14 @@ pub(super) fn cond_ok(c: &Expr, k: u16) -> bool {
 }
 
 /// `k` appears at most once, and only as a whole part of the concatenation.
-pub(super) fn leaf_only(e: &Expr, k: u16) -> bool {
+pub(super) fn leaf_only(e: &Expr, k: LocalId) -> bool {
     let mut leaves = Vec::new();
     concat_leaves(e, &mut leaves);
     let direct = leaves.iter().filter(|l| matches!(l, Expr::Local(x) if *x == k)).count();
     direct <= 1 && leaves.iter().all(|l| matches!(l, Expr::Local(x) if *x == k) || !expr_reads(l, k))
 }
 
-pub(super) fn reads(body: &[Stmt], k: u16) -> bool {
+pub(super) fn reads(body: &[Stmt], k: LocalId) -> bool {
     body.iter().any(|s| match s {
         Stmt::Return(Some(e)) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) => expr_reads(e, k),
         Stmt::If { branches, otherwise } => {
@@ -104,7 +104,7 @@ pub(super) fn reads(body: &[Stmt], k: u16) -> bool {
     })
 }
 
-pub(super) fn expr_reads(e: &Expr, k: u16) -> bool {
+pub(super) fn expr_reads(e: &Expr, k: LocalId) -> bool {
     match e {
         Expr::Local(x) => *x == k,
         Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => expr_reads(value, k),
@@ -115,7 +115,7 @@ pub(super) fn expr_reads(e: &Expr, k: u16) -> bool {
     }
 }
 
-pub(super) fn assigns(body: &[Stmt], k: u16) -> bool {
+pub(super) fn assigns(body: &[Stmt], k: LocalId) -> bool {
     body.iter().any(|s| match s {
         Stmt::Assign(Place::Local(x), _) => *x == k,
         Stmt::If { branches, otherwise } => branches.iter().any(|(_, b)| assigns(b, k)) || assigns(otherwise, k),
@@ -134,8 +134,8 @@ pub(super) fn breaks(body: &[Stmt]) -> bool {
 }
 
 /// The highest local slot statements use.
-pub(crate) fn max_slot(body: &[Stmt]) -> Option<u16> {
-    fn e(x: &Expr, m: &mut Option<u16>) {
+pub(crate) fn max_slot(body: &[Stmt]) -> Option<LocalId> {
+    fn e(x: &Expr, m: &mut Option<LocalId>) {
         match x {
             Expr::Local(k) | Expr::Written(k) => *m = (*m).max(Some(*k)),
             Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => e(value, m),
@@ -164,7 +164,7 @@ pub(crate) fn max_slot(body: &[Stmt]) -> Option<u16> {
                 e(x, &mut m);
             }
             Stmt::Eval(x) | Stmt::Write(x) | Stmt::Return(Some(x)) => e(x, &mut m),
-            Stmt::Emit(pieces) | Stmt::Line(pieces) => pieces.iter().for_each(|p| {
+            Stmt::Emit(pieces) | Stmt::Line { pieces, .. } => pieces.iter().for_each(|p| {
                 if let Piece::Expr(x) = p {
                     e(x, &mut m)
                 }
@@ -217,7 +217,7 @@ pub(super) fn is_text(e: &Expr, returns_text: &[bool]) -> bool {
         Expr::Text(_) | Expr::FormatVar { .. } | Expr::Format { .. } => true,
         Expr::Binary(BinaryOp::Add, a, b) => is_text(a, returns_text) || is_text(b, returns_text),
         Expr::Choose(_, a, b) => is_text(a, returns_text) && is_text(b, returns_text),
-        Expr::Call(f, _) => returns_text.get(*f as usize).copied().unwrap_or(false),
+        Expr::Call(f, _) => returns_text.get(f.index()).copied().unwrap_or(false),
         Expr::Builtin(Builtin::Str | Builtin::Upper | Builtin::Lower | Builtin::ToFixed, _) => true,
         _ => false,
     }

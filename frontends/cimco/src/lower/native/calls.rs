@@ -100,7 +100,7 @@ impl Native<'_, '_> {
     /// The variable or format a global is bound to, if the name is that global.
     /// The output variable of `xOutput.reset`, when it is one made at
     /// compile time.
-    pub(super) fn reset_of(&self, callee: &Expr) -> Option<u16> {
+    pub(super) fn reset_of(&self, callee: &Expr) -> Option<postc_ir::VarId> {
         let ExprKind::Member { object, property } = &callee.kind else { return None };
         let ExprKind::Ident(o) = &object.kind else { return None };
         match self.binding(o) {

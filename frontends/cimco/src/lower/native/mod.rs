@@ -11,7 +11,7 @@
 //! makes the whole function run as a script instead; [`lower_function`]
 //! says `None` then.
 
-use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, Place, Stmt as IrStmt, UnaryOp as IrUn};
+use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, LocalId, Place, Stmt as IrStmt, UnaryOp as IrUn};
 
 use crate::ast::*;
 
@@ -191,9 +191,9 @@ impl Native<'_, '_> {
         Some(())
     }
 
-    fn temp(&mut self) -> u16 {
+    fn temp(&mut self) -> LocalId {
         self.slots += 1;
-        self.slots - 1
+        LocalId::new(self.slots - 1)
     }
 
     /// An expression evaluated for its effect.
@@ -227,7 +227,7 @@ impl Native<'_, '_> {
         let name = match &target.kind {
             ExprKind::Ident(n) => match self.model.scopes.resolve(n, self.at) {
                 Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
-                    return Some(Place::Local(slot as u16));
+                    return Some(Place::Local(LocalId::new(slot as u16)));
                 }
                 Symbol::Global(g) => g,
                 _ => return None,
@@ -271,7 +271,9 @@ impl Native<'_, '_> {
             ExprKind::Bool(b) => Ir::Bool(*b),
             ExprKind::Null | ExprKind::Undefined => Ir::Null,
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
-                Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => Ir::Local(slot as u16),
+                Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
+                    Ir::Local(LocalId::new(slot as u16))
+                }
                 Symbol::Global(g) => self.global_value(&g)?,
                 _ => return None,
             },

@@ -11,7 +11,7 @@ use super::{Gen, arguments_name, fn_name, local_name, number, quote};
 /// Where a name stores.
 pub(super) enum Target {
     Local(String),
-    Global(u16),
+    Global(postc_ir::GlobalId),
     None,
 }
 
