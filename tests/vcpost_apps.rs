@@ -98,9 +98,13 @@ fn composites_functions_read_the_calls_lists() {
         SubCall { sub: "NoSuchSub".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Warn },
         SubCall { sub: "Optional".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Skip },
     ];
-    let report =
-        postc_runtime::calls::run_calls(&post, &mut calls.into_iter(), Output::memory(), RunOptions::default())
-            .unwrap();
+    let report = postc_runtime::calls::run_calls(
+        &postc_frontends::for_calls(&post),
+        &mut calls.into_iter(),
+        Output::memory(),
+        RunOptions::default(),
+    )
+    .unwrap();
     let Finished::Memory(parts) = report.output else { panic!() };
     assert_eq!(String::from_utf8_lossy(&parts[0]), "L5,7.5,2,0\nL0,0,0,0\nL0,0,0,0\n");
     assert_eq!(report.warnings.iter().map(|d| d.code).collect::<Vec<_>>(), ["RT030"]);

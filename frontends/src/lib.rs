@@ -85,6 +85,20 @@ pub fn run_options(post: &Post) -> postc_runtime::RunOptions {
     postc_runtime::RunOptions { script_host: script_host(post), ..postc_runtime::RunOptions::default() }
 }
 
+/// The post to run over Sub calls (`postc_runtime::calls::run_calls`):
+/// a VcPost post's functions whose values come from the calls' lists
+/// (`getNthLength1`, ...) read tables of globals the lists fill
+/// ([`postc_front_vcpost::call_tables`]). Every other post is run as it is.
+pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
+    match post.info.dialect {
+        Dialect::VcPost => match postc_front_vcpost::call_tables::lower(post) {
+            Some(lowered) => std::borrow::Cow::Owned(lowered),
+            None => std::borrow::Cow::Borrowed(post),
+        },
+        _ => std::borrow::Cow::Borrowed(post),
+    }
+}
+
 /// Reads and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     match std::fs::read(path) {

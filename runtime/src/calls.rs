@@ -7,8 +7,8 @@
 //!
 //! 1. sets each variable the call carries that the post has (a register or
 //!    a global, names compared without case; other names are skipped), and
-//!    fills the table of each runtime-provided function the call carries a
-//!    list for (`getNthLength1`, ... see [`crate::call_tables`]);
+//!    fills the globals of each [`postc_ir::CallList`] from the call's list
+//!    of that name (see [`crate::call_tables`]);
 //! 2. calls the Sub of that name (without case). A Sub the post lacks is
 //!    skipped: silently when the call says so ([`MissingSub::Skip`], a
 //!    routine a post may leave out by design), else with one warning per
@@ -25,7 +25,7 @@ use std::collections::HashMap;
 
 use postc_ir::{CallSource, CallValue, Diagnostic, MissingSub, Post, SubCall};
 
-use crate::call_tables::{self, Tables};
+use crate::call_tables::Tables;
 use crate::engine::Engine;
 use crate::slots::Slots;
 use crate::value::Value;
@@ -41,11 +41,6 @@ pub fn run_calls<S: CallSource + ?Sized>(
     out: Output,
     mut options: RunOptions,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    let mut patched = None;
-    let (post, tables) = match call_tables::patch(post) {
-        Some((p, t)) => (&*patched.insert(p), t),
-        None => (post, Tables::default()),
-    };
     let mut machine =
         crate::machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
@@ -63,7 +58,7 @@ pub fn run_calls<S: CallSource + ?Sized>(
         diagnostics.append(&mut eng.warnings);
         return Err(diagnostics);
     }
-    let mut runner = Runner::new(post, tables);
+    let mut runner = Runner::new(post, Tables::new(post));
     let mut failed = false;
     let mut calls = 0u64;
     while let Some(call) = source.next_call(&mut diagnostics) {
