@@ -44,6 +44,7 @@ pub mod output;
 pub mod script_host;
 pub mod sections;
 mod slots;
+pub mod trace;
 pub mod value;
 
 use postc_ir::event::FileInfo;
@@ -69,6 +70,8 @@ pub struct RunOptions {
     /// Builds the host that runs the post's scripts, if it has any
     /// (`postc_frontends::script_host` picks it by the scripts' language).
     pub script_host: Option<script_host::ScriptHostFactory>,
+    /// Called with the provenance of every block written (`--trace`).
+    pub trace: Option<trace::TraceSink>,
 }
 
 /// What a successful run produced.
@@ -107,6 +110,7 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_ext = f.extension;
     }
     let mut engine = Engine::new(post, machine, out);
+    engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
     let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {
         Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),
         Dispatch::AptWords => Box::new(apt_words::AptDispatch::new(&engine)),
@@ -137,6 +141,10 @@ pub fn run<S: EventSource + ?Sized>(
             return fail(diagnostics, engine);
         }
         engine.event_span = span;
+        if let Some(t) = engine.trace.as_deref_mut() {
+            t.event = Some(events);
+            t.event_span = Some(span);
+        }
         if lathe {
             event = lathe::turn_event(event);
         }
@@ -156,6 +164,9 @@ pub fn run<S: EventSource + ?Sized>(
     }
     if postc_ir::diagnostic::has_errors(&diagnostics) {
         return fail(diagnostics, engine);
+    }
+    if let Some(t) = engine.trace.as_deref_mut() {
+        (t.event, t.event_span) = (None, None);
     }
     if let Err(d) = dispatch.finish(&mut engine) {
         diagnostics.push(*d);

@@ -3,7 +3,7 @@
 //! ```text
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
-//! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
@@ -13,6 +13,7 @@
 //! postc lsp                                                   # language server on stdio (docs/editors.md)
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
+//! postc explain TRACE.jsonl LINE [--output NC]                # why an NC line exists (`post --trace`)
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -29,6 +30,7 @@ mod postp;
 mod probe;
 pub mod report;
 mod toolpath;
+mod trace;
 pub(crate) mod verify;
 
 use std::path::PathBuf;
@@ -67,6 +69,8 @@ enum Command {
     Lsp(lsp::Args),
     /// Draw a program over its toolpath, top (XY) and front (XZ), with verify's findings marked: SVG, or PNG.
     Plot(plot::Args),
+    /// Explain why line LINE of a posted program exists, from the trace `postc post --trace` wrote.
+    Explain(trace::ExplainArgs),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -111,6 +115,7 @@ pub fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args),
         Command::Lsp(args) => lsp::run(args),
         Command::Plot(args) => plot::run(args),
+        Command::Explain(args) => trace::run_explain(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {

@@ -34,6 +34,9 @@ pub struct Args {
     /// After posting to OUT, replay what was written and compare it with the toolpath (`postc verify`); needs -o.
     #[arg(long)]
     verify: bool,
+    /// Write which post statement wrote each output line, for which toolpath event, as JSON Lines (docs/trace.md); read it with `postc explain TRACE LINE`.
+    #[arg(long, value_name = "TRACE.jsonl")]
+    trace: Option<PathBuf>,
 }
 
 /// `--set` names and what they do.
@@ -136,6 +139,19 @@ pub fn run(args: Args) -> Result<(), Failed> {
             Output::stdout()
         }
     };
+    let recorder = match &args.trace {
+        Some(path) => {
+            let r = super::trace::Recorder::new(path).map_err(|e| {
+                fail(
+                    &mut sources,
+                    Diagnostic::error("IO003", format!("cannot write the trace `{}`: {e}", path.display())),
+                )
+            })?;
+            options.trace = Some(r.sink());
+            Some(r)
+        }
+        None => None,
+    };
     let big = std::fs::metadata(toolpath).map(|m| m.len() > (32 << 20)).unwrap_or(false);
     if big && std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new_spinner();
@@ -145,6 +161,13 @@ pub fn run(args: Args) -> Result<(), Failed> {
     match postc_runtime::run(&post, &mut source, out, options) {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
+            if let Some(recorder) = recorder {
+                let outputs = match &report.output {
+                    Finished::Files(files) => files.clone(),
+                    _ => vec![PathBuf::from("-")],
+                };
+                recorder.finish(&sources, &post, &outputs).map_err(|d| fail(&mut sources, d))?;
+            }
             if let Finished::Files(files) = &report.output
                 && files.len() > 1
             {
@@ -164,6 +187,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                         tolerance: 0.01,
                         format: report::Format::Human,
                         postp: None,
+                        trace: args.trace.as_deref(),
                     };
                     super::verify::verify(&job, &mut sources)
                 }
