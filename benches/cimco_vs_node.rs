@@ -16,7 +16,7 @@ use std::time::Instant;
 use cimco_common::{compile, corpus, node, run_node};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::EventSource;
-use postc_runtime::{Output, RunOptions};
+use postc_runtime::Output;
 
 fn best_of_three(mut f: impl FnMut() -> f64) -> f64 {
     (0..3).map(|_| f()).fold(f64::INFINITY, f64::min)
@@ -52,8 +52,8 @@ fn main() {
         let mut sources = postc_report::source_map();
         let mut source = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
-        let report =
-            postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
+        let report = postc_runtime::run(&post, &mut source, Output::discard(), postc_frontends::run_options(&post))
+            .expect("postc posts");
         events = report.events;
         start.elapsed().as_secs_f64()
     });
@@ -66,7 +66,8 @@ fn main() {
     let postc_post = best_of_three(|| {
         let mut source = postc_ir::event::VecSource::new(all.clone(), postc_ir::FileId(0));
         let start = Instant::now();
-        postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
+        postc_runtime::run(&post, &mut source, Output::discard(), postc_frontends::run_options(&post))
+            .expect("postc posts");
         start.elapsed().as_secs_f64()
     });
     let (mut node_total, mut node_post) = (f64::INFINITY, f64::INFINITY);

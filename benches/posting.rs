@@ -9,7 +9,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use postc_frontends::synthetic::Synthetic;
 use postc_ir::event::{Event, Intent};
 use postc_ir::{EventSource, Post};
-use postc_runtime::{Finished, Output, RunOptions, run};
+use postc_runtime::{Finished, Output, run};
 
 /// The post both sides print: G0/G1 moves, modal X Y Z and F.
 const POST: &str = r#"
@@ -39,7 +39,7 @@ fn post() -> Post {
 
 fn postc_text(post: &Post, moves: u64, out: Output) -> Option<Vec<u8>> {
     let mut source = Synthetic::new("zigzag", moves).unwrap();
-    match run(post, &mut source, out, RunOptions::default()).ok()?.output {
+    match run(post, &mut source, out, postc_frontends::run_options(post)).ok()?.output {
         Finished::Memory(parts) => Some(parts.concat()),
         _ => None,
     }

@@ -199,3 +199,62 @@ fn only_the_edge_touches_files_the_clock_and_the_terminal() {
 fn postp_reads_its_cl_file_through_events_only() {
     assert_eq!(uses("postp/src", &["ClText", ".open(", "read_at("]), Vec::<String>::new());
 }
+
+/// The runtime's whole dependency tree (what `cargo tree -p postc-runtime`
+/// lists) holds no frontend, no script host and no script engine: it
+/// reads IR only, and the host of a post's scripts is handed in.
+#[test]
+fn the_runtime_depends_on_no_frontend_at_any_depth() {
+    let direct = dependencies("runtime");
+    for name in &direct {
+        assert!(
+            !name.starts_with("postc-front") && name != "postc-frontends" && name != "postc-cimco-host",
+            "postc-runtime depends on {name}"
+        );
+    }
+    // Every postc crate the runtime uses, recursively: only the IR.
+    assert_eq!(postc_crates("runtime"), ["postc-ir"]);
+    assert_eq!(postc_crates("ir"), Vec::<String>::new());
+    assert!(!direct.iter().any(|d| d == "rhai"), "postc-runtime depends on rhai");
+}
+
+/// The script host sits beside the CIMCO frontend and uses the runtime,
+/// not the other way round.
+#[test]
+fn the_cimco_script_host_uses_the_runtime_and_the_frontends_names() {
+    assert_eq!(postc_crates("frontends/cimco/host"), ["postc-ir", "postc-runtime", "postc-front-cimco"]);
+    assert!(!postc_crates("frontends/cimco").iter().any(|d| d == "postc-runtime"));
+}
+
+/// The runtime never names a dialect: outside comments, no line of
+/// `runtime/src` says `Dialect::`, CIMCO or VcPost (the check of
+/// `docs/architecture.md`, `grep -rnE 'Dialect::|cimco|vcpost|Cimco|VcPost' runtime/src`).
+#[test]
+fn the_runtime_names_no_dialect() {
+    let mut found = Vec::new();
+    let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("runtime/src")];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            for (i, line) in text.lines().enumerate() {
+                let code = line.trim_start();
+                if code.starts_with("//") {
+                    continue;
+                }
+                // Drop a trailing comment (no string of the runtime holds `//`
+                // before a dialect's name).
+                let code = code.split("//").next().unwrap_or("");
+                let lower = code.to_ascii_lowercase();
+                if code.contains("Dialect::") || lower.contains("cimco") || lower.contains("vcpost") {
+                    found.push(format!("{}:{}: {line}", path.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(found.is_empty(), "the runtime names a dialect:\n{}", found.join("\n"));
+}

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use postc_ir::event::{Event, FeedMove, Move, Tool, ToolpathStart, VecSource};
 use postc_ir::{Body, FileId, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>, SourceMap) {
     let mut sources = postc_report::source_map();
@@ -33,7 +33,7 @@ fn events() -> Vec<Event> {
 
 fn run(post: &Post) -> Result<String, Vec<postc_ir::Diagnostic>> {
     let mut source = VecSource::new(events(), FileId(0));
-    let report = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default())?;
+    let report = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post))?;
     match report.output {
         Finished::Memory(parts) => Ok(String::from_utf8_lossy(&parts.concat()).into_owned()),
         _ => unreachable!("memory output"),

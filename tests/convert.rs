@@ -104,7 +104,11 @@ fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
         Ok(s) => s,
         Err(d) => return (Err(vec![format!("{} {}", d.code, d.message)]), Vec::new()),
     };
-    let options = RunOptions { date: Some("2026-01-01".into()), time: Some("12:00".into()), ..RunOptions::default() };
+    let options = RunOptions {
+        date: Some("2026-01-01".into()),
+        time: Some("12:00".into()),
+        ..postc_frontends::run_options(post)
+    };
     match postc_runtime::run(post, &mut source, Output::memory(), options) {
         Ok(report) => {
             let warnings = report.warnings.iter().map(|d| format!("{} {}", d.code, d.message)).collect();

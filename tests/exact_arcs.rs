@@ -18,7 +18,7 @@ fn post(post: &Path, toolpath: &Path, exact_arcs: bool) -> String {
     let compiled = postc_frontends::compile_post(post, None, &mut sources);
     let post = compiled.post.unwrap();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    let options = RunOptions { exact_arcs, ..RunOptions::default() };
+    let options = RunOptions { exact_arcs, ..postc_frontends::run_options(&post) };
     match postc_runtime::run(&post, &mut source, Output::memory(), options).unwrap().output {
         Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
         _ => unreachable!(),

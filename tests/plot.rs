@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use postc_ir::Post;
-use postc_runtime::{Finished, RunOptions};
+use postc_runtime::Finished;
 use postc_verify::Settings;
 
 fn root() -> PathBuf {
@@ -34,7 +34,7 @@ fn compile(text: &str) -> Post {
 fn post(post: &Post) -> String {
     let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),

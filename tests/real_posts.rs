@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::diagnostic::has_errors;
 use postc_ir::{Post, Severity};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -40,7 +40,7 @@ fn post_standard(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
     let mut source =
         postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("a memory run did not finish in memory".into()),

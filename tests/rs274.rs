@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::event::{ArcDir, Event};
 use postc_ir::{EventSource, Post, Quantity, ValueSource};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 /// Output extensions of posts that write G-code (HPGL, Heidenhain and
 /// ShopBot posts write other languages).
@@ -205,16 +205,17 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         for toolpath in &toolpaths {
             let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
             let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-            let program = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
-                Ok(r) => match r.output {
-                    Finished::Memory(parts) => parts,
-                    _ => unreachable!(),
-                },
-                Err(d) => {
-                    failures.push(format!("{label}: posting failed: {d:?}"));
-                    continue;
-                }
-            };
+            let program =
+                match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
+                    Ok(r) => match r.output {
+                        Finished::Memory(parts) => parts,
+                        _ => unreachable!(),
+                    },
+                    Err(d) => {
+                        failures.push(format!("{label}: posting failed: {d:?}"));
+                        continue;
+                    }
+                };
             if program.len() != 1 {
                 continue; // tape-split programs are checked part by part elsewhere
             }

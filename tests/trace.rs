@@ -34,7 +34,7 @@ fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Tr
         trace: Some(Box::new(move |t: &postc_runtime::trace::TraceLine<'_>| {
             sink.borrow_mut().push((t.part, t.line, t.span))
         })),
-        ..RunOptions::default()
+        ..postc_frontends::run_options(&post)
     };
     let report = postc_runtime::run(&post, &mut source, Output::memory(), options).ok()?;
     let Finished::Memory(parts) = report.output else { panic!("a memory run did not finish in memory") };

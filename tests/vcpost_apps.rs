@@ -34,7 +34,7 @@ fn runaway(body: &str, budget: Option<u64>) -> (String, usize) {
         post.options.step_budget = b;
     }
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
+    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
         Ok(_) => panic!("{body}: the runaway loop was not stopped"),
         Err(d) => d,
     };
@@ -57,7 +57,8 @@ fn endless_recursion_stops() {
     let mut sources = postc_report::source_map();
     let (post, _) = compile("Sub Again\n  Again\nEnd Sub\nSub GOTO\n  Again\nEnd Sub\n", &mut sources);
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()).err().unwrap();
+    let errors =
+        postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)).err().unwrap();
     assert!(errors.iter().any(|d| d.code == "RT004"), "{errors:?}");
 }
 
@@ -98,9 +99,13 @@ fn composites_functions_read_the_calls_lists() {
         SubCall { sub: "NoSuchSub".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Warn },
         SubCall { sub: "Optional".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Skip },
     ];
-    let report =
-        postc_runtime::calls::run_calls(&post, &mut calls.into_iter(), Output::memory(), RunOptions::default())
-            .unwrap();
+    let report = postc_runtime::calls::run_calls(
+        &postc_frontends::for_calls(&post),
+        &mut calls.into_iter(),
+        Output::memory(),
+        RunOptions::default(),
+    )
+    .unwrap();
     let Finished::Memory(parts) = report.output else { panic!() };
     assert_eq!(String::from_utf8_lossy(&parts[0]), "L5,7.5,2,0\nL0,0,0,0\nL0,0,0,0\n");
     assert_eq!(report.warnings.iter().map(|d| d.code).collect::<Vec<_>>(), ["RT030"]);

@@ -86,17 +86,26 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         if !diagnostics.is_empty() {
             return Err(sources.render(&diagnostics, false));
         }
-        let result =
-            postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
+        let result = postc_runtime::calls::run_calls(
+            &postc_frontends::for_calls(post),
+            &mut calls.into_iter(),
+            Output::memory(),
+            RunOptions::default(),
+        );
         memory(result, &mut sources)
     } else if postc_front_vcpost::composites::is_composites_file(input, &postc_report::FsLoader) {
         let mut reader =
             postc_front_vcpost::composites::open(input, &mut sources, post, Vec::new()).map_err(|d| d.message)?;
-        let result = postc_runtime::calls::run_calls(post, &mut reader, Output::memory(), RunOptions::default());
+        let result = postc_runtime::calls::run_calls(
+            &postc_frontends::for_calls(post),
+            &mut reader,
+            Output::memory(),
+            RunOptions::default(),
+        );
         memory(result, &mut sources)
     } else {
         let mut source = postc_frontends::open_toolpath(input, &mut sources).map_err(|d| d.message)?;
-        let result = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default());
+        let result = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post));
         memory(result, &mut sources)
     }
 }

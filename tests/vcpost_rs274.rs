@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::event::{ArcDir, Event, Plane};
 use postc_ir::{EventSource, Post};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -93,7 +93,7 @@ fn matches(e: &Move, c: &Move, tol: f64) -> bool {
 fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(mut parts) if parts.len() == 1 => Ok(parts.remove(0)),
             _ => Err("not one program in memory".into()),

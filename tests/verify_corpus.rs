@@ -12,7 +12,7 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use postc_ir::Post;
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
 fn root() -> PathBuf {
@@ -168,7 +168,7 @@ fn files(dir: &Path, ext: &[&str], recurse: bool) -> Vec<PathBuf> {
 fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("not in memory".into()),

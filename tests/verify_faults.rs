@@ -14,7 +14,7 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Post, Severity};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
 fn root() -> PathBuf {
@@ -63,7 +63,7 @@ fn compile(text: &str) -> Post {
 fn post(post: &Post, toolpath: &Path) -> String {
     let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),

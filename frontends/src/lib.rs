@@ -65,6 +65,40 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     }
 }
 
+/// The host that runs a compiled post's scripts, chosen by the scripts'
+/// language, never by the post's dialect: Rhai scripts (what CIMCO
+/// functions that do not lower to native IR become) run in the CNC-Calc
+/// host, `postc-cimco-host`. `None` when the post has no script postc
+/// runs (none, or only Lua, which is kept and not run). Everything that
+/// runs a post passes this in [`postc_runtime::RunOptions::script_host`].
+pub fn script_host(post: &Post) -> Option<postc_runtime::script_host::ScriptHostFactory> {
+    if post.scripts.iter().any(|s| s.language == postc_ir::ScriptLanguage::Rhai) {
+        Some(postc_cimco_host::compile)
+    } else {
+        None
+    }
+}
+
+/// The options of a run of `post` with nothing overridden: the defaults,
+/// and the post's script host ([`script_host`]).
+pub fn run_options(post: &Post) -> postc_runtime::RunOptions {
+    postc_runtime::RunOptions { script_host: script_host(post), ..postc_runtime::RunOptions::default() }
+}
+
+/// The post to run over Sub calls (`postc_runtime::calls::run_calls`):
+/// a VcPost post's functions whose values come from the calls' lists
+/// (`getNthLength1`, ...) read tables of globals the lists fill
+/// ([`postc_front_vcpost::call_tables`]). Every other post is run as it is.
+pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
+    match post.info.dialect {
+        Dialect::VcPost => match postc_front_vcpost::call_tables::lower(post) {
+            Some(lowered) => std::borrow::Cow::Owned(lowered),
+            None => std::borrow::Cow::Borrowed(post),
+        },
+        _ => std::borrow::Cow::Borrowed(post),
+    }
+}
+
 /// Reads (through the source map's loader) and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     match sources.loader().read(path) {

@@ -234,7 +234,7 @@ pub fn post_compiled(
     };
     let mut source = Transform::new(reader, machine);
     // No file name: the program's first PARTNO is the CL file's own.
-    let run = RunOptions { file: Some(FileInfo::default()), now, ..RunOptions::default() };
+    let run = RunOptions { file: Some(FileInfo::default()), now, ..postc_frontends::run_options(post) };
     let prepend = |mut d: Vec<Diagnostic>| {
         d.splice(0..0, head.warnings.iter().cloned());
         d

@@ -16,10 +16,12 @@
 //! - [`apt_words`]: events as APT records calling the handler of each
 //!   major word (VcPost posts, the `postp` controllers);
 //! - [`calls`]: runs a post over Sub calls instead of events (VcPost
-//!   probe-cycle tables and composites event files), with [`host`] the
-//!   functions the runtime provides to those posts;
-//! - [`script`]: the Rhai host for CIMCO functions that do not lower to
-//!   native IR, and what CIMCO posts need of events;
+//!   probe-cycle tables and composites event files), with [`call_tables`]
+//!   the functions whose values a call's lists give;
+//! - [`script_host`]: the trait through which functions kept as scripts
+//!   run; the host itself comes from the caller ([`RunOptions::script_host`]);
+//! - [`lathe`]: the `lathe` option, turning events into the runtime's plane;
+//! - [`js`]: JavaScript's conversions, which the IR's builtins name;
 //! - [`output`]: the [`output::Sink`] trait the caller's sinks implement
 //!   (files, standard output: the command line), the memory and discard
 //!   sinks, and the names of tape-split parts;
@@ -33,17 +35,20 @@
 //! stays flat whatever the toolpath's length.
 
 pub mod apt_words;
+mod blocks;
+pub mod call_tables;
 pub mod calls;
 pub mod clock;
 pub mod engine;
 pub mod geometry;
-pub mod host;
 mod interp;
+pub mod js;
+pub mod lathe;
 pub mod machine;
 pub mod number;
 pub mod output;
 pub mod profile;
-pub mod script;
+pub mod script_host;
 pub mod sections;
 mod slots;
 pub mod trace;
@@ -74,6 +79,9 @@ pub struct RunOptions {
     pub arc_tolerance: Option<f64>,
     /// Called with the number of events handled, every 65536 events.
     pub progress: Option<Box<dyn FnMut(u64)>>,
+    /// Builds the host that runs the post's scripts, if it has any
+    /// (`postc_frontends::script_host` picks it by the scripts' language).
+    pub script_host: Option<script_host::ScriptHostFactory>,
     /// Called with the provenance of every block written (`--trace`).
     pub trace: Option<trace::TraceSink>,
     /// Told of every handler run and function call (`bench --profile`).
@@ -106,7 +114,7 @@ pub fn run<S: EventSource + ?Sized>(
         post = &post_storage;
     }
     let mut machine =
-        machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+        machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
     (machine.default_date, machine.default_time) = clock::format_utc(options.now.unwrap_or(0));
@@ -128,16 +136,21 @@ pub fn run<S: EventSource + ?Sized>(
         diagnostics.extend(engine.warnings);
         Err(diagnostics)
     };
-    if let Err(d) = script::attach(&mut engine) {
-        diagnostics.push(d);
-        return fail(diagnostics, engine);
+    if let (false, Some(make)) = (post.scripts.is_empty(), options.script_host) {
+        match make(&engine) {
+            Ok(host) => engine.script_host = Some(host),
+            Err(d) => {
+                diagnostics.push(d);
+                return fail(diagnostics, engine);
+            }
+        }
     }
     let lathe = post.options.lathe;
     if let Err(d) = engine.init() {
         diagnostics.push(*d);
         return fail(diagnostics, engine);
     }
-    let cimco = post.info.dialect == postc_ir::Dialect::Cimco;
+    let observe = engine.script_host.is_some();
     while let Some((mut event, span)) = source.next_event(&mut diagnostics) {
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
@@ -153,10 +166,10 @@ pub fn run<S: EventSource + ?Sized>(
             t.event_span = Some(span);
         }
         if lathe {
-            event = script::turn_event(event);
+            event = lathe::turn_event(event);
         }
-        if cimco {
-            script::observe(&mut engine, &event);
+        if observe && let Some(host) = engine.script_host.as_mut() {
+            host.observe(&event);
         }
         if let Err(d) = dispatch.event(&mut engine, &event) {
             diagnostics.push(*d);

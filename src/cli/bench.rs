@@ -54,7 +54,8 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
         },
     };
-    let mut options = super::clock::run_options();
+    let mut options =
+        postc_runtime::RunOptions { script_host: postc_frontends::script_host(&post), ..super::clock::run_options() };
     let profiler = args.profile.then(super::profile::Profiler::default);
     if let Some(p) = &profiler {
         options.profile = Some(Box::new(p.clone()));

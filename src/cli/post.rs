@@ -116,7 +116,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ));
     }
     let post = load_post(post_path, args.dialect, &mut sources)?;
-    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..super::clock::run_options() };
+    let mut options = RunOptions {
+        exact_arcs: args.exact_arcs,
+        script_host: postc_frontends::script_host(&post),
+        ..super::clock::run_options()
+    };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));

@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use postc_ir::Post;
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 pub fn corpus() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus")
@@ -46,7 +46,7 @@ pub fn post_parts(post: &Post, toolpath: &Path) -> Result<Vec<Vec<u8>>, String> 
     let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources)
         .map_err(|d| format!("cannot open {}: {} {}", toolpath.display(), d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts),
             _ => Err("a memory run did not finish in memory".into()),

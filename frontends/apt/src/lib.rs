@@ -98,7 +98,7 @@ mod dispatch;
 mod grammar;
 mod lexer;
 mod lines;
-mod machine;
+mod machine_records;
 mod motion;
 mod number;
 mod reader;

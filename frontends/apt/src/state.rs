@@ -13,7 +13,7 @@ use postc_ir::units::Units;
 use crate::circle::{CircleSpec, V3};
 use crate::cycle::CycleSpec;
 use crate::diagnostics as diag;
-use crate::machine::{self, FeedSpec, ToolLoad};
+use crate::machine_records::{self, FeedSpec, ToolLoad};
 use crate::window::{LIMIT, Window};
 use crate::words::{Problem, Rec};
 
@@ -267,7 +267,7 @@ impl Core {
     pub(crate) fn tool_load(&mut self, rec: &Rec<'_>, skip: usize, diags: &mut Vec<Diagnostic>) -> Result<(), Problem> {
         let span = rec.span();
         let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "tool load"));
-        let load = machine::parse_tool_load(rec, skip, &mut ignored)?;
+        let load = machine_records::parse_tool_load(rec, skip, &mut ignored)?;
         self.end_synthesized_toolpath(span);
         if self.pending_tool.is_some() {
             self.place_tool();
@@ -282,7 +282,7 @@ impl Core {
     /// A `$$->` comment that Creo writes for a record it did not output:
     /// the cutter diameter is taken from `CUTTER`.
     pub fn echoed_cutter(&mut self, rec: &Rec<'_>) {
-        if let Some(d) = machine::cutter_diameter(rec) {
+        if let Some(d) = machine_records::cutter_diameter(rec) {
             self.set_cutter(d, rec.span());
         }
     }

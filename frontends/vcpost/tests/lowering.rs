@@ -100,8 +100,7 @@ fn register_properties_and_defaults() {
 
 #[test]
 fn for_loops_keep_bounds_and_pick_the_test_by_the_step() {
-    let text =
-        "Sub A\n  Dim i\n  Count = 3\n  For i = 10 To 1 Step -2\n    Out \"x\"\n  Next\n  For i = 1 To Count Step S\n  Next i\nEnd Sub\n";
+    let text = "Sub A\n  Dim i\n  Count = 3\n  For i = 10 To 1 Step -2\n    Out \"x\"\n  Next\n  For i = 1 To Count Step S\n  Next i\nEnd Sub\n";
     let with_spans = post_with_spans(text);
     assert!(matches!(body(&with_spans, "A")[3], Stmt::While { span: Some(_), .. }), "a loop keeps its place");
     let p = post(text);

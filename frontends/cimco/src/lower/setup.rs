@@ -194,7 +194,7 @@ fn eval(e: &Expr, model: &Model, env: &HashMap<String, Const>, at: usize) -> Opt
                 if model.global(&g).is_some() {
                     model.constant(&g).cloned()
                 } else {
-                    super::host::constant(&g)
+                    super::builtins::constant(&g)
                 }
             }
             Symbol::TopFn(_) => None,

@@ -9,7 +9,7 @@ use postc_ir::{Diagnostic, Script, Span};
 
 use crate::ast::*;
 
-use super::host;
+use super::builtins;
 use super::model::Model;
 use super::scope::{Symbol, Visit, walk_stmts};
 use super::setup::Setup;
@@ -51,7 +51,7 @@ impl<'a> Visit<'a> for Names<'_, 'a, '_> {
                 if let Symbol::Global(g) = self.model.scopes.resolve(name, self.at)
                     && self.model.global(&g).is_none()
                     && !self.model.flattened.contains(&g)
-                    && !host::knows(&g)
+                    && !builtins::knows(&g)
                     && self.seen.insert(g.clone())
                 {
                     self.diags.push(
