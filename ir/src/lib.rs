@@ -95,6 +95,7 @@
 
 pub mod calls;
 pub mod code;
+pub mod codes;
 pub mod diagnostic;
 pub mod event;
 pub mod format;

@@ -1,6 +1,7 @@
 //! `postc check`: lints posts and validates toolpaths, printing every
 //! diagnostic; exits 1 when any file has an error.
 
+use postc_ir::codes;
 use std::path::PathBuf;
 
 use postc_ir::{Diagnostic, SourceMap};
@@ -19,20 +20,28 @@ pub struct Args {
     /// The posts' dialect, when their extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    #[command(flatten)]
+    levels: super::levels::Flags,
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = SourceMap::new();
+    args.levels.check(&mut sources)?;
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();
         let diagnostics = if !file.exists() {
-            vec![Diagnostic::error("IO001", format!("`{name}` does not exist"))]
+            vec![Diagnostic::error(codes::IO001, format!("`{name}` does not exist"))]
         } else if postc_frontends::is_toolpath(file) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
             postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources).diagnostics
         };
+        let mut diagnostics = diagnostics;
+        match args.levels.rules_for(Some(file)) {
+            Ok(rules) => rules.apply(&mut diagnostics),
+            Err(d) => diagnostics.push(d),
+        }
         all.extend(diagnostics.into_iter().map(|d| (name.clone(), d)));
     }
     let errors = all.iter().filter(|(_, d)| d.is_error()).count();

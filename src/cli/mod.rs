@@ -4,6 +4,7 @@
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
 //! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc explain CODE                                          # one diagnostic code's documentation
 //! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
@@ -21,7 +22,9 @@
 mod bench;
 mod check;
 mod convert;
+mod explain;
 mod inspect;
+mod levels;
 mod lsp;
 mod plot;
 mod post;
@@ -35,6 +38,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use postc_ir::codes::LevelRules;
 use postc_ir::{Diagnostic, Dialect, Post, SourceMap};
 
 /// postc: posts CNC toolpaths through Vectric, CIMCO and VcPost post processors.
@@ -53,6 +57,8 @@ enum Command {
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),
+    /// Print the documentation of a diagnostic code (PP027): what it means, an example, the fix.
+    Explain(explain::Args),
     /// Print a post's IR as RON.
     Inspect(inspect::Args),
     /// Measure posting throughput over a toolpath or a synthetic one.
@@ -103,6 +109,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
+        Command::Explain(args) => explain::run(args),
         Command::Convert(args) => convert::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Bench(args) => bench::run(args),
@@ -130,7 +137,18 @@ pub(crate) fn load_post(
     dialect: Option<DialectArg>,
     sources: &mut SourceMap,
 ) -> Result<Post, Failed> {
-    let compiled = match path {
+    load_post_with(path, dialect, sources, &LevelRules::default())
+}
+
+/// [`load_post`] with severity rules (`--deny`, `--allow`, `postc.toml`)
+/// applied to the post's diagnostics.
+pub(crate) fn load_post_with(
+    path: Option<&PathBuf>,
+    dialect: Option<DialectArg>,
+    sources: &mut SourceMap,
+    rules: &LevelRules,
+) -> Result<Post, Failed> {
+    let mut compiled = match path {
         Some(p) => postc_frontends::compile_post(p, dialect.map(Into::into), sources),
         None => postc_frontends::compile_post_bytes(
             std::path::Path::new(crate::default_post::NAME),
@@ -139,6 +157,7 @@ pub(crate) fn load_post(
             sources,
         ),
     };
+    rules.apply(&mut compiled.diagnostics);
     report::eprint(sources, &compiled.diagnostics);
     match compiled.post {
         Some(post) if !compiled.has_errors() => Ok(post),
