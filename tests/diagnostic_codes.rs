@@ -28,7 +28,7 @@ fn sources(dir: &Path, found: &mut Vec<(String, String)>) {
 fn all_sources() -> Vec<(String, String)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut found = Vec::new();
-    for dir in ["ir", "runtime", "frontends", "backends", "postp", "verify", "src", "lsp"] {
+    for dir in ["ir", "runtime", "frontends", "backends", "postp", "verify", "lint", "src", "lsp"] {
         sources(&root.join(dir), &mut found);
     }
     found

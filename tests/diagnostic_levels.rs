@@ -139,3 +139,19 @@ fn explain_prints_a_code_and_refuses_an_unknown_one() {
     assert_eq!(not_a_code.status.code(), Some(1));
     assert!(stderr(&not_a_code).contains("is not a diagnostic code"));
 }
+
+#[test]
+fn a_denied_runtime_warning_removes_the_written_program() {
+    let dir = setup();
+    // The post has no DWELL_MOVE section: drilling with dwells warns RT010 while posting.
+    let tp = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/toolpaths/drill_mm.ron").display().to_string();
+    let warned = postc(dir.path(), &["post", "--allow", "PP027", "post/w.pp", &tp, "-o", "out.tap"]);
+    assert!(warned.status.success(), "{}", stderr(&warned));
+    assert!(stderr(&warned).contains("warning[RT010]"), "{}", stderr(&warned));
+    assert!(dir.path().join("out.tap").exists());
+
+    let denied = postc(dir.path(), &["post", "--allow", "PP027", "--deny", "RT", "post/w.pp", &tp, "-o", "out.tap"]);
+    assert_eq!(denied.status.code(), Some(1), "{}", stderr(&denied));
+    assert!(stderr(&denied).contains("error[RT010]"), "{}", stderr(&denied));
+    assert!(!dir.path().join("out.tap").exists());
+}

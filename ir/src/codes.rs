@@ -80,6 +80,8 @@ pub struct Section {
     pub prefixes: &'static [&'static str],
     /// A paragraph above the section's table, or empty.
     pub intro: &'static str,
+    /// An extra column of the section's table: its title, and its cell for each code.
+    pub extra: Option<(&'static str, &'static [(&'static str, &'static str)])>,
 }
 
 /// The prefixes: where each group of codes comes from.
@@ -97,27 +99,49 @@ pub const PREFIXES: &[(&str, &str)] = &[
     ("IR", "posts written as IR"),
     ("CV", "`postc convert` (`backends/`)"),
     ("VF", "`postc verify`: findings in a G-code program against its toolpath (`verify/`, `docs/verify.md`)"),
+    ("LN", "lints over a compiled post (`lint/`): mistakes that compile and only show on the machine"),
 ];
 
 /// The sections of `docs/diagnostics.md`, in order.
 pub const SECTIONS: &[Section] = &[
-    Section { title: "Vectric posts (PP)", prefixes: &["PP"], intro: "" },
-    Section { title: "CIMCO posts (JS)", prefixes: &["JS"], intro: "" },
-    Section { title: "VcPost posts (VC)", prefixes: &["VC"], intro: "" },
-    Section { title: "VcPost probe tables (PT)", prefixes: &["PT"], intro: "" },
-    Section { title: "VcPost composites files (CP)", prefixes: &["CP"], intro: "" },
-    Section { title: "APT CL files (CL)", prefixes: &["CL"], intro: "" },
-    Section { title: "postp (PX)", prefixes: &["PX"], intro: "" },
+    Section { title: "Vectric posts (PP)", prefixes: &["PP"], intro: "", extra: None },
+    Section { title: "CIMCO posts (JS)", prefixes: &["JS"], intro: "", extra: None },
+    Section { title: "VcPost posts (VC)", prefixes: &["VC"], intro: "", extra: None },
+    Section { title: "VcPost probe tables (PT)", prefixes: &["PT"], intro: "", extra: None },
+    Section { title: "VcPost composites files (CP)", prefixes: &["CP"], intro: "", extra: None },
+    Section { title: "APT CL files (CL)", prefixes: &["CL"], intro: "", extra: None },
+    Section { title: "postp (PX)", prefixes: &["PX"], intro: "", extra: None },
     Section {
         title: "Runtime, files and command line (RT, TP, IO, IR)",
         prefixes: &["IO", "IR", "TP", "RT"],
         intro: "",
+        extra: None,
     },
-    Section { title: "Converting posts (CV)", prefixes: &["CV"], intro: "" },
+    Section { title: "Converting posts (CV)", prefixes: &["CV"], intro: "", extra: None },
     Section {
         title: "postc verify (VF)",
         prefixes: &["VF"],
         intro: "Findings of `postc verify` (`docs/verify.md`). Each names the program's\nline and column; those about a move also point at the toolpath move.",
+        extra: None,
+    },
+    Section {
+        title: "Lints (LN)",
+        prefixes: &["LN"],
+        intro: "`postc check` runs the lints of `lint/` (one rule per file in\n`lint/src/rules/`) on every post that compiles without errors, whatever\nits dialect; `--product cut2d|vcarve|aspire|cut3d|photovcarve` adds what\nthat Vectric product does not support. The last column is how many of the\n112 real Vectric posts of `../shared/corpus/vectric` each rule fires on\n(`cargo test --test lint_corpus -- --nocapture`, 2026-11-25), with\nexamples; the project's own posts lint clean.",
+        extra: Some((
+            "real posts",
+            &[
+                ("LN001", "0"),
+                ("LN002", "9 (Marlin posts that switch a router on and off)"),
+                ("LN003", "17 (grbl, estlcam)"),
+                ("LN004", "15 (grbl TC, Laguna, Haas: a Haas M6 retracts by itself, the others do not)"),
+                ("LN005", "6 (Buildbotics: `(*.gcode)` with `FILE_EXTENSION = \"ngc\"`)"),
+                ("LN006", "— (only with `--product`)"),
+                ("LN007", "0"),
+                ("LN008", "0"),
+                ("LN009", "0"),
+            ],
+        )),
     },
 ];
 
@@ -218,20 +242,35 @@ const INTRO: &str = include_str!("codes_intro.md");
 
 /// `docs/diagnostics.md`, rendered from the registry.
 pub fn markdown() -> String {
-    let mut out = String::from(INTRO.trim_end());
+    // The intro's first part, the prefix table, then the intro's sections.
+    let (head, rest) = INTRO.split_once("\n## ").map_or((INTRO, ""), |(h, r)| (h, r));
+    let mut out = String::from(head.trim_end());
     out.push_str("\n\n| prefix | from |\n|---|---|\n");
     for (prefix, from) in PREFIXES {
         let _ = writeln!(out, "| `{prefix}` | {from} |");
+    }
+    if !rest.is_empty() {
+        let _ = write!(out, "\n## {}\n", rest.trim_end());
     }
     for section in SECTIONS {
         let _ = write!(out, "\n## {}\n\n", section.title);
         if !section.intro.is_empty() {
             let _ = write!(out, "{}\n\n", section.intro);
         }
-        out.push_str("| code | severity | meaning |\n|---|---|---|\n");
+        match section.extra {
+            Some((title, _)) => {
+                let _ = write!(out, "| code | severity | meaning | {title} |\n|---|---|---|---|\n");
+            }
+            None => out.push_str("| code | severity | meaning |\n|---|---|---|\n"),
+        }
         let codes: Vec<&Code> = ALL.iter().filter(|c| section.prefixes.iter().any(|p| c.code.starts_with(p))).collect();
         for c in &codes {
-            let _ = writeln!(out, "| {} | {} | {} |", c.code, severity_word(c), c.summary.replace('|', "\\|"));
+            let _ = write!(out, "| {} | {} | {} |", c.code, severity_word(c), c.summary.replace('|', "\\|"));
+            if let Some((_, cells)) = section.extra {
+                let cell = cells.iter().find(|(code, _)| *code == c.code).map_or("", |(_, cell)| cell);
+                let _ = write!(out, " {} |", cell.replace('|', "\\|"));
+            }
+            out.push('\n');
         }
         for c in codes.iter().filter(|c| !c.meaning.is_empty() || !c.example.is_empty() || !c.fix.is_empty()) {
             let _ = write!(out, "\n### {}\n\n", c.code);
@@ -1182,6 +1221,13 @@ declare_codes! {
     /// to standard output one after the other.
     IO008: Warning, "the post splits its output into parts (TAPE_SPLITTING) but there is no `-o`: the parts go to standard output one after the other",
         fix = "Give `-o OUT` to write each part to its own file.";
+    /// `postc explain TRACE.jsonl LINE` reads the trace `postc post --trace` wrote; a line of
+    /// this file is not a trace record.
+    IO010: Error, "`postc explain`: a line of the trace file is not a postc trace record",
+        fix = "Give the trace file `postc post --trace` wrote, unchanged.";
+    /// The trace has no record for that NC line (of that output file, with `--output`).
+    IO011: Error, "`postc explain`: the trace has no record for that line (of that output file)",
+        fix = "Check the line number (from 1) and, for a program split into parts, which part with `--output`.";
     /// A post written as IR in RON (as `postc convert --to ron` writes) does not read.
     IR001: Error, "a post written as IR in RON does not read",
         fix = "Correct the RON at the place the message gives.";
@@ -1395,4 +1441,49 @@ declare_codes! {
     /// generic controller and errors for the named ones.
     VF042: Error | Warning, "a comment character the controller refuses: `(` inside a comment, `%` or `;` on Fanuc/Haas, control characters, non-ASCII on Fanuc/Haas/grbl (warnings for the generic controller)",
         fix = "Filter the comment text in the post (SUBSTITUTE in a Vectric post).";
+    /// The post writes feed moves, but no section prints a feed rate, so the machine cuts at
+    /// whatever feed was set before the program ran.
+    LN001: Warning, "a G-code post writes feed moves but no section prints a feed rate",
+        fix = "Print `[F]` on the first feed move (FIRST_FEED_MOVE) or on every feed move.";
+    /// The post starts the spindle (SPINDLE_ON, or M3/M4 in the header or tool change) but never
+    /// prints a spindle speed, so every tool runs at the speed the spindle was left at. Posts for
+    /// machines whose spindle speed is set by hand (a trim router) do this on purpose.
+    LN002: Warning, "the post starts the spindle (SPINDLE_ON, or M3/M4 in the header or tool change) but never prints a spindle speed",
+        fix = "Print `[S]` with the spindle start, unless the speed is set by hand.";
+    /// A comment line prints text the user chose (a tool or toolpath name, notes, a file name)
+    /// between `(` and `)`; a name with a `)` in it ends the comment early and the controller
+    /// reads the rest as words.
+    LN003: Warning, "a `( )` comment prints a name or notes (`[TOOLPATH_NAME]`, `[TOOLNAME]`, ...) that can hold `)`, and `SUBSTITUTE` does not replace parentheses",
+        example = "begin HEADER\n\"( [TOOLPATH_NAME] )\"",
+        fix = "Replace parentheses in such text with `SUBSTITUTE = \"([)]\"`, or drop the name from the comment.";
+    /// The tool change section changes the tool (M6) before anything moves Z up or home: on a
+    /// machine that does not retract by itself, the tool is pulled sideways out of the work. (A
+    /// Haas M6 retracts by itself.)
+    LN004: Warning, "TOOLCHANGE changes the tool (M6) before any line raises Z or goes home (G28/G30/G53)",
+        example = "begin TOOLCHANGE\n\"M6 T[T]\"",
+        fix = "Raise Z (or go home with G28/G30/G53) before the M6.";
+    /// The `POST_NAME` promises what the post does not do. The names of Vectric's own posts
+    /// follow a convention (seed 000): `(mm)`/`(inch)` the units, `(*.tap)` the file extension,
+    /// `Arc`/`Arcs` true arcs, `ATC` tool changes, `TS n` tape splitting, `WX`/`WY` a wrapped
+    /// axis. A user picks a post by that name.
+    LN005: Warning, "`POST_NAME` says `(mm)`/`(inch)`, `(*.ext)`, Arcs or no arcs, ATC, `TS`/`TSn`, WX/WY, and the post does otherwise",
+        example = "POST_NAME = \"My router (mm) (*.tap)\"\nFILE_EXTENSION = \"nc\"",
+        fix = "Make the name say what the post does, or the post do what the name says.";
+    /// With `postc check --product NAME`: the chosen Vectric product's post processor does not
+    /// support this statement, section or variable (seed 000's table); that product rejects it or
+    /// silently ignores it.
+    LN006: Warning, "with `--product`: a statement, section or variable that Vectric product does not support, or accepts and ignores (seed 000's table)",
+        fix = "Remove it, or use the post with a product that supports it.";
+    /// A variable is declared and never printed (a Vectric `VAR` under a name of the post's own,
+    /// a CIMCO `createVariable`). It is dead text a reader must still understand, and often a
+    /// sign of a typo. `VAR`s under their standard names are the guides' template and are not
+    /// reported.
+    LN007: Warning, "a variable is declared and never printed (a Vectric `VAR` under a name of the post's own, a CIMCO `createVariable`); `VAR`s under their standard names are the guides' template and are not reported",
+        fix = "Print it where it was meant to be printed, or remove it.";
+    /// A CIMCO `createFormat` that no variable or `format()` call uses.
+    LN008: Warning, "a CIMCO `createFormat` that no variable or `format()` call uses",
+        fix = "Use it where it was meant to be used, or remove it.";
+    /// A CIMCO function that nothing calls (entry points `on...` excepted).
+    LN009: Warning, "a CIMCO function that nothing calls (entry points `on...` excepted)",
+        fix = "Call it, correct the name of its caller, or remove it.";
 }

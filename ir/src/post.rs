@@ -64,6 +64,9 @@ pub struct PostInfo {
     pub subs: Vec<crate::calls::SubSignature>,
     /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
     pub notes: Vec<String>,
+    /// Where the post names itself (the Vectric `POST_NAME` statement).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 /// The encoding a post file was read in.
@@ -502,7 +505,7 @@ impl Post {
         &self.functions[id.index()]
     }
 
-    /// Forgets every span: of handlers, functions, scripts, variables,
+    /// Forgets every span: of the post's name, handlers, functions, scripts, variables,
     /// formats, output lines and loops. A post whose spans point into
     /// files it does not come with (a RON conversion) drops them, so that
     /// no diagnostic points into the wrong file.
@@ -517,6 +520,7 @@ impl Post {
                 crate::visit::walk_stmt_mut(self, stmt);
             }
         }
+        self.info.span = None;
         self.handlers.iter_mut().for_each(|h| h.span = None);
         self.functions.iter_mut().for_each(|f| f.span = None);
         self.variables.iter_mut().for_each(|v| v.span = None);

@@ -66,6 +66,8 @@ pub struct Engine<'p> {
     pub event_span: Span,
     /// The script host and what CIMCO posts need besides (`script`).
     pub(crate) cimco: crate::script::Ext,
+    /// Provenance of each block, when the run is traced.
+    pub(crate) trace: Option<Box<crate::trace::Tracer>>,
 }
 
 impl<'p> Engine<'p> {
@@ -97,6 +99,7 @@ impl<'p> Engine<'p> {
             depth: 0,
             event_span: Span::default(),
             cimco: crate::script::Ext::default(),
+            trace: None,
         }
     }
 
@@ -133,10 +136,30 @@ impl<'p> Engine<'p> {
         match self.sections[section as usize] {
             Some(i) => {
                 let body = self.prepared[i as usize].clone();
+                if let Some(t) = self.trace.as_deref_mut() {
+                    let h = &self.post.handlers[i as usize];
+                    t.handler = Some((h.key.clone(), h.span));
+                }
                 self.run_prepared(&body)?;
                 Ok(true)
             }
             None => Ok(false),
+        }
+    }
+
+    /// Tells the tracer that a new tape-split part starts.
+    pub(crate) fn trace_new_part(&mut self) {
+        if let Some(t) = self.trace.as_deref_mut() {
+            t.new_part();
+        }
+    }
+
+    /// Hands the blocks written since the last call to the tracer, with
+    /// the span of the statement that wrote them.
+    #[cold]
+    pub(crate) fn trace_after(&mut self, span: Option<Span>) {
+        if let Some(t) = self.trace.as_deref_mut() {
+            t.report(self.out.blocks(), self.out.blocks_in_part(), span);
         }
     }
 
@@ -174,7 +197,7 @@ impl<'p> Engine<'p> {
     fn run_prepared(&mut self, body: &[Prepared<'p>]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {
             match stmt {
-                Prepared::Line(ops) => {
+                Prepared::Line(ops, span) => {
                     for op in ops {
                         match op {
                             Op::Text(bytes) => self.out.buf.extend_from_slice(bytes),
@@ -207,6 +230,9 @@ impl<'p> Engine<'p> {
                         }
                     }
                     self.end_block();
+                    if self.trace.is_some() {
+                        self.trace_after(*span);
+                    }
                 }
                 Prepared::Stmt(stmt) => {
                     self.steps = 0;
@@ -226,7 +252,12 @@ impl<'p> Engine<'p> {
     pub fn run_body(&mut self, body: &[Stmt]) -> Result<(), Box<Diagnostic>> {
         for stmt in body {
             match stmt {
-                Stmt::Line { pieces, .. } => self.write_line(pieces)?,
+                Stmt::Line { pieces, span } => {
+                    self.write_line(pieces)?;
+                    if self.trace.is_some() {
+                        self.trace_after(*span);
+                    }
+                }
                 other => {
                     self.steps = 0;
                     let mut frame = Vec::new();
@@ -518,8 +549,9 @@ pub(crate) fn is_modal(var: &Variable) -> bool {
 
 /// A handler statement prepared for the hot path.
 pub(crate) enum Prepared<'p> {
-    /// A block whose pieces are resolved to direct operations.
-    Line(Vec<Op<'p>>),
+    /// A block whose pieces are resolved to direct operations, and the
+    /// line of the post that wrote it.
+    Line(Vec<Op<'p>>, Option<Span>),
     /// Any other statement, interpreted.
     Stmt(&'p Stmt),
 }
@@ -550,7 +582,7 @@ fn is_move_section(key: &HandlerKey) -> bool {
 pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
-            Stmt::Line { pieces, .. } => Prepared::Line(
+            Stmt::Line { pieces, span } => Prepared::Line(
                 pieces
                     .iter()
                     .map(|piece| match piece {
@@ -583,6 +615,7 @@ pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<
                         other => Op::Piece(other),
                     })
                     .collect(),
+                *span,
             ),
             other => Prepared::Stmt(other),
         })

@@ -39,6 +39,7 @@ pub mod output;
 pub mod script;
 pub mod sections;
 mod slots;
+pub mod trace;
 pub mod value;
 
 use postc_ir::event::FileInfo;
@@ -61,6 +62,8 @@ pub struct RunOptions {
     pub arc_tolerance: Option<f64>,
     /// Called with the number of events handled, every 65536 events.
     pub progress: Option<Box<dyn FnMut(u64)>>,
+    /// Called with the provenance of every block written (`--trace`).
+    pub trace: Option<trace::TraceSink>,
 }
 
 /// What a successful run produced.
@@ -99,6 +102,7 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_ext = f.extension;
     }
     let mut engine = Engine::new(post, machine, out);
+    engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
     let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {
         Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),
         Dispatch::AptWords => Box::new(apt_words::AptDispatch::new(&engine)),
@@ -124,6 +128,10 @@ pub fn run<S: EventSource + ?Sized>(
             return fail(diagnostics, engine);
         }
         engine.event_span = span;
+        if let Some(t) = engine.trace.as_deref_mut() {
+            t.event = Some(events);
+            t.event_span = Some(span);
+        }
         if lathe {
             event = script::turn_event(event);
         }
@@ -143,6 +151,9 @@ pub fn run<S: EventSource + ?Sized>(
     }
     if postc_ir::diagnostic::has_errors(&diagnostics) {
         return fail(diagnostics, engine);
+    }
+    if let Some(t) = engine.trace.as_deref_mut() {
+        (t.event, t.event_span) = (None, None);
     }
     if let Err(d) = dispatch.finish(&mut engine) {
         diagnostics.push(*d);

@@ -22,6 +22,31 @@ pub struct Args {
     dialect: Option<DialectArg>,
     #[command(flatten)]
     levels: super::levels::Flags,
+    /// The Vectric product the posts are for: warn about what its post processor does not support (seed 000's table).
+    #[arg(long, value_enum)]
+    product: Option<ProductArg>,
+}
+
+/// Vectric products as `--product` names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ProductArg {
+    Cut2d,
+    Vcarve,
+    Aspire,
+    Cut3d,
+    Photovcarve,
+}
+
+impl From<ProductArg> for postc_lint::Product {
+    fn from(p: ProductArg) -> postc_lint::Product {
+        match p {
+            ProductArg::Cut2d => postc_lint::Product::Cut2d,
+            ProductArg::Vcarve => postc_lint::Product::Vcarve,
+            ProductArg::Aspire => postc_lint::Product::Aspire,
+            ProductArg::Cut3d => postc_lint::Product::Cut3d,
+            ProductArg::Photovcarve => postc_lint::Product::PhotoVcarve,
+        }
+    }
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
@@ -35,7 +60,15 @@ pub fn run(args: Args) -> Result<(), Failed> {
         } else if postc_frontends::is_toolpath(file) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
-            postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources).diagnostics
+            let compiled = postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources);
+            let mut diagnostics = compiled.diagnostics;
+            if let Some(post) = &compiled.post
+                && !postc_ir::diagnostic::has_errors(&diagnostics)
+            {
+                let options = postc_lint::Options { product: args.product.map(Into::into) };
+                diagnostics.extend(postc_lint::lint(post, &options));
+            }
+            diagnostics
         };
         let mut diagnostics = diagnostics;
         match args.levels.rules_for(Some(file)) {

@@ -3,8 +3,9 @@
 //! ```text
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
-//! postc check   FILE... [--format human|json]                 # posts and toolpaths; exit 1 on any error
+//! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc explain CODE                                          # one diagnostic code's documentation
+//! postc check|post ... [--warn|--deny|--allow CODE|PREFIX|all]  # severity per code; also postc.toml
 //! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
@@ -14,6 +15,7 @@
 //! postc lsp                                                   # language server on stdio (docs/editors.md)
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
+//! postc explain TRACE.jsonl LINE [--output NC]                # why an NC line exists (`post --trace`)
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -32,6 +34,7 @@ mod postp;
 mod probe;
 pub mod report;
 mod toolpath;
+mod trace;
 pub(crate) mod verify;
 
 use std::path::PathBuf;
@@ -57,7 +60,7 @@ enum Command {
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),
-    /// Print the documentation of a diagnostic code (PP027): what it means, an example, the fix.
+    /// Print the documentation of a diagnostic code (PP027): what it means, an example, the fix; or, given TRACE.jsonl LINE, why line LINE of a posted program exists (from `postc post --trace`).
     Explain(explain::Args),
     /// Print a post's IR as RON.
     Inspect(inspect::Args),

@@ -72,6 +72,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         tolerance: args.tolerance,
         format: Format::Human,
         postp,
+        trace: None,
     };
     let svg = plot(&job, &mut sources)?;
     let bytes = match kind {

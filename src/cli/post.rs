@@ -37,6 +37,9 @@ pub struct Args {
     verify: bool,
     #[command(flatten)]
     levels: super::levels::Flags,
+    /// Write which post statement wrote each output line, for which toolpath event, as JSON Lines (docs/trace.md); read it with `postc explain TRACE LINE`.
+    #[arg(long, value_name = "TRACE.jsonl")]
+    trace: Option<PathBuf>,
 }
 
 /// `--set` names and what they do.
@@ -158,6 +161,19 @@ pub fn run(args: Args) -> Result<(), Failed> {
             Output::stdout()
         }
     };
+    let recorder = match &args.trace {
+        Some(path) => {
+            let r = super::trace::Recorder::new(path).map_err(|e| {
+                fail(
+                    &mut sources,
+                    Diagnostic::error(codes::IO003, format!("cannot write the trace `{}`: {e}", path.display())),
+                )
+            })?;
+            options.trace = Some(r.sink());
+            Some(r)
+        }
+        None => None,
+    };
     let big = std::fs::metadata(toolpath).map(|m| m.len() > (32 << 20)).unwrap_or(false);
     if big && std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new_spinner();
@@ -170,6 +186,13 @@ pub fn run(args: Args) -> Result<(), Failed> {
             report::eprint(&mut sources, &report.warnings);
             if postc_ir::diagnostic::has_errors(&report.warnings) {
                 return Err(denied(&report.output));
+            }
+            if let Some(recorder) = recorder {
+                let outputs = match &report.output {
+                    Finished::Files(files) => files.clone(),
+                    _ => vec![PathBuf::from("-")],
+                };
+                recorder.finish(&sources, &post, &outputs).map_err(|d| fail(&mut sources, d))?;
             }
             if let Finished::Files(files) = &report.output
                 && files.len() > 1
@@ -190,6 +213,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                         tolerance: 0.01,
                         format: report::Format::Human,
                         postp: None,
+                        trace: args.trace.as_deref(),
                     };
                     super::verify::verify(&job, &mut sources)
                 }

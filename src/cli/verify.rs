@@ -37,6 +37,9 @@ pub struct Args {
     /// The program was written by `postc postp` from TOOLPATH (a CL file): compare with the moves postp posts from, with its controller's post.
     #[arg(long, conflicts_with = "post")]
     postp: bool,
+    /// The trace `postc post --trace` wrote with the program: each finding also names the post line that wrote it and the toolpath event.
+    #[arg(long, value_name = "TRACE.jsonl")]
+    trace: Option<PathBuf>,
 }
 
 /// Controllers as `--controller` names them.
@@ -81,6 +84,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         tolerance: args.tolerance,
         format: args.format,
         postp,
+        trace: args.trace.as_deref(),
     };
     verify(&job, &mut sources)
 }
@@ -126,6 +130,9 @@ pub struct Job<'a> {
     pub format: Format,
     /// The program came from `postc postp`: the toolpath's events go through postp's transform.
     pub postp: Option<postc_postp::transform::Machine>,
+    /// The trace of the run that wrote the program (`postc post --trace`):
+    /// findings then name the post line and the toolpath event too.
+    pub trace: Option<&'a Path>,
 }
 
 /// A program opened for verification: its reader, its id in the source
@@ -140,7 +147,10 @@ pub(crate) struct Opened {
 pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
     let Opened { mut reader, file: file_id, settings, name } = open(job, sources)?;
     let mut source = toolpath(job, sources)?;
-    let report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
+    let mut report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
+    if let Some(trace) = job.trace {
+        super::trace::annotate(trace, job.program, &mut report.findings, sources).map_err(|d| fail(sources, d))?;
+    }
     let shown = report.findings.len() as u64;
     let total = report.errors + report.warnings;
     match job.format {

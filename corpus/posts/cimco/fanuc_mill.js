@@ -48,7 +48,6 @@ var yOutput = createVariable({prefix: variableDelimeter + "Y", force: false}, xy
 var zOutput = createVariable({prefix: variableDelimeter + "Z", force: false}, xyzFormat);
 var iOutput = createVariable({prefix: variableDelimeter + "I", force: true}, xyzFormat);
 var jOutput = createVariable({prefix: variableDelimeter + "J", force: true}, xyzFormat);
-var rOutput = createVariable({prefix: variableDelimeter + "R", force: true}, xyzFormat);
 
 // -------------------------------------------------------------------- State
 var sequenceNumber = sequenceNumberStart;

@@ -20,6 +20,9 @@ FILE_EXTENSION = "ngc"
 UNITS = "MM"
 LINE_ENDING = "[10]"
 
++ Names print in ( ) comments: parentheses in them print as braces.
+SUBSTITUTE = "({)}"
+
 ROTARY_WRAP_Y = "-A"
 INVERSE_TIME_MODE = "YES"
 

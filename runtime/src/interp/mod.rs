@@ -147,6 +147,10 @@ impl Engine<'_> {
                     .note("the rest of the post runs as written"),
                 ),
             }
+            if self.trace.is_some() {
+                let span = if let Stmt::Line { span, .. } = stmt { *span } else { None };
+                self.trace_after(span);
+            }
         }
         Ok(Flow::Normal)
     }
@@ -383,6 +387,9 @@ impl Engine<'_> {
                 None => d,
             }));
         }
+        if let Some(t) = self.trace.as_deref_mut() {
+            t.calls.push((f, function.span));
+        }
         let result = match &function.body {
             Body::Native(body) => {
                 let mut frame = args;
@@ -395,6 +402,13 @@ impl Engine<'_> {
             }
             Body::Script(id) => self.call_script(*id, &function.name, args),
         };
+        if self.trace.is_some() {
+            // Blocks a script wrote belong to the function that ran it.
+            self.trace_after(None);
+            if let Some(t) = self.trace.as_deref_mut() {
+                t.calls.pop();
+            }
+        }
         self.depth -= 1;
         match (result, function.span) {
             (Err(e), Some(s)) if e.code == TEXT_BUDGET && e.labels.is_empty() => {

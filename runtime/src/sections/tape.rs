@@ -18,6 +18,7 @@ impl SectionDispatch {
         self.split_pending = false;
         eng.run_section(Section::Footer)?;
         eng.out.new_part();
+        eng.trace_new_part();
         self.started = false;
         Ok(())
     }

@@ -193,7 +193,9 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     });
     for (g, entry) in glue.iter().zip(["onCompensation", "onDrillingHeader", "onDrilling"]) {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
-        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span: None });
+        // The glue stands where the post's own entry point is defined.
+        let span = functions.iter().find(|f| f.name == entry).and_then(|f| f.span);
+        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span });
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 
@@ -240,6 +242,8 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     let mut emitter = emit::Emitter::new(&functions, handlers::HANDLER_SLOTS);
     let mut hs = Vec::new();
     for mut h in raw {
+        // A handler stands where the JavaScript function it calls is defined.
+        h.span = first_call(&h.body).and_then(|f| functions.get(f.index())).and_then(|f| f.span);
         let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(h.body))));
         if let Some(top) = emit::max_slot(&body) {
             // The frame takes its full size at once.
@@ -382,4 +386,21 @@ fn is_lathe(model: &Model, on_linear: Option<usize>) -> bool {
         return true;
     }
     model.global("TurnDrillingFields").is_some() && model.global("MillDrillingFields").is_none()
+}
+
+/// The first function a body calls.
+fn first_call(body: &[Stmt]) -> Option<postc_ir::FunctionId> {
+    use postc_ir::visit::{Visit, walk_expr};
+    struct First(Option<postc_ir::FunctionId>);
+    impl Visit for First {
+        fn visit_expr(&mut self, e: &Expr) {
+            if let (None, Expr::Call(f, _)) = (self.0, e) {
+                self.0 = Some(*f);
+            }
+            walk_expr(self, e);
+        }
+    }
+    let mut first = First(None);
+    body.iter().for_each(|s| first.visit_stmt(s));
+    first.0
 }

@@ -209,6 +209,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         text_encoding: postc_ir::post::TextEncoding::Utf8,
         subs: Vec::new(),
         notes: Vec::new(),
+        span: model.global(GlobalName::PostName).map(|g| g.span),
     }
 }
 

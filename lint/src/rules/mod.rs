@@ -1,0 +1,28 @@
+//! The rules, one per file. Codes are `LN0xx`; docs/diagnostics.md lists
+//! them with what each means and how many of the real Vectric posts it
+//! fires on.
+
+mod comment_parentheses;
+mod feed_never_printed;
+mod post_name;
+mod product_support;
+mod spindle_never_printed;
+mod toolchange_without_retract;
+mod unused;
+
+use crate::Rule;
+
+pub(crate) use spindle_never_printed::has_word;
+
+/// Every rule, in code order.
+pub const ALL: &[Rule] = &[
+    feed_never_printed::RULE,
+    spindle_never_printed::RULE,
+    comment_parentheses::RULE,
+    toolchange_without_retract::RULE,
+    post_name::RULE,
+    product_support::RULE,
+    unused::VARIABLE,
+    unused::FORMAT,
+    unused::FUNCTION,
+];

@@ -1,0 +1,214 @@
+//! LN007–LN009: variables, formats and functions a post defines and never
+//! uses. Each is dead text a reader of the post must still understand, and
+//! often a sign of a typo (a `VAR` declared for a label no section prints,
+//! a `createFormat` meant for a variable that got another).
+//!
+//! Uses are counted in the IR code and, for CIMCO posts, in the script the
+//! functions that do not lower to native code run as (they name variables
+//! and formats by index and post functions by their script name). VcPost
+//! registers and Subs are left alone: the applications that call a post
+//! set registers and call Subs by name.
+
+use postc_ir::codes;
+use std::collections::BTreeSet;
+
+use postc_ir::visit::{Visit, walk_expr, walk_piece, walk_stmt};
+use postc_ir::{Diagnostic, Dialect, Expr, Piece, Place, Script, Stmt};
+
+use crate::{Context, Options, Rule};
+
+pub const VARIABLE: Rule = Rule {
+    code: codes::LN007.code,
+    name: "unused-variable",
+    summary: "a variable is declared and never printed",
+    check: variables,
+};
+pub const FORMAT: Rule = Rule {
+    code: codes::LN008.code,
+    name: "unused-format",
+    summary: "a format is created and never used",
+    check: formats,
+};
+pub const FUNCTION: Rule = Rule {
+    code: codes::LN009.code,
+    name: "unused-function",
+    summary: "a function is defined and never called",
+    check: functions,
+};
+
+/// What the post's code refers to.
+#[derive(Default)]
+struct Uses {
+    vars: BTreeSet<usize>,
+    formats: BTreeSet<usize>,
+    functions: BTreeSet<usize>,
+}
+
+impl Visit for Uses {
+    fn visit_stmt(&mut self, stmt: &Stmt) {
+        match stmt {
+            Stmt::Assign(Place::Var(v), _) | Stmt::Forget(v) => {
+                self.vars.insert(v.index());
+            }
+            _ => {}
+        }
+        walk_stmt(self, stmt);
+    }
+
+    fn visit_piece(&mut self, piece: &Piece) {
+        if let Piece::Var(v) = piece {
+            self.vars.insert(v.index());
+        }
+        walk_piece(self, piece);
+    }
+
+    fn visit_expr(&mut self, e: &Expr) {
+        match e {
+            Expr::Var(v) | Expr::Previous(v) | Expr::FormatVar { var: v, .. } => {
+                self.vars.insert(v.index());
+            }
+            Expr::Format { format, .. } => {
+                self.formats.insert(format.index());
+            }
+            Expr::Call(f, _) => {
+                self.functions.insert(f.index());
+            }
+            _ => {}
+        }
+        walk_expr(self, e);
+    }
+}
+
+fn uses(cx: &Context) -> Uses {
+    let mut u = Uses::default();
+    u.visit_post(cx.post);
+    for v in &cx.post.variables {
+        u.formats.insert(v.format.index());
+    }
+    for s in &cx.post.scripts {
+        for (prefixes, set) in
+            [(&["__vref(", "__vfmt(", "__vlast("][..], &mut u.vars), (&["__fref(", "__ffmt("][..], &mut u.formats)]
+        {
+            for p in prefixes {
+                for (i, _) in s.source.match_indices(p) {
+                    let digits: String = s.source[i + p.len()..].chars().take_while(char::is_ascii_digit).collect();
+                    if let Ok(n) = digits.parse() {
+                        set.insert(n);
+                    }
+                }
+            }
+        }
+    }
+    u
+}
+
+fn variables(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    if cx.post.info.dialect == Dialect::VcPost {
+        return;
+    }
+    let used = uses(cx);
+    for (i, v) in cx.post.variables.iter().enumerate() {
+        let Some(span) = v.span else { continue };
+        if used.vars.contains(&i) || v.name.starts_with("__postc") || is_template_var(cx, v) {
+            continue;
+        }
+        out.push(
+            Diagnostic::warning(VARIABLE.code, format!("`{}` is declared and never printed", v.name))
+                .at(span, "declared here")
+                .help("remove it, or print it where it belongs"),
+        );
+    }
+}
+
+fn formats(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    if cx.post.info.dialect == Dialect::VcPost {
+        return;
+    }
+    let used = uses(cx);
+    for (i, f) in cx.post.formats.iter().enumerate() {
+        let Some(span) = f.span else { continue };
+        if used.formats.contains(&i) {
+            continue;
+        }
+        out.push(
+            Diagnostic::warning(FORMAT.code, "this format is created and never used")
+                .at(span, "created here")
+                .help("remove it, or format a value with it"),
+        );
+    }
+}
+
+fn functions(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    if cx.post.info.dialect != Dialect::Cimco {
+        return;
+    }
+    let used = uses(cx);
+    let scripts: Vec<&str> = cx.post.scripts.iter().map(|s| s.source.as_str()).collect();
+    for (i, f) in cx.post.functions.iter().enumerate() {
+        let Some(span) = f.span else { continue };
+        if used.functions.contains(&i) || is_entry_point(&f.name) || called_by_script(&scripts, &f.name) {
+            continue;
+        }
+        out.push(
+            Diagnostic::warning(FUNCTION.code, format!("function `{}` is never called", f.name))
+                .at(span, "defined here")
+                .help("remove it, or call it; CNC-Calc calls only its entry points (onOpen, onLinear, ...)"),
+        );
+    }
+}
+
+/// A Vectric `VAR` under its standard name: the guides' template declares
+/// every variable whether the post prints it or not, so an unused one is
+/// the template, not a mistake. A `VAR` under a name of the post's own
+/// that nothing prints is.
+fn is_template_var(cx: &Context, v: &postc_ir::Variable) -> bool {
+    let postc_ir::ValueSource::Quantity(q) = v.source else { return false };
+    cx.post.info.dialect == Dialect::Vectric
+        && postc_front_vectric::names::var_name_of_label(q.label()).is_some_and(|n| n.eq_ignore_ascii_case(&v.name))
+}
+
+/// Names CNC-Calc calls, and postc's own.
+fn is_entry_point(name: &str) -> bool {
+    name.starts_with("on") || name.starts_with("__postc") || name == "getFeedrate"
+}
+
+/// Whether a script calls the function by its script name (and does not
+/// only define it).
+fn called_by_script(scripts: &[&str], name: &str) -> bool {
+    let rhai = Script::function_name(name);
+    scripts.iter().any(|s| {
+        s.match_indices(rhai.as_str()).any(|(i, _)| {
+            let after = s[i + rhai.len()..].chars().next();
+            let before = s[..i].trim_end();
+            after == Some('(') && !before.ends_with("fn")
+                || after.is_some_and(|c| !(c.is_ascii_alphanumeric() || c == '_')) && !before.ends_with("fn")
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::tests::{lint_cimco, lint_vectric};
+
+    #[test]
+    fn fires_on_an_unused_var() {
+        let found = lint_vectric("VAR SAFE_Z = [SAFEZ|A|Z|1.3]\nbegin FEED_MOVE\n\"G1[X][F]\"\n");
+        assert!(found.iter().any(|d| d.code == "LN007"), "{found:?}");
+    }
+
+    #[test]
+    fn quiet_on_a_used_var() {
+        let found = lint_vectric("VAR SAFE_Z = [SAFEZ|A|Z|1.3]\nbegin FEED_MOVE\n\"G1[X][SAFEZ][F]\"\n");
+        assert!(!found.iter().any(|d| d.code == "LN007"), "{found:?}");
+    }
+
+    const JS: &str = "var xyzFormat = createFormat({decimals:3});\nvar unusedFormat = createFormat({decimals:1});\nvar xOutput = createVariable({prefix:\"X\"}, xyzFormat);\nfunction helper() { return \"(H)\"; }\nfunction unused() { return \"\"; }\nfunction onLinear(x, y, z, movement) { return helper() + xOutput.format(x); }\n";
+
+    #[test]
+    fn cimco_unused_format_and_function_fire() {
+        let found = lint_cimco(JS);
+        assert!(found.iter().any(|d| d.code == "LN008"), "{found:?}");
+        let fns: Vec<_> = found.iter().filter(|d| d.code == "LN009").map(|d| d.message.clone()).collect();
+        assert_eq!(fns, ["function `unused` is never called"], "{found:?}");
+    }
+}

@@ -1,0 +1,101 @@
+//! The lints (`postc-lint`) over the corpus: the project's own posts lint
+//! clean (they are meant to `postc check` clean), and over the 112 real
+//! Vectric posts each rule's count is printed for docs/diagnostics.md — a
+//! rule that fires on nearly every real post without a real fault is
+//! wrong, not the posts.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use postc_ir::SourceMap;
+
+mod golden_common;
+
+use golden_common::{corpus, files};
+
+fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
+    let mut sources = SourceMap::new();
+    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let post = compiled.post?;
+    Some(postc_lint::lint(&post, &postc_lint::Options::default()))
+}
+
+#[test]
+fn the_projects_posts_lint_clean() {
+    let root = corpus();
+    let mut posts: Vec<PathBuf> = files(&root.join("posts/vectric"), "pp");
+    posts.extend(files(&root.join("posts/cimco"), "js"));
+    posts.extend(files(&root.join("posts/vcpost"), "VcPost"));
+    let mut found = Vec::new();
+    for p in &posts {
+        for d in lint(p).unwrap_or_else(|| panic!("{} does not compile", p.display())) {
+            found.push(format!("{}: {} {}", p.display(), d.code, d.message));
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}
+
+#[test]
+fn real_vectric_posts_per_rule() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
+    if !dir.is_dir() {
+        eprintln!("skipped: {} is absent (the real-world corpus sits beside the checkout in CI)", dir.display());
+        return;
+    }
+    let mut real = Vec::new();
+    for entry in std::fs::read_dir(&dir).expect("list ../shared/corpus/vectric").flatten() {
+        if entry.path().is_dir() {
+            real.extend(files(&entry.path(), "pp"));
+        }
+    }
+    let mut per_rule: BTreeMap<&str, (usize, Vec<String>)> = BTreeMap::new();
+    let mut linted = 0;
+    for p in &real {
+        let Some(found) = lint(p) else { continue };
+        linted += 1;
+        let mut codes: Vec<&str> = found.iter().map(|d| d.code).collect();
+        codes.dedup();
+        for c in codes {
+            let e = per_rule.entry(c).or_default();
+            e.0 += 1;
+            if e.1.len() < 3 {
+                e.1.push(p.file_name().unwrap().to_string_lossy().into_owned());
+            }
+        }
+    }
+    eprintln!("lints over {linted} real Vectric posts (posts each rule fires on):");
+    for rule in postc_lint::rules::ALL {
+        let (n, examples) = per_rule.get(rule.code).cloned().unwrap_or_default();
+        eprintln!("  {} {:<28} {n:>3}  {}", rule.code, rule.name, examples.join(", "));
+    }
+    assert!(linted >= 100, "only {linted} real posts compiled");
+    for rule in postc_lint::rules::ALL {
+        let n = per_rule.get(rule.code).map_or(0, |e| e.0);
+        assert!(
+            n * 10 < linted * 9,
+            "{} fires on {n} of {linted} real posts: the rule is wrong, not the posts",
+            rule.code
+        );
+    }
+}
+
+#[test]
+fn check_runs_the_lints_and_the_product_table() {
+    let post = corpus().join("posts/vectric/tape_split_mm.pp");
+    let run = |extra: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc"))
+            .arg("check")
+            .arg(&post)
+            .args(extra)
+            .output()
+            .unwrap();
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    let (code, stderr) = run(&[]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!stderr.contains("LN006"), "{stderr}");
+    let (code, stderr) = run(&["--product", "photovcarve"]);
+    assert_eq!(code, Some(0), "warnings only: {stderr}");
+    assert!(stderr.contains("warning[LN006]: PhotoVCarve does not support TAPE_SPLITTING"), "{stderr}");
+    assert!(stderr.contains("the section CW_ARC_MOVE"), "{stderr}");
+}
