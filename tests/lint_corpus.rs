@@ -99,3 +99,26 @@ fn check_runs_the_lints_and_the_product_table() {
     assert!(stderr.contains("warning[LN006]: PhotoVCarve does not support TAPE_SPLITTING"), "{stderr}");
     assert!(stderr.contains("the section CW_ARC_MOVE"), "{stderr}");
 }
+
+#[test]
+fn check_fix_applies_the_certain_fixes() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("typo.pp");
+    // Windows-1252 bytes (0xB0, a degree sign) must come back unchanged.
+    let text: &[u8] = b"UNITS = \"MM\"\r\nbegin HEADR\r\n\"(90\xB0) G0 [X\"\r\nbegin FEED_MOVE\r\n\"G1 [X] [F]\"\r\n";
+    std::fs::write(&post, text).unwrap();
+    let out =
+        std::process::Command::new(env!("CARGO_BIN_EXE_postc")).arg("check").arg("--fix").arg(&post).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("fixed 2 problem(s)"), "{stderr}");
+    let fixed = std::fs::read(&post).unwrap();
+    assert_eq!(
+        fixed,
+        b"UNITS = \"MM\"\r\nbegin HEADER\r\n\"(90\xB0) G0 [X]\"\r\nbegin FEED_MOVE\r\n\"G1 [X] [F]\"\r\n"
+    );
+    // Nothing left to fix: the file is not rewritten.
+    let out =
+        std::process::Command::new(env!("CARGO_BIN_EXE_postc")).arg("check").arg("--fix").arg(&post).output().unwrap();
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("fixed"));
+}

@@ -127,8 +127,7 @@ fn find<'a>(diagnostics: &'a [Value], code: &str) -> &'a Value {
 /// column 19 (1-based, characters), LSP wants character 19 (0-based,
 /// UTF-16 units).
 const PP_BROKEN: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|Q|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X] [QQ]\"\n";
-const PP_FIXED: &str =
-    "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X]\"\nbegin FEED_MOVE\n\"G1 [X]\"\n";
+const PP_FIXED: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"(Pièce 𝄞) G0 [X]\"\nbegin FEED_MOVE\n\"G1 [X] [F]\"\n";
 const PP_TYPO: &str =
     "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin HEADER\n\"G0 [X]\"\nbegin FEED_MOVEE\n\"G1 [X]\"\n";
 
@@ -284,4 +283,17 @@ fn an_editor_session() {
     c.notify("exit", Value::Null);
     let status = c.child.wait().unwrap();
     assert!(status.success(), "{status}");
+}
+
+#[test]
+fn the_lints_show_in_the_editor() {
+    let mut c = Client::start();
+    c.request("initialize", json!({"processId": null, "rootUri": null, "capabilities": {}}));
+    c.notify("initialized", json!({}));
+    let uri = "file:///work/posts/nofeed.pp";
+    let d = c.open(uri, "vectric", "UNITS = \"MM\"\nbegin FEED_MOVE\n\"G1 [X]\"\n");
+    let ln001 = find(&d, "LN001");
+    assert_eq!(ln001["severity"], 2, "{ln001}");
+    assert_eq!(ln001["range"]["start"]["line"], 1, "{ln001}");
+    assert_eq!(c.change(uri, 2, "UNITS = \"MM\"\nbegin FEED_MOVE\n\"G1 [X] [F]\"\n"), Vec::<Value>::new());
 }

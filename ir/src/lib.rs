@@ -114,7 +114,7 @@ pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle
 pub use id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 pub use post::{
     Body, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo, Script,
-    ScriptLanguage, Section, TextEncoding, ValueSource, Variable,
+    ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
 pub use units::Units;

@@ -299,6 +299,19 @@ pub struct Function {
     pub body: Body,
     /// Where the function is defined.
     pub span: Option<Span>,
+    /// Why the function runs as a script, when its frontend knows: the
+    /// first construct with no native form, and where it is (`postc
+    /// inspect` shows it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub why_script: Option<ScriptReason>,
+}
+
+/// Why a function runs as a script rather than as native IR.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ScriptReason {
+    /// The construct, as a post author would name it ("reads `arguments`").
+    pub what: String,
+    pub span: Option<Span>,
 }
 
 /// A body is native IR or a script.
@@ -522,7 +535,12 @@ impl Post {
         }
         self.info.span = None;
         self.handlers.iter_mut().for_each(|h| h.span = None);
-        self.functions.iter_mut().for_each(|f| f.span = None);
+        for f in &mut self.functions {
+            f.span = None;
+            if let Some(w) = &mut f.why_script {
+                w.span = None;
+            }
+        }
         self.variables.iter_mut().for_each(|v| v.span = None);
         self.formats.iter_mut().for_each(|f| f.span = None);
         for s in &mut self.scripts {

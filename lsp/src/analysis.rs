@@ -32,6 +32,19 @@ pub enum CompletionKind {
     Property,
 }
 
+/// `text` with `fixes` applied (they must not overlap).
+pub fn apply(text: &str, fixes: &[Fix]) -> String {
+    let mut order: Vec<&Fix> = fixes.iter().collect();
+    order.sort_by_key(|f| std::cmp::Reverse(f.start));
+    let mut out = text.to_string();
+    for f in order {
+        if f.start <= f.end && f.end <= out.len() && out.is_char_boundary(f.start) && out.is_char_boundary(f.end) {
+            out.replace_range(f.start..f.end, &f.replacement);
+        }
+    }
+    out
+}
+
 /// A fix: replace a byte range with a text.
 pub struct Fix {
     pub title: String,
@@ -351,8 +364,10 @@ pub fn completion(dialect: Dialect, text: &str, at: usize, after_space: bool) ->
     out
 }
 
-/// The fixes within a byte range: a misspelt section after `begin` with
-/// exactly one known section within edit distance 2.
+/// The fixes within a byte range, each certain: a misspelt section after
+/// `begin` with exactly one known section within edit distance 2, and a
+/// label in an output string whose `]` is missing (`"G0 [X"`: the name
+/// after the `[` is a whole known label, and no `]` follows it).
 pub fn fixes(dialect: Dialect, text: &str, start: usize, end: usize) -> Vec<Fix> {
     let mut out = Vec::new();
     if dialect != Dialect::Vectric {
@@ -362,6 +377,7 @@ pub fn fixes(dialect: Dialect, text: &str, start: usize, end: usize) -> Vec<Fix>
         if at > end || at + line.len() < start {
             continue;
         }
+        out.extend(missing_brackets(at, line));
         let trimmed = line.trim_start();
         let Some(rest) = strip_keyword(trimmed, "begin") else { continue };
         let name = leading_name(rest);
@@ -382,9 +398,56 @@ pub fn fixes(dialect: Dialect, text: &str, start: usize, end: usize) -> Vec<Fix>
     out
 }
 
+/// `]` for each label of an output line that is not closed.
+fn missing_brackets(at: usize, line: &str) -> Vec<Fix> {
+    let mut out = Vec::new();
+    let trimmed = line.trim_start();
+    if !trimmed.starts_with('"') {
+        return out;
+    }
+    let body_start = line.len() - trimmed.len() + 1;
+    let body = &line[body_start..];
+    let body = body.rfind('"').map_or(body, |q| &body[..q]);
+    let mut i = 0;
+    while let Some(open) = body[i..].find('[') {
+        let name_start = i + open + 1;
+        let name_len = body[name_start..]
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(body.len() - name_start);
+        let name = &body[name_start..name_start + name_len];
+        let after = body[name_start + name_len..].chars().next();
+        i = name_start + name_len;
+        if after == Some(']') || name.is_empty() || postc_ir::Quantity::from_label(name).is_none() {
+            continue;
+        }
+        let closed = body[name_start + name_len..].find(']');
+        let reopened = body[name_start + name_len..].find('[');
+        // A `]` further on that no `[` comes before belongs to this label.
+        if closed.is_some_and(|c| reopened.is_none_or(|r| c < r)) {
+            continue;
+        }
+        let insert = at + body_start + name_start + name_len;
+        out.push(Fix {
+            title: format!("Close `[{name}` with `]`"),
+            start: insert,
+            end: insert,
+            replacement: "]".into(),
+        });
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_missing_bracket_is_closed() {
+        let text = "begin HEADER\n\"G0 [X [Y] [13]\"\n\"([TOOLNAME\"\n\"[NOT_A_LABEL\"\n";
+        let f = fixes(Dialect::Vectric, text, 0, text.len());
+        let fixed = apply(text, &f);
+        assert_eq!(fixed, "begin HEADER\n\"G0 [X] [Y] [13]\"\n\"([TOOLNAME]\"\n\"[NOT_A_LABEL\"\n");
+    }
 
     const PP: &str = "UNITS = \"MM\"\nVAR X_POSITION = [X|A|X|1.3]\nbegin FEED_MOVEE\n\"G1 [X]\"\nbegin HEADR\n";
 

@@ -294,7 +294,14 @@ fn diagnose(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
     // A frontend bug must not take the editor's server down with it: the
     // panic becomes one diagnostic at the top of the document.
     let compiled = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        postc_frontends::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources)
+        let mut compiled = postc_frontends::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources);
+        // The lints, as `postc check` runs them, on a post that compiles.
+        if let Some(post) = &compiled.post
+            && !postc_ir::diagnostic::has_errors(&compiled.diagnostics)
+        {
+            compiled.diagnostics.extend(postc_lint::lint(post, &postc_lint::Options::default()));
+        }
+        compiled
     }));
     match compiled {
         Ok(compiled) => convert(&path, &doc.text, &sources, &compiled.diagnostics),

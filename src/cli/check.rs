@@ -25,6 +25,9 @@ pub struct Args {
     /// The Vectric product the posts are for: warn about what its post processor does not support (seed 000's table).
     #[arg(long, value_enum)]
     product: Option<ProductArg>,
+    /// Apply the fixes that are certain (a misspelt section name with one close match, a label's missing `]`), rewriting each post whole, then check it.
+    #[arg(long)]
+    fix: bool,
 }
 
 /// Vectric products as `--product` names them.
@@ -55,6 +58,16 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();
+        if args.fix && file.exists() && !postc_frontends::is_toolpath(file) {
+            match fix(file, args.dialect) {
+                Ok(0) => {}
+                Ok(n) => eprintln!("postc: fixed {n} problem(s) in `{name}`"),
+                Err(d) => {
+                    all.push((name, d));
+                    continue;
+                }
+            }
+        }
         let diagnostics = if !file.exists() {
             vec![Diagnostic::error(codes::IO001, format!("`{name}` does not exist"))]
         } else if postc_frontends::is_toolpath(file) {
@@ -90,4 +103,37 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
     }
     if errors > 0 { Err(Failed) } else { Ok(()) }
+}
+
+/// Applies the certain fixes to a post file, rewriting it whole (a
+/// temporary file renamed over it) when there is any; the number applied.
+/// A file that is not UTF-8 (Windows-1252) is read byte for character and
+/// written back the same way, so its other bytes do not change.
+fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Diagnostic> {
+    let io = |e: std::io::Error| Diagnostic::error("IO003", format!("cannot fix `{}`: {e}", file.display()));
+    let bytes = std::fs::read(file).map_err(io)?;
+    let dialect = match dialect {
+        Some(d) => d.into(),
+        None => match postc_frontends::post_dialect(file, &bytes) {
+            Some(d) => d,
+            None => return Ok(0),
+        },
+    };
+    let (text, utf8) = match String::from_utf8(bytes) {
+        Ok(t) => (t, true),
+        Err(e) => (e.into_bytes().iter().map(|&b| char::from(b)).collect(), false),
+    };
+    let fixes = postc_lsp::analysis::fixes(dialect, &text, 0, text.len());
+    if fixes.is_empty() {
+        return Ok(0);
+    }
+    let fixed = postc_lsp::analysis::apply(&text, &fixes);
+    let out: Vec<u8> = if utf8 { fixed.into_bytes() } else { fixed.chars().map(|c| c as u32 as u8).collect() };
+    let dir = file.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
+    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
+    std::io::Write::write_all(&mut tmp, &out).map_err(io)?;
+    let permissions = std::fs::metadata(file).map_err(io)?.permissions();
+    std::fs::set_permissions(tmp.path(), permissions).map_err(io)?;
+    tmp.persist(file).map_err(|e| io(e.error))?;
+    Ok(fixes.len())
 }

@@ -23,9 +23,16 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let text = ron::ser::to_string_pretty(&post, config).unwrap_or_else(|e| format!("// cannot print the IR: {e}"));
     report::out(&format!("// {} ({:?} dialect)\n", post.info.name, post.info.dialect));
     for f in &post.functions {
-        let how = match f.body {
-            Body::Native(_) => "native",
-            Body::Script(_) => "script",
+        let how = match (&f.body, &f.why_script) {
+            (Body::Native(_), _) => "native".to_string(),
+            (Body::Script(_), None) => "script".to_string(),
+            (Body::Script(_), Some(why)) => {
+                let at = why
+                    .span
+                    .and_then(|s| sources.line_column(s.file, s.start).map(|(l, c)| (sources.name(s.file), l, c)))
+                    .map_or_else(String::new, |(file, l, c)| format!(" ({file}:{l}:{c})"));
+                format!("script: {}{at}", why.what)
+            }
         };
         report::out(&format!("// function {}: {how}\n", f.name));
     }

@@ -133,15 +133,22 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
         let mut n = native::Native { model: &model, setup: &setup, layout: &mut layout, at: id, slots: 0 };
-        let body = n.lower_function(&func.body).map(|b| Body::Native(fold::stmts(b)));
+        let lowered = n.lower_function(&func.body, func.span);
         let slots = n.slots;
         let _ = i;
+        let (body, why_script) = match lowered {
+            Ok(b) => (Body::Native(fold::stmts(b)), None),
+            Err(w) => {
+                (Body::Script(ScriptId::new(0)), Some(postc_ir::ScriptReason { what: w.what, span: Some(w.span) }))
+            }
+        };
         functions.push(Function {
             name: f.name.clone().unwrap_or_default(),
             params: f.params.clone(),
             slots,
-            body: body.unwrap_or(Body::Script(ScriptId::new(0))),
+            body,
             span: Some(func.span),
+            why_script,
         });
     }
     if feed_fn.is_some() {
@@ -174,6 +181,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
                 Stmt::Return(Some(Expr::FormatVar { var: feed_var, value: Box::new(Expr::Quantity(Quantity::Feed)) })),
             ]),
             span: None,
+            why_script: None,
         });
     }
     let init_stmts = init_statements(program, &model, &setup);
@@ -185,17 +193,22 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         name: layout::INIT.into(),
         params: vec![],
         slots: init_native.as_ref().map_or(0, |(_, s)| *s),
-        body: match init_native {
-            Some((b, _)) => Body::Native(b),
-            None => Body::Script(ScriptId::new(0)),
+        body: match &init_native {
+            Ok((b, _)) => Body::Native(b.clone()),
+            Err(_) => Body::Script(ScriptId::new(0)),
         },
         span: Some(whole),
+        why_script: init_native.err().map(|w| postc_ir::ScriptReason { what: w.what, span: Some(w.span) }),
     });
     for (g, entry) in glue.iter().zip(["onCompensation", "onDrillingHeader", "onDrilling"]) {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
         // The glue stands where the post's own entry point is defined.
         let span = functions.iter().find(|f| f.name == entry).and_then(|f| f.span);
-        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span });
+        let why_script = matches!(body, Body::Script(_)).then(|| postc_ir::ScriptReason {
+            what: format!("postc's bridge to `{entry}`: it hands the post the host's data as an object"),
+            span,
+        });
+        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span, why_script });
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 

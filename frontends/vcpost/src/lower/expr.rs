@@ -243,6 +243,7 @@ impl Lowerer<'_> {
             slots: u16::try_from(params.len()).unwrap_or(0),
             body: Body::Native(vec![IrStmt::Return(Some(IrExpr::Number(0.0)))]),
             span: None,
+            why_script: None,
         });
         self.host_functions.insert(canonical.to_string(), id);
         Some(id)

@@ -151,6 +151,7 @@ impl Lowerer<'_> {
                 slots: 0,
                 body: Body::Native(Vec::new()),
                 span: Some(p.header),
+                why_script: None,
             });
             let key = p.name.key();
             if !crate::token::is_valid_name(&p.name.text) {

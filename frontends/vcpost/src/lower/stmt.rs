@@ -69,6 +69,7 @@ impl Lowerer<'_> {
                 slots: u16::try_from(scope.names.len()).unwrap_or(u16::MAX),
                 body: Body::Native(body),
                 span: Some(p.header),
+                why_script: None,
             };
         }
     }

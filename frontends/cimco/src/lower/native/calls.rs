@@ -9,7 +9,7 @@ use crate::ast::*;
 use super::super::layout;
 use super::super::scope::Symbol;
 use super::super::setup::Binding;
-use super::{Native, R, to_number};
+use super::{Native, R, to_number, why};
 
 impl Native<'_, '_> {
     /// Whether a name is the host's (not shadowed by the post).
@@ -22,78 +22,90 @@ impl Native<'_, '_> {
     }
 
     pub(super) fn call(&mut self, callee: &Expr, args: &[Expr]) -> R<Ir> {
+        let at = callee.span;
         match &callee.kind {
-            ExprKind::Member { object, property } => self.method(object, &property.name, args),
+            ExprKind::Member { object, property } => self.method(object, &property.name, args, at),
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
                 Symbol::TopFn(i) => {
                     let id = self.model.scopes.top_fns[i];
                     let info = &self.model.scopes.funcs[id];
-                    if self.model.fn_reassigned.contains(&i)
-                        || args.len() > info.params.len()
-                        || !self.model.returns_plain[id]
-                    {
-                        return None;
+                    if self.model.fn_reassigned.contains(&i) {
+                        return Err(why(at, format!("calls `{name}`, which the post assigns another function to")));
                     }
-                    let f = *self.layout.top_fn.get(i)?;
-                    Some(Ir::Call(f, self.args(args)?))
+                    if args.len() > info.params.len() {
+                        return Err(why(
+                            at,
+                            format!(
+                                "calls `{name}` with more arguments than its parameters (the extra ones are read through `arguments`)"
+                            ),
+                        ));
+                    }
+                    if !self.model.returns_plain[id] {
+                        return Err(why(
+                            at,
+                            format!("calls `{name}`, which may return an object, an array or a function"),
+                        ));
+                    }
+                    let f = *self.layout.top_fn.get(i).ok_or_else(|| why(at, format!("calls `{name}`")))?;
+                    Ok(Ir::Call(f, self.args(args)?))
                 }
-                Symbol::Global(g) if self.model.global(&g).is_none() => self.host_call(&g, args),
-                _ => None,
+                Symbol::Global(g) if self.model.global(&g).is_none() => self.host_call(&g, args, at),
+                _ => Err(why(at, format!("calls `{name}`, a function value held in a variable"))),
             },
-            _ => None,
+            _ => Err(why(at, "calls a function value (not a function of the post by name)")),
         }
     }
 
-    fn host_call(&mut self, name: &str, args: &[Expr]) -> R<Ir> {
-        let one = |b: Builtin, s: &mut Self| -> R<Ir> { Some(Ir::Builtin(b, s.args(args)?)) };
+    fn host_call(&mut self, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
+        let one = |b: Builtin, s: &mut Self| -> R<Ir> { Ok(Ir::Builtin(b, s.args(args)?)) };
         match name {
             "getFeedrate" => {
-                let f = self.layout.function(layout::FEEDRATE)?;
-                Some(Ir::Call(f, self.args(args)?))
+                let f = self.layout.function(layout::FEEDRATE).ok_or_else(|| why(at, "calls `getFeedrate`"))?;
+                Ok(Ir::Call(f, self.args(args)?))
             }
             "parseInt" => one(Builtin::ParseInt, self),
             "parseFloat" => one(Builtin::ParseFloat, self),
             "isNaN" => one(Builtin::IsNaN, self),
             "Number" if !args.is_empty() => one(Builtin::ToNumber, self),
-            "String" if args.len() == 1 => Some(Ir::Builtin(Builtin::Str, self.args(args)?)),
-            _ => None,
+            "String" if args.len() == 1 => Ok(Ir::Builtin(Builtin::Str, self.args(args)?)),
+            _ => Err(why(at, format!("calls `{name}`, a host function with no native form"))),
         }
     }
 
-    fn method(&mut self, object: &Expr, name: &str, args: &[Expr]) -> R<Ir> {
+    fn method(&mut self, object: &Expr, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
         if let ExprKind::Ident(o) = &object.kind {
             if o == "Math" && self.is_host("Math") {
-                return self.math(name, args);
+                return self.math(name, args, at);
             }
             if let Some(b) = self.binding(o) {
                 return match (b, name, args.len()) {
                     (Binding::Var(var), "format", 1) => {
                         let v = self.expr(&args[0])?;
-                        Some(Ir::FormatVar { var, value: Box::new(to_number(v)) })
+                        Ok(Ir::FormatVar { var, value: Box::new(to_number(v)) })
                     }
                     (Binding::Var(var), "getLast", _) if args.iter().all(is_pure) => {
-                        Some(Ir::Binary(IrBin::Add, Box::new(Ir::Number(0.0)), Box::new(Ir::Var(var))))
+                        Ok(Ir::Binary(IrBin::Add, Box::new(Ir::Number(0.0)), Box::new(Ir::Var(var))))
                     }
                     (Binding::Format(format), "format", 1) => {
                         let v = self.expr(&args[0])?;
-                        Some(Ir::Format { format, value: Box::new(to_number(v)) })
+                        Ok(Ir::Format { format, value: Box::new(to_number(v)) })
                     }
-                    _ => None,
+                    _ => Err(why(at, format!("calls `{o}.{name}()` with {} argument(s)", args.len()))),
                 };
             }
         }
         let recv = self.expr(object)?;
         match (name, args.len()) {
-            ("toUpperCase", 0) => Some(Ir::Builtin(Builtin::Upper, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
-            ("toLowerCase", 0) => Some(Ir::Builtin(Builtin::Lower, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
+            ("toUpperCase", 0) => Ok(Ir::Builtin(Builtin::Upper, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
+            ("toLowerCase", 0) => Ok(Ir::Builtin(Builtin::Lower, vec![Ir::Builtin(Builtin::Str, vec![recv])])),
             ("toFixed", 0 | 1) => {
                 let d = match args.first() {
                     Some(a) => self.expr(a)?,
                     None => Ir::Number(0.0),
                 };
-                Some(Ir::Builtin(Builtin::ToFixed, vec![recv, d]))
+                Ok(Ir::Builtin(Builtin::ToFixed, vec![recv, d]))
             }
-            _ => None,
+            _ => Err(why(at, format!("calls method `.{name}()`, which has no native form"))),
         }
     }
 
@@ -116,7 +128,7 @@ impl Native<'_, '_> {
         }
     }
 
-    fn math(&mut self, name: &str, args: &[Expr]) -> R<Ir> {
+    fn math(&mut self, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
         let a = self.args(args)?;
         let b = match name {
             "abs" => Builtin::Abs,
@@ -137,10 +149,10 @@ impl Native<'_, '_> {
             "max" if !a.is_empty() => Builtin::Max,
             "pow" if a.len() == 2 => {
                 let mut it = a.into_iter();
-                let (x, y) = (it.next()?, it.next()?);
-                return Some(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
+                let (Some(x), Some(y)) = (it.next(), it.next()) else { return Err(why(at, "`Math.pow`")) };
+                return Ok(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
             }
-            _ => return None,
+            _ => return Err(why(at, format!("`Math.{name}`"))),
         };
         let arity = match b {
             Builtin::Atan2 => 2,
@@ -148,9 +160,9 @@ impl Native<'_, '_> {
             _ => 1,
         };
         if a.len() < arity {
-            return None;
+            return Err(why(at, format!("`Math.{name}` with too few arguments")));
         }
-        Some(Ir::Builtin(b, a.into_iter().map(to_number).collect()))
+        Ok(Ir::Builtin(b, a.into_iter().map(to_number).collect()))
     }
 }
 

@@ -9,7 +9,8 @@
 //! at compile time. Anything else (objects, arrays, closures, `this`,
 //! `new`, `try`, regular expressions, a global that may hold an object)
 //! makes the whole function run as a script instead; [`lower_function`]
-//! says `None` then.
+//! says why then ([`Why`]: the construct and where it is), and
+//! `postc inspect` shows it.
 
 use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, LocalId, Place, Stmt as IrStmt, UnaryOp as IrUn};
 
@@ -34,15 +35,69 @@ pub struct Native<'c, 'a> {
     pub slots: u16,
 }
 
-type R<T> = Option<T>;
+/// Why a function cannot run as native IR: the first construct that has
+/// no native form, and where it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Why {
+    pub what: String,
+    pub span: postc_ir::Span,
+}
+
+type R<T> = Result<T, Why>;
+
+/// The reason at `span`.
+fn why(span: postc_ir::Span, what: impl Into<String>) -> Why {
+    Why { what: what.into(), span }
+}
+
+/// What a statement is, for a reason.
+fn stmt_name(k: &StmtKind) -> &'static str {
+    match k {
+        StmtKind::ForIn { .. } => "a `for ... in` loop",
+        StmtKind::Throw(_) => "`throw`",
+        StmtKind::Try { .. } => "`try`",
+        StmtKind::Function(_) => "a function declared inside a function",
+        StmtKind::Error => "a statement that does not parse",
+        _ => "a statement",
+    }
+}
+
+/// What an expression is, for a reason.
+fn expr_name(k: &ExprKind) -> &'static str {
+    match k {
+        ExprKind::This => "`this`",
+        ExprKind::Regex { .. } => "a regular expression",
+        ExprKind::Array(_) => "an array literal",
+        ExprKind::Object(_) => "an object literal",
+        ExprKind::Function(_) => "a function expression (a closure)",
+        ExprKind::Index { .. } => "indexing (`a[i]`)",
+        ExprKind::New { .. } => "`new`",
+        ExprKind::Update { .. } => "`++`/`--` inside an expression",
+        ExprKind::Assign { .. } => "an assignment inside an expression",
+        ExprKind::Sequence(_) => "a comma expression",
+        ExprKind::Error => "an expression that does not parse",
+        _ => "an expression",
+    }
+}
 
 impl Native<'_, '_> {
     /// The body of a function as native statements, or `None` when it must
     /// run as a script.
-    pub fn lower_function(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
+    pub fn lower_function(&mut self, body: &[Stmt], span: postc_ir::Span) -> R<Vec<IrStmt>> {
         let info = &self.model.scopes.funcs[self.at];
-        if info.uses_this || info.uses_arguments || info.captures || !info.nested.is_empty() {
-            return None;
+        let reason = if info.uses_this {
+            Some("uses `this`")
+        } else if info.uses_arguments {
+            Some("reads `arguments` (takes a variable number of arguments)")
+        } else if info.captures {
+            Some("is a closure: it uses a local of the function around it")
+        } else if !info.nested.is_empty() {
+            Some("defines a function inside it")
+        } else {
+            None
+        };
+        if let Some(r) = reason {
+            return Err(why(span, r));
         }
         self.slots = info.locals.len() as u16;
         self.stmts(body)
@@ -53,12 +108,12 @@ impl Native<'_, '_> {
         for s in body {
             self.stmt(s, &mut out)?;
         }
-        Some(out)
+        Ok(out)
     }
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IrStmt>) -> R<()> {
         if self.setup.done.contains(&s.span.start) {
-            return Some(());
+            return Ok(());
         }
         match &s.kind {
             StmtKind::Var(ds) => {
@@ -96,7 +151,7 @@ impl Native<'_, '_> {
             }
             StmtKind::DoWhile { body, cond } => {
                 if has_continue(body) {
-                    return None;
+                    return Err(why(s.span, "`continue` in a `do ... while` loop"));
                 }
                 let mut b = Vec::new();
                 self.stmt(body, &mut b)?;
@@ -109,7 +164,7 @@ impl Native<'_, '_> {
             }
             StmtKind::For { init, test, update, body } => {
                 if has_continue(body) {
-                    return None;
+                    return Err(why(s.span, "`continue` in a `for` loop"));
                 }
                 match init {
                     Some(ForInit::Var(ds)) => {
@@ -137,9 +192,9 @@ impl Native<'_, '_> {
                 Some(e) => Some(self.expr(e)?),
                 None => None,
             })),
-            _ => return None,
+            other => return Err(why(s.span, stmt_name(other))),
         }
-        Some(())
+        Ok(())
     }
 
     /// A `switch` whose cases each end in `break` or `return` (or are
@@ -157,7 +212,7 @@ impl Native<'_, '_> {
                     let v = self.expr(test)?;
                     tests.push(Ir::Binary(IrBin::StrictEq, Box::new(Ir::Local(t)), Box::new(v)));
                 }
-                None if !last => return None,
+                None if !last => return Err(why(disc.span, "a `switch` whose `default` is not the last case")),
                 None => {}
             }
             if c.body.is_empty() && !last {
@@ -168,10 +223,10 @@ impl Native<'_, '_> {
             if ends {
                 body = &body[..body.len() - 1];
             } else if !last && !matches!(body.last().map(|s| &s.kind), Some(StmtKind::Return(_))) {
-                return None;
+                return Err(why(disc.span, "a `switch` case that falls through to the next"));
             }
             if body.iter().any(breaks_switch) {
-                return None;
+                return Err(why(disc.span, "a `break` out of a `switch` from inside an `if` or block"));
             }
             let lowered = self.stmts(body)?;
             if c.test.is_none() {
@@ -181,14 +236,17 @@ impl Native<'_, '_> {
                 }
                 otherwise = lowered;
             } else {
-                let cond = tests.drain(..).reduce(|a, b| Ir::Binary(IrBin::Or, Box::new(a), Box::new(b)))?;
+                let cond = tests
+                    .drain(..)
+                    .reduce(|a, b| Ir::Binary(IrBin::Or, Box::new(a), Box::new(b)))
+                    .ok_or_else(|| why(disc.span, "a `switch` case without a test"))?;
                 branches.push((cond, lowered));
             }
         }
         if !branches.is_empty() || !otherwise.is_empty() {
             out.push(IrStmt::If { branches, otherwise });
         }
-        Some(())
+        Ok(())
     }
 
     fn temp(&mut self) -> LocalId {
@@ -206,39 +264,57 @@ impl Native<'_, '_> {
                     None => v,
                     Some(b) => binary_js(bin(b), self.expr(target)?, v),
                 };
-                Some(IrStmt::Assign(place, v))
+                Ok(IrStmt::Assign(place, v))
             }
             ExprKind::Update { op, target, .. } => {
                 let place = self.place(target)?;
                 let cur = Ir::Unary(IrUn::Plus, Box::new(self.expr(target)?));
                 let op = if *op == UpdateOp::Increment { IrBin::Add } else { IrBin::Sub };
-                Some(IrStmt::Assign(place, Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)))))
+                Ok(IrStmt::Assign(place, Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)))))
             }
             ExprKind::Call { callee, args } if args.is_empty() => match self.reset_of(callee) {
-                Some(var) => Some(IrStmt::Forget(var)),
-                None => Some(IrStmt::Eval(self.expr(e)?)),
+                Some(var) => Ok(IrStmt::Forget(var)),
+                None => Ok(IrStmt::Eval(self.expr(e)?)),
             },
-            _ => Some(IrStmt::Eval(self.expr(e)?)),
+            _ => Ok(IrStmt::Eval(self.expr(e)?)),
         }
     }
 
     /// Where an assignment stores.
     fn place(&mut self, target: &Expr) -> R<Place> {
+        let at = target.span;
         let name = match &target.kind {
             ExprKind::Ident(n) => match self.model.scopes.resolve(n, self.at) {
                 Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
-                    return Some(Place::Local(LocalId::new(slot as u16)));
+                    return Ok(Place::Local(LocalId::new(slot as u16)));
                 }
                 Symbol::Global(g) => g,
-                _ => return None,
+                Symbol::Local { .. } => {
+                    return Err(why(
+                        at,
+                        format!("assigns `{n}`, a local that holds an object, an array or a function"),
+                    ));
+                }
+                _ => return Err(why(at, format!("assigns `{n}`, which is not a local or a global of the post"))),
             },
-            _ => self.model.flattened_name(target)?,
+            _ => self
+                .model
+                .flattened_name(target)
+                .ok_or_else(|| why(at, "assigns a property of an object or an array element"))?,
         };
-        let g = self.model.global(&name)?;
-        if !g.plain || self.setup.bindings.contains_key(&name) {
-            return None;
+        let g =
+            self.model.global(&name).ok_or_else(|| why(at, format!("assigns `{name}`, which is never declared")))?;
+        if !g.plain {
+            return Err(why(at, format!("assigns global `{name}`, which may hold an object, an array or a function")));
         }
-        Some(Place::Global(*self.layout.global_index.get(&name)?))
+        if self.setup.bindings.contains_key(&name) {
+            return Err(why(at, format!("assigns `{name}`, an output variable or format")));
+        }
+        self.layout
+            .global_index
+            .get(&name)
+            .map(|g| Place::Global(*g))
+            .ok_or_else(|| why(at, format!("assigns `{name}`")))
     }
 
     fn local_plain(&self, slot: usize) -> bool {
@@ -246,26 +322,37 @@ impl Native<'_, '_> {
     }
 
     /// The value of a global by name, as native code reads it.
-    fn global_value(&mut self, name: &str) -> R<Ir> {
+    fn global_value(&mut self, name: &str, at: postc_ir::Span) -> R<Ir> {
         match self.model.global(name) {
             Some(g) => {
                 if let Some(c) = &g.constant {
-                    return Some(layout::const_expr(c));
+                    return Ok(layout::const_expr(c));
                 }
-                if !g.plain || self.setup.bindings.contains_key(name) {
-                    return None;
+                if !g.plain {
+                    return Err(why(
+                        at,
+                        format!("reads global `{name}`, which may hold an object, an array or a function"),
+                    ));
                 }
-                Some(Ir::Global(*self.layout.global_index.get(name)?))
+                if self.setup.bindings.contains_key(name) {
+                    return Err(why(at, format!("uses output variable or format `{name}` as a value")));
+                }
+                self.layout
+                    .global_index
+                    .get(name)
+                    .map(|g| Ir::Global(*g))
+                    .ok_or_else(|| why(at, format!("reads `{name}`")))
             }
-            None => match host::constant(name)? {
-                Const::Num(n) => Some(Ir::Number(n)),
-                c => Some(layout::const_expr(&c)),
+            None => match host::constant(name) {
+                Some(Const::Num(n)) => Ok(Ir::Number(n)),
+                Some(c) => Ok(layout::const_expr(&c)),
+                None => Err(why(at, format!("reads `{name}`, which postc's host gives no native value"))),
             },
         }
     }
 
     pub fn expr(&mut self, e: &Expr) -> R<Ir> {
-        Some(match &e.kind {
+        Ok(match &e.kind {
             ExprKind::Number(n) => Ir::Number(*n),
             ExprKind::String(s) => Ir::Text(s.clone()),
             ExprKind::Bool(b) => Ir::Bool(*b),
@@ -274,23 +361,31 @@ impl Native<'_, '_> {
                 Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
                     Ir::Local(LocalId::new(slot as u16))
                 }
-                Symbol::Global(g) => self.global_value(&g)?,
-                _ => return None,
+                Symbol::Global(g) => self.global_value(&g, e.span)?,
+                Symbol::Local { .. } => {
+                    return Err(why(
+                        e.span,
+                        format!("reads `{name}`, a local that holds an object, an array or a function"),
+                    ));
+                }
+                _ => return Err(why(e.span, format!("reads `{name}`, a variable of the function around it"))),
             },
             ExprKind::Member { object, property } => {
                 if let Some(flat) = self.model.flattened_name(e) {
-                    return self.global_value(&flat);
+                    return self.global_value(&flat, e.span);
                 }
                 if let ExprKind::Ident(o) = &object.kind
                     && o == "Math"
                     && self.is_host("Math")
                 {
-                    return host::math_constant(&property.name).map(Ir::Number);
+                    return host::math_constant(&property.name)
+                        .map(Ir::Number)
+                        .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
                 }
                 if property.name == "length" {
-                    return Some(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
+                    return Ok(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
                 }
-                return None;
+                return Err(why(e.span, format!("reads property `.{}` of an object", property.name)));
             }
             ExprKind::Call { callee, args } => return self.call(callee, args),
             ExprKind::Unary { op, operand } => {
@@ -300,7 +395,7 @@ impl Native<'_, '_> {
                     && self.model.global(n).is_none()
                     && host::constant(n).is_none()
                 {
-                    return Some(Ir::Text(if host::knows(n) { "function" } else { "undefined" }.into()));
+                    return Ok(Ir::Text(if host::knows(n) { "function" } else { "undefined" }.into()));
                 }
                 let a = Box::new(self.expr(operand)?);
                 match op {
@@ -321,7 +416,7 @@ impl Native<'_, '_> {
                 Box::new(self.expr(consequent)?),
                 Box::new(self.expr(alternate)?),
             ),
-            _ => return None,
+            other => return Err(why(e.span, expr_name(other))),
         })
     }
 }

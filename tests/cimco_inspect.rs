@@ -1,0 +1,53 @@
+//! `postc inspect` says, for every CIMCO function that runs as a script,
+//! why (issue 13): the construct with no native form and where it is.
+//! The functions every move goes through are native in every corpus post.
+
+use postc_ir::{Body, SourceMap};
+
+mod golden_common;
+
+use golden_common::{corpus, files};
+
+#[test]
+fn every_script_function_says_why_and_the_move_handlers_are_native() {
+    let mut problems = Vec::new();
+    for path in files(&corpus().join("posts/cimco"), "js") {
+        let mut sources = SourceMap::new();
+        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        for f in &post.functions {
+            match (&f.body, &f.why_script) {
+                (Body::Script(_), None) => {
+                    problems.push(format!("{}: `{}` is a script and says not why", path.display(), f.name))
+                }
+                (Body::Native(_), Some(w)) => {
+                    problems.push(format!("{}: `{}` is native but says {}", path.display(), f.name, w.what))
+                }
+                _ => {}
+            }
+            if ["onLinear", "onCircular", "onRapid", "writeBlock"].contains(&f.name.as_str())
+                && matches!(f.body, Body::Script(_))
+            {
+                problems.push(format!("{}: `{}` runs as a script", path.display(), f.name));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn inspect_names_the_construct_and_its_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("args.js");
+    std::fs::write(
+        &post,
+        "function writeBlock() {\n  var s = \"\";\n  for (var i = 0; i < arguments.length; ++i) { s += arguments[i]; }\n  return s;\n}\nfunction onLinear(x, y, z, movement) { return writeBlock(\"G1\", \"X\" + x); }\n",
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc")).arg("inspect").arg(&post).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text.lines().find(|l| l.starts_with("// function writeBlock")).unwrap_or_default();
+    assert!(line.contains("script: reads `arguments`"), "{text}");
+    assert!(line.contains("args.js:1:1"), "{line}");
+    let line = text.lines().find(|l| l.starts_with("// function onLinear")).unwrap_or_default();
+    assert!(line.contains("script: calls `writeBlock` with more arguments than its parameters"), "{line}");
+}
