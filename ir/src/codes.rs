@@ -127,7 +127,7 @@ pub const SECTIONS: &[Section] = &[
     Section {
         title: "Lints (LN)",
         prefixes: &["LN"],
-        intro: "`postc check` runs the lints of `lint/` (one rule per file in\n`lint/src/rules/`) on every post that compiles without errors, whatever\nits dialect; `--product cut2d|vcarve|aspire|cut3d|photovcarve` adds what\nthat Vectric product does not support. The last column is how many of the\n112 real Vectric posts of `../shared/corpus/vectric` each rule fires on\n(`cargo test --test lint_corpus -- --nocapture`, 2026-11-25), with\nexamples; the project's own posts lint clean.",
+        intro: "`postc check` runs the lints of `lint/` (one rule per file in\n`lint/src/rules/`) on every post that compiles without errors, whatever\nits dialect; `--product cut2d|vcarve|aspire|cut3d|photovcarve` adds what\nthat Vectric product does not support. The last column is how many of the\n112 real Vectric posts of `../shared/corpus/vectric` each rule fires on\n(`cargo test --test lint_corpus -- --nocapture`, 2026-11-25), with\nexamples; the project's own posts lint clean.\n\n`postc check --fix FILE...` first applies the fixes that are certain and\nrewrites each post whole (a temporary file renamed over it; a Windows-1252\nfile keeps its other bytes): a section name after `begin` with exactly one\nknown section within two edits (`begin HEADR` becomes `begin HEADER`), and\na known label whose `]` is missing in an output string (`\"G0 [X\"` becomes\n`\"G0 [X]\"`). The language server offers the same fixes as quick fixes.",
         extra: Some((
             "real posts",
             &[

@@ -110,7 +110,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
 /// A file that is not UTF-8 (Windows-1252) is read byte for character and
 /// written back the same way, so its other bytes do not change.
 fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Diagnostic> {
-    let io = |e: std::io::Error| Diagnostic::error("IO003", format!("cannot fix `{}`: {e}", file.display()));
+    let io = |e: std::io::Error| Diagnostic::error(codes::IO003, format!("cannot fix `{}`: {e}", file.display()));
     let bytes = std::fs::read(file).map_err(io)?;
     let dialect = match dialect {
         Some(d) => d.into(),
