@@ -8,6 +8,13 @@ mod golden_common;
 
 use golden_common::{corpus, files};
 
+/// Move handlers of corpus posts that still run as scripts: the field-style
+/// posts of issue 13, whose variadic `writeBlock(a, b, c)` (it reads
+/// `arguments`) has no native form yet. The list only shrinks: a handler
+/// that becomes native must come off it.
+const KNOWN_SCRIPTS: &[(&str, &str)] =
+    &[("haas_field", "writeBlock"), ("haas_field", "onLinear"), ("haas_field", "onCircular")];
+
 #[test]
 fn every_script_function_says_why_and_the_move_handlers_are_native() {
     let mut problems = Vec::new();
@@ -24,10 +31,15 @@ fn every_script_function_says_why_and_the_move_handlers_are_native() {
                 }
                 _ => {}
             }
-            if ["onLinear", "onCircular", "onRapid", "writeBlock"].contains(&f.name.as_str())
-                && matches!(f.body, Body::Script(_))
-            {
-                problems.push(format!("{}: `{}` runs as a script", path.display(), f.name));
+            let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+            let known = KNOWN_SCRIPTS.iter().any(|(p, func)| *p == stem && *func == f.name);
+            let script = matches!(f.body, Body::Script(_));
+            if ["onLinear", "onCircular", "onRapid", "writeBlock"].contains(&f.name.as_str()) && script != known {
+                problems.push(if script {
+                    format!("{}: `{}` runs as a script", path.display(), f.name)
+                } else {
+                    format!("{}: `{}` is native now: take it off KNOWN_SCRIPTS", path.display(), f.name)
+                });
             }
         }
     }
@@ -50,4 +62,29 @@ fn inspect_names_the_construct_and_its_place() {
     assert!(line.contains("args.js:1:1"), "{line}");
     let line = text.lines().find(|l| l.starts_with("// function onLinear")).unwrap_or_default();
     assert!(line.contains("script: calls `writeBlock` with more arguments than its parameters"), "{line}");
+}
+
+#[test]
+fn bench_profile_shows_where_the_time_goes() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("args.js");
+    std::fs::write(
+        &post,
+        "var xyzFormat = createFormat({decimals: 3});\nfunction writeBlock() {\n  var s = \"\";\n  for (var i = 0; i < arguments.length; ++i) { s += arguments[i]; }\n  return s;\n}\nfunction onLinear(x, y, z, movement) { return writeBlock(\"G1\", \"X\", xyzFormat.format(x)); }\n",
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc"))
+        .args(["bench".as_ref(), post.as_os_str(), "--moves".as_ref(), "2000".as_ref(), "--profile".as_ref()])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("where the time goes"), "{text}");
+    // onLinear passes writeBlock more arguments than it declares: both are
+    // scripts, and the script calls inside Rhai are onLinear's time.
+    let row = text.lines().find(|l| l.starts_with("onLinear")).unwrap_or_default();
+    assert!(row.contains("script"), "{text}");
+    let row = text.lines().find(|l| l.starts_with("FEED_MOVE")).unwrap_or_default();
+    assert!(row.contains("handler"), "{text}");
+    assert!(text.contains("`onLinear` runs as a script: calls `writeBlock` with more arguments"), "{text}");
 }

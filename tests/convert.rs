@@ -147,6 +147,7 @@ fn converted_posts_post_as_their_sources() {
     let mut matrix: BTreeMap<(String, &str), BTreeMap<String, usize>> = BTreeMap::new();
     let mut pinned = BTreeSet::new();
     let mut programs = 0usize;
+    let mut round_trips = 0usize;
     for case in cases() {
         let name = case.post.display().to_string();
         let bytes = std::fs::read(&case.post).expect("read the post");
@@ -231,6 +232,30 @@ fn converted_posts_post_as_their_sources() {
                     failures.push(format!("{pair}: warnings differ: {want_warnings:?} vs {got_warnings:?}"));
                 }
             }
+            // Round trips: convert(convert(P, X), Y) posts as P wherever both
+            // steps succeed.
+            for second in TARGETS.into_iter().filter(|t| *t != target) {
+                let Ok(twice) = postc_backends::convert(&back, second) else { continue };
+                let path = scratch.path().join(&folder).join(format!("{file}.{}", second.extension()));
+                std::fs::write(&path, &twice).expect("write the twice-converted post");
+                let (Some(again), _) = compile_bytes(&path, &twice, Some(target_dialect(second))) else {
+                    failures.push(format!("{name} -> {file} -> {}: does not compile", target_name(second)));
+                    continue;
+                };
+                round_trips += 1;
+                for toolpath in &case.toolpaths {
+                    let (want, _) = post(&source, toolpath);
+                    let (got, _) = post(&again, toolpath);
+                    if want.as_ref().ok() != got.as_ref().ok() {
+                        failures.push(format!(
+                            "{name} -> {} -> {} over {}: posts differently from the source",
+                            target_name(target),
+                            target_name(second),
+                            stem(toolpath)
+                        ));
+                    }
+                }
+            }
             if case.origin == "own" {
                 let dir = corpus().join("converted").join(target_name(target)).join(&folder);
                 let pin = dir.join(&file);
@@ -271,7 +296,7 @@ fn converted_posts_post_as_their_sources() {
             }
         }
     }
-    eprintln!("convert matrix ({programs} programs compared):");
+    eprintln!("convert matrix ({programs} programs compared, {round_trips} round trips through two targets):");
     for ((dialect, target), outcomes) in &matrix {
         eprintln!("  {dialect} -> {target}: {outcomes:?}");
     }

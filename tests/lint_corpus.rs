@@ -20,6 +20,13 @@ fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
     Some(postc_lint::lint(&post, &postc_lint::Options::default()))
 }
 
+/// Findings on the project's posts that are deliberate properties of them.
+const DELIBERATE: &[(&str, &str, &str)] = &[
+    ("gcode_noarcs_mm.pp", "LN012", "numbering wraps at 990 so that the goldens pin the wrap"),
+    ("noarcs_wrap_x_mm.pp", "LN012", "numbering wraps at 990 so that the goldens pin the wrap"),
+    ("text_output_mm.pp", "LN012", "a text listing numbers its lines to 9999"),
+];
+
 #[test]
 fn the_projects_posts_lint_clean() {
     let root = corpus();
@@ -28,8 +35,11 @@ fn the_projects_posts_lint_clean() {
     posts.extend(files(&root.join("posts/vcpost"), "VcPost"));
     let mut found = Vec::new();
     for p in &posts {
+        let file = p.file_name().unwrap_or_default().to_string_lossy().into_owned();
         for d in lint(p).unwrap_or_else(|| panic!("{} does not compile", p.display())) {
-            found.push(format!("{}: {} {}", p.display(), d.code, d.message));
+            if !DELIBERATE.iter().any(|(f, code, _)| *f == file && *code == d.code) {
+                found.push(format!("{}: {} {}", p.display(), d.code, d.message));
+            }
         }
     }
     assert!(found.is_empty(), "{}", found.join("\n"));

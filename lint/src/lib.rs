@@ -69,12 +69,12 @@ impl<'p> Context<'p> {
                 .all(|h| h.body.iter().all(|s| matches!(s, Stmt::Line { .. } | Stmt::Script(_))))
     }
 
-    /// Whether the post writes G-code (some line starts a G0 or G1 move).
+    /// Whether the post writes G-code (some line has a G0-G3 move word).
     pub fn writes_gcode(&self) -> bool {
         self.post.handlers.iter().flat_map(|h| &h.body).any(|s| match s {
             Stmt::Line { pieces, .. } => {
                 let t = literal_text(pieces).to_ascii_uppercase();
-                ["G0", "G1", "G00", "G01"].iter().any(|g| rules::has_word(&t, g))
+                ["G0", "G1", "G2", "G3", "G00", "G01", "G02", "G03"].iter().any(|g| rules::has_word(&t, g))
             }
             _ => false,
         })

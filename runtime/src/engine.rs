@@ -68,6 +68,8 @@ pub struct Engine<'p> {
     pub(crate) cimco: crate::script::Ext,
     /// Provenance of each block, when the run is traced.
     pub(crate) trace: Option<Box<crate::trace::Tracer>>,
+    /// Told of handler runs and calls, when the run is profiled.
+    pub(crate) profile: Option<Box<dyn crate::profile::CallObserver>>,
 }
 
 impl<'p> Engine<'p> {
@@ -100,6 +102,7 @@ impl<'p> Engine<'p> {
             event_span: Span::default(),
             cimco: crate::script::Ext::default(),
             trace: None,
+            profile: None,
         }
     }
 
@@ -140,7 +143,14 @@ impl<'p> Engine<'p> {
                     let h = &self.post.handlers[i as usize];
                     t.handler = Some((h.key.clone(), h.span));
                 }
-                self.run_prepared(&body)?;
+                if let Some(p) = self.profile.as_deref_mut() {
+                    p.enter(crate::profile::Frame::Handler(i as usize));
+                }
+                let result = self.run_prepared(&body);
+                if let Some(p) = self.profile.as_deref_mut() {
+                    p.exit();
+                }
+                result?;
                 Ok(true)
             }
             None => Ok(false),

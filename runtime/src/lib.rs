@@ -36,6 +36,7 @@ mod interp;
 pub mod machine;
 pub mod number;
 pub mod output;
+pub mod profile;
 pub mod script;
 pub mod sections;
 mod slots;
@@ -64,6 +65,8 @@ pub struct RunOptions {
     pub progress: Option<Box<dyn FnMut(u64)>>,
     /// Called with the provenance of every block written (`--trace`).
     pub trace: Option<trace::TraceSink>,
+    /// Told of every handler run and function call (`bench --profile`).
+    pub profile: Option<Box<dyn profile::CallObserver>>,
 }
 
 /// What a successful run produced.
@@ -103,6 +106,7 @@ pub fn run<S: EventSource + ?Sized>(
     }
     let mut engine = Engine::new(post, machine, out);
     engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
+    engine.profile = options.profile.take();
     let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {
         Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),
         Dispatch::AptWords => Box::new(apt_words::AptDispatch::new(&engine)),

@@ -27,6 +27,9 @@ pub struct Args {
     /// The post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    /// Also print where the time goes, per handler and post function: calls, share of the run, native or script (slower: the clock is read at every call).
+    #[arg(long)]
+    profile: bool,
 }
 
 /// Throughput of one run.
@@ -53,6 +56,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
         },
     };
     let mut options = RunOptions::default();
+    let profiler = args.profile.then(super::profile::Profiler::default);
+    if let Some(p) = &profiler {
+        options.profile = Some(Box::new(p.clone()));
+    }
     if std::io::stderr().is_terminal() {
         let bar = match total {
             Some(n) => indicatif::ProgressBar::new(n),
@@ -67,9 +74,15 @@ pub fn run(args: Args) -> Result<(), Failed> {
         let measured = measure(&post, &mut source, options, &mut sources)?;
         bar.finish_and_clear();
         print_measured(&args, &measured);
+        if let Some(p) = &profiler {
+            report::out(&p.report(&post, std::time::Duration::from_secs_f64(measured.seconds)));
+        }
     } else {
         let measured = measure(&post, &mut source, options, &mut sources)?;
         print_measured(&args, &measured);
+        if let Some(p) = &profiler {
+            report::out(&p.report(&post, std::time::Duration::from_secs_f64(measured.seconds)));
+        }
     }
     Ok(())
 }

@@ -32,6 +32,7 @@ mod plot;
 mod post;
 mod postp;
 mod probe;
+mod profile;
 pub mod report;
 mod toolpath;
 mod trace;

@@ -2,11 +2,15 @@
 //! them with what each means and how many of the real Vectric posts it
 //! fires on.
 
+mod arc_words_coarse;
+mod block_numbers_wrap;
 mod comment_parentheses;
 mod feed_never_printed;
 mod post_name;
 mod product_support;
+mod register_never_set;
 mod spindle_never_printed;
+mod tape_split_spindle;
 mod toolchange_without_retract;
 mod unused;
 
@@ -25,4 +29,8 @@ pub const ALL: &[Rule] = &[
     unused::VARIABLE,
     unused::FORMAT,
     unused::FUNCTION,
+    arc_words_coarse::RULE,
+    tape_split_spindle::RULE,
+    block_numbers_wrap::RULE,
+    register_never_set::RULE,
 ];

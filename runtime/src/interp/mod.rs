@@ -390,6 +390,9 @@ impl Engine<'_> {
         if let Some(t) = self.trace.as_deref_mut() {
             t.calls.push((f, function.span));
         }
+        if let Some(p) = self.profile.as_deref_mut() {
+            p.enter(crate::profile::Frame::Function(f));
+        }
         let result = match &function.body {
             Body::Native(body) => {
                 let mut frame = args;
@@ -402,6 +405,9 @@ impl Engine<'_> {
             }
             Body::Script(id) => self.call_script(*id, &function.name, args),
         };
+        if let Some(p) = self.profile.as_deref_mut() {
+            p.exit();
+        }
         if self.trace.is_some() {
             // Blocks a script wrote belong to the function that ran it.
             self.trace_after(None);

@@ -1,0 +1,67 @@
+//! LN012: the post prints block numbers (`[N]`) and `LINE_NUMBER_MAXIMUM`
+//! is reached after fewer blocks than a long program has: numbering then
+//! starts again, so block numbers repeat, which controllers that search
+//! for a block number (`GOTO`, restart at a block) get wrong, and postc
+//! verify reports (VF040).
+
+use postc_ir::{Diagnostic, Quantity};
+
+use crate::{Context, Options, Rule};
+
+pub const RULE: Rule = Rule {
+    code: "LN012",
+    name: "block-numbers-wrap",
+    summary: "block numbers start again after fewer blocks than a long program has",
+    check,
+};
+
+/// Blocks a long program has: a 3D finish of a few hours.
+const LONG_PROGRAM: f64 = 100_000.0;
+
+fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    if !cx.sections().any(|s| cx.prints(s, &[Quantity::BlockNumber])) {
+        return;
+    }
+    let b = cx.post.options.block_numbers;
+    if b.increment.is_nan() || b.increment <= 0.0 {
+        return;
+    }
+    let blocks = ((b.maximum - b.start) / b.increment).floor() + 1.0;
+    if blocks >= LONG_PROGRAM || cx.post.options.tape_splitting.as_ref().is_some_and(|t| (t.max_lines as f64) < blocks)
+    {
+        return;
+    }
+    let mut d = Diagnostic::warning(
+        RULE.code,
+        format!(
+            "block numbers run from {} to {} in steps of {}: after {blocks} blocks they start again and repeat",
+            b.start, b.maximum, b.increment
+        ),
+    )
+    .help("raise LINE_NUMBER_MAXIMUM (99999 or more), or drop [N] if the controller does not need block numbers");
+    if let Some(span) = cx.post.info.span {
+        d = d.at(span, "in this post");
+    }
+    out.push(d);
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::tests::lint_vectric;
+
+    #[test]
+    fn fires_on_a_small_maximum() {
+        let found = lint_vectric(
+            "POST_NAME = \"x\"\nLINE_NUMBER_INCREMENT = 10\nLINE_NUMBER_MAXIMUM = 9999\nbegin FEED_MOVE\n\"[N]G1[X][F]\"\n",
+        );
+        assert!(found.iter().any(|d| d.code == "LN012"), "{found:?}");
+    }
+
+    #[test]
+    fn quiet_on_a_large_maximum_or_without_block_numbers() {
+        let found = lint_vectric("LINE_NUMBER_MAXIMUM = 999999\nbegin FEED_MOVE\n\"[N]G1[X][F]\"\n");
+        assert!(!found.iter().any(|d| d.code == "LN012"), "{found:?}");
+        let found = lint_vectric("LINE_NUMBER_MAXIMUM = 9999\nbegin FEED_MOVE\n\"G1[X][F]\"\n");
+        assert!(!found.iter().any(|d| d.code == "LN012"), "{found:?}");
+    }
+}
