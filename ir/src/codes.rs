@@ -140,6 +140,13 @@ pub const SECTIONS: &[Section] = &[
                 ("LN007", "0"),
                 ("LN008", "0"),
                 ("LN009", "0"),
+                ("LN010", "3 (inch posts with 3-decimal arc words, for grbl)"),
+                ("LN011", "0"),
+                (
+                    "LN012",
+                    "1 (Langmuir crossfire, 9999); the project's gcode_noarcs_mm, noarcs_wrap_x_mm and text_output_mm wrap on purpose (pinned by their goldens)",
+                ),
+                ("LN013", "— (VcPost; the project's 5 posts and the 8 `postp` controllers: 0)"),
             ],
         )),
     },
@@ -1486,4 +1493,29 @@ declare_codes! {
     /// A CIMCO function that nothing calls (entry points `on...` excepted).
     LN009: Warning, "a CIMCO function that nothing calls (entry points `on...` excepted)",
         fix = "Call it, correct the name of its caller, or remove it.";
+    /// Arc words (I J K, absolute centres, R) print so few decimals that the radius at the start
+    /// and at the end of an arc can differ by more than a controller accepts: grbl refuses more
+    /// than 0.005 mm, LinuxCNC more than 0.0283 mm (docs/verify.md has the limits and their
+    /// sources). Rounding a centre word moves the centre, so the two radii can disagree even when
+    /// the toolpath's arc is exact.
+    LN010: Warning, "a G-code post prints arc words (I J K, absolute centres, R) so coarsely that rounding alone can make an arc's start and end radii differ by more than grbl (0.005 mm) or LinuxCNC (0.0283 mm) accepts (docs/verify.md has the limits and sources)",
+        fix = "Print arc words with more decimals (at least as many as positions), or post with `--exact-arcs`.";
+    /// The post splits long programs into files (`TAPE_SPLITTING`) and only its tool change
+    /// starts the spindle. Every part starts with the header (followed by `SPINDLE_ON` when the
+    /// post has one, as the first part does); the tool change is not repeated at a split, so a
+    /// part run on its own cuts with the spindle stopped.
+    LN011: Warning, "`TAPE_SPLITTING`, and only the tool change starts the spindle: every part begins with the header (and `SPINDLE_ON`, when the post has one), never with the tool change",
+        fix = "Start the spindle in the header or in a `SPINDLE_ON` section too.";
+    /// The post prints block numbers (`[N]`) and `LINE_NUMBER_MAXIMUM` is reached after fewer
+    /// blocks than a long program has: numbering then starts again, so block numbers repeat,
+    /// which controllers that search for a block number (`GOTO`, restart at a block) get wrong;
+    /// `postc verify` reports it (VF040).
+    LN012: Warning, "the post prints `[N]` and `LINE_NUMBER_MAXIMUM` is reached in fewer than 100,000 blocks (and no tape-split part is that long): block numbers start again and repeat",
+        fix = "Raise `LINE_NUMBER_MAXIMUM`, or drop block numbers.";
+    /// A VcPost `Out` template prints a register (`<Name>`) that nothing sets: no statement
+    /// assigns it, the runtime does not load it (the APT record registers, the composites
+    /// variables), and no table or application passes it as a Sub parameter. It prints empty
+    /// every time; usually the register's name is misspelt.
+    LN013: Warning, "a VcPost `Out` prints a register (`<Name>`) that no statement assigns, the runtime does not load and no table or application passes: it prints empty every time (often a misspelt name)",
+        fix = "Correct the register's name, or assign it before the `Out`.";
 }
