@@ -18,6 +18,7 @@ pub mod native;
 mod ron_locate;
 pub mod synthetic;
 
+use postc_ir::codes;
 use std::path::Path;
 
 use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceLoader, SourceMap, Span};
@@ -103,7 +104,9 @@ pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     match sources.loader().read(path) {
         Ok(bytes) => compile_post_bytes(path, &bytes, dialect, sources),
-        Err(e) => Compiled::failed(Diagnostic::error("IO001", format!("cannot read post `{}`: {e}", path.display()))),
+        Err(e) => {
+            Compiled::failed(Diagnostic::error(codes::IO001, format!("cannot read post `{}`: {e}", path.display())))
+        }
     }
 }
 
@@ -111,7 +114,7 @@ pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceM
 pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     let Some(dialect) = dialect.or_else(|| post_dialect(path, bytes)) else {
         return Compiled::failed(
-            Diagnostic::error("IO004", format!("cannot tell which dialect `{}` is written in", path.display()))
+            Diagnostic::error(codes::IO004, format!("cannot tell which dialect `{}` is written in", path.display()))
                 .help("name it .pp (Vectric), .js (CIMCO), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
         );
     };
@@ -150,7 +153,7 @@ fn validated(compiled: &mut Compiled, ron_file: Option<FileId>, sources: &Source
             Some(i) => format!("{field}[{i}]"),
             None => field.to_string(),
         };
-        let mut d = Diagnostic::error("IR002", format!("{place}: {}", p.message))
+        let mut d = Diagnostic::error(codes::IR002, format!("{place}: {}", p.message))
             .help("a post's ids must name formats, variables, functions, globals and scripts it has");
         let span = match ron_file {
             Some(file) => sources
@@ -183,7 +186,7 @@ fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
         Err(e) => {
             let offset = line_col_offset(&text, e.span.start.line, e.span.start.col);
             Compiled::failed(
-                Diagnostic::error("IR001", format!("this IR post does not read: {}", e.code))
+                Diagnostic::error(codes::IR001, format!("this IR post does not read: {}", e.code))
                     .at(postc_ir::Span::new(file, offset, (offset + 1).min(text.len())), "here"),
             )
         }
@@ -257,13 +260,15 @@ fn read_head(loader: &dyn SourceLoader, path: &Path) -> Vec<u8> {
 /// Opens a toolpath as a stream of events.
 pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
     if !sources.loader().exists(path) {
-        return Err(Diagnostic::error("IO001", format!("toolpath `{}` does not exist", path.display())));
+        return Err(Diagnostic::error(codes::IO001, format!("toolpath `{}` does not exist", path.display())));
     }
     match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
         Some(ToolpathFormat::Apt) => Ok(Box::new(postc_front_apt::open(path, sources)?)),
-        None => Err(Diagnostic::error("IO006", format!("cannot tell what kind of toolpath `{}` is", path.display()))
-            .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)")),
+        None => {
+            Err(Diagnostic::error(codes::IO006, format!("cannot tell what kind of toolpath `{}` is", path.display()))
+                .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"))
+        }
     }
 }
 

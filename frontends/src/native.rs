@@ -7,6 +7,7 @@
 //! (RON) are skipped. The reader holds one line at a time, so memory stays
 //! flat whatever the file's length; each event carries the span of its line.
 
+use postc_ir::codes;
 use std::io::{self, BufRead, BufReader};
 
 use postc_ir::source::SourceReader;
@@ -38,7 +39,7 @@ pub fn open(path: &Path, sources: &mut SourceMap) -> Result<NativeReader<BufRead
     let file = sources
         .loader()
         .open(path)
-        .map_err(|e| Diagnostic::error("IO001", format!("cannot open toolpath `{}`: {e}", path.display())))?;
+        .map_err(|e| Diagnostic::error(codes::IO001, format!("cannot open toolpath `{}`: {e}", path.display())))?;
     let id = sources.add_streamed(path.display().to_string());
     let syntax = match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("ron") => Some(Syntax::Ron),
@@ -63,7 +64,7 @@ impl<R: BufRead> NativeReader<R> {
             Syntax::Ron => self.ron.from_str::<Event>(text).map_err(|e| {
                 let col = e.span.start.col.saturating_sub(1).min(text.len());
                 let at = Span::new(self.file, start + col, (start + col + 1).min(start + text.len()));
-                Diagnostic::error("TP001", format!("this toolpath line is not a valid event: {}", e.code))
+                Diagnostic::error(codes::TP001, format!("this toolpath line is not a valid event: {}", e.code))
                     .at(at, "here")
                     .also(line_span, "in this event")
                     .help("events look like `Feed(x: 10, y: 5, z: -1)`; docs/toolpath-format.md lists every event and field")
@@ -71,7 +72,7 @@ impl<R: BufRead> NativeReader<R> {
             Syntax::JsonLines => serde_json::from_str::<Event>(text).map_err(|e| {
                 let col = e.column().saturating_sub(1).min(text.len());
                 let at = Span::new(self.file, start + col, (start + col + 1).min(start + text.len()));
-                Diagnostic::error("TP002", format!("this JSON line is not a valid event: {e}"))
+                Diagnostic::error(codes::TP002, format!("this JSON line is not a valid event: {e}"))
                     .at(at, "here")
                     .also(line_span, "in this event")
                     .help("events look like {\"Feed\":{\"x\":10,\"y\":5,\"z\":-1}}; docs/toolpath-format.md lists every event and field")
@@ -108,10 +109,10 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                 Err(e) => {
                     self.done = true;
                     let d = if e.kind() == io::ErrorKind::InvalidData {
-                        Diagnostic::error("TP003", "the toolpath is not text (it is not valid UTF-8)")
+                        Diagnostic::error(codes::TP003, "the toolpath is not text (it is not valid UTF-8)")
                             .at(Span::new(self.file, start, start + 1), "from here on")
                     } else {
-                        Diagnostic::error("IO002", format!("cannot read the toolpath: {e}"))
+                        Diagnostic::error(codes::IO002, format!("cannot read the toolpath: {e}"))
                     };
                     diagnostics.push(d);
                 }

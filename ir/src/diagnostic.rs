@@ -83,15 +83,23 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
+    /// A diagnostic of `code`: a registry entry (`codes::PP012`) or its
+    /// identifier. Debug builds check that the code is in the registry
+    /// (`crate::codes`) with this severity.
+    pub fn new(severity: Severity, code: impl Into<&'static str>, message: impl Into<String>) -> Diagnostic {
+        let code = code.into();
+        debug_assert!(
+            crate::codes::severity_ok(code, severity),
+            "diagnostic {code} reported as {severity}: not so in the registry (ir/src/codes.rs)"
+        );
         Diagnostic { code, severity, message: message.into(), labels: Vec::new(), notes: Vec::new(), help: None }
     }
 
-    pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
+    pub fn error(code: impl Into<&'static str>, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Error, code, message)
     }
 
-    pub fn warning(code: &'static str, message: impl Into<String>) -> Diagnostic {
+    pub fn warning(code: impl Into<&'static str>, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Warning, code, message)
     }
 

@@ -98,6 +98,7 @@
 
 pub mod calls;
 pub mod code;
+pub mod codes;
 pub mod diagnostic;
 pub mod event;
 pub mod format;

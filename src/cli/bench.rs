@@ -1,6 +1,7 @@
 //! `postc bench`: posting throughput of a post over a toolpath file or a
 //! synthetic toolpath, with a progress bar, into a sink that counts bytes.
 
+use postc_ir::codes;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -48,7 +49,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             None => {
                 return Err(fail(
                     &mut sources,
-                    Diagnostic::error("IO007", format!("there is no toolpath pattern `{}`", args.pattern))
+                    Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{}`", args.pattern))
                         .help(format!("patterns: {}", PATTERNS.join(", "))),
                 ));
             }

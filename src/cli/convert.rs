@@ -3,6 +3,7 @@
 //! cannot hold is refused with a diagnostic per reason, and nothing is
 //! written; `-o` writes the whole file or none of it.
 
+use postc_ir::codes;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -63,5 +64,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             stdout.write_all(&text).and_then(|()| stdout.flush())
         }
     };
-    written.map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot write the converted post: {e}"))))
+    written.map_err(|e| {
+        fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the converted post: {e}")))
+    })
 }

@@ -11,6 +11,7 @@
 //! it: a `.csv` file is a probe table; a `.vcp.ron`/`.vcp.jsonl` file, or
 //! one whose first line is `VcpFile(...)`, is a composites event file.
 
+use postc_ir::codes;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
@@ -40,7 +41,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         None => Err(fail(
             &mut sources,
-            Diagnostic::error("PT016", format!("`{}` has no probe-cycle Subs", args.post.display())).help(
+            Diagnostic::error(codes::PT016, format!("`{}` has no probe-cycle Subs", args.post.display())).help(
                 "probe-cycle Subs carry a keyword comment: `' #Init`, `' #Rapid !X !Y !Z`, `' #Cycle !X !Y Width`, ...",
             ),
         )),
@@ -85,7 +86,7 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     let Some(post_path) = job.post else {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO006", format!("`{}` needs a VcPost post", job.input.display()))
+            Diagnostic::error(codes::IO006, format!("`{}` needs a VcPost post", job.input.display()))
                 .help("postc post POST.VcPost TABLE.csv, or postc post POST.VcPost EVENTS.vcp.ron"),
         ));
     };
@@ -93,20 +94,20 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     if post.info.dialect != Dialect::VcPost {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO006", format!("`{}` is not a VcPost post", post_path.display()))
+            Diagnostic::error(codes::IO006, format!("`{}` is not a VcPost post", post_path.display()))
                 .help("probe tables and composites event files are read against a VcPost post's Subs"),
         ));
     }
     if job.kind == JobKind::ProbeTable && !job.primers.is_empty() {
         report::eprint(
             &mut sources,
-            &[Diagnostic::warning("IO007", "--primer only applies to composites event files; ignored")],
+            &[Diagnostic::warning(codes::IO007, "--primer only applies to composites event files; ignored")],
         );
     }
     let mut source = open(&job, &post, &mut sources)?;
     let out = match job.output {
         Some(path) => super::sink::file(path).map_err(|e| {
-            fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
+            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", path.display())))
         })?,
         None => super::sink::stdout(),
     };
@@ -140,12 +141,12 @@ fn open(job: &Job<'_>, post: &Post, sources: &mut SourceMap) -> Result<Box<dyn C
     match job.kind {
         JobKind::ProbeTable => {
             let bytes = std::fs::read(job.input).map_err(|e| {
-                fail(sources, Diagnostic::error("IO001", format!("cannot read `{}`: {e}", job.input.display())))
+                fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{}`: {e}", job.input.display())))
             })?;
             let Ok(text) = String::from_utf8(bytes) else {
                 return Err(fail(
                     sources,
-                    Diagnostic::error("PT001", format!("`{}` is not UTF-8 text", job.input.display())),
+                    Diagnostic::error(codes::PT001, format!("`{}` is not UTF-8 text", job.input.display())),
                 ));
             };
             let text = text.strip_prefix('\u{FEFF}').map(str::to_string).unwrap_or(text);

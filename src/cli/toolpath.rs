@@ -1,5 +1,6 @@
 //! `postc toolpath gen`: writes a synthetic toolpath as native events.
 
+use postc_ir::codes;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -31,7 +32,7 @@ pub fn run(command: Command) -> Result<(), Failed> {
     let Some(mut generator) = Synthetic::new(&pattern, moves) else {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO007", format!("there is no toolpath pattern `{pattern}`"))
+            Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{pattern}`"))
                 .help(format!("patterns: {}", PATTERNS.join(", "))),
         ));
     };
@@ -61,5 +62,5 @@ pub fn run(command: Command) -> Result<(), Failed> {
         }
         None => write(&mut std::io::BufWriter::new(std::io::stdout().lock()), &mut generator),
     };
-    result.map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot write the toolpath: {e}"))))
+    result.map_err(|e| fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the toolpath: {e}"))))
 }

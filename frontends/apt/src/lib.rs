@@ -65,30 +65,8 @@
 //!
 //! ## Diagnostic codes
 //!
-//! | code | severity | meaning |
-//! |---|---|---|
-//! | CL001 | error | binary file (APT360 CLFILE, UTF-16, ...), not CL text; nothing is read |
-//! | CL002 | error | APT part program (source), not CL data; reading stops |
-//! | CL003 | error | syntax error in a record; the record is skipped |
-//! | CL004 | error | a known record with wrong arguments; the record is skipped |
-//! | CL005 | warning | unknown major word; the record is skipped |
-//! | CL006 | warning | two values without a comma between them |
-//! | CL007 | warning | a line of numbers joined to the record above without `$` |
-//! | CL008 | error | a line of numbers that continues no record |
-//! | CL009 | warning | a word not understood inside a known record, ignored |
-//! | CL010 | warning | CIRCLE not followed by its GOTO; dropped |
-//! | CL011 | warning | arc end point not on the circle |
-//! | CL012 | warning | arc in a tilted plane, cut into feed moves |
-//! | CL013 | warning | drilling cycle not ended by CYCLE/OFF |
-//! | CL014 | warning | UNITS after the first move, ignored |
-//! | CL015 | warning | END-OF-PATH without TOOL PATH |
-//! | CL016 | warning | records after FINI, ignored |
-//! | CL017 | warning | NURBS spline motion not followed |
-//! | CL018 | warning | file ends after a `$` |
-//! | CL019 | warning | feed per revolution with no spindle speed known |
-//! | CL020 | error | line longer than 1 MiB, skipped |
-//! | CL021 | error | the file cannot be read |
-//! | CL022 | warning | TLON,GOFWD arc without INDIRV |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
 mod circle;
 mod cycle;

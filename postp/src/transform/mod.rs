@@ -34,25 +34,25 @@ pub use motion::Mapping;
 
 /// Diagnostic codes of `postp`.
 pub mod codes {
-    pub const NO_CL: &str = "PX001";
-    pub const NO_MACHIN: &str = "PX002";
-    pub const UNKNOWN_MACHIN: &str = "PX003";
-    pub const BAD_AXIS_TYPE: &str = "PX004";
-    pub const BAD_OPTIONS: &str = "PX005";
-    pub const POST_FAILED: &str = "PX006";
-    pub const LATHE_ONLY: &str = "PX010";
-    pub const MILL_ONLY: &str = "PX011";
-    pub const BAD_ARGS: &str = "PX012";
-    pub const MACHIN_NOT_FIRST: &str = "PX013";
-    pub const IGNORED: &str = "PX014";
-    pub const POSITION_UNKNOWN: &str = "PX015";
-    pub const BAD_PLANE: &str = "PX016";
-    pub const DWELL_REVS: &str = "PX017";
-    pub const LETTER: &str = "PX018";
-    pub const AXIS_IGNORED: &str = "PX019";
-    pub const NO_SUCH_AXIS: &str = "PX020";
-    pub const COOLANT: &str = "PX021";
-    pub const CYCLE_MODE: &str = "PX022";
+    pub const NO_CL: &str = postc_ir::codes::PX001.code;
+    pub const NO_MACHIN: &str = postc_ir::codes::PX002.code;
+    pub const UNKNOWN_MACHIN: &str = postc_ir::codes::PX003.code;
+    pub const BAD_AXIS_TYPE: &str = postc_ir::codes::PX004.code;
+    pub const BAD_OPTIONS: &str = postc_ir::codes::PX005.code;
+    pub const POST_FAILED: &str = postc_ir::codes::PX006.code;
+    pub const LATHE_ONLY: &str = postc_ir::codes::PX010.code;
+    pub const MILL_ONLY: &str = postc_ir::codes::PX011.code;
+    pub const BAD_ARGS: &str = postc_ir::codes::PX012.code;
+    pub const MACHIN_NOT_FIRST: &str = postc_ir::codes::PX013.code;
+    pub const IGNORED: &str = postc_ir::codes::PX014.code;
+    pub const POSITION_UNKNOWN: &str = postc_ir::codes::PX015.code;
+    pub const BAD_PLANE: &str = postc_ir::codes::PX016.code;
+    pub const DWELL_REVS: &str = postc_ir::codes::PX017.code;
+    pub const LETTER: &str = postc_ir::codes::PX018.code;
+    pub const AXIS_IGNORED: &str = postc_ir::codes::PX019.code;
+    pub const NO_SUCH_AXIS: &str = postc_ir::codes::PX020.code;
+    pub const COOLANT: &str = postc_ir::codes::PX021.code;
+    pub const CYCLE_MODE: &str = postc_ir::codes::PX022.code;
 }
 
 /// What the transform needs to know about the machine.

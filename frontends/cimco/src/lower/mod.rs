@@ -29,6 +29,7 @@ mod setup;
 mod warn;
 
 use crate::host_names as names;
+use postc_ir::codes;
 use std::path::Path;
 
 use postc_ir::{
@@ -379,7 +380,7 @@ fn settings(model: &Model, post: &mut Post, diags: &mut Vec<Diagnostic>) {
         && let Some(init) = g.init
     {
         diags.push(
-            Diagnostic::warning("JS103", format!("decimalMark is {m:?}; postc writes '.' or ','"))
+            Diagnostic::warning(codes::JS103, format!("decimalMark is {m:?}; postc writes '.' or ','"))
                 .at(init.span, "here")
                 .help("use '.' or ','; postc uses '.'"),
         );
