@@ -3,18 +3,18 @@
 //! `check --format json` does. Each diagnostic must cost the same wherever
 //! it is in the file, so the time per MB is the same at both sizes.
 
+use postc_report::Render as _;
 use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use postc_ir::SourceMap;
 
 #[path = "../tests/many_errors/mod.rs"]
 mod many_errors;
 use many_errors::bad_cl;
 
 fn check_json(path: &Path) -> usize {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let diagnostics = postc_frontends::check_toolpath(path, &mut sources);
     let name = path.display().to_string();
     diagnostics.iter().map(|d| sources.to_json(d, &name)).filter_map(|j| j.line).count()

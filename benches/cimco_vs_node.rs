@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::EventSource;
-use postc_runtime::{Output, RunOptions};
+use postc_runtime::Output;
 use support::cimco::{compile, corpus, node, run_node};
 
 fn best_of_three(mut f: impl FnMut() -> f64) -> f64 {
@@ -49,15 +49,15 @@ fn main() {
 
     let mut events = 0;
     let postc_total = best_of_three(|| {
-        let mut sources = postc_ir::SourceMap::new();
+        let mut sources = postc_report::source_map();
         let mut source = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
-        let report =
-            postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
+        let report = postc_runtime::run(&post, &mut source, Output::discard(), postc_frontends::run_options(&post))
+            .expect("postc posts");
         events = report.events;
         start.elapsed().as_secs_f64()
     });
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut reader = postc_frontends::open_toolpath(&jsonl, &mut sources).expect("the toolpath opens");
     let (mut all, mut diags) = (Vec::new(), Vec::new());
     while let Some((e, _)) = reader.next_event(&mut diags) {
@@ -66,7 +66,8 @@ fn main() {
     let postc_post = best_of_three(|| {
         let mut source = postc_ir::event::VecSource::new(all.clone(), postc_ir::FileId(0));
         let start = Instant::now();
-        postc_runtime::run(&post, &mut source, Output::discard(), RunOptions::default()).expect("postc posts");
+        postc_runtime::run(&post, &mut source, Output::discard(), postc_frontends::run_options(&post))
+            .expect("postc posts");
         start.elapsed().as_secs_f64()
     });
     let (mut node_total, mut node_post) = (f64::INFINITY, f64::INFINITY);

@@ -8,8 +8,8 @@
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use postc_frontends::synthetic::Synthetic;
 use postc_ir::event::{Event, Intent};
-use postc_ir::{EventSource, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions, run};
+use postc_ir::{EventSource, Post};
+use postc_runtime::{Finished, Output, run};
 
 /// The post both sides print: G0/G1 moves, modal X Y Z and F.
 const POST: &str = r#"
@@ -30,7 +30,7 @@ begin FEED_MOVE
 "#;
 
 fn post() -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) =
         postc_front_vectric::compile(std::path::Path::new("bench.pp"), POST.as_bytes(), &mut sources);
     assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{diagnostics:?}");
@@ -39,7 +39,7 @@ fn post() -> Post {
 
 fn postc_text(post: &Post, moves: u64, out: Output) -> Option<Vec<u8>> {
     let mut source = Synthetic::new("zigzag", moves).unwrap();
-    match run(post, &mut source, out, RunOptions::default()).ok()?.output {
+    match run(post, &mut source, out, postc_frontends::run_options(post)).ok()?.output {
         Finished::Memory(parts) => Some(parts.concat()),
         _ => None,
     }

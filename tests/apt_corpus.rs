@@ -36,7 +36,7 @@ use std::path::{Path, PathBuf};
 use postc_ir::event::{DrillCycle, DrillKind, Event, Plane, Text};
 use postc_ir::{Diagnostic, EventSource, Post, SourceMap, Span};
 use postc_runtime::geometry::ArcGeometry;
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 mod support;
 
@@ -177,7 +177,7 @@ fn default_post(sources: &mut SourceMap) -> Post {
 
 /// Reads, posts and checks one file; returns what went wrong.
 fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let diags = postc_frontends::check_toolpath(path, &mut sources);
     let errors: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
     if is_binary(path) {
@@ -229,7 +229,7 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     // Post through the default post.
     let reader = postc_frontends::open_toolpath(path, &mut sources).unwrap();
     let mut source = Adapted { inner: reader, feed };
-    let program = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
+    let program = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8_lossy(&parts.concat()).into_owned(),
             _ => unreachable!(),

@@ -55,3 +55,206 @@ fn the_binary_crate_holds_the_command_line() {
     entries.sort();
     assert_eq!(entries, ["cli", "default_post.rs", "lib.rs", "main.rs"]);
 }
+
+/// The Rust sources under a folder, with their text.
+fn sources(folder: &str) -> Vec<(String, String)> {
+    fn walk(dir: &Path, out: &mut Vec<(String, String)>) {
+        let Ok(entries) = std::fs::read_dir(dir) else { return };
+        for e in entries.flatten() {
+            let path = e.path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|x| x == "rs") {
+                out.push((path.display().to_string(), std::fs::read_to_string(&path).unwrap_or_default()));
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join(folder), &mut out);
+    assert!(!out.is_empty(), "no sources in {folder}");
+    out
+}
+
+/// The code of a source file before its `#[cfg(test)]` module.
+fn non_test(text: &str) -> &str {
+    text.find("#[cfg(test)]").map_or(text, |i| &text[..i])
+}
+
+/// Lines of `folder`'s sources (outside unit tests) that contain any of
+/// `needles`, as `file: line`.
+fn uses(folder: &str, needles: &[&str]) -> Vec<String> {
+    let mut found = Vec::new();
+    for (path, text) in sources(folder) {
+        for line in non_test(&text).lines() {
+            let code = line.trim_start();
+            if code.starts_with("//") {
+                continue;
+            }
+            if needles.iter().any(|n| code.contains(n)) {
+                found.push(format!("{path}: {}", line.trim()));
+            }
+        }
+    }
+    found
+}
+
+/// The IR opens no file and renders nothing: the source map reads through
+/// the loader its caller gives it, and `postc-report` renders.
+#[test]
+fn the_ir_opens_no_file_and_renders_nothing() {
+    assert_eq!(uses("ir/src", &["std::fs", "File::", "codespan", "stdout()", "stderr()"]), Vec::<String>::new());
+    assert!(
+        !dependencies("ir").iter().any(|d| d == "codespan-reporting" || d == "tempfile"),
+        "{:?}",
+        dependencies("ir")
+    );
+}
+
+/// The runtime writes through sinks and takes "now" as an input: it opens
+/// no file, reads no clock and writes no terminal.
+#[test]
+fn the_runtime_touches_no_file_clock_or_terminal() {
+    let found =
+        uses("runtime/src", &["std::fs", "File::", "tempfile", "SystemTime", "Instant::now", "stdout()", "stderr()"]);
+    assert_eq!(found, Vec::<String>::new());
+    assert!(!dependencies("runtime").iter().any(|d| d == "tempfile" || d == "codespan-reporting"));
+}
+
+/// Post frontends read what they are given and ask the source map's loader
+/// for the rest (`POST_BASE`).
+#[test]
+fn the_vectric_frontend_reads_post_base_through_the_loader() {
+    assert_eq!(uses("frontends/vectric/src", &["std::fs", "File::"]), Vec::<String>::new());
+}
+
+/// Rendering diagnostics is the edge's job.
+#[test]
+fn only_the_edge_renders_diagnostics() {
+    for krate in [
+        "ir",
+        "runtime",
+        "frontends",
+        "frontends/vectric",
+        "frontends/cimco",
+        "frontends/vcpost",
+        "frontends/apt",
+        "postp",
+        "verify",
+        "backends",
+        "lsp",
+        "lint",
+    ] {
+        assert!(
+            !dependencies(krate).iter().any(|d| d == "codespan-reporting"),
+            "{krate} depends on codespan-reporting"
+        );
+    }
+}
+
+/// Only the edge touches the file system, the clock and the terminal: the
+/// command line (`src/`) and `postc-report` (rendering, the file-system
+/// loader). Every library crate reads through the loader it is given,
+/// writes through the sink it is given and takes "now" as an input.
+#[test]
+fn only_the_edge_touches_files_the_clock_and_the_terminal() {
+    let needles = [
+        "std::fs",
+        "File::",
+        "tempfile",
+        "SystemTime",
+        "Instant::now",
+        "stdout()",
+        "stderr()",
+        "stdin()",
+        "Connection::stdio",
+        "println!",
+        "eprintln!",
+        "print!(",
+        "eprint!(",
+    ];
+    let mut found = Vec::new();
+    for folder in [
+        "ir/src",
+        "runtime/src",
+        "frontends/src",
+        "frontends/vectric/src",
+        "frontends/cimco/src",
+        "frontends/vcpost/src",
+        "frontends/apt/src",
+        "postp/src",
+        "verify/src",
+        "backends/src",
+        "lsp/src",
+        "lint/src",
+    ] {
+        found.extend(uses(folder, &needles));
+    }
+    assert_eq!(found, Vec::<String>::new());
+}
+
+/// `postp` reads its CL file once, through the reader's events: no second
+/// handle on the file (the events keep FEDRAT units, COOLNT placement and
+/// tool loads as written).
+#[test]
+fn postp_reads_its_cl_file_through_events_only() {
+    assert_eq!(uses("postp/src", &["ClText", ".open(", "read_at("]), Vec::<String>::new());
+}
+
+/// The runtime's whole dependency tree (what `cargo tree -p postc-runtime`
+/// lists) holds no frontend, no script host and no script engine: it
+/// reads IR only, and the host of a post's scripts is handed in.
+#[test]
+fn the_runtime_depends_on_no_frontend_at_any_depth() {
+    let direct = dependencies("runtime");
+    for name in &direct {
+        assert!(
+            !name.starts_with("postc-front") && name != "postc-frontends" && name != "postc-cimco-host",
+            "postc-runtime depends on {name}"
+        );
+    }
+    // Every postc crate the runtime uses, recursively: only the IR.
+    assert_eq!(postc_crates("runtime"), ["postc-ir"]);
+    assert_eq!(postc_crates("ir"), Vec::<String>::new());
+    assert!(!direct.iter().any(|d| d == "rhai"), "postc-runtime depends on rhai");
+}
+
+/// The script host sits beside the CIMCO frontend and uses the runtime,
+/// not the other way round.
+#[test]
+fn the_cimco_script_host_uses_the_runtime_and_the_frontends_names() {
+    assert_eq!(postc_crates("frontends/cimco/host"), ["postc-ir", "postc-runtime", "postc-front-cimco"]);
+    assert!(!postc_crates("frontends/cimco").iter().any(|d| d == "postc-runtime"));
+}
+
+/// The runtime never names a dialect: outside comments, no line of
+/// `runtime/src` says `Dialect::`, CIMCO or VcPost (the check of
+/// `docs/architecture.md`, `grep -rnE 'Dialect::|cimco|vcpost|Cimco|VcPost' runtime/src`).
+#[test]
+fn the_runtime_names_no_dialect() {
+    let mut found = Vec::new();
+    let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("runtime/src")];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            for (i, line) in text.lines().enumerate() {
+                let code = line.trim_start();
+                if code.starts_with("//") {
+                    continue;
+                }
+                // Drop a trailing comment (no string of the runtime holds `//`
+                // before a dialect's name).
+                let code = code.split("//").next().unwrap_or("");
+                let lower = code.to_ascii_lowercase();
+                if code.contains("Dialect::") || lower.contains("cimco") || lower.contains("vcpost") {
+                    found.push(format!("{}:{}: {line}", path.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(found.is_empty(), "the runtime names a dialect:\n{}", found.join("\n"));
+}

@@ -3,10 +3,9 @@
 //! Each diagnostic's line and column come from a line index built once per
 //! file, not from reading the file again from its start.
 
+use postc_report::Render as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
-
-use postc_ir::SourceMap;
 
 mod many_errors;
 use many_errors::bad_cl;
@@ -15,7 +14,7 @@ use many_errors::bad_cl;
 /// (every diagnostic's line and column) and the rendering for people.
 fn check(path: &Path) -> (usize, Duration) {
     let start = Instant::now();
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let diagnostics = postc_frontends::check_toolpath(path, &mut sources);
     let name = path.display().to_string();
     let json: Vec<_> = diagnostics.iter().map(|d| sources.to_json(d, &name)).collect();
@@ -49,9 +48,9 @@ fn streamed_positions_match_the_held_text() {
     let path = dir.path().join("positions.cl");
     let text = "GOTO/1,2,3\n$$ é à ü\nGOTO/4,Q5,6\r\n\nFINI";
     std::fs::write(&path, text).unwrap();
-    let mut held = SourceMap::new();
+    let mut held = postc_report::source_map();
     let held_id = held.add("positions.cl", text);
-    let mut streamed = SourceMap::new();
+    let mut streamed = postc_report::source_map();
     let streamed_id = streamed.add_streamed(path.display().to_string());
     for offset in 0..=text.len() + 3 {
         if !text.is_char_boundary(offset.min(text.len())) {

@@ -153,7 +153,7 @@ fn apt_cycles_carry_the_hole_top() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let path = dir.path().join("job.cl");
     std::fs::write(&path, cl).expect("write the CL file");
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(&path, &mut sources).unwrap_or_else(|d| panic!("{}", d.message));
     let mut diags = Vec::new();
     let mut cycle = None;

@@ -2,7 +2,7 @@
 //! why (issue 13): the construct with no native form and where it is.
 //! The functions every move goes through are native in every corpus post.
 
-use postc_ir::{Body, SourceMap};
+use postc_ir::Body;
 
 mod support;
 
@@ -19,7 +19,7 @@ const KNOWN_SCRIPTS: &[(&str, &str)] =
 fn every_script_function_says_why_and_the_move_handlers_are_native() {
     let mut problems = Vec::new();
     for path in files(&corpus().join("posts/cimco"), "js") {
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
         for f in &post.functions {
             match (&f.body, &f.why_script) {

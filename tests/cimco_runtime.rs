@@ -6,10 +6,10 @@ use std::path::Path;
 
 use postc_ir::event::{Event, FeedMove, Move, Tool, ToolpathStart, VecSource};
 use postc_ir::{Body, FileId, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, Output};
 
 fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>, SourceMap) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diags) = cimco(Path::new("test.js"), js.as_bytes(), &mut sources);
     (post, diags, sources)
 }
@@ -33,7 +33,7 @@ fn events() -> Vec<Event> {
 
 fn run(post: &Post) -> Result<String, Vec<postc_ir::Diagnostic>> {
     let mut source = VecSource::new(events(), FileId(0));
-    let report = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default())?;
+    let report = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post))?;
     match report.output {
         Finished::Memory(parts) => Ok(String::from_utf8_lossy(&parts.concat()).into_owned()),
         _ => unreachable!("memory output"),
@@ -217,7 +217,7 @@ fn mutated_posts_never_panic() {
                     bytes.insert(i, b'(');
                 }
             }
-            let mut sources = SourceMap::new();
+            let mut sources = postc_report::source_map();
             let (post, diags) = cimco(Path::new("m.js"), &bytes, &mut sources);
             if !postc_ir::diagnostic::has_errors(&diags) {
                 let mut p = post;

@@ -87,7 +87,7 @@ fn cases() -> Vec<Case> {
 
 /// Compiles post bytes; the diagnostics as `CODE message` lines.
 fn compile_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>) -> (Option<Post>, Vec<String>) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post_bytes(path, bytes, dialect, &mut sources);
     let errors = compiled.has_errors();
     let diags = compiled.diagnostics.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
@@ -99,12 +99,16 @@ type Program = Result<Vec<Vec<u8>>, Vec<String>>;
 
 /// Posts a toolpath: the program, and the warnings.
 fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = match postc_frontends::open_toolpath(toolpath, &mut sources) {
         Ok(s) => s,
         Err(d) => return (Err(vec![format!("{} {}", d.code, d.message)]), Vec::new()),
     };
-    let options = RunOptions { date: Some("2026-01-01".into()), time: Some("12:00".into()), ..RunOptions::default() };
+    let options = RunOptions {
+        date: Some("2026-01-01".into()),
+        time: Some("12:00".into()),
+        ..postc_frontends::run_options(post)
+    };
     match postc_runtime::run(post, &mut source, Output::memory(), options) {
         Ok(report) => {
             let warnings = report.warnings.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
@@ -315,7 +319,7 @@ fn postp_controllers_convert() {
     for controller in postc_postp::Controller::ALL {
         let cl = if controller.kind() == postc_postp::Kind::Lathe { &lathe } else { &mill };
         let cl = cl.as_path();
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
         let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
         let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
@@ -337,6 +341,7 @@ fn postp_controllers_convert() {
             cl,
             &head,
             &options,
+            None,
             Output::memory(),
             sources,
         ) {

@@ -2,7 +2,7 @@
 //! docs/toolpath-format.md is a valid toolpath.
 
 use postc_frontends::native::{NativeReader, Syntax};
-use postc_ir::{EventSource, SourceMap};
+use postc_ir::EventSource;
 
 fn blocks(text: &str, fence: &str) -> Vec<String> {
     let mut out = Vec::new();
@@ -30,7 +30,7 @@ fn toolpath_format_examples_read() {
     let mut read = 0;
     for (fence, syntax) in [("ron", Syntax::Ron), ("json", Syntax::JsonLines)] {
         for block in blocks(&doc, fence) {
-            let mut sources = SourceMap::new();
+            let mut sources = postc_report::source_map();
             let file = sources.add("doc", block.clone());
             let mut reader = NativeReader::new(block.as_bytes(), Some(syntax), file);
             let mut diags = Vec::new();

@@ -7,7 +7,6 @@
 
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
 use postc_runtime::{Finished, Output, RunOptions};
 
 fn root() -> PathBuf {
@@ -15,11 +14,11 @@ fn root() -> PathBuf {
 }
 
 fn post(post: &Path, toolpath: &Path, exact_arcs: bool) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(post, None, &mut sources);
     let post = compiled.post.unwrap();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    let options = RunOptions { exact_arcs, ..RunOptions::default() };
+    let options = RunOptions { exact_arcs, ..postc_frontends::run_options(&post) };
     match postc_runtime::run(&post, &mut source, Output::memory(), options).unwrap().output {
         Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
         _ => unreachable!(),

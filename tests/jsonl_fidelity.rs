@@ -12,7 +12,7 @@
 use std::path::{Path, PathBuf};
 
 use postc_frontends::native::{Syntax, write_event};
-use postc_ir::{Event, Post, SourceMap};
+use postc_ir::{Event, Post};
 
 mod support;
 
@@ -43,7 +43,7 @@ fn corpus_posts() -> Vec<(PathBuf, Post)> {
 }
 
 fn read_events(path: &Path) -> Vec<Event> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(path, &mut sources).expect("a corpus toolpath opens");
     let mut diagnostics = Vec::new();
     let mut events = Vec::new();

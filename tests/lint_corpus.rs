@@ -7,14 +7,12 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
-
 mod support;
 
 use support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     let post = compiled.post?;
     Some(postc_lint::lint(&post, &postc_lint::Options::default()))

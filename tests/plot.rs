@@ -9,8 +9,8 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use postc_ir::{Post, SourceMap};
-use postc_runtime::{Finished, RunOptions};
+use postc_ir::Post;
+use postc_runtime::Finished;
 use postc_verify::Settings;
 
 mod support;
@@ -27,16 +27,16 @@ const POST: &str = "corpus/posts/vectric/gcode_mm.pp";
 const JOB: &str = "corpus/toolpaths/seed_job.ron";
 
 fn compile(text: &str) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post_bytes(Path::new("gcode_mm.pp"), text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     compiled.post.unwrap()
 }
 
 fn post(post: &Post) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),
@@ -49,7 +49,7 @@ fn post(post: &Post) -> String {
 fn plot(text: &str) -> (String, usize) {
     let post_ir = compile(text);
     let program = post(&post_ir);
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add("seed.tap", program.clone());
     let mut drawn = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
     let mut again = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();

@@ -76,7 +76,7 @@ fn slowly_growing_text_meets_the_step_budget_soon() {
 
 #[test]
 fn the_scripted_post_really_runs_as_a_script() {
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post_bytes(Path::new("s.js"), SCRIPT_JS.as_bytes(), None, &mut sources);
     let post = compiled.post.unwrap();
     let f = post.functions.iter().find(|f| f.name == "onLinear").unwrap();

@@ -16,7 +16,7 @@ use postp::{check, interpret, root, rs274, run, run_with};
 #[test]
 fn every_embedded_post_compiles_without_a_diagnostic() {
     for c in Controller::ALL {
-        let mut sources = postc_ir::SourceMap::new();
+        let mut sources = postc_report::source_map();
         let compiled = postc_frontends::compile_post_bytes(
             std::path::Path::new(&c.post_name()),
             c.post_source(),

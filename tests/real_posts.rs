@@ -9,8 +9,8 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 
 use postc_ir::diagnostic::has_errors;
-use postc_ir::{Post, Severity, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::{Post, Severity};
+use postc_runtime::{Finished, Output};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -37,10 +37,10 @@ fn posts(dir: &Path) -> Vec<PathBuf> {
 
 /// The program a post writes for the standard toolpath, parts joined.
 fn post_standard(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source =
         postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("a memory run did not finish in memory".into()),
@@ -86,7 +86,7 @@ fn every_real_vectric_post_compiles_and_posts_the_standard_job_the_same_way_twic
     for path in &posts {
         let name = path.strip_prefix(&shared).unwrap_or(path).display().to_string();
         let result = guarded(|| {
-            let mut sources = SourceMap::new();
+            let mut sources = postc_report::source_map();
             let compiled = postc_frontends::compile_post(path, None, &mut sources);
             if has_errors(&compiled.diagnostics) {
                 let errors: Vec<String> = compiled

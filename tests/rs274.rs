@@ -20,8 +20,8 @@
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{ArcDir, Event};
-use postc_ir::{EventSource, Post, Quantity, SourceMap, ValueSource};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::{EventSource, Post, Quantity, ValueSource};
+use postc_runtime::{Finished, Output};
 
 /// Output extensions of posts that write G-code (HPGL, Heidenhain and
 /// ShopBot posts write other languages).
@@ -90,7 +90,7 @@ impl Wrap {
 
 /// The toolpath's moves in the post's units, and the post's wrap.
 fn expected_moves(toolpath: &Path, post: &Post) -> (Vec<Expected>, Option<Wrap>) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
     let mut diags = Vec::new();
     let mut factor = 1.0;
@@ -186,7 +186,7 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
     );
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy();
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
         assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
         let post = compiled.post.unwrap();
@@ -197,16 +197,17 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         for toolpath in &toolpaths {
             let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
             let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-            let program = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
-                Ok(r) => match r.output {
-                    Finished::Memory(parts) => parts,
-                    _ => unreachable!(),
-                },
-                Err(d) => {
-                    failures.push(format!("{label}: posting failed: {d:?}"));
-                    continue;
-                }
-            };
+            let program =
+                match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
+                    Ok(r) => match r.output {
+                        Finished::Memory(parts) => parts,
+                        _ => unreachable!(),
+                    },
+                    Err(d) => {
+                        failures.push(format!("{label}: posting failed: {d:?}"));
+                        continue;
+                    }
+                };
             if program.len() != 1 {
                 continue; // tape-split programs are checked part by part elsewhere
             }

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::rc::Rc;
 
-use postc_ir::{Dialect, SourceMap, Span};
+use postc_ir::{Dialect, Span};
 use postc_runtime::{Finished, Output, RunOptions};
 
 mod support;
@@ -24,7 +24,7 @@ type RawTrace = Rc<RefCell<Vec<(usize, u64, Option<Span>)>>>;
 /// Posts `toolpath` through the post at `path` with a trace; the program's
 /// parts and the trace, or `None` when the post does not post it.
 fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Traced>)> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     let post = compiled.post?;
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).ok()?;
@@ -34,7 +34,7 @@ fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Tr
         trace: Some(Box::new(move |t: &postc_runtime::trace::TraceLine<'_>| {
             sink.borrow_mut().push((t.part, t.line, t.span))
         })),
-        ..RunOptions::default()
+        ..postc_frontends::run_options(&post)
     };
     let report = postc_runtime::run(&post, &mut source, Output::memory(), options).ok()?;
     let Finished::Memory(parts) = report.output else { panic!("a memory run did not finish in memory") };

@@ -3,6 +3,7 @@
 //! composites functions, and the `postc post` / `postc probe-table` command
 //! lines for probe tables and composites event files.
 
+use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -26,14 +27,14 @@ fn toolpath() -> PathBuf {
 /// its primary label in the post.
 fn runaway(body: &str, budget: Option<u64>) -> (String, usize) {
     let text = format!("Sub GOTO\n  Dim I\n{body}\nEnd Sub\n");
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (mut post, diagnostics) = compile(&text, &mut sources);
     assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{}", sources.render(&diagnostics, false));
     if let Some(b) = budget {
         post.options.step_budget = b;
     }
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()) {
+    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
         Ok(_) => panic!("{body}: the runaway loop was not stopped"),
         Err(d) => d,
     };
@@ -53,10 +54,11 @@ fn a_runaway_loop_stops_at_its_line() {
 
 #[test]
 fn endless_recursion_stops() {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, _) = compile("Sub Again\n  Again\nEnd Sub\nSub GOTO\n  Again\nEnd Sub\n", &mut sources);
     let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = postc_runtime::run(&post, &mut source, Output::memory(), RunOptions::default()).err().unwrap();
+    let errors =
+        postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)).err().unwrap();
     assert!(errors.iter().any(|d| d.code == "RT004"), "{errors:?}");
 }
 
@@ -69,7 +71,7 @@ fn a_post_has_no_file_or_process_access() {
         ("  X = CreateObject(\"WScript.Shell\")", "VC023"),
         ("  Kill \"/tmp/x\"", "VC025"),
     ] {
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (_, diagnostics) = compile(&format!("Sub GOTO\n{line}\nEnd Sub\n"), &mut sources);
         assert!(diagnostics.iter().any(|d| d.code == code && d.is_error()), "{line}: {diagnostics:?}");
     }
@@ -78,7 +80,7 @@ fn a_post_has_no_file_or_process_access() {
 #[test]
 fn composites_functions_read_the_calls_lists() {
     let text = "Sub GoTo\n  Out \"L\" & getNthLength1(0) & \",\" & getNthLength1(2) & \",\" & getNthLength3(1) & \",\" & getNthLength1(99)\nEnd Sub\n";
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(text, &mut sources);
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
     let call = |vars: Vec<(String, CallValue)>| SubCall {
@@ -97,9 +99,13 @@ fn composites_functions_read_the_calls_lists() {
         SubCall { sub: "NoSuchSub".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Warn },
         SubCall { sub: "Optional".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Skip },
     ];
-    let report =
-        postc_runtime::calls::run_calls(&post, &mut calls.into_iter(), Output::memory(), RunOptions::default())
-            .unwrap();
+    let report = postc_runtime::calls::run_calls(
+        &postc_frontends::for_calls(&post),
+        &mut calls.into_iter(),
+        Output::memory(),
+        RunOptions::default(),
+    )
+    .unwrap();
     let Finished::Memory(parts) = report.output else { panic!() };
     assert_eq!(String::from_utf8_lossy(&parts[0]), "L5,7.5,2,0\nL0,0,0,0\nL0,0,0,0\n");
     assert_eq!(report.warnings.iter().map(|d| d.code).collect::<Vec<_>>(), ["RT030"]);

@@ -21,6 +21,7 @@
 
 mod support;
 
+use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Post, SourceMap};
@@ -55,7 +56,7 @@ fn extension(post: &str) -> &'static str {
 
 fn compile(stem: &str) -> Result<Post, String> {
     let path = root().join("corpus/posts/vcpost").join(format!("{stem}.VcPost"));
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(&path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         return Err(format!("{stem}: {}", sources.render(&compiled.diagnostics, false)));
@@ -78,7 +79,7 @@ fn memory(
 
 /// Runs one input through a post: a toolpath, a probe table or an event file.
 fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let name = input.to_string_lossy().to_ascii_lowercase();
     if name.ends_with(".csv") {
         let text = std::fs::read_to_string(input).map_err(|e| e.to_string())?;
@@ -87,17 +88,26 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         if !diagnostics.is_empty() {
             return Err(sources.render(&diagnostics, false));
         }
-        let result =
-            postc_runtime::calls::run_calls(post, &mut calls.into_iter(), Output::memory(), RunOptions::default());
+        let result = postc_runtime::calls::run_calls(
+            &postc_frontends::for_calls(post),
+            &mut calls.into_iter(),
+            Output::memory(),
+            RunOptions::default(),
+        );
         memory(result, &mut sources)
-    } else if postc_front_vcpost::composites::is_composites_file(input) {
+    } else if postc_front_vcpost::composites::is_composites_file(input, &postc_report::FsLoader) {
         let mut reader =
             postc_front_vcpost::composites::open(input, &mut sources, post, Vec::new()).map_err(|d| d.message)?;
-        let result = postc_runtime::calls::run_calls(post, &mut reader, Output::memory(), RunOptions::default());
+        let result = postc_runtime::calls::run_calls(
+            &postc_frontends::for_calls(post),
+            &mut reader,
+            Output::memory(),
+            RunOptions::default(),
+        );
         memory(result, &mut sources)
     } else {
         let mut source = postc_frontends::open_toolpath(input, &mut sources).map_err(|d| d.message)?;
-        let result = postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default());
+        let result = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post));
         memory(result, &mut sources)
     }
 }

@@ -8,8 +8,8 @@
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Event, FeedMove, Intent, Job, Move, Power, Tool, ToolpathStart, VecSource};
-use postc_ir::{FileId, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::{FileId, Post};
+use postc_runtime::{Finished, Output};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -22,7 +22,7 @@ fn real_post(rel: &str) -> Option<PathBuf> {
 }
 
 fn compile(path: &Path) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
     compiled.post.expect("a compiled post")
@@ -33,9 +33,9 @@ fn text(parts: Vec<Vec<u8>>) -> String {
 }
 
 fn post_file(post: &Post, toolpath: &Path) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("open the toolpath");
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),
@@ -46,7 +46,7 @@ fn post_file(post: &Post, toolpath: &Path) -> String {
 
 fn post_events(post: &Post, events: Vec<Event>) -> String {
     let mut source = VecSource::new(events, FileId(0));
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),
@@ -326,4 +326,27 @@ fn wrapped_arc_chords_lie_on_the_arc() {
         chords += 1;
     }
     assert!(chords > 4, "the quarter arc of radius 10 needs several chords:\n{program}");
+}
+
+/// A Vectric post with a Lua `SCRIPT` block posts, its Lua lines skipped
+/// with RT003 (docs/vectric.md). Before the script host was chosen by the
+/// scripts' language, the runtime compiled the Lua as Rhai and stopped
+/// with RT022 ("a bug in postc").
+#[test]
+fn lua_scripts_are_kept_and_not_run() {
+    let pp = "POST_NAME = \"lua\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"MM\"\nLINE_ENDING = \"[10]\"\n\
+        VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR Z_POSITION = [Z|C|Z|1.3]\n\
+        begin HEADER\n\"%\"\n\"<!>Hello()\"\nbegin RAPID_MOVE\n\"G0[X][Y][Z]\"\nbegin FEED_MOVE\n\"G1[X][Y][Z]\"\n\
+        begin FOOTER\n\"%\"\nSCRIPT\nfunction Hello()\n  return \"x\"\nend\nENDSCRIPT\n";
+    let mut sources = postc_report::source_map();
+    let compiled = postc_frontends::compile_post_bytes(Path::new("lua.pp"), pp.as_bytes(), None, &mut sources);
+    let post = compiled.post.expect("a compiled post");
+    assert!(!post.scripts.is_empty() && postc_frontends::script_host(&post).is_none());
+    let toolpath = manifest().join("corpus/toolpaths/arcs_mm.ron");
+    let mut source = postc_frontends::open_toolpath(&toolpath, &mut sources).expect("open the toolpath");
+    let report = postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post))
+        .expect("the post runs");
+    assert!(report.warnings.iter().any(|w| w.code == "RT003"), "{:?}", report.warnings);
+    let Finished::Memory(parts) = report.output else { unreachable!("a memory run") };
+    assert!(text(parts).starts_with("%\n"));
 }

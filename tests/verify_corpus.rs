@@ -11,8 +11,8 @@ use std::collections::BTreeMap;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use postc_ir::{Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::Post;
+use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
 fn root() -> PathBuf {
@@ -166,9 +166,9 @@ fn files(dir: &Path, ext: &[&str], recurse: bool) -> Vec<PathBuf> {
 }
 
 fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("not in memory".into()),
@@ -179,7 +179,7 @@ fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
 
 /// Verifies `program` against `toolpath`: the error findings as (code, line, message).
 fn verify(post: &Post, program: &[u8], toolpath: &Path) -> Vec<(&'static str, usize, String)> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add("program", String::from_utf8_lossy(program).into_owned());
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("toolpath opens");
     let settings = Settings::from_post(post, Controller::Generic, 0.01);
@@ -214,7 +214,7 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
     let mut failures = Vec::new();
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy().into_owned();
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
         let errors = compiled.has_errors();
         let Some(post) = compiled.post.filter(|_| !errors) else { continue };

@@ -13,8 +13,8 @@
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use postc_ir::{Post, Severity, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::{Post, Severity};
+use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
 fn root() -> PathBuf {
@@ -54,16 +54,16 @@ fn good_post() -> String {
 }
 
 fn compile(text: &str) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post_bytes(Path::new("seeded.pp"), text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     compiled.post.unwrap()
 }
 
 fn post(post: &Post, toolpath: &Path) -> String {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),
@@ -82,7 +82,7 @@ struct Found {
 }
 
 fn verify(program: &[u8], toolpath: &Path, settings: &Settings) -> Vec<Found> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add("program.ngc", String::from_utf8_lossy(program).into_owned());
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
     let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, settings);

@@ -8,9 +8,7 @@ use std::collections::BTreeMap;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
 use postc_postp::controller::{self, Controller as Mill};
-use postc_postp::records::ClText;
 use postc_postp::transform::{Machine, Transform};
 use postc_postp::{self as postp, Settings as PostpSettings};
 use postc_runtime::{Finished, Output};
@@ -53,7 +51,9 @@ fn cl_files(dir: &Path, out: &mut Vec<PathBuf>) {
         let path = entry.path();
         if path.is_dir() {
             cl_files(&path, out);
-        } else if postc_frontends::is_toolpath(&path) && path.metadata().is_ok_and(|m| m.len() <= MAX_BYTES) {
+        } else if postc_frontends::is_toolpath(&path, &postc_report::FsLoader)
+            && path.metadata().is_ok_and(|m| m.len() <= MAX_BYTES)
+        {
             out.push(path);
         }
     }
@@ -72,8 +72,8 @@ fn postp_mill_programs_verify_against_their_cl_files() {
     for file in &files {
         let name = file.file_name().unwrap().to_string_lossy().into_owned();
         for machine in mills {
-            let mut sources = SourceMap::new();
-            let settings = PostpSettings { options: None, machine: Some(machine) };
+            let mut sources = postc_report::source_map();
+            let settings = PostpSettings { options: None, machine: Some(machine), ..PostpSettings::default() };
             let Ok(report) = postp::post(file, &settings, Output::memory(), &mut sources) else {
                 not_posted += 1;
                 continue;
@@ -97,7 +97,7 @@ fn postp_mill_programs_verify_against_their_cl_files() {
                 axes: controller::rotary_axes(head.axis_type),
                 retractz: options.retractz,
             };
-            let mut source = Transform::new(reader, ClText::open(file), machine_data);
+            let mut source = Transform::new(reader, machine_data);
             let verdict = postc_verify::verify(
                 &mut Cursor::new(&program),
                 file_id,

@@ -6,6 +6,7 @@
 //! a diagnostic to the wrong place. Everything else is kept, so the RON
 //! post posts exactly as its source does.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Post};
 
 /// The IR of `post` as RON, after a header comment naming its source.
@@ -14,7 +15,7 @@ pub fn print(post: &Post) -> Result<String, Vec<Diagnostic>> {
     post.drop_spans();
     let config = ::ron::ser::PrettyConfig::new().struct_names(false).compact_arrays(true);
     let text = ::ron::ser::to_string_pretty(&post, config)
-        .map_err(|e| vec![Diagnostic::error("CV009", format!("the IR cannot be written as RON: {e}"))])?;
+        .map_err(|e| vec![Diagnostic::error(codes::CV009, format!("the IR cannot be written as RON: {e}"))])?;
     Ok(format!(
         "// Converted by postc from {} ({})\n{text}\n",
         crate::source_name(&post),

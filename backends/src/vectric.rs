@@ -25,6 +25,7 @@
 //! written as `[nn]` codes, so every byte (Windows-1252 or UTF-8) comes
 //! back unchanged.
 
+use postc_ir::codes;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
@@ -111,7 +112,7 @@ impl Printer<'_> {
         let post = self.post;
         if post.info.dispatch == Dispatch::AptWords {
             self.refuse(
-                "CV001",
+                codes::CV001.code,
                 None,
                 "this post is driven by APT words (one Sub per GOTO, FEDRAT, ...), which Vectric has no form for"
                     .into(),
@@ -121,7 +122,7 @@ impl Printer<'_> {
         if !post.functions.is_empty() || !post.globals.is_empty() || !post.init.is_empty() {
             let span = post.functions.iter().find_map(|f| f.span);
             self.refuse(
-                "CV002",
+                codes::CV002.code,
                 span,
                 format!(
                     "this post has code ({} functions, {} globals, {} statements run at start) and a Vectric post has none",
@@ -137,7 +138,7 @@ impl Printer<'_> {
         let mut no_statement = |what: &str, differs: bool| {
             if differs {
                 self.refuse(
-                    "CV004",
+                    codes::CV004.code,
                     None,
                     format!("this post sets {what}, which no Vectric statement sets"),
                     "the converted post would behave differently",
@@ -154,7 +155,7 @@ impl Printer<'_> {
             && w.reversed
         {
             self.refuse(
-                "CV004",
+                codes::CV004.code,
                 None,
                 "this post wraps an axis the other way but keeps its letter, which ROTARY_WRAP cannot say".into(),
                 "ROTARY_WRAP_X/Y = \"-A\" names the rotary letter",
@@ -180,7 +181,7 @@ impl Printer<'_> {
         }
         if !assigned.is_empty() {
             self.refuse(
-                "CV005",
+                codes::CV005.code,
                 None,
                 format!(
                     "the post's code sets what {} {} print, and Vectric variables only print what the job gives",
@@ -201,7 +202,7 @@ impl Printer<'_> {
                         {
                             let name = &self.post.variables[id.index()].name;
                             self.refuse(
-                                "CV005",
+                                codes::CV005.code,
                                 h.span,
                                 format!(
                                     "two variables print [{label}] (`{name}` is one), and a Vectric label names one"
@@ -279,7 +280,7 @@ impl Printer<'_> {
                 self.line(&format!("SUBSTITUTE = \"{}\"", quoted(&pairs)));
             } else {
                 self.refuse(
-                    "CV004",
+                    codes::CV004.code,
                     None,
                     "this post substitutes text longer than one character, and SUBSTITUTE takes single characters"
                         .into(),
@@ -337,7 +338,7 @@ impl Printer<'_> {
                 // which the label gets without a declaration.
                 if !is_default(post, v, q) {
                     self.refuse(
-                        "CV005",
+                        codes::CV005.code,
                         None,
                         format!(
                             "`{}` prints [{}] in a way of its own, and Vectric has no VAR name to declare it",
@@ -351,7 +352,7 @@ impl Printer<'_> {
             }
             if v.prefix.iter().any(|b| matches!(b, b'|' | b']' | b'\r' | b'\n')) {
                 self.refuse(
-                    "CV005",
+                    codes::CV005.code,
                     None,
                     format!("the prefix of `{}` holds `|`, `]` or a line break, which a VAR cannot hold", v.name),
                     "a VAR's prefix is everything between two bars",
@@ -409,7 +410,7 @@ impl Printer<'_> {
         }
         if !why.is_empty() {
             self.refuse(
-                "CV003",
+                codes::CV003.code,
                 None,
                 format!("the format of `{name}` cannot be written as a Vectric format: {}", why.join(", ")),
                 "a Vectric format is flags - + 0 #, a width, `.` or `,`, and decimals",
@@ -461,13 +462,13 @@ impl Printer<'_> {
             match &h.key {
                 HandlerKey::Section(s) if SECTION_ORDER.contains(s) => order.push(h),
                 HandlerKey::Section(s) => self.refuse(
-                    "CV001",
+                    codes::CV001.code,
                     h.span,
                     format!("Vectric has no section for {} (`{}`)", section_event(*s), s.name()),
                     "a Vectric post has sections only for the moves, tools and jets of its guides",
                 ),
                 HandlerKey::Word(w) => self.refuse(
-                    "CV001",
+                    codes::CV001.code,
                     h.span,
                     format!("the handler for the APT word {w} has no Vectric section"),
                     "Vectric sections are chosen by the kind of move, not by APT words",
@@ -497,7 +498,7 @@ impl Printer<'_> {
                                     Some(label) => bytes.extend_from_slice(format!("[{label}]").as_bytes()),
                                     None => {
                                         self.refuse(
-                                            "CV005",
+                                            codes::CV005.code,
                                             h.span,
                                             format!("a line of {} prints a variable set by code", s.name()),
                                             "Vectric lines print job values only",
@@ -505,7 +506,7 @@ impl Printer<'_> {
                                     }
                                 },
                                 Piece::Expr(_) => self.refuse(
-                                    "CV002",
+                                    codes::CV002.code,
                                     h.span,
                                     format!("a line of {} prints a computed value", s.name()),
                                     "Vectric lines print literal text and variables only",
@@ -520,14 +521,14 @@ impl Printer<'_> {
                             self.line(&format!("<!>{}", script.source));
                         }
                         _ => self.refuse(
-                            "CV002",
+                            codes::CV002.code,
                             h.span,
                             format!("a Lua call in {} spans several lines", s.name()),
                             "a Vectric `<!>` call is one line",
                         ),
                     },
                     other => self.refuse(
-                        "CV002",
+                        codes::CV002.code,
                         h.span,
                         format!("{} runs {}, and Vectric sections only print lines", s.name(), statement_kind(other)),
                         "a Vectric section is a list of output lines",

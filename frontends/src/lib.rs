@@ -18,9 +18,10 @@ pub mod native;
 mod ron_locate;
 pub mod synthetic;
 
+use postc_ir::codes;
 use std::path::Path;
 
-use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceMap, Span};
+use postc_ir::{Diagnostic, Dialect, EventSource, FileId, Post, SourceLoader, SourceMap, Span};
 
 /// A compiled post and everything its frontend had to say.
 pub struct Compiled {
@@ -65,11 +66,47 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     }
 }
 
-/// Reads and compiles a post file.
+/// The host that runs a compiled post's scripts, chosen by the scripts'
+/// language, never by the post's dialect: Rhai scripts (what CIMCO
+/// functions that do not lower to native IR become) run in the CNC-Calc
+/// host, `postc-cimco-host`. `None` when the post has no script postc
+/// runs (none, or only Lua, which is kept and not run). Everything that
+/// runs a post passes this in [`postc_runtime::RunOptions::script_host`].
+pub fn script_host(post: &Post) -> Option<postc_runtime::script_host::ScriptHostFactory> {
+    if post.scripts.iter().any(|s| s.language == postc_ir::ScriptLanguage::Rhai) {
+        Some(postc_cimco_host::compile)
+    } else {
+        None
+    }
+}
+
+/// The options of a run of `post` with nothing overridden: the defaults,
+/// and the post's script host ([`script_host`]).
+pub fn run_options(post: &Post) -> postc_runtime::RunOptions {
+    postc_runtime::RunOptions { script_host: script_host(post), ..postc_runtime::RunOptions::default() }
+}
+
+/// The post to run over Sub calls (`postc_runtime::calls::run_calls`):
+/// a VcPost post's functions whose values come from the calls' lists
+/// (`getNthLength1`, ...) read tables of globals the lists fill
+/// ([`postc_front_vcpost::call_tables`]). Every other post is run as it is.
+pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
+    match post.info.dialect {
+        Dialect::VcPost => match postc_front_vcpost::call_tables::lower(post) {
+            Some(lowered) => std::borrow::Cow::Owned(lowered),
+            None => std::borrow::Cow::Borrowed(post),
+        },
+        _ => std::borrow::Cow::Borrowed(post),
+    }
+}
+
+/// Reads (through the source map's loader) and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
-    match std::fs::read(path) {
+    match sources.loader().read(path) {
         Ok(bytes) => compile_post_bytes(path, &bytes, dialect, sources),
-        Err(e) => Compiled::failed(Diagnostic::error("IO001", format!("cannot read post `{}`: {e}", path.display()))),
+        Err(e) => {
+            Compiled::failed(Diagnostic::error(codes::IO001, format!("cannot read post `{}`: {e}", path.display())))
+        }
     }
 }
 
@@ -77,7 +114,7 @@ pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceM
 pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     let Some(dialect) = dialect.or_else(|| post_dialect(path, bytes)) else {
         return Compiled::failed(
-            Diagnostic::error("IO004", format!("cannot tell which dialect `{}` is written in", path.display()))
+            Diagnostic::error(codes::IO004, format!("cannot tell which dialect `{}` is written in", path.display()))
                 .help("name it .pp (Vectric), .js (CIMCO), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
         );
     };
@@ -116,7 +153,7 @@ fn validated(compiled: &mut Compiled, ron_file: Option<FileId>, sources: &Source
             Some(i) => format!("{field}[{i}]"),
             None => field.to_string(),
         };
-        let mut d = Diagnostic::error("IR002", format!("{place}: {}", p.message))
+        let mut d = Diagnostic::error(codes::IR002, format!("{place}: {}", p.message))
             .help("a post's ids must name formats, variables, functions, globals and scripts it has");
         let span = match ron_file {
             Some(file) => sources
@@ -149,7 +186,7 @@ fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
         Err(e) => {
             let offset = line_col_offset(&text, e.span.start.line, e.span.start.col);
             Compiled::failed(
-                Diagnostic::error("IR001", format!("this IR post does not read: {}", e.code))
+                Diagnostic::error(codes::IR001, format!("this IR post does not read: {}", e.code))
                     .at(postc_ir::Span::new(file, offset, (offset + 1).min(text.len())), "here"),
             )
         }
@@ -194,9 +231,10 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
 }
 
 /// Whether a path names a toolpath rather than a post. A `.ron` file is a
-/// post when it holds an IR post (it has `handlers`), else a toolpath.
-pub fn is_toolpath(path: &Path) -> bool {
-    let head = read_head(path);
+/// post when it holds an IR post (it has `handlers`), else a toolpath. The
+/// file's head is read through `loader`.
+pub fn is_toolpath(path: &Path, loader: &dyn SourceLoader) -> bool {
+    let head = read_head(loader, path);
     match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("pp" | "js" | "vcpost") => false,
         Some("ron") => !looks_like_ir_post(&head),
@@ -209,30 +247,34 @@ fn looks_like_ir_post(head: &[u8]) -> bool {
     text.contains("handlers") && text.contains("formats")
 }
 
-fn read_head(path: &Path) -> Vec<u8> {
+/// The first 16 KiB of a file (fewer when one read returns fewer), or
+/// nothing when it cannot be read.
+fn read_head(loader: &dyn SourceLoader, path: &Path) -> Vec<u8> {
     use std::io::Read;
     let mut head = vec![0u8; 1 << 14];
-    let n = std::fs::File::open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
+    let n = loader.open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
     head.truncate(n);
     head
 }
 
 /// Opens a toolpath as a stream of events.
 pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
-    if !path.exists() {
-        return Err(Diagnostic::error("IO001", format!("toolpath `{}` does not exist", path.display())));
+    if !sources.loader().exists(path) {
+        return Err(Diagnostic::error(codes::IO001, format!("toolpath `{}` does not exist", path.display())));
     }
-    match toolpath_format(path, &read_head(path)) {
+    match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
         Some(ToolpathFormat::Apt) => Ok(Box::new(postc_front_apt::open(path, sources)?)),
-        None => Err(Diagnostic::error("IO006", format!("cannot tell what kind of toolpath `{}` is", path.display()))
-            .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)")),
+        None => {
+            Err(Diagnostic::error(codes::IO006, format!("cannot tell what kind of toolpath `{}` is", path.display()))
+                .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"))
+        }
     }
 }
 
 /// Reads a whole toolpath and returns every diagnostic (for `postc check`).
 pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
-    if toolpath_format(path, &read_head(path)) == Some(ToolpathFormat::Apt) {
+    if toolpath_format(path, &read_head(sources.loader(), path)) == Some(ToolpathFormat::Apt) {
         return postc_front_apt::check(path, sources);
     }
     let mut source = match open_toolpath(path, sources) {

@@ -7,8 +7,10 @@
 //! (RON) are skipped. The reader holds one line at a time, so memory stays
 //! flat whatever the file's length; each event carries the span of its line.
 
-use std::fs::File;
+use postc_ir::codes;
 use std::io::{self, BufRead, BufReader};
+
+use postc_ir::source::SourceReader;
 use std::path::Path;
 
 use postc_ir::{Diagnostic, Event, EventSource, FileId, SourceMap, Span};
@@ -33,9 +35,11 @@ pub struct NativeReader<R> {
 
 /// Opens a native toolpath file; the syntax comes from the extension
 /// (`.ron`, `.jsonl`, `.json`) or, failing that, from the first line.
-pub fn open(path: &Path, sources: &mut SourceMap) -> Result<NativeReader<BufReader<File>>, Diagnostic> {
-    let file = File::open(path)
-        .map_err(|e| Diagnostic::error("IO001", format!("cannot open toolpath `{}`: {e}", path.display())))?;
+pub fn open(path: &Path, sources: &mut SourceMap) -> Result<NativeReader<BufReader<SourceReader>>, Diagnostic> {
+    let file = sources
+        .loader()
+        .open(path)
+        .map_err(|e| Diagnostic::error(codes::IO001, format!("cannot open toolpath `{}`: {e}", path.display())))?;
     let id = sources.add_streamed(path.display().to_string());
     let syntax = match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("ron") => Some(Syntax::Ron),
@@ -60,7 +64,7 @@ impl<R: BufRead> NativeReader<R> {
             Syntax::Ron => self.ron.from_str::<Event>(text).map_err(|e| {
                 let col = e.span.start.col.saturating_sub(1).min(text.len());
                 let at = Span::new(self.file, start + col, (start + col + 1).min(start + text.len()));
-                Diagnostic::error("TP001", format!("this toolpath line is not a valid event: {}", e.code))
+                Diagnostic::error(codes::TP001, format!("this toolpath line is not a valid event: {}", e.code))
                     .at(at, "here")
                     .also(line_span, "in this event")
                     .help("events look like `Feed(x: 10, y: 5, z: -1)`; docs/toolpath-format.md lists every event and field")
@@ -68,7 +72,7 @@ impl<R: BufRead> NativeReader<R> {
             Syntax::JsonLines => serde_json::from_str::<Event>(text).map_err(|e| {
                 let col = e.column().saturating_sub(1).min(text.len());
                 let at = Span::new(self.file, start + col, (start + col + 1).min(start + text.len()));
-                Diagnostic::error("TP002", format!("this JSON line is not a valid event: {e}"))
+                Diagnostic::error(codes::TP002, format!("this JSON line is not a valid event: {e}"))
                     .at(at, "here")
                     .also(line_span, "in this event")
                     .help("events look like {\"Feed\":{\"x\":10,\"y\":5,\"z\":-1}}; docs/toolpath-format.md lists every event and field")
@@ -105,10 +109,10 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                 Err(e) => {
                     self.done = true;
                     let d = if e.kind() == io::ErrorKind::InvalidData {
-                        Diagnostic::error("TP003", "the toolpath is not text (it is not valid UTF-8)")
+                        Diagnostic::error(codes::TP003, "the toolpath is not text (it is not valid UTF-8)")
                             .at(Span::new(self.file, start, start + 1), "from here on")
                     } else {
-                        Diagnostic::error("IO002", format!("cannot read the toolpath: {e}"))
+                        Diagnostic::error(codes::IO002, format!("cannot read the toolpath: {e}"))
                     };
                     diagnostics.push(d);
                 }
@@ -183,6 +187,43 @@ mod tests {
             assert!(diags.is_empty(), "{text}: {diags:?}");
             assert_eq!(back, events, "{text}");
         }
+    }
+
+    /// What a toolpath wrote (issue 10): `FeedRate`, a placed `Coolant` and a
+    /// `Tool`'s `load` read in both syntaxes, in the forms
+    /// docs/toolpath-format.md gives, and write back the same; a bare
+    /// `Coolant(Flood)` and a `Tool` without `load` write as they always did.
+    #[test]
+    fn written_feed_coolant_placement_and_tool_load() {
+        use postc_ir::event::{Coolant, CoolantAt, CoolantChange, FeedRate, FeedUnit, Tool, ToolLoad};
+        let ron = "FeedRate(value: 0.1, unit: Ipr)\nCoolant(coolant: Flood, at: Now)\nCoolant(Mist)\nTool(number: 3, load: (length_offset: 3))\n";
+        let json = "{\"FeedRate\":{\"value\":0.1,\"unit\":\"Ipr\"}}\n{\"Coolant\":{\"coolant\":\"Flood\",\"at\":\"Now\"}}\n{\"Coolant\":\"Mist\"}\n{\"Tool\":{\"number\":3,\"load\":{\"length_offset\":3}}}\n";
+        let expected = vec![
+            Event::FeedRate(FeedRate { value: 0.1, unit: Some(FeedUnit::Ipr) }),
+            Event::Coolant(CoolantChange { coolant: Coolant::Flood, at: Some(CoolantAt::Now) }),
+            Event::Coolant(Coolant::Mist.into()),
+            Event::Tool(Tool {
+                number: 3,
+                load: Some(Box::new(ToolLoad { length_offset: Some(3), diameter_offset: None })),
+                ..Tool::default()
+            }),
+        ];
+        for (text, syntax) in [(ron, Syntax::Ron), (json, Syntax::JsonLines)] {
+            let (events, diags) = read(text, Some(syntax));
+            assert!(diags.is_empty(), "{text}: {diags:?}");
+            assert_eq!(events, expected, "{text}");
+            let mut again = String::new();
+            for e in &events {
+                write_event(e, syntax, &mut again);
+            }
+            let (back, diags) = read(&again, Some(syntax));
+            assert!(diags.is_empty(), "{again}: {diags:?}");
+            assert_eq!(back, expected, "{again}");
+        }
+        let mut bare = String::new();
+        write_event(&Event::Coolant(Coolant::Flood.into()), Syntax::JsonLines, &mut bare);
+        write_event(&Event::Tool(Tool { number: 1, ..Tool::default() }), Syntax::JsonLines, &mut bare);
+        assert!(bare.starts_with("{\"Coolant\":\"Flood\"}\n") && !bare.contains("load"), "{bare}");
     }
 
     /// Issue 14, fault 1: a JSON number is read as the double nearest to

@@ -9,9 +9,11 @@
 //! variable the post has (a register or a global, names compared without
 //! case), then calls the Sub.
 //!
-//! A [`CallValue::List`] is not a variable: it is the table of a function the
-//! runtime provides (VcPost composites' `getNthLength1(tow)` returns the
-//! `tow`-th number of the `getNthLength1` list of the current call).
+//! A [`CallValue::List`] is not a variable: it fills the globals a
+//! [`crate::CallList`] of the post names (VcPost composites'
+//! `getNthLength1(tow)` is a function its frontend makes to read the
+//! `tow`-th of those globals, so it returns the `tow`-th number of the
+//! `getNthLength1` list of the current call).
 //!
 //! This module was added for the VcPost applications; nothing else in the IR
 //! changed for them.

@@ -49,7 +49,7 @@ pub enum Event {
     /// The jet power changes (percent, or the post's power scale).
     Power(Power),
     /// Coolant changes.
-    Coolant(Coolant),
+    Coolant(CoolantChange),
     /// Cutter radius compensation changes.
     CutterComp(CutterComp),
     /// A canned drilling cycle starts; `DrillPoint`s follow, then `DrillEnd`.
@@ -69,6 +69,9 @@ pub enum Event {
     /// The program ends (the footer follows). Optional: the end of the
     /// stream ends the program too.
     End,
+    /// A feed rate as the toolpath wrote it (an APT `FEDRAT` record). Moves
+    /// carry their feed already; posts never see this event.
+    FeedRate(FeedRate),
 }
 
 impl Event {
@@ -97,6 +100,7 @@ impl Event {
             Event::Insert(_) => "Insert",
             Event::Command(_) => "Command",
             Event::End => "End",
+            Event::FeedRate(_) => "FeedRate",
         }
     }
 }
@@ -211,6 +215,23 @@ pub struct Tool {
     /// Length (height) offset register, when it is not the tool number.
     pub length_offset: Option<u32>,
     /// Diameter offset register, when it is not the tool number.
+    pub diameter_offset: Option<u32>,
+    /// The tool load (APT `LOADTL`, `LOAD/TOOL`) this tool came from, with
+    /// its offset registers as written; absent for a tool described only
+    /// (APT `CUTTER`, `TLDATA`) and in native toolpaths that do not say.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load: Option<Box<ToolLoad>>,
+}
+
+/// A tool load as written: the offset registers it names, equal to the
+/// tool number or not.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+#[serde(deny_unknown_fields)]
+pub struct ToolLoad {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_offset: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub diameter_offset: Option<u32>,
 }
 
@@ -369,6 +390,73 @@ pub struct Power {
     pub value: f64,
 }
 
+/// A coolant change: the coolant, and when it takes effect if the toolpath
+/// says (APT `COOLNT/FLOOD,NOW`). Without a placement it is written as the
+/// bare coolant, `Coolant(Flood)` (`{"Coolant":"Flood"}`), as it always was;
+/// with one, `Coolant(coolant: Flood, at: Now)`
+/// (`{"Coolant":{"coolant":"Flood","at":"Now"}}`).
+#[derive(Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(from = "CoolantRepr", into = "CoolantRepr")]
+pub struct CoolantChange {
+    pub coolant: Coolant,
+    pub at: Option<CoolantAt>,
+}
+
+impl From<Coolant> for CoolantChange {
+    fn from(coolant: Coolant) -> CoolantChange {
+        CoolantChange { coolant, at: None }
+    }
+}
+
+/// Printed as it is written: the bare coolant when there is no placement.
+impl std::fmt::Debug for CoolantChange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.at {
+            None => std::fmt::Debug::fmt(&self.coolant, f),
+            Some(at) => f.debug_struct("CoolantChange").field("coolant", &self.coolant).field("at", &at).finish(),
+        }
+    }
+}
+
+/// The two written forms of a [`CoolantChange`].
+#[derive(Clone, Copy, Serialize, Deserialize)]
+#[serde(untagged)]
+enum CoolantRepr {
+    Bare(Coolant),
+    Placed {
+        coolant: Coolant,
+        #[serde(default)]
+        at: Option<CoolantAt>,
+    },
+}
+
+impl From<CoolantRepr> for CoolantChange {
+    fn from(r: CoolantRepr) -> CoolantChange {
+        match r {
+            CoolantRepr::Bare(coolant) => CoolantChange { coolant, at: None },
+            CoolantRepr::Placed { coolant, at } => CoolantChange { coolant, at },
+        }
+    }
+}
+
+impl From<CoolantChange> for CoolantRepr {
+    fn from(c: CoolantChange) -> CoolantRepr {
+        match c.at {
+            None => CoolantRepr::Bare(c.coolant),
+            Some(at) => CoolantRepr::Placed { coolant: c.coolant, at: Some(at) },
+        }
+    }
+}
+
+/// When a coolant change takes effect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum CoolantAt {
+    /// At once, where the tool is (`NOW`).
+    Now,
+    /// With the next motion (`NEXT`).
+    Next,
+}
+
 /// Coolant state.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Coolant {
@@ -479,6 +567,54 @@ pub enum Arg {
     Number(f64),
     Word(String),
     Text(String),
+}
+
+/// A feed rate as the toolpath wrote it: an APT `FEDRAT` record's value
+/// and the unit it named. Moves already carry their feed (per minute in
+/// the job's units, or per revolution in a `feed_per_rev` toolpath); this
+/// event keeps what the record said for readers that need it (the APT
+/// post processor, `postp`, tells the machine per-revolution feeds as
+/// written). Posts ignore it: the runtime never hands it to a handler.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FeedRate {
+    pub value: f64,
+    /// The unit the record named; none when it named none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<FeedUnit>,
+}
+
+/// The unit of a written feed rate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum FeedUnit {
+    /// Per minute, in the job's length unit (`PERMIN`, `UPM`).
+    PerMinute,
+    /// Per spindle revolution, in the job's length unit (`PERREV`, `UPR`).
+    PerRev,
+    /// Millimetres per minute (`MMPM`).
+    Mmpm,
+    /// Inches per minute (`IPM`).
+    Ipm,
+    /// Millimetres per revolution (`MMPR`).
+    Mmpr,
+    /// Inches per revolution (`IPR`).
+    Ipr,
+}
+
+impl FeedUnit {
+    /// Whether the feed is per spindle revolution.
+    pub fn per_rev(self) -> bool {
+        matches!(self, FeedUnit::PerRev | FeedUnit::Mmpr | FeedUnit::Ipr)
+    }
+
+    /// The length unit it names, if any.
+    pub fn units(self) -> Option<Units> {
+        match self {
+            FeedUnit::Mmpm | FeedUnit::Mmpr => Some(Units::Mm),
+            FeedUnit::Ipm | FeedUnit::Ipr => Some(Units::Inch),
+            FeedUnit::PerMinute | FeedUnit::PerRev => None,
+        }
+    }
 }
 
 fn is_default<T: Default + PartialEq>(value: &T) -> bool {

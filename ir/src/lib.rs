@@ -91,16 +91,21 @@
 //!
 //! [`Diagnostic`] is the one error type of the project: a code, a severity,
 //! a message, labels over byte [`Span`]s of files in a [`SourceMap`], notes
-//! and help. It renders with codespan-reporting and as JSON.
+//! and help. The IR only holds it: the command line renders it (for people,
+//! and as JSON) through `postc_report`. Files
+//! beyond the bytes a frontend is given are read through the map's
+//! [`SourceLoader`] (module [`source`]), which the caller provides.
 
 pub mod calls;
 pub mod code;
+pub mod codes;
 pub mod diagnostic;
 pub mod event;
 pub mod format;
 pub mod id;
 pub mod post;
 pub mod quantity;
+pub mod source;
 pub mod units;
 pub mod validate;
 pub mod visit;
@@ -112,8 +117,9 @@ pub use event::{Event, EventSource};
 pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 pub use id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 pub use post::{
-    Body, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo, Script,
-    ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
+    Body, CallList, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo,
+    Script, ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
+pub use source::{MemoryLoader, NoFiles, SourceLoader};
 pub use units::Units;

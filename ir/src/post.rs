@@ -31,6 +31,29 @@ pub struct Post {
     pub handlers: Vec<Handler>,
     /// Code in a language the IR does not express, kept with its source.
     pub scripts: Vec<Script>,
+    /// Globals that a Sub call's lists fill ([`CallList`]); empty for
+    /// posts run over toolpath events only.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub call_lists: Vec<CallList>,
+}
+
+/// Globals a [`crate::SubCall`]'s list fills: before the call, a
+/// [`crate::CallValue::List`] named `name` (compared without case) sets
+/// globals `first`, `first + 1`, ... to its numbers, and the rest of the
+/// `len` globals to 0; a call without that list sets all `len` to 0, so no
+/// value outlives its call. Numbers past `len` are dropped.
+///
+/// A frontend makes these for functions whose values come from the calls
+/// (VcPost composites' `getNthLength1(tow)` is a function that reads the
+/// `tow`-th of its globals); the runtime only fills them.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CallList {
+    /// The list's name in the calls.
+    pub name: String,
+    /// The first of its globals.
+    pub first: GlobalId,
+    /// How many globals, from `first`.
+    pub len: u16,
 }
 
 /// What the post says about itself.

@@ -38,6 +38,8 @@ pub enum Item {
     Init,
     /// `handlers[i]`.
     Handler(usize),
+    /// `call_lists[i]`.
+    CallList(usize),
 }
 
 impl Item {
@@ -52,6 +54,7 @@ impl Item {
             Item::Function(i) => ("functions", Some(i)),
             Item::Init => ("init", None),
             Item::Handler(i) => ("handlers", Some(i)),
+            Item::CallList(i) => ("call_lists", Some(i)),
         }
     }
 }
@@ -102,6 +105,20 @@ pub fn validate(post: &Post) -> Vec<Invalid> {
     }
     if o.step_budget == 0 {
         bad(Item::Options, "the step budget is 0: no handler could run".into());
+    }
+    for (i, l) in post.call_lists.iter().enumerate() {
+        if usize::from(l.first) + usize::from(l.len) > post.globals.len() {
+            bad(
+                Item::CallList(i),
+                format!(
+                    "the list `{}` fills globals {} to {}, and the post has {} globals",
+                    l.name,
+                    l.first,
+                    usize::from(l.first) + usize::from(l.len),
+                    post.globals.len()
+                ),
+            );
+        }
     }
     let mut ids = Ids { post, at: Item::Init, out: Vec::new() };
     for (i, g) in post.globals.iter().enumerate() {

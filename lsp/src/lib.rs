@@ -19,6 +19,7 @@ pub mod vocab;
 use std::collections::HashMap;
 use std::error::Error;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use lsp_server::{Connection, ExtractError, Message, Notification, Request, RequestId, Response};
 use lsp_types::notification::{
@@ -33,7 +34,7 @@ use lsp_types::{
     NumberOrString, OneOf, Position, PublishDiagnosticsParams, Range, ServerCapabilities, ServerInfo,
     TextDocumentSyncCapability, TextDocumentSyncKind, TextEdit, Uri, WorkspaceEdit,
 };
-use postc_ir::{Dialect, Severity, SourceMap};
+use postc_ir::{Dialect, Severity, SourceLoader, SourceMap};
 
 use crate::analysis::CompletionKind;
 
@@ -43,15 +44,6 @@ type BoxError = Box<dyn Error + Send + Sync>;
 struct Document {
     text: String,
     dialect: Option<Dialect>,
-}
-
-/// Runs the server on stdin/stdout until the client says `exit`.
-pub fn run_stdio() -> Result<(), BoxError> {
-    let (connection, io_threads) = Connection::stdio();
-    serve(&connection)?;
-    drop(connection);
-    io_threads.join()?;
-    Ok(())
 }
 
 /// The server's capabilities.
@@ -69,9 +61,12 @@ pub fn capabilities() -> ServerCapabilities {
     }
 }
 
-/// Serves one client over a connection: the handshake, then messages until
-/// `shutdown` and `exit`.
-pub fn serve(connection: &Connection) -> Result<(), BoxError> {
+/// Serves one client over a connection (the command line opens it on
+/// stdin/stdout): the handshake, then messages until `shutdown` and `exit`.
+/// `loader` reads the files a document names (a Vectric post's
+/// `POST_BASE`): the command line gives the file system, tests can give
+/// files in memory.
+pub fn serve(connection: &Connection, loader: Arc<dyn SourceLoader>) -> Result<(), BoxError> {
     let (id, _params) = connection.initialize_start()?;
     let result = serde_json::json!({
         "capabilities": capabilities(),
@@ -90,7 +85,7 @@ pub fn serve(connection: &Connection) -> Result<(), BoxError> {
             }
             Message::Notification(not) => {
                 if let Some(uri) = handle_notification(&mut docs, not) {
-                    let diagnostics = docs.get(uri.as_str()).map_or_else(Vec::new, |d| diagnose(&uri, d));
+                    let diagnostics = docs.get(uri.as_str()).map_or_else(Vec::new, |d| diagnose(&uri, d, &loader));
                     let params = PublishDiagnosticsParams { uri, diagnostics, version: None };
                     let not = Notification::new(PublishDiagnostics::METHOD.into(), params);
                     connection.sender.send(Message::Notification(not))?;
@@ -288,9 +283,9 @@ pub fn path_of(uri: &str) -> PathBuf {
 }
 
 /// The LSP diagnostics of a document: its text compiled as its dialect.
-fn diagnose(uri: &Uri, doc: &Document) -> Vec<Diagnostic> {
+fn diagnose(uri: &Uri, doc: &Document, loader: &Arc<dyn SourceLoader>) -> Vec<Diagnostic> {
     let path = path_of(uri.as_str());
-    let mut sources = SourceMap::new();
+    let mut sources = SourceMap::with_loader(Arc::clone(loader));
     // A frontend bug must not take the editor's server down with it: the
     // panic becomes one diagnostic at the top of the document.
     let compiled = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {

@@ -25,13 +25,12 @@ pub mod controller;
 pub mod font;
 pub mod letter;
 pub mod options;
-pub mod records;
 pub mod transform;
 
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Arg, Event, FileInfo};
-use postc_ir::{Diagnostic, Dialect, EventSource, Post, SourceMap, Span, Units};
+use postc_ir::{Diagnostic, Dialect, EventSource, Post, SourceLoader, SourceMap, Span, Units};
 use postc_runtime::{Output, RunOptions, RunReport};
 
 pub use controller::{Controller, Kind};
@@ -45,6 +44,9 @@ pub struct Settings {
     pub options: Option<PathBuf>,
     /// A controller instead of the file's MACHIN (tests).
     pub machine: Option<Controller>,
+    /// Now, as a Unix time: what the post prints as the date and time
+    /// (see [`RunOptions::now`]); the caller reads the clock.
+    pub now: Option<i64>,
 }
 
 /// The controller and machine a CL file asks for.
@@ -152,13 +154,19 @@ pub fn load_options(c: Controller, file: Option<&Path>, sources: &mut SourceMap)
         .map_err(|e| bad(&format!("<embedded>/postp/{}.ron", c.name()), c.default_options(), e, sources))?;
     let mut options = Options::default().apply(defaults);
     if let Some(path) = file {
-        let text = std::fs::read_to_string(path).map_err(|e| {
+        let text = read_text(sources.loader(), path).map_err(|e| {
             Diagnostic::error(codes::BAD_OPTIONS, format!("cannot read the options file {}: {e}", path.display()))
         })?;
         let patch = Patch::parse(&text).map_err(|e| bad(&path.display().to_string(), &text, e, sources))?;
         options = options.apply(patch);
     }
     Ok(options)
+}
+
+/// A text file read through the loader, refused when it is not UTF-8.
+fn read_text(loader: &dyn SourceLoader, path: &Path) -> std::io::Result<String> {
+    String::from_utf8(loader.read(path)?)
+        .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "stream did not contain valid UTF-8"))
 }
 
 /// The byte offset of a 1-based line and column.
@@ -193,7 +201,7 @@ pub fn post(
     out: Output,
     sources: &mut SourceMap,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    if !cl.is_file() {
+    if !sources.loader().is_file(cl) {
         return Err(vec![
             Diagnostic::error(codes::NO_CL, format!("there is no CL file {}", cl.display()))
                 .help("postp DIR reads DIR/cl.tap, the CL file of the part program"),
@@ -202,7 +210,7 @@ pub fn post(
     let head = head(cl, settings.machine, sources)?;
     let options = load_options(head.controller, settings.options.as_deref(), sources).map_err(|d| vec![d])?;
     let post = compile(&head, &options, sources)?;
-    post_compiled(&post, cl, &head, &options, out, sources)
+    post_compiled(&post, cl, &head, &options, settings.now, out, sources)
 }
 
 /// Posts `cl` with a controller post already compiled (by [`compile`], or
@@ -213,6 +221,7 @@ pub fn post_compiled(
     cl: &Path,
     head: &Head,
     options: &Options,
+    now: Option<i64>,
     out: Output,
     sources: &mut SourceMap,
 ) -> Result<RunReport, Vec<Diagnostic>> {
@@ -223,9 +232,9 @@ pub fn post_compiled(
         axes: controller::rotary_axes(head.axis_type),
         retractz: options.retractz,
     };
-    let mut source = Transform::new(reader, records::ClText::open(cl), machine);
+    let mut source = Transform::new(reader, machine);
     // No file name: the program's first PARTNO is the CL file's own.
-    let run = RunOptions { file: Some(FileInfo::default()), ..RunOptions::default() };
+    let run = RunOptions { file: Some(FileInfo::default()), now, ..postc_frontends::run_options(post) };
     let prepend = |mut d: Vec<Diagnostic>| {
         d.splice(0..0, head.warnings.iter().cloned());
         d

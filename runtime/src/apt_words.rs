@@ -333,7 +333,7 @@ impl AptDispatch {
             }
             Event::SpindleOff => self.call(eng, "SPINDL", "OFF", "")?,
             Event::Coolant(c) => {
-                let minor = match c {
+                let minor = match c.coolant {
                     Coolant::Off => "OFF",
                     Coolant::Flood => "FLOOD",
                     Coolant::Mist => "MIST",
@@ -395,6 +395,8 @@ impl AptDispatch {
             }
             Event::JetOn | Event::JetOff | Event::Power(_) => {}
             Event::End => self.finish(eng)?,
+            // Never handed to posts (`run` skips it): the moves carry the feed.
+            Event::FeedRate(_) => {}
         }
         Ok(())
     }

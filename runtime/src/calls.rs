@@ -7,8 +7,8 @@
 //!
 //! 1. sets each variable the call carries that the post has (a register or
 //!    a global, names compared without case; other names are skipped), and
-//!    fills the table of each runtime-provided function the call carries a
-//!    list for (`getNthLength1`, ... see [`crate::host`]);
+//!    fills the globals of each [`postc_ir::CallList`] from the call's list
+//!    of that name (see [`crate::call_tables`]);
 //! 2. calls the Sub of that name (without case). A Sub the post lacks is
 //!    skipped: silently when the call says so ([`MissingSub::Skip`], a
 //!    routine a post may leave out by design), else with one warning per
@@ -25,8 +25,8 @@ use std::collections::HashMap;
 
 use postc_ir::{CallSource, CallValue, Diagnostic, MissingSub, Post, SubCall};
 
+use crate::call_tables::Tables;
 use crate::engine::Engine;
-use crate::host::{self, Tables};
 use crate::slots::Slots;
 use crate::value::Value;
 use crate::{Output, RunOptions, RunReport};
@@ -41,16 +41,11 @@ pub fn run_calls<S: CallSource + ?Sized>(
     out: Output,
     mut options: RunOptions,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    let mut patched = None;
-    let (post, tables) = match host::patch(post) {
-        Some((p, t)) => (&*patched.insert(p), t),
-        None => (post, Tables::default()),
-    };
     let mut machine =
-        crate::machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+        crate::machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
-    (machine.default_date, machine.default_time) = crate::clock::now();
+    (machine.default_date, machine.default_time) = crate::clock::format_utc(options.now.unwrap_or(0));
     if let Some(f) = options.file.take() {
         machine.file_name = f.name;
         machine.file_dir = f.dir;
@@ -63,7 +58,7 @@ pub fn run_calls<S: CallSource + ?Sized>(
         diagnostics.append(&mut eng.warnings);
         return Err(diagnostics);
     }
-    let mut runner = Runner::new(post, tables);
+    let mut runner = Runner::new(post, Tables::new(post));
     let mut failed = false;
     let mut calls = 0u64;
     while let Some(call) = source.next_call(&mut diagnostics) {

@@ -1,17 +1,8 @@
 //! The date and time `[DATE]` and `[TIME]` print when neither the job nor
-//! `--set` gives them: now, in UTC, or the time `SOURCE_DATE_EPOCH` names
-//! (the reproducible-builds convention), as `YYYY-MM-DD` and `HH:MM`.
-
-use std::time::{SystemTime, UNIX_EPOCH};
-
-/// `(date, time)` for now, or for `SOURCE_DATE_EPOCH` when it is set.
-pub fn now() -> (String, String) {
-    let seconds = std::env::var("SOURCE_DATE_EPOCH")
-        .ok()
-        .and_then(|s| s.trim().parse::<i64>().ok())
-        .unwrap_or_else(|| SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64));
-    format_utc(seconds)
-}
+//! `--set` gives them, as `YYYY-MM-DD` and `HH:MM` in UTC, from the Unix
+//! time the caller passes as [`RunOptions::now`](crate::RunOptions::now).
+//! The runtime never reads the clock: the command line does (now, or the
+//! time `SOURCE_DATE_EPOCH` names, the reproducible-builds convention).
 
 /// Date and time of a Unix time, in UTC.
 pub fn format_utc(seconds: i64) -> (String, String) {

@@ -1,7 +1,7 @@
 //! The engine: runs handler bodies against the machine state and writes
 //! blocks to the output.
 //!
-//! [`Engine`] owns everything mutable in a run: the [`Machine`], the
+//! [`Engine`] owns everything mutable in a run: the [`MachineState`], the
 //! [`Output`], each variable's modal memory and value, block numbering,
 //! globals, and the collected warnings. [`Engine::run_handler`] is the hot
 //! path for Vectric sections: each [`Stmt::Line`] writes literal bytes and
@@ -15,23 +15,23 @@ use postc_ir::{
     Variable,
 };
 
-use crate::machine::Machine;
+use crate::machine::MachineState;
 use crate::number::{NumberWriter, Rounded};
 use crate::output::Output;
 use crate::value::Value;
 
 /// Per-variable run state.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct VarState {
+pub struct VarState {
     /// What the variable printed last, for on-change variables: the rounded
     /// number (`key`) when it printed a number on the fast path, else the
     /// text (`last`, prefix included, valid when `has_last`).
-    pub key: Option<Rounded>,
-    pub last: Vec<u8>,
-    pub has_last: bool,
+    pub(crate) key: Option<Rounded>,
+    pub(crate) last: Vec<u8>,
+    pub(crate) has_last: bool,
     /// Current and previous value (registers, output variables).
-    pub value: Value,
-    pub previous: Value,
+    pub(crate) value: Value,
+    pub(crate) previous: Value,
 }
 
 /// Block numbering state.
@@ -44,7 +44,7 @@ pub(crate) struct BlockCounter {
 /// Runs a post's handlers.
 pub struct Engine<'p> {
     pub post: &'p Post,
-    pub machine: Machine,
+    pub machine: MachineState,
     pub out: Output,
     pub(crate) writers: Vec<NumberWriter>,
     pub(crate) vars: Vec<VarState>,
@@ -64,8 +64,13 @@ pub struct Engine<'p> {
     pub(crate) depth: usize,
     /// Where the event being handled came from.
     pub event_span: Span,
-    /// The script host and what CIMCO posts need besides (`script`).
-    pub(crate) cimco: crate::script::Ext,
+    /// The run's script host ([`crate::script_host`]), if the post has scripts.
+    pub(crate) script_host: Option<Box<dyn crate::script_host::ScriptHost>>,
+    /// A frame reused by handler bodies, so that their locals cost no
+    /// allocation per event.
+    handler_frame: Vec<Value>,
+    /// Counts the clearings of modal memory ([`Engine::clear_modal`]).
+    pub(crate) modal_epoch: u64,
     /// Provenance of each block, when the run is traced.
     pub(crate) trace: Option<Box<crate::trace::Tracer>>,
     /// Told of handler runs and calls, when the run is profiled.
@@ -73,7 +78,7 @@ pub struct Engine<'p> {
 }
 
 impl<'p> Engine<'p> {
-    pub fn new(post: &'p Post, machine: Machine, out: Output) -> Engine<'p> {
+    pub fn new(post: &'p Post, machine: MachineState, out: Output) -> Engine<'p> {
         let writers = post.formats.iter().map(NumberWriter::new).collect();
         let mut sections = vec![None; Section::ALL.len()];
         for (i, h) in post.handlers.iter().enumerate() {
@@ -100,7 +105,9 @@ impl<'p> Engine<'p> {
             steps: 0,
             depth: 0,
             event_span: Span::default(),
-            cimco: crate::script::Ext::default(),
+            script_host: None,
+            handler_frame: Vec::new(),
+            modal_epoch: 0,
             trace: None,
             profile: None,
         }
@@ -187,7 +194,7 @@ impl<'p> Engine<'p> {
 
     /// Forgets what every variable printed last: the next output prints every word.
     pub fn clear_modal(&mut self) {
-        self.cimco.epoch += 1;
+        self.modal_epoch += 1;
         for v in &mut self.vars {
             v.has_last = false;
             v.key = None;
@@ -247,10 +254,10 @@ impl<'p> Engine<'p> {
                 Prepared::Stmt(stmt) => {
                     self.steps = 0;
                     // One frame, kept between events: no allocation per event.
-                    let mut frame = std::mem::take(&mut self.cimco.frame);
+                    let mut frame = std::mem::take(&mut self.handler_frame);
                     frame.clear();
                     let result = self.exec(std::slice::from_ref(*stmt), &mut frame);
-                    self.cimco.frame = frame;
+                    self.handler_frame = frame;
                     result?;
                 }
             }
@@ -587,7 +594,7 @@ fn is_move_section(key: &HandlerKey) -> bool {
 
 /// Prepares a handler body: lines become flat operations. In move sections
 /// X, Y and Z are read straight from the position; elsewhere (a HEADER
-/// runs before the first move) they go through [`Machine::number`], which
+/// runs before the first move) they go through [`MachineState::number`], which
 /// knows whether the position is known yet.
 pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()

@@ -16,28 +16,39 @@
 //! - [`apt_words`]: events as APT records calling the handler of each
 //!   major word (VcPost posts, the `postp` controllers);
 //! - [`calls`]: runs a post over Sub calls instead of events (VcPost
-//!   probe-cycle tables and composites event files), with [`host`] the
-//!   functions the runtime provides to those posts;
-//! - [`script`]: the Rhai host for CIMCO functions that do not lower to
-//!   native IR, and what CIMCO posts need of events;
-//! - [`output`]: sinks that write whole programs or nothing, and tape
-//!   splitting into parts.
+//!   probe-cycle tables and composites event files), with [`call_tables`]
+//!   the functions whose values a call's lists give;
+//! - [`script_host`]: the trait through which functions kept as scripts
+//!   run; the host itself comes from the caller ([`RunOptions::script_host`]);
+//! - [`lathe`]: the `lathe` option, turning events into the runtime's plane;
+//! - [`js`]: JavaScript's conversions, which the IR's builtins name;
+//! - [`output`]: the [`output::Sink`] trait the caller's sinks implement
+//!   (files, standard output: the command line), the memory and discard
+//!   sinks, and the names of tape-split parts;
+//! - [`clock`]: dates and times as posts print them, from the Unix time the
+//!   caller passes as [`RunOptions::now`].
+//!
+//! The runtime touches neither the file system, the clock nor the terminal:
+//! output goes to a sink, and "now" is an input.
 //!
 //! [`run`] pulls events one at a time from an [`EventSource`], so memory
 //! stays flat whatever the toolpath's length.
 
 pub mod apt_words;
+mod blocks;
+pub mod call_tables;
 pub mod calls;
 pub mod clock;
 pub mod engine;
 pub mod geometry;
-pub mod host;
 mod interp;
+pub mod js;
+pub mod lathe;
 pub mod machine;
 pub mod number;
 pub mod output;
 pub mod profile;
-pub mod script;
+pub mod script_host;
 pub mod sections;
 mod slots;
 pub mod trace;
@@ -57,12 +68,20 @@ pub struct RunOptions {
     /// `[DATE]` and `[TIME]`, overriding the job's.
     pub date: Option<String>,
     pub time: Option<String>,
+    /// Now, as a Unix time in seconds: what `[DATE]` and `[TIME]` print (in
+    /// UTC) when neither the job nor `date`/`time` give them. The runtime
+    /// never reads the clock; the caller does (the command line: the system
+    /// clock, or `SOURCE_DATE_EPOCH`). `None` prints 1970-01-01 00:00.
+    pub now: Option<i64>,
     /// The output file, overriding the job's (`-o`).
     pub file: Option<FileInfo>,
     /// Chord tolerance in mm for linearized arcs, overriding the post's.
     pub arc_tolerance: Option<f64>,
     /// Called with the number of events handled, every 65536 events.
     pub progress: Option<Box<dyn FnMut(u64)>>,
+    /// Builds the host that runs the post's scripts, if it has any
+    /// (`postc_frontends::script_host` picks it by the scripts' language).
+    pub script_host: Option<script_host::ScriptHostFactory>,
     /// Called with the provenance of every block written (`--trace`).
     pub trace: Option<trace::TraceSink>,
     /// Told of every handler run and function call (`bench --profile`).
@@ -95,10 +114,10 @@ pub fn run<S: EventSource + ?Sized>(
         post = &post_storage;
     }
     let mut machine =
-        machine::Machine::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+        machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
-    (machine.default_date, machine.default_time) = clock::now();
+    (machine.default_date, machine.default_time) = clock::format_utc(options.now.unwrap_or(0));
     if let Some(f) = options.file.take() {
         machine.file_name = f.name;
         machine.file_dir = f.dir;
@@ -117,19 +136,29 @@ pub fn run<S: EventSource + ?Sized>(
         diagnostics.extend(engine.warnings);
         Err(diagnostics)
     };
-    if let Err(d) = script::attach(&mut engine) {
-        diagnostics.push(d);
-        return fail(diagnostics, engine);
+    if let (false, Some(make)) = (post.scripts.is_empty(), options.script_host) {
+        match make(&engine) {
+            Ok(host) => engine.script_host = Some(host),
+            Err(d) => {
+                diagnostics.push(d);
+                return fail(diagnostics, engine);
+            }
+        }
     }
     let lathe = post.options.lathe;
     if let Err(d) = engine.init() {
         diagnostics.push(*d);
         return fail(diagnostics, engine);
     }
-    let cimco = post.info.dialect == postc_ir::Dialect::Cimco;
+    let observe = engine.script_host.is_some();
     while let Some((mut event, span)) = source.next_event(&mut diagnostics) {
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
+        }
+        // What a FEDRAT record said is for toolpath readers (postp's
+        // transform); posts see the feed on the moves.
+        if matches!(event, postc_ir::Event::FeedRate(_)) {
+            continue;
         }
         engine.event_span = span;
         if let Some(t) = engine.trace.as_deref_mut() {
@@ -137,10 +166,10 @@ pub fn run<S: EventSource + ?Sized>(
             t.event_span = Some(span);
         }
         if lathe {
-            event = script::turn_event(event);
+            event = lathe::turn_event(event);
         }
-        if cimco {
-            script::observe(&mut engine, &event);
+        if observe && let Some(host) = engine.script_host.as_mut() {
+            host.observe(&event);
         }
         if let Err(d) = dispatch.event(&mut engine, &event) {
             diagnostics.push(*d);

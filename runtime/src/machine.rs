@@ -1,7 +1,7 @@
 //! Machine state: everything the runtime knows at a moment of the toolpath,
 //! in the post's output units, and the [`Quantity`] values posts print.
 //!
-//! Events arrive in the toolpath's units; [`Machine`] converts lengths and
+//! Events arrive in the toolpath's units; [`MachineState`] converts lengths and
 //! feeds by one factor as they come in, so that every quantity is already in
 //! output units when a handler formats it.
 //!
@@ -33,7 +33,7 @@ fn given(v: f64) -> f64 {
 
 /// The current state of the machine and the job.
 #[derive(Clone, Debug)]
-pub struct Machine {
+pub struct MachineState {
     /// Toolpath units to output units.
     pub factor: f64,
     pub output_units: Units,
@@ -84,14 +84,14 @@ pub struct Machine {
     pub wrap: Option<RotaryWrap>,
 }
 
-impl Machine {
+impl MachineState {
     pub fn new(
         output_units: Option<Units>,
         spindle_range: Option<SpindleSpeedRange>,
         wrap: Option<RotaryWrap>,
-    ) -> Machine {
+    ) -> MachineState {
         let units = output_units.unwrap_or_default();
-        Machine {
+        MachineState {
             factor: 1.0,
             output_units: units,
             job: Job::default(),
@@ -375,7 +375,7 @@ mod tests {
 
     #[test]
     fn the_feed_is_the_new_tools_cut_feed_until_a_move_sets_it() {
-        let mut m = Machine::new(Some(Units::Mm), None, None);
+        let mut m = MachineState::new(Some(Units::Mm), None, None);
         m.set_job(Job { units: Units::Inch, ..Job::default() }, Some(Units::Mm));
         // No tool, no move: the feed has no value and prints nothing.
         assert!(m.number(Quantity::Feed).is_nan());
@@ -386,7 +386,7 @@ mod tests {
 
     #[test]
     fn power_belongs_to_jet_tools() {
-        let mut m = Machine::new(Some(Units::Mm), None, None);
+        let mut m = MachineState::new(Some(Units::Mm), None, None);
         assert!(m.number(Quantity::Power).is_nan());
         m.set_tool(Tool { number: 1, spindle_speed: 18000.0, ..Tool::default() });
         assert!(m.number(Quantity::Power).is_nan(), "a spindle tool has no power");
@@ -403,7 +403,7 @@ mod tests {
 
     #[test]
     fn values_without_a_source_have_none() {
-        let mut m = Machine::new(Some(Units::Mm), None, None);
+        let mut m = MachineState::new(Some(Units::Mm), None, None);
         for q in [
             Quantity::A,
             Quantity::B,

@@ -1,45 +1,89 @@
-//! Output sinks: where blocks go, whole or not at all.
+//! Output: where blocks go, whole or not at all.
 //!
 //! Handlers append bytes to [`Output::buf`]; every 64 KiB the buffer moves
-//! to the destination. A file destination writes into temporary files beside
-//! the target and renames them only when the program is complete, so a
-//! failed run never leaves a half-written program; tape splitting opens one
-//! temporary file per part and names them at the end. Standard output is
-//! held back (up to 64 MiB) so that an error in the first part of a job
-//! writes nothing at all.
+//! to the output's [`Sink`]. The runtime never opens a file: it has two
+//! sinks, [`MemorySink`] (tests, `convert`) and [`Discard`] (benchmarks),
+//! and the caller brings the others (the command line's file sink writes
+//! temporary files renamed only when the program is complete, one per
+//! tape-split part, and its standard-output sink holds the program back so
+//! that an error in the first part of a job writes nothing at all). A run
+//! that fails drops its sink without [`Sink::finish`]; a sink must then
+//! leave nothing behind.
 
-use std::fs::File;
-use std::io::{self, Write};
+use std::io;
 use std::path::{Path, PathBuf};
 
 use postc_ir::post::TapeSplitting;
 
 const FLUSH_AT: usize = 1 << 16;
-const HOLD_STDOUT: usize = 64 << 20;
 
-/// Where the program goes.
-pub enum Destination {
-    /// Parts kept in memory (tests, `convert`).
-    Memory(Vec<Vec<u8>>),
-    /// Standard output.
-    Stdout { held: Vec<u8>, streaming: bool },
-    /// Counted and dropped (benchmarks).
-    Discard,
-    /// A file, or several parts beside it under tape splitting.
-    Files(FileParts),
+/// Where the bytes of a program go.
+pub trait Sink {
+    /// The next bytes of the current part.
+    fn write(&mut self, bytes: &[u8]) -> io::Result<()>;
+
+    /// Starts the next tape-split part.
+    fn new_part(&mut self) -> io::Result<()>;
+
+    /// The run completed: make the program visible (name the files, write
+    /// what is held) and say what was produced. `tape` is the post's tape
+    /// splitting, which names the parts.
+    fn finish(self: Box<Self>, tape: Option<&TapeSplitting>) -> io::Result<Finished>;
 }
 
-/// Temporary part files beside the target.
-pub struct FileParts {
-    target: PathBuf,
-    parts: Vec<tempfile::NamedTempFile>,
+/// Parts kept in memory.
+#[derive(Debug)]
+pub struct MemorySink {
+    parts: Vec<Vec<u8>>,
+}
+
+impl Default for MemorySink {
+    fn default() -> MemorySink {
+        MemorySink { parts: vec![Vec::new()] }
+    }
+}
+
+impl Sink for MemorySink {
+    fn write(&mut self, bytes: &[u8]) -> io::Result<()> {
+        if let Some(p) = self.parts.last_mut() {
+            p.extend_from_slice(bytes);
+        }
+        Ok(())
+    }
+
+    fn new_part(&mut self) -> io::Result<()> {
+        self.parts.push(Vec::new());
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>, _tape: Option<&TapeSplitting>) -> io::Result<Finished> {
+        Ok(Finished::Memory(self.parts))
+    }
+}
+
+/// Counts (in [`Output`]) and drops everything.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Discard;
+
+impl Sink for Discard {
+    fn write(&mut self, _bytes: &[u8]) -> io::Result<()> {
+        Ok(())
+    }
+
+    fn new_part(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>, _tape: Option<&TapeSplitting>) -> io::Result<Finished> {
+        Ok(Finished::Streamed)
+    }
 }
 
 /// The output of one run.
 pub struct Output {
-    /// Bytes of the current part not yet handed to the destination.
+    /// Bytes of the current part not yet handed to the sink.
     pub buf: Vec<u8>,
-    dest: Destination,
+    sink: Box<dyn Sink>,
     blocks_in_part: u64,
     blocks: u64,
     bytes: u64,
@@ -47,30 +91,18 @@ pub struct Output {
 }
 
 impl Output {
-    pub fn new(dest: Destination) -> Output {
-        Output { buf: Vec::with_capacity(FLUSH_AT * 2), dest, blocks_in_part: 0, blocks: 0, bytes: 0, error: None }
+    pub fn new(sink: Box<dyn Sink>) -> Output {
+        Output { buf: Vec::with_capacity(FLUSH_AT * 2), sink, blocks_in_part: 0, blocks: 0, bytes: 0, error: None }
     }
 
     /// Parts in memory.
     pub fn memory() -> Output {
-        Output::new(Destination::Memory(vec![Vec::new()]))
-    }
-
-    /// Standard output, held back until the run ends or 64 MiB accumulate.
-    pub fn stdout() -> Output {
-        Output::new(Destination::Stdout { held: Vec::new(), streaming: false })
+        Output::new(Box::new(MemorySink::default()))
     }
 
     /// Counts and drops everything.
     pub fn discard() -> Output {
-        Output::new(Destination::Discard)
-    }
-
-    /// A file written through temporary files in its folder.
-    pub fn file(target: &Path) -> io::Result<Output> {
-        let mut parts = FileParts { target: target.to_path_buf(), parts: Vec::new() };
-        parts.open_part()?;
-        Ok(Output::new(Destination::Files(parts)))
+        Output::new(Box::new(Discard))
     }
 
     /// Blocks written to the current part.
@@ -98,37 +130,13 @@ impl Output {
         }
     }
 
-    /// Hands buffered bytes to the destination.
+    /// Hands buffered bytes to the sink.
     pub fn flush(&mut self) {
         if self.buf.is_empty() {
             return;
         }
         self.bytes += self.buf.len() as u64;
-        let result = match &mut self.dest {
-            Destination::Memory(parts) => {
-                if let Some(p) = parts.last_mut() {
-                    p.extend_from_slice(&self.buf);
-                }
-                Ok(())
-            }
-            Destination::Stdout { held, streaming } => {
-                if *streaming {
-                    io::stdout().lock().write_all(&self.buf)
-                } else {
-                    held.extend_from_slice(&self.buf);
-                    if held.len() >= HOLD_STDOUT {
-                        *streaming = true;
-                        let r = io::stdout().lock().write_all(held);
-                        *held = Vec::new();
-                        r
-                    } else {
-                        Ok(())
-                    }
-                }
-            }
-            Destination::Discard => Ok(()),
-            Destination::Files(files) => files.current().write_all(&self.buf),
-        };
+        let result = self.sink.write(&self.buf);
         self.buf.clear();
         if let Err(e) = result {
             self.error.get_or_insert(e);
@@ -139,38 +147,20 @@ impl Output {
     pub fn new_part(&mut self) {
         self.flush();
         self.blocks_in_part = 0;
-        let result = match &mut self.dest {
-            Destination::Memory(parts) => {
-                parts.push(Vec::new());
-                Ok(())
-            }
-            Destination::Files(files) => files.open_part(),
-            Destination::Stdout { .. } | Destination::Discard => Ok(()),
-        };
-        if let Err(e) = result {
+        if let Err(e) = self.sink.new_part() {
             self.error.get_or_insert(e);
         }
     }
 
-    /// Completes the run: writes what is held and gives the files their
-    /// names. Returns the paths written (empty for other destinations) or
-    /// the memory parts.
+    /// Completes the run: the sink writes what it holds and gives the files
+    /// their names. Returns what the sink produced (the paths written, the
+    /// memory parts).
     pub fn finish(mut self, tape: Option<&TapeSplitting>) -> io::Result<Finished> {
         self.flush();
         if let Some(e) = self.error.take() {
             return Err(e);
         }
-        match self.dest {
-            Destination::Memory(parts) => Ok(Finished::Memory(parts)),
-            Destination::Stdout { held, .. } => {
-                let mut out = io::stdout().lock();
-                out.write_all(&held)?;
-                out.flush()?;
-                Ok(Finished::Streamed)
-            }
-            Destination::Discard => Ok(Finished::Streamed),
-            Destination::Files(files) => files.persist(tape).map(Finished::Files),
-        }
+        self.sink.finish(tape)
     }
 }
 
@@ -179,32 +169,6 @@ pub enum Finished {
     Memory(Vec<Vec<u8>>),
     Files(Vec<PathBuf>),
     Streamed,
-}
-
-impl FileParts {
-    fn open_part(&mut self) -> io::Result<()> {
-        let dir = match self.target.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        self.parts.push(tempfile::Builder::new().prefix(".postc-").suffix(".part").tempfile_in(dir)?);
-        Ok(())
-    }
-
-    fn current(&mut self) -> &mut File {
-        self.parts.last_mut().expect("a part is always open").as_file_mut()
-    }
-
-    fn persist(self, tape: Option<&TapeSplitting>) -> io::Result<Vec<PathBuf>> {
-        let names = part_names(&self.target, self.parts.len(), tape);
-        let mut written = Vec::new();
-        for (part, name) in self.parts.into_iter().zip(names) {
-            part.as_file().sync_all()?;
-            part.persist(&name).map_err(|e| e.error)?;
-            written.push(name);
-        }
-        Ok(written)
-    }
 }
 
 /// File names of the parts of a program: the target itself when there is
@@ -289,23 +253,19 @@ mod tests {
     }
 
     #[test]
-    fn files_appear_only_when_finished() {
-        let dir = tempfile::tempdir().unwrap();
-        let target = dir.path().join("o.nc");
-        let mut out = Output::file(&target).unwrap();
+    fn memory_parts_and_discard() {
+        let mut out = Output::memory();
         out.buf.extend_from_slice(b"G0X1\n");
         out.end_block();
-        out.flush();
-        assert!(!target.exists());
-        let files = out.finish(None).unwrap();
-        assert!(matches!(files, Finished::Files(ref f) if f == std::slice::from_ref(&target)));
-        assert_eq!(std::fs::read(&target).unwrap(), b"G0X1\n");
-        // A dropped (failed) run leaves nothing behind.
-        let other = dir.path().join("p.nc");
-        let mut out = Output::file(&other).unwrap();
+        out.new_part();
+        out.buf.extend_from_slice(b"G0X2\n");
+        out.end_block();
+        assert_eq!((out.blocks(), out.bytes()), (2, 10));
+        let Ok(Finished::Memory(parts)) = out.finish(None) else { panic!("memory parts") };
+        assert_eq!(parts, [b"G0X1\n".to_vec(), b"G0X2\n".to_vec()]);
+        let mut out = Output::discard();
         out.buf.extend_from_slice(b"G0X1\n");
-        out.flush();
-        drop(out);
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+        out.end_block();
+        assert!(matches!(out.finish(None), Ok(Finished::Streamed)));
     }
 }

@@ -1,6 +1,7 @@
 //! `postc bench`: posting throughput of a post over a toolpath file or a
 //! synthetic toolpath, with a progress bar, into a sink that counts bytes.
 
+use postc_ir::codes;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -39,7 +40,7 @@ pub struct Measured {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let (mut source, total): (Box<dyn EventSource>, Option<u64>) = match &args.toolpath {
         Some(path) => (postc_frontends::open_toolpath(path, &mut sources).map_err(|d| fail(&mut sources, d))?, None),
@@ -48,13 +49,14 @@ pub fn run(args: Args) -> Result<(), Failed> {
             None => {
                 return Err(fail(
                     &mut sources,
-                    Diagnostic::error("IO007", format!("there is no toolpath pattern `{}`", args.pattern))
+                    Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{}`", args.pattern))
                         .help(format!("patterns: {}", PATTERNS.join(", "))),
                 ));
             }
         },
     };
-    let mut options = RunOptions::default();
+    let mut options =
+        postc_runtime::RunOptions { script_host: postc_frontends::script_host(&post), ..super::clock::run_options() };
     let profiler = args.profile.then(super::profile::Profiler::default);
     if let Some(p) = &profiler {
         options.profile = Some(Box::new(p.clone()));

@@ -1,9 +1,10 @@
 //! `postc check`: lints posts and validates toolpaths, printing every
 //! diagnostic; exits 1 when any file has an error.
 
+use postc_ir::codes;
 use std::path::PathBuf;
 
-use postc_ir::{Diagnostic, SourceMap};
+use postc_ir::Diagnostic;
 
 use super::report::{self, Format};
 use super::{DialectArg, Failed};
@@ -19,6 +20,8 @@ pub struct Args {
     /// The posts' dialect, when their extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    #[command(flatten)]
+    levels: super::levels::Flags,
     /// The Vectric product the posts are for: warn about what its post processor does not support (seed 000's table).
     #[arg(long, value_enum)]
     product: Option<ProductArg>,
@@ -50,11 +53,12 @@ impl From<ProductArg> for postc_lint::Product {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
+    args.levels.check(&mut sources)?;
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();
-        if args.fix && file.exists() && !postc_frontends::is_toolpath(file) {
+        if args.fix && file.exists() && !postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             match fix(file, args.dialect) {
                 Ok(0) => {}
                 Ok(n) => eprintln!("postc: fixed {n} problem(s) in `{name}`"),
@@ -65,8 +69,8 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
         }
         let diagnostics = if !file.exists() {
-            vec![Diagnostic::error("IO001", format!("`{name}` does not exist"))]
-        } else if postc_frontends::is_toolpath(file) {
+            vec![Diagnostic::error(codes::IO001, format!("`{name}` does not exist"))]
+        } else if postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
             let compiled = postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources);
@@ -79,6 +83,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
             diagnostics
         };
+        let mut diagnostics = diagnostics;
+        match args.levels.rules_for(Some(file)) {
+            Ok(rules) => rules.apply(&mut diagnostics),
+            Err(d) => diagnostics.push(d),
+        }
         all.extend(diagnostics.into_iter().map(|d| (name.clone(), d)));
     }
     let errors = all.iter().filter(|(_, d)| d.is_error()).count();
@@ -101,7 +110,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
 /// A file that is not UTF-8 (Windows-1252) is read byte for character and
 /// written back the same way, so its other bytes do not change.
 fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Diagnostic> {
-    let io = |e: std::io::Error| Diagnostic::error("IO003", format!("cannot fix `{}`: {e}", file.display()));
+    let io = |e: std::io::Error| Diagnostic::error(codes::IO003, format!("cannot fix `{}`: {e}", file.display()));
     let bytes = std::fs::read(file).map_err(io)?;
     let dialect = match dialect {
         Some(d) => d.into(),

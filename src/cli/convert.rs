@@ -3,11 +3,12 @@
 //! cannot hold is refused with a diagnostic per reason, and nothing is
 //! written; `-o` writes the whole file or none of it.
 
+use postc_ir::codes;
 use std::io::Write;
 use std::path::PathBuf;
 
 use postc_backends::Target;
-use postc_ir::{Diagnostic, SourceMap};
+use postc_ir::Diagnostic;
 
 use super::{DialectArg, Failed, fail, load_post, report};
 
@@ -36,7 +37,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
@@ -63,5 +64,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             stdout.write_all(&text).and_then(|()| stdout.flush())
         }
     };
-    written.map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot write the converted post: {e}"))))
+    written.map_err(|e| {
+        fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the converted post: {e}")))
+    })
 }

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use postc_ir::{Body, SourceMap};
+use postc_ir::Body;
 
 use super::{DialectArg, Failed, load_post, report};
 
@@ -17,7 +17,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let config = ron::ser::PrettyConfig::new().struct_names(false).compact_arrays(true);
     let text = ron::ser::to_string_pretty(&post, config).unwrap_or_else(|e| format!("// cannot print the IR: {e}"));

@@ -10,8 +10,18 @@ pub struct Args {
 }
 
 pub fn run(_args: Args) -> Result<(), Failed> {
-    postc_lsp::run_stdio().map_err(|e| {
+    serve_stdio().map_err(|e| {
         eprintln!("postc lsp: {e}");
         Failed
     })
+}
+
+/// The server on stdin/stdout until the client says `exit`, reading the
+/// files documents name from disk.
+fn serve_stdio() -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+    let (connection, io_threads) = lsp_server::Connection::stdio();
+    postc_lsp::serve(&connection, std::sync::Arc::new(postc_report::FsLoader))?;
+    drop(connection);
+    io_threads.join()?;
+    Ok(())
 }

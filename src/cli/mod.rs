@@ -4,6 +4,8 @@
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
 //! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
+//! postc explain CODE                                          # one diagnostic code's documentation
+//! postc check|post ... [--warn|--deny|--allow CODE|PREFIX|all]  # severity per code; also postc.toml
 //! postc convert POST --to vectric|ron [-o OUT]                # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
@@ -21,8 +23,11 @@
 
 mod bench;
 mod check;
+pub mod clock;
 mod convert;
+mod explain;
 mod inspect;
+mod levels;
 mod lsp;
 mod plot;
 mod post;
@@ -30,6 +35,7 @@ mod postp;
 mod probe;
 mod profile;
 pub mod report;
+pub mod sink;
 mod toolpath;
 mod trace;
 pub(crate) mod verify;
@@ -38,6 +44,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use postc_ir::codes::LevelRules;
 use postc_ir::{Diagnostic, Dialect, Post, SourceMap};
 
 /// postc: posts CNC toolpaths through Vectric, CIMCO and VcPost post processors.
@@ -56,6 +63,8 @@ enum Command {
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),
+    /// Print the documentation of a diagnostic code (PP027): what it means, an example, the fix; or, given TRACE.jsonl LINE, why line LINE of a posted program exists (from `postc post --trace`).
+    Explain(explain::Args),
     /// Print a post's IR as RON.
     Inspect(inspect::Args),
     /// Measure posting throughput over a toolpath or a synthetic one.
@@ -70,8 +79,6 @@ enum Command {
     Lsp(lsp::Args),
     /// Draw a program over its toolpath, top (XY) and front (XZ), with verify's findings marked: SVG, or PNG.
     Plot(plot::Args),
-    /// Explain why line LINE of a posted program exists, from the trace `postc post --trace` wrote.
-    Explain(trace::ExplainArgs),
     /// Toolpath utilities.
     Toolpath {
         #[command(subcommand)]
@@ -108,6 +115,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
+        Command::Explain(args) => explain::run(args),
         Command::Convert(args) => convert::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Bench(args) => bench::run(args),
@@ -116,7 +124,6 @@ pub fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args),
         Command::Lsp(args) => lsp::run(args),
         Command::Plot(args) => plot::run(args),
-        Command::Explain(args) => trace::run_explain(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
     match result {
@@ -136,7 +143,18 @@ pub(crate) fn load_post(
     dialect: Option<DialectArg>,
     sources: &mut SourceMap,
 ) -> Result<Post, Failed> {
-    let compiled = match path {
+    load_post_with(path, dialect, sources, &LevelRules::default())
+}
+
+/// [`load_post`] with severity rules (`--deny`, `--allow`, `postc.toml`)
+/// applied to the post's diagnostics.
+pub(crate) fn load_post_with(
+    path: Option<&PathBuf>,
+    dialect: Option<DialectArg>,
+    sources: &mut SourceMap,
+    rules: &LevelRules,
+) -> Result<Post, Failed> {
+    let mut compiled = match path {
         Some(p) => postc_frontends::compile_post(p, dialect.map(Into::into), sources),
         None => postc_frontends::compile_post_bytes(
             std::path::Path::new(crate::default_post::NAME),
@@ -145,6 +163,7 @@ pub(crate) fn load_post(
             sources,
         ),
     };
+    rules.apply(&mut compiled.diagnostics);
     report::eprint(sources, &compiled.diagnostics);
     match compiled.post {
         Some(post) if !compiled.has_errors() => Ok(post),

@@ -2,6 +2,7 @@
 //! posted from, top (XY) and front (XZ), with verify's findings marked and
 //! numbered (`docs/plot.md`). SVG, or PNG rendered with resvg.
 
+use postc_ir::codes;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -46,7 +47,7 @@ enum Kind {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let ext = args.output.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
     let kind = match ext.as_str() {
         "svg" => Kind::Svg,
@@ -55,7 +56,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             return Err(fail(
                 &mut sources,
                 Diagnostic::error(
-                    "IO007",
+                    codes::IO007,
                     format!("`-o {}`: a plot is written as `.svg` or `.png`", args.output.display()),
                 )
                 .help("name the output file `plot.svg` or `plot.png`"),
@@ -77,11 +78,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let bytes = match kind {
         Kind::Svg => svg.into_bytes(),
         Kind::Png => png(&svg).map_err(|e| {
-            fail(&mut sources, Diagnostic::error("IO003", format!("cannot render the plot as PNG: {e}")))
+            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot render the plot as PNG: {e}")))
         })?,
     };
     write(&args.output, &bytes).map_err(|e| {
-        fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", args.output.display())))
+        fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", args.output.display())))
     })?;
     eprintln!("postc plot: wrote `{}`", args.output.display());
     Ok(())

@@ -2,14 +2,15 @@
 //! or not at all) or to standard output. A VcPost probe table (`.csv`) or
 //! composites event file goes to `probe.rs` instead.
 
+use postc_ir::codes;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
+use postc_ir::Diagnostic;
 use postc_ir::event::FileInfo;
-use postc_ir::{Diagnostic, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, RunOptions};
 
-use super::{DialectArg, Failed, fail, load_post, report};
+use super::{DialectArg, Failed, fail, load_post_with, report};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -34,6 +35,8 @@ pub struct Args {
     /// After posting to OUT, replay what was written and compare it with the toolpath (`postc verify`); needs -o.
     #[arg(long)]
     verify: bool,
+    #[command(flatten)]
+    levels: super::levels::Flags,
     /// Write which post statement wrote each output line, for which toolpath event, as JSON Lines (docs/trace.md); read it with `postc explain TRACE LINE`.
     #[arg(long, value_name = "TRACE.jsonl")]
     trace: Option<PathBuf>,
@@ -46,7 +49,7 @@ const SETTINGS: &str = "date, time, tolerance";
 pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagnostic> {
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
-            return Err(Diagnostic::error("IO007", format!("`--set {set}` needs the form NAME=VALUE"))
+            return Err(Diagnostic::error(codes::IO007, format!("`--set {set}` needs the form NAME=VALUE"))
                 .help(format!("known names: {SETTINGS}")));
         };
         match name.trim().to_ascii_lowercase().as_str() {
@@ -56,18 +59,33 @@ pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<()
                 Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
                 _ => {
                     return Err(Diagnostic::error(
-                        "IO007",
+                        codes::IO007,
                         format!("`--set {set}`: the tolerance must be a positive number of mm"),
                     ));
                 }
             },
             other => {
-                return Err(Diagnostic::error("IO007", format!("`--set {other}` is not a setting postc knows"))
+                return Err(Diagnostic::error(codes::IO007, format!("`--set {other}` is not a setting postc knows"))
                     .help(format!("known names: {SETTINGS}")));
             }
         }
     }
     Ok(())
+}
+
+/// A warning the runtime reported while posting was denied (`--deny`,
+/// `postc.toml`): the program is complete by then, so its files are removed
+/// again; on standard output only the exit status can say it.
+fn denied(output: &Finished) -> Failed {
+    if let Finished::Files(files) = output {
+        for file in files {
+            let _ = std::fs::remove_file(file);
+        }
+        eprintln!("postc: a denied warning was reported while posting; the program was removed");
+    } else {
+        eprintln!("postc: a denied warning was reported while posting");
+    }
+    Failed
 }
 
 /// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.
@@ -81,14 +99,15 @@ fn file_info(path: &Path) -> FileInfo {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
+    args.levels.check(&mut sources)?;
     let (post_path, toolpath) = match args.files.as_slice() {
         [toolpath] => (None, toolpath),
         [post, toolpath] => (Some(post), toolpath),
         _ => unreachable!("clap takes one or two files"),
     };
     if let Some(kind) = super::probe::job_kind(toolpath) {
-        let mut options = RunOptions::default();
+        let mut options = super::clock::run_options();
         apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
         options.file = args.output.as_deref().map(file_info);
         let job = super::probe::Job {
@@ -102,41 +121,48 @@ pub fn run(args: Args) -> Result<(), Failed> {
         };
         return super::probe::run_calls(job);
     }
-    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath) {
+    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO006", format!("`{}` is not a toolpath", toolpath.display()))
+            Diagnostic::error(codes::IO006, format!("`{}` is not a toolpath", toolpath.display()))
                 .help("give a post and a toolpath (`postc post POST TOOLPATH`), or a toolpath alone to use the embedded G-code post"),
         ));
     }
     if args.verify && args.output.is_none() {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO007", "`--verify` checks the file that was written: give it with `-o OUT`"),
+            Diagnostic::error(codes::IO007, "`--verify` checks the file that was written: give it with `-o OUT`"),
         ));
     }
-    let post = load_post(post_path, args.dialect, &mut sources)?;
-    let mut options = RunOptions { exact_arcs: args.exact_arcs, ..RunOptions::default() };
+    let rules = args.levels.rules_for(Some(post_path.unwrap_or(toolpath))).map_err(|d| fail(&mut sources, d))?;
+    let post = load_post_with(post_path, args.dialect, &mut sources, &rules)?;
+    let mut options = RunOptions {
+        exact_arcs: args.exact_arcs,
+        script_host: postc_frontends::script_host(&post),
+        ..super::clock::run_options()
+    };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));
     }
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
     let out = match &args.output {
-        Some(path) => Output::file(path).map_err(|e| {
-            fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
+        Some(path) => super::sink::file(path).map_err(|e| {
+            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", path.display())))
         })?,
         None => {
             if post.options.tape_splitting.is_some() {
-                report::eprint(
-                    &mut sources,
-                    &[Diagnostic::warning(
-                        "IO008",
-                        "the post splits its output into parts, but there is no -o; all parts go to standard output one after the other",
-                    )],
-                );
+                let mut warning = vec![Diagnostic::warning(
+                    codes::IO008,
+                    "the post splits its output into parts, but there is no -o; all parts go to standard output one after the other",
+                )];
+                rules.apply(&mut warning);
+                report::eprint(&mut sources, &warning);
+                if postc_ir::diagnostic::has_errors(&warning) {
+                    return Err(Failed);
+                }
             }
-            Output::stdout()
+            super::sink::stdout()
         }
     };
     let recorder = match &args.trace {
@@ -144,7 +170,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             let r = super::trace::Recorder::new(path).map_err(|e| {
                 fail(
                     &mut sources,
-                    Diagnostic::error("IO003", format!("cannot write the trace `{}`: {e}", path.display())),
+                    Diagnostic::error(codes::IO003, format!("cannot write the trace `{}`: {e}", path.display())),
                 )
             })?;
             options.trace = Some(r.sink());
@@ -159,8 +185,12 @@ pub fn run(args: Args) -> Result<(), Failed> {
         options.progress = Some(Box::new(move |events| bar.set_message(format!("posted {events} events"))));
     }
     match postc_runtime::run(&post, &mut source, out, options) {
-        Ok(report) => {
+        Ok(mut report) => {
+            rules.apply(&mut report.warnings);
             report::eprint(&mut sources, &report.warnings);
+            if postc_ir::diagnostic::has_errors(&report.warnings) {
+                return Err(denied(&report.output));
+            }
             if let Some(recorder) = recorder {
                 let outputs = match &report.output {
                     Finished::Files(files) => files.clone(),
@@ -192,14 +222,13 @@ pub fn run(args: Args) -> Result<(), Failed> {
                     super::verify::verify(&job, &mut sources)
                 }
                 (Finished::Files(_), true) => {
-                    report::eprint(
-                        &mut sources,
-                        &[Diagnostic::warning(
-                            "VF009",
-                            "the post split its output into parts; `--verify` reads one program, so the parts were not verified",
-                        )],
-                    );
-                    Ok(())
+                    let mut warning = vec![Diagnostic::warning(
+                        codes::VF009,
+                        "the post split its output into parts; `--verify` reads one program, so the parts were not verified",
+                    )];
+                    rules.apply(&mut warning);
+                    report::eprint(&mut sources, &warning);
+                    if postc_ir::diagnostic::has_errors(&warning) { Err(Failed) } else { Ok(()) }
                 }
                 _ => Ok(()),
             }

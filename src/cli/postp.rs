@@ -10,8 +10,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
-use postc_ir::SourceMap;
-use postc_runtime::Output;
 
 use super::{Failed, report};
 use postc_postp::Settings;
@@ -52,10 +50,10 @@ pub fn main() -> ExitCode {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
-    let settings = Settings { options: args.options, ..Settings::default() };
+    let mut sources = postc_report::source_map();
+    let settings = Settings { options: args.options, now: Some(super::clock::now()), ..Settings::default() };
     let cl = args.dir.join("cl.tap");
-    match postc_postp::post(&cl, &settings, Output::stdout(), &mut sources) {
+    match postc_postp::post(&cl, &settings, super::sink::stdout(), &mut sources) {
         Ok(r) => {
             report::eprint(&mut sources, &r.warnings);
             Ok(())

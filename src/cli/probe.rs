@@ -11,11 +11,12 @@
 //! it: a `.csv` file is a probe table; a `.vcp.ron`/`.vcp.jsonl` file, or
 //! one whose first line is `VcpFile(...)`, is a composites event file.
 
+use postc_ir::codes;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{CallSource, Diagnostic, Dialect, Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_runtime::{Finished, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
 
@@ -31,7 +32,7 @@ pub struct Args {
 
 /// `postc probe-table POST`.
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     match postc_front_vcpost::table::template(&post) {
         Some(text) => {
@@ -40,7 +41,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         None => Err(fail(
             &mut sources,
-            Diagnostic::error("PT016", format!("`{}` has no probe-cycle Subs", args.post.display())).help(
+            Diagnostic::error(codes::PT016, format!("`{}` has no probe-cycle Subs", args.post.display())).help(
                 "probe-cycle Subs carry a keyword comment: `' #Init`, `' #Rapid !X !Y !Z`, `' #Cycle !X !Y Width`, ...",
             ),
         )),
@@ -61,7 +62,7 @@ pub fn job_kind(path: &Path) -> Option<JobKind> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     if ext.as_deref() == Some("csv") {
         Some(JobKind::ProbeTable)
-    } else if postc_front_vcpost::composites::is_composites_file(path) {
+    } else if postc_front_vcpost::composites::is_composites_file(path, &postc_report::FsLoader) {
         Some(JobKind::Composites)
     } else {
         None
@@ -81,11 +82,11 @@ pub struct Job<'a> {
 
 /// Runs a probe table or a composites event file through a VcPost post.
 pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let Some(post_path) = job.post else {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO006", format!("`{}` needs a VcPost post", job.input.display()))
+            Diagnostic::error(codes::IO006, format!("`{}` needs a VcPost post", job.input.display()))
                 .help("postc post POST.VcPost TABLE.csv, or postc post POST.VcPost EVENTS.vcp.ron"),
         ));
     };
@@ -93,22 +94,22 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     if post.info.dialect != Dialect::VcPost {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO006", format!("`{}` is not a VcPost post", post_path.display()))
+            Diagnostic::error(codes::IO006, format!("`{}` is not a VcPost post", post_path.display()))
                 .help("probe tables and composites event files are read against a VcPost post's Subs"),
         ));
     }
     if job.kind == JobKind::ProbeTable && !job.primers.is_empty() {
         report::eprint(
             &mut sources,
-            &[Diagnostic::warning("IO007", "--primer only applies to composites event files; ignored")],
+            &[Diagnostic::warning(codes::IO007, "--primer only applies to composites event files; ignored")],
         );
     }
     let mut source = open(&job, &post, &mut sources)?;
     let out = match job.output {
-        Some(path) => Output::file(path).map_err(|e| {
-            fail(&mut sources, Diagnostic::error("IO003", format!("cannot write `{}`: {e}", path.display())))
+        Some(path) => super::sink::file(path).map_err(|e| {
+            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", path.display())))
         })?,
-        None => Output::stdout(),
+        None => super::sink::stdout(),
     };
     let mut options = job.options;
     let big = std::fs::metadata(job.input).map(|m| m.len() > (32 << 20)).unwrap_or(false);
@@ -116,7 +117,7 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
         let bar = indicatif::ProgressBar::new_spinner();
         options.progress = Some(Box::new(move |calls| bar.set_message(format!("ran {calls} calls"))));
     }
-    match postc_runtime::calls::run_calls(&post, &mut source, out, options) {
+    match postc_runtime::calls::run_calls(&postc_frontends::for_calls(&post), &mut source, out, options) {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
             if let Finished::Files(files) = &report.output
@@ -140,12 +141,12 @@ fn open(job: &Job<'_>, post: &Post, sources: &mut SourceMap) -> Result<Box<dyn C
     match job.kind {
         JobKind::ProbeTable => {
             let bytes = std::fs::read(job.input).map_err(|e| {
-                fail(sources, Diagnostic::error("IO001", format!("cannot read `{}`: {e}", job.input.display())))
+                fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{}`: {e}", job.input.display())))
             })?;
             let Ok(text) = String::from_utf8(bytes) else {
                 return Err(fail(
                     sources,
-                    Diagnostic::error("PT001", format!("`{}` is not UTF-8 text", job.input.display())),
+                    Diagnostic::error(codes::PT001, format!("`{}` is not UTF-8 text", job.input.display())),
                 ));
             };
             let text = text.strip_prefix('\u{FEFF}').map(str::to_string).unwrap_or(text);

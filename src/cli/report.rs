@@ -4,6 +4,7 @@
 use std::io::IsTerminal;
 
 use postc_ir::{Diagnostic, SourceMap};
+use postc_report::Render;
 
 /// How `check` prints diagnostics.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

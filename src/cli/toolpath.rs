@@ -1,10 +1,11 @@
 //! `postc toolpath gen`: writes a synthetic toolpath as native events.
 
+use postc_ir::codes;
 use std::io::Write;
 use std::path::PathBuf;
 
 use postc_frontends::native::{Syntax, write_event};
-use postc_ir::{Diagnostic, EventSource, SourceMap};
+use postc_ir::{Diagnostic, EventSource};
 
 use super::{Failed, fail};
 use postc_frontends::synthetic::{PATTERNS, Synthetic};
@@ -26,12 +27,12 @@ pub enum Command {
 }
 
 pub fn run(command: Command) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let Command::Gen { pattern, moves, output } = command;
     let Some(mut generator) = Synthetic::new(&pattern, moves) else {
         return Err(fail(
             &mut sources,
-            Diagnostic::error("IO007", format!("there is no toolpath pattern `{pattern}`"))
+            Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{pattern}`"))
                 .help(format!("patterns: {}", PATTERNS.join(", "))),
         ));
     };
@@ -61,5 +62,5 @@ pub fn run(command: Command) -> Result<(), Failed> {
         }
         None => write(&mut std::io::BufWriter::new(std::io::stdout().lock()), &mut generator),
     };
-    result.map_err(|e| fail(&mut sources, Diagnostic::error("IO003", format!("cannot write the toolpath: {e}"))))
+    result.map_err(|e| fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the toolpath: {e}"))))
 }

@@ -8,6 +8,8 @@
 //! (the source map knows the post's files and the toolpath) and the trace
 //! is written whole beside its target, or not at all.
 
+use postc_ir::codes;
+use postc_report::Render as _;
 use std::cell::RefCell;
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, BufWriter, Write};
@@ -143,7 +145,7 @@ impl Recorder {
     /// names of the NC files (`outputs`, one per tape-split part).
     pub fn finish(self, sources: &SourceMap, post: &Post, outputs: &[PathBuf]) -> Result<(), Diagnostic> {
         let io_error = |e: io::Error| {
-            Diagnostic::error("IO003", format!("cannot write the trace `{}`: {e}", self.target.display()))
+            Diagnostic::error(codes::IO003, format!("cannot write the trace `{}`: {e}", self.target.display()))
         };
         if let Some(mut w) = self.raw.borrow_mut().take() {
             w.flush().map_err(io_error)?;
@@ -201,44 +203,22 @@ fn place(sources: &SourceMap, span: Span) -> Option<Place> {
     Some(Place { file: sources.name(span.file).to_string(), line, column, end_line, end_column })
 }
 
-/// `postc explain TRACE LINE`.
-#[derive(clap::Args, Debug)]
-pub struct ExplainArgs {
-    /// The trace `postc post --trace` wrote.
-    #[arg(value_name = "TRACE.jsonl")]
-    trace: PathBuf,
-    /// The NC line to explain, from 1.
-    #[arg(value_name = "LINE")]
-    line: u64,
-    /// Which NC file, when the post split its output into parts (a path or its end).
-    #[arg(long, value_name = "NC")]
-    output: Option<String>,
-}
-
-/// Runs `postc explain TRACE LINE`.
-pub fn run_explain(args: ExplainArgs) -> Result<(), super::Failed> {
-    let mut sources = SourceMap::new();
-    match explain(&args.trace, args.line, args.output.as_deref(), &mut sources) {
-        Ok(text) => {
-            super::report::out(&text);
-            Ok(())
-        }
-        Err(d) => Err(super::fail(&mut sources, d)),
-    }
-}
-
 /// Why one NC line exists, as text: the line, and the post statement and
 /// toolpath event behind it with their source lines.
 pub fn explain(trace: &Path, line: u64, output: Option<&str>, sources: &mut SourceMap) -> Result<String, Diagnostic> {
     let file = File::open(trace)
-        .map_err(|e| Diagnostic::error("IO001", format!("cannot read the trace `{}`: {e}", trace.display())))?;
+        .map_err(|e| Diagnostic::error(codes::IO001, format!("cannot read the trace `{}`: {e}", trace.display())))?;
     let mut found = None;
     let mut outputs = Vec::new();
     for (i, text) in BufReader::new(file).lines().enumerate() {
-        let text = text.map_err(|e| Diagnostic::error("IO001", format!("cannot read `{}`: {e}", trace.display())))?;
+        let text =
+            text.map_err(|e| Diagnostic::error(codes::IO001, format!("cannot read `{}`: {e}", trace.display())))?;
         let record: Record = serde_json::from_str(&text).map_err(|e| {
-            Diagnostic::error("IO010", format!("`{}` line {} is not a postc trace record: {e}", trace.display(), i + 1))
-                .help("write a trace with `postc post POST TOOLPATH -o OUT --trace OUT.trace.jsonl`")
+            Diagnostic::error(
+                codes::IO010,
+                format!("`{}` line {} is not a postc trace record: {e}", trace.display(), i + 1),
+            )
+            .help("write a trace with `postc post POST TOOLPATH -o OUT --trace OUT.trace.jsonl`")
         })?;
         if !outputs.contains(&record.output) {
             outputs.push(record.output.clone());
@@ -254,9 +234,8 @@ pub fn explain(trace: &Path, line: u64, output: Option<&str>, sources: &mut Sour
             1 => format!("the trace covers {}", outputs[0]),
             _ => format!("the trace covers {}; choose one with --output", outputs.join(", ")),
         };
-        return Err(
-            Diagnostic::error("IO011", format!("line {line} is not in the trace `{}`", trace.display())).help(help)
-        );
+        return Err(Diagnostic::error(codes::IO011, format!("line {line} is not in the trace `{}`", trace.display()))
+            .help(help));
     };
     let mut text = String::new();
     let nc = read_line(Path::new(&record.output), record.line).unwrap_or_default();
@@ -310,7 +289,7 @@ pub fn annotate(
     sources: &mut SourceMap,
 ) -> Result<(), Diagnostic> {
     let read_error = |e: &dyn std::fmt::Display| {
-        Diagnostic::error("IO001", format!("cannot read the trace `{}`: {e}", trace.display()))
+        Diagnostic::error(codes::IO001, format!("cannot read the trace `{}`: {e}", trace.display()))
     };
     let mut wanted: Vec<(u64, usize)> = Vec::new();
     for (i, d) in findings.iter().enumerate() {

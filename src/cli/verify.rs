@@ -2,6 +2,7 @@
 //! motion with the toolpath it was posted from (`docs/verify.md`). Exits 1
 //! when anything is out of tolerance.
 
+use postc_ir::codes;
 use std::io::{BufReader, Read};
 use std::path::{Path, PathBuf};
 
@@ -73,7 +74,7 @@ const FOREIGN_EXTENSIONS: &[(&str, &str)] =
     &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
 pub fn run(args: Args) -> Result<(), Failed> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, postp) = post_for(args.post.as_ref(), args.dialect, args.postp, &args.toolpath, &mut sources)?;
     let job = Job {
         program: &args.program,
@@ -177,7 +178,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
         return Err(fail(
             sources,
             Diagnostic::error(
-                "IO007",
+                codes::IO007,
                 format!("`--tolerance {}`: the tolerance must be a positive number of mm", job.tolerance),
             ),
         ));
@@ -189,7 +190,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
     let refuse = |sources: &mut SourceMap, family: &str, why: &str| {
         fail(
             sources,
-            Diagnostic::error("VF001", format!("`{name}` is {family}, not G-code: {why}")).help(format!(
+            Diagnostic::error(codes::VF001, format!("`{name}` is {family}, not G-code: {why}")).help(format!(
                 "verify reads {}; HPGL, ShopBot and Heidenhain conversational programs are not verified",
                 postc_verify::FAMILIES
             )),
@@ -204,7 +205,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
             return Err(fail(
                 sources,
                 Diagnostic::error(
-                    "VF007",
+                    codes::VF007,
                     format!("`{}` is a lathe post; verify compares milling programs only", post.info.name),
                 )
                 .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
@@ -214,7 +215,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
             return Err(fail(
                 sources,
                 Diagnostic::error(
-                    "VF006",
+                    codes::VF006,
                     format!(
                         "`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs",
                         post.info.name
@@ -227,17 +228,17 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
         }
     }
     let file = std::fs::File::open(job.program)
-        .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?;
+        .map_err(|e| fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))))?;
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut reader = BufReader::with_capacity(1 << 16, file);
     let mut head = Vec::with_capacity(4096);
     if let Err(e) = reader.by_ref().take(4096).read_to_end(&mut head) {
-        return Err(fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))));
+        return Err(fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))));
     }
     if postc_verify::looks_binary(&head) {
         return Err(fail(
             sources,
-            Diagnostic::error("VF002", format!("`{name}` is binary data, not a G-code program"))
+            Diagnostic::error(codes::VF002, format!("`{name}` is binary data, not a G-code program"))
                 .help("verify reads text programs as posts write them"),
         ));
     }
@@ -251,20 +252,20 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
     let file_id = if size <= LOAD_LIMIT {
         let mut bytes = head;
         if let Err(e) = reader.read_to_end(&mut bytes) {
-            return Err(fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))));
+            return Err(fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))));
         }
         let id = sources.add(name.clone(), String::from_utf8_lossy(&bytes).into_owned());
         reader = BufReader::with_capacity(
             1 << 16,
             std::fs::File::open(job.program)
-                .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?,
+                .map_err(|e| fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))))?,
         );
         id
     } else {
         reader = BufReader::with_capacity(
             1 << 16,
             std::fs::File::open(job.program)
-                .map_err(|e| fail(sources, Diagnostic::error("IO001", format!("cannot read `{name}`: {e}"))))?,
+                .map_err(|e| fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))))?,
         );
         sources.add_streamed(name.clone())
     };
@@ -275,11 +276,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
 pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
     let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
     Ok(match &job.postp {
-        Some(machine) => Box::new(postc_postp::transform::Transform::new(
-            reader_events,
-            postc_postp::records::ClText::open(job.toolpath),
-            machine.clone(),
-        )),
+        Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, machine.clone())),
         None => reader_events,
     })
 }

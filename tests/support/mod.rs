@@ -28,8 +28,8 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use postc_ir::{Post, SourceMap};
-use postc_runtime::{Finished, Output, RunOptions};
+use postc_ir::Post;
+use postc_runtime::{Finished, Output};
 
 pub fn corpus() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus")
@@ -158,7 +158,7 @@ pub fn stem(path: &Path) -> String {
 
 /// Compiles a corpus post; any diagnostic (error or warning) is a failure.
 pub fn compile(path: &Path) -> Result<Post, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         let list: Vec<String> = compiled.diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
@@ -169,10 +169,10 @@ pub fn compile(path: &Path) -> Result<Post, String> {
 
 /// Posts a toolpath into memory: the parts of the program.
 pub fn post_parts(post: &Post, toolpath: &Path) -> Result<Vec<Vec<u8>>, String> {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources)
         .map_err(|d| format!("cannot open {}: {} {}", toolpath.display(), d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), RunOptions::default()) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts),
             _ => Err("a memory run did not finish in memory".into()),

@@ -4,7 +4,6 @@
 
 use std::path::{Path, PathBuf};
 
-use postc_ir::SourceMap;
 use postc_postp::{Controller, Settings, post};
 use postc_runtime::{Finished, Output};
 
@@ -50,11 +49,11 @@ pub fn run_with(cl: &str, options: Option<&str>, machine: Option<Controller>) ->
         std::fs::write(&p, text).unwrap();
         p
     });
-    run_file(&path, Settings { options, machine })
+    run_file(&path, Settings { options, machine, ..Settings::default() })
 }
 
 pub fn run_file(path: &Path, settings: Settings) -> Run {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let line = |d: &postc_ir::Diagnostic| format!("{} {}", d.code, d.message);
     match post(path, &settings, Output::memory(), &mut sources) {
         Ok(r) => {

@@ -15,6 +15,7 @@
 //!    it must not go below the toolpath's rapid heights into the material;
 //! 4. any other cutting move is off the toolpath.
 
+use postc_ir::codes;
 use std::io::BufRead;
 
 use postc_ir::event::{ArcDir, Intent, Plane};
@@ -213,7 +214,7 @@ pub fn run(
             Err(e) => {
                 run.line_start = offset;
                 run.line_len = 0;
-                let d = Diagnostic::error("VF002", format!("cannot read the program: {e}"));
+                let d = Diagnostic::error(codes::VF002, format!("cannot read the program: {e}"));
                 run.push(d, true);
                 break;
             }
@@ -231,7 +232,7 @@ pub fn run(
         if overlong {
             run.finding(
                 Severity::Error,
-                "VF003",
+                codes::VF003.code,
                 format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024),
                 0,
                 1,
@@ -243,7 +244,14 @@ pub fn run(
             continue;
         }
         if buf.contains(&0) {
-            run.finding(Severity::Error, "VF002", "this line holds binary data (NUL bytes), not G-code", 0, 1, None);
+            run.finding(
+                Severity::Error,
+                codes::VF002.code,
+                "this line holds binary data (NUL bytes), not G-code",
+                0,
+                1,
+                None,
+            );
             continue;
         }
         run.line(&buf, &mut items);
@@ -433,13 +441,13 @@ impl Run<'_> {
                     "the program holds bytes that are not G-code text",
                 ),
             };
-            let d = self.finding(Severity::Error, "VF004", message, at, at + 1, None);
+            let d = self.finding(Severity::Error, codes::VF004.code, message, at, at + 1, None);
             Self::help(d, help);
             self.syntax_errors += 1;
             if self.syntax_errors >= NOT_GCODE && self.stats.motions == 0 {
                 let d = self.finding(
                     Severity::Error,
-                    "VF001",
+                    codes::VF001.code,
                     format!("{NOT_GCODE} blocks could not be read and none moved the tool: this is not a G-code program; verify stops here"),
                     0,
                     self.line_len,
@@ -477,7 +485,7 @@ impl Run<'_> {
                             if self.block.letters[index].is_some() {
                                 let d = self.finding(
                                     Severity::Error,
-                                    "VF004",
+                                    codes::VF004.code,
                                     format!("a second {} word in one block", letter as char),
                                     start,
                                     end,
@@ -489,7 +497,7 @@ impl Run<'_> {
                             if !b"NXYZABCIJKRFSTPQLHDOUVW".contains(&letter) {
                                 let d = self.finding(
                                     Severity::Warning,
-                                    "VF005",
+                                    codes::VF005.code,
                                     format!("verify does not know the {} word; it is ignored", letter as char),
                                     start,
                                     end,
@@ -514,7 +522,7 @@ impl Run<'_> {
         if text.first() == Some(&b';') && matches!(controller, Controller::Fanuc | Controller::Haas) {
             let d = self.finding(
                 Severity::Error,
-                "VF042",
+                codes::VF042.code,
                 format!("{} reads `;` as the end of a block, not as a comment", controller.name()),
                 start,
                 start + 1,
@@ -533,7 +541,7 @@ impl Run<'_> {
             };
             let d = self.finding(
                 severity,
-                "VF042",
+                codes::VF042.code,
                 format!("{what} a `(` inside a comment"),
                 start + 1 + i,
                 start + 2 + i,
@@ -545,7 +553,7 @@ impl Run<'_> {
         if let Some(i) = body.iter().position(|&b| b < 32 && b != b'\t' || b == 127) {
             self.finding(
                 Severity::Error,
-                "VF042",
+                codes::VF042.code,
                 "a control character in a comment",
                 start + 1 + i,
                 start + 2 + i,
@@ -558,7 +566,7 @@ impl Run<'_> {
         {
             let d = self.finding(
                 Severity::Error,
-                "VF042",
+                codes::VF042.code,
                 format!("{} reads `%` as the end of the program, even in a comment", controller.name()),
                 start + 1 + i,
                 start + 2 + i,
@@ -571,7 +579,7 @@ impl Run<'_> {
             let severity = if strict { Severity::Error } else { Severity::Warning };
             let d = self.finding(
                 severity,
-                "VF042",
+                codes::VF042.code,
                 format!("a character outside ASCII in a comment; {} may refuse it", controller.name()),
                 start + 1 + i,
                 start + 2 + i,
@@ -622,7 +630,7 @@ impl Run<'_> {
                         let post = self.settings.post.as_deref().unwrap_or("the post");
                         let d = self.finding(
                             Severity::Error,
-                            "VF031",
+                            codes::VF031.code,
                             format!(
                                 "the program says {} but {post} writes {}",
                                 if inch { "inches (G20/G70)" } else { "millimetres (G21/G71)" },
@@ -650,7 +658,7 @@ impl Run<'_> {
                 920..=923 => {
                     let d = self.finding(
                         Severity::Warning,
-                        "VF008",
+                        codes::VF008.code,
                         "verify does not replay G92 coordinate offsets; positions after it are not compared",
                         start as usize,
                         end as usize,
@@ -663,7 +671,7 @@ impl Run<'_> {
                 _ => {
                     let d = self.finding(
                         Severity::Warning,
-                        "VF005",
+                        codes::VF005.code,
                         format!("verify does not know G{}; it is ignored", format_code(code)),
                         start as usize,
                         end as usize,
@@ -734,7 +742,7 @@ impl Run<'_> {
         let Some(motion) = self.motion else {
             self.finding(
                 Severity::Warning,
-                "VF005",
+                codes::VF005.code,
                 "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block",
                 0,
                 self.line_len,
@@ -747,7 +755,7 @@ impl Run<'_> {
             let unit = if self.unit > 1.0 { "inches" } else { "millimetres" };
             let d = self.finding(
                 Severity::Warning,
-                "VF032",
+                codes::VF032.code,
                 format!("the program moves before it says G20 or G21; verify reads it in {unit}"),
                 0,
                 self.line_len,
@@ -795,7 +803,7 @@ impl Run<'_> {
         if n.value > maximum {
             let d = self.finding(
                 Severity::Error,
-                "VF041",
+                codes::VF041.code,
                 format!("block number {} is over the maximum {maximum}", n.value),
                 start,
                 end,
@@ -813,7 +821,7 @@ impl Run<'_> {
             if !wrapped {
                 let d = self.finding(
                     Severity::Error,
-                    "VF040",
+                    codes::VF040.code,
                     format!("block number {} does not increase (the block before is N{prev})", n.value),
                     start,
                     end,
@@ -847,7 +855,7 @@ impl Run<'_> {
         if z < limit - self.tol() {
             let d = self.finding(
                 Severity::Error,
-                "VF038",
+                codes::VF038.code,
                 format!("tool change with the tool at Z{z:.3} mm, below {what} (Z{limit:.3} mm)"),
                 start as usize,
                 end as usize,
@@ -870,7 +878,7 @@ impl Run<'_> {
         if let Some(off) = b.get(letters[w]) {
             let d = self.finding(
                 Severity::Error,
-                "VF021",
+                codes::VF021.code,
                 format!("{} word in an arc of the {plane_name} plane", letters[w] as char),
                 off.start as usize,
                 off.end as usize,
@@ -893,7 +901,7 @@ impl Run<'_> {
             if closed {
                 let d = self.finding(
                     Severity::Error,
-                    "VF023",
+                    codes::VF023.code,
                     "an R arc that ends where it starts: R cannot describe a full circle",
                     rw.start as usize,
                     rw.end as usize,
@@ -908,7 +916,7 @@ impl Run<'_> {
                 None => {
                     let d = self.finding(
                         Severity::Error,
-                        "VF023",
+                        codes::VF023.code,
                         format!("R{} is smaller than half the distance to the arc's end", rw.value),
                         rw.start as usize,
                         rw.end as usize,
@@ -932,7 +940,7 @@ impl Run<'_> {
                 let (s, e) = word.map_or((0, self.line_len), |x| (x.start as usize, x.end as usize));
                 let d = self.finding(
                     Severity::Error,
-                    "VF020",
+                    codes::VF020.code,
                     format!(
                         "the arc's radius is {r0:.4} mm at its start and {r1:.4} mm at its end ({:.4} mm apart)",
                         (r0 - r1).abs()
@@ -967,7 +975,7 @@ impl Run<'_> {
         if !r.is_finite() || !depth.is_finite() {
             self.finding(
                 Severity::Error,
-                "VF024",
+                codes::VF024.code,
                 "a drilling cycle without its R and Z words",
                 0,
                 self.line_len,
@@ -1038,7 +1046,7 @@ impl Run<'_> {
             self.no_feed_reported = true;
             self.motion_finding(
                 Severity::Error,
-                "VF034",
+                codes::VF034.code,
                 "a cutting move before any feed rate (F) is set",
                 p,
                 None,
@@ -1102,7 +1110,7 @@ impl Run<'_> {
             if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
                 self.motion_finding(
                     Severity::Error,
-                    "VF012",
+                    codes::VF012.code,
                     "a rapid move along a cut of the toolpath",
                     &p,
                     Some(&e),
@@ -1126,7 +1134,7 @@ impl Run<'_> {
                 // The rapid passes over the end of the next cut: it makes that cut at rapid.
                 self.motion_finding(
                     Severity::Error,
-                    "VF012",
+                    codes::VF012.code,
                     "a rapid move over a cut of the toolpath",
                     &p,
                     Some(&e),
@@ -1204,7 +1212,7 @@ impl Run<'_> {
                 if !Self::retract_like(e) {
                     self.motion_finding(
                         Severity::Error,
-                        "VF012",
+                        codes::VF012.code,
                         "a rapid move where the toolpath cuts",
                         p,
                         Some(e),
@@ -1222,7 +1230,7 @@ impl Run<'_> {
                 if known(e.start) && on && sag > chord + tol {
                     self.motion_finding(
                         Severity::Error,
-                        "VF014",
+                        codes::VF014.code,
                         format!(
                             "this chord of a linearized arc lies {sag:.4} mm from the arc (chord tolerance {chord} mm)"
                         ),
@@ -1240,7 +1248,7 @@ impl Run<'_> {
                 if bulge > tol {
                     self.motion_finding(
                         Severity::Error,
-                        "VF010",
+                        codes::VF010.code,
                         format!("an arc where the toolpath moves straight (it bulges {bulge:.3} mm off the line)"),
                         p,
                         Some(e),
@@ -1259,7 +1267,7 @@ impl Run<'_> {
         if p.plane != e.plane {
             self.motion_finding(
                 Severity::Error,
-                "VF013",
+                codes::VF013.code,
                 "this arc is in another plane than the toolpath's",
                 p,
                 Some(e),
@@ -1277,7 +1285,7 @@ impl Run<'_> {
             };
             self.motion_finding(
                 Severity::Error,
-                "VF013",
+                codes::VF013.code,
                 format!("this arc turns {g}; the toolpath's turns {other}"),
                 p,
                 Some(e),
@@ -1301,7 +1309,7 @@ impl Run<'_> {
             };
             self.motion_finding(
                 Severity::Error,
-                "VF022",
+                codes::VF022.code,
                 format!("this arc turns {sweep:.1}° but R is {form}: the controller cuts the other arc"),
                 p,
                 Some(e),
@@ -1311,7 +1319,7 @@ impl Run<'_> {
         }
         self.motion_finding(
             Severity::Error,
-            "VF013",
+            codes::VF013.code,
             format!("this arc's centre is {}, {centre_off:.4} mm from the toolpath's", fmt_point(p.centre)),
             p,
             Some(e),
@@ -1324,7 +1332,7 @@ impl Run<'_> {
             self.spindle_reported = true;
             self.motion_finding(
                 Severity::Error,
-                "VF035",
+                codes::VF035.code,
                 "a cut with the spindle (or jet) off",
                 p,
                 Some(e),
@@ -1340,7 +1348,7 @@ impl Run<'_> {
             let per_unit = if self.unit > 1.0 { "in/min" } else { "mm/min" };
             self.motion_finding(
                 Severity::Error,
-                "VF033",
+                codes::VF033.code,
                 format!("this cut runs at {:.1} mm/min; the toolpath's feed is {want:.1} mm/min", got),
                 p,
                 Some(e),
@@ -1366,7 +1374,7 @@ impl Run<'_> {
         }
         self.motion_finding(
             Severity::Error,
-            "VF037",
+            codes::VF037.code,
             format!("a rapid move to Z{z:.3} mm, below the toolpath's lowest rapid height (Z{floor:.3} mm), into the material"),
             p,
             None,
@@ -1401,7 +1409,7 @@ impl Run<'_> {
                     self.stop_comparing = true;
                     self.motion_finding(
                         Severity::Error,
-                        "VF030",
+                        codes::VF030.code,
                         format!(
                             "the numbers of this move are {what}: read as written it goes to {}, the toolpath to {}",
                             fmt_point(p.end),
@@ -1425,7 +1433,7 @@ impl Run<'_> {
         let Some(e) = self.expected(0, flat) else {
             self.motion_finding(
                 Severity::Error,
-                "VF010",
+                codes::VF010.code,
                 format!("a cutting move to {} after the toolpath's last move", fmt_point(p.end)),
                 p,
                 None,
@@ -1438,7 +1446,7 @@ impl Run<'_> {
         }
         self.motion_finding(
             Severity::Error,
-            "VF010",
+            codes::VF010.code,
             format!(
                 "this cutting move goes to {}, off the toolpath: its next move goes to {} ({:.4} mm away)",
                 fmt_point(p.end),
@@ -1479,7 +1487,7 @@ impl Run<'_> {
         if let Some(e) = first {
             let line = Span::new(self.file, self.line_start, self.line_start + self.line_len);
             let d = Diagnostic::error(
-                "VF011",
+                codes::VF011,
                 format!(
                     "the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}",
                     fmt_point(e.end)

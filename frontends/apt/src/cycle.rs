@@ -21,7 +21,7 @@
 
 use postc_ir::event::{DrillCycle, DrillKind};
 
-use crate::machine::FeedSpec;
+use crate::machine_records::FeedSpec;
 use crate::words::{Arg, Problem, Rec};
 
 /// A cycle as written: distances relative to each hole's point.

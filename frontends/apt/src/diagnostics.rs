@@ -2,30 +2,31 @@
 //! every message, severity and help text lives in one place. The table of
 //! codes is in the crate documentation.
 
+use postc_ir::codes;
 use postc_ir::diagnostic::{Diagnostic, Span};
 
-pub(crate) const BINARY: &str = "CL001";
-pub(crate) const PART_PROGRAM: &str = "CL002";
-pub(crate) const SYNTAX: &str = "CL003";
-pub(crate) const BAD_ARGS: &str = "CL004";
-pub(crate) const UNKNOWN_WORD: &str = "CL005";
-pub(crate) const MISSING_COMMA: &str = "CL006";
-pub(crate) const JOINED_LINE: &str = "CL007";
-pub(crate) const ORPHAN_NUMBERS: &str = "CL008";
-pub(crate) const IGNORED_WORD: &str = "CL009";
-pub(crate) const CIRCLE_WITHOUT_GOTO: &str = "CL010";
-pub(crate) const ARC_OFF_CIRCLE: &str = "CL011";
-pub(crate) const TILTED_ARC: &str = "CL012";
-pub(crate) const OPEN_CYCLE: &str = "CL013";
-pub(crate) const LATE_UNITS: &str = "CL014";
-pub(crate) const STRAY_END_OF_PATH: &str = "CL015";
-pub(crate) const AFTER_FINI: &str = "CL016";
-pub(crate) const NURBS: &str = "CL017";
-pub(crate) const EOF_CONTINUATION: &str = "CL018";
-pub(crate) const FEED_PER_REV: &str = "CL019";
-pub(crate) const LONG_LINE: &str = "CL020";
-pub(crate) const IO: &str = "CL021";
-pub(crate) const NO_INDIRV: &str = "CL022";
+pub(crate) const BINARY: &str = codes::CL001.code;
+pub(crate) const PART_PROGRAM: &str = codes::CL002.code;
+pub(crate) const SYNTAX: &str = codes::CL003.code;
+pub(crate) const BAD_ARGS: &str = codes::CL004.code;
+pub(crate) const UNKNOWN_WORD: &str = codes::CL005.code;
+pub(crate) const MISSING_COMMA: &str = codes::CL006.code;
+pub(crate) const JOINED_LINE: &str = codes::CL007.code;
+pub(crate) const ORPHAN_NUMBERS: &str = codes::CL008.code;
+pub(crate) const IGNORED_WORD: &str = codes::CL009.code;
+pub(crate) const CIRCLE_WITHOUT_GOTO: &str = codes::CL010.code;
+pub(crate) const ARC_OFF_CIRCLE: &str = codes::CL011.code;
+pub(crate) const TILTED_ARC: &str = codes::CL012.code;
+pub(crate) const OPEN_CYCLE: &str = codes::CL013.code;
+pub(crate) const LATE_UNITS: &str = codes::CL014.code;
+pub(crate) const STRAY_END_OF_PATH: &str = codes::CL015.code;
+pub(crate) const AFTER_FINI: &str = codes::CL016.code;
+pub(crate) const NURBS: &str = codes::CL017.code;
+pub(crate) const EOF_CONTINUATION: &str = codes::CL018.code;
+pub(crate) const FEED_PER_REV: &str = codes::CL019.code;
+pub(crate) const LONG_LINE: &str = codes::CL020.code;
+pub(crate) const IO: &str = codes::CL021.code;
+pub(crate) const NO_INDIRV: &str = codes::CL022.code;
 
 pub(crate) fn binary(span: Span, what: &str) -> Diagnostic {
     Diagnostic::error(BINARY, format!("this is a binary file ({what}), not a text CL file"))

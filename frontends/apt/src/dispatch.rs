@@ -3,13 +3,13 @@
 //! need no more than a parse and a state change.
 
 use postc_ir::diagnostic::{Diagnostic, Span};
-use postc_ir::event::{Command, Event, Text};
+use postc_ir::event::{Command, Event, FeedRate, Text};
 
 use crate::circle::unit;
 use crate::cycle::{CycleRecord, parse_cycle};
 use crate::diagnostics as diag;
 use crate::lexer::TextWord;
-use crate::machine::{self, SpindleRecord};
+use crate::machine_records::{self, SpindleRecord};
 use crate::state::{ActiveCycle, Core, Flow, text_event};
 use crate::words::{Arg, Major, Problem, Rec};
 
@@ -44,14 +44,15 @@ impl Core {
             }
             Major::Fedrat => {
                 let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "FEDRAT"));
-                machine::parse_fedrat(rec, &mut ignored).map(|feed| {
+                machine_records::parse_fedrat(rec, &mut ignored).map(|feed| {
                     self.note_units(feed.units, true);
                     self.feed = Some(feed);
+                    self.note(Event::FeedRate(FeedRate { value: feed.value, unit: feed.unit }), span);
                 })
             }
             Major::Spindl => {
                 let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "SPINDL"));
-                machine::parse_spindl(rec, &mut ignored).map(|s| match s {
+                machine_records::parse_spindl(rec, &mut ignored).map(|s| match s {
                     SpindleRecord::On(spindle) => {
                         if !spindle.css {
                             self.window_speed.get_or_insert(spindle.speed.unwrap_or(0.0));
@@ -65,11 +66,11 @@ impl Core {
             }
             Major::Coolnt => {
                 let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "COOLNT"));
-                machine::parse_coolnt(rec, &mut ignored).map(|c| self.emit(Event::Coolant(c), span))
+                machine_records::parse_coolnt(rec, &mut ignored).map(|c| self.emit(Event::Coolant(c), span))
             }
             Major::Cutcom => {
                 let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "CUTCOM"));
-                machine::parse_cutcom(rec, &mut ignored).map(|c| {
+                machine_records::parse_cutcom(rec, &mut ignored).map(|c| {
                     if let Some(c) = c {
                         self.emit(Event::CutterComp(c), span);
                     }
@@ -77,18 +78,18 @@ impl Core {
             }
             Major::Delay => {
                 let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "DELAY"));
-                machine::parse_delay(rec, &mut ignored).map(|d| self.emit(Event::Dwell(d), span))
+                machine_records::parse_delay(rec, &mut ignored).map(|d| self.emit(Event::Dwell(d), span))
             }
             Major::Cycle => self.cycle_record(rec, diags),
             Major::Loadtl => self.tool_load(rec, 0, diags),
             Major::Load if rec.arg(0).is_some_and(|a| a.is("TOOL")) => self.tool_load(rec, 1, diags),
             Major::Cutter | Major::Tldata => {
-                if let Some(d) = machine::cutter_diameter(rec) {
+                if let Some(d) = machine_records::cutter_diameter(rec) {
                     self.set_cutter(d, span);
                 }
                 Ok(())
             }
-            Major::Units => machine::parse_units(rec).map(|u| self.units_record(u, span, diags)),
+            Major::Units => machine_records::parse_units(rec).map(|u| self.units_record(u, span, diags)),
             Major::ToolPath => {
                 let name = rec.arg(0).map(|_| rec.arg_text(0)).unwrap_or_default();
                 let tool =

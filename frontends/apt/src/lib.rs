@@ -21,7 +21,7 @@
 //! | record | event |
 //! |---|---|
 //! | (start) | `Job`: units from `UNITS`/`UNIT` or the first feed unit, part from `PARTNO`, home from `FROM`, product from Creo's `$$*` line |
-//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`) |
+//! | `LOADTL/t[,h[,d]]`, `LOAD/TOOL,t[,ADJUST,h]` | `Tool` (diameter from `CUTTER`/`TLDATA`/`$$-> CUTTER`, name from `TOOL PATH/..,TOOL,name`, speed from the next `SPINDL`; `load` keeps the offset registers as written) |
 //! | `CUTTER`, `TLDATA` (without a load) | `Tool` when the cutter changes |
 //! | `TOOL PATH/name`, `OPFEATSTART/name` | `ToolpathStart` |
 //! | `END-OF-PATH`, `OPFEATEND` | `ToolpathEnd` |
@@ -33,9 +33,9 @@
 //! | `GOHOME/x,y,z` | `Rapid`; bare `GOHOME` is a `Command` |
 //! | `FROM/x,y,z` | sets the position; `Command` |
 //! | `RAPID` | the next move only is rapid |
-//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR) |
+//! | `FEDRAT/f[,unit]`, `FEDRAT/unit,f` | the feed of the following moves (MMPM, IPM, MMPR, IPR), and a `FeedRate` event with the value and unit as written (posts never see it; `postp` reads it) |
 //! | `SPINDL/...` | `SpindleOn` / `SpindleOff` |
-//! | `COOLNT/...` | `Coolant` |
+//! | `COOLNT/...` | `Coolant`, with its placement when `NOW` or `NEXT` is written |
 //! | `CUTCOM/LEFT\|RIGHT\|OFF[,n]` | `CutterComp` (`CUTCOM/ON` alone: none) |
 //! | `CYCLE/kind,...` + `GOTO`s + `CYCLE/OFF` | `DrillCycle`, `DrillPoint`s, `DrillEnd` |
 //! | `DELAY`, `DWELL` | `Dwell` |
@@ -65,30 +65,8 @@
 //!
 //! ## Diagnostic codes
 //!
-//! | code | severity | meaning |
-//! |---|---|---|
-//! | CL001 | error | binary file (APT360 CLFILE, UTF-16, ...), not CL text; nothing is read |
-//! | CL002 | error | APT part program (source), not CL data; reading stops |
-//! | CL003 | error | syntax error in a record; the record is skipped |
-//! | CL004 | error | a known record with wrong arguments; the record is skipped |
-//! | CL005 | warning | unknown major word; the record is skipped |
-//! | CL006 | warning | two values without a comma between them |
-//! | CL007 | warning | a line of numbers joined to the record above without `$` |
-//! | CL008 | error | a line of numbers that continues no record |
-//! | CL009 | warning | a word not understood inside a known record, ignored |
-//! | CL010 | warning | CIRCLE not followed by its GOTO; dropped |
-//! | CL011 | warning | arc end point not on the circle |
-//! | CL012 | warning | arc in a tilted plane, cut into feed moves |
-//! | CL013 | warning | drilling cycle not ended by CYCLE/OFF |
-//! | CL014 | warning | UNITS after the first move, ignored |
-//! | CL015 | warning | END-OF-PATH without TOOL PATH |
-//! | CL016 | warning | records after FINI, ignored |
-//! | CL017 | warning | NURBS spline motion not followed |
-//! | CL018 | warning | file ends after a `$` |
-//! | CL019 | warning | feed per revolution with no spindle speed known |
-//! | CL020 | error | line longer than 1 MiB, skipped |
-//! | CL021 | error | the file cannot be read |
-//! | CL022 | warning | TLON,GOFWD arc without INDIRV |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
 mod circle;
 mod cycle;
@@ -98,7 +76,7 @@ mod dispatch;
 mod grammar;
 mod lexer;
 mod lines;
-mod machine;
+mod machine_records;
 mod motion;
 mod number;
 mod reader;
@@ -106,19 +84,23 @@ mod state;
 mod window;
 mod words;
 
-use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
 
 use postc_ir::diagnostic::{Diagnostic, SourceMap};
 use postc_ir::event::EventSource;
+use postc_ir::source::SourceReader;
 
 pub use detect::{Content, sniff};
 pub use reader::AptReader;
 
-/// Opens a CL file for streaming; spans point into it through `sources`.
-pub fn open(path: &Path, sources: &mut SourceMap) -> Result<AptReader<BufReader<File>>, Diagnostic> {
-    let file = File::open(path).map_err(|e| {
+/// A CL file streamed through the source map's loader.
+pub type FileReader = AptReader<BufReader<SourceReader>>;
+
+/// Opens a CL file for streaming (through the source map's loader); spans
+/// point into it through `sources`.
+pub fn open(path: &Path, sources: &mut SourceMap) -> Result<FileReader, Diagnostic> {
+    let file = sources.loader().open(path).map_err(|e| {
         Diagnostic::error(diagnostics::IO, format!("cannot open the CL file {}: {e}", path.display()))
             .help("check the path and that the file can be read")
     })?;

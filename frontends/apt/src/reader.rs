@@ -45,7 +45,7 @@ enum Phase {
 /// while let Some((event, _span)) = reader.next_event(&mut diagnostics) {
 ///     names.push(event.name());
 /// }
-/// assert_eq!(names, ["Job", "Tool", "ToolpathStart", "Rapid", "Feed", "ToolpathEnd", "End"]);
+/// assert_eq!(names, ["Job", "Tool", "ToolpathStart", "Rapid", "FeedRate", "Feed", "ToolpathEnd", "End"]);
 /// assert!(diagnostics.is_empty());
 /// ```
 pub struct AptReader<R: BufRead> {

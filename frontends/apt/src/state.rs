@@ -13,7 +13,7 @@ use postc_ir::units::Units;
 use crate::circle::{CircleSpec, V3};
 use crate::cycle::CycleSpec;
 use crate::diagnostics as diag;
-use crate::machine::{self, FeedSpec, ToolLoad};
+use crate::machine_records::{self, FeedSpec, ToolLoad};
 use crate::window::{LIMIT, Window};
 use crate::words::{Problem, Rec};
 
@@ -131,13 +131,22 @@ impl Core {
             job.span.get_or_insert(span);
         }
         self.window.push(event, span);
-        if self.window.len() >= LIMIT {
+        if self.window.len() - self.window.notes >= LIMIT {
             self.flush();
         }
     }
 
     /// Emits a move (or a drill cycle event), opening a toolpath if none is
     /// open, and flushes the window when the header is settled.
+    /// Holds an event that records what the file said without changing
+    /// what the others mean (`FeedRate`): it neither dates the `Job` nor
+    /// counts toward a forced flush, so every other event comes out as it
+    /// would without it.
+    pub fn note(&mut self, event: Event, span: Span) {
+        self.window.push(event, span);
+        self.window.notes += 1;
+    }
+
     pub fn emit_motion(&mut self, event: Event, span: Span) {
         if self.toolpath == Toolpath::None {
             self.toolpath = Toolpath::Synthesized;
@@ -194,6 +203,12 @@ impl Core {
             spindle_speed: speed,
             length_offset: load.length_offset.filter(|&h| h != load.number),
             diameter_offset: load.diameter_offset.filter(|&d| d != load.number),
+            load: forced.then(|| {
+                Box::new(postc_ir::event::ToolLoad {
+                    length_offset: load.length_offset,
+                    diameter_offset: load.diameter_offset,
+                })
+            }),
             ..Tool::default()
         };
         let same = self
@@ -252,7 +267,7 @@ impl Core {
     pub(crate) fn tool_load(&mut self, rec: &Rec<'_>, skip: usize, diags: &mut Vec<Diagnostic>) -> Result<(), Problem> {
         let span = rec.span();
         let mut ignored = |i| diags.push(diag::ignored_word(rec.arg_span(i), &rec.arg_text(i), "tool load"));
-        let load = machine::parse_tool_load(rec, skip, &mut ignored)?;
+        let load = machine_records::parse_tool_load(rec, skip, &mut ignored)?;
         self.end_synthesized_toolpath(span);
         if self.pending_tool.is_some() {
             self.place_tool();
@@ -267,7 +282,7 @@ impl Core {
     /// A `$$->` comment that Creo writes for a record it did not output:
     /// the cutter diameter is taken from `CUTTER`.
     pub fn echoed_cutter(&mut self, rec: &Rec<'_>) {
-        if let Some(d) = machine::cutter_diameter(rec) {
+        if let Some(d) = machine_records::cutter_diameter(rec) {
             self.set_cutter(d, rec.span());
         }
     }

@@ -31,6 +31,9 @@ pub(crate) struct Window {
     pub events: Vec<(Event, Span)>,
     /// Index of a move before which a synthesized `ToolpathStart` goes.
     pub synth_before: Option<usize>,
+    /// Held events that only record what the file said (`FeedRate`); they
+    /// do not count toward [`LIMIT`].
+    pub notes: usize,
 }
 
 fn is_motion(event: &Event) -> bool {
@@ -95,5 +98,6 @@ impl Window {
     pub fn drain_into(&mut self, out: &mut VecDeque<(Event, Span)>) {
         out.extend(self.events.drain(..));
         self.synth_before = None;
+        self.notes = 0;
     }
 }

@@ -6,6 +6,7 @@
 
 mod common;
 
+use postc_report::Render as _;
 use std::path::Path;
 
 /// Counts from a plain scan of the records: linear moves, arcs, holes.
@@ -131,7 +132,7 @@ fn every_corpus_file_is_recognised_by_content() {
 fn check_and_open_read_files_from_disk() {
     let files = common::corpus_files();
     for path in files.iter().filter(|p| p.ends_with("bohren_1.ncl.8") || p.ends_with("cl.tap")) {
-        let mut sources = postc_ir::SourceMap::new();
+        let mut sources = postc_report::source_map();
         let diagnostics = postc_front_apt::check(path, &mut sources);
         let errors = diagnostics.iter().filter(|d| d.is_error()).count();
         let expected = usize::from(path.ends_with("cl.tap"));
@@ -141,7 +142,7 @@ fn check_and_open_read_files_from_disk() {
             assert!(rendered.contains("CL001") && rendered.contains("cl.tap"), "{rendered}");
         }
     }
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let missing = postc_front_apt::check(Path::new("/nonexistent/part.cl"), &mut sources);
     assert_eq!(missing.len(), 1);
     assert_eq!(missing[0].code, "CL021");

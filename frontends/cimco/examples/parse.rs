@@ -2,7 +2,7 @@
 //! `cargo run -p postc-front-cimco --example parse -- post.js [--js]`
 //! (`--js` prints the tree back as JavaScript instead of the dump).
 
-use postc_ir::SourceMap;
+use postc_report::Render as _;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -17,7 +17,7 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add(path.clone(), text.clone());
     let (program, diagnostics) = postc_front_cimco::parse(&text, file);
     if args.iter().any(|a| a == "--js") {

@@ -1,78 +1,29 @@
 //! The diagnostics of the CIMCO JavaScript frontend: their codes, their
 //! wording, and the JavaScript constructs postc does not accept.
 //!
-//! | code  | meaning |
-//! |-------|---------|
-//! | JS001 | a character that JavaScript does not allow here (`#`, `@`, a stray `\`) |
-//! | JS002 | text in quotes (or a template literal) is not closed before the end of the line |
-//! | JS003 | a bad escape sequence in text (`\x4`, `\u12`, octal `\12`) |
-//! | JS004 | a `/* ... */` comment is not closed |
-//! | JS005 | a malformed number (`0x`, `1e`, `3mm`) |
-//! | JS006 | a regular expression is not closed before the end of the line |
-//! | JS007 | syntax error: a token where it cannot be |
-//! | JS008 | two statements on one line without `;` between them |
-//! | JS009 | the file ends in the middle of a statement or expression |
-//! | JS010 | a `{`, `(` or `[` that is never closed |
-//! | JS011 | a `}`, `)` or `]` with nothing to close |
-//! | JS012 | an assignment or `++`/`--` to something that is not a variable or property |
-//! | JS013 | code nested too deeply to process |
-//! | JS014 | `return` outside a function |
-//! | JS015 | `break` or `continue` outside a loop (or `continue` in a `switch` only) |
-//! | JS016 | more than one `default` in a `switch` |
-//! | JS017 | `try` without `catch` or `finally` |
-//! | JS018 | `let` / `const` declarations |
-//! | JS019 | arrow functions (`=>`) |
-//! | JS020 | classes (`class`) |
-//! | JS021 | template literals (`` `...` ``) |
-//! | JS022 | getters and setters (`get x() {}`) |
-//! | JS023 | the `with` statement |
-//! | JS024 | labels (`outer:`, `break outer`) |
-//! | JS025 | the `delete` operator |
-//! | JS026 | the `in` operator (outside `for (var k in obj)`) |
-//! | JS027 | the `instanceof` operator |
-//! | JS028 | generator functions (`function*`) and `yield` |
-//! | JS029 | `async` functions and `await` |
-//! | JS030 | spread and rest syntax (`...`) |
-//! | JS031 | destructuring (`var {a, b} = obj`) |
-//! | JS032 | default parameter values (`function f(a = 1)`) |
-//! | JS033 | shorthand properties, methods and computed keys in object literals |
-//! | JS034 | `for ... of` loops |
-//! | JS035 | the exponent operator (`**`) |
-//! | JS036 | optional chaining (`?.`), `??`, and logical assignment (`&&=`, `||=`, `??=`) |
-//! | JS037 | modules (`import`, `export`) |
-//! | JS038 | the `void` operator |
-//! | JS039 | the `debugger` statement |
-//! | JS040 | regular expression flags other than `g`, `i`, `m` |
-//! | JS041 | number forms outside ES5: `0b101`, `0o17`, `10n`, legacy octal `010` |
-//! | JS042 | a comma after the last argument or parameter |
-//! | JS043 | empty slots in an array literal (`[1, , 2]`) |
-//! | JS100 | the post could not be turned into a script (a construct the Rhai translation lacks); report it |
-//! | JS101 | a property postc does not know in `createFormat`/`createVariable`/`globals`/`PostInfo`; it is ignored |
-//! | JS102 | a name the post never defines and postc's host does not provide |
-//! | JS103 | `decimalMark` is neither `.` nor `,` |
-//! | JS104 | a format asks for more than 15 decimals |
-//! | JS105 | the post has no `onLinear`, so moves print nothing |
-//! | JS106 | the post assigns to the name of a function |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, FileId, Span};
 
-pub const UNEXPECTED_CHARACTER: &str = "JS001";
-pub const UNTERMINATED_TEXT: &str = "JS002";
-pub const BAD_ESCAPE: &str = "JS003";
-pub const UNTERMINATED_COMMENT: &str = "JS004";
-pub const MALFORMED_NUMBER: &str = "JS005";
-pub const UNTERMINATED_REGEX: &str = "JS006";
-pub const SYNTAX_ERROR: &str = "JS007";
-pub const MISSING_SEMICOLON: &str = "JS008";
-pub const UNEXPECTED_END: &str = "JS009";
-pub const UNCLOSED: &str = "JS010";
-pub const UNMATCHED_CLOSER: &str = "JS011";
-pub const INVALID_ASSIGNMENT: &str = "JS012";
-pub const TOO_DEEP: &str = "JS013";
-pub const RETURN_OUTSIDE_FUNCTION: &str = "JS014";
-pub const JUMP_OUTSIDE_LOOP: &str = "JS015";
-pub const DUPLICATE_DEFAULT: &str = "JS016";
-pub const TRY_WITHOUT_HANDLER: &str = "JS017";
+pub const UNEXPECTED_CHARACTER: &str = codes::JS001.code;
+pub const UNTERMINATED_TEXT: &str = codes::JS002.code;
+pub const BAD_ESCAPE: &str = codes::JS003.code;
+pub const UNTERMINATED_COMMENT: &str = codes::JS004.code;
+pub const MALFORMED_NUMBER: &str = codes::JS005.code;
+pub const UNTERMINATED_REGEX: &str = codes::JS006.code;
+pub const SYNTAX_ERROR: &str = codes::JS007.code;
+pub const MISSING_SEMICOLON: &str = codes::JS008.code;
+pub const UNEXPECTED_END: &str = codes::JS009.code;
+pub const UNCLOSED: &str = codes::JS010.code;
+pub const UNMATCHED_CLOSER: &str = codes::JS011.code;
+pub const INVALID_ASSIGNMENT: &str = codes::JS012.code;
+pub const TOO_DEEP: &str = codes::JS013.code;
+pub const RETURN_OUTSIDE_FUNCTION: &str = codes::JS014.code;
+pub const JUMP_OUTSIDE_LOOP: &str = codes::JS015.code;
+pub const DUPLICATE_DEFAULT: &str = codes::JS016.code;
+pub const TRY_WITHOUT_HANDLER: &str = codes::JS017.code;
 
 /// The JavaScript that is not part of the subset CNC-Calc posts use. Each
 /// has its own code, names itself, and says what to write instead.
@@ -118,32 +69,32 @@ impl Construct {
     pub fn code(self) -> &'static str {
         use Construct::*;
         match self {
-            Let | Const => "JS018",
-            Arrow => "JS019",
-            Class => "JS020",
-            Template => "JS021",
-            GetterSetter => "JS022",
-            With => "JS023",
-            Label => "JS024",
-            Delete => "JS025",
-            In => "JS026",
-            Instanceof => "JS027",
-            Generator => "JS028",
-            Async => "JS029",
-            Spread => "JS030",
-            Destructuring => "JS031",
-            DefaultParam => "JS032",
-            Shorthand | Method | ComputedKey => "JS033",
-            ForOf => "JS034",
-            Exponent => "JS035",
-            OptionalChaining | Nullish | LogicalAssign => "JS036",
-            Module => "JS037",
-            Void => "JS038",
-            Debugger => "JS039",
-            RegexFlag => "JS040",
-            BinaryOctal | BigInt | LegacyOctal => "JS041",
-            TrailingComma => "JS042",
-            ArrayHole => "JS043",
+            Let | Const => codes::JS018.code,
+            Arrow => codes::JS019.code,
+            Class => codes::JS020.code,
+            Template => codes::JS021.code,
+            GetterSetter => codes::JS022.code,
+            With => codes::JS023.code,
+            Label => codes::JS024.code,
+            Delete => codes::JS025.code,
+            In => codes::JS026.code,
+            Instanceof => codes::JS027.code,
+            Generator => codes::JS028.code,
+            Async => codes::JS029.code,
+            Spread => codes::JS030.code,
+            Destructuring => codes::JS031.code,
+            DefaultParam => codes::JS032.code,
+            Shorthand | Method | ComputedKey => codes::JS033.code,
+            ForOf => codes::JS034.code,
+            Exponent => codes::JS035.code,
+            OptionalChaining | Nullish | LogicalAssign => codes::JS036.code,
+            Module => codes::JS037.code,
+            Void => codes::JS038.code,
+            Debugger => codes::JS039.code,
+            RegexFlag => codes::JS040.code,
+            BinaryOctal | BigInt | LegacyOctal => codes::JS041.code,
+            TrailingComma => codes::JS042.code,
+            ArrayHole => codes::JS043.code,
         }
     }
 

@@ -32,6 +32,7 @@
 pub mod ast;
 pub mod diagnostics;
 pub mod dump;
+pub mod host_names;
 pub mod lexer;
 mod lower;
 mod parser;
@@ -44,8 +45,8 @@ pub mod validate;
 use postc_ir::{Diagnostic, FileId, Span};
 
 pub use ast::Program;
+pub use lower::builtins;
 pub use lower::compile;
-pub use lower::host;
 pub use parser::MAX_NESTING;
 pub use sniff::looks_like_cimco;
 

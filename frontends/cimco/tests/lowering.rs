@@ -4,10 +4,10 @@
 
 use std::path::Path;
 
-use postc_ir::{Body, HandlerKey, Modality, PointStyle, Post, Section, SignStyle, SourceMap};
+use postc_ir::{Body, HandlerKey, Modality, PointStyle, Post, Section, SignStyle};
 
 fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     postc_front_cimco::compile(Path::new("t.js"), js.as_bytes(), &mut sources)
 }
 

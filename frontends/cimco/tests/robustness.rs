@@ -3,10 +3,11 @@
 //! valid fixtures (proptest) parse to some tree with diagnostics whose
 //! spans lie inside the text and render.
 
+use postc_report::Render as _;
 use std::time::{Duration, Instant};
 
 use postc_front_cimco::{dump::dump, parse, print::to_js};
-use postc_ir::{FileId, SourceMap};
+use postc_ir::FileId;
 use proptest::prelude::*;
 
 /// Parses on a thread with half the default stack of a Rust thread, so
@@ -152,7 +153,7 @@ proptest! {
             prop_assert!(span.start <= span.end && span.end <= text.len(), "{} out of range: {:?}", d.code, span);
             prop_assert!(text.is_char_boundary(span.start) && text.is_char_boundary(span.end));
         }
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         sources.add("mutated.js", text.clone());
         let _ = sources.render(&diagnostics, false);
         let _ = dump(&program, &text);

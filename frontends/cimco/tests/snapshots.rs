@@ -9,11 +9,11 @@
 //! report at least one error, and every code named on their first line
 //! (`// expect: JS019 JS007`) must be among the codes reported.
 
+use postc_report::Render as _;
 use std::fs;
 use std::path::Path;
 
 use postc_front_cimco::{dump::dump, parse};
-use postc_ir::SourceMap;
 
 fn name_of(path: &Path) -> String {
     path.file_stem().expect("file name").to_string_lossy().into_owned()
@@ -23,7 +23,7 @@ fn name_of(path: &Path) -> String {
 fn snapshot(kind: &str, path: &Path) -> (String, Vec<String>) {
     let bytes = fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let text = String::from_utf8_lossy(&bytes).into_owned();
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add(format!("{kind}/{}.js", name_of(path)), text.clone());
     let (program, diagnostics) = parse(&text, file);
     let codes = diagnostics.iter().map(|d| d.code.to_string()).collect();

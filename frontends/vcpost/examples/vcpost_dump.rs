@@ -2,6 +2,7 @@
 //! (with `--ir`) the lowered IR as RON:
 //! `cargo run -p postc-front-vcpost --example vcpost_dump -- FILE [--ir]`.
 
+use postc_report::Render as _;
 use std::path::Path;
 
 fn main() {
@@ -17,7 +18,7 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let mut sources = postc_ir::SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = postc_front_vcpost::compile(Path::new(path), &bytes, &mut sources);
     print!("{}", sources.render(&diagnostics, false));
     for sub in &post.info.subs {

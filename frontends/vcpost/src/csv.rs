@@ -22,10 +22,11 @@
 //! Every position is a byte offset in the table file, so diagnostics point
 //! at the cell.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, FileId, Span};
 
 /// Code of a row that does not split into fields.
-pub const BAD_QUOTE: &str = "PT001";
+pub const BAD_QUOTE: &str = codes::PT001.code;
 
 /// One field of a row.
 #[derive(Clone, Debug, PartialEq)]

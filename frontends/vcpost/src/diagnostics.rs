@@ -1,86 +1,50 @@
 //! The diagnostic codes of the VcPost frontend, and the helpers that build
 //! the diagnostics shared by several passes.
 //!
-//! | code  | severity | what it means |
-//! |-------|----------|---------------|
-//! | VC001 | error    | a line VcPost cannot read (unexpected word or symbol) |
-//! | VC002 | error    | a string has no closing quote |
-//! | VC003 | error    | a character that means nothing in VcPost (or a bad `[name]`) |
-//! | VC004 | error    | a line too long, parentheses, blocks or expressions nested too deeply, too many variables, or more than 500 problems in one file |
-//! | VC005 | error    | a `Sub` or `Function` has no `End Sub` / `End Function` |
-//! | VC006 | error    | an `If` block has no `End If` |
-//! | VC007 | error    | a `For` has no `Next` |
-//! | VC008 | error    | a `While` has no `Wend`, or a `Do` has no `Loop` |
-//! | VC009 | error    | a `Select Case` has no `End Select` |
-//! | VC010 | error    | a closing line without its opening (`End If` without `If`, `Next` without `For`, ...) |
-//! | VC011 | error    | a block part in the wrong place (`Else` twice, `Case` after `Case Else`, code before the first `Case`, `Next J` closing `For I`, a `Sub` inside a block) |
-//! | VC012 | error    | two different `#` keywords in one Sub |
-//! | VC013 | error    | more than 16 parameters in one Sub |
-//! | VC014 | error    | a reserved name (keyword, built-in function, type name, `N`) used as a parameter |
-//! | VC015 | error    | a parameter name that is not a valid name |
-//! | VC016 | warning  | a keyword comment outside any Sub (it is ignored) |
-//! | VC017 | warning  | an unknown `#` keyword in a comment |
-//! | VC018 | error    | a keyword that only one Sub may carry (`#Init #End #Rapid #Move #Approach #Retract #Save`) on several |
-//! | VC019 | warning  | a parameter listed twice in one Sub |
-//! | VC020 | error    | an unknown register property |
-//! | VC021 | error    | a register property set to a value it cannot take |
-//! | VC022 | error    | a register property set inside a Sub |
-//! | VC023 | error    | an unknown function |
-//! | VC024 | error    | a function or Sub called with the wrong number of arguments |
-//! | VC025 | error    | a call of a Sub that does not exist |
-//! | VC026 | error    | a Sub or Function defined twice, or named like a built-in function |
-//! | VC027 | error    | an assignment to something that is not a variable (a Sub, a built-in, a `Const`, `N`) |
-//! | VC028 | error    | `Exit For`/`Exit Do`/`Exit Sub`/`Exit Function` outside its block, or out of another kind of loop |
-//! | VC029 | error    | a property other than `.Previous` read in an expression, or `.Previous` of a local |
-//! | VC030 | warning  | a variable read but never set anywhere, and not one the runtime sets |
-//! | VC031 | error    | a Sub called for an APT word or a composites event that takes parameters |
-//! | VC032 | error    | a BASIC feature postc does not support (arrays, `Exp`, an unknown `As` type, ...) |
-//! | VC033 | warning  | `<Name>` in an `Out` string names a keyword; it prints as text |
-//! | VC034 | warning  | a name declared twice, or a local hiding a register |
-//! | VC035 | warning  | a `ByRef` parameter: postc passes every argument by value |
-//! | VC036 | error    | a Sub used as a value, or a variable called like a Sub |
-//! | VC037 | warning  | an `Option ...` line (`Option Explicit`): ignored |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Span};
 
-pub const SYNTAX: &str = "VC001";
-pub const UNTERMINATED_STRING: &str = "VC002";
-pub const BAD_CHAR: &str = "VC003";
-pub const TOO_COMPLEX: &str = "VC004";
-pub const MISSING_END_SUB: &str = "VC005";
-pub const MISSING_END_IF: &str = "VC006";
-pub const MISSING_NEXT: &str = "VC007";
-pub const MISSING_LOOP_END: &str = "VC008";
-pub const MISSING_END_SELECT: &str = "VC009";
-pub const STRAY_CLOSER: &str = "VC010";
-pub const MISPLACED: &str = "VC011";
-pub const TWO_KEYWORDS: &str = "VC012";
-pub const TOO_MANY_PARAMS: &str = "VC013";
-pub const RESERVED_PARAM: &str = "VC014";
-pub const BAD_PARAM_NAME: &str = "VC015";
-pub const KEYWORD_OUTSIDE_SUB: &str = "VC016";
-pub const UNKNOWN_KEYWORD: &str = "VC017";
-pub const DUPLICATE_KEYWORD_SUB: &str = "VC018";
-pub const DUPLICATE_PARAM: &str = "VC019";
-pub const UNKNOWN_PROPERTY: &str = "VC020";
-pub const BAD_PROPERTY_VALUE: &str = "VC021";
-pub const PROPERTY_IN_SUB: &str = "VC022";
-pub const UNKNOWN_FUNCTION: &str = "VC023";
-pub const ARGUMENT_COUNT: &str = "VC024";
-pub const UNKNOWN_SUB: &str = "VC025";
-pub const DUPLICATE_SUB: &str = "VC026";
-pub const NOT_ASSIGNABLE: &str = "VC027";
-pub const MISPLACED_EXIT: &str = "VC028";
-pub const BAD_PROPERTY_READ: &str = "VC029";
-pub const NEVER_SET: &str = "VC030";
-pub const HANDLER_WITH_PARAMS: &str = "VC031";
-pub const UNSUPPORTED: &str = "VC032";
-pub const KEYWORD_IN_TEMPLATE: &str = "VC033";
-pub const DECLARED_TWICE: &str = "VC034";
-pub const BYREF: &str = "VC035";
-pub const NOT_A_VALUE: &str = "VC036";
-pub const OPTION_IGNORED: &str = "VC037";
-pub const UNCLOSED_REGISTER: &str = "VC038";
+pub const SYNTAX: &str = codes::VC001.code;
+pub const UNTERMINATED_STRING: &str = codes::VC002.code;
+pub const BAD_CHAR: &str = codes::VC003.code;
+pub const TOO_COMPLEX: &str = codes::VC004.code;
+pub const MISSING_END_SUB: &str = codes::VC005.code;
+pub const MISSING_END_IF: &str = codes::VC006.code;
+pub const MISSING_NEXT: &str = codes::VC007.code;
+pub const MISSING_LOOP_END: &str = codes::VC008.code;
+pub const MISSING_END_SELECT: &str = codes::VC009.code;
+pub const STRAY_CLOSER: &str = codes::VC010.code;
+pub const MISPLACED: &str = codes::VC011.code;
+pub const TWO_KEYWORDS: &str = codes::VC012.code;
+pub const TOO_MANY_PARAMS: &str = codes::VC013.code;
+pub const RESERVED_PARAM: &str = codes::VC014.code;
+pub const BAD_PARAM_NAME: &str = codes::VC015.code;
+pub const KEYWORD_OUTSIDE_SUB: &str = codes::VC016.code;
+pub const UNKNOWN_KEYWORD: &str = codes::VC017.code;
+pub const DUPLICATE_KEYWORD_SUB: &str = codes::VC018.code;
+pub const DUPLICATE_PARAM: &str = codes::VC019.code;
+pub const UNKNOWN_PROPERTY: &str = codes::VC020.code;
+pub const BAD_PROPERTY_VALUE: &str = codes::VC021.code;
+pub const PROPERTY_IN_SUB: &str = codes::VC022.code;
+pub const UNKNOWN_FUNCTION: &str = codes::VC023.code;
+pub const ARGUMENT_COUNT: &str = codes::VC024.code;
+pub const UNKNOWN_SUB: &str = codes::VC025.code;
+pub const DUPLICATE_SUB: &str = codes::VC026.code;
+pub const NOT_ASSIGNABLE: &str = codes::VC027.code;
+pub const MISPLACED_EXIT: &str = codes::VC028.code;
+pub const BAD_PROPERTY_READ: &str = codes::VC029.code;
+pub const NEVER_SET: &str = codes::VC030.code;
+pub const HANDLER_WITH_PARAMS: &str = codes::VC031.code;
+pub const UNSUPPORTED: &str = codes::VC032.code;
+pub const KEYWORD_IN_TEMPLATE: &str = codes::VC033.code;
+pub const DECLARED_TWICE: &str = codes::VC034.code;
+pub const BYREF: &str = codes::VC035.code;
+pub const NOT_A_VALUE: &str = codes::VC036.code;
+pub const OPTION_IGNORED: &str = codes::VC037.code;
+pub const UNCLOSED_REGISTER: &str = codes::VC038.code;
 
 /// Every code with its one-line meaning, in order (for documentation and
 /// for a test that the table above stays complete).

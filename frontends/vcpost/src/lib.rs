@@ -32,6 +32,7 @@
 pub mod ast;
 pub mod blocks;
 pub mod builtins;
+pub mod call_tables;
 pub mod composites;
 pub mod csv;
 pub mod diagnostics;

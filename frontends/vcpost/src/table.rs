@@ -26,25 +26,10 @@
 //! wherever its Sub is called: a feature without an Approach row is an
 //! error when the #Approach Sub has mandatory parameters.
 //!
-//! | code | severity | meaning |
-//! |---|---|---|
-//! | PT001 | error | a row that does not split into cells (a quote not closed, text after a closing quote) |
-//! | PT002 | error | a row names no Sub of the post |
-//! | PT003 | error | a row names a Sub that is not a probe-cycle Sub (no #Init ... #Save keyword) |
-//! | PT004 | error | a positional value after a named one |
-//! | PT005 | error | more values than the Sub has parameters |
-//! | PT006 | error | `NAME=` names no parameter of the Sub |
-//! | PT007 | error | a parameter given twice |
-//! | PT008 | error | a mandatory parameter without a value |
-//! | PT009 | error | a bare value that is not a number |
-//! | PT010 | error | an #Init row that is not the first row |
-//! | PT011 | error | an #End row that is not the last row |
-//! | PT012 | error | an #Approach row not followed by a #Cycle row |
-//! | PT013 | error | a #Save row not right after a #Cycle row |
-//! | PT014 | error | a #Retract row not after a #Cycle or #Save row |
-//! | PT015 | warning | a table without rows |
-//! | PT016 | error | `postc probe-table` on a post with no probe-cycle Subs (no keyword comments) |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
+use postc_ir::codes;
 use postc_ir::{CallValue, Diagnostic, FileId, MissingSub, Post, Span, SubCall};
 
 use crate::ast::SubKeyword;
@@ -110,7 +95,7 @@ pub fn read(text: &str, file: FileId, post: &Post) -> (Vec<SubCall>, Vec<Diagnos
     }
     if rows.is_empty() && !postc_ir::diagnostic::has_errors(&diagnostics) {
         diagnostics.push(
-            Diagnostic::warning("PT015", "this probe table has no rows")
+            Diagnostic::warning(codes::PT015, "this probe table has no rows")
                 .help("`postc probe-table POST` prints a template with one row per probe-cycle Sub"),
         );
     }
@@ -131,7 +116,7 @@ fn row(
     let listing = || sigs.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ");
     if !sigs.iter().any(|s| s.name.eq_ignore_ascii_case(name)) && subs.iter().any(|s| s.eq_ignore_ascii_case(name)) {
         diags.push(
-            Diagnostic::error("PT003", format!("`{name}` is not a probe-cycle Sub"))
+            Diagnostic::error(codes::PT003, format!("`{name}` is not a probe-cycle Sub"))
                 .at(
                     head.value_span,
                     "it has no #Init, #Rapid, #Move, #Approach, #Cycle, #Save, #Retract or #End comment",
@@ -141,7 +126,7 @@ fn row(
         return None;
     }
     let Some(index) = sigs.iter().position(|s| s.name.eq_ignore_ascii_case(name)) else {
-        let mut d = Diagnostic::error("PT002", format!("the post has no probe-cycle Sub `{name}`"))
+        let mut d = Diagnostic::error(codes::PT002, format!("the post has no probe-cycle Sub `{name}`"))
             .at(head.value_span, "the first cell names the Sub the row calls");
         d = match suggest(name, sigs.iter().map(|s| s.name.as_str())) {
             Some(s) => d.help(format!("did you mean `{s}`?")),
@@ -163,7 +148,7 @@ fn row(
                 if named_seen {
                     if !field.is_empty() {
                         diags.push(
-                            Diagnostic::error("PT004", "a value by position after a named one")
+                            Diagnostic::error(codes::PT004, "a value by position after a named one")
                                 .at(field.span, "which parameter is this?")
                                 .help("give values by position first, then as NAME=VALUE"),
                         );
@@ -177,7 +162,7 @@ fn row(
                     if !field.is_empty() {
                         diags.push(
                             Diagnostic::error(
-                                "PT005",
+                                codes::PT005,
                                 format!("`{}` has {} parameters; this is value {}", sig.name, params.len(), k + 1),
                             )
                             .at(field.span, "one value too many")
@@ -191,7 +176,7 @@ fn row(
             Some((name, name_span)) => {
                 named_seen = true;
                 let Some(k) = params.iter().position(|(p, _)| p.eq_ignore_ascii_case(name)) else {
-                    let mut d = Diagnostic::error("PT006", format!("`{}` has no parameter `{name}`", sig.name))
+                    let mut d = Diagnostic::error(codes::PT006, format!("`{}` has no parameter `{name}`", sig.name))
                         .at(*name_span, "unknown parameter");
                     d = match suggest(name, params.iter().map(|(p, _)| p.as_str())) {
                         Some(s) => d.help(format!("did you mean `{s}`?")),
@@ -202,7 +187,8 @@ fn row(
                 };
                 if row.given[k] {
                     diags.push(
-                        Diagnostic::error("PT007", format!("`{name}` is given twice")).at(field.span, "second value"),
+                        Diagnostic::error(codes::PT007, format!("`{name}` is given twice"))
+                            .at(field.span, "second value"),
                     );
                     continue;
                 }
@@ -242,7 +228,7 @@ fn value(field: &Field, param: &str) -> Result<Option<CallValue>, Diagnostic> {
     let numeric = v.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.'));
     match v.parse::<f64>() {
         Ok(n) if numeric && n.is_finite() => Ok(Some(CallValue::Number(n))),
-        _ => Err(Diagnostic::error("PT009", format!("`{v}` is not a number"))
+        _ => Err(Diagnostic::error(codes::PT009, format!("`{v}` is not a number"))
             .at(field.value_span, format!("value of `{param}`"))
             .help(format!(
                 "quote text values (\"{v}\"); leave the cell empty, or write `{param}`, to keep the register's value"
@@ -251,7 +237,7 @@ fn value(field: &Field, param: &str) -> Result<Option<CallValue>, Diagnostic> {
 }
 
 fn missing(sig: &SubSignature, param: &str, at: Span, label: &str) -> Diagnostic {
-    Diagnostic::error("PT008", format!("`{}` needs a value for its mandatory parameter `{param}`", sig.name))
+    Diagnostic::error(codes::PT008, format!("`{}` needs a value for its mandatory parameter `{param}`", sig.name))
         .at(at, label)
         .also(sig.span, format!("`!{param}` in its keyword comment makes it mandatory"))
 }
@@ -294,20 +280,24 @@ fn sequence(rows: &[Row], sigs: &[SubSignature], file: FileId, diags: &mut Vec<D
         let r = &rows[i];
         i += 1;
         match r.keyword {
-            SubKeyword::Init => diags.push(order("PT010", r, "an #Init row must be the first row")),
-            SubKeyword::End if i < rows.len() => diags.push(order("PT011", r, "the #End row must be the last row")),
+            SubKeyword::Init => diags.push(order(codes::PT010.code, r, "an #Init row must be the first row")),
+            SubKeyword::End if i < rows.len() => {
+                diags.push(order(codes::PT011.code, r, "the #End row must be the last row"))
+            }
             SubKeyword::End => {
                 ended = true;
                 calls.push(call(r.sig, r.vars.clone(), r.span));
             }
             SubKeyword::Rapid | SubKeyword::Move => calls.push(call(r.sig, r.vars.clone(), r.span)),
             SubKeyword::Approach if rows.get(i).is_none_or(|n| n.keyword != SubKeyword::Cycle) => {
-                diags.push(order("PT012", r, "an #Approach row must be followed by a #Cycle row"));
+                diags.push(order(codes::PT012.code, r, "an #Approach row must be followed by a #Cycle row"));
             }
             SubKeyword::Approach => {}
-            SubKeyword::Save => diags.push(order("PT013", r, "a #Save row must come right after a #Cycle row")),
+            SubKeyword::Save => {
+                diags.push(order(codes::PT013.code, r, "a #Save row must come right after a #Cycle row"))
+            }
             SubKeyword::Retract => {
-                diags.push(order("PT014", r, "a #Retract row must come after a #Cycle or #Save row"))
+                diags.push(order(codes::PT014.code, r, "a #Retract row must come after a #Cycle or #Save row"))
             }
             SubKeyword::Cycle => {
                 let approach_row = (i >= 2).then(|| &rows[i - 2]).filter(|p| p.keyword == SubKeyword::Approach);

@@ -2,13 +2,14 @@
 //! CP diagnostic at its line, the routines a post may leave out, and
 //! mutated files that never panic.
 
+use postc_report::Render as _;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use postc_front_vcpost::compile;
 use postc_front_vcpost::composites::calls::{LayingCall, LinkHeader, Modals, PacketPoint, ProbingCall};
 use postc_front_vcpost::composites::{self, CompositesReader, Syntax};
-use postc_ir::{CallSource, CallValue, Diagnostic, FileId, Post, SourceMap, SubCall};
+use postc_ir::{CallSource, CallValue, Diagnostic, FileId, Post, SubCall};
 use proptest::prelude::*;
 
 fn corpus() -> PathBuf {
@@ -16,7 +17,7 @@ fn corpus() -> PathBuf {
 }
 
 fn post_from(text: &str) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     assert!(diagnostics.iter().all(|d| !d.is_error()), "{}", sources.render(&diagnostics, false));
     post
@@ -104,9 +105,9 @@ fn corpus_files_read_cleanly() {
         ("afp_probe__wing_check.vcp.ron", "afp_probe"),
     ] {
         let path = corpus().join("composites").join(file);
-        assert!(composites::is_composites_file(&path), "{file}");
+        assert!(composites::is_composites_file(&path, &postc_report::FsLoader), "{file}");
         let post = corpus_post(post);
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (calls, diagnostics) = drain(composites::open(&path, &mut sources, &post, Vec::new()).unwrap());
         assert!(diagnostics.is_empty(), "{file}: {}", sources.render(&diagnostics, false));
         assert!(calls.len() > 15, "{file}");
@@ -199,7 +200,7 @@ fn recognised_by_name_or_header() {
     assert!(composites::looks_like_composites(b"// c\nVcpFile(kind: Laying)\n"));
     assert!(composites::looks_like_composites(b"{\"VcpFile\": {\"kind\": \"Probing\"}}\n"));
     assert!(!composites::looks_like_composites(b"Job(units: Mm)\n"));
-    assert!(composites::is_composites_file(Path::new("/nonexistent/ply.VCP.JSONL")));
+    assert!(composites::is_composites_file(Path::new("/nonexistent/ply.VCP.JSONL"), &postc_report::FsLoader));
 }
 
 proptest! {

@@ -1,11 +1,12 @@
 //! Lowering: small posts and the exact IR they become.
 
+use postc_report::Render as _;
 use std::path::Path;
 
 use postc_front_vcpost::{compile, looks_like_vcpost, signatures};
 use postc_ir::{
-    BinaryOp, Body, Builtin, Dialect, Dispatch, Expr, HandlerKey, Modality, Piece, Place, Post, Quantity, SourceMap,
-    Stmt, UnaryOp, ValueSource,
+    BinaryOp, Body, Builtin, Dialect, Dispatch, Expr, HandlerKey, Modality, Piece, Place, Post, Quantity, Stmt,
+    UnaryOp, ValueSource,
 };
 use postc_ir::{FunctionId, GlobalId, LocalId, VarId};
 
@@ -18,7 +19,7 @@ fn post(text: &str) -> Post {
 }
 
 fn post_with_spans(text: &str) -> Post {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     assert!(diagnostics.is_empty(), "{}", sources.render(&diagnostics, false));
     post
@@ -304,7 +305,7 @@ fn sniffing() {
 #[test]
 fn an_unclosed_register_in_out_is_an_error_at_its_place() {
     let text = "Sub ToolChange\n  Out \"<N> T1\"\nEnd Sub\n\nSub Linear\n  Out \"<N> G1 \"\"A\"\" <X<Y>\"\n  Out \"<N> G1<FeedRate\"\n  Out \"(X<0) a < b (DIST<MAX)\"\nEnd Sub\n";
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (_, diagnostics) = compile(Path::new("t.VcPost"), text.as_bytes(), &mut sources);
     let found: Vec<_> = diagnostics
         .iter()

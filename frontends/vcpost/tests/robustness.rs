@@ -3,11 +3,11 @@
 //! very long lines, huge files of one construct) are refused with a
 //! diagnostic, not a stack overflow.
 
+use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use postc_front_vcpost::compile;
-use postc_ir::SourceMap;
 use proptest::prelude::*;
 
 fn fixture_texts() -> Vec<String> {
@@ -26,7 +26,7 @@ fn fixture_texts() -> Vec<String> {
 /// diagnostics render.
 fn compile_checked(bytes: &[u8]) -> Duration {
     let started = Instant::now();
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(Path::new("fuzz.VcPost"), bytes, &mut sources);
     let elapsed = started.elapsed();
     let len = sources.text(postc_ir::FileId(0)).map_or(0, str::len);
@@ -224,7 +224,7 @@ fn pathological_inputs_are_refused_not_overflowed() {
 #[test]
 fn windows_1252_text_is_read_and_written_back() {
     let bytes = b"Sub PPRINT\r\n  Out \"(L\xE4nge 90\xB0)\"\r\nEnd Sub\r\n";
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(Path::new("legacy.VcPost"), bytes, &mut sources);
     assert!(diagnostics.is_empty(), "{diagnostics:?}");
     let postc_ir::Body::Native(body) = &post.functions[0].body else { panic!() };

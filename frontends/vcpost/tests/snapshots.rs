@@ -9,11 +9,12 @@
 //! named after the code they show (`vc006_missing_end_if.VcPost`) and must
 //! give at least one diagnostic with that code.
 
+use postc_report::Render as _;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use postc_front_vcpost::{compile, parse, signatures, signatures::from_post};
-use postc_ir::{Severity, SourceMap};
+use postc_ir::Severity;
 
 fn crate_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -27,7 +28,7 @@ struct Outcome {
 fn run(path: &Path) -> Outcome {
     let bytes = std::fs::read(path).unwrap();
     let relative = path.strip_prefix(crate_dir()).unwrap_or(path).to_path_buf();
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(&relative, &bytes, &mut sources);
 
     let text = String::from_utf8_lossy(&bytes).into_owned();

@@ -4,6 +4,7 @@
 
 use postc_front_vcpost::{compile, table};
 use postc_ir::{CallValue, Diagnostic, FileId, Post, SourceMap, SubCall};
+use postc_report::Render as _;
 use proptest::prelude::*;
 
 const POST: &str = r#"
@@ -45,7 +46,7 @@ End Sub
 "#;
 
 fn post() -> (Post, SourceMap) {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = compile(std::path::Path::new("probe.VcPost"), POST.as_bytes(), &mut sources);
     assert!(diagnostics.is_empty(), "{}", sources.render(&diagnostics, false));
     (post, sources)
@@ -150,7 +151,7 @@ fn the_template_reads_back_with_only_its_mandatory_cells_missing() {
     let (_, diagnostics, _) = read(&template);
     assert!(!diagnostics.is_empty());
     assert!(diagnostics.iter().all(|d| d.code == "PT008"), "{diagnostics:?}");
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (milling, _) = compile(std::path::Path::new("m.VcPost"), b"Sub GOTO\n Out \"<X>\"\nEnd Sub\n", &mut sources);
     assert!(table::template(&milling).is_none());
 }

@@ -2,10 +2,9 @@
 //! copied here): every one compiles with zero errors. Skipped, with a
 //! message, when the corpus is not there.
 
+use postc_report::Render as _;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-
-use postc_ir::SourceMap;
 
 fn corpus_posts(dir: &Path) -> Vec<PathBuf> {
     let mut posts = Vec::new();
@@ -37,7 +36,7 @@ fn every_corpus_post_compiles_without_errors() {
     let mut warnings: BTreeMap<String, usize> = BTreeMap::new();
     for path in &posts {
         let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
         let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
         if !errors.is_empty() {
@@ -74,7 +73,7 @@ fn project_posts_compile_without_errors() {
     posts.sort();
     for path in &posts {
         let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (_, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
         let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
         assert!(errors.is_empty(), "{}", sources.render(&errors, false));

@@ -2,9 +2,9 @@
 //! insertions, truncations) never panic, always return, and every
 //! diagnostic renders.
 
+use postc_report::Render as _;
 use std::path::Path;
 
-use postc_ir::SourceMap;
 use proptest::prelude::*;
 use proptest::sample::Index;
 
@@ -88,7 +88,7 @@ proptest! {
         for m in &mutations {
             apply(&mut bytes, m);
         }
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let (_post, diagnostics) =
             postc_front_vectric::compile(Path::new("tests/fixtures/valid/mutant.pp"), &bytes, &mut sources);
         let _ = sources.render(&diagnostics, false);
@@ -101,7 +101,7 @@ proptest! {
 
     #[test]
     fn arbitrary_text_never_panics(text in "[\\PC\\r\\n\\t\\[\\]|\"=+%]{0,300}") {
-        let mut sources = SourceMap::new();
+        let mut sources = postc_report::source_map();
         let file = sources.add("arbitrary.pp", text.clone());
         let (_ast, diagnostics) = postc_front_vectric::parse(&text, file);
         let _ = sources.render(&diagnostics, false);

@@ -8,10 +8,11 @@
 //! Valid fixtures must compile without errors, invalid ones with at least
 //! one.
 
+use postc_report::Render as _;
 use std::fmt::Write as _;
 use std::path::Path;
 
-use postc_ir::{HandlerKey, Piece, Post, SourceMap, Stmt};
+use postc_ir::{HandlerKey, Piece, Post, Stmt};
 
 /// The handlers written back in Vectric's own notation, to read snapshots
 /// by: literal bytes as text (`[nn]` for quotes, brackets and non-printable
@@ -64,7 +65,7 @@ fn listing(post: &Post) -> String {
 /// The snapshot text of one fixture, and whether it had errors.
 fn snapshot(path: &Path) -> (String, bool) {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let (post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
     let ron = ron::ser::to_string_pretty(&post, ron::ser::PrettyConfig::default()).expect("the IR serializes to RON");
     let mut out = format!(

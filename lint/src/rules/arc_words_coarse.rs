@@ -6,12 +6,13 @@
 //! to a step `s` moves the centre by up to `s/2` in each of two axes, so
 //! the radius by up to `s/√2`.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Piece, Quantity, Stmt, Units};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN010",
+    code: codes::LN010.code,
     name: "arc-words-too-coarse",
     summary: "arc words print too few decimals for a controller's arc radius check (grbl 0.005 mm, LinuxCNC 0.0283 mm)",
     check,

@@ -4,12 +4,13 @@
 //! for a block number (`GOTO`, restart at a block) get wrong, and postc
 //! verify reports (VF040).
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Quantity};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN012",
+    code: codes::LN012.code,
     name: "block-numbers-wrap",
     summary: "block numbers start again after fewer blocks than a long program has",
     check,

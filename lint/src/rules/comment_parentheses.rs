@@ -2,12 +2,13 @@
 //! name, notes, a file name) between `(` and `)`; a name with a `)` in it
 //! ends the comment early and the controller reads the rest as words.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Piece, Quantity};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN003",
+    code: codes::LN003.code,
     name: "comment-can-break",
     summary: "a comment prints a name or notes that may contain `(` or `)`",
     check,

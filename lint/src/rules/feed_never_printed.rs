@@ -1,12 +1,13 @@
 //! LN001: the post cuts but no section prints a feed rate, so the machine
 //! cuts at whatever feed was set before the program ran.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Quantity, Section};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN001",
+    code: codes::LN001.code,
     name: "feed-never-printed",
     summary: "feed moves are written, but no section prints a feed rate",
     check,

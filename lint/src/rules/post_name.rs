@@ -4,12 +4,13 @@
 //! extension, `Arc`/`Arcs` true arcs, `ATC` tool changes, `TS n` tape
 //! splitting, `WX`/`WY` a wrapped axis. A user picks a post by that name.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Section, Units};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN005",
+    code: codes::LN005.code,
     name: "post-name-convention",
     summary: "POST_NAME says (mm)/(inch), (*.ext), Arcs, ATC, TS or WX/WY, and the post does otherwise",
     check,

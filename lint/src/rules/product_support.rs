@@ -3,13 +3,14 @@
 //! `crate::product`): such a statement, section or variable is rejected
 //! or silently ignored by that product.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Piece, Stmt};
 
 use crate::product::{self, Support};
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN006",
+    code: codes::LN006.code,
     name: "product-unsupported",
     summary: "the Vectric product chosen with --product does not support a statement, section or variable of the post",
     check,

@@ -4,6 +4,7 @@
 //! application passes it as a Sub parameter. It prints empty every time —
 //! usually a misspelt register name.
 
+use postc_ir::codes;
 use std::collections::BTreeSet;
 
 use postc_ir::visit::{Visit, walk_stmt};
@@ -12,7 +13,7 @@ use postc_ir::{Diagnostic, Dialect, Piece, Place, Stmt, ValueSource};
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN013",
+    code: codes::LN013.code,
     name: "register-never-set",
     summary: "a VcPost template prints a register that nothing sets",
     check,

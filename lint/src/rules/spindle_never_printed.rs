@@ -3,12 +3,13 @@
 //! machines whose spindle speed is set by hand (a trim router) do this on
 //! purpose; the warning says so.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Quantity, Section};
 
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN002",
+    code: codes::LN002.code,
     name: "spindle-speed-never-printed",
     summary: "the post changes tools, starts the spindle, but never prints a spindle speed",
     check,

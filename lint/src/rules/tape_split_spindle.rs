@@ -4,13 +4,14 @@
 //! part does); the tool change is not repeated at a split, so a part run
 //! on its own cuts with the spindle stopped.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Quantity, Section};
 
 use super::spindle_never_printed::has_word;
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN011",
+    code: codes::LN011.code,
     name: "tape-split-spindle",
     summary: "tape-split parts after the first never start the spindle",
     check,

@@ -2,13 +2,14 @@
 //! moves Z up or home: on a machine that does not retract by itself, the
 //! tool is pulled sideways out of the work.
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Quantity, Section};
 
 use super::spindle_never_printed::has_word;
 use crate::{Context, Options, Rule};
 
 pub const RULE: Rule = Rule {
-    code: "LN004",
+    code: codes::LN004.code,
     name: "toolchange-without-retract",
     summary: "TOOLCHANGE changes the tool (M6) before any line raises Z",
     check,

@@ -9,6 +9,7 @@
 //! registers and Subs are left alone: the applications that call a post
 //! set registers and call Subs by name.
 
+use postc_ir::codes;
 use std::collections::BTreeSet;
 
 use postc_ir::visit::{Visit, walk_expr, walk_piece, walk_stmt};
@@ -17,15 +18,19 @@ use postc_ir::{Diagnostic, Dialect, Expr, Piece, Place, Script, Stmt};
 use crate::{Context, Options, Rule};
 
 pub const VARIABLE: Rule = Rule {
-    code: "LN007",
+    code: codes::LN007.code,
     name: "unused-variable",
     summary: "a variable is declared and never printed",
     check: variables,
 };
-pub const FORMAT: Rule =
-    Rule { code: "LN008", name: "unused-format", summary: "a format is created and never used", check: formats };
+pub const FORMAT: Rule = Rule {
+    code: codes::LN008.code,
+    name: "unused-format",
+    summary: "a format is created and never used",
+    check: formats,
+};
 pub const FUNCTION: Rule = Rule {
-    code: "LN009",
+    code: codes::LN009.code,
     name: "unused-function",
     summary: "a function is defined and never called",
     check: functions,

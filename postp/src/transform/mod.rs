@@ -11,8 +11,10 @@
 //! - It gives each postp word to the post as a `Command` with fixed,
 //!   normalized arguments (`words.rs`; the table is in `docs/apt.md`), also
 //!   for the records the reader turns into events (SPINDL, COOLNT, CUTCOM,
-//!   DELAY, LOADTL), reading back from the file what those events do not
-//!   keep (`records.rs`).
+//!   DELAY, LOADTL), from what the events keep of the record as written:
+//!   a `Tool`'s `load` (LOADTL or only CUTTER, offsets as given), a
+//!   `Coolant`'s placement (NOW, NEXT) and the reader's `FeedRate` events
+//!   (the FEDRAT unit). It never reads the CL file itself.
 //!
 //! Nothing here formats output: the post does that.
 
@@ -21,37 +23,36 @@ mod words;
 
 use std::collections::{HashSet, VecDeque};
 
-use postc_ir::event::{Arg, Command, CompSide, Coolant, Event};
+use postc_ir::event::{Arg, Command, CompSide, Coolant, CoolantAt, CoolantChange, Event, FeedRate};
 use postc_ir::{Diagnostic, EventSource, Span, Units};
 
 use crate::controller::Kind;
 use crate::letter::Letter;
 use crate::options::RetractZ;
-use crate::records::{ClText, Fedrat};
 
 pub use motion::Mapping;
 
 /// Diagnostic codes of `postp`.
 pub mod codes {
-    pub const NO_CL: &str = "PX001";
-    pub const NO_MACHIN: &str = "PX002";
-    pub const UNKNOWN_MACHIN: &str = "PX003";
-    pub const BAD_AXIS_TYPE: &str = "PX004";
-    pub const BAD_OPTIONS: &str = "PX005";
-    pub const POST_FAILED: &str = "PX006";
-    pub const LATHE_ONLY: &str = "PX010";
-    pub const MILL_ONLY: &str = "PX011";
-    pub const BAD_ARGS: &str = "PX012";
-    pub const MACHIN_NOT_FIRST: &str = "PX013";
-    pub const IGNORED: &str = "PX014";
-    pub const POSITION_UNKNOWN: &str = "PX015";
-    pub const BAD_PLANE: &str = "PX016";
-    pub const DWELL_REVS: &str = "PX017";
-    pub const LETTER: &str = "PX018";
-    pub const AXIS_IGNORED: &str = "PX019";
-    pub const NO_SUCH_AXIS: &str = "PX020";
-    pub const COOLANT: &str = "PX021";
-    pub const CYCLE_MODE: &str = "PX022";
+    pub const NO_CL: &str = postc_ir::codes::PX001.code;
+    pub const NO_MACHIN: &str = postc_ir::codes::PX002.code;
+    pub const UNKNOWN_MACHIN: &str = postc_ir::codes::PX003.code;
+    pub const BAD_AXIS_TYPE: &str = postc_ir::codes::PX004.code;
+    pub const BAD_OPTIONS: &str = postc_ir::codes::PX005.code;
+    pub const POST_FAILED: &str = postc_ir::codes::PX006.code;
+    pub const LATHE_ONLY: &str = postc_ir::codes::PX010.code;
+    pub const MILL_ONLY: &str = postc_ir::codes::PX011.code;
+    pub const BAD_ARGS: &str = postc_ir::codes::PX012.code;
+    pub const MACHIN_NOT_FIRST: &str = postc_ir::codes::PX013.code;
+    pub const IGNORED: &str = postc_ir::codes::PX014.code;
+    pub const POSITION_UNKNOWN: &str = postc_ir::codes::PX015.code;
+    pub const BAD_PLANE: &str = postc_ir::codes::PX016.code;
+    pub const DWELL_REVS: &str = postc_ir::codes::PX017.code;
+    pub const LETTER: &str = postc_ir::codes::PX018.code;
+    pub const AXIS_IGNORED: &str = postc_ir::codes::PX019.code;
+    pub const NO_SUCH_AXIS: &str = postc_ir::codes::PX020.code;
+    pub const COOLANT: &str = postc_ir::codes::PX021.code;
+    pub const CYCLE_MODE: &str = postc_ir::codes::PX022.code;
 }
 
 /// What the transform needs to know about the machine.
@@ -67,7 +68,6 @@ pub struct Machine {
 /// The transform: an [`EventSource`] over the CL reader's events.
 pub struct Transform<S> {
     inner: S,
-    cl: ClText,
     machine: Machine,
     queue: VecDeque<(Event, Span)>,
     /// The span of the event being handled.
@@ -85,7 +85,8 @@ pub struct Transform<S> {
     incremental: bool,
     /// Spindle speed in rpm when known (not under constant surface speed).
     rpm: Option<f64>,
-    fedrat: Option<Fedrat>,
+    /// The last FEDRAT as written (the reader's `FeedRate` events).
+    fedrat: Option<FeedRate>,
     /// The feed mode last given to the post: per revolution or not.
     per_rev: Option<bool>,
     units: Units,
@@ -94,11 +95,10 @@ pub struct Transform<S> {
 }
 
 impl<S: EventSource> Transform<S> {
-    pub fn new(inner: S, cl: ClText, machine: Machine) -> Transform<S> {
+    pub fn new(inner: S, machine: Machine) -> Transform<S> {
         let lathe = machine.kind == Kind::Lathe;
         Transform {
             inner,
-            cl,
             machine,
             queue: VecDeque::new(),
             span: Span::default(),
@@ -160,13 +160,6 @@ impl<S: EventSource> Transform<S> {
 
     /// Handles one event of the reader.
     fn event(&mut self, event: Event, diags: &mut Vec<Diagnostic>) {
-        if !matches!(event, Event::Job(_) | Event::ToolpathStart(_) | Event::ToolpathEnd) {
-            for r in self.cl.gap(self.span) {
-                if let Some(f) = Fedrat::from_record(&r) {
-                    self.fedrat = Some(f);
-                }
-            }
-        }
         match event {
             Event::Job(mut job) => {
                 self.units = job.units;
@@ -175,14 +168,15 @@ impl<S: EventSource> Transform<S> {
                 self.push(Event::Job(job));
             }
             Event::Tool(tool) => {
-                let Some(r) = self.cl.record(self.span).filter(|r| r.word == "LOADTL" || r.word == "LOAD") else {
+                // A tool only described (CUTTER, TLDATA) is no tool change.
+                let Some(load) = tool.load.as_deref().copied() else {
                     return;
                 };
                 if self.needs(Kind::Mill, "LOADTL", diags) {
                     // The event leaves out offsets equal to the tool number;
-                    // the record says whether they were given.
-                    let (h, d) = offsets(&r.args);
-                    let reg = |v: Option<f64>, e: Option<u32>| Arg::Number(v.or(e.map(f64::from)).unwrap_or(-1.0));
+                    // the load as written says whether they were given.
+                    let (h, d) = (load.length_offset, load.diameter_offset);
+                    let reg = |v: Option<u32>, e: Option<u32>| Arg::Number(v.or(e).map_or(-1.0, f64::from));
                     let args = vec![
                         Arg::Number(f64::from(tool.number)),
                         reg(h, tool.length_offset),
@@ -246,6 +240,7 @@ impl<S: EventSource> Transform<S> {
             Event::Insert(t) => self.push(Event::Insert(t)),
             Event::Command(c) => self.word(c, diags),
             Event::End => self.end(diags),
+            Event::FeedRate(f) => self.fedrat = Some(f),
         }
     }
 
@@ -288,9 +283,8 @@ impl<S: EventSource> Transform<S> {
         self.command("SPINDL", args);
     }
 
-    fn coolant(&mut self, c: Coolant, diags: &mut Vec<Diagnostic>) {
-        let record = self.cl.record(self.span);
-        let has = |w: &str| record.as_ref().is_some_and(|r| r.has(w));
+    fn coolant(&mut self, change: CoolantChange, diags: &mut Vec<Diagnostic>) {
+        let c = change.coolant;
         let kind = match c {
             Coolant::Off => "OFF",
             Coolant::Mist => "MIST",
@@ -308,9 +302,9 @@ impl<S: EventSource> Transform<S> {
                 "FLOOD"
             }
         };
-        let place = if has("NOW") {
+        let place = if change.at == Some(CoolantAt::Now) {
             "NOW"
-        } else if has("NEXT") || c == Coolant::Off {
+        } else if change.at == Some(CoolantAt::Next) || c == Coolant::Off {
             "NEXT"
         } else {
             "Z"
@@ -334,16 +328,6 @@ impl<S: EventSource> Transform<S> {
             );
         }
     }
-}
-
-/// The height and diameter offsets a tool load record gives:
-/// `LOADTL/t,h,d` or `LOAD/TOOL,t,ADJUST,h`.
-fn offsets(args: &[String]) -> (Option<f64>, Option<f64>) {
-    if let Some(i) = args.iter().position(|a| a == "ADJUST" || a == "LENGTH") {
-        return (args.get(i + 1).and_then(|a| a.parse().ok()), None);
-    }
-    let n: Vec<f64> = args.iter().filter_map(|a| a.parse().ok()).collect();
-    (n.get(1).copied(), n.get(2).copied())
 }
 
 fn word(w: &str) -> Arg {

@@ -40,7 +40,7 @@ impl<S: EventSource> Transform<S> {
     /// else the reader's feed per minute.
     fn feed_of(&mut self, feed: Option<f64>) -> Option<f64> {
         let f = self.fedrat;
-        let per_rev = f.and_then(|f| f.per_rev);
+        let per_rev = f.and_then(|f| f.unit).map(|u| u.per_rev());
         if let Some(p) = per_rev
             && self.per_rev != Some(p)
         {
@@ -49,9 +49,9 @@ impl<S: EventSource> Transform<S> {
         }
         match f {
             Some(f) if per_rev == Some(true) => {
-                let factor = match (f.metric, self.units) {
-                    (Some(true), Units::Inch) => 1.0 / 25.4,
-                    (Some(false), Units::Mm) => 25.4,
+                let factor = match (f.unit.and_then(|u| u.units()), self.units) {
+                    (Some(Units::Mm), Units::Inch) => 1.0 / 25.4,
+                    (Some(Units::Inch), Units::Mm) => 25.4,
                     _ => 1.0,
                 };
                 Some(f.value * factor)

@@ -8,8 +8,7 @@
 use std::rc::Rc;
 
 use postc_ir::{
-    BinaryOp, Body, Diagnostic, Expr, FunctionId, GlobalId, LocalId, Place, Quantity, ScriptId, Stmt, UnaryOp,
-    ValueSource, VarId,
+    BinaryOp, Body, Diagnostic, Expr, FunctionId, GlobalId, LocalId, Place, Quantity, Stmt, UnaryOp, ValueSource, VarId,
 };
 
 mod ops;
@@ -17,7 +16,7 @@ mod ops;
 use ops::{binary, builtin, js_number, push_integer};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
-use crate::script::js;
+use crate::js;
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -422,10 +421,6 @@ impl Engine<'_> {
             }
             (result, _) => result,
         }
-    }
-
-    fn call_script(&mut self, id: ScriptId, name: &str, args: Vec<Value>) -> Result<Value> {
-        crate::script::call(self, id.raw(), name, args)
     }
 
     /// A mark stored by [`Stmt::Mark`], within the output buffer.

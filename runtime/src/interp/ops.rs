@@ -7,7 +7,7 @@ use std::rc::Rc;
 
 use postc_ir::{BinaryOp, Builtin};
 
-use crate::script::js;
+use crate::js;
 use crate::value::Value;
 
 pub(super) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {

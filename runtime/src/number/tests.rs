@@ -113,7 +113,7 @@ fn multiplier_applies_before_rounding() {
 }
 
 #[test]
-fn cimco_style_trimming_and_integer_width() {
+fn trimmed_zeros_and_integer_digit_width() {
     let f = NumberFormat { decimals: 3, trim_zeros: true, ..NumberFormat::default() };
     let w = NumberWriter::new(&f);
     let mut out = Vec::new();

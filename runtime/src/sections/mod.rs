@@ -234,6 +234,8 @@ impl SectionDispatch {
             }
             Event::Command(_) => {}
             Event::End => self.finish(eng)?,
+            // Never handed to posts (`run` skips it): the moves carry the feed.
+            Event::FeedRate(_) => {}
         }
         Ok(())
     }

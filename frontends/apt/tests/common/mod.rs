@@ -4,6 +4,7 @@
 
 #![allow(dead_code)]
 
+use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 
 use postc_front_apt::AptReader;
@@ -33,7 +34,7 @@ impl Read {
 
 /// Reads CL bytes held in memory.
 pub fn read_bytes(name: &str, bytes: &[u8]) -> Read {
-    let mut sources = SourceMap::new();
+    let mut sources = postc_report::source_map();
     let file = sources.add(name, String::from_utf8_lossy(bytes).into_owned());
     let mut reader = AptReader::new(bytes, file);
     let mut events = Vec::new();

@@ -5,7 +5,7 @@
 
 use crate::ast::*;
 
-use super::host;
+use super::builtins;
 
 /// A value known at compile time.
 #[derive(Clone, Debug, PartialEq)]
@@ -86,7 +86,7 @@ pub fn const_eval(
             if let ExprKind::Ident(o) = &object.kind
                 && o == "Math"
             {
-                return host::math_constant(&property.name).map(Const::Num);
+                return builtins::math_constant(&property.name).map(Const::Num);
             }
             let name = flattened(e)?;
             ident(&name)?

@@ -27,7 +27,7 @@ use postc_ir::{
     UnaryOp,
 };
 
-use super::host;
+use super::builtins;
 use super::layout::{self, Layout};
 
 /// What the handlers need to know about the post.
@@ -68,9 +68,9 @@ impl Entry<'_> {
         add(Section::ToolChange, tool);
         let (x, y, z) = self.axes();
         for (section, movement) in [
-            (Section::RapidMove, host::MOVEMENT_RAPID),
-            (Section::FeedMove, host::MOVEMENT_CUTTING),
-            (Section::PlungeMove, host::MOVEMENT_PLUNGE),
+            (Section::RapidMove, builtins::MOVEMENT_RAPID),
+            (Section::FeedMove, builtins::MOVEMENT_CUTTING),
+            (Section::PlungeMove, builtins::MOVEMENT_PLUNGE),
         ] {
             let mut args = vec![x.clone()];
             if !self.lathe {
@@ -159,7 +159,7 @@ impl Entry<'_> {
             ]);
         }
         args.push(Expr::Bool(cw));
-        args.push(Expr::Number(host::MOVEMENT_CUTTING));
+        args.push(Expr::Number(builtins::MOVEMENT_CUTTING));
         args
     }
 

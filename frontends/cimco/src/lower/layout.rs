@@ -11,14 +11,12 @@ use super::model::Model;
 
 /// Functions postc adds to every post.
 pub const INIT: &str = "__postc_init";
-pub const FEEDRATE: &str = "getFeedrate";
+pub const FEEDRATE: &str = crate::host_names::GET_FEEDRATE;
 pub const COMPENSATION: &str = "__postc_compensation";
 pub const DRILL_HEADER: &str = "__postc_drilling_header";
 pub const TURN_DRILL: &str = "__postc_drilling";
-/// The output variable `getFeedrate` formats through.
-pub const FEED_VAR: &str = "__postc_feed";
-/// The output variable `getFeedrate` formats feeds per revolution through.
-pub const FEED_REV_VAR: &str = "__postc_feed_rev";
+/// The output variables `getFeedrate` formats through (per minute, per revolution).
+pub use crate::host_names::{FEED_REV_VAR, FEED_VAR};
 /// Decimals of a feed per revolution (a feed per minute has one).
 pub const FEED_PER_REV_DECIMALS: u8 = 4;
 

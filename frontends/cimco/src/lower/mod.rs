@@ -15,11 +15,11 @@
 //!
 //! `docs/cimco.md` describes the host semantics this implements.
 
+pub mod builtins;
 mod consts;
 mod emit;
 mod fold;
 mod handlers;
-pub mod host;
 mod layout;
 mod model;
 mod native;
@@ -28,6 +28,8 @@ mod scope;
 mod setup;
 mod warn;
 
+use crate::host_names as names;
+use postc_ir::codes;
 use std::path::Path;
 
 use postc_ir::{
@@ -161,7 +163,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
                         Expr::Binary(
                             postc_ir::BinaryOp::Eq,
                             Box::new(Expr::Local(LocalId::new(0))),
-                            Box::new(Expr::Number(host::MOVEMENT_RAPID)),
+                            Box::new(Expr::Number(builtins::MOVEMENT_RAPID)),
                         ),
                         vec![Stmt::Return(Some(Expr::Text(String::new())))],
                     )],
@@ -219,16 +221,21 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             g.function(&rhai::fn_name(&name), id);
         }
         if feed_fn.is_some() {
-            g.glue(&rhai::fn_name(layout::FEEDRATE), whole, "__feedrate(__arg(a, 0))\n");
+            g.glue(&rhai::fn_name(layout::FEEDRATE), whole, &format!("{}({}(a, 0))\n", names::FEEDRATE, names::ARG));
         }
         g.init(&rhai::fn_name(layout::INIT), &init_stmts, whole);
         for (glue_name, entry, arg) in [
-            (layout::COMPENSATION, "onCompensation", "__comp()"),
-            (layout::DRILL_HEADER, "onDrillingHeader", "__drill_header()"),
-            (layout::TURN_DRILL, "onDrilling", "__turn_drill()"),
+            (layout::COMPENSATION, "onCompensation", names::COMPENSATION),
+            (layout::DRILL_HEADER, "onDrillingHeader", names::DRILL_HEADER),
+            (layout::TURN_DRILL, "onDrilling", names::TURN_DRILL),
         ] {
             let body = if arity(entry).is_some() {
-                format!("__call(__fnobj({}), [{arg}])\n", rhai::quote(&rhai::fn_name(entry)))
+                format!(
+                    "{CALL}({FUNCTION_OBJECT}({}), [{arg}()])\n",
+                    rhai::quote(&rhai::fn_name(entry)),
+                    CALL = names::CALL,
+                    FUNCTION_OBJECT = names::FUNCTION_OBJECT
+                )
             } else {
                 "()\n".to_string()
             };
@@ -373,7 +380,7 @@ fn settings(model: &Model, post: &mut Post, diags: &mut Vec<Diagnostic>) {
         && let Some(init) = g.init
     {
         diags.push(
-            Diagnostic::warning("JS103", format!("decimalMark is {m:?}; postc writes '.' or ','"))
+            Diagnostic::warning(codes::JS103, format!("decimalMark is {m:?}; postc writes '.' or ','"))
                 .at(init.span, "here")
                 .help("use '.' or ','; postc uses '.'"),
         );

@@ -5,6 +5,7 @@
 //! `xOutput.format(x)` lowers to one IR expression that formats straight
 //! into the output. Other calls run when the post runs, in the script host.
 
+use postc_ir::codes;
 use std::collections::{HashMap, HashSet};
 
 use postc_ir::{
@@ -194,7 +195,7 @@ fn eval(e: &Expr, model: &Model, env: &HashMap<String, Const>, at: usize) -> Opt
                 if model.global(&g).is_some() {
                     model.constant(&g).cloned()
                 } else {
-                    super::host::constant(&g)
+                    super::builtins::constant(&g)
                 }
             }
             Symbol::TopFn(_) => None,
@@ -220,9 +221,12 @@ fn props(
         let v = eval(&p.value, model, env, at)?;
         if !keys.contains(&p.key.name.as_str()) {
             diags.push(
-                Diagnostic::warning("JS101", format!("`{}` is not a property of {what}; it is ignored", p.key.name))
-                    .at(p.key.span, "unknown property")
-                    .help(format!("{what} knows {}", keys.join(", "))),
+                Diagnostic::warning(
+                    codes::JS101,
+                    format!("`{}` is not a property of {what}; it is ignored", p.key.name),
+                )
+                .at(p.key.span, "unknown property")
+                .help(format!("{what} knows {}", keys.join(", "))),
             );
         }
         out.push((p.key.name.clone(), v));
@@ -244,7 +248,8 @@ fn number_format(
     }
     if decimals > 15.0 {
         diags.push(
-            Diagnostic::warning("JS104", "a format prints at most 15 decimals").at(span, "more decimals than that"),
+            Diagnostic::warning(codes::JS104, "a format prints at most 15 decimals")
+                .at(span, "more decimals than that"),
         );
         decimals = 15.0;
     }

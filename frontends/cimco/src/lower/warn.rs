@@ -3,13 +3,14 @@
 //! the Rhai script made from the post compiles (a failure there is a bug
 //! in postc, reported at the function it came from).
 
+use postc_ir::codes;
 use std::collections::HashSet;
 
 use postc_ir::{Diagnostic, Script, Span};
 
 use crate::ast::*;
 
-use super::host;
+use super::builtins;
 use super::model::Model;
 use super::scope::{Symbol, Visit, walk_stmts};
 use super::setup::Setup;
@@ -28,7 +29,7 @@ pub fn check(program: &Program, model: &Model, setup: &Setup, diags: &mut Vec<Di
     let _ = setup;
     if !model.scopes.top_fn_names.contains_key("onLinear") {
         diags.push(
-            Diagnostic::warning("JS105", "this post has no `onLinear` function, so moves print nothing")
+            Diagnostic::warning(codes::JS105, "this post has no `onLinear` function, so moves print nothing")
                 .at(Span::new(program.span.file, 0, 0), "in this post")
                 .help(
                     "CNC-Calc posts define onLinear(vx, vy, vz, movement) (or onLinear(vx, vz, movement) for lathes)",
@@ -51,12 +52,12 @@ impl<'a> Visit<'a> for Names<'_, 'a, '_> {
                 if let Symbol::Global(g) = self.model.scopes.resolve(name, self.at)
                     && self.model.global(&g).is_none()
                     && !self.model.flattened.contains(&g)
-                    && !host::knows(&g)
+                    && !builtins::knows(&g)
                     && self.seen.insert(g.clone())
                 {
                     self.diags.push(
                         Diagnostic::warning(
-                            "JS102",
+                            codes::JS102,
                             format!("`{g}` is not defined in this post, and postc's host does not provide it"),
                         )
                         .at(e.span, "not defined")
@@ -70,7 +71,7 @@ impl<'a> Visit<'a> for Names<'_, 'a, '_> {
                 {
                     self.diags.push(
                         Diagnostic::error(
-                            "JS106",
+                            codes::JS106,
                             format!("`{name}` is a function; postc does not let a post assign to a function's name"),
                         )
                         .at(target.span, "assigned here")
@@ -110,7 +111,7 @@ pub fn check_script(script: &Script, whole: Span) -> Option<Diagnostic> {
         script.span_map.iter().rev().find(|(r, _)| *r as usize <= offset).map_or(whole.start, |(_, j)| *j as usize);
     Some(
         Diagnostic::error(
-            "JS100",
+            codes::JS100,
             format!("postc could not turn this part of the post into a script: {}", err.err_type()),
         )
         .at(Span::new(whole.file, js, js + 1), "here")

@@ -332,7 +332,7 @@ pub(crate) fn problem_diagnostic(problem: &Problem, at: Span) -> Diagnostic {
     match problem {
         Problem::Unsupported(c) => c.diagnostic(at),
         Problem::Custom(code, message, label, help) => {
-            let d = Diagnostic::error(code, message.clone()).at(at, *label);
+            let d = Diagnostic::error(*code, message.clone()).at(at, *label);
             match help {
                 Some(h) => d.help(*h),
                 None => d,

@@ -5,6 +5,7 @@
 //! same tow states (`AddCutA` a string of 0 and 1, `AddCutB` its reverse,
 //! `AddCutI` and `AddCutJ` their binary values).
 
+use postc_ir::codes;
 use postc_ir::{Diagnostic, Span};
 
 use super::calls::{LayingCall, PacketPoint, ProbingCall, RestartPoint};
@@ -44,7 +45,7 @@ impl Checked for LayingCall {
             }
             LayingCall::Extent(e) => unit("Rotation", e.Rotation, span, diagnostics),
             LayingCall::Length(l) if l.TowNum < 0.0 || l.TowNum.fract() != 0.0 => diagnostics.push(
-                Diagnostic::error("CP006", format!("TowNum is {}: a tow number, or 0 for all tows", l.TowNum))
+                Diagnostic::error(codes::CP006, format!("TowNum is {}: a tow number, or 0 for all tows", l.TowNum))
                     .at(span, "in this call"),
             ),
             LayingCall::GoTo(p) => goto(p, span, diagnostics),
@@ -69,7 +70,8 @@ impl Checked for ProbingCall {
 fn unit(name: &str, v: f64, span: Span, diagnostics: &mut Vec<Diagnostic>) {
     if ![-1.0, 0.0, 1.0].contains(&v) {
         diagnostics.push(
-            Diagnostic::error("CP006", format!("{name} is {v}; seed 003 allows -1, 0 or +1")).at(span, "in this call"),
+            Diagnostic::error(codes::CP006, format!("{name} is {v}; seed 003 allows -1, 0 or +1"))
+                .at(span, "in this call"),
         );
     }
 }
@@ -86,7 +88,7 @@ fn goto(p: &PacketPoint, span: Span, diagnostics: &mut Vec<Diagnostic>) {
         if list.len() as f64 != p.TowsInPacket {
             diagnostics.push(
                 Diagnostic::warning(
-                    "CP009",
+                    codes::CP009,
                     format!("{name} has {} entries but the packet has {} tows", list.len(), p.TowsInPacket),
                 )
                 .at(span, "in this call")
@@ -107,8 +109,11 @@ fn list_too_long(name: &str, list: &[f64], span: Span, diagnostics: &mut Vec<Dia
     let long = list.len() > MAX_LIST;
     if long {
         diagnostics.push(
-            Diagnostic::error("CP006", format!("{name} has {} entries; postc holds at most {MAX_LIST}", list.len()))
-                .at(span, "in this call"),
+            Diagnostic::error(
+                codes::CP006,
+                format!("{name} has {} entries; postc holds at most {MAX_LIST}", list.len()),
+            )
+            .at(span, "in this call"),
         );
     }
     long
@@ -134,7 +139,7 @@ fn add_cut(a: &str, b: &str, i: f64, j: f64, span: Span, diagnostics: &mut Vec<D
     };
     if let Some(message) = problem {
         diagnostics.push(
-            Diagnostic::warning("CP008", message).at(span, "in this call").help(
+            Diagnostic::warning(codes::CP008, message).at(span, "in this call").help(
                 "seed 003: AddCutA \"0001111111111100\", AddCutB \"0011111111111000\", AddCutI 8188, AddCutJ 16376",
             ),
         );

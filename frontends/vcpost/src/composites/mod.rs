@@ -32,44 +32,35 @@
 //! The #Primer Subs the header names run first (VCP's Post card), then
 //! those named with `--primer`, before the first call.
 //!
-//! | code | severity | meaning |
-//! |---|---|---|
-//! | CP001 | error | a line that is not a call of the file's kind (syntax, unknown routine or variable, a missing variable, a wrong type) |
-//! | CP002 | error | the first line is not the `VcpFile` header |
-//! | CP003 | error | a call the sequence does not allow here |
-//! | CP004 | error | the file ends before its sequence does |
-//! | CP005 | error | an option, probe or `--primer` Sub the post does not have |
-//! | CP006 | error | a value the seed does not allow (`LinkType`, `Rotation` other than -1, 0, +1; `TowNum` < 0; a list longer than 64) |
-//! | CP007 | warning | an option, probe or primer Sub without its `#Option`/`#Probe`/`#Primer` keyword |
-//! | CP008 | warning | `AddCutA`, `AddCutB`, `AddCutI`, `AddCutJ` that disagree |
-//! | CP009 | warning | a `getNthLength` list whose length is not `TowsInPacket` |
-//! | CP010 | error | the file cannot be read, or is not UTF-8 text |
+//! Its diagnostic codes are declared in the registry `postc_ir::codes`
+//! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
 pub mod calls;
 pub mod check;
 pub mod grammar;
 
+use postc_ir::codes;
 use std::collections::{HashMap, VecDeque};
-use std::fs::File;
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
-use postc_ir::{CallSource, Diagnostic, FileId, MissingSub, Post, SourceMap, Span, SubCall};
+use postc_ir::source::SourceReader;
+use postc_ir::{CallSource, Diagnostic, FileId, MissingSub, Post, SourceLoader, SourceMap, Span, SubCall};
 
 use crate::ast::SubKeyword;
 use calls::{Application, Call, HeaderLine, LayingCall, ProbingCall};
 use grammar::{State, Step};
 
 /// Whether a path names a composites event file: `.vcp.ron`, `.vcp.jsonl`
-/// or `.vcp.json` (any case), or a file whose first line is the header.
-pub fn is_composites_file(path: &Path) -> bool {
+/// or `.vcp.json` (any case), or a file whose first line is the header
+/// (read through `loader`).
+pub fn is_composites_file(path: &Path, loader: &dyn SourceLoader) -> bool {
     let name = path.file_name().map(|n| n.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
     if [".vcp.ron", ".vcp.jsonl", ".vcp.json"].iter().any(|e| name.ends_with(e)) {
         return true;
     }
     let mut head = Vec::new();
-    if let Ok(f) = File::open(path) {
-        use std::io::Read;
+    if let Ok(f) = loader.open(path) {
         let _ = f.take(4096).read_to_end(&mut head);
     }
     looks_like_composites(&head)
@@ -117,7 +108,7 @@ impl PostFacts {
         };
         match self.subs.get(&name.to_ascii_uppercase()) {
             None => Err(with(
-                Diagnostic::error("CP005", format!("the post has no Sub `{name}`")).help(format!(
+                Diagnostic::error(codes::CP005, format!("the post has no Sub `{name}`")).help(format!(
                     "an {} Sub is declared with `Sub {name}()` and a `' #{}` comment",
                     want.as_str(),
                     want.as_str()
@@ -125,7 +116,7 @@ impl PostFacts {
                 "named here",
             )),
             Some(k) if *k != Some(want) => Ok(Some(with(
-                Diagnostic::warning("CP007", format!("Sub `{name}` has no `#{}` keyword comment", want.as_str()))
+                Diagnostic::warning(codes::CP007, format!("Sub `{name}` has no `#{}` keyword comment", want.as_str()))
                     .help(format!("add `' #{}` after its Sub line so Vericut offers it", want.as_str())),
                 "called here",
             ))),
@@ -177,9 +168,10 @@ pub fn open(
     sources: &mut SourceMap,
     post: &Post,
     primers: Vec<SubCall>,
-) -> Result<CompositesReader<BufReader<File>>, Diagnostic> {
-    let f = File::open(path)
-        .map_err(|e| Diagnostic::error("CP010", format!("cannot open the event file `{}`: {e}", path.display())))?;
+) -> Result<CompositesReader<BufReader<SourceReader>>, Diagnostic> {
+    let f = sources.loader().open(path).map_err(|e| {
+        Diagnostic::error(codes::CP010, format!("cannot open the event file `{}`: {e}", path.display()))
+    })?;
     let id = sources.add_streamed(path.display().to_string());
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let syntax = match ext.as_deref() {
@@ -238,7 +230,7 @@ impl<R: BufRead> CompositesReader<R> {
                 Err(e) => {
                     self.done = true;
                     diagnostics.push(
-                        Diagnostic::error("CP010", format!("cannot read the event file: {e}"))
+                        Diagnostic::error(codes::CP010, format!("cannot read the event file: {e}"))
                             .at(Span::new(self.file, start, start + 1), "from here on"),
                     );
                 }
@@ -287,7 +279,7 @@ impl<R: BufRead> CompositesReader<R> {
             Ok(s) => self.state = s,
             Err(m) => {
                 diagnostics.push(
-                    Diagnostic::error("CP003", format!("`{}` cannot come here", step.routine))
+                    Diagnostic::error(codes::CP003, format!("`{}` cannot come here", step.routine))
                         .at(span, format!("expected {}", m.expected))
                         .help("docs/vcpost.md has the sequences seed 003 allows"),
                 );
@@ -340,7 +332,7 @@ impl<R: BufRead> CallSource for CompositesReader<R> {
         }
         while let Some((text, span)) = self.next_line(diagnostics) {
             let Some(kind) = self.kind else {
-                match self.parse::<HeaderLine>(&text, span, "CP002") {
+                match self.parse::<HeaderLine>(&text, span, codes::CP002.code) {
                     Ok(HeaderLine::VcpFile(h)) => {
                         self.kind = Some(h.kind);
                         for name in h.primers.iter().rev() {
@@ -373,10 +365,10 @@ impl<R: BufRead> CallSource for CompositesReader<R> {
             };
             let call = match kind {
                 Application::Laying => {
-                    self.parse::<LayingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics))
+                    self.parse::<LayingCall>(&text, span, codes::CP001.code).map(|c| self.accept(c, span, diagnostics))
                 }
                 Application::Probing => {
-                    self.parse::<ProbingCall>(&text, span, "CP001").map(|c| self.accept(c, span, diagnostics))
+                    self.parse::<ProbingCall>(&text, span, codes::CP001.code).map(|c| self.accept(c, span, diagnostics))
                 }
             };
             match call {
@@ -388,10 +380,10 @@ impl<R: BufRead> CallSource for CompositesReader<R> {
         if self.kind.is_some()
             && let Some(what) = grammar::unfinished(self.state)
         {
-            diagnostics.push(Diagnostic::error("CP004", what).at(self.last, "the last call"));
+            diagnostics.push(Diagnostic::error(codes::CP004, what).at(self.last, "the last call"));
             self.state = State::Done;
         } else if self.kind.is_none() && !postc_ir::diagnostic::has_errors(diagnostics) {
-            diagnostics.push(Diagnostic::error("CP002", "the event file is empty: it has no VcpFile header"));
+            diagnostics.push(Diagnostic::error(codes::CP002, "the event file is empty: it has no VcpFile header"));
             self.kind = Some(Application::Laying);
             self.state = State::Done;
         }

@@ -3,9 +3,9 @@
 //! BASIC operators map onto the IR's: `Mod` is `Rem`, `\` is `IntDiv`, `&`
 //! is `Concat`; `Xor` (absent from the IR) is `(Not a) <> (Not b)`, a
 //! logical exclusive or. `X.Previous` is `Previous(X)`. Built-ins map as
-//! [`crate::builtins`] says. The composites functions the runtime provides
-//! (`getNthLength1` ...) become stub functions returning 0 that the runtime
-//! replaces by name.
+//! [`crate::builtins`] says. The composites functions whose values come
+//! from the calls (`getNthLength1` ...) become stub functions returning 0,
+//! which [`crate::call_tables::lower`] makes read the calls' lists.
 
 use postc_ir::{
     BinaryOp as IrOp, Body, Builtin, Diagnostic, Expr as IrExpr, Function, Piece, Span, Stmt as IrStmt,

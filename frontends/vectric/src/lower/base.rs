@@ -2,11 +2,14 @@
 //! apply first. This module reads the chain of bases (each one decoded,
 //! registered in the source map and parsed), stopping with a warning when a
 //! base cannot be read, when the chain loops back, or when it is deeper than
-//! [`MAX_DEPTH`].
+//! [`MAX_DEPTH`]. Bases are read through the source map's
+//! [`SourceLoader`](postc_ir::SourceLoader) (the file system for the command
+//! line, memory for tests and the language server): the frontend opens no
+//! file itself.
 
 use std::path::{Path, PathBuf};
 
-use postc_ir::{Diagnostic, SourceMap, Span};
+use postc_ir::{Diagnostic, SourceLoader, SourceMap, Span};
 
 use crate::ast::{ItemKind, PostFile, Value, VarBody};
 use crate::decode::{Encoding, decode};
@@ -64,10 +67,10 @@ fn post_base(ast: &PostFile) -> Option<(String, Span)> {
 
 /// The base file: next to the post, matched without regard to letter case
 /// when the exact name is not there (Windows posts name files loosely).
-fn resolve(post: &Path, name: &str) -> PathBuf {
+fn resolve(loader: &dyn SourceLoader, post: &Path, name: &str) -> PathBuf {
     let folder = post.parent().unwrap_or(Path::new(""));
     let exact = folder.join(name);
-    if exact.exists() {
+    if loader.exists(&exact) {
         return exact;
     }
     let (Some(file_name), Some(parent)) = (exact.file_name(), exact.parent()) else {
@@ -76,23 +79,24 @@ fn resolve(post: &Path, name: &str) -> PathBuf {
     let wanted = file_name.to_string_lossy().into_owned();
     let parent = parent.to_path_buf();
     let lookup = if parent.as_os_str().is_empty() { Path::new(".") } else { parent.as_path() };
-    let Ok(entries) = std::fs::read_dir(lookup) else {
+    let Ok(entries) = loader.read_dir(lookup) else {
         return exact;
     };
-    let found = entries.flatten().find(|e| e.file_name().to_string_lossy().eq_ignore_ascii_case(&wanted));
-    found.map_or(exact, |e| parent.join(e.file_name()))
+    let found = entries.into_iter().find(|e| e.to_string_lossy().eq_ignore_ascii_case(&wanted));
+    found.map_or(exact, |e| parent.join(e))
 }
 
 /// The post and its bases, the deepest base first.
 pub fn load_chain(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mut Vec<Diagnostic>) -> Vec<Loaded> {
     let mut chain = vec![load(path, bytes, sources, diags)];
-    let mut seen = vec![std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())];
+    let mut seen = vec![sources.loader().canonicalize(path)];
     while let Some(current) = chain.last() {
         let Some((name, at)) = post_base(&current.ast) else {
             break;
         };
-        let base = resolve(&current.path, &name);
-        let canonical = std::fs::canonicalize(&base).unwrap_or_else(|_| base.clone());
+        let loader = sources.loader();
+        let base = resolve(loader, &current.path, &name);
+        let canonical = loader.canonicalize(&base);
         if seen.contains(&canonical) {
             diags.push(
                 Code::BaseChain
@@ -109,7 +113,7 @@ pub fn load_chain(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mu
             );
             break;
         }
-        match std::fs::read(&base) {
+        match sources.loader().read(&base) {
             Ok(bytes) => {
                 seen.push(canonical);
                 let loaded = load(&base, &bytes, sources, diags);

@@ -4,7 +4,7 @@
 
 use crate::ast::*;
 
-use super::super::host;
+use super::super::builtins;
 use super::super::scope::{FnId, Symbol, Visit, walk_expr, walk_stmts};
 use super::{FLATTENED, Model, object_literal_assignment};
 
@@ -62,7 +62,7 @@ impl<'a> Model<'a> {
                 Symbol::TopFn(_) => false,
                 Symbol::Global(name) => match self.global(&name) {
                     Some(g) => g.plain,
-                    None => host::constant(&name).is_some() || !host::is_object(&name),
+                    None => builtins::constant(&name).is_some() || !builtins::is_object(&name),
                 },
             },
             ExprKind::Member { object, property } => {
@@ -73,11 +73,11 @@ impl<'a> Model<'a> {
             }
             ExprKind::Call { callee, .. } => match &callee.kind {
                 ExprKind::Member { object, property } => {
-                    matches!(&object.kind, ExprKind::Ident(n) if n == "Math") || host::plain_method(&property.name)
+                    matches!(&object.kind, ExprKind::Ident(n) if n == "Math") || builtins::plain_method(&property.name)
                 }
                 ExprKind::Ident(name) => match self.scopes.resolve(name, at) {
                     Symbol::TopFn(i) => self.returns_plain[self.scopes.top_fns[i]],
-                    Symbol::Global(n) if !self.global_index.contains_key(&n) => host::plain_function(&n),
+                    Symbol::Global(n) if !self.global_index.contains_key(&n) => builtins::plain_function(&n),
                     _ => false,
                 },
                 _ => false,
@@ -125,7 +125,7 @@ impl<'a> Infer<'_, 'a> {
             // methods) or whose function is used as a value can be anything.
             let top = self.model.scopes.top_fns.iter().position(|&t| t == id);
             let dynamic = top.is_none_or(|i| self.model.fn_as_value.contains(&i));
-            let entry_object = info.name.as_deref().is_some_and(host::entry_takes_object);
+            let entry_object = info.name.as_deref().is_some_and(builtins::entry_takes_object);
             if dynamic || entry_object || info.uses_arguments {
                 for s in 0..info.params.len() {
                     self.changes.push(Change::Local(id, s));

@@ -13,8 +13,8 @@ use std::collections::{HashMap, HashSet};
 
 use crate::ast::*;
 
+use super::builtins;
 use super::consts::{Const, const_eval};
-use super::host;
 mod infer;
 
 use super::scope::{FnId, Scopes, Symbol, Visit, walk_expr, walk_stmts};
@@ -251,7 +251,7 @@ impl<'a> Model<'a> {
         if self.global_index.contains_key(name) || self.scopes.top_fn_names.contains_key(name) {
             return None;
         }
-        host::constant(name)
+        builtins::constant(name)
     }
 }
 

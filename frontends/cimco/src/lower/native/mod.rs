@@ -18,8 +18,8 @@ use crate::ast::*;
 
 mod calls;
 
+use super::builtins;
 use super::consts::Const;
-use super::host;
 use super::layout::{self, Layout};
 use super::model::Model;
 use super::scope::{FnId, Symbol};
@@ -343,7 +343,7 @@ impl Native<'_, '_> {
                     .map(|g| Ir::Global(*g))
                     .ok_or_else(|| why(at, format!("reads `{name}`")))
             }
-            None => match host::constant(name) {
+            None => match builtins::constant(name) {
                 Some(Const::Num(n)) => Ok(Ir::Number(n)),
                 Some(c) => Ok(layout::const_expr(&c)),
                 None => Err(why(at, format!("reads `{name}`, which postc's host gives no native value"))),
@@ -378,7 +378,7 @@ impl Native<'_, '_> {
                     && o == "Math"
                     && self.is_host("Math")
                 {
-                    return host::math_constant(&property.name)
+                    return builtins::math_constant(&property.name)
                         .map(Ir::Number)
                         .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
                 }
@@ -393,9 +393,9 @@ impl Native<'_, '_> {
                     && let ExprKind::Ident(n) = &operand.kind
                     && matches!(self.model.scopes.resolve(n, self.at), Symbol::Global(_))
                     && self.model.global(n).is_none()
-                    && host::constant(n).is_none()
+                    && builtins::constant(n).is_none()
                 {
-                    return Ok(Ir::Text(if host::knows(n) { "function" } else { "undefined" }.into()));
+                    return Ok(Ir::Text(if builtins::knows(n) { "function" } else { "undefined" }.into()));
                 }
                 let a = Box::new(self.expr(operand)?);
                 match op {

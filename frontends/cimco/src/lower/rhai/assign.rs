@@ -3,6 +3,7 @@
 //! with the object evaluated once.
 
 use crate::ast::*;
+use crate::host_names as names;
 
 use super::expr::{Target, binary_fn};
 use super::{Gen, quote};
@@ -21,12 +22,12 @@ impl Gen<'_, '_> {
                         self.w(&format!("; {v} }}"));
                     }
                     Target::Global(i) => {
-                        self.w(&format!("__gs({i}, "));
-                        self.combined(op, &format!("__gg({i})"), value);
+                        self.w(&format!("{GLOBAL_SET}({i}, ", GLOBAL_SET = names::GLOBAL_SET));
+                        self.combined(op, &format!("{GLOBAL_GET}({i})", GLOBAL_GET = names::GLOBAL_GET), value);
                         self.w(")");
                     }
                     Target::None => {
-                        self.w(&format!("__assign_error({})", quote(name)));
+                        self.w(&format!("{ASSIGN_ERROR}({})", quote(name), ASSIGN_ERROR = names::ASSIGN_ERROR));
                     }
                 }
             }
@@ -34,8 +35,8 @@ impl Gen<'_, '_> {
                 let flat = self.model.flattened_name(target).unwrap_or_default();
                 match self.layout.global_index.get(&flat) {
                     Some(&i) => {
-                        self.w(&format!("__gs({i}, "));
-                        self.combined(op, &format!("__gg({i})"), value);
+                        self.w(&format!("{GLOBAL_SET}({i}, ", GLOBAL_SET = names::GLOBAL_SET));
+                        self.combined(op, &format!("{GLOBAL_GET}({i})", GLOBAL_GET = names::GLOBAL_GET), value);
                         self.w(")");
                     }
                     None => self.w("()"),
@@ -45,8 +46,8 @@ impl Gen<'_, '_> {
                 let o = self.temp("o");
                 self.w(&format!("{{ let {o} = "));
                 self.expr(object);
-                self.w(&format!("; __set({o}, {}, ", quote(&property.name)));
-                self.combined(op, &format!("__get({o}, {})", quote(&property.name)), value);
+                self.w(&format!("; {SET}({o}, {}, ", quote(&property.name), SET = names::SET));
+                self.combined(op, &format!("{GET}({o}, {})", quote(&property.name), GET = names::GET), value);
                 self.w(") }");
             }
             ExprKind::Index { object, index } => {
@@ -55,11 +56,11 @@ impl Gen<'_, '_> {
                 self.expr(object);
                 self.w(&format!("; let {k} = "));
                 self.expr(index);
-                self.w(&format!("; __set({o}, {k}, "));
-                self.combined(op, &format!("__get({o}, {k})"), value);
+                self.w(&format!("; {SET}({o}, {k}, ", SET = names::SET));
+                self.combined(op, &format!("{GET}({o}, {k})", GET = names::GET), value);
                 self.w(") }");
             }
-            _ => self.w("__assign_error(\"?\")"),
+            _ => self.w(&format!("{}(\"?\")", names::ASSIGN_ERROR)),
         }
     }
 
@@ -84,11 +85,16 @@ impl Gen<'_, '_> {
                 let new = format!("{u} + {delta}");
                 let (read, store) = match self.target_of(name) {
                     Target::Local(v) => (v.clone(), format!("{v} = {new}")),
-                    Target::Global(i) => (format!("__gg({i})"), format!("__gs({i}, {new})")),
-                    Target::None => return self.w(&format!("__assign_error({})", quote(name))),
+                    Target::Global(i) => (
+                        format!("{GLOBAL_GET}({i})", GLOBAL_GET = names::GLOBAL_GET),
+                        format!("{GLOBAL_SET}({i}, {new})", GLOBAL_SET = names::GLOBAL_SET),
+                    ),
+                    Target::None => {
+                        return self.w(&format!("{ASSIGN_ERROR}({})", quote(name), ASSIGN_ERROR = names::ASSIGN_ERROR));
+                    }
                 };
                 let result = if prefix { format!("{u} + {delta}") } else { u.clone() };
-                self.w(&format!("{{ let {u} = __pos({read}); {store}; {result} }}"));
+                self.w(&format!("{{ let {u} = {POS}({read}); {store}; {result} }}", POS = names::POS));
             }
             ExprKind::Member { .. } | ExprKind::Index { .. } => {
                 let o = self.temp("o");
@@ -107,9 +113,14 @@ impl Gen<'_, '_> {
                     _ => {}
                 }
                 let result = if prefix { format!("{u} + {delta}") } else { u.clone() };
-                self.w(&format!("; let {u} = __pos(__get({o}, {k})); __set({o}, {k}, {u} + {delta}); {result} }}"));
+                self.w(&format!(
+                    "; let {u} = {POS}({GET}({o}, {k})); {SET}({o}, {k}, {u} + {delta}); {result} }}",
+                    POS = names::POS,
+                    GET = names::GET,
+                    SET = names::SET
+                ));
             }
-            _ => self.w("__assign_error(\"?\")"),
+            _ => self.w(&format!("{}(\"?\")", names::ASSIGN_ERROR)),
         }
     }
 }

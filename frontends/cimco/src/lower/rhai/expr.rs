@@ -1,8 +1,9 @@
 //! Expressions in Rhai.
 
 use crate::ast::*;
+use crate::host_names as names;
 
-use super::super::host;
+use super::super::builtins;
 use super::super::scope::Symbol;
 use super::super::setup::Binding;
 use super::{Gen, arguments_name, fn_name, local_name, number, quote};
@@ -17,7 +18,7 @@ pub(super) enum Target {
 impl Gen<'_, '_> {
     /// A condition: JavaScript truthiness as a Rhai boolean.
     pub(super) fn cond(&mut self, e: &Expr) {
-        self.w("__t(");
+        self.open(names::TRUTHY);
         self.expr(e);
         self.w(")");
     }
@@ -49,8 +50,8 @@ impl Gen<'_, '_> {
     fn global(&mut self, name: &str) {
         if let Some(b) = self.setup.bindings.get(name) {
             let text = match b {
-                Binding::Var(id) => format!("__vref({id})"),
-                Binding::Format(id) => format!("__fref({id})"),
+                Binding::Var(id) => format!("{VAR_REF}({id})", VAR_REF = names::VAR_REF),
+                Binding::Format(id) => format!("{FORMAT_REF}({id})", FORMAT_REF = names::FORMAT_REF),
             };
             return self.w(&text);
         }
@@ -60,19 +61,19 @@ impl Gen<'_, '_> {
                 return self.w(&text);
             }
             if let Some(&i) = self.layout.global_index.get(name) {
-                return self.w(&format!("__gg({i})"));
+                return self.w(&format!("{GLOBAL_GET}({i})", GLOBAL_GET = names::GLOBAL_GET));
             }
         }
-        if let Some(c) = host::constant(name) {
+        if let Some(c) = builtins::constant(name) {
             return self.w(&constant(&c));
         }
         if name == "Math" {
-            return self.w("__math_obj()");
+            return self.w(&format!("{}()", names::MATH_OBJECT));
         }
-        if host::knows(name) {
-            return self.w(&format!("__hostfn({})", quote(name)));
+        if builtins::knows(name) {
+            return self.w(&format!("{HOST_FUNCTION}({})", quote(name), HOST_FUNCTION = names::HOST_FUNCTION));
         }
-        self.w(&format!("__undef({})", quote(name)))
+        self.w(&format!("{UNDEF}({})", quote(name), UNDEF = names::UNDEF))
     }
 
     pub(super) fn expr(&mut self, e: &Expr) {
@@ -80,29 +81,34 @@ impl Gen<'_, '_> {
             ExprKind::Number(n) => self.w(&number(*n)),
             ExprKind::String(s) => self.w(&quote(s)),
             ExprKind::Bool(b) => self.w(if *b { "true" } else { "false" }),
-            ExprKind::Null => self.w("__null()"),
+            ExprKind::Null => self.w(&format!("{}()", names::NULL)),
             ExprKind::Undefined | ExprKind::Error => self.w("()"),
             ExprKind::This => self.w(if self.at == 0 { "()" } else { "this" }),
             ExprKind::Regex { pattern, flags } => {
                 self.mark(e.span);
-                self.w(&format!("__regex({}, {})", quote(pattern), quote(flags)));
+                self.w(&format!("{REGEX}({}, {})", quote(pattern), quote(flags), REGEX = names::REGEX));
             }
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
                 Symbol::Local { func, slot } if slot == usize::MAX => self.w(&arguments_name(func)),
                 Symbol::Local { .. } => self.w(&local_name(name)),
-                Symbol::TopFn(_) => self.w(&format!("__fnobj({})", quote(&fn_name(name)))),
+                Symbol::TopFn(_) => self.w(&format!(
+                    "{FUNCTION_OBJECT}({})",
+                    quote(&fn_name(name)),
+                    FUNCTION_OBJECT = names::FUNCTION_OBJECT
+                )),
                 Symbol::Global(g) => {
                     self.mark(e.span);
                     self.global(&g)
                 }
             },
             ExprKind::Array(items) => {
-                self.w("__arr(");
+                self.open(names::ARRAY);
                 self.list(items);
                 self.w(")");
             }
             ExprKind::Object(props) => {
-                self.w("__obj([");
+                self.open(names::OBJECT);
+                self.w("[");
                 for (i, p) in props.iter().enumerate() {
                     if i > 0 {
                         self.w(", ");
@@ -122,17 +128,17 @@ impl Gen<'_, '_> {
                 if let ExprKind::Ident(o) = &object.kind
                     && o == "Math"
                     && self.is_host("Math")
-                    && let Some(c) = host::math_constant(&property.name)
+                    && let Some(c) = builtins::math_constant(&property.name)
                 {
                     return self.w(&number(c));
                 }
-                self.w("__get(");
+                self.open(names::GET);
                 self.expr(object);
                 self.w(&format!(", {})", quote(&property.name)));
             }
             ExprKind::Index { object, index } => {
                 self.mark(e.span);
-                self.w("__get(");
+                self.open(names::GET);
                 self.expr(object);
                 self.w(", ");
                 self.expr(index);
@@ -144,7 +150,7 @@ impl Gen<'_, '_> {
             }
             ExprKind::New { callee, args } => {
                 self.mark(e.span);
-                self.w("__new(");
+                self.open(names::NEW);
                 self.expr(callee);
                 self.w(", ");
                 self.list(args);
@@ -155,11 +161,11 @@ impl Gen<'_, '_> {
                     && let ExprKind::Ident(n) = &operand.kind
                     && matches!(self.model.scopes.resolve(n, self.at), Symbol::Global(_))
                     && self.model.global(n).is_none()
-                    && host::constant(n).is_none()
+                    && builtins::constant(n).is_none()
                 {
                     let t = if n == "Math" {
                         "object"
-                    } else if host::knows(n) {
+                    } else if builtins::knows(n) {
                         "function"
                     } else {
                         "undefined"
@@ -168,13 +174,16 @@ impl Gen<'_, '_> {
                 }
                 self.mark(e.span);
                 let f = match op {
-                    UnaryOp::Neg => "__neg(",
-                    UnaryOp::Plus => "__pos(",
-                    UnaryOp::Not => "!__t(",
-                    UnaryOp::BitNot => "__bnot(",
-                    UnaryOp::Typeof => "__typeof(",
+                    UnaryOp::Neg => names::NEG,
+                    UnaryOp::Plus => names::POS,
+                    UnaryOp::Not => {
+                        self.w("!");
+                        names::TRUTHY
+                    }
+                    UnaryOp::BitNot => names::BNOT,
+                    UnaryOp::Typeof => names::TYPEOF,
                 };
-                self.w(f);
+                self.open(f);
                 self.expr(operand);
                 self.w(")");
             }
@@ -184,13 +193,14 @@ impl Gen<'_, '_> {
                 flatten_add(e, &mut terms);
                 self.mark(e.span);
                 if terms.len() == 2 {
-                    self.w("__add(");
+                    self.open(names::ADD);
                     self.expr(terms[0]);
                     self.w(", ");
                     self.expr(terms[1]);
                     self.w(")");
                 } else {
-                    self.w("__adds([");
+                    self.open(names::ADDS);
+                    self.w("[");
                     for (i, t) in terms.iter().enumerate() {
                         if i > 0 {
                             self.w(", ");
@@ -259,7 +269,7 @@ impl Gen<'_, '_> {
                 let name = &property.name;
                 if let ExprKind::Ident(o) = &object.kind {
                     if o == "Math" && self.is_host("Math") {
-                        self.w(&format!("__math({}, ", quote(name)));
+                        self.w(&format!("{MATH}({}, ", quote(name), MATH = names::MATH));
                         self.list(args);
                         return self.w(")");
                     }
@@ -269,20 +279,22 @@ impl Gen<'_, '_> {
                     };
                     match (bound, name.as_str()) {
                         (Some(Binding::Var(id)), "format") => {
-                            self.w(&format!("__vfmt({id}, "));
+                            self.w(&format!("{VAR_FORMAT}({id}, ", VAR_FORMAT = names::VAR_FORMAT));
                             self.first_arg(args);
                             return self.w(")");
                         }
-                        (Some(Binding::Var(id)), "getLast") => return self.w(&format!("__vlast({id})")),
+                        (Some(Binding::Var(id)), "getLast") => {
+                            return self.w(&format!("{VAR_LAST}({id})", VAR_LAST = names::VAR_LAST));
+                        }
                         (Some(Binding::Format(id)), "format") => {
-                            self.w(&format!("__ffmt({id}, "));
+                            self.w(&format!("{FORMAT_FORMAT}({id}, ", FORMAT_FORMAT = names::FORMAT_FORMAT));
                             self.first_arg(args);
                             return self.w(")");
                         }
                         _ => {}
                     }
                 }
-                self.w("__callm(");
+                self.open(names::CALL_METHOD);
                 self.expr(object);
                 self.w(&format!(", {}, ", quote(name)));
                 self.list(args);
@@ -293,7 +305,12 @@ impl Gen<'_, '_> {
                     let id = self.model.scopes.top_fns[i];
                     let rhai = fn_name(name);
                     if self.model.scopes.funcs[id].uses_this {
-                        self.w(&format!("__call(__fnobj({}), ", quote(&rhai)));
+                        self.w(&format!(
+                            "{CALL}({FUNCTION_OBJECT}({}), ",
+                            quote(&rhai),
+                            CALL = names::CALL,
+                            FUNCTION_OBJECT = names::FUNCTION_OBJECT
+                        ));
                         self.list(args);
                         self.w(")");
                     } else {
@@ -305,16 +322,16 @@ impl Gen<'_, '_> {
                 Symbol::Global(g) if self.model.global(&g).is_none() && !self.setup.bindings.contains_key(&g) => {
                     if g == "getFeedrate" {
                         self.w(&format!("{}(", fn_name("getFeedrate")));
-                    } else if host::FUNCTIONS.contains(&g.as_str()) {
-                        self.w(&format!("__host({}, ", quote(&g)));
+                    } else if builtins::FUNCTIONS.contains(&g.as_str()) {
+                        self.w(&format!("{HOST}({}, ", quote(&g), HOST = names::HOST));
                     } else {
-                        self.w(&format!("__call(__undef({}), ", quote(&g)));
+                        self.w(&format!("{CALL}({UNDEF}({}), ", quote(&g), CALL = names::CALL, UNDEF = names::UNDEF));
                     }
                     self.list(args);
                     self.w(")");
                 }
                 _ => {
-                    self.w("__call(");
+                    self.open(names::CALL);
                     self.expr(callee);
                     self.w(", ");
                     self.list(args);
@@ -322,7 +339,7 @@ impl Gen<'_, '_> {
                 }
             },
             _ => {
-                self.w("__call(");
+                self.open(names::CALL);
                 self.expr(callee);
                 self.w(", ");
                 self.list(args);
@@ -352,25 +369,25 @@ fn flatten_add<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {
 
 pub(super) fn binary_fn(op: BinaryOp) -> &'static str {
     match op {
-        BinaryOp::Add => "__add",
-        BinaryOp::Sub => "__sub",
-        BinaryOp::Mul => "__mul",
-        BinaryOp::Div => "__div",
-        BinaryOp::Rem => "__rem",
-        BinaryOp::Shl => "__shl",
-        BinaryOp::Shr => "__shr",
-        BinaryOp::UShr => "__ushr",
-        BinaryOp::BitAnd => "__band",
-        BinaryOp::BitOr => "__bor",
-        BinaryOp::BitXor => "__bxor",
-        BinaryOp::Eq => "__eq",
-        BinaryOp::Ne => "__ne",
-        BinaryOp::StrictEq => "__seq",
-        BinaryOp::StrictNe => "__sne",
-        BinaryOp::Lt => "__lt",
-        BinaryOp::Le => "__le",
-        BinaryOp::Gt => "__gt",
-        BinaryOp::Ge => "__ge",
+        BinaryOp::Add => names::ADD,
+        BinaryOp::Sub => names::SUB,
+        BinaryOp::Mul => names::MUL,
+        BinaryOp::Div => names::DIV,
+        BinaryOp::Rem => names::REM,
+        BinaryOp::Shl => names::SHL,
+        BinaryOp::Shr => names::SHR,
+        BinaryOp::UShr => names::USHR,
+        BinaryOp::BitAnd => names::BAND,
+        BinaryOp::BitOr => names::BOR,
+        BinaryOp::BitXor => names::BXOR,
+        BinaryOp::Eq => names::EQ,
+        BinaryOp::Ne => names::NE,
+        BinaryOp::StrictEq => names::SEQ,
+        BinaryOp::StrictNe => names::SNE,
+        BinaryOp::Lt => names::LT,
+        BinaryOp::Le => names::LE,
+        BinaryOp::Gt => names::GT,
+        BinaryOp::Ge => names::GE,
     }
 }
 
@@ -381,7 +398,7 @@ fn constant(c: &super::super::consts::Const) -> String {
         Const::Num(n) => number(*n),
         Const::Str(s) => quote(s),
         Const::Bool(b) => b.to_string(),
-        Const::Null => "__null()".into(),
+        Const::Null => format!("{}()", names::NULL),
         Const::Undefined => "()".into(),
     }
 }

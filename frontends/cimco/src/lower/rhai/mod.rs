@@ -36,6 +36,7 @@ mod assign;
 mod expr;
 mod stmt;
 
+use crate::host_names as names;
 use postc_ir::Span;
 
 use crate::ast::*;
@@ -108,6 +109,12 @@ impl<'c, 'a> Gen<'c, 'a> {
         self.out.push_str(s);
     }
 
+    /// Opens a call of a host function: its name and `(`.
+    fn open(&mut self, function: &str) {
+        self.out.push_str(function);
+        self.out.push('(');
+    }
+
     /// A top-level function (or postc glue) as `fn NAME(a) { ... }`.
     pub fn function(&mut self, rhai_name: &str, id: FnId) {
         let info = &self.model.scopes.funcs[id];
@@ -147,10 +154,10 @@ impl<'c, 'a> Gen<'c, 'a> {
         let args = args_var(id);
         let mut text = String::new();
         for (i, p) in info.params.iter().enumerate() {
-            text.push_str(&format!("let {} = __arg({args}, {i});\n", local_name(p)));
+            text.push_str(&format!("let {} = {ARG}({args}, {i});\n", local_name(p), ARG = names::ARG));
         }
         if info.uses_arguments {
-            text.push_str(&format!("let {} = __arr({args});\n", arguments_name(id)));
+            text.push_str(&format!("let {} = {ARRAY}({args});\n", arguments_name(id), ARRAY = names::ARRAY));
         }
         for l in &info.locals[info.params.len()..] {
             text.push_str(&format!("let {} = ();\n", local_name(l)));
@@ -176,7 +183,7 @@ impl<'c, 'a> Gen<'c, 'a> {
         };
         let (at, jumps) = (self.at, std::mem::take(&mut self.jumps));
         self.at = id;
-        self.w(&format!("__fn(|{}| {{\n", args_var(id)));
+        self.w(&format!("{FUNCTION}(|{}| {{\n", args_var(id), FUNCTION = names::FUNCTION));
         self.prologue(id);
         for s in &f.body {
             self.stmt(s);
@@ -238,9 +245,9 @@ pub fn quote(s: &str) -> String {
 /// A Rhai float literal (or a host call for NaN and infinities).
 pub fn number(n: f64) -> String {
     if n.is_nan() {
-        "__nan()".into()
+        format!("{}()", names::NAN)
     } else if n.is_infinite() {
-        if n > 0.0 { "__inf()".into() } else { "(-__inf())".into() }
+        if n > 0.0 { format!("{}()", names::INF) } else { format!("(-{}())", names::INF) }
     } else if n < 0.0 || (n == 0.0 && n.is_sign_negative()) {
         format!("(-{:?})", -n)
     } else {

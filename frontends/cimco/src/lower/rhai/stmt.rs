@@ -1,6 +1,7 @@
 //! Statements in Rhai.
 
 use crate::ast::*;
+use crate::host_names as names;
 
 use super::{Gen, Jump, local_name};
 
@@ -98,7 +99,7 @@ impl Gen<'_, '_> {
             StmtKind::ForIn { name, object, body, .. } => {
                 self.loop_at = s.span.start;
                 let k = self.temp("k");
-                self.w(&format!("for {k} in __keys("));
+                self.w(&format!("for {k} in {KEYS}(", KEYS = names::KEYS));
                 self.expr(object);
                 self.w(") {\n");
                 let target = Expr::new(ExprKind::Ident(name.name.clone()), name.span);
@@ -112,7 +113,7 @@ impl Gen<'_, '_> {
             StmtKind::Continue => self.jump_continue(),
             StmtKind::Return(e) => {
                 let tried = self.jumps.iter().any(|j| matches!(j, Jump::Try));
-                self.w(if tried { "throw __jump(1, " } else { "return " });
+                self.w(&if tried { format!("throw {}(1, ", names::JUMP) } else { "return ".to_string() });
                 match e {
                     Some(e) => self.expr(e),
                     None => self.w("()"),
@@ -132,7 +133,7 @@ impl Gen<'_, '_> {
     /// `try` whose `finally` must run.
     fn jump_break(&mut self) {
         match self.jumps.last().cloned() {
-            Some(Jump::Try) => self.w("throw __jump(2, ());\n"),
+            Some(Jump::Try) => self.w(&format!("throw {}(2, ());\n", names::JUMP)),
             _ => self.w("break;\n"),
         }
     }
@@ -142,7 +143,7 @@ impl Gen<'_, '_> {
     fn jump_continue(&mut self) {
         match self.jumps.last().cloned() {
             Some(Jump::Switch(flag)) => self.w(&format!("{flag} = true;\nbreak;\n")),
-            Some(Jump::Try) => self.w("throw __jump(3, ());\n"),
+            Some(Jump::Try) => self.w(&format!("throw {}(3, ());\n", names::JUMP)),
             _ => self.w("continue;\n"),
         }
     }
@@ -151,7 +152,7 @@ impl Gen<'_, '_> {
     /// names this loop when it runs out.
     fn loop_body(&mut self, body: &Stmt) {
         self.jumps.push(Jump::Loop);
-        self.w(&format!("__tick({});\n", self.loop_at));
+        self.w(&format!("{TICK}({});\n", self.loop_at, TICK = names::TICK));
         self.stmt(body);
         self.jumps.pop();
     }
@@ -170,7 +171,7 @@ impl Gen<'_, '_> {
                 self.mark(t.span);
                 self.w(if first { "if " } else { " else if " });
                 first = false;
-                self.w(&format!("__seq({d}, "));
+                self.w(&format!("{SEQ}({d}, ", SEQ = names::SEQ));
                 self.expr(t);
                 self.w(&format!(") {{ {i} = {k}; }}"));
             }
@@ -205,7 +206,9 @@ impl Gen<'_, '_> {
     fn try_stmt(&mut self, block: &[Stmt], handler: Option<&CatchClause>, finalizer: Option<&[Stmt]>) {
         let (c, v, e) = (self.temp("c"), self.temp("v"), self.temp("e"));
         let record = format!(
-            "let {c}_k = __jump_kind({e});\nif {c}_k > 0 {{\n{c} = {c}_k;\n{v} = __jump_value({e});\n}} else {{\n"
+            "let {c}_k = {JUMP_KIND}({e});\nif {c}_k > 0 {{\n{c} = {c}_k;\n{v} = {JUMP_VALUE}({e});\n}} else {{\n",
+            JUMP_KIND = names::JUMP_KIND,
+            JUMP_VALUE = names::JUMP_VALUE
         );
         self.w(&format!("let {c} = 0;\nlet {v} = ();\ntry {{\n"));
         self.jumps.push(Jump::Try);
@@ -218,15 +221,14 @@ impl Gen<'_, '_> {
                 let e2 = self.temp("e");
                 self.w("try {\n");
                 let target = Expr::new(ExprKind::Ident(h.param.name.clone()), h.param.span);
-                self.store(&target, &format!("__caught({e})"));
+                self.store(&target, &format!("{CAUGHT}({e})", CAUGHT = names::CAUGHT));
                 self.w(";\n");
                 for s in &h.body {
                     self.stmt(s);
                 }
                 let c2 = format!("{c}_k2");
                 self.w(&format!(
-                    "}} catch ({e2}) {{\nlet {c2} = __jump_kind({e2});\nif {c2} > 0 {{\n{c} = {c2};\n{v} = __jump_value({e2});\n}} else {{\n{c} = 4;\n{v} = {e2};\n}}\n}}\n"
-                ));
+                    "}} catch ({e2}) {{\nlet {c2} = {JUMP_KIND}({e2});\nif {c2} > 0 {{\n{c} = {c2};\n{v} = {JUMP_VALUE}({e2});\n}} else {{\n{c} = 4;\n{v} = {e2};\n}}\n}}\n", JUMP_KIND = names::JUMP_KIND, JUMP_VALUE = names::JUMP_VALUE));
             }
             None => self.w(&format!("{c} = 4;\n{v} = {e};\n")),
         }
@@ -237,7 +239,7 @@ impl Gen<'_, '_> {
         }
         self.w(&format!("if {c} == 1 {{\n"));
         let tried = self.jumps.iter().any(|j| matches!(j, Jump::Try));
-        self.w(&if tried { format!("throw __jump(1, {v});\n") } else { format!("return {v};\n") });
+        self.w(&if tried { format!("throw {JUMP}(1, {v});\n", JUMP = names::JUMP) } else { format!("return {v};\n") });
         // Outside any loop a `break` or `continue` cannot have left the
         // `try` (and Rhai refuses one there).
         if !self.jumps.is_empty() {
@@ -260,12 +262,16 @@ impl Gen<'_, '_> {
         match &target.kind {
             ExprKind::Ident(name) => match self.target_of(name) {
                 super::expr::Target::Local(v) => self.w(&format!("{v} = {value}")),
-                super::expr::Target::Global(i) => self.w(&format!("__gs({i}, {value})")),
-                super::expr::Target::None => self.w(&format!("__assign_error({})", super::quote(name))),
+                super::expr::Target::Global(i) => {
+                    self.w(&format!("{GLOBAL_SET}({i}, {value})", GLOBAL_SET = names::GLOBAL_SET))
+                }
+                super::expr::Target::None => {
+                    self.w(&format!("{ASSIGN_ERROR}({})", super::quote(name), ASSIGN_ERROR = names::ASSIGN_ERROR))
+                }
             },
             _ => {
                 let _ = local_name;
-                self.w(&format!("__assign_error({})", super::quote("?")));
+                self.w(&format!("{ASSIGN_ERROR}({})", super::quote("?"), ASSIGN_ERROR = names::ASSIGN_ERROR));
             }
         }
     }

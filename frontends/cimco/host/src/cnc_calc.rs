@@ -2,25 +2,25 @@
 //! bound at compile time or made by `createFormat` / `createVariable` while
 //! the post runs), `getFeedrate`, the compensation passed to
 //! `onCompensation`, the `drillHeader` objects of `onDrillingHeader` and
-//! `onDrilling`, the global functions, and the turning of a lathe
-//! toolpath into the runtime's XY plane. `docs/cimco.md` gives the rules.
+//! `onDrilling`, and the global functions. `docs/cimco.md` gives the
+//! rules.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use postc_ir::event::{ArcMove, CompSide, DrillKind, Event, Plane};
+use postc_front_cimco::host_names as names;
+use postc_ir::event::{CompSide, DrillKind};
 use postc_ir::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
 use rhai::{Array, Dynamic, Engine, EvalAltResult, NativeCallContext};
 
-use super::host::{Shared, State};
-use super::js;
-use super::ops::fail;
-use super::values::{
+use crate::compiled::{Shared, State};
+use crate::ops::fail;
+use crate::values::{
     self, DynFormat, DynVar, DynVarState, FmtRef, JsArr, JsObj, ObjKind, VarRef, num, text, to_number, to_string,
 };
-use crate::engine::put_number;
-use crate::number::NumberWriter;
-use crate::value::Value;
+use postc_runtime::js;
+use postc_runtime::number::NumberWriter;
+use postc_runtime::value::Value;
 
 type R = Result<Dynamic, Box<EvalAltResult>>;
 
@@ -29,20 +29,22 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_type_with_name::<FmtRef>("format");
     engine.register_type_with_name::<DynVar>("variable");
     engine.register_type_with_name::<DynFormat>("format");
-    engine.register_fn("__vref", |id: i64| VarRef(id as u16));
-    engine.register_fn("__fref", |id: i64| FmtRef(id as u16));
+    engine.register_fn(names::VAR_REF, |id: i64| VarRef(id as u16));
+    engine.register_fn(names::FORMAT_REF, |id: i64| FmtRef(id as u16));
     let s = state.clone();
-    engine.register_fn("__vfmt", move |id: i64, v: Dynamic| {
+    engine.register_fn(names::VAR_FORMAT, move |id: i64, v: Dynamic| {
         text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v)))
     });
     let s = state.clone();
-    engine.register_fn("__vlast", move |id: i64| num(last(&s.borrow(), id as u16)));
+    engine.register_fn(names::VAR_LAST, move |id: i64| num(last(&s.borrow(), id as u16)));
     let s = state.clone();
-    engine.register_fn("__ffmt", move |id: i64, v: Dynamic| text(format_with(&s.borrow(), id as u16, to_number(&v))));
+    engine.register_fn(names::FORMAT_FORMAT, move |id: i64, v: Dynamic| {
+        text(format_with(&s.borrow(), id as u16, to_number(&v)))
+    });
     let s = state.clone();
-    engine.register_fn("__feedrate", move |m: Dynamic| text(feedrate(&mut s.borrow_mut(), &m)));
+    engine.register_fn(names::FEEDRATE, move |m: Dynamic| text(feedrate(&mut s.borrow_mut(), &m)));
     let s = state.clone();
-    engine.register_fn("__comp", move || {
+    engine.register_fn(names::COMPENSATION, move || {
         num(match s.borrow().ctx.comp {
             CompSide::Off => 0.0,
             CompSide::Left => 1.0,
@@ -50,9 +52,9 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         })
     });
     let s = state.clone();
-    engine.register_fn("__drill_header", move || drill_header(&s.borrow()));
+    engine.register_fn(names::DRILL_HEADER, move || drill_header(&s.borrow()));
     let s = state.clone();
-    engine.register_fn("__turn_drill", move || turn_drill(&s.borrow()));
+    engine.register_fn(names::TURN_DRILL, move || turn_drill(&s.borrow()));
 }
 
 /// The host's `getFeedrate(movement)`: nothing for a rapid, else the feed
@@ -77,13 +79,12 @@ fn format_var(st: &mut State, id: u16, v: f64) -> String {
     };
     let Some(w) = writers.get(f as usize) else { return String::new() };
     let mut buf = Vec::new();
-    put_number(modal.get(i).copied().unwrap_or(true), w, state, prefix, v, &mut buf);
-    state.previous = std::mem::replace(&mut state.value, Value::Num(v));
+    state.format_number(modal.get(i).copied().unwrap_or(true), w, prefix, v, &mut buf);
     String::from_utf8_lossy(&buf).into_owned()
 }
 
 fn last(st: &State, id: u16) -> f64 {
-    st.vars.get(id as usize).map_or(0.0, |v| match v.value {
+    st.vars.get(id as usize).map_or(0.0, |v| match *v.value() {
         Value::Null => 0.0,
         ref other => other.num(),
     })
@@ -108,8 +109,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
             "getLast" => Ok(num(last(&state.borrow(), id))),
             "reset" => {
                 if let Some(v) = state.borrow_mut().vars.get_mut(id as usize) {
-                    v.has_last = false;
-                    v.key = None;
+                    v.forget();
                 }
                 Ok(Dynamic::UNIT)
             }
@@ -202,27 +202,29 @@ pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
 pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Array) -> R {
     let a = |i: usize| args.get(i).cloned().unwrap_or(Dynamic::UNIT);
     Ok(match name {
-        "parseInt" => num(js::parse_int(&to_string(&a(0)), if a(1).is_unit() { 0.0 } else { to_number(&a(1)) })),
-        "parseFloat" => num(js::parse_float(&to_string(&a(0)))),
-        "isNaN" => Dynamic::from_bool(to_number(&a(0)).is_nan()),
-        "isFinite" => Dynamic::from_bool(to_number(&a(0)).is_finite()),
-        "String" => text(if args.is_empty() { String::new() } else { to_string(&a(0)) }),
-        "Number" => num(if args.is_empty() { 0.0 } else { to_number(&a(0)) }),
-        "Boolean" => Dynamic::from_bool(values::truthy(&a(0))),
-        "Array" => Dynamic::from(JsArr::new(if args.len() == 1 && a(0).is::<f64>() { Vec::new() } else { args })),
-        "Object" => Dynamic::from(JsObj::new(ObjKind::Plain)),
-        "Error" => {
+        names::PARSE_INT => num(js::parse_int(&to_string(&a(0)), if a(1).is_unit() { 0.0 } else { to_number(&a(1)) })),
+        names::PARSE_FLOAT => num(js::parse_float(&to_string(&a(0)))),
+        names::IS_NAN => Dynamic::from_bool(to_number(&a(0)).is_nan()),
+        names::IS_FINITE => Dynamic::from_bool(to_number(&a(0)).is_finite()),
+        names::STRING => text(if args.is_empty() { String::new() } else { to_string(&a(0)) }),
+        names::NUMBER => num(if args.is_empty() { 0.0 } else { to_number(&a(0)) }),
+        names::BOOLEAN => Dynamic::from_bool(values::truthy(&a(0))),
+        names::ARRAY_FN => {
+            Dynamic::from(JsArr::new(if args.len() == 1 && a(0).is::<f64>() { Vec::new() } else { args }))
+        }
+        names::OBJECT_FN => Dynamic::from(JsObj::new(ObjKind::Plain)),
+        names::ERROR_FN => {
             let o = JsObj::new(ObjKind::Plain);
             o.set("message", text(to_string(&a(0))));
             o.set("name", text("Error"));
             Dynamic::from(o)
         }
-        "getCompensation" => text(""),
-        "getFeedrate" => text(feedrate(&mut state.borrow_mut(), &a(0))),
-        "createFormat" => {
+        names::GET_COMPENSATION => text(""),
+        names::GET_FEEDRATE => text(feedrate(&mut state.borrow_mut(), &a(0))),
+        names::CREATE_FORMAT => {
             let st = state.borrow();
             let mark = match to_string(
-                &[global(&st, "decimalMark"), global(&st, "globals.decimalMark")]
+                &[global(&st, names::DECIMAL_MARK), global(&st, names::GLOBALS_DECIMAL_MARK)]
                     .into_iter()
                     .find(|v| !v.is_unit())
                     .unwrap_or(Dynamic::UNIT),
@@ -234,7 +236,7 @@ pub fn host_call(_ctx: &NativeCallContext, state: &Shared, name: &str, args: Arr
             };
             Dynamic::from(DynFormat(Rc::new(NumberWriter::new(&cimco_format(&a(0), mark)))))
         }
-        "createVariable" => {
+        names::CREATE_VARIABLE => {
             let st = state.borrow();
             let props = a(0);
             let get = |k: &str| props.clone().try_cast::<JsObj>().and_then(|o| o.get(k)).unwrap_or(Dynamic::UNIT);
@@ -290,7 +292,7 @@ fn drill_header(st: &State) -> Dynamic {
     let o = JsObj::new(ObjKind::Plain);
     let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
     let f = st.ctx.factor;
-    let (name, longhand) = name_and_longhand(st, "MillDrillingFields");
+    let (name, longhand) = name_and_longhand(st, names::MILL_DRILLING_FIELDS);
     let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
     let peck = c.peck.filter(|p| *p > 0.0).map_or(0.0, |p| p * f);
     let dwell = c.dwell.filter(|d| *d > 0.0);
@@ -335,7 +337,7 @@ fn turn_drill(st: &State) -> Dynamic {
     let o = JsObj::new(ObjKind::Plain);
     let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
     let f = st.ctx.factor;
-    let (name, longhand) = name_and_longhand(st, "TurnDrillingFields");
+    let (name, longhand) = name_and_longhand(st, names::TURN_DRILLING_FIELDS);
     let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
     let pecking = matches!(c.kind, DrillKind::Deep | DrillKind::ChipBreak) && c.peck.is_some_and(|p| p > 0.0);
     let peck = if pecking { c.peck.unwrap_or(0.0) * f } else { 0.0 };
@@ -367,51 +369,4 @@ fn turn_drill(st: &State) -> Dynamic {
     set(&["drillDiameter"], num(st.ctx.tool_diameter));
     set(&["drillTipAngle"], num(118.0));
     Dynamic::from(o)
-}
-
-/// A lathe toolpath in the runtime's terms: (x, y, z) becomes (z, x, y),
-/// so the turning plane ZX (X the radius, Z along the spindle) lies in
-/// the runtime's XY plane with the same sense of rotation, and G18 arcs
-/// reach the arc sections. Handlers read the lathe's X from Y and its Z
-/// from X.
-pub fn turn_event(event: Event) -> Event {
-    let p = |x: f64, y: f64, z: f64| (z, x, y);
-    match event {
-        Event::Rapid(mut m) => {
-            (m.x, m.y, m.z) = p(m.x, m.y, m.z);
-            Event::Rapid(m)
-        }
-        Event::Feed(mut m) => {
-            (m.x, m.y, m.z) = p(m.x, m.y, m.z);
-            Event::Feed(m)
-        }
-        Event::Arc(a) => Event::Arc(turn_arc(a)),
-        Event::DrillPoint(mut d) => {
-            (d.x, d.y, d.z) = p(d.x, d.y, d.z);
-            Event::DrillPoint(d)
-        }
-        Event::Job(mut job) => {
-            if let Some(h) = &mut job.home {
-                (h.x, h.y, h.z) = p(h.x, h.y, h.z);
-            }
-            if let Some(m) = &mut job.material {
-                for q in [&mut m.min, &mut m.max] {
-                    (q.x, q.y, q.z) = p(q.x, q.y, q.z);
-                }
-            }
-            Event::Job(job)
-        }
-        other => other,
-    }
-}
-
-fn turn_arc(mut a: ArcMove) -> ArcMove {
-    (a.x, a.y, a.z) = (a.z, a.x, a.y);
-    (a.cx, a.cy, a.cz) = (a.cz, a.cx, a.cy);
-    a.plane = match a.plane {
-        Plane::Zx => Plane::Xy,
-        Plane::Xy => Plane::Yz,
-        Plane::Yz => Plane::Zx,
-    };
-    a
 }

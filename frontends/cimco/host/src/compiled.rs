@@ -1,5 +1,6 @@
-//! The Rhai engine of a run: built and compiled once, called for each
-//! script function, with the engine's shared state moved in for the call.
+//! The compiled script of a run: the Rhai engine, built and the script
+//! compiled once, called for each script function, with the engine's
+//! shared state moved in for the call.
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -8,10 +9,14 @@ use postc_ir::event::{CompSide, DrillCycle};
 use postc_ir::{Diagnostic, Script, Span};
 use rhai::{AST, Array, CallFnOptions, Dynamic, EvalAltResult, Position, Scope};
 
-use super::values::{self, JsObj};
-use crate::engine::{Engine, VarState};
-use crate::number::NumberWriter;
-use crate::value::Value;
+use postc_front_cimco::host_names;
+use postc_runtime::Engine;
+use postc_runtime::number::NumberWriter;
+use postc_runtime::script_host::{self as runtime, VarState};
+use postc_runtime::value::Value;
+
+use crate::Notes;
+use crate::values::{self, JsObj};
 
 /// Everything host functions read and write, shared with the registered
 /// functions through an `Rc`.
@@ -60,21 +65,15 @@ pub(crate) struct Context {
 pub(crate) type Shared = Rc<RefCell<State>>;
 
 /// A compiled script and its engine.
-pub struct ScriptHost {
+pub(crate) struct Compiled {
     engine: rhai::Engine,
     ast: AST,
     pub(crate) state: Shared,
     script: Script,
 }
 
-impl std::fmt::Debug for ScriptHost {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("ScriptHost")
-    }
-}
-
-impl ScriptHost {
-    pub(crate) fn new(eng: &Engine) -> Result<ScriptHost, Diagnostic> {
+impl Compiled {
+    pub(crate) fn new(eng: &Engine) -> Result<Compiled, Diagnostic> {
         let post = eng.post;
         let script = post.scripts.first().cloned().unwrap_or_else(|| Script {
             language: postc_ir::ScriptLanguage::Rhai,
@@ -86,15 +85,15 @@ impl ScriptHost {
             vars: Vec::new(),
             globals: Vec::new(),
             objects: vec![Dynamic::UNIT; post.globals.len()],
-            writers: eng.writers.clone(),
-            prefixes: eng.prefixes.clone(),
-            modal: post.variables.iter().map(crate::engine::is_modal).collect(),
+            writers: eng.writers().to_vec(),
+            prefixes: eng.prefixes().to_vec(),
+            modal: post.variables.iter().map(runtime::is_modal).collect(),
             var_formats: post.variables.iter().map(|v| v.format.raw()).collect(),
             functions: Default::default(),
             ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),
-            feed_var: post.variables.iter().position(|v| v.name == "__postc_feed").map(|i| i as u16),
-            feed_rev_var: post.variables.iter().position(|v| v.name == "__postc_feed_rev").map(|i| i as u16),
+            feed_var: post.variables.iter().position(|v| v.name == host_names::FEED_VAR).map(|i| i as u16),
+            feed_rev_var: post.variables.iter().position(|v| v.name == host_names::FEED_REV_VAR).map(|i| i as u16),
             ticks: 0,
             max_ticks: post.options.step_budget.max(1),
             last_loop: None,
@@ -107,16 +106,16 @@ impl ScriptHost {
         engine.set_max_expr_depths(256, 256);
         // The same text budget as native code (RT031); arrays and object
         // tables get one too, so no post can take all the memory.
-        engine.set_max_string_size(crate::interp::MAX_TEXT_BYTES);
+        engine.set_max_string_size(runtime::MAX_TEXT_BYTES);
         engine.set_max_array_size(MAX_ITEMS);
         engine.set_max_map_size(MAX_ITEMS);
         engine.disable_symbol("eval");
         engine.register_iterator::<Array>();
         engine.on_print(|_| {});
         engine.on_debug(|_, _, _| {});
-        super::ops::register(&mut engine, &state);
-        super::props::register(&mut engine, &state);
-        super::cimco::register(&mut engine, &state);
+        crate::ops::register(&mut engine, &state);
+        crate::props::register(&mut engine, &state);
+        crate::cnc_calc::register(&mut engine, &state);
         let ast = engine.compile(&script.source).map_err(|e| {
             let pos = e.position();
             let d = Diagnostic::error(
@@ -129,15 +128,20 @@ impl ScriptHost {
             }
             .note("this is a bug in postc")
         })?;
-        Ok(ScriptHost { engine, ast, state, script })
+        Ok(Compiled { engine, ast, state, script })
     }
 
     /// Calls the script function of post function `name`.
-    pub(crate) fn call(&mut self, eng: &mut Engine, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+    pub(crate) fn call(
+        &mut self,
+        eng: &mut Engine,
+        notes: &Notes,
+        name: &str,
+        args: Vec<Value>,
+    ) -> Result<Value, Box<Diagnostic>> {
         {
             let mut st = self.state.borrow_mut();
-            st.vars = std::mem::take(&mut eng.vars);
-            st.globals = std::mem::take(&mut eng.globals);
+            (st.vars, st.globals) = eng.lend_shared();
             let m = &eng.machine;
             st.ctx.feed = m.feed;
             st.ctx.feed_per_rev = m.toolpath.feed_per_rev;
@@ -146,9 +150,9 @@ impl ScriptHost {
             st.ctx.spindle = m.spindle_speed;
             st.ctx.tool_diameter = m.tool.diameter;
             st.ctx.pos = m.pos;
-            st.ctx.drill = eng.cimco.notes.drill.clone();
-            st.ctx.comp = eng.cimco.notes.comp;
-            st.ctx.epoch = eng.cimco.epoch;
+            st.ctx.drill = notes.drill.clone();
+            st.ctx.comp = notes.comp;
+            st.ctx.epoch = eng.modal_epoch();
             st.ticks = 0;
             st.last_loop = None;
         }
@@ -159,8 +163,8 @@ impl ScriptHost {
         let result = self.engine.call_fn_with_options::<Dynamic>(options, &mut scope, &self.ast, &fn_name, (arr,));
         {
             let mut st = self.state.borrow_mut();
-            eng.vars = std::mem::take(&mut st.vars);
-            eng.globals = std::mem::take(&mut st.globals);
+            let shared = (std::mem::take(&mut st.vars), std::mem::take(&mut st.globals));
+            eng.return_shared(shared);
         }
         match result {
             Ok(v) => Ok(values::to_value(&v).unwrap_or(Value::Null)),
@@ -195,10 +199,10 @@ impl ScriptHost {
                 Diagnostic::error("RT004", format!("calls nest too deep in `{name}` (endless recursion?)"))
             }
             EvalAltResult::ErrorDataTooLarge(what, _) if what.contains("Length of string") => {
-                crate::interp::text_budget_error(crate::interp::MAX_TEXT_BYTES + 1)
+                runtime::text_budget_error(runtime::MAX_TEXT_BYTES + 1)
             }
             EvalAltResult::ErrorDataTooLarge(what, _) => Diagnostic::error(
-                crate::interp::TEXT_BUDGET,
+                runtime::TEXT_BUDGET,
                 format!(
                     "the post built an array or object of more than {MAX_ITEMS} items in `{name}` and was stopped ({})",
                     what.to_lowercase()

@@ -3,7 +3,7 @@
 //! LOAD/TOOL, CUTTER, TLDATA) and UNITS. Each is read into plain data here;
 //! the reader decides which events they become.
 
-use postc_ir::event::{CompSide, Coolant, CutterComp, Dwell, Spindle};
+use postc_ir::event::{CompSide, Coolant, CoolantAt, CoolantChange, CutterComp, Dwell, FeedUnit, Spindle};
 use postc_ir::units::Units;
 
 use crate::words::{Arg, Problem, Rec};
@@ -15,28 +15,30 @@ pub(crate) struct FeedSpec {
     pub value: f64,
     pub per_rev: bool,
     pub units: Option<Units>,
+    /// The unit word as written, if any.
+    pub unit: Option<FeedUnit>,
 }
 
 impl FeedSpec {
     /// The feed unit a word names (`MMPM`, `IPM`, `MMPR`, `IPR`), value 0.
     pub fn unit_word(word: &[u8]) -> Option<FeedSpec> {
         let is = |name: &str| word.eq_ignore_ascii_case(name.as_bytes());
-        let (per_rev, units) = if is("MMPM") {
-            (false, Some(Units::Mm))
+        let unit = if is("MMPM") {
+            FeedUnit::Mmpm
         } else if is("IPM") {
-            (false, Some(Units::Inch))
+            FeedUnit::Ipm
         } else if is("MMPR") {
-            (true, Some(Units::Mm))
+            FeedUnit::Mmpr
         } else if is("IPR") {
-            (true, Some(Units::Inch))
+            FeedUnit::Ipr
         } else if is("PERMIN") || is("UPM") {
-            (false, None)
+            FeedUnit::PerMinute
         } else if is("PERREV") || is("UPR") {
-            (true, None)
+            FeedUnit::PerRev
         } else {
             return None;
         };
-        Some(FeedSpec { value: 0.0, per_rev, units })
+        Some(FeedSpec { value: 0.0, per_rev: unit.per_rev(), units: unit.units(), unit: Some(unit) })
     }
 
     /// The feed in `job` units per minute, given the spindle speed for feeds
@@ -50,7 +52,7 @@ impl FeedSpec {
 
 /// `FEDRAT/f[,unit]` or `FEDRAT/unit,f`.
 pub(crate) fn parse_fedrat(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Result<FeedSpec, Problem> {
-    let mut feed = FeedSpec { value: f64::NAN, per_rev: false, units: None };
+    let mut feed = FeedSpec { value: f64::NAN, per_rev: false, units: None, unit: None };
     for (i, arg) in rec.args().enumerate() {
         match arg {
             Arg::Num(v) if feed.value.is_nan() => feed.value = v,
@@ -58,6 +60,7 @@ pub(crate) fn parse_fedrat(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Res
                 Some(unit) => {
                     feed.per_rev = unit.per_rev;
                     feed.units = unit.units;
+                    feed.unit = unit.unit;
                 }
                 None => ignored(i),
             },
@@ -130,9 +133,11 @@ pub(crate) fn parse_spindl(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Res
     }
 }
 
-/// `COOLNT/ON|FLOOD|MIST|THRU|AIR|OFF[,NOW|NEXT]`.
-pub(crate) fn parse_coolnt(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Result<Coolant, Problem> {
+/// `COOLNT/ON|FLOOD|MIST|THRU|AIR|OFF[,NOW|NEXT]`: the coolant, and its
+/// placement as written (`NOW` wins when both are given).
+pub(crate) fn parse_coolnt(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Result<CoolantChange, Problem> {
     let mut coolant = None;
+    let mut at = None;
     for (i, arg) in rec.args().enumerate() {
         let Some(w) = arg.word() else {
             ignored(i);
@@ -150,14 +155,20 @@ pub(crate) fn parse_coolnt(rec: &Rec<'_>, ignored: &mut dyn FnMut(usize)) -> Res
         } else if is("OFF") {
             Coolant::Off
         } else {
-            if !(is("NOW") || is("NEXT")) {
+            if is("NOW") {
+                at = Some(CoolantAt::Now);
+            } else if is("NEXT") {
+                at = at.or(Some(CoolantAt::Next));
+            } else {
                 ignored(i);
             }
             continue;
         };
         coolant.get_or_insert(c);
     }
-    coolant.ok_or_else(|| Problem::new("COOLNT needs ON, FLOOD, MIST, THRU, AIR or OFF", None))
+    coolant
+        .map(|coolant| CoolantChange { coolant, at })
+        .ok_or_else(|| Problem::new("COOLNT needs ON, FLOOD, MIST, THRU, AIR or OFF", None))
 }
 
 /// `CUTCOM/LEFT|RIGHT[,n][,XYPLAN]`, `CUTCOM/OFF`; `CUTCOM/ON` alone gives

@@ -1,8 +1,10 @@
-//! The names postc's CNC-Calc host gives every post: constants, global
-//! functions, `Math`, and the methods of texts, arrays and output
-//! variables. `docs/cimco.md` lists them with their meaning.
+//! What the lowering knows of the names postc's CNC-Calc host gives every
+//! post: constants, global functions, `Math`, and the methods of texts,
+//! arrays and output variables. `docs/cimco.md` lists them with their
+//! meaning; the names the host registers are [`crate::host_names`].
 
 use super::consts::Const;
+use crate::host_names as names;
 
 /// Movement types passed as the last argument of `onLinear` and
 /// `onCircular`, and to `getFeedrate`.
@@ -56,26 +58,14 @@ pub const MATH_FUNCTIONS: &[&str] = &[
 ];
 
 /// Global functions the host provides.
-pub const FUNCTIONS: &[&str] = &[
-    "createFormat",
-    "createVariable",
-    "getFeedrate",
-    "getCompensation",
-    "parseInt",
-    "parseFloat",
-    "isNaN",
-    "isFinite",
-    "String",
-    "Number",
-    "Boolean",
-    "Array",
-    "Object",
-    "Error",
-];
+pub use crate::host_names::FUNCTIONS;
 
 /// Whether a name is something the host provides as an object (`Math`).
 pub fn is_object(name: &str) -> bool {
-    matches!(name, "Math" | "createFormat" | "createVariable" | "Array" | "Object" | "Error")
+    matches!(
+        name,
+        "Math" | names::CREATE_FORMAT | names::CREATE_VARIABLE | names::ARRAY_FN | names::OBJECT_FN | names::ERROR_FN
+    )
 }
 
 /// Whether the host knows the name at all.
@@ -87,15 +77,15 @@ pub fn knows(name: &str) -> bool {
 pub fn plain_function(name: &str) -> bool {
     matches!(
         name,
-        "getFeedrate"
-            | "getCompensation"
-            | "parseInt"
-            | "parseFloat"
-            | "isNaN"
-            | "isFinite"
-            | "String"
-            | "Number"
-            | "Boolean"
+        names::GET_FEEDRATE
+            | names::GET_COMPENSATION
+            | names::PARSE_INT
+            | names::PARSE_FLOAT
+            | names::IS_NAN
+            | names::IS_FINITE
+            | names::STRING
+            | names::NUMBER
+            | names::BOOLEAN
     )
 }
 

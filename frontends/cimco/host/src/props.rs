@@ -3,13 +3,14 @@
 //! expressions, objects and output variables), `__call`, `__new`, object
 //! and array literals, function objects, `Math`.
 
+use postc_front_cimco::host_names as names;
 use rhai::{Array, Dynamic, Engine, EvalAltResult, FnPtr, ImmutableString, Map, NativeCallContext};
 
-use super::host::Shared;
-use super::js;
-use super::ops::fail;
-use super::regex::Regex;
-use super::values::{self, JsArr, JsObj, JsRegex, ObjKind, num, text, to_number, to_string};
+use crate::compiled::Shared;
+use crate::ops::fail;
+use crate::regex::Regex;
+use crate::values::{self, JsArr, JsObj, JsRegex, ObjKind, num, text, to_number, to_string};
+use postc_runtime::js;
 
 type R = Result<Dynamic, Box<EvalAltResult>>;
 
@@ -17,7 +18,7 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_type_with_name::<JsObj>("object");
     engine.register_type_with_name::<JsArr>("array");
     engine.register_type_with_name::<JsRegex>("regexp");
-    engine.register_fn("__obj", |pairs: Array| {
+    engine.register_fn(names::OBJECT, |pairs: Array| {
         let o = JsObj::new(ObjKind::Plain);
         let mut it = pairs.into_iter();
         while let (Some(k), Some(v)) = (it.next(), it.next()) {
@@ -25,10 +26,10 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         }
         o
     });
-    engine.register_fn("__arr", |items: Array| JsArr::new(items));
-    engine.register_fn("__fn", |f: FnPtr| JsObj::new(ObjKind::Function(f)));
+    engine.register_fn(names::ARRAY, |items: Array| JsArr::new(items));
+    engine.register_fn(names::FUNCTION, |f: FnPtr| JsObj::new(ObjKind::Function(f)));
     let s = state.clone();
-    engine.register_fn("__fnobj", move |name: ImmutableString| -> R {
+    engine.register_fn(names::FUNCTION_OBJECT, move |name: ImmutableString| -> R {
         let mut st = s.borrow_mut();
         if let Some(o) = st.functions.get(name.as_str()) {
             return Ok(Dynamic::from(o.clone()));
@@ -38,25 +39,25 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         st.functions.insert(name.to_string(), o.clone());
         Ok(Dynamic::from(o))
     });
-    engine.register_fn("__regex", |p: ImmutableString, f: ImmutableString| -> R {
+    engine.register_fn(names::REGEX, |p: ImmutableString, f: ImmutableString| -> R {
         Regex::new(&p, &f)
             .map(|r| Dynamic::from(JsRegex(std::rc::Rc::new(r))))
             .map_err(|e| fail(format!("SyntaxError: {e}")))
     });
-    engine.register_fn("__math_obj", || JsObj::new(ObjKind::Math));
-    engine.register_fn("__hostfn", |name: ImmutableString| JsObj::new(ObjKind::Host(name.to_string())));
-    engine.register_fn("__math", |name: ImmutableString, args: Array| -> R { math(&name, &args) });
-    engine.register_fn("__get", |o: Dynamic, k: Dynamic| -> R { get(&o, &k) });
-    engine.register_fn("__set", |o: Dynamic, k: Dynamic, v: Dynamic| -> R { set(&o, &k, v) });
-    engine.register_fn("__keys", |o: Dynamic| -> Array { keys(&o) });
+    engine.register_fn(names::MATH_OBJECT, || JsObj::new(ObjKind::Math));
+    engine.register_fn(names::HOST_FUNCTION, |name: ImmutableString| JsObj::new(ObjKind::Host(name.to_string())));
+    engine.register_fn(names::MATH, |name: ImmutableString, args: Array| -> R { math(&name, &args) });
+    engine.register_fn(names::GET, |o: Dynamic, k: Dynamic| -> R { get(&o, &k) });
+    engine.register_fn(names::SET, |o: Dynamic, k: Dynamic, v: Dynamic| -> R { set(&o, &k, v) });
+    engine.register_fn(names::KEYS, |o: Dynamic| -> Array { keys(&o) });
     // A `return`, `break` or `continue` leaving a `try` is thrown as a
     // jump and caught by the translation of that `try`, which runs the
     // `finally` and then jumps (kind 1, 2, 3); other thrown values are 0.
     engine.register_type_with_name::<Jump>("jump");
-    engine.register_fn("__jump", |kind: i64, value: Dynamic| Dynamic::from(Jump(kind, value)));
-    engine.register_fn("__jump_kind", |e: Dynamic| e.try_cast::<Jump>().map_or(0, |j| j.0));
-    engine.register_fn("__jump_value", |e: Dynamic| e.try_cast::<Jump>().map_or(Dynamic::UNIT, |j| j.1));
-    engine.register_fn("__caught", |e: Dynamic| -> Dynamic {
+    engine.register_fn(names::JUMP, |kind: i64, value: Dynamic| Dynamic::from(Jump(kind, value)));
+    engine.register_fn(names::JUMP_KIND, |e: Dynamic| e.try_cast::<Jump>().map_or(0, |j| j.0));
+    engine.register_fn(names::JUMP_VALUE, |e: Dynamic| e.try_cast::<Jump>().map_or(Dynamic::UNIT, |j| j.1));
+    engine.register_fn(names::CAUGHT, |e: Dynamic| -> Dynamic {
         match e.clone().try_cast::<Map>() {
             Some(m) => {
                 let o = JsObj::new(ObjKind::Plain);
@@ -69,20 +70,23 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         }
     });
     let s = state.clone();
-    engine.register_fn("__callm", move |ctx: NativeCallContext, o: Dynamic, name: ImmutableString, args: Array| -> R {
-        method(&ctx, &s, o, &name, args)
-    });
+    engine.register_fn(
+        names::CALL_METHOD,
+        move |ctx: NativeCallContext, o: Dynamic, name: ImmutableString, args: Array| -> R {
+            method(&ctx, &s, o, &name, args)
+        },
+    );
     let s = state.clone();
-    engine.register_fn("__call", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
+    engine.register_fn(names::CALL, move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
         call(&ctx, &s, &f, Dynamic::UNIT, args)
     });
     let s = state.clone();
-    engine.register_fn("__new", move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
+    engine.register_fn(names::NEW, move |ctx: NativeCallContext, f: Dynamic, args: Array| -> R {
         construct(&ctx, &s, &f, args)
     });
     let s = state.clone();
-    engine.register_fn("__host", move |ctx: NativeCallContext, name: ImmutableString, args: Array| -> R {
-        super::cimco::host_call(&ctx, &s, &name, args)
+    engine.register_fn(names::HOST, move |ctx: NativeCallContext, name: ImmutableString, args: Array| -> R {
+        crate::cnc_calc::host_call(&ctx, &s, &name, args)
     });
 }
 
@@ -186,7 +190,7 @@ pub fn call(ctx: &NativeCallContext, state: &Shared, f: &Dynamic, mut this: Dyna
         };
         return match kind {
             Ok(p) => p.call_raw(ctx, Some(&mut this), [Dynamic::from_array(args)]),
-            Err(Some(name)) => super::cimco::host_call(ctx, state, &name, args),
+            Err(Some(name)) => crate::cnc_calc::host_call(ctx, state, &name, args),
             Err(None) => Err(fail("TypeError: an object is not a function")),
         };
     }
@@ -200,7 +204,7 @@ fn construct(ctx: &NativeCallContext, state: &Shared, f: &Dynamic, args: Array) 
     if let Some(obj) = f.clone().try_cast::<JsObj>() {
         if let ObjKind::Host(name) = &obj.0.borrow().kind {
             let name = name.clone();
-            return super::cimco::host_call(ctx, state, &name, args);
+            return crate::cnc_calc::host_call(ctx, state, &name, args);
         }
         if obj.function().is_some() {
             let proto = get(f, &text("prototype"))?.try_cast::<JsObj>();
@@ -223,7 +227,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         return Err(fail(format!("TypeError: cannot call method '{name}' of {}", to_string(&o))));
     }
     if let Some(s) = o.clone().try_cast::<ImmutableString>() {
-        return super::methods::string_method(&s, name, &args);
+        return crate::methods::string_method(&s, name, &args);
     }
     if o.is::<f64>() || o.is::<i64>() {
         let n = to_number(&o);
@@ -234,7 +238,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         };
     }
     if let Some(a) = o.clone().try_cast::<JsArr>() {
-        return super::methods::array_method(&a, name, args);
+        return crate::methods::array_method(&a, name, args);
     }
     if let Some(r) = o.clone().try_cast::<JsRegex>() {
         return match name {
@@ -242,7 +246,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
             _ => Err(fail(format!("TypeError: a regular expression has no method '{name}'"))),
         };
     }
-    if let Some(r) = super::cimco::output_method(state, &o, name, &args) {
+    if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args) {
         return r;
     }
     if let Some(obj) = o.clone().try_cast::<JsObj>() {

@@ -4,9 +4,9 @@
 
 use rhai::{Array, Dynamic, EvalAltResult};
 
-use super::ops::fail;
-use super::regex;
-use super::values::{self, JsArr, JsRegex, num, text, to_number, to_string};
+use crate::ops::fail;
+use crate::regex;
+use crate::values::{self, JsArr, JsRegex, num, text, to_number, to_string};
 
 type R = Result<Dynamic, Box<EvalAltResult>>;
 

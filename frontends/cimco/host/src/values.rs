@@ -10,9 +10,9 @@ use std::rc::Rc;
 
 use rhai::{Dynamic, FnPtr, ImmutableString};
 
-use super::js;
-use crate::number::NumberWriter;
-use crate::value::Value;
+use postc_runtime::js;
+use postc_runtime::number::NumberWriter;
+use postc_runtime::value::Value;
 
 /// `null`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,7 +120,7 @@ pub struct DynVarState {
 
 /// A regular expression literal.
 #[derive(Clone, Debug)]
-pub struct JsRegex(pub Rc<super::regex::Regex>);
+pub struct JsRegex(pub Rc<crate::regex::Regex>);
 
 pub fn is_null(v: &Dynamic) -> bool {
     v.is::<JsNull>()

@@ -1,0 +1,81 @@
+//! # The CNC-Calc script host
+//!
+//! Runs the Rhai script a CIMCO post compiles to (`postc_front_cimco`),
+//! for the functions that do not lower to native IR. The runtime knows
+//! nothing of it: it calls script functions through
+//! [`postc_runtime::script_host::ScriptHost`], and the edge (the command
+//! line, `postc_frontends::script_host`, tests) hands it [`compile`] for a
+//! post whose scripts are Rhai.
+//!
+//! - `values`: JavaScript values in Rhai with reference semantics;
+//! - `ops`, `props`, `methods`, `regex`: the operators, properties,
+//!   methods and regular expressions the translated script calls
+//!   (JavaScript's conversions are the runtime's, [`postc_runtime::js`]);
+//! - `cnc_calc`: the CNC-Calc host functions (`createFormat`,
+//!   `createVariable`, `getFeedrate`, the drill headers, compensation);
+//! - `compiled`: the Rhai engine, compiled once per run, and the call in
+//!   and out of it.
+//!
+//! Every name the script calls and the host registers is a constant of
+//! [`postc_front_cimco::host_names`], the one table the lowering and this
+//! host share.
+//!
+//! Native code and scripts share one state: before a script runs, the
+//! engine's variables (their values and modal memory) and globals move
+//! into the host, and back when it returns, so an output variable
+//! formatted natively and from a script keeps one modal memory.
+//!
+//! A post is untrusted code: the Rhai engine has no modules, no `eval`,
+//! no printing, and no file, network or process functions; a script call
+//! stops after `OutputOptions::step_budget` operations with a diagnostic
+//! at the JavaScript line it was running.
+
+mod cnc_calc;
+mod compiled;
+mod methods;
+mod ops;
+mod props;
+mod regex;
+mod values;
+
+use postc_ir::Diagnostic;
+use postc_ir::event::{CompSide, DrillCycle, Event};
+use postc_runtime::Engine;
+use postc_runtime::script_host::ScriptHost;
+use postc_runtime::value::Value;
+
+pub use compiled::MAX_ITEMS;
+
+/// Compiles the post's scripts, once per run: the
+/// [`postc_runtime::script_host::ScriptHostFactory`] of Rhai scripts.
+pub fn compile(engine: &Engine<'_>) -> Result<Box<dyn ScriptHost>, Diagnostic> {
+    Ok(Box::new(RhaiHost { compiled: compiled::Compiled::new(engine)?, notes: Notes::default() }))
+}
+
+/// The Rhai host of one run.
+struct RhaiHost {
+    compiled: compiled::Compiled,
+    notes: Notes,
+}
+
+/// Event data the host functions read that no quantity carries.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Notes {
+    pub drill: Option<DrillCycle>,
+    pub comp: CompSide,
+}
+
+impl ScriptHost for RhaiHost {
+    /// Notes what the host functions need from an event, before it is dispatched.
+    fn observe(&mut self, event: &Event) {
+        match event {
+            Event::DrillCycle(c) => self.notes.drill = Some(c.clone()),
+            Event::CutterComp(c) => self.notes.comp = c.side,
+            _ => {}
+        }
+    }
+
+    fn call(&mut self, engine: &mut Engine<'_>, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+        self.compiled.call(engine, &self.notes, name, args)
+    }
+}

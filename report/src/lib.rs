@@ -1,0 +1,23 @@
+//! # postc report: the edge where diagnostics and files meet the world
+//!
+//! `postc_ir` holds [`Diagnostic`]s and the [`SourceMap`] of files they point
+//! into, and reads nothing by itself. This crate is what the command line,
+//! the language server and the tests put around it:
+//!
+//! - [`FsLoader`]: the [`SourceLoader`] over the file system, and
+//!   [`source_map`], a map that reads through it;
+//! - [`Render`]: diagnostics rendered for people (codespan-reporting, with
+//!   source snippets where the text is at hand) and as JSON
+//!   ([`JsonDiagnostic`], `check --format json`).
+//!
+//! gleam's split is the model: one project-wide diagnostic type in the
+//! compiler core, rendered only by the CLI.
+
+mod fs;
+mod render;
+
+pub use fs::{FsLoader, source_map};
+pub use render::{JsonDiagnostic, Render};
+
+#[doc(no_inline)]
+pub use postc_ir::{Diagnostic, SourceLoader, SourceMap};
