@@ -91,7 +91,7 @@ pub const PREFIXES: &[(&str, &str)] = &[
     ("VC", "VcPost posts (`frontends/vcpost`)"),
     ("PT", "VcPost probe-cycle tables"),
     ("CP", "VcPost composites event files"),
-    ("CL", "APT CL files (`frontends/apt`)"),
+    ("CL", "APT CL files (`readers/apt`)"),
     ("PX", "`postc postp` and its controllers (`postp/`)"),
     ("TP", "native toolpaths (`frontends/src/native.rs`)"),
     ("RT", "the runtime, while posting"),

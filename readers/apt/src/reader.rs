@@ -33,7 +33,7 @@ enum Phase {
 /// Reads an APT CL file as a stream of toolpath events.
 ///
 /// ```
-/// use postc_front_apt::AptReader;
+/// use postc_reader_apt::AptReader;
 /// use postc_ir::{EventSource, SourceMap};
 ///
 /// let text = "UNITS/MM\nLOADTL/1\nRAPID\nGOTO/0,0,5\nFEDRAT/300,MMPM\nGOTO/10,0,5\nFINI\n";

@@ -1,4 +1,4 @@
-//! Prints what the reader makes of a file: `APT_DUMP=path cargo test -p postc-front-apt --test dump -- --nocapture`.
+//! Prints what the reader makes of a file: `APT_DUMP=path cargo test -p postc-reader-apt --test dump -- --nocapture`.
 
 mod common;
 

@@ -119,12 +119,12 @@ fn every_corpus_file_is_recognised_by_content() {
     for path in common::corpus_files() {
         let bytes = std::fs::read(&path).expect("read corpus file");
         let head = &bytes[..bytes.len().min(16 << 10)];
-        assert!(postc_front_apt::looks_like_cl(head), "{}", path.display());
+        assert!(postc_reader_apt::looks_like_cl(head), "{}", path.display());
     }
     for other in
         [&b"G0 X1 Y2\nG1 Z-1 F100\n"[..], b"POST_NAME = \"Mach3\"\n", b"{\"Job\":{}}\n", b"\x89PNG\r\n\x1a\n\0\0"]
     {
-        assert!(!postc_front_apt::looks_like_cl(other), "{}", String::from_utf8_lossy(other));
+        assert!(!postc_reader_apt::looks_like_cl(other), "{}", String::from_utf8_lossy(other));
     }
 }
 
@@ -133,7 +133,7 @@ fn check_and_open_read_files_from_disk() {
     let files = common::corpus_files();
     for path in files.iter().filter(|p| p.ends_with("bohren_1.ncl.8") || p.ends_with("cl.tap")) {
         let mut sources = postc_report::source_map();
-        let diagnostics = postc_front_apt::check(path, &mut sources);
+        let diagnostics = postc_reader_apt::check(path, &mut sources);
         let errors = diagnostics.iter().filter(|d| d.is_error()).count();
         let expected = usize::from(path.ends_with("cl.tap"));
         assert_eq!(errors, expected, "{}: {diagnostics:?}", path.display());
@@ -143,7 +143,7 @@ fn check_and_open_read_files_from_disk() {
         }
     }
     let mut sources = postc_report::source_map();
-    let missing = postc_front_apt::check(Path::new("/nonexistent/part.cl"), &mut sources);
+    let missing = postc_reader_apt::check(Path::new("/nonexistent/part.cl"), &mut sources);
     assert_eq!(missing.len(), 1);
     assert_eq!(missing[0].code, "CL021");
 }

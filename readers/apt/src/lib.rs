@@ -1,4 +1,4 @@
-//! # postc-front-apt: the APT CL reader
+//! # postc-reader-apt: the APT CL reader
 //!
 //! Reads APT CL text files (Siemens NX CLSF, PTC Creo Pro/CLfile,
 //! SolidWorks CAM `.apt`, CLT exports, NCL `.as`, classic APT CL) as a

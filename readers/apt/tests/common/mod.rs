@@ -7,9 +7,9 @@
 use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 
-use postc_front_apt::AptReader;
 use postc_ir::diagnostic::{Diagnostic, SourceMap, Span};
 use postc_ir::event::{Event, EventSource};
+use postc_reader_apt::AptReader;
 
 /// Everything a read produced.
 pub struct Read {
