@@ -4,15 +4,15 @@
 //! a generated CL text when the shared corpus is absent. The target is
 //! 100 MB/s or more on one core (release).
 //!
-//! Needs `postc-front-apt` in the root `[dev-dependencies]`.
+//! Needs `postc-reader-apt` in the root `[dev-dependencies]`.
 
 use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use postc_front_apt::AptReader;
 use postc_ir::diagnostic::FileId;
 use postc_ir::event::EventSource;
+use postc_reader_apt::AptReader;
 
 /// About this many bytes of CL text per benchmark input.
 const TARGET_BYTES: usize = 64 << 20;

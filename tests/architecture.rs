@@ -137,7 +137,8 @@ fn only_the_edge_renders_diagnostics() {
         "frontends/vectric",
         "frontends/cimco",
         "frontends/vcpost",
-        "frontends/apt",
+        "readers/apt",
+        "readers/native",
         "postp",
         "verify",
         "backends",
@@ -180,7 +181,8 @@ fn only_the_edge_touches_files_the_clock_and_the_terminal() {
         "frontends/vectric/src",
         "frontends/cimco/src",
         "frontends/vcpost/src",
-        "frontends/apt/src",
+        "readers/apt/src",
+        "readers/native/src",
         "postp/src",
         "verify/src",
         "backends/src",
@@ -257,4 +259,19 @@ fn the_runtime_names_no_dialect() {
         }
     }
     assert!(found.is_empty(), "the runtime names a dialect:\n{}", found.join("\n"));
+}
+
+/// Toolpath readers and post dialects sit in separate folders and know
+/// nothing of each other: a reader depends on no post frontend, a post
+/// frontend on no reader.
+#[test]
+fn readers_and_post_dialects_are_apart() {
+    for reader in ["readers/apt", "readers/native"] {
+        let deps = dependencies(reader);
+        assert!(!deps.iter().any(|d| d.starts_with("postc-front")), "{reader} depends on a post frontend: {deps:?}");
+    }
+    for dialect in ["frontends/vectric", "frontends/cimco", "frontends/vcpost"] {
+        let deps = dependencies(dialect);
+        assert!(!deps.iter().any(|d| d.starts_with("postc-reader")), "{dialect} depends on a reader: {deps:?}");
+    }
 }

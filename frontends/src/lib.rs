@@ -4,7 +4,7 @@
 //! - `postc-front-vectric` (`frontends/vectric`): Vectric `.pp` posts;
 //! - `postc-front-cimco` (`frontends/cimco`): CIMCO CNC-Calc JavaScript posts;
 //! - `postc-front-vcpost` (`frontends/vcpost`): Vericut VcPost posts;
-//! - `postc-front-apt` (`frontends/apt`): APT CL toolpaths;
+//! - `postc-reader-apt` (`readers/apt`): APT CL toolpaths;
 //! - [`native`] (here): the native toolpath stream, RON or JSON Lines;
 //! - [`synthetic`] (here): generated toolpaths of any length (`postc toolpath gen`, `postc bench`, the benchmarks);
 //! - posts written directly as IR in RON (`.ron`), read here.
@@ -14,9 +14,11 @@
 //! from its extension (`.apt`, `.cl`, `.cls`, `.ncl`, `.clt`, `cl.tap` for
 //! APT CL; `.ron`, `.jsonl` for the native stream) or its content.
 
-pub mod native;
 mod ron_locate;
-pub mod synthetic;
+
+/// postc's own toolpath formats (`readers/native`), under their old paths.
+pub use postc_reader_native as native;
+pub use postc_reader_native::synthetic;
 
 use postc_ir::codes;
 use std::path::Path;
@@ -225,7 +227,7 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
         Some(l) if l.starts_with('{') || l.starts_with("Job(") || l.starts_with("Tool(") => {
             Some(ToolpathFormat::Native)
         }
-        _ if postc_front_apt::looks_like_cl(head) => Some(ToolpathFormat::Apt),
+        _ if postc_reader_apt::looks_like_cl(head) => Some(ToolpathFormat::Apt),
         _ => None,
     }
 }
@@ -264,7 +266,7 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
     }
     match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
-        Some(ToolpathFormat::Apt) => Ok(Box::new(postc_front_apt::open(path, sources)?)),
+        Some(ToolpathFormat::Apt) => Ok(Box::new(postc_reader_apt::open(path, sources)?)),
         None => {
             Err(Diagnostic::error(codes::IO006, format!("cannot tell what kind of toolpath `{}` is", path.display()))
                 .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"))
@@ -275,7 +277,7 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
 /// Reads a whole toolpath and returns every diagnostic (for `postc check`).
 pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
     if toolpath_format(path, &read_head(sources.loader(), path)) == Some(ToolpathFormat::Apt) {
-        return postc_front_apt::check(path, sources);
+        return postc_reader_apt::check(path, sources);
     }
     let mut source = match open_toolpath(path, sources) {
         Ok(s) => s,

@@ -91,7 +91,7 @@ pub const PREFIXES: &[(&str, &str)] = &[
     ("VC", "VcPost posts (`frontends/vcpost`)"),
     ("PT", "VcPost probe-cycle tables"),
     ("CP", "VcPost composites event files"),
-    ("CL", "APT CL files (`frontends/apt`)"),
+    ("CL", "APT CL files (`readers/apt`)"),
     ("PX", "`postc postp` and its controllers (`postp/`)"),
     ("TP", "native toolpaths (`frontends/src/native.rs`)"),
     ("RT", "the runtime, while posting"),
@@ -147,6 +147,8 @@ pub const SECTIONS: &[Section] = &[
                     "1 (Langmuir crossfire, 9999); the project's gcode_noarcs_mm, noarcs_wrap_x_mm and text_output_mm wrap on purpose (pinned by their goldens)",
                 ),
                 ("LN013", "— (VcPost; the project's 5 posts and the 8 `postp` controllers: 0)"),
+                ("LN014", "3 (wrapped posts that keep arc sections: Snapmaker 4-axis, Carvera Wrap X2A, grbl rotary)"),
+                ("LN015", "— (CIMCO; the project's 8 posts: 0)"),
             ],
         )),
     },
@@ -1518,4 +1520,14 @@ declare_codes! {
     /// every time; usually the register's name is misspelt.
     LN013: Warning, "a VcPost `Out` prints a register (`<Name>`) that no statement assigns, the runtime does not load and no table or application passes: it prints empty every time (often a misspelt name)",
         fix = "Correct the register's name, or assign it before the `Out`.";
+    /// A section the runtime never runs for this post: under `ROTARY_WRAP_X`/`_Y` every arc is
+    /// cut into feed moves (a G2/G3 cannot turn the rotary axis), and with `MAX_ARC_RADIUS = 0`
+    /// every arc is over the limit; the arc sections are dead text a reader expects arcs from.
+    LN014: Warning, "a section the post can never run: arc sections under `ROTARY_WRAP` or with `MAX_ARC_RADIUS = 0`",
+        fix = "Remove the section, or unwrap the axis to print true arcs.";
+    /// A CIMCO global read but never given a value: declared without one (`var drill;`) and
+    /// assigned nowhere, at the top level or in any function, native or script. Every read gets
+    /// `undefined`, which prints as `undefined` or turns arithmetic into NaN.
+    LN015: Warning, "a CIMCO global is read but never given a value",
+        fix = "Give it a value where it is declared, or assign it before it is read.";
 }

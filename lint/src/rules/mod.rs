@@ -6,9 +6,11 @@ mod arc_words_coarse;
 mod block_numbers_wrap;
 mod comment_parentheses;
 mod feed_never_printed;
+mod global_never_assigned;
 mod post_name;
 mod product_support;
 mod register_never_set;
+mod section_never_reached;
 mod spindle_never_printed;
 mod tape_split_spindle;
 mod toolchange_without_retract;
@@ -33,4 +35,6 @@ pub const ALL: &[Rule] = &[
     tape_split_spindle::RULE,
     block_numbers_wrap::RULE,
     register_never_set::RULE,
+    section_never_reached::RULE,
+    global_never_assigned::RULE,
 ];
