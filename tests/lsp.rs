@@ -296,4 +296,12 @@ fn the_lints_show_in_the_editor() {
     assert_eq!(ln001["severity"], 2, "{ln001}");
     assert_eq!(ln001["range"]["start"]["line"], 1, "{ln001}");
     assert_eq!(c.change(uri, 2, "UNITS = \"MM\"\nbegin FEED_MOVE\n\"G1 [X] [F]\"\n"), Vec::<Value>::new());
+
+    // The project's postc.toml applies in the editor as on the command line.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("postc.toml"), "[diagnostics]\nallow = [\"LN001\"]\ndeny = [\"PP027\"]\n").unwrap();
+    let uri = format!("file://{}/nofeed.pp", dir.path().display());
+    let d = c.open(&uri, "vectric", "begin FEED_MOVE\n\"G1 [X]\"\n");
+    assert!(!d.iter().any(|d| d["code"] == "LN001"), "{d:?}");
+    assert_eq!(find(&d, "PP027")["severity"], 1, "{d:?}");
 }

@@ -21,6 +21,7 @@
 
 use postc_ir::{Diagnostic, Dispatch, Expr, HandlerKey, Piece, Post, Quantity, Section, Stmt, ValueSource};
 
+pub mod config;
 pub mod product;
 pub mod rules;
 

@@ -296,6 +296,11 @@ fn diagnose(uri: &Uri, doc: &Document, loader: &Arc<dyn SourceLoader>) -> Vec<Di
         {
             compiled.diagnostics.extend(postc_lint::lint(post, &postc_lint::Options::default()));
         }
+        // The severities the project's postc.toml chooses, as on the command line.
+        match postc_lint::config::rules_for(&**loader, &path) {
+            Ok(rules) => rules.apply(&mut compiled.diagnostics),
+            Err(d) => compiled.diagnostics.push(d),
+        }
         compiled
     }));
     match compiled {
