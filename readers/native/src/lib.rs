@@ -7,8 +7,6 @@
 //! (RON) are skipped. The reader holds one line at a time, so memory stays
 //! flat whatever the file's length; each event carries the span of its line.
 
-pub mod synthetic;
-
 use postc_ir::codes;
 use std::io::{self, BufRead, BufReader};
 
