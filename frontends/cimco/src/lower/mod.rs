@@ -62,22 +62,81 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     (post, diagnostics)
 }
 
-/// Lowers a program without errors into `post`.
+/// Lowers a program without errors into `post`, in phases: the post's
+/// settings, its formats and variables ([`feed_variables`]), its functions
+/// as native IR where they can be ([`functions`]), the Rhai script of the
+/// rest ([`script`]), and the handlers with their fast path ([`handlers`]).
 fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
     let model = Model::build(program);
     let setup = Setup::build(program, &model, diags);
     warn::check(program, &model, &setup, diags);
     let mut layout = Layout::new(&model);
-    let info = |name: &str| model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]]);
-    let arity = |name: &str| info(name).map(|f| f.params.len());
+    let arity = |name: &str| top_fn(&model, name).map(|f| f.params.len());
     settings(&model, post, diags);
     post.options.lathe = is_lathe(&model, arity("onLinear"));
     // Seed 002: a variable without force "will only be written if it has
     // changed since the last time it was used" -- a toolpath start does not
     // make it forget (a post that wants that calls `reset()`).
     post.options.forget_modal_at_toolpath_start = false;
+    let feed = feed_variables(&model, &setup, post);
 
-    // Formats and variables, and the one getFeedrate formats through.
+    // postc's functions after the post's own.
+    let own_feedrate = top_fn(&model, layout::FEEDRATE).is_some();
+    if !own_feedrate {
+        layout.add_fn(layout::FEEDRATE);
+    }
+    let init_fn = layout.add_fn(layout::INIT);
+    for g in GLUE {
+        layout.add_fn(g.0);
+    }
+    let init_stmts = init_statements(program, &model, &setup);
+    let mut functions =
+        self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
+    let script = self::script(&model, &setup, &layout, whole, &init_stmts, own_feedrate);
+    if let Some(d) = warn::check_script(&script, whole) {
+        diags.push(d);
+    }
+    let mut hs = handlers(&model, &layout, post.options.lathe, &functions);
+    for f in &mut functions {
+        if let Body::Native(b) = &mut f.body {
+            fold::intern_stmts(b, &mut layout);
+        }
+    }
+    for h in &mut hs {
+        fold::intern_stmts(&mut h.body, &mut layout);
+    }
+    post.handlers = hs;
+    post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
+    if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
+        post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
+    }
+    let uses_script = functions.iter().any(|f| matches!(f.body, Body::Script(_)));
+    post.functions = functions;
+    post.globals = layout.globals;
+    if uses_script {
+        post.scripts = vec![script];
+    } else {
+        // No function runs as a script: drop the script bodies of the glue.
+        post.scripts.clear();
+    }
+}
+
+/// postc's glue: the function name, the post's entry point it bridges to,
+/// and the host function that gives the entry point its data.
+const GLUE: [(&str, &str, &str); 3] = [
+    (layout::COMPENSATION, "onCompensation", names::COMPENSATION),
+    (layout::DRILL_HEADER, "onDrillingHeader", names::DRILL_HEADER),
+    (layout::TURN_DRILL, "onDrilling", names::TURN_DRILL),
+];
+
+/// A top-level function of the post, by name.
+fn top_fn<'m, 'a>(model: &'m Model<'a>, name: &str) -> Option<&'m scope::FuncInfo<'a>> {
+    model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]])
+}
+
+/// The post's formats and variables, and the two `getFeedrate` formats
+/// through (per minute, per revolution).
+fn feed_variables(model: &Model, setup: &Setup, post: &mut Post) -> (VarId, VarId) {
     post.formats = setup.formats.clone();
     post.variables = setup.variables.clone();
     post.formats.push(NumberFormat {
@@ -85,7 +144,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         trim_zeros: true,
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
-        decimal_mark: setup::decimal_mark(&model),
+        decimal_mark: setup::decimal_mark(model),
         rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
@@ -105,7 +164,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         trim_zeros: true,
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
-        decimal_mark: setup::decimal_mark(&model),
+        decimal_mark: setup::decimal_mark(model),
         rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
@@ -119,21 +178,26 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     });
     let feed_rev_var = VarId::new((post.variables.len() - 1) as u16);
 
-    // postc's functions after the post's own.
-    let own_feedrate = info(layout::FEEDRATE).is_some();
-    let feed_fn = if own_feedrate { None } else { Some(layout.add_fn(layout::FEEDRATE)) };
-    let init_fn = layout.add_fn(layout::INIT);
-    let glue = [layout::COMPENSATION, layout::DRILL_HEADER, layout::TURN_DRILL];
-    for g in glue {
-        layout.add_fn(g);
-    }
+    (feed_var, feed_rev_var)
+}
 
-    // Native bodies where possible.
+/// Every function of the post, native where it can be, then postc's:
+/// `getFeedrate` (when the post has none; `feed` its two variables), the
+/// top-level code, and the glue.
+fn functions(
+    model: &Model,
+    setup: &Setup,
+    layout: &mut Layout,
+    whole: Span,
+    init_stmts: &[ast::Stmt],
+    feed: Option<(VarId, VarId)>,
+) -> Vec<Function> {
+    let arity = |name: &str| top_fn(model, name).map(|f| f.params.len());
     let mut functions: Vec<Function> = Vec::new();
     for (i, &id) in model.scopes.top_fns.iter().enumerate() {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
-        let mut n = native::Native { model: &model, setup: &setup, layout: &mut layout, at: id, slots: 0 };
+        let mut n = native::Native { model, setup, layout, at: id, slots: 0 };
         let lowered = n.lower_function(&func.body, func.span);
         let slots = n.slots;
         let _ = i;
@@ -152,7 +216,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             why_script,
         });
     }
-    if feed_fn.is_some() {
+    if let Some((feed_var, feed_rev_var)) = feed {
         functions.push(Function {
             name: layout::FEEDRATE.into(),
             params: vec!["movement".into()],
@@ -185,10 +249,9 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             why_script: None,
         });
     }
-    let init_stmts = init_statements(program, &model, &setup);
     let init_native = {
-        let mut n = native::Native { model: &model, setup: &setup, layout: &mut layout, at: 0, slots: 0 };
-        n.stmts(&init_stmts).map(|b| (fold::stmts(b), n.slots))
+        let mut n = native::Native { model, setup, layout, at: 0, slots: 0 };
+        n.stmts(init_stmts).map(|b| (fold::stmts(b), n.slots))
     };
     functions.push(Function {
         name: layout::INIT.into(),
@@ -201,7 +264,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         span: Some(whole),
         why_script: init_native.err().map(|w| postc_ir::ScriptReason { what: w.what, span: Some(w.span) }),
     });
-    for (g, entry) in glue.iter().zip(["onCompensation", "onDrillingHeader", "onDrilling"]) {
+    for (g, entry, _) in GLUE {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
         // The glue stands where the post's own entry point is defined.
         let span = functions.iter().find(|f| f.name == entry).and_then(|f| f.span);
@@ -209,27 +272,35 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             what: format!("postc's bridge to `{entry}`: it hands the post the host's data as an object"),
             span,
         });
-        functions.push(Function { name: (*g).into(), params: vec![], slots: 0, body, span, why_script });
+        functions.push(Function { name: g.into(), params: vec![], slots: 0, body, span, why_script });
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 
-    // The script: every function, and postc's glue.
-    let script = {
-        let mut g = rhai::Gen::new(&model, &setup, &layout);
+    functions
+}
+
+/// The Rhai script of the functions that do not lower to native IR, and
+/// of postc's glue.
+fn script(
+    model: &Model,
+    setup: &Setup,
+    layout: &Layout,
+    whole: Span,
+    init_stmts: &[ast::Stmt],
+    own_feedrate: bool,
+) -> Script {
+    {
+        let mut g = rhai::Gen::new(model, setup, layout);
         for &id in &model.scopes.top_fns {
             let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
             g.function(&rhai::fn_name(&name), id);
         }
-        if feed_fn.is_some() {
+        if !own_feedrate {
             g.glue(&rhai::fn_name(layout::FEEDRATE), whole, &format!("{}({}(a, 0))\n", names::FEEDRATE, names::ARG));
         }
-        g.init(&rhai::fn_name(layout::INIT), &init_stmts, whole);
-        for (glue_name, entry, arg) in [
-            (layout::COMPENSATION, "onCompensation", names::COMPENSATION),
-            (layout::DRILL_HEADER, "onDrillingHeader", names::DRILL_HEADER),
-            (layout::TURN_DRILL, "onDrilling", names::TURN_DRILL),
-        ] {
-            let body = if arity(entry).is_some() {
+        g.init(&rhai::fn_name(layout::INIT), init_stmts, whole);
+        for (glue_name, entry, arg) in GLUE {
+            let body = if top_fn(model, entry).is_some() {
                 format!(
                     "{CALL}({FUNCTION_OBJECT}({}), [{arg}()])\n",
                     rhai::quote(&rhai::fn_name(entry)),
@@ -239,16 +310,17 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             } else {
                 "()\n".to_string()
             };
-            let span = info(entry).and_then(|f| f.func).map_or(whole, |f| f.span);
+            let span = top_fn(model, entry).and_then(|f| f.func).map_or(whole, |f| f.span);
             g.glue(&rhai::fn_name(glue_name), span, &body);
         }
         Script { language: ScriptLanguage::Rhai, source: g.out, span: Some(whole), span_map: g.span_map }
-    };
-    if let Some(d) = warn::check_script(&script, whole) {
-        diags.push(d);
     }
+}
 
-    // Handlers, with the fast path.
+/// The handlers, with the fast path: each inlines the function it calls
+/// into the output where it can (`emit`).
+fn handlers(model: &Model, layout: &Layout, lathe: bool, functions: &[Function]) -> Vec<postc_ir::Handler> {
+    let arity = |name: &str| top_fn(model, name).map(|f| f.params.len());
     let use_radius = match model.setting("useRadius") {
         Some(c) => handlers::RadiusSetting::Known(c.truthy()),
         None => match model.global("useRadius").or_else(|| model.global("globals.useRadius")) {
@@ -256,9 +328,9 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
             _ => handlers::RadiusSetting::Known(false),
         },
     };
-    let entry = handlers::Entry { layout: &layout, lathe: post.options.lathe, use_radius, arity: &arity };
+    let entry = handlers::Entry { layout, lathe, use_radius, arity: &arity };
     let raw = entry.handlers();
-    let mut emitter = emit::Emitter::new(&functions, handlers::HANDLER_SLOTS);
+    let mut emitter = emit::Emitter::new(functions, handlers::HANDLER_SLOTS);
     let mut hs = Vec::new();
     for mut h in raw {
         // A handler stands where the JavaScript function it calls is defined.
@@ -271,28 +343,7 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         h.body = handlers::one(body);
         hs.push(h);
     }
-    for f in &mut functions {
-        if let Body::Native(b) = &mut f.body {
-            fold::intern_stmts(b, &mut layout);
-        }
-    }
-    for h in &mut hs {
-        fold::intern_stmts(&mut h.body, &mut layout);
-    }
-    post.handlers = hs;
-    post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
-    if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
-        post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
-    }
-    let uses_script = functions.iter().any(|f| matches!(f.body, Body::Script(_)));
-    post.functions = functions;
-    post.globals = layout.globals;
-    if uses_script {
-        post.scripts = vec![script];
-    } else {
-        // No function runs as a script: drop the script bodies of the glue.
-        post.scripts.clear();
-    }
+    hs
 }
 
 /// The top-level statements that run at start: everything but function
