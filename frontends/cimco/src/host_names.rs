@@ -231,3 +231,19 @@ pub const SCRIPT_FUNCTIONS: &[&str] = &[
     DRILL_HEADER,
     TURN_DRILL,
 ];
+
+/// `Math.NAME` constants.
+pub fn math_constant(name: &str) -> Option<f64> {
+    use std::f64::consts as c;
+    Some(match name {
+        "PI" => c::PI,
+        "E" => c::E,
+        "LN2" => c::LN_2,
+        "LN10" => c::LN_10,
+        "LOG2E" => c::LOG2_E,
+        "LOG10E" => c::LOG10_E,
+        "SQRT2" => c::SQRT_2,
+        "SQRT1_2" => c::FRAC_1_SQRT_2,
+        _ => return None,
+    })
+}

@@ -123,7 +123,7 @@ pub fn get(o: &Dynamic, k: &Dynamic) -> R {
             return Ok(Dynamic::from(proto));
         }
         if let ObjKind::Math = obj.0.borrow().kind
-            && let Some(c) = math_constant(&key)
+            && let Some(c) = postc_front_cimco::host_names::math_constant(&key)
         {
             return Ok(num(c));
         }
@@ -276,21 +276,6 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         };
     }
     Err(fail(format!("TypeError: {} has no method '{name}'", values::type_of(&o))))
-}
-
-fn math_constant(name: &str) -> Option<f64> {
-    use std::f64::consts as c;
-    Some(match name {
-        "PI" => c::PI,
-        "E" => c::E,
-        "LN2" => c::LN_2,
-        "LN10" => c::LN_10,
-        "LOG2E" => c::LOG2_E,
-        "LOG10E" => c::LOG10_E,
-        "SQRT2" => c::SQRT_2,
-        "SQRT1_2" => c::FRAC_1_SQRT_2,
-        _ => return None,
-    })
 }
 
 /// `Math.name(args)`.

@@ -35,21 +35,8 @@ pub fn constant(name: &str) -> Option<Const> {
     Some(Const::Num(n))
 }
 
-/// `Math.NAME` constants.
-pub fn math_constant(name: &str) -> Option<f64> {
-    use std::f64::consts as c;
-    Some(match name {
-        "PI" => c::PI,
-        "E" => c::E,
-        "LN2" => c::LN_2,
-        "LN10" => c::LN_10,
-        "LOG2E" => c::LOG2_E,
-        "LOG10E" => c::LOG10_E,
-        "SQRT2" => c::SQRT_2,
-        "SQRT1_2" => c::FRAC_1_SQRT_2,
-        _ => return None,
-    })
-}
+/// `Math.NAME` constants (one table for the lowering and the script host).
+pub use crate::host_names::math_constant;
 
 /// `Math` functions the host provides.
 pub const MATH_FUNCTIONS: &[&str] = &[

@@ -139,46 +139,35 @@ fn top_fn<'m, 'a>(model: &'m Model<'a>, name: &str) -> Option<&'m scope::FuncInf
 fn feed_variables(model: &Model, setup: &Setup, post: &mut Post) -> (VarId, VarId) {
     post.formats = setup.formats.clone();
     post.variables = setup.variables.clone();
-    post.formats.push(NumberFormat {
-        decimals: 1,
-        trim_zeros: true,
-        width: 0,
-        width_of: postc_ir::WidthOf::IntegerDigits,
-        decimal_mark: setup::decimal_mark(model),
-        rounding: postc_ir::Rounding::Binary,
-        ..NumberFormat::default()
-    });
-    post.variables.push(Variable {
-        name: layout::FEED_VAR.into(),
-        source: ValueSource::Assigned,
-        prefix: b"F".to_vec(),
-        format: FormatId::new((post.formats.len() - 1) as u16),
-        modality: Modality::Always,
-        span: None,
-    });
-    let feed_var = VarId::new((post.variables.len() - 1) as u16);
+    let mark = setup::decimal_mark(model);
+    let feed_var = feed_variable(post, layout::FEED_VAR, 1, mark);
     // Feeds per revolution (mm/rev, in/rev) keep four decimals: 0.15
     // mm/rev prints F0.15, 0.0025 in/rev F0.0025.
+    let feed_rev_var = feed_variable(post, layout::FEED_REV_VAR, layout::FEED_PER_REV_DECIMALS, mark);
+    (feed_var, feed_rev_var)
+}
+
+/// One `F` variable `getFeedrate` formats through: trailing zeros dropped,
+/// rounded as JavaScript rounds.
+fn feed_variable(post: &mut Post, name: &str, decimals: u8, decimal_mark: char) -> VarId {
     post.formats.push(NumberFormat {
-        decimals: layout::FEED_PER_REV_DECIMALS,
+        decimals,
         trim_zeros: true,
         width: 0,
         width_of: postc_ir::WidthOf::IntegerDigits,
-        decimal_mark: setup::decimal_mark(model),
+        decimal_mark,
         rounding: postc_ir::Rounding::Binary,
         ..NumberFormat::default()
     });
     post.variables.push(Variable {
-        name: layout::FEED_REV_VAR.into(),
+        name: name.into(),
         source: ValueSource::Assigned,
         prefix: b"F".to_vec(),
         format: FormatId::new((post.formats.len() - 1) as u16),
         modality: Modality::Always,
         span: None,
     });
-    let feed_rev_var = VarId::new((post.variables.len() - 1) as u16);
-
-    (feed_var, feed_rev_var)
+    VarId::new((post.variables.len() - 1) as u16)
 }
 
 /// Every function of the post, native where it can be, then postc's:
