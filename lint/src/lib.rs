@@ -44,11 +44,11 @@ pub fn lint(post: &Post, options: &Options) -> Vec<Diagnostic> {
     out
 }
 
-/// One rule: its code, what it is called, and its check.
+/// One rule: its code (its summary and documentation are the registry's,
+/// `postc_ir::codes`), what it is called, and its check.
 pub struct Rule {
     pub code: &'static str,
     pub name: &'static str,
-    pub summary: &'static str,
     pub check: fn(&Context, &Options, &mut Vec<Diagnostic>),
 }
 

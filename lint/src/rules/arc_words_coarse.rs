@@ -11,12 +11,7 @@ use postc_ir::{Diagnostic, Piece, Quantity, Stmt, Units};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN010.code,
-    name: "arc-words-too-coarse",
-    summary: "arc words print too few decimals for a controller's arc radius check (grbl 0.005 mm, LinuxCNC 0.0283 mm)",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN010.code, name: "arc-words-too-coarse", check };
 
 const ARC_WORDS: &[Quantity] =
     &[Quantity::I, Quantity::J, Quantity::K, Quantity::IA, Quantity::JA, Quantity::KA, Quantity::Radius];

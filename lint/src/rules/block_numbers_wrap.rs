@@ -9,12 +9,7 @@ use postc_ir::{Diagnostic, Quantity};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN012.code,
-    name: "block-numbers-wrap",
-    summary: "block numbers start again after fewer blocks than a long program has",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN012.code, name: "block-numbers-wrap", check };
 
 /// Blocks a long program has: a 3D finish of a few hours.
 const LONG_PROGRAM: f64 = 100_000.0;

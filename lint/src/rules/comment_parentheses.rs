@@ -7,12 +7,7 @@ use postc_ir::{Diagnostic, Piece, Quantity};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN003.code,
-    name: "comment-can-break",
-    summary: "a comment prints a name or notes that may contain `(` or `)`",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN003.code, name: "comment-can-break", check };
 
 const FREE_TEXT: &[Quantity] = &[
     Quantity::ToolName,

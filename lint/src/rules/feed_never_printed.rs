@@ -6,12 +6,7 @@ use postc_ir::{Diagnostic, Quantity, Section};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN001.code,
-    name: "feed-never-printed",
-    summary: "feed moves are written, but no section prints a feed rate",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN001.code, name: "feed-never-printed", check };
 
 const FEEDS: &[Quantity] = &[Quantity::Feed, Quantity::CutFeed, Quantity::PlungeFeed, Quantity::InverseTimeFeed];
 

@@ -12,12 +12,7 @@ use postc_ir::codes;
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN015.code,
-    name: "global-never-assigned",
-    summary: "a CIMCO global is read but never given a value",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN015.code, name: "global-never-assigned", check };
 
 #[derive(Default)]
 struct Globals {

@@ -9,12 +9,7 @@ use postc_ir::{Diagnostic, Section, Units};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN005.code,
-    name: "post-name-convention",
-    summary: "POST_NAME says (mm)/(inch), (*.ext), Arcs, ATC, TS or WX/WY, and the post does otherwise",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN005.code, name: "post-name-convention", check };
 
 fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let post = cx.post;

@@ -9,12 +9,7 @@ use postc_ir::{Diagnostic, Piece, Stmt};
 use crate::product::{self, Support};
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN006.code,
-    name: "product-unsupported",
-    summary: "the Vectric product chosen with --product does not support a statement, section or variable of the post",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN006.code, name: "product-unsupported", check };
 
 fn check(cx: &Context, options: &Options, out: &mut Vec<Diagnostic>) {
     let Some(p) = options.product else { return };

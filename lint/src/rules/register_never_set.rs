@@ -12,12 +12,7 @@ use postc_ir::{Diagnostic, Dialect, Piece, Place, Stmt, ValueSource};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN013.code,
-    name: "register-never-set",
-    summary: "a VcPost template prints a register that nothing sets",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN013.code, name: "register-never-set", check };
 
 /// Registers assigned anywhere, and where each is printed first.
 #[derive(Default)]

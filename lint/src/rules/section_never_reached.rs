@@ -11,12 +11,7 @@ use postc_ir::codes;
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN014.code,
-    name: "section-never-reached",
-    summary: "a section the post can never run (arc sections under ROTARY_WRAP or MAX_ARC_RADIUS = 0)",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN014.code, name: "section-never-reached", check };
 
 fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let o = &cx.post.options;

@@ -8,12 +8,7 @@ use postc_ir::{Diagnostic, Quantity, Section};
 
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN002.code,
-    name: "spindle-speed-never-printed",
-    summary: "the post changes tools, starts the spindle, but never prints a spindle speed",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN002.code, name: "spindle-speed-never-printed", check };
 
 fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     if !cx.straight_lines() || cx.post.info.laser_support {

@@ -10,12 +10,7 @@ use postc_ir::{Diagnostic, Quantity, Section};
 use super::spindle_never_printed::has_word;
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN011.code,
-    name: "tape-split-spindle",
-    summary: "tape-split parts after the first never start the spindle",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN011.code, name: "tape-split-spindle", check };
 
 fn starts_spindle(cx: &Context, s: Section) -> bool {
     cx.lines(s).any(|(p, _)| {

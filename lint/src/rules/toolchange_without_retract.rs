@@ -8,12 +8,7 @@ use postc_ir::{Diagnostic, Quantity, Section};
 use super::spindle_never_printed::has_word;
 use crate::{Context, Options, Rule};
 
-pub const RULE: Rule = Rule {
-    code: codes::LN004.code,
-    name: "toolchange-without-retract",
-    summary: "TOOLCHANGE changes the tool (M6) before any line raises Z",
-    check,
-};
+pub const RULE: Rule = Rule { code: codes::LN004.code, name: "toolchange-without-retract", check };
 
 /// Words that send the machine up or home before a tool change.
 const RETRACTS: &[&str] = &["G28", "G30", "G53", "Z"];

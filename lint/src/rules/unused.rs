@@ -17,24 +17,9 @@ use postc_ir::{Diagnostic, Dialect, Expr, Piece, Place, Script, Stmt};
 
 use crate::{Context, Options, Rule};
 
-pub const VARIABLE: Rule = Rule {
-    code: codes::LN007.code,
-    name: "unused-variable",
-    summary: "a variable is declared and never printed",
-    check: variables,
-};
-pub const FORMAT: Rule = Rule {
-    code: codes::LN008.code,
-    name: "unused-format",
-    summary: "a format is created and never used",
-    check: formats,
-};
-pub const FUNCTION: Rule = Rule {
-    code: codes::LN009.code,
-    name: "unused-function",
-    summary: "a function is defined and never called",
-    check: functions,
-};
+pub const VARIABLE: Rule = Rule { code: codes::LN007.code, name: "unused-variable", check: variables };
+pub const FORMAT: Rule = Rule { code: codes::LN008.code, name: "unused-format", check: formats };
+pub const FUNCTION: Rule = Rule { code: codes::LN009.code, name: "unused-function", check: functions };
 
 /// What the post's code refers to.
 #[derive(Default)]
