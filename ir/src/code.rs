@@ -251,4 +251,9 @@ pub enum Builtin {
     ToNumber,
     /// JavaScript `value.toFixed(digits)`.
     ToFixed,
+    /// JavaScript `text.substring(start, [end])`: the indices read as
+    /// integers (NaN as 0), clamped to the text, swapped when start is past
+    /// end; a missing or null end is the end of the text. Indices count
+    /// characters.
+    Substring,
 }

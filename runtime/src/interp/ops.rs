@@ -201,6 +201,27 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
         Builtin::IsNaN => Value::Bool(args.first().map_or(f64::NAN, js_number).is_nan()),
         Builtin::ToNumber => Value::Num(args.first().map_or(0.0, js_number)),
         Builtin::ToFixed => Value::text(&js::to_fixed(args.first().map_or(f64::NAN, js_number), n(1))),
+        Builtin::Substring => {
+            let t = s(0);
+            let len = if t.is_ascii() { t.len() } else { t.chars().count() };
+            let index = |v: Option<&Value>| match v {
+                None | Some(Value::Null) => None,
+                Some(v) => {
+                    let x = js_number(v);
+                    Some(if x.is_nan() { 0 } else { x.trunc().clamp(0.0, len as f64) as usize })
+                }
+            };
+            let a = index(args.get(1)).unwrap_or(0);
+            let b = index(args.get(2)).unwrap_or(len);
+            let (a, b) = (a.min(b), a.max(b));
+            if a == 0 && b == len {
+                Value::Text(t)
+            } else if t.is_ascii() {
+                Value::text(&t[a..b])
+            } else {
+                Value::text(&t.chars().skip(a).take(b - a).collect::<String>())
+            }
+        }
     }
 }
 

@@ -29,6 +29,11 @@ pub struct Layout {
     /// IR functions by name (the post's and postc's).
     pub fn_index: HashMap<String, FunctionId>,
     pub fn_names: Vec<String>,
+    /// The specializations of functions that read `arguments`: by the
+    /// function and the number of arguments (`native::variadic`), in the
+    /// order they were added.
+    pub variadic: HashMap<(super::scope::FnId, usize), FunctionId>,
+    pub clones: Vec<(super::scope::FnId, usize)>,
 }
 
 impl Layout {
@@ -39,6 +44,8 @@ impl Layout {
             top_fn: Vec::new(),
             fn_index: HashMap::new(),
             fn_names: Vec::new(),
+            variadic: HashMap::new(),
+            clones: Vec::new(),
         };
         for g in &model.globals {
             let initial = match &g.constant {

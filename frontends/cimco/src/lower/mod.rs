@@ -89,6 +89,14 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     for g in GLUE {
         layout.add_fn(g.0);
     }
+    // The forms of functions that read `arguments`, one per number of
+    // arguments they are called with.
+    for (id, n) in native::variadic::arities(&model, program) {
+        let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
+        let f = layout.add_fn(&format!("{name}/{n}"));
+        layout.variadic.insert((id, n), f);
+        layout.clones.push((id, n));
+    }
     let init_stmts = init_statements(program, &model, &setup);
     let mut functions =
         self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
@@ -186,7 +194,7 @@ fn functions(
     for (i, &id) in model.scopes.top_fns.iter().enumerate() {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
-        let mut n = native::Native { model, setup, layout, at: id, slots: 0 };
+        let mut n = native::Native::new(model, setup, layout, id);
         let lowered = n.lower_function(&func.body, func.span);
         let slots = n.slots;
         let _ = i;
@@ -239,7 +247,7 @@ fn functions(
         });
     }
     let init_native = {
-        let mut n = native::Native { model, setup, layout, at: 0, slots: 0 };
+        let mut n = native::Native::new(model, setup, layout, 0);
         n.stmts(init_stmts).map(|b| (fold::stmts(b), n.slots))
     };
     functions.push(Function {
@@ -263,9 +271,47 @@ fn functions(
         });
         functions.push(Function { name: g.into(), params: vec![], slots: 0, body, span, why_script });
     }
+    for (id, arity) in layout.clones.clone() {
+        functions.push(specialization(model, setup, layout, id, arity));
+    }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 
     functions
+}
+
+/// The form of function `id`, which reads `arguments`, for calls with
+/// `arity` arguments. When it has no native form it runs the function's
+/// script, which takes any number of arguments.
+fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::FnId, arity: usize) -> Function {
+    let f = &model.scopes.funcs[id];
+    let func = f.func.expect("top-level functions have a body");
+    let name = f.name.clone().unwrap_or_default();
+    let mut params: Vec<String> = f.params.iter().take(arity).cloned().collect();
+    params.extend((f.params.len()..arity).map(|k| format!("arguments[{k}]")));
+    let mut n = native::Native::new(model, setup, layout, id);
+    n.arity = Some(arity);
+    match n.lower_function(&func.body, func.span) {
+        Ok(b) => Function {
+            name: format!("{name}/{arity}"),
+            params,
+            slots: n.slots,
+            body: Body::Native(fold::stmts(b)),
+            span: Some(func.span),
+            why_script: None,
+        },
+        Err(w) => Function {
+            // Runs the script of the same name.
+            name,
+            params,
+            slots: 0,
+            body: Body::Script(ScriptId::new(0)),
+            span: Some(func.span),
+            why_script: Some(postc_ir::ScriptReason {
+                what: format!("{} (its form for {arity} arguments)", w.what),
+                span: Some(w.span),
+            }),
+        },
+    }
 }
 
 /// The Rhai script of the functions that do not lower to native IR, and

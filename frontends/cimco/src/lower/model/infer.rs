@@ -42,6 +42,12 @@ impl<'a> Model<'a> {
         was
     }
 
+    /// Whether an expression names a look-up table ([`super::tables`]).
+    fn is_table(&self, e: &Expr, at: FnId) -> bool {
+        matches!(&e.kind, ExprKind::Ident(n)
+            if matches!(self.scopes.resolve(n, at), Symbol::Global(g) if self.tables.contains_key(&g)))
+    }
+
     /// Whether an expression can only be a number, text, boolean or nothing.
     pub fn plain(&self, e: &Expr, at: FnId) -> bool {
         match &e.kind {
@@ -65,6 +71,8 @@ impl<'a> Model<'a> {
                     None => builtins::constant(&name).is_some() || !builtins::is_object(&name),
                 },
             },
+            // A look-up table's entries are constants.
+            ExprKind::Index { object, .. } | ExprKind::Member { object, .. } if self.is_table(object, at) => true,
             ExprKind::Member { object, property } => {
                 if let Some(flat) = self.flattened_name(e) {
                     return self.global(&flat).is_none_or(|g| g.plain);

@@ -16,6 +16,7 @@ use crate::ast::*;
 use super::builtins;
 use super::consts::{Const, const_eval};
 mod infer;
+pub mod tables;
 
 use super::scope::{FnId, Scopes, Symbol, Visit, walk_expr, walk_stmts};
 
@@ -53,6 +54,8 @@ pub struct Model<'a> {
     pub fn_as_value: HashSet<usize>,
     /// Top-level functions that are assigned to (a name reused).
     pub fn_reassigned: HashSet<usize>,
+    /// Look-up tables ([`tables`]): each one's entries.
+    pub tables: HashMap<String, Vec<(String, Const)>>,
 }
 
 impl<'a> Model<'a> {
@@ -67,6 +70,7 @@ impl<'a> Model<'a> {
             flattened: HashSet::new(),
             fn_as_value: HashSet::new(),
             fn_reassigned: HashSet::new(),
+            tables: HashMap::new(),
         };
         m.find_flattened(program);
         for v in m.scopes.top_vars.clone() {
@@ -77,6 +81,7 @@ impl<'a> Model<'a> {
         m.declare_flattened(program);
         m.count_assignments(program);
         m.find_constants(program);
+        m.tables = tables::find(&m, program);
         m.infer_plain(program);
         m
     }

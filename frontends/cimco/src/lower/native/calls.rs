@@ -27,26 +27,7 @@ impl Native<'_, '_> {
             ExprKind::Member { object, property } => self.method(object, &property.name, args, at),
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
                 Symbol::TopFn(i) => {
-                    let id = self.model.scopes.top_fns[i];
-                    let info = &self.model.scopes.funcs[id];
-                    if self.model.fn_reassigned.contains(&i) {
-                        return Err(why(at, format!("calls `{name}`, which the post assigns another function to")));
-                    }
-                    if args.len() > info.params.len() {
-                        return Err(why(
-                            at,
-                            format!(
-                                "calls `{name}` with more arguments than its parameters (the extra ones are read through `arguments`)"
-                            ),
-                        ));
-                    }
-                    if !self.model.returns_plain[id] {
-                        return Err(why(
-                            at,
-                            format!("calls `{name}`, which may return an object, an array or a function"),
-                        ));
-                    }
-                    let f = *self.layout.top_fn.get(i).ok_or_else(|| why(at, format!("calls `{name}`")))?;
+                    let f = self.call_target(i, name, args.len(), at)?;
                     Ok(Ir::Call(f, self.args(args)?))
                 }
                 Symbol::Global(g) if self.model.global(&g).is_none() => self.host_call(&g, args, at),
@@ -74,6 +55,15 @@ impl Native<'_, '_> {
 
     fn method(&mut self, object: &Expr, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
         if let ExprKind::Ident(o) = &object.kind {
+            if let Some(slot) = self.array_slot(o) {
+                return self.array_method(slot, o, name, at);
+            }
+            if name == "apply"
+                && args.len() == 2
+                && let Symbol::TopFn(i) = self.model.scopes.resolve(o, self.at)
+            {
+                return self.apply(i, o, args, at);
+            }
             if o == "Math" && self.is_host("Math") {
                 return self.math(name, args, at);
             }
@@ -104,6 +94,11 @@ impl Native<'_, '_> {
                     None => Ir::Number(0.0),
                 };
                 Ok(Ir::Builtin(Builtin::ToFixed, vec![recv, d]))
+            }
+            ("substring", 1 | 2) => {
+                let mut a = vec![recv];
+                a.extend(self.args(args)?);
+                Ok(Ir::Builtin(Builtin::Substring, a))
             }
             _ => Err(why(at, format!("calls method `.{name}()`, which has no native form"))),
         }

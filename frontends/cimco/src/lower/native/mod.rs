@@ -12,11 +12,18 @@
 //! says why then ([`Why`]: the construct and where it is), and
 //! `postc inspect` shows it.
 
+use std::collections::HashMap;
+
 use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, LocalId, Place, Stmt as IrStmt, UnaryOp as IrUn};
 
 use crate::ast::*;
 
+mod arrays;
 mod calls;
+mod coalesce;
+mod flow;
+mod tables;
+pub mod variadic;
 
 use super::builtins;
 use super::consts::Const;
@@ -33,6 +40,14 @@ pub struct Native<'c, 'a> {
     pub at: FnId,
     /// Slots in use (parameters, locals and temporaries).
     pub slots: u16,
+    /// `Some(n)`: the function reads `arguments`, and this is its form for
+    /// calls with `n` arguments (`arguments.length` is `n`; argument `k`
+    /// past the parameters is slot `k`, the `var`s move up to make room).
+    pub arity: Option<usize>,
+    /// The array locals kept as joined text and a count ([`arrays`]), by slot.
+    arrays: HashMap<usize, arrays::ArrayLocal>,
+    /// Loop counters of a loop being unrolled, by slot: their value now.
+    unrolled: HashMap<usize, f64>,
 }
 
 /// Why a function cannot run as native IR: the first construct that has
@@ -80,15 +95,26 @@ fn expr_name(k: &ExprKind) -> &'static str {
     }
 }
 
+impl<'c, 'a> Native<'c, 'a> {
+    pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c mut Layout, at: FnId) -> Self {
+        Native { model, setup, layout, at, slots: 0, arity: None, arrays: HashMap::new(), unrolled: HashMap::new() }
+    }
+}
+
 impl Native<'_, '_> {
     /// The body of a function as native statements, or `None` when it must
     /// run as a script.
     pub fn lower_function(&mut self, body: &[Stmt], span: postc_ir::Span) -> R<Vec<IrStmt>> {
         let info = &self.model.scopes.funcs[self.at];
+        if info.uses_arguments && self.arity.is_none() && variadic::specializable(self.model, self.at) {
+            // The function's own IR form serves calls with as many
+            // arguments as it has parameters.
+            self.arity = Some(info.params.len());
+        }
         let reason = if info.uses_this {
             Some("uses `this`")
-        } else if info.uses_arguments {
-            Some("reads `arguments` (takes a variable number of arguments)")
+        } else if info.uses_arguments && self.arity.is_none() {
+            Some("reads `arguments` (takes a variable number of arguments) and is an entry point postc calls")
         } else if info.captures {
             Some("is a closure: it uses a local of the function around it")
         } else if !info.nested.is_empty() {
@@ -99,8 +125,22 @@ impl Native<'_, '_> {
         if let Some(r) = reason {
             return Err(why(span, r));
         }
-        self.slots = info.locals.len() as u16;
-        self.stmts(body)
+        let params = info.params.len();
+        self.slots = (info.locals.len() + self.arity.map_or(0, |n| n.saturating_sub(params))) as u16;
+        self.find_arrays(body)?;
+        let mut out = self.stmts(body)?;
+        coalesce::copies(&mut out, self.arity.unwrap_or(params).max(params));
+        Ok(out)
+    }
+
+    /// The IR slot of local `slot` (parameters first, then `var`s): the
+    /// `var`s of a specialization move past its extra arguments.
+    fn local(&self, slot: usize) -> LocalId {
+        let params = self.model.scopes.funcs[self.at].params.len();
+        match self.arity {
+            Some(n) if n > params && slot >= params => LocalId::new((slot + n - params) as u16),
+            _ => LocalId::new(slot as u16),
+        }
     }
 
     pub fn stmts(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
@@ -118,6 +158,12 @@ impl Native<'_, '_> {
         match &s.kind {
             StmtKind::Var(ds) => {
                 for d in ds {
+                    if let Some(slot) = self.array_slot(&d.name.name) {
+                        if let Some(init) = &d.init {
+                            self.array_assign(slot, init, out)?;
+                        }
+                        continue;
+                    }
                     if let Some(init) = &d.init {
                         let target = Expr::new(ExprKind::Ident(d.name.name.clone()), d.name.span);
                         out.push(IrStmt::Assign(self.place(&target)?, self.expr(init)?));
@@ -163,6 +209,9 @@ impl Native<'_, '_> {
                 out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span) });
             }
             StmtKind::For { init, test, update, body } => {
+                if let Some((slot, from, to)) = self.unrollable(init, test, update, body) {
+                    return self.unroll(slot, from, to, body, out);
+                }
                 if has_continue(body) {
                     return Err(why(s.span, "`continue` in a `for` loop"));
                 }
@@ -185,7 +234,19 @@ impl Native<'_, '_> {
                 };
                 out.push(IrStmt::While { cond, body: b, span: Some(s.span) });
             }
-            StmtKind::Switch { discriminant, cases } => self.switch(discriminant, cases, out)?,
+            StmtKind::Switch { discriminant, cases } => {
+                let mut simple = Vec::new();
+                let slots = self.slots;
+                match self.switch(discriminant, cases, &mut simple) {
+                    Ok(()) => out.extend(simple),
+                    Err(w) if w.what.contains("falls through") || w.what.contains("`default` is not the last") => {
+                        self.slots = slots;
+                        self.switch_fallthrough(discriminant, cases, s.span, out)?
+                    }
+                    Err(w) => return Err(w),
+                }
+            }
+            StmtKind::ForIn { declared: _, name, object, body } => self.for_in(name, object, body, s.span, out)?,
             StmtKind::Break => out.push(IrStmt::Break),
             StmtKind::Continue => out.push(IrStmt::Continue),
             StmtKind::Return(e) => out.push(IrStmt::Return(match e {
@@ -256,6 +317,9 @@ impl Native<'_, '_> {
 
     /// An expression evaluated for its effect.
     fn expr_stmt(&mut self, e: &Expr) -> R<IrStmt> {
+        if let Some(s) = self.array_stmt(e)? {
+            return Ok(s);
+        }
         match &e.kind {
             ExprKind::Assign { op, target, value } => {
                 let place = self.place(target)?;
@@ -286,7 +350,7 @@ impl Native<'_, '_> {
         let name = match &target.kind {
             ExprKind::Ident(n) => match self.model.scopes.resolve(n, self.at) {
                 Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
-                    return Ok(Place::Local(LocalId::new(slot as u16)));
+                    return Ok(Place::Local(self.local(slot)));
                 }
                 Symbol::Global(g) => g,
                 Symbol::Local { .. } => {
@@ -318,6 +382,13 @@ impl Native<'_, '_> {
     }
 
     fn local_plain(&self, slot: usize) -> bool {
+        // A specialization is called from native code only, which passes
+        // numbers, text, booleans and nothing.
+        // Its other locals hold what native code assigns them: an
+        // assignment of anything else has no native form itself.
+        if self.arity.is_some() {
+            return !self.arrays.contains_key(&slot);
+        }
         self.model.local_plain.get(self.at).and_then(|l| l.get(slot)).copied().unwrap_or(false)
     }
 
@@ -357,9 +428,22 @@ impl Native<'_, '_> {
             ExprKind::String(s) => Ir::Text(s.clone()),
             ExprKind::Bool(b) => Ir::Bool(*b),
             ExprKind::Null | ExprKind::Undefined => Ir::Null,
+            ExprKind::Ident(name) if name == "arguments" && self.model.scopes.funcs[self.at].uses_arguments => {
+                return Err(why(
+                    e.span,
+                    "uses `arguments` other than as `arguments.length`, `arguments[i]` or `f.apply(null, arguments)`",
+                ));
+            }
+            ExprKind::Ident(name) if self.array_slot(name).is_some() => {
+                return Err(why(e.span, format!("uses array `{name}` other than by `push`, `length` and `join`")));
+            }
+            ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Null),
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
+                Symbol::Local { func, slot } if func == self.at && self.unrolled.contains_key(&slot) => {
+                    Ir::Number(self.unrolled[&slot])
+                }
                 Symbol::Local { func, slot } if func == self.at && self.local_plain(slot) => {
-                    Ir::Local(LocalId::new(slot as u16))
+                    Ir::Local(self.local(slot))
                 }
                 Symbol::Global(g) => self.global_value(&g, e.span)?,
                 Symbol::Local { .. } => {
@@ -381,6 +465,9 @@ impl Native<'_, '_> {
                     return builtins::math_constant(&property.name)
                         .map(Ir::Number)
                         .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
+                }
+                if let Some(v) = self.member_special(object, &property.name, e.span, Ir::Null)? {
+                    return Ok(v);
                 }
                 if property.name == "length" {
                     return Ok(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
@@ -405,6 +492,10 @@ impl Native<'_, '_> {
                     UnaryOp::BitNot => Ir::Unary(IrUn::BitNot, a),
                     UnaryOp::Typeof => Ir::Unary(IrUn::Typeof, a),
                 }
+            }
+            // A table's missing entry joins to text as "undefined".
+            ExprKind::Binary { op: BinaryOp::Add, left, right } => {
+                binary_js(IrBin::Add, self.expr_in_text(left, right)?, self.expr_in_text(right, left)?)
             }
             ExprKind::Binary { op, left, right } => binary_js(bin(*op), self.expr(left)?, self.expr(right)?),
             ExprKind::Logical { op, left, right } => {

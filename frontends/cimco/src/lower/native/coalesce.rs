@@ -1,0 +1,109 @@
+//! Copy coalescing over a function's native body: `var text =
+//! words.join(" ")` is `t = w` with `w` never used again and `t` not
+//! used before, so `t` can live in `w`'s slot. The fast path (`emit`) then
+//! sees one local built by concatenation, which it keeps in the output.
+
+use postc_ir::{Expr, LocalId, Piece, Place, Stmt};
+
+/// Coalesces top-level copies between locals at or past `first_var` (the
+/// parameters keep their slots).
+pub fn copies(body: &mut Vec<Stmt>, first_var: usize) {
+    let mut i = 0;
+    while i < body.len() {
+        if let Stmt::Assign(Place::Local(t), Expr::Local(w)) = &body[i] {
+            let (t, w) = (*t, *w);
+            if t != w
+                && t.index() >= first_var
+                && w.index() >= first_var
+                && !body[..i].iter().any(|s| mentions(s, t))
+                && !body[i + 1..].iter().any(|s| mentions(s, w))
+            {
+                body.remove(i);
+                for s in &mut body[i..] {
+                    rename(s, t, w);
+                }
+                continue;
+            }
+        }
+        i += 1;
+    }
+}
+
+fn mentions(s: &Stmt, k: LocalId) -> bool {
+    let mut found = false;
+    visit(s, &mut |x| found |= *x == k);
+    found
+}
+
+fn rename(s: &mut Stmt, from: LocalId, to: LocalId) {
+    visit_mut(s, &mut |x| {
+        if *x == from {
+            *x = to;
+        }
+    });
+}
+
+/// Every local a statement mentions.
+fn visit(s: &Stmt, f: &mut dyn FnMut(&LocalId)) {
+    let mut s = s.clone();
+    visit_mut(&mut s, &mut |x| f(x));
+}
+
+fn visit_mut(s: &mut Stmt, f: &mut dyn FnMut(&mut LocalId)) {
+    match s {
+        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => pieces.iter_mut().for_each(|p| {
+            if let Piece::Expr(e) = p {
+                expr_mut(e, f)
+            }
+        }),
+        Stmt::Write(e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => expr_mut(e, f),
+        Stmt::Assign(place, e) => {
+            if let Place::Local(k) = place {
+                f(k);
+            }
+            expr_mut(e, f);
+        }
+        Stmt::If { branches, otherwise } => {
+            for (c, b) in branches {
+                expr_mut(c, f);
+                b.iter_mut().for_each(|s| visit_mut(s, f));
+            }
+            otherwise.iter_mut().for_each(|s| visit_mut(s, f));
+        }
+        Stmt::While { cond, body, .. } => {
+            expr_mut(cond, f);
+            body.iter_mut().for_each(|s| visit_mut(s, f));
+        }
+        Stmt::Mark(k) | Stmt::Truncate(k) | Stmt::Blocks(k) => f(k),
+        Stmt::MoveBack { to, from } => {
+            f(to);
+            f(from);
+        }
+        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) => {}
+    }
+}
+
+fn expr_mut(e: &mut Expr, f: &mut dyn FnMut(&mut LocalId)) {
+    match e {
+        Expr::Local(k) | Expr::Written(k) => f(k),
+        Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => expr_mut(value, f),
+        Expr::Binary(_, a, b) => {
+            expr_mut(a, f);
+            expr_mut(b, f);
+        }
+        Expr::Choose(c, a, b) => {
+            expr_mut(c, f);
+            expr_mut(a, f);
+            expr_mut(b, f);
+        }
+        Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(|a| expr_mut(a, f)),
+        Expr::Number(_)
+        | Expr::Text(_)
+        | Expr::Bool(_)
+        | Expr::Null
+        | Expr::Quantity(_)
+        | Expr::Global(_)
+        | Expr::Var(_)
+        | Expr::Previous(_) => {}
+    }
+}
