@@ -136,3 +136,73 @@ fn every_fixture_lowers_to_a_script_that_compiles() {
         }
     }
 }
+
+/// Issue 13: the JavaScript of field posts lowers to native IR. Each
+/// lowering fires on the shape it handles and leaves anything else to the
+/// script, which says why. (`tests/cimco_native.rs` posts both under
+/// postc and Node.js.)
+const FIELD: &str = r#"
+var linebreak = "\n";
+var codes = {1: "G02", 0: "G03"};
+var changed = {a: "A"};
+function writeBlock() {
+    var words = [];
+    for (var i = 0; i < arguments.length; ++i) {
+        if (arguments[i] != "") { words.push(arguments[i]); }
+    }
+    return words.join(" ") + linebreak;
+}
+function forward() { return writeBlock.apply(null, arguments); }
+function literal(a) { return writeBlock.apply(null, [a, "B"]); }
+function dynamicApply(a) { var w = [a]; return writeBlock.apply(null, w); }
+function argsValue() { var a = arguments; return a.length; }
+function table(k) { return codes[k] + codes.x; }
+function changes() { changed.a = "B"; return changed.a; }
+function indexedArray() { var w = ["a"]; return w[0]; }
+function fallthrough(n) { var s = ""; switch (n) { case 1: s += "1"; default: s += "d"; } return s; }
+function forIn() { var s = ""; for (var k in codes) { s += k; } return s; }
+function forInContinue() { var s = ""; for (var k in codes) { if (k == "1") continue; s += k; } return s; }
+function onOpen(c) { return writeBlock("a", "b") + forward("x") + literal("y") + dynamicApply("z") + argsValue(1, 2); }
+function onLinear(x, y, z, m) { return writeBlock("G1", "X" + x); }
+"#;
+
+fn why(post: &Post, name: &str) -> String {
+    post.functions
+        .iter()
+        .filter(|f| f.name == name)
+        .filter_map(|f| f.why_script.as_ref().map(|w| w.what.clone()))
+        .next()
+        .unwrap_or_default()
+}
+
+#[test]
+fn field_style_javascript_lowers_to_native_ir() {
+    let (post, diags) = compile(FIELD);
+    assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+    // Variadic functions: one form per number of arguments.
+    for f in ["writeBlock", "writeBlock/1", "writeBlock/2", "forward", "forward/1", "literal", "onOpen", "onLinear"] {
+        assert!(native(&post, f), "{f}: {}", why(&post, f));
+    }
+    // Tables, fallthrough, for-in.
+    for f in ["table", "fallthrough", "forIn"] {
+        assert!(native(&post, f), "{f}: {}", why(&post, f));
+    }
+    // Does not fire: an array of unknown length to apply, `arguments` as a
+    // value, a table that changes, an array read by index, `continue` in a
+    // for-in.
+    assert!(!native(&post, "dynamicApply"));
+    assert!(why(&post, "dynamicApply").contains("assigns `w`, a local that holds"), "{}", why(&post, "dynamicApply"));
+    assert!(!native(&post, "argsValue"));
+    assert!(why(&post, "argsValue").contains("uses `arguments` other than"), "{}", why(&post, "argsValue"));
+    assert!(!native(&post, "changes"));
+    assert!(!native(&post, "indexedArray"));
+    assert!(!native(&post, "forInContinue"));
+    assert!(why(&post, "forInContinue").contains("`continue` in a `for ... in` loop"), "{}", why(&post, "forInContinue"));
+}
+
+#[test]
+fn entry_points_that_read_arguments_stay_scripts() {
+    let (post, _) = compile("function onLinear() { return arguments[0] + \"\\n\"; }\n");
+    assert!(!native(&post, "onLinear"));
+    assert!(why(&post, "onLinear").contains("is an entry point postc calls"), "{}", why(&post, "onLinear"));
+}

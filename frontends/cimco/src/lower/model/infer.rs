@@ -80,6 +80,19 @@ impl<'a> Model<'a> {
                 property.name == "length" || matches!(&object.kind, ExprKind::Ident(n) if n == "Math")
             }
             ExprKind::Call { callee, .. } => match &callee.kind {
+                // `f.apply(null, args)` returns what `f` returns.
+                ExprKind::Member { object, property }
+                    if property.name == "apply"
+                        && matches!(&object.kind, ExprKind::Ident(n) if matches!(self.scopes.resolve(n, at), Symbol::TopFn(_))) =>
+                {
+                    match &object.kind {
+                        ExprKind::Ident(n) => match self.scopes.resolve(n, at) {
+                            Symbol::TopFn(i) => self.returns_plain[self.scopes.top_fns[i]],
+                            _ => false,
+                        },
+                        _ => false,
+                    }
+                }
                 ExprKind::Member { object, property } => {
                     matches!(&object.kind, ExprKind::Ident(n) if n == "Math") || builtins::plain_method(&property.name)
                 }

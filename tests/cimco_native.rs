@@ -1,0 +1,217 @@
+//! The JavaScript that field posts are written in lowers to native IR
+//! (issue 13), and posts what Node.js posts: variadic functions and
+//! `arguments`, `f.apply`, arrays gathered with `push` and joined,
+//! object-literal tables, `switch` with fallthrough, `for ... in` over a
+//! table, `do ... while`, `substring`. Each construct has a post where the
+//! lowering fires (the function is native) and one where it must not (the
+//! function stays a script and says why); both must print what Node.js
+//! prints. Node.js is skipped, with a message, when it is not installed.
+
+mod support;
+
+use postc_ir::{Body, Post};
+use support::cimco::*;
+
+/// The head every test post shares: formats, variables, and a variadic
+/// `writeBlock` in the field style.
+const HEAD: &str = r#"
+var linebreak = "\n";
+var seq = 10;
+var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+function writeBlock() {
+    var words = [];
+    for (var i = 0; i < arguments.length; ++i) {
+        if (arguments[i] != "") {
+            words.push(arguments[i]);
+        }
+    }
+    if (words.length == 0) {
+        return "";
+    }
+    var text = words.join(" ");
+    text = "N" + seq + " " + text;
+    seq += 10;
+    return text + linebreak;
+}
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, m) {
+    return writeBlock(isCW ? "G2" : "G3", xOutput.format(ex), yOutput.format(ey), zOutput.format(ez));
+}
+"#;
+
+/// Compiles `HEAD` + `body`, checks which functions are native, and
+/// compares postc's program over the milling job with Node's.
+fn check(name: &str, body: &str, native: &[&str], script: &[&str]) {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join(format!("{name}.js"));
+    std::fs::write(&path, format!("{HEAD}{body}")).expect("writes the post");
+    let post = compile(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+    for f in native {
+        assert!(is(&post, f, true), "{name}: `{f}` should be native\n{}", how(&post));
+    }
+    for f in script {
+        assert!(is(&post, f, false), "{name}: `{f}` should be a script\n{}", how(&post));
+    }
+    let toolpath = corpus().join("toolpaths/cimco/mill.ron");
+    let ours = post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert!(!ours.is_empty(), "{name}: nothing posted");
+    if node().is_none() {
+        eprintln!("cimco_native: `node` is not installed; {name} is not compared");
+        return;
+    }
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("exports the toolpath");
+    let theirs = run_node(&path, &jsonl, &[]).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert!(theirs == ours, "{name}: Node.js (-) and postc (+) differ\n{}", diff(&theirs, &ours));
+}
+
+fn is(post: &Post, name: &str, native: bool) -> bool {
+    let mut found = post.functions.iter().filter(|f| f.name == name).peekable();
+    found.peek().is_some() && found.all(|f| matches!(f.body, Body::Native(_)) == native)
+}
+
+fn how(post: &Post) -> String {
+    post.functions
+        .iter()
+        .map(|f| format!("{}: {:?}\n", f.name, f.why_script.as_ref().map(|w| w.what.as_str())))
+        .collect()
+}
+
+#[test]
+fn variadic_functions_are_native_per_number_of_arguments() {
+    check(
+        "variadic",
+        r#"
+        function wordsOf() { return arguments.length + ":" + (arguments.length > 1 ? arguments[1] : "-"); }
+        function line2() { return writeBlock.apply(null, arguments); }
+        function onOpen(c) {
+            return writeBlock("%") + writeBlock() + writeBlock("G90", "", "G17") + wordsOf("a") + wordsOf("a", 7)
+                + linebreak + line2("G21", "G40") + writeBlock.apply(null, ["M6", "T1"]);
+        }
+        function onLinear(x, y, z, m) {
+            return writeBlock(m == MOVEMENT_RAPID ? "G0" : "G1", xOutput.format(x), yOutput.format(y), zOutput.format(z));
+        }
+        "#,
+        &["writeBlock", "writeBlock/1", "writeBlock/3", "writeBlock/4", "wordsOf/1", "line2", "onLinear", "onOpen"],
+        &[],
+    );
+}
+
+#[test]
+fn arguments_used_as_a_value_keeps_the_script() {
+    check(
+        "arguments_value",
+        r#"
+        function count() { var a = arguments; return a.length; }
+        function onLinear(x, y, z, m) { return writeBlock("G1", xOutput.format(x), "C" + count(x, y)); }
+        "#,
+        &["onLinear", "writeBlock/3"],
+        &["count"],
+    );
+}
+
+#[test]
+fn arrays_pushed_measured_and_joined_are_native() {
+    check(
+        "arrays",
+        r#"
+        function list(a, b) {
+            var w = ["<", a];
+            w.push(b, 3, null);
+            w.push(undefined);
+            return w.length + "=" + w.join("|");
+        }
+        function onOpen(c) { return list("x", 2.5) + linebreak; }
+        function onLinear(x, y, z, m) { return writeBlock(xOutput.format(x)); }
+        "#,
+        &["list", "onOpen"],
+        &[],
+    );
+}
+
+#[test]
+fn arrays_used_otherwise_keep_the_script() {
+    check(
+        "arrays_other",
+        r#"
+        function list(a) { var w = [a, "b"]; return w[0] + w.join("-") + w.join("+"); }
+        function onOpen(c) { return list("x") + linebreak; }
+        function onLinear(x, y, z, m) { return writeBlock(xOutput.format(x)); }
+        "#,
+        &["onLinear"],
+        &["list"],
+    );
+}
+
+#[test]
+fn object_tables_are_native_lookups() {
+    check(
+        "tables",
+        r#"
+        var codes = {1: "G02", 0: "G03", off: "M09", "2.5": "half"};
+        var names = {a: "first", b: "second"};
+        function code(k) { return codes[k]; }
+        function onOpen(c) {
+            var s = "";
+            for (var k in codes) { s += k + "=" + codes[k] + ";"; }
+            return s + code(1) + code("1") + code(0) + code("off") + code(2.5) + "|" + ("M" + codes[7]) + "|"
+                + (codes.missing || "none") + "|" + names.a + "|" + (code(true ? 1 : 0) == "G02") + linebreak;
+        }
+        function onLinear(x, y, z, m) { return writeBlock(codes[m == MOVEMENT_RAPID ? 1 : 0], xOutput.format(x)); }
+        "#,
+        &["code", "onOpen", "onLinear"],
+        &[],
+    );
+}
+
+#[test]
+fn tables_that_change_keep_the_script() {
+    check(
+        "tables_changed",
+        r#"
+        var codes = {1: "G02", 0: "G03"};
+        function code(k) { return codes[k]; }
+        function onOpen(c) { codes[2] = "G04"; return code(2) + linebreak; }
+        function onLinear(x, y, z, m) { return writeBlock(code(1), xOutput.format(x)); }
+        "#,
+        &[],
+        &["code", "onOpen"],
+    );
+}
+
+#[test]
+fn switch_with_fallthrough_and_loops_are_native() {
+    check(
+        "switch",
+        r#"
+        function kind(n) {
+            var s = "";
+            switch (n) {
+            case 1:
+                s += "one ";
+            case 2:
+                s += "two ";
+                break;
+            default:
+                s += "many ";
+            case 0:
+                s += "zero ";
+            }
+            return s;
+        }
+        function pad(n) {
+            var s = "" + n;
+            do {
+                s = "0" + s;
+            } while (s.length < 5);
+            return "O" + s.substring(1) + s.substring(3, 1) + s.substring(9);
+        }
+        function onOpen(c) { return kind(1) + kind(2) + kind(5) + kind(0) + pad(42) + linebreak; }
+        function onLinear(x, y, z, m) { return writeBlock(xOutput.format(x)); }
+        "#,
+        &["kind", "pad", "onOpen"],
+        &[],
+    );
+}
