@@ -75,6 +75,11 @@ pub struct Engine<'p> {
     pub(crate) trace: Option<Box<crate::trace::Tracer>>,
     /// Told of handler runs and calls, when the run is profiled.
     pub(crate) profile: Option<Box<dyn crate::profile::CallObserver>>,
+    /// A buffer reused to format values into text, and the empty text
+    /// shared by every modal variable that prints nothing: formatting into
+    /// a value allocates only when there is text.
+    pub(crate) scratch: Vec<u8>,
+    pub(crate) empty_text: std::rc::Rc<str>,
 }
 
 impl<'p> Engine<'p> {
@@ -110,6 +115,8 @@ impl<'p> Engine<'p> {
             modal_epoch: 0,
             trace: None,
             profile: None,
+            scratch: Vec::with_capacity(64),
+            empty_text: std::rc::Rc::from(""),
         }
     }
 

@@ -358,7 +358,8 @@ impl Engine<'_> {
     pub fn format_through_var(&mut self, id: VarId, v: Value) -> Value {
         let post = self.post;
         let var = &post.variables[id.index()];
-        let mut buf = Vec::with_capacity(16);
+        let mut buf = std::mem::take(&mut self.scratch);
+        buf.clear();
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         match &v {
             Value::Text(s) => {
@@ -367,7 +368,13 @@ impl Engine<'_> {
             other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
-        Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
+        let text = if buf.is_empty() {
+            Value::Text(self.empty_text.clone())
+        } else {
+            Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
+        };
+        self.scratch = buf;
+        text
     }
 
     /// Calls a post function with arguments.
