@@ -197,7 +197,11 @@ fn field_style_javascript_lowers_to_native_ir() {
     assert!(!native(&post, "changes"));
     assert!(!native(&post, "indexedArray"));
     assert!(!native(&post, "forInContinue"));
-    assert!(why(&post, "forInContinue").contains("`continue` in a `for ... in` loop"), "{}", why(&post, "forInContinue"));
+    assert!(
+        why(&post, "forInContinue").contains("`continue` in a `for ... in` loop"),
+        "{}",
+        why(&post, "forInContinue")
+    );
 }
 
 #[test]
@@ -205,4 +209,31 @@ fn entry_points_that_read_arguments_stay_scripts() {
     let (post, _) = compile("function onLinear() { return arguments[0] + \"\\n\"; }\n");
     assert!(!native(&post, "onLinear"));
     assert!(why(&post, "onLinear").contains("is an entry point postc calls"), "{}", why(&post, "onLinear"));
+}
+
+/// Expression functions (a chain of `if (c) return a;` and a last
+/// `return`, after at most one local read once where evaluation always
+/// reaches it) are inlined into the functions that call them with cheap
+/// arguments; others stay calls.
+#[test]
+fn expression_functions_are_inlined_into_their_callers() {
+    let js = r#"
+        function value() { var f = getFeedrate(1); return parseFloat(f.substring(1)); }
+        function guarded(m) { var f = getFeedrate(m); return m == 0 ? "" : f; }
+        function caller(x) { return value() + guarded(x); }
+        function onLinear(x, y, z, m) { return caller(x) + "\n"; }
+    "#;
+    let (post, _) = compile(js);
+    let body = |name: &str| -> String {
+        let f = post.functions.iter().find(|f| f.name == name).expect("the function");
+        format!("{:?}", f.body)
+    };
+    let call = |name: &str| -> String {
+        let i = post.functions.iter().position(|f| f.name == name).expect("the function");
+        let text = format!("{:?}", postc_ir::Expr::Call(postc_ir::FunctionId::new(i as u16), vec![]));
+        text.trim_end_matches("[])").to_string()
+    };
+    let caller = body("caller");
+    assert!(!caller.contains(&call("value")), "value() is inlined: {caller}");
+    assert!(caller.contains(&call("guarded")), "guarded() reads its local under a choice: a call: {caller}");
 }

@@ -281,7 +281,7 @@ impl Engine<'_> {
                 let n = self.eval(value, frame)?.num();
                 let mut buf = Vec::new();
                 self.writers[format.index()].write(n, &mut buf);
-                Value::text(&String::from_utf8_lossy(&buf))
+                Value::Text(text_of(&buf))
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -305,6 +305,18 @@ impl Engine<'_> {
             Expr::Binary(BinaryOp::Or, a, b) => {
                 let a = self.eval(a, frame)?;
                 if a.truthy() { a } else { self.eval(b, frame)? }
+            }
+            // Locals, globals and numbers are read in place: no reference
+            // count changes hands (the common `x != ""`, `n + 1`).
+            Expr::Binary(op, a, b) if is_leaf(a) && is_leaf(b) => {
+                let v = {
+                    let (mut ta, mut tb) = (Value::Null, Value::Null);
+                    let x = leaf(a, frame, &self.globals, &mut ta);
+                    let y = leaf(b, frame, &self.globals, &mut tb);
+                    binary(*op, x, y)
+                };
+                self.check_text(&v)?;
+                v
             }
             Expr::Binary(op, a, b) => {
                 let a = self.eval(a, frame)?;
@@ -368,11 +380,7 @@ impl Engine<'_> {
             other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
-        let text = if buf.is_empty() {
-            Value::Text(self.empty_text.clone())
-        } else {
-            Value::Text(Rc::from(String::from_utf8_lossy(&buf).as_ref()))
-        };
+        let text = if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(text_of(&buf)) };
         self.scratch = buf;
         text
     }
@@ -465,6 +473,11 @@ impl Engine<'_> {
                     };
                     self.write_number_var(*var, n);
                 }
+                postc_ir::Piece::Expr(Expr::Local(i)) if matches!(frame.get(i.index()), Some(Value::Text(_))) => {
+                    if let Some(Value::Text(t)) = frame.get(i.index()) {
+                        self.out.buf.extend_from_slice(t.as_bytes());
+                    }
+                }
                 postc_ir::Piece::Expr(e) => match self.eval(e, frame)? {
                     Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => push_integer(&mut self.out.buf, n as i64),
                     v => self.write_value_text(&v),
@@ -481,5 +494,38 @@ impl Engine<'_> {
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut self.out.buf);
         state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+    }
+}
+
+/// A local, a global or a number: read in place by [`leaf`].
+fn is_leaf(e: &Expr) -> bool {
+    matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_))
+}
+
+/// The value of a leaf expression, borrowed where it lives (`tmp` holds a
+/// number, or null for a slot that does not exist).
+fn leaf<'v>(e: &Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Value) -> &'v Value {
+    match e {
+        Expr::Local(i) => match frame.get(i.index()) {
+            Some(v) => v,
+            None => tmp,
+        },
+        Expr::Global(i) => match globals.get(i.index()) {
+            Some(v) => v,
+            None => tmp,
+        },
+        Expr::Number(n) => {
+            *tmp = Value::Num(*n);
+            tmp
+        }
+        _ => tmp,
+    }
+}
+
+/// Formatted bytes as text (they are UTF-8 but for a post's odd prefix).
+fn text_of(buf: &[u8]) -> Rc<str> {
+    match std::str::from_utf8(buf) {
+        Ok(s) => Rc::from(s),
+        Err(_) => Rc::from(String::from_utf8_lossy(buf).as_ref()),
     }
 }

@@ -269,6 +269,12 @@ mod tests {
     fn text_builtins() {
         let t = |s: &str| Value::text(s);
         assert_eq!(builtin(Builtin::Mid, &[t("ABCDEF"), Value::Num(2.0), Value::Num(3.0)]), t("BCD"));
+        // JavaScript's substring: clamped, NaN as 0, swapped, a missing end.
+        assert_eq!(builtin(Builtin::Substring, &[t("F1500"), Value::Num(1.0)]), t("1500"));
+        assert_eq!(builtin(Builtin::Substring, &[t("ABCDEF"), Value::Num(4.0), Value::Num(1.0)]), t("BCD"));
+        assert_eq!(builtin(Builtin::Substring, &[t("ABC"), Value::Num(-2.0), Value::Num(9.0)]), t("ABC"));
+        assert_eq!(builtin(Builtin::Substring, &[t("ABC"), t("x"), Value::Num(2.0)]), t("AB"));
+        assert_eq!(builtin(Builtin::Substring, &[t("été"), Value::Num(1.0)]), t("té"));
         assert_eq!(builtin(Builtin::Right, &[t("ABC"), Value::Num(5.0)]), t("ABC"));
         assert_eq!(builtin(Builtin::Val, &[t(" 12.5mm")]), Value::Num(12.5));
         assert_eq!(binary(BinaryOp::Concat, &Value::Num(3.0), &t("x")), t("3x"));

@@ -20,6 +20,7 @@ mod consts;
 mod emit;
 mod fold;
 mod handlers;
+mod inline;
 mod layout;
 mod model;
 mod native;
@@ -103,6 +104,12 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     let script = self::script(&model, &setup, &layout, whole, &init_stmts, own_feedrate);
     if let Some(d) = warn::check_script(&script, whole) {
         diags.push(d);
+    }
+    inline::expression_functions(&mut functions);
+    for f in &mut functions {
+        if let Body::Native(b) = &mut f.body {
+            *b = fold::stmts(std::mem::take(b));
+        }
     }
     let mut hs = handlers(&model, &layout, post.options.lathe, &functions);
     for f in &mut functions {

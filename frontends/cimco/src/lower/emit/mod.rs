@@ -205,7 +205,9 @@ impl<'f> Emitter<'f> {
                     out.extend(self.text(&arg, &Frame::root(), depth + 1)?);
                 }
                 map.push(Binding::Region(base));
-            } else if is_pure(&arg) && !assigns(body, LocalId::new(k as u16)) {
+            } else if (is_pure(&arg) || matches!(arg, Expr::Local(_))) && !assigns(body, LocalId::new(k as u16)) {
+                // A handler local is read where it is: nothing the inlined
+                // body does assigns it.
                 map.push(Binding::Value(arg));
             } else {
                 let s = self.slot();

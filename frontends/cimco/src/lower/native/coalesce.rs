@@ -6,8 +6,18 @@
 use postc_ir::{Expr, LocalId, Piece, Place, Stmt};
 
 /// Coalesces top-level copies between locals at or past `first_var` (the
-/// parameters keep their slots).
+/// parameters keep their slots), and drops top-level stores of constants
+/// into locals nothing reads (an unrolled loop's counter at its end).
 pub fn copies(body: &mut Vec<Stmt>, first_var: usize) {
+    let dead: Vec<usize> = (0..body.len())
+        .filter(|&i| {
+            matches!(&body[i], Stmt::Assign(Place::Local(k), Expr::Number(_) | Expr::Bool(_) | Expr::Null)
+                if k.index() >= first_var && !body_reads(body, *k))
+        })
+        .collect();
+    for i in dead.into_iter().rev() {
+        body.remove(i);
+    }
     let mut i = 0;
     while i < body.len() {
         if let Stmt::Assign(Place::Local(t), Expr::Local(w)) = &body[i] {
@@ -27,6 +37,20 @@ pub fn copies(body: &mut Vec<Stmt>, first_var: usize) {
         }
         i += 1;
     }
+}
+
+/// Whether anything reads local `k` (a store into it is not a read).
+fn body_reads(body: &[Stmt], k: LocalId) -> bool {
+    body.iter().any(|s| {
+        let mut s = s.clone();
+        if let Stmt::Assign(Place::Local(x), _) = &mut s
+            && *x == k
+        {
+            // Only the value side can read it.
+            *x = LocalId::new(u16::MAX);
+        }
+        mentions(&s, k)
+    })
 }
 
 fn mentions(s: &Stmt, k: LocalId) -> bool {
