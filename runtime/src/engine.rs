@@ -149,6 +149,7 @@ impl<'p> Engine<'p> {
                 if let Some(t) = self.trace.as_deref_mut() {
                     let h = &self.post.handlers[i as usize];
                     t.handler = Some((h.key.clone(), h.span));
+                    t.origin = None;
                 }
                 if let Some(p) = self.profile.as_deref_mut() {
                     p.enter(crate::profile::Frame::Handler(i as usize));

@@ -138,6 +138,11 @@ impl Engine<'_> {
                     self.blocks_since(at);
                 }
                 Stmt::Forget(v) => self.forget_var(*v),
+                Stmt::Origin(span) => {
+                    if let Some(t) = self.trace.as_deref_mut() {
+                        t.origin = Some(*span);
+                    }
+                }
                 Stmt::Script(_) => self.warn_once(
                     Diagnostic::warning(
                         "RT003",

@@ -130,6 +130,12 @@ const GLUE: [(&str, &str, &str); 3] = [
 ];
 
 /// A top-level function of the post, by name.
+/// Whether a function is one CNC-Calc calls: its entry points are named
+/// `on` and a capital (`onOpen`, `onLinear`, `onDrillingPoint`, ...).
+fn is_entry_point(name: &str) -> bool {
+    name.strip_prefix("on").is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
 fn top_fn<'m, 'a>(model: &'m Model<'a>, name: &str) -> Option<&'m scope::FuncInfo<'a>> {
     model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]])
 }
@@ -186,7 +192,8 @@ fn functions(
     for (i, &id) in model.scopes.top_fns.iter().enumerate() {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
-        let mut n = native::Native { model, setup, layout, at: id, slots: 0 };
+        let entry = f.name.as_deref().is_some_and(is_entry_point);
+        let mut n = native::Native { model, setup, layout, at: id, slots: 0, entry };
         let lowered = n.lower_function(&func.body, func.span);
         let slots = n.slots;
         let _ = i;
@@ -239,7 +246,7 @@ fn functions(
         });
     }
     let init_native = {
-        let mut n = native::Native { model, setup, layout, at: 0, slots: 0 };
+        let mut n = native::Native { model, setup, layout, at: 0, slots: 0, entry: false };
         n.stmts(init_stmts).map(|b| (fold::stmts(b), n.slots))
     };
     functions.push(Function {

@@ -33,6 +33,10 @@ pub struct Native<'c, 'a> {
     pub at: FnId,
     /// Slots in use (parameters, locals and temporaries).
     pub slots: u16,
+    /// The function is an entry point CNC-Calc calls (`onLinear`, ...):
+    /// each `return` is preceded by a [`IrStmt::Origin`], so that `--trace`
+    /// names the statement that returned a line.
+    pub entry: bool,
 }
 
 /// Why a function cannot run as native IR: the first construct that has
@@ -188,10 +192,15 @@ impl Native<'_, '_> {
             StmtKind::Switch { discriminant, cases } => self.switch(discriminant, cases, out)?,
             StmtKind::Break => out.push(IrStmt::Break),
             StmtKind::Continue => out.push(IrStmt::Continue),
-            StmtKind::Return(e) => out.push(IrStmt::Return(match e {
-                Some(e) => Some(self.expr(e)?),
-                None => None,
-            })),
+            StmtKind::Return(e) => {
+                if self.entry {
+                    out.push(IrStmt::Origin(s.span));
+                }
+                out.push(IrStmt::Return(match e {
+                    Some(e) => Some(self.expr(e)?),
+                    None => None,
+                }))
+            }
             other => return Err(why(s.span, stmt_name(other))),
         }
         Ok(())
