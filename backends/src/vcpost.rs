@@ -20,7 +20,8 @@
 //! What converts is printed in a canonical form: loops as `Do While ...
 //! Loop` (a `For` or `Select Case` of the source was lowered to a loop or
 //! an `If` chain and prints as one), every register with its `Prefix`,
-//! locals without a name in the IR as `L1`, `L2`, ... Printing the
+//! variables the frontend made up (a `For`'s bound) as `L1`, `L2`, ...
+//! Printing the
 //! converted post again gives the same text.
 
 use std::collections::HashSet;
@@ -247,7 +248,16 @@ impl Printer<'_> {
                 let name = match (f.params.get(k), kind) {
                     (Some(p), _) => self.names.give(p, "P"),
                     (None, Kind::Function(r)) if r == k => self.names.functions[i].clone(),
-                    _ => self.names.give(&format!("L{k}"), "L"),
+                    _ => {
+                        // The source's name; `$` marks a variable the frontend made up.
+                        let wanted = f
+                            .locals
+                            .get(k - f.params.len())
+                            .filter(|n| !n.starts_with('$'))
+                            .cloned()
+                            .unwrap_or_else(|| format!("L{k}"));
+                        self.names.give(&wanted, "L")
+                    }
                 };
                 slots.push(name);
             }

@@ -319,6 +319,11 @@ pub struct Function {
     pub params: Vec<String>,
     /// Parameters plus locals.
     pub slots: u16,
+    /// The source's names of the locals after the parameters, by slot,
+    /// when its frontend keeps them (backends print them); may be shorter
+    /// than the locals.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub locals: Vec<String>,
     pub body: Body,
     /// Where the function is defined.
     pub span: Option<Span>,

@@ -207,6 +207,7 @@ fn functions(
             name: f.name.clone().unwrap_or_default(),
             params: f.params.clone(),
             slots,
+            locals: Vec::new(),
             body,
             span: Some(func.span),
             why_script,
@@ -217,6 +218,7 @@ fn functions(
             name: layout::FEEDRATE.into(),
             params: vec!["movement".into()],
             slots: 1,
+            locals: Vec::new(),
             body: Body::Native(vec![
                 Stmt::If {
                     branches: vec![(
@@ -253,6 +255,7 @@ fn functions(
         name: layout::INIT.into(),
         params: vec![],
         slots: init_native.as_ref().map_or(0, |(_, s)| *s),
+        locals: Vec::new(),
         body: match &init_native {
             Ok((b, _)) => Body::Native(b.clone()),
             Err(_) => Body::Script(ScriptId::new(0)),
@@ -268,7 +271,15 @@ fn functions(
             what: format!("postc's bridge to `{entry}`: it hands the post the host's data as an object"),
             span,
         });
-        functions.push(Function { name: g.into(), params: vec![], slots: 0, body, span, why_script });
+        functions.push(Function {
+            name: g.into(),
+            params: vec![],
+            locals: Vec::new(),
+            slots: 0,
+            body,
+            span,
+            why_script,
+        });
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 
