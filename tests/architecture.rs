@@ -31,8 +31,8 @@ fn the_runtime_depends_on_the_ir_alone() {
 }
 
 #[test]
-fn backends_depend_on_the_ir_and_the_vectric_vocabulary() {
-    assert_eq!(postc_crates("backends"), ["postc-ir", "postc-front-vectric"]);
+fn backends_depend_on_the_ir_and_the_dialect_vocabularies() {
+    assert_eq!(postc_crates("backends"), ["postc-ir", "postc-front-vectric", "postc-front-vcpost"]);
 }
 
 #[test]

@@ -24,7 +24,7 @@ use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
 use support::{blessing, check_golden, corpus, diff, files, stem};
 
-const TARGETS: [Target; 2] = [Target::Vectric, Target::Ron];
+const TARGETS: [Target; 3] = [Target::Vectric, Target::VcPost, Target::Ron];
 
 struct Case {
     post: PathBuf,
@@ -124,6 +124,7 @@ fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
 fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
+        Target::VcPost => "vcpost",
         Target::Ron => "ron",
     }
 }
@@ -131,6 +132,7 @@ fn target_name(t: Target) -> &'static str {
 fn target_dialect(t: Target) -> Dialect {
     match t {
         Target::Vectric => Dialect::Vectric,
+        Target::VcPost => Dialect::VcPost,
         Target::Ron => Dialect::Ron,
     }
 }
@@ -200,6 +202,14 @@ fn converted_posts_post_as_their_sources() {
                 .collect();
             if !new.is_empty() {
                 failures.push(format!("{name} -> {file}: the converted post has new diagnostics: {new:?}"));
+            }
+            // It lints as its source does: no lint the source did not get.
+            let lints = |p: &Post| -> BTreeSet<&'static str> {
+                postc_lint::lint(p, &postc_lint::Options::default()).iter().map(|d| d.code).collect()
+            };
+            let new_lints: Vec<&str> = lints(&back).difference(&lints(&source)).copied().collect();
+            if !new_lints.is_empty() {
+                failures.push(format!("{name} -> {file}: the converted post gets new lints: {new_lints:?}"));
             }
             if target == Target::Ron && without_spans(&source) != back {
                 failures.push(format!("{name} -> {file}: the RON post reads back as a different IR"));
@@ -271,7 +281,7 @@ fn converted_posts_post_as_their_sources() {
     }
     for target in TARGETS {
         let dir = corpus().join("converted").join(target_name(target));
-        // `postp/` belongs to `postp_controllers_convert`.
+        // `postp/` folders belong to `postp_controllers_convert`.
         let folders = std::fs::read_dir(&dir)
             .into_iter()
             .flatten()
@@ -306,9 +316,9 @@ FEDRAT/0.25,MMPR\nRAPID\nGOTO/15,0,2\nGOTO/12.5,0,0\nGOTO/12.5,0,-25\nCIRCLE/18.
 GOTO/20,0,-31\nCOOLNT/OFF\nSPINDL/OFF\nFINI\n";
 
 /// The eight `postp` controllers: each controller post, compiled with its
-/// options for a CL file, converts to RON (and is refused by Vectric: it
-/// runs one Sub per APT word), and posting the CL file through the RON post
-/// writes the same program as through the source.
+/// options for a CL file, converts to RON and to VcPost (and is refused by
+/// Vectric: it runs one Sub per APT word), and posting the CL file through
+/// the converted posts writes the same program as through the source.
 #[test]
 fn postp_controllers_convert() {
     let mill = corpus().join("toolpaths/apt/postp_demo.apt");
@@ -353,10 +363,39 @@ fn postp_controllers_convert() {
         };
         let want = program(&source, &mut sources);
         let got = program(&back, &mut sources);
-        match (want, got) {
+        match (&want, got) {
+            (Ok(w), Ok(g)) if *w == g => {}
+            (Ok(w), Ok(g)) => failures.push(format!("{controller:?}: the program differs\n{}", diff(w, &g))),
+            (w, g) => failures.push(format!("{controller:?}: source {:?}, converted {:?}", w.as_ref().err(), g.err())),
+        }
+        // The controller as a VcPost post of its own: pinned, a fixed point,
+        // and it posts the CL file as the controller does.
+        let vcpost = match postc_backends::convert(&source, Target::VcPost) {
+            Ok(v) => v,
+            Err(d) => {
+                failures.push(format!("{controller:?}: refused by VcPost: {:?}", d[0].message));
+                continue;
+            }
+        };
+        let pin = corpus().join("converted/vcpost/postp").join(format!("{}.VcPost", controller.name()));
+        if let Err(e) = check_golden(&pin, &vcpost) {
+            failures.push(e);
+        }
+        let path = scratch.path().join(format!("{}.VcPost", controller.name()));
+        let (back, diags) = compile_bytes(&path, &vcpost, Some(Dialect::VcPost));
+        let Some(back) = back else {
+            failures.push(format!("{controller:?}: the VcPost post does not compile: {diags:?}"));
+            continue;
+        };
+        match postc_backends::convert(&back, Target::VcPost) {
+            Ok(again) if again == vcpost => {}
+            Ok(again) => failures.push(format!("{controller:?}: converting again differs\n{}", diff(&vcpost, &again))),
+            Err(d) => failures.push(format!("{controller:?}: converting again is refused: {:?}", d[0].message)),
+        }
+        match (want, program(&back, &mut sources)) {
             (Ok(w), Ok(g)) if w == g => {}
-            (Ok(w), Ok(g)) => failures.push(format!("{controller:?}: the program differs\n{}", diff(&w, &g))),
-            (w, g) => failures.push(format!("{controller:?}: source {:?}, converted {:?}", w.err(), g.err())),
+            (Ok(w), Ok(g)) => failures.push(format!("{controller:?} as VcPost: the program differs\n{}", diff(&w, &g))),
+            (w, g) => failures.push(format!("{controller:?} as VcPost: source {:?}, converted {:?}", w.err(), g.err())),
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
@@ -410,4 +449,29 @@ fn mutated_ron_posts_never_panic() {
         }
     }
     assert!(tried > 1000 && refused > 0, "{tried} mutations, {refused} refused");
+}
+
+/// VcPost templates: text that looks like a register (`"(A<" & "B>)"`),
+/// quotes, control characters and keyword names survive a conversion to
+/// VcPost, and the converted post posts the same program.
+#[test]
+fn vcpost_templates_and_names_survive_conversion() {
+    let source = "X.Prefix = \" X\"\nX.Decimals = 3\nN.Start = 5\n\
+        Sub GOTO\n  Out \"<N> (A<\" & \"B>) \"\"q\"\"<X>\" & Chr(9) & X\n  If X > 1 Then [End]\nEnd Sub\n\
+        Sub [End]\n  Out \"<< >> <>\"\nEnd Sub\n";
+    let (Some(source_post), diags) = compile_bytes(Path::new("t.VcPost"), source.as_bytes(), None) else {
+        panic!("the source compiles")
+    };
+    let converted = postc_backends::convert(&source_post, Target::VcPost).expect("converts");
+    let text = String::from_utf8(converted.clone()).expect("UTF-8");
+    assert!(text.contains("(A<\" & \"B>) \"\"q\"\"<X>\" & Chr(9) & X"), "{text}");
+    assert!(text.contains("Sub [End]"), "{text}");
+    let (Some(back), back_diags) = compile_bytes(Path::new("back.VcPost"), &converted, None) else {
+        panic!("the converted post compiles:\n{text}")
+    };
+    assert_eq!(diags, back_diags);
+    let toolpath = corpus().join("toolpaths/standard.ron");
+    let (want, _) = post(&source_post, &toolpath);
+    let (got, _) = post(&back, &toolpath);
+    assert_eq!(want.expect("posts"), got.expect("posts"));
 }

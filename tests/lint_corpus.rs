@@ -31,6 +31,7 @@ fn the_projects_posts_lint_clean() {
     let mut posts: Vec<PathBuf> = files(&root.join("posts/vectric"), "pp");
     posts.extend(files(&root.join("posts/cimco"), "js"));
     posts.extend(files(&root.join("posts/vcpost"), "VcPost"));
+    posts.extend(files(&root.join("posts/postp"), "VcPost"));
     let mut found = Vec::new();
     for p in &posts {
         let file = p.file_name().unwrap_or_default().to_string_lossy().into_owned();

@@ -1,7 +1,9 @@
 //! Provenance (`postc post --trace`, docs/trace.md): every line a corpus
 //! post writes is traced to the post statement that wrote it, and the text
 //! at that span is that statement's — a Vectric output line (a quoted
-//! string), a VcPost `Out`, a CIMCO function.
+//! string), a VcPost `Out`, a CIMCO `return` (or, for an entry point that
+//! runs as a Rhai script, its function: the script's statements have no
+//! spans).
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
@@ -15,8 +17,9 @@ mod support;
 
 use support::{corpus, files, lines};
 
-/// One traced line: part, line, the span's text (or why there is none).
-type Traced = (usize, u64, Result<String, String>);
+/// One traced line: part, line, the span's text (or why there is none),
+/// and whether the span is a function that runs as a script.
+type Traced = (usize, u64, Result<String, String>, bool);
 
 /// What the sink keeps of each line while the run goes on.
 type RawTrace = Rc<RefCell<Vec<(usize, u64, Option<Span>)>>>;
@@ -27,6 +30,8 @@ fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Tr
     let mut sources = postc_report::source_map();
     let compiled = postc_frontends::compile_post(path, None, &mut sources);
     let post = compiled.post?;
+    let script_functions: Vec<Span> =
+        post.functions.iter().filter(|f| matches!(f.body, postc_ir::Body::Script(_))).filter_map(|f| f.span).collect();
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).ok()?;
     let raw: RawTrace = Rc::default();
     let sink = Rc::clone(&raw);
@@ -50,18 +55,18 @@ fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Tr
                     .map(str::to_string)
                     .ok_or_else(|| format!("span {s:?} is not in a loaded file")),
             };
-            (part, line, text)
+            (part, line, text, span.is_some_and(|s| script_functions.contains(&s)))
         })
         .collect();
     Some((post.info.dialect, parts, records))
 }
 
 /// What the text of a span must look like in each dialect.
-fn statement_shape(dialect: Dialect, text: &str) -> bool {
+fn statement_shape(dialect: Dialect, text: &str, script_function: bool) -> bool {
     match dialect {
         Dialect::Vectric => text.trim_start().starts_with('"'),
         Dialect::VcPost => text.trim_start().to_ascii_lowercase().starts_with("out"),
-        Dialect::Cimco => text.starts_with("function"),
+        Dialect::Cimco => text.starts_with("return") || script_function && text.starts_with("function"),
         Dialect::Ron => true,
     }
 }
@@ -74,7 +79,7 @@ fn check(name: &str, dialect: Dialect, parts: &[Vec<u8>], records: &[Traced], fa
         return;
     }
     let mut at = (0usize, 0u64);
-    for (part, line, text) in records {
+    for (part, line, text, script_function) in records {
         let next = if *part == at.0 { (at.0, at.1 + 1) } else { (at.0 + 1, 1) };
         if (*part, *line) != next {
             failures.push(format!("{name}: record for part {part} line {line} after part {} line {}", at.0, at.1));
@@ -82,7 +87,7 @@ fn check(name: &str, dialect: Dialect, parts: &[Vec<u8>], records: &[Traced], fa
         }
         at = next;
         match text {
-            Ok(t) if statement_shape(dialect, t) => {}
+            Ok(t) if statement_shape(dialect, t, *script_function) => {}
             Ok(t) => {
                 failures.push(format!(
                     "{name}: line {line} traced to `{}`, not a statement",
@@ -242,4 +247,41 @@ fn verify_findings_name_the_post_line_from_the_trace() {
     assert!(stderr.contains("swapped.pp"), "{stderr}");
     assert!(stderr.contains("while the post handled CW_ARC_MOVE") || stderr.contains("ARC_MOVE"), "{stderr}");
     assert!(stderr.contains("toolpath event"), "{stderr}");
+}
+
+/// A CIMCO entry point with two `return`s: each line names the one that
+/// returned it, though `onLinear` and `writeBlock` are inlined into the
+/// handler and no call is left when the post runs.
+#[test]
+fn cimco_lines_name_the_return_that_wrote_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("two_returns.js");
+    std::fs::write(
+        &post,
+        "var xyzFormat = createFormat({decimals: 3});\n\
+         var xOutput = createVariable({prefix: \"X\"}, xyzFormat);\n\
+         function writeBlock(text) { return text + \"\\n\"; }\n\
+         function onLinear(x, y, z, movement) {\n\
+         \x20 if (movement == MOVEMENT_RAPID) {\n\
+         \x20   return writeBlock(\"G0\" + xOutput.format(x));\n\
+         \x20 }\n\
+         \x20 return writeBlock(\"G1\" + xOutput.format(x));\n\
+         }\n",
+    )
+    .unwrap();
+    let (dialect, parts, records) = traced(&post, &corpus().join("toolpaths/cimco/mill.ron")).expect("posts");
+    assert_eq!(dialect, Dialect::Cimco);
+    let program = String::from_utf8_lossy(&parts[0]).into_owned();
+    let (mut rapid, mut feed) = (0, 0);
+    for (line, (_, _, text, _)) in program.lines().zip(&records) {
+        let text = text.as_deref().unwrap_or("");
+        if line.starts_with("G0") {
+            rapid += 1;
+            assert!(text.starts_with("return writeBlock(\"G0\""), "{line} traced to {text}");
+        } else if line.starts_with("G1") {
+            feed += 1;
+            assert!(text.starts_with("return writeBlock(\"G1\""), "{line} traced to {text}");
+        }
+    }
+    assert!(rapid > 0 && feed > 0, "{program}");
 }

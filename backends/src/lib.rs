@@ -1,8 +1,8 @@
 //! # postc backends
 //!
 //! A backend prints a compiled post IR ([`postc_ir::Post`]) as the text of
-//! a post in one target: a Vectric `.pp` post ([`vectric`]) or the IR
-//! itself as RON ([`ron`]). Backends read only the IR, never a dialect's
+//! a post in one target: a Vectric `.pp` post ([`vectric`]), a Vericut
+//! VcPost post ([`vcpost`]) or the IR itself as RON ([`ron`]). Backends read only the IR, never a dialect's
 //! syntax tree, so a post of any dialect converts to any target that can
 //! say what it does.
 //!
@@ -19,6 +19,7 @@
 //! dialect it was converted from.
 
 pub mod ron;
+pub mod vcpost;
 pub mod vectric;
 
 use postc_ir::{Diagnostic, Dialect, Post};
@@ -28,6 +29,8 @@ use postc_ir::{Diagnostic, Dialect, Post};
 pub enum Target {
     /// A Vectric `.pp` post.
     Vectric,
+    /// A Vericut VcPost post.
+    VcPost,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,
 }
@@ -37,6 +40,7 @@ impl Target {
     pub fn extension(self) -> &'static str {
         match self {
             Target::Vectric => "pp",
+            Target::VcPost => "VcPost",
             Target::Ron => "ron",
         }
     }
@@ -47,6 +51,7 @@ impl Target {
 pub fn convert(post: &Post, target: Target) -> Result<Vec<u8>, Vec<Diagnostic>> {
     match target {
         Target::Vectric => vectric::print(post),
+        Target::VcPost => vcpost::print(post),
         Target::Ron => ron::print(post).map(String::into_bytes),
     }
 }

@@ -65,6 +65,13 @@ pub enum Stmt {
     /// Make a variable forget what it printed last, so that the next value
     /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
     Forget(VarId),
+    /// Where the text a handler writes next comes from: a CIMCO entry
+    /// point's `return` statement, placed before it. It does nothing when
+    /// the post runs; `--trace` reports the blocks the handler writes after
+    /// it at this span (the latest one the handler passed), so that a line
+    /// names the statement that returned it even when the function was
+    /// inlined into the handler.
+    Origin(Span),
 }
 
 /// One piece of an output block.

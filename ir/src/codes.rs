@@ -149,6 +149,10 @@ pub const SECTIONS: &[Section] = &[
                 ("LN013", "— (VcPost; the project's 5 posts and the 8 `postp` controllers: 0)"),
                 ("LN014", "3 (wrapped posts that keep arc sections: Snapmaker 4-axis, Carvera Wrap X2A, grbl rotary)"),
                 ("LN015", "— (CIMCO; the project's 8 posts: 0)"),
+                (
+                    "LN016",
+                    "— (VcPost; the project's 5 posts: 0; the 8 `postp` controllers: 0 after removing a dead `Function Two` it found in ACORNM and TORMM)",
+                ),
             ],
         )),
     },
@@ -1530,4 +1534,13 @@ declare_codes! {
     /// `undefined`, which prints as `undefined` or turns arithmetic into NaN.
     LN015: Warning, "a CIMCO global is read but never given a value",
         fix = "Give it a value where it is declared, or assign it before it is read.";
+    /// A VcPost `Sub` or `Function` that nothing can call: no statement of the post calls it,
+    /// its name is not an event the applications raise (an APT major word such as `GOTO`, a
+    /// composites routine such as `CamPoint`), and it has no keyword comment (`#Cycle`,
+    /// `#Option`, `#Probe`, ...) or tip that offers it to a probe table or an option card.
+    /// The Vericut guide calls those comment lines "not essential, but very desirable": a Sub
+    /// a table names without one still runs, but nothing offers its name, and a reader of the
+    /// post cannot tell it from dead code.
+    LN016: Warning, "a VcPost `Sub` or `Function` that no statement calls, that is not an event the applications raise, and that no keyword comment offers to a table or option card",
+        fix = "Add the keyword comment of its role (`' #Option`, `' #Cycle`, `' #Probe`, ...) after the `Sub` line when a table or option calls it by name; otherwise call it or remove it.";
 }

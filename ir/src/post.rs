@@ -319,6 +319,11 @@ pub struct Function {
     pub params: Vec<String>,
     /// Parameters plus locals.
     pub slots: u16,
+    /// The source's names of the locals after the parameters, by slot,
+    /// when its frontend keeps them (backends print them); may be shorter
+    /// than the locals.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub locals: Vec<String>,
     pub body: Body,
     /// Where the function is defined.
     pub span: Option<Span>,
@@ -542,7 +547,7 @@ impl Post {
     }
 
     /// Forgets every span: of the post's name, handlers, functions, scripts, variables,
-    /// formats, output lines and loops. A post whose spans point into
+    /// formats, output lines and loops, and the `Origin` statements. A post whose spans point into
     /// files it does not come with (a RON conversion) drops them, so that
     /// no diagnostic points into the wrong file.
     pub fn drop_spans(&mut self) {
@@ -571,6 +576,27 @@ impl Post {
             s.span_map.clear();
         }
         crate::visit::VisitMut::visit_post_mut(&mut Drop, self);
+        // `Origin` statements are spans too.
+        fn drop_origins(stmts: &mut Vec<Stmt>) {
+            stmts.retain(|s| !matches!(s, Stmt::Origin(_)));
+            for s in stmts {
+                match s {
+                    Stmt::If { branches, otherwise } => {
+                        branches.iter_mut().for_each(|(_, b)| drop_origins(b));
+                        drop_origins(otherwise);
+                    }
+                    Stmt::While { body, .. } => drop_origins(body),
+                    _ => {}
+                }
+            }
+        }
+        drop_origins(&mut self.init);
+        self.handlers.iter_mut().for_each(|h| drop_origins(&mut h.body));
+        for f in &mut self.functions {
+            if let Body::Native(body) = &mut f.body {
+                drop_origins(body);
+            }
+        }
     }
 
     /// The handler for a key, if the post has one.

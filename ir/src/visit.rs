@@ -66,7 +66,8 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
         | Stmt::MoveBack { .. }
         | Stmt::Truncate(_)
         | Stmt::Blocks(_)
-        | Stmt::Forget(_) => {}
+        | Stmt::Forget(_)
+        | Stmt::Origin(_) => {}
     }
 }
 
@@ -162,7 +163,8 @@ pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
         | Stmt::MoveBack { .. }
         | Stmt::Truncate(_)
         | Stmt::Blocks(_)
-        | Stmt::Forget(_) => {}
+        | Stmt::Forget(_)
+        | Stmt::Origin(_) => {}
     }
 }
 

@@ -177,4 +177,8 @@ pub(crate) mod tests {
     pub fn lint_cimco(text: &str) -> Vec<Diagnostic> {
         compile("t.js", text, None)
     }
+
+    pub fn lint_vcpost(text: &str) -> Vec<Diagnostic> {
+        compile("t.VcPost", text, None)
+    }
 }

@@ -69,6 +69,10 @@ pub struct Engine<'p> {
     /// A frame reused by handler bodies, so that their locals cost no
     /// allocation per event.
     handler_frame: Vec<Value>,
+    /// Emptied argument lists and function frames, kept with their
+    /// capacity: a call or built-in takes one and gives it back, so that
+    /// calls cost no allocation per event once the run is warm.
+    pub(crate) spare_frames: Vec<Vec<Value>>,
     /// Counts the clearings of modal memory ([`Engine::clear_modal`]).
     pub(crate) modal_epoch: u64,
     /// Provenance of each block, when the run is traced.
@@ -112,6 +116,7 @@ impl<'p> Engine<'p> {
             event_span: Span::default(),
             script_host: None,
             handler_frame: Vec::new(),
+            spare_frames: Vec::new(),
             modal_epoch: 0,
             trace: None,
             profile: None,
@@ -156,6 +161,7 @@ impl<'p> Engine<'p> {
                 if let Some(t) = self.trace.as_deref_mut() {
                     let h = &self.post.handlers[i as usize];
                     t.handler = Some((h.key.clone(), h.span));
+                    t.origin = None;
                 }
                 if let Some(p) = self.profile.as_deref_mut() {
                     p.enter(crate::profile::Frame::Handler(i as usize));

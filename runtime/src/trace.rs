@@ -6,7 +6,9 @@
 //! handler, the chain of post functions called, the event being dispatched
 //! — and after each statement hands every block that statement wrote to
 //! the tracer with the statement's span ([`postc_ir::Stmt::Line`]) or, for
-//! text a function returned, the innermost function's. A run without a
+//! text a function returned, the `return` statement that returned it (the
+//! latest [`postc_ir::Stmt::Origin`] the handler passed), else the
+//! innermost function's. A run without a
 //! tracer pays one branch per statement.
 
 use postc_ir::{FunctionId, HandlerKey, Span};
@@ -19,7 +21,8 @@ pub struct TraceLine<'a> {
     /// The line's number in its part, from 1.
     pub line: u64,
     /// The statement that wrote the line: an output line's span, else the
-    /// innermost post function's, else the handler's.
+    /// `return` statement that returned it, else the innermost post
+    /// function's, else the handler's.
     pub span: Option<Span>,
     /// The post functions running when the line was written, outermost
     /// first, with where each is defined.
@@ -45,6 +48,8 @@ pub struct Tracer {
     pub(crate) handler: Option<(HandlerKey, Option<Span>)>,
     pub(crate) event: Option<u64>,
     pub(crate) event_span: Option<Span>,
+    /// The latest [`postc_ir::Stmt::Origin`] the running handler passed.
+    pub(crate) origin: Option<Span>,
     /// Blocks handed to the sink so far.
     traced: u64,
     part: usize,
@@ -52,7 +57,16 @@ pub struct Tracer {
 
 impl Tracer {
     pub fn new(sink: TraceSink) -> Tracer {
-        Tracer { sink, calls: Vec::new(), handler: None, event: None, event_span: None, traced: 0, part: 0 }
+        Tracer {
+            sink,
+            calls: Vec::new(),
+            handler: None,
+            event: None,
+            event_span: None,
+            origin: None,
+            traced: 0,
+            part: 0,
+        }
     }
 
     /// Reports the blocks written since the last report: `blocks` written
@@ -62,7 +76,10 @@ impl Tracer {
         if new == 0 {
             return;
         }
-        let span = span.or_else(|| self.calls.last().and_then(|c| c.1)).or(self.handler.as_ref().and_then(|h| h.1));
+        let span = span
+            .or(self.origin)
+            .or_else(|| self.calls.last().and_then(|c| c.1))
+            .or(self.handler.as_ref().and_then(|h| h.1));
         let first = in_part + 1 - new.min(in_part);
         for line in first..=in_part {
             let record = TraceLine {

@@ -1,4 +1,4 @@
-//! `postc convert POST --to vectric|ron [-o OUT]`: prints a post of any
+//! `postc convert POST --to vectric|vcpost|ron [-o OUT]`: prints a post of any
 //! dialect as a post of another (`postc_backends`). A post the target
 //! cannot hold is refused with a diagnostic per reason, and nothing is
 //! written; `-o` writes the whole file or none of it.
@@ -17,6 +17,8 @@ use super::{DialectArg, Failed, fail, load_post, report};
 pub enum TargetArg {
     /// A Vectric .pp post.
     Vectric,
+    /// A Vericut VcPost post (posts driven by APT words and application calls).
+    Vcpost,
     /// The post's IR as RON (postc post reads it back).
     Ron,
 }
@@ -41,6 +43,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
+        TargetArg::Vcpost => Target::VcPost,
         TargetArg::Ron => Target::Ron,
     };
     let text = match postc_backends::convert(&post, target) {

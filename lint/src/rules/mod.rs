@@ -37,4 +37,5 @@ pub const ALL: &[Rule] = &[
     register_never_set::RULE,
     section_never_reached::RULE,
     global_never_assigned::RULE,
+    unused::SUB,
 ];

@@ -1,13 +1,17 @@
-//! LN007–LN009: variables, formats and functions a post defines and never
-//! uses. Each is dead text a reader of the post must still understand, and
+//! LN007–LN009 and LN016: variables, formats, functions and VcPost Subs a
+//! post defines and never uses. Each is dead text a reader of the post must still understand, and
 //! often a sign of a typo (a `VAR` declared for a label no section prints,
 //! a `createFormat` meant for a variable that got another).
 //!
 //! Uses are counted in the IR code and, for CIMCO posts, in the script the
 //! functions that do not lower to native code run as (they name variables
 //! and formats by index and post functions by their script name). VcPost
-//! registers and Subs are left alone: the applications that call a post
-//! set registers and call Subs by name.
+//! registers are left alone: the applications that call a post set them by
+//! name. A VcPost Sub is used when a statement calls it, when it handles an
+//! event (an APT word or composites routine: its handler calls it), or when
+//! a keyword comment or tip offers it to the tables and option cards that
+//! call Subs by name (seed 003: those comments make a Sub's name appear in
+//! the applications' choice lists).
 
 use postc_ir::codes;
 use std::collections::BTreeSet;
@@ -20,6 +24,7 @@ use crate::{Context, Options, Rule};
 pub const VARIABLE: Rule = Rule { code: codes::LN007.code, name: "unused-variable", check: variables };
 pub const FORMAT: Rule = Rule { code: codes::LN008.code, name: "unused-format", check: formats };
 pub const FUNCTION: Rule = Rule { code: codes::LN009.code, name: "unused-function", check: functions };
+pub const SUB: Rule = Rule { code: codes::LN016.code, name: "unused-sub", check: subs };
 
 /// What the post's code refers to.
 #[derive(Default)]
@@ -142,6 +147,27 @@ fn functions(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     }
 }
 
+fn subs(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    if cx.post.info.dialect != Dialect::VcPost {
+        return;
+    }
+    let used = uses(cx);
+    for (i, f) in cx.post.functions.iter().enumerate() {
+        // Functions the frontend makes (composites list readers) have no place in the post.
+        let Some(span) = f.span else { continue };
+        let offered = cx.post.info.subs.iter().any(|s| s.name.eq_ignore_ascii_case(&f.name));
+        if used.functions.contains(&i) || offered {
+            continue;
+        }
+        out.push(
+            Diagnostic::warning(SUB.code, format!("`{}` is never called", f.name))
+                .at(span, "defined here")
+                .note("no statement calls it, no event is named after it, and no keyword comment offers it to a table")
+                .help("if a probe table or option card calls it by name, add its keyword comment (`' #Option`, `' #Cycle`, `' #Probe`, ...) after the `Sub` line; otherwise call it or remove it"),
+        );
+    }
+}
+
 /// A Vectric `VAR` under its standard name: the guides' template declares
 /// every variable whether the post prints it or not, so an unused one is
 /// the template, not a mistake. A `VAR` under a name of the post's own
@@ -173,7 +199,7 @@ fn called_by_script(scripts: &[&str], name: &str) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use crate::tests::{lint_cimco, lint_vectric};
+    use crate::tests::{lint_cimco, lint_vcpost, lint_vectric};
 
     #[test]
     fn fires_on_an_unused_var() {
@@ -195,5 +221,22 @@ mod tests {
         assert!(found.iter().any(|d| d.code == "LN008"), "{found:?}");
         let fns: Vec<_> = found.iter().filter(|d| d.code == "LN009").map(|d| d.message.clone()).collect();
         assert_eq!(fns, ["function `unused` is never called"], "{found:?}");
+    }
+
+    #[test]
+    fn vcpost_sub_nothing_can_call_fires() {
+        let found = lint_vcpost(
+            "Sub GOTO\n  Call Helper\n  Out \"G1 <X>\"\nEnd Sub\nSub Helper\n  Out \"(H)\"\nEnd Sub\nSub Forgotten\n  Out \"(F)\"\nEnd Sub\n",
+        );
+        let subs: Vec<_> = found.iter().filter(|d| d.code == "LN016").map(|d| d.message.clone()).collect();
+        assert_eq!(subs, ["`Forgotten` is never called"], "{found:?}");
+    }
+
+    #[test]
+    fn vcpost_subs_offered_by_keyword_or_raised_as_events_are_quiet() {
+        let found = lint_vcpost(
+            "Sub GOTO\n  Out \"G1 <X>\"\nEnd Sub\nSub OpMessage()\n' #Option\n' #C1 Message to the operator\n  Out \"(MSG)\"\nEnd Sub\nSub CamPoint\n  Out \"(P)\"\nEnd Sub\n",
+        );
+        assert!(!found.iter().any(|d| d.code == "LN016"), "{found:?}");
     }
 }

@@ -138,6 +138,11 @@ impl Engine<'_> {
                     self.blocks_since(at);
                 }
                 Stmt::Forget(v) => self.forget_var(*v),
+                Stmt::Origin(span) => {
+                    if let Some(t) = self.trace.as_deref_mut() {
+                        t.origin = Some(*span);
+                    }
+                }
                 Stmt::Script(_) => self.warn_once(
                     Diagnostic::warning(
                         "RT003",
@@ -333,22 +338,33 @@ impl Engine<'_> {
                 }
             }
             Expr::Call(f, args) => {
-                let mut values = Vec::with_capacity(args.len());
+                let mut values = self.spare_frames.pop().unwrap_or_default();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
                 self.call(*f, values)?
             }
             Expr::Builtin(b, args) => {
-                let mut values = Vec::with_capacity(args.len());
+                let mut values = self.spare_frames.pop().unwrap_or_default();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
                 let v = builtin(*b, &values);
+                self.give_back(values);
                 self.check_text(&v)?;
                 v
             }
         })
+    }
+
+    /// Returns an argument list or frame to the spares, emptied.
+    #[inline]
+    fn give_back(&mut self, mut frame: Vec<Value>) {
+        frame.clear();
+        // Bounded by the deepest nesting of calls; more is never needed.
+        if self.spare_frames.len() < 64 {
+            self.spare_frames.push(frame);
+        }
     }
 
     /// Text a post built: past [`MAX_TEXT_BYTES`] the run stops (RT031);
@@ -411,11 +427,13 @@ impl Engine<'_> {
             Body::Native(body) => {
                 let mut frame = args;
                 frame.resize((function.slots as usize).max(frame.len()), Value::Null);
-                match self.exec(body, &mut frame) {
+                let result = match self.exec(body, &mut frame) {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) => Ok(Value::Null),
                     Err(e) => Err(e),
-                }
+                };
+                self.give_back(frame);
+                result
             }
             Body::Script(id) => self.call_script(*id, &function.name, args),
         };

@@ -145,6 +145,12 @@ const GLUE: [(&str, &str, &str); 3] = [
 ];
 
 /// A top-level function of the post, by name.
+/// Whether a function is one CNC-Calc calls: its entry points are named
+/// `on` and a capital (`onOpen`, `onLinear`, `onDrillingPoint`, ...).
+fn is_entry_point(name: &str) -> bool {
+    name.strip_prefix("on").is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
 fn top_fn<'m, 'a>(model: &'m Model<'a>, name: &str) -> Option<&'m scope::FuncInfo<'a>> {
     model.scopes.top_fn_names.get(name).map(|&i| &model.scopes.funcs[model.scopes.top_fns[i]])
 }
@@ -201,7 +207,9 @@ fn functions(
     for (i, &id) in model.scopes.top_fns.iter().enumerate() {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
+        let entry = f.name.as_deref().is_some_and(is_entry_point);
         let mut n = native::Native::new(model, setup, layout, id);
+        n.entry = entry;
         let lowered = n.lower_function(&func.body, func.span);
         let slots = n.slots;
         let _ = i;
@@ -215,6 +223,7 @@ fn functions(
             name: f.name.clone().unwrap_or_default(),
             params: f.params.clone(),
             slots,
+            locals: Vec::new(),
             body,
             span: Some(func.span),
             why_script,
@@ -225,6 +234,7 @@ fn functions(
             name: layout::FEEDRATE.into(),
             params: vec!["movement".into()],
             slots: 1,
+            locals: Vec::new(),
             body: Body::Native(vec![
                 Stmt::If {
                     branches: vec![(
@@ -261,6 +271,7 @@ fn functions(
         name: layout::INIT.into(),
         params: vec![],
         slots: init_native.as_ref().map_or(0, |(_, s)| *s),
+        locals: Vec::new(),
         body: match &init_native {
             Ok((b, _)) => Body::Native(b.clone()),
             Err(_) => Body::Script(ScriptId::new(0)),
@@ -276,7 +287,15 @@ fn functions(
             what: format!("postc's bridge to `{entry}`: it hands the post the host's data as an object"),
             span,
         });
-        functions.push(Function { name: g.into(), params: vec![], slots: 0, body, span, why_script });
+        functions.push(Function {
+            name: g.into(),
+            params: vec![],
+            locals: Vec::new(),
+            slots: 0,
+            body,
+            span,
+            why_script,
+        });
     }
     for (id, arity) in layout.clones.clone() {
         functions.push(specialization(model, setup, layout, id, arity));
@@ -302,6 +321,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
             name: format!("{name}/{arity}"),
             params,
             slots: n.slots,
+            locals: Vec::new(),
             body: Body::Native(fold::stmts(b)),
             span: Some(func.span),
             why_script: None,
@@ -311,6 +331,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
             name,
             params,
             slots: 0,
+            locals: Vec::new(),
             body: Body::Script(ScriptId::new(0)),
             span: Some(func.span),
             why_script: Some(postc_ir::ScriptReason {

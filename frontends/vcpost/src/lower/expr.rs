@@ -241,6 +241,7 @@ impl Lowerer<'_> {
             name: canonical.to_string(),
             params: params.iter().map(|p| p.to_string()).collect(),
             slots: u16::try_from(params.len()).unwrap_or(0),
+            locals: Vec::new(),
             body: Body::Native(vec![IrStmt::Return(Some(IrExpr::Number(0.0)))]),
             span: None,
             why_script: None,

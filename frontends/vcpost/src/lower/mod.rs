@@ -149,6 +149,7 @@ impl Lowerer<'_> {
                 name: p.name.text.clone(),
                 params: p.params.iter().map(|f| f.name.text.clone()).collect(),
                 slots: 0,
+                locals: Vec::new(),
                 body: Body::Native(Vec::new()),
                 span: Some(p.header),
                 why_script: None,

@@ -67,6 +67,8 @@ impl Lowerer<'_> {
                 name: p.name.text.clone(),
                 params: p.params.iter().map(|f| f.name.text.clone()).collect(),
                 slots: u16::try_from(scope.names.len()).unwrap_or(u16::MAX),
+                // The function's own name names its result; `$` marks a hidden variable.
+                locals: scope.names.iter().skip(p.params.len()).cloned().collect(),
                 body: Body::Native(body),
                 span: Some(p.header),
                 why_script: None,

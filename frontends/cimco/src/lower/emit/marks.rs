@@ -21,7 +21,7 @@ pub fn tidy(body: Vec<Stmt>) -> Vec<Stmt> {
 
 /// Statements that cannot write output (value-mode code).
 fn silent(s: &Stmt) -> bool {
-    matches!(s, Stmt::Assign(..))
+    matches!(s, Stmt::Assign(..) | Stmt::Origin(_))
 }
 
 fn find_aliases(body: &[Stmt], alias: &mut HashMap<LocalId, LocalId>) {

@@ -279,6 +279,7 @@ impl<'f> Emitter<'f> {
                 },
                 Stmt::Assign(place, e) => out.push(Stmt::Assign(*place, value(e, fr)?)),
                 Stmt::Eval(e) => out.push(Stmt::Eval(value(e, fr)?)),
+                Stmt::Origin(span) => out.push(Stmt::Origin(*span)),
                 _ => return None,
             }
         }

@@ -33,7 +33,7 @@ pub(super) fn region_uses_ok(body: &[Stmt], k: LocalId) -> bool {
         Stmt::If { branches, otherwise } => {
             branches.iter().all(|(c, b)| cond_ok(c, k) && region_uses_ok(b, k)) && region_uses_ok(otherwise, k)
         }
-        Stmt::Return(None) => true,
+        Stmt::Return(None) | Stmt::Origin(_) => true,
         _ => false,
     })
 }
@@ -257,7 +257,8 @@ pub(super) fn merge(stmts: Vec<Stmt>) -> Vec<Stmt> {
         if matches!(out.last(), Some(Stmt::Break)) {
             break;
         }
-        if let (Some(Stmt::Mark(m)), Stmt::Truncate(t)) = (out.last(), &s)
+        // (An `Origin` between them writes nothing.)
+        if let (Some(Stmt::Mark(m)), Stmt::Truncate(t)) = (out.iter().rev().find(|s| !matches!(s, Stmt::Origin(_))), &s)
             && m == t
         {
             continue;

@@ -103,7 +103,7 @@ fn visit_mut(s: &mut Stmt, f: &mut dyn FnMut(&mut LocalId)) {
             f(to);
             f(from);
         }
-        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) => {}
+        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
 }
 

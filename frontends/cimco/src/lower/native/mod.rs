@@ -40,6 +40,10 @@ pub struct Native<'c, 'a> {
     pub at: FnId,
     /// Slots in use (parameters, locals and temporaries).
     pub slots: u16,
+    /// The function is an entry point CNC-Calc calls (`onLinear`, ...):
+    /// each `return` is preceded by a [`IrStmt::Origin`], so that `--trace`
+    /// names the statement that returned a line.
+    pub entry: bool,
     /// `Some(n)`: the function reads `arguments`, and this is its form for
     /// calls with `n` arguments (`arguments.length` is `n`; argument `k`
     /// past the parameters is slot `k`, the `var`s move up to make room).
@@ -97,7 +101,17 @@ fn expr_name(k: &ExprKind) -> &'static str {
 
 impl<'c, 'a> Native<'c, 'a> {
     pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c mut Layout, at: FnId) -> Self {
-        Native { model, setup, layout, at, slots: 0, arity: None, arrays: HashMap::new(), unrolled: HashMap::new() }
+        Native {
+            model,
+            setup,
+            layout,
+            at,
+            slots: 0,
+            entry: false,
+            arity: None,
+            arrays: HashMap::new(),
+            unrolled: HashMap::new(),
+        }
     }
 }
 
@@ -249,10 +263,15 @@ impl Native<'_, '_> {
             StmtKind::ForIn { declared: _, name, object, body } => self.for_in(name, object, body, s.span, out)?,
             StmtKind::Break => out.push(IrStmt::Break),
             StmtKind::Continue => out.push(IrStmt::Continue),
-            StmtKind::Return(e) => out.push(IrStmt::Return(match e {
-                Some(e) => Some(self.expr(e)?),
-                None => None,
-            })),
+            StmtKind::Return(e) => {
+                if self.entry {
+                    out.push(IrStmt::Origin(s.span));
+                }
+                out.push(IrStmt::Return(match e {
+                    Some(e) => Some(self.expr(e)?),
+                    None => None,
+                }))
+            }
             other => return Err(why(s.span, stmt_name(other))),
         }
         Ok(())
