@@ -369,6 +369,7 @@ impl Engine<'_> {
 
     /// Text a post built: past [`MAX_TEXT_BYTES`] the run stops (RT031);
     /// long text costs steps by its length.
+    #[inline]
     fn check_text(&mut self, v: &Value) -> Result<()> {
         let Value::Text(t) = v else { return Ok(()) };
         if t.len() > TEXT_STEP_BYTES {
@@ -522,6 +523,7 @@ fn is_leaf(e: &Expr) -> bool {
 
 /// The value of a leaf expression, borrowed where it lives (`tmp` holds a
 /// number, or null for a slot that does not exist).
+#[inline(always)]
 fn leaf<'v>(e: &Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Value) -> &'v Value {
     match e {
         Expr::Local(i) => match frame.get(i.index()) {

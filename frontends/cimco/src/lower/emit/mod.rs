@@ -189,9 +189,11 @@ impl<'f> Emitter<'f> {
             }
             if k >= params {
                 let s = self.slot();
-                // A local starts undefined, unless it is set before any use.
+                // A local starts undefined, unless it is set before any use
+                // (or never used at all).
                 let first = body.iter().find(|st| stmt_mentions(st, LocalId::new(k as u16)));
-                if !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if x.index() == k && !expr_reads(e, LocalId::new(k as u16)))
+                if first.is_some()
+                    && !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if x.index() == k && !expr_reads(e, LocalId::new(k as u16)))
                 {
                     out.push(Stmt::Assign(Place::Local(s), Expr::Null));
                 }
