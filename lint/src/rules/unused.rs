@@ -136,7 +136,18 @@ fn functions(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let scripts: Vec<&str> = cx.post.scripts.iter().map(|s| s.source.as_str()).collect();
     for (i, f) in cx.post.functions.iter().enumerate() {
         let Some(span) = f.span else { continue };
-        if used.functions.contains(&i) || is_entry_point(&f.name) || called_by_script(&scripts, &f.name) {
+        // The frontend's forms of a function that reads `arguments`
+        // (`writeBlock/5`) are the function: a call of one uses it.
+        if f.name.contains('/') {
+            continue;
+        }
+        let called =
+            |j: &usize| cx.post.functions.get(*j).is_some_and(|g| g.name.split('/').next() == Some(f.name.as_str()));
+        if used.functions.contains(&i)
+            || used.functions.iter().any(called)
+            || is_entry_point(&f.name)
+            || called_by_script(&scripts, &f.name)
+        {
             continue;
         }
         out.push(

@@ -1,8 +1,10 @@
 //! Inlining of expression functions: a native function that only computes
 //! a value (`function getFeedrateValue() { var f = getFeedrate(1); return
 //! parseFloat(f.substring(1)); }`, `getFeedrate` itself) becomes that
-//! expression at each call whose arguments are cheap and free of effects,
-//! so that the hot path pays no call (a frame, the call's bookkeeping).
+//! expression at each call in a handler whose arguments are cheap and free
+//! of effects, so that the hot path pays no call (a frame, the call's
+//! bookkeeping). The functions themselves keep their calls, which are what
+//! the post says (lints count them).
 //!
 //! A function qualifies when its body is `if (c) return a;`... then
 //! `return e;` (a chain of choices), optionally after one `var v = x;`
@@ -12,19 +14,16 @@
 
 use postc_ir::{BinaryOp, Body, Expr, Function, LocalId, Piece, Place, Stmt};
 
-/// Inlines expression functions into the functions' bodies (the handlers
-/// reach them through the fast path, which inlines whole functions).
-pub fn expression_functions(functions: &mut [Function]) {
+/// Inlines expression functions into a body (a handler's, after the fast
+/// path has inlined the functions it writes).
+pub fn expression_functions(functions: &[Function], body: &mut [Stmt]) {
+    let templates: Vec<Option<(usize, Expr)>> = functions.iter().map(template).collect();
+    if templates.iter().all(Option::is_none) {
+        return;
+    }
+    // A template may call another: three rounds reach three levels.
     for _ in 0..3 {
-        let templates: Vec<Option<(usize, Expr)>> = functions.iter().map(template).collect();
-        if templates.iter().all(Option::is_none) {
-            return;
-        }
-        for (i, f) in functions.iter_mut().enumerate() {
-            if let Body::Native(body) = &mut f.body {
-                body.iter_mut().for_each(|s| stmt(s, &templates, Some(i)));
-            }
-        }
+        body.iter_mut().for_each(|s| stmt(s, &templates, None));
     }
 }
 
@@ -112,7 +111,7 @@ fn expr(e: &mut Expr, templates: &[Option<(usize, Expr)>], at: Option<usize>) {
             let mut body = t.clone();
             let args = args.clone();
             substitute(&mut body, &|k: LocalId| Some(args.get(k.index()).cloned().unwrap_or(Expr::Null)));
-            *e = body;
+            *e = super::fold::expr(body);
         }
         _ => {}
     }

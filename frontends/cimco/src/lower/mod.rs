@@ -105,13 +105,12 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     if let Some(d) = warn::check_script(&script, whole) {
         diags.push(d);
     }
-    inline::expression_functions(&mut functions);
-    for f in &mut functions {
-        if let Body::Native(b) = &mut f.body {
-            *b = fold::stmts(std::mem::take(b));
-        }
-    }
     let mut hs = handlers(&model, &layout, post.options.lathe, &functions);
+    // The handlers' remaining calls of expression functions become the
+    // expressions (the functions keep their calls: they are the post).
+    for h in &mut hs {
+        inline::expression_functions(&functions, &mut h.body);
+    }
     for f in &mut functions {
         if let Body::Native(b) = &mut f.body {
             fold::intern_stmts(b, &mut layout);
