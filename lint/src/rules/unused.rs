@@ -156,7 +156,10 @@ fn subs(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         // Functions the frontend makes (composites list readers) have no place in the post.
         let Some(span) = f.span else { continue };
         let offered = cx.post.info.subs.iter().any(|s| s.name.eq_ignore_ascii_case(&f.name));
-        if used.functions.contains(&i) || offered {
+        // Under sections (postc's extension) a Sub named after a section is its handler.
+        let section = postc_ir::post::Section::from_name(&f.name)
+            .is_some_and(|s| cx.post.handlers.iter().any(|h| h.key == postc_ir::HandlerKey::Section(s)));
+        if used.functions.contains(&i) || offered || section {
             continue;
         }
         out.push(
