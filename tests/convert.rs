@@ -409,8 +409,8 @@ fn postp_controllers_convert() {
 }
 
 /// A RON post with any of its numbers changed (ids out of range, formats
-/// that do not exist, budgets of 0) gives diagnostics or posts: never a
-/// panic. Posts of all three dialects, each number set to 0 and to 65535.
+/// that do not exist, budgets of 0) gives diagnostics or posts, and every
+/// backend converts or refuses it: never a panic. Posts of all three dialects, each number set to 0 and to 65535.
 #[test]
 fn mutated_ron_posts_never_panic() {
     let posts = [
@@ -445,6 +445,10 @@ fn mutated_ron_posts_never_panic() {
                 let (back, _) = compile_bytes(Path::new("mutated.ron"), mutated.as_bytes(), Some(Dialect::Ron));
                 match back {
                     Some(mut back) => {
+                        // Every backend takes it or refuses it, without a panic.
+                        for target in TARGETS {
+                            let _ = postc_backends::convert(&back, target);
+                        }
                         // A mutated loop runs to the step budget (RT002):
                         // a small one keeps the test quick.
                         back.options.step_budget = back.options.step_budget.min(20_000);

@@ -631,8 +631,10 @@ impl Printer<'_> {
             }
             dims.sort_by_key(|d| d.0);
             for (k, ty) in dims {
-                let local = self.names.locals[i][k].clone();
-                self.line(1, &format!("Dim {local}{ty}"));
+                match self.names.locals[i].get(k).cloned() {
+                    Some(local) => self.line(1, &format!("Dim {local}{ty}")),
+                    None => self.cannot("a local past the function's slots", f.span),
+                }
             }
             let body = body.to_vec();
             self.block(&body, Some(i), 1);
