@@ -168,7 +168,14 @@ fn set(o: &Dynamic, k: &Dynamic, v: Dynamic) -> R {
 
 fn keys(o: &Dynamic) -> Array {
     if let Some(obj) = o.clone().try_cast::<JsObj>() {
-        return obj.0.borrow().props.iter().map(|(k, _)| Dynamic::from(k.clone())).collect();
+        // JavaScript's order: keys that are array indices ascending, then
+        // the other keys in the order they were added.
+        let props = &obj.0.borrow().props;
+        let mut indices: Vec<(u32, &str)> =
+            props.iter().filter_map(|(k, _)| array_index(k).map(|i| (i, k.as_str()))).collect();
+        indices.sort_by_key(|(i, _)| *i);
+        let others = props.iter().map(|(k, _)| k.as_str()).filter(|k| array_index(k).is_none());
+        return indices.into_iter().map(|(_, k)| k).chain(others).map(|k| Dynamic::from(k.to_string())).collect();
     }
     let n = if let Some(a) = o.clone().try_cast::<JsArr>() {
         a.0.borrow().len()
@@ -178,6 +185,13 @@ fn keys(o: &Dynamic) -> Array {
         0
     };
     (0..n).map(|i| text(i.to_string())).collect()
+}
+
+/// A key that is an array index (`"0"`, `"10"`, not `"01"` or `"-1"`):
+/// the canonical text of a whole number below 2^32 - 1.
+fn array_index(k: &str) -> Option<u32> {
+    let n: u32 = k.parse().ok()?;
+    (n != u32::MAX && n.to_string() == k).then_some(n)
 }
 
 /// Calls a function value with `this`.
