@@ -57,8 +57,9 @@ fn node_prints_what_postc_prints() {
 }
 
 /// JavaScript corners Node.js and postc once disagreed on (found while
-/// writing the field-style posts): `lastIndexOf` from an index, and the
-/// order of `for ... in` over keys that are array indices.
+/// writing the field-style posts): `lastIndexOf` from an index, the
+/// order of `for ... in` over keys that are array indices, and whole
+/// numbers in another radix.
 #[test]
 fn javascript_corners_print_as_node_prints() {
     let Some(_) = node() else {
@@ -74,7 +75,8 @@ function keysOf(o) { var s = ""; for (var k in o) { s += k + ","; } return s; }
 function onOpen(isClipboard) {
     var t = "ab ab ab";
     return "(" + t.lastIndexOf("ab", 4) + " " + t.lastIndexOf("ab") + " " + t.lastIndexOf("ab", -3) + " " +
-        t.lastIndexOf("ab", 100) + " " + t.lastIndexOf("zz", 3) + ")\n(" + keysOf(table) + ")\n";
+        t.lastIndexOf("ab", 100) + " " + t.lastIndexOf("zz", 3) + ")\n(" + keysOf(table) + ")\n(" +
+        (255).toString(16) + " " + (-10).toString(2) + " " + (35).toString(36) + " " + (12).toString(10) + ")\n";
 }
 function onLinear(x, y, z, movement) { return ""; }
 "#,
