@@ -24,7 +24,7 @@ use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
 use support::{blessing, check_golden, corpus, diff, files, stem};
 
-const TARGETS: [Target; 3] = [Target::Vectric, Target::VcPost, Target::Ron];
+const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::Cimco, Target::Ron];
 
 struct Case {
     post: PathBuf,
@@ -125,6 +125,7 @@ fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
         Target::VcPost => "vcpost",
+        Target::Cimco => "cimco",
         Target::Ron => "ron",
     }
 }
@@ -133,6 +134,7 @@ fn target_dialect(t: Target) -> Dialect {
     match t {
         Target::Vectric => Dialect::Vectric,
         Target::VcPost => Dialect::VcPost,
+        Target::Cimco => Dialect::Cimco,
         Target::Ron => Dialect::Ron,
     }
 }
@@ -340,9 +342,10 @@ fn postp_controllers_convert() {
         let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
         let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
         let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
-        let refusals =
-            postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no Vectric form");
-        assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        for target in [Target::Vectric, Target::Cimco] {
+            let refusals = postc_backends::convert(&source, target).expect_err("APT-word posts have no section form");
+            assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        }
         let ron = postc_backends::convert(&source, Target::Ron).expect("every post converts to RON");
         let pin = corpus().join("converted/ron/postp").join(format!("{}.ron", controller.name()));
         if let Err(e) = check_golden(&pin, &ron) {
@@ -519,4 +522,40 @@ fn a_handwritten_vcpost_section_post_posts_as_its_vectric_twin() {
     let (_, diags) = compile_bytes(Path::new("wrong.VcPost"), wrong.as_bytes(), None);
     assert!(diags.iter().any(|d| d.starts_with("VC021")), "{diags:?}");
     assert!(diags.iter().any(|d| d.starts_with("VC020")), "{diags:?}");
+}
+
+/// A CIMCO section post written by hand (postc's extension, docs/cimco.md)
+/// posts what the Vectric post it mirrors posts; a section function that
+/// does more than return its lines is JS107.
+#[test]
+fn a_handwritten_cimco_section_post_posts_as_its_vectric_twin() {
+    let vectric = "POST_NAME = \"twin\"\nFILE_EXTENSION = \"nc\"\nUNITS = MM\n\
+        VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR FEED_RATE = [F|C|F|1.1]\n\
+        begin HEADER\n\"G21 G90\"\nbegin RAPID_MOVE\n\"G0[X][Y]\"\nbegin FEED_MOVE\n\"G1[X][Y][F]\"\nbegin FOOTER\n\"M30\"\n";
+    let js = r#"var postcOptions = {name: "twin", fileExtension: "nc", units: "MM", lineEnding: "\r\n"};
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 3, trim: false}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 3, trim: false}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, trim: false}));
+function HEADER() { return "G21 G90\n"; }
+function RAPID_MOVE() { return "G0" + X_POSITION + Y_POSITION + "\n"; }
+function FEED_MOVE() { return "G1" + X_POSITION + Y_POSITION + FEED_RATE + "\n"; }
+function FOOTER() { return "M30\n"; }
+"#;
+    let (Some(a), _) = compile_bytes(Path::new("twin.pp"), vectric.as_bytes(), None) else {
+        panic!("the Vectric post")
+    };
+    let (Some(b), diags) = compile_bytes(Path::new("twin.js"), js.as_bytes(), None) else {
+        panic!("the section post compiles")
+    };
+    assert!(diags.is_empty(), "{diags:?}");
+    for toolpath in ["standard.ron", "arcs_mm.ron"] {
+        let toolpath = corpus().join("toolpaths").join(toolpath);
+        let (want, _) = post(&a, &toolpath);
+        let (got, _) = post(&b, &toolpath);
+        assert_eq!(want.expect("posts"), got.expect("posts"));
+    }
+    let wrong = "var X = createVariable({prefix: \"X\", label: \"X\"}, createFormat({}));\n\
+        function FEED_MOVE() { if (X) { return \"\"; } return \"G1\" + X + \"\\n\"; }\n";
+    let (_, diags) = compile_bytes(Path::new("wrong.js"), wrong.as_bytes(), None);
+    assert!(diags.iter().any(|d| d.starts_with("JS107")), "{diags:?}");
 }

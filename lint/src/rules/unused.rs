@@ -99,7 +99,7 @@ fn variables(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let used = uses(cx);
     for (i, v) in cx.post.variables.iter().enumerate() {
         let Some(span) = v.span else { continue };
-        if used.vars.contains(&i) || v.name.starts_with("__postc") || is_template_var(cx, v) {
+        if used.vars.contains(&i) || v.name.starts_with("__postc") || is_template_var(v) {
             continue;
         }
         out.push(
@@ -175,10 +175,10 @@ fn subs(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
 /// every variable whether the post prints it or not, so an unused one is
 /// the template, not a mistake. A `VAR` under a name of the post's own
 /// that nothing prints is.
-fn is_template_var(cx: &Context, v: &postc_ir::Variable) -> bool {
+fn is_template_var(v: &postc_ir::Variable) -> bool {
     let postc_ir::ValueSource::Quantity(q) = v.source else { return false };
-    cx.post.info.dialect == Dialect::Vectric
-        && postc_front_vectric::names::var_name_of_label(q.label()).is_some_and(|n| n.eq_ignore_ascii_case(&v.name))
+    // Also in a section post converted from Vectric (CIMCO, docs/cimco.md).
+    postc_front_vectric::names::var_name_of_label(q.label()).is_some_and(|n| n.eq_ignore_ascii_case(&v.name))
 }
 
 /// Names CNC-Calc calls, and postc's own.
