@@ -62,9 +62,8 @@ function writeComment(text) {
     do {
         var end = at + commentWidth;
         if (end < clean.length) {
-            // The last blank at or before `end`; written without
-            // lastIndexOf's second argument, which postc ignores today.
-            var blank = clean.substring(0, end + 1).lastIndexOf(" ");
+            // The last blank at or before `end`.
+            var blank = clean.lastIndexOf(" ", end);
             if (blank > at) {
                 end = blank;
             }
