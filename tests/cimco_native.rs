@@ -121,12 +121,14 @@ fn arrays_pushed_measured_and_joined_are_native() {
             var w = ["<", a];
             w.push(b, 3, null);
             w.push(undefined);
+            w.unshift("N1", 7);
             return w.length + "=" + w.join("|");
         }
-        function onOpen(c) { return list("x", 2.5) + linebreak; }
+        function front(a) { var w = []; w.unshift(a); w.unshift("b"); w.push("c"); return w.join(" "); }
+        function onOpen(c) { return list("x", 2.5) + front("a") + linebreak; }
         function onLinear(x, y, z, m) { return writeBlock(xOutput.format(x)); }
         "#,
-        &["list", "onOpen"],
+        &["list", "front", "onOpen"],
         &[],
     );
 }

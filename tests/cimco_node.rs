@@ -55,3 +55,38 @@ fn node_prints_what_postc_prints() {
     assert!(failures.is_empty(), "{} pairs differ:\n\n{}", failures.len(), failures.join("\n\n"));
     assert!(compared >= 10, "only {compared} pairs were compared");
 }
+
+/// JavaScript corners Node.js and postc once disagreed on (found while
+/// writing the field-style posts): `lastIndexOf` from an index, the
+/// order of `for ... in` over keys that are array indices, and whole
+/// numbers in another radix.
+#[test]
+fn javascript_corners_print_as_node_prints() {
+    let Some(_) = node() else {
+        eprintln!("cimco_node: `node` is not installed; the Node.js referee is skipped");
+        return;
+    };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post_path = dir.path().join("corners.js");
+    std::fs::write(
+        &post_path,
+        r#"var table = {b: 1, 10: "x", 2: "y", a: 2, "01": 3};
+function keysOf(o) { var s = ""; for (var k in o) { s += k + ","; } return s; }
+function onOpen(isClipboard) {
+    var t = "ab ab ab";
+    return "(" + t.lastIndexOf("ab", 4) + " " + t.lastIndexOf("ab") + " " + t.lastIndexOf("ab", -3) + " " +
+        t.lastIndexOf("ab", 100) + " " + t.lastIndexOf("zz", 3) + ")\n(" + keysOf(table) + ")\n(" +
+        (255).toString(16) + " " + (-10).toString(2) + " " + (35).toString(36) + " " + (12).toString(10) + ")\n";
+}
+function onLinear(x, y, z, movement) { return ""; }
+"#,
+    )
+    .expect("write the post");
+    let post = compile(&post_path).expect("compiles");
+    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export");
+    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
+    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
+    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+}

@@ -24,7 +24,7 @@ use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
 use support::{blessing, check_golden, corpus, diff, files, stem};
 
-const TARGETS: [Target; 3] = [Target::Vectric, Target::VcPost, Target::Ron];
+const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::Cimco, Target::Ron];
 
 struct Case {
     post: PathBuf,
@@ -125,6 +125,7 @@ fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
         Target::VcPost => "vcpost",
+        Target::Cimco => "cimco",
         Target::Ron => "ron",
     }
 }
@@ -133,6 +134,7 @@ fn target_dialect(t: Target) -> Dialect {
     match t {
         Target::Vectric => Dialect::Vectric,
         Target::VcPost => Dialect::VcPost,
+        Target::Cimco => Dialect::Cimco,
         Target::Ron => Dialect::Ron,
     }
 }
@@ -214,9 +216,16 @@ fn converted_posts_post_as_their_sources() {
             if target == Target::Ron && without_spans(&source) != back {
                 failures.push(format!("{name} -> {file}: the RON post reads back as a different IR"));
             }
-            // A fixed point: converting the converted post again gives the same text.
+            // A fixed point: converting the converted post again gives the
+            // same text (but for the header comment, which names the source
+            // file and dialect, when they differ).
+            let body = |text: &[u8]| -> Vec<u8> {
+                let own = source.info.dialect == target_dialect(target);
+                let skip = if own { 0 } else { text.iter().position(|b| *b == b'\n').map_or(0, |i| i + 1) };
+                text[skip..].to_vec()
+            };
             match postc_backends::convert(&back, target) {
-                Ok(again) if again == converted => {}
+                Ok(again) if body(&again) == body(&converted) => {}
                 Ok(again) => {
                     failures.push(format!("{name} -> {file}: converting again differs\n{}", diff(&converted, &again)))
                 }
@@ -333,9 +342,10 @@ fn postp_controllers_convert() {
         let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
         let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
         let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
-        let refusals =
-            postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no Vectric form");
-        assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        for target in [Target::Vectric, Target::Cimco] {
+            let refusals = postc_backends::convert(&source, target).expect_err("APT-word posts have no section form");
+            assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        }
         let ron = postc_backends::convert(&source, Target::Ron).expect("every post converts to RON");
         let pin = corpus().join("converted/ron/postp").join(format!("{}.ron", controller.name()));
         if let Err(e) = check_golden(&pin, &ron) {
@@ -402,8 +412,8 @@ fn postp_controllers_convert() {
 }
 
 /// A RON post with any of its numbers changed (ids out of range, formats
-/// that do not exist, budgets of 0) gives diagnostics or posts: never a
-/// panic. Posts of all three dialects, each number set to 0 and to 65535.
+/// that do not exist, budgets of 0) gives diagnostics or posts, and every
+/// backend converts or refuses it: never a panic. Posts of all three dialects, each number set to 0 and to 65535.
 #[test]
 fn mutated_ron_posts_never_panic() {
     let posts = [
@@ -438,6 +448,10 @@ fn mutated_ron_posts_never_panic() {
                 let (back, _) = compile_bytes(Path::new("mutated.ron"), mutated.as_bytes(), Some(Dialect::Ron));
                 match back {
                     Some(mut back) => {
+                        // Every backend takes it or refuses it, without a panic.
+                        for target in TARGETS {
+                            let _ = postc_backends::convert(&back, target);
+                        }
                         // A mutated loop runs to the step budget (RT002):
                         // a small one keeps the test quick.
                         back.options.step_budget = back.options.step_budget.min(20_000);
@@ -474,4 +488,74 @@ fn vcpost_templates_and_names_survive_conversion() {
     let (want, _) = post(&source_post, &toolpath);
     let (got, _) = post(&back, &toolpath);
     assert_eq!(want.expect("posts"), got.expect("posts"));
+}
+
+/// A section post written by hand (postc's extension of VcPost,
+/// docs/vcpost.md) posts what the Vectric post it mirrors posts; a wrong
+/// `Postc.` option is a diagnostic.
+#[test]
+fn a_handwritten_vcpost_section_post_posts_as_its_vectric_twin() {
+    let vectric = "POST_NAME = \"twin\"\nFILE_EXTENSION = \"nc\"\nUNITS = MM\nLINE_ENDING = \"[13][10]\"\n\
+        VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR Z_POSITION = [Z|C|Z|1.3]\nVAR FEED_RATE = [F|C|F|1.1]\n\
+        begin HEADER\n\"G21 G90\"\nbegin RAPID_MOVE\n\"G0[X][Y][Z]\"\nbegin FEED_MOVE\n\"G1[X][Y][Z][F]\"\nbegin FOOTER\n\"M30\"\n";
+    let vcpost = "Postc.Name = \"twin\"\nPostc.FileExtension = \"nc\"\nPostc.Units = \"MM\"\nPostc.LineEnding = \"CRLF\"\n\
+        X.Prefix = \"X\"\nX.Decimals = 3\nX.TrailingZeros = True\nX.Width = 1\nX.Modal = True\n\
+        Y.Prefix = \"Y\"\nY.Decimals = 3\nY.TrailingZeros = True\nY.Width = 1\nY.Modal = True\n\
+        Z.Prefix = \"Z\"\nZ.Decimals = 3\nZ.TrailingZeros = True\nZ.Width = 1\nZ.Modal = True\n\
+        F.Prefix = \"F\"\nF.Decimals = 1\nF.TrailingZeros = True\nF.Width = 1\nF.Modal = True\n\
+        Sub HEADER\n  Out \"G21 G90\"\nEnd Sub\nSub RAPID_MOVE\n  Out \"G0<X><Y><Z>\"\nEnd Sub\n\
+        Sub FEED_MOVE\n  Out \"G1<X><Y><Z><F>\"\nEnd Sub\nSub FOOTER\n  Out \"M30\"\nEnd Sub\n";
+    let (Some(a), _) = compile_bytes(Path::new("twin.pp"), vectric.as_bytes(), None) else {
+        panic!("the Vectric post")
+    };
+    let (Some(b), diags) = compile_bytes(Path::new("twin.VcPost"), vcpost.as_bytes(), None) else {
+        panic!("the section post compiles")
+    };
+    assert!(diags.is_empty(), "{diags:?}");
+    for toolpath in ["standard.ron", "arcs_mm.ron"] {
+        let toolpath = corpus().join("toolpaths").join(toolpath);
+        let (want, _) = post(&a, &toolpath);
+        let (got, _) = post(&b, &toolpath);
+        assert_eq!(want.expect("posts"), got.expect("posts"));
+    }
+    let wrong = "Postc.Units = \"cm\"\nPostc.Colour = 1\nSub HEADER\n  Out \"%\"\nEnd Sub\n";
+    let (_, diags) = compile_bytes(Path::new("wrong.VcPost"), wrong.as_bytes(), None);
+    assert!(diags.iter().any(|d| d.starts_with("VC021")), "{diags:?}");
+    assert!(diags.iter().any(|d| d.starts_with("VC020")), "{diags:?}");
+}
+
+/// A CIMCO section post written by hand (postc's extension, docs/cimco.md)
+/// posts what the Vectric post it mirrors posts; a section function that
+/// does more than return its lines is JS107.
+#[test]
+fn a_handwritten_cimco_section_post_posts_as_its_vectric_twin() {
+    let vectric = "POST_NAME = \"twin\"\nFILE_EXTENSION = \"nc\"\nUNITS = MM\n\
+        VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR FEED_RATE = [F|C|F|1.1]\n\
+        begin HEADER\n\"G21 G90\"\nbegin RAPID_MOVE\n\"G0[X][Y]\"\nbegin FEED_MOVE\n\"G1[X][Y][F]\"\nbegin FOOTER\n\"M30\"\n";
+    let js = r#"var postcOptions = {name: "twin", fileExtension: "nc", units: "MM", lineEnding: "\r\n"};
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 3, trim: false}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 3, trim: false}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, trim: false}));
+function HEADER() { return "G21 G90\n"; }
+function RAPID_MOVE() { return "G0" + X_POSITION + Y_POSITION + "\n"; }
+function FEED_MOVE() { return "G1" + X_POSITION + Y_POSITION + FEED_RATE + "\n"; }
+function FOOTER() { return "M30\n"; }
+"#;
+    let (Some(a), _) = compile_bytes(Path::new("twin.pp"), vectric.as_bytes(), None) else {
+        panic!("the Vectric post")
+    };
+    let (Some(b), diags) = compile_bytes(Path::new("twin.js"), js.as_bytes(), None) else {
+        panic!("the section post compiles")
+    };
+    assert!(diags.is_empty(), "{diags:?}");
+    for toolpath in ["standard.ron", "arcs_mm.ron"] {
+        let toolpath = corpus().join("toolpaths").join(toolpath);
+        let (want, _) = post(&a, &toolpath);
+        let (got, _) = post(&b, &toolpath);
+        assert_eq!(want.expect("posts"), got.expect("posts"));
+    }
+    let wrong = "var X = createVariable({prefix: \"X\", label: \"X\"}, createFormat({}));\n\
+        function FEED_MOVE() { if (X) { return \"\"; } return \"G1\" + X + \"\\n\"; }\n";
+    let (_, diags) = compile_bytes(Path::new("wrong.js"), wrong.as_bytes(), None);
+    assert!(diags.iter().any(|d| d.starts_with("JS107")), "{diags:?}");
 }

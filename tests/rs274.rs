@@ -193,7 +193,6 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         if !GCODE_EXTENSIONS.contains(&post.info.file_extension.to_ascii_lowercase().as_str()) {
             continue;
         }
-        let tol = tolerance(&post);
         for toolpath in &toolpaths {
             let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
             let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
@@ -218,43 +217,93 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
                     continue;
                 }
             };
-            let (expected, wrap) = expected_moves(toolpath, &post);
-            if wrap.is_some()
-                && let Some(arc) = actual.iter().find(|c| matches!(c.kind, Kind::Arc { .. }))
-            {
-                failures.push(format!(
-                    "{label}: a wrapped post printed an arc (G2/G3 cannot turn the rotary axis): {arc:?}"
-                ));
-                continue;
-            }
-            let mut at = 0;
-            for (i, e) in expected.iter().enumerate() {
-                match actual[at..].iter().position(|c| matches(e, c, tol)) {
-                    Some(k) => {
-                        if let (Expected::WrappedArc(_, centre, radius), Some(w)) = (e, &wrap) {
-                            // Every chord of the arc ends on it, once unrolled.
-                            for c in &actual[at..=at + k] {
-                                let [x, y] = w.unroll(c.end);
-                                let off = ((x - centre[0]).hypot(y - centre[1]) - radius).abs();
-                                if c.kind != Kind::Feed || off > 2.0 * tol {
-                                    failures.push(format!("{label}: move {i} (a wrapped arc): {c:?} is not a feed move ending on the arc (off by {off:.4})"));
-                                }
-                            }
-                        }
-                        at += k + 1;
-                    }
-                    None => {
-                        failures.push(format!(
-                            "{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"
-                        ));
-                        break;
-                    }
-                }
-            }
+            check_motion(&label, toolpath, &post, &actual, &mut failures);
             checked += 1;
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(checked > 0, "no program was checked");
     println!("rs274 read {checked} programs with the toolpaths' motion");
+}
+
+/// Whether rs274's moves contain the toolpath's, in order (and, for a
+/// wrapped post, every chord of an arc on the unrolled arc).
+fn check_motion(label: &str, toolpath: &Path, post: &Post, actual: &[Motion], failures: &mut Vec<String>) {
+    let tol = tolerance(post);
+    let (expected, wrap) = expected_moves(toolpath, post);
+    if wrap.is_some()
+        && let Some(arc) = actual.iter().find(|c| matches!(c.kind, Kind::Arc { .. }))
+    {
+        failures.push(format!("{label}: a wrapped post printed an arc (G2/G3 cannot turn the rotary axis): {arc:?}"));
+        return;
+    }
+    let mut at = 0;
+    for (i, e) in expected.iter().enumerate() {
+        match actual[at..].iter().position(|c| matches(e, c, tol)) {
+            Some(k) => {
+                if let (Expected::WrappedArc(_, centre, radius), Some(w)) = (e, &wrap) {
+                    // Every chord of the arc ends on it, once unrolled.
+                    for c in &actual[at..=at + k] {
+                        let [x, y] = w.unroll(c.end);
+                        let off = ((x - centre[0]).hypot(y - centre[1]) - radius).abs();
+                        if c.kind != Kind::Feed || off > 2.0 * tol {
+                            failures.push(format!("{label}: move {i} (a wrapped arc): {c:?} is not a feed move ending on the arc (off by {off:.4})"));
+                        }
+                    }
+                }
+                at += k + 1;
+            }
+            None => {
+                failures
+                    .push(format!("{label}: move {i} of the toolpath ({e:?}) is not among rs274's moves after #{at}"));
+                return;
+            }
+        }
+    }
+}
+
+/// The CIMCO corpus posts written for LinuxCNC-dialect controllers.
+const CIMCO_RS274_POSTS: &[&str] = &["linuxcnc_field.js", "mach3_field.js"];
+
+/// The CIMCO posts for LinuxCNC and Mach3 post their toolpaths (as their
+/// goldens do) into programs rs274 reads with the toolpaths' motion. The
+/// tool table gives every tool a zero diameter: rs274 standalone reads the
+/// table's diameters in inches whatever G20/G21 says (corpus/tool.tbl's 6
+/// would be a 152 mm cutter, longer than every compensation entry move of
+/// `cimco/mill.ron`), and with no radius the compensated path is the
+/// programmed one, which is what is compared. G41/G42/G40 are still
+/// interpreted and checked (entry and exit moves, plane).
+#[test]
+fn cimco_linuxcnc_posts_read_in_rs274_with_the_toolpaths_motion() {
+    let Some(rs274) = rs274::find() else {
+        println!("skipped: rs274 not found on PATH (bash .ci/run installs it from Debian's linuxcnc-uspace)");
+        return;
+    };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let table = dir.path().join("zero.tbl");
+    let rows: String = (1..=20).map(|t| format!("T{t} P{t} D0 Z+0.000 ;tool {t}\n")).collect();
+    std::fs::write(&table, rows).expect("the tool table");
+    let (mut checked, mut failures) = (0, Vec::new());
+    for name in CIMCO_RS274_POSTS {
+        let post_path = root().join("corpus/posts/cimco").join(name);
+        let post = support::cimco::compile(&post_path).expect("the post compiles");
+        for toolpath in support::cimco::toolpaths(&post) {
+            let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
+            let program = match support::cimco::post_toolpath(&post, &toolpath) {
+                Ok(p) => p,
+                Err(e) => {
+                    failures.push(format!("{label}: posting failed: {e}"));
+                    continue;
+                }
+            };
+            match rs274::run_with_table(&rs274, &String::from_utf8_lossy(&program), &table) {
+                Ok(actual) => check_motion(&label, &toolpath, &post, &actual, &mut failures),
+                Err(e) => failures.push(format!("{label}: {e}")),
+            }
+            checked += 1;
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_eq!(checked, 3 * CIMCO_RS274_POSTS.len(), "every post and toolpath");
+    println!("rs274 read {checked} CIMCO programs with the toolpaths' motion");
 }

@@ -2,7 +2,8 @@
 //!
 //! A backend prints a compiled post IR ([`postc_ir::Post`]) as the text of
 //! a post in one target: a Vectric `.pp` post ([`vectric`]), a Vericut
-//! VcPost post ([`vcpost`]) or the IR itself as RON ([`ron`]). Backends read only the IR, never a dialect's
+//! VcPost post ([`vcpost`]), a CIMCO CNC-Calc post ([`cimco`]) or the IR
+//! itself as RON ([`ron`]). Backends read only the IR, never a dialect's
 //! syntax tree, so a post of any dialect converts to any target that can
 //! say what it does.
 //!
@@ -18,6 +19,7 @@
 //! Every converted post starts with a comment that names the file and
 //! dialect it was converted from.
 
+pub mod cimco;
 pub mod ron;
 pub mod vcpost;
 pub mod vectric;
@@ -31,6 +33,8 @@ pub enum Target {
     Vectric,
     /// A Vericut VcPost post.
     VcPost,
+    /// A CIMCO CNC-Calc JavaScript post (a section post).
+    Cimco,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,
 }
@@ -41,6 +45,7 @@ impl Target {
         match self {
             Target::Vectric => "pp",
             Target::VcPost => "VcPost",
+            Target::Cimco => "js",
             Target::Ron => "ron",
         }
     }
@@ -52,6 +57,7 @@ pub fn convert(post: &Post, target: Target) -> Result<Vec<u8>, Vec<Diagnostic>> 
     match target {
         Target::Vectric => vectric::print(post),
         Target::VcPost => vcpost::print(post),
+        Target::Cimco => cimco::print(post),
         Target::Ron => ron::print(post).map(String::into_bytes),
     }
 }

@@ -6,16 +6,20 @@
 //! !X !Y Depth`) the applications read.
 //!
 //! VcPost posts run over APT records (one Sub per major word: `Sub GOTO`)
-//! and the calls of the probe-table and composites applications, so only a
-//! post driven that way converts: a post driven by Vectric sections or
-//! CNC-Calc entry points (dispatch by the kind of move) is `CV001`. Within
-//! such a post, what the VcPost language has no form for is refused:
+//! and the calls of the probe-table and composites applications. A post
+//! driven by the kind of each move (a Vectric post) prints as a *section
+//! post*, postc's extension (docs/vcpost.md): one `Sub` per section,
+//! registers named after the labels they print, and `Postc.` options for
+//! Vectric's global statements. What VcPost has no form for is refused:
 //!
+//! - a handler that is not an APT word's or a section's Sub is `CV001`;
 //! - code VcPost cannot say (scripts, JavaScript operators and
 //!   conversions, output-buffer statements, `Continue`, null) is `CV002`;
 //! - a register format the register properties cannot set is `CV003`;
-//! - an output option no VcPost statement sets is `CV004`;
-//! - a variable that is not a register (a Vectric label) is `CV005`.
+//! - an output option no VcPost statement sets (a lathe, a chord
+//!   tolerance, modal memory kept across toolpaths) is `CV004`;
+//! - a runtime value no register can print (outside a section post, or a
+//!   second variable of one label) is `CV005`.
 //!
 //! What converts is printed in a canonical form: loops as `Do While ...
 //! Loop` (a `For` or `Select Case` of the source was lowered to a loop or
@@ -28,7 +32,7 @@ use std::collections::HashSet;
 
 use postc_front_vcpost::{routines, token};
 use postc_ir::codes;
-use postc_ir::post::{BlockNumbers, Dispatch};
+use postc_ir::post::{BlockNumbers, Dispatch, Section};
 use postc_ir::{
     BinaryOp, Body, Builtin, Diagnostic, Expr, Function, HandlerKey, Justify, Modality, NumberFormat, OutputOptions,
     Padding, Piece, Place, PointStyle, Post, SignStyle, Span, Stmt, TextEncoding, UnaryOp, ValueSource, WidthOf,
@@ -45,6 +49,7 @@ pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
     p.header();
     p.registers();
     p.globals();
+    p.sections();
     p.functions();
     if !p.errors.is_empty() {
         return Err(p.errors);
@@ -140,52 +145,47 @@ impl Printer<'_> {
     /// What the post as a whole must be to be a VcPost post.
     fn check_shape(&mut self) {
         let post = self.post;
-        if post.info.dispatch != Dispatch::AptWords {
-            let span = post.handlers.iter().find_map(|h| h.span);
-            self.refuse(
-                codes::CV001.code,
-                span,
-                "this post is driven by the kind of each move (sections, entry points), which VcPost has no form for"
-                    .into(),
-                "a VcPost post runs one Sub per APT record (`Sub GOTO`, `Sub FEDRAT`) or per application call",
-            );
-            return;
-        }
         for h in &post.handlers {
-            let HandlerKey::Word(word) = &h.key else {
-                self.refuse(
+            match (&h.key, post.info.dispatch) {
+                (HandlerKey::Word(word), Dispatch::AptWords) => {
+                    let calls_its_sub = matches!(h.body.as_slice(), [Stmt::Eval(Expr::Call(f, args))]
+                        if args.is_empty() && post.functions.get(f.index()).is_some_and(|f| f.name.eq_ignore_ascii_case(word)));
+                    if !calls_its_sub {
+                        self.refuse(
+                            codes::CV002.code,
+                            h.span,
+                            format!("the handler of `{word}` does more than call `Sub {word}`"),
+                            "in VcPost the Sub named after the word is the handler",
+                        );
+                    }
+                }
+                (HandlerKey::Section(_), Dispatch::Sections) => {}
+                (key, _) => self.refuse(
                     codes::CV001.code,
                     h.span,
-                    format!("a handler for {:?}", h.key),
-                    "VcPost Subs handle APT words",
-                );
-                continue;
-            };
-            let calls_its_sub = matches!(h.body.as_slice(), [Stmt::Eval(Expr::Call(f, args))]
-                if args.is_empty() && post.functions.get(f.index()).is_some_and(|f| f.name.eq_ignore_ascii_case(word)));
-            if !calls_its_sub {
-                self.refuse(
-                    codes::CV002.code,
-                    h.span,
-                    format!("the handler of `{word}` does more than call `Sub {word}`"),
-                    "in VcPost the Sub named after the word is the handler",
-                );
+                    format!("a handler for {key:?} in a post driven by {:?}", post.info.dispatch),
+                    "VcPost Subs handle APT words, or (postc's extension) sections",
+                ),
             }
         }
         let o = &post.options;
         let d = OutputOptions::default();
+        let multi = o.substitutions.iter().any(|s| {
+            std::str::from_utf8(&s.from).map_or(true, |t| t.chars().count() != 1)
+                || std::str::from_utf8(&s.to).map_or(true, |t| t.chars().count() != 1)
+        });
+        let line_ending = [&b"\r\n"[..], b"\n", b"\r"].contains(&o.line_ending.as_slice());
         let differs = [
-            ("a line ending other than a line feed", o.line_ending != d.line_ending),
-            ("substitutions", o.substitutions != d.substitutions),
-            ("tape splitting", o.tape_splitting != d.tape_splitting),
-            ("a spindle speed range", o.spindle_speed_range != d.spindle_speed_range),
-            ("a rotary wrap", o.rotary_wrap != d.rotary_wrap),
-            ("arc radius limits", o.min_arc_radius != d.min_arc_radius || o.max_arc_radius != d.max_arc_radius),
-            ("inverse-time feeds", o.inverse_time_feed != d.inverse_time_feed),
+            ("a line ending other than CR LF, LF or CR", !line_ending),
+            ("substitutions of more than one character", multi),
             ("a chord tolerance", o.arc_tolerance != d.arc_tolerance),
             ("exact arcs", o.exact_arcs != d.exact_arcs),
             ("a step budget", o.step_budget != d.step_budget),
             ("a lathe mapping", o.lathe != d.lathe),
+            (
+                "modal memory kept across toolpaths",
+                o.forget_modal_at_toolpath_start != d.forget_modal_at_toolpath_start,
+            ),
         ];
         for (what, yes) in differs {
             if yes {
@@ -193,17 +193,9 @@ impl Printer<'_> {
                     codes::CV004.code,
                     None,
                     format!("the post sets {what}, which no VcPost statement sets"),
-                    "VcPost sets only register properties and block numbering",
+                    "VcPost sets register properties, block numbering and postc's `Postc.` options",
                 );
             }
-        }
-        if post.info.units.is_some() || !post.info.file_extension.is_empty() {
-            self.refuse(
-                codes::CV004.code,
-                post.info.span,
-                "the post fixes its units or file extension, which no VcPost statement sets".into(),
-                "a VcPost post writes the toolpath's own units (the `Metric` variable says which)",
-            );
         }
     }
 
@@ -226,12 +218,23 @@ impl Printer<'_> {
             let name = self.names.give(&f.name, "Routine");
             self.names.functions.push(name);
         }
+        let sections = post.info.dispatch == Dispatch::Sections;
         for v in &post.variables {
-            let name = if v.source == ValueSource::Quantity(postc_ir::Quantity::BlockNumber) {
-                self.names.taken.insert("n".into());
-                "N".to_string()
-            } else {
-                self.names.give(&v.name, "Register")
+            let name = match v.source {
+                ValueSource::Quantity(postc_ir::Quantity::BlockNumber) => {
+                    self.names.taken.insert("n".into());
+                    "N".to_string()
+                }
+                // Under sections a register named after a label prints it.
+                ValueSource::Quantity(q) if sections && !self.names.taken.contains(&q.label().to_lowercase()) => {
+                    self.names.taken.insert(q.label().to_lowercase());
+                    q.label().to_string()
+                }
+                ValueSource::Quantity(_) => String::new(),
+                ValueSource::Assigned if sections && postc_ir::Quantity::from_label(&v.name).is_some() => {
+                    self.names.give(&format!("{}_", v.name), "Register")
+                }
+                ValueSource::Assigned => self.names.give(&v.name, "Register"),
             };
             self.names.registers.push(name);
         }
@@ -272,6 +275,87 @@ impl Printer<'_> {
         let dialect = super::dialect_name(post.info.dialect);
         self.line(0, &format!("' Converted by postc from {source} ({dialect})."));
         self.line(0, "");
+        self.options(&source);
+    }
+
+    /// postc's options (`Postc.Units = "MM"`), those that differ from the
+    /// defaults: what Vectric's global statements say.
+    fn options(&mut self, source: &str) {
+        let post = self.post;
+        let (info, o) = (&post.info, &post.options);
+        let mut lines = Vec::new();
+        let stem = source.rsplit_once('.').map_or(source, |s| s.0);
+        if !info.name.is_empty() && info.name != stem {
+            lines.push(format!("Postc.Name = {}", text_literal(&info.name)));
+        }
+        if !info.file_extension.is_empty() {
+            lines.push(format!("Postc.FileExtension = {}", text_literal(&info.file_extension)));
+        }
+        match info.units {
+            Some(postc_ir::Units::Mm) => lines.push("Postc.Units = \"MM\"".into()),
+            Some(postc_ir::Units::Inch) => lines.push("Postc.Units = \"INCH\"".into()),
+            None => {}
+        }
+        match o.line_ending.as_slice() {
+            b"\r\n" => lines.push("Postc.LineEnding = \"CRLF\"".into()),
+            b"\r" => lines.push("Postc.LineEnding = \"CR\"".into()),
+            _ => {}
+        }
+        for sub in &o.substitutions {
+            let text = format!("{}{}", String::from_utf8_lossy(&sub.from), String::from_utf8_lossy(&sub.to));
+            lines.push(format!("Postc.Substitute = {}", text_literal(&text)));
+        }
+        if let Some(r) = o.spindle_speed_range {
+            let n = [r.out_min, r.out_max, r.rpm_min, r.rpm_max].map(number);
+            lines.push(format!("Postc.SpindleSpeedRange = \"{}\"", n.join(" ")));
+        }
+        if let Some(w) = o.rotary_wrap {
+            let axis = match w.axis {
+                postc_ir::post::WrappedAxis::X => "X",
+                postc_ir::post::WrappedAxis::Y => "Y",
+            };
+            let letter = w.letter.map(|l| format!(" {}{l}", if w.reversed { "-" } else { "" })).unwrap_or_default();
+            if w.letter.is_none() && w.reversed {
+                self.refuse(codes::CV004.code, None, "a reversed rotary wrap without a letter".into(), "");
+            }
+            lines.push(format!("Postc.RotaryWrap = \"{axis}{letter}\""));
+        }
+        for (name, value) in [("MinArcRadius", o.min_arc_radius), ("MaxArcRadius", o.max_arc_radius)] {
+            if let Some(v) = value {
+                lines.push(format!("Postc.{name} = {}", number(v)));
+            }
+        }
+        for (name, value) in [
+            ("InverseTimeFeed", o.inverse_time_feed),
+            ("LaserSupport", info.laser_support),
+            ("PrintDirect", info.print_direct),
+            ("RapidPlungeToStartZ", info.rapid_plunge_to_start_z),
+        ] {
+            if value {
+                lines.push(format!("Postc.{name} = True"));
+            }
+        }
+        if let Some(d) = &info.direct_output {
+            lines.push(format!("Postc.DirectOutput = {}", text_literal(d)));
+        }
+        if let Some(t) = &o.tape_splitting {
+            lines.push(format!("Postc.TapeSplitLines = {}", t.max_lines));
+            lines.push(format!("Postc.TapeSplitTolerance = {}", t.tolerance));
+            lines.push(format!("Postc.TapeSplitName = {}", text_literal(&t.name_format)));
+            lines.push(format!("Postc.TapeSplitStart = {}", t.start_index));
+            lines.push(format!("Postc.TapeSplitIndexFirst = {}", if t.index_on_first_file { "True" } else { "False" }));
+            if t.max_lines == 0 {
+                self.refuse(codes::CV004.code, None, "tape splitting at 0 lines".into(), "");
+            }
+        }
+        if lines.is_empty() {
+            return;
+        }
+        self.line(0, "' ---- postc's options (docs/vcpost.md) ----");
+        for l in lines {
+            self.line(0, &l);
+        }
+        self.line(0, "");
     }
 
     /// Register properties, in the order the registers were first named.
@@ -281,15 +365,23 @@ impl Printer<'_> {
             return;
         }
         self.line(0, "' ---- Register properties ----");
-        for (i, v) in post.variables.iter().enumerate() {
+        // The frontend makes `N` when it first needs it, after the others: it goes last.
+        let is_n = |v: &postc_ir::Variable| v.source == ValueSource::Quantity(postc_ir::Quantity::BlockNumber);
+        let order: Vec<usize> = (0..post.variables.len())
+            .filter(|&i| !is_n(&post.variables[i]))
+            .chain((0..post.variables.len()).filter(|&i| is_n(&post.variables[i])))
+            .collect();
+        for i in order {
+            let v = &post.variables[i];
             let name = self.names.registers[i].clone();
             let sequence = v.source == ValueSource::Quantity(postc_ir::Quantity::BlockNumber);
-            if !(sequence && name == "N" || v.source == ValueSource::Assigned) {
+            let label = matches!(v.source, ValueSource::Quantity(_)) && post.info.dispatch == Dispatch::Sections;
+            if name.is_empty() || !(sequence || label || v.source == ValueSource::Assigned) {
                 self.refuse(
                     codes::CV005.code,
                     v.span,
-                    format!("`{}` prints a value the runtime gives ({:?}), not a register", v.name, v.source),
-                    "VcPost registers hold what the post or the APT record assigns",
+                    format!("`{}` prints a value the runtime gives ({:?}), which no register can here", v.name, v.source),
+                    "VcPost registers hold what the post or the APT record assigns; under sections, one register per label",
                 );
                 continue;
             }
@@ -351,6 +443,10 @@ impl Printer<'_> {
             (0, _, _) => {}
             (w, WidthOf::IntegerDigits, Padding::Zero) => out.push(("LeadingZeros", w.to_string())),
             (w, WidthOf::Whole, Padding::Space) if w <= 40 => out.push(("Width", w.to_string())),
+            (w, WidthOf::Whole, Padding::Zero) if w <= 40 => {
+                out.push(("Width", w.to_string()));
+                out.push(("Padding", "\"Zero\"".into()));
+            }
             _ => cannot.push("its padding"),
         }
         if f.point == PointStyle::Always {
@@ -442,11 +538,42 @@ impl Printer<'_> {
         }
     }
 
+    /// Under sections, each section whose handler is its lines (not a call
+    /// of a Sub) as `Sub SECTION_NAME`.
+    fn sections(&mut self) {
+        let post = self.post;
+        for section in Section::ALL.iter().copied() {
+            let Some(h) = post.handlers.iter().find(|h| h.key == HandlerKey::Section(section)) else { continue };
+            if self.calls_its_sub(&h.body, section) {
+                continue;
+            }
+            self.line(0, &format!("Sub {}", section.name()));
+            let body = h.body.clone();
+            self.block(&body, None, 1);
+            self.line(0, "End Sub");
+            self.line(0, "");
+        }
+    }
+
+    /// Whether a section's handler is a call of the Sub named after it.
+    fn calls_its_sub(&self, body: &[Stmt], section: Section) -> bool {
+        matches!(body, [Stmt::Eval(Expr::Call(f, args))] if args.is_empty()
+            && self.post.functions.get(f.index()).is_some_and(|f| f.name.eq_ignore_ascii_case(section.name())))
+    }
+
     fn functions(&mut self) {
         let post = self.post;
         for (i, f) in post.functions.iter().enumerate() {
             let kind = self.kind(f);
             if kind == Kind::Host {
+                continue;
+            }
+            // A section's Sub whose handler holds its lines printed with the sections.
+            if post.info.dispatch == Dispatch::Sections
+                && let Some(section) = Section::from_name(&f.name)
+                && let Some(h) = post.handlers.iter().find(|h| h.key == HandlerKey::Section(section))
+                && !self.calls_its_sub(&h.body, section)
+            {
                 continue;
             }
             let Body::Native(body) = &f.body else {
@@ -504,8 +631,10 @@ impl Printer<'_> {
             }
             dims.sort_by_key(|d| d.0);
             for (k, ty) in dims {
-                let local = self.names.locals[i][k].clone();
-                self.line(1, &format!("Dim {local}{ty}"));
+                match self.names.locals[i].get(k).cloned() {
+                    Some(local) => self.line(1, &format!("Dim {local}{ty}")),
+                    None => self.cannot("a local past the function's slots", f.span),
+                }
             }
             let body = body.to_vec();
             self.block(&body, Some(i), 1);

@@ -119,14 +119,22 @@ impl Printer<'_> {
                 "a Vectric post prints sections chosen by the kind of move; it cannot run a Sub per APT record",
             );
         }
-        if !post.functions.is_empty() || !post.globals.is_empty() || !post.init.is_empty() {
-            let span = post.functions.iter().find_map(|f| f.span);
+        // A section post's Sub whose handler holds its lines (VcPost, docs/vcpost.md) is
+        // those lines again, not code.
+        let is_section_copy = |f: &postc_ir::Function| {
+            Section::from_name(&f.name).is_some_and(|s| {
+                post.section(s).is_some_and(|h| matches!(&f.body, postc_ir::Body::Native(b) if *b == h.body))
+            })
+        };
+        let code: Vec<&postc_ir::Function> = post.functions.iter().filter(|f| !is_section_copy(f)).collect();
+        if !code.is_empty() || !post.globals.is_empty() || !post.init.is_empty() {
+            let span = code.iter().find_map(|f| f.span);
             self.refuse(
                 codes::CV002.code,
                 span,
                 format!(
                     "this post has code ({} functions, {} globals, {} statements run at start) and a Vectric post has none",
-                    post.functions.len(),
+                    code.len(),
                     post.globals.len(),
                     post.init.len()
                 ),

@@ -789,6 +789,13 @@ declare_codes! {
     JS106: Error, "the post assigns to the name of a function",
         example = "function onOpen() {}\nonOpen = null;",
         fix = "Keep the function in a variable of its own: `var handler = onOpen;`.";
+    /// A section post (postc's extension of CNC-Calc for posts driven by the kind of each move,
+    /// docs/cimco.md) holds `var postcOptions = {...}`, variables made by
+    /// `createVariable({prefix, label, modal}, createFormat({...}))` of constants, and one
+    /// function per section that returns its lines; this construct is none of those.
+    JS107: Error, "a section post holds something other than its options, its labelled variables and functions that return a section's lines",
+        example = "var X = createVariable({prefix: \"X\", label: \"X\"}, createFormat({decimals: 3}));\nfunction FEED_MOVE() { if (X) { return \"\"; } return \"G1\" + X + \"\\n\"; }",
+        fix = "Write the section as `return \"G1\" + X + \"\\n\";`, or write a CNC-Calc post with `onLinear` and friends.";
     /// The line does not read as VcPost: a word or symbol stands where the language allows none.
     /// The help, when there is one, says what was expected.
     VC001: Error, "a line VcPost cannot read (unexpected word or symbol)",

@@ -1,4 +1,4 @@
-//! `postc convert POST --to vectric|vcpost|ron [-o OUT]`: prints a post of any
+//! `postc convert POST --to vectric|vcpost|cimco|ron [-o OUT]`: prints a post of any
 //! dialect as a post of another (`postc_backends`). A post the target
 //! cannot hold is refused with a diagnostic per reason, and nothing is
 //! written; `-o` writes the whole file or none of it.
@@ -19,6 +19,8 @@ pub enum TargetArg {
     Vectric,
     /// A Vericut VcPost post (posts driven by APT words and application calls).
     Vcpost,
+    /// A CIMCO CNC-Calc JavaScript post (a section post, for posts driven by the kind of move).
+    Cimco,
     /// The post's IR as RON (postc post reads it back).
     Ron,
 }
@@ -44,6 +46,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
         TargetArg::Vcpost => Target::VcPost,
+        TargetArg::Cimco => Target::Cimco,
         TargetArg::Ron => Target::Ron,
     };
     let text = match postc_backends::convert(&post, target) {

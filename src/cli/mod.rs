@@ -6,7 +6,7 @@
 //! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc explain CODE                                          # one diagnostic code's documentation
 //! postc check|post ... [--warn|--deny|--allow CODE|PREFIX|all]  # severity per code; also postc.toml
-//! postc convert POST --to vectric|vcpost|ron [-o OUT]         # a post as another dialect's
+//! postc convert POST --to vectric|vcpost|cimco|ron [-o OUT]   # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
@@ -59,7 +59,7 @@ pub struct Cli {
 enum Command {
     /// Post a toolpath: POST TOOLPATH, or TOOLPATH alone with the embedded G-code post.
     Post(post::Args),
-    /// Convert a post to another dialect (Vectric .pp, VcPost, or the IR as RON); refused with reasons when the target cannot hold it.
+    /// Convert a post to another dialect (Vectric .pp, VcPost, CIMCO, or the IR as RON); refused with reasons when the target cannot hold it.
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),

@@ -3,7 +3,8 @@
 //! (`tests/rs274.rs`, `tests/vcpost_rs274.rs`, the postp tests).
 //!
 //! Each run happens in its own temporary folder (rs274 keeps a parameter
-//! file in the working folder). A run that rs274 ends by a signal is tried
+//! file in the working folder, and its tool table in `$HOME/.tool.mmap`,
+//! so HOME is that folder too). A run that rs274 ends by a signal is tried
 //! once more: the standalone interpreter has been seen to die that way once
 //! under heavy parallel load, and a crash of the referee is not a verdict on
 //! the program.
@@ -57,16 +58,24 @@ fn numbers(args: &str) -> Vec<f64> {
 /// Runs rs274 on a program text with `corpus/tool.tbl`; its moves, or the
 /// lines it complained with (and its exit status).
 pub fn run(rs274: &Path, program: &str) -> Result<Vec<Motion>, String> {
+    run_with_table(rs274, program, &PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("corpus/tool.tbl"))
+}
+
+/// Runs rs274 on a program text with the given tool table.
+pub fn run_with_table(rs274: &Path, program: &str, table: &Path) -> Result<Vec<Motion>, String> {
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let file = dir.path().join("program.ngc");
     std::fs::write(&file, program).map_err(|e| e.to_string())?;
-    let table = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("corpus/tool.tbl");
     let mut output = None;
     for _ in 0..2 {
+        // rs274 keeps the tool table in `$HOME/.tool.mmap` (LinuxCNC's
+        // libtooldata): runs side by side would share, and overwrite, one
+        // table. Each run gets its own.
         let out = Command::new(rs274)
             .current_dir(dir.path())
+            .env("HOME", dir.path())
             .args(["-g", "-t"])
-            .arg(&table)
+            .arg(table)
             .arg(&file)
             .output()
             .map_err(|e| format!("cannot run rs274: {e}"))?;

@@ -37,6 +37,7 @@ pub mod lexer;
 mod lower;
 mod parser;
 pub mod print;
+pub mod sections;
 mod sniff;
 mod strings;
 pub mod token;

@@ -17,6 +17,7 @@
 //! | `ZeroBeforePoint` | `True`/`False` | `0.5` rather than `.5` | `True` |
 //! | `Sign` | `"+"`/`"Always"`/`True`, `"-"`/`"Negative"`/`False` | when a sign is written | negative only |
 //! | `Width` | 0-40 | minimum width of the whole number, blank padded | 0 |
+//! | `Padding` | `"Blank"`/`"Zero"` | what fills `Width` (zeros go after the sign: `-0012`) | `"Blank"` |
 //! | `Justify` | `"Left"`/`"Right"` | side of the value inside `Width` | `"Right"` |
 //! | `DecimalMark` | `"."` or `","` | the decimal mark | `"."` |
 //! | `Multiplier` (or `Scale`) | number | the value is multiplied by this before rounding | 1 |
@@ -40,6 +41,7 @@ pub const PROPERTIES: &[&str] = &[
     "ZeroBeforePoint",
     "Sign",
     "Width",
+    "Padding",
     "Justify",
     "DecimalMark",
     "Multiplier",
@@ -63,6 +65,8 @@ pub struct RegisterSpec {
     pub leading_zeros: Option<(u8, Span)>,
     /// `Width`, and where it was set.
     pub width: Option<(u8, Span)>,
+    /// `Padding = "Zero"`: `Width` is filled with zeros.
+    pub zero_fill: bool,
     pub modality: Modality,
     /// The register's first mention in the post.
     pub span: Option<Span>,
@@ -85,6 +89,7 @@ impl RegisterSpec {
             span: None,
             leading_zeros: None,
             width: None,
+            zero_fill: false,
             modality: Modality::Always,
         }
     }
@@ -101,7 +106,7 @@ impl RegisterSpec {
             (None | Some(_), Some((width, _))) => {
                 format.width = width;
                 format.width_of = WidthOf::Whole;
-                format.padding = Padding::Space;
+                format.padding = if self.zero_fill { Padding::Zero } else { Padding::Space };
                 if let Some((_, at)) = self.leading_zeros.filter(|(d, _)| *d > 0) {
                     diagnostics.push(
                         Diagnostic::error(
@@ -219,6 +224,8 @@ pub fn apply(
         ("Width", Constant::Number(n)) => {
             spec.width = Some((small(*n, 40).ok_or_else(|| bad("a whole number from 0 to 40"))?, value.span))
         }
+        ("Padding", Constant::Text(t)) if t.eq_ignore_ascii_case("zero") => spec.zero_fill = true,
+        ("Padding", Constant::Text(t)) if t.eq_ignore_ascii_case("blank") => spec.zero_fill = false,
         ("Justify", Constant::Text(t)) if t.eq_ignore_ascii_case("left") => spec.format.justify = Justify::Left,
         ("Justify", Constant::Text(t)) if t.eq_ignore_ascii_case("right") => spec.format.justify = Justify::Right,
         ("DecimalMark", Constant::Text(t)) if t == "." || t == "," => {
@@ -253,6 +260,7 @@ fn expected_for(property: &str) -> &'static str {
         "Sign" => "\"+\" (always) or \"-\" (negative only)",
         "Width" => "a whole number from 0 to 40",
         "Justify" => "\"Left\" or \"Right\"",
+        "Padding" => "\"Blank\" or \"Zero\"",
         "DecimalMark" => "\".\" or \",\"",
         "Multiplier" | "Scale" => "a number other than 0",
         "Start" => "a number, 0 or more",

@@ -99,7 +99,7 @@ fn variables(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let used = uses(cx);
     for (i, v) in cx.post.variables.iter().enumerate() {
         let Some(span) = v.span else { continue };
-        if used.vars.contains(&i) || v.name.starts_with("__postc") || is_template_var(cx, v) {
+        if used.vars.contains(&i) || v.name.starts_with("__postc") || is_template_var(v) {
             continue;
         }
         out.push(
@@ -167,7 +167,10 @@ fn subs(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         // Functions the frontend makes (composites list readers) have no place in the post.
         let Some(span) = f.span else { continue };
         let offered = cx.post.info.subs.iter().any(|s| s.name.eq_ignore_ascii_case(&f.name));
-        if used.functions.contains(&i) || offered {
+        // Under sections (postc's extension) a Sub named after a section is its handler.
+        let section = postc_ir::post::Section::from_name(&f.name)
+            .is_some_and(|s| cx.post.handlers.iter().any(|h| h.key == postc_ir::HandlerKey::Section(s)));
+        if used.functions.contains(&i) || offered || section {
             continue;
         }
         out.push(
@@ -183,10 +186,10 @@ fn subs(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
 /// every variable whether the post prints it or not, so an unused one is
 /// the template, not a mistake. A `VAR` under a name of the post's own
 /// that nothing prints is.
-fn is_template_var(cx: &Context, v: &postc_ir::Variable) -> bool {
+fn is_template_var(v: &postc_ir::Variable) -> bool {
     let postc_ir::ValueSource::Quantity(q) = v.source else { return false };
-    cx.post.info.dialect == Dialect::Vectric
-        && postc_front_vectric::names::var_name_of_label(q.label()).is_some_and(|n| n.eq_ignore_ascii_case(&v.name))
+    // Also in a section post converted from Vectric (CIMCO, docs/cimco.md).
+    postc_front_vectric::names::var_name_of_label(q.label()).is_some_and(|n| n.eq_ignore_ascii_case(&v.name))
 }
 
 /// Names CNC-Calc calls, and postc's own.

@@ -51,7 +51,16 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
                 (from..=len.saturating_sub(needle.len()))
                     .find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
             } else {
-                (0..=len.saturating_sub(needle.len()))
+                // The search starts at `fromIndex` (JavaScript: NaN or
+                // missing is +Infinity; below 0 is 0) and runs backwards.
+                let from = match a(1) {
+                    v if v.is_unit() => usize::MAX,
+                    v => {
+                        let n = to_number(&v);
+                        if n.is_nan() { usize::MAX } else { n.max(0.0).min(usize::MAX as f64) as usize }
+                    }
+                };
+                (0..=len.saturating_sub(needle.len()).min(from))
                     .rev()
                     .find(|&i| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..])
             };

@@ -168,7 +168,14 @@ fn set(o: &Dynamic, k: &Dynamic, v: Dynamic) -> R {
 
 fn keys(o: &Dynamic) -> Array {
     if let Some(obj) = o.clone().try_cast::<JsObj>() {
-        return obj.0.borrow().props.iter().map(|(k, _)| Dynamic::from(k.clone())).collect();
+        // JavaScript's order: keys that are array indices ascending, then
+        // the other keys in the order they were added.
+        let props = &obj.0.borrow().props;
+        let mut indices: Vec<(u32, &str)> =
+            props.iter().filter_map(|(k, _)| array_index(k).map(|i| (i, k.as_str()))).collect();
+        indices.sort_by_key(|(i, _)| *i);
+        let others = props.iter().map(|(k, _)| k.as_str()).filter(|k| array_index(k).is_none());
+        return indices.into_iter().map(|(_, k)| k).chain(others).map(|k| Dynamic::from(k.to_string())).collect();
     }
     let n = if let Some(a) = o.clone().try_cast::<JsArr>() {
         a.0.borrow().len()
@@ -178,6 +185,41 @@ fn keys(o: &Dynamic) -> Array {
         0
     };
     (0..n).map(|i| text(i.to_string())).collect()
+}
+
+/// `n.toString(radix)`: whole numbers in any radix from 2 to 36, as
+/// JavaScript writes them; a fraction only in radix 10.
+fn radix_string(n: f64, radix: f64) -> Result<String, Box<rhai::EvalAltResult>> {
+    if !(2.0..=36.0).contains(&radix) || radix.fract() != 0.0 {
+        return Err(fail("RangeError: toString() radix must be between 2 and 36"));
+    }
+    let radix = radix as u32;
+    if radix == 10 || !n.is_finite() {
+        return Ok(js::number_to_string(n));
+    }
+    if n.fract() != 0.0 || n.abs() >= 9_007_199_254_740_992.0 {
+        return Err(fail("postc writes a number in another radix only when it is a whole number below 2^53"));
+    }
+    let mut m = n.abs() as u64;
+    let mut digits = Vec::new();
+    loop {
+        digits.push(std::char::from_digit((m % u64::from(radix)) as u32, radix).unwrap_or('0'));
+        m /= u64::from(radix);
+        if m == 0 {
+            break;
+        }
+    }
+    if n < 0.0 {
+        digits.push('-');
+    }
+    Ok(digits.iter().rev().collect())
+}
+
+/// A key that is an array index (`"0"`, `"10"`, not `"01"` or `"-1"`):
+/// the canonical text of a whole number below 2^32 - 1.
+fn array_index(k: &str) -> Option<u32> {
+    let n: u32 = k.parse().ok()?;
+    (n != u32::MAX && n.to_string() == k).then_some(n)
 }
 
 /// Calls a function value with `this`.
@@ -233,7 +275,10 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         let n = to_number(&o);
         return match name {
             "toFixed" => Ok(text(js::to_fixed(n, to_number(&arg(&args, 0)).max(0.0)))),
-            "toString" => Ok(text(js::number_to_string(n))),
+            "toString" => match arg(&args, 0) {
+                r if r.is_unit() => Ok(text(js::number_to_string(n))),
+                r => radix_string(n, to_number(&r)).map(text),
+            },
             _ => Err(fail(format!("TypeError: a number has no method '{name}'"))),
         };
     }

@@ -57,7 +57,12 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     post.info.file_extension = "nc".into();
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
-        lower(&program, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+        // A section post (postc's extension for converted Vectric posts) has a lowering of its own.
+        if crate::sections::is_section_post(&program) {
+            crate::sections::lower(&program, &mut post, &mut diagnostics);
+        } else {
+            lower(&program, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+        }
     }
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     (post, diagnostics)

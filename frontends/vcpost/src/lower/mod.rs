@@ -20,13 +20,14 @@
 mod control;
 mod expr;
 mod names;
+pub mod options;
 mod stmt;
 mod template;
 mod walk;
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::post::{FormatId, FunctionId, GlobalId, LocalId, VarId};
+use postc_ir::post::{FormatId, FunctionId, GlobalId, LocalId, Section, VarId};
 use postc_ir::{
     Body, Diagnostic, Dialect, Dispatch, Expr as IrExpr, Function, Global, Handler, HandlerKey, Post, Quantity,
     Stmt as IrStmt, ValueSource, Variable,
@@ -92,6 +93,10 @@ pub(crate) struct Lowerer<'a> {
     scope: Option<Scope>,
     loops: Vec<LoopFrame>,
     hidden: u32,
+    /// The post names Subs after Vectric sections (`Sub FEED_MOVE`): it is
+    /// driven by the kind of each move, and registers named after Vectric
+    /// labels print those values (postc's extension, docs/vcpost.md).
+    sections: bool,
 }
 
 /// Lowers a parsed post. `legacy_encoding` says the file was Windows-1252,
@@ -114,9 +119,10 @@ pub fn lower(program: &Program, legacy_encoding: bool) -> (Post, Vec<Diagnostic>
         scope: None,
         loops: Vec::new(),
         hidden: 0,
+        sections: is_section_post(program),
     };
     l.post.info.dialect = Dialect::VcPost;
-    l.post.info.dispatch = Dispatch::AptWords;
+    l.post.info.dispatch = if l.sections { Dispatch::Sections } else { Dispatch::AptWords };
     if legacy_encoding {
         l.post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
     }
@@ -137,6 +143,24 @@ pub fn lower(program: &Program, legacy_encoding: bool) -> (Post, Vec<Diagnostic>
     }
     l.finish();
     (l.post, l.diagnostics)
+}
+
+/// A post driven by sections: a Sub is named after a section, and none
+/// is an APT word or composites routine handler or has a keyword comment
+/// (those posts are driven by records and calls; their `Sub INSERT` or
+/// `Sub Comment` is not a section).
+fn is_section_post(program: &Program) -> bool {
+    let procs = || {
+        program.items.iter().filter_map(|i| match i {
+            Item::Proc(p) => Some(p),
+            Item::Stmt(_) => None,
+        })
+    };
+    procs().any(|p| Section::from_name(&p.name.text).is_some())
+        && !procs().any(|p| {
+            crate::routines::handler_word(&p.name.text).is_some()
+                || p.keyword_comments.iter().any(|k| matches!(k.kind, CommentKind::Keyword(_)))
+        })
 }
 
 impl Lowerer<'_> {
@@ -183,13 +207,22 @@ impl Lowerer<'_> {
     }
 
     fn finish(&mut self) {
+        if self.post.options.tape_splitting.as_ref().is_some_and(|t| t.max_lines == 0) {
+            self.diagnostics.push(
+                Diagnostic::error(codes::BAD_PROPERTY_VALUE, "tape splitting is set up without `Postc.TapeSplitLines`")
+                    .help("say how many lines each part holds: `Postc.TapeSplitLines = 5000`"),
+            );
+        }
         let mut variables = Vec::with_capacity(self.specs.len());
         for (index, spec) in self.specs.iter().enumerate() {
             let (prefix, format, modality) = spec.finish(&mut self.diagnostics);
             let format_id = FormatId::new(self.post.formats.len() as u16);
             self.post.formats.push(format);
+            let label = if self.sections { Quantity::from_label(&spec.name) } else { None };
             let source = if VarId::from_usize(index) == self.sequence {
                 ValueSource::Quantity(Quantity::BlockNumber)
+            } else if let Some(q) = label {
+                ValueSource::Quantity(q)
             } else {
                 ValueSource::Assigned
             };
@@ -210,6 +243,10 @@ impl Lowerer<'_> {
     }
 
     fn handlers(&mut self) {
+        if self.sections {
+            self.section_handlers();
+            return;
+        }
         let mut seen = HashSet::new();
         let mut index = 0;
         for item in &self.program.items {
@@ -242,6 +279,38 @@ impl Lowerer<'_> {
                 body: vec![IrStmt::Eval(IrExpr::Call(id, Vec::new()))],
                 span: Some(p.header),
             });
+        }
+    }
+
+    /// The handlers of a post driven by sections: each `Sub` named after a
+    /// section. A Sub of output lines only is those lines (as a Vectric
+    /// section is); any other calls the Sub.
+    fn section_handlers(&mut self) {
+        let mut index = 0;
+        for item in &self.program.items {
+            let Item::Proc(p) = item else { continue };
+            let id = self.proc_ids[index];
+            index += 1;
+            let Some(section) = Section::from_name(&p.name.text) else { continue };
+            if self.post.handlers.iter().any(|h| h.key == HandlerKey::Section(section)) {
+                continue;
+            }
+            if !p.params.is_empty() {
+                self.diagnostics.push(
+                    Diagnostic::error(
+                        codes::HANDLER_WITH_PARAMS,
+                        format!("Sub `{}` runs for its section and cannot take parameters", p.name.text),
+                    )
+                    .at(p.header, "remove the parameter list")
+                    .help("the values it prints arrive as registers named after the labels (X, Y, Z, F, ...)"),
+                );
+                continue;
+            }
+            let body = match self.post.functions.get(id.index()).map(|f| &f.body) {
+                Some(Body::Native(b)) if b.iter().all(|s| matches!(s, IrStmt::Line { .. })) => b.clone(),
+                _ => vec![IrStmt::Eval(IrExpr::Call(id, Vec::new()))],
+            };
+            self.post.handlers.push(Handler { key: HandlerKey::Section(section), body, span: Some(p.header) });
         }
     }
 

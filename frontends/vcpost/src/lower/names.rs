@@ -73,7 +73,7 @@ fn scan<'a>(stmts: &'a [Stmt], locals: &[String], found: &mut Vec<Found<'a>>) {
     let is_local = |n: &Name| locals.contains(&n.key());
     each_stmt(stmts, &mut |s| {
         match &s.kind {
-            StmtKind::SetProperty { register, .. } if !is_local(register) => {
+            StmtKind::SetProperty { register, .. } if !is_local(register) && !register.is(super::options::OPTIONS) => {
                 found.push(Found::Register(&register.text, register.span))
             }
             StmtKind::Out(Some(e)) => {

@@ -159,6 +159,10 @@ impl Lowerer<'_> {
             );
             return;
         }
+        if register.is(super::options::OPTIONS) {
+            self.postc_option(property, value);
+            return;
+        }
         let Some(var) = self.register_var(&register.text) else { return };
         let Some(spec) = self.specs.get_mut(var.index()) else { return };
         if let Err(d) = crate::registers::apply(spec, property, value, &mut self.post.options.block_numbers) {

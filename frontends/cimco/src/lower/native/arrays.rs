@@ -6,10 +6,12 @@
 //! nothing, the separator between elements) and a second slot counts the
 //! elements. `var words = [a, b]` sets both, `words.push(c, d)` appends the
 //! separator (when the array is not empty) and each element and counts
-//! them, `words.length` is the count and `words.join(sep)` the text. A local
+//! them, `words.unshift(a)` puts the element and a separator in front,
+//! `words.length` is the count and `words.join(sep)` the text. A local
 //! qualifies when it is declared at the top of its function with an array
-//! literal before any other use, every use is one of these (a `push` as a
-//! statement of its own), and every `join` has the same constant separator.
+//! literal before any other use, every use is one of these (a `push` or
+//! `unshift` as a statement of its own), and every `join` has the same
+//! constant separator.
 
 use postc_ir::{BinaryOp as IrBin, Expr as Ir, LocalId, Place, Stmt as IrStmt};
 
@@ -90,19 +92,41 @@ impl Native<'_, '_> {
                 let ExprKind::Member { object, property } = &callee.kind else { return Ok(None) };
                 let ExprKind::Ident(name) = &object.kind else { return Ok(None) };
                 let Some(slot) = self.array_slot(name) else { return Ok(None) };
-                if property.name != "push" {
-                    return Ok(None);
-                }
                 let (count, sep) = (self.arrays[&slot].count, self.arrays[&slot].sep.clone());
                 let w = self.local(slot);
+                let more = || {
+                    let more = Ir::Binary(IrBin::Gt, Box::new(Ir::Local(count)), Box::new(Ir::Number(0.0)));
+                    Ir::Choose(Box::new(more), Box::new(Ir::Text(sep.clone())), Box::new(Ir::Text("".into())))
+                };
+                match property.name.as_str() {
+                    "push" => {}
+                    "unshift" if !args.is_empty() => {
+                        // The new elements, joined, go in front.
+                        let mut front = Ir::Text(String::new());
+                        for (i, a) in args.iter().enumerate() {
+                            if i > 0 && !sep.is_empty() {
+                                front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(Ir::Text(sep.clone())));
+                            }
+                            front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(self.expr(a)?));
+                        }
+                        if !sep.is_empty() {
+                            front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(more()));
+                        }
+                        let text = Ir::Binary(IrBin::Add, Box::new(front), Box::new(Ir::Local(w)));
+                        out.push(IrStmt::Assign(Place::Local(w), text));
+                        out.push(IrStmt::Assign(
+                            Place::Local(count),
+                            Ir::Binary(IrBin::Add, Box::new(Ir::Local(count)), Box::new(Ir::Number(args.len() as f64))),
+                        ));
+                        return Ok(Some(IrStmt::If { branches: vec![(Ir::Bool(true), out)], otherwise: vec![] }));
+                    }
+                    _ => return Ok(None),
+                }
                 for a in args {
                     let v = self.expr(a)?;
                     let mut text = Ir::Local(w);
                     if !sep.is_empty() {
-                        let more = Ir::Binary(IrBin::Gt, Box::new(Ir::Local(count)), Box::new(Ir::Number(0.0)));
-                        let sep =
-                            Ir::Choose(Box::new(more), Box::new(Ir::Text(sep.clone())), Box::new(Ir::Text("".into())));
-                        text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(sep));
+                        text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(more()));
                     }
                     out.push(IrStmt::Assign(Place::Local(w), Ir::Binary(IrBin::Add, Box::new(text), Box::new(v))));
                     out.push(IrStmt::Assign(
@@ -181,7 +205,9 @@ impl<'a> Visit<'a> for Uses<'_> {
                     false
                 }
                 ExprKind::Call { callee, args } => match &callee.kind {
-                    ExprKind::Member { object, property } if property.name == "push" && self.is_name(object) => {
+                    ExprKind::Member { object, property }
+                        if (property.name == "push" || property.name == "unshift") && self.is_name(object) =>
+                    {
                         self.mentioned = true;
                         args.iter().for_each(|a| walk_expr(a, self));
                         false

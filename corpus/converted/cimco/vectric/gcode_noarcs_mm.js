@@ -1,0 +1,83 @@
+// Converted by postc from gcode_noarcs_mm.pp (Vectric).
+// A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
+
+var postcOptions = {
+    name: "G-Code no arcs, Fanuc style (mm) (*.nc)",
+    fileExtension: "nc",
+    units: "MM",
+    lineEnding: "\r\n",
+    substitute: [["(", "["], [")", "]"]],
+    spindleSpeedRange: [1, 15, 4500, 18000],
+    blockNumbers: [10, 10, 990],
+};
+
+var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
+var FEED_RATE = createVariable({prefix: "F", label: "F"}, createFormat({decimals: 0, forceDecimal: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
+var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "T", label: "TP"}, createFormat({decimals: 0}));
+var TOOL_DIAMETER = createVariable({prefix: "", label: "TDIA"}, createFormat({decimals: 2}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({}));
+var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({}));
+var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 0, scale: 1000}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
+var TOOL_NOTES = createVariable({prefix: "", label: "TOOL_NOTES"}, createFormat({decimals: 0}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+
+function HEADER() {
+    return "%\n" +
+        "O0100 (" + TOOLPATH_FILENAME + ")\n" +
+        LINE_NUMBER + " G21 G90 G17 G40 G80\n" +
+        LINE_NUMBER + " (TOOL T" + TOOL_NUMBER + " DIA " + TOOL_DIAMETER + " " + TOOL_NAME + " - " + TOOL_NOTES + ")\n" +
+        LINE_NUMBER + " G91 G28 Z0\n" +
+        LINE_NUMBER + " G90 T" + TOOL_NUMBER + " M6\n" +
+        LINE_NUMBER + " G43 H" + TOOL_NUMBER + "\n" +
+        LINE_NUMBER + " G0" + Z_HOME_POSITION + "\n";
+}
+
+function FOOTER() {
+    return LINE_NUMBER + " M5\n" +
+        LINE_NUMBER + " G91 G28 Z0\n" +
+        LINE_NUMBER + " G90 G0" + X_HOME_POSITION + Y_HOME_POSITION + "\n" +
+        LINE_NUMBER + " M30\n" +
+        "%\n";
+}
+
+function SPINDLE_ON() {
+    return LINE_NUMBER + " " + SPINDLE_SPEED + " M3\n";
+}
+
+function TOOLCHANGE() {
+    return LINE_NUMBER + " M5\n" +
+        LINE_NUMBER + " (TOOL T" + TOOL_NUMBER + " DIA " + TOOL_DIAMETER + " " + TOOL_NAME + " - " + TOOL_NOTES + " AFTER " + PREVIOUS_TOOL_NUMBER + ")\n" +
+        LINE_NUMBER + " G91 G28 Z0\n" +
+        LINE_NUMBER + " G90 T" + TOOL_NUMBER + " M6\n" +
+        LINE_NUMBER + " G43 H" + TOOL_NUMBER + "\n" +
+        LINE_NUMBER + " G0" + Z_HOME_POSITION + "\n";
+}
+
+function NEW_SEGMENT() {
+    return LINE_NUMBER + " (" + TOOLPATH_NAME + ")\n";
+}
+
+function RAPID_MOVE() {
+    return LINE_NUMBER + " G0" + X_POSITION + Y_POSITION + Z_POSITION + "\n";
+}
+
+function FEED_MOVE() {
+    return LINE_NUMBER + " G1" + X_POSITION + Y_POSITION + Z_POSITION + "\n";
+}
+
+function FEED_RATE_CHANGE() {
+    return LINE_NUMBER + " " + FEED_RATE + "\n";
+}
+
+function DWELL_MOVE() {
+    return LINE_NUMBER + " G4 " + DWELL_TIME + "\n";
+}
+
