@@ -58,8 +58,9 @@ fn node_prints_what_postc_prints() {
 
 /// JavaScript corners Node.js and postc once disagreed on (found while
 /// writing the field-style posts): `lastIndexOf` from an index, the
-/// order of `for ... in` over keys that are array indices, and whole
-/// numbers in another radix.
+/// order of `for ... in` over keys that are array indices, whole
+/// numbers in another radix, and chains of `+` that add numbers until a
+/// text joins them (built in one buffer by the runtime).
 #[test]
 fn javascript_corners_print_as_node_prints() {
     let Some(_) = node() else {
@@ -78,7 +79,9 @@ function onOpen(isClipboard) {
         t.lastIndexOf("ab", 100) + " " + t.lastIndexOf("zz", 3) + ")\n(" + keysOf(table) + ")\n(" +
         (255).toString(16) + " " + (-10).toString(2) + " " + (35).toString(36) + " " + (12).toString(10) + ")\n";
 }
+function chain(p) { return p + 1 + "a" + p + 2 + "|" + (p + 1) + (p & 1) + "b"; }
 function onLinear(x, y, z, movement) { return ""; }
+function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n"; }
 "#,
     )
     .expect("write the post");

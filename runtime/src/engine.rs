@@ -73,6 +73,9 @@ pub struct Engine<'p> {
     /// capacity: a call or built-in takes one and gives it back, so that
     /// calls cost no allocation per event once the run is warm.
     pub(crate) spare_frames: Vec<Vec<Value>>,
+    /// The text of a chain of `+` being built (`text + " " + word`), kept
+    /// with its capacity: a chain allocates only its result.
+    pub(crate) chain_text: String,
     /// Counts the clearings of modal memory ([`Engine::clear_modal`]).
     pub(crate) modal_epoch: u64,
     /// Provenance of each block, when the run is traced.
@@ -117,6 +120,7 @@ impl<'p> Engine<'p> {
             script_host: None,
             handler_frame: Vec::new(),
             spare_frames: Vec::new(),
+            chain_text: String::new(),
             modal_epoch: 0,
             trace: None,
             profile: None,

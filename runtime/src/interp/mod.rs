@@ -323,6 +323,25 @@ impl Engine<'_> {
                 self.check_text(&v)?;
                 v
             }
+            // A chain of `+` (`text + " " + word`): built in one buffer, so
+            // only the result is allocated.
+            Expr::Binary(BinaryOp::Add | BinaryOp::Concat, l, _)
+                if matches!(**l, Expr::Binary(BinaryOp::Add | BinaryOp::Concat, ..)) =>
+            {
+                let mut buf = std::mem::take(&mut self.chain_text);
+                buf.clear();
+                let v = match self.chain(e, frame, &mut buf) {
+                    Ok(Some(v)) => v,
+                    Ok(None) => Value::Text(std::rc::Rc::from(buf.as_str())),
+                    Err(err) => {
+                        self.chain_text = buf;
+                        return Err(err);
+                    }
+                };
+                self.chain_text = buf;
+                self.check_text(&v)?;
+                v
+            }
             Expr::Binary(op, a, b) => {
                 let a = self.eval(a, frame)?;
                 let b = self.eval(b, frame)?;
@@ -513,6 +532,35 @@ impl Engine<'_> {
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut self.out.buf);
         state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+    }
+}
+
+impl Engine<'_> {
+    /// Evaluates a left-nested chain of `+`/`&` as [`binary`] would, one
+    /// operator at a time from the left: `None` when the value so far is
+    /// text, which is then in `buf`; the value itself while it is not
+    /// (numbers add until a text joins them).
+    fn chain(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut String) -> Result<Option<Value>> {
+        let Expr::Binary(op @ (BinaryOp::Add | BinaryOp::Concat), l, r) = e else {
+            return Ok(Some(self.eval(e, frame)?));
+        };
+        let left = self.chain(l, frame, buf)?;
+        let right = self.eval(r, frame)?;
+        Ok(match left {
+            None => {
+                right.append_to(buf);
+                None
+            }
+            Some(left) => {
+                if *op == BinaryOp::Concat || matches!(left, Value::Text(_)) || matches!(right, Value::Text(_)) {
+                    left.append_to(buf);
+                    right.append_to(buf);
+                    None
+                } else {
+                    Some(binary(*op, &left, &right))
+                }
+            }
+        })
     }
 }
 
