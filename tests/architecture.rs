@@ -110,6 +110,19 @@ fn the_ir_opens_no_file_and_renders_nothing() {
     );
 }
 
+/// The IR says what a post means, not how the runtime runs it fast: the
+/// output-buffer operations of the fast path (`Emit`, `Mark`, `MoveBack`,
+/// `Truncate`, `Blocks`, `Written`) are the runtime's (`runtime/src/exec.rs`,
+/// made by `runtime/src/prepare/`), and no frontend makes them.
+#[test]
+fn the_ir_holds_no_execution_strategy() {
+    let needles = ["Emit(", "Mark(", "MoveBack", "Truncate(", "Blocks(", "Written(", "__postc_text"];
+    for folder in ["ir/src", "frontends/cimco/src", "frontends/vcpost/src", "frontends/vectric/src", "backends/src"] {
+        assert_eq!(uses(folder, &needles), Vec::<String>::new(), "{folder}");
+    }
+    assert!(!uses("runtime/src", &needles).is_empty(), "the runtime's fast path is gone: update this test");
+}
+
 /// The runtime writes through sinks and takes "now" as an input: it opens
 /// no file, reads no clock and writes no terminal.
 #[test]

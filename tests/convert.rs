@@ -419,6 +419,7 @@ fn mutated_ron_posts_never_panic() {
     let posts = [
         corpus().join("converted/ron/vectric/gcode_mm.ron"),
         corpus().join("converted/ron/cimco/fanuc_mill.ron"),
+        corpus().join("converted/ron/cimco/haas_field.ron"),
         corpus().join("converted/ron/vcpost/fanuc_mill.ron"),
     ];
     let toolpath = corpus().join("toolpaths/seed_job.ron");

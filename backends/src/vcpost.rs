@@ -14,7 +14,7 @@
 //!
 //! - a handler that is not an APT word's or a section's Sub is `CV001`;
 //! - code VcPost cannot say (scripts, JavaScript operators and
-//!   conversions, output-buffer statements, `Continue`, null) is `CV002`;
+//!   conversions, `Continue`, null) is `CV002`;
 //! - a register format the register properties cannot set is `CV003`;
 //! - an output option no VcPost statement sets (a lathe, a chord
 //!   tolerance, modal memory kept across toolpaths) is `CV004`;
@@ -914,9 +914,6 @@ fn other_name(s: &Stmt) -> &'static str {
         Stmt::Write(_) => "a statement that writes computed text as blocks",
         Stmt::Continue => "`continue`",
         Stmt::Script(_) => "a script call",
-        Stmt::Emit(_) | Stmt::Mark(_) | Stmt::MoveBack { .. } | Stmt::Truncate(_) | Stmt::Blocks(_) => {
-            "output-buffer statements (CIMCO's fast path)"
-        }
         Stmt::Forget(_) => "making a variable forget what it printed",
         Stmt::Return(_) => "a `return` with a value in a Sub",
         Stmt::Eval(_) => "a value computed for nothing",
@@ -928,7 +925,6 @@ fn expr_name(e: &Expr) -> &'static str {
     match e {
         Expr::Null => "null",
         Expr::Number(_) => "a number that is not finite",
-        Expr::Written(_) => "output-buffer statements (CIMCO's fast path)",
         Expr::Quantity(_) => "a value the runtime gives by name (a Vectric label)",
         Expr::FormatVar { .. } | Expr::Format { .. } => "formatting a value through a CIMCO variable or format",
         _ => "an expression",

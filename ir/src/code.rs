@@ -6,6 +6,12 @@
 //! language: assignments, conditionals, loops, calls and returns over
 //! [`Value`]s that are numbers, text or booleans. What a dialect cannot say
 //! here runs as a [`crate::post::Script`].
+//!
+//! The IR says what a post means, not how it runs fast: a CIMCO handler is
+//! `Write(onLinear(x, y, z, movement))` and `onLinear` returns its text.
+//! The runtime prepares its own fast form (postc-runtime's `prepare`:
+//! functions' text built straight in the output); nothing here is an
+//! execution strategy.
 
 use serde::{Deserialize, Serialize};
 
@@ -46,22 +52,6 @@ pub enum Stmt {
     /// Run a script call (a Vectric `<!>` Lua call, which postc keeps but
     /// does not run).
     Script(ScriptId),
-    /// Append the text of the pieces to the output without ending a
-    /// block. CIMCO handlers build the text a function returns straight in
-    /// the output (see [`Stmt::Blocks`]); nothing is allocated.
-    Emit(Vec<Piece>),
-    /// Store the output's current length in a local: a mark for
-    /// [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`] and
-    /// [`Expr::Written`].
-    Mark(LocalId),
-    /// Move the text written since mark `from` back to mark `to`, before
-    /// the text written between the two marks (`text = "N10 " + text`).
-    MoveBack { to: LocalId, from: LocalId },
-    /// Drop the text written since a mark.
-    Truncate(LocalId),
-    /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
-    /// does with a value: each line that is not empty becomes a block.
-    Blocks(LocalId),
     /// Make a variable forget what it printed last, so that the next value
     /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
     Forget(VarId),
@@ -104,8 +94,6 @@ pub enum Expr {
     Bool(bool),
     /// No value (JavaScript `null` and `undefined`).
     Null,
-    /// Whether any text was written since a mark ([`Stmt::Mark`]).
-    Written(LocalId),
     /// A value the runtime knows (position, feed, tool name, ...), in the
     /// post's units.
     Quantity(Quantity),

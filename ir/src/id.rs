@@ -79,8 +79,8 @@ index_types! {
     ScriptId;
     /// Index of a [`crate::Global`] in [`crate::Post::globals`].
     GlobalId;
-    /// A slot of the running function's frame: a parameter, a local, or a
-    /// mark of the output ([`crate::Stmt::Mark`]). A function's frame has
+    /// A slot of the running function's frame: a parameter or a local. A
+    /// function's frame has
     /// [`crate::Function::slots`] slots, a handler body's starts empty; a
     /// frame grows to the highest slot stored, and a slot never stored
     /// reads as null, so no local index is out of range.

@@ -45,7 +45,7 @@ pub fn walk_post<V: Visit + ?Sized>(v: &mut V, post: &Post) {
 
 pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
     match stmt {
-        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => pieces.iter().for_each(|p| v.visit_piece(p)),
+        Stmt::Line { pieces, .. } => pieces.iter().for_each(|p| v.visit_piece(p)),
         Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => v.visit_expr(e),
         Stmt::If { branches, otherwise } => {
             for (cond, body) in branches {
@@ -58,16 +58,7 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
             v.visit_expr(cond);
             body.iter().for_each(|s| v.visit_stmt(s));
         }
-        Stmt::Break
-        | Stmt::Continue
-        | Stmt::Return(None)
-        | Stmt::Script(_)
-        | Stmt::Mark(_)
-        | Stmt::MoveBack { .. }
-        | Stmt::Truncate(_)
-        | Stmt::Blocks(_)
-        | Stmt::Forget(_)
-        | Stmt::Origin(_) => {}
+        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
 }
 
@@ -94,7 +85,6 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
         | Expr::Text(_)
         | Expr::Bool(_)
         | Expr::Null
-        | Expr::Written(_)
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)
@@ -136,7 +126,7 @@ pub fn walk_post_mut<V: VisitMut + ?Sized>(v: &mut V, post: &mut Post) {
 
 pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
     match stmt {
-        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => {
+        Stmt::Line { pieces, .. } => {
             for p in pieces {
                 if let Piece::Expr(e) = p {
                     v.visit_expr_mut(e);
@@ -155,16 +145,7 @@ pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
             v.visit_expr_mut(cond);
             body.iter_mut().for_each(|s| v.visit_stmt_mut(s));
         }
-        Stmt::Break
-        | Stmt::Continue
-        | Stmt::Return(None)
-        | Stmt::Script(_)
-        | Stmt::Mark(_)
-        | Stmt::MoveBack { .. }
-        | Stmt::Truncate(_)
-        | Stmt::Blocks(_)
-        | Stmt::Forget(_)
-        | Stmt::Origin(_) => {}
+        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
 }
 
@@ -185,7 +166,6 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
         | Expr::Text(_)
         | Expr::Bool(_)
         | Expr::Null
-        | Expr::Written(_)
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)

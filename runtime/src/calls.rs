@@ -51,7 +51,8 @@ pub fn run_calls<S: CallSource + ?Sized>(
         machine.file_dir = f.dir;
         machine.file_ext = f.extension;
     }
-    let mut eng = Engine::new(post, machine, out);
+    let code = crate::prepare::prepare(post);
+    let mut eng = Engine::new(post, &code, machine, out);
     let mut diagnostics = Vec::new();
     if let Err(d) = eng.init() {
         diagnostics.push(*d);

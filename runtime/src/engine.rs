@@ -11,9 +11,11 @@
 
 use postc_ir::post::{Substitution, WrappedAxis};
 use postc_ir::{
-    Diagnostic, FormatId, HandlerKey, Modality, Piece, Post, Quantity, Section, Span, Stmt, ValueSource, VarId,
-    Variable,
+    Diagnostic, FormatId, HandlerKey, Modality, Piece as IrPiece, Post, Quantity, Section, Span, Stmt as IrStmt,
+    ValueSource, VarId, Variable,
 };
+
+use crate::exec::{Code, Expr, Piece, Stmt};
 
 use crate::machine::MachineState;
 use crate::number::{NumberWriter, Rounded};
@@ -44,6 +46,8 @@ pub(crate) struct BlockCounter {
 /// Runs a post's handlers.
 pub struct Engine<'p> {
     pub post: &'p Post,
+    /// The post's code as the runtime runs it ([`crate::prepare`]).
+    pub(crate) code: &'p Code,
     pub machine: MachineState,
     pub out: Output,
     pub(crate) writers: Vec<NumberWriter>,
@@ -90,7 +94,8 @@ pub struct Engine<'p> {
 }
 
 impl<'p> Engine<'p> {
-    pub fn new(post: &'p Post, machine: MachineState, out: Output) -> Engine<'p> {
+    /// An engine for `post`, whose code `code` is ([`crate::prepare::prepare`]).
+    pub fn new(post: &'p Post, code: &'p Code, machine: MachineState, out: Output) -> Engine<'p> {
         let writers = post.formats.iter().map(NumberWriter::new).collect();
         let mut sections = vec![None; Section::ALL.len()];
         for (i, h) in post.handlers.iter().enumerate() {
@@ -99,10 +104,15 @@ impl<'p> Engine<'p> {
             }
         }
         let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
-        let prepared =
-            post.handlers.iter().map(|h| std::rc::Rc::new(prepare(post, &h.body, is_move_section(&h.key)))).collect();
+        let prepared = post
+            .handlers
+            .iter()
+            .zip(&code.handlers)
+            .map(|(h, body)| std::rc::Rc::new(prepare_lines(post, body, is_move_section(&h.key))))
+            .collect();
         Engine {
             post,
+            code,
             machine,
             out,
             writers,
@@ -138,15 +148,15 @@ impl<'p> Engine<'p> {
     /// Runs the post's one-time code: global initial values, then `init`
     /// (VcPost statements outside any Sub, CIMCO top-level code).
     pub fn init(&mut self) -> Result<(), Box<Diagnostic>> {
-        let post = self.post;
+        let code = self.code;
         let mut frame = Vec::new();
-        self.globals = Vec::with_capacity(post.globals.len());
-        for g in &post.globals {
-            let v = self.eval(&g.initial, &mut frame)?;
+        self.globals = Vec::with_capacity(code.globals.len());
+        for initial in &code.globals {
+            let v = self.eval(initial, &mut frame)?;
             self.globals.push(v);
         }
         self.steps = 0;
-        self.exec(&post.init, &mut frame)?;
+        self.exec(&code.init, &mut frame)?;
         Ok(())
     }
 
@@ -202,8 +212,8 @@ impl<'p> Engine<'p> {
     pub fn section_prints(&self, section: Section, q: Quantity) -> bool {
         let Some(i) = self.sections[section as usize] else { return false };
         self.post.handlers[i as usize].body.iter().any(|s| match s {
-            Stmt::Line { pieces, .. } => pieces.iter().any(
-                |p| matches!(p, Piece::Var(v) if self.post.variables[v.index()].source == ValueSource::Quantity(q)),
+            IrStmt::Line { pieces, .. } => pieces.iter().any(
+                |p| matches!(p, IrPiece::Var(v) if self.post.variables[v.index()].source == ValueSource::Quantity(q)),
             ),
             _ => false,
         })
@@ -317,7 +327,7 @@ impl<'p> Engine<'p> {
         match piece {
             Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
             Piece::Var(id) => self.write_var(*id),
-            Piece::Expr(postc_ir::Expr::FormatVar { var, value }) => {
+            Piece::Expr(Expr::FormatVar { var, value }) => {
                 let mut frame = Vec::new();
                 let v = self.eval(value, &mut frame)?;
                 self.write_assigned(*var, v);
@@ -613,7 +623,7 @@ fn is_move_section(key: &HandlerKey) -> bool {
 /// X, Y and Z are read straight from the position; elsewhere (a HEADER
 /// runs before the first move) they go through [`MachineState::number`], which
 /// knows whether the position is known yet.
-pub(crate) fn prepare<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
+pub(crate) fn prepare_lines<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
             Stmt::Line { pieces, span } => Prepared::Line(

@@ -12,6 +12,10 @@
 //!   formatted variables straight into the output buffer) and keeps modal
 //!   memory, block numbers and warnings; `interp` runs the rest of the
 //!   statement language;
+//! - [`prepare`]: a post's IR made into the runtime's [`exec::Code`]:
+//!   constants folded, and the fast path that builds a function's text
+//!   straight in the output (the output-buffer operations are the
+//!   runtime's, not the IR's);
 //! - [`sections`]: which section prints each event (Vectric rules, CIMCO);
 //! - [`apt_words`]: events as APT records calling the handler of each
 //!   major word (VcPost posts, the `postp` controllers);
@@ -40,6 +44,7 @@ pub mod call_tables;
 pub mod calls;
 pub mod clock;
 pub mod engine;
+pub mod exec;
 pub mod geometry;
 mod interp;
 pub mod js;
@@ -47,6 +52,7 @@ pub mod lathe;
 pub mod machine;
 pub mod number;
 pub mod output;
+pub mod prepare;
 pub mod profile;
 pub mod script_host;
 pub mod sections;
@@ -123,7 +129,8 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_dir = f.dir;
         machine.file_ext = f.extension;
     }
-    let mut engine = Engine::new(post, machine, out);
+    let code = prepare::prepare(post);
+    let mut engine = Engine::new(post, &code, machine, out);
     engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
     engine.profile = options.profile.take();
     let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {

@@ -210,28 +210,3 @@ fn entry_points_that_read_arguments_stay_scripts() {
     assert!(!native(&post, "onLinear"));
     assert!(why(&post, "onLinear").contains("is an entry point postc calls"), "{}", why(&post, "onLinear"));
 }
-
-/// Expression functions (a chain of `if (c) return a;` and a last
-/// `return`, after at most one local read once where evaluation always
-/// reaches it) are inlined where a handler calls them with cheap
-/// arguments; others stay calls, and so do the calls in the functions.
-#[test]
-fn expression_functions_are_inlined_into_the_handlers() {
-    let js = r#"
-        function value() { var f = getFeedrate(1); return parseFloat(f.substring(1)); }
-        function guarded(m) { var f = getFeedrate(m); return m == 0 ? "" : f; }
-        function onLinear(x, y, z, m) { return (value() > 0 ? "p" : "n") + (guarded(m) == "" ? "r" : "f") + "\n"; }
-    "#;
-    let (post, _) = compile(js);
-    let call = |name: &str| -> String {
-        let i = post.functions.iter().position(|f| f.name == name).expect("the function");
-        let text = format!("{:?}", postc_ir::Expr::Call(postc_ir::FunctionId::new(i as u16), vec![]));
-        text.trim_end_matches("[])").to_string()
-    };
-    let feed = post.handlers.iter().find(|h| h.key == HandlerKey::Section(Section::FeedMove)).expect("FEED_MOVE");
-    let handler = format!("{:?}", feed.body);
-    assert!(!handler.contains(&call("value")), "value() is inlined: {handler}");
-    assert!(handler.contains(&call("guarded")), "guarded() reads its local under a choice: a call: {handler}");
-    let on_linear = format!("{:?}", post.functions.iter().find(|f| f.name == "onLinear").expect("onLinear").body);
-    assert!(on_linear.contains(&call("value")), "the function keeps its call: {on_linear}");
-}

@@ -7,16 +7,15 @@
 
 use std::rc::Rc;
 
-use postc_ir::{
-    BinaryOp, Body, Diagnostic, Expr, FunctionId, GlobalId, LocalId, Place, Quantity, Stmt, UnaryOp, ValueSource, VarId,
-};
+use postc_ir::{BinaryOp, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, UnaryOp, ValueSource, VarId};
 
-mod ops;
+pub(crate) mod ops;
 
-use ops::{binary, builtin, js_number, push_integer};
+use ops::{binary, builtin, push_integer, unary};
+
+use crate::exec::{Body, Expr, Piece, Stmt};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
-use crate::js;
 use crate::value::Value;
 
 /// How a block of statements ended.
@@ -161,16 +160,16 @@ impl Engine<'_> {
 
     /// Writes one block inside a function: its expression pieces read the
     /// function's locals (VcPost `Out "<N>" & Code`, with `Code` a `Dim`).
-    fn write_line_in(&mut self, pieces: &[postc_ir::Piece], frame: &mut Vec<Value>) -> Result<()> {
+    fn write_line_in(&mut self, pieces: &[Piece], frame: &mut Vec<Value>) -> Result<()> {
         for piece in pieces {
             match piece {
-                postc_ir::Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
-                postc_ir::Piece::Var(id) => self.write_var(*id),
-                postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
+                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                Piece::Var(id) => self.write_var(*id),
+                Piece::Expr(Expr::FormatVar { var, value }) => {
                     let v = self.eval(value, frame)?;
                     self.write_assigned(*var, v);
                 }
-                postc_ir::Piece::Expr(e) => {
+                Piece::Expr(e) => {
                     let v = self.eval(e, frame)?;
                     self.write_value_text(&v);
                 }
@@ -269,7 +268,7 @@ impl Engine<'_> {
     pub(crate) fn eval(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         Ok(match e {
             Expr::Number(n) => Value::Num(*n),
-            Expr::Text(s) => Value::text(s),
+            Expr::Text(t) => t.value().clone(),
             Expr::Bool(b) => Value::Bool(*b),
             Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
@@ -290,18 +289,7 @@ impl Engine<'_> {
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
-                match op {
-                    UnaryOp::Neg => Value::Num(-a.num()),
-                    UnaryOp::Not => Value::Bool(!a.truthy()),
-                    UnaryOp::Plus => Value::Num(js_number(&a)),
-                    UnaryOp::BitNot => Value::Num(f64::from(!js::to_int32(js_number(&a)))),
-                    UnaryOp::Typeof => Value::text(match a {
-                        Value::Num(_) => "number",
-                        Value::Text(_) => "string",
-                        Value::Bool(_) => "boolean",
-                        Value::Null => "undefined",
-                    }),
-                }
+                unary(*op, &a)
             }
             Expr::Binary(BinaryOp::And, a, b) => {
                 let a = self.eval(a, frame)?;
@@ -423,8 +411,8 @@ impl Engine<'_> {
 
     /// Calls a post function with arguments.
     pub fn call(&mut self, f: FunctionId, args: Vec<Value>) -> Result<Value> {
-        let post = self.post;
-        let Some(function) = post.functions.get(f.index()) else {
+        let (post, code) = (self.post, self.code);
+        let (Some(function), Some(runnable)) = (post.functions.get(f.index()), code.functions.get(f.index())) else {
             return Ok(Value::Null);
         };
         self.depth += 1;
@@ -443,10 +431,10 @@ impl Engine<'_> {
         if let Some(p) = self.profile.as_deref_mut() {
             p.enter(crate::profile::Frame::Function(f));
         }
-        let result = match &function.body {
+        let result = match &runnable.body {
             Body::Native(body) => {
                 let mut frame = args;
-                frame.resize((function.slots as usize).max(frame.len()), Value::Null);
+                frame.resize((runnable.slots as usize).max(frame.len()), Value::Null);
                 let result = match self.exec(body, &mut frame) {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) => Ok(Value::Null),
@@ -483,12 +471,12 @@ impl Engine<'_> {
     }
 
     /// Writes pieces into the output with the frame's locals in reach.
-    fn emit_pieces(&mut self, pieces: &[postc_ir::Piece], frame: &mut Vec<Value>) -> Result<()> {
+    fn emit_pieces(&mut self, pieces: &[Piece], frame: &mut Vec<Value>) -> Result<()> {
         for piece in pieces {
             match piece {
-                postc_ir::Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
-                postc_ir::Piece::Var(id) => self.write_var(*id),
-                postc_ir::Piece::Expr(Expr::FormatVar { var, value }) => {
+                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                Piece::Var(id) => self.write_var(*id),
+                Piece::Expr(Expr::FormatVar { var, value }) => {
                     let n = match &**value {
                         Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
                             match self.machine.number(*q) {
@@ -501,22 +489,27 @@ impl Engine<'_> {
                             }
                         }
                         Expr::Number(n) => *n,
-                        other => match self.eval(other, frame)? {
-                            Value::Num(n) => n,
-                            v => {
-                                self.write_assigned(*var, v);
-                                continue;
-                            }
+                        // `+x` of a number the runtime knows (CIMCO's
+                        // arguments): the number, NaN when there is none.
+                        other => match plus_quantity(other) {
+                            Some(q) => self.machine.number(q),
+                            None => match self.eval(other, frame)? {
+                                Value::Num(n) => n,
+                                v => {
+                                    self.write_assigned(*var, v);
+                                    continue;
+                                }
+                            },
                         },
                     };
                     self.write_number_var(*var, n);
                 }
-                postc_ir::Piece::Expr(Expr::Local(i)) if matches!(frame.get(i.index()), Some(Value::Text(_))) => {
+                Piece::Expr(Expr::Local(i)) if matches!(frame.get(i.index()), Some(Value::Text(_))) => {
                     if let Some(Value::Text(t)) = frame.get(i.index()) {
                         self.out.buf.extend_from_slice(t.as_bytes());
                     }
                 }
-                postc_ir::Piece::Expr(e) => match self.eval(e, frame)? {
+                Piece::Expr(e) => match self.eval(e, frame)? {
                     Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => push_integer(&mut self.out.buf, n as i64),
                     v => self.write_value_text(&v),
                 },
@@ -565,14 +558,26 @@ impl Engine<'_> {
 }
 
 /// A local, a global or a number: read in place by [`leaf`].
+/// The quantity of `+q`, a number the runtime knows read as a JavaScript
+/// number.
+fn plus_quantity(e: &Expr) -> Option<Quantity> {
+    match e {
+        Expr::Unary(UnaryOp::Plus, inner) => match **inner {
+            Expr::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => Some(q),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 fn is_leaf(e: &Expr) -> bool {
-    matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_))
+    matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_) | Expr::Text(_))
 }
 
 /// The value of a leaf expression, borrowed where it lives (`tmp` holds a
 /// number, or null for a slot that does not exist).
 #[inline(always)]
-fn leaf<'v>(e: &Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Value) -> &'v Value {
+fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Value) -> &'v Value {
     match e {
         Expr::Local(i) => match frame.get(i.index()) {
             Some(v) => v,
@@ -586,6 +591,7 @@ fn leaf<'v>(e: &Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Val
             *tmp = Value::Num(*n);
             tmp
         }
+        Expr::Text(t) => t.value(),
         _ => tmp,
     }
 }

@@ -5,12 +5,31 @@
 
 use std::rc::Rc;
 
-use postc_ir::{BinaryOp, Builtin};
+use postc_ir::{BinaryOp, Builtin, UnaryOp};
 
 use crate::js;
 use crate::value::Value;
 
-pub(super) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
+/// A unary operator applied to a value.
+#[inline]
+pub(crate) fn unary(op: UnaryOp, a: &Value) -> Value {
+    match op {
+        UnaryOp::Neg => Value::Num(-a.num()),
+        UnaryOp::Not => Value::Bool(!a.truthy()),
+        UnaryOp::Plus => Value::Num(js_number(a)),
+        UnaryOp::BitNot => Value::Num(f64::from(!js::to_int32(js_number(a)))),
+        UnaryOp::Typeof => Value::text(match a {
+            Value::Num(_) => "number",
+            Value::Text(_) => "string",
+            Value::Bool(_) => "boolean",
+            Value::Null => "undefined",
+        }),
+    }
+}
+
+/// A binary operator applied to two values. (The interpreter evaluates
+/// `And` and `Or` itself: they short-circuit and give an operand.)
+pub(crate) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
     use BinaryOp::*;
     match op {
         Add => match (a, b) {

@@ -1,12 +1,10 @@
-//! Clean-up passes over native IR: constant folding (so that settings
-//! known at compile time, `if (showSequenceNumbers)`, drop out), and
-//! interning of text literals into constant globals, so that reading one
-//! costs a reference count instead of an allocation.
+//! Constant folding over native IR, with JavaScript's meaning of each
+//! operator: settings known at compile time (`if (showSequenceNumbers)`)
+//! drop out of the post's functions.
 
-use postc_ir::{BinaryOp, Expr, Piece, Stmt, UnaryOp};
+use postc_ir::{BinaryOp, Expr, Stmt, UnaryOp};
 
 use super::consts::{self, Const};
-use super::layout::Layout;
 
 fn as_const(e: &Expr) -> Option<Const> {
     Some(match e {
@@ -129,18 +127,6 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                 out.push(Stmt::While { cond, body, span });
             }
             Stmt::Write(e) => out.push(Stmt::Write(expr(e))),
-            Stmt::Emit(pieces) => out.push(Stmt::Emit(
-                pieces
-                    .into_iter()
-                    .map(|p| match p {
-                        Piece::Expr(e) => match expr(e) {
-                            Expr::Text(t) => Piece::Text(t.into_bytes()),
-                            e => Piece::Expr(e),
-                        },
-                        other => other,
-                    })
-                    .collect(),
-            )),
             Stmt::Assign(p, e) => out.push(Stmt::Assign(p, expr(e))),
             Stmt::Eval(e) => out.push(Stmt::Eval(expr(e))),
             Stmt::Return(e) => {
@@ -161,51 +147,4 @@ fn leaves(body: &[Stmt]) -> bool {
         Stmt::If { branches, otherwise } => branches.iter().any(|(_, b)| leaves(b)) || leaves(otherwise),
         _ => false,
     })
-}
-
-/// Replaces text literals read as values by constant globals.
-pub fn intern_stmts(body: &mut [Stmt], layout: &mut Layout) {
-    for s in body {
-        match s {
-            Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => {
-                for p in pieces {
-                    if let Piece::Expr(e) = p {
-                        intern(e, layout);
-                    }
-                }
-            }
-            Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) => intern(e, layout),
-            Stmt::Return(Some(e)) => intern(e, layout),
-            Stmt::If { branches, otherwise } => {
-                for (c, b) in branches {
-                    intern(c, layout);
-                    intern_stmts(b, layout);
-                }
-                intern_stmts(otherwise, layout);
-            }
-            Stmt::While { cond, body, .. } => {
-                intern(cond, layout);
-                intern_stmts(body, layout);
-            }
-            _ => {}
-        }
-    }
-}
-
-fn intern(e: &mut Expr, layout: &mut Layout) {
-    match e {
-        Expr::Text(s) => *e = Expr::Global(layout.text_constant(s)),
-        Expr::Unary(_, a) | Expr::FormatVar { value: a, .. } | Expr::Format { value: a, .. } => intern(a, layout),
-        Expr::Binary(_, a, b) => {
-            intern(a, layout);
-            intern(b, layout);
-        }
-        Expr::Choose(c, a, b) => {
-            intern(c, layout);
-            intern(a, layout);
-            intern(b, layout);
-        }
-        Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(|a| intern(a, layout)),
-        _ => {}
-    }
 }

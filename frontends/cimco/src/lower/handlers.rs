@@ -19,8 +19,8 @@
 //! `NEW_SEGMENT` are occupied, so the runtime's fallbacks send every rapid
 //! through `RAPID_MOVE` (rapid retracts too), feed retracts and lead moves
 //! through `FEED_MOVE`, and a post without `onCircular` gets arcs as
-//! `onLinear` calls along the arc. Each handler body is one statement, so
-//! that its locals live in one frame.
+//! `onLinear` calls along the arc. A handler's locals (the parts of an
+//! arc under `useRadius`) live in one frame, as the IR says.
 
 use postc_ir::{
     BinaryOp, Builtin, Expr, FunctionId, GlobalId, Handler, HandlerKey, LocalId, Place, Quantity, Section, Stmt,
@@ -243,14 +243,3 @@ impl Entry<'_> {
         }
     }
 }
-
-/// A handler body as one statement, so that its locals share a frame.
-pub fn one(body: Vec<Stmt>) -> Vec<Stmt> {
-    if body.len() == 1 && !matches!(body[0], Stmt::Assign(..) | Stmt::While { .. }) {
-        return body;
-    }
-    vec![Stmt::If { branches: vec![(Expr::Bool(true), body)], otherwise: vec![] }]
-}
-
-/// The slots a handler body uses.
-pub const HANDLER_SLOTS: u16 = 4;

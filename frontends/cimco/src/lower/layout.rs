@@ -84,13 +84,6 @@ impl Layout {
     pub fn function(&self, name: &str) -> Option<FunctionId> {
         self.fn_index.get(name).copied()
     }
-
-    /// A global holding a text constant, so that native code reads it
-    /// without allocating.
-    pub fn text_constant(&mut self, text: &str) -> GlobalId {
-        let name = format!("__postc_text:{text}");
-        self.add_global(&name, Expr::Text(text.to_string()))
-    }
 }
 
 /// A constant as an IR expression.

@@ -9,18 +9,20 @@
 //!    compares, computes and concatenates; [`rhai`]: every function (and
 //!    postc's glue) as Rhai, for the ones that are not native and for
 //!    scripts calling each other;
-//! 4. [`handlers`]: the sections the post's entry points occupy; [`emit`]:
-//!    handlers that write a native function's text build it straight in
-//!    the output; [`fold`]: constant folding and text interning.
+//! 4. [`handlers`]: the sections the post's entry points occupy, each a
+//!    call of its entry point (`Write(onLinear(x, y, z, 1))`); [`fold`]:
+//!    constant folding of what the settings make known.
+//!
+//! The IR says what the post means; how the runtime runs it fast (the
+//! entry point's text built straight in the output) is the runtime's
+//! preparation, not the lowering's.
 //!
 //! `docs/cimco.md` describes the host semantics this implements.
 
 pub mod builtins;
 mod consts;
-mod emit;
 mod fold;
 mod handlers;
-mod inline;
 mod layout;
 mod model;
 mod native;
@@ -104,27 +106,12 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
         layout.clones.push((id, n));
     }
     let init_stmts = init_statements(program, &model, &setup);
-    let mut functions =
-        self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
+    let functions = self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
     let script = self::script(&model, &setup, &layout, whole, &init_stmts, own_feedrate);
     if let Some(d) = warn::check_script(&script, whole) {
         diags.push(d);
     }
-    let mut hs = handlers(&model, &layout, post.options.lathe, &functions);
-    // The handlers' remaining calls of expression functions become the
-    // expressions (the functions keep their calls: they are the post).
-    for h in &mut hs {
-        inline::expression_functions(&functions, &mut h.body);
-    }
-    for f in &mut functions {
-        if let Body::Native(b) = &mut f.body {
-            fold::intern_stmts(b, &mut layout);
-        }
-    }
-    for h in &mut hs {
-        fold::intern_stmts(&mut h.body, &mut layout);
-    }
-    post.handlers = hs;
+    post.handlers = handlers(&model, &layout, post.options.lathe, &functions);
     post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
     if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
         post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
@@ -384,8 +371,7 @@ fn script(
     }
 }
 
-/// The handlers, with the fast path: each inlines the function it calls
-/// into the output where it can (`emit`).
+/// The handlers: each calls the entry point of its section.
 fn handlers(model: &Model, layout: &Layout, lathe: bool, functions: &[Function]) -> Vec<postc_ir::Handler> {
     let arity = |name: &str| top_fn(model, name).map(|f| f.params.len());
     let use_radius = match model.setting("useRadius") {
@@ -396,19 +382,11 @@ fn handlers(model: &Model, layout: &Layout, lathe: bool, functions: &[Function])
         },
     };
     let entry = handlers::Entry { layout, lathe, use_radius, arity: &arity };
-    let raw = entry.handlers();
-    let mut emitter = emit::Emitter::new(functions, handlers::HANDLER_SLOTS);
-    let mut hs = Vec::new();
-    for mut h in raw {
+    let mut hs = entry.handlers();
+    for h in &mut hs {
         // A handler stands where the JavaScript function it calls is defined.
         h.span = first_call(&h.body).and_then(|f| functions.get(f.index())).and_then(|f| f.span);
-        let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(h.body))));
-        if let Some(top) = emit::max_slot(&body) {
-            // The frame takes its full size at once.
-            body.insert(0, Stmt::Assign(postc_ir::Place::Local(top), Expr::Null));
-        }
-        h.body = handlers::one(body);
-        hs.push(h);
+        h.body = fold::stmts(std::mem::take(&mut h.body));
     }
     hs
 }

@@ -75,7 +75,7 @@ fn visit(s: &Stmt, f: &mut dyn FnMut(&LocalId)) {
 
 fn visit_mut(s: &mut Stmt, f: &mut dyn FnMut(&mut LocalId)) {
     match s {
-        Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => pieces.iter_mut().for_each(|p| {
+        Stmt::Line { pieces, .. } => pieces.iter_mut().for_each(|p| {
             if let Piece::Expr(e) = p {
                 expr_mut(e, f)
             }
@@ -98,18 +98,13 @@ fn visit_mut(s: &mut Stmt, f: &mut dyn FnMut(&mut LocalId)) {
             expr_mut(cond, f);
             body.iter_mut().for_each(|s| visit_mut(s, f));
         }
-        Stmt::Mark(k) | Stmt::Truncate(k) | Stmt::Blocks(k) => f(k),
-        Stmt::MoveBack { to, from } => {
-            f(to);
-            f(from);
-        }
         Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
 }
 
 fn expr_mut(e: &mut Expr, f: &mut dyn FnMut(&mut LocalId)) {
     match e {
-        Expr::Local(k) | Expr::Written(k) => f(k),
+        Expr::Local(k) => f(k),
         Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => expr_mut(value, f),
         Expr::Binary(_, a, b) => {
             expr_mut(a, f);

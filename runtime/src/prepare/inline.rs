@@ -12,7 +12,8 @@
 //! evaluated exactly when and as often as before), and when it reads no
 //! other local than its parameters.
 
-use postc_ir::{BinaryOp, Body, Expr, Function, LocalId, Piece, Place, Stmt};
+use crate::exec::{Body, Expr, Function, Piece, Stmt};
+use postc_ir::{BinaryOp, LocalId, Place};
 
 /// Inlines expression functions into a body (a handler's, after the fast
 /// path has inlined the functions it writes).
@@ -30,7 +31,7 @@ pub fn expression_functions(functions: &[Function], body: &mut [Stmt]) {
 /// The expression a function is, over its parameters, and their number.
 fn template(f: &Function) -> Option<(usize, Expr)> {
     let Body::Native(body) = &f.body else { return None };
-    let params = f.params.len();
+    let params = f.params;
     let (local, rest) = match body.first() {
         Some(Stmt::Assign(Place::Local(k), e)) if k.index() >= params && !reads(e, *k) => (Some((*k, e)), &body[1..]),
         _ => (None, &body[..]),

@@ -16,7 +16,8 @@
 mod marks;
 mod shape;
 
-use postc_ir::{BinaryOp, Body, Expr, Function, FunctionId, LocalId, Piece, Place, Stmt, UnaryOp};
+use crate::exec::{Body, Expr, Function, Piece, Stmt};
+use postc_ir::{BinaryOp, FunctionId, LocalId, Place, UnaryOp};
 
 pub(crate) use marks::tidy;
 pub(crate) use shape::max_slot;
@@ -36,6 +37,11 @@ pub struct Emitter<'f> {
 
 /// Inlining nests at most this deep.
 const MAX_DEPTH: usize = 6;
+
+/// A handler's frame holds at most this many slots: an inlining that needs
+/// more (a post read from RON may say a function has 65,535 locals) keeps
+/// the plain call.
+const MAX_FRAME: usize = 4096;
 
 /// Where each local of an inlined function lives.
 #[derive(Clone)]
@@ -104,7 +110,7 @@ impl<'f> Emitter<'f> {
             Stmt::Write(Expr::Call(f, args)) => {
                 let saved = (self.next, self.budget);
                 let mark = self.slot();
-                match self.call(f, &args, 0, false) {
+                match self.call(f, &args, 0, false).filter(|_| usize::from(self.next) < MAX_FRAME) {
                     Some(mut inlined) => {
                         inlined.insert(0, Stmt::Mark(mark));
                         inlined.push(Stmt::Blocks(mark));
@@ -125,8 +131,10 @@ impl<'f> Emitter<'f> {
         }
     }
 
+    /// A new slot of the handler's frame. Past [`MAX_FRAME`] the slots
+    /// repeat, and [`Emitter::stmt`] drops the inlining that asked for them.
     fn slot(&mut self) -> LocalId {
-        self.next += 1;
+        self.next = self.next.saturating_add(1);
         LocalId::new(self.next - 1)
     }
 
@@ -164,8 +172,11 @@ impl<'f> Emitter<'f> {
         if self.budget > 400 {
             return None;
         }
-        let params = function.params.len();
+        let params = function.params;
         let slots = (function.slots as usize).max(params);
+        if usize::from(self.next) + slots >= MAX_FRAME {
+            return None;
+        }
         let (base, mut out) = match bound {
             Some((_, mark)) => (mark, Vec::new()),
             None => {

@@ -6,7 +6,8 @@
 
 use std::collections::{HashMap, HashSet};
 
-use postc_ir::{Expr, LocalId, Piece, Stmt};
+use crate::exec::{Expr, Piece, Stmt};
+use postc_ir::LocalId;
 
 /// Tidies a handler body.
 pub fn tidy(body: Vec<Stmt>) -> Vec<Stmt> {

@@ -2,7 +2,8 @@
 //! kept as text in the output (a "region"), which functions always return
 //! text, and the small analyses over IR statements they need.
 
-use postc_ir::{BinaryOp, Builtin, Expr, LocalId, Piece, Place, Stmt, UnaryOp};
+use crate::exec::{Expr, Piece, Stmt};
+use postc_ir::{BinaryOp, Builtin, LocalId, Place, UnaryOp};
 
 /// The parts of a left-associated chain of `+`.
 pub(super) fn concat_leaves<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {

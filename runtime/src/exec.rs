@@ -1,0 +1,244 @@
+//! The runtime's executable form of post code.
+//!
+//! The IR ([`postc_ir::Stmt`], [`postc_ir::Expr`]) says what a post means:
+//! a handler writes what `onLinear(x, y, z, movement)` returns, a function
+//! returns `"G1" + xOutput.format(x) + "\n"`. How that is run fast is the
+//! runtime's business, not the IR's: [`crate::prepare`] turns each post into
+//! [`Code`] of the statements below, which are the IR's own plus the
+//! *output-buffer operations* of the fast path ([`Stmt::Emit`],
+//! [`Stmt::Mark`], [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`],
+//! [`Expr::Written`]): a function's text is built straight in the output
+//! instead of in a value, so a move allocates nothing.
+//!
+//! Text literals are held as the values they read as ([`Text`]), so
+//! reading one allocates nothing.
+//!
+//! Nothing outside the runtime sees these types: a post on disk, a backend
+//! and a lint read the IR only.
+
+use std::rc::Rc;
+
+use postc_ir::{BinaryOp, Builtin, FunctionId, GlobalId, LocalId, Place, Quantity, ScriptId, Span, UnaryOp, VarId};
+
+use crate::value::Value;
+
+/// One statement. The IR's ([`postc_ir::Stmt`], which documents each), then
+/// the output-buffer operations of the fast path.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Stmt {
+    Line {
+        pieces: Vec<Piece>,
+        span: Option<Span>,
+    },
+    Write(Expr),
+    Assign(Place, Expr),
+    Eval(Expr),
+    If {
+        branches: Vec<(Expr, Vec<Stmt>)>,
+        otherwise: Vec<Stmt>,
+    },
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+        span: Option<Span>,
+    },
+    Break,
+    Continue,
+    Return(Option<Expr>),
+    Script(ScriptId),
+    Forget(VarId),
+    Origin(Span),
+    /// Append the text of the pieces to the output without ending a block:
+    /// a function's text, built where it will be written.
+    Emit(Vec<Piece>),
+    /// Store the output's current length in a local: a mark for
+    /// [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`] and
+    /// [`Expr::Written`].
+    Mark(LocalId),
+    /// Move the text written since mark `from` back to mark `to`, before
+    /// the text written between the two marks (`text = "N10 " + text`).
+    MoveBack {
+        to: LocalId,
+        from: LocalId,
+    },
+    /// Drop the text written since a mark.
+    Truncate(LocalId),
+    /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
+    /// does with a value: each line that is not empty becomes a block.
+    Blocks(LocalId),
+}
+
+/// One piece of an output block (see [`postc_ir::Piece`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Piece {
+    Text(Vec<u8>),
+    Var(VarId),
+    Expr(Expr),
+}
+
+/// One expression: the IR's ([`postc_ir::Expr`], which documents each),
+/// and [`Expr::Written`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    Number(f64),
+    Text(Text),
+    Bool(bool),
+    Null,
+    /// Whether any text was written since a mark ([`Stmt::Mark`]).
+    Written(LocalId),
+    Quantity(Quantity),
+    Local(LocalId),
+    Global(GlobalId),
+    Var(VarId),
+    Previous(VarId),
+    FormatVar {
+        var: VarId,
+        value: Box<Expr>,
+    },
+    Format {
+        format: postc_ir::FormatId,
+        value: Box<Expr>,
+    },
+    Unary(UnaryOp, Box<Expr>),
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    Choose(Box<Expr>, Box<Expr>, Box<Expr>),
+    Call(FunctionId, Vec<Expr>),
+    Builtin(Builtin, Vec<Expr>),
+}
+
+impl Expr {
+    /// A text literal.
+    pub fn text(s: &str) -> Expr {
+        Expr::Text(Text(Value::Text(Rc::from(s))))
+    }
+}
+
+/// A text literal: the text value it reads as (shared, never copied), and
+/// the text itself through `Deref`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Text(Value);
+
+impl Text {
+    /// A literal of shared text.
+    pub fn new(text: Rc<str>) -> Text {
+        Text(Value::Text(text))
+    }
+
+    /// The value the literal reads as.
+    #[inline]
+    pub fn value(&self) -> &Value {
+        &self.0
+    }
+}
+
+impl std::ops::Deref for Text {
+    type Target = str;
+
+    fn deref(&self) -> &str {
+        match &self.0 {
+            Value::Text(t) => t,
+            _ => "",
+        }
+    }
+}
+
+/// A post function as the runtime runs it; its name and span stay in the
+/// post's [`postc_ir::Function`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Function {
+    /// Number of parameters.
+    pub params: usize,
+    /// Parameters plus locals.
+    pub slots: u16,
+    pub body: Body,
+}
+
+/// Native statements, or a script the host runs.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Body {
+    Native(Vec<Stmt>),
+    Script(ScriptId),
+}
+
+/// A post's code, prepared to run: every function, every handler body, the
+/// one-time code and the globals' starting values, in the post's order.
+#[derive(Clone, Debug, Default)]
+pub struct Code {
+    pub functions: Vec<Function>,
+    pub handlers: Vec<Vec<Stmt>>,
+    pub init: Vec<Stmt>,
+    pub globals: Vec<Expr>,
+}
+
+/// The runtime form of IR statements.
+pub fn stmts(body: &[postc_ir::Stmt]) -> Vec<Stmt> {
+    body.iter().map(stmt).collect()
+}
+
+/// The runtime form of one IR statement.
+pub fn stmt(s: &postc_ir::Stmt) -> Stmt {
+    use postc_ir::Stmt as S;
+    match s {
+        S::Line { pieces, span } => Stmt::Line { pieces: pieces.iter().map(piece).collect(), span: *span },
+        S::Write(e) => Stmt::Write(expr(e)),
+        S::Assign(p, e) => Stmt::Assign(*p, expr(e)),
+        S::Eval(e) => Stmt::Eval(expr(e)),
+        S::If { branches, otherwise } => Stmt::If {
+            branches: branches.iter().map(|(c, b)| (expr(c), stmts(b))).collect(),
+            otherwise: stmts(otherwise),
+        },
+        S::While { cond, body, span } => Stmt::While { cond: expr(cond), body: stmts(body), span: *span },
+        S::Break => Stmt::Break,
+        S::Continue => Stmt::Continue,
+        S::Return(e) => Stmt::Return(e.as_ref().map(expr)),
+        S::Script(id) => Stmt::Script(*id),
+        S::Forget(v) => Stmt::Forget(*v),
+        S::Origin(span) => Stmt::Origin(*span),
+    }
+}
+
+/// The runtime form of one piece.
+pub fn piece(p: &postc_ir::Piece) -> Piece {
+    match p {
+        postc_ir::Piece::Text(bytes) => Piece::Text(bytes.clone()),
+        postc_ir::Piece::Var(v) => Piece::Var(*v),
+        postc_ir::Piece::Expr(e) => Piece::Expr(expr(e)),
+    }
+}
+
+/// The runtime form of one IR expression.
+pub fn expr(e: &postc_ir::Expr) -> Expr {
+    use postc_ir::Expr as E;
+    let boxed = |e: &postc_ir::Expr| Box::new(expr(e));
+    let list = |args: &[postc_ir::Expr]| args.iter().map(expr).collect();
+    match e {
+        E::Number(n) => Expr::Number(*n),
+        E::Text(s) => Expr::text(s),
+        E::Bool(b) => Expr::Bool(*b),
+        E::Null => Expr::Null,
+        E::Quantity(q) => Expr::Quantity(*q),
+        E::Local(k) => Expr::Local(*k),
+        E::Global(g) => Expr::Global(*g),
+        E::Var(v) => Expr::Var(*v),
+        E::Previous(v) => Expr::Previous(*v),
+        E::FormatVar { var, value } => Expr::FormatVar { var: *var, value: boxed(value) },
+        E::Format { format, value } => Expr::Format { format: *format, value: boxed(value) },
+        E::Unary(op, a) => Expr::Unary(*op, boxed(a)),
+        E::Binary(op, a, b) => Expr::Binary(*op, boxed(a), boxed(b)),
+        E::Choose(c, a, b) => Expr::Choose(boxed(c), boxed(a), boxed(b)),
+        E::Call(f, args) => Expr::Call(*f, list(args)),
+        E::Builtin(b, args) => Expr::Builtin(*b, list(args)),
+    }
+}
+
+/// The runtime form of a post function.
+pub fn function(f: &postc_ir::Function) -> Function {
+    Function {
+        params: f.params.len(),
+        slots: f.slots,
+        body: match &f.body {
+            postc_ir::Body::Native(b) => Body::Native(stmts(b)),
+            postc_ir::Body::Script(id) => Body::Script(*id),
+        },
+    }
+}

@@ -1,0 +1,72 @@
+//! Preparing a post to run: its IR becomes the runtime's [`Code`].
+//!
+//! The IR says what each handler means (`Write(onLinear(x, y, z, 1))`,
+//! functions that return text). Here the runtime chooses how to run it
+//! fast, for any dialect, without changing a byte of what it writes:
+//!
+//! 1. every function and handler in the runtime's form ([`crate::exec`]),
+//!    constants folded ([`fold`]);
+//! 2. the fast path ([`emit`]): a handler that writes what a native
+//!    function returns builds that text straight in the output instead;
+//!    marks are tidied;
+//! 3. calls of expression functions left in a handler become the
+//!    expressions ([`inline`]);
+//! 4. a handler whose statements share locals runs as one statement, so
+//!    its locals live in one frame.
+//!
+//! A handler of output lines only (every Vectric section) is kept as it
+//! is: the engine runs its lines on a faster path still.
+
+mod emit;
+mod fold;
+mod inline;
+
+use postc_ir::{Place, Post};
+
+use crate::exec::{self, Code, Expr, Stmt};
+
+/// Prepares a post's code to run.
+pub fn prepare(post: &Post) -> Code {
+    let mut functions: Vec<exec::Function> = post.functions.iter().map(exec::function).collect();
+    for f in &mut functions {
+        if let exec::Body::Native(body) = &mut f.body {
+            *body = fold::stmts(std::mem::take(body));
+        }
+    }
+    let handlers = post.handlers.iter().map(|h| handler(&functions, exec::stmts(&h.body))).collect();
+    Code {
+        handlers,
+        init: exec::stmts(&post.init),
+        globals: post.globals.iter().map(|g| exec::expr(&g.initial)).collect(),
+        functions,
+    }
+}
+
+/// A handler body, prepared.
+fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
+    if body.iter().all(|s| matches!(s, Stmt::Line { .. })) {
+        return body;
+    }
+    let first_free = emit::max_slot(&body).map_or(0, |k| k.index().saturating_add(1).min(usize::from(u16::MAX)) as u16);
+    let mut emitter = emit::Emitter::new(functions, first_free);
+    let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(body))));
+    inline::expression_functions(functions, &mut body);
+    match emit::max_slot(&body) {
+        Some(top) => {
+            // The frame takes its full size at once, and the statements
+            // share it.
+            body.insert(0, Stmt::Assign(Place::Local(top), Expr::Null));
+            one(body)
+        }
+        None => body,
+    }
+}
+
+/// Statements as one, so that their locals share a frame (the engine
+/// gives each top-level statement of a handler a fresh frame).
+fn one(body: Vec<Stmt>) -> Vec<Stmt> {
+    if body.len() == 1 && !matches!(body[0], Stmt::Assign(..) | Stmt::While { .. }) {
+        return body;
+    }
+    vec![Stmt::If { branches: vec![(Expr::Bool(true), body)], otherwise: vec![] }]
+}

@@ -1,0 +1,76 @@
+//! The runtime prepares a post's fast form from what its IR means: a CIMCO
+//! handler is `Write(onLinear(...))` in the IR, whoever reads it (the
+//! backends, `postc inspect`, a RON post on disk); the runtime's
+//! preparation (`postc_runtime::prepare`) inlines the entry point and
+//! builds its text straight in the output, and turns calls of expression
+//! functions into the expressions.
+
+use std::path::Path;
+
+use postc_ir::{HandlerKey, Post, Section};
+
+fn compile(js: &str) -> Post {
+    let mut sources = postc_report::source_map();
+    let compiled = postc_frontends::compile_post_bytes(Path::new("t.js"), js.as_bytes(), None, &mut sources);
+    compiled.post.unwrap_or_else(|| panic!("compiles: {:?}", compiled.diagnostics))
+}
+
+fn feed_move(post: &Post) -> usize {
+    post.handlers.iter().position(|h| h.key == HandlerKey::Section(Section::FeedMove)).expect("FEED_MOVE")
+}
+
+/// Expression functions (a chain of `if (c) return a;` and a last
+/// `return`, after at most one local read once where evaluation always
+/// reaches it) are inlined where a prepared handler calls them with cheap
+/// arguments; others stay calls, and so do the calls in the functions and
+/// in the IR.
+#[test]
+fn expression_functions_are_inlined_into_the_prepared_handlers() {
+    let js = r#"
+        function value() { var f = getFeedrate(1); return parseFloat(f.substring(1)); }
+        function guarded(m) { var f = getFeedrate(m); return m == 0 ? "" : f; }
+        function onLinear(x, y, z, m) { return (value() > 0 ? "p" : "n") + (guarded(m) == "" ? "r" : "f") + "\n"; }
+    "#;
+    let post = compile(js);
+    let call = |name: &str| -> String {
+        let i = post.functions.iter().position(|f| f.name == name).expect("the function");
+        let text = format!("{:?}", postc_ir::Expr::Call(postc_ir::FunctionId::new(i as u16), vec![]));
+        text.trim_end_matches("[])").to_string()
+    };
+    let code = postc_runtime::prepare::prepare(&post);
+    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    assert!(!handler.contains(&call("value")), "value() is inlined: {handler}");
+    assert!(handler.contains(&call("guarded")), "guarded() reads its local under a choice: a call: {handler}");
+    let on_linear = format!("{:?}", post.functions.iter().find(|f| f.name == "onLinear").expect("onLinear").body);
+    assert!(on_linear.contains(&call("value")), "the function keeps its call: {on_linear}");
+    let meaning = format!("{:?}", post.handlers[feed_move(&post)].body);
+    assert!(meaning.starts_with("[Write(Call("), "the IR's handler is the call of onLinear: {meaning}");
+}
+
+/// A CIMCO post read back from RON gets the same fast form as the post
+/// compiled from JavaScript: the fast path is the runtime's, not the
+/// frontend's.
+#[test]
+fn a_ron_post_is_prepared_as_its_source() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/posts/cimco/fanuc_mill.js");
+    let mut sources = postc_report::source_map();
+    let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("fanuc_mill.js compiles");
+    let ron = postc_backends::ron::print(&post).expect("prints as RON");
+    let mut sources = postc_report::source_map();
+    let back = postc_frontends::compile_post_bytes(Path::new("fanuc_mill.ron"), ron.as_bytes(), None, &mut sources)
+        .post
+        .expect("the RON post reads back");
+    // RON keeps no spans (they point into the source), so neither do the
+    // `Origin`s of `--trace`.
+    let mut plain = post.clone();
+    plain.drop_spans();
+    let (a, b) = (postc_runtime::prepare::prepare(&plain), postc_runtime::prepare::prepare(&back));
+    let i = feed_move(&post);
+    let text = format!("{:?}", b.handlers[i]);
+    assert!(
+        text.contains("Emit(") && !text.contains("Write("),
+        "the RON post's FEED_MOVE is not on the fast path: {text}"
+    );
+    assert_eq!(a.handlers.len(), b.handlers.len());
+    assert_eq!(format!("{:?}", a.handlers[i]), text, "both are prepared alike");
+}
