@@ -560,3 +560,46 @@ function FOOTER() { return "M30\n"; }
     let (_, diags) = compile_bytes(Path::new("wrong.js"), wrong.as_bytes(), None);
     assert!(diags.iter().any(|d| d.starts_with("JS107")), "{diags:?}");
 }
+
+/// The source's comments come along: the head of the file, a `VAR`'s and
+/// a section's in Vectric, the head and a Sub's in VcPost. A comment that
+/// reads like a VcPost keyword comment does not turn into one, and the
+/// conversion note is not read back as a comment.
+#[test]
+fn comments_survive_conversion() {
+    let pp = "+ Router post, mm.\n+ Second line.\n\nPOST_NAME = \"c\"\nUNITS = \"MM\"\n\n\
+              + The X word.\nVAR X_POSITION = [X|C|X|1.3]\n\n\
+              + #Init looks like a keyword.\nbegin HEADER\n\"G21\"\n+ inside\n\"G90\"\n\nbegin FEED_MOVE\n\"G1[X]\"\n";
+    let (post, diagnostics) = compile_bytes(Path::new("c.pp"), pp.as_bytes(), None);
+    let post = post.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    // (Vectric posts end their lines with CR LF.)
+    let vectric = String::from_utf8(postc_backends::convert(&post, Target::Vectric).expect("converts"))
+        .expect("text")
+        .replace("\r\n", "\n");
+    let head = vectric.find("+ Router post, mm.\n+ Second line.").expect("the head");
+    let var = vectric.find("+ The X word.\nVAR X_POSITION").expect("the VAR's comment");
+    let section =
+        vectric.find("+ #Init looks like a keyword.\n+ inside\nbegin HEADER").expect("the section's comments");
+    assert!(
+        vectric.starts_with("+ Converted by postc from c.pp (Vectric)\n") && head < var && var < section,
+        "{vectric}"
+    );
+    let vcpost = String::from_utf8(postc_backends::convert(&post, Target::VcPost).expect("converts")).expect("text");
+    assert!(vcpost.contains("' Router post, mm.\n' Second line.\n"), "{vcpost}");
+    assert!(vcpost.contains("' # Init looks like a keyword.\n' inside\nSub HEADER"), "{vcpost}");
+    // Read back, each converts to the same text again.
+    for (name, text) in [("c2.pp", &vectric), ("c2.VcPost", &vcpost)] {
+        let (back, diagnostics) = compile_bytes(Path::new(name), text.as_bytes(), None);
+        let back = back.unwrap_or_else(|| panic!("{diagnostics:?}"));
+        assert_eq!(
+            back.comment(&postc_ir::CommentTarget::Post),
+            ["Router post, mm.", "Second line."].map(|l| format!(" {l}"))
+        );
+        let target = if name.ends_with(".pp") { Target::Vectric } else { Target::VcPost };
+        let again = String::from_utf8(postc_backends::convert(&back, target).expect("converts"))
+            .expect("text")
+            .replace("\r\n", "\n");
+        let body = |t: &str| t.split_once('\n').map(|(_, rest)| rest.to_string()).unwrap_or_default();
+        assert_eq!(body(&again), body(text), "{name} is not a fixed point");
+    }
+}

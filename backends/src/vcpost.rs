@@ -32,7 +32,7 @@ use std::collections::HashSet;
 
 use postc_front_vcpost::{routines, token};
 use postc_ir::codes;
-use postc_ir::post::{BlockNumbers, Dispatch, Section};
+use postc_ir::post::{BlockNumbers, CommentTarget, Dispatch, FunctionId, Section};
 use postc_ir::{
     BinaryOp, Body, Builtin, Diagnostic, Expr, Function, HandlerKey, Justify, Modality, NumberFormat, OutputOptions,
     Padding, Piece, Place, PointStyle, Post, SignStyle, Span, Stmt, TextEncoding, UnaryOp, ValueSource, WidthOf,
@@ -273,9 +273,26 @@ impl Printer<'_> {
         let post = self.post;
         let source = super::source_name(post).to_string();
         let dialect = super::dialect_name(post.info.dialect);
-        self.line(0, &format!("' Converted by postc from {source} ({dialect})."));
+        self.line(0, &format!("' {}{source} ({dialect}).", postc_ir::post::CONVERSION_NOTE));
+        self.comment(&CommentTarget::Post);
         self.line(0, "");
         self.options(&source);
+    }
+
+    /// The source's comment lines before `on`, as `'` lines. A line that
+    /// would read as a keyword comment (`#Cycle`) gets a blank after its
+    /// `#`: it documents, it does not declare.
+    fn comment(&mut self, on: &CommentTarget) {
+        let post = self.post;
+        for l in post.comment(on) {
+            let text = match l.trim_start().strip_prefix('#') {
+                Some(rest) if rest.starts_with(char::is_alphabetic) => {
+                    format!("{}# {rest}", &l[..l.len() - l.trim_start().len()])
+                }
+                _ => l.clone(),
+            };
+            self.line(0, &format!("'{text}"));
+        }
     }
 
     /// postc's options (`Postc.Units = "MM"`), those that differ from the
@@ -547,6 +564,7 @@ impl Printer<'_> {
             if self.calls_its_sub(&h.body, section) {
                 continue;
             }
+            self.comment(&CommentTarget::Handler(h.key.clone()));
             self.line(0, &format!("Sub {}", section.name()));
             let body = h.body.clone();
             self.block(&body, None, 1);
@@ -591,6 +609,12 @@ impl Printer<'_> {
                 Kind::Function(_) => ("Function", &body[..body.len() - 1]),
                 _ => ("Sub", &body[..]),
             };
+            if post.info.dispatch == Dispatch::Sections
+                && let Some(section) = Section::from_name(&f.name)
+            {
+                self.comment(&CommentTarget::Handler(HandlerKey::Section(section)));
+            }
+            self.comment(&CommentTarget::Function(FunctionId::new(i as u16)));
             if params.is_empty() && word == "Sub" {
                 self.line(0, &format!("Sub {name}"));
             } else {

@@ -31,7 +31,7 @@ use std::fmt::Write as _;
 
 use postc_front_vectric::defaults::default_format;
 use postc_front_vectric::names::{label_of_var_name, var_name_of_label};
-use postc_ir::post::{Dispatch, RotaryWrap, Section, WrappedAxis};
+use postc_ir::post::{CommentTarget, Dispatch, RotaryWrap, Section, WrappedAxis};
 use postc_ir::{
     Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post, ScriptId,
     SignStyle, Span, Stmt, Units, ValueSource, VarId, WidthOf,
@@ -226,11 +226,14 @@ impl Printer<'_> {
         labels
     }
 
+    /// The conversion note, then the source's notes and head comments in
+    /// the same block (the frontend reads that block back as the head,
+    /// without the note).
     fn header(&mut self) {
         let post = self.post;
-        self.line("+================================================");
         self.line(&format!(
-            "+ Converted by postc from {} ({})",
+            "+ {}{} ({})",
+            postc_ir::post::CONVERSION_NOTE,
             crate::source_name(post),
             crate::dialect_name(post.info.dialect)
         ));
@@ -241,8 +244,16 @@ impl Printer<'_> {
                 self.line(&format!("+ {l}"));
             }
         }
-        self.line("+================================================");
+        self.comment(&CommentTarget::Post);
         self.line("");
+    }
+
+    /// The source's comment lines before `on`, as `+` lines.
+    fn comment(&mut self, on: &CommentTarget) {
+        let post = self.post;
+        for l in post.comment(on) {
+            self.line(&format!("+{l}"));
+        }
     }
 
     fn globals(&mut self) {
@@ -339,7 +350,7 @@ impl Printer<'_> {
 
     fn variables(&mut self) {
         let post = self.post;
-        for v in &post.variables {
+        for (id, v) in post.variables.iter().enumerate() {
             let ValueSource::Quantity(q) = v.source else { continue };
             if var_name_of_label(q.label()).is_none() {
                 // No VAR name prints this label: it must be its default,
@@ -379,6 +390,7 @@ impl Printer<'_> {
                 Some(label) if label.eq_ignore_ascii_case(q.label()) => var_name(&v.name),
                 _ => var_name_of_label(q.label()).unwrap_or_default().to_string(),
             };
+            self.comment(&CommentTarget::Variable(VarId::new(id as u16)));
             let mut line = format!("VAR {name} = [{}|{modality}|", q.label());
             let mut bytes = std::mem::take(&mut line).into_bytes();
             bytes.extend_from_slice(&v.prefix);
@@ -489,6 +501,7 @@ impl Printer<'_> {
         });
         for h in order {
             let HandlerKey::Section(s) = h.key else { continue };
+            self.comment(&CommentTarget::Handler(h.key.clone()));
             self.line(&format!("begin {}", s.name()));
             let refused = self.errors.len();
             for stmt in &h.body {

@@ -117,8 +117,8 @@ pub use event::{Event, EventSource};
 pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 pub use id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 pub use post::{
-    Body, CallList, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality, OutputOptions, Post, PostInfo,
-    Script, ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
+    Body, CallList, Comment, CommentTarget, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality,
+    OutputOptions, Post, PostInfo, Script, ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
 pub use source::{MemoryLoader, NoFiles, SourceLoader};

@@ -35,6 +35,60 @@ pub struct Post {
     /// posts run over toolpath events only.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub call_lists: Vec<CallList>,
+    /// The source's comments, each with what it stands before: they do
+    /// nothing when the post runs; a backend prints them where they belong
+    /// in its dialect, so that a converted post says what its source said.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub comments: Vec<Comment>,
+}
+
+/// Comment lines of a post's source and what they stand before (the file's
+/// head, a variable, a section or a function). Each line is the text after
+/// its comment marker (`+`, `'`, `//`), blanks included, so that a post
+/// converted to its own dialect keeps them as written.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Comment {
+    pub on: CommentTarget,
+    pub lines: Vec<String>,
+}
+
+/// What a [`Comment`] stands before.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum CommentTarget {
+    /// The head of the file: what the post is, who wrote it.
+    Post,
+    Variable(VarId),
+    Handler(HandlerKey),
+    Function(FunctionId),
+}
+
+/// The text a backend's header comment starts with (`Converted by postc
+/// from gcode_mm.pp (Vectric)`). Frontends leave that line (and the rules
+/// around it) out of the post's comments, so that converting a converted
+/// post again gives the same text.
+pub const CONVERSION_NOTE: &str = "Converted by postc from ";
+
+/// Whether a comment line is a backend's header ([`CONVERSION_NOTE`]).
+pub fn is_conversion_note(line: &str) -> bool {
+    line.trim_start().starts_with(CONVERSION_NOTE)
+}
+
+impl Post {
+    /// The comment lines that stand before `on`.
+    pub fn comment(&self, on: &CommentTarget) -> &[String] {
+        self.comments.iter().find(|c| &c.on == on).map_or(&[], |c| c.lines.as_slice())
+    }
+
+    /// Adds comment lines before `on` (after any it has already).
+    pub fn add_comment(&mut self, on: CommentTarget, lines: Vec<String>) {
+        if lines.is_empty() {
+            return;
+        }
+        match self.comments.iter_mut().find(|c| c.on == on) {
+            Some(c) => c.lines.extend(lines),
+            None => self.comments.push(Comment { on, lines }),
+        }
+    }
 }
 
 /// Globals a [`crate::SubCall`]'s list fills: before the call, a

@@ -12,13 +12,15 @@
 //! - numbers that steer the output are finite and sensible: format
 //!   multipliers, the decimal mark (ASCII), block numbering, the chord
 //!   tolerance (above zero), arc radius limits, tape splitting (at least
-//!   one line per part), the step budget (at least one).
+//!   one line per part), the step budget (at least one);
+//! - every comment stands before something the post has, and holds whole
+//!   lines.
 //!
 //! Each problem names the item that holds it ([`Item`]), so the RON
 //! loader can point at that item in the text.
 
 use crate::code::{Expr, Piece, Place, Stmt};
-use crate::post::{Body, Post};
+use crate::post::{Body, CommentTarget, Post};
 use crate::visit::{Visit, walk_expr, walk_piece, walk_stmt};
 
 /// Where in a post a problem sits.
@@ -40,6 +42,8 @@ pub enum Item {
     Handler(usize),
     /// `call_lists[i]`.
     CallList(usize),
+    /// `comments[i]`.
+    Comment(usize),
 }
 
 impl Item {
@@ -55,6 +59,7 @@ impl Item {
             Item::Init => ("init", None),
             Item::Handler(i) => ("handlers", Some(i)),
             Item::CallList(i) => ("call_lists", Some(i)),
+            Item::Comment(i) => ("comments", Some(i)),
         }
     }
 }
@@ -118,6 +123,20 @@ pub fn validate(post: &Post) -> Vec<Invalid> {
                     post.globals.len()
                 ),
             );
+        }
+    }
+    for (i, c) in post.comments.iter().enumerate() {
+        let stands_before = match &c.on {
+            CommentTarget::Post => true,
+            CommentTarget::Variable(v) => usize::from(*v) < post.variables.len(),
+            CommentTarget::Function(f) => usize::from(*f) < post.functions.len(),
+            CommentTarget::Handler(k) => post.handlers.iter().any(|h| &h.key == k),
+        };
+        if !stands_before {
+            bad(Item::Comment(i), format!("the comment stands before {:?}, which the post does not have", c.on));
+        }
+        if c.lines.iter().any(|l| l.contains(['\n', '\r'])) {
+            bad(Item::Comment(i), "a comment line holds a line break".into());
         }
     }
     let mut ids = Ids { post, at: Item::Init, out: Vec::new() };

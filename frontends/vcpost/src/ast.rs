@@ -12,6 +12,9 @@ pub struct Program {
     pub items: Vec<Item>,
     /// Keyword comments found outside every Sub (ignored, warned).
     pub stray_keyword_comments: Vec<KeywordComment>,
+    /// The comment lines at the head of the file (a converted post's
+    /// header note left out), each the text after `'` or `Rem`.
+    pub doc: Vec<String>,
 }
 
 /// One thing at the top of a file.
@@ -71,6 +74,8 @@ pub struct Procedure {
     pub end: Option<Span>,
     /// Keyword comments between the header and the end, in order.
     pub keyword_comments: Vec<KeywordComment>,
+    /// The comment lines directly before the header.
+    pub doc: Vec<String>,
 }
 
 /// A formal parameter of a Sub or Function.

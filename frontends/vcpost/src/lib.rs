@@ -36,6 +36,7 @@ pub mod call_tables;
 pub mod composites;
 pub mod csv;
 pub mod diagnostics;
+pub mod docs;
 pub mod keywords;
 pub mod lexer;
 pub mod lower;
@@ -68,8 +69,9 @@ fn parse_all(text: &str, file: FileId) -> (ast::Program, Vec<Diagnostic>) {
     let lexed = lexer::lex(text, file);
     let (lines, parse_diagnostics) = parser::parse_lines(&lexed.tokens, &lexed.spoiled, text.len(), file);
     let built = blocks::build(lines, text.len(), file);
-    let mut program = ast::Program { file, items: built.items, stray_keyword_comments: Vec::new() };
+    let mut program = ast::Program { file, items: built.items, stray_keyword_comments: Vec::new(), doc: Vec::new() };
     let keyword_diagnostics = keywords::attach(&mut program, &lexed.comments, &built.ranges);
+    docs::attach(&mut program, &lexed.comments, text);
     let mut diagnostics = lexed.diagnostics;
     diagnostics.extend(parse_diagnostics);
     diagnostics.extend(built.diagnostics);

@@ -33,6 +33,9 @@ pub struct Item {
     pub kind: ItemKind,
     /// The whole line, without its line ending.
     pub span: Span,
+    /// A blank line stands between this line and the one before (comment
+    /// lines stand before what they directly precede).
+    pub blank_before: bool,
 }
 
 /// What a line is.

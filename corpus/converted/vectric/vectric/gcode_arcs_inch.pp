@@ -1,6 +1,17 @@
-+================================================
 + Converted by postc from gcode_arcs_inch.pp (Vectric)
 +================================================
++
++ postc reconstruction of the "G-Code Arcs (inch)" post whose output is
++ the 25-line listing of the Vectric post-processor guide (2012).
++ Written for postc; not a copy of the vendor file.
++
++================================================
++------------------------------------------------
++    Line terminating characters
++------------------------------------------------
++------------------------------------------------
++    Block numbering
++------------------------------------------------
 
 POST_NAME = "G-Code Arcs (inch) (*.tap)"
 FILE_EXTENSION = "tap"
@@ -10,6 +21,9 @@ LINE_NUMBER_START = 0
 LINE_NUMBER_INCREMENT = 10
 LINE_NUMBER_MAXIMUM = 999999
 
++================================================
++    Formatting for variables
++================================================
 VAR LINE_NUMBER = [N|A|N|1.0]
 VAR SPINDLE_SPEED = [S|A|S|1.0]
 VAR FEED_RATE = [F|C|F|1.1]
@@ -23,33 +37,63 @@ VAR Y_HOME_POSITION = [YH|A|Y|1.4]
 VAR Z_HOME_POSITION = [ZH|A|Z|1.4]
 VAR TOOL_NUMBER = [T|A||1.0]
 
++================================================
++    Block definitions for toolpath output
++================================================
++---------------------------------------------------
++  Commands output at the start of the file
++---------------------------------------------------
 begin HEADER
 "T[T]M6"
 "G17"
 "G0[ZH]"
 "G0[XH][YH][S]M3"
 
++---------------------------------------------------
++  Commands output for rapid moves
++---------------------------------------------------
 begin RAPID_MOVE
 "G0[X][Y][Z]"
 
++---------------------------------------------------
++  Commands output for the first feed rate move
++---------------------------------------------------
 begin FIRST_FEED_MOVE
 "G1[X][Y][Z][F]"
 
++---------------------------------------------------
++  Commands output for feed rate moves
++---------------------------------------------------
 begin FEED_MOVE
 "G1[X][Y][Z]"
 
++---------------------------------------------------
++  Commands output for the first clockwise arc move
++---------------------------------------------------
 begin FIRST_CW_ARC_MOVE
 "G2[X][Y][I][J][F]"
 
++---------------------------------------------------
++  Commands output for clockwise arc moves
++---------------------------------------------------
 begin CW_ARC_MOVE
 "G2[X][Y][I][J]"
 
++---------------------------------------------------
++  Commands output for the first counterclockwise arc move
++---------------------------------------------------
 begin FIRST_CCW_ARC_MOVE
 "G3[X][Y][I][J][F]"
 
++---------------------------------------------------
++  Commands output for counterclockwise arc moves
++---------------------------------------------------
 begin CCW_ARC_MOVE
 "G3[X][Y][I][J]"
 
++---------------------------------------------------
++  Commands output at the end of the file
++---------------------------------------------------
 begin FOOTER
 "G0[ZH]"
 "G0[XH][YH]"

@@ -1,5 +1,11 @@
-+================================================
 + Converted by postc from hpgl_arcs.pp (Vectric)
++================================================
++
++ postc: a generic HPGL plotter post with arcs, in the style of the
++ "Generic HPGL_Arcs.pp" the Vectric guide names. 40 plotter units per mm.
++ [Angle] is the arc sweep in radians (counter-clockwise positive); the
++ multiplier turns it into the degrees HPGL AA wants.
++
 +================================================
 
 POST_NAME = "Generic HPGL Arcs (*.plt)"

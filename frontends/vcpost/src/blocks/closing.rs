@@ -177,6 +177,7 @@ impl Builder {
                     header,
                     end,
                     keyword_comments: Vec::new(),
+                    doc: Vec::new(),
                 }));
                 return;
             }

@@ -29,8 +29,8 @@ use std::collections::{HashMap, HashSet};
 
 use postc_ir::post::{FormatId, FunctionId, GlobalId, LocalId, Section, VarId};
 use postc_ir::{
-    Body, Diagnostic, Dialect, Dispatch, Expr as IrExpr, Function, Global, Handler, HandlerKey, Post, Quantity,
-    Stmt as IrStmt, ValueSource, Variable,
+    Body, CommentTarget, Diagnostic, Dialect, Dispatch, Expr as IrExpr, Function, Global, Handler, HandlerKey, Post,
+    Quantity, Stmt as IrStmt, ValueSource, Variable,
 };
 
 use crate::ast::{CommentKind, Item, ProcKind, Program};
@@ -142,6 +142,7 @@ pub fn lower(program: &Program, legacy_encoding: bool) -> (Post, Vec<Diagnostic>
         }
     }
     l.finish();
+    l.comments();
     (l.post, l.diagnostics)
 }
 
@@ -164,6 +165,28 @@ fn is_section_post(program: &Program) -> bool {
 }
 
 impl Lowerer<'_> {
+    /// The source's comments: the file's head, and each Sub's before its
+    /// section (in a post driven by sections) or its function.
+    fn comments(&mut self) {
+        self.post.add_comment(CommentTarget::Post, self.program.doc.clone());
+        let procs = self.program.items.iter().filter_map(|i| match i {
+            Item::Proc(p) => Some(p),
+            Item::Stmt(_) => None,
+        });
+        for (p, id) in procs.zip(self.proc_ids.clone()) {
+            let section = Section::from_name(&p.name.text)
+                .map(HandlerKey::Section)
+                .filter(|k| self.sections && self.post.handlers.iter().any(|h| &h.key == k));
+            let on = match section {
+                Some(k) if !self.post.comments.iter().any(|c| c.on == CommentTarget::Handler(k.clone())) => {
+                    CommentTarget::Handler(k)
+                }
+                _ => CommentTarget::Function(id),
+            };
+            self.post.add_comment(on, p.doc.clone());
+        }
+    }
+
     fn collect_procs(&mut self) {
         for item in &self.program.items {
             let Item::Proc(p) = item else { continue };

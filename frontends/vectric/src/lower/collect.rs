@@ -26,11 +26,41 @@ enum Target {
 /// Applies one file to the model.
 pub fn collect(model: &mut Model, post: &PostFile, encoding: Encoding, diags: &mut Vec<Diagnostic>) {
     let mut target = Target::Nowhere;
+    // Comment lines not yet given to what they stand before.
+    let mut comments: Vec<String> = Vec::new();
+    let mut head = true;
     for item in &post.items {
         match &item.kind {
+            ItemKind::Comment(text) => {
+                // The file's first block of comments is its head (a
+                // converted post's header note left out).
+                if head && item.blank_before && !comments.is_empty() {
+                    head = false;
+                    model.doc.extend(without_conversion_note(std::mem::take(&mut comments)));
+                }
+                comments.push(text.clone());
+                continue;
+            }
+            ItemKind::Stray(_) => continue,
+            _ => {}
+        }
+        if head {
+            head = false;
+            comments = without_conversion_note(comments);
+        }
+        match &item.kind {
             ItemKind::Comment(_) | ItemKind::Stray(_) => {}
-            ItemKind::Begin(begin) => target = begin_section(model, begin, item.span, diags),
+            ItemKind::Begin(begin) => {
+                target = begin_section(model, begin, item.span, diags);
+                match &target {
+                    Target::Section(i) => model.sections[*i].doc.append(&mut comments),
+                    _ => model.doc.append(&mut comments),
+                }
+            }
             ItemKind::Output(text) => {
+                if let Target::Section(i) = &target {
+                    model.sections[*i].doc.append(&mut comments);
+                }
                 if let Some(lines) = lines_of(model, &target, item.span, diags) {
                     lines.push(LineDef::Output(pieces(text, encoding), item.span));
                 }
@@ -76,11 +106,26 @@ pub fn collect(model: &mut Model, post: &PostFile, encoding: Encoding, diags: &m
                                 .help("write it like this: VAR X_POSITION = [X|C|X|1.3]"),
                         ),
                     },
-                    VarBody::Fields(fields) => declare_var(model, name, fields, encoding, diags),
+                    VarBody::Fields(fields) => {
+                        declare_var(model, name, fields, encoding, diags);
+                        if let Some(v) = model.vars.iter_mut().find(|v| v.name.eq_ignore_ascii_case(&name.value)) {
+                            v.doc.append(&mut comments);
+                        }
+                    }
                 }
             }
         }
+        // What stands before anything else belongs to the post.
+        model.doc.append(&mut comments);
     }
+    model.doc.extend(without_conversion_note(comments));
+}
+
+/// Comment lines without a backend's header note
+/// ([`postc_ir::post::CONVERSION_NOTE`]).
+fn without_conversion_note(mut lines: Vec<String>) -> Vec<String> {
+    lines.retain(|l| !postc_ir::post::is_conversion_note(l));
+    lines
 }
 
 /// The lines of the section being read; reports an output line outside
@@ -142,7 +187,7 @@ fn begin_section(model: &mut Model, begin: &BeginLine, line: Span, diags: &mut V
         );
         return Target::Dropped;
     };
-    let fresh = SectionDef { section, span: line, lines: Vec::new() };
+    let fresh = SectionDef { section, span: line, lines: Vec::new(), doc: Vec::new() };
     match model.sections.iter().position(|d| d.section == section) {
         Some(i) => {
             let earlier = model.sections[i].span;
@@ -291,6 +336,7 @@ fn declare_var(
         multiplier: fields.multiplier.as_ref().map_or(1.0, |m| m.value),
         seq,
         span: fields.span,
+        doc: Vec::new(),
     };
     if let Some(other) = model.vars.iter().find(|v| {
         v.label.eq_ignore_ascii_case(&def.label) && v.name != def.name && v.label_span.file == def.label_span.file

@@ -8,8 +8,8 @@ use std::collections::HashMap;
 
 use postc_ir::post::{BlockNumbers, VarId};
 use postc_ir::{
-    Diagnostic, Dialect, Dispatch, FormatId, Handler, HandlerKey, NumberFormat, OutputOptions, Piece, Post, PostInfo,
-    Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, ValueSource, Variable,
+    CommentTarget, Diagnostic, Dialect, Dispatch, FormatId, Handler, HandlerKey, NumberFormat, OutputOptions, Piece,
+    Post, PostInfo, Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, ValueSource, Variable,
 };
 
 use crate::defaults::default_format;
@@ -53,8 +53,10 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
         );
         if let Some(id) = id {
             vars.declared_at.insert(id, def.label_span);
+            post.add_comment(CommentTarget::Variable(id), def.doc.clone());
         }
     }
+    post.add_comment(CommentTarget::Post, model.doc.clone());
     for block in &model.script_blocks {
         push_script(&mut post, block);
     }
@@ -72,6 +74,7 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
             }
         }
         post.handlers.push(Handler { key: HandlerKey::Section(section.section), body, span: Some(section.span) });
+        post.add_comment(CommentTarget::Handler(HandlerKey::Section(section.section)), section.doc.clone());
     }
     crate::lower::lint::coarse_arc_words(&post, &vars, diags);
     post

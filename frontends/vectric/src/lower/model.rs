@@ -19,6 +19,9 @@ pub struct Model {
     pub script_blocks: Vec<ScriptDef>,
     /// Some file of the chain names a `POST_BASE`.
     pub has_post_base: bool,
+    /// Comment lines that stand before no `VAR` or section: the file's
+    /// head, and comments among the global statements.
+    pub doc: Vec<String>,
     /// Counts definitions, so that "the later one" is known across files.
     pub next_seq: usize,
 }
@@ -67,6 +70,8 @@ pub struct VarDef {
     pub seq: usize,
     /// The `VAR`'s fields, `[` to `]`.
     pub span: Span,
+    /// The comment lines before the `VAR`.
+    pub doc: Vec<String>,
 }
 
 /// One section in force.
@@ -76,6 +81,8 @@ pub struct SectionDef {
     /// The `begin` line.
     pub span: Span,
     pub lines: Vec<LineDef>,
+    /// The comment lines before `begin` and among the section's lines.
+    pub doc: Vec<String>,
 }
 
 /// A line of a section.

@@ -30,7 +30,7 @@ fn file_parser<'a>(file: FileId) -> impl Parser<'a, &'a str, Vec<Item>, Extra> {
         lines::global(file),
         lines::stray(file),
     ))
-    .map_with(move |kind, e| kind.map(|kind| Item { kind, span: span(file, e.span()) }));
+    .map_with(move |kind, e| kind.map(|kind| Item { kind, span: span(file, e.span()), blank_before: false }));
     just('\u{feff}')
         .or_not()
         .ignore_then(line.separated_by(eol()).collect::<Vec<_>>())
@@ -53,7 +53,14 @@ pub fn parse(text: &str, file: FileId) -> (PostFile, Vec<Diagnostic>) {
         })
         .collect();
     diagnostics.sort_by_key(|d| d.primary_span().map_or(0, |s| s.start));
-    (PostFile { file, items: items.unwrap_or_default() }, diagnostics)
+    let mut items = items.unwrap_or_default();
+    let mut previous_end = 0;
+    for item in &mut items {
+        let between = text.get(previous_end..item.span.start).unwrap_or("");
+        item.blank_before = previous_end > 0 && between.matches('\n').count() > 1;
+        previous_end = item.span.end;
+    }
+    (PostFile { file, items }, diagnostics)
 }
 
 #[cfg(test)]
