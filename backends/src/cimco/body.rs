@@ -159,15 +159,15 @@ struct Printer<'p> {
 }
 
 /// Nodes the printer builds carry no place in a file.
-fn at() -> Span {
+pub(super) fn at() -> Span {
     Span::new(FileId(0), 0, 0)
 }
 
-fn ident(name: &str) -> Ident {
+pub(super) fn ident(name: &str) -> Ident {
     Ident { name: name.to_string(), span: at() }
 }
 
-fn js(kind: ExprKind) -> Js {
+pub(super) fn js(kind: ExprKind) -> Js {
     Js::new(kind, at())
 }
 
@@ -179,7 +179,7 @@ fn block(stmts: Vec<JsStmt>) -> JsStmt {
     stmt(StmtKind::Block(stmts))
 }
 
-fn name(n: &str) -> Js {
+pub(super) fn name(n: &str) -> Js {
     js(ExprKind::Ident(n.to_string()))
 }
 
@@ -187,7 +187,7 @@ fn member(object: Js, property: &str) -> Js {
     js(ExprKind::Member { object: Box::new(object), property: ident(property) })
 }
 
-fn call(callee: Js, args: Vec<Js>) -> Js {
+pub(super) fn call(callee: Js, args: Vec<Js>) -> Js {
     js(ExprKind::Call { callee: Box::new(callee), args })
 }
 

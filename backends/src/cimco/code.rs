@@ -34,18 +34,18 @@
 use std::collections::HashSet;
 
 use postc_front_cimco::ast::{
-    AssignOp, Expr as Js, ExprKind, Ident, KeyForm, Property, PropertyKey, Stmt as JsStmt, StmtKind, VarDeclarator,
+    AssignOp, Expr as Js, ExprKind, KeyForm, Property, PropertyKey, Stmt as JsStmt, StmtKind, VarDeclarator,
 };
 use postc_front_cimco::{made, print as js};
 use postc_ir::codes;
 use postc_ir::format::Rounding;
 use postc_ir::post::{BlockNumbers, Dispatch};
 use postc_ir::{
-    Body, Diagnostic, Expr, FileId, Justify, Modality, NumberFormat, OutputOptions, Padding, PointStyle, Post,
-    SignStyle, SourceText, Span, TextEncoding, ValueSource, WidthOf,
+    Body, Diagnostic, Expr, Justify, Modality, NumberFormat, OutputOptions, Padding, PointStyle, Post, SignStyle,
+    SourceText, Span, TextEncoding, ValueSource, WidthOf,
 };
 
-use super::body;
+use super::body::{self, at, call, ident, js, name};
 use super::refusal;
 
 /// Prints `post`, a CIMCO post with code, or says why it cannot be printed.
@@ -88,14 +88,6 @@ struct Printer<'p> {
     errors: Vec<Diagnostic>,
 }
 
-fn at() -> Span {
-    Span::new(FileId(0), 0, 0)
-}
-
-fn js(kind: ExprKind) -> Js {
-    Js::new(kind, at())
-}
-
 /// An object literal: `{key: value, ...}`.
 fn object(props: Vec<(&str, Js)>) -> Js {
     let props = props
@@ -107,12 +99,6 @@ fn object(props: Vec<(&str, Js)>) -> Js {
         })
         .collect();
     js(ExprKind::Object(props))
-}
-
-/// `callee(args)` for a host function.
-fn host_call(callee: &str, args: Vec<Js>) -> Js {
-    let callee = js(ExprKind::Ident(callee.to_string()));
-    js(ExprKind::Call { callee: Box::new(callee), args })
 }
 
 impl Printer<'_> {
@@ -238,11 +224,10 @@ impl Printer<'_> {
         let Some(value) = value else { return };
         let implicit = post.globals.iter().find(|g| g.name == name).is_none_or(|g| g.implicit);
         let s = if implicit {
-            let target = Box::new(js(ExprKind::Ident(name.to_string())));
+            let target = Box::new(body::name(name));
             StmtKind::Expr(js(ExprKind::Assign { op: AssignOp::Assign, target, value: Box::new(value) }))
         } else {
-            let name = Ident { name: name.to_string(), span: at() };
-            StmtKind::Var(vec![VarDeclarator { name, init: Some(value), span: at() }])
+            StmtKind::Var(vec![VarDeclarator { name: ident(name), init: Some(value), span: at() }])
         };
         self.statement(JsStmt::new(s, at()));
     }
@@ -255,7 +240,7 @@ impl Printer<'_> {
             let Some(property) = g.name.strip_prefix(name).and_then(|p| p.strip_prefix('.')) else { continue };
             let value = match (g.name.as_str(), &g.initial) {
                 ("PostInfo.type", Expr::Number(t)) if *t == 0.0 || *t == 1.0 => {
-                    js(ExprKind::Ident(if *t == 1.0 { "POST_TYPE_TURN" } else { "POST_TYPE_MILL" }.into()))
+                    body::name(if *t == 1.0 { "POST_TYPE_TURN" } else { "POST_TYPE_MILL" })
                 }
                 (_, e) => body::literal(e)?,
             };
@@ -319,7 +304,7 @@ impl Printer<'_> {
         if format.sign == SignStyle::Always {
             props.push(("forceSign", js(ExprKind::Bool(true))));
         }
-        Some(host_call("createFormat", vec![object(props)]))
+        Some(call(name("createFormat"), vec![object(props)]))
     }
 
     /// `createVariable({prefix, force}, format)`, or a refusal.
@@ -347,14 +332,14 @@ impl Printer<'_> {
         }
         let format = self.post.formats.get(var.format.index());
         let format = match format.and_then(|f| f.name.clone()) {
-            Some(name) => js(ExprKind::Ident(name)),
+            Some(format) => name(&format),
             None if format.is_some() => self.create_format(var.format.index())?,
             None => {
                 self.refuse(codes::CV005.code, var.span, format!("`{}` has no format", var.name), "");
                 return None;
             }
         };
-        Some(host_call("createVariable", vec![object(props), format]))
+        Some(call(name("createVariable"), vec![object(props), format]))
     }
 
     /// The decimal mark of every format: the post's `decimalMark`.
