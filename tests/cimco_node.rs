@@ -9,6 +9,9 @@
 
 mod support;
 
+use std::path::{Path, PathBuf};
+
+use postc_ir::Post;
 use support::cimco::*;
 
 #[test]
@@ -20,7 +23,30 @@ fn node_prints_what_postc_prints() {
     eprintln!("cimco_node: referee is Node.js {version}");
     let dir = tempfile::tempdir().expect("a temporary folder");
     let mut failures = Vec::new();
-    let mut compared = 0;
+    let mut runs = Vec::new();
+    for post_path in posts() {
+        match compile(&post_path) {
+            Ok(post) => runs.push((post_path, post)),
+            Err(e) => failures.push(e),
+        }
+    }
+    let compared = referee(&runs, dir.path(), &mut failures);
+    assert!(failures.is_empty(), "{} pairs differ:\n\n{}", failures.len(), failures.join("\n\n"));
+    assert!(compared >= 10, "only {compared} pairs were compared");
+}
+
+/// A corpus post converted to its own dialect (`postc convert --to
+/// cimco`) is real JavaScript: Node.js runs it and prints, byte for byte,
+/// what postc prints for the source post.
+#[test]
+fn node_runs_converted_posts_as_postc_posts_their_sources() {
+    let Some(_) = node() else {
+        eprintln!("cimco_node: `node` is not installed; the Node.js referee is skipped");
+        return;
+    };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut failures = Vec::new();
+    let mut runs = Vec::new();
     for post_path in posts() {
         let post = match compile(&post_path) {
             Ok(p) => p,
@@ -29,21 +55,41 @@ fn node_prints_what_postc_prints() {
                 continue;
             }
         };
-        for toolpath in toolpaths(&post) {
-            let pair = format!("{}__{}", stem(&post_path), stem(&toolpath));
-            let jsonl = dir.path().join(format!("{}.jsonl", stem(&toolpath)));
+        match postc_backends::convert(&post, postc_backends::Target::Cimco) {
+            Ok(js) => {
+                let converted = dir.path().join(format!("{}.js", stem(&post_path)));
+                std::fs::write(&converted, js).expect("write the converted post");
+                runs.push((converted, post));
+            }
+            Err(d) => failures.push(format!("{}: refused: {}", post_path.display(), d[0].message)),
+        }
+    }
+    let compared = referee(&runs, dir.path(), &mut failures);
+    assert!(failures.is_empty(), "{} pairs differ:\n\n{}", failures.len(), failures.join("\n\n"));
+    assert!(compared >= 30, "only {compared} pairs were compared");
+}
+
+/// Runs each JavaScript post under Node.js over the toolpaths of its
+/// post, which postc posts: the number of programs that agree; each
+/// that does not is a failure.
+fn referee(runs: &[(PathBuf, Post)], dir: &Path, failures: &mut Vec<String>) -> usize {
+    let mut compared = 0;
+    for (js, post) in runs {
+        for toolpath in toolpaths(post) {
+            let pair = format!("{}__{}", stem(js), stem(&toolpath));
+            let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
             if let Err(e) = export_jsonl(&toolpath, &jsonl) {
                 failures.push(format!("{pair}: cannot export the toolpath: {e}"));
                 continue;
             }
-            let ours = match post_toolpath(&post, &toolpath) {
+            let ours = match post_toolpath(post, &toolpath) {
                 Ok(o) => o,
                 Err(e) => {
                     failures.push(format!("{pair}: {e}"));
                     continue;
                 }
             };
-            match run_node(&post_path, &jsonl, &[]) {
+            match run_node(js, &jsonl, &[]) {
                 Ok(theirs) if theirs == ours => compared += 1,
                 Ok(theirs) => {
                     failures.push(format!("{pair}: Node.js (-) and postc (+) differ\n{}", diff(&theirs, &ours)))
@@ -52,8 +98,7 @@ fn node_prints_what_postc_prints() {
             }
         }
     }
-    assert!(failures.is_empty(), "{} pairs differ:\n\n{}", failures.len(), failures.join("\n\n"));
-    assert!(compared >= 10, "only {compared} pairs were compared");
+    compared
 }
 
 /// JavaScript corners Node.js and postc once disagreed on (found while

@@ -603,3 +603,193 @@ fn comments_survive_conversion() {
         assert_eq!(body(&again), body(text), "{name} is not a fixed point");
     }
 }
+
+/// A CIMCO post with a native form of everything the lowering turns into
+/// native IR (a `switch` that falls through, look-up tables read with keys
+/// known only when the post runs and walked with `for ... in`, array
+/// locals, compound assignments and `++`, `do ... while` and `continue`,
+/// bitwise operators, `Math`, `typeof`, `toFixed`, text escapes) and
+/// formats and variables made by implicit globals and in `onInit`
+/// converts to itself: the converted post posts what the source posts,
+/// converting it again gives the same text, and Node.js runs it as postc
+/// does.
+#[test]
+fn cimco_native_forms_convert_to_themselves() {
+    const POST: &str = r#"decimalMark = ".";
+var linebreak = "\r\n";
+xyzFormat = createFormat({decimals: 3, scale: 0.5, forceSign: true});
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput;
+var codes = {a: "G0", b: "G1", 2: "G2"};
+var count = 0;
+var nothing = null;
+var label = "tab\there \"quoted\" \u00b0 end";
+total = 0;
+
+function onInit() {
+    yOutput = createVariable({prefix: "Y", force: true}, createFormat({decimals: 2, width: 4, zeropad: true}));
+}
+
+function words(a, b) {
+    var parts = [];
+    parts.push(a);
+    if (b != "") {
+        parts.push(b);
+    }
+    return parts.join(" ") + "/" + parts.length;
+}
+
+function kind(m) {
+    var out = "";
+    switch (m) {
+    case 0:
+        out += "r";
+    case 1:
+        out += "f";
+        break;
+    default:
+        out += "d";
+    }
+    return out;
+}
+
+function lookup(k) {
+    var s = "";
+    for (var key in codes) {
+        s += key + "=" + codes[key] + ";";
+    }
+    return s + (codes[k] || "none") + "M" + codes[k];
+}
+
+function maths(x, y) {
+    var n = 0;
+    for (var i = 0; i < 3; i++) {
+        n += i;
+    }
+    var r = Math.pow(x, 2) + Math.sqrt(Math.abs(y)) - -x * 2 / 3 % 5;
+    r = r | 0;
+    n++;
+    n--;
+    n *= 2;
+    var t = typeof x + (~n) + (x >> 1) + (x >>> 2) + (x << 1) + (x ^ 3) + (x & 1);
+    var z = -Infinity < x ? NaN : Infinity;
+    return r + " " + n + " " + t + " " + isNaN(z) + " " + (0.1 + 0.2).toFixed(4) + parseInt("12x") + parseFloat("1.5e3") + Number("7") + String(x).substring(0, 2) + label.length;
+}
+
+function loop(n) {
+    var i = 0;
+    var s = "";
+    do {
+        i++;
+        if (i == 2) {
+            s += "two";
+        } else {
+            if (i == 3) {
+                s += "three";
+            }
+        }
+    } while (i < n);
+    while (true) {
+        i--;
+        if (i < 0) {
+            break;
+        }
+        if (i == 1) {
+            continue;
+        }
+        s = s + i;
+    }
+    return s;
+}
+
+function onOpen(isClipboard) {
+    count++;
+    total = total + 1;
+    return "(" + words("a", "") + " " + words("b", "c") + " " + kind(0) + kind(1) + kind(5) + ")" + linebreak
+        + "(" + lookup("a") + lookup(2) + lookup("zz") + ")\n(" + maths(3, -16) + ")\n(" + loop(4) + ")\n" + label + "\n";
+}
+
+function onLinear(x, y, z, movement) {
+    var sx = xOutput.getLast();
+    return "G1" + xOutput.format(x) + yOutput.format(y) + xyzFormat.format(z - sx) + (nothing === null ? "" : "!") + "\n";
+}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    return "G" + (isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + "\n";
+}
+
+function onClose() {
+    return "M30 " + count + " " + total + "\n";
+}
+"#;
+    let scratch = tempfile::tempdir().expect("a scratch folder");
+    let (Some(source), diags) = compile_bytes(Path::new("forms.js"), POST.as_bytes(), None) else {
+        panic!("the post compiles")
+    };
+    assert!(diags.is_empty(), "{diags:?}");
+    assert!(
+        source.functions.iter().filter(|f| f.source.is_empty()).all(|f| matches!(f.body, postc_ir::Body::Native(_))),
+        "every function the test means is native"
+    );
+    let converted = postc_backends::convert(&source, Target::Cimco).unwrap_or_else(|d| panic!("{d:?}"));
+    let path = scratch.path().join("forms.js");
+    std::fs::write(&path, &converted).expect("write the converted post");
+    let (Some(back), back_diags) = compile_bytes(&path, &converted, None) else {
+        panic!("the converted post compiles:\n{}", String::from_utf8_lossy(&converted))
+    };
+    assert!(back_diags.is_empty(), "{back_diags:?}");
+    assert_eq!(postc_backends::convert(&back, Target::Cimco).ok(), Some(converted.clone()), "a fixed point");
+    let toolpath = corpus().join("toolpaths/cimco/mill.ron");
+    let (want, _) = post(&source, &toolpath);
+    let (got, _) = post(&back, &toolpath);
+    let want = want.expect("the source posts").concat();
+    assert_eq!(want, got.expect("the converted post posts").concat());
+    if support::cimco::node().is_some() {
+        let jsonl = scratch.path().join("mill.jsonl");
+        support::cimco::export_jsonl(&toolpath, &jsonl).expect("export the toolpath");
+        let node = support::cimco::run_node(&path, &jsonl, &[]).expect("Node.js runs the converted post");
+        assert_eq!(String::from_utf8_lossy(&node), String::from_utf8_lossy(&want));
+    }
+}
+
+/// What a CIMCO post with code cannot print as is refused with a
+/// diagnostic that names it, and nothing is written: handlers that are not
+/// the ones the CIMCO frontend derives from the functions (a RON post
+/// edited by hand), options no CNC-Calc setting sets, a script whose
+/// JavaScript was not kept.
+#[test]
+fn cimco_posts_that_cannot_print_are_refused() {
+    let path = corpus().join("posts/cimco/fanuc_mill.js");
+    let bytes = std::fs::read(&path).expect("read the post");
+    let (Some(source), _) = compile_bytes(Path::new("corpus/posts/cimco/fanuc_mill.js"), &bytes, None) else {
+        panic!("the post compiles")
+    };
+    let refusal = |post: &Post| -> Vec<String> {
+        match postc_backends::convert(post, Target::Cimco) {
+            Ok(_) => panic!("converted"),
+            Err(d) => d.iter().map(|d| format!("{} {}", d.code, d.message)).collect(),
+        }
+    };
+    let mut edited = source.clone();
+    let tool_change = edited
+        .handlers
+        .iter_mut()
+        .find(|h| h.key == postc_ir::HandlerKey::Section(postc_ir::Section::ToolChange))
+        .expect("a TOOLCHANGE handler");
+    tool_change.body.clear();
+    let d = refusal(&edited);
+    assert!(d.iter().any(|d| d.starts_with("CV006") && d.contains("the handler of TOOLCHANGE")), "{d:?}");
+
+    let mut edited = source.clone();
+    edited.options.forget_modal_at_toolpath_start = true;
+    edited.options.substitutions.push(postc_ir::post::Substitution { from: b"(".to_vec(), to: b"[".to_vec() });
+    let d = refusal(&edited);
+    assert!(d.iter().any(|d| d.starts_with("CV004") && d.contains("modal memory cleared")), "{d:?}");
+    assert!(d.iter().any(|d| d.starts_with("CV004") && d.contains("substitutions")), "{d:?}");
+
+    let mut edited = source.clone();
+    let comment = edited.functions.iter_mut().find(|f| f.name == "comment").expect("function comment");
+    comment.source.clear();
+    let d = refusal(&edited);
+    assert!(d.iter().any(|d| d.starts_with("CV002") && d.contains("`comment` runs as a script")), "{d:?}");
+}

@@ -33,7 +33,8 @@ pub enum Target {
     Vectric,
     /// A Vericut VcPost post.
     VcPost,
-    /// A CIMCO CNC-Calc JavaScript post (a section post).
+    /// A CIMCO CNC-Calc JavaScript post: a CIMCO post with code as itself,
+    /// another post driven by the kind of move as a section post.
     Cimco,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,

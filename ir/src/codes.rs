@@ -1353,6 +1353,12 @@ declare_codes! {
     /// two variables printing one label, or a label with no VAR name printed its own way.
     CV005: Error, "a variable the target cannot declare: set by code, a prefix with `|`, `]` or a line break, two variables printing one label, or a label with no VAR name printed its own way",
         fix = "Convert to RON, or change the variable in the source post.";
+    /// Converting a post to its own dialect printed text that its frontend compiles to another
+    /// post: the post is not one that frontend makes from any text (a RON post edited by hand:
+    /// handlers that are not the ones derived from its functions, a function body no source
+    /// writes). The message names what differs.
+    CV006: Error, "the printed post would compile to a different post: the post is not one its dialect's frontend makes (a RON post edited by hand?); the message names what differs",
+        fix = "Convert to RON, or convert the post the RON was made from.";
     /// The IR cannot be written as RON. This is a bug in postc.
     CV009: Error, "the IR cannot be written as RON (a postc bug)",
         fix = "Report it to postc's authors with the post.";

@@ -60,6 +60,11 @@ pub struct NumberFormat {
     /// `createFormat` call); `None` for formats a frontend made up.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub span: Option<Span>,
+    /// The name the post gave the format (CIMCO `var xyzFormat =
+    /// createFormat(...)`), which a backend prints; `None` for a format
+    /// made without one (inside a `createVariable` call, a Vectric `VAR`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
 }
 
 /// Which value a format rounds to its decimals, half away from zero.
@@ -98,6 +103,7 @@ impl Default for NumberFormat {
             prefix: String::new(),
             rounding: Rounding::Decimal,
             span: None,
+            name: None,
         }
     }
 }

@@ -118,7 +118,8 @@ pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle
 pub use id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 pub use post::{
     Body, CallList, Comment, CommentTarget, Dialect, Dispatch, Function, Global, Handler, HandlerKey, Modality,
-    OutputOptions, Post, PostInfo, Script, ScriptLanguage, ScriptReason, Section, TextEncoding, ValueSource, Variable,
+    OutputOptions, Post, PostInfo, Script, ScriptLanguage, ScriptReason, Section, SourceText, TextEncoding,
+    ValueSource, Variable,
 };
 pub use quantity::{Dimension, Quantity};
 pub use source::{MemoryLoader, NoFiles, SourceLoader};

@@ -364,6 +364,16 @@ pub enum Modality {
 pub struct Global {
     pub name: String,
     pub initial: Expr,
+    /// The post gives the global its values without declaring it (a
+    /// JavaScript global set by `x = ...` and no `var`): a backend of its
+    /// dialect declares it no more than the source did. Written out (RON)
+    /// only when it is `true`.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub implicit: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 /// A callable body.
@@ -386,6 +396,32 @@ pub struct Function {
     /// inspect` shows it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub why_script: Option<ScriptReason>,
+    /// The function as written in its source dialect, for a backend of that
+    /// dialect: kept where the IR does not say all of the function, so
+    /// that a post converted to its own dialect keeps it. A CIMCO function
+    /// that runs as a script or reads `arguments` (its IR functions are
+    /// the forms for each number of arguments) keeps its declaration; the
+    /// frontend's start-up function (`__postc_init`) keeps the post's
+    /// top-level statements in order, one each, with the globals they
+    /// declare; one the IR holds (a constant, a format) has no text.
+    /// Only the backend of the function's own dialect prints this text;
+    /// another backend refuses what the IR does not say (a script is
+    /// `CV002` there), since the text means nothing in its dialect.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub source: Vec<SourceText>,
+}
+
+/// A piece of a post as written in its dialect (see [`Function::source`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SourceText {
+    /// The text, as written; empty where the IR holds what the text said
+    /// (a constant, a format), which a backend prints from the IR there.
+    pub text: String,
+    /// The globals the text declares (`var a = 1, b;` declares `a` and
+    /// `b`), in order: a backend prints the text where the first of them
+    /// stands among the post's globals.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub declares: Vec<String>,
 }
 
 /// Why a function runs as a script rather than as native IR.

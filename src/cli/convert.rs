@@ -19,7 +19,7 @@ pub enum TargetArg {
     Vectric,
     /// A Vericut VcPost post (posts driven by APT words and application calls).
     Vcpost,
-    /// A CIMCO CNC-Calc JavaScript post (a section post, for posts driven by the kind of move).
+    /// A CIMCO CNC-Calc JavaScript post (a CIMCO post as itself; another post driven by the kind of move as a section post).
     Cimco,
     /// The post's IR as RON (postc post reads it back).
     Ron,

@@ -35,6 +35,7 @@ pub mod dump;
 pub mod host_names;
 pub mod lexer;
 mod lower;
+pub mod made;
 mod parser;
 pub mod print;
 pub mod sections;
@@ -48,6 +49,10 @@ use postc_ir::{Diagnostic, FileId, Span};
 pub use ast::Program;
 pub use lower::builtins;
 pub use lower::compile;
+/// How native code reads a value as a JavaScript number (`UnaryOp::Plus`
+/// around what is not surely one): a backend prints such a value plainly
+/// where the lowering adds it again.
+pub use lower::to_number;
 pub use parser::MAX_NESTING;
 pub use sniff::looks_like_cimco;
 

@@ -1,6 +1,7 @@
 //! Prints a syntax tree back as JavaScript.
 //!
-//! The output is normalised (four-space indentation, double-quoted
+//! The output is normalised (four-space indentation, a block's `{` on the
+//! line of its statement and `} else {` on one line, double-quoted
 //! strings, one statement per line, parentheses only where precedence
 //! needs them) and parses back to the same tree. The later lowering uses
 //! the same rules when it writes Rhai.
@@ -43,6 +44,9 @@ fn is_plain_name(name: &str) -> bool {
     chars.next().is_some_and(|c| c.is_alphabetic() || c == '_' || c == '$')
         && chars.all(|c| c.is_alphanumeric() || c == '_' || c == '$')
 }
+
+/// An object literal longer than this prints one property a line.
+const LONG_OBJECT: usize = 100;
 
 /// Binding strength of each expression form; higher binds tighter.
 fn precedence(e: &Expr) -> u8 {
@@ -122,15 +126,17 @@ impl Printer {
             }
             StmtKind::Empty => self.line(";"),
             StmtKind::If { branches, otherwise } => {
+                let mut open = false;
                 for (i, b) in branches.iter().enumerate() {
                     let cond = self.text(&b.cond, 0);
                     let keyword = if i == 0 { "if" } else { "else if" };
-                    self.line(&format!("{keyword} ({cond})"));
-                    self.nested(&b.body);
+                    open = self.clause(open, &format!("{keyword} ({cond})"), &b.body);
                 }
                 if let Some(o) = otherwise {
-                    self.line("else");
-                    self.nested(o);
+                    open = self.clause(open, "else", o);
+                }
+                if open {
+                    self.line("}");
                 }
             }
             StmtKind::Switch { discriminant, cases } => {
@@ -156,25 +162,21 @@ impl Printer {
                 };
                 let test = test.as_ref().map(|t| format!(" {}", self.text(t, 0))).unwrap_or_default();
                 let update = update.as_ref().map(|u| format!(" {}", self.text(u, 0))).unwrap_or_default();
-                self.line(&format!("for ({init};{test};{update})"));
-                self.nested(body);
+                self.block(&format!("for ({init};{test};{update})"), body);
             }
             StmtKind::ForIn { declared, name, object, body } => {
                 let var = if *declared { "var " } else { "" };
                 let object = self.text(object, 0);
-                self.line(&format!("for ({var}{} in {object})", name.name));
-                self.nested(body);
+                self.block(&format!("for ({var}{} in {object})", name.name), body);
             }
             StmtKind::While { cond, body } => {
                 let cond = self.text(cond, 0);
-                self.line(&format!("while ({cond})"));
-                self.nested(body);
+                self.block(&format!("while ({cond})"), body);
             }
             StmtKind::DoWhile { body, cond } => {
-                self.line("do");
-                self.nested(body);
+                let open = self.clause(false, "do", body);
                 let cond = self.text(cond, 0);
-                self.line(&format!("while ({cond});"));
+                self.line(&format!("{}while ({cond});", if open { "} " } else { "" }));
             }
             StmtKind::Break => self.line("break;"),
             StmtKind::Continue => self.line("continue;"),
@@ -204,14 +206,30 @@ impl Printer {
         }
     }
 
-    /// A loop or branch body: blocks stay at this level, others indent.
-    fn nested(&mut self, s: &Stmt) {
-        if matches!(s.kind, StmtKind::Block(_)) {
-            self.stmt(s);
+    /// A loop's head and body: a block opens on the head's line and
+    /// closes on a line of its own; another statement is indented below.
+    fn block(&mut self, head: &str, body: &Stmt) {
+        if self.clause(false, head, body) {
+            self.line("}");
+        }
+    }
+
+    /// One clause of a compound statement (`if (c)`, `else`, `do`): a
+    /// block opens on the clause's line, after the `}` of the clause
+    /// before when that one is still `open`, and is left open (the result
+    /// says so); another statement is indented below.
+    fn clause(&mut self, open: bool, head: &str, body: &Stmt) -> bool {
+        let head = if open { format!("}} {head}") } else { head.to_string() };
+        if let StmtKind::Block(stmts) = &body.kind {
+            self.line(&format!("{head} {{"));
+            self.body(stmts);
+            true
         } else {
+            self.line(&head);
             self.indent += 1;
-            self.stmt(s);
+            self.stmt(body);
             self.indent -= 1;
+            false
         }
     }
 
@@ -285,10 +303,18 @@ impl Printer {
                         format!("{key}: {}", self.text(&p.value, 1))
                     })
                     .collect();
-                if parts.is_empty() {
-                    self.out.push_str("{}");
+                let one_line = format!("{{{}}}", parts.join(", "));
+                if one_line.len() <= LONG_OBJECT {
+                    self.out.push_str(&one_line);
                 } else {
-                    let _ = write!(self.out, "{{ {} }}", parts.join(", "));
+                    // A long object (a post's `globals`) has one property a line.
+                    let pad = "    ".repeat(self.indent + 1);
+                    let _ = write!(
+                        self.out,
+                        "{{\n{pad}{}\n{}}}",
+                        parts.join(&format!(",\n{pad}")),
+                        "    ".repeat(self.indent)
+                    );
                 }
             }
             ExprKind::Function(f) => {

@@ -67,6 +67,7 @@ impl FormatSpec {
             prefix: String::new(),
             rounding: postc_ir::Rounding::Decimal,
             span: None,
+            name: None,
         }
     }
 }

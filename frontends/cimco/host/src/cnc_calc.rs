@@ -195,6 +195,7 @@ pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
         prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
         rounding: postc_ir::Rounding::Binary,
         span: None,
+        name: None,
     }
 }
 

@@ -9,14 +9,8 @@ use postc_ir::{Expr, FunctionId, Global, GlobalId};
 use super::consts::Const;
 use super::model::Model;
 
-/// Functions postc adds to every post.
-pub const INIT: &str = "__postc_init";
-pub const FEEDRATE: &str = crate::host_names::GET_FEEDRATE;
-pub const COMPENSATION: &str = "__postc_compensation";
-pub const DRILL_HEADER: &str = "__postc_drilling_header";
-pub const TURN_DRILL: &str = "__postc_drilling";
-/// The output variables `getFeedrate` formats through (per minute, per revolution).
-pub use crate::host_names::{FEED_REV_VAR, FEED_VAR};
+/// Functions and variables postc adds to every post.
+pub use crate::made::{COMPENSATION, DRILL_HEADER, FEED_REV_VAR, FEED_VAR, FEEDRATE, INIT, TURN_DRILL};
 /// Decimals of a feed per revolution (a feed per minute has one).
 pub const FEED_PER_REV_DECIMALS: u8 = 4;
 
@@ -52,7 +46,8 @@ impl Layout {
                 Some(c) => const_expr(c),
                 None => Expr::Null,
             };
-            l.add_global(&g.name, initial);
+            let i = l.add_global(&g.name, initial);
+            l.globals[i.index()].implicit = !g.declared;
         }
         for &id in &model.scopes.top_fns {
             let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
@@ -67,7 +62,7 @@ impl Layout {
             return i;
         }
         let i = GlobalId::new(self.globals.len() as u16);
-        self.globals.push(Global { name: name.to_string(), initial });
+        self.globals.push(Global { name: name.to_string(), initial, implicit: false });
         self.global_index.insert(name.to_string(), i);
         i
     }

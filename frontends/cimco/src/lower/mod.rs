@@ -37,7 +37,7 @@ use std::path::Path;
 
 use postc_ir::{
     Body, Diagnostic, Dialect, Expr, FormatId, Function, LocalId, Modality, NumberFormat, Post, Quantity, Script,
-    ScriptId, ScriptLanguage, SourceMap, Span, Stmt, ValueSource, VarId, Variable,
+    ScriptId, ScriptLanguage, SourceMap, SourceText, Span, Stmt, ValueSource, VarId, Variable,
 };
 
 use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
@@ -45,6 +45,7 @@ use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
 use consts::Const;
 use layout::Layout;
 use model::Model;
+pub use native::to_number;
 use setup::Setup;
 
 /// Compiles a CIMCO post: the IR and every diagnostic, sorted by position.
@@ -63,7 +64,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
         if crate::sections::is_section_post(&program) {
             crate::sections::lower(&program, &mut post, &mut diagnostics);
         } else {
-            lower(&program, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+            lower(&program, text, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
         }
     }
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
@@ -74,7 +75,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
 /// settings, its formats and variables ([`feed_variables`]), its functions
 /// as native IR where they can be ([`functions`]), the Rhai script of the
 /// rest ([`script`]), and the handlers with their fast path ([`handlers`]).
-fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
     let model = Model::build(program);
     let setup = Setup::build(program, &model, diags);
     warn::check(program, &model, &setup, diags);
@@ -101,12 +102,14 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     // arguments they are called with.
     for (id, n) in native::variadic::arities(&model, program) {
         let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
-        let f = layout.add_fn(&format!("{name}/{n}"));
+        let f = layout.add_fn(&crate::made::specialization(&name, n));
         layout.variadic.insert((id, n), f);
         layout.clones.push((id, n));
     }
     let init_stmts = init_statements(program, &model, &setup);
-    let functions = self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
+    let mut functions =
+        self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
+    keep_source(program, &model, &setup, text, &mut functions);
     let script = self::script(&model, &setup, &layout, whole, &init_stmts, own_feedrate);
     if let Some(d) = warn::check_script(&script, whole) {
         diags.push(d);
@@ -124,6 +127,82 @@ fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagno
     } else {
         // No function runs as a script: drop the script bodies of the glue.
         post.scripts.clear();
+    }
+}
+
+/// Keeps the JavaScript the IR does not say all of, for the CIMCO backend
+/// (`Function::source`): the declaration of each function that runs as a
+/// script, reads `arguments` (its IR functions are the forms for each
+/// number of arguments) or makes formats and variables when the post is
+/// compiled (`onInit`; the names of what it makes are its `declares`),
+/// and on `__postc_init` every top-level statement but the functions, in
+/// order, each with the globals it declares: as written, or with no text
+/// where the IR holds it (a constant, a format or variable made at compile
+/// time, a `globals` or `PostInfo` object of constants), so that a backend
+/// prints the IR's there.
+fn keep_source(program: &Program, model: &Model, setup: &Setup, text: &str, functions: &mut [Function]) {
+    let slice = |span: Span| text.get(span.start..span.end).unwrap_or_default().to_string();
+    for (function, &id) in functions.iter_mut().zip(&model.scopes.top_fns) {
+        let info = &model.scopes.funcs[id];
+        let Some(func) = info.func else { continue };
+        // The formats and variables `onInit` makes when the post is compiled.
+        let made: Vec<String> = func
+            .body
+            .iter()
+            .filter(|s| setup.done.contains(&s.span.start))
+            .filter_map(|s| match &s.kind {
+                StmtKind::Var(ds) => ds.first().map(|d| d.name.name.clone()),
+                StmtKind::Expr(e) => match &e.kind {
+                    ExprKind::Assign { target, .. } => match &target.kind {
+                        ExprKind::Ident(n) => Some(n.clone()),
+                        _ => None,
+                    },
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect();
+        if matches!(function.body, Body::Script(_)) || info.uses_arguments || !made.is_empty() {
+            function.source = vec![SourceText { text: slice(func.span), declares: made }];
+        }
+    }
+    let mut top = Vec::new();
+    for s in &program.body {
+        if matches!(s.kind, StmtKind::Function(_) | StmtKind::Empty) {
+            continue;
+        }
+        let mut declares = Vec::new();
+        scope::hoist_stmt(s, &mut declares, &mut Vec::new());
+        // Implicit globals whose first value this statement gives.
+        for g in &model.globals {
+            if !g.declared
+                && g.init.is_some_and(|e| s.span.start <= e.span.start && e.span.end <= s.span.end)
+                && !declares.contains(&g.name)
+            {
+                declares.push(g.name.clone());
+            }
+        }
+        // What the IR holds: formats and variables made at compile time,
+        // constants, and the `globals` and `PostInfo` objects of constants.
+        let mut held = setup.done.contains(&s.span.start)
+            || matches!(&s.kind, StmtKind::Var(ds)
+                if ds.iter().all(|d| d.init.is_some() && model.constant(&d.name.name).is_some()));
+        for &name in model::FLATTENED {
+            if model.flattened.contains(name)
+                && let Some(props) = model::object_literal_assignment(s, name)
+            {
+                let names: Vec<String> = props.iter().map(|p| format!("{name}.{}", p.key.name)).collect();
+                held = names.iter().all(|n| model.constant(n).is_some());
+                declares = vec![name.to_string()];
+                if !held {
+                    declares.extend(names);
+                }
+            }
+        }
+        top.push(SourceText { text: if held { String::new() } else { slice(s.span) }, declares });
+    }
+    if let Some(init) = functions.iter_mut().find(|f| f.name == layout::INIT) {
+        init.source = top;
     }
 }
 
@@ -214,10 +293,12 @@ fn functions(
             name: f.name.clone().unwrap_or_default(),
             params: f.params.clone(),
             slots,
-            locals: Vec::new(),
+            // Temporaries past the `var`s have no name.
+            locals: f.locals.iter().skip(f.params.len()).cloned().collect(),
             body,
             span: Some(func.span),
             why_script,
+            source: Vec::new(),
         });
     }
     if let Some((feed_var, feed_rev_var)) = feed {
@@ -252,6 +333,7 @@ fn functions(
             ]),
             span: None,
             why_script: None,
+            source: Vec::new(),
         });
     }
     let init_native = {
@@ -269,6 +351,7 @@ fn functions(
         },
         span: Some(whole),
         why_script: init_native.err().map(|w| postc_ir::ScriptReason { what: w.what, span: Some(w.span) }),
+        source: Vec::new(),
     });
     for (g, entry, _) in GLUE {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
@@ -286,6 +369,7 @@ fn functions(
             body,
             span,
             why_script,
+            source: Vec::new(),
         });
     }
     for (id, arity) in layout.clones.clone() {
@@ -309,13 +393,14 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
     n.arity = Some(arity);
     match n.lower_function(&func.body, func.span) {
         Ok(b) => Function {
-            name: format!("{name}/{arity}"),
+            name: crate::made::specialization(&name, arity),
             params,
             slots: n.slots,
             locals: Vec::new(),
             body: Body::Native(fold::stmts(b)),
             span: Some(func.span),
             why_script: None,
+            source: Vec::new(),
         },
         Err(w) => Function {
             // Runs the script of the same name.
@@ -329,6 +414,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
                 what: format!("{} (its form for {arity} arguments)", w.what),
                 span: Some(w.span),
             }),
+            source: Vec::new(),
         },
     }
 }

@@ -176,7 +176,7 @@ fn hoist<'a>(body: &'a [Stmt], vars: &mut Vec<String>, decls: &mut Vec<&'a Funct
     }
 }
 
-fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<String>, decls: &mut Vec<&'a Function>) {
+pub(super) fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<String>, decls: &mut Vec<&'a Function>) {
     let push = |name: &str, vars: &mut Vec<String>| {
         if !vars.iter().any(|v| v == name) {
             vars.push(name.to_string());

@@ -114,6 +114,11 @@ impl Setup {
         }
         let at = model.scopes.top_fn_names.get("onInit").map_or(0, |&i| model.scopes.top_fns[i]);
         if let Some(b) = self.create(value, model, env, at, mark, name, diags) {
+            if let Binding::Format(id) = b
+                && let Some(f) = self.formats.get_mut(id.index())
+            {
+                f.name = Some(name.to_string());
+            }
             self.bindings.insert(name.to_string(), b);
             self.done.insert(stmt.span.start);
         }
@@ -273,6 +278,7 @@ fn number_format(
         // A post is JavaScript: numbers round as its engine rounds them.
         rounding: postc_ir::Rounding::Binary,
         span: Some(span),
+        name: None,
     }
 }
 

@@ -200,6 +200,7 @@ impl Lowerer<'_> {
                 body: Body::Native(Vec::new()),
                 span: Some(p.header),
                 why_script: None,
+                source: Vec::new(),
             });
             let key = p.name.key();
             if !crate::token::is_valid_name(&p.name.text) {
@@ -388,7 +389,7 @@ impl Lowerer<'_> {
         let text = self.text_globals.get(&key).copied().unwrap_or(false)
             || crate::routines::runtime_variable(name) == Some(crate::routines::VarType::Text);
         let initial = initial.unwrap_or(if text { IrExpr::Text(String::new()) } else { IrExpr::Number(0.0) });
-        self.post.globals.push(Global { name: name.to_string(), initial });
+        self.post.globals.push(Global { name: name.to_string(), initial, implicit: false });
         self.globals.insert(key, GlobalInfo { index, constant, declared, first_read: None });
         index
     }

@@ -72,6 +72,7 @@ impl Lowerer<'_> {
                 body: Body::Native(body),
                 span: Some(p.header),
                 why_script: None,
+                source: Vec::new(),
             };
         }
     }

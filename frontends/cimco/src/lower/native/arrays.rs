@@ -95,7 +95,7 @@ impl Native<'_, '_> {
                 let (count, sep) = (self.arrays[&slot].count, self.arrays[&slot].sep.clone());
                 let w = self.local(slot);
                 let more = || {
-                    let more = Ir::Binary(IrBin::Gt, Box::new(Ir::Local(count)), Box::new(Ir::Number(0.0)));
+                    let more = Ir::Binary(IrBin::JsGt, Box::new(Ir::Local(count)), Box::new(Ir::Number(0.0)));
                     Ir::Choose(Box::new(more), Box::new(Ir::Text(sep.clone())), Box::new(Ir::Text("".into())))
                 };
                 match property.name.as_str() {

@@ -1,4 +1,4 @@
-//! The CIMCO backend: a post driven by the kind of each move (a Vectric
+//! Section posts: a post driven by the kind of each move (a Vectric
 //! post, a VcPost section post) printed as a CNC-Calc JavaScript *section
 //! post*, postc's extension (docs/cimco.md, "Section posts"): a
 //! `postcOptions` object for what Vectric's global statements say, one
@@ -9,8 +9,8 @@
 //!
 //! - a post driven by APT words or application calls is `CV001`;
 //! - code (functions, globals, statements run first, handlers that are not
-//!   output lines: CIMCO and VcPost posts) is `CV002`; printing CNC-Calc
-//!   functions from the IR is not built;
+//!   output lines: VcPost posts) is `CV002`; a CIMCO post's code prints as
+//!   the post it is (`code`), not as a section post;
 //! - output options no `postcOptions` key sets (a lathe, a chord
 //!   tolerance, a step budget, exact arcs, modal memory kept across
 //!   toolpaths) are `CV004`;
@@ -118,11 +118,7 @@ fn is_identifier(name: &str) -> bool {
 
 impl Printer<'_> {
     fn refuse(&mut self, code: &'static str, span: Option<Span>, message: String, why: &str) {
-        let mut d = Diagnostic::error(code, message).note(why.to_string());
-        if let Some(span) = span {
-            d = d.at(span, "here");
-        }
-        self.errors.push(d);
+        self.errors.push(super::refusal(code, span, message, why));
     }
 
     fn check_shape(&mut self) {
@@ -145,8 +141,8 @@ impl Printer<'_> {
             self.refuse(
                 codes::CV002.code,
                 h.span.or_else(|| post.functions.iter().find_map(|f| f.span)),
-                "this post's handlers are code; postc writes CIMCO posts whose sections are output lines only".into(),
-                "printing CNC-Calc functions from the IR is not built yet (docs/convert.md)",
+                "this post's handlers are code, which a section post has no form for".into(),
+                "a post of another dialect prints as a section post, whose sections are output lines; only a CIMCO post's code prints as CNC-Calc functions (docs/convert.md)",
             );
         }
         if !post.scripts.is_empty() {
@@ -174,8 +170,8 @@ impl Printer<'_> {
 
     fn header(&mut self) {
         let post = self.post;
-        let source = super::source_name(post).to_string();
-        let dialect = super::dialect_name(post.info.dialect);
+        let source = crate::source_name(post).to_string();
+        let dialect = crate::dialect_name(post.info.dialect);
         self.out.push_str(&format!("// Converted by postc from {source} ({dialect}).\n"));
         self.out.push_str(
             "// A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.\n\n",
@@ -186,7 +182,7 @@ impl Printer<'_> {
         let post = self.post;
         let (info, o) = (&post.info, &post.options);
         let mut keys: Vec<String> = Vec::new();
-        let source = super::source_name(post);
+        let source = crate::source_name(post);
         let stem = source.rsplit_once('.').map_or(source, |s| s.0);
         if !info.name.is_empty() && info.name != stem {
             keys.push(format!("name: {}", js_string(&info.name)));

@@ -1,0 +1,43 @@
+//! The CIMCO backend: a post printed as CNC-Calc JavaScript, in one of two
+//! forms.
+//!
+//! - A CIMCO post with code (its functions, globals, formats and output
+//!   variables) prints as the CNC-Calc post it is ([`code`]): the settings
+//!   and constants, one `createFormat` / `createVariable` per format and
+//!   variable under its source name, the top-level statements, and every
+//!   function of the post under its own name, native bodies printed from
+//!   the IR ([`body`]). What it prints is compiled back with the CIMCO
+//!   frontend and must give the same post ([`check`]).
+//! - A post driven by the kind of each move whose handlers are output lines
+//!   (a Vectric post, a VcPost section post) prints as a *section post*,
+//!   postc's extension of CNC-Calc ([`sections`]).
+//!
+//! Everything else is refused with a diagnostic per reason (`docs/convert.md`).
+
+mod body;
+mod check;
+mod code;
+mod sections;
+
+use postc_ir::{Diagnostic, Dialect, Post, Span};
+
+/// Prints `post` as a CNC-Calc post, or says why it cannot be one.
+pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
+        code::print(post)
+    } else {
+        sections::print(post)
+    }
+}
+
+/// A refusal: what cannot be printed, where the source has it, and why.
+fn refusal(code: &'static str, span: Option<Span>, message: String, why: &str) -> Diagnostic {
+    let mut d = Diagnostic::error(code, message);
+    if !why.is_empty() {
+        d = d.note(why.to_string());
+    }
+    if let Some(span) = span {
+        d = d.at(span, "here");
+    }
+    d
+}

@@ -1,0 +1,92 @@
+// Converted by postc from absolute_centre.js (CIMCO CNC-Calc JavaScript).
+
+var decimalMark = ",";
+var linebreak = "\r\n";
+var variableDelimeter = "";
+var tolerance = 0.01;
+var showSequenceNumbers = false;
+var sequenceNumberStart = 10;
+var sequenceNumberIncrement = 10;
+var useRadius = false;
+var absoluteArcCenter = true;
+var MillDrillingFields = [
+    {name: "Longhand drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: true, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false}
+];
+var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
+var gMotion = createVariable({prefix: "G"}, createFormat({width: 2, zeropad: true}));
+var compensation = "";
+var drill = null;
+
+function writeBlock(text) {
+    if (text == "") {
+        return "";
+    }
+    return text + "\r\n";
+}
+
+function onOpen(isClipboard) {
+    return writeBlock("%") + writeBlock("G90G17G71G90.1");
+}
+
+function onToolChange(tool, name, diameter, spindleSpeed) {
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    return writeBlock("T" + tool + "M06") + writeBlock("S" + spindleSpeed + "M03");
+}
+
+function onDwell(seconds) {
+    return writeBlock("G04K" + xyzFormat.format(seconds));
+}
+
+function onClose() {
+    return writeBlock("M05") + writeBlock("M30") + writeBlock("%");
+}
+
+function onCompensation(comp) {
+    compensation = comp == 1 ? "G41" : comp == 2 ? "G42" : "G40";
+}
+
+function getCompensation() {
+    var c = compensation;
+    compensation = "";
+    return c;
+}
+
+function onLinear(vx, vy, vz, movement) {
+    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + getFeedrate(movement));
+}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    var centre = iOutput.format(cx) + jOutput.format(cy);
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + centre + getFeedrate(movement));
+}
+
+function onDrillingHeader(drillHeader) {
+    drill = drillHeader;
+    return "";
+}
+
+function onDrillingPoint(x, y) {
+    var out = writeBlock(gMotion.format(0) + xOutput.format(x) + yOutput.format(y));
+    out += writeBlock(zOutput.format(drill.safeDistance));
+    out += writeBlock(gMotion.format(1) + zOutput.format(drill.endDepth) + "F" + Math.round(drill.plungingFeedrate));
+    if (drill.useBottomDwelling) {
+        out += writeBlock("G04K" + xyzFormat.format(drill.bottomDwelling));
+    }
+    return out + writeBlock(gMotion.format(0) + zOutput.format(drill.retractPlane));
+}
+
+function onDrillingFooter() {
+    drill = null;
+    return "";
+}

@@ -1,0 +1,206 @@
+// Converted by postc from fanuc_mill.js (CIMCO CNC-Calc JavaScript).
+
+var decimalMark = ".";
+var linebreak = "\n";
+var variableDelimeter = " ";
+var tolerance = 0.01;
+var showSequenceNumbers = true;
+var sequenceNumberStart = 10;
+var sequenceNumberIncrement = 10;
+var useRadius = false;
+var absoluteArcCenter = false;
+var MillDrillingFields = [
+    {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Peck drilling (G83)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: true, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Longhand peck drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: true,
+     firstDepth: true, degressionType: true, degression: true, peckingRetract: true,
+     minimumDepth: true, firstFeedrateFactor: true, upperDwell: true, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false}
+];
+var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
+var feedFormat = createFormat({});
+var toolFormat = createFormat({width: 2, zeropad: true});
+var rpmFormat = createFormat({});
+var dwellFormat = createFormat({decimals: 3});
+var gMotion = createVariable({prefix: " G"}, createFormat({}));
+var xOutput = createVariable({prefix: " X"}, xyzFormat);
+var yOutput = createVariable({prefix: " Y"}, xyzFormat);
+var zOutput = createVariable({prefix: " Z"}, xyzFormat);
+var iOutput = createVariable({prefix: " I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: " J", force: true}, xyzFormat);
+var sequenceNumber = sequenceNumberStart;
+var clipboard = false;
+var toolNumber = 0;
+var pendingCompensation = "";
+var drill = null;
+var cycleStarted = false;
+
+function writeBlock(text) {
+    if (text == "") {
+        return "";
+    }
+    text = "N" + sequenceNumber + text;
+    sequenceNumber += 10;
+    return text + "\n";
+}
+
+function feedWord(movement) {
+    var f = getFeedrate(movement);
+    if (f == "") {
+        return "";
+    }
+    return " " + f;
+}
+
+function comment(text) {
+    return writeBlock(variableDelimeter + "(" + String(text).replace(/[()]/g, "").toUpperCase() + ")");
+}
+
+function onInit() {
+    clipboard = false;
+}
+
+function onOpen(isClipboard) {
+    clipboard = isClipboard;
+    if (isClipboard) {
+        return "";
+    }
+    return "%\nO1000 (FANUC 0I-MF MILL)\n" + writeBlock(" G90 G94 G17 G21 G40 G80");
+}
+
+function onToolChange(tool, name, diameter, spindleSpeed) {
+    toolNumber = tool;
+    gMotion.reset();
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    return comment("T" + tool + " " + name + " D" + xyzFormat.format(diameter)) + writeBlock(" T" + toolFormat.format(tool) + " M6") + writeBlock(" S" + rpmFormat.format(spindleSpeed) + " M3");
+}
+
+function onComment(text) {
+    return comment(text);
+}
+
+function onDwell(seconds) {
+    return writeBlock(" G4 X" + dwellFormat.format(seconds));
+}
+
+function onClose() {
+    var out = writeBlock(" G80 G40") + writeBlock(" M5") + writeBlock(" G91 G28 Z0.");
+    if (!clipboard) {
+        out += writeBlock(" M30") + "%" + "\n";
+    }
+    return out;
+}
+
+function onCompensation(comp) {
+    if (comp == 1) {
+        pendingCompensation = " G41 D" + toolNumber;
+    } else if (comp == 2) {
+        pendingCompensation = " G42 D" + toolNumber;
+    } else {
+        pendingCompensation = " G40";
+    }
+}
+
+function getCompensation() {
+    var code = pendingCompensation;
+    pendingCompensation = "";
+    return code;
+}
+
+function onLinear(vx, vy, vz, movement) {
+    var xyz = xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz);
+    if (xyz == "") {
+        return "";
+    }
+    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xyz + feedWord(movement));
+}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    var sx = xOutput.getLast();
+    var sy = yOutput.getLast();
+    var centre = iOutput.format(cx - sx) + jOutput.format(cy - sy);
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + centre + feedWord(movement));
+}
+
+function onDrillingHeader(drillHeader) {
+    drill = drillHeader;
+    cycleStarted = false;
+    return "";
+}
+
+function holeBottom() {
+    return drill.endDepthIsAbsolute ? drill.endDepth : drill.referencePlane - Math.abs(drill.endDepth);
+}
+
+function rPlane() {
+    return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
+}
+
+function onDrillingPoint(x, y) {
+    if (drill.isLonghand) {
+        return longhandHole(x, y);
+    }
+    if (cycleStarted) {
+        return writeBlock(xOutput.format(x) + yOutput.format(y));
+    }
+    cycleStarted = true;
+    var peck = drill.name == "Peck drilling (G83)";
+    var block = " G98" + (peck ? " G83" : (drill.useBottomDwelling ? " G82" : " G81"))
+        + xOutput.format(x) + yOutput.format(y)
+        + " Z" + xyzFormat.format(holeBottom()) + " R" + xyzFormat.format(rPlane());
+    if (peck) {
+        block += " Q" + xyzFormat.format(drill.firstDepth);
+    }
+    if (drill.useBottomDwelling) {
+        block += " P" + Math.round(drill.bottomDwelling * 1000);
+    }
+    block += " F" + feedFormat.format(drill.plungingFeedrate);
+    return writeBlock(block);
+}
+
+function longhandHole(x, y) {
+    var top = rPlane();
+    var bottom = holeBottom();
+    var step = drill.firstDepth > 0 ? drill.firstDepth : top - bottom;
+    var depth = top;
+    var pecks = 0;
+    var out = writeBlock(gMotion.format(0) + xOutput.format(x) + yOutput.format(y));
+    out += writeBlock(zOutput.format(top));
+    do {
+        depth = Math.max(depth - step, bottom);
+        pecks++;
+        var feed = drill.plungingFeedrate;
+        if (pecks == 1 && drill.firstFeedrateFactor > 0) {
+            feed *= drill.firstFeedrateFactor;
+        }
+        out += writeBlock(gMotion.format(1) + zOutput.format(depth) + " F" + feedFormat.format(feed));
+        if (drill.useBottomDwelling && depth <= bottom) {
+            out += writeBlock(" G4 X" + dwellFormat.format(drill.bottomDwelling));
+        }
+        out += writeBlock(gMotion.format(0) + zOutput.format(depth < bottom + tolerance ? top : Math.min(top, depth + 1)));
+    } while (depth > bottom + tolerance);
+    out += writeBlock(gMotion.format(0) + zOutput.format(drill.retractPlane));
+    return out;
+}
+
+function onDrillingFooter() {
+    var out = "";
+    if (cycleStarted && !drill.isLonghand) {
+        out = writeBlock(" G80");
+        // G98 leaves the tool at the level it started the cycle from, and
+        // G80 cancels the motion mode: Z and G print again.
+        gMotion.reset();
+        zOutput.reset();
+    }
+    cycleStarted = false;
+    drill = null;
+    return out;
+}

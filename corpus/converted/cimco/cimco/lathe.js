@@ -1,0 +1,128 @@
+// Converted by postc from lathe.js (CIMCO CNC-Calc JavaScript).
+
+globals = {
+    decimalMark: ".",
+    linebreak: "\n",
+    variableDelimeter: " ",
+    tolerance: 0.01,
+    showSequenceNumbers: true,
+    sequenceNumberStart: 10,
+    sequenceNumberIncrement: 10,
+    useRadius: false,
+    absoluteArcCenter: false,
+    xDiameterProg: true,
+    iDiameterProg: false
+};
+PostInfo = {
+    title: "Fanuc lathe",
+    summary: "Diameter programming, G83 and longhand drilling on the axis",
+    author: "postc corpus",
+    version: "1.0",
+    type: POST_TYPE_TURN
+};
+TurnDrillingFields = [
+    {name: "Centre drill", isLonghand: false, plungingFeedrate: true, retractFeedrate: false, usePecking: false,
+     firstPeckDepth: false, subsequentPeckDepths: false, peckClearance: false, peckRetract: false,
+     useUpperDwell: false, uselowerDwell: true, pitch: false},
+    {name: "Peck drill (G74)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false, usePecking: true,
+     firstPeckDepth: true, subsequentPeckDepths: true, peckClearance: false, peckRetract: false,
+     useUpperDwell: false, uselowerDwell: true, pitch: false},
+    {name: "Longhand peck", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, usePecking: true,
+     firstPeckDepth: true, subsequentPeckDepths: true, peckClearance: true, peckRetract: true,
+     useUpperDwell: false, uselowerDwell: true, pitch: false}
+];
+var xOutput = createVariable({prefix: " X"}, createFormat({decimals: 3, scale: 2, forceDecimal: true}));
+var zOutput = createVariable({prefix: " Z"}, createFormat({decimals: 3, forceDecimal: true}));
+var iOutput = createVariable({prefix: " I", force: true}, createFormat({decimals: 3, forceDecimal: true}));
+var kOutput = createVariable({prefix: " K", force: true}, createFormat({decimals: 3, forceDecimal: true}));
+var gMotion = createVariable({prefix: " G"}, createFormat({}));
+var zFormat = createFormat({decimals: 3, forceDecimal: true});
+var toolFormat = createFormat({width: 2, zeropad: true});
+var sequence = globals.sequenceNumberStart;
+var compensation = "";
+
+function writeBlock(text) {
+    if (text == "") {
+        return "";
+    }
+    text = "N" + sequence + text;
+    sequence += 10;
+    return text + "\n";
+}
+
+function feedWord(movement) {
+    var f = getFeedrate(movement);
+    if (f == "") {
+        return "";
+    }
+    return " " + f;
+}
+
+function onOpen(isClipboard) {
+    return "%\nO2000 (" + "Fanuc lathe".toUpperCase() + ")" + "\n" + writeBlock(" G18 G21 G40 G99");
+}
+
+function onToolChange(tool, name, diameter, spindleSpeed) {
+    var t = toolFormat.format(tool);
+    gMotion.reset();
+    xOutput.reset();
+    zOutput.reset();
+    return writeBlock(" T" + t + t + " (" + name.toUpperCase() + ")") + writeBlock(" G97 S" + spindleSpeed + " M3");
+}
+
+function onDwell(seconds) {
+    return writeBlock(" G4 U" + zFormat.format(seconds));
+}
+
+function onClose() {
+    return writeBlock(" G28 U0. W0.") + writeBlock(" M5") + writeBlock(" M30") + "%" + "\n";
+}
+
+function onCompensation(comp) {
+    compensation = comp == 1 ? " G41" : comp == 2 ? " G42" : " G40";
+}
+
+function getCompensation() {
+    var c = compensation;
+    compensation = "";
+    return c;
+}
+
+function onLinear(vx, vz, movement) {
+    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + zOutput.format(vz) + feedWord(movement));
+}
+
+function onCircular(cx, cz, ex, ez, isCW, movement) {
+    var sx = xOutput.getLast();
+    var sz = zOutput.getLast();
+    var centre = iOutput.format(cx - sx) + kOutput.format(cz - sz);
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + zOutput.format(ez) + centre + feedWord(movement));
+}
+
+function onDrilling(drillHeader) {
+    var d = drillHeader;
+    var out = writeBlock(gMotion.format(0) + xOutput.format(0) + zOutput.format(d.safeDistance));
+    var feed = " F" + Math.round(d.plungingFeedrate * 100) / 100;
+    if (d.isLonghand) {
+        var depth = d.safeDistance;
+        var first = true;
+        while (depth > d.endDepth) {
+            depth = Math.max(depth - (first ? d.firstPeckDepth : d.subsequentPecksDepths), d.endDepth);
+            first = false;
+            out += writeBlock(gMotion.format(1) + zOutput.format(depth) + feed);
+            out += writeBlock(gMotion.format(0) + zOutput.format(d.safeDistance));
+            if (depth > d.endDepth) {
+                out += writeBlock(zOutput.format(depth + 0.5));
+            }
+        }
+    } else {
+        var q = d.usePecking ? " Q" + Math.round(d.firstPeckDepth * 1000) : "";
+        var p = d.useLowerDwell ? " P" + Math.round(d.lowerDwell * 1000) : "";
+        out += writeBlock(" G83" + zOutput.format(d.endDepth) + " R" + zFormat.format(d.safeDistance - d.startDepth) + q + p + feed);
+        out += writeBlock(" G80");
+        // G80 cancels the motion mode: G prints again.
+        gMotion.reset();
+        zOutput.format(d.safeDistance);
+    }
+    return out + writeBlock(gMotion.format(0) + zOutput.format(d.retractDistance));
+}

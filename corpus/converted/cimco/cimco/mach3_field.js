@@ -1,0 +1,197 @@
+// Converted by postc from mach3_field.js (CIMCO CNC-Calc JavaScript).
+
+var linebreak = "\n";
+var tolerance = 0.01;
+var useRadius = false;
+var absoluteArcCenter = false;
+var showSequenceNumbers = true;
+var sequenceNumberStart = 10;
+var sequenceNumberIncrement = 10;
+var MillDrillingFields = [
+    {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Peck drilling (G83)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: true, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false,
+     pitch: false, tappingSpeed: false, retractSpeed: false}
+];
+var xyzFormat = createFormat({decimals: 4});
+var feedFormat = createFormat({decimals: 1});
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var fOutput = createVariable({prefix: "F"}, feedFormat);
+var modalGroups = {plane: "G17", units: "G21", distance: "G90", arcDistance: "G91.1", feedMode: "G94",
+    compensation: "G40", lengthOffset: "G49", cycle: "G80"};
+
+function writeBlock() {
+    var text = "";
+    for (var i = 0; i < arguments.length; i++) {
+        if (arguments[i] != "") {
+            text = text == "" ? arguments[i] : text + " " + arguments[i];
+        }
+    }
+    if (text == "") {
+        return "";
+    }
+    if (showSequenceNumbers) {
+        text = "N" + blockNumber + " " + text;
+        blockNumber = blockNumber + sequenceNumberIncrement;
+    }
+    return text + linebreak;
+}
+
+function writeComment(text) {
+    return "(" + text.replace(/[()]/g, "") + ")" + linebreak;
+}
+
+function retract() {
+    var z = zOutput.format(safeZ());
+    return z == "" ? "" : writeBlock(motion("G0"), z);
+}
+
+function coolantCode(mode) {
+    var t1 = mode;
+    if (t1 === "flood") {
+        return "M8";
+    } else if (t1 === "mist") {
+        return "M7";
+    } else {
+        return "M9";
+    }
+}
+
+function motionCode(movement) {
+    var t1 = movement;
+    if (t1 === 0) {
+        return "G0";
+    } else if (t1 === 2 || t1 === 1) {
+        return "G1";
+    }
+    return "G1";
+}
+
+function feedValue(movement) {
+    return parseFloat(getFeedrate(movement).substring(1));
+}
+
+function motion(code) {
+    if (code == lastMotion) {
+        return "";
+    }
+    lastMotion = code;
+    return code;
+}
+
+function resetModals() {
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    fOutput.reset();
+    lastMotion = "";
+}
+
+function onOpen(isClipboard) {
+    blockNumber = sequenceNumberStart;
+    lastMotion = "";
+    compensation = "";
+    toolCount = 0;
+    var header = [];
+    for (var group in modalGroups) {
+        header.push(modalGroups[group]);
+    }
+    return "%" + linebreak + writeComment("MACH3 FIELD-STYLE POST, CIMCO CNC-CALC")
+        + writeBlock.apply(null, header);
+}
+
+function onToolChange(tool, name, diameter, spindleSpeed) {
+    var out = "";
+    if (toolCount > 0) {
+        out = writeBlock("M5", coolantCode("off")) + retract();
+    }
+    toolCount += 1;
+    resetModals();
+    return out + writeComment("T" + tool + " - " + name.toUpperCase()) + writeBlock("T" + tool, "M6") + writeBlock("G43", "H" + tool) + writeBlock("S" + spindleSpeed, "M3") + writeBlock(coolantCode("flood"));
+}
+
+function safeZ() {
+    return 25;
+}
+
+function onComment(text) {
+    return writeComment(text);
+}
+
+function onCompensation(comp) {
+    var t1 = comp;
+    if (t1 === 1) {
+        compensation = "G41";
+    } else if (t1 === 2) {
+        compensation = "G42";
+    } else {
+        compensation = "G40";
+    }
+}
+
+function takeCompensation() {
+    var c = compensation;
+    compensation = "";
+    return c;
+}
+
+function onLinear(vx, vy, vz, movement) {
+    var x = xOutput.format(vx);
+    var y = yOutput.format(vy);
+    var z = zOutput.format(vz);
+    if (x == "" && y == "" && z == "") {
+        return "";
+    }
+    var f = movement == 0 ? "" : fOutput.format(feedValue(movement));
+    return writeBlock(takeCompensation(), motion(motionCode(movement)), x, y, z, f);
+}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    var sx = xOutput.getLast();
+    var sy = yOutput.getLast();
+    xOutput.reset();
+    yOutput.reset();
+    return writeBlock(takeCompensation(), motion(isCW ? "G2" : "G3"), xOutput.format(ex), yOutput.format(ey), zOutput.format(ez), "I" + xyzFormat.format(cx - sx), "J" + xyzFormat.format(cy - sy), fOutput.format(feedValue(movement)));
+}
+
+function onDwell(seconds) {
+    return writeBlock("G4", "P" + seconds);
+}
+
+function onDrillingHeader(drillHeader) {
+    drill = drillHeader;
+    holes = 0;
+    return "";
+}
+
+function onDrillingPoint(x, y) {
+    holes = holes + 1;
+    if (holes > 1) {
+        return writeBlock(xOutput.format(x), yOutput.format(y));
+    }
+    var code = drill.firstDepth > 0 ? "G83" : drill.useBottomDwelling ? "G82" : "G81";
+    var z = zOutput.format(drill.retractPlane);
+    var out = z == "" ? "" : writeBlock(motion("G0"), z);
+    xOutput.reset();
+    yOutput.reset();
+    fOutput.reset();
+    return out + writeBlock("G98", code, xOutput.format(x), yOutput.format(y), "Z" + xyzFormat.format(drill.endDepth),
+        "R" + xyzFormat.format(drill.safeDistance), code == "G83" ? "Q" + xyzFormat.format(drill.firstDepth) : "",
+        code == "G82" ? "P" + drill.bottomDwelling : "", fOutput.format(drill.plungingFeedrate));
+}
+
+function onDrillingFooter() {
+    lastMotion = "";
+    zOutput.reset();
+    return holes > 0 ? writeBlock("G80") : "";
+}
+
+function onClose() {
+    return writeBlock("M5", coolantCode("off")) + retract() + writeBlock(motion("G0"), "X0", "Y0") + writeBlock("M30") + "%" + "\n";
+}

@@ -1,0 +1,211 @@
+// Converted by postc from okuma_field.js (CIMCO CNC-Calc JavaScript).
+
+var linebreak = "\n";
+var tolerance = 0.01;
+var useRadius = false;
+var absoluteArcCenter = false;
+var MillDrillingFields = [
+    {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Peck drilling (G83)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
+     firstDepth: true, degressionType: false, degression: false, peckingRetract: false,
+     minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
+     pitch: false, tappingSpeed: false, retractSpeed: false}
+];
+var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
+var feedFormat = createFormat({});
+var dwellFormat = createFormat({decimals: 2, forceDecimal: true});
+var xOutput = createVariable({prefix: " X"}, xyzFormat);
+var yOutput = createVariable({prefix: " Y"}, xyzFormat);
+var zOutput = createVariable({prefix: " Z"}, xyzFormat);
+var fOutput = createVariable({prefix: " F"}, feedFormat);
+var gMotion = createVariable({prefix: " G"}, createFormat({width: 2, zeropad: true}));
+var coolants = {flood: " M08", mist: " M07", off: " M09"};
+var cycles = {"Drilling (G81)": 81, "Peck drilling (G83)": 83};
+var commentWidth = 32;
+
+function writeBlock(text) {
+    if (text == "") {
+        return "";
+    }
+    return text.substring(1) + "\n";
+}
+
+function writeComment(text) {
+    var clean = text.toUpperCase().split("(").join("[").split(")").join("]");
+    var out = "";
+    var at = 0;
+    do {
+        var end = at + commentWidth;
+        if (end < clean.length) {
+            // The last blank at or before `end`.
+            var blank = clean.lastIndexOf(" ", end);
+            if (blank > at) {
+                end = blank;
+            }
+        }
+        out = out + "(" + clean.substring(at, end) + ")" + linebreak;
+        at = end;
+        while (clean.charAt(at) == " ") {
+            at = at + 1;
+        }
+    } while (at < clean.length);
+    return out;
+}
+
+function coolant(mode) {
+    var code;
+    var t2 = mode;
+    if (t2 === 1) {
+        code = " M08";
+    } else if (t2 === 2) {
+        code = " M07";
+    } else {
+        code = " M09";
+    }
+    return code;
+}
+
+function motionWord(movement) {
+    var t1 = movement;
+    if (t1 === 0) {
+        return gMotion.format(0);
+    } else {
+        return gMotion.format(1);
+    }
+}
+
+function feedWord(movement) {
+    if (movement == 0) {
+        return "";
+    }
+    return fOutput.format(parseFloat(getFeedrate(movement).substring(1)));
+}
+
+function lengthOffset() {
+    if (pendingLength == 0) {
+        return "";
+    }
+    var h = " G56 H" + pendingLength;
+    pendingLength = 0;
+    return h;
+}
+
+function onOpen(isClipboard) {
+    sequence = 0;
+    pendingLength = 0;
+    compensation = "";
+    activeTool = 0;
+    return writeBlock(" O1001") + writeComment("Okuma OSP-P field-style post for CIMCO CNC-Calc") + writeBlock(" G15 H1") + writeBlock(" G17 G21 G40 G80 G90 G94");
+}
+
+function onToolChange(tool, name, diameter, spindleSpeed) {
+    var out = "";
+    if (activeTool != 0) {
+        out = writeBlock(coolant(0) + " M05") + writeBlock(" G30 P1");
+    }
+    activeTool = tool;
+    sequence += 1;
+    pendingLength = tool;
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    fOutput.reset();
+    gMotion.reset();
+    out += writeComment(name + " D" + xyzFormat.format(diameter));
+    return out + writeBlock(" N" + sequence + " T" + tool + " M06") + writeBlock(" S" + Math.round(spindleSpeed) + " M03" + coolant(1));
+}
+
+function onComment(text) {
+    return writeComment(text);
+}
+
+function onCompensation(comp) {
+    if (comp == 1) {
+        compensation = " G41 D" + activeTool;
+    } else if (comp == 2) {
+        compensation = " G42 D" + activeTool;
+    } else {
+        compensation = " G40";
+    }
+}
+
+function getCompensation() {
+    var c = compensation;
+    compensation = "";
+    return c;
+}
+
+function onLinear(vx, vy, vz, movement) {
+    var x = xOutput.format(vx);
+    var y = yOutput.format(vy);
+    var z = zOutput.format(vz);
+    if (x + y + z == "") {
+        return "";
+    }
+    var h = z != "" ? lengthOffset() : "";
+    return writeBlock(getCompensation() + motionWord(movement) + h + x + y + z + feedWord(movement));
+}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    var sx = xOutput.getLast();
+    var sy = yOutput.getLast();
+    xOutput.reset();
+    yOutput.reset();
+    return writeBlock(getCompensation() + gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + " I" + xyzFormat.format(cx - sx) + " J" + xyzFormat.format(cy - sy) + feedWord(movement));
+}
+
+function onDwell(seconds) {
+    return writeBlock(" G04 F" + dwellFormat.format(seconds));
+}
+
+function onDrillingHeader(drillHeader) {
+    drill = drillHeader;
+    holeCount = 0;
+    return "";
+}
+
+function cycleCode() {
+    var code = cycles[drill.name];
+    if (code == undefined) {
+        code = drill.firstDepth > 0 ? 83 : 81;
+    }
+    if (code == 81 && drill.useBottomDwelling) {
+        code = 82;
+    }
+    return code;
+}
+
+function onDrillingPoint(x, y) {
+    holeCount = holeCount + 1;
+    if (holeCount > 1) {
+        return writeBlock(xOutput.format(x) + yOutput.format(y));
+    }
+    var code = cycleCode();
+    var block = " G" + code + xOutput.format(x) + yOutput.format(y) + " Z" + xyzFormat.format(drill.endDepth)
+        + " R" + xyzFormat.format(drill.safeDistance);
+    if (code == 83) {
+        block = block + " Q" + xyzFormat.format(drill.firstDepth);
+    }
+    if (drill.useBottomDwelling) {
+        block = block + " P" + dwellFormat.format(drill.bottomDwelling);
+    }
+    var approach = "";
+    if (pendingLength != 0) {
+        approach = writeBlock(gMotion.format(0) + lengthOffset() + zOutput.format(drill.retractPlane));
+    }
+    fOutput.reset();
+    return approach + writeBlock(" G71 Z" + xyzFormat.format(drill.retractPlane)) + writeBlock(block + fOutput.format(drill.plungingFeedrate));
+}
+
+function onDrillingFooter() {
+    gMotion.reset();
+    zOutput.reset();
+    return holeCount > 0 ? writeBlock(" G80") : "";
+}
+
+function onClose() {
+    return writeBlock(coolant(0) + " M05") + writeBlock(" G30 P1") + writeBlock(" M02");
+}
