@@ -41,8 +41,8 @@ use postc_ir::codes;
 use postc_ir::format::Rounding;
 use postc_ir::post::{BlockNumbers, Dispatch};
 use postc_ir::{
-    Body, Diagnostic, Expr, Justify, Modality, NumberFormat, OutputOptions, Padding, PointStyle, Post, SignStyle,
-    SourceText, Span, TextEncoding, ValueSource, WidthOf,
+    Body, CommentTarget, Diagnostic, Expr, FunctionId, Justify, Modality, NumberFormat, OutputOptions, Padding,
+    PointStyle, Post, SignStyle, SourceText, Span, TextEncoding, ValueSource, VarId, WidthOf,
 };
 
 use super::body::{self, at, call, ident, js, name};
@@ -159,12 +159,8 @@ impl Printer<'_> {
     }
 
     fn header(&mut self) {
-        let post = self.post;
-        self.out.push_str(&format!(
-            "// Converted by postc from {} ({}).\n\n",
-            crate::source_name(post),
-            crate::dialect_name(post.info.dialect)
-        ));
+        self.out.push_str(&super::header(self.post));
+        self.out.push('\n');
     }
 
     /// The top-level statements in the source's order: as written, or,
@@ -217,6 +213,7 @@ impl Printer<'_> {
         } else if let Some(f) = post.formats.iter().position(|f| f.name.as_deref() == Some(name)) {
             self.create_format(f)
         } else if let Some(v) = post.variables.iter().position(|v| v.name == name) {
+            self.out.push_str(&super::comment(post, &CommentTarget::Variable(VarId::new(v as u16))));
             self.create_variable(v)
         } else {
             post.globals.iter().find(|g| g.name == name).and_then(|g| body::literal(&g.initial))
@@ -354,10 +351,11 @@ impl Printer<'_> {
     /// Every function of the post, before postc's own.
     fn functions(&mut self, init: usize) {
         let post = self.post;
-        for f in &post.functions[..init] {
+        for (i, f) in post.functions[..init].iter().enumerate() {
             if is_postc_feedrate(post, f) {
                 continue;
             }
+            self.out.push_str(&super::comment(post, &CommentTarget::Function(FunctionId::new(i as u16))));
             if !f.source.is_empty() {
                 let text: Vec<&str> = f.source.iter().map(|s| s.text.trim_end()).collect();
                 self.out.push_str(&text.join("\n"));

@@ -19,7 +19,7 @@ mod check;
 mod code;
 mod sections;
 
-use postc_ir::{Diagnostic, Dialect, Post, Span};
+use postc_ir::{CommentTarget, Diagnostic, Dialect, Post, Span};
 
 /// Prints `post` as a CNC-Calc post, or says why it cannot be one.
 pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
@@ -40,4 +40,22 @@ fn refusal(code: &'static str, span: Option<Span>, message: String, why: &str) -
         d = d.at(span, "here");
     }
     d
+}
+
+/// The source's comment lines before `on`, as `//` lines (the CIMCO
+/// frontend reads them back: `postc_front_cimco::docs`).
+fn comment(post: &Post, on: &CommentTarget) -> String {
+    post.comment(on).iter().map(|l| format!("//{l}\n")).collect()
+}
+
+/// The conversion note, then the source's head (read back as the head, the
+/// note left out).
+fn header(post: &Post) -> String {
+    format!(
+        "// {}{} ({}).\n{}",
+        postc_ir::post::CONVERSION_NOTE,
+        crate::source_name(post),
+        crate::dialect_name(post.info.dialect),
+        comment(post, &CommentTarget::Post)
+    )
 }

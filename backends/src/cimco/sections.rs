@@ -26,8 +26,8 @@ use std::collections::HashSet;
 use postc_ir::codes;
 use postc_ir::post::{BlockNumbers, Dispatch, Section, WrappedAxis};
 use postc_ir::{
-    Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle, Post,
-    SignStyle, Span, Stmt, TextEncoding, Units, ValueSource, WidthOf,
+    CommentTarget, Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle,
+    Post, SignStyle, Span, Stmt, TextEncoding, Units, ValueSource, VarId, WidthOf,
 };
 
 /// Prints `post` as a CIMCO section post, or says why it cannot be one.
@@ -169,13 +169,8 @@ impl Printer<'_> {
     }
 
     fn header(&mut self) {
-        let post = self.post;
-        let source = crate::source_name(post).to_string();
-        let dialect = crate::dialect_name(post.info.dialect);
-        self.out.push_str(&format!("// Converted by postc from {source} ({dialect}).\n"));
-        self.out.push_str(
-            "// A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.\n\n",
-        );
+        self.out.push_str(&super::header(self.post));
+        self.out.push_str(&format!("//{}\n\n", postc_front_cimco::docs::SECTION_POST_NOTE));
     }
 
     fn options(&mut self) {
@@ -274,7 +269,7 @@ impl Printer<'_> {
     fn variables(&mut self) {
         let post = self.post;
         let mut taken: HashSet<String> = HashSet::new();
-        for v in &post.variables {
+        for (id, v) in post.variables.iter().enumerate() {
             let ValueSource::Quantity(q) = v.source else {
                 self.refuse(
                     codes::CV005.code,
@@ -303,6 +298,7 @@ impl Printer<'_> {
             }
             let format = post.formats.get(v.format.index()).cloned().unwrap_or_default();
             let format_keys = format_keys(&format);
+            self.out.push_str(&super::comment(post, &CommentTarget::Variable(VarId::new(id as u16))));
             self.out.push_str(&format!(
                 "var {name} = createVariable({{{}}}, createFormat({{{}}}));\n",
                 var_keys.join(", "),
@@ -356,6 +352,7 @@ impl Printer<'_> {
                 }
                 lines.push(parts.join(" + "));
             }
+            self.out.push_str(&super::comment(post, &CommentTarget::Handler(h.key.clone())));
             self.out.push_str(&format!("function {}() {{\n", section.name()));
             if lines.is_empty() {
                 self.out.push_str("    return \"\";\n");

@@ -31,6 +31,7 @@
 
 pub mod ast;
 pub mod diagnostics;
+pub mod docs;
 pub mod dump;
 pub mod host_names;
 pub mod lexer;

@@ -32,8 +32,8 @@ use postc_ir::post::{
     BlockNumbers, Dispatch, RotaryWrap, Section, SpindleSpeedRange, Substitution, TapeSplitting, WrappedAxis,
 };
 use postc_ir::{
-    Diagnostic, FormatId, Handler, HandlerKey, Justify, Modality, NumberFormat, Padding, Piece, PointStyle, Post,
-    Quantity, SignStyle, Span, Stmt, Units, ValueSource, VarId, Variable, WidthOf,
+    CommentTarget, Diagnostic, FormatId, Handler, HandlerKey, Justify, Modality, NumberFormat, Padding, Piece,
+    PointStyle, Post, Quantity, SignStyle, Span, Stmt, Units, ValueSource, VarId, Variable, WidthOf,
 };
 
 use crate::ast::{BinaryOp, Expr, ExprKind, Program, StmtKind};
@@ -54,7 +54,7 @@ pub fn is_section_post(program: &Program) -> bool {
 }
 
 /// Lowers a section post into `post`.
-pub fn lower(program: &Program, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+pub fn lower(program: &Program, text: &str, post: &mut Post, diags: &mut Vec<Diagnostic>) {
     post.info.dispatch = Dispatch::Sections;
     post.info.file_extension.clear();
     post.options.forget_modal_at_toolpath_start = true;
@@ -108,6 +108,32 @@ pub fn lower(program: &Program, post: &mut Post, diags: &mut Vec<Diagnostic>) {
             }
             StmtKind::Empty => {}
             _ => l.refuse(s.span, "a statement other than `var` and section functions"),
+        }
+    }
+    // The comments: the head, each variable's, and each section's (above
+    // its function).
+    let (head, floor) = crate::docs::head(text);
+    l.post.add_comment(CommentTarget::Post, head);
+    for s in &program.body {
+        let on = match &s.kind {
+            StmtKind::Function(f) => f
+                .name
+                .as_ref()
+                .and_then(|n| Section::from_name(&n.name))
+                .map(|section| CommentTarget::Handler(HandlerKey::Section(section)))
+                .filter(|on| matches!(on, CommentTarget::Handler(k) if l.post.handlers.iter().any(|h| &h.key == k))),
+            StmtKind::Var(ds) => match ds.as_slice() {
+                [d] => l
+                    .names
+                    .iter()
+                    .position(|n| n == &d.name.name)
+                    .map(|i| CommentTarget::Variable(VarId::new(i as u16))),
+                _ => None,
+            },
+            _ => None,
+        };
+        if let Some(on) = on {
+            l.post.add_comment(on, crate::docs::before(text, s.span.start, floor));
         }
     }
 }

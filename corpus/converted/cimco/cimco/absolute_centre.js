@@ -1,4 +1,9 @@
 // Converted by postc from absolute_centre.js (CIMCO CNC-Calc JavaScript).
+// ISO milling post with absolute arc centres (absoluteArcCenter) for CIMCO
+// CNC-Calc, written for the postc corpus from the CNC-Calc Post Processor
+// Manual: I and J are the centre's coordinates, not its offset from the
+// arc's start (controls such as the old Fagor and Heidenhain ISO modes, or
+// G90.1 on others). Blocks have no numbers and words no blanks.
 
 var decimalMark = ",";
 var linebreak = "\r\n";

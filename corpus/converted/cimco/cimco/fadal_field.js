@@ -1,4 +1,20 @@
 // Converted by postc from fadal_field.js (CIMCO CNC-Calc JavaScript).
+// Fadal VMC milling post (Format 2, mm) for CIMCO CNC-Calc, written for the
+// postc corpus in the style posts found in the field are written in: a
+// variadic writeBlock() that reads `arguments` and numbers the blocks N1,
+// N2, ...; radius arcs (useRadius) broken at every quadrant boundary, as
+// posts for older controls do, by a helper that collects the pieces in an
+// array of objects and a for loop that writes them; object-literal tables
+// for the cycle and coolant codes; a do ... while loop that pads the
+// program number.
+//
+// Fadal conventions: the program number on the first block (N1 O0042);
+// E1 selects fixture offset 1; the tool length offset H goes with the
+// first Z move after the tool change (Fadal applies H with a Z word);
+// G2/G3 with R (the host never passes an arc of 180 degrees or more, and
+// the post breaks each at 0, 90, 180 and 270 degrees); canned cycles
+// G81/G82/G83/G73 with G98, R absolute, Q the peck, P the dwell in
+// seconds; G4 P seconds; the end cancels H and E and returns home; M2.
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -59,6 +75,7 @@ function writeBlock() {
     return words.join(" ") + linebreak;
 }
 
+// Fadal comments cannot hold parentheses: they become brackets.
 function writeComment(text) {
     return writeBlock("(" + text.toUpperCase().split("(").join("[").split(")").join("]") + ")");
 }
@@ -134,10 +151,13 @@ function onLinear(vx, vy, vz, movement) {
     return writeBlock(takeCompensation(), gMotion.format(1), x, y, takeLengthOffset(z), z, feed());
 }
 
+// The quadrant index, 0 to 3, of a quarter turn counted from 0 degrees.
 function quadrantIndex(k) {
     return (k % 4 + 4) % 4;
 }
 
+// The pieces of an arc: its end, and before it every quadrant point the
+// arc passes, each {x, y, z}; Z moves with the angle (a helix).
 function arcPieces(cx, cy, sx, sy, sz, ex, ey, ez, isCW) {
     var r = Math.sqrt((sx - cx) * (sx - cx) + (sy - cy) * (sy - cy));
     var a0 = Math.atan2(sy - cy, sx - cx);

@@ -1,4 +1,13 @@
 // Converted by postc from fanuc_mill.js (CIMCO CNC-Calc JavaScript).
+// Fanuc 0i-MF milling post for CIMCO CNC-Calc, written for the postc corpus
+// from the CNC-Calc Post Processor Manual (May 2014): the Globals,
+// createFormat and createVariable, the framework and movement functions,
+// getFeedrate, onCompensation/getCompensation, and the milling drill cycles
+// (G81 and G83 canned, and a peck cycle written out move by move).
+//
+// Every word carries the variable delimiter in front of it, so a word that
+// is not output (a modal variable returning "") leaves no gap, and
+// writeBlock only puts the block number in front.
 
 var decimalMark = ".";
 var linebreak = "\n";
@@ -41,6 +50,7 @@ var pendingCompensation = "";
 var drill = null;
 var cycleStarted = false;
 
+// One NC line: the block number, then the words (each with its delimiter).
 function writeBlock(text) {
     if (text == "") {
         return "";
@@ -50,6 +60,7 @@ function writeBlock(text) {
     return text + "\n";
 }
 
+// The feed word of a movement, with its delimiter; nothing for rapids.
 function feedWord(movement) {
     var f = getFeedrate(movement);
     if (f == "") {
@@ -58,10 +69,12 @@ function feedWord(movement) {
     return " " + f;
 }
 
+// An operator comment; brackets inside would end it early.
 function comment(text) {
     return writeBlock(variableDelimeter + "(" + String(text).replace(/[()]/g, "").toUpperCase() + ")");
 }
 
+// -------------------------------------------------------------- Framework
 function onInit() {
     clipboard = false;
 }
@@ -99,6 +112,7 @@ function onClose() {
     return out;
 }
 
+// ------------------------------------------------------------ Compensation
 function onCompensation(comp) {
     if (comp == 1) {
         pendingCompensation = " G41 D" + toolNumber;
@@ -115,6 +129,7 @@ function getCompensation() {
     return code;
 }
 
+// --------------------------------------------------------------- Movement
 function onLinear(vx, vy, vz, movement) {
     var xyz = xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz);
     if (xyz == "") {
@@ -130,12 +145,14 @@ function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + centre + feedWord(movement));
 }
 
+// ---------------------------------------------------------------- Drilling
 function onDrillingHeader(drillHeader) {
     drill = drillHeader;
     cycleStarted = false;
     return "";
 }
 
+// The absolute Z of the bottom of the hole and of the R plane.
 function holeBottom() {
     return drill.endDepthIsAbsolute ? drill.endDepth : drill.referencePlane - Math.abs(drill.endDepth);
 }
@@ -166,6 +183,7 @@ function onDrillingPoint(x, y) {
     return writeBlock(block);
 }
 
+// A peck-drilled hole written out move by move.
 function longhandHole(x, y) {
     var top = rPlane();
     var bottom = holeBottom();

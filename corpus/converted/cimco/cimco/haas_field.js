@@ -1,4 +1,10 @@
 // Converted by postc from haas_field.js (CIMCO CNC-Calc JavaScript).
+// Haas VF milling post (mm) for CIMCO CNC-Calc, written for the postc corpus in
+// the style posts found in the field are written in: a variadic
+// writeBlock() that reads `arguments`, words gathered in an array and
+// joined with blanks, object literals as look-up tables (coolant codes,
+// cycle codes), a do ... while loop, and helpers that call helpers. Block
+// numbers N10, N20, ...; the program number is padded to four digits.
 
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
@@ -29,6 +35,7 @@ var cycleCodes = {"Drilling (G81)": "G81", "Peck drilling (G83)": "G83"};
 var drill;
 var cycleStarted = false;
 
+// Every argument that is not empty, joined by blanks, after a block number.
 function writeBlock() {
     var words = [];
     for (var i = 0; i < arguments.length; ++i) {
@@ -51,6 +58,7 @@ function writeComment(text) {
     return "(" + text.toUpperCase() + ")" + "\n";
 }
 
+// The program number, padded with zeros to four digits.
 function programName(n) {
     var s = "" + n;
     do {

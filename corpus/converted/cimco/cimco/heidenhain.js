@@ -1,4 +1,14 @@
 // Converted by postc from heidenhain.js (CIMCO CNC-Calc JavaScript).
+// Heidenhain TNC conversational post for CIMCO CNC-Calc, written for the
+// postc corpus from the CNC-Calc Post Processor Manual (May 2014).
+//
+// Straight moves are L blocks, arcs a CC block (the centre, absolute) and a
+// C block (the end point, DR+ counter-clockwise, DR- clockwise); a helix is
+// CC and CP with the angle turned (IPA) and the depth (IZ). Radius
+// compensation is RL, RR or R0 on the next L block. Every block carries its
+// number, starting at 0. Drilling uses CYCL DEF 200 (with the pecking depth
+// Q202 for peck drilling) and calls it with M99 at each hole; the longhand
+// cycle moves the tool.
 
 var decimalMark = ".";
 var linebreak = "\n";
@@ -46,6 +56,7 @@ function writeBlock(text) {
     return text + "\n";
 }
 
+// The feed of a movement: FMAX for rapids.
 function feed(movement) {
     if (movement == 0) {
         return " FMAX";
@@ -129,6 +140,8 @@ function onDrillingHeader(drillHeader) {
     return "";
 }
 
+// The drill header's heights as absolute Z (seed 002): the surface
+// (referencePlane), the R plane (safe distance) and the bottom of the hole.
 function rPlane() {
     return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
 }
@@ -137,6 +150,9 @@ function holeBottom() {
     return drill.endDepthIsAbsolute ? drill.endDepth : drill.referencePlane - Math.abs(drill.endDepth);
 }
 
+// Cycle 200 measures from the surface coordinate Q203: Q200 the set-up
+// clearance above it (the seed's safe distance), Q201 the depth below it,
+// Q204 the 2nd set-up clearance (the retract plane) above it.
 function cycleDefinition() {
     var surface = drill.referencePlane;
     var depth = holeBottom() - surface;

@@ -1,4 +1,10 @@
 // Converted by postc from iso_mill.js (CIMCO CNC-Calc JavaScript).
+// Generic ISO milling post for CIMCO CNC-Calc, written for the postc corpus
+// from the CNC-Calc Post Processor Manual (May 2014), in the newer style:
+// a `globals` object and `PostInfo`. Words are packed without blanks, block
+// numbers are off, and coordinates print at most three decimals with
+// trailing zeros dropped (X12.5, X40). Every drilling cycle is written out
+// as moves.
 
 globals = {
     decimalMark: ".",
@@ -94,6 +100,8 @@ function onDrillingHeader(drillHeader) {
     return "";
 }
 
+// Every hole as moves: over it, down to the R plane, pecks (or one feed
+// down), a dwell at the bottom, and back up to the retract plane.
 function onDrillingPoint(x, y) {
     var top = drill.safeDistance;
     var bottom = drill.endDepth;

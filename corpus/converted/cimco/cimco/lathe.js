@@ -1,4 +1,14 @@
 // Converted by postc from lathe.js (CIMCO CNC-Calc JavaScript).
+// Fanuc-style lathe post for CIMCO CNC-Calc, written for the postc corpus
+// from the CNC-Calc Post Processor Manual (May 2014): the `globals` object
+// with diameter programming, PostInfo of type POST_TYPE_TURN, the turning
+// onLinear(vx, vz, movement) and onCircular(cx, cz, ex, ez, isCW,
+// movement), and TurnDrillingFields with onDrilling.
+//
+// X values arrive as radii; xDiameterProg doubles them through the X
+// format's scale. Arc centres are I (radius, as iDiameterProg is false) and
+// K, relative to the arc's start. Drilling on the spindle axis uses G83
+// (with Q for pecking) or the moves of a longhand cycle.
 
 globals = {
     decimalMark: ".",
@@ -99,6 +109,7 @@ function onCircular(cx, cz, ex, ez, isCW, movement) {
     return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + zOutput.format(ez) + centre + feedWord(movement));
 }
 
+// Drilling on the spindle axis; X is zero.
 function onDrilling(drillHeader) {
     var d = drillHeader;
     var out = writeBlock(gMotion.format(0) + xOutput.format(0) + zOutput.format(d.safeDistance));

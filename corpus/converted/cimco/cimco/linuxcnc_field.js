@@ -1,4 +1,18 @@
 // Converted by postc from linuxcnc_field.js (CIMCO CNC-Calc JavaScript).
+// LinuxCNC milling post (mm, .ngc style) for CIMCO CNC-Calc, written for the
+// postc corpus in the style posts found in the field are written in: every
+// block is an array of words (push, length, indexing) handed to a variadic
+// writeBlock() with writeBlock.apply(null, words); writeBlock reads
+// `arguments`, drops empty words and joins the rest with blanks. Look-up
+// tables are object literals and arrays; comments are sanitised character
+// by character (LinuxCNC comments cannot nest parentheses); the longhand
+// peck cycle is a do ... while loop of G0/G1 pecks.
+//
+// The program is what LinuxCNC 2.x reads: % ... %, a safe-start block,
+// T M6 with G43 H, G64 path blending, G2/G3 with incremental I J (G91.1),
+// G98 canned cycles G81/G82/G83/G73 (P in seconds, Q the peck) with G80,
+// G4 P seconds, G41/G42/G40 taking the diameter from the tool table,
+// M2 at the end. No block numbers: LinuxCNC does not need them.
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -46,6 +60,7 @@ var currentTool = 0;
 var drill = null;
 var cycleActive = false;
 
+// The words that are not empty, joined by blanks; nothing without words.
 function writeBlock() {
     var words = [];
     for (var i = 0; i < arguments.length; i++) {
@@ -72,6 +87,7 @@ function writeComment(text) {
     return "(" + sanitize(text) + ")" + "\n";
 }
 
+// The feed word, only when it changed since the last one written.
 function feedWord(movement) {
     var f = getFeedrate(movement);
     if (f == "" || f == lastFeed) {
@@ -167,6 +183,7 @@ function rPlane() {
     return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
 }
 
+// A rapid to the retract plane, when the tool is not there.
 function retractBlock() {
     var z = zOutput.format(drill.retractPlane);
     if (z == "") {
@@ -175,6 +192,8 @@ function retractBlock() {
     return writeBlock(gMotionModal.format(0), z);
 }
 
+// A longhand peck cycle: feed down a peck at a time, rapid out to the R
+// plane and back down to just above the last depth.
 function longhandHole(x, y) {
     var bottom = holeBottom();
     var r = rPlane();

@@ -1,4 +1,16 @@
 // Converted by postc from mach3_field.js (CIMCO CNC-Calc JavaScript).
+// Mach3 Mill post (mm, .tap style) for CIMCO CNC-Calc, written for the postc
+// corpus in the style posts found in the field are written in: a variadic
+// writeBlock() that reads `arguments` and numbers the block, a header built
+// by a for ... in loop over an object literal of modal groups, switch
+// statements for the movement and the coolant, implicit globals (assigned
+// without `var`, as hobby-shop posts often do), and helpers calling helpers.
+//
+// The program is what Mach3 reads with its default settings: block numbers
+// N10, N20, ...; comments in parentheses; G91.1 (I and J relative to the
+// arc start, whatever the Mach3 "IJ mode" setting says); T M6 then G43 H;
+// G98 canned cycles G81/G82/G83 with G80; G4 P in seconds (Mach3's
+// default; machines set to milliseconds need P scaled by 1000); M30.
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -43,10 +55,12 @@ function writeBlock() {
     return text + linebreak;
 }
 
+// Mach3 ends a comment at the first ")": parentheses inside are dropped.
 function writeComment(text) {
     return "(" + text.replace(/[()]/g, "") + ")" + linebreak;
 }
 
+// A rapid up to the safe height, unless the tool is there.
 function retract() {
     var z = zOutput.format(safeZ());
     return z == "" ? "" : writeBlock(motion("G0"), z);

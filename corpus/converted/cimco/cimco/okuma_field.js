@@ -1,4 +1,19 @@
 // Converted by postc from okuma_field.js (CIMCO CNC-Calc JavaScript).
+// Okuma OSP-P milling post (mm) for CIMCO CNC-Calc, written for the postc
+// corpus in the style posts found in the field are written in: every block
+// is built by string concatenation and handed to a one-argument
+// writeBlock(); switch statements pick the motion and coolant codes;
+// implicit globals (assigned without `var`) carry the state; a do ... while
+// loop cuts long comments into the 32-character pieces the OSP screen
+// shows; object literals are the cycle and coolant tables.
+//
+// OSP conventions: the program name O1001; comments in parentheses; G15 H1
+// selects work coordinate system 1; a tool change is T M06 with the tool
+// length offset G56 H on the first Z move (Okuma's G56, not G43), and each
+// tool starts a numbered sequence N1, N2, ... (OSP restarts by sequence
+// name); fixed cycles G81/G82/G83 with R, Q and P (dwell in seconds) return
+// to the level G71 sets; dwell G04 F in seconds; G30 P1 sends the machine
+// to its zero point; M02 ends the program.
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -33,6 +48,9 @@ function writeBlock(text) {
     return text.substring(1) + "\n";
 }
 
+// Long comments become several comment blocks of at most commentWidth
+// characters, cut at a blank where there is one; parentheses inside a
+// comment become brackets.
 function writeComment(text) {
     var clean = text.toUpperCase().split("(").join("[").split(")").join("]");
     var out = "";
@@ -84,6 +102,7 @@ function feedWord(movement) {
     return fOutput.format(parseFloat(getFeedrate(movement).substring(1)));
 }
 
+// The tool length offset goes on the first Z move after a tool change.
 function lengthOffset() {
     if (pendingLength == 0) {
         return "";

@@ -1,4 +1,12 @@
 // Converted by postc from radius_arcs.js (CIMCO CNC-Calc JavaScript).
+// ISO milling post with radius arcs (useRadius) for CIMCO CNC-Calc,
+// written for the postc corpus from the CNC-Calc Post Processor Manual.
+//
+// With useRadius true the host never passes an arc of 180 degrees or more:
+// postc (and any CNC-Calc host following docs/cimco.md) splits such arcs,
+// full circles included, into equal parts, so R is always the positive
+// radius. The radius is the distance from the centre to the arc's start,
+// the last point written.
 
 var decimalMark = ".";
 var linebreak = "\n";

@@ -1,4 +1,11 @@
 // Converted by postc from siemens_840d.js (CIMCO CNC-Calc JavaScript).
+// Siemens Sinumerik 840D milling post for CIMCO CNC-Calc, written for the
+// postc corpus from the CNC-Calc Post Processor Manual (May 2014).
+//
+// ISO moves with 840D conventions: comments after ';', tools as T and D,
+// and the canned drilling cycles CYCLE81 (drilling) and CYCLE83 (deep hole
+// drilling) switched on modally with MCALL, which every hole position then
+// calls; a plain MCALL switches the cycle off. Longhand cycles move the tool.
 
 var decimalMark = ".";
 var linebreak = "\r\n";
@@ -80,6 +87,7 @@ function getCompensation() {
     return c;
 }
 
+// The feed word when the feed changed (the 840D keeps F modal).
 function feedWord(movement) {
     var f = getFeedrate(movement);
     if (f == "") {
@@ -109,6 +117,10 @@ function onDrillingHeader(drillHeader) {
     return "";
 }
 
+// CYCLE81(RTP, RFP, SDIS, DP, DPR) and CYCLE83(RTP, RFP, SDIS, DP, DPR,
+// FDEP, FDPR, DAM, DTB, DTS, FRF, VARI): the reference plane RFP is the
+// top of the hole (the seed's referencePlane) and the safety clearance SDIS
+// the R plane above it (the seed's safe distance).
 function rPlane() {
     return drill.safeDistanceIsAbsolute ? drill.safeDistance : drill.referencePlane + drill.safeDistance;
 }

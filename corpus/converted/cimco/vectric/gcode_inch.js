@@ -1,4 +1,16 @@
 // Converted by postc from gcode_inch.pp (Vectric).
+//================================================
+//
+// postc generic G-code post, inches.
+// The post `postc post TOOLPATH` uses when no post is named (it is
+// embedded in the binary). Output reads in LinuxCNC, Mach3/4, grbl and
+// most Fanuc-style controls: G20, absolute, XY plane, I/J relative arcs
+// with helical Z, G4 dwells, T/M6 tool changes with G43 length offsets.
+// Safe retracts go to machine Z zero (G53 G0 Z0), which is safe whether or
+// not the toolpath says where home is (APT CL files often do not).
+//
+//================================================
+// Parentheses end a G-code comment: print ( ) in names as { }.
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

@@ -1,4 +1,22 @@
 // Converted by postc from gcode_noarcs_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: G-code WITHOUT arcs, Fanuc style (mm).
+//
+// Demonstrates:
+// - a post without arc sections: every arc and helix is linearized into
+//   FEED_MOVE segments (equal angles, chord error 0.01 mm);
+// - FEED_RATE_CHANGE printing the feed on a block of its own, so the
+//   move sections carry no [F];
+// - the # flag: feeds print with a decimal point (F1200.);
+// - block numbers N10, N20, ... that wrap past LINE_NUMBER_MAXIMUM
+//   (990) back to LINE_NUMBER_START;
+// - SPINDLE_SPEED_RANGE: a spindle dial of steps 1..15 for 4500..18000 rpm;
+// - DWELL_MOVE in milliseconds through a multiplier of 1000;
+// - [TP], [TOOL_NOTES] and [TDIA] in the tool-change comments.
+//
+//================================================
+// Parentheses end a Fanuc comment: print ( ) in names as [ ].
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

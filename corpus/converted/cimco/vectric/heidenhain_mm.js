@@ -1,4 +1,23 @@
 // Converted by postc from heidenhain_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: Heidenhain conversational (plain language), mm.
+//
+// Demonstrates:
+// - a comma decimal separator and a forced sign: X+10,000 Y-5,000;
+// - conversational blocks: L X+10,000 Y+5,000 Z+5,000 R0 FMAX, arcs as
+//   CC (absolute centre, [IA] [JA]) then C ... DR- / DR+;
+// - the - flag (the tool diameter left justified in a width of 8) and
+//   the 0 flag (the previous tool zero padded to three digits);
+// - block numbers from 0 in steps of 1 on every block;
+// - MIN_ARC_RADIUS (arcs under 0.5 mm print as one L block) and
+//   MAX_ARC_RADIUS (arcs over 500 mm are linearized);
+// - arc sections without [Z], so helices are linearized;
+// - RETRACT_MOVE printing straight retracts at FMAX;
+// - DWELL_MOVE as cycle 9 with a comma decimal;
+// - F is modal, FMAX applies to its own block only.
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

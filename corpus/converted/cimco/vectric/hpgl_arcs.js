@@ -1,4 +1,12 @@
 // Converted by postc from hpgl_arcs.pp (Vectric).
+//================================================
+//
+// postc: a generic HPGL plotter post with arcs, in the style of the
+// "Generic HPGL_Arcs.pp" the Vectric guide names. 40 plotter units per mm.
+// [Angle] is the arc sweep in radians (counter-clockwise positive); the
+// multiplier turns it into the degrees HPGL AA wants.
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

@@ -1,4 +1,22 @@
 // Converted by postc from laser_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: grbl router with a laser (mm).
+//
+// Demonstrates:
+// - LASER_SUPPORT: JET_TOOL_ON (M4 with the power), JET_TOOL_POWER (a
+//   new S word when the power changes) and JET_TOOL_OFF (M5);
+// - [P] as S0..S1000 from a percentage through a multiplier of 10,
+//   printed only when it changes;
+// - SPINDLE_ON (M3 with [S]) after the header and each tool change,
+//   never for a jet tool;
+// - arc sections that print [Z]: helices print through them (G2/G3 with
+//   Z), there are no helical sections;
+// - FIRST_FEED_MOVE and FIRST_ arc sections carrying [F];
+// - no DWELL_MOVE section: dwells are left out (seed 001), with a
+//   warning when posting.
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

@@ -1,4 +1,37 @@
 // Converted by postc from noarcs_wrap_x_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: G-code WITHOUT arcs, Fanuc style (mm).
+//
+// Demonstrates:
+// - a post without arc sections: every arc and helix is linearized into
+//   FEED_MOVE segments (equal angles, chord error 0.01 mm);
+// - FEED_RATE_CHANGE printing the feed on a block of its own, so the
+//   move sections carry no [F];
+// - the # flag: feeds print with a decimal point (F1200.);
+// - block numbers N10, N20, ... that wrap past LINE_NUMBER_MAXIMUM
+//   (990) back to LINE_NUMBER_START;
+// - SPINDLE_SPEED_RANGE: a spindle dial of steps 1..15 for 4500..18000 rpm;
+// - DWELL_MOVE in milliseconds through a multiplier of 1000;
+// - [TP], [TOOL_NOTES] and [TDIA] in the tool-change comments.
+//
+//================================================
+// Parentheses end a Fanuc comment: print ( ) in names as [ ].
+//================================================
+//
+// postc corpus: gcode_noarcs_mm.pp with X wrapped onto a rotary B axis.
+//
+// Demonstrates:
+// - POST_BASE: every statement, VAR and section of gcode_noarcs_mm.pp
+//   (read from this folder), with the statements, VARs and sections
+//   below overriding them one by one;
+// - ROTARY_WRAP_X = "B": X values print as degrees of B around a
+//   cylinder of the job's wrap diameter (the X in [X]'s prefix becomes
+//   B), Y prints as a length; arcs are linearized in the unrolled plane
+//   first (the base has no arc sections);
+// - [WRAP_DIA] and [A] (the wrapped angle) in comments.
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

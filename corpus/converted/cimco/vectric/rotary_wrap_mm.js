@@ -1,4 +1,21 @@
 // Converted by postc from rotary_wrap_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: G-code with Y wrapped onto a rotary A axis, inverse-time
+// feeds (mm).
+//
+// Demonstrates:
+// - ROTARY_WRAP_Y = "-A": Y values print as degrees of A around a
+//   cylinder of the job's wrap diameter ([WRAP_DIA]), turning the other
+//   way ("-"); the Y prefix of [Y] becomes A;
+// - INVERSE_TIME_MODE with G93 and [FI]: every feed block carries
+//   F = 1 / minutes for that move;
+// - no arc sections (rotary machines rarely take arcs around A): arcs
+//   are linearized in the unrolled plane, then wrapped;
+// - [A] (the wrapped angle) in a comment.
+//
+//================================================
+// Names print in ( ) comments: parentheses in them print as braces.
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

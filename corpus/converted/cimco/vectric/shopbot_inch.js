@@ -1,4 +1,28 @@
 // Converted by postc from shopbot_inch.pp (Vectric).
+//================================================
+//
+// postc corpus: ShopBot OpenSBP with tool changes (inch).
+//
+// Demonstrates:
+// - OpenSBP commands: J2/J3/JZ jogs, M3 moves, CG arcs (1 clockwise,
+//   -1 counter-clockwise, centre relative to the start), MS speeds,
+//   TR spindle rpm, PAUSE for dwells, C6/C7/C9 custom cuts;
+// - speeds in inches per second: [F] [FC] [FP] through a multiplier of
+//   1/60;
+// - INITIAL_RAPID_MOVE: the first rapid after the header or a tool
+//   change jogs XY first, then Z;
+// - FEED_RATE_CHANGE setting MS when the feed changes (M3 carries no
+//   speed);
+// - arc sections without [Z]: helices are linearized;
+// - the seed 000 defaults of undeclared labels: [XMIN] [XMAX] [YMIN]
+//   [YMAX] [ZMIN] [ZMAX] print with a leading blank and 3 decimals;
+// - job data: [Z_ORIGIN] [XY_ORIGIN] [X_ORIGIN_POS] [Y_ORIGIN_POS]
+//   [SAFEZ] [ZLENGTH] [FILE_NOTES] [TOOLPATHS_OUTPUT] [DATE] [TIME]
+//   [PRODUCT];
+// - SUBSTITUTE with a [nn] code: commas in names print as ;.
+//
+//================================================
+// Commas separate OpenSBP arguments.
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

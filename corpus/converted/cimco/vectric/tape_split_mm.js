@@ -1,4 +1,21 @@
 // Converted by postc from tape_split_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: G-code ATC with arcs and helices, tape splitting (mm).
+//
+// Demonstrates:
+// - TAPE_SPLITTING = 40 15 "%s_%d.nc" 1 "YES": parts of at most 40
+//   blocks (plus the footer), split after a retract to safe Z once a
+//   part has 25, every part named name_1.nc, name_2.nc, ...
+//   (INDEX_ON_FIRST_FILE); each part starts with HEADER and SPINDLE_ON
+//   and ends with FOOTER; a program that fits is not split;
+// - all eight helical sections: FIRST_ and plain CW/CCW
+//   HELICAL_ARC_MOVE and HELICAL_ARC_PLUNGE_MOVE (the plunge ones at the
+//   plunge feed, marked with a comment);
+// - FIRST_PLUNGE_MOVE / PLUNGE_MOVE and FIRST_FEED_MOVE / FEED_MOVE;
+// - [TOOLPATH_NOTES], [TP_DIR], [TP_EXT], [PATHNAME], [FC], [FP].
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

@@ -1,4 +1,22 @@
 // Converted by postc from text_output_mm.pp (Vectric).
+//================================================
+//
+// postc corpus: a readable listing of every section (mm), in the manner
+// of Vectric's TextOutput_Arcs_mm.pp.
+//
+// Every section of both Vectric guides is here and names itself, so the
+// goldens of this post show which section the runtime chose for each
+// event (FIRST_ or plain, plunge, retract, helical, helical plunge, jet,
+// dwell, feed-rate change, ...). It prints every variable of both
+// guides' tables: the arc words [I] [J] [IA] [JA] [ArcStartX]
+// [ArcStartY] [ArcMidX] [ArcMidY] [ArcMidXI] [ArcMidYI] [Radius] and
+// [Angle] (in degrees through a multiplier), job and file data, [FI],
+// [P], [DWELL], [TDIA], [PRODUCT].
+//
+// Block numbers are zero padded to four digits (0 flag, width 4),
+// start at 1 and wrap after 9999.
+//
+//================================================
 // A section post: postc's extension of CNC-Calc (docs/cimco.md); CNC-Calc itself does not run it.
 
 var postcOptions = {

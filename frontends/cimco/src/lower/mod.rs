@@ -36,8 +36,8 @@ use postc_ir::codes;
 use std::path::Path;
 
 use postc_ir::{
-    Body, Diagnostic, Dialect, Expr, FormatId, Function, LocalId, Modality, NumberFormat, Post, Quantity, Script,
-    ScriptId, ScriptLanguage, SourceMap, SourceText, Span, Stmt, ValueSource, VarId, Variable,
+    Body, CommentTarget, Diagnostic, Dialect, Expr, FormatId, Function, FunctionId, LocalId, Modality, NumberFormat,
+    Post, Quantity, Script, ScriptId, ScriptLanguage, SourceMap, SourceText, Span, Stmt, ValueSource, VarId, Variable,
 };
 
 use crate::ast::{self, AssignOp, ExprKind, Ident, Program, StmtKind};
@@ -62,7 +62,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
         // A section post (postc's extension for converted Vectric posts) has a lowering of its own.
         if crate::sections::is_section_post(&program) {
-            crate::sections::lower(&program, &mut post, &mut diagnostics);
+            crate::sections::lower(&program, text, &mut post, &mut diagnostics);
         } else {
             lower(&program, text, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
         }
@@ -127,6 +127,35 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
     } else {
         // No function runs as a script: drop the script bodies of the glue.
         post.scripts.clear();
+    }
+    comments(program, text, post);
+}
+
+/// The source's comments the IR keeps ([`crate::docs`]): the file's head,
+/// and the `//` lines above each function and each `createVariable`.
+pub(crate) fn comments(program: &Program, text: &str, post: &mut Post) {
+    let (head, floor) = crate::docs::head(text);
+    post.add_comment(CommentTarget::Post, head);
+    for s in &program.body {
+        let on = match &s.kind {
+            StmtKind::Function(f) => f
+                .name
+                .as_ref()
+                .and_then(|n| post.functions.iter().position(|g| g.name == n.name))
+                .map(|i| CommentTarget::Function(FunctionId::new(i as u16))),
+            StmtKind::Var(ds) => match ds.as_slice() {
+                [d] => post
+                    .variables
+                    .iter()
+                    .position(|v| v.name == d.name.name)
+                    .map(|i| CommentTarget::Variable(VarId::new(i as u16))),
+                _ => None,
+            },
+            _ => None,
+        };
+        if let Some(on) = on {
+            post.add_comment(on, crate::docs::before(text, s.span.start, floor));
+        }
     }
 }
 
