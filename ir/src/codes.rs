@@ -148,7 +148,7 @@ pub const SECTIONS: &[Section] = &[
                 ),
                 ("LN013", "— (VcPost; the project's 5 posts and the 8 `postp` controllers: 0)"),
                 ("LN014", "3 (wrapped posts that keep arc sections: Snapmaker 4-axis, Carvera Wrap X2A, grbl rotary)"),
-                ("LN015", "— (CIMCO; the project's 8 posts: 0)"),
+                ("LN015", "— (CIMCO; the project's 12 posts: 0)"),
                 (
                     "LN016",
                     "— (VcPost; the project's 5 posts: 0; the 8 `postp` controllers: 0 after removing a dead `Function Two` it found in ACORNM and TORMM)",
