@@ -151,7 +151,7 @@ const GLUE: [(&str, &str, &str); 3] = [
 /// A top-level function of the post, by name.
 /// Whether a function is one CNC-Calc calls: its entry points are named
 /// `on` and a capital (`onOpen`, `onLinear`, `onDrillingPoint`, ...).
-fn is_entry_point(name: &str) -> bool {
+pub(crate) fn is_entry_point(name: &str) -> bool {
     name.strip_prefix("on").is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_uppercase()))
 }
 
@@ -208,15 +208,13 @@ fn functions(
 ) -> Vec<Function> {
     let arity = |name: &str| top_fn(model, name).map(|f| f.params.len());
     let mut functions: Vec<Function> = Vec::new();
-    for (i, &id) in model.scopes.top_fns.iter().enumerate() {
+    for &id in &model.scopes.top_fns {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
-        let entry = f.name.as_deref().is_some_and(is_entry_point);
-        let mut n = native::Native::new(model, setup, layout, id);
-        n.entry = entry;
-        let lowered = n.lower_function(&func.body, func.span);
-        let slots = n.slots;
-        let _ = i;
+        // A caller may have lowered it already (it returns an object).
+        native::lower_top(model, setup, layout, id);
+        let native::Lowered { body: lowered, slots } =
+            layout.lowered.remove(&id).expect("lower_top lowers every top-level function once");
         let (body, why_script) = match lowered {
             Ok(b) => (Body::Native(fold::stmts(b)), None),
             Err(w) => {
@@ -301,8 +299,12 @@ fn functions(
             why_script,
         });
     }
-    for (id, arity) in layout.clones.clone() {
+    // Lowering may add forms (`f.apply(null, words)` with a list whose
+    // length it found), and so may the forms themselves.
+    let mut next = 0;
+    while let Some(&(id, arity)) = layout.clones.get(next) {
         functions.push(specialization(model, setup, layout, id, arity));
+        next += 1;
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 
