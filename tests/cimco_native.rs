@@ -134,16 +134,162 @@ fn arrays_pushed_measured_and_joined_are_native() {
 }
 
 #[test]
+fn arrays_kept_in_slots_are_native() {
+    check(
+        "arrays_slots",
+        r#"
+        function pick(a, i) {
+            var w = [a, "b", 3];
+            return w[0] + w[i] + w.length + w.join("-") + w.join("+") + (w[7] === undefined) + "|" + w["1"]
+                + w[i + 1];
+        }
+        function onOpen(c) { return pick("x", 1) + pick("y", 0) + pick("z", 2) + linebreak; }
+        function onLinear(x, y, z, m) {
+            var axes = [xOutput.format(x), yOutput.format(y), zOutput.format(z)];
+            if (axes[0] == "" && axes[1] == "" && axes[2] == "") {
+                return "";
+            }
+            var words = [];
+            if (m == MOVEMENT_RAPID) {
+                words.push("G0");
+            }
+            for (var i = 0; i < axes.length; i++) {
+                words.push(axes[i]);
+            }
+            if (m != MOVEMENT_RAPID) {
+                words.push("F" + m);
+            }
+            words[words.length] = ";";
+            words[0] = words[0] + "";
+            return writeBlock.apply(null, words);
+        }
+        "#,
+        &["pick", "onOpen", "onLinear", "writeBlock/4", "writeBlock/5"],
+        &[],
+    );
+}
+
+#[test]
+fn arrays_filled_in_bounded_loops_are_native() {
+    check(
+        "arrays_loops",
+        r#"
+        function pieces(n) {
+            var list = [];
+            for (var k = 0; k < 5; k++) {
+                if (k >= n) {
+                    break;
+                }
+                list.push("P" + k);
+            }
+            list.push("end");
+            return list.length + ":" + list.join(",") + ":" + list[n] + ":" + list[0] + ":"
+                + writeBlock.apply(null, list);
+        }
+        function running(n) {
+            var seen = ["S"];
+            var s = "";
+            for (var k = 0; k < 4; k++) {
+                if (k > 0) {
+                    s += seen[k - 1] + seen.length + "|" + seen[k + 1] + ";";
+                }
+                if (k == n) {
+                    break;
+                }
+                seen.push("S" + k);
+            }
+            return s + "/" + seen.join(".") + "/" + seen[seen.length - 1];
+        }
+        function onOpen(c) { return pieces(0) + pieces(2) + pieces(7) + running(1) + running(9) + linebreak; }
+        function onLinear(x, y, z, m) {
+            var words = [xOutput.format(x)];
+            if (m == MOVEMENT_RAPID) {
+                words.push("G0");
+            }
+            if (y > 1) {
+                words.push(yOutput.format(y));
+            }
+            if (z < 0) {
+                words.push(zOutput.format(z));
+            }
+            if (m == MOVEMENT_PLUNGE) {
+                words.push("(plunge)");
+            }
+            return writeBlock.apply(null, words);
+        }
+        "#,
+        &["pieces", "running", "onOpen", "onLinear"],
+        &[],
+    );
+}
+
+#[test]
+fn objects_records_and_returned_objects_are_native() {
+    check(
+        "objects",
+        r#"
+        var quadrants = [{c: 1, s: 0}, {c: 0, s: 1}, {c: -1, s: 0}, {c: 0, s: -1}];
+        var codes = ["G40", "G41", "G42"];
+        var names = {first: {n: "one", v: 1}, second: {n: "two", v: 2}};
+        function corner(k, r) {
+            var q = quadrants[k % 4];
+            k = k + 1;
+            return {x: r * q.c, y: r * q.s, tag: codes[k % 3]};
+        }
+        function path(n) {
+            var pts = [];
+            for (var k = 0; k < 4; k++) {
+                if (k == n) {
+                    break;
+                }
+                pts.push(corner(k, 2));
+            }
+            return {count: pts.length, pts: pts, first: corner(1, 3)};
+        }
+        function onOpen(c) {
+            var p = path(3);
+            var none = path(0);
+            var all = path(9);
+            var s = "";
+            for (var i = 0; i < p.pts.length; i++) {
+                var e = p.pts[i];
+                s += e.tag + "(" + e.x + "," + e.y + ")";
+            }
+            var o = {a: "A", list: [1, 2], inner: {b: "B"}};
+            return s + p.count + p.first.x + p.first.tag + quadrants[2].c + quadrants.length + codes.length
+                + names.second.n + names["first"].v + o.a + o.list[1] + o.list.length + o.inner.b + "|" + o.missing
+                + writeBlock.apply(null, codes) + none.count + all.pts[3].tag + "|" + all.pts[4] + linebreak;
+        }
+        function onLinear(x, y, z, m) {
+            return writeBlock(codes[m == MOVEMENT_RAPID ? 0 : 1], xOutput.format(x));
+        }
+        "#,
+        &["corner", "path", "onOpen", "onLinear"],
+        &[],
+    );
+}
+
+#[test]
 fn arrays_used_otherwise_keep_the_script() {
     check(
         "arrays_other",
         r#"
-        function list(a) { var w = [a, "b"]; return w[0] + w.join("-") + w.join("+"); }
-        function onOpen(c) { return list("x") + linebreak; }
+        function grow(n) { var w = []; while (w.length < n) { w.push("x"); } return w[0]; }
+        function count(list) { return list.length; }
+        function pass(a) { var w = [a]; return count(w); }
+        function change(a) { var o = {v: a}; o.v = 2; return o.v; }
+        function reuse(a) { var w = [a]; w = [a, a]; return w[1]; }
+        function early(n) {
+            var w = [];
+            var s = "";
+            for (var k = 0; k < n && k < 3; k++) { s += w[0]; w.push(k); }
+            return s;
+        }
+        function onOpen(c) { return grow(3) + pass("a") + change(1) + reuse(4) + early(2) + linebreak; }
         function onLinear(x, y, z, m) { return writeBlock(xOutput.format(x)); }
         "#,
         &["onLinear"],
-        &["list"],
+        &["grow", "pass", "count", "change", "reuse", "early"],
     );
 }
 

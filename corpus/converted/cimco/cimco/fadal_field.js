@@ -114,7 +114,7 @@ function onOpen(isClipboard) {
 function onToolChange(tool, name, diameter, spindleSpeed) {
     var out = "";
     if (toolCount > 0) {
-        out = writeBlock("M9", "M5") + writeBlock("G0", "G90", "H0", "Z0.");
+        out = writeBlock(coolantCodes.off, "M5") + writeBlock("G0", "G90", "H0", "Z0.");
     }
     toolCount++;
     currentTool = tool;
@@ -124,7 +124,8 @@ function onToolChange(tool, name, diameter, spindleSpeed) {
     fOutput.reset();
     gMotion.reset();
     lengthOffset = "H" + tool;
-    return out + writeBlock("T" + tool, "M6") + writeComment(name) + writeBlock("G90", "E1", "S" + Math.round(spindleSpeed), "M3") + writeBlock("M8");
+    return out + writeBlock("T" + tool, "M6") + writeComment(name)
+        + writeBlock("G90", "E1", "S" + Math.round(spindleSpeed), "M3") + writeBlock(coolantCodes.flood);
 }
 
 function onComment(text) {
@@ -238,5 +239,6 @@ function onDrillingFooter() {
 }
 
 function onClose() {
-    return writeBlock("M9", "M5") + writeBlock("G0", "G90", "H0", "Z0.") + writeBlock("E0", "X0.", "Y0.") + writeBlock("M2") + "%" + "\n";
+    return writeBlock(coolantCodes.off, "M5") + writeBlock("G0", "G90", "H0", "Z0.") + writeBlock("E0", "X0.", "Y0.")
+        + writeBlock("M2") + "%" + linebreak;
 }

@@ -68,7 +68,7 @@ function programName(n) {
 }
 
 function coolant(kind) {
-    return kind === "off" ? "M09" : kind === "flood" ? "M08" : kind === "mist" ? "M07" : null;
+    return coolantCodes[kind];
 }
 
 function onOpen(isClipboard) {
@@ -106,7 +106,8 @@ function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var sx = xOutput.getLast();
     var sy = yOutput.getLast();
     gMotion.reset();
-    return writeBlock(isCW ? "G02" : "G03", xOutput.format(ex), yOutput.format(ey), zOutput.format(ez), "I" + xyzFormat.format(cx - sx), "J" + xyzFormat.format(cy - sy), fOutput.format(getFeedrateValue()));
+    return writeBlock(arcCodes[isCW ? 1 : 0], xOutput.format(ex), yOutput.format(ey), zOutput.format(ez),
+        "I" + xyzFormat.format(cx - sx), "J" + xyzFormat.format(cy - sy), fOutput.format(getFeedrateValue()));
 }
 
 function onDrillingHeader(drillHeader) {

@@ -118,13 +118,13 @@ function onOpen(isClipboard) {
 function onToolChange(tool, name, diameter, spindleSpeed) {
     var out = "";
     if (currentTool != 0) {
-        out += writeBlock("M9") + writeBlock("M5") + writeBlock("G53", "G0", "Z0");
+        out += writeBlock(coolantCodes.off) + writeBlock("M5") + writeBlock("G53", "G0", "Z0");
     }
     currentTool = tool;
     forgetPosition();
     out += writeComment("T" + tool + " " + name + " D=" + xyzFormat.format(diameter));
     out += writeBlock("T" + tool, "M6") + writeBlock("G43", "H" + tool);
-    out += writeBlock("S" + Math.round(spindleSpeed), "M3") + writeBlock("M8");
+    out += writeBlock("S" + Math.round(spindleSpeed), "M3") + writeBlock(coolantCodes.flood);
     return out;
 }
 
@@ -259,5 +259,6 @@ function onDrillingFooter() {
 }
 
 function onClose() {
-    return writeBlock("M9") + writeBlock("M5") + writeBlock("G53", "G0", "Z0") + writeBlock("M2") + "%" + "\n";
+    return writeBlock(coolantCodes.off) + writeBlock("M5") + writeBlock("G53", "G0", "Z0") + writeBlock("M2")
+        + "%" + linebreak;
 }

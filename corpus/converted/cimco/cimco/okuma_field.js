@@ -75,13 +75,16 @@ function writeComment(text) {
 
 function coolant(mode) {
     var code;
-    var t2 = mode;
-    if (t2 === 1) {
-        code = " M08";
-    } else if (t2 === 2) {
-        code = " M07";
-    } else {
-        code = " M09";
+    switch (mode) {
+    case 1:
+        code = coolants.flood;
+        break;
+    case 2:
+        code = coolants.mist;
+        break;
+    default:
+        code = coolants.off;
+        break;
     }
     return code;
 }

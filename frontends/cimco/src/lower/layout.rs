@@ -28,6 +28,16 @@ pub struct Layout {
     /// order they were added.
     pub variadic: HashMap<(super::scope::FnId, usize), FunctionId>,
     pub clones: Vec<(super::scope::FnId, usize)>,
+    /// Top-level functions lowered before their turn (a caller needed
+    /// what they return), until [`super::functions`] takes them.
+    pub lowered: HashMap<super::scope::FnId, super::native::Lowered>,
+    /// What each function that returns an object or array natively
+    /// returns, or why it cannot.
+    pub returns: HashMap<super::scope::FnId, Result<super::native::RetShape, super::native::Why>>,
+    /// Functions being lowered now.
+    pub lowering: std::collections::HashSet<super::scope::FnId>,
+    /// Functions whose IR is reshaped (`native::Native::reshaped`).
+    pub reshaped: std::collections::HashSet<super::scope::FnId>,
 }
 
 impl Layout {
@@ -40,6 +50,10 @@ impl Layout {
             fn_names: Vec::new(),
             variadic: HashMap::new(),
             clones: Vec::new(),
+            lowered: HashMap::new(),
+            returns: HashMap::new(),
+            lowering: Default::default(),
+            reshaped: Default::default(),
         };
         for g in &model.globals {
             let initial = match &g.constant {

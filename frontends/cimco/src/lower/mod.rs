@@ -109,7 +109,7 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
     let init_stmts = init_statements(program, &model, &setup);
     let mut functions =
         self::functions(&model, &setup, &mut layout, whole, &init_stmts, (!own_feedrate).then_some(feed));
-    keep_source(program, &model, &setup, text, &mut functions);
+    keep_source(program, &model, &setup, &layout, text, &mut functions);
     let script = self::script(&model, &setup, &layout, whole, &init_stmts, own_feedrate);
     if let Some(d) = warn::check_script(&script, whole) {
         diags.push(d);
@@ -162,14 +162,22 @@ pub(crate) fn comments(program: &Program, text: &str, post: &mut Post) {
 /// Keeps the JavaScript the IR does not say all of, for the CIMCO backend
 /// (`Function::source`): the declaration of each function that runs as a
 /// script, reads `arguments` (its IR functions are the forms for each
-/// number of arguments) or makes formats and variables when the post is
+/// number of arguments), keeps arrays or objects in slots (its IR is
+/// reshaped: `native::Native::reshaped`) or makes formats and variables when the post is
 /// compiled (`onInit`; the names of what it makes are its `declares`),
 /// and on `__postc_init` every top-level statement but the functions, in
 /// order, each with the globals it declares: as written, or with no text
 /// where the IR holds it (a constant, a format or variable made at compile
 /// time, a `globals` or `PostInfo` object of constants), so that a backend
 /// prints the IR's there.
-fn keep_source(program: &Program, model: &Model, setup: &Setup, text: &str, functions: &mut [Function]) {
+fn keep_source(
+    program: &Program,
+    model: &Model,
+    setup: &Setup,
+    layout: &Layout,
+    text: &str,
+    functions: &mut [Function],
+) {
     let slice = |span: Span| text.get(span.start..span.end).unwrap_or_default().to_string();
     for (function, &id) in functions.iter_mut().zip(&model.scopes.top_fns) {
         let info = &model.scopes.funcs[id];
@@ -191,7 +199,11 @@ fn keep_source(program: &Program, model: &Model, setup: &Setup, text: &str, func
                 _ => None,
             })
             .collect();
-        if matches!(function.body, Body::Script(_)) || info.uses_arguments || !made.is_empty() {
+        if matches!(function.body, Body::Script(_))
+            || info.uses_arguments
+            || layout.reshaped.contains(&id)
+            || !made.is_empty()
+        {
             function.source = vec![SourceText { text: slice(func.span), declares: made }];
         }
     }
@@ -246,7 +258,7 @@ const GLUE: [(&str, &str, &str); 3] = [
 /// A top-level function of the post, by name.
 /// Whether a function is one CNC-Calc calls: its entry points are named
 /// `on` and a capital (`onOpen`, `onLinear`, `onDrillingPoint`, ...).
-fn is_entry_point(name: &str) -> bool {
+pub(crate) fn is_entry_point(name: &str) -> bool {
     name.strip_prefix("on").is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_uppercase()))
 }
 
@@ -303,15 +315,16 @@ fn functions(
 ) -> Vec<Function> {
     let arity = |name: &str| top_fn(model, name).map(|f| f.params.len());
     let mut functions: Vec<Function> = Vec::new();
-    for (i, &id) in model.scopes.top_fns.iter().enumerate() {
+    for &id in &model.scopes.top_fns {
         let f = &model.scopes.funcs[id];
         let func = f.func.expect("top-level functions have a body");
-        let entry = f.name.as_deref().is_some_and(is_entry_point);
-        let mut n = native::Native::new(model, setup, layout, id);
-        n.entry = entry;
-        let lowered = n.lower_function(&func.body, func.span);
-        let slots = n.slots;
-        let _ = i;
+        // A caller may have lowered it already (it returns an object).
+        native::lower_top(model, setup, layout, id);
+        let native::Lowered { body: lowered, slots, reshaped } =
+            layout.lowered.remove(&id).expect("lower_top lowers every top-level function once");
+        if reshaped {
+            layout.reshaped.insert(id);
+        }
         let (body, why_script) = match lowered {
             Ok(b) => (Body::Native(fold::stmts(b)), None),
             Err(w) => {
@@ -401,8 +414,12 @@ fn functions(
             source: Vec::new(),
         });
     }
-    for (id, arity) in layout.clones.clone() {
+    // Lowering may add forms (`f.apply(null, words)` with a list whose
+    // length it found), and so may the forms themselves.
+    let mut next = 0;
+    while let Some(&(id, arity)) = layout.clones.get(next) {
         functions.push(specialization(model, setup, layout, id, arity));
+        next += 1;
     }
     debug_assert_eq!(functions.len(), layout.fn_names.len());
 

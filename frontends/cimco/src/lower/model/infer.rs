@@ -42,10 +42,24 @@ impl<'a> Model<'a> {
         was
     }
 
-    /// Whether an expression names a look-up table ([`super::tables`]).
-    fn is_table(&self, e: &Expr, at: FnId) -> bool {
-        matches!(&e.kind, ExprKind::Ident(n)
-            if matches!(self.scopes.resolve(n, at), Symbol::Global(g) if self.tables.contains_key(&g)))
+    /// The look-up table ([`super::tables`]) an expression names.
+    fn table_named(&self, e: &Expr, at: FnId) -> Option<&super::tables::Table> {
+        let ExprKind::Ident(n) = &e.kind else { return None };
+        match self.scopes.resolve(n, at) {
+            Symbol::Global(g) => self.tables.get(&g),
+            _ => None,
+        }
+    }
+
+    /// Whether an expression reads a record of a table (`quadrants[i]`).
+    fn is_record(&self, e: &Expr, at: FnId) -> bool {
+        match &e.kind {
+            ExprKind::Index { object, .. } => self.table_named(object, at).is_some_and(|t| t.has_records()),
+            ExprKind::Member { object, property } => {
+                property.name != "length" && self.table_named(object, at).is_some_and(|t| t.has_records())
+            }
+            _ => false,
+        }
     }
 
     /// Whether an expression can only be a number, text, boolean or nothing.
@@ -71,8 +85,14 @@ impl<'a> Model<'a> {
                     None => builtins::constant(&name).is_some() || !builtins::is_object(&name),
                 },
             },
-            // A look-up table's entries are constants.
-            ExprKind::Index { object, .. } | ExprKind::Member { object, .. } if self.is_table(object, at) => true,
+            // A look-up table's entries are constants, and so are the
+            // fields of its records.
+            ExprKind::Member { object, .. } if self.is_record(object, at) => true,
+            ExprKind::Index { object, .. } | ExprKind::Member { object, .. }
+                if self.table_named(object, at).is_some() =>
+            {
+                !self.is_record(e, at)
+            }
             ExprKind::Member { object, property } => {
                 if let Some(flat) = self.flattened_name(e) {
                     return self.global(&flat).is_none_or(|g| g.plain);

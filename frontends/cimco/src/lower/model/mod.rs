@@ -55,7 +55,7 @@ pub struct Model<'a> {
     /// Top-level functions that are assigned to (a name reused).
     pub fn_reassigned: HashSet<usize>,
     /// Look-up tables ([`tables`]): each one's entries.
-    pub tables: HashMap<String, Vec<(String, Const)>>,
+    pub tables: HashMap<String, tables::Table>,
 }
 
 impl<'a> Model<'a> {

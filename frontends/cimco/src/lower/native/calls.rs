@@ -54,6 +54,18 @@ impl Native<'_, '_> {
     }
 
     fn method(&mut self, object: &Expr, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
+        if self.agg_root(object) {
+            match self.agg_read(object)? {
+                Some(super::aggregates::Agg::Array(id)) if name == "join" => return self.join_aggregate(id, args, at),
+                Some(super::aggregates::Agg::Array(_)) => {
+                    return Err(why(at, format!("calls array method `.{name}()` where a value is needed")));
+                }
+                Some(super::aggregates::Agg::Object(_)) => {
+                    return Err(why(at, format!("calls method `.{name}()` of an object")));
+                }
+                _ => {}
+            }
+        }
         if let ExprKind::Ident(o) = &object.kind {
             if let Some(slot) = self.array_slot(o) {
                 return self.array_method(slot, o, name, at);
@@ -62,6 +74,7 @@ impl Native<'_, '_> {
                 && args.len() == 2
                 && let Symbol::TopFn(i) = self.model.scopes.resolve(o, self.at)
             {
+                self.reshaped = true;
                 return self.apply(i, o, args, at);
             }
             if o == "Math" && self.is_host("Math") {

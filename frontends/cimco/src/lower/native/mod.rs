@@ -18,12 +18,16 @@ use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir, LocalId, Place, Stmt as I
 
 use crate::ast::*;
 
+mod aggregates;
 mod arrays;
 mod calls;
 mod coalesce;
 mod flow;
 mod tables;
 pub mod variadic;
+
+use aggregates::Count;
+pub use aggregates::{Lowered, RetShape, lower_top};
 
 use super::builtins;
 use super::consts::Const;
@@ -52,6 +56,13 @@ pub struct Native<'c, 'a> {
     arrays: HashMap<usize, arrays::ArrayLocal>,
     /// Loop counters of a loop being unrolled, by slot: their value now.
     unrolled: HashMap<usize, f64>,
+    /// Arrays and objects kept in slots ([`aggregates`]).
+    aggs: aggregates::Aggs,
+    /// The function keeps an array or object in slots, reads a look-up
+    /// table or hands an array to `apply`: its IR says what it does but
+    /// not in the words it was written in, so the CIMCO backend prints it
+    /// from its source text (`Function::source`).
+    pub reshaped: bool,
 }
 
 /// Why a function cannot run as native IR: the first construct that has
@@ -111,6 +122,8 @@ impl<'c, 'a> Native<'c, 'a> {
             arity: None,
             arrays: HashMap::new(),
             unrolled: HashMap::new(),
+            aggs: aggregates::Aggs::default(),
+            reshaped: false,
         }
     }
 }
@@ -142,6 +155,8 @@ impl Native<'_, '_> {
         let params = info.params.len();
         self.slots = (info.locals.len() + self.arity.map_or(0, |n| n.saturating_sub(params))) as u16;
         self.find_arrays(body)?;
+        self.find_aggregates(body);
+        self.aggs.returns = self.returns_aggregate(body);
         let mut out = self.stmts(body)?;
         coalesce::copies(&mut out, self.arity.unwrap_or(params).max(params));
         Ok(out)
@@ -159,10 +174,117 @@ impl Native<'_, '_> {
 
     pub fn stmts(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
         let mut out = Vec::new();
-        for s in body {
-            self.stmt(s, &mut out)?;
-        }
+        self.scoped(|n| n.stmts_into(body, &mut out))?;
         Ok(out)
+    }
+
+    /// A list of statements into `out`. An `if` whose branches leave an
+    /// array with different counts may take the rest of the list into
+    /// each branch ([`aggregates`]).
+    fn stmts_into(&mut self, body: &[Stmt], out: &mut Vec<IrStmt>) -> R<()> {
+        for (i, s) in body.iter().enumerate() {
+            if let StmtKind::If { branches, otherwise } = &s.kind
+                && !self.setup.done.contains(&s.span.start)
+            {
+                if self.lower_if(branches, otherwise.as_deref(), &body[i + 1..], out)? {
+                    break;
+                }
+                continue;
+            }
+            self.stmt(s, out)?;
+        }
+        Ok(())
+    }
+
+    /// Whether the function returns an object or array through hidden
+    /// globals ([`aggregates`]): a top-level function that is not an
+    /// entry point, whose result may not be plain, and whose one `return`
+    /// is its last statement.
+    fn returns_aggregate(&self, body: &[Stmt]) -> bool {
+        if self.entry || self.arity.is_some() || self.model.returns_plain[self.at] {
+            return false;
+        }
+        if !self.model.scopes.top_fns.contains(&self.at) {
+            return false;
+        }
+        matches!(body.last().map(|s| &s.kind), Some(StmtKind::Return(Some(_)))) && count_returns(body) == 1
+    }
+
+    /// An `if`, with what the lowering knows of arrays joined where the
+    /// branches meet; `rest` (the statements after it) is lowered into each
+    /// branch instead when that keeps counts known. Returns whether it did.
+    fn lower_if(
+        &mut self,
+        branches: &[IfBranch],
+        otherwise: Option<&Stmt>,
+        rest: &[Stmt],
+        out: &mut Vec<IrStmt>,
+    ) -> R<bool> {
+        let before = self.counts();
+        let mut conds = Vec::new();
+        let mut bodies: Vec<Vec<IrStmt>> = Vec::new();
+        let mut ends: Vec<(Vec<Count>, bool)> = Vec::new();
+        for b in branches {
+            self.set_counts(&before);
+            conds.push(self.expr(&b.cond)?);
+            let body = self.scoped(|n| {
+                let mut v = Vec::new();
+                n.stmt(&b.body, &mut v)?;
+                Ok(v)
+            })?;
+            ends.push((self.counts(), leaves(&body)));
+            bodies.push(body);
+        }
+        self.set_counts(&before);
+        let other = match otherwise {
+            Some(o) => self.scoped(|n| {
+                let mut v = Vec::new();
+                n.stmt(o, &mut v)?;
+                Ok(v)
+            })?,
+            None => Vec::new(),
+        };
+        ends.push((self.counts(), leaves(&other)));
+        bodies.push(other);
+        let split = self.worth_splitting(&ends, &before, rest);
+        if split {
+            self.note_split();
+            for (i, body) in bodies.iter_mut().enumerate() {
+                if ends[i].1 {
+                    continue;
+                }
+                self.set_counts(&ends[i].0);
+                self.scoped(|n| n.stmts_into(rest, body))?;
+                ends[i] = (self.counts(), leaves(body));
+            }
+        }
+        {
+            let mut arms: Vec<(&mut Vec<IrStmt>, Vec<Count>, bool)> =
+                bodies.iter_mut().zip(ends).map(|(b, (c, l))| (b, c, l)).collect();
+            self.join(&mut arms, &before);
+        }
+        let otherwise = bodies.pop().unwrap_or_default();
+        out.push(IrStmt::If { branches: conds.into_iter().zip(bodies).collect(), otherwise });
+        Ok(split)
+    }
+
+    /// A loop's body, with the arrays it pushes to prepared
+    /// ([`aggregates`]): `passes` bounds how often it runs.
+    fn loop_body(
+        &mut self,
+        body: &Stmt,
+        passes: Option<usize>,
+        at: postc_ir::Span,
+        out: &mut Vec<IrStmt>,
+    ) -> R<Vec<IrStmt>> {
+        let after = self.enter_loop(&[body], passes, at, out)?;
+        let r = self.scoped(|n| {
+            let mut b = Vec::new();
+            n.stmt(body, &mut b)?;
+            Ok(b)
+        });
+        self.leave_loop(after);
+        r
     }
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IrStmt>) -> R<()> {
@@ -172,6 +294,15 @@ impl Native<'_, '_> {
         match &s.kind {
             StmtKind::Var(ds) => {
                 for d in ds {
+                    if let (Symbol::Local { func, slot }, Some(init)) =
+                        (self.model.scopes.resolve(&d.name.name, self.at), &d.init)
+                        && func == self.at
+                        && self.agg_candidate(slot)
+                    {
+                        self.reshaped = true;
+                        self.agg_declare(slot, init, out)?;
+                        continue;
+                    }
                     if let Some(slot) = self.array_slot(&d.name.name) {
                         if let Some(init) = &d.init {
                             self.array_assign(slot, init, out)?;
@@ -184,37 +315,27 @@ impl Native<'_, '_> {
                     }
                 }
             }
-            StmtKind::Expr(e) => out.push(self.expr_stmt(e)?),
-            StmtKind::Block(b) => {
-                for s in b {
-                    self.stmt(s, out)?;
+            StmtKind::Expr(e) => {
+                if self.agg_stmt(e, out)? {
+                    self.reshaped = true;
+                } else {
+                    out.push(self.expr_stmt(e)?)
                 }
             }
+            StmtKind::Block(b) => self.scoped(|n| n.stmts_into(b, out))?,
             StmtKind::Empty => {}
             StmtKind::If { branches, otherwise } => {
-                let mut bs = Vec::new();
-                for b in branches {
-                    let mut body = Vec::new();
-                    self.stmt(&b.body, &mut body)?;
-                    bs.push((self.expr(&b.cond)?, body));
-                }
-                let mut other = Vec::new();
-                if let Some(o) = otherwise {
-                    self.stmt(o, &mut other)?;
-                }
-                out.push(IrStmt::If { branches: bs, otherwise: other });
+                self.lower_if(branches, otherwise.as_deref(), &[], out)?;
             }
             StmtKind::While { cond, body } => {
-                let mut b = Vec::new();
-                self.stmt(body, &mut b)?;
+                let b = self.loop_body(body, None, s.span, out)?;
                 out.push(IrStmt::While { cond: self.expr(cond)?, body: b, span: Some(s.span) });
             }
             StmtKind::DoWhile { body, cond } => {
                 if has_continue(body) {
                     return Err(why(s.span, "`continue` in a `do ... while` loop"));
                 }
-                let mut b = Vec::new();
-                self.stmt(body, &mut b)?;
+                let mut b = self.loop_body(body, None, s.span, out)?;
                 let c = self.expr(cond)?;
                 b.push(IrStmt::If {
                     branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])],
@@ -237,8 +358,8 @@ impl Native<'_, '_> {
                     Some(ForInit::Expr(e)) => out.push(self.expr_stmt(e)?),
                     None => {}
                 }
-                let mut b = Vec::new();
-                self.stmt(body, &mut b)?;
+                let passes = self.passes(init, test, update, body);
+                let mut b = self.loop_body(body, passes, s.span, out)?;
                 if let Some(u) = update {
                     b.push(self.expr_stmt(u)?);
                 }
@@ -249,20 +370,35 @@ impl Native<'_, '_> {
                 out.push(IrStmt::While { cond, body: b, span: Some(s.span) });
             }
             StmtKind::Switch { discriminant, cases } => {
+                let before = self.counts();
                 let mut simple = Vec::new();
                 let slots = self.slots;
                 match self.switch(discriminant, cases, &mut simple) {
                     Ok(()) => out.extend(simple),
                     Err(w) if w.what.contains("falls through") || w.what.contains("`default` is not the last") => {
                         self.slots = slots;
+                        self.set_counts(&before);
                         self.switch_fallthrough(discriminant, cases, s.span, out)?
                     }
                     Err(w) => return Err(w),
                 }
+                if self.counts()[..before.len()] != before[..] {
+                    return Err(why(s.span, "adds to an array inside a `switch`"));
+                }
             }
-            StmtKind::ForIn { declared: _, name, object, body } => self.for_in(name, object, body, s.span, out)?,
+            StmtKind::ForIn { declared: _, name, object, body } => {
+                let before = self.counts();
+                self.for_in(name, object, body, s.span, out)?;
+                if breaks_switch(body) && self.counts()[..before.len()] != before[..] {
+                    return Err(why(s.span, "adds to an array in a `for ... in` loop that may `break`"));
+                }
+            }
             StmtKind::Break => out.push(IrStmt::Break),
             StmtKind::Continue => out.push(IrStmt::Continue),
+            StmtKind::Return(Some(e)) if self.aggs.returns => {
+                self.reshaped = true;
+                self.agg_return(e, out)?
+            }
             StmtKind::Return(e) => {
                 if self.entry {
                     out.push(IrStmt::Origin(s.span));
@@ -406,9 +542,10 @@ impl Native<'_, '_> {
         // Its other locals hold what native code assigns them: an
         // assignment of anything else has no native form itself.
         if self.arity.is_some() {
-            return !self.arrays.contains_key(&slot);
+            return !self.arrays.contains_key(&slot) && !self.aggs_bound(slot);
         }
-        self.model.local_plain.get(self.at).and_then(|l| l.get(slot)).copied().unwrap_or(false)
+        self.aggs.plain.contains(&slot)
+            || self.model.local_plain.get(self.at).and_then(|l| l.get(slot)).copied().unwrap_or(false)
     }
 
     /// The value of a global by name, as native code reads it.
@@ -456,6 +593,24 @@ impl Native<'_, '_> {
             ExprKind::Ident(name) if self.array_slot(name).is_some() => {
                 return Err(why(e.span, format!("uses array `{name}` other than by `push`, `length` and `join`")));
             }
+            ExprKind::Ident(name) if self.is_bound(name) => {
+                return Err(why(
+                    e.span,
+                    format!(
+                        "uses `{name}`, an object or array postc keeps in slots, as a value (passes, compares or returns it)"
+                    ),
+                ));
+            }
+            ExprKind::Index { .. } | ExprKind::Member { .. } if self.agg_root(e) => {
+                if let Some(a) = self.agg_read(e)? {
+                    self.reshaped = true;
+                    return self.plain_of(a, e.span);
+                }
+                match &e.kind {
+                    ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Null),
+                    _ => return self.member(e),
+                }
+            }
             ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Null),
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
                 Symbol::Local { func, slot } if func == self.at && self.unrolled.contains_key(&slot) => {
@@ -473,26 +628,7 @@ impl Native<'_, '_> {
                 }
                 _ => return Err(why(e.span, format!("reads `{name}`, a variable of the function around it"))),
             },
-            ExprKind::Member { object, property } => {
-                if let Some(flat) = self.model.flattened_name(e) {
-                    return self.global_value(&flat, e.span);
-                }
-                if let ExprKind::Ident(o) = &object.kind
-                    && o == "Math"
-                    && self.is_host("Math")
-                {
-                    return builtins::math_constant(&property.name)
-                        .map(Ir::Number)
-                        .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
-                }
-                if let Some(v) = self.member_special(object, &property.name, e.span, Ir::Null)? {
-                    return Ok(v);
-                }
-                if property.name == "length" {
-                    return Ok(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
-                }
-                return Err(why(e.span, format!("reads property `.{}` of an object", property.name)));
-            }
+            ExprKind::Member { .. } => return self.member(e),
             ExprKind::Call { callee, args } => return self.call(callee, args),
             ExprKind::Unary { op, operand } => {
                 if *op == UnaryOp::Typeof
@@ -528,6 +664,68 @@ impl Native<'_, '_> {
             ),
             other => return Err(why(e.span, expr_name(other))),
         })
+    }
+}
+
+impl Native<'_, '_> {
+    /// `object.property` outside objects and arrays kept in slots.
+    fn member(&mut self, e: &Expr) -> R<Ir> {
+        let ExprKind::Member { object, property } = &e.kind else { return Err(why(e.span, "reads a property")) };
+        if let Some(flat) = self.model.flattened_name(e) {
+            return self.global_value(&flat, e.span);
+        }
+        if let ExprKind::Ident(o) = &object.kind
+            && o == "Math"
+            && self.is_host("Math")
+        {
+            return builtins::math_constant(&property.name)
+                .map(Ir::Number)
+                .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
+        }
+        if let Some(v) = self.member_special(object, &property.name, e.span, Ir::Null)? {
+            return Ok(v);
+        }
+        if property.name == "length" {
+            return Ok(Ir::Builtin(Builtin::Len, vec![self.expr(object)?]));
+        }
+        Err(why(e.span, format!("reads property `.{}` of an object", property.name)))
+    }
+
+    fn aggs_bound(&self, slot: usize) -> bool {
+        let name = &self.model.scopes.funcs[self.at].locals[slot];
+        self.is_bound(name)
+    }
+}
+
+/// How many `return` statements a body has (not counting nested functions).
+fn count_returns(body: &[Stmt]) -> usize {
+    struct C(usize);
+    impl<'a> super::scope::Visit<'a> for C {
+        fn expr(&mut self, _e: &'a Expr) -> bool {
+            false
+        }
+        fn stmt(&mut self, s: &'a Stmt) -> bool {
+            if matches!(s.kind, StmtKind::Return(_)) {
+                self.0 += 1;
+            }
+            true
+        }
+        fn function_decl(&mut self, _f: &'a Function) {}
+    }
+    let mut c = C(0);
+    super::scope::walk_stmts(body, &mut c);
+    c.0
+}
+
+/// Whether lowered statements never reach their end: they return, break or
+/// continue (on every path through a last `if`).
+fn leaves(body: &[IrStmt]) -> bool {
+    match body.last() {
+        Some(IrStmt::Return(_) | IrStmt::Break | IrStmt::Continue) => true,
+        Some(IrStmt::If { branches, otherwise }) => {
+            !otherwise.is_empty() && leaves(otherwise) && branches.iter().all(|(_, b)| leaves(b))
+        }
+        _ => false,
     }
 }
 

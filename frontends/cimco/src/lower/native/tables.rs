@@ -16,15 +16,28 @@ use crate::ast::*;
 
 use super::super::consts;
 use super::super::layout;
+use super::super::model::tables::{Entry, Table};
 use super::super::scope::Symbol;
 use super::{Native, R, breaks_switch, has_continue, why};
 
 impl Native<'_, '_> {
-    /// The entries of the table a name is, as IR values.
-    fn table(&self, name: &str) -> Option<Vec<(String, Ir)>> {
+    /// The table a name is.
+    pub(super) fn table_info(&self, name: &str) -> Option<&Table> {
         let Symbol::Global(g) = self.model.scopes.resolve(name, self.at) else { return None };
-        let t = self.model.tables.get(&g)?;
-        Some(t.iter().map(|(k, c)| (k.clone(), layout::const_expr(c))).collect())
+        self.model.tables.get(&g)
+    }
+
+    /// The entries of the table a name is, as IR values; `None` also for
+    /// a table of records (its entries are objects).
+    pub(super) fn table(&self, name: &str) -> Option<Vec<(String, Ir)>> {
+        let t = self.table_info(name)?;
+        t.entries
+            .iter()
+            .map(|(k, e)| match e {
+                Entry::Const(c) => Some((k.clone(), layout::const_expr(c))),
+                Entry::Record(_) => None,
+            })
+            .collect()
     }
 
     /// `object[index]`: a table's entry, or an argument of a specialization.
@@ -38,9 +51,13 @@ impl Native<'_, '_> {
                     .ok_or_else(|| why(at, "indexes `arguments` with an expression that has effects"));
             }
             if let Some(entries) = self.table(o) {
+                self.reshaped = true;
                 let i = self.expr(index)?;
                 return lookup(i, &entries, &missing)
                     .ok_or_else(|| why(at, format!("indexes table `{o}` with an expression that has effects")));
+            }
+            if self.table_info(o).is_some() {
+                return Err(why(at, format!("uses an entry of table `{o}`, an object, as a value")));
             }
             if self.array_slot(o).is_some() {
                 return Err(why(at, format!("indexes array `{o}`, which postc keeps as joined text")));
@@ -71,8 +88,18 @@ impl Native<'_, '_> {
                 _ => Err(why(at, format!("reads `.{property}` of array `{o}`"))),
             };
         }
+        if let Some(t) = self.table_info(o)
+            && let (Some(n), "length") = (t.array, property)
+        {
+            self.reshaped = true;
+            return Ok(Some(Ir::Number(n as f64)));
+        }
         if let Some(entries) = self.table(o) {
+            self.reshaped = true;
             return Ok(Some(entries.into_iter().find(|(k, _)| k == property).map_or(missing, |(_, v)| v)));
+        }
+        if self.table_info(o).is_some() {
+            return Err(why(at, format!("uses an entry of table `{o}`, an object, as a value")));
         }
         Ok(None)
     }
@@ -81,6 +108,12 @@ impl Native<'_, '_> {
     /// "undefined" when the other operand is surely text.
     pub(super) fn expr_in_text(&mut self, e: &Expr, other: &Expr) -> R<Ir> {
         let missing = if surely_text(other) { Ir::Text("undefined".into()) } else { Ir::Null };
+        if self.agg_root(e) {
+            if let Some(a) = self.agg_read_in_text(e, missing)? {
+                return self.plain_of(a, e.span);
+            }
+            return self.expr(e);
+        }
         match &e.kind {
             ExprKind::Index { object, index } => self.index(object, index, e.span, missing),
             ExprKind::Member { object, property } => {
@@ -106,7 +139,9 @@ impl Native<'_, '_> {
         out: &mut Vec<IrStmt>,
     ) -> R<()> {
         let table = match &object.kind {
-            ExprKind::Ident(o) => self.table(o),
+            ExprKind::Ident(o) => {
+                self.table_info(o).map(|t| t.entries.iter().map(|(k, _)| (k.clone(), ())).collect::<Vec<_>>())
+            }
             _ => None,
         };
         let Some(entries) = table else { return Err(why(at, "a `for ... in` loop over something other than a table")) };
@@ -135,7 +170,7 @@ impl Native<'_, '_> {
 
 /// The entry of `entries` key `i` reads; `None` when `i` would be
 /// evaluated more than once and has effects.
-fn lookup(i: Ir, entries: &[(String, Ir)], missing: &Ir) -> Option<Ir> {
+pub(super) fn lookup(i: Ir, entries: &[(String, Ir)], missing: &Ir) -> Option<Ir> {
     let i = super::super::fold::expr(i);
     if let Some(key) = const_key(&i) {
         return Some(entries.iter().find(|(k, _)| *k == key).map_or_else(|| missing.clone(), |(_, v)| v.clone()));
@@ -180,7 +215,7 @@ fn numeric_key(k: &str) -> Option<f64> {
 }
 
 /// Cheap and free of effects: may be evaluated once per entry.
-fn repeatable(e: &Ir) -> bool {
+pub(super) fn repeatable(e: &Ir) -> bool {
     match e {
         Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null | Ir::Local(_) | Ir::Global(_) | Ir::Quantity(_) => true,
         Ir::Var(_) | Ir::Previous(_) => true,

@@ -136,8 +136,16 @@ impl Native<'_, '_> {
     }
 
     /// The IR function a call of top-level function `i` with `n` arguments
-    /// reaches.
-    pub(super) fn call_target(&self, i: usize, name: &str, n: usize, at: postc_ir::Span) -> R<postc_ir::FunctionId> {
+    /// reaches. A function that reads `arguments` gets its form for `n`
+    /// arguments here when no call seen before lowering needed it (a list
+    /// whose length the lowering finds: `f.apply(null, words)`).
+    pub(super) fn call_target(
+        &mut self,
+        i: usize,
+        name: &str,
+        n: usize,
+        at: postc_ir::Span,
+    ) -> R<postc_ir::FunctionId> {
         let id = self.model.scopes.top_fns[i];
         let info = &self.model.scopes.funcs[id];
         if self.model.fn_reassigned.contains(&i) {
@@ -156,12 +164,16 @@ impl Native<'_, '_> {
             return Err(why(at, format!("calls `{name}`, which may return an object, an array or a function")));
         }
         if variadic && n != info.params.len() {
-            return self
-                .layout
-                .variadic
-                .get(&(id, n))
-                .copied()
-                .ok_or_else(|| why(at, format!("calls `{name}` with {n} arguments, more than postc specializes")));
+            if let Some(f) = self.layout.variadic.get(&(id, n)) {
+                return Ok(*f);
+            }
+            if n > MAX_ARITY {
+                return Err(why(at, format!("calls `{name}` with {n} arguments, more than postc specializes")));
+            }
+            let f = self.layout.add_fn(&format!("{name}/{n}"));
+            self.layout.variadic.insert((id, n), f);
+            self.layout.clones.push((id, n));
+            return Ok(f);
         }
         self.layout.top_fn.get(i).copied().ok_or_else(|| why(at, format!("calls `{name}`")))
     }
@@ -177,6 +189,14 @@ impl Native<'_, '_> {
                 let f = self.call_target(i, name, items.len(), at)?;
                 Ok(Ir::Call(f, self.args(items)?))
             }
+            ExprKind::Ident(t) if self.table_info(t).is_some_and(|t| t.array.is_some()) => {
+                let Some(items) = self.table(t) else {
+                    return Err(why(at, format!("calls `{name}.apply` with table `{t}`, whose entries are objects")));
+                };
+                let f = self.call_target(i, name, items.len(), at)?;
+                Ok(Ir::Call(f, items.into_iter().map(|(_, v)| v).collect()))
+            }
+            ExprKind::Ident(a) if self.agg_array(a).is_some() => self.apply_aggregate(i, name, a, at),
             ExprKind::Ident(a) if a == "arguments" && self.arity.is_some() => {
                 let n = self.arity.unwrap_or(0);
                 let f = self.call_target(i, name, n, at)?;
@@ -189,18 +209,19 @@ impl Native<'_, '_> {
         }
     }
 
-    /// A `for` loop over the arguments of a specialization that unrolls:
-    /// `for (var i = K; i < arguments.length; i++)` whose body neither
-    /// assigns `i` nor leaves with `break` or `continue`. The counter's
-    /// slot and its first and end values.
+    /// A `for` loop that unrolls: `for (var i = K; i < arguments.length;
+    /// i++)` in a specialization, or over the length of an array kept in
+    /// slots whose count is known, or up to a number when the body reads
+    /// or fills such an array; its body neither assigns `i` nor leaves
+    /// with `break` or `continue`. The counter's slot and its first and
+    /// end values.
     pub(super) fn unrollable(
-        &self,
+        &mut self,
         init: &Option<ForInit>,
         test: &Option<Expr>,
         update: &Option<Expr>,
         body: &Stmt,
     ) -> Option<(usize, f64, f64)> {
-        let n = self.arity?;
         let number = |e: &Expr| match e.kind {
             ExprKind::Number(x) => Some(x),
             _ => None,
@@ -221,11 +242,24 @@ impl Native<'_, '_> {
         }
         let is_i = |e: &Expr| matches!(&e.kind, ExprKind::Ident(x) if x == name);
         let ExprKind::Binary { op: BinaryOp::Lt, left, right } = &test.as_ref()?.kind else { return None };
-        let is_length = matches!(&right.kind, ExprKind::Member { object, property }
+        let is_arguments = matches!(&right.kind, ExprKind::Member { object, property }
             if property.name == "length" && matches!(&object.kind, ExprKind::Ident(a) if a == "arguments"));
-        if !is_i(left) || !is_length {
+        if !is_i(left) {
             return None;
         }
+        let n = if is_arguments {
+            self.arity?
+        } else {
+            let to = match number(right) {
+                Some(n) if n.is_finite() && n >= 0.0 && n == n.trunc() => n as usize,
+                Some(_) => return None,
+                None => self.known_length(right)?,
+            };
+            if !self.mentions_aggregate(body) {
+                return None;
+            }
+            to
+        };
         let steps = match &update.as_ref()?.kind {
             ExprKind::Update { op: UpdateOp::Increment, target, .. } => is_i(target),
             ExprKind::Assign { op: AssignOp::Add, target, value } => is_i(target) && number(value) == Some(1.0),
@@ -254,7 +288,7 @@ impl Native<'_, '_> {
 }
 
 /// Whether a statement assigns (or declares) a name.
-fn assigns(body: &Stmt, name: &str) -> bool {
+pub(super) fn assigns(body: &Stmt, name: &str) -> bool {
     struct A<'n> {
         name: &'n str,
         found: bool,
