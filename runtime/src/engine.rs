@@ -90,7 +90,7 @@ pub struct Engine<'p> {
     /// shared by every modal variable that prints nothing: formatting into
     /// a value allocates only when there is text.
     pub(crate) scratch: Vec<u8>,
-    pub(crate) empty_text: std::rc::Rc<str>,
+    pub(crate) empty_text: crate::value::Text,
 }
 
 impl<'p> Engine<'p> {
@@ -135,7 +135,7 @@ impl<'p> Engine<'p> {
             trace: None,
             profile: None,
             scratch: Vec::with_capacity(64),
-            empty_text: std::rc::Rc::from(""),
+            empty_text: crate::value::Text::new(""),
         }
     }
 

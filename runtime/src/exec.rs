@@ -16,8 +16,6 @@
 //! Nothing outside the runtime sees these types: a post on disk, a backend
 //! and a lint read the IR only.
 
-use std::rc::Rc;
-
 use postc_ir::{BinaryOp, Builtin, FunctionId, GlobalId, LocalId, Place, Quantity, ScriptId, Span, UnaryOp, VarId};
 
 use crate::value::Value;
@@ -109,7 +107,7 @@ pub enum Expr {
 impl Expr {
     /// A text literal.
     pub fn text(s: &str) -> Expr {
-        Expr::Text(Text(Value::Text(Rc::from(s))))
+        Expr::Text(Text(Value::text(s)))
     }
 }
 
@@ -119,8 +117,8 @@ impl Expr {
 pub struct Text(Value);
 
 impl Text {
-    /// A literal of shared text.
-    pub fn new(text: Rc<str>) -> Text {
+    /// A literal of the text.
+    pub fn new(text: crate::value::Text) -> Text {
         Text(Value::Text(text))
     }
 

@@ -1,4 +1,8 @@
 //! Values of the IR's statement language: numbers, text, booleans, null.
+//!
+//! Text is kept in the value itself when it is short ASCII ([`Text`]): the
+//! words a post formats (`X12.5`, `G1`, `F1500`) cost no allocation, and a
+//! value is 24 bytes either way. Longer text is shared ([`Rc<str>`]).
 
 use std::fmt::Write as _;
 use std::rc::Rc;
@@ -10,21 +14,160 @@ pub enum Value {
     Null,
     Num(f64),
     Bool(bool),
-    Text(Rc<str>),
+    Text(Text),
+}
+
+/// How many bytes of ASCII text a [`Text`] holds in place.
+pub const INLINE_TEXT: usize = 22;
+
+/// The text of a value: short ASCII text in place, other text shared.
+#[derive(Clone)]
+pub struct Text(Repr);
+
+#[derive(Clone)]
+enum Repr {
+    /// `len` bytes of ASCII.
+    Inline(u8, [u8; INLINE_TEXT]),
+    Shared(Rc<str>),
+}
+
+impl Text {
+    /// The text of `s`.
+    pub fn new(s: &str) -> Text {
+        match Text::inline(s.as_bytes()) {
+            Some(t) => t,
+            None => Text(Repr::Shared(Rc::from(s))),
+        }
+    }
+
+    /// Bytes as text (replacing what is not UTF-8).
+    pub fn from_bytes(b: &[u8]) -> Text {
+        match Text::inline(b) {
+            Some(t) => t,
+            None => match std::str::from_utf8(b) {
+                Ok(s) => Text(Repr::Shared(Rc::from(s))),
+                Err(_) => Text(Repr::Shared(Rc::from(String::from_utf8_lossy(b).as_ref()))),
+            },
+        }
+    }
+
+    fn inline(b: &[u8]) -> Option<Text> {
+        if b.len() > INLINE_TEXT || !b.is_ascii() {
+            return None;
+        }
+        let mut bytes = [0u8; INLINE_TEXT];
+        bytes[..b.len()].copy_from_slice(b);
+        Some(Text(Repr::Inline(b.len() as u8, bytes)))
+    }
+
+    pub fn as_bytes(&self) -> &[u8] {
+        match &self.0 {
+            Repr::Inline(len, bytes) => &bytes[..*len as usize],
+            Repr::Shared(s) => s.as_bytes(),
+        }
+    }
+
+    pub fn as_str(&self) -> &str {
+        match &self.0 {
+            // ASCII: always UTF-8.
+            Repr::Inline(len, bytes) => std::str::from_utf8(&bytes[..*len as usize]).unwrap_or_default(),
+            Repr::Shared(s) => s,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        match &self.0 {
+            Repr::Inline(len, _) => *len as usize,
+            Repr::Shared(s) => s.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl std::ops::Deref for Text {
+    type Target = str;
+    fn deref(&self) -> &str {
+        self.as_str()
+    }
+}
+
+impl PartialEq for Text {
+    fn eq(&self, other: &Text) -> bool {
+        self.as_bytes() == other.as_bytes()
+    }
+}
+
+impl Eq for Text {}
+
+impl PartialOrd for Text {
+    fn partial_cmp(&self, other: &Text) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Text {
+    /// UTF-8 bytes compare as their characters do.
+    fn cmp(&self, other: &Text) -> std::cmp::Ordering {
+        self.as_bytes().cmp(other.as_bytes())
+    }
+}
+
+impl std::fmt::Debug for Text {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(self.as_str(), f)
+    }
+}
+
+impl std::fmt::Display for Text {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl From<&str> for Text {
+    fn from(s: &str) -> Text {
+        Text::new(s)
+    }
+}
+
+impl From<String> for Text {
+    fn from(s: String) -> Text {
+        match Text::inline(s.as_bytes()) {
+            Some(t) => t,
+            None => Text(Repr::Shared(Rc::from(s))),
+        }
+    }
+}
+
+impl From<Rc<str>> for Text {
+    fn from(s: Rc<str>) -> Text {
+        Text(Repr::Shared(s))
+    }
 }
 
 impl Value {
     pub fn text(s: &str) -> Value {
-        Value::Text(Rc::from(s))
+        Value::Text(Text::new(s))
     }
 
     /// The value as a number: text that reads as a number gives it, other
     /// text and null give 0, true gives 1.
+    #[inline]
     pub fn num(&self) -> f64 {
         match self {
             Value::Num(n) => *n,
+            other => other.num_other(),
+        }
+    }
+
+    fn num_other(&self) -> f64 {
+        match self {
+            Value::Num(n) => *n,
             Value::Bool(b) => f64::from(u8::from(*b)),
-            Value::Text(s) => s.trim().parse().unwrap_or(0.0),
+            Value::Text(s) => s.as_str().trim().parse().unwrap_or(0.0),
             Value::Null => 0.0,
         }
     }
@@ -45,20 +188,40 @@ impl Value {
         match self {
             Value::Num(n) => push_number(out, *n),
             Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
-            Value::Text(s) => out.push_str(s),
+            Value::Text(s) => out.push_str(s.as_str()),
             Value::Null => {}
         }
     }
 
-    pub fn to_text(&self) -> Rc<str> {
+    pub fn to_text(&self) -> Text {
         match self {
             Value::Text(s) => s.clone(),
             other => {
                 let mut s = String::new();
                 other.append_to(&mut s);
-                Rc::from(s)
+                Text::from(s)
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_value_is_three_words_and_short_text_is_in_place() {
+        assert_eq!(std::mem::size_of::<Value>(), 24);
+        let short = Text::new("X12.3456");
+        assert!(matches!(short.0, Repr::Inline(8, _)));
+        assert_eq!(short.as_str(), "X12.3456");
+        let long = Text::new("a text longer than twenty-two bytes");
+        assert!(matches!(long.0, Repr::Shared(_)));
+        let accented = Text::new("été");
+        assert!(matches!(accented.0, Repr::Shared(_)));
+        assert_eq!(Text::new(""), Text::from(String::new()));
+        assert!(Text::new("G0") < Text::new("G1"));
+        assert_eq!(Text::from_bytes(b"\xffA").as_str(), "\u{fffd}A");
     }
 }
 

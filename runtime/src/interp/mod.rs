@@ -5,18 +5,16 @@
 //! step budget stops with a diagnostic at the innermost loop, so a runaway
 //! post never hangs.
 
-use std::rc::Rc;
-
 use postc_ir::{BinaryOp, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, UnaryOp, ValueSource, VarId};
 
 pub(crate) mod ops;
 
-use ops::{binary, builtin, push_integer, unary};
+use ops::{binary, builtin, compare, push_integer, unary};
 
 use crate::exec::{Body, Expr, Piece, Stmt};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
-use crate::value::Value;
+use crate::value::{Text, Value};
 
 /// How a block of statements ended.
 pub(crate) enum Flow {
@@ -82,7 +80,7 @@ impl Engine<'_> {
                 Stmt::If { branches, otherwise } => {
                     let mut taken = None;
                     for (cond, body) in branches {
-                        if self.eval(cond, frame)?.truthy() {
+                        if self.test(cond, frame)? {
                             taken = Some(body);
                             break;
                         }
@@ -98,7 +96,7 @@ impl Engine<'_> {
                     if self.steps > self.post.options.step_budget {
                         return Err(Box::new(self.budget_error(*span)));
                     }
-                    if !self.eval(cond, frame)?.truthy() {
+                    if !self.test(cond, frame)? {
                         break;
                     }
                     match self.exec(body, frame).map_err(|e| Self::in_loop(e, *span))? {
@@ -264,6 +262,30 @@ impl Engine<'_> {
         }
     }
 
+    /// Evaluates a condition: whether the value of `e` is truthy, with
+    /// comparisons and `&&`, `||`, `!` of them answered without making a
+    /// value (the effects and their order are those of [`Self::eval`]).
+    pub(crate) fn test(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
+        match e {
+            Expr::Bool(b) => Ok(*b),
+            Expr::Binary(BinaryOp::And, a, b) => Ok(self.test(a, frame)? && self.test(b, frame)?),
+            Expr::Binary(BinaryOp::Or, a, b) => Ok(self.test(a, frame)? || self.test(b, frame)?),
+            Expr::Unary(UnaryOp::Not, a) => Ok(!self.test(a, frame)?),
+            Expr::Local(i) => Ok(frame.get(i.index()).is_some_and(Value::truthy)),
+            Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
+            Expr::Binary(op, a, b) if is_leaf(a) && is_leaf(b) => {
+                let (mut ta, mut tb) = (Value::Null, Value::Null);
+                let x = leaf(a, frame, &self.globals, &mut ta);
+                let y = leaf(b, frame, &self.globals, &mut tb);
+                match compare(*op, x, y) {
+                    Some(r) => Ok(r),
+                    None => Ok(binary(*op, x, y).truthy()),
+                }
+            }
+            _ => Ok(self.eval(e, frame)?.truthy()),
+        }
+    }
+
     /// Evaluates an expression.
     pub(crate) fn eval(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         Ok(match e {
@@ -278,6 +300,16 @@ impl Engine<'_> {
             Expr::Var(id) => self.var_value(*id),
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
             Expr::FormatVar { var, value } => {
+                // A number the machine knows needs no value made first.
+                if let Expr::Quantity(q) = &**value
+                    && !q.is_text()
+                    && *q != Quantity::BlockNumber
+                {
+                    let n = self.machine.number(*q);
+                    if !n.is_nan() {
+                        return Ok(self.format_number_through_var(*var, n));
+                    }
+                }
                 let v = self.eval(value, frame)?;
                 self.format_through_var(*var, v)
             }
@@ -285,7 +317,7 @@ impl Engine<'_> {
                 let n = self.eval(value, frame)?.num();
                 let mut buf = Vec::new();
                 self.writers[format.index()].write(n, &mut buf);
-                Value::Text(text_of(&buf))
+                Value::Text(Text::from_bytes(&buf))
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -320,7 +352,7 @@ impl Engine<'_> {
                 buf.clear();
                 let v = match self.chain(e, frame, &mut buf) {
                     Ok(Some(v)) => v,
-                    Ok(None) => Value::Text(std::rc::Rc::from(buf.as_str())),
+                    Ok(None) => Value::Text(Text::new(buf.as_str())),
                     Err(err) => {
                         self.chain_text = buf;
                         return Err(err);
@@ -404,7 +436,23 @@ impl Engine<'_> {
             other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
-        let text = if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(text_of(&buf)) };
+        let text =
+            if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
+        self.scratch = buf;
+        text
+    }
+
+    /// [`Self::format_through_var`] of a number.
+    fn format_number_through_var(&mut self, id: VarId, n: f64) -> Value {
+        let post = self.post;
+        let var = &post.variables[id.index()];
+        let mut buf = std::mem::take(&mut self.scratch);
+        buf.clear();
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
+        put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut buf);
+        state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+        let text =
+            if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
         self.scratch = buf;
         text
     }
@@ -593,13 +641,5 @@ fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut 
         }
         Expr::Text(t) => t.value(),
         _ => tmp,
-    }
-}
-
-/// Formatted bytes as text (they are UTF-8 but for a post's odd prefix).
-fn text_of(buf: &[u8]) -> Rc<str> {
-    match std::str::from_utf8(buf) {
-        Ok(s) => Rc::from(s),
-        Err(_) => Rc::from(String::from_utf8_lossy(buf).as_ref()),
     }
 }

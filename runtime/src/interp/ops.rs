@@ -3,12 +3,10 @@
 //! with JavaScript's number conversions where CIMCO needs them, the
 //! built-ins VcPost and CIMCO lower to, and VB-style picture formats.
 
-use std::rc::Rc;
-
 use postc_ir::{BinaryOp, Builtin, UnaryOp};
 
 use crate::js;
-use crate::value::Value;
+use crate::value::{Text, Value};
 
 /// A unary operator applied to a value.
 #[inline]
@@ -95,8 +93,27 @@ pub(crate) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
     }
 }
 
+/// The comparison operators as a truth value, without making a value;
+/// `None` for the other operators.
+#[inline]
+pub(super) fn compare(op: BinaryOp, a: &Value, b: &Value) -> Option<bool> {
+    use BinaryOp::*;
+    Some(match op {
+        JsEq => js_loose_eq(a, b),
+        JsNe => !js_loose_eq(a, b),
+        StrictEq => strict_eq(a, b),
+        StrictNe => !strict_eq(a, b),
+        Eq | Ne | Lt | Le | Gt | Ge | JsLt | JsLe | JsGt | JsGe => match binary(op, a, b) {
+            Value::Bool(r) => r,
+            _ => return None,
+        },
+        _ => return None,
+    })
+}
+
 /// JavaScript `==` over the interpreter's values (null stands for both
 /// `null` and `undefined`).
+#[inline]
 fn js_loose_eq(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Null, Value::Null) => true,
@@ -107,6 +124,7 @@ fn js_loose_eq(a: &Value, b: &Value) -> bool {
 }
 
 /// JavaScript `===` over the interpreter's values.
+#[inline]
 fn strict_eq(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Num(x), Value::Num(y)) => x == y,
@@ -130,7 +148,7 @@ fn concat(a: &Value, b: &Value) -> Value {
     let mut s = String::new();
     a.append_to(&mut s);
     b.append_to(&mut s);
-    Value::Text(Rc::from(s))
+    Value::Text(Text::from(s))
 }
 
 /// Appends an integer's decimal digits without allocating.
@@ -160,7 +178,7 @@ fn round_to(v: f64, decimals: f64) -> f64 {
 
 pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
     let n = |i: usize| args.get(i).map_or(0.0, Value::num);
-    let s = |i: usize| args.get(i).map(Value::to_text).unwrap_or_else(|| Rc::from(""));
+    let s = |i: usize| args.get(i).map(Value::to_text).unwrap_or_else(|| Text::new(""));
     let chars = |t: &str| t.chars().collect::<Vec<_>>();
     match b {
         Builtin::Abs => Value::Num(n(0).abs()),
@@ -196,7 +214,7 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
         }
         Builtin::Upper => Value::text(&s(0).to_uppercase()),
         Builtin::Lower => Value::text(&s(0).to_lowercase()),
-        Builtin::Str => Value::Text(args.first().map(Value::to_text).unwrap_or_else(|| Rc::from(""))),
+        Builtin::Str => Value::Text(args.first().map(Value::to_text).unwrap_or_else(|| Text::new(""))),
         Builtin::Val => {
             let t = s(0);
             let t = t.trim();
