@@ -11,7 +11,8 @@
 //!
 //! For each post: postc reading the JSON Lines and posting, postc posting
 //! events already read, Node.js parsing and posting, Node.js posting events
-//! already parsed; best of three runs each (`POSTC_BENCH_RUNS`). The table
+//! already parsed; best of three runs each (`POSTC_BENCH_RUNS`);
+//! `POSTC_BENCH_POSTS=mach3_field,okuma_field` measures only those posts. The table
 //! gives both times, the ratio (Node.js time / postc time) and postc's
 //! moves per second; it asserts nothing about time. The program sizes of
 //! the two engines are compared and a difference is flagged.
@@ -153,7 +154,15 @@ fn main() {
          {turning_moves}-move turning job (lathe), best of {runs}"
     );
     let mut rows = Vec::new();
+    // `POSTC_BENCH_POSTS=mach3_field,okuma_field`: only those posts.
+    let only: Option<Vec<String>> =
+        std::env::var("POSTC_BENCH_POSTS").ok().map(|s| s.split(',').map(|p| p.trim().to_string()).collect());
     for post_path in posts() {
+        if let Some(only) = &only
+            && !only.iter().any(|p| stem(&post_path) == *p)
+        {
+            continue;
+        }
         let post = compile(&post_path).expect("the corpus post compiles");
         let (jsonl, events, toolpath, moves) = if post.options.lathe {
             (&turning, &turning_events, "turning", turning_moves)

@@ -5,7 +5,9 @@
 //! step budget stops with a diagnostic at the innermost loop, so a runaway
 //! post never hangs.
 
-use postc_ir::{BinaryOp, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, UnaryOp, ValueSource, VarId};
+use postc_ir::{
+    BinaryOp, Builtin, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, UnaryOp, ValueSource, VarId,
+};
 
 pub(crate) mod ops;
 
@@ -273,6 +275,14 @@ impl Engine<'_> {
             Expr::Unary(UnaryOp::Not, a) => Ok(!self.test(a, frame)?),
             Expr::Local(i) => Ok(frame.get(i.index()).is_some_and(Value::truthy)),
             Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
+            // `x + y + z == ""` of texts (a field post asking whether any
+            // word printed): empty when every part is, with no text made.
+            Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b)
+                if matches!(&**b, Expr::Text(t) if t.is_empty())
+                    && let Some(empty) = texts_empty(a, frame, &self.globals) =>
+            {
+                Ok(empty == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq))
+            }
             Expr::Binary(op, a, b) if is_leaf(a) && is_leaf(b) => {
                 let (mut ta, mut tb) = (Value::Null, Value::Null);
                 let x = leaf(a, frame, &self.globals, &mut ta);
@@ -557,6 +567,18 @@ impl Engine<'_> {
                         self.out.buf.extend_from_slice(t.as_bytes());
                     }
                 }
+                // `text.substring(k)` of ASCII text in a local (a field
+                // post's `writeBlock` dropping its leading blank): the
+                // bytes from `k` on, with no text made.
+                Piece::Expr(Expr::Builtin(Builtin::Substring, args))
+                    if let [Expr::Local(i), Expr::Number(k)] = args.as_slice()
+                        && *k >= 0.0
+                        && let Some(Value::Text(t)) = frame.get(i.index())
+                        && t.is_ascii() =>
+                {
+                    let from = (k.trunc() as usize).min(t.len());
+                    self.out.buf.extend_from_slice(&t.as_bytes()[from..]);
+                }
                 Piece::Expr(e) => match self.eval(e, frame)? {
                     Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => push_integer(&mut self.out.buf, n as i64),
                     v => self.write_value_text(&v),
@@ -618,6 +640,25 @@ fn plus_quantity(e: &Expr) -> Option<Quantity> {
     }
 }
 
+/// Whether a left-nested chain of `+` over leaves that are all text is
+/// empty; `None` when a part is not a leaf or not text (then `+` may add
+/// numbers, and the chain is evaluated as it is).
+fn texts_empty(e: &Expr, frame: &[Value], globals: &[Value]) -> Option<bool> {
+    match e {
+        Expr::Binary(BinaryOp::Add, a, b) => Some(texts_empty(a, frame, globals)? && texts_empty(b, frame, globals)?),
+        Expr::Text(t) => Some(t.is_empty()),
+        Expr::Local(i) => match frame.get(i.index())? {
+            Value::Text(t) => Some(t.is_empty()),
+            _ => None,
+        },
+        Expr::Global(i) => match globals.get(i.index())? {
+            Value::Text(t) => Some(t.is_empty()),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 fn is_leaf(e: &Expr) -> bool {
     matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_) | Expr::Text(_))
 }
@@ -641,5 +682,27 @@ fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut 
         }
         Expr::Text(t) => t.value(),
         _ => tmp,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn add(a: Expr, b: Expr) -> Expr {
+        Expr::Binary(BinaryOp::Add, Box::new(a), Box::new(b))
+    }
+
+    #[test]
+    fn a_chain_of_texts_is_empty_when_every_part_is() {
+        let l = |k| Expr::Local(LocalId::new(k));
+        let chain = add(add(l(0), l(1)), Expr::text(""));
+        let frame = [Value::text(""), Value::text("")];
+        assert_eq!(texts_empty(&chain, &frame, &[]), Some(true));
+        let frame = [Value::text(""), Value::text("X1")];
+        assert_eq!(texts_empty(&chain, &frame, &[]), Some(false));
+        // A number makes `+` add: the chain is evaluated as it is.
+        let frame = [Value::Num(0.0), Value::text("")];
+        assert_eq!(texts_empty(&chain, &frame, &[]), None);
     }
 }
