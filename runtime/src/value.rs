@@ -205,6 +205,17 @@ impl Value {
     }
 }
 
+/// Shortest text of a number: `3`, `2.5`, `-0.125`.
+pub fn push_number(out: &mut String, n: f64) {
+    if n.is_finite() && n == n.trunc() && n.abs() < 1e21 {
+        let _ = write!(out, "{}", n as i128);
+    } else if n.is_nan() {
+        out.push_str("NaN");
+    } else {
+        let _ = write!(out, "{n}");
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -222,16 +233,5 @@ mod tests {
         assert_eq!(Text::new(""), Text::from(String::new()));
         assert!(Text::new("G0") < Text::new("G1"));
         assert_eq!(Text::from_bytes(b"\xffA").as_str(), "\u{fffd}A");
-    }
-}
-
-/// Shortest text of a number: `3`, `2.5`, `-0.125`.
-pub fn push_number(out: &mut String, n: f64) {
-    if n.is_finite() && n == n.trunc() && n.abs() < 1e21 {
-        let _ = write!(out, "{}", n as i128);
-    } else if n.is_nan() {
-        out.push_str("NaN");
-    } else {
-        let _ = write!(out, "{n}");
     }
 }
