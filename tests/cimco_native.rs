@@ -363,3 +363,51 @@ fn switch_with_fallthrough_and_loops_are_native() {
         &[],
     );
 }
+
+/// A `writeBlock(text)` that drops the blank before its first word
+/// (`text.substring(1)`, okuma_field.js) is built in the output and cut
+/// there (the runtime's `Cut`); what it writes is what Node.js writes,
+/// for accented words, numbers added before a text word, a cut past the
+/// end and an empty block too.
+#[test]
+fn a_block_built_in_the_output_is_cut_as_substring_cuts() {
+    check(
+        "cut",
+        r#"
+        var comp = "";
+        function block(text) {
+            if (text == "") {
+                return "";
+            }
+            return text.substring(1) + linebreak;
+        }
+        function tail(text) { return text.substring(9) + "|" + linebreak; }
+        function word(m) { return m == 0 ? "" : " G" + m; }
+        function onOpen(c) { return block(" é" + xOutput.format(1)) + tail(" ab") + block(1 + 2 + " N") + block(""); }
+        function onLinear(x, y, z, m) {
+            var c = comp;
+            comp = " ";
+            return block(c + word(m) + xOutput.format(x) + yOutput.format(y) + zOutput.format(z));
+        }
+        "#,
+        &["block", "tail", "onOpen", "onLinear"],
+        &[],
+    );
+    let post = {
+        let dir = tempfile::tempdir().expect("a temporary folder");
+        let path = dir.path().join("cut.js");
+        std::fs::write(
+            &path,
+            format!(
+                "{HEAD}{}",
+                r#"function block(text) { if (text == "") { return ""; } return text.substring(1) + linebreak; }
+                function onLinear(x, y, z, m) { return block(" G1" + xOutput.format(x)); }"#
+            ),
+        )
+        .expect("writes the post");
+        compile(&path).expect("compiles")
+    };
+    let code = postc_runtime::prepare::prepare(&post);
+    let prepared = format!("{:?}", code.handlers);
+    assert!(prepared.contains("Cut {"), "the handler cuts in the output: {prepared}");
+}

@@ -6,8 +6,8 @@
 //! runtime's business, not the IR's: [`crate::prepare`] turns each post into
 //! [`Code`] of the statements below, which are the IR's own plus the
 //! *output-buffer operations* of the fast path ([`Stmt::Emit`],
-//! [`Stmt::Mark`], [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Blocks`],
-//! [`Expr::Written`]): a function's text is built straight in the output
+//! [`Stmt::Mark`], [`Stmt::MoveBack`], [`Stmt::Truncate`], [`Stmt::Cut`],
+//! [`Stmt::Blocks`], [`Expr::Written`]): a function's text is built straight in the output
 //! instead of in a value, so a move allocates nothing.
 //!
 //! Text literals are held as the values they read as ([`Text`]), so
@@ -61,6 +61,13 @@ pub enum Stmt {
     },
     /// Drop the text written since a mark.
     Truncate(LocalId),
+    /// Drop the first characters of the text written since a mark, as
+    /// `Builtin::Substring` with one index counts them
+    /// (`text.substring(1)` of a text built in the output).
+    Cut {
+        at: LocalId,
+        chars: usize,
+    },
     /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
     /// does with a value: each line that is not empty becomes a block.
     Blocks(LocalId),

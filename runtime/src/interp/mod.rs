@@ -132,6 +132,15 @@ impl Engine<'_> {
                     let at = self.mark(*k, frame);
                     self.out.buf.truncate(at);
                 }
+                Stmt::Cut { at, chars } => {
+                    let at = self.mark(*at, frame);
+                    let written = &self.out.buf[at..];
+                    let bytes = match std::str::from_utf8(written) {
+                        Ok(t) => t.char_indices().nth(*chars).map_or(t.len(), |(i, _)| i),
+                        Err(_) => (*chars).min(written.len()),
+                    };
+                    self.out.buf.drain(at..at + bytes);
+                }
                 Stmt::Blocks(k) => {
                     let at = self.mark(*k, frame);
                     self.blocks_since(at);

@@ -56,6 +56,7 @@ fn rename(body: Vec<Stmt>, alias: &HashMap<LocalId, LocalId>) -> Vec<Stmt> {
         .filter(|s| !matches!(s, Stmt::Mark(m) if alias.contains_key(m)))
         .map(|s| match s {
             Stmt::Truncate(m) => Stmt::Truncate(to(m)),
+            Stmt::Cut { at, chars } => Stmt::Cut { at: to(at), chars },
             Stmt::Blocks(m) => Stmt::Blocks(to(m)),
             Stmt::MoveBack { to: a, from: b } => Stmt::MoveBack { to: to(a), from: to(b) },
             Stmt::If { branches, otherwise } => Stmt::If {
@@ -134,7 +135,7 @@ fn reads(body: &[Stmt], read: &mut HashSet<LocalId>) {
     };
     for s in body {
         match s {
-            Stmt::Truncate(m) | Stmt::Blocks(m) => {
+            Stmt::Truncate(m) | Stmt::Blocks(m) | Stmt::Cut { at: m, .. } => {
                 read.insert(*m);
             }
             Stmt::MoveBack { to, from } => {

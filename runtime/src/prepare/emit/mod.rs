@@ -9,7 +9,9 @@
 //! parameter (`writeBlock(text)`) is bound by emitting its argument first
 //! and keeping the mark where it starts: `text == ""` becomes "nothing was
 //! written since the mark", `text = "N10 " + text` writes the new text and
-//! moves it back to the mark, `return text + linebreak` just appends. A
+//! moves it back to the mark, `return text + linebreak` just appends,
+//! `return text.substring(1) + linebreak` cuts the first character after
+//! the mark ([`Stmt::Cut`]) and appends. A
 //! function whose shape is outside these rules keeps the allocating
 //! `Write`; the result is the same either way.
 
@@ -187,7 +189,7 @@ impl<'f> Emitter<'f> {
         let mut map = Vec::with_capacity(slots);
         let region_param = match bound {
             Some((k, _)) => (k < params && region_uses_ok(body, LocalId::new(k as u16))).then_some(k),
-            None => region_param(body, params, args),
+            None => region_param(body, params, args, &self.returns_text),
         };
         if bound.is_some() && region_param.is_none() {
             return None;
@@ -358,7 +360,7 @@ impl<'f> Emitter<'f> {
     fn region_text(&mut self, e: &Expr, k: LocalId, mark: LocalId, fr: &Frame) -> Option<Vec<Stmt>> {
         let mut leaves = Vec::new();
         concat_leaves(e, &mut leaves);
-        let pos = leaves.iter().position(|l| matches!(l, Expr::Local(x) if *x == k));
+        let pos = leaves.iter().position(|l| region_part(l, k).is_some());
         let Some(pos) = pos else {
             // The region is replaced.
             let mut out = vec![Stmt::Truncate(mark)];
@@ -374,6 +376,9 @@ impl<'f> Emitter<'f> {
             return None;
         }
         let mut out = Vec::new();
+        if let Some(chars) = region_part(leaves[pos], k).filter(|&n| n > 0) {
+            out.push(Stmt::Cut { at: mark, chars });
+        }
         if pos > 0 {
             let t = self.slot();
             out.push(Stmt::Mark(t));
@@ -489,8 +494,15 @@ fn mentions_region(e: &Expr, fr: &Frame) -> bool {
 fn region_in(e: &Expr, fr: &Frame) -> Option<LocalId> {
     let mut leaves = Vec::new();
     concat_leaves(e, &mut leaves);
-    leaves.iter().find_map(|l| match l {
-        Expr::Local(k) if matches!(fr.map.get(k.index()), Some(Binding::Region(_))) => Some(*k),
-        _ => None,
+    leaves.iter().find_map(|l| {
+        let k = match l {
+            Expr::Local(k) => *k,
+            Expr::Builtin(_, args) => match args.first() {
+                Some(Expr::Local(k)) => *k,
+                _ => return None,
+            },
+            _ => return None,
+        };
+        (matches!(fr.map.get(k.index()), Some(Binding::Region(_))) && region_part(l, k).is_some()).then_some(k)
     })
 }

@@ -16,11 +16,12 @@ pub(super) fn concat_leaves<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {
     }
 }
 
-/// The one parameter that can be bound as a region: a text argument,
-/// used only where a region can be (see the module documentation).
-pub(super) fn region_param(body: &[Stmt], params: usize, args: &[Expr]) -> Option<usize> {
+/// The one parameter that can be bound as a region: a text argument
+/// (`returns_text`: the functions that surely return text), used only
+/// where a region can be (see the module documentation).
+pub(super) fn region_param(body: &[Stmt], params: usize, args: &[Expr], returns_text: &[bool]) -> Option<usize> {
     (0..params).find(|&k| {
-        args.get(k).is_some_and(|a| is_text(a, &[]) || matches!(a, Expr::Call(..)))
+        args.get(k).is_some_and(|a| is_text(a, returns_text) || matches!(a, Expr::Call(..)))
             && region_uses_ok(body, LocalId::new(k as u16))
             && reads(body, LocalId::new(k as u16))
     })
@@ -86,12 +87,30 @@ pub(super) fn cond_ok(c: &Expr, k: LocalId) -> bool {
     }
 }
 
-/// `k` appears at most once, and only as a whole part of the concatenation.
+/// `k` appears at most once, and only as a whole part of the concatenation
+/// (or as `k.substring(n)`, see [`region_part`]).
 pub(super) fn leaf_only(e: &Expr, k: LocalId) -> bool {
     let mut leaves = Vec::new();
     concat_leaves(e, &mut leaves);
-    let direct = leaves.iter().filter(|l| matches!(l, Expr::Local(x) if *x == k)).count();
-    direct <= 1 && leaves.iter().all(|l| matches!(l, Expr::Local(x) if *x == k) || !expr_reads(l, k))
+    let direct = leaves.iter().filter(|l| region_part(l, k).is_some()).count();
+    direct <= 1 && leaves.iter().all(|l| region_part(l, k).is_some() || !expr_reads(l, k))
+}
+
+/// A part of a concatenation that is region `k`'s text: the local itself
+/// (`Some(0)`), or `k.substring(n)` for a whole number `n` (`Some(n)`: its
+/// first `n` characters cut, [`Stmt::Cut`]; a field post's `writeBlock`
+/// dropping the blank before its first word).
+pub(super) fn region_part(e: &Expr, k: LocalId) -> Option<usize> {
+    match e {
+        Expr::Local(x) if *x == k => Some(0),
+        Expr::Builtin(Builtin::Substring, args) => match args.as_slice() {
+            [Expr::Local(x), Expr::Number(n)] if *x == k && *n >= 0.0 && n.fract() == 0.0 && *n < 65536.0 => {
+                Some(*n as usize)
+            }
+            _ => None,
+        },
+        _ => None,
+    }
 }
 
 pub(super) fn reads(body: &[Stmt], k: LocalId) -> bool {
@@ -156,7 +175,7 @@ pub(crate) fn max_slot(body: &[Stmt]) -> Option<LocalId> {
     let mut m = None;
     for st in body {
         match st {
-            Stmt::Mark(k) | Stmt::Truncate(k) | Stmt::Blocks(k) => m = m.max(Some(*k)),
+            Stmt::Mark(k) | Stmt::Truncate(k) | Stmt::Blocks(k) | Stmt::Cut { at: k, .. } => m = m.max(Some(*k)),
             Stmt::MoveBack { to, from } => m = m.max(Some(*to)).max(Some(*from)),
             Stmt::Assign(p, x) => {
                 if let Place::Local(k) = p {
