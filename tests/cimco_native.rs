@@ -411,3 +411,41 @@ fn a_block_built_in_the_output_is_cut_as_substring_cuts() {
     let prepared = format!("{:?}", code.handlers);
     assert!(prepared.contains("Cut {"), "the handler cuts in the output: {prepared}");
 }
+
+/// A `writeBlock` that joins its words with `text = text == "" ? word :
+/// text + " " + word` (mach3_field.js) is built in the output when every
+/// word is text, and runs as a call when one is not (a number is not
+/// "nothing written" when it is 0 or when it prints); Node.js agrees either
+/// way.
+#[test]
+fn words_joined_into_a_text_are_built_in_the_output_when_they_are_text() {
+    let words = r#"
+        function block() {
+            var text = "";
+            for (var i = 0; i < arguments.length; i++) {
+                if (arguments[i] != "") {
+                    text = text == "" ? arguments[i] : text + " " + arguments[i];
+                }
+            }
+            if (text == "") {
+                return "";
+            }
+            text = "N" + seq + " " + text;
+            seq += 10;
+            return text + linebreak;
+        }
+        var count = 0;
+        function number() { count = count + 1; return count % 3 == 0 ? 0 : count; }
+        function onOpen(c) { return block(number(), "G90", 0, "") + block("", "") + block(7) + block(1, 2); }
+        function onLinear(x, y, z, m) {
+            return block(m == 0 ? "G0" : "G1", xOutput.format(x), yOutput.format(y), zOutput.format(z)) + block(number(), "M1");
+        }
+    "#;
+    check("join", words, &["onOpen", "onLinear"], &[]);
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("join.js");
+    std::fs::write(&path, format!("{HEAD}{words}")).expect("writes the post");
+    let post = compile(&path).expect("compiles");
+    let prepared = format!("{:?}", postc_runtime::prepare::prepare(&post).handlers);
+    assert!(prepared.contains("Typeof"), "the inlined join is guarded by the words being text: {prepared}");
+}

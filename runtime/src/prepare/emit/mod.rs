@@ -57,6 +57,12 @@ struct Frame {
     depth: usize,
     /// A region local not assigned yet (its first assignment starts it).
     pending: std::cell::Cell<Option<LocalId>>,
+    /// How many of the function's slots are its parameters.
+    params: usize,
+    /// The parameters a region is replaced by that may not be text
+    /// (`text = word` in a `writeBlock` joining its words): the inlined
+    /// body runs only when each is text; see [`Emitter::call_bound`].
+    guards: std::cell::RefCell<Vec<usize>>,
 }
 
 #[derive(Clone)]
@@ -148,7 +154,10 @@ impl<'f> Emitter<'f> {
     }
 
     /// `call`, with parameter `bound.0` already written as the text since
-    /// mark `bound.1` (the caller's region, passed on).
+    /// mark `bound.1` (the caller's region, passed on). A local kept as a
+    /// region that cannot be passed on where the function hands it to
+    /// another (`return writeBlock(..., f)` to a `writeBlock` that joins
+    /// its words) is tried again as a value.
     fn call_bound(
         &mut self,
         f: FunctionId,
@@ -156,6 +165,31 @@ impl<'f> Emitter<'f> {
         depth: usize,
         in_text: bool,
         bound: Option<(usize, LocalId)>,
+    ) -> Option<Vec<Stmt>> {
+        let saved = (self.next, self.budget);
+        if let Some(out) = self.call_with(f, args, depth, in_text, bound, true) {
+            return Some(out);
+        }
+        let has_region_local = self.functions.get(f.index()).is_some_and(|g| match &g.body {
+            Body::Native(body) => region_local(body, g.params, (g.slots as usize).max(g.params)).is_some(),
+            Body::Script(_) => false,
+        });
+        if !has_region_local {
+            return None;
+        }
+        (self.next, self.budget) = saved;
+        self.call_with(f, args, depth, in_text, bound, false)
+    }
+
+    /// [`Self::call_bound`]; `local_region`: a local may be a region.
+    fn call_with(
+        &mut self,
+        f: FunctionId,
+        args: &[Expr],
+        depth: usize,
+        in_text: bool,
+        bound: Option<(usize, LocalId)>,
+        local_region: bool,
     ) -> Option<Vec<Stmt>> {
         if depth >= MAX_DEPTH {
             return None;
@@ -194,7 +228,10 @@ impl<'f> Emitter<'f> {
         if bound.is_some() && region_param.is_none() {
             return None;
         }
-        let region_local = if region_param.is_none() { region_local(body, params, slots) } else { None };
+        let region_local =
+            if region_param.is_none() && local_region { region_local(body, params, slots) } else { None };
+        // What the locals start as: after the arguments, inside the guard.
+        let mut starts = Vec::new();
         for k in 0..slots {
             if Some(k) == region_local {
                 map.push(Binding::Region(self.slot()));
@@ -208,7 +245,7 @@ impl<'f> Emitter<'f> {
                 if first.is_some()
                     && !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if x.index() == k && !expr_reads(e, LocalId::new(k as u16)))
                 {
-                    out.push(Stmt::Assign(Place::Local(s), Expr::Null));
+                    starts.push(Stmt::Assign(Place::Local(s), Expr::Null));
                 }
                 map.push(Binding::Slot(s));
                 continue;
@@ -242,6 +279,8 @@ impl<'f> Emitter<'f> {
             base,
             depth,
             pending: std::cell::Cell::new(region_local.map(|k| LocalId::new(k as u16))),
+            params,
+            guards: Default::default(),
         };
         let mut inner = self.stmts(body, &frame)?;
         let ends = matches!(inner.last(), Some(Stmt::Break));
@@ -254,10 +293,43 @@ impl<'f> Emitter<'f> {
         if breaks(&inner) {
             // An early `return`: a loop to leave.
             inner.push(Stmt::Break);
-            out.push(Stmt::While { cond: Expr::Bool(true), body: merge(inner), span: None });
+            starts.push(Stmt::While { cond: Expr::Bool(true), body: merge(inner), span: None });
         } else {
-            out.extend(inner);
+            starts.extend(inner);
         }
+        let mut guards = frame.guards.take();
+        if guards.is_empty() {
+            out.extend(starts);
+            return Some(merge(out));
+        }
+        // The region is set to an argument that may not be text: when one
+        // is not (a number, `undefined`), `text == ""` is not "nothing
+        // written", so the function then runs as a call whose value is
+        // written (the same text the allocating path writes).
+        if bound.is_some() || region_param.is_some() {
+            return None;
+        }
+        guards.sort_unstable();
+        guards.dedup();
+        let args: Vec<Expr> = (0..params)
+            .map(|k| match frame.map.get(k) {
+                Some(Binding::Value(v)) => Some(v.clone()),
+                Some(Binding::Slot(s)) => Some(Expr::Local(*s)),
+                _ => None,
+            })
+            .collect::<Option<_>>()?;
+        let is_text = |k: usize| {
+            let kind = Expr::Unary(UnaryOp::Typeof, Box::new(args[k].clone()));
+            Expr::Binary(BinaryOp::StrictEq, Box::new(kind), Box::new(Expr::text("string")))
+        };
+        let cond = guards
+            .iter()
+            .skip(1)
+            .fold(is_text(guards[0]), |all, &k| Expr::Binary(BinaryOp::And, Box::new(all), Box::new(is_text(k))));
+        out.push(Stmt::If {
+            branches: vec![(cond, merge(starts))],
+            otherwise: vec![Stmt::Emit(vec![Piece::Expr(Expr::Call(f, args))])],
+        });
         Some(merge(out))
     }
 
@@ -286,6 +358,12 @@ impl<'f> Emitter<'f> {
                             fr.pending.set(None);
                             out.push(Stmt::Mark(mark));
                             out.extend(self.text(e, fr, fr.depth + 1)?);
+                        } else if let Expr::Choose(c, a, b) = e {
+                            // `text = text == "" ? word : text + " " + word`
+                            let cond = self.cond(c, fr)?;
+                            let yes = self.region_text(a, *k, mark, fr)?;
+                            let no = self.region_text(b, *k, mark, fr)?;
+                            out.push(Stmt::If { branches: vec![(cond, yes)], otherwise: no });
                         } else {
                             out.extend(self.region_text(e, *k, mark, fr)?);
                         }
@@ -362,7 +440,14 @@ impl<'f> Emitter<'f> {
         concat_leaves(e, &mut leaves);
         let pos = leaves.iter().position(|l| region_part(l, k).is_some());
         let Some(pos) = pos else {
-            // The region is replaced.
+            // The region is replaced: by text, or by a parameter that the
+            // inlined body then requires to be text (`Frame::guards`).
+            if !is_text(e, &self.returns_text) {
+                match e {
+                    Expr::Local(p) if p.index() < fr.params && !fr.identity => fr.guards.borrow_mut().push(p.index()),
+                    _ => return None,
+                }
+            }
             let mut out = vec![Stmt::Truncate(mark)];
             for l in &leaves {
                 if mentions_region(l, fr) {
@@ -458,7 +543,15 @@ impl<'f> Emitter<'f> {
 impl Frame {
     /// The handler's own frame: expressions are already in its terms.
     fn root() -> Frame {
-        Frame { identity: true, map: Vec::new(), base: LocalId::new(0), depth: 0, pending: std::cell::Cell::new(None) }
+        Frame {
+            identity: true,
+            map: Vec::new(),
+            base: LocalId::new(0),
+            depth: 0,
+            pending: std::cell::Cell::new(None),
+            params: 0,
+            guards: Default::default(),
+        }
     }
 }
 

@@ -30,6 +30,10 @@ pub(super) fn region_param(body: &[Stmt], params: usize, args: &[Expr], returns_
 pub(super) fn region_uses_ok(body: &[Stmt], k: LocalId) -> bool {
     body.iter().all(|s| match s {
         Stmt::Return(Some(e)) => ret_ok(e, k),
+        // `text = text == "" ? word : text + " " + word`
+        Stmt::Assign(Place::Local(x), Expr::Choose(c, a, b)) if *x == k => {
+            cond_ok(c, k) && leaf_only(a, k) && leaf_only(b, k)
+        }
         Stmt::Assign(Place::Local(x), e) if *x == k => leaf_only(e, k),
         Stmt::Assign(_, e) | Stmt::Eval(e) => !expr_reads(e, k),
         Stmt::If { branches, otherwise } => {
