@@ -11,8 +11,13 @@
 //! written since the mark", `text = "N10 " + text` writes the new text and
 //! moves it back to the mark, `return text + linebreak` just appends,
 //! `return text.substring(1) + linebreak` cuts the first character after
-//! the mark ([`Stmt::Cut`]) and appends. A
-//! function whose shape is outside these rules keeps the allocating
+//! the mark ([`Stmt::Cut`]) and appends. A local that starts as text is
+//! kept the same way; `text = text == "" ? w : text + " " + w` is an `if`
+//! on "nothing written". Emptiness is "nothing written" only while the
+//! text is text: a region set to a parameter that may be a number or
+//! `undefined` makes the inlined body run only when each such argument is
+//! text (`typeof a == "string"`), and the function is called otherwise.
+//! A function whose shape is outside these rules keeps the allocating
 //! `Write`; the result is the same either way.
 
 mod marks;
