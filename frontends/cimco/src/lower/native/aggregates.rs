@@ -1123,41 +1123,16 @@ impl Native<'_, '_> {
         update: &Option<Expr>,
         body: &Stmt,
     ) -> Option<usize> {
-        let number = |e: &Expr| match e.kind {
-            ExprKind::Number(x) => Some(x),
-            _ => None,
+        let counted = super::variadic::counted_loop(init, test, update)?;
+        let from = counted.from;
+        let to = match counted.to.kind {
+            ExprKind::Number(n) => n,
+            _ => self.known_length(counted.to)? as f64,
         };
-        let (name, from) = match init {
-            Some(ForInit::Var(ds)) if ds.len() == 1 => (&ds[0].name.name, number(ds[0].init.as_ref()?)?),
-            Some(ForInit::Expr(Expr { kind: ExprKind::Assign { op: AssignOp::Assign, target, value }, .. })) => {
-                match &target.kind {
-                    ExprKind::Ident(name) => (name, number(value)?),
-                    _ => return None,
-                }
-            }
-            _ => return None,
-        };
-        let is_i = |e: &Expr| matches!(&e.kind, ExprKind::Ident(x) if x == name);
-        let (op, left, right) = match &test.as_ref()?.kind {
-            ExprKind::Binary { op: op @ (BinaryOp::Lt | BinaryOp::Le), left, right } => (*op, left, right),
-            _ => return None,
-        };
-        if !is_i(left) {
+        if super::variadic::assigns(body, counted.name) || !from.is_finite() || !to.is_finite() {
             return None;
         }
-        let to = match number(right) {
-            Some(n) => n,
-            None => self.known_length(right)? as f64,
-        };
-        let steps = match &update.as_ref()?.kind {
-            ExprKind::Update { op: UpdateOp::Increment, target, .. } => is_i(target),
-            ExprKind::Assign { op: AssignOp::Add, target, value } => is_i(target) && number(value) == Some(1.0),
-            _ => false,
-        };
-        if !steps || super::variadic::assigns(body, name) || !from.is_finite() || !to.is_finite() {
-            return None;
-        }
-        let n = if op == BinaryOp::Le { (to - from).floor() + 1.0 } else { (to - from).ceil() };
+        let n = if counted.op == BinaryOp::Le { (to - from).floor() + 1.0 } else { (to - from).ceil() };
         Some(n.clamp(0.0, MAX_ELEMENTS as f64 + 1.0) as usize)
     }
 

@@ -222,51 +222,28 @@ impl Native<'_, '_> {
         update: &Option<Expr>,
         body: &Stmt,
     ) -> Option<(usize, f64, f64)> {
-        let number = |e: &Expr| match e.kind {
-            ExprKind::Number(x) => Some(x),
-            _ => None,
-        };
-        let (name, from) = match init {
-            Some(ForInit::Var(ds)) if ds.len() == 1 => (&ds[0].name.name, number(ds[0].init.as_ref()?)?),
-            Some(ForInit::Expr(Expr { kind: ExprKind::Assign { op: AssignOp::Assign, target, value }, .. })) => {
-                match &target.kind {
-                    ExprKind::Ident(name) => (name, number(value)?),
-                    _ => return None,
-                }
-            }
-            _ => return None,
-        };
+        let CountedLoop { name, from, op, to: right } = counted_loop(init, test, update)?;
         let Symbol::Local { func, slot } = self.model.scopes.resolve(name, self.at) else { return None };
-        if func != self.at || self.arrays.contains_key(&slot) {
+        if op != BinaryOp::Lt || func != self.at || self.arrays.contains_key(&slot) {
             return None;
         }
-        let is_i = |e: &Expr| matches!(&e.kind, ExprKind::Ident(x) if x == name);
-        let ExprKind::Binary { op: BinaryOp::Lt, left, right } = &test.as_ref()?.kind else { return None };
         let is_arguments = matches!(&right.kind, ExprKind::Member { object, property }
             if property.name == "length" && matches!(&object.kind, ExprKind::Ident(a) if a == "arguments"));
-        if !is_i(left) {
-            return None;
-        }
         let n = if is_arguments {
             self.arity?
         } else {
-            let to = match number(right) {
-                Some(n) if n.is_finite() && n >= 0.0 && n == n.trunc() => n as usize,
-                Some(_) => return None,
-                None => self.known_length(right)?,
+            let to = match right.kind {
+                ExprKind::Number(n) if n.is_finite() && n >= 0.0 && n == n.trunc() => n as usize,
+                ExprKind::Number(_) => return None,
+                _ => self.known_length(right)?,
             };
             if !self.mentions_aggregate(body) {
                 return None;
             }
             to
         };
-        let steps = match &update.as_ref()?.kind {
-            ExprKind::Update { op: UpdateOp::Increment, target, .. } => is_i(target),
-            ExprKind::Assign { op: AssignOp::Add, target, value } => is_i(target) && number(value) == Some(1.0),
-            _ => false,
-        };
         let to = n as f64;
-        if !steps || has_continue(body) || breaks_switch(body) || assigns(body, name) || to - from > MAX_ARITY as f64 {
+        if has_continue(body) || breaks_switch(body) || assigns(body, name) || to - from > MAX_ARITY as f64 {
             return None;
         }
         Some((slot, from, to))
@@ -321,4 +298,45 @@ pub(super) fn assigns(body: &Stmt, name: &str) -> bool {
     let mut a = A { name, found: false };
     walk_stmt(body, &mut a);
     a.found
+}
+
+/// A counted `for` loop: `for (var i = FROM; i OP TO; i++)` (or `i =
+/// FROM`, `i += 1`) with `FROM` a number and `OP` `<` or `<=`.
+pub(super) struct CountedLoop<'e> {
+    pub name: &'e str,
+    pub from: f64,
+    pub op: BinaryOp,
+    pub to: &'e Expr,
+}
+
+/// The counted loop a `for` statement's head is, if it is one.
+pub(super) fn counted_loop<'e>(
+    init: &'e Option<ForInit>,
+    test: &'e Option<Expr>,
+    update: &'e Option<Expr>,
+) -> Option<CountedLoop<'e>> {
+    let number = |e: &Expr| match e.kind {
+        ExprKind::Number(x) => Some(x),
+        _ => None,
+    };
+    let (name, from) = match init {
+        Some(ForInit::Var(ds)) if ds.len() == 1 => (&ds[0].name.name, number(ds[0].init.as_ref()?)?),
+        Some(ForInit::Expr(Expr { kind: ExprKind::Assign { op: AssignOp::Assign, target, value }, .. })) => {
+            match &target.kind {
+                ExprKind::Ident(name) => (name, number(value)?),
+                _ => return None,
+            }
+        }
+        _ => return None,
+    };
+    let is_i = |e: &Expr| matches!(&e.kind, ExprKind::Ident(x) if x == name);
+    let ExprKind::Binary { op: op @ (BinaryOp::Lt | BinaryOp::Le), left, right } = &test.as_ref()?.kind else {
+        return None;
+    };
+    let steps = match &update.as_ref()?.kind {
+        ExprKind::Update { op: UpdateOp::Increment, target, .. } => is_i(target),
+        ExprKind::Assign { op: AssignOp::Add, target, value } => is_i(target) && number(value) == Some(1.0),
+        _ => false,
+    };
+    (is_i(left) && steps).then_some(CountedLoop { name, from, op: *op, to: right })
 }
