@@ -135,9 +135,15 @@ impl Engine<'_> {
                 Stmt::Cut { at, chars } => {
                     let at = self.mark(*at, frame);
                     let written = &self.out.buf[at..];
-                    let bytes = match std::str::from_utf8(written) {
-                        Ok(t) => t.char_indices().nth(*chars).map_or(t.len(), |(i, _)| i),
-                        Err(_) => (*chars).min(written.len()),
+                    let ascii = (*chars).min(written.len());
+                    // Characters are bytes while they are ASCII.
+                    let bytes = if written[..ascii].is_ascii() {
+                        ascii
+                    } else {
+                        match std::str::from_utf8(written) {
+                            Ok(t) => t.char_indices().nth(*chars).map_or(t.len(), |(i, _)| i),
+                            Err(_) => ascii,
+                        }
                     };
                     self.out.buf.drain(at..at + bytes);
                 }
@@ -455,6 +461,12 @@ impl Engine<'_> {
             other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
         }
         self.set_var(id, v);
+        self.scratch_text(buf)
+    }
+
+    /// The text formatted into `buf` (the engine's scratch buffer, given
+    /// back): the shared empty text, or the bytes as a value.
+    fn scratch_text(&mut self, buf: Vec<u8>) -> Value {
         let text =
             if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
         self.scratch = buf;
@@ -470,10 +482,7 @@ impl Engine<'_> {
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut buf);
         state.previous = std::mem::replace(&mut state.value, Value::Num(n));
-        let text =
-            if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
-        self.scratch = buf;
-        text
+        self.scratch_text(buf)
     }
 
     /// Calls a post function with arguments.
