@@ -7,8 +7,10 @@
 //! (RON) are skipped. The reader holds one line at a time, so memory stays
 //! flat whatever the file's length; each event carries the span of its line.
 
+mod json_moves;
+
 use postc_ir::codes;
-use std::io::{self, BufRead, BufReader};
+use std::io::{BufRead, BufReader};
 
 use postc_ir::source::SourceReader;
 use std::path::Path;
@@ -27,7 +29,7 @@ pub struct NativeReader<R> {
     input: R,
     syntax: Option<Syntax>,
     file: FileId,
-    line: String,
+    line: Vec<u8>,
     offset: usize,
     done: bool,
     ron: ron::Options,
@@ -54,7 +56,7 @@ impl<R: BufRead> NativeReader<R> {
         let ron = ron::Options::default().with_default_extension(
             ron::extensions::Extensions::IMPLICIT_SOME | ron::extensions::Extensions::UNWRAP_VARIANT_NEWTYPES,
         );
-        NativeReader { input, syntax, file, line: String::new(), offset: 0, done: false, ron }
+        NativeReader { input, syntax, file, line: Vec::new(), offset: 0, done: false, ron }
     }
 
     fn parse_line(&mut self, start: usize, text: &str) -> Result<Event, Diagnostic> {
@@ -86,39 +88,55 @@ impl<R: BufRead> EventSource for NativeReader<R> {
         while !self.done {
             self.line.clear();
             let start = self.offset;
-            match self.input.read_line(&mut self.line) {
+            match self.input.read_until(b'\n', &mut self.line) {
                 Ok(0) => self.done = true,
                 Ok(n) => {
                     self.offset += n;
                     let line = std::mem::take(&mut self.line);
-                    let trimmed_start = line.len() - line.trim_start().len();
-                    let text = line.trim();
-                    let result = if text.is_empty() || text.starts_with("//") || text.starts_with('#') {
-                        None
-                    } else {
-                        Some(self.parse_line(start + trimmed_start, text))
-                    };
-                    let span = Span::new(self.file, start + trimmed_start, start + trimmed_start + text.len());
+                    let result = self.read_line(start, &line);
                     self.line = line;
                     match result {
-                        Some(Ok(event)) => return Some((event, span)),
+                        Some(Ok(found)) => return Some(found),
                         Some(Err(d)) => diagnostics.push(d),
                         None => {}
                     }
                 }
                 Err(e) => {
                     self.done = true;
-                    let d = if e.kind() == io::ErrorKind::InvalidData {
-                        Diagnostic::error(codes::TP003, "the toolpath is not text (it is not valid UTF-8)")
-                            .at(Span::new(self.file, start, start + 1), "from here on")
-                    } else {
-                        Diagnostic::error(codes::IO002, format!("cannot read the toolpath: {e}"))
-                    };
-                    diagnostics.push(d);
+                    diagnostics.push(Diagnostic::error(codes::IO002, format!("cannot read the toolpath: {e}")));
                 }
             }
         }
         None
+    }
+}
+
+impl<R: BufRead> NativeReader<R> {
+    /// The event of the line read from byte `start`: `None` for a blank or
+    /// comment line. A move line of JSON Lines goes through the fast path
+    /// ([`json_moves`]) before it is even checked to be UTF-8 (a line it
+    /// reads is ASCII); every other line is text read by serde.
+    fn read_line(&mut self, start: usize, line: &[u8]) -> Option<Result<(Event, Span), Diagnostic>> {
+        if self.syntax != Some(Syntax::Ron) {
+            let text = line.trim_ascii();
+            if let Some(event) = json_moves::read_move(text) {
+                self.syntax = Some(Syntax::JsonLines);
+                let at = start + (line.len() - line.trim_ascii_start().len());
+                return Some(Ok((event, Span::new(self.file, at, at + text.len()))));
+            }
+        }
+        let Ok(line) = std::str::from_utf8(line) else {
+            self.done = true;
+            return Some(Err(Diagnostic::error(codes::TP003, "the toolpath is not text (it is not valid UTF-8)")
+                .at(Span::new(self.file, start, start + 1), "from here on")));
+        };
+        let trimmed_start = line.len() - line.trim_start().len();
+        let text = line.trim();
+        if text.is_empty() || text.starts_with("//") || text.starts_with('#') {
+            return None;
+        }
+        let span = Span::new(self.file, start + trimmed_start, start + trimmed_start + text.len());
+        Some(self.parse_line(start + trimmed_start, text).map(|event| (event, span)))
     }
 }
 

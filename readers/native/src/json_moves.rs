@@ -1,0 +1,388 @@
+//! The JSON Lines fast path for the three move events, which are nearly
+//! every line of a toolpath: `{"Rapid":{...}}`, `{"Feed":{...}}` and
+//! `{"Arc":{...}}` written the way [`crate::write_event`] writes them (no
+//! white space, keys without escapes, numbers, `null` and the enum names).
+//!
+//! [`read_move`] answers `Some(event)` only for a line it reads completely,
+//! and then the event is exactly what serde_json gives for that line (the
+//! tests check it over random lines): the same fields, the same defaults,
+//! numbers as the double nearest to their decimal text (fast-float2's
+//! correctly rounded parse, as serde_json's `float_roundtrip` reads them).
+//! Anything else (another event, white space, an escape, an unknown or
+//! repeated key, a missing field, a number out of range) answers `None` and
+//! the line goes to serde_json, which reads it or says what is wrong. So the
+//! fast path changes the speed of reading, never what is read.
+
+use postc_ir::Event;
+use postc_ir::event::{ArcDir, ArcMove, FeedMove, Intent, Move, Plane};
+
+/// The move event of a JSON line, or `None` when the line is not a move
+/// written in the plain form this reads.
+pub fn read_move(line: &[u8]) -> Option<Event> {
+    let mut c = Cursor { b: line, i: 0 };
+    c.eat(b"{\"")?;
+    let event = match c.word()? {
+        b"Rapid" => {
+            c.eat(b":{")?;
+            Event::Rapid(c.rapid()?)
+        }
+        b"Feed" => {
+            c.eat(b":{")?;
+            Event::Feed(c.feed()?)
+        }
+        b"Arc" => {
+            c.eat(b":{")?;
+            Event::Arc(c.arc()?)
+        }
+        _ => return None,
+    };
+    c.eat(b"}")?;
+    (c.i == c.b.len()).then_some(event)
+}
+
+struct Cursor<'a> {
+    b: &'a [u8],
+    i: usize,
+}
+
+/// Bits of the keys already read, so that a repeated key goes to serde_json.
+struct Seen(u32);
+
+impl Seen {
+    /// Stores the value of key `bit`; `None` when the key came before or
+    /// the value is not read.
+    fn set<T>(&mut self, bit: u32, slot: &mut T, value: Option<T>) -> Option<()> {
+        let mask = 1 << bit;
+        if self.0 & mask != 0 {
+            return None;
+        }
+        self.0 |= mask;
+        *slot = value?;
+        Some(())
+    }
+    fn has(&self, bit: u32) -> bool {
+        self.0 & (1 << bit) != 0
+    }
+}
+
+impl<'a> Cursor<'a> {
+    fn eat(&mut self, text: &[u8]) -> Option<()> {
+        if self.b[self.i..].starts_with(text) {
+            self.i += text.len();
+            Some(())
+        } else {
+            None
+        }
+    }
+
+    /// The text up to the next `"`, which it consumes; `None` if it holds
+    /// an escape or a control character (serde_json's business).
+    fn word(&mut self) -> Option<&'a [u8]> {
+        let start = self.i;
+        while let Some(&b) = self.b.get(self.i) {
+            self.i += 1;
+            match b {
+                b'"' => return Some(&self.b[start..self.i - 1]),
+                b'\\' | 0..=0x1f => return None,
+                _ => {}
+            }
+        }
+        None
+    }
+
+    /// Reads `"key":` and hands the key to `field`, then `,` or the closing
+    /// `}`, for every field of the object.
+    fn fields(&mut self, mut field: impl FnMut(&mut Self, &[u8]) -> Option<()>) -> Option<()> {
+        if self.eat(b"}").is_some() {
+            return Some(());
+        }
+        loop {
+            self.eat(b"\"")?;
+            let key = self.word()?;
+            self.eat(b":")?;
+            field(self, key)?;
+            match self.b.get(self.i)? {
+                b',' => self.i += 1,
+                b'}' => {
+                    self.i += 1;
+                    return Some(());
+                }
+                _ => return None,
+            }
+        }
+    }
+
+    /// A JSON number (`-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`),
+    /// finite.
+    fn number(&mut self) -> Option<f64> {
+        let start = self.i;
+        let digits = |c: &mut Self| {
+            let from = c.i;
+            while c.b.get(c.i).is_some_and(u8::is_ascii_digit) {
+                c.i += 1;
+            }
+            c.i - from
+        };
+        if self.b.get(self.i) == Some(&b'-') {
+            self.i += 1;
+        }
+        let first = *self.b.get(self.i)?;
+        let whole = digits(self);
+        if whole == 0 || (first == b'0' && whole > 1) {
+            return None;
+        }
+        if self.b.get(self.i) == Some(&b'.') {
+            self.i += 1;
+            if digits(self) == 0 {
+                return None;
+            }
+        }
+        if matches!(self.b.get(self.i), Some(b'e' | b'E')) {
+            self.i += 1;
+            if matches!(self.b.get(self.i), Some(b'+' | b'-')) {
+                self.i += 1;
+            }
+            if digits(self) == 0 {
+                return None;
+            }
+        }
+        // The grammar is checked above; fast-float2 rounds as `str::parse` does.
+        fast_float2::parse::<f64, _>(&self.b[start..self.i]).ok().filter(|x| x.is_finite())
+    }
+
+    fn optional_number(&mut self) -> Option<Option<f64>> {
+        if self.eat(b"null").is_some() { Some(None) } else { self.number().map(Some) }
+    }
+
+    /// A quoted enum variant name.
+    fn name(&mut self) -> Option<&'a [u8]> {
+        self.eat(b"\"")?;
+        self.word()
+    }
+
+    fn intent(&mut self) -> Option<Intent> {
+        Some(match self.name()? {
+            b"Cut" => Intent::Cut,
+            b"Plunge" => Intent::Plunge,
+            b"Retract" => Intent::Retract,
+            b"LeadIn" => Intent::LeadIn,
+            b"LeadOut" => Intent::LeadOut,
+            _ => return None,
+        })
+    }
+
+    fn rapid(&mut self) -> Option<Move> {
+        let (mut m, mut seen) = (Move::default(), Seen(0));
+        self.fields(|c, key| {
+            match key {
+                b"x" => seen.set(0, &mut m.x, c.number())?,
+                b"y" => seen.set(1, &mut m.y, c.number())?,
+                b"z" => seen.set(2, &mut m.z, c.number())?,
+                b"a" => seen.set(3, &mut m.a, c.optional_number())?,
+                b"b" => seen.set(4, &mut m.b, c.optional_number())?,
+                b"c" => seen.set(5, &mut m.c, c.optional_number())?,
+                _ => return None,
+            }
+            Some(())
+        })?;
+        (seen.has(0) && seen.has(1) && seen.has(2)).then_some(m)
+    }
+
+    fn feed(&mut self) -> Option<FeedMove> {
+        let (mut m, mut seen) = (FeedMove::default(), Seen(0));
+        self.fields(|c, key| {
+            match key {
+                b"x" => seen.set(0, &mut m.x, c.number())?,
+                b"y" => seen.set(1, &mut m.y, c.number())?,
+                b"z" => seen.set(2, &mut m.z, c.number())?,
+                b"intent" => seen.set(3, &mut m.intent, c.intent())?,
+                b"feed" => seen.set(4, &mut m.feed, c.optional_number())?,
+                b"a" => seen.set(5, &mut m.a, c.optional_number())?,
+                b"b" => seen.set(6, &mut m.b, c.optional_number())?,
+                b"c" => seen.set(7, &mut m.c, c.optional_number())?,
+                _ => return None,
+            }
+            Some(())
+        })?;
+        (seen.has(0) && seen.has(1) && seen.has(2)).then_some(m)
+    }
+
+    fn arc(&mut self) -> Option<ArcMove> {
+        let (mut m, mut seen) = (ArcMove::default(), Seen(0));
+        self.fields(|c, key| {
+            match key {
+                b"dir" => {
+                    let dir = match c.name()? {
+                        b"Cw" => ArcDir::Cw,
+                        b"Ccw" => ArcDir::Ccw,
+                        _ => return None,
+                    };
+                    seen.set(0, &mut m.dir, Some(dir))?
+                }
+                b"x" => seen.set(1, &mut m.x, c.number())?,
+                b"y" => seen.set(2, &mut m.y, c.number())?,
+                b"z" => seen.set(3, &mut m.z, c.number())?,
+                b"cx" => seen.set(4, &mut m.cx, c.number())?,
+                b"cy" => seen.set(5, &mut m.cy, c.number())?,
+                b"cz" => seen.set(6, &mut m.cz, c.number())?,
+                b"plane" => {
+                    let plane = match c.name()? {
+                        b"Xy" => Plane::Xy,
+                        b"Zx" => Plane::Zx,
+                        b"Yz" => Plane::Yz,
+                        _ => return None,
+                    };
+                    seen.set(7, &mut m.plane, Some(plane))?
+                }
+                b"intent" => seen.set(8, &mut m.intent, c.intent())?,
+                b"feed" => seen.set(9, &mut m.feed, c.optional_number())?,
+                _ => return None,
+            }
+            Some(())
+        })?;
+        (0..6).all(|bit| seen.has(bit)).then_some(m)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn serde(line: &str) -> Option<Event> {
+        serde_json::from_str::<Event>(line).ok()
+    }
+
+    #[test]
+    fn reads_what_the_writer_writes() {
+        let events = [
+            Event::Rapid(Move { x: 1.5, y: -2.0, z: 3.25, a: Some(90.0), ..Move::default() }),
+            Event::Feed(FeedMove {
+                x: 0.1,
+                y: 0.2,
+                z: -1.0,
+                intent: Intent::Plunge,
+                feed: Some(500.0),
+                ..FeedMove::default()
+            }),
+            Event::Feed(FeedMove { x: 46.882499999999936, y: 0.12349999999999985, z: -1.075, ..FeedMove::default() }),
+            Event::Arc(ArcMove {
+                dir: ArcDir::Ccw,
+                x: 1.0,
+                y: 2.0,
+                z: -0.5,
+                cx: 0.5,
+                cy: 1.0,
+                cz: 0.0,
+                plane: Plane::Zx,
+                intent: Intent::LeadIn,
+                feed: Some(1200.0),
+            }),
+        ];
+        for e in events {
+            let mut line = String::new();
+            crate::write_event(&e, crate::Syntax::JsonLines, &mut line);
+            let line = line.trim_end();
+            assert_eq!(read_move(line.as_bytes()), Some(e), "{line}");
+        }
+    }
+
+    #[test]
+    fn leaves_to_serde_what_it_does_not_read_plainly() {
+        for line in [
+            r#"{"Rapid":{"x":1,"y":2}}"#,
+            r#"{"Rapid":{"x":1,"y":2,"z":3,"x":4}}"#,
+            r#"{"Rapid":{"x":1,"y":2,"z":3,"w":4}}"#,
+            r#"{"Rapid": {"x":1,"y":2,"z":3}}"#,
+            r#"{"Rapid":{"x":01,"y":2,"z":3}}"#,
+            r#"{"Rapid":{"x":1.,"y":2,"z":3}}"#,
+            r#"{"Rapid":{"x":1e999,"y":2,"z":3}}"#,
+            r#"{"Rapid":{"x":1,"y":2,"z":3}} "#,
+            r#"{"Rapid":{"x":1,"y":2,"z":3,"tool_axis":[0,0,1]}}"#,
+            r#"{"Feed":{"x":1,"y":2,"z":3,"intent":"Sideways"}}"#,
+            r#"{"Arc":{"x":1,"y":2,"z":3,"cx":0,"cy":0}}"#,
+            r#"{"R\u0061pid":{"x":1,"y":2,"z":3}}"#,
+            r#"{"Dwell":{"seconds":1}}"#,
+            r#""ToolpathEnd""#,
+        ] {
+            assert_eq!(read_move(line.as_bytes()), None, "{line}");
+        }
+    }
+
+    fn number_text() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        prop_oneof![
+            4 => any::<f64>().prop_filter("finite", |x| x.is_finite()).prop_map(|x| format!("{x:?}")),
+            2 => any::<i64>().prop_map(|x| x.to_string()),
+            1 => any::<u64>().prop_map(|x| x.to_string()),
+            3 => "-?(0|[1-9][0-9]{0,25})(\\.[0-9]{1,25})?([eE][+-]?[0-9]{1,3})?",
+            1 => Just("-0".to_string()),
+            1 => Just("null".to_string()),
+            1 => "[-+.0-9eE]{1,8}",
+        ]
+    }
+
+    /// The fields of a move line: its required keys, some of its optional
+    /// ones, now and then an unknown key, a missing or a repeated one.
+    fn move_line() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        const TAGS: [(&str, &[&str], &[&str]); 3] = [
+            ("Rapid", &["x", "y", "z"], &["a", "b", "c", "q"]),
+            ("Feed", &["x", "y", "z"], &["intent", "feed", "a", "b", "c", "q"]),
+            ("Arc", &["dir", "x", "y", "z", "cx", "cy"], &["cz", "plane", "intent", "feed", "q"]),
+        ];
+        (0..TAGS.len())
+            .prop_flat_map(|t| {
+                let (tag, required, optional) = TAGS[t];
+                (
+                    Just(tag),
+                    Just(required),
+                    proptest::sample::subsequence(optional, 0..=optional.len()),
+                    proptest::option::weighted(0.1, 0usize..6),
+                    proptest::option::weighted(0.1, 0usize..6),
+                    proptest::collection::vec(number_text(), 12),
+                    proptest::collection::vec(0usize..4, 12),
+                    any::<u64>(),
+                )
+            })
+            .prop_map(|(tag, required, optional, missing, repeated, numbers, names, order)| {
+                let mut keys: Vec<&str> = required.iter().chain(optional.iter()).copied().collect();
+                if let Some(at) = missing.filter(|&at| at < keys.len()) {
+                    keys.remove(at);
+                }
+                if let Some(at) = repeated.filter(|&at| at < keys.len()) {
+                    keys.push(keys[at]);
+                }
+                // A shuffle from the seed: the serializer's order is not the only one.
+                let n = keys.len();
+                for i in (1..n).rev() {
+                    keys.swap(i, (order.rotate_left(i as u32 * 7) % (i as u64 + 1)) as usize);
+                }
+                let fields: Vec<String> = keys
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &k)| {
+                        let value = match k {
+                            "intent" => ["\"Cut\"", "\"Plunge\"", "\"LeadOut\"", "1"][names[i]].to_string(),
+                            "dir" => ["\"Cw\"", "\"Ccw\"", "\"Cw\"", "\"Up\""][names[i]].to_string(),
+                            "plane" => ["\"Xy\"", "\"Zx\"", "\"Yz\"", "null"][names[i]].to_string(),
+                            _ => numbers[i].clone(),
+                        };
+                        format!("\"{k}\":{value}")
+                    })
+                    .collect();
+                format!("{{\"{tag}\":{{{}}}}}", fields.join(","))
+            })
+    }
+
+    proptest::proptest! {
+        /// On move lines with keys in any order and any number texts (valid
+        /// or not), the fast path reads what serde_json reads, bit for bit,
+        /// or leaves the line to it.
+        #[test]
+        fn agrees_with_serde_json(line in move_line()) {
+            if let Some(fast) = read_move(line.as_bytes()) {
+                proptest::prop_assert_eq!(format!("{:?}", Some(fast)), format!("{:?}", serde(&line)), "{}", line);
+            }
+        }
+    }
+}
