@@ -134,6 +134,16 @@ impl Text {
     pub fn value(&self) -> &Value {
         &self.0
     }
+
+    /// Whether the literal is `""`, from its length (not through `str`,
+    /// whose view of short text checks it is UTF-8 each time).
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        match &self.0 {
+            Value::Text(t) => t.is_empty(),
+            _ => true,
+        }
+    }
 }
 
 impl std::ops::Deref for Text {

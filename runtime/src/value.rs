@@ -67,6 +67,16 @@ impl Text {
         }
     }
 
+    /// The bytes of ASCII text; `None` for other text. Short text answers
+    /// at once (it is kept in place only when ASCII).
+    #[inline]
+    pub fn ascii_bytes(&self) -> Option<&[u8]> {
+        match &self.0 {
+            Repr::Inline(len, bytes) => Some(&bytes[..*len as usize]),
+            Repr::Shared(s) => s.is_ascii().then_some(s.as_bytes()),
+        }
+    }
+
     pub fn as_str(&self) -> &str {
         match &self.0 {
             // ASCII: always UTF-8.

@@ -298,6 +298,18 @@ impl Engine<'_> {
             {
                 Ok(empty == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq))
             }
+            // `typeof w === "string"` (the guard of the join fast path):
+            // the type's name compared, no text made.
+            Expr::Binary(op @ (BinaryOp::StrictEq | BinaryOp::StrictNe), a, b)
+                if let Expr::Unary(UnaryOp::Typeof, operand) = &**a
+                    && is_leaf(operand)
+                    && let Expr::Text(name) = &**b =>
+            {
+                let mut tmp = Value::Null;
+                let kind = ops::type_name(leaf(operand, frame, &self.globals, &mut tmp));
+                let Value::Text(name) = name.value() else { return Ok(*op == BinaryOp::StrictNe) };
+                Ok((name.as_bytes() == kind.as_bytes()) == (*op == BinaryOp::StrictEq))
+            }
             Expr::Binary(op, a, b) if is_leaf(a) && is_leaf(b) => {
                 let (mut ta, mut tb) = (Value::Null, Value::Null);
                 let x = leaf(a, frame, &self.globals, &mut ta);

@@ -16,12 +16,18 @@ pub(crate) fn unary(op: UnaryOp, a: &Value) -> Value {
         UnaryOp::Not => Value::Bool(!a.truthy()),
         UnaryOp::Plus => Value::Num(js_number(a)),
         UnaryOp::BitNot => Value::Num(f64::from(!js::to_int32(js_number(a)))),
-        UnaryOp::Typeof => Value::text(match a {
-            Value::Num(_) => "number",
-            Value::Text(_) => "string",
-            Value::Bool(_) => "boolean",
-            Value::Null => "undefined",
-        }),
+        UnaryOp::Typeof => Value::text(type_name(a)),
+    }
+}
+
+/// What JavaScript's `typeof` says of a value.
+#[inline]
+pub(crate) fn type_name(a: &Value) -> &'static str {
+    match a {
+        Value::Num(_) => "number",
+        Value::Text(_) => "string",
+        Value::Bool(_) => "boolean",
+        Value::Null => "undefined",
     }
 }
 
@@ -240,7 +246,9 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
         Builtin::ToFixed => Value::text(&js::to_fixed(args.first().map_or(f64::NAN, js_number), n(1))),
         Builtin::Substring => {
             let t = s(0);
-            let len = if t.is_ascii() { t.len() } else { t.chars().count() };
+            // ASCII text is cut by bytes, with no look at it as `str`.
+            let ascii = t.ascii_bytes().is_some();
+            let len = if ascii { t.len() } else { t.chars().count() };
             let index = |v: Option<&Value>| match v {
                 None | Some(Value::Null) => None,
                 Some(v) => {
@@ -253,8 +261,8 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
             let (a, b) = (a.min(b), a.max(b));
             if a == 0 && b == len {
                 Value::Text(t)
-            } else if t.is_ascii() {
-                Value::text(&t[a..b])
+            } else if let Some(bytes) = t.ascii_bytes() {
+                Value::Text(Text::from_bytes(&bytes[a..b]))
             } else {
                 Value::text(&t.chars().skip(a).take(b - a).collect::<String>())
             }
