@@ -71,6 +71,26 @@ pub enum Stmt {
     /// Turn the text written since a mark into blocks, as [`Stmt::Write`]
     /// does with a value: each line that is not empty becomes a block.
     Blocks(LocalId),
+    /// One word of a block built in the output, in one step: when `cond`
+    /// holds, `sep` if a word came before, then the word's pieces
+    /// ([`crate::prepare`]'s `fuse` makes it of the statements a joined
+    /// word array lowers to; it does what they do, in their order).
+    Word {
+        cond: Expr,
+        word: Vec<Piece>,
+        sep: Vec<u8>,
+        before: WordsBefore,
+    },
+}
+
+/// How a [`Stmt::Word`] knows whether a word came before it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WordsBefore {
+    /// A local counts the words (`if (n > 0) sep; word; n += 1`).
+    Count(LocalId),
+    /// Text was written since a mark (`if (!written) { drop it; word }
+    /// else { sep + word }`).
+    Written(LocalId),
 }
 
 /// One piece of an output block (see [`postc_ir::Piece`]).

@@ -13,7 +13,7 @@ pub(crate) mod ops;
 
 use ops::{binary, builtin, compare, push_integer, unary};
 
-use crate::exec::{Body, Expr, Piece, Stmt};
+use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
 use crate::value::{Text, Value};
@@ -151,6 +151,7 @@ impl Engine<'_> {
                     let at = self.mark(*k, frame);
                     self.blocks_since(at);
                 }
+                Stmt::Word { cond, word, sep, before } => self.word(cond, word, sep, *before, frame)?,
                 Stmt::Forget(v) => self.forget_var(*v),
                 Stmt::Origin(span) => {
                     if let Some(t) = self.trace.as_deref_mut() {
@@ -171,6 +172,54 @@ impl Engine<'_> {
             }
         }
         Ok(Flow::Normal)
+    }
+
+    /// One word of a block built in the output ([`Stmt::Word`]): the
+    /// statements it stands for, with their steps, in their order.
+    fn word(
+        &mut self,
+        cond: &Expr,
+        word: &[Piece],
+        sep: &[u8],
+        before: WordsBefore,
+        frame: &mut Vec<Value>,
+    ) -> Result<()> {
+        if !self.test(cond, frame)? {
+            return Ok(());
+        }
+        let after_first = match before {
+            WordsBefore::Count(n) => match frame.get(n.index()) {
+                Some(Value::Num(x)) => *x > 0.0,
+                n => compare(BinaryOp::JsGt, n.unwrap_or(&Value::Null), &Value::Num(0.0)).unwrap_or(false),
+            },
+            WordsBefore::Written(m) => self.out.buf.len() > self.mark(m, frame),
+        };
+        // The steps of the statements it stands for: the inner `if`, then
+        // the separator, the word and the count, or the cut and the word.
+        self.steps += match before {
+            WordsBefore::Count(_) => 3 + u64::from(after_first),
+            WordsBefore::Written(_) => 2 + u64::from(!after_first),
+        };
+        if self.steps > self.post.options.step_budget {
+            return Err(Box::new(self.budget_error(None)));
+        }
+        if after_first {
+            self.out.buf.extend_from_slice(sep);
+        } else if let WordsBefore::Written(m) = before {
+            let at = self.mark(m, frame);
+            self.out.buf.truncate(at);
+        }
+        self.emit_pieces(word, frame)?;
+        if let WordsBefore::Count(n) = before {
+            let next = match frame.get(n.index()) {
+                Some(Value::Num(x)) => Value::Num(x + 1.0),
+                Some(v) => binary(BinaryOp::Add, v, &Value::Num(1.0)),
+                None => binary(BinaryOp::Add, &Value::Null, &Value::Num(1.0)),
+            };
+            self.check_text(&next)?;
+            self.assign(Place::Local(n), next, frame);
+        }
+        Ok(())
     }
 
     /// Writes one block inside a function: its expression pieces read the

@@ -11,7 +11,9 @@
 //!    marks are tidied;
 //! 3. calls of expression functions left in a handler become the
 //!    expressions ([`inline`]);
-//! 4. a handler whose statements share locals runs as one statement, so
+//! 4. a word of a block built in the output becomes one statement
+//!    ([`fuse`]);
+//! 5. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -19,6 +21,7 @@
 
 mod emit;
 mod fold;
+mod fuse;
 mod inline;
 
 use postc_ir::{Place, Post};
@@ -51,7 +54,9 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     let mut emitter = emit::Emitter::new(functions, first_free);
     let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(body))));
     inline::expression_functions(functions, &mut body);
-    match emit::max_slot(&body) {
+    let top = emit::max_slot(&body);
+    fuse::stmts(&mut body);
+    match top {
         Some(top) => {
             // The frame takes its full size at once, and the statements
             // share it.

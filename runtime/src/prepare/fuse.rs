@@ -1,0 +1,173 @@
+//! Superinstructions: a run of statements the fast path makes again and
+//! again becomes one statement that does the same, so that a move pays one
+//! dispatch for it instead of four or five.
+//!
+//! Today: one word of a block built in the output ([`Stmt::Word`]), in the
+//! two shapes [`super::emit`] gives a word array joined with a separator,
+//! counted (`writeBlock` of `words.push(w)` and `words.join(" ")`):
+//!
+//! ```text
+//! if (w != "") { if (n > 0) { emit " " }  emit w;  n = n + 1 }
+//! ```
+//!
+//! or asked of the output (`text = text == "" ? w : text + " " + w`):
+//!
+//! ```text
+//! if (w != "") { if (!written(m)) { truncate m; emit w } else { emit " " + w } }
+//! ```
+//!
+//! Only those exact shapes are fused; the interpreter's [`Stmt::Word`]
+//! runs the same tests, writes and assignments in the same order, and
+//! counts the same steps, so nothing a post writes can change.
+
+use postc_ir::{BinaryOp, Place, UnaryOp};
+
+use crate::exec::{Expr, Piece, Stmt, WordsBefore};
+
+/// Fuses every word in the statements, at any depth.
+pub(super) fn stmts(body: &mut [Stmt]) {
+    for stmt in body.iter_mut() {
+        match stmt {
+            Stmt::If { branches, otherwise } => {
+                for (_, b) in branches.iter_mut() {
+                    stmts(b);
+                }
+                stmts(otherwise);
+            }
+            Stmt::While { body, .. } => stmts(body),
+            _ => {}
+        }
+        if let Some(word) = word(stmt) {
+            *stmt = word;
+        }
+    }
+}
+
+/// The word a statement is, if it is one of the two shapes.
+fn word(stmt: &Stmt) -> Option<Stmt> {
+    let Stmt::If { branches, otherwise } = stmt else { return None };
+    let [(cond, then)] = branches.as_slice() else { return None };
+    if !otherwise.is_empty() {
+        return None;
+    }
+    match then.as_slice() {
+        // if (n > 0) { emit sep }  emit w;  n = n + 1
+        [Stmt::If { branches: inner, otherwise: none }, Stmt::Emit(word), Stmt::Assign(Place::Local(n), step)]
+            if none.is_empty() =>
+        {
+            let [(Expr::Binary(BinaryOp::JsGt, count, zero), sep)] = inner.as_slice() else { return None };
+            let (Expr::Local(c), Expr::Number(z)) = (&**count, &**zero) else { return None };
+            let [Stmt::Emit(sep)] = sep.as_slice() else { return None };
+            let [Piece::Text(sep)] = sep.as_slice() else { return None };
+            let Expr::Binary(BinaryOp::Add, l, one) = step else { return None };
+            let (Expr::Local(l), Expr::Number(one)) = (&**l, &**one) else { return None };
+            if c != n || l != n || *z != 0.0 || *one != 1.0 {
+                return None;
+            }
+            Some(Stmt::Word {
+                cond: cond.clone(),
+                word: word.clone(),
+                sep: sep.clone(),
+                before: WordsBefore::Count(*n),
+            })
+        }
+        // if (!written(m)) { truncate m; emit w } else { emit sep + w }
+        [Stmt::If { branches: inner, otherwise: joined }] => {
+            let [(Expr::Unary(UnaryOp::Not, written), first)] = inner.as_slice() else { return None };
+            let Expr::Written(m) = &**written else { return None };
+            let [Stmt::Truncate(t), Stmt::Emit(word)] = first.as_slice() else { return None };
+            let [Stmt::Emit(joined)] = joined.as_slice() else { return None };
+            let (Some(Piece::Text(sep)), rest) = (joined.first(), joined.get(1..)?) else { return None };
+            if t != m || rest != word.as_slice() {
+                return None;
+            }
+            Some(Stmt::Word {
+                cond: cond.clone(),
+                word: word.clone(),
+                sep: sep.clone(),
+                before: WordsBefore::Written(*m),
+            })
+        }
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use postc_ir::LocalId;
+
+    fn local(i: u16) -> Expr {
+        Expr::Local(LocalId::new(i))
+    }
+
+    fn not_empty(e: Expr) -> Expr {
+        Expr::Binary(BinaryOp::JsNe, Box::new(e), Box::new(Expr::text("")))
+    }
+
+    fn counted(word: u16, n: u16, zero: f64) -> Stmt {
+        Stmt::If {
+            branches: vec![(
+                not_empty(local(word)),
+                vec![
+                    Stmt::If {
+                        branches: vec![(
+                            Expr::Binary(BinaryOp::JsGt, Box::new(local(n)), Box::new(Expr::Number(zero))),
+                            vec![Stmt::Emit(vec![Piece::Text(b" ".to_vec())])],
+                        )],
+                        otherwise: vec![],
+                    },
+                    Stmt::Emit(vec![Piece::Expr(local(word))]),
+                    Stmt::Assign(
+                        Place::Local(LocalId::new(n)),
+                        Expr::Binary(BinaryOp::Add, Box::new(local(n)), Box::new(Expr::Number(1.0))),
+                    ),
+                ],
+            )],
+            otherwise: vec![],
+        }
+    }
+
+    #[test]
+    fn a_counted_word_is_fused_and_a_near_miss_is_not() {
+        let mut body = vec![Stmt::While {
+            cond: Expr::Bool(true),
+            body: vec![counted(2, 9, 0.0), counted(3, 9, 1.0)],
+            span: None,
+        }];
+        stmts(&mut body);
+        let Stmt::While { body, .. } = &body[0] else { panic!() };
+        assert!(
+            matches!(&body[0], Stmt::Word { before: WordsBefore::Count(k), sep, .. } if sep == b" " && k.index() == 9),
+            "{:?}",
+            body[0]
+        );
+        // `n > 1` is not the shape: left as it is.
+        assert_eq!(body[1], counted(3, 9, 1.0));
+    }
+
+    #[test]
+    fn a_word_after_written_text_is_fused() {
+        let m = LocalId::new(4);
+        let w = vec![Piece::Expr(local(1))];
+        let stmt = Stmt::If {
+            branches: vec![(
+                not_empty(local(1)),
+                vec![Stmt::If {
+                    branches: vec![(
+                        Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(m))),
+                        vec![Stmt::Truncate(m), Stmt::Emit(w.clone())],
+                    )],
+                    otherwise: vec![Stmt::Emit(vec![Piece::Text(b" ".to_vec()), Piece::Expr(local(1))])],
+                }],
+            )],
+            otherwise: vec![],
+        };
+        let mut body = vec![stmt];
+        stmts(&mut body);
+        assert_eq!(
+            body[0],
+            Stmt::Word { cond: not_empty(local(1)), word: w, sep: b" ".to_vec(), before: WordsBefore::Written(m) }
+        );
+    }
+}
