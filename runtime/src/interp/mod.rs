@@ -61,9 +61,11 @@ const TEXT_STEP_BYTES: usize = 256;
 impl Engine<'_> {
     /// Runs statements with a frame of locals.
     pub(crate) fn exec(&mut self, stmts: &[Stmt], frame: &mut Vec<Value>) -> Result<Flow> {
+        let budget = self.post.options.step_budget;
+        let tracing = self.trace.is_some();
         for stmt in stmts {
             self.steps += 1;
-            if self.steps > self.post.options.step_budget {
+            if self.steps > budget {
                 return Err(Box::new(self.budget_error(None)));
             }
             match stmt {
@@ -166,7 +168,7 @@ impl Engine<'_> {
                     .note("the rest of the post runs as written"),
                 ),
             }
-            if self.trace.is_some() {
+            if tracing {
                 let span = if let Stmt::Line { span, .. } = stmt { *span } else { None };
                 self.trace_after(span);
             }
