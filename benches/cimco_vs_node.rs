@@ -11,7 +11,8 @@
 //!
 //! For each post: postc reading the JSON Lines and posting, postc posting
 //! events already read, Node.js parsing and posting, Node.js posting events
-//! already parsed; best of three runs each (`POSTC_BENCH_RUNS`);
+//! already parsed; best of three runs each (`POSTC_BENCH_RUNS`), the two
+//! engines measured back to back within each run;
 //! `POSTC_BENCH_POSTS=mach3_field,okuma_field` measures only those posts. The table
 //! gives both times, the ratio (Node.js time / postc time) and postc's
 //! moves per second; it asserts nothing about time. The program sizes of
@@ -32,10 +33,6 @@ use postc_ir::event::Event;
 use postc_ir::{EventSource, Post};
 use postc_runtime::Output;
 use support::cimco::{compile, corpus, node, posts, run_node, stem};
-
-fn best_of(runs: usize, mut f: impl FnMut() -> f64) -> f64 {
-    (0..runs).map(|_| f()).fold(f64::INFINITY, f64::min)
-}
 
 /// Writes events as JSON Lines.
 fn write_jsonl(target: &Path, events: impl Iterator<Item = Event>) {
@@ -91,24 +88,25 @@ struct Row {
 
 fn measure(post_path: &Path, post: &Post, jsonl: &Path, events: &[Event], runs: usize) -> (f64, f64, f64, f64, bool) {
     let mut bytes = 0;
-    let postc_total = best_of(runs, || {
+    let (mut postc_total, mut postc_post) = (f64::INFINITY, f64::INFINITY);
+    let (mut node_total, mut node_post, mut node_bytes) = (f64::INFINITY, f64::INFINITY, f64::NAN);
+    // Each run measures both engines back to back, so that a busy spell of
+    // the machine falls on both rather than on one engine's runs.
+    for _ in 0..runs {
         let mut sources = postc_report::source_map();
         let mut source = postc_frontends::open_toolpath(jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
         let report = postc_runtime::run(post, &mut source, Output::discard(), postc_frontends::run_options(post))
             .expect("postc posts");
+        postc_total = postc_total.min(start.elapsed().as_secs_f64());
         bytes = report.bytes;
-        start.elapsed().as_secs_f64()
-    });
-    let postc_post = best_of(runs, || {
+
         let mut source = postc_ir::event::VecSource::new(events.to_vec(), postc_ir::FileId(0));
         let start = Instant::now();
         postc_runtime::run(post, &mut source, Output::discard(), postc_frontends::run_options(post))
             .expect("postc posts");
-        start.elapsed().as_secs_f64()
-    });
-    let (mut node_total, mut node_post, mut node_bytes) = (f64::INFINITY, f64::INFINITY, f64::NAN);
-    for _ in 0..runs {
+        postc_post = postc_post.min(start.elapsed().as_secs_f64());
+
         let out = run_node(post_path, jsonl, &["--bench"]).expect("node runs");
         let text = String::from_utf8_lossy(&out);
         let field = |name: &str| -> f64 {
