@@ -86,6 +86,23 @@ impl<R: BufRead> NativeReader<R> {
 impl<R: BufRead> EventSource for NativeReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         while !self.done {
+            // A move line whole in the input's buffer is read where it is,
+            // not copied out first.
+            if self.syntax != Some(Syntax::Ron)
+                && let Ok(buf) = self.input.fill_buf()
+                && let Some(end) = memchr::memchr(b'\n', buf)
+            {
+                let line = &buf[..end];
+                let text = line.trim_ascii();
+                if let Some(event) = json_moves::read_move(text) {
+                    let at = self.offset + (line.len() - line.trim_ascii_start().len());
+                    let span = Span::new(self.file, at, at + text.len());
+                    self.syntax = Some(Syntax::JsonLines);
+                    self.input.consume(end + 1);
+                    self.offset += end + 1;
+                    return Some((event, span));
+                }
+            }
             self.line.clear();
             let start = self.offset;
             match self.input.read_until(b'\n', &mut self.line) {
@@ -181,6 +198,28 @@ mod tests {
         assert_eq!(a, b);
         assert_eq!(a[1], Event::Rapid(Move { x: 1.0, y: 2.0, z: 3.0, ..Move::default() }));
         assert!(matches!(a[2], Event::Feed(FeedMove { intent: postc_ir::event::Intent::Plunge, feed: Some(5.0), .. })));
+    }
+
+    /// Move lines read in the input's buffer or copied out of it (a line
+    /// across the buffer's end, the last line without a newline) read the
+    /// same events with the same spans.
+    #[test]
+    fn lines_across_the_buffer_read_the_same() {
+        let text = "{\"Rapid\":{\"x\":1,\"y\":2,\"z\":3}}\r\n  {\"Feed\":{\"x\":1.5,\"y\":2,\"z\":-1,\"intent\":\"Plunge\"}}\n\n{\"Feed\":{\"x\":1,\"y\":2}}\n\"ToolpathEnd\"\n{\"Arc\":{\"dir\":\"Ccw\",\"x\":0,\"y\":0,\"z\":0,\"cx\":1,\"cy\":1}}";
+        let read_with = |capacity: usize| {
+            let mut reader = NativeReader::new(BufReader::with_capacity(capacity, text.as_bytes()), None, FileId(0));
+            let (mut found, mut diags) = (Vec::new(), Vec::new());
+            while let Some(e) = reader.next_event(&mut diags) {
+                found.push(e);
+            }
+            (found, diags.iter().map(|d| (d.code, d.labels.first().map(|l| l.span))).collect::<Vec<_>>())
+        };
+        let whole = read_with(1 << 16);
+        assert_eq!(whole.0.len(), 4, "{whole:?}");
+        assert_eq!(whole.1.len(), 1, "{whole:?}");
+        for capacity in [1, 7, 16, 40, 64] {
+            assert_eq!(read_with(capacity), whole, "buffer of {capacity} bytes");
+        }
     }
 
     #[test]
