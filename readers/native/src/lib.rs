@@ -91,17 +91,12 @@ impl<R: BufRead> EventSource for NativeReader<R> {
             if self.syntax != Some(Syntax::Ron)
                 && let Ok(buf) = self.input.fill_buf()
                 && let Some(end) = memchr::memchr(b'\n', buf)
+                && let Some(found) = move_line(&buf[..end], self.offset, self.file)
             {
-                let line = &buf[..end];
-                let text = line.trim_ascii();
-                if let Some(event) = json_moves::read_move(text) {
-                    let at = self.offset + (line.len() - line.trim_ascii_start().len());
-                    let span = Span::new(self.file, at, at + text.len());
-                    self.syntax = Some(Syntax::JsonLines);
-                    self.input.consume(end + 1);
-                    self.offset += end + 1;
-                    return Some((event, span));
-                }
+                self.syntax = Some(Syntax::JsonLines);
+                self.input.consume(end + 1);
+                self.offset += end + 1;
+                return Some(found);
             }
             self.line.clear();
             let start = self.offset;
@@ -110,7 +105,7 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                 Ok(n) => {
                     self.offset += n;
                     let line = std::mem::take(&mut self.line);
-                    let result = self.read_line(start, &line);
+                    let result = self.line_event(start, &line);
                     self.line = line;
                     match result {
                         Some(Ok(found)) => return Some(found),
@@ -133,14 +128,12 @@ impl<R: BufRead> NativeReader<R> {
     /// comment line. A move line of JSON Lines goes through the fast path
     /// ([`json_moves`]) before it is even checked to be UTF-8 (a line it
     /// reads is ASCII); every other line is text read by serde.
-    fn read_line(&mut self, start: usize, line: &[u8]) -> Option<Result<(Event, Span), Diagnostic>> {
-        if self.syntax != Some(Syntax::Ron) {
-            let text = line.trim_ascii();
-            if let Some(event) = json_moves::read_move(text) {
-                self.syntax = Some(Syntax::JsonLines);
-                let at = start + (line.len() - line.trim_ascii_start().len());
-                return Some(Ok((event, Span::new(self.file, at, at + text.len()))));
-            }
+    fn line_event(&mut self, start: usize, line: &[u8]) -> Option<Result<(Event, Span), Diagnostic>> {
+        if self.syntax != Some(Syntax::Ron)
+            && let Some(found) = move_line(line, start, self.file)
+        {
+            self.syntax = Some(Syntax::JsonLines);
+            return Some(Ok(found));
         }
         let Ok(line) = std::str::from_utf8(line) else {
             self.done = true;
@@ -155,6 +148,15 @@ impl<R: BufRead> NativeReader<R> {
         let span = Span::new(self.file, start + trimmed_start, start + trimmed_start + text.len());
         Some(self.parse_line(start + trimmed_start, text).map(|event| (event, span)))
     }
+}
+
+/// The move event of a JSON line read from byte `start`, with the span of
+/// its text, when the fast path ([`json_moves`]) reads it.
+fn move_line(line: &[u8], start: usize, file: FileId) -> Option<(Event, Span)> {
+    let text = line.trim_ascii();
+    let event = json_moves::read_move(text)?;
+    let at = start + (line.len() - line.trim_ascii_start().len());
+    Some((event, Span::new(file, at, at + text.len())))
 }
 
 /// Writes events as native lines in the given syntax.
