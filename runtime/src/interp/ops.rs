@@ -247,8 +247,8 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
         Builtin::Substring => {
             let t = s(0);
             // ASCII text is cut by bytes, with no look at it as `str`.
-            let ascii = t.ascii_bytes().is_some();
-            let len = if ascii { t.len() } else { t.chars().count() };
+            let ascii = t.ascii_bytes();
+            let len = ascii.map_or_else(|| t.chars().count(), <[u8]>::len);
             let index = |v: Option<&Value>| match v {
                 None | Some(Value::Null) => None,
                 Some(v) => {
@@ -260,8 +260,8 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
             let b = index(args.get(2)).unwrap_or(len);
             let (a, b) = (a.min(b), a.max(b));
             if a == 0 && b == len {
-                Value::Text(t)
-            } else if let Some(bytes) = t.ascii_bytes() {
+                Value::Text(t.clone())
+            } else if let Some(bytes) = ascii {
                 Value::Text(Text::from_bytes(&bytes[a..b]))
             } else {
                 Value::text(&t.chars().skip(a).take(b - a).collect::<String>())

@@ -50,7 +50,7 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
     if !otherwise.is_empty() {
         return None;
     }
-    match then.as_slice() {
+    let (word, sep, before) = match then.as_slice() {
         // if (n > 0) { emit sep }  emit w;  n = n + 1
         [Stmt::If { branches: inner, otherwise: none }, Stmt::Emit(word), Stmt::Assign(Place::Local(n), step)]
             if none.is_empty() =>
@@ -64,12 +64,7 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
             if c != n || l != n || *z != 0.0 || *one != 1.0 {
                 return None;
             }
-            Some(Stmt::Word {
-                cond: cond.clone(),
-                word: word.clone(),
-                sep: sep.clone(),
-                before: WordsBefore::Count(*n),
-            })
+            (word, sep, WordsBefore::Count(*n))
         }
         // if (!written(m)) { truncate m; emit w } else { emit sep + w }
         [Stmt::If { branches: inner, otherwise: joined }] => {
@@ -81,15 +76,11 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
             if t != m || rest != word.as_slice() {
                 return None;
             }
-            Some(Stmt::Word {
-                cond: cond.clone(),
-                word: word.clone(),
-                sep: sep.clone(),
-                before: WordsBefore::Written(*m),
-            })
+            (word, sep, WordsBefore::Written(*m))
         }
-        _ => None,
-    }
+        _ => return None,
+    };
+    Some(Stmt::Word { cond: cond.clone(), word: word.clone(), sep: sep.clone(), before })
 }
 
 #[cfg(test)]
