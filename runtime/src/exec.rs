@@ -136,6 +136,117 @@ impl Expr {
     pub fn text(s: &str) -> Expr {
         Expr::Text(Text(Value::text(s)))
     }
+
+    /// Calls `f` on each expression this one is made of (operands,
+    /// arguments, the value a format takes), not deeper.
+    pub fn for_each_operand_mut(&mut self, mut f: impl FnMut(&mut Expr)) {
+        match self {
+            Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => f(value),
+            Expr::Binary(_, a, b) => {
+                f(a);
+                f(b);
+            }
+            Expr::Choose(c, a, b) => {
+                f(c);
+                f(a);
+                f(b);
+            }
+            Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(f),
+            Expr::Number(_)
+            | Expr::Text(_)
+            | Expr::Bool(_)
+            | Expr::Null
+            | Expr::Written(_)
+            | Expr::Quantity(_)
+            | Expr::Local(_)
+            | Expr::Global(_)
+            | Expr::Var(_)
+            | Expr::Previous(_) => {}
+        }
+    }
+
+    /// Calls `f` on every local the expression reads, at any depth
+    /// ([`Expr::Local`] and the marks of [`Expr::Written`]).
+    pub fn for_each_local_mut(&mut self, f: &mut impl FnMut(&mut LocalId)) {
+        match self {
+            Expr::Local(k) | Expr::Written(k) => f(k),
+            e => e.for_each_operand_mut(|a| a.for_each_local_mut(f)),
+        }
+    }
+}
+
+/// How a statement uses a local it names outside its expressions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LocalUse {
+    /// Read (`Truncate(m)` reads mark `m`).
+    Read,
+    /// Written (`x = ...`, `Mark(m)`).
+    Write,
+    /// Read, then perhaps written (the count of a [`Stmt::Word`]).
+    Update,
+}
+
+impl Stmt {
+    /// Calls `f` on the statement's own expressions, in the order they are
+    /// evaluated; not those of statements nested in it.
+    pub fn for_each_expr_mut(&mut self, mut f: impl FnMut(&mut Expr)) {
+        let pieces = |pieces: &mut Vec<Piece>, f: &mut dyn FnMut(&mut Expr)| {
+            for p in pieces {
+                if let Piece::Expr(e) = p {
+                    f(e);
+                }
+            }
+        };
+        match self {
+            Stmt::Line { pieces: p, .. } | Stmt::Emit(p) => pieces(p, &mut f),
+            Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => f(e),
+            Stmt::If { branches, .. } => branches.iter_mut().for_each(|(c, _)| f(c)),
+            Stmt::While { cond, .. } => f(cond),
+            Stmt::Word { cond, word, .. } => {
+                f(cond);
+                pieces(word, &mut f);
+            }
+            Stmt::Break
+            | Stmt::Continue
+            | Stmt::Return(None)
+            | Stmt::Script(_)
+            | Stmt::Forget(_)
+            | Stmt::Origin(_)
+            | Stmt::Mark(_)
+            | Stmt::MoveBack { .. }
+            | Stmt::Truncate(_)
+            | Stmt::Cut { .. }
+            | Stmt::Blocks(_) => {}
+        }
+    }
+
+    /// Calls `f` on each statement list nested in this statement.
+    pub fn for_each_body_mut(&mut self, mut f: impl FnMut(&mut Vec<Stmt>)) {
+        match self {
+            Stmt::If { branches, otherwise } => {
+                branches.iter_mut().for_each(|(_, b)| f(b));
+                f(otherwise);
+            }
+            Stmt::While { body, .. } => f(body),
+            _ => {}
+        }
+    }
+
+    /// Calls `f` on the locals the statement names outside its
+    /// expressions (assigned places and marks), with how it uses each.
+    pub fn for_each_named_local_mut(&mut self, mut f: impl FnMut(LocalUse, &mut LocalId)) {
+        match self {
+            Stmt::Assign(Place::Local(k), _) | Stmt::Mark(k) => f(LocalUse::Write, k),
+            Stmt::MoveBack { to, from } => {
+                f(LocalUse::Read, to);
+                f(LocalUse::Read, from);
+            }
+            Stmt::Truncate(k) | Stmt::Cut { at: k, .. } | Stmt::Blocks(k) => f(LocalUse::Read, k),
+            Stmt::Word { before: WordsBefore::Count(k), .. } => f(LocalUse::Update, k),
+            Stmt::Word { before: WordsBefore::Written(k), .. } => f(LocalUse::Read, k),
+            _ => {}
+        }
+    }
 }
 
 /// A text literal: the text value it reads as (shared, never copied), and

@@ -73,7 +73,7 @@ pub fn expr(e: Expr) -> Expr {
 }
 
 /// Folds statements; branches known not to run are dropped, and nothing
-/// after a `return` is kept.
+/// after a `return`, `break` or `continue` is kept.
 pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
     let mut out = Vec::with_capacity(body.len());
     for s in body {
@@ -124,6 +124,10 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
             Stmt::Eval(e) => out.push(Stmt::Eval(expr(e))),
             Stmt::Return(e) => {
                 out.push(Stmt::Return(e.map(expr)));
+                break;
+            }
+            Stmt::Break | Stmt::Continue => {
+                out.push(s);
                 break;
             }
             other => out.push(other),

@@ -13,7 +13,9 @@
 //!    expressions ([`inline`]);
 //! 4. a word of a block built in the output becomes one statement
 //!    ([`fuse`]);
-//! 5. a handler whose statements share locals runs as one statement, so
+//! 5. copies and constants in locals are read through and stores nobody
+//!    reads are dropped ([`locals`]), in handlers and functions;
+//! 6. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -23,6 +25,7 @@ mod emit;
 mod fold;
 mod fuse;
 mod inline;
+mod locals;
 
 use postc_ir::{Place, Post};
 
@@ -37,6 +40,11 @@ pub fn prepare(post: &Post) -> Code {
         }
     }
     let handlers = post.handlers.iter().map(|h| handler(&functions, exec::stmts(&h.body))).collect();
+    for f in &mut functions {
+        if let exec::Body::Native(body) = &mut f.body {
+            *body = locals::tidy(std::mem::take(body));
+        }
+    }
     Code {
         handlers,
         init: exec::stmts(&post.init),
@@ -56,6 +64,7 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     inline::expression_functions(functions, &mut body);
     let top = emit::max_slot(&body);
     fuse::stmts(&mut body);
+    let mut body = locals::tidy(body);
     match top {
         Some(top) => {
             // The frame takes its full size at once, and the statements

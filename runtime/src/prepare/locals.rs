@@ -1,0 +1,335 @@
+//! Locals that need no statement of their own.
+//!
+//! Once the fast path has inlined a handler's functions, its code is full
+//! of statements whose only effect is a local: copies (`x = vx` of a
+//! parameter, `a1 = x` of a word passed on), constants (`movement = 1` of a
+//! known argument, then `switch (movement)`), and values set that nobody
+//! reads (`var` locals start as `undefined` and are then assigned on every
+//! path). A field post runs a dozen of them a move. Here:
+//!
+//! 1. a copy `d = s` or a constant `d = 3` is read through: the statements
+//!    after it in its list, up to the first that writes `d` or `s`, read
+//!    `s` (or the constant) where they read `d`;
+//! 2. constants are folded again ([`super::fold`]), so a `switch` on a
+//!    known value keeps its one arm;
+//! 3. a store that no statement after it reads is dropped when computing
+//!    its value has no effect (liveness, backwards over the structured
+//!    code; a loop is taken to read, at its head, every local its body
+//!    reads).
+//!
+//! What a post writes cannot change: only statements whose one effect is a
+//! value nobody reads go. Like the other passes here, this makes a handler
+//! run fewer statements, so it counts fewer steps against the post's step
+//! budget.
+
+use std::collections::HashSet;
+
+use postc_ir::{BinaryOp, LocalId, Place};
+
+use super::fold;
+use crate::exec::{Expr, LocalUse, Stmt};
+
+/// Locals whose value a later statement may read.
+type Live = HashSet<LocalId>;
+
+/// How many statements and expressions a copy is read through at most, so
+/// that the pass stays linear on any post.
+const READ_THROUGH_BUDGET: usize = 4096;
+
+/// A handler or function body with its copies and constants read through
+/// and its dead stores dropped.
+pub(super) fn tidy(mut body: Vec<Stmt>) -> Vec<Stmt> {
+    read_through(&mut body);
+    let mut body = fold::stmts(body);
+    drop_dead(&mut body, Live::new(), None);
+    body
+}
+
+/// Reads every copy and constant of the statements, at any depth, through.
+fn read_through(body: &mut [Stmt]) {
+    for i in 0..body.len() {
+        let (head, rest) = body.split_at_mut(i + 1);
+        if let Stmt::Assign(Place::Local(d), value) = &head[i] {
+            let by = match value {
+                Expr::Local(s) if s != d => Some(value.clone()),
+                Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null => Some(value.clone()),
+                _ => None,
+            };
+            if let Some(by) = by {
+                read_through_after(*d, &by, rest);
+            }
+        }
+        head[i].for_each_body_mut(|b| read_through(b));
+    }
+}
+
+/// Makes the statements read `by` for `d`, up to the first that writes
+/// `d` or the local `by` is.
+fn read_through_after(d: LocalId, by: &Expr, rest: &mut [Stmt]) {
+    let source = match by {
+        Expr::Local(s) => Some(*s),
+        _ => None,
+    };
+    let mut budget = READ_THROUGH_BUDGET;
+    for s in rest {
+        let mut size = 0;
+        if writes(s, &|k| k == d || Some(k) == source, &mut size) || size > budget {
+            return;
+        }
+        budget -= size;
+        replace(s, d, by);
+    }
+}
+
+/// Whether the statement writes a local `hit` picks, at any depth; `size`
+/// counts the statements and expressions looked at.
+fn writes(s: &mut Stmt, hit: &dyn Fn(LocalId) -> bool, size: &mut usize) -> bool {
+    let mut found = false;
+    *size += 1;
+    s.for_each_named_local_mut(|u, k| found |= u != LocalUse::Read && hit(*k));
+    s.for_each_expr_mut(|e| *size += nodes(e));
+    s.for_each_body_mut(|b| {
+        for s in b {
+            found = found || writes(s, hit, size);
+        }
+    });
+    found
+}
+
+fn nodes(e: &mut Expr) -> usize {
+    let mut n = 1;
+    e.for_each_operand_mut(|a| n += nodes(a));
+    n
+}
+
+/// Replaces reads of `d` by `by` in a statement, at any depth. A mark
+/// read outside an expression (`Truncate(d)`) can take a local only.
+fn replace(s: &mut Stmt, d: LocalId, by: &Expr) {
+    s.for_each_expr_mut(|e| replace_in(e, d, by));
+    if let Expr::Local(source) = by {
+        s.for_each_named_local_mut(|u, k| {
+            if u == LocalUse::Read && *k == d {
+                *k = *source;
+            }
+        });
+    }
+    s.for_each_body_mut(|b| b.iter_mut().for_each(|s| replace(s, d, by)));
+}
+
+fn replace_in(e: &mut Expr, d: LocalId, by: &Expr) {
+    match e {
+        Expr::Local(k) if *k == d => *e = by.clone(),
+        Expr::Written(k) if *k == d => {
+            if let Expr::Local(source) = by {
+                *k = *source;
+            }
+        }
+        e => e.for_each_operand_mut(|a| replace_in(a, d, by)),
+    }
+}
+
+/// Where `break` and `continue` go: the locals live after the loop and at
+/// its head.
+struct Loop<'a> {
+    exit: &'a Live,
+    head: &'a Live,
+}
+
+/// Drops the dead stores of a statement list whose successor reads
+/// `after`; returns the locals live at its start.
+fn drop_dead(body: &mut Vec<Stmt>, after: Live, in_loop: Option<&Loop>) -> Live {
+    let mut live = after;
+    let mut kept = Vec::with_capacity(body.len());
+    for mut s in std::mem::take(body).into_iter().rev() {
+        if dead(&mut s, &live) {
+            continue;
+        }
+        live = live_before(&mut s, live, in_loop);
+        kept.push(s);
+    }
+    kept.reverse();
+    *body = kept;
+    live
+}
+
+/// A store of a value nobody reads, whose computing has no effect.
+fn dead(s: &mut Stmt, live: &Live) -> bool {
+    match s {
+        Stmt::Assign(Place::Local(d), e) => !live.contains(d) && no_effect(e),
+        Stmt::Mark(d) => !live.contains(d),
+        _ => false,
+    }
+}
+
+/// Computing the value changes nothing else: no call, no formatting
+/// through a variable, no builtin, no `+` that may build a text past the
+/// text budget.
+fn no_effect(e: &mut Expr) -> bool {
+    match e {
+        Expr::Call(..) | Expr::Builtin(..) | Expr::FormatVar { .. } | Expr::Format { .. } => false,
+        Expr::Binary(BinaryOp::Add | BinaryOp::Concat, ..) => false,
+        e => {
+            let mut none = true;
+            e.for_each_operand_mut(|a| none &= no_effect(a));
+            none
+        }
+    }
+}
+
+/// The locals live before a statement (dropping dead stores inside it).
+fn live_before(s: &mut Stmt, after: Live, in_loop: Option<&Loop>) -> Live {
+    match s {
+        Stmt::If { branches, otherwise } => {
+            let mut live = drop_dead(otherwise, after.clone(), in_loop);
+            for (cond, body) in branches.iter_mut().rev() {
+                live.extend(drop_dead(body, after.clone(), in_loop));
+                reads(cond, &mut live);
+            }
+            live
+        }
+        Stmt::While { cond, body, .. } => {
+            let mut head = after.clone();
+            reads(cond, &mut head);
+            body.iter_mut().for_each(|s| all_reads(s, &mut head));
+            drop_dead(body, head.clone(), Some(&Loop { exit: &after, head: &head }));
+            head
+        }
+        // Out of a loop, `break` leaves the function: its frame is gone.
+        Stmt::Break => in_loop.map_or_else(Live::new, |l| l.exit.clone()),
+        Stmt::Continue => in_loop.map_or_else(Live::new, |l| l.head.clone()),
+        Stmt::Return(value) => {
+            let mut live = Live::new();
+            if let Some(e) = value {
+                reads(e, &mut live);
+            }
+            live
+        }
+        s => {
+            let mut live = after;
+            s.for_each_named_local_mut(|u, k| {
+                if u == LocalUse::Write {
+                    live.remove(k);
+                }
+            });
+            own_reads(s, &mut live);
+            live
+        }
+    }
+}
+
+/// Adds the locals an expression reads.
+fn reads(e: &mut Expr, live: &mut Live) {
+    e.for_each_local_mut(&mut |k| {
+        live.insert(*k);
+    });
+}
+
+/// Adds the locals a statement itself reads (not its nested statements).
+fn own_reads(s: &mut Stmt, live: &mut Live) {
+    s.for_each_named_local_mut(|u, k| {
+        if u != LocalUse::Write {
+            live.insert(*k);
+        }
+    });
+    s.for_each_expr_mut(|e| reads(e, live));
+}
+
+/// Adds the locals a statement reads, at any depth.
+fn all_reads(s: &mut Stmt, live: &mut Live) {
+    own_reads(s, live);
+    s.for_each_body_mut(|b| b.iter_mut().for_each(|s| all_reads(s, live)));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exec::Piece;
+
+    fn local(i: u16) -> Expr {
+        Expr::Local(LocalId::new(i))
+    }
+
+    fn set(i: u16, e: Expr) -> Stmt {
+        Stmt::Assign(Place::Local(LocalId::new(i)), e)
+    }
+
+    fn emit(e: Expr) -> Stmt {
+        Stmt::Emit(vec![Piece::Expr(e)])
+    }
+
+    fn call() -> Expr {
+        Expr::Call(postc_ir::FunctionId::new(0), vec![])
+    }
+
+    #[test]
+    fn a_copy_is_read_through_and_dropped() {
+        let body = vec![set(0, call()), set(1, local(0)), emit(local(1))];
+        assert_eq!(tidy(body), vec![set(0, call()), emit(local(0))]);
+    }
+
+    #[test]
+    fn a_copy_stops_at_a_write_of_its_source() {
+        // `b = a; a = f(); emit b` must print the old `a`.
+        let body = vec![set(0, call()), set(1, local(0)), set(0, call()), emit(local(1)), emit(local(0))];
+        assert_eq!(tidy(body.clone()), body);
+    }
+
+    #[test]
+    fn a_constant_folds_a_switch() {
+        let is = |k: f64| Expr::Binary(BinaryOp::StrictEq, Box::new(local(0)), Box::new(Expr::Number(k)));
+        let body = vec![
+            set(0, Expr::Number(1.0)),
+            Stmt::If {
+                branches: vec![(is(0.0), vec![emit(Expr::text("G0"))]), (is(1.0), vec![emit(Expr::text("G1"))])],
+                otherwise: vec![],
+            },
+        ];
+        assert_eq!(tidy(body), vec![Stmt::Emit(vec![Piece::Text(b"G1".to_vec())])]);
+    }
+
+    #[test]
+    fn defaults_assigned_on_every_path_are_dropped() {
+        let cond = Expr::Binary(BinaryOp::JsNe, Box::new(local(0)), Box::new(Expr::text("")));
+        let body = vec![
+            set(0, call()),
+            set(1, Expr::Null),
+            Stmt::If { branches: vec![(cond.clone(), vec![set(1, call())])], otherwise: vec![set(1, call())] },
+            emit(local(1)),
+        ];
+        let want = vec![
+            set(0, call()),
+            Stmt::If { branches: vec![(cond, vec![set(1, call())])], otherwise: vec![set(1, call())] },
+            emit(local(1)),
+        ];
+        assert_eq!(tidy(body), want);
+    }
+
+    #[test]
+    fn a_store_read_after_a_loop_or_at_its_head_stays() {
+        // `n = 0; while (n < 3) { n = n + 1 }; emit n`: every store is read.
+        let less = Expr::Binary(BinaryOp::JsLt, Box::new(local(0)), Box::new(Expr::Number(3.0)));
+        let step = Expr::Binary(BinaryOp::Sub, Box::new(local(0)), Box::new(Expr::Number(-1.0)));
+        let body =
+            vec![set(0, call()), Stmt::While { cond: less, body: vec![set(0, step)], span: None }, emit(local(0))];
+        assert_eq!(tidy(body.clone()), body);
+    }
+
+    #[test]
+    fn a_store_read_after_break_stays() {
+        let body = vec![
+            set(0, call()),
+            Stmt::While {
+                cond: Expr::Bool(true),
+                body: vec![
+                    set(1, local(0)),
+                    Stmt::If { branches: vec![(call(), vec![Stmt::Break])], otherwise: vec![] },
+                    set(1, Expr::Number(2.0)),
+                    Stmt::Break,
+                ],
+                span: None,
+            },
+            emit(local(1)),
+        ];
+        assert_eq!(tidy(body.clone()), body);
+    }
+}
