@@ -122,15 +122,12 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
             }
             Stmt::Assign(p, e) => out.push(Stmt::Assign(p, expr(e))),
             Stmt::Eval(e) => out.push(Stmt::Eval(expr(e))),
-            Stmt::Return(e) => {
-                out.push(Stmt::Return(e.map(expr)));
-                break;
-            }
-            Stmt::Break | Stmt::Continue => {
-                out.push(s);
-                break;
-            }
+            Stmt::Return(e) => out.push(Stmt::Return(e.map(expr))),
             other => out.push(other),
+        }
+        // What follows a jump never runs (a branch kept in place may end in one).
+        if matches!(out.last(), Some(Stmt::Return(_) | Stmt::Break | Stmt::Continue)) {
+            break;
         }
     }
     out

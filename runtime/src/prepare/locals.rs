@@ -26,7 +26,7 @@ use std::collections::HashSet;
 
 use postc_ir::{BinaryOp, LocalId, Place};
 
-use super::fold;
+use super::{emit, fold};
 use crate::exec::{Expr, LocalUse, Stmt};
 
 /// Locals whose value a later statement may read.
@@ -39,8 +39,12 @@ const READ_THROUGH_BUDGET: usize = 4096;
 /// A handler or function body with its copies and constants read through
 /// and its dead stores dropped.
 pub(super) fn tidy(mut body: Vec<Stmt>) -> Vec<Stmt> {
-    read_through(&mut body);
-    let mut body = fold::stmts(body);
+    // Twice: folding a branch away leaves copies to read through.
+    for _ in 0..2 {
+        read_through(&mut body);
+        body = fold::stmts(body);
+    }
+    let mut body = emit::drop_truncates(body);
     drop_dead(&mut body, Live::new(), None);
     body
 }
@@ -187,6 +191,14 @@ fn live_before(s: &mut Stmt, after: Live, in_loop: Option<&Loop>) -> Live {
             }
             live
         }
+        // A body that ends in a jump and never continues runs at most
+        // once: what is live at its start is live at the loop's.
+        Stmt::While { cond, body, .. } if ends_in_jump(body) && !continues(body) => {
+            let mut head = drop_dead(body, Live::new(), Some(&Loop { exit: &after, head: &Live::new() }));
+            head.extend(after);
+            reads(cond, &mut head);
+            head
+        }
         Stmt::While { cond, body, .. } => {
             let mut head = after.clone();
             reads(cond, &mut head);
@@ -215,6 +227,20 @@ fn live_before(s: &mut Stmt, after: Live, in_loop: Option<&Loop>) -> Live {
             live
         }
     }
+}
+
+/// Whether a statement list ends in `break`, `continue` or `return`.
+fn ends_in_jump(body: &[Stmt]) -> bool {
+    matches!(body.last(), Some(Stmt::Break | Stmt::Continue | Stmt::Return(_)))
+}
+
+/// Whether a loop body continues that loop (not a loop nested in it).
+fn continues(body: &[Stmt]) -> bool {
+    body.iter().any(|s| match s {
+        Stmt::Continue => true,
+        Stmt::If { branches, otherwise } => branches.iter().any(|(_, b)| continues(b)) || continues(otherwise),
+        _ => false,
+    })
 }
 
 /// Adds the locals an expression reads.

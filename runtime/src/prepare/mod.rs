@@ -11,11 +11,13 @@
 //!    marks are tidied;
 //! 3. calls of expression functions left in a handler become the
 //!    expressions ([`inline`]);
-//! 4. a word of a block built in the output becomes one statement
+//! 4. calls of small value functions left in a handler become the
+//!    functions' statements ([`splice`]);
+//! 5. a word of a block built in the output becomes one statement
 //!    ([`fuse`]);
-//! 5. copies and constants in locals are read through and stores nobody
+//! 6. copies and constants in locals are read through and stores nobody
 //!    reads are dropped ([`locals`]), in handlers and functions;
-//! 6. a handler whose statements share locals runs as one statement, so
+//! 7. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -26,6 +28,7 @@ mod fold;
 mod fuse;
 mod inline;
 mod locals;
+mod splice;
 
 use postc_ir::{Place, Post};
 
@@ -62,6 +65,7 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     let mut emitter = emit::Emitter::new(functions, first_free);
     let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(body))));
     inline::expression_functions(functions, &mut body);
+    splice::small_functions(functions, &mut body);
     let top = emit::max_slot(&body);
     fuse::stmts(&mut body);
     let mut body = locals::tidy(body);

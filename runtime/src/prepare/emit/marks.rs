@@ -79,7 +79,7 @@ fn rename_expr(e: Expr, alias: &HashMap<LocalId, LocalId>) -> Expr {
 }
 
 /// Removes `Truncate(m)` where nothing was written since `Mark(m)`.
-fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
+pub(crate) fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
     let mut out: Vec<Stmt> = Vec::with_capacity(body.len());
     let mut fresh: Option<LocalId> = None;
     for s in body {

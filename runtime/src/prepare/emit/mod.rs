@@ -26,7 +26,7 @@ mod shape;
 use crate::exec::{Body, Expr, Function, Piece, Stmt};
 use postc_ir::{BinaryOp, FunctionId, LocalId, Place, UnaryOp};
 
-pub(crate) use marks::tidy;
+pub(crate) use marks::{drop_truncates, tidy};
 pub(crate) use shape::max_slot;
 use shape::*;
 

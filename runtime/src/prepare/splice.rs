@@ -1,0 +1,262 @@
+//! Splicing small value functions into handlers: `x = motion(motionCode(1))`
+//! or `c = takeCompensation()` in a handler becomes the function's own
+//! statements, run in fresh slots of the handler's frame, so that a move
+//! pays no call for them (no frame, no call bookkeeping) and
+//! [`super::locals`] can read their arguments through and fold what the
+//! handler's constants decide (`motionCode(1)` is `"G1"`).
+//!
+//! A function is spliced when it is small and its statements are
+//! assignments, `if`s, `return`s and evaluations only: no loop, no call, no
+//! output. Its body runs inside a loop that runs once, each `return v`
+//! becoming `x = v; break`, so that it leaves where the function would:
+//!
+//! ```text
+//! a0 = "G1"; a1 = null                 // arguments, then the other locals
+//! while (true) { if (a0 == last) { x = ""; break }  last = a0; x = a0; break }
+//! ```
+//!
+//! The arguments are evaluated in their order before the body, as a call
+//! evaluates them; the function's locals start as `null` at every splice,
+//! as a call's frame does. The function itself stays, for every other
+//! caller.
+
+use postc_ir::{LocalId, Place};
+
+use super::emit::max_slot;
+use crate::exec::{Body, Expr, Function, Stmt};
+
+/// Statements and expressions a spliced function has at most.
+const MAX_NODES: usize = 64;
+
+/// Splices the small functions a handler body calls.
+pub(super) fn small_functions(functions: &[Function], body: &mut Vec<Stmt>) {
+    let small: Vec<bool> = functions.iter().map(is_small).collect();
+    if !small.contains(&true) {
+        return;
+    }
+    let mut splicer = Splicer { functions, small, next: max_slot(body).map_or(0, |k| k.index() + 1) };
+    *body = splicer.list(std::mem::take(body));
+}
+
+struct Splicer<'f> {
+    functions: &'f [Function],
+    small: Vec<bool>,
+    /// The first slot no statement uses yet.
+    next: usize,
+}
+
+impl Splicer<'_> {
+    fn list(&mut self, body: Vec<Stmt>) -> Vec<Stmt> {
+        let mut out = Vec::with_capacity(body.len());
+        for mut s in body {
+            s.for_each_body_mut(|b| *b = self.list(std::mem::take(b)));
+            match s {
+                Stmt::Assign(Place::Local(d), Expr::Call(f, args)) if self.fits(f.index(), args.len()) => {
+                    self.splice(f.index(), args, Some(d), &mut out)
+                }
+                Stmt::Eval(Expr::Call(f, args)) if self.fits(f.index(), args.len()) => {
+                    self.splice(f.index(), args, None, &mut out)
+                }
+                s => out.push(s),
+            }
+        }
+        out
+    }
+
+    /// Whether a call of `f` with `args` arguments can be spliced.
+    fn fits(&self, f: usize, args: usize) -> bool {
+        self.small.get(f).copied().unwrap_or(false) && {
+            let slots = usize::from(self.functions[f].slots);
+            args <= slots && self.next + slots <= usize::from(u16::MAX)
+        }
+    }
+
+    /// Writes the statements of a call of `f` into `out`, its value going
+    /// to `dest`.
+    fn splice(&mut self, f: usize, args: Vec<Expr>, dest: Option<LocalId>, out: &mut Vec<Stmt>) {
+        let function = &self.functions[f];
+        let Body::Native(code) = &function.body else { return };
+        let base = self.next;
+        self.next += usize::from(function.slots);
+        let slot = |i: usize| LocalId::new((base + i) as u16);
+        let given = args.len();
+        for (i, a) in args.into_iter().enumerate() {
+            match a {
+                Expr::Call(g, inner) if self.fits(g.index(), inner.len()) => {
+                    self.splice(g.index(), inner, Some(slot(i)), out)
+                }
+                a => out.push(Stmt::Assign(Place::Local(slot(i)), a)),
+            }
+        }
+        for i in given..usize::from(function.slots) {
+            out.push(Stmt::Assign(Place::Local(slot(i)), Expr::Null));
+        }
+        let mut body = code.clone();
+        body.iter_mut().for_each(|s| shift(s, base));
+        let mut body = returns(body, dest);
+        if !matches!(body.last(), Some(Stmt::Break)) {
+            if let Some(d) = dest {
+                body.push(Stmt::Assign(Place::Local(d), Expr::Null));
+            }
+            body.push(Stmt::Break);
+        }
+        out.push(Stmt::While { cond: Expr::Bool(true), body, span: None });
+    }
+}
+
+/// Moves every local of a statement `by` slots up.
+fn shift(s: &mut Stmt, by: usize) {
+    let up = |k: &mut LocalId| *k = LocalId::new((k.index() + by) as u16);
+    s.for_each_expr_mut(|e| e.for_each_local_mut(&mut |k| up(k)));
+    s.for_each_named_local_mut(|_, k| up(k));
+    s.for_each_body_mut(|b| b.iter_mut().for_each(|s| shift(s, by)));
+}
+
+/// `return v` as `dest = v; break` (or `v; break` when the value is not
+/// kept), at any depth.
+fn returns(body: Vec<Stmt>, dest: Option<LocalId>) -> Vec<Stmt> {
+    let mut out = Vec::with_capacity(body.len());
+    for mut s in body {
+        match s {
+            Stmt::Return(value) => {
+                let value = value.unwrap_or(Expr::Null);
+                out.push(match dest {
+                    Some(d) => Stmt::Assign(Place::Local(d), value),
+                    None => Stmt::Eval(value),
+                });
+                out.push(Stmt::Break);
+                break;
+            }
+            _ => {
+                s.for_each_body_mut(|b| *b = returns(std::mem::take(b), dest));
+                out.push(s);
+            }
+        }
+    }
+    out
+}
+
+/// A native function of assignments, `if`s, `return`s and evaluations, with
+/// no call, at most [`MAX_NODES`] big.
+fn is_small(f: &Function) -> bool {
+    let Body::Native(body) = &f.body else { return false };
+    let mut nodes = 0;
+    let mut body = body.clone();
+    body.iter_mut().all(|s| plain(s, &mut nodes)) && nodes <= MAX_NODES
+}
+
+fn plain(s: &mut Stmt, nodes: &mut usize) -> bool {
+    *nodes += 1;
+    if !matches!(s, Stmt::Assign(..) | Stmt::If { .. } | Stmt::Return(_) | Stmt::Eval(_) | Stmt::Forget(_)) {
+        return false;
+    }
+    let mut ok = true;
+    s.for_each_expr_mut(|e| ok &= no_call(e, nodes));
+    s.for_each_body_mut(|b| ok &= b.iter_mut().all(|s| plain(s, nodes)));
+    ok
+}
+
+fn no_call(e: &mut Expr, nodes: &mut usize) -> bool {
+    *nodes += 1;
+    if matches!(e, Expr::Call(..)) {
+        return false;
+    }
+    let mut ok = true;
+    e.for_each_operand_mut(|a| ok &= no_call(a, nodes));
+    ok
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use postc_ir::{BinaryOp, FunctionId, GlobalId};
+
+    fn local(i: u16) -> Expr {
+        Expr::Local(LocalId::new(i))
+    }
+
+    fn set(i: u16, e: Expr) -> Stmt {
+        Stmt::Assign(Place::Local(LocalId::new(i)), e)
+    }
+
+    /// `function motion(code) { if (code == last) return ""; last = code; return code; }`
+    fn motion() -> Function {
+        let last = Expr::Global(GlobalId::new(0));
+        Function {
+            params: 1,
+            slots: 1,
+            body: Body::Native(vec![
+                Stmt::If {
+                    branches: vec![(
+                        Expr::Binary(BinaryOp::JsEq, Box::new(local(0)), Box::new(last)),
+                        vec![Stmt::Return(Some(Expr::text("")))],
+                    )],
+                    otherwise: vec![],
+                },
+                Stmt::Assign(Place::Global(GlobalId::new(0)), local(0)),
+                Stmt::Return(Some(local(0))),
+            ]),
+        }
+    }
+
+    #[test]
+    fn a_call_becomes_the_body_in_fresh_slots() {
+        let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![Expr::text("G1")]))];
+        small_functions(&[motion()], &mut body);
+        let last = Expr::Global(GlobalId::new(0));
+        let want = vec![
+            set(1, Expr::text("G1")),
+            Stmt::While {
+                cond: Expr::Bool(true),
+                body: vec![
+                    Stmt::If {
+                        branches: vec![(
+                            Expr::Binary(BinaryOp::JsEq, Box::new(local(1)), Box::new(last)),
+                            vec![set(0, Expr::text("")), Stmt::Break],
+                        )],
+                        otherwise: vec![],
+                    },
+                    Stmt::Assign(Place::Global(GlobalId::new(0)), local(1)),
+                    set(0, local(1)),
+                    Stmt::Break,
+                ],
+                span: None,
+            },
+        ];
+        assert_eq!(body, want);
+    }
+
+    #[test]
+    fn a_function_that_calls_or_loops_is_called() {
+        let calls = Function {
+            params: 0,
+            slots: 0,
+            body: Body::Native(vec![Stmt::Return(Some(Expr::Call(FunctionId::new(0), vec![])))]),
+        };
+        let loops = Function {
+            params: 0,
+            slots: 0,
+            body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None }]),
+        };
+        let body = vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
+        let mut spliced = body.clone();
+        small_functions(&[calls, loops], &mut spliced);
+        assert_eq!(spliced, body);
+    }
+
+    #[test]
+    fn falling_off_the_end_returns_null_and_locals_start_null() {
+        let f = Function { params: 0, slots: 1, body: Body::Native(vec![Stmt::Eval(local(0))]) };
+        let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![]))];
+        small_functions(&[f], &mut body);
+        let want = vec![
+            set(1, Expr::Null),
+            Stmt::While {
+                cond: Expr::Bool(true),
+                body: vec![Stmt::Eval(local(1)), set(0, Expr::Null), Stmt::Break],
+                span: None,
+            },
+        ];
+        assert_eq!(body, want);
+    }
+}
