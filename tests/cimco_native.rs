@@ -447,5 +447,37 @@ fn words_joined_into_a_text_are_built_in_the_output_when_they_are_text() {
     std::fs::write(&path, format!("{HEAD}{words}")).expect("writes the post");
     let post = compile(&path).expect("compiles");
     let prepared = format!("{:?}", postc_runtime::prepare::prepare(&post).handlers);
-    assert!(prepared.contains("Typeof"), "the inlined join is guarded by the words being text: {prepared}");
+    assert!(prepared.contains("LocalIsText"), "the inlined join is guarded by the words being text: {prepared}");
+}
+
+/// Small functions spliced into a handler, copies and constants read
+/// through, and `w != ""` / `typeof w === "string"` asked of a local in one
+/// step (`runtime/src/prepare/{splice,locals}.rs`, `fuse::conditions`): a
+/// word that is sometimes the number 0 (`0 == ""` in JavaScript) and a
+/// `switch` on a constant print what Node.js prints.
+#[test]
+fn spliced_functions_and_local_tests_print_what_node_prints() {
+    let body = r#"
+        var last = "";
+        var n = 0;
+        function motion(code) { if (code == last) { return ""; } last = code; return code; }
+        function kind(m) { switch (m) { case 0: return "G0"; case 1: return "G1"; } return "G1"; }
+        function zero() { n = n + 1; return n % 3 == 0 ? 0 : (n % 3 == 1 ? "" : "M" + n); }
+        function onLinear(x, y, z, m) {
+            var w = zero();
+            var c = w;
+            var t = typeof c === "string" ? "T" : "N";
+            var e = c != "" ? "X" : "E";
+            var f = c === "" ? "S" : "D";
+            return writeBlock(motion(kind(1)), t + e + f, xOutput.format(x), c);
+        }
+        function onRapid(x, y, z) { return writeBlock(motion(kind(0)), xOutput.format(x)); }
+    "#;
+    check("splice", body, &["onLinear", "onRapid", "motion", "kind"], &[]);
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("splice.js");
+    std::fs::write(&path, format!("{HEAD}{body}")).expect("writes the post");
+    let post = compile(&path).expect("compiles");
+    let prepared = format!("{:?}", postc_runtime::prepare::prepare(&post).handlers);
+    assert!(prepared.contains("LocalEmpty"), "`c != \"\"` is asked of the local: {prepared}");
 }

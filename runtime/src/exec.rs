@@ -129,6 +129,18 @@ pub enum Expr {
     Choose(Box<Expr>, Box<Expr>, Box<Expr>),
     Call(FunctionId, Vec<Expr>),
     Builtin(Builtin, Vec<Expr>),
+    /// `local == ""` with `op` one of `==`, `!=`, `===`, `!==`: text is
+    /// asked its length, any other value compared as `op` says
+    /// ([`crate::prepare`]'s `fuse` makes it of the `Binary`).
+    LocalEmpty {
+        local: LocalId,
+        op: BinaryOp,
+    },
+    /// `typeof local === "string"` (`is`) or `!==` (not `is`).
+    LocalIsText {
+        local: LocalId,
+        is: bool,
+    },
 }
 
 impl Expr {
@@ -152,7 +164,9 @@ impl Expr {
                 f(b);
             }
             Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(f),
-            Expr::Number(_)
+            Expr::LocalEmpty { .. }
+            | Expr::LocalIsText { .. }
+            | Expr::Number(_)
             | Expr::Text(_)
             | Expr::Bool(_)
             | Expr::Null
@@ -169,7 +183,10 @@ impl Expr {
     /// ([`Expr::Local`] and the marks of [`Expr::Written`]).
     pub fn for_each_local_mut(&mut self, f: &mut impl FnMut(&mut LocalId)) {
         match self {
-            Expr::Local(k) | Expr::Written(k) => f(k),
+            Expr::Local(k)
+            | Expr::Written(k)
+            | Expr::LocalEmpty { local: k, .. }
+            | Expr::LocalIsText { local: k, .. } => f(k),
             e => e.for_each_operand_mut(|a| a.for_each_local_mut(f)),
         }
     }

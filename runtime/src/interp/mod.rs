@@ -341,6 +341,14 @@ impl Engine<'_> {
             Expr::Unary(UnaryOp::Not, a) => Ok(!self.test(a, frame)?),
             Expr::Local(i) => Ok(frame.get(i.index()).is_some_and(Value::truthy)),
             Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
+            Expr::LocalEmpty { local, op } => Ok(match frame.get(local.index()) {
+                Some(Value::Text(t)) => t.is_empty() == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq),
+                other => {
+                    let (v, empty) = (other.unwrap_or(&Value::Null), Value::Text(self.empty_text.clone()));
+                    compare(*op, v, &empty).unwrap_or_else(|| binary(*op, v, &empty).truthy())
+                }
+            }),
+            Expr::LocalIsText { local, is } => Ok(matches!(frame.get(local.index()), Some(Value::Text(_))) == *is),
             // `x + y + z == ""` of texts (a field post asking whether any
             // word printed): empty when every part is, with no text made.
             Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b)
@@ -382,6 +390,7 @@ impl Engine<'_> {
             Expr::Bool(b) => Value::Bool(*b),
             Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
+            Expr::LocalEmpty { .. } | Expr::LocalIsText { .. } => Value::Bool(self.test(e, frame)?),
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Local(i) => frame.get(i.index()).cloned().unwrap_or_default(),
             Expr::Global(i) => self.globals.get(i.index()).cloned().unwrap_or_default(),

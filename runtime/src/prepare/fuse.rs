@@ -43,6 +43,35 @@ pub(super) fn stmts(body: &mut [Stmt]) {
     }
 }
 
+/// Every `local == ""` and `typeof local === "string"` in the statements,
+/// at any depth, as the one expression that asks it
+/// ([`Expr::LocalEmpty`], [`Expr::LocalIsText`]).
+pub(super) fn conditions(body: &mut [Stmt]) {
+    for s in body {
+        s.for_each_expr_mut(condition);
+        s.for_each_body_mut(|b| conditions(b));
+    }
+}
+
+fn condition(e: &mut Expr) {
+    e.for_each_operand_mut(condition);
+    let Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b) = e else {
+        return;
+    };
+    let Expr::Text(text) = &**b else { return };
+    *e = match &**a {
+        Expr::Local(local) if text.is_empty() => Expr::LocalEmpty { local: *local, op: *op },
+        Expr::Unary(UnaryOp::Typeof, operand)
+            if let Expr::Local(local) = &**operand
+                && matches!(op, BinaryOp::StrictEq | BinaryOp::StrictNe)
+                && **text == *"string" =>
+        {
+            Expr::LocalIsText { local: *local, is: *op == BinaryOp::StrictEq }
+        }
+        _ => return,
+    };
+}
+
 /// The word a statement is, if it is one of the two shapes.
 fn word(stmt: &Stmt) -> Option<Stmt> {
     let Stmt::If { branches, otherwise } = stmt else { return None };
@@ -160,5 +189,43 @@ mod tests {
             body[0],
             Stmt::Word { cond: not_empty(local(1)), word: w, sep: b" ".to_vec(), before: WordsBefore::Written(m) }
         );
+    }
+
+    #[test]
+    fn empty_and_typeof_tests_of_a_local_become_one_expression() {
+        let typeof_is = |op, name: &str| {
+            Expr::Binary(op, Box::new(Expr::Unary(UnaryOp::Typeof, Box::new(local(2)))), Box::new(Expr::text(name)))
+        };
+        let mut body = vec![Stmt::If {
+            branches: vec![(
+                Expr::Binary(
+                    BinaryOp::And,
+                    Box::new(typeof_is(BinaryOp::StrictEq, "string")),
+                    Box::new(not_empty(local(1))),
+                ),
+                vec![
+                    Stmt::Eval(typeof_is(BinaryOp::JsEq, "string")),
+                    Stmt::Eval(typeof_is(BinaryOp::StrictNe, "number")),
+                ],
+            )],
+            otherwise: vec![],
+        }];
+        conditions(&mut body);
+        let want = vec![Stmt::If {
+            branches: vec![(
+                Expr::Binary(
+                    BinaryOp::And,
+                    Box::new(Expr::LocalIsText { local: LocalId::new(2), is: true }),
+                    Box::new(Expr::LocalEmpty { local: LocalId::new(1), op: BinaryOp::JsNe }),
+                ),
+                // Near misses stay as they are.
+                vec![
+                    Stmt::Eval(typeof_is(BinaryOp::JsEq, "string")),
+                    Stmt::Eval(typeof_is(BinaryOp::StrictNe, "number")),
+                ],
+            )],
+            otherwise: vec![],
+        }];
+        assert_eq!(body, want);
     }
 }
