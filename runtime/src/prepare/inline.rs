@@ -28,6 +28,11 @@ pub fn expression_functions(functions: &[Function], body: &mut [Stmt]) {
     }
 }
 
+/// Whether calls of the function become its expression here.
+pub(super) fn is_expression_function(f: &Function) -> bool {
+    template(f).is_some()
+}
+
 /// The expression a function is, over its parameters, and their number.
 fn template(f: &Function) -> Option<(usize, Expr)> {
     let Body::Native(body) = &f.body else { return None };

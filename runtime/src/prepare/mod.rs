@@ -9,10 +9,10 @@
 //! 2. the fast path ([`emit`]): a handler that writes what a native
 //!    function returns builds that text straight in the output instead;
 //!    marks are tidied;
-//! 3. calls of expression functions left in a handler become the
-//!    expressions ([`inline`]);
-//! 4. calls of small value functions left in a handler become the
+//! 3. calls of small value functions left in a handler become the
 //!    functions' statements ([`splice`]);
+//! 4. calls of expression functions left in a handler become the
+//!    expressions ([`inline`]);
 //! 5. a word of a block built in the output becomes one statement
 //!    ([`fuse`]);
 //! 6. copies and constants in locals are read through and stores nobody
@@ -65,8 +65,8 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     let first_free = emit::max_slot(&body).map_or(0, |k| k.index().saturating_add(1).min(usize::from(u16::MAX)) as u16);
     let mut emitter = emit::Emitter::new(functions, first_free);
     let mut body = emit::tidy(fold::stmts(emitter.handler(fold::stmts(body))));
-    inline::expression_functions(functions, &mut body);
     splice::small_functions(functions, &mut body);
+    inline::expression_functions(functions, &mut body);
     let top = emit::max_slot(&body);
     fuse::stmts(&mut body);
     let mut body = locals::tidy(body);

@@ -6,8 +6,8 @@
 //! handler's constants decide (`motionCode(1)` is `"G1"`).
 //!
 //! A function is spliced when it is small and its statements are
-//! assignments, `if`s, `return`s and evaluations only: no loop, no call, no
-//! output. Its body runs inside a loop that runs once, each `return v`
+//! assignments, `if`s, `return`s and evaluations only: no loop, no output
+//! of its own (the calls it makes stay calls). Its body runs inside a loop that runs once, each `return v`
 //! becoming `x = v; break`, so that it leaves where the function would:
 //!
 //! ```text
@@ -136,10 +136,15 @@ fn returns(body: Vec<Stmt>, dest: Option<LocalId>) -> Vec<Stmt> {
     out
 }
 
-/// A native function of assignments, `if`s, `return`s and evaluations, with
-/// no call, at most [`MAX_NODES`] big.
+/// A native function of assignments, `if`s, `return`s and evaluations, at
+/// most [`MAX_NODES`] big. The calls it makes stay calls (a function is
+/// spliced one level deep, so recursion cannot splice without end).
 fn is_small(f: &Function) -> bool {
     let Body::Native(body) = &f.body else { return false };
+    // An expression function is better inlined as its expression.
+    if super::inline::is_expression_function(f) {
+        return false;
+    }
     let mut nodes = 0;
     let mut body = body.clone();
     body.iter_mut().all(|s| plain(s, &mut nodes)) && nodes <= MAX_NODES
@@ -150,20 +155,16 @@ fn plain(s: &mut Stmt, nodes: &mut usize) -> bool {
     if !matches!(s, Stmt::Assign(..) | Stmt::If { .. } | Stmt::Return(_) | Stmt::Eval(_) | Stmt::Forget(_)) {
         return false;
     }
+    s.for_each_expr_mut(|e| *nodes += count(e));
     let mut ok = true;
-    s.for_each_expr_mut(|e| ok &= no_call(e, nodes));
     s.for_each_body_mut(|b| ok &= b.iter_mut().all(|s| plain(s, nodes)));
     ok
 }
 
-fn no_call(e: &mut Expr, nodes: &mut usize) -> bool {
-    *nodes += 1;
-    if matches!(e, Expr::Call(..)) {
-        return false;
-    }
-    let mut ok = true;
-    e.for_each_operand_mut(|a| ok &= no_call(a, nodes));
-    ok
+fn count(e: &mut Expr) -> usize {
+    let mut n = 1;
+    e.for_each_operand_mut(|a| n += count(a));
+    n
 }
 
 #[cfg(test)]
@@ -227,21 +228,32 @@ mod tests {
     }
 
     #[test]
-    fn a_function_that_calls_or_loops_is_called() {
-        let calls = Function {
+    fn a_function_that_loops_is_called_and_a_recursive_one_spliced_once() {
+        let recursive = Function {
             params: 0,
             slots: 0,
-            body: Body::Native(vec![Stmt::Return(Some(Expr::Call(FunctionId::new(0), vec![])))]),
+            body: Body::Native(vec![
+                Stmt::Eval(Expr::Call(FunctionId::new(0), vec![])),
+                Stmt::Return(Some(Expr::Number(1.0))),
+            ]),
         };
         let loops = Function {
             params: 0,
             slots: 0,
             body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None }]),
         };
-        let body = vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
-        let mut spliced = body.clone();
-        small_functions(&[calls, loops], &mut spliced);
-        assert_eq!(spliced, body);
+        let mut body =
+            vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
+        small_functions(&[recursive, loops], &mut body);
+        let want = vec![
+            Stmt::While {
+                cond: Expr::Bool(true),
+                body: vec![Stmt::Eval(Expr::Call(FunctionId::new(0), vec![])), set(0, Expr::Number(1.0)), Stmt::Break],
+                span: None,
+            },
+            set(1, Expr::Call(FunctionId::new(1), vec![])),
+        ];
+        assert_eq!(body, want);
     }
 
     #[test]
