@@ -452,14 +452,18 @@ fn words_joined_into_a_text_are_built_in_the_output_when_they_are_text() {
 
 /// Small functions spliced into a handler, copies and constants read
 /// through, and `w != ""` / `typeof w === "string"` asked of a local in one
-/// step (`runtime/src/prepare/{splice,locals}.rs`, `fuse::conditions`): a
+/// step (`runtime/src/prepare/{splice,locals}.rs`, `fuse::expressions`): a
 /// word that is sometimes the number 0 (`0 == ""` in JavaScript) and a
-/// `switch` on a constant print what Node.js prints.
+/// `switch` on a constant print what Node.js prints; so does
+/// `parseFloat(v.format(x).substring(1))` read where it is formatted, with
+/// a prefix that is not ASCII and a variable that prints nothing
+/// (`NaN`).
 #[test]
 fn spliced_functions_and_local_tests_print_what_node_prints() {
     let body = r#"
         var last = "";
         var n = 0;
+        var aOutput = createVariable({prefix: "éA"}, xyzFormat);
         function motion(code) { if (code == last) { return ""; } last = code; return code; }
         function kind(m) { switch (m) { case 0: return "G0"; case 1: return "G1"; } return "G1"; }
         function zero() { n = n + 1; return n % 3 == 0 ? 0 : (n % 3 == 1 ? "" : "M" + n); }
@@ -469,7 +473,9 @@ fn spliced_functions_and_local_tests_print_what_node_prints() {
             var t = typeof c === "string" ? "T" : "N";
             var e = c != "" ? "X" : "E";
             var f = c === "" ? "S" : "D";
-            return writeBlock(motion(kind(1)), t + e + f, xOutput.format(x), c);
+            var p = parseFloat(aOutput.format(z).substring(1));
+            var q = parseFloat(yOutput.format(y).substring(1));
+            return writeBlock(motion(kind(1)), t + e + f, xOutput.format(x), c, "P" + p, "Q" + q);
         }
         function onRapid(x, y, z) { return writeBlock(motion(kind(0)), xOutput.format(x)); }
     "#;
@@ -480,4 +486,5 @@ fn spliced_functions_and_local_tests_print_what_node_prints() {
     let post = compile(&path).expect("compiles");
     let prepared = format!("{:?}", postc_runtime::prepare::prepare(&post).handlers);
     assert!(prepared.contains("LocalEmpty"), "`c != \"\"` is asked of the local: {prepared}");
+    assert!(prepared.contains("ParseFloatFrom"), "the number is read where it is formatted: {prepared}");
 }

@@ -90,6 +90,8 @@ pub struct Engine<'p> {
     /// shared by every modal variable that prints nothing: formatting into
     /// a value allocates only when there is text.
     pub(crate) scratch: Vec<u8>,
+    /// The text `parseFloat(text.substring(k))` reads, reused.
+    pub(crate) float_text: Vec<u8>,
     pub(crate) empty_text: crate::value::Text,
 }
 
@@ -135,6 +137,7 @@ impl<'p> Engine<'p> {
             trace: None,
             profile: None,
             scratch: Vec::with_capacity(64),
+            float_text: Vec::with_capacity(64),
             empty_text: crate::value::Text::new(""),
         }
     }

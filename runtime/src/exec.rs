@@ -141,6 +141,13 @@ pub enum Expr {
         local: LocalId,
         is: bool,
     },
+    /// `parseFloat(text.substring(from))`: the number at character `from`
+    /// of the text of `value`, read where the text is formatted, with no
+    /// text made (a field post's `parseFloat(getFeedrate(m).substring(1))`).
+    ParseFloatFrom {
+        value: Box<Expr>,
+        from: usize,
+    },
 }
 
 impl Expr {
@@ -153,7 +160,10 @@ impl Expr {
     /// arguments, the value a format takes), not deeper.
     pub fn for_each_operand_mut(&mut self, mut f: impl FnMut(&mut Expr)) {
         match self {
-            Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => f(value),
+            Expr::FormatVar { value, .. }
+            | Expr::Format { value, .. }
+            | Expr::Unary(_, value)
+            | Expr::ParseFloatFrom { value, .. } => f(value),
             Expr::Binary(_, a, b) => {
                 f(a);
                 f(b);

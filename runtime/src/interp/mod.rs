@@ -391,6 +391,15 @@ impl Engine<'_> {
             Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::LocalEmpty { .. } | Expr::LocalIsText { .. } => Value::Bool(self.test(e, frame)?),
+            Expr::ParseFloatFrom { value, from } => {
+                let mut buf = std::mem::take(&mut self.float_text);
+                buf.clear();
+                let text = self.text_into(value, frame, &mut buf);
+                let n = parse_float_from(&buf, *from);
+                self.float_text = buf;
+                text?;
+                Value::Num(n)
+            }
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Local(i) => frame.get(i.index()).cloned().unwrap_or_default(),
             Expr::Global(i) => self.globals.get(i.index()).cloned().unwrap_or_default(),
@@ -521,19 +530,49 @@ impl Engine<'_> {
     /// returns the text; an on-change variable returns "" when the text is
     /// the one it returned last.
     pub fn format_through_var(&mut self, id: VarId, v: Value) -> Value {
-        let post = self.post;
-        let var = &post.variables[id.index()];
         let mut buf = std::mem::take(&mut self.scratch);
         buf.clear();
+        self.format_into(id, v, &mut buf);
+        self.scratch_text(buf)
+    }
+
+    /// [`Self::format_through_var`], the text appended to `buf`.
+    fn format_into(&mut self, id: VarId, v: Value, buf: &mut Vec<u8>) {
+        let post = self.post;
+        let var = &post.variables[id.index()];
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         match &v {
-            Value::Text(s) => {
-                put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, &mut buf)
-            }
-            other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), &mut buf),
+            Value::Text(s) => put_text(is_modal(var), state, prefix, s.as_bytes(), &post.options.substitutions, buf),
+            other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), buf),
         }
         self.set_var(id, v);
-        self.scratch_text(buf)
+    }
+
+    /// Appends the text of an expression to `buf`: a formatted variable is
+    /// formatted there, a choice chooses; any other value as its text.
+    fn text_into(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut Vec<u8>) -> Result<()> {
+        match e {
+            Expr::FormatVar { var, value } => {
+                if let Expr::Quantity(q) = &**value
+                    && !q.is_text()
+                    && *q != Quantity::BlockNumber
+                {
+                    let n = self.machine.number(*q);
+                    if !n.is_nan() {
+                        self.format_number_into(*var, n, buf);
+                        return Ok(());
+                    }
+                }
+                let v = self.eval(value, frame)?;
+                self.format_into(*var, v, buf);
+            }
+            Expr::Choose(c, a, b) => {
+                let pick = if self.eval(c, frame)?.truthy() { a } else { b };
+                self.text_into(pick, frame, buf)?;
+            }
+            other => buf.extend_from_slice(self.eval(other, frame)?.to_text().as_bytes()),
+        }
+        Ok(())
     }
 
     /// The text formatted into `buf` (the engine's scratch buffer, given
@@ -547,14 +586,19 @@ impl Engine<'_> {
 
     /// [`Self::format_through_var`] of a number.
     fn format_number_through_var(&mut self, id: VarId, n: f64) -> Value {
-        let post = self.post;
-        let var = &post.variables[id.index()];
         let mut buf = std::mem::take(&mut self.scratch);
         buf.clear();
-        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
-        put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &mut buf);
-        state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+        self.format_number_into(id, n, &mut buf);
         self.scratch_text(buf)
+    }
+
+    /// [`Self::format_into`] of a number.
+    fn format_number_into(&mut self, id: VarId, n: f64, buf: &mut Vec<u8>) {
+        let post = self.post;
+        let var = &post.variables[id.index()];
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
+        put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, n, buf);
+        state.previous = std::mem::replace(&mut state.value, Value::Num(n));
     }
 
     /// Calls a post function with arguments.
@@ -747,6 +791,18 @@ fn texts_empty(e: &Expr, frame: &[Value], globals: &[Value]) -> Option<bool> {
         },
         _ => None,
     }
+}
+
+/// `parseFloat(text.substring(from))` of the bytes of a text (replacing
+/// what is not UTF-8, as a text value does).
+fn parse_float_from(bytes: &[u8], from: usize) -> f64 {
+    let text = String::from_utf8_lossy(bytes);
+    let rest = if text.is_ascii() {
+        &text[from.min(text.len())..]
+    } else {
+        text.char_indices().nth(from).map_or("", |(i, _)| &text[i..])
+    };
+    crate::js::parse_float(rest)
 }
 
 fn is_leaf(e: &Expr) -> bool {

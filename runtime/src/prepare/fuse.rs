@@ -16,11 +16,16 @@
 //! if (w != "") { if (!written(m)) { truncate m; emit w } else { emit " " + w } }
 //! ```
 //!
+//! And three expressions a field post evaluates for every word: `w != ""`
+//! and `typeof w === "string"` of a local, asked of the local in one step,
+//! and `parseFloat(text.substring(k))`, the number read where the text is
+//! formatted ([`expressions`]).
+//!
 //! Only those exact shapes are fused; the interpreter's [`Stmt::Word`]
 //! runs the same tests, writes and assignments in the same order, and
 //! counts the same steps, so nothing a post writes can change.
 
-use postc_ir::{BinaryOp, Place, UnaryOp};
+use postc_ir::{BinaryOp, Builtin, Place, UnaryOp};
 
 use crate::exec::{Expr, Piece, Stmt, WordsBefore};
 
@@ -43,18 +48,32 @@ pub(super) fn stmts(body: &mut [Stmt]) {
     }
 }
 
-/// Every `local == ""` and `typeof local === "string"` in the statements,
-/// at any depth, as the one expression that asks it
-/// ([`Expr::LocalEmpty`], [`Expr::LocalIsText`]).
-pub(super) fn conditions(body: &mut [Stmt]) {
+/// Every `local == ""`, `typeof local === "string"` and
+/// `parseFloat(text.substring(k))` in the statements, at any depth, as the
+/// one expression that does it ([`Expr::LocalEmpty`],
+/// [`Expr::LocalIsText`], [`Expr::ParseFloatFrom`]).
+pub(super) fn expressions(body: &mut [Stmt]) {
     for s in body {
-        s.for_each_expr_mut(condition);
-        s.for_each_body_mut(|b| conditions(b));
+        s.for_each_expr_mut(expression);
+        s.for_each_body_mut(|b| expressions(b));
     }
 }
 
-fn condition(e: &mut Expr) {
-    e.for_each_operand_mut(condition);
+fn expression(e: &mut Expr) {
+    e.for_each_operand_mut(expression);
+    // parseFloat(text.substring(k)), k a whole number
+    if let Expr::Builtin(Builtin::ParseFloat, args) = e
+        && let [Expr::Builtin(Builtin::Substring, cut)] = args.as_mut_slice()
+        && let [_, Expr::Number(k)] = cut.as_slice()
+        && *k >= 0.0
+        && k.fract() == 0.0
+        && *k < 1e9
+    {
+        let from = *k as usize;
+        let value = cut.swap_remove(0);
+        *e = Expr::ParseFloatFrom { value: Box::new(value), from };
+        return;
+    }
     let Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b) = e else {
         return;
     };
@@ -192,6 +211,17 @@ mod tests {
     }
 
     #[test]
+    fn parse_float_of_a_cut_text_becomes_one_expression() {
+        let cut = |k: f64| {
+            Expr::Builtin(Builtin::ParseFloat, vec![Expr::Builtin(Builtin::Substring, vec![local(0), Expr::Number(k)])])
+        };
+        let mut body = vec![Stmt::Eval(cut(1.0)), Stmt::Eval(cut(1.5)), Stmt::Eval(cut(-1.0))];
+        expressions(&mut body);
+        assert_eq!(body[0], Stmt::Eval(Expr::ParseFloatFrom { value: Box::new(local(0)), from: 1 }));
+        assert_eq!(body[1..], [Stmt::Eval(cut(1.5)), Stmt::Eval(cut(-1.0))]);
+    }
+
+    #[test]
     fn empty_and_typeof_tests_of_a_local_become_one_expression() {
         let typeof_is = |op, name: &str| {
             Expr::Binary(op, Box::new(Expr::Unary(UnaryOp::Typeof, Box::new(local(2)))), Box::new(Expr::text(name)))
@@ -210,7 +240,7 @@ mod tests {
             )],
             otherwise: vec![],
         }];
-        conditions(&mut body);
+        expressions(&mut body);
         let want = vec![Stmt::If {
             branches: vec![(
                 Expr::Binary(

@@ -195,7 +195,10 @@ fn live_before(s: &mut Stmt, after: Live, in_loop: Option<&Loop>) -> Live {
         // once: what is live at its start is live at the loop's.
         Stmt::While { cond, body, .. } if ends_in_jump(body) && !continues(body) => {
             let mut head = drop_dead(body, Live::new(), Some(&Loop { exit: &after, head: &Live::new() }));
-            head.extend(after);
+            // `while (true)` always runs its body; another test may skip it.
+            if !matches!(cond, Expr::Bool(true)) {
+                head.extend(after);
+            }
             reads(cond, &mut head);
             head
         }
@@ -328,6 +331,22 @@ mod tests {
             emit(local(1)),
         ];
         assert_eq!(tidy(body), want);
+    }
+
+    #[test]
+    fn a_default_set_again_in_a_loop_that_runs_once_is_dropped() {
+        // `x = null; while (true) { if (f()) { x = ""; break } x = g(); break } emit x`
+        let once = Stmt::While {
+            cond: Expr::Bool(true),
+            body: vec![
+                Stmt::If { branches: vec![(call(), vec![set(1, Expr::text("")), Stmt::Break])], otherwise: vec![] },
+                set(1, call()),
+                Stmt::Break,
+            ],
+            span: None,
+        };
+        let body = vec![set(1, Expr::Null), once.clone(), emit(local(1))];
+        assert_eq!(tidy(body), vec![once, emit(local(1))]);
     }
 
     #[test]

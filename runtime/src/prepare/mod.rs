@@ -46,7 +46,7 @@ pub fn prepare(post: &Post) -> Code {
     for f in &mut functions {
         if let exec::Body::Native(body) = &mut f.body {
             *body = locals::tidy(std::mem::take(body));
-            fuse::conditions(body);
+            fuse::expressions(body);
         }
     }
     Code {
@@ -70,7 +70,7 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     let top = emit::max_slot(&body);
     fuse::stmts(&mut body);
     let mut body = locals::tidy(body);
-    fuse::conditions(&mut body);
+    fuse::expressions(&mut body);
     match top {
         Some(top) => {
             // The frame takes its full size at once, and the statements
