@@ -141,6 +141,12 @@ pub enum Expr {
         local: LocalId,
         is: bool,
     },
+    /// `a && b && ...` (`all`) or `a || b || ...` (not `all`), flattened:
+    /// the operands in order, stopping at the first that decides.
+    Chain {
+        all: bool,
+        operands: Vec<Expr>,
+    },
     /// `parseFloat(text.substring(from))`: the number at character `from`
     /// of the text of `value`, read where the text is formatted, with no
     /// text made (a field post's `parseFloat(getFeedrate(m).substring(1))`).
@@ -173,7 +179,9 @@ impl Expr {
                 f(a);
                 f(b);
             }
-            Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(f),
+            Expr::Call(_, args) | Expr::Builtin(_, args) | Expr::Chain { operands: args, .. } => {
+                args.iter_mut().for_each(f)
+            }
             Expr::LocalEmpty { .. }
             | Expr::LocalIsText { .. }
             | Expr::Number(_)

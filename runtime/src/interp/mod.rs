@@ -349,6 +349,14 @@ impl Engine<'_> {
                 }
             }),
             Expr::LocalIsText { local, is } => Ok(matches!(frame.get(local.index()), Some(Value::Text(_))) == *is),
+            Expr::Chain { all, operands } => {
+                for operand in operands {
+                    if self.test(operand, frame)? != *all {
+                        return Ok(!*all);
+                    }
+                }
+                Ok(*all)
+            }
             // `x + y + z == ""` of texts (a field post asking whether any
             // word printed): empty when every part is, with no text made.
             Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b)
@@ -391,6 +399,18 @@ impl Engine<'_> {
             Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::LocalEmpty { .. } | Expr::LocalIsText { .. } => Value::Bool(self.test(e, frame)?),
+            // The value of `a && b && c` is the first operand that decides,
+            // or the last.
+            Expr::Chain { all, operands } => {
+                let Some((last, first)) = operands.split_last() else { return Ok(Value::Bool(*all)) };
+                for operand in first {
+                    let v = self.eval(operand, frame)?;
+                    if v.truthy() != *all {
+                        return Ok(v);
+                    }
+                }
+                self.eval(last, frame)?
+            }
             Expr::ParseFloatFrom { value, from } => {
                 let mut buf = std::mem::take(&mut self.float_text);
                 buf.clear();

@@ -16,10 +16,10 @@
 //! if (w != "") { if (!written(m)) { truncate m; emit w } else { emit " " + w } }
 //! ```
 //!
-//! And three expressions a field post evaluates for every word: `w != ""`
-//! and `typeof w === "string"` of a local, asked of the local in one step,
-//! and `parseFloat(text.substring(k))`, the number read where the text is
-//! formatted ([`expressions`]).
+//! And expressions a field post evaluates for every word: `w != ""` and
+//! `typeof w === "string"` of a local, asked of the local in one step,
+//! `parseFloat(text.substring(k))`, the number read where the text is
+//! formatted, and chains of `&&` or `||` as one list ([`expressions`]).
 //!
 //! Only those exact shapes are fused; the interpreter's [`Stmt::Word`]
 //! runs the same tests, writes and assignments in the same order, and
@@ -48,10 +48,11 @@ pub(super) fn stmts(body: &mut [Stmt]) {
     }
 }
 
-/// Every `local == ""`, `typeof local === "string"` and
-/// `parseFloat(text.substring(k))` in the statements, at any depth, as the
-/// one expression that does it ([`Expr::LocalEmpty`],
-/// [`Expr::LocalIsText`], [`Expr::ParseFloatFrom`]).
+/// Every `local == ""`, `typeof local === "string"`,
+/// `parseFloat(text.substring(k))` and chain of `&&` or `||` in the
+/// statements, at any depth, as the one expression that does it
+/// ([`Expr::LocalEmpty`], [`Expr::LocalIsText`], [`Expr::ParseFloatFrom`],
+/// [`Expr::Chain`]).
 pub(super) fn expressions(body: &mut [Stmt]) {
     for s in body {
         s.for_each_expr_mut(expression);
@@ -61,6 +62,17 @@ pub(super) fn expressions(body: &mut [Stmt]) {
 
 fn expression(e: &mut Expr) {
     e.for_each_operand_mut(expression);
+    // a && b && c (or ||), flattened
+    if let Expr::Binary(op @ (BinaryOp::And | BinaryOp::Or), a, b) = e {
+        let all = *op == BinaryOp::And;
+        let mut operands = match std::mem::replace(&mut **a, Expr::Null) {
+            Expr::Chain { all: inner, operands } if inner == all => operands,
+            a => vec![a],
+        };
+        operands.push(std::mem::replace(&mut **b, Expr::Null));
+        *e = Expr::Chain { all, operands };
+        return;
+    }
     // parseFloat(text.substring(k)), k a whole number
     if let Expr::Builtin(Builtin::ParseFloat, args) = e
         && let [Expr::Builtin(Builtin::Substring, cut)] = args.as_mut_slice()
@@ -211,6 +223,17 @@ mod tests {
     }
 
     #[test]
+    fn chains_of_and_and_or_become_lists() {
+        let (a, b, c) = (local(0), local(1), local(2));
+        let and = |x: Expr, y: Expr| Expr::Binary(BinaryOp::And, Box::new(x), Box::new(y));
+        let or = |x: Expr, y: Expr| Expr::Binary(BinaryOp::Or, Box::new(x), Box::new(y));
+        let mut body = vec![Stmt::Eval(or(and(and(a.clone(), b.clone()), c.clone()), a.clone()))];
+        expressions(&mut body);
+        let all = Expr::Chain { all: true, operands: vec![a.clone(), b, c] };
+        assert_eq!(body, vec![Stmt::Eval(Expr::Chain { all: false, operands: vec![all, a] })]);
+    }
+
+    #[test]
     fn parse_float_of_a_cut_text_becomes_one_expression() {
         let cut = |k: f64| {
             Expr::Builtin(Builtin::ParseFloat, vec![Expr::Builtin(Builtin::Substring, vec![local(0), Expr::Number(k)])])
@@ -243,11 +266,13 @@ mod tests {
         expressions(&mut body);
         let want = vec![Stmt::If {
             branches: vec![(
-                Expr::Binary(
-                    BinaryOp::And,
-                    Box::new(Expr::LocalIsText { local: LocalId::new(2), is: true }),
-                    Box::new(Expr::LocalEmpty { local: LocalId::new(1), op: BinaryOp::JsNe }),
-                ),
+                Expr::Chain {
+                    all: true,
+                    operands: vec![
+                        Expr::LocalIsText { local: LocalId::new(2), is: true },
+                        Expr::LocalEmpty { local: LocalId::new(1), op: BinaryOp::JsNe },
+                    ],
+                },
                 // Near misses stay as they are.
                 vec![
                     Stmt::Eval(typeof_is(BinaryOp::JsEq, "string")),
