@@ -34,7 +34,7 @@ type Live = HashSet<LocalId>;
 
 /// How many statements and expressions a copy is read through at most, so
 /// that the pass stays linear on any post.
-const READ_THROUGH_BUDGET: usize = 4096;
+const READ_THROUGH_BUDGET: usize = 512;
 
 /// A handler or function body with its copies and constants read through
 /// and its dead stores dropped.
