@@ -487,4 +487,9 @@ fn spliced_functions_and_local_tests_print_what_node_prints() {
     let prepared = format!("{:?}", postc_runtime::prepare::prepare(&post).handlers);
     assert!(prepared.contains("LocalEmpty"), "`c != \"\"` is asked of the local: {prepared}");
     assert!(prepared.contains("ParseFloatFrom"), "the number is read where it is formatted: {prepared}");
+    for name in ["motion", "kind"] {
+        let f = post.functions.iter().position(|f| f.name == name).expect("the function");
+        let call = format!("Call(FunctionId({f}),");
+        assert!(!prepared.contains(&call), "`{name}` is spliced into the handlers, not called: {prepared}");
+    }
 }
