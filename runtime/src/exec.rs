@@ -197,6 +197,13 @@ impl Expr {
         }
     }
 
+    /// How many expressions this one is made of, itself included.
+    pub fn size(&mut self) -> usize {
+        let mut n = 1;
+        self.for_each_operand_mut(|a| n += a.size());
+        n
+    }
+
     /// Calls `f` on every local the expression reads, at any depth
     /// ([`Expr::Local`] and the marks of [`Expr::Written`]).
     pub fn for_each_local_mut(&mut self, f: &mut impl FnMut(&mut LocalId)) {

@@ -427,14 +427,8 @@ impl Engine<'_> {
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
             Expr::FormatVar { var, value } => {
                 // A number the machine knows needs no value made first.
-                if let Expr::Quantity(q) = &**value
-                    && !q.is_text()
-                    && *q != Quantity::BlockNumber
-                {
-                    let n = self.machine.number(*q);
-                    if !n.is_nan() {
-                        return Ok(self.format_number_through_var(*var, n));
-                    }
+                if let Some(n) = self.known_number(value) {
+                    return Ok(self.format_number_through_var(*var, n));
                 }
                 let v = self.eval(value, frame)?;
                 self.format_through_var(*var, v)
@@ -568,20 +562,26 @@ impl Engine<'_> {
         self.set_var(id, v);
     }
 
+    /// The number an expression is when it names a numeric quantity the
+    /// machine has a value for (no value made to read it).
+    #[inline]
+    fn known_number(&self, e: &Expr) -> Option<f64> {
+        match e {
+            Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
+                Some(self.machine.number(*q)).filter(|n| !n.is_nan())
+            }
+            _ => None,
+        }
+    }
+
     /// Appends the text of an expression to `buf`: a formatted variable is
     /// formatted there, a choice chooses; any other value as its text.
     fn text_into(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut Vec<u8>) -> Result<()> {
         match e {
             Expr::FormatVar { var, value } => {
-                if let Expr::Quantity(q) = &**value
-                    && !q.is_text()
-                    && *q != Quantity::BlockNumber
-                {
-                    let n = self.machine.number(*q);
-                    if !n.is_nan() {
-                        self.format_number_into(*var, n, buf);
-                        return Ok(());
-                    }
+                if let Some(n) = self.known_number(value) {
+                    self.format_number_into(*var, n, buf);
+                    return Ok(());
                 }
                 let v = self.eval(value, frame)?;
                 self.format_into(*var, v, buf);

@@ -146,11 +146,8 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::prepare::testing::local;
     use postc_ir::LocalId;
-
-    fn local(i: u16) -> Expr {
-        Expr::Local(LocalId::new(i))
-    }
 
     fn not_empty(e: Expr) -> Expr {
         Expr::Binary(BinaryOp::JsNe, Box::new(e), Box::new(Expr::text("")))

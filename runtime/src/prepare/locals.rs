@@ -91,19 +91,13 @@ fn writes(s: &mut Stmt, hit: &dyn Fn(LocalId) -> bool, size: &mut usize) -> bool
     let mut found = false;
     *size += 1;
     s.for_each_named_local_mut(|u, k| found |= u != LocalUse::Read && hit(*k));
-    s.for_each_expr_mut(|e| *size += nodes(e));
+    s.for_each_expr_mut(|e| *size += e.size());
     s.for_each_body_mut(|b| {
         for s in b {
             found = found || writes(s, hit, size);
         }
     });
     found
-}
-
-fn nodes(e: &mut Expr) -> usize {
-    let mut n = 1;
-    e.for_each_operand_mut(|a| n += nodes(a));
-    n
 }
 
 /// Replaces reads of `d` by `by` in a statement, at any depth. A mark
@@ -273,14 +267,7 @@ fn all_reads(s: &mut Stmt, live: &mut Live) {
 mod tests {
     use super::*;
     use crate::exec::Piece;
-
-    fn local(i: u16) -> Expr {
-        Expr::Local(LocalId::new(i))
-    }
-
-    fn set(i: u16, e: Expr) -> Stmt {
-        Stmt::Assign(Place::Local(LocalId::new(i)), e)
-    }
+    use crate::prepare::testing::{local, set};
 
     fn emit(e: Expr) -> Stmt {
         Stmt::Emit(vec![Piece::Expr(e)])

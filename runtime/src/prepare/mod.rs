@@ -90,3 +90,21 @@ fn one(body: Vec<Stmt>) -> Vec<Stmt> {
     }
     vec![Stmt::If { branches: vec![(Expr::Bool(true), body)], otherwise: vec![] }]
 }
+
+/// What the passes' unit tests build code from.
+#[cfg(test)]
+mod testing {
+    use postc_ir::{LocalId, Place};
+
+    use crate::exec::{Expr, Stmt};
+
+    /// A read of local `i`.
+    pub fn local(i: u16) -> Expr {
+        Expr::Local(LocalId::new(i))
+    }
+
+    /// `local i = e`.
+    pub fn set(i: u16, e: Expr) -> Stmt {
+        Stmt::Assign(Place::Local(LocalId::new(i)), e)
+    }
+}

@@ -155,30 +155,17 @@ fn plain(s: &mut Stmt, nodes: &mut usize) -> bool {
     if !matches!(s, Stmt::Assign(..) | Stmt::If { .. } | Stmt::Return(_) | Stmt::Eval(_) | Stmt::Forget(_)) {
         return false;
     }
-    s.for_each_expr_mut(|e| *nodes += count(e));
+    s.for_each_expr_mut(|e| *nodes += e.size());
     let mut ok = true;
     s.for_each_body_mut(|b| ok &= b.iter_mut().all(|s| plain(s, nodes)));
     ok
 }
 
-fn count(e: &mut Expr) -> usize {
-    let mut n = 1;
-    e.for_each_operand_mut(|a| n += count(a));
-    n
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::prepare::testing::{local, set};
     use postc_ir::{BinaryOp, FunctionId, GlobalId};
-
-    fn local(i: u16) -> Expr {
-        Expr::Local(LocalId::new(i))
-    }
-
-    fn set(i: u16, e: Expr) -> Stmt {
-        Stmt::Assign(Place::Local(LocalId::new(i)), e)
-    }
 
     /// `function motion(code) { if (code == last) return ""; last = code; return code; }`
     fn motion() -> Function {
