@@ -14,7 +14,10 @@
 //! from its extension (`.apt`, `.cl`, `.cls`, `.ncl`, `.clt`, `cl.tap` for
 //! APT CL; `.ron`, `.jsonl` for the native stream) or its content.
 
+mod read_ahead;
 mod ron_locate;
+
+pub use read_ahead::ReadAhead;
 
 /// postc's own toolpath stream (`readers/native`), under its old path.
 pub use postc_reader_native as native;
@@ -263,14 +266,15 @@ fn read_head(loader: &dyn SourceLoader, path: &Path) -> Vec<u8> {
     head
 }
 
-/// Opens a toolpath as a stream of events.
+/// Opens a toolpath as a stream of events, read on a thread of its own
+/// ([`ReadAhead`]).
 pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
     if !sources.loader().exists(path) {
         return Err(Diagnostic::error(codes::IO001, format!("toolpath `{}` does not exist", path.display())));
     }
     match toolpath_format(path, &read_head(sources.loader(), path)) {
-        Some(ToolpathFormat::Native) => Ok(Box::new(native::open(path, sources)?)),
-        Some(ToolpathFormat::Apt) => Ok(Box::new(postc_reader_apt::open(path, sources)?)),
+        Some(ToolpathFormat::Native) => Ok(ReadAhead::start(native::open(path, sources)?)),
+        Some(ToolpathFormat::Apt) => Ok(ReadAhead::start(postc_reader_apt::open(path, sources)?)),
         None => {
             Err(Diagnostic::error(codes::IO006, format!("cannot tell what kind of toolpath `{}` is", path.display()))
                 .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"))

@@ -1,0 +1,227 @@
+//! Reading a toolpath on a thread of its own while the post runs.
+//!
+//! Reading a toolpath (parsing each line's numbers) costs about as much as
+//! a simple post spends on a move. [`ReadAhead`] moves it to a second
+//! thread: the reader fills batches of events and hands them over a
+//! bounded channel, so on a machine with two cores the whole job takes
+//! about as long as the posting alone.
+//!
+//! What a consumer sees does not change: the same events, each with its
+//! span, and each diagnostic of the reader delivered by the same
+//! `next_event` call that would have delivered it reading in line (a batch
+//! keeps diagnostics and events in the order the reader produced them).
+//! Memory stays bounded (a few batches in flight), emptied batches go back
+//! to the reader so a move allocates nothing, a consumer that stops early
+//! stops the reader (its next hand-over fails), and a reader that panics
+//! panics the consumer at the point the stream would have ended, never a
+//! stream that silently ends early. When no thread can be started, the
+//! source is read in line.
+
+use std::sync::mpsc::{Receiver, SyncSender, TryRecvError, sync_channel};
+use std::thread::JoinHandle;
+
+use postc_ir::{Diagnostic, Event, EventSource, Span};
+
+/// Events handed over at a time.
+const BATCH: usize = 1024;
+/// Batches read ahead of the consumer at most.
+const IN_FLIGHT: usize = 4;
+
+/// One thing the reader produced, in its order.
+enum Item {
+    Event(Event, Span),
+    Diagnostic(Diagnostic),
+}
+
+/// A toolpath source read on its own thread (see the module's doc).
+pub struct ReadAhead {
+    /// Filled batches, each in reverse order (the next item is the last).
+    filled: Option<Receiver<Vec<Item>>>,
+    /// Emptied batches going back to the reader.
+    emptied: SyncSender<Vec<Item>>,
+    current: Vec<Item>,
+    reader: Option<JoinHandle<()>>,
+    ended: bool,
+}
+
+impl ReadAhead {
+    /// `source` read on its own thread, or in line when no thread starts.
+    pub fn start<S: EventSource + Send + 'static>(source: S) -> Box<dyn EventSource> {
+        let (filled_tx, filled) = sync_channel::<Vec<Item>>(IN_FLIGHT);
+        let (emptied, emptied_rx) = sync_channel::<Vec<Item>>(IN_FLIGHT + 2);
+        // The source goes to the thread through a slot, so that it comes
+        // back when the thread cannot be started.
+        let slot = std::sync::Arc::new(std::sync::Mutex::new(Some(source)));
+        let theirs = slot.clone();
+        let spawned = std::thread::Builder::new().name("postc-read".into()).spawn(move || {
+            let source = theirs.lock().ok().and_then(|mut s| s.take());
+            if let Some(source) = source {
+                read(source, &filled_tx, &emptied_rx);
+            }
+        });
+        match spawned {
+            Ok(reader) => Box::new(ReadAhead {
+                filled: Some(filled),
+                emptied,
+                current: Vec::new(),
+                reader: Some(reader),
+                ended: false,
+            }),
+            Err(_) => match slot.lock().ok().and_then(|mut s| s.take()) {
+                Some(source) => Box::new(source),
+                None => Box::new(postc_ir::event::VecSource::new(Vec::new(), postc_ir::FileId(0))),
+            },
+        }
+    }
+
+    /// The reader has stopped: wait for its thread, and panic as it did.
+    fn finish(&mut self) {
+        self.filled = None;
+        if let Some(reader) = self.reader.take()
+            && let Err(panic) = reader.join()
+        {
+            std::panic::resume_unwind(panic);
+        }
+    }
+}
+
+/// The reader's thread: batches of events until the source ends or the
+/// consumer is gone.
+fn read<S: EventSource>(mut source: S, filled: &SyncSender<Vec<Item>>, emptied: &Receiver<Vec<Item>>) {
+    let mut diagnostics = Vec::new();
+    loop {
+        let mut batch = match emptied.try_recv() {
+            Ok(b) => b,
+            Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(BATCH),
+        };
+        let mut ended = false;
+        while batch.len() < BATCH {
+            let next = source.next_event(&mut diagnostics);
+            batch.extend(diagnostics.drain(..).map(Item::Diagnostic));
+            match next {
+                Some((event, span)) => batch.push(Item::Event(event, span)),
+                None => {
+                    ended = true;
+                    break;
+                }
+            }
+        }
+        batch.reverse();
+        if filled.send(batch).is_err() || ended {
+            return;
+        }
+    }
+}
+
+impl EventSource for ReadAhead {
+    fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+        loop {
+            while let Some(item) = self.current.pop() {
+                match item {
+                    Item::Event(event, span) => return Some((event, span)),
+                    Item::Diagnostic(d) => diagnostics.push(d),
+                }
+            }
+            if self.ended {
+                return None;
+            }
+            let next = self.filled.as_ref().map(Receiver::recv);
+            match next {
+                Some(Ok(batch)) => {
+                    let emptied = std::mem::replace(&mut self.current, batch);
+                    // A full return channel only costs the reader an allocation.
+                    let _ = self.emptied.try_send(emptied);
+                }
+                _ => {
+                    self.ended = true;
+                    self.finish();
+                }
+            }
+        }
+    }
+}
+
+impl Drop for ReadAhead {
+    fn drop(&mut self) {
+        // Dropping the receiver first makes the reader's next hand-over
+        // fail, so it stops rather than reading the rest of the file.
+        self.filled = None;
+        if let Some(reader) = self.reader.take() {
+            let _ = reader.join();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use postc_ir::FileId;
+    use postc_ir::event::{Move, VecSource};
+
+    /// A source that reports a diagnostic before every third event.
+    struct Noisy {
+        inner: VecSource,
+        n: usize,
+    }
+
+    impl EventSource for Noisy {
+        fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+            self.n += 1;
+            if self.n.is_multiple_of(3) {
+                diagnostics.push(Diagnostic::error(postc_ir::codes::TP002, format!("before event {}", self.n)));
+            }
+            self.inner.next_event(diagnostics)
+        }
+    }
+
+    fn events(n: usize) -> Vec<Event> {
+        (0..n).map(|i| Event::Rapid(Move { x: i as f64, ..Default::default() })).collect()
+    }
+
+    /// Each event with the diagnostics delivered by the call that gave it.
+    fn drain(source: &mut dyn EventSource) -> Vec<(Option<Event>, Vec<String>)> {
+        let mut all = Vec::new();
+        loop {
+            let mut diagnostics = Vec::new();
+            let next = source.next_event(&mut diagnostics);
+            let done = next.is_none();
+            all.push((next.map(|(e, _)| e), diagnostics.into_iter().map(|d| d.message).collect()));
+            if done {
+                return all;
+            }
+        }
+    }
+
+    #[test]
+    fn read_ahead_gives_what_reading_in_line_gives() {
+        for n in [0, 1, BATCH - 1, BATCH, BATCH + 1, 5 * BATCH + 7] {
+            let in_line = drain(&mut Noisy { inner: VecSource::new(events(n), FileId(0)), n: 0 });
+            let mut ahead = ReadAhead::start(Noisy { inner: VecSource::new(events(n), FileId(0)), n: 0 });
+            assert_eq!(drain(&mut *ahead), in_line, "{n} events");
+            // After the end, the end again.
+            assert!(ahead.next_event(&mut Vec::new()).is_none());
+        }
+    }
+
+    #[test]
+    fn a_consumer_that_stops_early_stops_the_reader() {
+        let mut ahead = ReadAhead::start(VecSource::new(events(50 * BATCH), FileId(0)));
+        assert!(ahead.next_event(&mut Vec::new()).is_some());
+        drop(ahead); // joins the reader: it must not wait forever
+    }
+
+    struct Panics;
+
+    impl EventSource for Panics {
+        fn next_event(&mut self, _: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+            panic!("the reader failed");
+        }
+    }
+
+    #[test]
+    fn a_reader_that_panics_is_not_an_early_end() {
+        let mut ahead = ReadAhead::start(Panics);
+        let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| ahead.next_event(&mut Vec::new())));
+        assert!(caught.is_err(), "the stream must not just end");
+    }
+}
