@@ -46,6 +46,11 @@ pub fn text_budget_error(len: usize) -> Diagnostic {
 /// Calls nest at most this deep.
 const MAX_DEPTH: usize = 200;
 
+/// Below this much stack left, a call runs on a new stack segment of
+/// [`STACK_GROWTH`] bytes ([`stacker`]).
+const STACK_RED_ZONE: usize = 128 * 1024;
+const STACK_GROWTH: usize = 2 * 1024 * 1024;
+
 /// The longest text a post's code may build, in bytes (16 MiB), in native
 /// code and in scripts alike: a post is code from strangers, and
 /// `s = s + s` in a loop doubles its memory every step, long before the
@@ -69,10 +74,12 @@ impl Engine<'_> {
                 return Err(Box::new(self.budget_error(None)));
             }
             match stmt {
-                Stmt::Line { pieces, .. } => self.write_line_in(pieces, frame)?,
-                Stmt::Write(e) => {
+                Stmt::Assign(Place::Local(i), e) => {
                     let v = self.eval(e, frame)?;
-                    self.write_blocks(&v.to_text());
+                    match frame.get_mut(i.index()) {
+                        Some(slot) => *slot = v,
+                        None => self.assign(Place::Local(*i), v, frame),
+                    }
                 }
                 Stmt::Assign(place, e) => {
                     let v = self.eval(e, frame)?;
@@ -90,9 +97,13 @@ impl Engine<'_> {
                         }
                     }
                     let body = taken.unwrap_or(otherwise);
-                    match self.exec(body, frame)? {
-                        Flow::Normal => {}
-                        flow => return Ok(flow),
+                    // An `if` with nothing to run (most have no `else`)
+                    // costs no call.
+                    if !body.is_empty() {
+                        match self.exec(body, frame)? {
+                            Flow::Normal => {}
+                            flow => return Ok(flow),
+                        }
                     }
                 }
                 Stmt::While { cond, body, span } => loop {
@@ -111,6 +122,29 @@ impl Engine<'_> {
                 },
                 Stmt::Break => return Ok(Flow::Break),
                 Stmt::Continue => return Ok(Flow::Continue),
+                Stmt::Emit(pieces) => self.emit_pieces(pieces, frame)?,
+                Stmt::Mark(k) => {
+                    let at = Value::Num(self.out.buf.len() as f64);
+                    match frame.get_mut(k.index()) {
+                        Some(slot) => *slot = at,
+                        None => self.assign(Place::Local(*k), at, frame),
+                    }
+                }
+                Stmt::Truncate(k) => {
+                    let at = self.mark(*k, frame);
+                    self.out.buf.truncate(at);
+                }
+                Stmt::Word { cond, word, sep, before } => self.word(cond, word, sep, *before, frame)?,
+                Stmt::Origin(span) => {
+                    if let Some(t) = self.trace.as_deref_mut() {
+                        t.origin = Some(*span);
+                    }
+                }
+                Stmt::Line { pieces, .. } => self.write_line_in(pieces, frame)?,
+                Stmt::Write(e) => {
+                    let v = self.eval(e, frame)?;
+                    self.write_blocks(&v.to_text());
+                }
                 Stmt::Return(e) => {
                     let v = match e {
                         Some(e) => self.eval(e, frame)?,
@@ -118,21 +152,12 @@ impl Engine<'_> {
                     };
                     return Ok(Flow::Return(v));
                 }
-                Stmt::Emit(pieces) => self.emit_pieces(pieces, frame)?,
-                Stmt::Mark(k) => {
-                    let at = Value::Num(self.out.buf.len() as f64);
-                    self.assign(Place::Local(*k), at, frame);
-                }
                 Stmt::MoveBack { to, from } => {
                     let (to, from) = (self.mark(*to, frame), self.mark(*from, frame));
                     if to < from {
                         let moved = self.out.buf.len() - from;
                         self.out.buf[to..].rotate_right(moved);
                     }
-                }
-                Stmt::Truncate(k) => {
-                    let at = self.mark(*k, frame);
-                    self.out.buf.truncate(at);
                 }
                 Stmt::Cut { at, chars } => {
                     let at = self.mark(*at, frame);
@@ -153,13 +178,7 @@ impl Engine<'_> {
                     let at = self.mark(*k, frame);
                     self.blocks_since(at);
                 }
-                Stmt::Word { cond, word, sep, before } => self.word(cond, word, sep, *before, frame)?,
                 Stmt::Forget(v) => self.forget_var(*v),
-                Stmt::Origin(span) => {
-                    if let Some(t) = self.trace.as_deref_mut() {
-                        t.origin = Some(*span);
-                    }
-                }
                 Stmt::Script(_) => self.warn_once(
                     Diagnostic::warning(
                         "RT003",
@@ -333,7 +352,21 @@ impl Engine<'_> {
     /// Evaluates a condition: whether the value of `e` is truthy, with
     /// comparisons and `&&`, `||`, `!` of them answered without making a
     /// value (the effects and their order are those of [`Self::eval`]).
+    #[inline]
     pub(crate) fn test(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
+        // The commonest conditions are answered where the caller is, with
+        // no call: a constant, a local's truth, whether a local is "".
+        match e {
+            Expr::Bool(b) => Ok(*b),
+            Expr::LocalEmpty { local, op } if let Some(Value::Text(t)) = frame.get(local.index()) => {
+                Ok(t.is_empty() == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq))
+            }
+            _ => self.test_any(e, frame),
+        }
+    }
+
+    /// [`Self::test`] of any condition.
+    fn test_any(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
         match e {
             Expr::Bool(b) => Ok(*b),
             Expr::Binary(BinaryOp::And, a, b) => Ok(self.test(a, frame)? && self.test(b, frame)?),
@@ -391,7 +424,22 @@ impl Engine<'_> {
     }
 
     /// Evaluates an expression.
+    #[inline]
     pub(crate) fn eval(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
+        // The commonest values are read where the caller is, with no call:
+        // a local, a global, a constant.
+        match e {
+            Expr::Local(i) => Ok(frame.get(i.index()).cloned().unwrap_or_default()),
+            Expr::Number(n) => Ok(Value::Num(*n)),
+            Expr::Text(t) => Ok(t.value().clone()),
+            Expr::Null => Ok(Value::Null),
+            Expr::Global(i) => Ok(self.globals.get(i.index()).cloned().unwrap_or_default()),
+            _ => self.eval_any(e, frame),
+        }
+    }
+
+    /// [`Self::eval`] of any expression.
+    fn eval_any(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         Ok(match e {
             Expr::Number(n) => Value::Num(*n),
             Expr::Text(t) => t.value().clone(),
@@ -647,7 +695,10 @@ impl Engine<'_> {
             Body::Native(body) => {
                 let mut frame = args;
                 frame.resize((runnable.slots as usize).max(frame.len()), Value::Null);
-                let result = match self.exec(body, &mut frame) {
+                // Calls nest up to MAX_DEPTH whatever the thread's stack
+                // (a debug build's frames are large, a host's thread may be
+                // small): the stack grows on the heap when it runs low.
+                let result = match stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)) {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) => Ok(Value::Null),
                     Err(e) => Err(e),
