@@ -61,7 +61,7 @@ pub struct NumberWriter {
     mark_len: usize,
     multiplier: f64,
     prefix: Vec<u8>,
-    /// Nothing to pad or trim: the fast right-to-left writer applies.
+    /// Nothing to pad: the fast right-to-left writer applies.
     plain: bool,
     /// Round the binary double, not its shortest decimal form.
     binary: bool,
@@ -87,7 +87,7 @@ impl NumberWriter {
             mark_len,
             multiplier: if format.multiplier.is_finite() { format.multiplier } else { 1.0 },
             prefix: format.prefix.as_bytes().to_vec(),
-            plain: format.width <= 1 && !format.trim_zeros,
+            plain: format.width <= 1,
             binary: format.rounding == Rounding::Binary,
         }
     }
@@ -193,7 +193,7 @@ impl NumberWriter {
         self.emit(prefix, r.negative, &digits[..int_len], &digits[int_len..], out);
     }
 
-    /// The common case: no width to fill, no zeros to trim. The word is
+    /// The common case: no width to fill (zeros may be trimmed). The word is
     /// written right to left, two digits at a time, into one stack buffer
     /// and appended at once.
     #[inline(always)]
@@ -204,6 +204,14 @@ impl NumberWriter {
         let mut i = WORD_END;
         let mut m = r.m;
         let mut d = self.decimals;
+        // Trailing zeros of the fraction are dropped before any is written.
+        if self.trim_zeros {
+            while d > 0 && m.is_multiple_of(10) {
+                m /= 10;
+                d -= 1;
+            }
+        }
+        let fraction_digits = d;
         while d >= 2 {
             let pair = (m % 100) as usize * 2;
             m /= 100;
@@ -217,13 +225,13 @@ impl NumberWriter {
             buf[i] = b'0' + (m % 10) as u8;
             m /= 10;
         }
-        if self.decimals > 0 || self.point_always {
+        if fraction_digits > 0 || self.point_always {
             for &b in self.mark[..self.mark_len].iter().rev() {
                 i -= 1;
                 buf[i] = b;
             }
         }
-        if m > 0 || self.leading_zero || self.decimals == 0 {
+        if m > 0 || self.leading_zero || fraction_digits == 0 {
             i = digits_before(m, &mut buf, i);
         }
         if r.negative {

@@ -231,4 +231,35 @@ proptest! {
         NumberWriter::new(&f).write(v, &mut out);
         prop_assert_eq!(String::from_utf8(out).unwrap(), reference(v, decimals));
     }
+
+    #[test]
+    fn fast_path_writes_what_the_general_path_writes(
+        n in -10_000_000i64..10_000_000,
+        scale in 0u32..7,
+        decimals in 0u8..7,
+        trim in any::<bool>(),
+        leading_zero in any::<bool>(),
+        point_always in any::<bool>(),
+        sign_always in any::<bool>(),
+        comma in any::<bool>(),
+    ) {
+        // Trimmed formats (CIMCO's default) take the right-to-left writer
+        // too: every flag it reads against the assembling writer.
+        let v = n as f64 / 10f64.powi(scale as i32);
+        let f = NumberFormat {
+            decimals,
+            trim_zeros: trim,
+            leading_zero,
+            point: if point_always { PointStyle::Always } else { PointStyle::default() },
+            sign: if sign_always { SignStyle::Always } else { SignStyle::default() },
+            decimal_mark: if comma { ',' } else { '.' },
+            ..NumberFormat::default()
+        };
+        let w = NumberWriter::new(&f);
+        prop_assert!(w.plain);
+        let (mut fast, mut general) = (Vec::new(), Vec::new());
+        w.write(v, &mut fast);
+        w.write_slow(v, &mut general);
+        prop_assert_eq!(String::from_utf8(fast).unwrap(), String::from_utf8(general).unwrap());
+    }
 }
