@@ -104,9 +104,38 @@ pub fn parse_float(text: &str) -> f64 {
         return sign * f64::INFINITY;
     }
     match decimal_prefix(body) {
-        Some(len) => sign * body[..len].parse::<f64>().unwrap_or(f64::NAN),
+        Some(len) => {
+            sign * short_decimal(&body.as_bytes()[..len]).unwrap_or_else(|| body[..len].parse().unwrap_or(f64::NAN))
+        }
         None => f64::NAN,
     }
+}
+
+/// Exact powers of ten for [`short_decimal`].
+const POW10: [f64; 16] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15];
+
+/// The value of decimal text of at most 15 digits with no exponent
+/// (`123.45`, `.5`, `7.`), the number a post reads back from a word it
+/// formatted: its digits as an integer below 2^53 and a power of ten are
+/// both exact doubles, so one division gives the correctly rounded value,
+/// as the full parse would (Clinger's fast path). `None` for anything else.
+fn short_decimal(b: &[u8]) -> Option<f64> {
+    let (mut m, mut digits, mut fraction, mut point) = (0u64, 0usize, 0usize, false);
+    for &c in b {
+        match c {
+            b'0'..=b'9' => {
+                m = m * 10 + u64::from(c - b'0');
+                digits += 1;
+                fraction += usize::from(point);
+                if digits > 15 {
+                    return None;
+                }
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    (digits > 0).then(|| m as f64 / POW10[fraction])
 }
 
 /// JavaScript's `parseInt(text, radix)`; a radix of 0 means 10, or 16
@@ -215,6 +244,18 @@ pub fn to_fixed(x: f64, digits: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn short_decimals_read_as_the_full_parse_reads_them(n in 0u64..1_000_000_000_000_000, point in 0usize..17) {
+            let digits = n.to_string();
+            let text = if point < digits.len() { format!("{}.{}", &digits[..point], &digits[point..]) } else { format!("{digits}.") };
+            let full: f64 = text.parse().unwrap();
+            prop_assert_eq!(parse_float(&text).to_bits(), full.to_bits(), "{}", text);
+            prop_assert_eq!(parse_float(&format!("-{text}x")).to_bits(), (-full).to_bits());
+        }
+    }
 
     #[test]
     fn numbers_print_as_javascript_prints_them() {
