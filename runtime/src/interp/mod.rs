@@ -230,10 +230,19 @@ impl Engine<'_> {
             let at = self.mark(m, frame);
             self.out.buf.truncate(at);
         }
-        self.emit_pieces(word, frame)?;
+        // The usual word, a local's text, is copied where it is.
+        match word {
+            [Piece::Expr(Expr::Local(i))] if let Some(Value::Text(t)) = frame.get(i.index()) => {
+                self.out.buf.extend_from_slice(t.as_bytes());
+            }
+            _ => self.emit_pieces(word, frame)?,
+        }
         if let WordsBefore::Count(n) = before {
+            if let Some(Value::Num(x)) = frame.get_mut(n.index()) {
+                *x += 1.0;
+                return Ok(());
+            }
             let next = match frame.get(n.index()) {
-                Some(Value::Num(x)) => Value::Num(x + 1.0),
                 Some(v) => binary(BinaryOp::Add, v, &Value::Num(1.0)),
                 None => binary(BinaryOp::Add, &Value::Null, &Value::Num(1.0)),
             };
@@ -358,6 +367,7 @@ impl Engine<'_> {
         // no call: a constant, a local's truth, whether a local is "".
         match e {
             Expr::Bool(b) => Ok(*b),
+            Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
             Expr::LocalEmpty { local, op } if let Some(Value::Text(t)) = frame.get(local.index()) => {
                 Ok(t.is_empty() == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq))
             }
