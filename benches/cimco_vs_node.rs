@@ -9,7 +9,8 @@
 //! lathe post given it would turn every XY arc into chords and every Y
 //! into nothing, which measures no lathe program.
 //!
-//! For each post: postc reading the JSON Lines and posting, postc posting
+//! For each post: postc reading the JSON Lines (on a thread of its own,
+//! as `open_toolpath` reads for `postc post`) and posting, postc posting
 //! events already read, Node.js parsing and posting, Node.js posting events
 //! already parsed; best of three runs each (`POSTC_BENCH_RUNS`), the two
 //! engines measured back to back within each run;
