@@ -364,7 +364,9 @@ impl Engine<'_> {
     #[inline]
     pub(crate) fn test(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
         // The commonest conditions are answered where the caller is, with
-        // no call: a constant, a local's truth, whether a local is "".
+        // no call: a constant, whether text was written since a mark,
+        // whether a local's text is "" (a local that is not text, and
+        // everything else, goes to `test_any`).
         match e {
             Expr::Bool(b) => Ok(*b),
             Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
