@@ -377,22 +377,21 @@ impl Engine<'_> {
         }
     }
 
-    /// [`Self::test`] of any condition.
+    /// [`Self::test`] of the conditions it does not answer itself (a
+    /// constant or a mark's `Written` reach here only through `eval`).
     fn test_any(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
         match e {
-            Expr::Bool(b) => Ok(*b),
             Expr::Binary(BinaryOp::And, a, b) => Ok(self.test(a, frame)? && self.test(b, frame)?),
             Expr::Binary(BinaryOp::Or, a, b) => Ok(self.test(a, frame)? || self.test(b, frame)?),
             Expr::Unary(UnaryOp::Not, a) => Ok(!self.test(a, frame)?),
             Expr::Local(i) => Ok(frame.get(i.index()).is_some_and(Value::truthy)),
-            Expr::Written(k) => Ok(self.out.buf.len() > self.mark(*k, frame)),
-            Expr::LocalEmpty { local, op } => Ok(match frame.get(local.index()) {
-                Some(Value::Text(t)) => t.is_empty() == matches!(op, BinaryOp::JsEq | BinaryOp::StrictEq),
-                other => {
-                    let (v, empty) = (other.unwrap_or(&Value::Null), Value::Text(self.empty_text.clone()));
-                    compare(*op, v, &empty).unwrap_or_else(|| binary(*op, v, &empty).truthy())
-                }
-            }),
+            // A local that is not text (`test` answers text): compared as
+            // JavaScript compares it with "" (`0 == ""`).
+            Expr::LocalEmpty { local, op } => {
+                let (v, empty) =
+                    (frame.get(local.index()).unwrap_or(&Value::Null), Value::Text(self.empty_text.clone()));
+                Ok(compare(*op, v, &empty).unwrap_or_else(|| binary(*op, v, &empty).truthy()))
+            }
             Expr::LocalIsText { local, is } => Ok(matches!(frame.get(local.index()), Some(Value::Text(_))) == *is),
             Expr::Chain { all, operands } => {
                 for operand in operands {
@@ -439,24 +438,25 @@ impl Engine<'_> {
     #[inline]
     pub(crate) fn eval(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         // The commonest values are read where the caller is, with no call:
-        // a local, a global, a constant.
+        // a local, a global, a constant. (`leaf` reads the same ones
+        // borrowed; a value is made here, straight from its slot.)
         match e {
             Expr::Local(i) => Ok(frame.get(i.index()).cloned().unwrap_or_default()),
+            Expr::Global(i) => Ok(self.globals.get(i.index()).cloned().unwrap_or_default()),
             Expr::Number(n) => Ok(Value::Num(*n)),
             Expr::Text(t) => Ok(t.value().clone()),
             Expr::Null => Ok(Value::Null),
-            Expr::Global(i) => Ok(self.globals.get(i.index()).cloned().unwrap_or_default()),
             _ => self.eval_any(e, frame),
         }
     }
 
-    /// [`Self::eval`] of any expression.
+    /// [`Self::eval`] of the expressions it does not read itself.
     fn eval_any(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         Ok(match e {
-            Expr::Number(n) => Value::Num(*n),
-            Expr::Text(t) => t.value().clone(),
+            Expr::Null | Expr::Number(_) | Expr::Text(_) | Expr::Local(_) | Expr::Global(_) => {
+                return self.eval(e, frame);
+            }
             Expr::Bool(b) => Value::Bool(*b),
-            Expr::Null => Value::Null,
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::LocalEmpty { .. } | Expr::LocalIsText { .. } => Value::Bool(self.test(e, frame)?),
             // The value of `a && b && c` is the first operand that decides,
@@ -481,8 +481,6 @@ impl Engine<'_> {
                 Value::Num(n)
             }
             Expr::Quantity(q) => self.quantity(*q),
-            Expr::Local(i) => frame.get(i.index()).cloned().unwrap_or_default(),
-            Expr::Global(i) => self.globals.get(i.index()).cloned().unwrap_or_default(),
             Expr::Var(id) => self.var_value(*id),
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
             Expr::FormatVar { var, value } => {
