@@ -111,9 +111,6 @@ pub fn parse_float(text: &str) -> f64 {
     }
 }
 
-/// Exact powers of ten for [`short_decimal`].
-const POW10: [f64; 16] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15];
-
 /// The value of decimal text of at most 15 digits with no exponent
 /// (`123.45`, `.5`, `7.`), the number a post reads back from a word it
 /// formatted: its digits as an integer below 2^53 and a power of ten are
@@ -135,7 +132,7 @@ fn short_decimal(b: &[u8]) -> Option<f64> {
             _ => return None,
         }
     }
-    (digits > 0).then(|| m as f64 / POW10[fraction])
+    (digits > 0).then(|| m as f64 / crate::number::POW10[fraction])
 }
 
 /// JavaScript's `parseInt(text, radix)`; a radix of 0 means 10, or 16
