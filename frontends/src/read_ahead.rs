@@ -49,28 +49,27 @@ impl ReadAhead {
     pub fn start<S: EventSource + Send + 'static>(source: S) -> Box<dyn EventSource> {
         let (filled_tx, filled) = sync_channel::<Vec<Item>>(IN_FLIGHT);
         let (emptied, emptied_rx) = sync_channel::<Vec<Item>>(IN_FLIGHT + 2);
-        // The source goes to the thread through a slot, so that it comes
-        // back when the thread cannot be started.
-        let slot = std::sync::Arc::new(std::sync::Mutex::new(Some(source)));
-        let theirs = slot.clone();
+        // The source goes to the thread once it runs, so that it is still
+        // here when the thread cannot be started.
+        let (give, take) = sync_channel::<S>(1);
         let spawned = std::thread::Builder::new().name("postc-read".into()).spawn(move || {
-            let source = theirs.lock().ok().and_then(|mut s| s.take());
-            if let Some(source) = source {
+            if let Ok(source) = take.recv() {
                 read(source, &filled_tx, &emptied_rx);
             }
         });
         match spawned {
-            Ok(reader) => Box::new(ReadAhead {
-                filled: Some(filled),
-                emptied,
-                current: Vec::new(),
-                reader: Some(reader),
-                ended: false,
-            }),
-            Err(_) => match slot.lock().ok().and_then(|mut s| s.take()) {
-                Some(source) => Box::new(source),
-                None => Box::new(postc_ir::event::VecSource::new(Vec::new(), postc_ir::FileId(0))),
+            Ok(reader) => match give.send(source) {
+                Ok(()) => Box::new(ReadAhead {
+                    filled: Some(filled),
+                    emptied,
+                    current: Vec::new(),
+                    reader: Some(reader),
+                    ended: false,
+                }),
+                // The thread is gone before it took the source: read in line.
+                Err(returned) => Box::new(returned.0),
             },
+            Err(_) => Box::new(source),
         }
     }
 
