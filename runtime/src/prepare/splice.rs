@@ -7,8 +7,9 @@
 //!
 //! A function is spliced when it is small and its statements are
 //! assignments, `if`s, `return`s and evaluations only: no loop, no output
-//! of its own (the calls it makes stay calls). Its body runs inside a loop that runs once, each `return v`
-//! becoming `x = v; break`, so that it leaves where the function would:
+//! of its own (the calls it makes stay calls). Its body runs inside a
+//! loop that runs once, each `return v` becoming `x = v; break`, so that
+//! it leaves where the function would:
 //!
 //! ```text
 //! a0 = "G1"; a1 = null                 // arguments, then the other locals
