@@ -620,11 +620,15 @@ impl Engine<'_> {
         self.set_var(id, v);
     }
 
-    /// The number an expression is when it names a numeric quantity the
-    /// machine has a value for (no value made to read it).
+    /// The number an expression is when it is a constant or names a
+    /// numeric quantity the machine has a value for, alone or under a
+    /// unary `+` (a handler's `vx` coerced to a number): no value made to
+    /// read it.
     #[inline]
     fn known_number(&self, e: &Expr) -> Option<f64> {
         match e {
+            Expr::Number(n) => Some(*n),
+            Expr::Unary(UnaryOp::Plus, q) if let Expr::Quantity(_) = &**q => self.known_number(q),
             Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
                 Some(self.machine.number(*q)).filter(|n| !n.is_nan())
             }
