@@ -111,6 +111,18 @@ pub fn parse_float(text: &str) -> f64 {
     }
 }
 
+/// `parseFloat` of text that is all one short decimal (`-12.5`, `1000.`):
+/// a sign, then what [`short_decimal`] reads, and nothing else. `None` for
+/// any other text, which [`parse_float`] reads.
+pub(crate) fn parse_short_decimal(b: &[u8]) -> Option<f64> {
+    let (sign, body) = match b.first() {
+        Some(b'-') => (-1.0, &b[1..]),
+        Some(b'+') => (1.0, &b[1..]),
+        _ => (1.0, b),
+    };
+    short_decimal(body).map(|n| sign * n)
+}
+
 /// The value of decimal text of at most 15 digits with no exponent
 /// (`123.45`, `.5`, `7.`), the number a post reads back from a word it
 /// formatted: its digits as an integer below 2^53 and a power of ten are
@@ -251,6 +263,10 @@ mod tests {
             let full: f64 = text.parse().unwrap();
             prop_assert_eq!(parse_float(&text).to_bits(), full.to_bits(), "{}", text);
             prop_assert_eq!(parse_float(&format!("-{text}x")).to_bits(), (-full).to_bits());
+            for signed in [text.clone(), format!("-{text}"), format!("+{text}")] {
+                let short = parse_short_decimal(signed.as_bytes());
+                prop_assert_eq!(short.map(f64::to_bits), Some(parse_float(&signed).to_bits()), "{}", signed);
+            }
         }
     }
 

@@ -881,6 +881,14 @@ fn texts_empty(e: &Expr, frame: &[Value], globals: &[Value]) -> Option<bool> {
 /// `parseFloat(text.substring(from))` of the bytes of a text (replacing
 /// what is not UTF-8, as a text value does).
 fn parse_float_from(bytes: &[u8], from: usize) -> f64 {
+    // The usual text, a word the post formatted (`F1000.` from 1): its
+    // characters before `from` are bytes, and the rest one short decimal.
+    if let Some((head, rest)) = bytes.split_at_checked(from)
+        && head.is_ascii()
+        && let Some(n) = crate::js::parse_short_decimal(rest)
+    {
+        return n;
+    }
     let text = String::from_utf8_lossy(bytes);
     let rest = if text.is_ascii() {
         &text[from.min(text.len())..]
