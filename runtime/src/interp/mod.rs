@@ -395,7 +395,15 @@ impl Engine<'_> {
             Expr::LocalIsText { local, is } => Ok(matches!(frame.get(local.index()), Some(Value::Text(_))) == *is),
             Expr::Chain { all, operands } => {
                 for operand in operands {
-                    if self.test(operand, frame)? != *all {
+                    // `typeof w == "string"` of every word (the guard of a
+                    // spliced `writeBlock`) is answered here, with no call.
+                    let holds = match operand {
+                        Expr::LocalIsText { local, is } => {
+                            matches!(frame.get(local.index()), Some(Value::Text(_))) == *is
+                        }
+                        _ => self.test(operand, frame)?,
+                    };
+                    if holds != *all {
                         return Ok(!*all);
                     }
                 }
