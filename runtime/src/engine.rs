@@ -370,7 +370,7 @@ impl<'p> Engine<'p> {
 
     pub(crate) fn write_value_text(&mut self, v: &Value) {
         match v {
-            Value::Text(s) => self.out.buf.extend_from_slice(s.as_bytes()),
+            Value::Text(s) => s.append_to_bytes(&mut self.out.buf),
             other => {
                 let mut s = String::new();
                 other.append_to(&mut s);

@@ -77,6 +77,21 @@ impl Text {
         }
     }
 
+    /// Appends the text's bytes to `out`. Text kept in place is copied
+    /// whole (a fixed-size copy, no `memcpy` call) and the tail cut off:
+    /// the words of a block are appended this way.
+    #[inline(always)]
+    pub fn append_to_bytes(&self, out: &mut Vec<u8>) {
+        match &self.0 {
+            Repr::Inline(len, bytes) => {
+                let end = out.len() + *len as usize;
+                out.extend_from_slice(bytes);
+                out.truncate(end);
+            }
+            Repr::Shared(s) => out.extend_from_slice(s.as_bytes()),
+        }
+    }
+
     pub fn as_str(&self) -> &str {
         match &self.0 {
             // ASCII: always UTF-8.
@@ -238,6 +253,11 @@ mod tests {
         assert_eq!(short.as_str(), "X12.3456");
         let long = Text::new("a text longer than twenty-two bytes");
         assert!(matches!(long.0, Repr::Shared(_)));
+        let mut out = b"N1 ".to_vec();
+        short.append_to_bytes(&mut out);
+        long.append_to_bytes(&mut out);
+        Text::new("").append_to_bytes(&mut out);
+        assert_eq!(out, b"N1 X12.3456a text longer than twenty-two bytes");
         let accented = Text::new("été");
         assert!(matches!(accented.0, Repr::Shared(_)));
         assert_eq!(Text::new(""), Text::from(String::new()));

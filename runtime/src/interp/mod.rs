@@ -233,7 +233,7 @@ impl Engine<'_> {
         // The usual word, a local's text, is copied where it is.
         match word {
             [Piece::Expr(Expr::Local(i))] if let Some(Value::Text(t)) = frame.get(i.index()) => {
-                self.out.buf.extend_from_slice(t.as_bytes());
+                t.append_to_bytes(&mut self.out.buf);
             }
             _ => self.emit_pieces(word, frame)?,
         }
@@ -791,7 +791,7 @@ impl Engine<'_> {
                 }
                 Piece::Expr(Expr::Local(i)) if matches!(frame.get(i.index()), Some(Value::Text(_))) => {
                     if let Some(Value::Text(t)) = frame.get(i.index()) {
-                        self.out.buf.extend_from_slice(t.as_bytes());
+                        t.append_to_bytes(&mut self.out.buf);
                     }
                 }
                 // `text.substring(k)` of ASCII text in a local (a field
