@@ -225,7 +225,7 @@ impl Engine<'_> {
             return Err(Box::new(self.budget_error(None)));
         }
         if after_first {
-            self.out.buf.extend_from_slice(sep);
+            push_short(&mut self.out.buf, sep);
         } else if let WordsBefore::Written(m) = before {
             let at = self.mark(m, frame);
             self.out.buf.truncate(at);
@@ -257,7 +257,7 @@ impl Engine<'_> {
     fn write_line_in(&mut self, pieces: &[Piece], frame: &mut Vec<Value>) -> Result<()> {
         for piece in pieces {
             match piece {
-                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                Piece::Text(bytes) => push_short(&mut self.out.buf, bytes),
                 Piece::Var(id) => self.write_var(*id),
                 Piece::Expr(Expr::FormatVar { var, value }) => {
                     let v = self.eval(value, frame)?;
@@ -759,7 +759,7 @@ impl Engine<'_> {
     fn emit_pieces(&mut self, pieces: &[Piece], frame: &mut Vec<Value>) -> Result<()> {
         for piece in pieces {
             match piece {
-                Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
+                Piece::Text(bytes) => push_short(&mut self.out.buf, bytes),
                 Piece::Var(id) => self.write_var(*id),
                 Piece::Expr(Expr::FormatVar { var, value }) => {
                     let n = match &**value {
@@ -883,6 +883,18 @@ fn texts_empty(e: &Expr, frame: &[Value], globals: &[Value]) -> Option<bool> {
             _ => None,
         },
         _ => None,
+    }
+}
+
+/// Appends constant bytes that are most often one or two (a word's
+/// separator, a line's end, `N` before a block number) with no `memcpy`
+/// call.
+#[inline(always)]
+fn push_short(out: &mut Vec<u8>, bytes: &[u8]) {
+    match *bytes {
+        [b] => out.push(b),
+        [a, b] => out.extend_from_slice(&[a, b]),
+        _ => out.extend_from_slice(bytes),
     }
 }
 
