@@ -104,6 +104,19 @@ pub(crate) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
 #[inline]
 pub(super) fn compare(op: BinaryOp, a: &Value, b: &Value) -> Option<bool> {
     use BinaryOp::*;
+    // Two numbers (a count against 0, a coordinate against a limit): every
+    // dialect's comparison is the IEEE one, NaN unequal and unordered.
+    if let (Value::Num(x), Value::Num(y)) = (a, b) {
+        return match op {
+            Eq | JsEq | StrictEq => Some(x == y),
+            Ne | JsNe | StrictNe => Some(x != y),
+            Lt | JsLt => Some(x < y),
+            Le | JsLe => Some(x <= y),
+            Gt | JsGt => Some(x > y),
+            Ge | JsGe => Some(x >= y),
+            _ => None,
+        };
+    }
     Some(match op {
         JsEq => js_loose_eq(a, b),
         JsNe => !js_loose_eq(a, b),
@@ -324,5 +337,22 @@ mod tests {
         assert_eq!(builtin(Builtin::Val, &[t(" 12.5mm")]), Value::Num(12.5));
         assert_eq!(binary(BinaryOp::Concat, &Value::Num(3.0), &t("x")), t("3x"));
         assert_eq!(binary(BinaryOp::Add, &Value::Num(3.0), &Value::Num(0.5)), Value::Num(3.5));
+    }
+
+    /// `compare`'s path for two numbers answers what `binary` answers, for
+    /// every comparison, NaN, signed zeros and infinities included.
+    #[test]
+    fn numbers_compare_as_binary_compares_them() {
+        use BinaryOp::*;
+        let numbers = [f64::NAN, f64::NEG_INFINITY, -1.5, -0.0, 0.0, 1.0, 1.5, f64::INFINITY];
+        for op in [Eq, Ne, Lt, Le, Gt, Ge, JsEq, JsNe, JsLt, JsLe, JsGt, JsGe, StrictEq, StrictNe] {
+            for x in numbers {
+                for y in numbers {
+                    let (a, b) = (Value::Num(x), Value::Num(y));
+                    let Value::Bool(full) = binary(op, &a, &b) else { panic!("{op:?} gives no truth value") };
+                    assert_eq!(compare(op, &a, &b), Some(full), "{x} {op:?} {y}");
+                }
+            }
+        }
     }
 }
