@@ -205,7 +205,12 @@ impl Engine<'_> {
         before: WordsBefore,
         frame: &mut Vec<Value>,
     ) -> Result<()> {
-        if !self.test(cond, frame)? {
+        // A word printed when it is not empty: `if (w)` or `if (w != "")`.
+        let printed = match cond {
+            Expr::Local(i) => frame.get(i.index()).is_some_and(Value::truthy),
+            _ => self.test(cond, frame)?,
+        };
+        if !printed {
             return Ok(());
         }
         let after_first = match before {
