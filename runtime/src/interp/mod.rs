@@ -484,6 +484,13 @@ impl Engine<'_> {
                 }
                 self.eval(last, frame)?
             }
+            // Most often the text is a local's (a word formatted before).
+            Expr::ParseFloatFrom { value, from }
+                if let Expr::Local(i) = &**value
+                    && let Some(Value::Text(t)) = frame.get(i.index()) =>
+            {
+                Value::Num(parse_float_from(t.as_bytes(), *from))
+            }
             Expr::ParseFloatFrom { value, from } => {
                 let mut buf = std::mem::take(&mut self.float_text);
                 buf.clear();

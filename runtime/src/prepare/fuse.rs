@@ -49,7 +49,7 @@ pub(super) fn stmts(body: &mut [Stmt]) {
 }
 
 /// Every `local == ""`, `typeof local === "string"`,
-/// `parseFloat(text.substring(k))` and chain of `&&` or `||` in the
+/// `parseFloat(text.substring(k))` (with or without a `+` before it) and chain of `&&` or `||` in the
 /// statements, at any depth, as the one expression that does it
 /// ([`Expr::LocalEmpty`], [`Expr::LocalIsText`], [`Expr::ParseFloatFrom`],
 /// [`Expr::Chain`]).
@@ -84,6 +84,13 @@ fn expression(e: &mut Expr) {
         let from = *k as usize;
         let value = cut.swap_remove(0);
         *e = Expr::ParseFloatFrom { value: Box::new(value), from };
+        return;
+    }
+    // +parseFloat(...) is the number parseFloat gives
+    if let Expr::Unary(UnaryOp::Plus, inner) = e
+        && matches!(**inner, Expr::ParseFloatFrom { .. })
+    {
+        *e = std::mem::replace(&mut **inner, Expr::Null);
         return;
     }
     let Expr::Binary(op @ (BinaryOp::JsEq | BinaryOp::JsNe | BinaryOp::StrictEq | BinaryOp::StrictNe), a, b) = e else {
@@ -239,6 +246,10 @@ mod tests {
         expressions(&mut body);
         assert_eq!(body[0], Stmt::Eval(Expr::ParseFloatFrom { value: Box::new(local(0)), from: 1 }));
         assert_eq!(body[1..], [Stmt::Eval(cut(1.5)), Stmt::Eval(cut(-1.0))]);
+        // `+parseFloat(...)`: parseFloat gives a number, the `+` goes.
+        let mut body = vec![Stmt::Eval(Expr::Unary(UnaryOp::Plus, Box::new(cut(1.0))))];
+        expressions(&mut body);
+        assert_eq!(body[0], Stmt::Eval(Expr::ParseFloatFrom { value: Box::new(local(0)), from: 1 }));
     }
 
     #[test]
