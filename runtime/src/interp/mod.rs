@@ -66,13 +66,18 @@ const TEXT_STEP_BYTES: usize = 256;
 impl Engine<'_> {
     /// Runs statements with a frame of locals.
     pub(crate) fn exec(&mut self, stmts: &[Stmt], frame: &mut Vec<Value>) -> Result<Flow> {
-        let budget = self.post.options.step_budget;
+        // Every statement costs one step. The steps of a block are counted
+        // when it is entered, and those of the statements a jump skips are
+        // given back when it leaves: a block run to its end costs what it
+        // did counted statement by statement, checked once a block (a
+        // runaway is stopped a block's length sooner at most).
+        self.steps += stmts.len() as u64;
+        if self.steps > self.post.options.step_budget {
+            return Err(Box::new(self.budget_error(None)));
+        }
         let tracing = self.trace.is_some();
-        for stmt in stmts {
-            self.steps += 1;
-            if self.steps > budget {
-                return Err(Box::new(self.budget_error(None)));
-            }
+        let mut rest = stmts.iter();
+        while let Some(stmt) = rest.next() {
             match stmt {
                 Stmt::Assign(Place::Local(i), e) => {
                     let v = self.eval(e, frame)?;
@@ -102,7 +107,7 @@ impl Engine<'_> {
                     if !body.is_empty() {
                         match self.exec(body, frame)? {
                             Flow::Normal => {}
-                            flow => return Ok(flow),
+                            flow => return Ok(self.leave(flow, rest.len())),
                         }
                     }
                 }
@@ -116,12 +121,12 @@ impl Engine<'_> {
                     }
                     match self.exec(body, frame).map_err(|e| Self::in_loop(e, *span))? {
                         Flow::Break => break,
-                        Flow::Return(v) => return Ok(Flow::Return(v)),
+                        Flow::Return(v) => return Ok(self.leave(Flow::Return(v), rest.len())),
                         Flow::Normal | Flow::Continue => {}
                     }
                 },
-                Stmt::Break => return Ok(Flow::Break),
-                Stmt::Continue => return Ok(Flow::Continue),
+                Stmt::Break => return Ok(self.leave(Flow::Break, rest.len())),
+                Stmt::Continue => return Ok(self.leave(Flow::Continue, rest.len())),
                 Stmt::Emit(pieces) => self.emit_pieces(pieces, frame)?,
                 Stmt::Mark(k) => {
                     let at = Value::Num(self.out.buf.len() as f64);
@@ -150,7 +155,7 @@ impl Engine<'_> {
                         Some(e) => self.eval(e, frame)?,
                         None => Value::Null,
                     };
-                    return Ok(Flow::Return(v));
+                    return Ok(self.leave(Flow::Return(v), rest.len()));
                 }
                 Stmt::MoveBack { to, from } => {
                     let (to, from) = (self.mark(*to, frame), self.mark(*from, frame));
@@ -193,6 +198,14 @@ impl Engine<'_> {
             }
         }
         Ok(Flow::Normal)
+    }
+
+    /// A block left by a jump: the steps of the `skipped` statements after
+    /// it, counted when the block was entered, are given back.
+    #[inline(always)]
+    fn leave(&mut self, flow: Flow, skipped: usize) -> Flow {
+        self.steps = self.steps.saturating_sub(skipped as u64);
+        flow
     }
 
     /// One word of a block built in the output ([`Stmt::Word`]): the
