@@ -80,7 +80,12 @@ impl Engine<'_> {
         while let Some(stmt) = rest.next() {
             match stmt {
                 Stmt::Assign(Place::Local(i), e) => {
-                    let v = self.eval(e, frame)?;
+                    // `x = xOutput.format(vx)`, a handler's commonest line,
+                    // costs no pass through `eval`.
+                    let v = match e {
+                        Expr::FormatVar { var, value } => self.format_var_call(*var, value, frame)?,
+                        _ => self.eval(e, frame)?,
+                    };
                     match frame.get_mut(i.index()) {
                         Some(slot) => *slot = v,
                         None => self.assign(Place::Local(*i), v, frame),
@@ -516,14 +521,7 @@ impl Engine<'_> {
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Var(id) => self.var_value(*id),
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
-            Expr::FormatVar { var, value } => {
-                // A number the machine knows needs no value made first.
-                if let Some(n) = self.known_number(value) {
-                    return Ok(self.format_number_through_var(*var, n));
-                }
-                let v = self.eval(value, frame)?;
-                self.format_through_var(*var, v)
-            }
+            Expr::FormatVar { var, value } => self.format_var(*var, value, frame)?,
             Expr::Format { format, value } => {
                 let n = self.eval(value, frame)?.num();
                 let mut buf = Vec::new();
@@ -651,6 +649,25 @@ impl Engine<'_> {
             other => put_number(is_modal(var), &self.writers[var.format.index()], state, prefix, other.num(), buf),
         }
         self.set_var(id, v);
+    }
+
+    /// [`Self::format_var`] as a call of its own: exec's local store calls
+    /// it, and stays small.
+    #[inline(never)]
+    fn format_var_call(&mut self, var: VarId, value: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
+        self.format_var(var, value, frame)
+    }
+
+    /// The text of a value formatted through a variable
+    /// ([`Expr::FormatVar`]).
+    #[inline(always)]
+    fn format_var(&mut self, var: VarId, value: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
+        // A number the machine knows needs no value made first.
+        if let Some(n) = self.known_number(value) {
+            return Ok(self.format_number_through_var(var, n));
+        }
+        let v = self.eval(value, frame)?;
+        Ok(self.format_through_var(var, v))
     }
 
     /// The number an expression is when it is a constant or names a
