@@ -408,6 +408,8 @@ impl Engine<'_> {
             Expr::Binary(BinaryOp::Or, a, b) => Ok(self.test(a, frame)? || self.test(b, frame)?),
             Expr::Unary(UnaryOp::Not, a) => Ok(!self.test(a, frame)?),
             Expr::Local(i) => Ok(frame.get(i.index()).is_some_and(Value::truthy)),
+            // A number the machine knows (`isFeedPerRev ? a : b`).
+            Expr::Quantity(_) if let Some(n) = self.known_number(e) => Ok(n != 0.0),
             // A local that is not text (`test` answers text): compared as
             // JavaScript compares it with "" (`0 == ""`).
             Expr::LocalEmpty { local, op } => {
@@ -579,7 +581,7 @@ impl Engine<'_> {
                 v
             }
             Expr::Choose(c, a, b) => {
-                if self.eval(c, frame)?.truthy() {
+                if self.test(c, frame)? {
                     self.eval(a, frame)?
                 } else {
                     self.eval(b, frame)?
@@ -699,7 +701,7 @@ impl Engine<'_> {
                 self.format_into(*var, v, buf);
             }
             Expr::Choose(c, a, b) => {
-                let pick = if self.eval(c, frame)?.truthy() { a } else { b };
+                let pick = if self.test(c, frame)? { a } else { b };
                 self.text_into(pick, frame, buf)?;
             }
             other => buf.extend_from_slice(self.eval(other, frame)?.to_text().as_bytes()),
