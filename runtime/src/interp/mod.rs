@@ -711,6 +711,7 @@ impl Engine<'_> {
 
     /// The text formatted into `buf` (the engine's scratch buffer, given
     /// back): the shared empty text, or the bytes as a value.
+    #[inline]
     fn scratch_text(&mut self, buf: Vec<u8>) -> Value {
         let text =
             if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
@@ -719,6 +720,7 @@ impl Engine<'_> {
     }
 
     /// [`Self::format_through_var`] of a number.
+    #[inline]
     fn format_number_through_var(&mut self, id: VarId, n: f64) -> Value {
         let mut buf = std::mem::take(&mut self.scratch);
         buf.clear();
