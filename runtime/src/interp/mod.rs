@@ -676,16 +676,18 @@ impl Engine<'_> {
     /// numeric quantity the machine has a value for, alone or under a
     /// unary `+` (a handler's `vx` coerced to a number): no value made to
     /// read it.
-    #[inline]
+    #[inline(always)]
     fn known_number(&self, e: &Expr) -> Option<f64> {
-        match e {
-            Expr::Number(n) => Some(*n),
-            Expr::Unary(UnaryOp::Plus, q) if let Expr::Quantity(_) = &**q => self.known_number(q),
-            Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
-                Some(self.machine.number(*q)).filter(|n| !n.is_nan())
-            }
-            _ => None,
+        let q = match e {
+            Expr::Number(n) => return Some(*n),
+            Expr::Unary(UnaryOp::Plus, q) if let Expr::Quantity(q) = &**q => *q,
+            Expr::Quantity(q) => *q,
+            _ => return None,
+        };
+        if q.is_text() || q == Quantity::BlockNumber {
+            return None;
         }
+        Some(self.machine.number(q)).filter(|n| !n.is_nan())
     }
 
     /// Appends the text of an expression to `buf`: a formatted variable is
@@ -729,6 +731,7 @@ impl Engine<'_> {
     }
 
     /// [`Self::format_into`] of a number.
+    #[inline]
     fn format_number_into(&mut self, id: VarId, n: f64, buf: &mut Vec<u8>) {
         let post = self.post;
         let var = &post.variables[id.index()];
