@@ -51,6 +51,17 @@ impl Text {
         }
     }
 
+    /// The text of the first `len` bytes of `padded`: the whole array is
+    /// kept when they are ASCII (what follows them is never read).
+    #[inline]
+    pub fn from_padded(padded: &[u8; INLINE_TEXT], len: usize) -> Text {
+        match padded.get(..len) {
+            Some(b) if b.is_ascii() => Text(Repr::Inline(len as u8, *padded)),
+            Some(b) => Text::from_bytes(b),
+            None => Text::from_bytes(padded),
+        }
+    }
+
     fn inline(b: &[u8]) -> Option<Text> {
         if b.len() > INLINE_TEXT || !b.is_ascii() {
             return None;
@@ -258,6 +269,12 @@ mod tests {
         long.append_to_bytes(&mut out);
         Text::new("").append_to_bytes(&mut out);
         assert_eq!(out, b"N1 X12.3456a text longer than twenty-two bytes");
+        let mut padded = [0; INLINE_TEXT];
+        padded[..3].copy_from_slice(b"G01");
+        assert_eq!(Text::from_padded(&padded, 2), Text::new("G0"));
+        assert_eq!(Text::from_padded(&padded, 2).as_bytes(), b"G0");
+        padded[..2].copy_from_slice("é".as_bytes());
+        assert_eq!(Text::from_padded(&padded, 2).as_str(), "é");
         let accented = Text::new("été");
         assert!(matches!(accented.0, Repr::Shared(_)));
         assert_eq!(Text::new(""), Text::from(String::new()));

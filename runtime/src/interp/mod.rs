@@ -16,7 +16,7 @@ use ops::{binary, builtin, compare, push_integer, unary};
 use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
 
 use crate::engine::{Engine, is_modal, put_number, put_text};
-use crate::value::{Text, Value};
+use crate::value::{INLINE_TEXT, Text, Value};
 
 /// How a block of statements ended.
 pub(crate) enum Flow {
@@ -714,11 +714,23 @@ impl Engine<'_> {
     /// The text formatted into `buf` (the engine's scratch buffer, given
     /// back): the shared empty text, or the bytes as a value.
     #[inline]
-    fn scratch_text(&mut self, buf: Vec<u8>) -> Value {
-        let text =
-            if buf.is_empty() { Value::Text(self.empty_text.clone()) } else { Value::Text(Text::from_bytes(&buf)) };
+    fn scratch_text(&mut self, mut buf: Vec<u8>) -> Value {
+        let len = buf.len();
+        let text = if len == 0 {
+            self.empty_text.clone()
+        } else if len <= INLINE_TEXT {
+            // A word: zeros after it, so that it is taken as a whole array
+            // (fixed-size copies, no `memcpy` call).
+            buf.extend_from_slice(&[0; INLINE_TEXT]);
+            match buf.first_chunk::<INLINE_TEXT>() {
+                Some(padded) => Text::from_padded(padded, len),
+                None => Text::from_bytes(&buf[..len]),
+            }
+        } else {
+            Text::from_bytes(&buf)
+        };
         self.scratch = buf;
-        text
+        Value::Text(text)
     }
 
     /// [`Self::format_through_var`] of a number.
