@@ -580,13 +580,11 @@ impl Engine<'_> {
                 self.check_text(&v)?;
                 v
             }
-            Expr::Choose(c, a, b) => {
-                if self.test(c, frame)? {
-                    self.eval(a, frame)?
-                } else {
-                    self.eval(b, frame)?
-                }
-            }
+            Expr::Choose(c, a, b) => match if self.test(c, frame)? { &**a } else { &**b } {
+                // `getFeedrate`'s choice of two formats: formatted here.
+                Expr::FormatVar { var, value } => self.format_var(*var, value, frame)?,
+                pick => self.eval(pick, frame)?,
+            },
             Expr::Call(f, args) => {
                 let mut values = self.spare_frames.pop().unwrap_or_default();
                 for a in args {
