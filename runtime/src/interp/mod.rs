@@ -91,10 +91,7 @@ impl Engine<'_> {
                         None => self.assign(Place::Local(*i), v, frame),
                     }
                 }
-                Stmt::Assign(place, e) => {
-                    let v = self.eval(e, frame)?;
-                    self.assign(*place, v, frame);
-                }
+                Stmt::Assign(place, e) => self.assign_to(*place, e, frame)?,
                 Stmt::Eval(e) => {
                     self.eval(e, frame)?;
                 }
@@ -203,6 +200,24 @@ impl Engine<'_> {
             }
         }
         Ok(Flow::Normal)
+    }
+
+    /// A store to a global or a variable ([`Stmt::Assign`]; a local's is
+    /// done in `exec`). A count kept in a global (`sequenceNumber +=
+    /// increment`, in every field post) is bumped where it is.
+    #[inline(never)]
+    fn assign_to(&mut self, place: Place, e: &Expr, frame: &mut Vec<Value>) -> Result<()> {
+        if let (Place::Global(g), Expr::Binary(BinaryOp::Add, a, b)) = (place, e)
+            && let (Expr::Global(h), Expr::Number(step)) = (&**a, &**b)
+            && *h == g
+            && let Some(Value::Num(n)) = self.globals.get_mut(g.index())
+        {
+            *n += step;
+            return Ok(());
+        }
+        let v = self.eval(e, frame)?;
+        self.assign(place, v, frame);
+        Ok(())
     }
 
     /// A block left by a jump: the steps of the `skipped` statements after
