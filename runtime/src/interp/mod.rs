@@ -70,7 +70,8 @@ impl Engine<'_> {
         // when it is entered, and those of the statements a jump skips are
         // given back when it leaves: a block run to its end costs what it
         // did counted statement by statement, checked once a block (a
-        // runaway is stopped a block's length sooner at most).
+        // runaway is stopped sooner by at most the statements not yet run
+        // in the blocks around it).
         self.steps += stmts.len() as u64;
         if self.steps > self.post.options.step_budget {
             return Err(Box::new(self.budget_error(None)));
