@@ -52,7 +52,9 @@ impl Text {
     }
 
     /// The text of the first `len` bytes of `padded`: the whole array is
-    /// kept when they are ASCII (what follows them is never read).
+    /// kept when they are ASCII (what follows them is never read). Its
+    /// one caller gives `len <= INLINE_TEXT`; past it, the whole array is
+    /// taken.
     #[inline]
     pub fn from_padded(padded: &[u8; INLINE_TEXT], len: usize) -> Text {
         match padded.get(..len) {

@@ -929,7 +929,6 @@ impl Engine<'_> {
     }
 }
 
-/// A local, a global or a number: read in place by [`leaf`].
 /// The quantity of `+q`, a number the runtime knows read as a JavaScript
 /// number.
 fn plus_quantity(e: &Expr) -> Option<Quantity> {
@@ -993,6 +992,7 @@ fn parse_float_from(bytes: &[u8], from: usize) -> f64 {
     crate::js::parse_float(rest)
 }
 
+/// A local, a global or a number: read in place by [`leaf`].
 fn is_leaf(e: &Expr) -> bool {
     matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_) | Expr::Text(_))
 }

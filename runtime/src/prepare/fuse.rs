@@ -49,8 +49,9 @@ pub(super) fn stmts(body: &mut [Stmt]) {
 }
 
 /// Every `local == ""`, `typeof local === "string"`,
-/// `parseFloat(text.substring(k))` (with or without a `+` before it) and chain of `&&` or `||` in the
-/// statements, at any depth, as the one expression that does it
+/// `parseFloat(text.substring(k))` (with or without a `+` before it) and
+/// chain of `&&` or `||` in the statements, at any depth, as the one
+/// expression that does it
 /// ([`Expr::LocalEmpty`], [`Expr::LocalIsText`], [`Expr::ParseFloatFrom`],
 /// [`Expr::Chain`]).
 pub(super) fn expressions(body: &mut [Stmt]) {
