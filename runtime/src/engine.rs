@@ -70,8 +70,10 @@ pub struct Engine<'p> {
     pub event_span: Span,
     /// The run's script host ([`crate::script_host`]), if the post has scripts.
     pub(crate) script_host: Option<Box<dyn crate::script_host::ScriptHost>>,
-    /// A frame reused by handler bodies, so that their locals cost no
-    /// allocation per event.
+    /// A frame reused by handler bodies, sized once for all of them and
+    /// never cleared, so that their locals cost nothing per event (a
+    /// handler starts as `null` the locals it needs so, see
+    /// [`Code::handler_slots`]).
     handler_frame: Vec<Value>,
     /// Emptied argument lists and function frames, kept with their
     /// capacity: a call or built-in takes one and gives it back, so that
@@ -130,7 +132,7 @@ impl<'p> Engine<'p> {
             depth: 0,
             event_span: Span::default(),
             script_host: None,
-            handler_frame: Vec::new(),
+            handler_frame: vec![Value::Null; code.handler_slots],
             spare_frames: Vec::new(),
             chain_text: String::new(),
             modal_epoch: 0,
@@ -283,9 +285,8 @@ impl<'p> Engine<'p> {
                 }
                 Prepared::Stmt(stmt) => {
                     self.steps = 0;
-                    // One frame, kept between events: no allocation per event.
+                    // One frame, kept between events as they leave it.
                     let mut frame = std::mem::take(&mut self.handler_frame);
-                    frame.clear();
                     let result = self.exec(std::slice::from_ref(*stmt), &mut frame);
                     self.handler_frame = frame;
                     result?;

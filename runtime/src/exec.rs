@@ -354,6 +354,10 @@ pub enum Body {
 pub struct Code {
     pub functions: Vec<Function>,
     pub handlers: Vec<Vec<Stmt>>,
+    /// The slots of the frame the handlers share: the most any uses. A
+    /// handler starts as `null` the locals it may read before writing
+    /// them, and finds the others as the last event left them.
+    pub handler_slots: usize,
     pub init: Vec<Stmt>,
     pub globals: Vec<Expr>,
 }

@@ -17,7 +17,10 @@
 //!    ([`fuse`]);
 //! 6. copies and constants in locals are read through and stores nobody
 //!    reads are dropped ([`locals`]), in handlers and functions;
-//! 7. a handler whose statements share locals runs as one statement, so
+//! 7. a handler starts its locals as `null` only where some path may read
+//!    one before writing it ([`fresh`]): the engine keeps the frame from
+//!    event to event;
+//! 8. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -25,12 +28,13 @@
 
 mod emit;
 mod fold;
+mod fresh;
 mod fuse;
 mod inline;
 mod locals;
 mod splice;
 
-use postc_ir::{Place, Post};
+use postc_ir::Post;
 
 use crate::exec::{self, Code, Expr, Stmt};
 
@@ -42,7 +46,8 @@ pub fn prepare(post: &Post) -> Code {
             *body = fold::stmts(std::mem::take(body));
         }
     }
-    let handlers = post.handlers.iter().map(|h| handler(&functions, exec::stmts(&h.body))).collect();
+    let handlers: Vec<Vec<Stmt>> = post.handlers.iter().map(|h| handler(&functions, exec::stmts(&h.body))).collect();
+    let handler_slots = handlers.iter().filter_map(|b| emit::max_slot(b)).map(|k| k.index() + 1).max().unwrap_or(0);
     for f in &mut functions {
         if let exec::Body::Native(body) = &mut f.body {
             *body = locals::tidy(std::mem::take(body));
@@ -51,6 +56,7 @@ pub fn prepare(post: &Post) -> Code {
     }
     Code {
         handlers,
+        handler_slots,
         init: exec::stmts(&post.init),
         globals: post.globals.iter().map(|g| exec::expr(&g.initial)).collect(),
         functions,
@@ -72,12 +78,9 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     let mut body = locals::tidy(body);
     fuse::expressions(&mut body);
     match top {
-        Some(top) => {
-            // The frame takes its full size at once, and the statements
-            // share it.
-            body.insert(0, Stmt::Assign(Place::Local(top), Expr::Null));
-            one(body)
-        }
+        // The statements share the frame, which the engine keeps sized
+        // for every handler.
+        Some(_) => one(fresh::start_nulls(body)),
         None => body,
     }
 }
