@@ -20,7 +20,7 @@ use crate::exec::{Code, Expr, Piece, Stmt};
 use crate::machine::MachineState;
 use crate::number::{NumberWriter, Rounded};
 use crate::output::Output;
-use crate::value::Value;
+use crate::value::{Text, Value};
 
 /// Per-variable run state.
 #[derive(Clone, Debug, Default)]
@@ -559,6 +559,34 @@ fn put<const ABSENT_PRINTS_NOTHING: bool>(
             keep_if_changed(modal, state, start, out);
         }
     }
+}
+
+/// [`put_number`] as a text value, on the fast path only: the word, or
+/// `empty` when the variable prints nothing (on-change, the same number).
+/// `None`, with nothing changed, when the number takes the slow path (past
+/// the fast range, a padded format, text printed last): the caller then
+/// formats into a buffer.
+#[inline(always)]
+pub(crate) fn number_word(
+    modal: bool,
+    w: &NumberWriter,
+    state: &mut VarState,
+    prefix: &[u8],
+    n: f64,
+    empty: &Text,
+) -> Option<Text> {
+    let r = w.round(n)?;
+    if modal {
+        match state.key {
+            Some(k) if k == r => return Some(empty.clone()),
+            None if state.has_last => return None,
+            _ => {}
+        }
+    }
+    let word = w.word_text(prefix, r)?;
+    state.key = Some(r);
+    state.has_last = false;
+    Some(word)
 }
 
 /// Prints text through a variable, unless it is on-change and prints what

@@ -25,6 +25,8 @@ use std::io::Write as _;
 
 use postc_ir::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 
+use crate::value::{INLINE_TEXT, Text};
+
 /// Powers of ten that are exact doubles.
 pub(crate) const POW10: [f64; 23] = [
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
@@ -201,6 +203,34 @@ impl NumberWriter {
         // The word ends at WORD_END; the slack after it lets the append
         // below copy a fixed-size window.
         let mut buf = [0u8; WORD_END + WINDOW];
+        let i = self.plain_word(prefix, r, &mut buf);
+        append_word(out, &buf, i);
+    }
+
+    /// The word of a value rounded by [`NumberWriter::round`], `prefix`
+    /// first, as a text value: `None` when the format pads (the caller
+    /// then writes it with [`NumberWriter::write_rounded_after`]). A word
+    /// of a field post's handler made straight into its value.
+    #[inline(always)]
+    pub fn word_text(&self, prefix: &[u8], r: Rounded) -> Option<Text> {
+        if !self.plain || prefix.len() + self.prefix.len() > 16 {
+            return None;
+        }
+        let mut buf = [0u8; WORD_END + WINDOW];
+        let i = self.plain_word(prefix, r, &mut buf);
+        let len = WORD_END - i;
+        // Zeros follow the word: a short one is taken as a whole array.
+        Some(match buf[i..].first_chunk::<INLINE_TEXT>() {
+            Some(padded) if len <= INLINE_TEXT => Text::from_padded(padded, len),
+            _ => Text::from_bytes(&buf[i..WORD_END]),
+        })
+    }
+
+    /// Writes the word of [`NumberWriter::write_plain`] right to left so
+    /// that it ends at `WORD_END` of `buf`, zeros after it; returns where
+    /// it starts.
+    #[inline(always)]
+    fn plain_word(&self, prefix: &[u8], r: Rounded, buf: &mut [u8; WORD_END + WINDOW]) -> usize {
         let mut i = WORD_END;
         let mut m = r.m;
         let mut d = self.decimals;
@@ -232,7 +262,7 @@ impl NumberWriter {
             }
         }
         if m > 0 || self.leading_zero || fraction_digits == 0 {
-            i = digits_before(m, &mut buf, i);
+            i = digits_before(m, buf, i);
         }
         if r.negative {
             i -= 1;
@@ -245,7 +275,7 @@ impl NumberWriter {
             i -= 1;
             buf[i] = b;
         }
-        append_word(out, &buf, i);
+        i
     }
 
     fn write_slow(&self, value: f64, out: &mut Vec<u8>) {

@@ -15,7 +15,7 @@ use ops::{binary, builtin, compare, push_integer, unary};
 
 use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
 
-use crate::engine::{Engine, is_modal, put_number, put_text};
+use crate::engine::{Engine, is_modal, number_word, put_number, put_text};
 use crate::value::{INLINE_TEXT, Text, Value};
 
 /// How a block of statements ended.
@@ -520,22 +520,7 @@ impl Engine<'_> {
                 }
                 self.eval(last, frame)?
             }
-            // Most often the text is a local's (a word formatted before).
-            Expr::ParseFloatFrom { value, from }
-                if let Expr::Local(i) = &**value
-                    && let Some(Value::Text(t)) = frame.get(i.index()) =>
-            {
-                Value::Num(parse_float_from(t.as_bytes(), *from))
-            }
-            Expr::ParseFloatFrom { value, from } => {
-                let mut buf = std::mem::take(&mut self.float_text);
-                buf.clear();
-                let text = self.text_into(value, frame, &mut buf);
-                let n = parse_float_from(&buf, *from);
-                self.float_text = buf;
-                text?;
-                Value::Num(n)
-            }
+            Expr::ParseFloatFrom { value, from } => Value::Num(self.read_back(value, *from, frame)?),
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Var(id) => self.var_value(*id),
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
@@ -678,12 +663,34 @@ impl Engine<'_> {
     /// ([`Expr::FormatVar`]).
     #[inline(always)]
     fn format_var(&mut self, var: VarId, value: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
-        // A number the machine knows needs no value made first.
+        // A number the machine knows needs no value made first, nor does
+        // one read back from a word (a field post's feed).
         if let Some(n) = self.known_number(value) {
+            return Ok(self.format_number_through_var(var, n));
+        }
+        if let Expr::ParseFloatFrom { value: text, from } = value {
+            let n = self.read_back(text, *from, frame)?;
             return Ok(self.format_number_through_var(var, n));
         }
         let v = self.eval(value, frame)?;
         Ok(self.format_through_var(var, v))
+    }
+
+    /// The number `parseFloat(text.substring(from))` reads from the text of
+    /// `text` ([`Expr::ParseFloatFrom`]), with no value made: most often a
+    /// local's word, read in place, or a word formatted into a reused buffer.
+    fn read_back(&mut self, text: &Expr, from: usize, frame: &mut Vec<Value>) -> Result<f64> {
+        if let Expr::Local(i) = text
+            && let Some(Value::Text(t)) = frame.get(i.index())
+        {
+            return Ok(parse_float_from(t.as_bytes(), from));
+        }
+        let mut buf = std::mem::take(&mut self.float_text);
+        buf.clear();
+        let written = self.text_into(text, frame, &mut buf);
+        let n = parse_float_from(&buf, from);
+        self.float_text = buf;
+        written.map(|()| n)
     }
 
     /// The number an expression is when it is a constant or names a
@@ -750,6 +757,16 @@ impl Engine<'_> {
     /// [`Self::format_through_var`] of a number.
     #[inline]
     fn format_number_through_var(&mut self, id: VarId, n: f64) -> Value {
+        // The word made straight into its value, on the fast path.
+        let post = self.post;
+        let var = &post.variables[id.index()];
+        let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
+        if let Some(word) =
+            number_word(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &self.empty_text)
+        {
+            state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+            return Value::Text(word);
+        }
         let mut buf = std::mem::take(&mut self.scratch);
         buf.clear();
         self.format_number_into(id, n, &mut buf);

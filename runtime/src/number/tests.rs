@@ -263,3 +263,30 @@ proptest! {
         prop_assert_eq!(String::from_utf8(fast).unwrap(), String::from_utf8(general).unwrap());
     }
 }
+
+proptest! {
+    #[test]
+    fn a_word_made_into_text_is_the_word_written(
+        n in -1_000_000_000_000i64..1_000_000_000_000,
+        scale in 0u32..9,
+        decimals in 0u8..7,
+        trim in any::<bool>(),
+        prefix in "[A-Z]{0,3}|é|[A-Z]{12,16}",
+        format_prefix in "[A-Z]{0,2}",
+        width in 0u8..4,
+    ) {
+        // What a handler's `xOutput.format(x)` keeps as a value is what the
+        // fast path writes into a block, short or long, ASCII or not; a
+        // padded format has no word (the caller writes it).
+        let v = n as f64 / 10f64.powi(scale as i32);
+        let f = NumberFormat { decimals, trim_zeros: trim, prefix: format_prefix, width, ..NumberFormat::default() };
+        let w = NumberWriter::new(&f);
+        let Some(r) = w.round(v) else { return Ok(()) };
+        let mut written = Vec::new();
+        w.write_rounded_after(prefix.as_bytes(), r, &mut written);
+        match w.word_text(prefix.as_bytes(), r) {
+            Some(text) => prop_assert_eq!(text.as_bytes(), &written[..]),
+            None => prop_assert!(!w.plain || prefix.len() + f.prefix.len() > 16),
+        }
+    }
+}
