@@ -74,3 +74,46 @@ fn a_ron_post_is_prepared_as_its_source() {
     assert_eq!(a.handlers.len(), b.handlers.len());
     assert_eq!(format!("{:?}", a.handlers[i]), text, "both are prepared alike");
 }
+
+/// `words.unshift("N" + n)` in a variadic `writeBlock()` writes the block
+/// number first in the prepared handler (nothing moved back), and a block
+/// of empty words still writes nothing, number included, and counts no
+/// number.
+#[test]
+fn a_block_number_is_written_first_and_dropped_with_an_empty_block() {
+    use postc_ir::event::{Event, FeedMove, VecSource};
+    let js = r#"
+        var linebreak = "\n";
+        var sequenceNumber = 10;
+        var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 3}));
+        function writeBlock() {
+            var words = [];
+            for (var i = 0; i < arguments.length; ++i) {
+                if (arguments[i] != "") {
+                    words.push(arguments[i]);
+                }
+            }
+            if (words.length == 0) {
+                return "";
+            }
+            words.unshift("N" + sequenceNumber);
+            sequenceNumber += 10;
+            return words.join(" ") + linebreak;
+        }
+        function onLinear(x, y, z, movement) {
+            return writeBlock(xOutput.format(x)) + writeBlock("G1", xOutput.format(x));
+        }
+    "#;
+    let post = compile(js);
+    let code = postc_runtime::prepare::prepare(&post);
+    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    assert!(!handler.contains("MoveBack"), "the number is written first: {handler}");
+    let feed = |x: f64| Event::Feed(FeedMove { x, ..FeedMove::default() });
+    let events = vec![Event::Job(Box::default()), feed(1.0), feed(1.0), feed(2.0), Event::End];
+    let mut source = VecSource::new(events, postc_ir::FileId(0));
+    let report =
+        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
+            .expect("posts");
+    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
+    assert_eq!(String::from_utf8_lossy(&parts.concat()), "N10 X1\nN20 G1\nN30 G1\nN40 X2\nN50 G1\n");
+}

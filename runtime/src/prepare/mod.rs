@@ -17,10 +17,12 @@
 //!    ([`fuse`]);
 //! 6. copies and constants in locals are read through and stores nobody
 //!    reads are dropped ([`locals`]), in handlers and functions;
-//! 7. a handler starts its locals as `null` only where some path may read
+//! 7. a block number moved back before its words is written first
+//!    ([`unshift`]);
+//! 8. a handler starts its locals as `null` only where some path may read
 //!    one before writing it ([`fresh`]): the engine keeps the frame from
 //!    event to event;
-//! 8. a handler whose statements share locals runs as one statement, so
+//! 9. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -33,6 +35,7 @@ mod fuse;
 mod inline;
 mod locals;
 mod splice;
+mod unshift;
 
 use postc_ir::Post;
 
@@ -77,6 +80,7 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     fuse::stmts(&mut body);
     let mut body = locals::tidy(body);
     fuse::expressions(&mut body);
+    unshift::block_numbers(&mut body);
     match top {
         // The statements share the frame, which the engine keeps sized
         // for every handler.
