@@ -134,14 +134,20 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
             }
             (word, sep, WordsBefore::Count(*n))
         }
-        // if (!written(m)) { truncate m; emit w } else { emit sep + w }
+        // if (!written(m)) { truncate m; emit w } else { emit sep + w }: with
+        // nothing written since `m` the truncation drops nothing, and a
+        // first word may come without it (`super::emit` drops it there).
         [Stmt::If { branches: inner, otherwise: joined }] => {
             let [(Expr::Unary(UnaryOp::Not, written), first)] = inner.as_slice() else { return None };
             let Expr::Written(m) = &**written else { return None };
-            let [Stmt::Truncate(t), Stmt::Emit(word)] = first.as_slice() else { return None };
+            let word = match first.as_slice() {
+                [Stmt::Truncate(t), Stmt::Emit(word)] if t == m => word,
+                [Stmt::Emit(word)] => word,
+                _ => return None,
+            };
             let [Stmt::Emit(joined)] = joined.as_slice() else { return None };
             let (Some(Piece::Text(sep)), rest) = (joined.first(), joined.get(1..)?) else { return None };
-            if t != m || rest != word.as_slice() {
+            if rest != word.as_slice() {
                 return None;
             }
             (word, sep, WordsBefore::Written(*m))

@@ -231,6 +231,12 @@ fn ends_in_jump(body: &[Stmt]) -> bool {
     matches!(body.last(), Some(Stmt::Break | Stmt::Continue | Stmt::Return(_)))
 }
 
+/// Whether a loop body ends in `break` and never continues its loop: it
+/// runs at most once (the loop a spliced function runs in).
+pub(super) fn runs_once(body: &[Stmt]) -> bool {
+    matches!(body.last(), Some(Stmt::Break)) && !continues(body)
+}
+
 /// Whether a loop body continues that loop (not a loop nested in it).
 fn continues(body: &[Stmt]) -> bool {
     body.iter().any(|s| match s {

@@ -31,6 +31,10 @@
 //!   drops the number too when no word was written. No expression among
 //!   them calls, formats or writes a global;
 //! - no statement after reads marks `r` or `t`.
+//!
+//! The count counted up once more for the number right after the move
+//! (`n += 1`) goes too when nothing else reads the count: it is a number,
+//! so that store has no effect.
 
 use std::collections::HashSet;
 
@@ -81,7 +85,7 @@ fn list(body: &mut Vec<Stmt>, mut marks: HashSet<LocalId>, reads: &[usize]) {
         // A loop that may run again could have dropped text below a mark
         // on its way round: only a body run once keeps the marks.
         let inner = match s {
-            Stmt::While { body, .. } if !runs_once(body) => HashSet::new(),
+            Stmt::While { body, .. } if !super::locals::runs_once(body) => HashSet::new(),
             _ => marks.clone(),
         };
         s.for_each_body_mut(|b| list(b, inner.clone(), reads));
@@ -98,18 +102,6 @@ fn list(body: &mut Vec<Stmt>, mut marks: HashSet<LocalId>, reads: &[usize]) {
         }
         i += 1;
     }
-}
-
-/// Whether a loop body ends in `break` and never continues: it runs once.
-fn runs_once(body: &[Stmt]) -> bool {
-    fn continues(body: &[Stmt]) -> bool {
-        body.iter().any(|s| match s {
-            Stmt::Continue => true,
-            Stmt::If { branches, otherwise } => branches.iter().any(|(_, b)| continues(b)) || continues(otherwise),
-            _ => false,
-        })
-    }
-    matches!(body.last(), Some(Stmt::Break)) && !continues(body)
 }
 
 /// Whether a statement may drop written text, at any depth.
@@ -162,7 +154,22 @@ fn rewrite_at(body: &mut Vec<Stmt>, a: usize, marks: &HashSet<LocalId>, reads: &
     }
     first.extend(words);
     let end = a + first.len();
-    body.splice(a..=mb_at, first);
+    // The count counted up once more for the number (`n += 1` after the
+    // move), when nothing reads it after: the words' count is a number,
+    // so that store has no effect.
+    let mut tail = mb_at + 1;
+    if let Some(c) = count {
+        let counted_up = |s: &Stmt| {
+            matches!(s, Stmt::Assign(Place::Local(k), Expr::Binary(BinaryOp::Add, a, n))
+                if *k == c && **a == Expr::Local(c) && matches!(**n, Expr::Number(_)))
+        };
+        let after = body[tail..].iter().take_while(|s| counted_up(s)).count();
+        count_reads(&mut body[mb_at + 1..mb_at + 1 + after].to_vec(), &mut inside);
+        if after > 0 && reads.get(c.index()) == inside.get(c.index()) {
+            tail += after;
+        }
+    }
+    body.splice(a..tail, first);
     Some(end)
 }
 
@@ -370,6 +377,7 @@ mod tests {
                         otherwise: vec![],
                     },
                     Stmt::MoveBack { to: k(5), from: k(6) },
+                    set(4, Expr::Binary(BinaryOp::Add, Box::new(local(4)), Box::new(Expr::Number(1.0)))),
                     Stmt::Emit(vec![Piece::Text(b"\n".to_vec())]),
                     Stmt::Break,
                 ],
@@ -401,6 +409,9 @@ mod tests {
         // Mark 5 is read by nobody any more; the words follow.
         assert_eq!(body[1], set(4, Expr::Number(0.0)));
         assert!(!body.iter().any(|s| matches!(s, Stmt::MoveBack { .. } | Stmt::Mark(_))), "{body:?}");
+        // The count is no longer counted up after the words.
+        let stores = body.iter().filter(|s| matches!(s, Stmt::Assign(Place::Local(c), _) if *c == k(4))).count();
+        assert_eq!(stores, 1, "{body:?}");
     }
 
     #[test]

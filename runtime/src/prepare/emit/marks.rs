@@ -78,10 +78,17 @@ fn rename_expr(e: Expr, alias: &HashMap<LocalId, LocalId>) -> Expr {
     }
 }
 
-/// Removes `Truncate(m)` where nothing was written since `Mark(m)`.
+/// Removes `Truncate(m)` where nothing was written since `Mark(m)`: in
+/// the mark's list, in the arms of an `if` and in a loop run once after
+/// it, and after such statements when they write nothing.
 pub(crate) fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
+    drop_truncates_after(body, None).0
+}
+
+/// [`drop_truncates`] of a list entered with nothing written since mark
+/// `fresh`; the mark with nothing written since at the list's end.
+fn drop_truncates_after(body: Vec<Stmt>, mut fresh: Option<LocalId>) -> (Vec<Stmt>, Option<LocalId>) {
     let mut out: Vec<Stmt> = Vec::with_capacity(body.len());
-    let mut fresh: Option<LocalId> = None;
     for s in body {
         match s {
             Stmt::Mark(m) => {
@@ -90,16 +97,24 @@ pub(crate) fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
             }
             Stmt::Truncate(m) if fresh == Some(m) => {}
             s if silent(&s) => out.push(s),
+            Stmt::Break | Stmt::Continue => out.push(s),
             Stmt::If { branches, otherwise } => {
-                fresh = None;
-                out.push(Stmt::If {
-                    branches: branches.into_iter().map(|(c, b)| (c, drop_truncates(b))).collect(),
-                    otherwise: drop_truncates(otherwise),
-                });
+                let mut quiet = true;
+                let mut arm = |b: Vec<Stmt>| {
+                    let (b, _) = drop_truncates_after(b, fresh);
+                    quiet &= writes_nothing(&b);
+                    b
+                };
+                let branches = branches.into_iter().map(|(c, b)| (c, arm(b))).collect();
+                let otherwise = arm(otherwise);
+                out.push(Stmt::If { branches, otherwise });
+                fresh = fresh.filter(|_| quiet);
             }
             Stmt::While { cond, body, span } => {
-                fresh = None;
-                out.push(Stmt::While { cond, body: drop_truncates(body), span });
+                let inherited = fresh.filter(|_| super::super::locals::runs_once(&body));
+                let (body, _) = drop_truncates_after(body, inherited);
+                fresh = fresh.filter(|_| writes_nothing(&body));
+                out.push(Stmt::While { cond, body, span });
             }
             other => {
                 fresh = None;
@@ -107,7 +122,19 @@ pub(crate) fn drop_truncates(body: Vec<Stmt>) -> Vec<Stmt> {
             }
         }
     }
-    out
+    (out, fresh)
+}
+
+/// Whether statements write nothing and move no mark, at any depth.
+fn writes_nothing(body: &[Stmt]) -> bool {
+    body.iter().all(|s| match s {
+        Stmt::If { branches, otherwise } => {
+            branches.iter().all(|(_, b)| writes_nothing(b)) && writes_nothing(otherwise)
+        }
+        Stmt::While { body, .. } => writes_nothing(body),
+        Stmt::Break | Stmt::Continue => true,
+        s => silent(s),
+    })
 }
 
 fn reads(body: &[Stmt], read: &mut HashSet<LocalId>) {
@@ -176,4 +203,57 @@ fn drop_unread(body: Vec<Stmt>, read: &HashSet<LocalId>) -> Vec<Stmt> {
             other => other,
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::prepare::testing::set;
+
+    fn once(body: Vec<Stmt>) -> Stmt {
+        Stmt::While { cond: Expr::Bool(true), body, span: None }
+    }
+
+    fn m(i: u16) -> LocalId {
+        LocalId::new(i)
+    }
+
+    #[test]
+    fn a_truncate_with_nothing_written_since_its_mark_goes_at_any_depth() {
+        // mark 0; while (true) { x = 1; if (c) { truncate 0; break } truncate 0; emit; break }
+        let leave = Stmt::If {
+            branches: vec![(Expr::Bool(false), vec![Stmt::Truncate(m(0)), Stmt::Break])],
+            otherwise: vec![],
+        };
+        let emit = Stmt::Emit(vec![Piece::Text(b"G1".to_vec())]);
+        let body = vec![
+            Stmt::Mark(m(0)),
+            once(vec![
+                set(1, Expr::Number(1.0)),
+                leave,
+                Stmt::Truncate(m(0)),
+                emit.clone(),
+                Stmt::Truncate(m(0)),
+                Stmt::Break,
+            ]),
+        ];
+        let quiet = Stmt::If { branches: vec![(Expr::Bool(false), vec![Stmt::Break])], otherwise: vec![] };
+        assert_eq!(
+            drop_truncates(body),
+            vec![
+                Stmt::Mark(m(0)),
+                once(vec![set(1, Expr::Number(1.0)), quiet, emit, Stmt::Truncate(m(0)), Stmt::Break])
+            ]
+        );
+    }
+
+    #[test]
+    fn a_loop_that_may_run_again_keeps_its_truncates() {
+        let emit = Stmt::Emit(vec![Piece::Text(b"G1".to_vec())]);
+        let body = vec![
+            Stmt::Mark(m(0)),
+            Stmt::While { cond: Expr::Bool(false), body: vec![Stmt::Truncate(m(0)), emit], span: None },
+        ];
+        assert_eq!(drop_truncates(body.clone()), body);
+    }
 }
