@@ -422,6 +422,19 @@ fn append_word(out: &mut Vec<u8>, buf: &[u8; WORD_END + WINDOW], start: usize) {
     }
 }
 
+/// Appends an integer's decimal digits (a block number, `N1234`), written
+/// two at a time and appended as one fixed-size copy.
+#[inline]
+pub(crate) fn push_integer(out: &mut Vec<u8>, n: i64) {
+    let mut buf = [0u8; WORD_END + WINDOW];
+    let mut i = digits_before(n.unsigned_abs(), &mut buf, WORD_END);
+    if n < 0 {
+        i -= 1;
+        buf[i] = b'-';
+    }
+    append_word(out, &buf, i);
+}
+
 /// Writes the decimal digits of `m` at the end of `tmp`; returns where they start.
 #[inline]
 fn write_digits(m: u64, tmp: &mut [u8; 24]) -> usize {

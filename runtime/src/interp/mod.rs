@@ -11,7 +11,7 @@ use postc_ir::{
 
 pub(crate) mod ops;
 
-use ops::{binary, builtin, compare, push_integer, unary};
+use ops::{binary, builtin, compare, unary};
 
 use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
 
@@ -899,7 +899,9 @@ impl Engine<'_> {
                     self.out.buf.extend_from_slice(&t.as_bytes()[from..]);
                 }
                 Piece::Expr(e) => match self.eval(e, frame)? {
-                    Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => push_integer(&mut self.out.buf, n as i64),
+                    Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => {
+                        crate::number::push_integer(&mut self.out.buf, n as i64)
+                    }
                     v => self.write_value_text(&v),
                 },
             }

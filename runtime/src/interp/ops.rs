@@ -170,25 +170,6 @@ fn concat(a: &Value, b: &Value) -> Value {
     Value::Text(Text::from(s))
 }
 
-/// Appends an integer's decimal digits without allocating.
-pub(super) fn push_integer(out: &mut Vec<u8>, n: i64) {
-    let mut buf = [0u8; 20];
-    let mut i = buf.len();
-    let mut m = n.unsigned_abs();
-    loop {
-        i -= 1;
-        buf[i] = b'0' + (m % 10) as u8;
-        m /= 10;
-        if m == 0 {
-            break;
-        }
-    }
-    if n < 0 {
-        out.push(b'-');
-    }
-    out.extend_from_slice(&buf[i..]);
-}
-
 /// Rounds half away from zero to `decimals` places.
 fn round_to(v: f64, decimals: f64) -> f64 {
     let p = 10f64.powi(decimals.clamp(0.0, 15.0) as i32);

@@ -290,3 +290,12 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #[test]
+    fn an_integer_is_appended_as_display_writes_it(n in any::<i64>(), before in "[A-Z]{0,3}") {
+        let mut out = before.as_bytes().to_vec();
+        push_integer(&mut out, n);
+        prop_assert_eq!(String::from_utf8(out).unwrap(), format!("{before}{n}"));
+    }
+}
