@@ -94,6 +94,11 @@ pub struct Engine<'p> {
     pub(crate) scratch: Vec<u8>,
     /// The text `parseFloat(text.substring(k))` reads, reused.
     pub(crate) float_text: Vec<u8>,
+    /// The last number read back from a word of a variable that always
+    /// prints (`parseFloat(getFeedrate(m).substring(1))`): the variable,
+    /// the value's bits, the index read from, and the number read. The
+    /// same value prints the same word, so the next move reads it here.
+    pub(crate) read_back_memo: Option<(VarId, u64, usize, f64)>,
     pub(crate) empty_text: crate::value::Text,
 }
 
@@ -140,6 +145,7 @@ impl<'p> Engine<'p> {
             profile: None,
             scratch: Vec::with_capacity(64),
             float_text: Vec::with_capacity(64),
+            read_back_memo: None,
             empty_text: crate::value::Text::new(""),
         }
     }

@@ -685,9 +685,43 @@ impl Engine<'_> {
         {
             return Ok(parse_float_from(t.as_bytes(), from));
         }
+        // The word of a variable that always prints, of a number on the
+        // fast path: read as the last move read it when the number is the
+        // same, the variable left as formatting leaves it.
+        let mut chosen = text;
+        while let Expr::Choose(c, a, b) = chosen {
+            chosen = if self.test(c, frame)? { a } else { b };
+        }
+        if let Expr::FormatVar { var, value } = chosen
+            && let Some(n) = self.known_number(value)
+        {
+            let post = self.post;
+            let variable = &post.variables[var.index()];
+            if !is_modal(variable)
+                && let Some(r) = self.writers[variable.format.index()].round(n)
+            {
+                let key = (*var, n.to_bits(), from);
+                if let Some((v, bits, at, read)) = self.read_back_memo
+                    && (v, bits, at) == key
+                {
+                    let state = &mut self.vars[var.index()];
+                    state.key = Some(r);
+                    state.has_last = false;
+                    state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+                    return Ok(read);
+                }
+                let mut buf = std::mem::take(&mut self.float_text);
+                buf.clear();
+                self.format_number_into(*var, n, &mut buf);
+                let read = parse_float_from(&buf, from);
+                self.float_text = buf;
+                self.read_back_memo = Some((key.0, key.1, key.2, read));
+                return Ok(read);
+            }
+        }
         let mut buf = std::mem::take(&mut self.float_text);
         buf.clear();
-        let written = self.text_into(text, frame, &mut buf);
+        let written = self.text_into(chosen, frame, &mut buf);
         let n = parse_float_from(&buf, from);
         self.float_text = buf;
         written.map(|()| n)
