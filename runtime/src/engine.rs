@@ -34,6 +34,11 @@ pub struct VarState {
     /// Current and previous value (registers, output variables).
     pub(crate) value: Value,
     pub(crate) previous: Value,
+    /// For a variable that always prints: the last number made into a
+    /// word value (its bits), as rounded, and the word. The same number
+    /// makes the same word, so a feed formatted every move
+    /// (`getFeedrate(m)`) is made once.
+    pub(crate) kept_word: Option<(u64, Rounded, Text)>,
 }
 
 /// Block numbering state.

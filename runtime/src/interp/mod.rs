@@ -795,9 +795,24 @@ impl Engine<'_> {
         let post = self.post;
         let var = &post.variables[id.index()];
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
-        if let Some(word) =
-            number_word(is_modal(var), &self.writers[var.format.index()], state, prefix, n, &self.empty_text)
+        let modal = is_modal(var);
+        // A variable that always prints makes the same word of the same
+        // number: the one kept is taken, the variable left as formatting
+        // leaves it.
+        if !modal
+            && let Some((bits, r, word)) = &state.kept_word
+            && *bits == n.to_bits()
         {
+            let word = Value::Text(word.clone());
+            state.key = Some(*r);
+            state.has_last = false;
+            state.previous = std::mem::replace(&mut state.value, Value::Num(n));
+            return word;
+        }
+        if let Some(word) = number_word(modal, &self.writers[var.format.index()], state, prefix, n, &self.empty_text) {
+            if !modal && let Some(r) = state.key {
+                state.kept_word = Some((n.to_bits(), r, word.clone()));
+            }
             state.previous = std::mem::replace(&mut state.value, Value::Num(n));
             return Value::Text(word);
         }
