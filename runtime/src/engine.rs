@@ -34,11 +34,35 @@ pub struct VarState {
     /// Current and previous value (registers, output variables).
     pub(crate) value: Value,
     pub(crate) previous: Value,
-    /// For a variable that always prints: the last number made into a
-    /// word value (its bits), as rounded, and the word. The same number
-    /// makes the same word, so a feed formatted every move
-    /// (`getFeedrate(m)`) is made once.
-    pub(crate) kept_word: Option<(u64, Rounded, Text)>,
+    /// For a variable that always prints: the last word it made of a
+    /// number. The same number makes the same word, so a feed formatted
+    /// every move (`getFeedrate(m)`) is made, and read back, once.
+    pub(crate) kept: Option<KeptWord>,
+}
+
+/// A word a variable that always prints made of a number ([`VarState::kept`]).
+#[derive(Clone, Debug)]
+pub(crate) struct KeptWord {
+    /// The number's bits.
+    pub bits: u64,
+    /// The number as rounded, the variable's modal key after printing it.
+    pub rounded: Rounded,
+    pub word: Text,
+    /// `parseFloat(word.substring(from))` once read: `from` and the number.
+    pub read: Option<(usize, f64)>,
+}
+
+impl VarState {
+    /// The word kept for `n`, the variable left as printing it leaves it;
+    /// `None` when none is kept for that number.
+    #[inline(always)]
+    pub(crate) fn reprint(&mut self, n: f64) -> Option<&mut KeptWord> {
+        let kept = self.kept.as_mut().filter(|k| k.bits == n.to_bits())?;
+        self.key = Some(kept.rounded);
+        self.has_last = false;
+        self.previous = std::mem::replace(&mut self.value, Value::Num(n));
+        Some(kept)
+    }
 }
 
 /// Block numbering state.
@@ -99,11 +123,6 @@ pub struct Engine<'p> {
     pub(crate) scratch: Vec<u8>,
     /// The text `parseFloat(text.substring(k))` reads, reused.
     pub(crate) float_text: Vec<u8>,
-    /// The last number read back from a word of a variable that always
-    /// prints (`parseFloat(getFeedrate(m).substring(1))`): the variable,
-    /// the value's bits, the index read from, and the number read. The
-    /// same value prints the same word, so the next move reads it here.
-    pub(crate) read_back_memo: Option<(VarId, u64, usize, f64)>,
     pub(crate) empty_text: crate::value::Text,
 }
 
@@ -150,7 +169,6 @@ impl<'p> Engine<'p> {
             profile: None,
             scratch: Vec::with_capacity(64),
             float_text: Vec::with_capacity(64),
-            read_back_memo: None,
             empty_text: crate::value::Text::new(""),
         }
     }

@@ -15,7 +15,7 @@ use ops::{binary, builtin, compare, unary};
 
 use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
 
-use crate::engine::{Engine, is_modal, number_word, put_number, put_text};
+use crate::engine::{Engine, KeptWord, is_modal, number_word, put_number, put_text};
 use crate::value::{INLINE_TEXT, Text, Value};
 
 /// How a block of statements ended.
@@ -685,39 +685,28 @@ impl Engine<'_> {
         {
             return Ok(parse_float_from(t.as_bytes(), from));
         }
-        // The word of a variable that always prints, of a number on the
-        // fast path: read as the last move read it when the number is the
-        // same, the variable left as formatting leaves it.
         let mut chosen = text;
         while let Expr::Choose(c, a, b) = chosen {
             chosen = if self.test(c, frame)? { a } else { b };
         }
+        // A word of a number formatted through a variable (a field post's
+        // feed): read from the word formatted as a value; a word kept by a
+        // variable that always prints is read once.
         if let Expr::FormatVar { var, value } = chosen
             && let Some(n) = self.known_number(value)
         {
-            let post = self.post;
-            let variable = &post.variables[var.index()];
-            if !is_modal(variable)
-                && let Some(r) = self.writers[variable.format.index()].round(n)
-            {
-                let key = (*var, n.to_bits(), from);
-                if let Some((v, bits, at, read)) = self.read_back_memo
-                    && (v, bits, at) == key
-                {
-                    let state = &mut self.vars[var.index()];
-                    state.key = Some(r);
-                    state.has_last = false;
-                    state.previous = std::mem::replace(&mut state.value, Value::Num(n));
-                    return Ok(read);
-                }
-                let mut buf = std::mem::take(&mut self.float_text);
-                buf.clear();
-                self.format_number_into(*var, n, &mut buf);
-                let read = parse_float_from(&buf, from);
-                self.float_text = buf;
-                self.read_back_memo = Some((key.0, key.1, key.2, read));
-                return Ok(read);
+            let word = self.format_number_through_var(*var, n);
+            if let Some(kept) = self.vars[var.index()].kept.as_mut().filter(|k| k.bits == n.to_bits()) {
+                return Ok(match kept.read {
+                    Some((at, read)) if at == from => read,
+                    _ => {
+                        let read = parse_float_from(kept.word.as_bytes(), from);
+                        kept.read = Some((from, read));
+                        read
+                    }
+                });
             }
+            return Ok(parse_float_from(word.to_text().as_bytes(), from));
         }
         let mut buf = std::mem::take(&mut self.float_text);
         buf.clear();
@@ -797,21 +786,13 @@ impl Engine<'_> {
         let (state, prefix) = (&mut self.vars[id.index()], &self.prefixes[id.index()]);
         let modal = is_modal(var);
         // A variable that always prints makes the same word of the same
-        // number: the one kept is taken, the variable left as formatting
-        // leaves it.
-        if !modal
-            && let Some((bits, r, word)) = &state.kept_word
-            && *bits == n.to_bits()
-        {
-            let word = Value::Text(word.clone());
-            state.key = Some(*r);
-            state.has_last = false;
-            state.previous = std::mem::replace(&mut state.value, Value::Num(n));
-            return word;
+        // number: the one kept is taken.
+        if !modal && let Some(kept) = state.reprint(n) {
+            return Value::Text(kept.word.clone());
         }
         if let Some(word) = number_word(modal, &self.writers[var.format.index()], state, prefix, n, &self.empty_text) {
-            if !modal && let Some(r) = state.key {
-                state.kept_word = Some((n.to_bits(), r, word.clone()));
+            if !modal && let Some(rounded) = state.key {
+                state.kept = Some(KeptWord { bits: n.to_bits(), rounded, word: word.clone(), read: None });
             }
             state.previous = std::mem::replace(&mut state.value, Value::Num(n));
             return Value::Text(word);
