@@ -202,9 +202,7 @@ fn words_fit(words: &[Stmt], r: LocalId, t: LocalId, marks: &HashSet<LocalId>) -
                 last_word = Some(i);
             }
             Stmt::Assign(Place::Local(k), _) if count == Some(*k) => return None,
-            Stmt::Emit(pieces)
-                if pieces.iter().all(|p| matches!(p, Piece::Text(_)) || matches!(p, Piece::Expr(e) if pure(e, r))) =>
-            {
+            Stmt::Emit(pieces) if pure_pieces(pieces, r) => {
                 last_word = Some(i);
             }
             Stmt::Assign(Place::Local(k), Expr::Number(n)) => {
@@ -219,9 +217,7 @@ fn words_fit(words: &[Stmt], r: LocalId, t: LocalId, marks: &HashSet<LocalId>) -
             }
             Stmt::Mark(k) if *k != r && *k != t && !marks.contains(k) && !zeroed.contains(k) && count != Some(*k) => {}
             Stmt::Word { cond, word, before, .. } => {
-                if !pure(cond, r)
-                    || !word.iter().all(|p| matches!(p, Piece::Text(_)) || matches!(p, Piece::Expr(e) if pure(e, r)))
-                {
+                if !pure(cond, r) || !pure_pieces(word, r) {
                     return None;
                 }
                 match before {
@@ -306,6 +302,15 @@ fn count_is_zero(c: LocalId) -> Expr {
 
 fn count_is_positive(c: LocalId) -> Expr {
     Expr::Binary(BinaryOp::JsGt, Box::new(Expr::Local(c)), Box::new(Expr::Number(0.0)))
+}
+
+/// Pieces of text and [`pure`] expressions.
+fn pure_pieces(pieces: &[Piece], r: LocalId) -> bool {
+    pieces.iter().all(|p| match p {
+        Piece::Text(_) => true,
+        Piece::Expr(e) => pure(e, r),
+        Piece::Var(_) => false,
+    })
 }
 
 /// An expression that reads locals, globals, constants and whether words
