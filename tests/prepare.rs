@@ -117,3 +117,50 @@ fn a_block_number_is_written_first_and_dropped_with_an_empty_block() {
     let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
     assert_eq!(String::from_utf8_lossy(&parts.concat()), "N10 X1\nN20 G1\nN30 G1\nN40 X2\nN50 G1\n");
 }
+
+/// The words of a variadic `writeBlock()` are one statement in the
+/// prepared handler; when each is a text it writes them at once, and a
+/// word that is not a text (a number passed as it is) runs the words'
+/// own statements: the same program either way, and an empty block still
+/// writes and counts nothing.
+#[test]
+fn a_run_of_words_is_one_statement_and_a_word_not_text_runs_as_written() {
+    use postc_ir::event::{Event, FeedMove, VecSource};
+    let js = r#"
+        var linebreak = "\n";
+        var sequenceNumber = 10;
+        var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 3}));
+        var yOutput = createVariable({prefix: "Y"}, createFormat({decimals: 3}));
+        function writeBlock() {
+            var words = [];
+            for (var i = 0; i < arguments.length; ++i) {
+                if (arguments[i] != "") {
+                    words.push(arguments[i]);
+                }
+            }
+            if (words.length == 0) {
+                return "";
+            }
+            words.unshift("N" + sequenceNumber);
+            sequenceNumber += 10;
+            return words.join(" ") + linebreak;
+        }
+        function onLinear(x, y, z, movement) {
+            var t = x > 1.5 ? 7 : "";
+            var u = x > 1.5 ? "U" : "";
+            return writeBlock(xOutput.format(x), yOutput.format(y)) + writeBlock(t, u);
+        }
+    "#;
+    let post = compile(js);
+    let code = postc_runtime::prepare::prepare(&post);
+    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    assert_eq!(handler.matches("Words(").count(), 2, "each block's words are one statement: {handler}");
+    let feed = |x: f64, y: f64| Event::Feed(FeedMove { x, y, ..FeedMove::default() });
+    let events = vec![Event::Job(Box::default()), feed(1.0, 0.0), feed(1.0, 0.0), feed(2.0, 3.0), Event::End];
+    let mut source = VecSource::new(events, postc_ir::FileId(0));
+    let report =
+        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
+            .expect("posts");
+    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
+    assert_eq!(String::from_utf8_lossy(&parts.concat()), "N10 X1 Y0\nN20 X2 Y3\nN30 7 U\n");
+}

@@ -81,6 +81,28 @@ pub enum Stmt {
         sep: Vec<u8>,
         before: WordsBefore,
     },
+    /// A block's run of words in one step ([`WordRun`]).
+    Words(Box<WordRun>),
+}
+
+/// A run of words joined into a block ([`Stmt::Words`]): the statements
+/// `general` (the count set to 0 or the mark set, one [`Stmt::Word`] per
+/// local of `locals`, each printed when its text is not empty, and the
+/// `if` that drops an empty block and leaves), run in one step when every
+/// word is a text, and as written otherwise. `crate::prepare`'s `fuse`
+/// makes it last, after every pass that rewrites locals, so `locals`,
+/// `sep`, `before` and `empty` always say what `general` does.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WordRun {
+    pub general: Vec<Stmt>,
+    /// The local of each word, in order.
+    pub locals: Vec<LocalId>,
+    /// Written between two words.
+    pub sep: Vec<u8>,
+    /// The count or the mark the words are told apart by.
+    pub before: WordsBefore,
+    /// When no word printed: the block's mark to truncate to, then `break`.
+    pub empty: Option<LocalId>,
 }
 
 /// How a [`Stmt::Word`] knows whether a word came before it.
@@ -248,7 +270,9 @@ impl Stmt {
                 f(cond);
                 pieces(word, &mut f);
             }
-            Stmt::Break
+            // Its statements are its body.
+            Stmt::Words(_)
+            | Stmt::Break
             | Stmt::Continue
             | Stmt::Return(None)
             | Stmt::Script(_)
@@ -270,6 +294,7 @@ impl Stmt {
                 f(otherwise);
             }
             Stmt::While { body, .. } => f(body),
+            Stmt::Words(run) => f(&mut run.general),
             _ => {}
         }
     }

@@ -13,7 +13,7 @@ pub(crate) mod ops;
 
 use ops::{binary, builtin, compare, unary};
 
-use crate::exec::{Body, Expr, Piece, Stmt, WordsBefore};
+use crate::exec::{Body, Expr, Piece, Stmt, WordRun, WordsBefore};
 
 use crate::engine::{Engine, KeptWord, is_modal, number_word, put_number, put_text};
 use crate::value::{INLINE_TEXT, Text, Value};
@@ -143,6 +143,10 @@ impl Engine<'_> {
                     self.out.buf.truncate(at);
                 }
                 Stmt::Word { cond, word, sep, before } => self.word(cond, word, sep, *before, frame)?,
+                Stmt::Words(run) => match self.words(run, frame)? {
+                    Flow::Normal => {}
+                    flow => return Ok(self.leave(flow, rest.len())),
+                },
                 Stmt::Origin(span) => {
                     if let Some(t) = self.trace.as_deref_mut() {
                         t.origin = Some(*span);
@@ -289,6 +293,57 @@ impl Engine<'_> {
             self.assign(Place::Local(n), next, frame);
         }
         Ok(())
+    }
+
+    /// A run of words ([`Stmt::Words`]): when every word is a text, each
+    /// one not empty is written, with the separator after the first, and
+    /// the count or the mark, the steps and an empty block's truncation
+    /// are what the run's statements make of them; otherwise they run.
+    fn words(&mut self, run: &WordRun, frame: &mut Vec<Value>) -> Result<Flow> {
+        let texts = run.locals.iter().all(|w| matches!(frame.get(w.index()), Some(Value::Text(_))));
+        let (WordsBefore::Count(counter) | WordsBefore::Written(counter)) = run.before;
+        if !texts || frame.len() <= counter.index() {
+            // The run's statements count their steps when they are entered.
+            self.steps -= 1;
+            return self.exec(&run.general, frame);
+        }
+        let start = self.out.buf.len();
+        let mut printed = 0u64;
+        for w in &run.locals {
+            let Some(Value::Text(t)) = frame.get(w.index()) else { continue };
+            if t.is_empty() {
+                continue;
+            }
+            if printed > 0 {
+                push_short(&mut self.out.buf, &run.sep);
+            }
+            t.append_to_bytes(&mut self.out.buf);
+            printed += 1;
+        }
+        // The statements it stands for beyond itself, and those each word
+        // printed counts (see `word`).
+        let inner = match run.before {
+            WordsBefore::Count(_) => 3 * printed + printed.saturating_sub(1),
+            WordsBefore::Written(_) => 2 * printed + u64::from(printed > 0),
+        };
+        self.steps += (run.general.len() - 1) as u64 + inner;
+        if self.steps > self.post.options.step_budget {
+            return Err(Box::new(self.budget_error(None)));
+        }
+        frame[counter.index()] = match run.before {
+            WordsBefore::Count(_) => Value::Num(printed as f64),
+            WordsBefore::Written(_) => Value::Num(start as f64),
+        };
+        if printed == 0
+            && let Some(m) = run.empty
+        {
+            // The `if`'s body: the truncation and the `break`.
+            self.steps += 2;
+            let at = self.mark(m, frame);
+            self.out.buf.truncate(at);
+            return Ok(Flow::Break);
+        }
+        Ok(Flow::Normal)
     }
 
     /// Writes one block inside a function: its expression pieces read the

@@ -25,9 +25,9 @@
 //! runs the same tests, writes and assignments in the same order, and
 //! counts the same steps, so nothing a post writes can change.
 
-use postc_ir::{BinaryOp, Builtin, Place, UnaryOp};
+use postc_ir::{BinaryOp, Builtin, LocalId, Place, UnaryOp};
 
-use crate::exec::{Expr, Piece, Stmt, WordsBefore};
+use crate::exec::{Expr, Piece, Stmt, WordRun, WordsBefore};
 
 /// Fuses every word in the statements, at any depth.
 pub(super) fn stmts(body: &mut [Stmt]) {
@@ -46,6 +46,77 @@ pub(super) fn stmts(body: &mut [Stmt]) {
             *stmt = word;
         }
     }
+}
+
+/// Every run of two or more words of locals joined into a block, at any
+/// depth, as one [`Stmt::Words`]: the count set to 0 (or the mark set)
+/// and the words after it, each `if (w != "")` or `if (w)` of one local
+/// printing that local, with one separator; and the `if` after them that
+/// drops an empty block and leaves (`if (n == 0)` or `if (!written(m))`
+/// of `truncate; break`), when it is there. Runs last, after every pass
+/// that rewrites locals.
+pub(super) fn runs(body: &mut Vec<Stmt>) {
+    for s in body.iter_mut() {
+        s.for_each_body_mut(runs);
+    }
+    let mut i = 0;
+    while i < body.len() {
+        if let Some((run, len)) = run_at(&body[i..]) {
+            let general: Vec<Stmt> = body.splice(i..i + len, std::iter::empty()).collect();
+            body.insert(i, Stmt::Words(Box::new(WordRun { general, ..run })));
+        }
+        i += 1;
+    }
+}
+
+/// The run of words that starts `body`, if one does, and how many
+/// statements it is (its `general` left empty).
+fn run_at(body: &[Stmt]) -> Option<(WordRun, usize)> {
+    let before = match body.first()? {
+        Stmt::Assign(Place::Local(n), Expr::Number(z)) if *z == 0.0 => WordsBefore::Count(*n),
+        Stmt::Mark(m) => WordsBefore::Written(*m),
+        _ => return None,
+    };
+    let (WordsBefore::Count(counter) | WordsBefore::Written(counter)) = before;
+    let (mut sep, mut locals): (Option<&Vec<u8>>, _) = (None, Vec::new());
+    for s in &body[1..] {
+        let Stmt::Word { cond, word, sep: this_sep, before: b } = s else { break };
+        let [Piece::Expr(Expr::Local(w))] = word.as_slice() else { break };
+        let printed = match cond {
+            Expr::Local(c) => c == w,
+            Expr::LocalEmpty { local, op: BinaryOp::JsNe | BinaryOp::StrictNe } => local == w,
+            _ => false,
+        };
+        if !printed || *b != before || *w == counter || sep.is_some_and(|s| s != this_sep) {
+            break;
+        }
+        sep = Some(this_sep);
+        locals.push(*w);
+    }
+    if locals.len() < 2 {
+        return None;
+    }
+    let mut len = 1 + locals.len();
+    let empty = body.get(len).and_then(|s| empty_block(s, before));
+    len += usize::from(empty.is_some());
+    Some((WordRun { general: Vec::new(), locals, sep: sep.cloned().unwrap_or_default(), before, empty }, len))
+}
+
+/// The mark an `if` after the words truncates to before it leaves, when
+/// the `if` asks whether no word printed: `if (n == 0)` of the count, or
+/// `if (!written(m))` of the mark.
+fn empty_block(s: &Stmt, before: WordsBefore) -> Option<LocalId> {
+    let Stmt::If { branches, otherwise } = s else { return None };
+    let [(cond, then)] = branches.as_slice() else { return None };
+    let [Stmt::Truncate(t), Stmt::Break] = then.as_slice() else { return None };
+    let asks = match (cond, before) {
+        (Expr::Binary(BinaryOp::JsEq | BinaryOp::StrictEq, n, zero), WordsBefore::Count(k)) => {
+            matches!((&**n, &**zero), (Expr::Local(n), Expr::Number(z)) if *n == k && *z == 0.0)
+        }
+        (Expr::Unary(UnaryOp::Not, w), WordsBefore::Written(k)) => matches!(&**w, Expr::Written(m) if *m == k),
+        _ => false,
+    };
+    (asks && otherwise.is_empty()).then_some(*t)
 }
 
 /// Every `local == ""`, `typeof local === "string"`,
@@ -161,7 +232,6 @@ fn word(stmt: &Stmt) -> Option<Stmt> {
 mod tests {
     use super::*;
     use crate::prepare::testing::local;
-    use postc_ir::LocalId;
 
     fn not_empty(e: Expr) -> Expr {
         Expr::Binary(BinaryOp::JsNe, Box::new(e), Box::new(Expr::text("")))
@@ -297,5 +367,79 @@ mod tests {
             otherwise: vec![],
         }];
         assert_eq!(body, want);
+    }
+
+    fn word_of(w: u16, before: WordsBefore, sep: &[u8]) -> Stmt {
+        Stmt::Word {
+            cond: Expr::LocalEmpty { local: LocalId::new(w), op: BinaryOp::JsNe },
+            word: vec![Piece::Expr(local(w))],
+            sep: sep.to_vec(),
+            before,
+        }
+    }
+
+    #[test]
+    fn a_run_of_words_becomes_one_statement_with_the_if_of_an_empty_block() {
+        let (n, m) = (LocalId::new(9), LocalId::new(8));
+        let count = WordsBefore::Count(n);
+        let empty = Stmt::If {
+            branches: vec![(
+                Expr::Binary(BinaryOp::JsEq, Box::new(Expr::Local(n)), Box::new(Expr::Number(0.0))),
+                vec![Stmt::Truncate(m), Stmt::Break],
+            )],
+            otherwise: vec![],
+        };
+        let general = vec![
+            Stmt::Assign(Place::Local(n), Expr::Number(0.0)),
+            word_of(1, count, b" "),
+            word_of(2, count, b" "),
+            empty.clone(),
+        ];
+        let mut body = vec![Stmt::While {
+            cond: Expr::Bool(true),
+            body: [general.clone(), vec![Stmt::Break]].concat(),
+            span: None,
+        }];
+        runs(&mut body);
+        let want = WordRun {
+            general,
+            locals: vec![LocalId::new(1), LocalId::new(2)],
+            sep: b" ".to_vec(),
+            before: count,
+            empty: Some(m),
+        };
+        let Stmt::While { body, .. } = &body[0] else { panic!() };
+        assert_eq!(body.as_slice(), [Stmt::Words(Box::new(want)), Stmt::Break]);
+    }
+
+    #[test]
+    fn near_misses_of_a_run_stay_as_they_are() {
+        let n = LocalId::new(9);
+        let count = WordsBefore::Count(n);
+        let start = Stmt::Assign(Place::Local(n), Expr::Number(0.0));
+        let cases = [
+            // One word: nothing to gain.
+            vec![start.clone(), word_of(1, count, b" ")],
+            // Two separators.
+            vec![start.clone(), word_of(1, count, b" "), word_of(2, count, b",")],
+            // Another count.
+            vec![start.clone(), word_of(1, WordsBefore::Count(LocalId::new(7)), b" "), word_of(2, count, b" ")],
+            // The count started at 1.
+            vec![Stmt::Assign(Place::Local(n), Expr::Number(1.0)), word_of(1, count, b" "), word_of(2, count, b" ")],
+        ];
+        for case in cases {
+            let mut body = case.clone();
+            runs(&mut body);
+            assert_eq!(body, case);
+        }
+        // A word of a test on another local ends the run.
+        let mut other = word_of(3, count, b" ");
+        if let Stmt::Word { cond, .. } = &mut other {
+            *cond = Expr::Local(LocalId::new(4));
+        }
+        let mut body = vec![start, word_of(1, count, b" "), word_of(2, count, b" "), other.clone()];
+        runs(&mut body);
+        assert!(matches!(&body[0], Stmt::Words(run) if run.locals.len() == 2 && run.empty.is_none()));
+        assert_eq!(body[1], other);
     }
 }

@@ -22,7 +22,9 @@
 //! 8. a handler starts its locals as `null` only where some path may read
 //!    one before writing it ([`fresh`]): the engine keeps the frame from
 //!    event to event;
-//! 9. a handler whose statements share locals runs as one statement, so
+//! 9. a run of words joined into a block becomes one statement
+//!    ([`fuse`]);
+//! 10. a handler whose statements share locals runs as one statement, so
 //!    its locals live in one frame.
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
@@ -84,7 +86,11 @@ fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
     match top {
         // The statements share the frame, which the engine keeps sized
         // for every handler.
-        Some(_) => one(fresh::start_nulls(body)),
+        Some(_) => {
+            let mut body = fresh::start_nulls(body);
+            fuse::runs(&mut body);
+            one(body)
+        }
         None => body,
     }
 }
