@@ -16,6 +16,10 @@
 //! while (true) { if (a0 == last) { x = ""; break }  last = a0; x = a0; break }
 //! ```
 //!
+//! A call that is one arm of a choice stored in a local (`h = z != "" ?
+//! lengthOffset() : ""`) is spliced into the arm of an `if` the choice
+//! becomes.
+//!
 //! The arguments are evaluated in their order before the body, as a call
 //! evaluates them; the function's locals start as `null` at every splice,
 //! as a call's frame does. The function itself stays, for every other
@@ -57,6 +61,19 @@ impl Splicer<'_> {
                 }
                 Stmt::Eval(Expr::Call(f, args)) if self.fits(f.index(), args.len()) => {
                     self.splice(f.index(), args, None, &mut out)
+                }
+                // `h = z != "" ? lengthOffset() : ""`: the choice as an
+                // `if` of two stores, so that the call is spliced there.
+                Stmt::Assign(Place::Local(d), Expr::Choose(c, a, b))
+                    if [&*a, &*b]
+                        .iter()
+                        .any(|e| matches!(e, Expr::Call(f, args) if self.fits(f.index(), args.len()))) =>
+                {
+                    let choice = Stmt::If {
+                        branches: vec![(*c, vec![Stmt::Assign(Place::Local(d), *a)])],
+                        otherwise: vec![Stmt::Assign(Place::Local(d), *b)],
+                    };
+                    out.extend(self.list(vec![choice]));
                 }
                 s => out.push(s),
             }
@@ -256,6 +273,45 @@ mod tests {
                 body: vec![Stmt::Eval(local(1)), set(0, Expr::Null), Stmt::Break],
                 span: None,
             },
+        ];
+        assert_eq!(body, want);
+    }
+
+    #[test]
+    fn a_call_chosen_into_a_local_is_spliced_into_an_if() {
+        let choose = |a: Expr, b: Expr| Expr::Choose(Box::new(local(5)), Box::new(a), Box::new(b));
+        let call = Expr::Call(FunctionId::new(0), vec![Expr::text("G1")]);
+        let mut body = vec![set(0, choose(call, Expr::text(""))), set(1, choose(local(2), local(3)))];
+        small_functions(&[motion()], &mut body);
+        let last = Expr::Global(GlobalId::new(0));
+        let want = vec![
+            Stmt::If {
+                branches: vec![(
+                    local(5),
+                    vec![
+                        set(6, Expr::text("G1")),
+                        Stmt::While {
+                            cond: Expr::Bool(true),
+                            body: vec![
+                                Stmt::If {
+                                    branches: vec![(
+                                        Expr::Binary(BinaryOp::JsEq, Box::new(local(6)), Box::new(last)),
+                                        vec![set(0, Expr::text("")), Stmt::Break],
+                                    )],
+                                    otherwise: vec![],
+                                },
+                                Stmt::Assign(Place::Global(GlobalId::new(0)), local(6)),
+                                set(0, local(6)),
+                                Stmt::Break,
+                            ],
+                            span: None,
+                        },
+                    ],
+                )],
+                otherwise: vec![set(0, Expr::text(""))],
+            },
+            // No call in it: the choice stays.
+            set(1, choose(local(2), local(3))),
         ];
         assert_eq!(body, want);
     }
