@@ -951,6 +951,9 @@ impl Engine<'_> {
                             }
                         }
                         Expr::Number(n) => *n,
+                        // A feed read back from its word (a field post's
+                        // `fOutput.format(parseFloat(...))`): no value made.
+                        Expr::ParseFloatFrom { value: text, from } => self.read_back(text, *from, frame)?,
                         // `+x` of a number the runtime knows (CIMCO's
                         // arguments): the number, NaN when there is none.
                         other => match plus_quantity(other) {
