@@ -312,11 +312,11 @@ impl<'p> Engine<'p> {
                         self.trace_after(*span);
                     }
                 }
-                Prepared::Stmt(stmt) => {
-                    self.steps = 0;
+                Prepared::Stmts(stmts, steps) => {
+                    self.steps = *steps;
                     // One frame, kept between events as they leave it.
                     let mut frame = std::mem::take(&mut self.handler_frame);
-                    let result = self.exec(std::slice::from_ref(*stmt), &mut frame);
+                    let result = self.exec(stmts, &mut frame);
                     self.handler_frame = frame;
                     result?;
                 }
@@ -657,8 +657,9 @@ pub(crate) enum Prepared<'p> {
     /// A block whose pieces are resolved to direct operations, and the
     /// line of the post that wrote it.
     Line(Vec<Op<'p>>, Option<Span>),
-    /// Any other statement, interpreted.
-    Stmt(&'p Stmt),
+    /// Any other statement, interpreted, or the statements of the one a
+    /// handler's share a frame in; with the steps counted before them.
+    Stmts(&'p [Stmt], u64),
 }
 
 /// One piece of a prepared block.
@@ -722,7 +723,16 @@ pub(crate) fn prepare_lines<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -
                     .collect(),
                 *span,
             ),
-            other => Prepared::Stmt(other),
+            // A handler's statements made one so that they share a frame
+            // (`if (true) { ... }`, see `crate::prepare`) run as the list
+            // they are, the `if`'s step counted.
+            Stmt::If { branches, otherwise }
+                if otherwise.is_empty()
+                    && let [(Expr::Bool(true), body)] = branches.as_slice() =>
+            {
+                Prepared::Stmts(body, 1)
+            }
+            other => Prepared::Stmts(std::slice::from_ref(other), 0),
         })
         .collect()
 }
