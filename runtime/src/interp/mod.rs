@@ -167,8 +167,7 @@ impl Engine<'_> {
                 Stmt::MoveBack { to, from } => {
                     let (to, from) = (self.mark(*to, frame), self.mark(*from, frame));
                     if to < from {
-                        let moved = self.out.buf.len() - from;
-                        self.out.buf[to..].rotate_right(moved);
+                        move_back(&mut self.out.buf, to, from);
                     }
                 }
                 Stmt::Cut { at, chars } => {
@@ -1079,6 +1078,27 @@ fn push_short(out: &mut Vec<u8>, bytes: &[u8]) {
     }
 }
 
+/// Moves the text written from `from` on back to `to`, before the text
+/// between them (`to < from <= buf.len()`): a short text (a separator, a
+/// block number) through a window on the stack, a longer one rotated.
+#[inline]
+fn move_back(buf: &mut [u8], to: usize, from: usize) {
+    const WINDOW: usize = 16;
+    let moved = buf.len() - from;
+    if moved == 1 {
+        let b = buf[from];
+        buf.copy_within(to..from, to + 1);
+        buf[to] = b;
+    } else if moved <= WINDOW {
+        let mut window = [0u8; WINDOW];
+        window[..moved].copy_from_slice(&buf[from..]);
+        buf.copy_within(to..from, to + moved);
+        buf[to..to + moved].copy_from_slice(&window[..moved]);
+    } else {
+        buf[to..].rotate_right(moved);
+    }
+}
+
 /// `parseFloat(text.substring(from))` of the bytes of a text (replacing
 /// what is not UTF-8, as a text value does).
 fn parse_float_from(bytes: &[u8], from: usize) -> f64 {
@@ -1129,6 +1149,23 @@ fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every move back, short (through the window) or long, is the
+    /// rotation it stands for.
+    #[test]
+    fn move_back_is_the_rotation() {
+        for len in 1..48usize {
+            let text: Vec<u8> = (0..len as u8).collect();
+            for from in 1..=len {
+                for to in 0..from {
+                    let (mut ours, mut want) = (text.clone(), text.clone());
+                    move_back(&mut ours, to, from);
+                    want[to..].rotate_right(len - from);
+                    assert_eq!(ours, want, "len {len}, to {to}, from {from}");
+                }
+            }
+        }
+    }
 
     fn add(a: Expr, b: Expr) -> Expr {
         Expr::Binary(BinaryOp::Add, Box::new(a), Box::new(b))
