@@ -25,7 +25,7 @@
 //! 9. a run of words joined into a block becomes one statement
 //!    ([`fuse`]);
 //! 10. a handler whose statements share locals runs as one statement, so
-//!    its locals live in one frame.
+//!     its locals live in one frame (the engine runs its list).
 //!
 //! A handler of output lines only (every Vectric section) is kept as it
 //! is: the engine runs its lines on a faster path still.
