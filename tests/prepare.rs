@@ -75,47 +75,62 @@ fn a_ron_post_is_prepared_as_its_source() {
     assert_eq!(format!("{:?}", a.handlers[i]), text, "both are prepared alike");
 }
 
+/// A field post's variadic `writeBlock()`: the words not empty, the block
+/// number put in front, joined by blanks.
+const WRITE_BLOCK: &str = r#"
+    var linebreak = "\n";
+    var sequenceNumber = 10;
+    var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 3}));
+    var yOutput = createVariable({prefix: "Y"}, createFormat({decimals: 3}));
+    function writeBlock() {
+        var words = [];
+        for (var i = 0; i < arguments.length; ++i) {
+            if (arguments[i] != "") {
+                words.push(arguments[i]);
+            }
+        }
+        if (words.length == 0) {
+            return "";
+        }
+        words.unshift("N" + sequenceNumber);
+        sequenceNumber += 10;
+        return words.join(" ") + linebreak;
+    }
+"#;
+
+/// The post of [`WRITE_BLOCK`] and `on_linear`, its prepared `FEED_MOVE`
+/// handler (as debug text) and the program it writes for feeds to the
+/// given (x, y).
+fn write_block_post(on_linear: &str, feeds: &[(f64, f64)]) -> (String, String) {
+    use postc_ir::event::{Event, FeedMove, VecSource};
+    let post = compile(&format!("{WRITE_BLOCK}{on_linear}"));
+    let code = postc_runtime::prepare::prepare(&post);
+    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    let mut events = vec![Event::Job(Box::default())];
+    events.extend(feeds.iter().map(|&(x, y)| Event::Feed(FeedMove { x, y, ..FeedMove::default() })));
+    events.push(Event::End);
+    let mut source = VecSource::new(events, postc_ir::FileId(0));
+    let report =
+        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
+            .expect("posts");
+    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
+    (handler, String::from_utf8_lossy(&parts.concat()).into_owned())
+}
+
 /// `words.unshift("N" + n)` in a variadic `writeBlock()` writes the block
 /// number first in the prepared handler (nothing moved back), and a block
 /// of empty words still writes nothing, number included, and counts no
 /// number.
 #[test]
 fn a_block_number_is_written_first_and_dropped_with_an_empty_block() {
-    use postc_ir::event::{Event, FeedMove, VecSource};
-    let js = r#"
-        var linebreak = "\n";
-        var sequenceNumber = 10;
-        var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 3}));
-        function writeBlock() {
-            var words = [];
-            for (var i = 0; i < arguments.length; ++i) {
-                if (arguments[i] != "") {
-                    words.push(arguments[i]);
-                }
-            }
-            if (words.length == 0) {
-                return "";
-            }
-            words.unshift("N" + sequenceNumber);
-            sequenceNumber += 10;
-            return words.join(" ") + linebreak;
-        }
+    let on_linear = r#"
         function onLinear(x, y, z, movement) {
             return writeBlock(xOutput.format(x)) + writeBlock("G1", xOutput.format(x));
         }
     "#;
-    let post = compile(js);
-    let code = postc_runtime::prepare::prepare(&post);
-    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    let (handler, program) = write_block_post(on_linear, &[(1.0, 0.0), (1.0, 0.0), (2.0, 0.0)]);
     assert!(!handler.contains("MoveBack"), "the number is written first: {handler}");
-    let feed = |x: f64| Event::Feed(FeedMove { x, ..FeedMove::default() });
-    let events = vec![Event::Job(Box::default()), feed(1.0), feed(1.0), feed(2.0), Event::End];
-    let mut source = VecSource::new(events, postc_ir::FileId(0));
-    let report =
-        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
-            .expect("posts");
-    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
-    assert_eq!(String::from_utf8_lossy(&parts.concat()), "N10 X1\nN20 G1\nN30 G1\nN40 X2\nN50 G1\n");
+    assert_eq!(program, "N10 X1\nN20 G1\nN30 G1\nN40 X2\nN50 G1\n");
 }
 
 /// The words of a variadic `writeBlock()` are one statement in the
@@ -125,42 +140,14 @@ fn a_block_number_is_written_first_and_dropped_with_an_empty_block() {
 /// writes and counts nothing.
 #[test]
 fn a_run_of_words_is_one_statement_and_a_word_not_text_runs_as_written() {
-    use postc_ir::event::{Event, FeedMove, VecSource};
-    let js = r#"
-        var linebreak = "\n";
-        var sequenceNumber = 10;
-        var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 3}));
-        var yOutput = createVariable({prefix: "Y"}, createFormat({decimals: 3}));
-        function writeBlock() {
-            var words = [];
-            for (var i = 0; i < arguments.length; ++i) {
-                if (arguments[i] != "") {
-                    words.push(arguments[i]);
-                }
-            }
-            if (words.length == 0) {
-                return "";
-            }
-            words.unshift("N" + sequenceNumber);
-            sequenceNumber += 10;
-            return words.join(" ") + linebreak;
-        }
+    let on_linear = r#"
         function onLinear(x, y, z, movement) {
             var t = x > 1.5 ? 7 : "";
             var u = x > 1.5 ? "U" : "";
             return writeBlock(xOutput.format(x), yOutput.format(y)) + writeBlock(t, u);
         }
     "#;
-    let post = compile(js);
-    let code = postc_runtime::prepare::prepare(&post);
-    let handler = format!("{:?}", code.handlers[feed_move(&post)]);
+    let (handler, program) = write_block_post(on_linear, &[(1.0, 0.0), (1.0, 0.0), (2.0, 3.0)]);
     assert_eq!(handler.matches("Words(").count(), 2, "each block's words are one statement: {handler}");
-    let feed = |x: f64, y: f64| Event::Feed(FeedMove { x, y, ..FeedMove::default() });
-    let events = vec![Event::Job(Box::default()), feed(1.0, 0.0), feed(1.0, 0.0), feed(2.0, 3.0), Event::End];
-    let mut source = VecSource::new(events, postc_ir::FileId(0));
-    let report =
-        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
-            .expect("posts");
-    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
-    assert_eq!(String::from_utf8_lossy(&parts.concat()), "N10 X1 Y0\nN20 X2 Y3\nN30 7 U\n");
+    assert_eq!(program, "N10 X1 Y0\nN20 X2 Y3\nN30 7 U\n");
 }

@@ -209,27 +209,32 @@ mod tests {
     fn a_call_becomes_the_body_in_fresh_slots() {
         let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![Expr::text("G1")]))];
         small_functions(&[motion()], &mut body);
+        assert_eq!(body, motion_spliced(1, 0));
+    }
+
+    /// `motion("G1")` spliced: its argument in slot `arg`, its value to
+    /// local `dest`.
+    fn motion_spliced(arg: u16, dest: u16) -> Vec<Stmt> {
         let last = Expr::Global(GlobalId::new(0));
-        let want = vec![
-            set(1, Expr::text("G1")),
+        vec![
+            set(arg, Expr::text("G1")),
             Stmt::While {
                 cond: Expr::Bool(true),
                 body: vec![
                     Stmt::If {
                         branches: vec![(
-                            Expr::Binary(BinaryOp::JsEq, Box::new(local(1)), Box::new(last)),
-                            vec![set(0, Expr::text("")), Stmt::Break],
+                            Expr::Binary(BinaryOp::JsEq, Box::new(local(arg)), Box::new(last)),
+                            vec![set(dest, Expr::text("")), Stmt::Break],
                         )],
                         otherwise: vec![],
                     },
-                    Stmt::Assign(Place::Global(GlobalId::new(0)), local(1)),
-                    set(0, local(1)),
+                    Stmt::Assign(Place::Global(GlobalId::new(0)), local(arg)),
+                    set(dest, local(arg)),
                     Stmt::Break,
                 ],
                 span: None,
             },
-        ];
-        assert_eq!(body, want);
+        ]
     }
 
     #[test]
@@ -283,33 +288,8 @@ mod tests {
         let call = Expr::Call(FunctionId::new(0), vec![Expr::text("G1")]);
         let mut body = vec![set(0, choose(call, Expr::text(""))), set(1, choose(local(2), local(3)))];
         small_functions(&[motion()], &mut body);
-        let last = Expr::Global(GlobalId::new(0));
         let want = vec![
-            Stmt::If {
-                branches: vec![(
-                    local(5),
-                    vec![
-                        set(6, Expr::text("G1")),
-                        Stmt::While {
-                            cond: Expr::Bool(true),
-                            body: vec![
-                                Stmt::If {
-                                    branches: vec![(
-                                        Expr::Binary(BinaryOp::JsEq, Box::new(local(6)), Box::new(last)),
-                                        vec![set(0, Expr::text("")), Stmt::Break],
-                                    )],
-                                    otherwise: vec![],
-                                },
-                                Stmt::Assign(Place::Global(GlobalId::new(0)), local(6)),
-                                set(0, local(6)),
-                                Stmt::Break,
-                            ],
-                            span: None,
-                        },
-                    ],
-                )],
-                otherwise: vec![set(0, Expr::text(""))],
-            },
+            Stmt::If { branches: vec![(local(5), motion_spliced(6, 0))], otherwise: vec![set(0, Expr::text(""))] },
             // No call in it: the choice stays.
             set(1, choose(local(2), local(3))),
         ];
