@@ -303,7 +303,7 @@ impl Engine<'_> {
         let (WordsBefore::Count(counter) | WordsBefore::Written(counter)) = run.before;
         if !texts || frame.len() <= counter.index() {
             // The run's statements count their steps when they are entered.
-            self.steps -= 1;
+            self.steps = self.steps.saturating_sub(1);
             return self.exec(&run.general, frame);
         }
         let start = self.out.buf.len();
