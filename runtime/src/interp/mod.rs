@@ -1167,6 +1167,82 @@ mod tests {
         }
     }
 
+    /// A run of words answers what its statements answer: the same
+    /// output, locals, steps and way out, for texts among which some are
+    /// empty, for no word at all (the block dropped back to its mark), and
+    /// for a word that is not a text (the statements run), counted and
+    /// asked of the output alike.
+    #[test]
+    fn a_run_of_words_does_what_its_statements_do() {
+        use crate::exec::{Code, WordRun};
+        use crate::output::Output;
+        use postc_ir::{LocalId, Place, Post};
+        let (post, code) = (Post::default(), Code::default());
+        let engine = || {
+            let machine = crate::machine::MachineState::new(
+                post.info.units,
+                post.options.spindle_speed_range,
+                post.options.rotary_wrap,
+            );
+            let mut engine = Engine::new(&post, &code, machine, Output::memory());
+            engine.out.buf.extend_from_slice(b"N1 ");
+            engine
+        };
+        let (counter, block) = (LocalId::new(8), LocalId::new(7));
+        let ends = |flow: &Flow| matches!(flow, Flow::Break);
+        for before in [WordsBefore::Count(counter), WordsBefore::Written(counter)] {
+            let (start, none_printed) = match before {
+                WordsBefore::Count(_) => (
+                    Stmt::Assign(Place::Local(counter), Expr::Number(0.0)),
+                    Expr::Binary(BinaryOp::JsEq, Box::new(Expr::Local(counter)), Box::new(Expr::Number(0.0))),
+                ),
+                WordsBefore::Written(_) => {
+                    (Stmt::Mark(counter), Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(counter))))
+                }
+            };
+            let locals: Vec<LocalId> = (1..4).map(LocalId::new).collect();
+            let mut general = vec![start];
+            general.extend(locals.iter().map(|&w| Stmt::Word {
+                cond: Expr::LocalEmpty { local: w, op: BinaryOp::JsNe },
+                word: vec![Piece::Expr(Expr::Local(w))],
+                sep: b" ".to_vec(),
+                before,
+            }));
+            general.push(Stmt::If {
+                branches: vec![(none_printed, vec![Stmt::Truncate(block), Stmt::Break])],
+                otherwise: vec![],
+            });
+            let run = Stmt::Words(Box::new(WordRun {
+                general: general.clone(),
+                locals,
+                sep: b" ".to_vec(),
+                before,
+                empty: Some(block),
+            }));
+            let text = |t: &str| Value::Text(Text::new(t));
+            for words in [
+                [text("G1"), text(""), text("X1")],
+                [text(""), text("Y2"), text("")],
+                [text(""), text(""), text("")],
+                [text("G1"), Value::Num(7.0), text("")],
+                [Value::Num(0.0), text(""), Value::Null],
+            ] {
+                let mut start = vec![Value::Null; 9];
+                start[1..4].clone_from_slice(&words);
+                start[block.index()] = Value::Num(0.0);
+                let (mut fused, mut plain) = (engine(), engine());
+                let (mut fused_frame, mut plain_frame) = (start.clone(), start.clone());
+                let fused_flow = fused.exec(std::slice::from_ref(&run), &mut fused_frame).expect("runs");
+                let plain_flow = plain.exec(&general, &mut plain_frame).expect("runs");
+                let case = format!("{before:?} {words:?}");
+                assert_eq!(fused.out.buf, plain.out.buf, "{case}");
+                assert_eq!(fused_frame, plain_frame, "{case}");
+                assert_eq!(fused.steps, plain.steps, "{case}");
+                assert_eq!(ends(&fused_flow), ends(&plain_flow), "{case}");
+            }
+        }
+    }
+
     fn add(a: Expr, b: Expr) -> Expr {
         Expr::Binary(BinaryOp::Add, Box::new(a), Box::new(b))
     }

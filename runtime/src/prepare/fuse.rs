@@ -62,7 +62,7 @@ pub(super) fn runs(body: &mut Vec<Stmt>) {
     let mut i = 0;
     while i < body.len() {
         if let Some((run, len)) = run_at(&body[i..]) {
-            let general: Vec<Stmt> = body.splice(i..i + len, std::iter::empty()).collect();
+            let general: Vec<Stmt> = body.drain(i..i + len).collect();
             body.insert(i, Stmt::Words(Box::new(WordRun { general, ..run })));
         }
         i += 1;
@@ -381,35 +381,36 @@ mod tests {
     #[test]
     fn a_run_of_words_becomes_one_statement_with_the_if_of_an_empty_block() {
         let (n, m) = (LocalId::new(9), LocalId::new(8));
-        let count = WordsBefore::Count(n);
-        let empty = Stmt::If {
-            branches: vec![(
+        // Counted (`n = 0 ... if (n == 0)`) and asked of the output
+        // (`mark n ... if (!written(n))`).
+        let forms = [
+            (
+                WordsBefore::Count(n),
+                Stmt::Assign(Place::Local(n), Expr::Number(0.0)),
                 Expr::Binary(BinaryOp::JsEq, Box::new(Expr::Local(n)), Box::new(Expr::Number(0.0))),
-                vec![Stmt::Truncate(m), Stmt::Break],
-            )],
-            otherwise: vec![],
-        };
-        let general = vec![
-            Stmt::Assign(Place::Local(n), Expr::Number(0.0)),
-            word_of(1, count, b" "),
-            word_of(2, count, b" "),
-            empty.clone(),
+            ),
+            (WordsBefore::Written(n), Stmt::Mark(n), Expr::Unary(UnaryOp::Not, Box::new(Expr::Written(n)))),
         ];
-        let mut body = vec![Stmt::While {
-            cond: Expr::Bool(true),
-            body: [general.clone(), vec![Stmt::Break]].concat(),
-            span: None,
-        }];
-        runs(&mut body);
-        let want = WordRun {
-            general,
-            locals: vec![LocalId::new(1), LocalId::new(2)],
-            sep: b" ".to_vec(),
-            before: count,
-            empty: Some(m),
-        };
-        let Stmt::While { body, .. } = &body[0] else { panic!() };
-        assert_eq!(body.as_slice(), [Stmt::Words(Box::new(want)), Stmt::Break]);
+        for (before, start, none_printed) in forms {
+            let empty =
+                Stmt::If { branches: vec![(none_printed, vec![Stmt::Truncate(m), Stmt::Break])], otherwise: vec![] };
+            let general = vec![start, word_of(1, before, b" "), word_of(2, before, b" "), empty];
+            let mut body = vec![Stmt::While {
+                cond: Expr::Bool(true),
+                body: [general.clone(), vec![Stmt::Break]].concat(),
+                span: None,
+            }];
+            runs(&mut body);
+            let want = WordRun {
+                general,
+                locals: vec![LocalId::new(1), LocalId::new(2)],
+                sep: b" ".to_vec(),
+                before,
+                empty: Some(m),
+            };
+            let Stmt::While { body, .. } = &body[0] else { panic!() };
+            assert_eq!(body.as_slice(), [Stmt::Words(Box::new(want)), Stmt::Break]);
+        }
     }
 
     #[test]
