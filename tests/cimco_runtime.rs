@@ -227,3 +227,50 @@ fn mutated_posts_never_panic() {
         }
     }
 }
+
+/// A value that is not a finite number never becomes a word: formatting it
+/// stops the run at the JavaScript line that formats it, in native code and
+/// in scripts alike, and nothing is written.
+#[test]
+fn formatting_a_value_that_is_not_a_number_stops_at_its_line() {
+    let cases = [
+        // Native: NaN, a division by zero, an undefined global.
+        ("function onOpen() {\n    return \"A\" + f.format(NaN) + \"\\n\";\n}", 5, true),
+        (
+            "function onOpen() {\n    return \"\";\n}\nfunction onLinear(x, y, z, m) {\n    return \"G1\" + g.format(x / 0) + \"\\n\";\n}",
+            8,
+            true,
+        ),
+        ("var u;\nfunction onOpen() {\n    return g.format(u) + \"\\n\";\n}", 6, true),
+        ("function onOpen() {\n    return \"C\" + f.format(parseFloat(\"abc\")) + \"\\n\";\n}", 5, true),
+        // A table lookup of a missing key (native), and in a script.
+        ("var codes = {drill: 81};\nfunction onOpen() {\n    return g.format(codes[\"tap\"]) + \"\\n\";\n}", 6, true),
+        (
+            "var codes = {drill: 81};\nfunction onOpen() {\n    var state = {n: 0};\n    state.n = 1;\n    return g.format(codes[\"tap\"]) + \"\\n\";\n}",
+            8,
+            false,
+        ),
+        (
+            "function onOpen() {\n    var state = {n: 0};\n    state.n = 1;\n    return f.format(1 / 0) + \"\\n\";\n}",
+            7,
+            false,
+        ),
+    ];
+    for (body, line, native) in cases {
+        let js = format!(
+            "var linebreak = \"\\n\";\nvar f = createFormat({{decimals: 3}});\nvar g = createVariable({{prefix: \"G\"}}, f);\n{body}\n"
+        );
+        let js =
+            if js.contains("function onLinear") { js } else { js + "function onLinear(x, y, z, m) { return \"\"; }\n" };
+        let (post, diags, sources) = compile(&js);
+        assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+        let open = post.functions.iter().find(|f| f.name == "onOpen").expect("onOpen");
+        let runs = if native { "native" } else { "script" };
+        assert_eq!(matches!(open.body, Body::Native(_)), native, "onOpen should run as {runs}:\n{js}");
+        let d = run(&post).expect_err(&format!("the post must stop:\n{js}"));
+        let d = d.iter().find(|d| d.code == "RT032").unwrap_or_else(|| panic!("no RT032: {d:?}\n{js}"));
+        let span = d.primary_span().expect("a span");
+        let at = sources.line_column(span.file, span.start).map(|(l, _)| l);
+        assert_eq!(at, Some(line), "{d:?}\n{js}");
+    }
+}

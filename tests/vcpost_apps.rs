@@ -52,6 +52,16 @@ fn a_runaway_loop_stops_at_its_line() {
     assert_eq!(runaway("  While 1 = 1\n  Wend", None), ("RT002".into(), 3));
 }
 
+/// A register or `Format$` given a value that is not a finite number
+/// stops the run at the `Out` that would print it: no `X0` in its place.
+#[test]
+fn a_number_that_is_not_finite_stops_at_its_out() {
+    let at = |body: &str| runaway(body, None);
+    assert_eq!(at("  X = X / 0\n  Out \"G1<X>\""), ("RT032".into(), 4));
+    assert_eq!(at("  X = Sqr(-1)\n  Out \"G1<X>\""), ("RT032".into(), 4));
+    assert_eq!(at("  Out \"G1X\" & Format$(Sqr(-1), \"0.000\")"), ("RT032".into(), 3));
+}
+
 #[test]
 fn endless_recursion_stops() {
     let mut sources = postc_report::source_map();

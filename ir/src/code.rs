@@ -111,11 +111,17 @@ pub enum Expr {
     FormatVar {
         var: VarId,
         value: Box<Expr>,
+        /// The post text that asks for it: where a value that is not a
+        /// finite number is reported.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
     },
     /// Format a value with a format alone (CIMCO `xyzFormat.format(v)`).
     Format {
         format: FormatId,
         value: Box<Expr>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
     },
     Unary(UnaryOp, Box<Expr>),
     Binary(BinaryOp, Box<Expr>, Box<Expr>),

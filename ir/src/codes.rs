@@ -1333,6 +1333,27 @@ declare_codes! {
     /// 2^20 items): a loop that keeps adding. It is stopped at its loop and no output is written.
     RT031: Error, "a post built a text past 16 MiB (or, in a script, an array or object past 2^20 items): stopped at its loop, no output written",
         fix = "Correct the loop.";
+    /// A format or output variable was given a value that is not a finite number (NaN, or an
+    /// infinity): a key missing from a table, `undefined`, text that is not a number, a division
+    /// by zero. No controller reads such a word and a 0 in its place moves the machine where the
+    /// post never meant, so the run stops at the post's line and no output is written.
+    RT032: Error, "the post formats a value that is not a finite number (NaN or infinity); no output is written",
+        fix = "Check the value before formatting it: give the table the missing key, or test the value with isNaN().";
+    /// A post line prints only values the job does not give (a tool number for a job with no
+    /// tool, a home position or material size it does not state): the line is left out, as
+    /// `T[T] M6` must be for a job with no tool, rather than printed as `T M6`.
+    RT033: Warning, "a post line prints only values the job does not give; the line is left out",
+        fix = "Nothing to do when the job has no such value; otherwise give the toolpath the tool, home or material.";
+    /// A post line prints an address letter of its text with no number after it (`T[T]` for a
+    /// job with no tool prints `T`): a controller reads that as an error, or as zero.
+    RT034: Warning, "a post line prints an address letter with no number after it (the job gives no value for it)",
+        fix = "Print the letter as the variable's prefix (`[T|A|T|1.0]`) so that it goes with the value, or give the job the value.";
+    /// The toolpath changes how the tool cuts (cutter compensation, coolant, a new spindle
+    /// speed) and the post has no handler to write it: the program runs on as before, which
+    /// is not what the toolpath asked. Events that change nothing on the part (a spindle stop
+    /// before the post's own, a toolpath's end) are not reported.
+    RT035: Warning, "the toolpath changes how the tool cuts (compensation, coolant, spindle speed) and the post cannot write it",
+        fix = "Add the handler to the post, or post with a post that has it.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), or a post driven by APT words.
     CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), or a post driven by APT words",

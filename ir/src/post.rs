@@ -650,6 +650,12 @@ impl Post {
                 }
                 crate::visit::walk_stmt_mut(self, stmt);
             }
+            fn visit_expr_mut(&mut self, expr: &mut crate::code::Expr) {
+                if let crate::code::Expr::FormatVar { span, .. } | crate::code::Expr::Format { span, .. } = expr {
+                    *span = None;
+                }
+                crate::visit::walk_expr_mut(self, expr);
+            }
         }
         self.info.span = None;
         self.handlers.iter_mut().for_each(|h| h.span = None);

@@ -197,7 +197,8 @@ impl<'p> Engine<'p> {
     /// Runs the handler at `index` of the post's handlers.
     pub fn run_handler(&mut self, index: usize) -> Result<(), Box<Diagnostic>> {
         let body = self.prepared[index].clone();
-        self.run_prepared(&body)
+        self.run_prepared(&body)?;
+        self.finite(self.post.handlers[index].span)
     }
 
     /// Runs the section's handler; false when the post has none.
@@ -219,6 +220,9 @@ impl<'p> Engine<'p> {
                     p.exit();
                 }
                 result?;
+                // A block's formats are checked where they are written;
+                // this finds any other (a section's line of words).
+                self.finite(self.post.handlers[i as usize].span)?;
                 Ok(true)
             }
             None => Ok(false),
@@ -312,6 +316,7 @@ impl<'p> Engine<'p> {
                         self.trace_after(*span);
                     }
                 }
+                Prepared::OptionalLine(ops, span) => self.write_optional_line(ops, *span)?,
                 Prepared::Stmts(stmts, steps) => {
                     self.steps = *steps;
                     // One frame, kept between events as they leave it.
@@ -360,16 +365,127 @@ impl<'p> Engine<'p> {
         match piece {
             Piece::Text(bytes) => self.out.buf.extend_from_slice(bytes),
             Piece::Var(id) => self.write_var(*id),
-            Piece::Expr(Expr::FormatVar { var, value }) => {
+            Piece::Expr(Expr::FormatVar { var, value, span }) => {
                 let mut frame = Vec::new();
                 let v = self.eval(value, &mut frame)?;
                 self.write_assigned(*var, v);
+                self.finite(*span)?;
             }
             Piece::Expr(e) => {
                 let mut frame = Vec::new();
                 let v = self.eval(e, &mut frame)?;
                 self.write_value_text(&v);
             }
+        }
+        Ok(())
+    }
+
+    /// Writes a [`Prepared::OptionalLine`]: as a line, unless every value
+    /// it prints is one the job does not have, in which case nothing of it
+    /// is written (its block number is not used) and a warning names the
+    /// post line. A value missing right after a letter of the line's text
+    /// (`T[T]` printing `T`) is a warning too: an address with no number.
+    #[inline(never)]
+    fn write_optional_line(&mut self, ops: &[Op<'_>], span: Option<Span>) -> Result<(), Box<Diagnostic>> {
+        let start = self.out.buf.len();
+        let (mut values, mut missing, mut missing_text) = (0usize, Vec::new(), 0usize);
+        let mut bare_letter = None;
+        let mut letter_before = None;
+        for op in ops {
+            let letter = match op {
+                Op::Text(bytes) => {
+                    self.out.buf.extend_from_slice(bytes);
+                    bytes.last().copied()
+                }
+                Op::ShortText(small) => {
+                    small.append_to(&mut self.out.buf);
+                    self.out.buf.last().copied()
+                }
+                Op::Number { var, quantity, format, modal } => {
+                    let n = self.machine.number(*quantity);
+                    values += 1;
+                    if n.is_nan() {
+                        missing.push(*var);
+                        if bare_letter.is_none() && self.prefixes[var.index()].is_empty() {
+                            bare_letter = letter_before.map(|l: u8| (l, *var));
+                        }
+                    }
+                    let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
+                    put_quantity(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                    None
+                }
+                Op::Position { var, axis, format, modal } => {
+                    let n = self.machine.pos[*axis as usize];
+                    let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
+                    put_quantity(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                    values += 1;
+                    None
+                }
+                Op::Piece(piece) => {
+                    if let Some(q) = text_quantity(self.post, piece) {
+                        values += 1;
+                        if self.machine.text(q).is_empty() {
+                            missing_text += 1;
+                        }
+                    }
+                    self.write_piece(piece)?;
+                    None
+                }
+            };
+            letter_before = letter.filter(u8::is_ascii_alphabetic);
+        }
+        let names = |eng: &Self, vars: &[VarId]| {
+            let label = |v: &VarId| {
+                let var = &eng.post.variables[v.index()];
+                match var.source {
+                    ValueSource::Quantity(q) => format!("[{}]", q.label()),
+                    _ => var.name.clone(),
+                }
+            };
+            vars.iter().map(label).collect::<Vec<_>>().join(" ")
+        };
+        if values > 0 && missing.len() + missing_text == values {
+            // A line of empty texts only, or a comment (its text starts
+            // with `(`, `;` or `'`), goes without a word: it changes
+            // nothing on the part.
+            let comment = matches!(self.out.buf[start..].iter().find(|b| !b.is_ascii_whitespace()), Some(b'(' | b';' | b'\''));
+            self.out.buf.truncate(start);
+            self.block.printed = false;
+            if missing.is_empty() || comment {
+                return Ok(());
+            }
+            let d = Diagnostic::warning(
+                "RT033",
+                format!(
+                    "this line prints only {}, which this job does not give; it is left out",
+                    names(self, &missing)
+                ),
+            )
+            .help("a job with no tool, no home position or no material size has nothing for such a line to print");
+            self.warn_once_at(match span {
+                Some(s) => d.at(s, "left out"),
+                None => d,
+            });
+            return Ok(());
+        }
+        if let Some((letter, var)) = bare_letter {
+            let d = Diagnostic::warning(
+                "RT034",
+                format!(
+                    "this line prints the address `{}` with no number: the job gives no {}",
+                    letter as char,
+                    names(self, &[var])
+                ),
+            )
+            .help("a controller reads a letter with no number as an error, or as zero; print the letter with the value (the variable's prefix), or give the job the value");
+            self.warn_once_at(match span {
+                Some(s) => d.at(s, "an address with no number"),
+                None => d,
+            });
+        }
+        self.end_block();
+        if self.trace.is_some() {
+            self.trace_after(span);
         }
         Ok(())
     }
@@ -459,6 +575,21 @@ impl<'p> Engine<'p> {
                 let w = &self.writers[var.format.index()];
                 put_number(is_modal(var), w, state, prefix, other.num(), &mut self.out.buf);
             }
+        }
+    }
+
+    /// Records a warning once; the same warning at another place of the
+    /// post adds that place to it (up to ten), so each line is named once.
+    pub fn warn_once_at(&mut self, d: Diagnostic) {
+        let Some(w) = self.warnings.iter_mut().find(|w| w.code == d.code && w.message == d.message) else {
+            self.warnings.push(d);
+            return;
+        };
+        if let Some(label) = d.labels.into_iter().find(|l| l.primary)
+            && w.labels.len() < 10
+            && !w.labels.iter().any(|l| l.span == label.span)
+        {
+            w.labels.push(postc_ir::diagnostic::Label { primary: false, ..label });
         }
     }
 
@@ -657,6 +788,12 @@ pub(crate) enum Prepared<'p> {
     /// A block whose pieces are resolved to direct operations, and the
     /// line of the post that wrote it.
     Line(Vec<Op<'p>>, Option<Span>),
+    /// A [`Prepared::Line`] that prints values a job may not have (a tool
+    /// number, a home position, a material size) and nothing that is sure
+    /// to have one: left out when none of its values is there, as `T[T] M6`
+    /// is for a job with no tool; a letter printed with no value after it
+    /// is reported ([`Engine::write_optional_line`]).
+    OptionalLine(Vec<Op<'p>>, Option<Span>),
     /// Any other statement, interpreted, or the statements of the one a
     /// handler's share a frame in; with the steps counted before them.
     Stmts(&'p [Stmt], u64),
@@ -688,7 +825,8 @@ fn is_move_section(key: &HandlerKey) -> bool {
 pub(crate) fn prepare_lines<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -> Vec<Prepared<'p>> {
     body.iter()
         .map(|stmt| match stmt {
-            Stmt::Line { pieces, span } => Prepared::Line(
+            Stmt::Line { pieces, span } => line(
+                post,
                 pieces
                     .iter()
                     .map(|piece| match piece {
@@ -737,6 +875,38 @@ pub(crate) fn prepare_lines<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -
         .collect()
 }
 
+/// A prepared line: optional ([`Prepared::OptionalLine`]) when every value
+/// it prints may be missing from a job, or when one that may be follows a
+/// letter of its text; otherwise a plain line.
+fn line<'p>(post: &Post, ops: Vec<Op<'p>>, span: Option<Span>) -> Prepared<'p> {
+    let numbers = ops
+        .iter()
+        .filter(|op| matches!(op, Op::Number { .. }) || matches!(op, Op::Piece(p) if text_quantity(post, p).is_some()))
+        .count();
+    let positions = ops.iter().any(|op| matches!(op, Op::Position { .. }));
+    let all_optional = numbers > 0 && !positions;
+    let after_letter = ops.windows(2).any(|w| {
+        let last = match &w[0] {
+            Op::Text(bytes) => bytes.last().copied(),
+            Op::ShortText(small) => small.last(),
+            _ => None,
+        };
+        last.is_some_and(|b| b.is_ascii_alphabetic()) && matches!(w[1], Op::Number { .. })
+    });
+    if all_optional || after_letter { Prepared::OptionalLine(ops, span) } else { Prepared::Line(ops, span) }
+}
+
+/// The text quantity a piece prints through a variable (`[TOOLNAME]`).
+fn text_quantity(post: &Post, piece: &Piece) -> Option<Quantity> {
+    match piece {
+        Piece::Var(id) => match post.variables.get(id.index())?.source {
+            ValueSource::Quantity(q) if q.is_text() => Some(q),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 /// Up to 16 bytes kept in a fixed array, so that appending them is one
 /// fixed-size copy and a truncate rather than a `memcpy` call.
 #[derive(Clone, Copy, Debug)]
@@ -756,5 +926,10 @@ impl SmallBytes {
     pub(crate) fn append_to(&self, out: &mut Vec<u8>) {
         out.extend_from_slice(&self.bytes);
         out.truncate(out.len() - (16 - self.len as usize));
+    }
+
+    /// The last byte, if any.
+    pub(crate) fn last(&self) -> Option<u8> {
+        self.bytes[..self.len as usize].last().copied()
     }
 }

@@ -141,10 +141,12 @@ pub enum Expr {
     FormatVar {
         var: VarId,
         value: Box<Expr>,
+        span: Option<Span>,
     },
     Format {
         format: postc_ir::FormatId,
         value: Box<Expr>,
+        span: Option<Span>,
     },
     Unary(UnaryOp, Box<Expr>),
     Binary(BinaryOp, Box<Expr>, Box<Expr>),
@@ -438,8 +440,8 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
         E::Global(g) => Expr::Global(*g),
         E::Var(v) => Expr::Var(*v),
         E::Previous(v) => Expr::Previous(*v),
-        E::FormatVar { var, value } => Expr::FormatVar { var: *var, value: boxed(value) },
-        E::Format { format, value } => Expr::Format { format: *format, value: boxed(value) },
+        E::FormatVar { var, value, span } => Expr::FormatVar { var: *var, value: boxed(value), span: *span },
+        E::Format { format, value, span } => Expr::Format { format: *format, value: boxed(value), span: *span },
         E::Unary(op, a) => Expr::Unary(*op, boxed(a)),
         E::Binary(op, a, b) => Expr::Binary(*op, boxed(a), boxed(b)),
         E::Choose(c, a, b) => Expr::Choose(boxed(c), boxed(a), boxed(b)),

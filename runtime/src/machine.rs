@@ -233,6 +233,8 @@ impl MachineState {
             Quantity::CutFeed => given(self.tool.cut_feed),
             Quantity::PlungeFeed => given(self.tool.plunge_feed),
             Quantity::InverseTimeFeed => self.inverse_time(),
+            // No tool and no speed given: no value (not S0).
+            Quantity::SpindleSpeed if !self.has_tool && self.spindle_speed == 0.0 => NO_VALUE,
             Quantity::SpindleSpeed => self.spindle_output(),
             Quantity::Power => self.jet_power(),
             Quantity::Tool => tool(f64::from(self.tool.number)),

@@ -10,8 +10,9 @@
 //! exact whenever the scaled value is not within a few ulps of a rounding
 //! tie. Near a tie it compares the value with the double nearest to the
 //! decimal tie point, which decides exactly on the decimal value. Past 1e14 scaled
-//! (and for non-finite values) the slow path takes the shortest decimal
-//! digits of the double and rounds them as decimal text.
+//! the slow path takes the shortest decimal digits of the double and rounds
+//! them as decimal text. A value that is not a finite number prints nothing
+//! and is reported ([`take_non_finite`]).
 //! Either way the digits land in a stack buffer and are appended to the
 //! caller's output; nothing is allocated once the output has capacity.
 //!
@@ -21,11 +22,38 @@
 //! point exactly in integers, and the slow path rounds the exact decimal
 //! expansion of the double.
 
+use std::cell::Cell;
 use std::io::Write as _;
 
 use postc_ir::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};
 
 use crate::value::{INLINE_TEXT, Text};
+
+thread_local! {
+    /// The last value that is not a finite number a writer was asked to
+    /// print, since [`take_non_finite`] last looked.
+    static NON_FINITE: Cell<Option<f64>> = const { Cell::new(None) };
+}
+
+/// The value that is not a finite number (NaN or an infinity) a writer of
+/// this thread was asked to print since the last call, if any; forgets it.
+///
+/// A writer prints nothing for such a value: no controller reads "NaN",
+/// and printing 0 in its place moves the machine somewhere the post never
+/// meant. The engine asks after every block and every format it runs and
+/// stops the run with an error at the post's line.
+#[inline]
+pub fn take_non_finite() -> Option<f64> {
+    NON_FINITE.with(|c| if c.get().is_some() { c.replace(None) } else { None })
+}
+
+/// Records a value that is not a finite number that a format was asked to
+/// print (a picture format of its own, VcPost's `Format$`), for
+/// [`take_non_finite`].
+#[cold]
+pub fn report_non_finite(value: f64) {
+    NON_FINITE.with(|c| c.set(Some(value)));
+}
 
 /// Powers of ten that are exact doubles.
 pub(crate) const POW10: [f64; 23] = [
@@ -279,6 +307,10 @@ impl NumberWriter {
     }
 
     fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
+        if !(value * self.multiplier).is_finite() {
+            report_non_finite(value);
+            return;
+        }
         let mut digits = Digits::new();
         let negative = digits.round(value * self.multiplier, self.decimals, self.binary);
         self.emit(&[], negative, digits.integer(), digits.fraction(), out);
@@ -500,7 +532,8 @@ impl Digits {
 
     /// Rounds `value` half away from zero to `decimals` places on its
     /// shortest decimal digits, or on its exact binary value when `binary`;
-    /// returns whether it is negative. Non-finite values print as zero.
+    /// returns whether it is negative. Values that are not finite (never
+    /// printed: [`take_non_finite`]) read as zero.
     fn round(&mut self, value: f64, decimals: usize, binary: bool) -> bool {
         let value = if value.is_finite() { value } else { 0.0 };
         let negative = value.is_sign_negative() && value != 0.0;

@@ -22,7 +22,7 @@ use crate::number::NumberWriter;
 use crate::value::Value;
 
 pub use crate::engine::VarState;
-pub use crate::interp::{MAX_TEXT_BYTES, TEXT_BUDGET, text_budget_error};
+pub use crate::interp::{MAX_TEXT_BYTES, NON_FINITE, TEXT_BUDGET, non_finite_error, text_budget_error};
 
 /// Runs the script functions of one post for one run.
 pub trait ScriptHost {

@@ -46,7 +46,8 @@ function createFormat(props, decimalMark) {
     function format(value) {
         var v = Number(value) * scale;
         if (!isFinite(v)) {
-            v = 0;
+            // No controller reads NaN or Infinity: the post stops here.
+            throw new RangeError("format() was given " + value + ", which is not a finite number");
         }
         var r = digits(Math.abs(v));
         var fracText = r.frac;

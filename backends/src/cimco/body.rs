@@ -354,11 +354,11 @@ impl Printer<'_> {
             }
             Expr::Local(k) => name(&self.local(*k)?),
             Expr::Global(g) => self.global(g.index())?,
-            Expr::FormatVar { var, value } => {
+            Expr::FormatVar { var, value, .. } => {
                 let v = self.number(value)?;
                 method(name(&self.var(var.index())?), "format", vec![v])
             }
-            Expr::Format { format, value } => {
+            Expr::Format { format, value, .. } => {
                 let f = self
                     .post
                     .formats

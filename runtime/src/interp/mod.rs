@@ -6,7 +6,7 @@
 //! post never hangs.
 
 use postc_ir::{
-    BinaryOp, Builtin, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, UnaryOp, ValueSource, VarId,
+    BinaryOp, Builtin, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, Span, UnaryOp, ValueSource, VarId,
 };
 
 pub(crate) mod ops;
@@ -43,6 +43,23 @@ pub fn text_budget_error(len: usize) -> Diagnostic {
     .note("no output is written; a post writes its program block by block and never needs text this long")
 }
 
+/// The code of a value that is not a finite number given to a format.
+pub const NON_FINITE: &str = "RT032";
+
+/// The error of a value that is not a finite number given to a format,
+/// at the post text that formats it.
+#[cold]
+pub fn non_finite_error(value: f64, span: Option<Span>) -> Box<Diagnostic> {
+    let what = if value.is_nan() { "NaN (not a number)" } else { "an infinite number" };
+    let d = Diagnostic::error(NON_FINITE, format!("the post formats {what} as a number word"))
+        .note("no output is written: a word no controller reads, or a 0 in its place, would move the machine where the post never meant")
+        .help("a division by zero, the square root of a negative number, a key missing from a table, `undefined` or text that is not a number gives NaN or infinity; check the value before formatting it");
+    Box::new(match span {
+        Some(s) => d.at(s, "this value is not a finite number"),
+        None => d,
+    })
+}
+
 /// Calls nest at most this deep.
 const MAX_DEPTH: usize = 200;
 
@@ -64,6 +81,16 @@ pub const MAX_TEXT_BYTES: usize = 16 << 20;
 const TEXT_STEP_BYTES: usize = 256;
 
 impl Engine<'_> {
+    /// Fails at `span` when a format of this thread was given a value that
+    /// is not a finite number since the last look.
+    #[inline(always)]
+    pub(crate) fn finite(&self, span: Option<Span>) -> Result<()> {
+        match crate::number::take_non_finite() {
+            None => Ok(()),
+            Some(v) => Err(non_finite_error(v, span)),
+        }
+    }
+
     /// Runs statements with a frame of locals.
     pub(crate) fn exec(&mut self, stmts: &[Stmt], frame: &mut Vec<Value>) -> Result<Flow> {
         // Every statement costs one step. The steps of a block are counted
@@ -84,7 +111,7 @@ impl Engine<'_> {
                     // `x = xOutput.format(vx)`, a handler's commonest line,
                     // costs no pass through `eval`.
                     let v = match e {
-                        Expr::FormatVar { var, value } => self.format_var_call(*var, value, frame)?,
+                        Expr::FormatVar { var, value, span } => self.format_var_call(*var, value, *span, frame)?,
                         _ => self.eval(e, frame)?,
                     };
                     match frame.get_mut(i.index()) {
@@ -152,7 +179,10 @@ impl Engine<'_> {
                         t.origin = Some(*span);
                     }
                 }
-                Stmt::Line { pieces, .. } => self.write_line_in(pieces, frame)?,
+                Stmt::Line { pieces, span } => {
+                    self.write_line_in(pieces, frame)?;
+                    self.finite(*span)?;
+                }
                 Stmt::Write(e) => {
                     let v = self.eval(e, frame)?;
                     self.write_blocks(&v.to_text());
@@ -352,9 +382,10 @@ impl Engine<'_> {
             match piece {
                 Piece::Text(bytes) => push_short(&mut self.out.buf, bytes),
                 Piece::Var(id) => self.write_var(*id),
-                Piece::Expr(Expr::FormatVar { var, value }) => {
+                Piece::Expr(Expr::FormatVar { var, value, span }) => {
                     let v = self.eval(value, frame)?;
                     self.write_assigned(*var, v);
+                    self.finite(*span)?;
                 }
                 Piece::Expr(e) => {
                     let v = self.eval(e, frame)?;
@@ -578,11 +609,12 @@ impl Engine<'_> {
             Expr::Quantity(q) => self.quantity(*q),
             Expr::Var(id) => self.var_value(*id),
             Expr::Previous(id) => self.vars[id.index()].previous.clone(),
-            Expr::FormatVar { var, value } => self.format_var(*var, value, frame)?,
-            Expr::Format { format, value } => {
+            Expr::FormatVar { var, value, span } => self.format_var(*var, value, *span, frame)?,
+            Expr::Format { format, value, span } => {
                 let n = self.eval(value, frame)?.num();
                 let mut buf = Vec::new();
                 self.writers[format.index()].write(n, &mut buf);
+                self.finite(*span)?;
                 Value::Text(Text::from_bytes(&buf))
             }
             Expr::Unary(op, a) => {
@@ -637,7 +669,7 @@ impl Engine<'_> {
             }
             Expr::Choose(c, a, b) => match if self.test(c, frame)? { &**a } else { &**b } {
                 // `getFeedrate`'s choice of two formats: formatted here.
-                Expr::FormatVar { var, value } => self.format_var(*var, value, frame)?,
+                Expr::FormatVar { var, value, span } => self.format_var(*var, value, *span, frame)?,
                 pick => self.eval(pick, frame)?,
             },
             Expr::Call(f, args) => {
@@ -709,25 +741,33 @@ impl Engine<'_> {
     /// [`Self::format_var`] as a call of its own: exec's local store calls
     /// it, and stays small.
     #[inline(never)]
-    fn format_var_call(&mut self, var: VarId, value: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
-        self.format_var(var, value, frame)
+    fn format_var_call(
+        &mut self,
+        var: VarId,
+        value: &Expr,
+        span: Option<Span>,
+        frame: &mut Vec<Value>,
+    ) -> Result<Value> {
+        self.format_var(var, value, span, frame)
     }
 
     /// The text of a value formatted through a variable
     /// ([`Expr::FormatVar`]).
     #[inline(always)]
-    fn format_var(&mut self, var: VarId, value: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
+    fn format_var(&mut self, var: VarId, value: &Expr, span: Option<Span>, frame: &mut Vec<Value>) -> Result<Value> {
         // A number the machine knows needs no value made first, nor does
         // one read back from a word (a field post's feed).
-        if let Some(n) = self.known_number(value) {
-            return Ok(self.format_number_through_var(var, n));
-        }
-        if let Expr::ParseFloatFrom { value: text, from } = value {
+        let word = if let Some(n) = self.known_number(value) {
+            self.format_number_through_var(var, n)
+        } else if let Expr::ParseFloatFrom { value: text, from } = value {
             let n = self.read_back(text, *from, frame)?;
-            return Ok(self.format_number_through_var(var, n));
-        }
-        let v = self.eval(value, frame)?;
-        Ok(self.format_through_var(var, v))
+            self.format_number_through_var(var, n)
+        } else {
+            let v = self.eval(value, frame)?;
+            self.format_through_var(var, v)
+        };
+        self.finite(span)?;
+        Ok(word)
     }
 
     /// The number `parseFloat(text.substring(from))` reads from the text of
@@ -746,10 +786,11 @@ impl Engine<'_> {
         // A word of a number formatted through a variable (a field post's
         // feed): read from the word formatted as a value; a word kept by a
         // variable that always prints is read once.
-        if let Expr::FormatVar { var, value } = chosen
+        if let Expr::FormatVar { var, value, span } = chosen
             && let Some(n) = self.known_number(value)
         {
             let word = self.format_number_through_var(*var, n);
+            self.finite(*span)?;
             if let Some(kept) = self.vars[var.index()].kept.as_mut().filter(|k| k.bits == n.to_bits()) {
                 return Ok(match kept.read {
                     Some((at, read)) if at == from => read,
@@ -792,13 +833,14 @@ impl Engine<'_> {
     /// formatted there, a choice chooses; any other value as its text.
     fn text_into(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut Vec<u8>) -> Result<()> {
         match e {
-            Expr::FormatVar { var, value } => {
+            Expr::FormatVar { var, value, span } => {
                 if let Some(n) = self.known_number(value) {
                     self.format_number_into(*var, n, buf);
-                    return Ok(());
+                } else {
+                    let v = self.eval(value, frame)?;
+                    self.format_into(*var, v, buf);
                 }
-                let v = self.eval(value, frame)?;
-                self.format_into(*var, v, buf);
+                self.finite(*span)?;
             }
             Expr::Choose(c, a, b) => {
                 let pick = if self.test(c, frame)? { a } else { b };
@@ -937,7 +979,7 @@ impl Engine<'_> {
             match piece {
                 Piece::Text(bytes) => push_short(&mut self.out.buf, bytes),
                 Piece::Var(id) => self.write_var(*id),
-                Piece::Expr(Expr::FormatVar { var, value }) => {
+                Piece::Expr(Expr::FormatVar { var, value, span }) => {
                     let n = match &**value {
                         Expr::Quantity(q) if !q.is_text() && *q != Quantity::BlockNumber => {
                             match self.machine.number(*q) {
@@ -961,12 +1003,14 @@ impl Engine<'_> {
                                 Value::Num(n) => n,
                                 v => {
                                     self.write_assigned(*var, v);
+                                    self.finite(*span)?;
                                     continue;
                                 }
                             },
                         },
                     };
                     self.write_number_var(*var, n);
+                    self.finite(*span)?;
                 }
                 Piece::Expr(Expr::Local(i)) if matches!(frame.get(i.index()), Some(Value::Text(_))) => {
                     if let Some(Value::Text(t)) = frame.get(i.index()) {

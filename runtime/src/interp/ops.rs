@@ -267,6 +267,10 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
 /// VB-style picture formats: `0.000` (fixed decimals), `#.###` (trimmed),
 /// `0000` (zero-padded integer).
 fn format_picture(v: f64, picture: &str) -> String {
+    if !v.is_finite() {
+        crate::number::report_non_finite(v);
+        return String::new();
+    }
     let (int_pic, frac_pic) = picture.split_once('.').unwrap_or((picture, ""));
     let fixed = frac_pic.chars().filter(|&c| c == '0').count();
     let optional = frac_pic.chars().filter(|&c| c == '#').count();

@@ -71,7 +71,25 @@ fn binary_rounding_is_javascripts_to_fixed() {
     assert_eq!(binary(2, 1e13 + 0.125), "10000000000000.13");
     assert_eq!(binary(3, 123456789012.0005), "123456789012.001");
     assert_eq!(binary(3, 123456789012.0004), "123456789012.000");
-    assert_eq!(binary(1, f64::NAN), "0.0");
+}
+
+/// A value that is not a finite number prints nothing and is reported.
+#[test]
+fn values_that_are_not_finite_print_nothing_and_are_reported() {
+    assert_eq!(crate::number::take_non_finite(), None);
+    for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert_eq!(binary(1, v), "");
+        assert_eq!(crate::number::take_non_finite().map(f64::to_bits), Some(v.to_bits()));
+        assert_eq!(fmt("1.3", v), "");
+        assert!(crate::number::take_non_finite().is_some());
+    }
+    // A finite value that the multiplier makes infinite too.
+    let f = NumberFormat { decimals: 1, multiplier: 1e308, ..NumberFormat::default() };
+    let mut out = Vec::new();
+    NumberWriter::new(&f).write(10.0, &mut out);
+    assert!(out.is_empty() && crate::number::take_non_finite() == Some(10.0));
+    assert_eq!(fmt("1.3", 1.0), "1.000");
+    assert_eq!(crate::number::take_non_finite(), None);
 }
 
 #[test]

@@ -64,8 +64,8 @@ pub fn expr(e: Expr) -> Expr {
                 None => Expr::Choose(Box::new(c), Box::new(expr(*a)), Box::new(expr(*b))),
             }
         }
-        Expr::FormatVar { var, value } => Expr::FormatVar { var, value: Box::new(expr(*value)) },
-        Expr::Format { format, value } => Expr::Format { format, value: Box::new(expr(*value)) },
+        Expr::FormatVar { var, value, span } => Expr::FormatVar { var, value: Box::new(expr(*value)), span },
+        Expr::Format { format, value, span } => Expr::Format { format, value: Box::new(expr(*value)), span },
         Expr::Call(f, args) => Expr::Call(f, args.into_iter().map(expr).collect()),
         Expr::Builtin(b, args) => Expr::Builtin(b, args.into_iter().map(expr).collect()),
         other => other,

@@ -41,6 +41,11 @@ use crate::engine::Engine;
 
 type Result<T> = std::result::Result<T, Box<Diagnostic>>;
 
+/// Events held for the header are at most this many, with at most this
+/// much text; past either the program starts with what it knows.
+const MAX_HELD: usize = 10_000;
+const MAX_HELD_BYTES: usize = 1 << 20;
+
 /// The kind of the last move printed, for `FIRST_` sections.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Family {
@@ -72,6 +77,11 @@ pub struct SectionDispatch {
     drill: Option<DrillCycle>,
     /// Tape splitting: the current part ends before the next block.
     split_pending: bool,
+    /// Inserts, comments, coolant and compensation that came before the
+    /// program started, and the length of their text: run after the
+    /// header, which waits for the first tool.
+    held: Vec<Event>,
+    held_bytes: usize,
     /// Formats of the X and Y variables, to know the printed points.
     xy_formats: [Option<postc_ir::FormatId>; 2],
     exact_arcs: bool,
@@ -92,6 +102,8 @@ impl SectionDispatch {
             spindle_on: false,
             drill: None,
             split_pending: false,
+            held: Vec::new(),
+            held_bytes: 0,
             xy_formats: [format_of(Quantity::X), format_of(Quantity::Y)],
             exact_arcs: exact_arcs || eng.post.options.exact_arcs,
         }
@@ -101,6 +113,18 @@ impl SectionDispatch {
     pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
         check_finite(eng, event)?;
         match event {
+            // Text, coolant and compensation before the first tool or move
+            // wait for the header, which must print the first tool (an APT
+            // file's INSERT and COOLNT before its LOADTL); they print after
+            // it, in their order.
+            Event::Insert(_) | Event::Comment(_) | Event::Coolant(_) | Event::CutterComp(_)
+                if !self.started && self.held.len() < MAX_HELD && self.held_bytes < MAX_HELD_BYTES =>
+            {
+                if let Event::Insert(t) | Event::Comment(t) = event {
+                    self.held_bytes += t.text.len();
+                }
+                self.held.push(event.clone());
+            }
             Event::Job(job) => {
                 if self.started {
                     eng.warn_once(
@@ -169,6 +193,14 @@ impl SectionDispatch {
                 // SPINDLE_ON prints when the spindle starts, or runs on at a new speed.
                 if self.started && (!self.spindle_on || changed) && !eng.machine.tool.jet {
                     self.spindle_on = eng.run_section(Section::SpindleOn)?;
+                    if !self.spindle_on && changed {
+                        unwritten(
+                            eng,
+                            "a new spindle speed",
+                            "the spindle runs on at the speed it had",
+                            Section::SpindleOn,
+                        );
+                    }
                 }
             }
             Event::SpindleOff => {
@@ -191,15 +223,20 @@ impl SectionDispatch {
                 eng.run_section(Section::JetToolPower)?;
             }
             Event::Coolant(_) => {
-                if self.started {
-                    eng.run_section(Section::Coolant)?;
+                if self.started && !eng.run_section(Section::Coolant)? {
+                    unwritten(eng, "a coolant change", "the coolant stays as it was", Section::Coolant);
                 }
             }
             Event::CutterComp(c) => {
                 let tool = &eng.machine.tool;
                 eng.machine.comp_register = Some(f64::from(c.register.or(tool.diameter_offset).unwrap_or(tool.number)));
-                if self.started {
-                    eng.run_section(Section::CutterComp)?;
+                if self.started && !eng.run_section(Section::CutterComp)? {
+                    unwritten(
+                        eng,
+                        "cutter compensation",
+                        "the machine cuts on the tool's centre line, one radius off the part",
+                        Section::CutterComp,
+                    );
                 }
             }
             Event::DrillCycle(c) => {
@@ -225,17 +262,24 @@ impl SectionDispatch {
             }
             Event::Insert(t) => {
                 self.ensure_started(eng)?;
-                eng.machine.comment.clone_from(&t.text);
-                if !eng.run_section(Section::Insert)? {
-                    let text = std::mem::take(&mut eng.machine.comment);
-                    eng.write_blocks(&text);
-                    eng.machine.comment = text;
-                }
+                self.insert(eng, &t.text)?;
             }
             Event::Command(_) => {}
             Event::End => self.finish(eng)?,
             // Never handed to posts (`run` skips it): the moves carry the feed.
             Event::FeedRate(_) => {}
+        }
+        Ok(())
+    }
+
+    /// Writes an insert's text: through INSERT when the post has it, else as it is.
+    fn insert(&mut self, eng: &mut Engine, text: &str) -> Result<()> {
+        eng.machine.comment.clear();
+        eng.machine.comment.push_str(text);
+        if !eng.run_section(Section::Insert)? {
+            let text = std::mem::take(&mut eng.machine.comment);
+            eng.write_blocks(&text);
+            eng.machine.comment = text;
         }
         Ok(())
     }
@@ -293,6 +337,10 @@ impl SectionDispatch {
         eng.run_section(Section::Header)?;
         self.spindle_on = Self::spindle_tool(eng) && eng.run_section(Section::SpindleOn)?;
         self.initial_rapid = true;
+        self.held_bytes = 0;
+        for held in std::mem::take(&mut self.held) {
+            self.event(eng, &held)?;
+        }
         Ok(())
     }
 
@@ -413,10 +461,28 @@ impl SectionDispatch {
 
     fn dwell(&mut self, eng: &mut Engine) -> Result<()> {
         if !eng.run_section(Section::DwellMove)? {
-            eng.warn_once(Diagnostic::warning("RT010", "the post has no DWELL_MOVE section, so dwells are skipped"));
+            eng.warn_once(
+                Diagnostic::warning("RT010", "the post has no DWELL_MOVE section, so dwells are skipped")
+                    .at(eng.event_span, "this dwell (the first of them) is skipped")
+                    .help("add a `begin DWELL_MOVE` section (`onDwell()` in a JavaScript post)"),
+            );
         }
         Ok(())
     }
+}
+
+/// Warns, once for each kind, that an event which changes how the tool
+/// cuts reached a post with no handler (`section`) to write it.
+fn unwritten(eng: &mut Engine, what: &str, consequence: &str, section: Section) {
+    eng.warn_once(
+        Diagnostic::warning(
+            "RT035",
+            format!("the toolpath asks for {what} here, and the post has no way to write it: {consequence}"),
+        )
+        .at(eng.event_span, "this event (the first of its kind) is not written")
+        .note(format!("the post has no {} handler", section.name()))
+        .help("post with a post that writes it, or set it at the machine by hand"),
+    );
 }
 
 /// A longhand peck cycle drills a hole in at most this many pecks.

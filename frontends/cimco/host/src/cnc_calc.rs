@@ -33,16 +33,16 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn(names::FORMAT_REF, |id: i64| FmtRef(id as u16));
     let s = state.clone();
     engine.register_fn(names::VAR_FORMAT, move |id: i64, v: Dynamic| {
-        text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v)))
+        finite(text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v))))
     });
     let s = state.clone();
     engine.register_fn(names::VAR_LAST, move |id: i64| num(last(&s.borrow(), id as u16)));
     let s = state.clone();
     engine.register_fn(names::FORMAT_FORMAT, move |id: i64, v: Dynamic| {
-        text(format_with(&s.borrow(), id as u16, to_number(&v)))
+        finite(text(format_with(&s.borrow(), id as u16, to_number(&v))))
     });
     let s = state.clone();
-    engine.register_fn(names::FEEDRATE, move |m: Dynamic| text(feedrate(&mut s.borrow_mut(), &m)));
+    engine.register_fn(names::FEEDRATE, move |m: Dynamic| finite(text(feedrate(&mut s.borrow_mut(), &m))));
     let s = state.clone();
     engine.register_fn(names::COMPENSATION, move || {
         num(match s.borrow().ctx.comp {
@@ -98,6 +98,24 @@ fn format_with(st: &State, id: u16, v: f64) -> String {
     String::from_utf8_lossy(&buf).into_owned()
 }
 
+/// A value that is not a finite number, thrown by a format: the host
+/// reports it as the runtime does (`RT032`) at the JavaScript line.
+#[derive(Clone, Copy, Debug)]
+pub struct NonFinite(pub f64);
+
+fn non_finite(v: f64) -> Box<rhai::EvalAltResult> {
+    Box::new(rhai::EvalAltResult::ErrorRuntime(Dynamic::from(NonFinite(v)), rhai::Position::NONE))
+}
+
+/// The formatted word, or the error of a format given a value that is not
+/// a finite number.
+fn finite(word: Dynamic) -> R {
+    match postc_runtime::number::take_non_finite() {
+        None => Ok(word),
+        Some(v) => Err(non_finite(v)),
+    }
+}
+
 /// `format`, `getLast` and `reset` of output variables and `format` of
 /// formats, whichever way
 /// they were made.
@@ -105,7 +123,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
     let a0 = || args.first().map_or(f64::NAN, to_number);
     if let Some(VarRef(id)) = o.clone().try_cast::<VarRef>() {
         return Some(match name {
-            "format" => Ok(text(format_var(&mut state.borrow_mut(), id, a0()))),
+            "format" => finite(text(format_var(&mut state.borrow_mut(), id, a0()))),
             "getLast" => Ok(num(last(&state.borrow(), id))),
             "reset" => {
                 if let Some(v) = state.borrow_mut().vars.get_mut(id as usize) {
@@ -118,7 +136,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
     }
     if let Some(FmtRef(id)) = o.clone().try_cast::<FmtRef>() {
         return Some(match name {
-            "format" => Ok(text(format_with(&state.borrow(), id, a0()))),
+            "format" => finite(text(format_with(&state.borrow(), id, a0()))),
             _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
         });
     }
@@ -127,7 +145,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
             "format" => {
                 let mut buf = Vec::new();
                 w.write(a0(), &mut buf);
-                Ok(text(String::from_utf8_lossy(&buf).into_owned()))
+                finite(text(String::from_utf8_lossy(&buf).into_owned()))
             }
             _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
         });
@@ -140,6 +158,9 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
                 let value = a0();
                 let mut buf = var.prefix.as_bytes().to_vec();
                 var.writer.write(value, &mut buf);
+                if let Some(v) = postc_runtime::number::take_non_finite() {
+                    return Some(Err(non_finite(v)));
+                }
                 let t = String::from_utf8_lossy(&buf).into_owned();
                 var.last_value = value;
                 let same = !var.force && var.last_text.as_ref().is_some_and(|(l, e)| *e == epoch && *l == t);

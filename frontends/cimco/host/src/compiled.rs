@@ -209,6 +209,9 @@ impl Compiled {
                 ),
             )
             .note("no output is written"),
+            EvalAltResult::ErrorRuntime(v, _) if let Some(crate::cnc_calc::NonFinite(n)) = v.clone().try_cast() => {
+                return *runtime::non_finite_error(n, span);
+            }
             EvalAltResult::ErrorRuntime(v, _) => {
                 Diagnostic::error("RT023", format!("the post stopped with an error: {}", values::to_string(v)))
             }

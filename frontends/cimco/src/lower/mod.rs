@@ -367,11 +367,16 @@ fn functions(
                         vec![Stmt::Return(Some(Expr::FormatVar {
                             var: feed_rev_var,
                             value: Box::new(Expr::Quantity(Quantity::Feed)),
+                            span: None,
                         }))],
                     )],
                     otherwise: vec![],
                 },
-                Stmt::Return(Some(Expr::FormatVar { var: feed_var, value: Box::new(Expr::Quantity(Quantity::Feed)) })),
+                Stmt::Return(Some(Expr::FormatVar {
+                    var: feed_var,
+                    value: Box::new(Expr::Quantity(Quantity::Feed)),
+                    span: None,
+                })),
             ]),
             span: None,
             why_script: None,

@@ -571,8 +571,12 @@ fn value(e: &Expr, fr: &Frame) -> Option<Expr> {
             Binding::Value(v) => v.clone(),
             Binding::Region(_) => return None,
         },
-        Expr::FormatVar { var, value: v } => Expr::FormatVar { var: *var, value: Box::new(value(v, fr)?) },
-        Expr::Format { format, value: v } => Expr::Format { format: *format, value: Box::new(value(v, fr)?) },
+        Expr::FormatVar { var, value: v, span } => {
+            Expr::FormatVar { var: *var, value: Box::new(value(v, fr)?), span: *span }
+        }
+        Expr::Format { format, value: v, span } => {
+            Expr::Format { format: *format, value: Box::new(value(v, fr)?), span: *span }
+        }
         Expr::Unary(op, a) => Expr::Unary(*op, Box::new(value(a, fr)?)),
         Expr::Binary(op, a, b) => Expr::Binary(*op, Box::new(value(a, fr)?), Box::new(value(b, fr)?)),
         Expr::Choose(c, a, b) => {

@@ -84,14 +84,14 @@ impl Native<'_, '_> {
                 return match (b, name, args.len()) {
                     (Binding::Var(var), "format", 1) => {
                         let v = self.expr(&args[0])?;
-                        Ok(Ir::FormatVar { var, value: Box::new(to_number(v)) })
+                        Ok(Ir::FormatVar { var, value: Box::new(to_number(v)), span: Some(at) })
                     }
                     (Binding::Var(var), "getLast", _) if args.iter().all(is_pure) => {
                         Ok(Ir::Binary(IrBin::Add, Box::new(Ir::Number(0.0)), Box::new(Ir::Var(var))))
                     }
                     (Binding::Format(format), "format", 1) => {
                         let v = self.expr(&args[0])?;
-                        Ok(Ir::Format { format, value: Box::new(to_number(v)) })
+                        Ok(Ir::Format { format, value: Box::new(to_number(v)), span: Some(at) })
                     }
                     _ => Err(why(at, format!("calls `{o}.{name}()` with {} argument(s)", args.len()))),
                 };
