@@ -448,7 +448,8 @@ impl<'p> Engine<'p> {
             // A line of empty texts only, or a comment (its text starts
             // with `(`, `;` or `'`), goes without a word: it changes
             // nothing on the part.
-            let comment = matches!(self.out.buf[start..].iter().find(|b| !b.is_ascii_whitespace()), Some(b'(' | b';' | b'\''));
+            let comment =
+                matches!(self.out.buf[start..].iter().find(|b| !b.is_ascii_whitespace()), Some(b'(' | b';' | b'\''));
             self.out.buf.truncate(start);
             self.block.printed = false;
             if missing.is_empty() || comment {
