@@ -361,6 +361,10 @@ fn date_and_time_follow_the_reproducibility_rule() {
     );
     // SOURCE_DATE_EPOCH (1767323096 is 2026-01-02 03:04:56 UTC, by `date -u -d @1767323096`).
     assert!(made_line(d, &[], Some("1767323096")).ends_with("on 2026-01-02 03:04 )"));
-    // --set wins over SOURCE_DATE_EPOCH.
+    // A job's date without a time: the same.
+    let dated = std::fs::read_to_string(d.join("job.ron")).unwrap().replace("time:\"12:00:00\",", "");
+    std::fs::write(d.join("nodate.ron"), dated).unwrap();
+    assert!(made_line(d, &[], None).ends_with("on 2026-01-01 00:00 )"));
+    // --set wins over the job and over SOURCE_DATE_EPOCH.
     assert!(made_line(d, &["--set", "date=2027-05-06"], Some("1767323096")).ends_with("on 2027-05-06 00:00 )"));
 }

@@ -30,9 +30,15 @@ fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
     PENDING.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-fn register(path: &Path) {
+/// Creates a temporary file with `create` and adds it to the pending list,
+/// holding the list meanwhile, and with the signal handler installed
+/// first: a signal finds the file either not yet created or listed.
+fn created(create: impl FnOnce() -> io::Result<tempfile::NamedTempFile>) -> io::Result<tempfile::NamedTempFile> {
     on_signal_remove_pending();
-    pending().push(path.to_path_buf());
+    let mut list = pending();
+    let file = create()?;
+    list.push(file.path().to_path_buf());
+    Ok(file)
 }
 
 fn unregister(list: &mut Vec<PathBuf>, path: &Path) {
@@ -87,8 +93,7 @@ impl Temp {
             use std::os::unix::fs::PermissionsExt;
             builder.permissions(Permissions::from_mode(0o666));
         }
-        let file = builder.tempfile_in(dir).map_err(|e| why_not_created(dir, e))?;
-        register(file.path());
+        let file = created(|| builder.tempfile_in(dir)).map_err(|e| why_not_created(dir, e))?;
         let new_mode = file.as_file().metadata()?.permissions();
         // Private while it is written; the output's mode is set when it is committed.
         #[cfg(unix)]
@@ -101,8 +106,7 @@ impl Temp {
 
     /// A scratch file in the system's temporary folder, never committed.
     pub fn scratch() -> io::Result<Temp> {
-        let file = tempfile::NamedTempFile::new()?;
-        register(file.path());
+        let file = created(tempfile::NamedTempFile::new)?;
         Ok(Temp { file: Some(file), new_mode: None })
     }
 
