@@ -141,7 +141,7 @@ fn explain_prints_a_code_and_refuses_an_unknown_one() {
 }
 
 #[test]
-fn a_denied_runtime_warning_removes_the_written_program() {
+fn a_denied_runtime_warning_writes_no_program() {
     let dir = setup();
     // The post has no DWELL_MOVE section: drilling with dwells warns RT010 while posting.
     let tp = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/toolpaths/drill_mm.ron").display().to_string();
@@ -150,8 +150,14 @@ fn a_denied_runtime_warning_removes_the_written_program() {
     assert!(stderr(&warned).contains("warning[RT010]"), "{}", stderr(&warned));
     assert!(dir.path().join("out.tap").exists());
 
+    // The denied run writes nothing: the file there before is left as it was.
+    std::fs::write(dir.path().join("out.tap"), "before").unwrap();
     let denied = postc(dir.path(), &["post", "--allow", "PP027", "--deny", "RT", "post/w.pp", &tp, "-o", "out.tap"]);
     assert_eq!(denied.status.code(), Some(1), "{}", stderr(&denied));
     assert!(stderr(&denied).contains("error[RT010]"), "{}", stderr(&denied));
+    assert_eq!(std::fs::read(dir.path().join("out.tap")).unwrap(), b"before");
+    std::fs::remove_file(dir.path().join("out.tap")).unwrap();
+    let denied = postc(dir.path(), &["post", "--allow", "PP027", "--deny", "RT", "post/w.pp", &tp, "-o", "out.tap"]);
+    assert_eq!(denied.status.code(), Some(1), "{}", stderr(&denied));
     assert!(!dir.path().join("out.tap").exists());
 }

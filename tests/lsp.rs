@@ -305,3 +305,36 @@ fn the_lints_show_in_the_editor() {
     assert!(!d.iter().any(|d| d["code"] == "LN001"), "{d:?}");
     assert_eq!(find(&d, "PP027")["severity"], 1, "{d:?}");
 }
+
+/// A frame that does not read is answered with a JSON-RPC error (JSON-RPC
+/// 2.0, section 5.1: -32700 parse error, -32600 invalid request, id null
+/// when it cannot be read) and the server goes on with the next frame.
+#[test]
+fn a_bad_frame_is_answered_and_the_server_goes_on() {
+    let mut c = Client::start();
+    let raw = |c: &mut Client, bytes: &[u8]| {
+        c.stdin.write_all(bytes).unwrap();
+        c.stdin.flush().unwrap();
+    };
+    // Before initialize, and after it.
+    raw(&mut c, b"Content-Length: 5\r\n\r\n{bad}");
+    let answer = c.recv();
+    assert_eq!(answer["error"]["code"], -32700, "{answer}");
+    assert_eq!(answer["id"], Value::Null, "{answer}");
+    c.request("initialize", json!({"processId": null, "rootUri": null, "capabilities": {}}));
+    c.notify("initialized", json!({}));
+    raw(&mut c, b"Content-Length: 5\r\n\r\n{bad}");
+    assert_eq!(c.recv()["error"]["code"], -32700);
+    // JSON that is no JSON-RPC message.
+    raw(&mut c, b"Content-Length: 11\r\n\r\n{\"id\": [1]}");
+    assert_eq!(c.recv()["error"]["code"], -32600);
+    // A header without a length.
+    raw(&mut c, b"Content-Type: x\r\n\r\n");
+    assert_eq!(c.recv()["error"]["code"], -32700);
+    // The server still serves.
+    let hover = c.at("textDocument/hover", "file:///nothing.pp", 0, 0);
+    assert!(hover.is_null() || hover.is_object(), "{hover}");
+    assert_eq!(c.request("shutdown", Value::Null), Value::Null);
+    c.notify("exit", Value::Null);
+    assert!(c.child.wait().unwrap().success());
+}

@@ -1,159 +1,370 @@
-//! Safe output, end to end through the command line: what `postc post`
-//! writes for a job that lacks values a post prints (no tool, no home, no
-//! material), and what it says about toolpath events the post cannot
-//! write. The programs are read by LinuxCNC's `rs274` where it is
-//! installed.
-
-mod support;
+//! The built `postc` keeps the files it is given and the files it writes
+//! safe (docs/outputs.md): an output that is an input is refused before
+//! anything is read or written; outputs get the mode the shell gives a new
+//! file under the same umask, or keep the mode of the file they replace;
+//! a signal leaves no temporary file; a command that fails writes none of
+//! its outputs. Bad input is reported as a professional tool reports it:
+//! a bounded number of diagnostics per file, long lines cut, control
+//! characters escaped, messages that say what is wrong with this input.
+//! Dates and times follow the README's reproducibility rule.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-#[path = "support/rs274.rs"]
-#[allow(dead_code)]
-mod rs274;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn shared(rel: &str) -> PathBuf {
-    root().join("../shared/corpus").join(rel)
-}
-
-fn postc(args: &[&Path]) -> Output {
+fn postc() -> Command {
     Command::new(env!("CARGO_BIN_EXE_postc"))
-        .arg("post")
+}
+
+fn corpus(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus").join(path)
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// A folder with a post (`job.pp`) and a toolpath (`job.ron`) in it.
+fn job_dir() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(corpus("posts/vectric/gcode_mm.pp"), dir.path().join("job.pp")).unwrap();
+    std::fs::copy(corpus("toolpaths/standard.ron"), dir.path().join("job.ron")).unwrap();
+    dir
+}
+
+/// The names in a folder, sorted.
+fn names(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn an_output_that_is_an_input_is_refused_and_nothing_changes() {
+    let dir = job_dir();
+    let d = dir.path();
+    #[cfg(unix)]
+    std::os::unix::fs::symlink("job.pp", d.join("link.nc")).unwrap();
+    let before: Vec<Vec<u8>> = ["job.pp", "job.ron"].iter().map(|f| std::fs::read(d.join(f)).unwrap()).collect();
+    let listing = names(d);
+    let cases: &[&[&str]] = &[
+        &["post", "job.pp", "job.ron", "-o", "job.ron"],
+        &["post", "job.pp", "job.ron", "-o", "job.pp"],
+        &["post", "job.pp", "job.ron", "-o", "./job.pp"],
+        &["post", "job.pp", "job.ron", "-o", "out.nc", "--trace", "job.pp"],
+        &["post", "job.pp", "job.ron", "-o", "out.nc", "--trace", "out.nc"],
+        &["convert", "job.pp", "--to", "cimco", "-o", "job.pp"],
+        #[cfg(unix)]
+        &["post", "job.pp", "job.ron", "-o", "link.nc"],
+    ];
+    for args in cases {
+        let out = postc().current_dir(d).args(*args).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {}", stderr(&out));
+        assert!(stderr(&out).contains("IO012"), "{args:?}: {}", stderr(&out));
+        let after: Vec<Vec<u8>> = ["job.pp", "job.ron"].iter().map(|f| std::fs::read(d.join(f)).unwrap()).collect();
+        assert!(after == before, "{args:?} changed an input");
+        assert_eq!(names(d), listing, "{args:?} left a file");
+    }
+}
+
+/// The mode `sh` gives a new file under `umask` (the outside reference),
+/// and the mode of `file`.
+#[cfg(unix)]
+fn mode(file: &Path) -> u32 {
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::metadata(file).unwrap().permissions().mode() & 0o7777
+}
+
+#[cfg(unix)]
+fn under_umask(umask: &str, dir: &Path, args: &[&str]) -> Output {
+    let mut script = format!("umask {umask}; exec \"$0\"");
+    for i in 1..=args.len() {
+        script.push_str(&format!(" \"${i}\""));
+    }
+    Command::new("sh")
+        .current_dir(dir)
+        .arg("-c")
+        .arg(script)
+        .arg(env!("CARGO_BIN_EXE_postc"))
         .args(args)
-        .env("SOURCE_DATE_EPOCH", "0")
         .output()
-        .expect("postc runs")
+        .unwrap()
 }
 
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
+#[cfg(unix)]
+#[test]
+fn outputs_get_the_umask_mode_or_keep_the_replaced_files_mode() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = job_dir();
+    let d = dir.path();
+    for umask in ["022", "027"] {
+        let probe = d.join(format!("probe-{umask}"));
+        let made =
+            Command::new("sh").current_dir(d).arg("-c").arg(format!("umask {umask}; : > probe-{umask}")).status();
+        assert!(made.unwrap().success());
+        let expected = mode(&probe);
+        let runs: &[&[&str]] = &[
+            &["post", "job.pp", "job.ron", "-o", "new.nc", "--trace", "new.jsonl"],
+            &["convert", "job.pp", "--to", "cimco", "-o", "new.js"],
+            &["toolpath", "gen", "--moves", "10", "-o", "new.ron"],
+        ];
+        for args in runs {
+            let out = under_umask(umask, d, args);
+            assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        }
+        for file in ["new.nc", "new.jsonl", "new.js", "new.ron"] {
+            assert_eq!(mode(&d.join(file)), expected, "{file} under umask {umask}");
+            std::fs::remove_file(d.join(file)).unwrap();
+        }
+    }
+    // A file that is replaced keeps its mode, whatever the umask.
+    let old = d.join("old.nc");
+    std::fs::write(&old, "old").unwrap();
+    std::fs::set_permissions(&old, std::fs::Permissions::from_mode(0o604)).unwrap();
+    let out = under_umask("077", d, &["post", "job.pp", "job.ron", "-o", "old.nc"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(mode(&old), 0o604);
+    assert_ne!(std::fs::read(&old).unwrap(), b"old");
 }
 
-/// The program's lines that hold an address letter with no number after it
-/// (`T M6`, `G43 H`, `TM6`), comments left aside.
-fn bare_addresses(program: &str) -> Vec<String> {
-    program
-        .lines()
-        .filter(|line| {
-            let code = line.split(['(', ';']).next().unwrap_or("").as_bytes();
-            code.iter().enumerate().any(|(i, b)| {
-                b.is_ascii_alphabetic() && !code.get(i + 1).is_some_and(|n| n.is_ascii_digit() || b"+-.".contains(n))
-            })
-        })
-        .map(str::to_string)
-        .collect()
+#[test]
+fn a_failed_trace_writes_no_program() {
+    let dir = job_dir();
+    let d = dir.path();
+    let out = postc()
+        .current_dir(d)
+        .args(["post", "job.pp", "job.ron", "-o", "tr.nc", "--trace", "no/such/t.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("no/such"), "{}", stderr(&out));
+    assert_eq!(names(d), ["job.pp", "job.ron"]);
+    // Both outputs appear together when the run succeeds.
+    let out = postc()
+        .current_dir(d)
+        .args(["post", "job.pp", "job.ron", "-o", "tr.nc", "--trace", "tr.jsonl"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(names(d), ["job.pp", "job.ron", "tr.jsonl", "tr.nc"]);
 }
 
-/// rs274 reads the program with no error (when it is installed).
-fn rs274_reads(program: &str) {
-    if let Some(rs274) = rs274::find() {
-        rs274::run(&rs274, program).unwrap_or_else(|e| panic!("rs274 refuses the program: {e}\n{program}"));
+/// Waits until a `.postc-*.part` file is in `dir`, or the child ends.
+#[cfg(unix)]
+fn wait_for_part(dir: &Path, child: &mut std::process::Child) -> bool {
+    let start = std::time::Instant::now();
+    while start.elapsed() < std::time::Duration::from_secs(120) {
+        if names(dir).iter().any(|n| n.starts_with(".postc-") && n.ends_with(".part")) {
+            return true;
+        }
+        if child.try_wait().unwrap().is_some() {
+            return false;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    false
+}
+
+#[cfg(unix)]
+fn signal(child: &std::process::Child, name: &str) {
+    let sent = Command::new("kill").arg(format!("-{name}")).arg(child.id().to_string()).status().unwrap();
+    assert!(sent.success());
+}
+
+#[cfg(unix)]
+#[test]
+fn a_signal_removes_the_temporary_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // `toolpath gen` of many moves, ended by SIGTERM.
+    let mut child =
+        postc().current_dir(d).args(["toolpath", "gen", "--moves", "50000000", "-o", "big.ron"]).spawn().unwrap();
+    assert!(wait_for_part(d, &mut child), "no temporary file appeared");
+    signal(&child, "TERM");
+    assert_eq!(child.wait().unwrap().code(), Some(143));
+    assert!(names(d).is_empty(), "{:?}", names(d));
+    // `post -o` of a long toolpath, ended by SIGINT.
+    let made = postc().current_dir(d).args(["toolpath", "gen", "--moves", "400000", "-o", "long.jsonl"]).output();
+    assert!(made.unwrap().status.success());
+    let post = corpus("posts/vectric/gcode_mm.pp");
+    let mut child = postc()
+        .current_dir(d)
+        .arg("post")
+        .arg(&post)
+        .args(["long.jsonl", "-o", "long.nc", "--trace", "long.trace.jsonl"])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    assert!(wait_for_part(d, &mut child), "no temporary file appeared");
+    signal(&child, "INT");
+    assert_eq!(child.wait().unwrap().code(), Some(130));
+    assert_eq!(names(d), ["long.jsonl"]);
+}
+
+#[test]
+fn impossible_sizes_are_refused_up_front() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = postc()
+        .current_dir(dir.path())
+        .args(["toolpath", "gen", "--moves", "18446744073709551615", "-o", "huge.ron"])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > std::time::Duration::from_secs(10) {
+            child.kill().unwrap();
+            child.wait().unwrap();
+            panic!("`toolpath gen --moves 18446744073709551615` was still running after 10 s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let mut text = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut text).unwrap();
+    assert!(!status.success());
+    assert!(text.contains("10000000000"), "{text}");
+    assert!(names(dir.path()).is_empty());
+}
+
+/// A Vectric post with `n` lines naming sections that do not exist.
+fn flood_post(n: usize) -> String {
+    let mut text = String::from("POST_NAME = \"flood\"\nUNITS = \"MM\"\n");
+    for i in 0..n {
+        text.push_str(&format!("BEGIN NOSUCH{i}\n"));
+    }
+    text
+}
+
+fn json_count(out: &Output) -> usize {
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    v.as_array().unwrap().len()
+}
+
+#[test]
+fn human_output_stops_after_the_limit_and_json_keeps_every_diagnostic() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(d.join("flood.pp"), flood_post(10_000)).unwrap();
+    let human = postc().current_dir(d).args(["check", "flood.pp"]).output().unwrap();
+    let text = stderr(&human);
+    assert_eq!(text.matches("[PP017]").count(), 50, "the default is 50 per file");
+    assert!(text.contains("9950 more diagnostic(s) about `flood.pp` not shown"), "{}", &text[text.len() - 400..]);
+    assert!(text.len() < 40_000, "{} bytes", text.len());
+    let more = postc().current_dir(d).args(["check", "flood.pp", "--max-diagnostics", "3"]).output().unwrap();
+    assert_eq!(stderr(&more).matches("[PP017]").count(), 3);
+    let all = postc().current_dir(d).args(["check", "flood.pp", "--max-diagnostics", "0"]).output().unwrap();
+    assert_eq!(stderr(&all).matches("[PP017]").count(), 10_000);
+    let json = postc().current_dir(d).args(["check", "flood.pp", "--format", "json"]).output().unwrap();
+    assert_eq!(json_count(&json), 10_000);
+}
+
+#[test]
+fn vcpost_counts_agree() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mut text = String::new();
+    for i in 0..2000 {
+        text.push_str(&format!("Sub S{i}\n  Out \"<X\"\nEnd Sub\n"));
+    }
+    std::fs::write(d.join("flood.VcPost"), text).unwrap();
+    let json = postc().current_dir(d).args(["check", "flood.VcPost", "--format", "json"]).output().unwrap();
+    let listed = json_count(&json);
+    assert_eq!(listed, 2000, "one problem per Sub");
+    let human = postc().current_dir(d).args(["check", "flood.VcPost"]).output().unwrap();
+    let text = stderr(&human);
+    assert!(text.contains(&format!("{listed} error(s)")), "{}", &text[text.len() - 400..]);
+    assert!(text.contains(&format!("{} more diagnostic(s)", listed - 50)), "{}", &text[text.len() - 400..]);
+}
+
+#[test]
+fn long_lines_are_cut_and_control_characters_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // One 5 MB line whose diagnostic spans all of it.
+    std::fs::write(d.join("long.js"), format!("var x = \"{}\n", "a".repeat(5_000_000))).unwrap();
+    let out = postc().current_dir(d).args(["check", "long.js"]).output().unwrap();
+    let text = stderr(&out);
+    assert!(text.contains("JS002") && text.contains('…'), "{text}");
+    assert!(text.len() < 2_000, "{} bytes", text.len());
+    // Bytes of every value, ESC and BEL among them, as a CIMCO post.
+    let mut bytes = Vec::new();
+    let mut x: u32 = 12345;
+    for _ in 0..100_000 {
+        x = x.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        bytes.push((x >> 16) as u8);
+    }
+    bytes.extend_from_slice(b"\x1b[2J\x07");
+    std::fs::write(d.join("noise.js"), &bytes).unwrap();
+    let out = postc().current_dir(d).args(["check", "noise.js"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(!out.stderr.iter().any(|&b| b < 0x20 && b != b'\n'), "raw control bytes on stderr");
+    assert!(out.stderr.len() < 100_000, "{} bytes", out.stderr.len());
+    assert!(stderr(&out).contains('␛'), "ESC shown as its control picture");
+}
+
+#[test]
+fn messages_say_what_is_wrong_with_this_input() {
+    let dir = job_dir();
+    let d = dir.path();
+    // A CL file with a NaN coordinate is CL data with a bad value, not a part program.
+    std::fs::write(d.join("nan.apt"), "PARTNO/NAN\nUNITS/MM\nGOTO/NaN,5,0\nFINI\n").unwrap();
+    let out = postc().current_dir(d).args(["check", "nan.apt"]).output().unwrap();
+    let text = stderr(&out);
+    assert!(text.contains("`NaN` is not a number") && !text.contains("part program"), "{text}");
+    // The two arguments of `post` swapped.
+    let out = postc().current_dir(d).args(["post", "job.ron", "job.pp"]).output().unwrap();
+    let text = stderr(&out);
+    assert!(text.contains("the post comes first") && text.contains("postc post job.pp job.ron"), "{text}");
+    let out = postc().current_dir(d).args(["inspect", "job.ron"]).output().unwrap();
+    assert!(stderr(&out).contains("is a toolpath (postc's native events), not a post"), "{}", stderr(&out));
+    // A loop of symbolic links.
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink("b.pp", d.join("a.pp")).unwrap();
+        std::os::unix::fs::symlink("a.pp", d.join("b.pp")).unwrap();
+        let out = postc().current_dir(d).args(["check", "a.pp"]).output().unwrap();
+        assert!(stderr(&out).contains("loop of symbolic links"), "{}", stderr(&out));
+        std::os::unix::fs::symlink("gone.pp", d.join("dangling.pp")).unwrap();
+        let out = postc().current_dir(d).args(["check", "dangling.pp"]).output().unwrap();
+        assert!(stderr(&out).contains("a symbolic link to `gone.pp`, which does not exist"), "{}", stderr(&out));
     }
 }
 
-#[test]
-fn the_default_post_writes_a_correct_program_for_a_job_with_no_tool() {
-    let dir = tempfile::tempdir().unwrap();
-    let empty = dir.path().join("empty.apt");
-    std::fs::write(&empty, "").unwrap();
-    let out = postc(&[&empty]);
-    assert!(out.status.success(), "{}", text(&out.stderr));
-    let program = text(&out.stdout);
-    assert_eq!(bare_addresses(&program), Vec::<String>::new(), "{program}");
-    assert!(!program.contains("(  )") && !program.contains("( tools:  )"), "empty header comments:\n{program}");
-    rs274_reads(&program);
-    // The tool lines left out are named, each at its post line.
-    let stderr = text(&out.stderr);
-    assert!(stderr.contains("RT033") && stderr.contains("\"T[T] M6\"") && stderr.contains("\"G43 H[T]\""), "{stderr}");
-}
-
-#[test]
-fn the_header_waits_for_the_first_tool_of_a_cl_file() {
-    // boss.apt writes an INSERT before its LOAD/TOOL: the header still
-    // loads tool 1 and starts the spindle at the CL file's speed.
-    let boss = shared("apt/aamorim1913__AptPostProcessor/boss.apt");
-    if !boss.is_file() {
-        assert!(std::env::var_os("CI").is_none(), "../shared is missing under CI");
-        return;
+/// The `( made by ... on DATE TIME )` line gcode_mm.pp writes.
+fn made_line(d: &Path, extra: &[&str], epoch: Option<&str>) -> String {
+    let mut cmd = postc();
+    cmd.current_dir(d).args(["post", "job.pp", "nodate.ron"]).args(extra).env_remove("SOURCE_DATE_EPOCH");
+    if let Some(e) = epoch {
+        cmd.env("SOURCE_DATE_EPOCH", e);
     }
-    let carvera = shared("vectric/MakeraInc__CarveraProfiles/Carvera ATC (mm) (!.cnc).pp");
-    for (post, tool, spindle) in [(None, "T1 M6", "S12000 M3"), (Some(carvera.as_path()), "T1M6", "S12000M3")] {
-        let out = match post {
-            Some(p) => postc(&[p, &boss]),
-            None => postc(&[&boss]),
-        };
-        assert!(out.status.success(), "{}", text(&out.stderr));
-        let program = text(&out.stdout);
-        let first_move = program.lines().position(|l| l.starts_with("G0X")).expect("a move");
-        let head: Vec<&str> = program.lines().take(first_move).collect();
-        assert!(head.contains(&tool) && head.contains(&spindle), "{post:?}:\n{program}");
-        assert!(!program.lines().any(|l| l == "T M6" || l == "TM6" || l.starts_with("S0")), "{program}");
-        // The CL file's INSERTs are its own verbatim text, not G-code.
-        let gcode: Vec<&str> =
-            program.lines().filter(|l| !l.starts_with("[HOLDER=") && !l.starts_with("Stock Size")).collect();
-        rs274_reads(&gcode.join("\n"));
-    }
+    let out = cmd.output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8_lossy(&out.stdout).lines().find(|l| l.contains("made by")).unwrap().to_string()
 }
 
 #[test]
-fn a_letter_printed_with_no_value_is_a_warning_at_its_line() {
-    let dir = tempfile::tempdir().unwrap();
-    let post = dir.path().join("t.pp");
-    std::fs::write(
-        &post,
-        "UNITS = \"MM\"\nVAR TOOL_NUMBER = [T|A||1.0]\nVAR Z_HOME_POSITION = [ZH|A|Z|1.3]\nbegin HEADER\n\"G0 Z[ZH] T[T]\"\nbegin RAPID_MOVE\n\"G0 X[X] Y[Y] Z[Z]\"\nbegin FOOTER\n\"M30\"\n",
-    )
-    .unwrap();
-    let job = dir.path().join("j.ron");
-    std::fs::write(
-        &job,
-        "Job(units: Mm, home: (x: 0.0, y: 0.0, z: 20.0))\nToolpathStart()\nRapid(x: 1.0, y: 2.0, z: 5.0)\nEnd\n",
-    )
-    .unwrap();
-    let out = postc(&[&post, &job]);
-    let stderr = text(&out.stderr);
-    assert!(out.status.success(), "{stderr}");
-    assert!(stderr.contains("warning[RT034]") && stderr.contains("address `T`"), "{stderr}");
-    assert!(stderr.contains("t.pp:5:1"), "the warning names the post line: {stderr}");
-}
-
-#[test]
-fn events_the_post_cannot_write_are_warnings_at_the_toolpath_line() {
-    // haas_field.js has no onCompensation; mill.ron turns compensation on
-    // at its line 13: the machine would cut one radius off the part.
-    let post = root().join("corpus/posts/cimco/haas_field.js");
-    let toolpath = root().join("corpus/toolpaths/cimco/mill.ron");
-    let out = postc(&[&post, &toolpath]);
-    let stderr = text(&out.stderr);
-    assert!(out.status.success(), "{stderr}");
-    assert!(stderr.contains("warning[RT035]") && stderr.contains("cutter compensation"), "{stderr}");
-    assert!(stderr.contains("mill.ron:13:1"), "the warning names the toolpath line: {stderr}");
-    // A post that writes it says nothing.
-    let fanuc = root().join("corpus/posts/cimco/fanuc_mill.js");
-    let out = postc(&[&fanuc, &toolpath]);
-    assert!(!text(&out.stderr).contains("RT035"), "{}", text(&out.stderr));
-}
-
-#[test]
-fn formatting_nan_writes_no_file() {
-    let dir = tempfile::tempdir().unwrap();
-    let post = dir.path().join("codes.js");
-    std::fs::write(
-        &post,
-        "var linebreak = \"\\n\";\nvar g = createVariable({prefix: \"G\"}, createFormat({decimals: 0}));\nvar codes = {\"Drilling (G81)\": 81};\nfunction onOpen() { return \"\"; }\nfunction onLinear(x, y, z, m) { return \"\"; }\nfunction onDrillingHeader(name) {\n    return g.format(codes[name]) + \"\\n\";\n}\nfunction onDrillingPoint(x, y) { return \"\"; }\n",
-    )
-    .unwrap();
-    let toolpath = root().join("corpus/toolpaths/drill_mm.ron");
-    let program = dir.path().join("out.nc");
-    let out = postc(&[&post, &toolpath, Path::new("-o"), &program]);
-    let stderr = text(&out.stderr);
-    assert!(!out.status.success() && stderr.contains("error[RT032]"), "{stderr}");
-    assert!(stderr.contains("codes.js:7:"), "{stderr}");
-    assert!(!program.exists(), "no output is written");
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1, "nothing left behind");
+fn date_and_time_follow_the_reproducibility_rule() {
+    let dir = job_dir();
+    let d = dir.path();
+    // The standard job without its date and time.
+    let text = std::fs::read_to_string(d.join("job.ron")).unwrap();
+    let text = text.replace("date:\"2026-01-01\",time:\"12:00:00\",", "");
+    assert!(!text.contains("time:\""));
+    std::fs::write(d.join("nodate.ron"), text).unwrap();
+    // --set date alone: the time is the start of that day, not the clock's.
+    assert!(made_line(d, &["--set", "date=2026-01-01"], None).ends_with("on 2026-01-01 00:00 )"));
+    assert!(
+        made_line(d, &["--set", "date=2026-01-01", "--set", "time=07:30"], None).ends_with("on 2026-01-01 07:30 )")
+    );
+    // SOURCE_DATE_EPOCH (1767323096 is 2026-01-02 03:04:56 UTC, by `date -u -d @1767323096`).
+    assert!(made_line(d, &[], Some("1767323096")).ends_with("on 2026-01-02 03:04 )"));
+    // A job's date without a time: the same.
+    let dated = std::fs::read_to_string(d.join("job.ron")).unwrap().replace("time:\"12:00:00\",", "");
+    std::fs::write(d.join("nodate.ron"), dated).unwrap();
+    assert!(made_line(d, &[], None).ends_with("on 2026-01-01 00:00 )"));
+    // --set wins over the job and over SOURCE_DATE_EPOCH.
+    assert!(made_line(d, &["--set", "date=2027-05-06"], Some("1767323096")).ends_with("on 2027-05-06 00:00 )"));
 }

@@ -193,6 +193,16 @@ fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
             compiled
         }
         Err(e) => {
+            if let Some((start, end)) = first_event(&text) {
+                return Compiled::failed(
+                    Diagnostic::error(
+                        codes::IR001,
+                        format!("`{}` is a toolpath (postc's native events), not a post", path.display()),
+                    )
+                    .at(postc_ir::Span::new(file, start, end), "a toolpath event")
+                    .help("give the post first and the toolpath second: `postc post POST TOOLPATH`; a post as RON is what `postc convert --to ron` writes"),
+                );
+            }
             let offset = line_col_offset(&text, e.span.start.line, e.span.start.col);
             Compiled::failed(
                 Diagnostic::error(codes::IR001, format!("this IR post does not read: {}", e.code))
@@ -200,6 +210,24 @@ fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
             )
         }
     }
+}
+
+/// The byte range of the first line of `text` when it is a toolpath
+/// event (a `.ron` toolpath given where a post belongs).
+fn first_event(text: &str) -> Option<(usize, usize)> {
+    let mut start = 0;
+    for line in text.split_inclusive('\n') {
+        let trimmed = line.trim();
+        if !trimmed.is_empty() && !trimmed.starts_with("//") {
+            let options = ron::Options::default().with_default_extension(
+                ron::extensions::Extensions::IMPLICIT_SOME | ron::extensions::Extensions::UNWRAP_VARIANT_NEWTYPES,
+            );
+            options.from_str::<postc_ir::event::Event>(trimmed).ok()?;
+            return Some((start, start + line.trim_end().len()));
+        }
+        start += line.len();
+    }
+    None
 }
 
 fn line_col_offset(text: &str, line: usize, col: usize) -> usize {
@@ -270,7 +298,14 @@ fn read_head(loader: &dyn SourceLoader, path: &Path) -> Vec<u8> {
 /// ([`ReadAhead`]).
 pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn EventSource>, Diagnostic> {
     if !sources.loader().exists(path) {
-        return Err(Diagnostic::error(codes::IO001, format!("toolpath `{}` does not exist", path.display())));
+        // A path that is there but cannot be followed (a loop of links) says why.
+        let message = match sources.loader().len(path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                format!("cannot open toolpath `{}`: {e}", path.display())
+            }
+            _ => format!("toolpath `{}` does not exist", path.display()),
+        };
+        return Err(Diagnostic::error(codes::IO001, message));
     }
     match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => Ok(ReadAhead::start(native::open(path, sources)?)),

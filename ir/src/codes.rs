@@ -810,12 +810,10 @@ declare_codes! {
         example = "Sub Start\n  X = 1 $ 2\nEnd Sub",
         fix = "Remove the character.";
     /// postc limits the size of what it reads so that a broken or hostile post cannot exhaust
-    /// memory or time: line length, nesting of parentheses, blocks and expressions, the number of
-    /// variables, and 500 problems per file.
-    /// Past 500 problems, one last diagnostic says how many more there are; it is a warning when
-    /// all of them are.
-    VC004: Error | Warning, "a line too long, parentheses, blocks or expressions nested too deeply, too many variables, or more than 500 problems in one file",
-        fix = "Split the line or calculation over several lines with intermediate variables, or move inner blocks into Subs of their own; with over 500 problems, fix the first ones: many of the rest may follow from them.";
+    /// memory or time: line length, nesting of parentheses, blocks and expressions, and the
+    /// number of variables.
+    VC004: Error, "a line too long, parentheses, blocks or expressions nested too deeply, or too many variables",
+        fix = "Split the line or calculation over several lines with intermediate variables, or move inner blocks into Subs of their own.";
     /// A `Sub` or `Function` runs to the end of the file without its `End Sub` / `End Function`.
     VC005: Error, "a `Sub` or `Function` has no `End Sub` / `End Function`",
         example = "Sub Start\n  Out \"G90\"",
@@ -1248,6 +1246,13 @@ declare_codes! {
     /// The trace has no record for that NC line (of that output file, with `--output`).
     IO011: Error, "`postc explain`: the trace has no record for that line (of that output file)",
         fix = "Check the line number (from 1) and, for a program split into parts, which part with `--output`.";
+    /// An output of the command (`-o`, `--trace`, a tape-split part) is one of the files the
+    /// command reads (the post, the toolpath, a `POST_BASE` file), or two outputs are the same
+    /// file; links are followed, so a symbolic or hard link to an input counts as the input.
+    /// postc refuses before it reads or writes anything, so no input is lost.
+    IO012: Error, "an output path is one of the command's inputs, or two outputs are the same file",
+        example = "postc post job.pp job.ron -o job.ron",
+        fix = "Write each output to a file of its own that the command does not read.";
     /// A post written as IR in RON (as `postc convert --to ron` writes) does not read.
     IR001: Error, "a post written as IR in RON does not read",
         fix = "Correct the RON at the place the message gives.";

@@ -13,6 +13,7 @@
 //! gleam's split is the model: one project-wide diagnostic type in the
 //! compiler core, rendered only by the CLI.
 
+pub mod display;
 mod fs;
 mod render;
 

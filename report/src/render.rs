@@ -1,11 +1,14 @@
 //! Diagnostics rendered for people and as JSON.
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use codespan_reporting::diagnostic as cs;
 use codespan_reporting::files;
 use postc_ir::{Diagnostic, FileId, Severity, SourceMap};
 use serde::{Deserialize, Serialize};
+
+use crate::display::{self, Side, escape_text};
 
 /// Files larger than this are not read back to render a snippet.
 const MAX_RENDER_READ: u64 = 64 << 20;
@@ -88,16 +91,16 @@ fn load_for(sources: &mut SourceMap, diagnostics: &[Diagnostic]) {
 fn render_one(sources: &SourceMap, d: &Diagnostic, config: &codespan_reporting::term::Config, color: bool) -> String {
     let snippets = d.labels.iter().all(|l| sources.text(l.span.file).is_some());
     if !snippets {
-        let mut s = format!("{}[{}]: {}\n", d.severity, d.code, d.message);
+        let mut s = format!("{}[{}]: {}\n", d.severity, d.code, escape_text(&d.message));
         for l in &d.labels {
             let (line, col) = sources.line_column(l.span.file, l.span.start).unwrap_or((0, 0));
-            s.push_str(&format!("  --> {}:{}:{}: {}\n", sources.name(l.span.file), line, col, l.message));
+            s.push_str(&format!("  --> {}:{}:{}: {}\n", sources.name(l.span.file), line, col, escape_text(&l.message)));
         }
         for n in &d.notes {
-            s.push_str(&format!("  = note: {n}\n"));
+            s.push_str(&format!("  = note: {}\n", escape_text(n)));
         }
         if let Some(h) = &d.help {
-            s.push_str(&format!("  = help: {h}\n"));
+            s.push_str(&format!("  = help: {}\n", escape_text(h)));
         }
         return s;
     }
@@ -106,24 +109,41 @@ fn render_one(sources: &SourceMap, d: &Diagnostic, config: &codespan_reporting::
         Severity::Warning => cs::Severity::Warning,
         Severity::Note => cs::Severity::Note,
     };
-    let mut notes = d.notes.clone();
+    let mut notes: Vec<String> = d.notes.iter().map(|n| escape_text(n).into_owned()).collect();
     if let Some(h) = &d.help {
-        notes.push(format!("help: {h}"));
+        notes.push(format!("help: {}", escape_text(h)));
+    }
+    let mut files = Files { sources, shown: HashMap::new() };
+    for l in &d.labels {
+        let file = l.span.file;
+        if files.shown.contains_key(&file) {
+            continue;
+        }
+        let points: Vec<usize> =
+            d.labels.iter().filter(|m| m.span.file == file).flat_map(|m| [m.span.start, m.span.end]).collect();
+        if let Some(text) = sources.text(file)
+            && let Some(shown) = display::shown(text, &SourceLines(sources, file), &points)
+        {
+            files.shown.insert(file, shown);
+        }
     }
     let diagnostic = cs::Diagnostic::new(severity)
         .with_code(d.code)
-        .with_message(&d.message)
+        .with_message(escape_text(&d.message))
         .with_labels(
             d.labels
                 .iter()
                 .map(|l| {
                     let style = if l.primary { cs::LabelStyle::Primary } else { cs::LabelStyle::Secondary };
-                    cs::Label::new(style, l.span.file, l.span.start..l.span.end).with_message(&l.message)
+                    let range = match files.shown.get(&l.span.file) {
+                        Some(shown) => shown.to_shown(l.span.start, Side::Start)..shown.to_shown(l.span.end, Side::End),
+                        None => l.span.start..l.span.end,
+                    };
+                    cs::Label::new(style, l.span.file, range).with_message(escape_text(&l.message))
                 })
                 .collect(),
         )
         .with_notes(notes);
-    let files = Files(sources);
     let mut buffer = Vec::new();
     let result = if color {
         let mut writer = codespan_reporting::term::termcolor::Ansi::new(&mut buffer);
@@ -133,12 +153,30 @@ fn render_one(sources: &SourceMap, d: &Diagnostic, config: &codespan_reporting::
     };
     match result {
         Ok(()) => String::from_utf8_lossy(&buffer).into_owned(),
-        Err(_) => format!("{}[{}]: {}\n", d.severity, d.code, d.message),
+        Err(_) => format!("{}[{}]: {}\n", d.severity, d.code, escape_text(&d.message)),
     }
 }
 
-/// The files of a map as codespan-reporting reads them.
-struct Files<'m>(&'m SourceMap);
+/// The lines of a held file of the map.
+struct SourceLines<'m>(&'m SourceMap, FileId);
+
+impl display::Lines for SourceLines<'_> {
+    fn line_of(&self, offset: usize) -> usize {
+        self.0.line_index(self.1, offset).unwrap_or(0)
+    }
+
+    fn range_of(&self, line: usize) -> Option<std::ops::Range<usize>> {
+        self.0.line_range(self.1, line)?.ok()
+    }
+}
+
+/// The files of a map as codespan-reporting reads them for one diagnostic:
+/// the files with long lines or control characters where it points, as
+/// [`display::shown`] shows them; the others as they are.
+struct Files<'m> {
+    sources: &'m SourceMap,
+    shown: HashMap<FileId, display::Shown>,
+}
 
 impl<'a> files::Files<'a> for Files<'_> {
     type FileId = FileId;
@@ -146,22 +184,41 @@ impl<'a> files::Files<'a> for Files<'_> {
     type Source = &'a str;
 
     fn name(&'a self, id: FileId) -> Result<&'a str, files::Error> {
-        Ok(self.0.name(id))
+        Ok(self.sources.name(id))
     }
 
     fn source(&'a self, id: FileId) -> Result<&'a str, files::Error> {
-        self.0.text(id).ok_or(files::Error::FileMissing)
+        match self.shown.get(&id) {
+            Some(shown) => Ok(&shown.text),
+            None => self.sources.text(id).ok_or(files::Error::FileMissing),
+        }
     }
 
     fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, files::Error> {
-        self.0.line_index(id, byte_index).ok_or(files::Error::FileMissing)
+        match self.shown.get(&id) {
+            Some(shown) => Ok(shown.line_index(byte_index)),
+            None => self.sources.line_index(id, byte_index).ok_or(files::Error::FileMissing),
+        }
     }
 
     fn line_range(&'a self, id: FileId, line_index: usize) -> Result<std::ops::Range<usize>, files::Error> {
-        match self.0.line_range(id, line_index) {
+        if let Some(shown) = self.shown.get(&id) {
+            return Ok(shown.line_range(line_index));
+        }
+        match self.sources.line_range(id, line_index) {
             None => Err(files::Error::FileMissing),
             Some(Ok(range)) => Ok(range),
             Some(Err(max)) => Err(files::Error::LineTooLarge { given: line_index, max }),
         }
+    }
+
+    /// The line and column in the file itself, not in the lines shown.
+    fn location(&'a self, id: FileId, byte_index: usize) -> Result<files::Location, files::Error> {
+        let offset = match self.shown.get(&id) {
+            Some(shown) => shown.to_source(byte_index),
+            None => byte_index,
+        };
+        let (line_number, column_number) = self.sources.line_column(id, offset).ok_or(files::Error::FileMissing)?;
+        Ok(files::Location { line_number, column_number })
     }
 }

@@ -310,6 +310,9 @@ impl MachineState {
             Quantity::ToolpathsOutput => &self.toolpaths_output,
             Quantity::Date if self.date.is_empty() => &self.default_date,
             Quantity::Date => &self.date,
+            // A date given (`--set date`, the job's) without a time is the start of that day,
+            // so that a fixed date never prints the clock's time (README, "Reproducible output").
+            Quantity::Time if self.time.is_empty() && !self.date.is_empty() => "00:00",
             Quantity::Time if self.time.is_empty() => &self.default_time,
             Quantity::Time => &self.time,
             Quantity::Product => self.job.product.as_deref().unwrap_or("postc"),

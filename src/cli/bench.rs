@@ -18,8 +18,8 @@ pub struct Args {
     post: PathBuf,
     /// A toolpath to post; a synthetic one when absent.
     toolpath: Option<PathBuf>,
-    /// Moves of the synthetic toolpath.
-    #[arg(long, default_value_t = 1_000_000)]
+    /// Moves of the synthetic toolpath (at most 10000000000).
+    #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(0..=super::toolpath::MAX_MOVES))]
     moves: u64,
     /// Pattern of the synthetic toolpath: zigzag, arcs, mixed.
     #[arg(long, default_value = "zigzag")]

@@ -69,7 +69,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
         }
         let diagnostics = if !file.exists() {
-            vec![Diagnostic::error(codes::IO001, format!("`{name}` does not exist"))]
+            vec![Diagnostic::error(codes::IO001, super::missing(file))]
         } else if postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
             postc_frontends::check_toolpath(file, &mut sources)
         } else {
@@ -96,6 +96,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         Format::Human => {
             let diagnostics: Vec<_> = all.iter().map(|(_, d)| d.clone()).collect();
             report::eprint(&mut sources, &diagnostics);
+            report::summarize_held_back();
             let warnings = all.len() - errors;
             if errors > 0 || warnings > 0 {
                 eprintln!("postc: {errors} error(s), {warnings} warning(s) in {} file(s)", args.files.len());
@@ -129,11 +130,8 @@ fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Dia
     }
     let fixed = postc_lsp::analysis::apply(&text, &fixes);
     let out: Vec<u8> = if utf8 { fixed.into_bytes() } else { fixed.chars().map(|c| c as u32 as u8).collect() };
-    let dir = file.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
-    std::io::Write::write_all(&mut tmp, &out).map_err(io)?;
-    let permissions = std::fs::metadata(file).map_err(io)?.permissions();
-    std::fs::set_permissions(tmp.path(), permissions).map_err(io)?;
-    tmp.persist(file).map_err(|e| io(e.error))?;
+    // The fixed post replaces the file (keeping its mode), through a
+    // temporary file beside it (docs/outputs.md).
+    super::outputs::write_whole(file, &out, &[], None)?;
     Ok(fixes.len())
 }

@@ -5,7 +5,7 @@
 
 use postc_ir::codes;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use postc_backends::Target;
 use postc_ir::Diagnostic;
@@ -42,6 +42,8 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
+    let outputs: Vec<&Path> = args.output.iter().map(PathBuf::as_path).collect();
+    super::outputs::check_paths(&[&args.post], &outputs).map_err(|d| fail(&mut sources, d))?;
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
@@ -57,20 +59,15 @@ pub fn run(args: Args) -> Result<(), Failed> {
             return Err(Failed);
         }
     };
-    let written = match &args.output {
+    match &args.output {
         Some(path) => {
-            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
-            tempfile::NamedTempFile::new_in(dir).and_then(|mut tmp| {
-                tmp.write_all(&text)?;
-                tmp.persist(path).map(|_| ()).map_err(|e| e.error)
-            })
+            super::outputs::write_whole(path, &text, &[&args.post], Some(&sources)).map_err(|d| fail(&mut sources, d))
         }
         None => {
             let mut stdout = std::io::stdout().lock();
-            stdout.write_all(&text).and_then(|()| stdout.flush())
+            stdout.write_all(&text).and_then(|()| stdout.flush()).map_err(|e| {
+                fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the converted post: {e}")))
+            })
         }
-    };
-    written.map_err(|e| {
-        fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write the converted post: {e}")))
-    })
+    }
 }

@@ -29,6 +29,7 @@ mod explain;
 mod inspect;
 mod levels;
 mod lsp;
+pub mod outputs;
 mod plot;
 mod post;
 mod postp;
@@ -53,6 +54,9 @@ use postc_ir::{Diagnostic, Dialect, Post, SourceMap};
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Diagnostics shown per file, for people (0: all); `--format json` lists every one.
+    #[arg(long, global = true, value_name = "N", default_value_t = report::DEFAULT_MAX_DIAGNOSTICS)]
+    max_diagnostics: usize,
 }
 
 #[derive(Subcommand, Debug)]
@@ -112,6 +116,7 @@ pub fn main() -> ExitCode {
         return postp::main();
     }
     let cli = Cli::parse();
+    report::set_max_diagnostics(cli.max_diagnostics);
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
@@ -126,6 +131,7 @@ pub fn main() -> ExitCode {
         Command::Plot(args) => plot::run(args),
         Command::Toolpath { command } => toolpath::run(command),
     };
+    report::summarize_held_back();
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failed) => ExitCode::from(1),
@@ -173,6 +179,50 @@ pub(crate) fn load_post_with(
             Err(Failed)
         }
     }
+}
+
+/// Why a file named on the command line cannot be read: it does not
+/// exist, it is a link to a file that does not, a loop of links, or the
+/// system refuses it.
+pub(crate) fn missing(path: &std::path::Path) -> String {
+    let shown = path.display();
+    match (std::fs::symlink_metadata(path), std::fs::metadata(path)) {
+        (Ok(m), Err(e)) if m.file_type().is_symlink() => {
+            if links_loop(path) {
+                format!("`{shown}` is a loop of symbolic links: following them never reaches a file")
+            } else if e.kind() == std::io::ErrorKind::NotFound {
+                match std::fs::read_link(path) {
+                    Ok(target) => {
+                        format!("`{shown}` is a symbolic link to `{}`, which does not exist", target.display())
+                    }
+                    Err(_) => format!("`{shown}` is a symbolic link to a file that does not exist"),
+                }
+            } else {
+                format!("`{shown}` is a symbolic link that cannot be followed: {e}")
+            }
+        }
+        (_, Err(e)) if e.kind() != std::io::ErrorKind::NotFound => format!("cannot open `{shown}`: {e}"),
+        _ => format!("`{shown}` does not exist"),
+    }
+}
+
+/// Whether following the symbolic links from `path` comes back to a link
+/// already passed (or goes on for more than 40 links, where systems stop).
+fn links_loop(path: &std::path::Path) -> bool {
+    let mut seen: Vec<PathBuf> = Vec::new();
+    let mut at = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    for _ in 0..40 {
+        if seen.contains(&at) {
+            return true;
+        }
+        let Ok(target) = std::fs::read_link(&at) else { return false };
+        seen.push(at.clone());
+        at = match at.parent() {
+            Some(dir) => dir.join(target),
+            None => target,
+        };
+    }
+    true
 }
 
 /// Prints one diagnostic that has no source (a bad argument, an I/O error).

@@ -3,7 +3,6 @@
 //! numbered (`docs/plot.md`). SVG, or PNG rendered with resvg.
 
 use postc_ir::codes;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Diagnostic, SourceMap};
@@ -63,6 +62,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
             ));
         }
     };
+    let inputs: Vec<&Path> =
+        [&args.program, &args.toolpath].into_iter().chain(&args.post).map(PathBuf::as_path).collect();
+    super::outputs::check_paths(&inputs, &[&args.output]).map_err(|d| fail(&mut sources, d))?;
     let (post, postp) = post_for(args.post.as_ref(), args.dialect, args.postp, &args.toolpath, &mut sources)?;
     let job = Job {
         program: &args.program,
@@ -81,9 +83,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot render the plot as PNG: {e}")))
         })?,
     };
-    write(&args.output, &bytes).map_err(|e| {
-        fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", args.output.display())))
-    })?;
+    super::outputs::write_whole(&args.output, &bytes, &inputs, None).map_err(|d| fail(&mut sources, d))?;
     eprintln!("postc plot: wrote `{}`", args.output.display());
     Ok(())
 }
@@ -124,19 +124,4 @@ pub fn png(svg: &str) -> Result<Vec<u8>, String> {
         .ok_or_else(|| format!("a {}x{} image is too large", size.width(), size.height()))?;
     resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
     pixmap.encode_png().map_err(|e| e.to_string())
-}
-
-/// Writes the whole file or nothing: a temporary file beside it, renamed.
-fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
-    tmp.write_all(bytes)?;
-    tmp.flush()?;
-    // A plot is for reading: the permissions of a new file, not the temporary file's 0600.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        tmp.as_file().set_permissions(std::fs::Permissions::from_mode(0o644))?;
-    }
-    tmp.persist(path).map(|_| ()).map_err(|e| e.error)
 }

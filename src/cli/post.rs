@@ -73,21 +73,6 @@ pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<()
     Ok(())
 }
 
-/// A warning the runtime reported while posting was denied (`--deny`,
-/// `postc.toml`): the program is complete by then, so its files are removed
-/// again; on standard output only the exit status can say it.
-fn denied(output: &Finished) -> Failed {
-    if let Finished::Files(files) = output {
-        for file in files {
-            let _ = std::fs::remove_file(file);
-        }
-        eprintln!("postc: a denied warning was reported while posting; the program was removed");
-    } else {
-        eprintln!("postc: a denied warning was reported while posting");
-    }
-    Failed
-}
-
 /// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.
 fn file_info(path: &Path) -> FileInfo {
     let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
@@ -106,6 +91,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
         [post, toolpath] => (Some(post), toolpath),
         _ => unreachable!("clap takes one or two files"),
     };
+    let inputs: Vec<&Path> = args.files.iter().map(PathBuf::as_path).collect();
+    let outputs: Vec<&Path> = args.output.iter().chain(&args.trace).map(PathBuf::as_path).collect();
+    super::outputs::check_paths(&inputs, &outputs).map_err(|d| fail(&mut sources, d))?;
     if let Some(kind) = super::probe::job_kind(toolpath) {
         let mut options = super::clock::run_options();
         apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
@@ -120,6 +108,21 @@ pub fn run(args: Args) -> Result<(), Failed> {
             options,
         };
         return super::probe::run_calls(job);
+    }
+    if let Some(post) = post_path
+        && args.dialect.is_none()
+        && postc_frontends::is_toolpath(post, &postc_report::FsLoader)
+        && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader)
+        && toolpath.exists()
+    {
+        return Err(fail(
+            &mut sources,
+            Diagnostic::error(
+                codes::IO006,
+                format!("`{}` is a toolpath and `{}` is not: the post comes first", post.display(), toolpath.display()),
+            )
+            .help(format!("postc post {} {}", toolpath.display(), post.display())),
+        ));
     }
     if post_path.is_none() && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
@@ -146,10 +149,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
         options.file = Some(file_info(out));
     }
     let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
+    let batch = super::outputs::Batch::default();
     let out = match &args.output {
-        Some(path) => super::sink::file(path).map_err(|e| {
-            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", path.display())))
-        })?,
+        Some(path) => {
+            super::sink::file(path, &batch).map_err(|e| fail(&mut sources, super::outputs::cannot_write(path, &e)))?
+        }
         None => {
             if post.options.tape_splitting.is_some() {
                 let mut warning = vec![Diagnostic::warning(
@@ -189,15 +193,22 @@ pub fn run(args: Args) -> Result<(), Failed> {
             rules.apply(&mut report.warnings);
             report::eprint(&mut sources, &report.warnings);
             if postc_ir::diagnostic::has_errors(&report.warnings) {
-                return Err(denied(&report.output));
+                match &report.output {
+                    Finished::Files(_) => {
+                        eprintln!("postc: a denied warning was reported while posting; nothing was written")
+                    }
+                    _ => eprintln!("postc: a denied warning was reported while posting"),
+                }
+                return Err(Failed);
             }
             if let Some(recorder) = recorder {
                 let outputs = match &report.output {
                     Finished::Files(files) => files.clone(),
                     _ => vec![PathBuf::from("-")],
                 };
-                recorder.finish(&sources, &post, &outputs).map_err(|d| fail(&mut sources, d))?;
+                recorder.finish(&sources, &post, &outputs, &batch).map_err(|d| fail(&mut sources, d))?;
             }
+            batch.commit(&inputs, Some(&sources)).map_err(|d| fail(&mut sources, d))?;
             if let Finished::Files(files) = &report.output
                 && files.len() > 1
             {

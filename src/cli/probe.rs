@@ -105,10 +105,11 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
         );
     }
     let mut source = open(&job, &post, &mut sources)?;
+    let batch = super::outputs::Batch::default();
     let out = match job.output {
-        Some(path) => super::sink::file(path).map_err(|e| {
-            fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot write `{}`: {e}", path.display())))
-        })?,
+        Some(path) => {
+            super::sink::file(path, &batch).map_err(|e| fail(&mut sources, super::outputs::cannot_write(path, &e)))?
+        }
         None => super::sink::stdout(),
     };
     let mut options = job.options;
@@ -120,6 +121,8 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     match postc_runtime::calls::run_calls(&postc_frontends::for_calls(&post), &mut source, out, options) {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
+            let inputs: Vec<&Path> = job.post.iter().map(|p| p.as_path()).chain([job.input]).collect();
+            batch.commit(&inputs, Some(&sources)).map_err(|d| fail(&mut sources, d))?;
             if let Finished::Files(files) = &report.output
                 && files.len() > 1
             {

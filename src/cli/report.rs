@@ -2,6 +2,7 @@
 //! JSON array for tools.
 
 use std::io::IsTerminal;
+use std::sync::{Mutex, MutexGuard};
 
 use postc_ir::{Diagnostic, SourceMap};
 use postc_report::Render;
@@ -13,13 +14,84 @@ pub enum Format {
     Json,
 }
 
-/// Prints diagnostics for people on standard error.
+/// Diagnostics shown for people per file unless `--max-diagnostics` says
+/// otherwise (docs/diagnostics.md); JSON output keeps every one.
+pub const DEFAULT_MAX_DIAGNOSTICS: usize = 50;
+
+/// Diagnostics shown and held back per file, over the whole command.
+struct Limit {
+    max: usize,
+    /// File name, diagnostics shown, diagnostics held back; in the order
+    /// the files first came.
+    files: Vec<(String, usize, usize)>,
+}
+
+static LIMIT: Mutex<Limit> = Mutex::new(Limit { max: DEFAULT_MAX_DIAGNOSTICS, files: Vec::new() });
+
+fn limit() -> MutexGuard<'static, Limit> {
+    LIMIT.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Sets how many diagnostics are shown per file (`--max-diagnostics`; 0
+/// shows all).
+pub fn set_max_diagnostics(max: usize) {
+    limit().max = if max == 0 { usize::MAX } else { max };
+}
+
+/// Prints diagnostics for people on standard error: at most the
+/// `--max-diagnostics` number per file (the file of the diagnostic's
+/// primary label) over the whole command; [`summarize_held_back`] says how
+/// many more there were.
 pub fn eprint(sources: &mut SourceMap, diagnostics: &[Diagnostic]) {
     if diagnostics.is_empty() {
         return;
     }
+    let shown: Vec<Diagnostic> = {
+        let mut limit = limit();
+        let max = limit.max;
+        diagnostics
+            .iter()
+            .filter(|d| {
+                let file = d.primary_span().map_or("", |s| sources.name(s.file));
+                let i = match limit.files.iter().position(|(f, _, _)| f == file) {
+                    Some(i) => i,
+                    None => {
+                        limit.files.push((file.to_string(), 0, 0));
+                        limit.files.len() - 1
+                    }
+                };
+                let entry = &mut limit.files[i];
+                if entry.1 < max {
+                    entry.1 += 1;
+                    true
+                } else {
+                    entry.2 += 1;
+                    false
+                }
+            })
+            .cloned()
+            .collect()
+    };
+    if shown.is_empty() {
+        return;
+    }
     let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
-    eprint!("{}", sources.render(diagnostics, color));
+    eprint!("{}", sources.render(&shown, color));
+}
+
+/// Says, once, how many diagnostics per file were held back.
+pub fn summarize_held_back() {
+    let mut limit = limit();
+    let max = limit.max;
+    for (file, _, held) in &mut limit.files {
+        if *held > 0 {
+            let of = if file.is_empty() { String::new() } else { format!(" about `{file}`") };
+            eprintln!(
+                "postc: {held} more diagnostic(s){of} not shown (the first {max} were); `--max-diagnostics 0` shows all"
+            );
+            *held = 0;
+        }
+    }
 }
 
 /// The JSON array of `check --format json`.

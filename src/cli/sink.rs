@@ -2,15 +2,14 @@
 //! system and the terminal. The runtime has only memory and discard sinks;
 //! these are the ones that touch the world.
 //!
-//! - [`FileSink`]: a file written through a temporary file beside it and
-//!   renamed only when the program is complete, so a failed run never
-//!   leaves a half-written program (a dropped sink deletes its temporary
-//!   files); under tape splitting, one temporary file per part, named from
-//!   the post's format at the end;
+//! - [`FileSink`]: a program written to temporary files beside its target
+//!   ([`Temp`]), one per tape-split part, handed to the command's
+//!   [`Batch`] when the run completes, named from the post's format; the
+//!   command renames them with its other outputs when it succeeds, and a
+//!   failed run leaves nothing behind (docs/outputs.md);
 //! - [`StdoutSink`]: standard output, held back (up to 64 MiB) so that an
 //!   error in the first part of a job writes nothing at all.
 
-use std::fs::File;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -18,12 +17,14 @@ use postc_ir::post::TapeSplitting;
 use postc_runtime::Output;
 use postc_runtime::output::{Finished, Sink, part_names};
 
+use super::outputs::{Batch, Temp};
+
 const HOLD_STDOUT: usize = 64 << 20;
 
-/// A program written to `target` (several parts beside it under tape
-/// splitting), through temporary files renamed when the run completes.
-pub fn file(target: &Path) -> io::Result<Output> {
-    Ok(Output::new(Box::new(FileSink::new(target)?)))
+/// A program to be written to `target` (several parts beside it under
+/// tape splitting): its temporary files join `batch` when the run completes.
+pub fn file(target: &Path, batch: &Batch) -> io::Result<Output> {
+    Ok(Output::new(Box::new(FileSink::new(target, batch)?)))
 }
 
 /// A program written to standard output.
@@ -34,36 +35,30 @@ pub fn stdout() -> Output {
 /// Temporary part files beside the target.
 pub struct FileSink {
     target: PathBuf,
-    parts: Vec<tempfile::NamedTempFile>,
+    parts: Vec<Temp>,
+    batch: Batch,
 }
 
 impl FileSink {
-    pub fn new(target: &Path) -> io::Result<FileSink> {
-        let mut sink = FileSink { target: target.to_path_buf(), parts: Vec::new() };
+    pub fn new(target: &Path, batch: &Batch) -> io::Result<FileSink> {
+        let mut sink = FileSink { target: target.to_path_buf(), parts: Vec::new(), batch: batch.clone() };
         sink.open_part()?;
         Ok(sink)
     }
 
     fn open_part(&mut self) -> io::Result<()> {
-        let dir = match self.target.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        self.parts.push(tempfile::Builder::new().prefix(".postc-").suffix(".part").tempfile_in(dir)?);
+        self.parts.push(Temp::beside(&self.target)?);
         Ok(())
     }
 
-    fn current(&mut self) -> io::Result<&mut File> {
-        match self.parts.last_mut() {
-            Some(p) => Ok(p.as_file_mut()),
-            None => Err(io::Error::other("no part file is open")),
-        }
+    fn current(&mut self) -> io::Result<&Temp> {
+        self.parts.last().ok_or_else(|| io::Error::other("no part file is open"))
     }
 }
 
 impl Sink for FileSink {
     fn write(&mut self, bytes: &[u8]) -> io::Result<()> {
-        self.current()?.write_all(bytes)
+        self.current()?.file()?.write_all(bytes)
     }
 
     fn new_part(&mut self) -> io::Result<()> {
@@ -72,13 +67,10 @@ impl Sink for FileSink {
 
     fn finish(self: Box<Self>, tape: Option<&TapeSplitting>) -> io::Result<Finished> {
         let names = part_names(&self.target, self.parts.len(), tape);
-        let mut written = Vec::new();
-        for (part, name) in self.parts.into_iter().zip(names) {
-            part.as_file().sync_all()?;
-            part.persist(&name).map_err(|e| e.error)?;
-            written.push(name);
+        for (part, name) in self.parts.into_iter().zip(&names) {
+            self.batch.stage(part, name.clone());
         }
-        Ok(Finished::Files(written))
+        Ok(Finished::Files(names))
     }
 }
 
@@ -124,17 +116,20 @@ mod tests {
     fn files_appear_only_when_finished() {
         let dir = tempfile::tempdir().unwrap();
         let target = dir.path().join("o.nc");
-        let mut out = file(&target).unwrap();
+        let batch = Batch::default();
+        let mut out = file(&target, &batch).unwrap();
         out.buf.extend_from_slice(b"G0X1\n");
         out.end_block();
         out.flush();
         assert!(!target.exists());
         let files = out.finish(None).unwrap();
         assert!(matches!(files, Finished::Files(ref f) if f == std::slice::from_ref(&target)));
+        assert!(!target.exists());
+        batch.commit(&[], None).unwrap();
         assert_eq!(std::fs::read(&target).unwrap(), b"G0X1\n");
         // A dropped (failed) run leaves nothing behind.
         let other = dir.path().join("p.nc");
-        let mut out = file(&other).unwrap();
+        let mut out = file(&other, &batch).unwrap();
         out.buf.extend_from_slice(b"G0X1\n");
         out.flush();
         drop(out);
@@ -152,7 +147,8 @@ mod tests {
             start_index: 1,
             index_on_first_file: true,
         };
-        let mut out = file(&target).unwrap();
+        let batch = Batch::default();
+        let mut out = file(&target, &batch).unwrap();
         out.buf.extend_from_slice(b"A\n");
         out.end_block();
         out.new_part();
@@ -168,6 +164,7 @@ mod tests {
         );
         let Finished::Files(files) = out.finish(Some(&tape)).unwrap() else { panic!("files") };
         assert_eq!(files, [dir.path().join("t_1.tap"), dir.path().join("t_2.tap")]);
+        batch.commit(&[], None).unwrap();
         assert_eq!(std::fs::read(&files[1]).unwrap(), b"B\n");
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     }

@@ -2,11 +2,12 @@
 
 use postc_ir::codes;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Diagnostic, EventSource};
 
+use super::outputs::{Batch, Temp};
 use super::{Failed, fail};
 use postc_frontends::synthetic::{PATTERNS, Synthetic};
 
@@ -17,13 +18,45 @@ pub enum Command {
         /// The pattern: zigzag, arcs, mixed or standard.
         #[arg(long, default_value = "zigzag")]
         pattern: String,
-        /// Number of moves.
-        #[arg(long, default_value_t = 1000)]
+        /// Number of moves (at most 10000000000: about a terabyte of RON).
+        #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(0..=MAX_MOVES))]
         moves: u64,
         /// Write here (.ron or .jsonl) instead of standard output (RON).
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+}
+
+/// The most moves `toolpath gen` and `bench` make: 10^10 moves are about
+/// a terabyte of RON, and a day of generating.
+pub const MAX_MOVES: u64 = 10_000_000_000;
+
+/// The bytes a synthetic toolpath of `moves` moves takes, from the bytes
+/// of its first moves (at most 2000).
+fn estimated_bytes(pattern: &str, moves: u64, syntax: Syntax) -> u64 {
+    let sample = moves.min(2000);
+    let Some(mut generator) = Synthetic::new(pattern, sample) else { return 0 };
+    let mut line = String::new();
+    let mut bytes = 0u64;
+    let mut diags = Vec::new();
+    while let Some((event, _)) = generator.next_event(&mut diags) {
+        line.clear();
+        write_event(&event, syntax, &mut line);
+        bytes += line.len() as u64;
+    }
+    bytes.saturating_mul(moves).checked_div(sample).unwrap_or(bytes)
+}
+
+/// Bytes free for this user on the file system of `dir`.
+#[cfg(unix)]
+fn free_bytes(dir: &Path) -> Option<u64> {
+    let s = rustix::fs::statvfs(dir).ok()?;
+    Some(s.f_bavail.saturating_mul(s.f_frsize))
+}
+
+#[cfg(not(unix))]
+fn free_bytes(_dir: &Path) -> Option<u64> {
+    None
 }
 
 pub fn run(command: Command) -> Result<(), Failed> {
@@ -52,13 +85,40 @@ pub fn run(command: Command) -> Result<(), Failed> {
     };
     let result = match &output {
         Some(path) => {
-            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
-            tempfile::NamedTempFile::new_in(dir).and_then(|tmp| {
-                let mut w = std::io::BufWriter::new(tmp);
-                write(&mut w, &mut generator)?;
-                w.into_inner().map_err(|e| e.into_error())?.persist(path).map_err(|e| e.error)?;
-                Ok(())
-            })
+            super::outputs::check_paths(&[], &[path]).map_err(|d| fail(&mut sources, d))?;
+            let dir = match path.parent() {
+                Some(p) if !p.as_os_str().is_empty() => p,
+                _ => Path::new("."),
+            };
+            let needed = estimated_bytes(&pattern, moves, syntax);
+            if let Some(free) = free_bytes(dir)
+                && needed > free
+            {
+                return Err(fail(
+                    &mut sources,
+                    Diagnostic::error(
+                        codes::IO003,
+                        format!(
+                            "{moves} {pattern} moves take about {:.1} GB, and `{}` has {:.1} GB free; nothing was written",
+                            needed as f64 / 1e9,
+                            dir.display(),
+                            free as f64 / 1e9
+                        ),
+                    )
+                    .help("ask for fewer moves, or write to a disk with room"),
+                ));
+            }
+            let batch = Batch::default();
+            Temp::beside(path)
+                .and_then(|temp| {
+                    let mut w = std::io::BufWriter::new(temp.file()?);
+                    write(&mut w, &mut generator)?;
+                    drop(w);
+                    batch.stage(temp, path.clone());
+                    Ok(())
+                })
+                .map_err(|e| fail(&mut sources, super::outputs::cannot_write(path, &e)))?;
+            return batch.commit(&[], None).map_err(|d| fail(&mut sources, d));
         }
         None => write(&mut std::io::BufWriter::new(std::io::stdout().lock()), &mut generator),
     };

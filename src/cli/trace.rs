@@ -18,6 +18,8 @@ use std::rc::Rc;
 
 use postc_ir::{Diagnostic, HandlerKey, Label, Post, Severity, SourceMap, Span};
 use postc_runtime::trace::{TraceLine, TraceSink};
+
+use super::outputs::{Batch, Temp};
 use serde::{Deserialize, Serialize};
 
 /// A span as byte offsets, while the run goes on.
@@ -95,23 +97,29 @@ pub struct Record {
     pub event: Option<EventPlace>,
 }
 
-/// Collects a run's trace in a temporary file.
+/// Collects a run's trace in a scratch file, to be written beside its
+/// target when the run succeeds.
 pub struct Recorder {
     target: PathBuf,
     raw: Rc<RefCell<Option<BufWriter<File>>>>,
-    raw_file: tempfile::NamedTempFile,
+    raw_file: Temp,
+    out: Temp,
     failed: Rc<RefCell<Option<io::Error>>>,
 }
 
 impl Recorder {
-    /// A recorder for a trace to be written at `target`.
+    /// A recorder for a trace to be written at `target`; the trace's
+    /// temporary file is created now, so a folder that cannot take it
+    /// fails before the run.
     pub fn new(target: &Path) -> io::Result<Recorder> {
-        let raw_file = tempfile::NamedTempFile::new()?;
-        let writer = BufWriter::new(raw_file.reopen()?);
+        let out = Temp::beside(target)?;
+        let raw_file = Temp::scratch()?;
+        let writer = BufWriter::new(raw_file.file()?.try_clone()?);
         Ok(Recorder {
             target: target.to_path_buf(),
             raw: Rc::new(RefCell::new(Some(writer))),
             raw_file,
+            out,
             failed: Rc::new(RefCell::new(None)),
         })
     }
@@ -141,9 +149,17 @@ impl Recorder {
         })
     }
 
-    /// Writes the trace file: each record with places for offsets, and the
-    /// names of the NC files (`outputs`, one per tape-split part).
-    pub fn finish(self, sources: &SourceMap, post: &Post, outputs: &[PathBuf]) -> Result<(), Diagnostic> {
+    /// Writes the trace: each record with places for offsets, and the
+    /// names of the NC files (`outputs`, one per tape-split part), into
+    /// its temporary file, which joins `batch` to be committed with the
+    /// program.
+    pub fn finish(
+        self,
+        sources: &SourceMap,
+        post: &Post,
+        outputs: &[PathBuf],
+        batch: &Batch,
+    ) -> Result<(), Diagnostic> {
         let io_error = |e: io::Error| {
             Diagnostic::error(codes::IO003, format!("cannot write the trace `{}`: {e}", self.target.display()))
         };
@@ -154,11 +170,9 @@ impl Recorder {
             return Err(io_error(e));
         }
         let place = |s: RawSpan| place(sources, s.span());
-        let dir = self.target.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-        let mut out = tempfile::NamedTempFile::new_in(dir).map_err(io_error)?;
         {
-            let mut w = BufWriter::new(out.as_file_mut());
-            let raw = BufReader::new(File::open(self.raw_file.path()).map_err(io_error)?);
+            let mut w = BufWriter::new(self.out.file().map_err(io_error)?);
+            let raw = BufReader::new(File::open(self.raw_file.path().map_err(io_error)?).map_err(io_error)?);
             for line in raw.lines() {
                 let line = line.map_err(io_error)?;
                 let Ok(r) = serde_json::from_str::<RawLine>(&line) else { continue };
@@ -182,7 +196,7 @@ impl Recorder {
             }
             w.flush().map_err(io_error)?;
         }
-        out.persist(&self.target).map_err(|e| io_error(e.error))?;
+        batch.stage(self.out, self.target);
         Ok(())
     }
 }

@@ -56,14 +56,8 @@ pub use signatures::{SubSignature, probe_cycles};
 /// Parses a post's text. Always returns a tree (lines that could not be
 /// read become error statements) and every diagnostic found, in file order.
 pub fn parse(text: &str, file: FileId) -> (ast::Program, Vec<Diagnostic>) {
-    let (program, mut diagnostics) = parse_all(text, file);
-    cap(&mut diagnostics);
-    (program, diagnostics)
+    parse_all(text, file)
 }
-
-/// Most diagnostics reported for one file; past this a last diagnostic
-/// says how many more there were.
-pub const MAX_DIAGNOSTICS: usize = 500;
 
 fn parse_all(text: &str, file: FileId) -> (ast::Program, Vec<Diagnostic>) {
     let lexed = lexer::lex(text, file);
@@ -95,26 +89,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     }
     diagnostics.extend(lower_diagnostics);
     sort_by_position(&mut diagnostics);
-    cap(&mut diagnostics);
     (post, diagnostics)
-}
-
-/// Keeps the first [`MAX_DIAGNOSTICS`] and sums up the rest in one.
-fn cap(diagnostics: &mut Vec<Diagnostic>) {
-    if diagnostics.len() <= MAX_DIAGNOSTICS {
-        return;
-    }
-    let rest = diagnostics.split_off(MAX_DIAGNOSTICS);
-    let severity = rest.iter().map(|d| d.severity).max().unwrap_or(postc_ir::Severity::Warning);
-    let mut summary = Diagnostic::new(
-        severity,
-        diagnostics::TOO_COMPLEX,
-        format!("{} more problems in this file are not shown", rest.len()),
-    );
-    if let Some(span) = rest[0].primary_span() {
-        summary = summary.at(span, "the next one is here");
-    }
-    diagnostics.push(summary.help("fix the problems above first; many of the rest may follow from them"));
 }
 
 /// The signatures of every Sub with a keyword comment.

@@ -19,6 +19,17 @@ const CHORD_TOLERANCE_MM: f64 = 0.01;
 /// Reads a point (x,y,z) and an optional tool axis (i,j,k).
 fn point_and_axis(rec: &Rec<'_>, word: &str) -> Result<(V3, Option<V3>), Problem> {
     if let Some(i) = rec.first_non_number() {
+        if let Some(Arg::Word(w)) = rec.arg(i)
+            && not_a_number(w)
+        {
+            return Err(Problem::new(
+                format!(
+                    "`{}` is not a number: {word} takes finite numbers (x,y,z or x,y,z,i,j,k)",
+                    String::from_utf8_lossy(w)
+                ),
+                Some(i),
+            ));
+        }
         return Err(Problem::new(format!("{word} takes numbers only: {word}/x,y,z or {word}/x,y,z,i,j,k"), Some(i)));
     }
     let mut v = [0.0; 6];
@@ -35,7 +46,15 @@ fn point_and_axis(rec: &Rec<'_>, word: &str) -> Result<(V3, Option<V3>), Problem
 /// Whether a motion record names geometry instead of giving numbers, as an
 /// APT part program does (`GOTO/PT1`, `FROM/SETPT`).
 fn names_geometry(rec: &Rec<'_>) -> bool {
-    matches!(rec.arg(0), Some(Arg::Word(_)))
+    matches!(rec.arg(0), Some(Arg::Word(w)) if !not_a_number(w))
+}
+
+/// A word that spells a value that is no finite number (`NaN`, `INF`,
+/// `Infinity`, as programs that print floats write them): a bad value in CL
+/// data, not the name of a point.
+fn not_a_number(word: &[u8]) -> bool {
+    let word = word.strip_prefix(b"-").or_else(|| word.strip_prefix(b"+")).unwrap_or(word);
+    ["NAN", "INF", "INFINITY"].iter().any(|n| word.eq_ignore_ascii_case(n.as_bytes()))
 }
 
 impl Core {
