@@ -331,6 +331,15 @@ fn a_bad_frame_is_answered_and_the_server_goes_on() {
     // A header without a length.
     raw(&mut c, b"Content-Type: x\r\n\r\n");
     assert_eq!(c.recv()["error"]["code"], -32700);
+    // A length one short: the body's last byte comes before the next
+    // header, which is found there (the mutation fuzzer's case).
+    raw(&mut c, b"Content-Length: 10\r\n\r\n{\"id\": [1]}");
+    assert_eq!(c.recv()["error"]["code"], -32700);
+    // A length too long: the body holds the next frame's start, which is
+    // read again.
+    raw(&mut c, b"Content-Length: 38\r\n\r\n{\"id\"Content-Length: 11\r\n\r\n{\"id\": [1]}");
+    assert_eq!(c.recv()["error"]["code"], -32700);
+    assert_eq!(c.recv()["error"]["code"], -32600);
     // The server still serves.
     let hover = c.at("textDocument/hover", "file:///nothing.pp", 0, 0);
     assert!(hover.is_null() || hover.is_object(), "{hover}");

@@ -82,9 +82,7 @@ fn the_header_waits_for_the_first_tool_of_a_cl_file() {
         return;
     }
     let carvera = shared("vectric/MakeraInc__CarveraProfiles/Carvera ATC (mm) (!.cnc).pp");
-    for (post, tool, spindle) in
-        [(None, "T1 M6", "S12000 M3"), (Some(carvera.as_path()), "T1M6", "S12000M3")]
-    {
+    for (post, tool, spindle) in [(None, "T1 M6", "S12000 M3"), (Some(carvera.as_path()), "T1M6", "S12000M3")] {
         let out = match post {
             Some(p) => postc(&[p, &boss]),
             None => postc(&[&boss]),

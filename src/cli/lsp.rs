@@ -8,7 +8,7 @@
 //! error, -32600 invalid request) and the server goes on with the next
 //! frame, as the JSON-RPC 2.0 specification asks.
 
-use std::io::{self, BufRead, Write};
+use std::io::{self, BufRead, Read, Write};
 use std::sync::{Arc, Mutex};
 
 use lsp_server::{Connection, Message};
@@ -66,7 +66,7 @@ fn serve_stdio() -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
     let sender = client.sender;
     let reader = std::thread::Builder::new().name("postc-lsp-reader".into()).spawn(move || {
         let stdin = io::stdin();
-        let mut input = stdin.lock();
+        let mut input = Resync { back: Vec::new(), inner: stdin.lock() };
         loop {
             match read_frame(&mut input) {
                 Frame::End => break,
@@ -102,15 +102,68 @@ fn serve_stdio() -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
     Ok(())
 }
 
+/// The client's bytes, with room to read again what a frame's body held
+/// of the frames after it (a `Content-Length` longer than its body).
+struct Resync<R> {
+    /// Bytes to read again, last first.
+    back: Vec<u8>,
+    inner: R,
+}
+
+impl<R: BufRead> Resync<R> {
+    /// Reads up to and including `\n`, as [`BufRead::read_until`].
+    fn read_line(&mut self, line: &mut Vec<u8>) -> io::Result<usize> {
+        let mut n = 0;
+        while let Some(b) = self.back.pop() {
+            line.push(b);
+            n += 1;
+            if b == b'\n' {
+                return Ok(n);
+            }
+        }
+        Ok(n + self.inner.read_until(b'\n', line)?)
+    }
+
+    /// Reads `length` bytes, or fewer when the input ends.
+    fn read_body(&mut self, length: usize) -> io::Result<Vec<u8>> {
+        let mut body = Vec::with_capacity(length.min(1 << 20));
+        while body.len() < length
+            && let Some(b) = self.back.pop()
+        {
+            body.push(b);
+        }
+        let rest = (length - body.len()) as u64;
+        self.inner.by_ref().take(rest).read_to_end(&mut body)?;
+        Ok(body)
+    }
+
+    /// Makes `bytes` the next ones read.
+    fn unread(&mut self, bytes: &[u8]) {
+        self.back.extend(bytes.iter().rev());
+    }
+}
+
+/// Where a frame header starts inside `body`, past its first byte: the
+/// whole `Content-Length:`, or at the end of the body the start of it (a
+/// length that took the first bytes of the next frame).
+fn header_inside(body: &[u8]) -> Option<usize> {
+    const HEADER: &[u8] = b"content-length:";
+    (1..body.len()).find(|&i| {
+        let n = body[i..].len().min(HEADER.len());
+        body[i..i + n].eq_ignore_ascii_case(&HEADER[..n])
+    })
+}
+
 /// Reads one frame: headers up to an empty line, then `Content-Length`
-/// bytes of JSON.
-fn read_frame(input: &mut impl BufRead) -> Frame {
+/// bytes of JSON. A body that is not JSON and holds the start of another
+/// frame (its length was too long) gives those bytes back to be read again.
+fn read_frame<R: BufRead>(input: &mut Resync<R>) -> Frame {
     let mut length: Option<Result<usize, String>> = None;
     let mut headers = false;
     let mut line = Vec::new();
     loop {
         line.clear();
-        match input.read_until(b'\n', &mut line) {
+        match input.read_line(&mut line) {
             Ok(0) | Err(_) => return Frame::End,
             Ok(_) => {}
         }
@@ -124,6 +177,13 @@ fn read_frame(input: &mut impl BufRead) -> Frame {
             break;
         }
         headers = true;
+        // A frame whose length was short leaves the rest of its body
+        // before the next header (`}Content-Length: 45`): the header is
+        // found where it starts, and the frames after it read again.
+        let text = match text.to_ascii_lowercase().find("content-length:") {
+            Some(at) => &text[at..],
+            None => text,
+        };
         if let Some((name, value)) = text.split_once(':')
             && name.trim().eq_ignore_ascii_case("content-length")
         {
@@ -139,13 +199,17 @@ fn read_frame(input: &mut impl BufRead) -> Frame {
         Some(Err(message)) => return bad(PARSE_ERROR, message),
         None => return bad(PARSE_ERROR, "the frame has no Content-Length header".into()),
     };
-    let mut body = vec![0; length];
-    if input.read_exact(&mut body).is_err() {
-        return Frame::End;
-    }
+    let Ok(body) = input.read_body(length) else { return Frame::End };
     let value: serde_json::Value = match serde_json::from_slice(&body) {
         Ok(v) => v,
-        Err(e) => return bad(PARSE_ERROR, format!("the message is not JSON: {e}")),
+        Err(e) => {
+            if let Some(at) = header_inside(&body) {
+                input.unread(&body[at..]);
+            } else if body.len() < length {
+                return Frame::End;
+            }
+            return bad(PARSE_ERROR, format!("the message is not JSON: {e}"));
+        }
     };
     let id = value.get("id").cloned().unwrap_or(serde_json::Value::Null);
     match serde_json::from_value::<Message>(value) {
