@@ -9,9 +9,7 @@ mod support;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-#[path = "support/rs274.rs"]
-#[allow(dead_code)]
-mod rs274;
+use support::rs274;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
