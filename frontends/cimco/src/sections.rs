@@ -268,12 +268,24 @@ impl Lowerer<'_> {
                     info.rapid_plunge_to_start_z = b;
                     true
                 }
+                ("onChangeByValue", Value::Bool(b)) => {
+                    o.on_change_by_value = b;
+                    true
+                }
+                ("rapidForgetsFeed", Value::Bool(b)) => {
+                    o.rapid_forgets_feed = b;
+                    true
+                }
                 ("textEncoding", Value::Text(t)) if t == "windows-1252" => {
                     info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
                     true
                 }
                 ("directOutput", Value::Text(t)) => {
                     info.direct_output = Some(t);
+                    true
+                }
+                ("revision", Value::Text(t)) => {
+                    info.revision = t;
                     true
                 }
                 ("blockNumbers", Value::List(n)) => match n.as_slice() {
@@ -385,6 +397,10 @@ impl Lowerer<'_> {
                 ("binaryRounding", Value::Bool(b)) => {
                     format.rounding =
                         if b { postc_ir::format::Rounding::Binary } else { postc_ir::format::Rounding::Decimal };
+                    true
+                }
+                ("negativeZero", Value::Bool(b)) => {
+                    format.negative_zero = b;
                     true
                 }
                 _ => false,

@@ -16,6 +16,8 @@
 //! | `InverseTimeFeed`, `LaserSupport`, `PrintDirect`, `RapidPlungeToStartZ` | `True`/`False` | `INVERSE_TIME_MODE`, `LASER_SUPPORT`, `PRINT_DIRECT`, `RAPID_PLUNGE_TO_STARTZ` |
 //! | `DirectOutput` | text | `DIRECT_OUTPUT` |
 //! | `TapeSplitLines`, `TapeSplitTolerance`, `TapeSplitName`, `TapeSplitStart`, `TapeSplitIndexFirst` | number, number, text, number, `True`/`False` | `TAPE_SPLITTING = MAX TOL "FORMAT" START "INDEX_ON_FIRST"` (splitting is on once `TapeSplitLines` is set) |
+//! | `Revision` | text | none: what `[REVISION]` prints, the hash of the Vectric post it was converted from (docs/vectric.md) |
+//! | `OnChangeByValue`, `RapidForgetsFeed` | `True`/`False` | none: what VCarve's engine does (docs/vectric.md): a `Modal` register prints when its value changes, not its text; the feed prints again on the first feed move after a rapid |
 
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, Substitution, TapeSplitting, WrappedAxis};
 use postc_ir::{Diagnostic, Units};
@@ -48,6 +50,9 @@ pub const PROPERTIES: &[&str] = &[
     "TapeSplitName",
     "TapeSplitStart",
     "TapeSplitIndexFirst",
+    "OnChangeByValue",
+    "RapidForgetsFeed",
+    "Revision",
 ];
 
 enum Value {
@@ -197,6 +202,18 @@ impl Lowerer<'_> {
                 info.direct_output = Some(t);
                 Ok(())
             }
+            ("Revision", Some(Value::Text(t))) => {
+                info.revision = t;
+                Ok(())
+            }
+            ("OnChangeByValue", Some(Value::Bool(b))) => {
+                options.on_change_by_value = b;
+                Ok(())
+            }
+            ("RapidForgetsFeed", Some(Value::Bool(b))) => {
+                options.rapid_forgets_feed = b;
+                Ok(())
+            }
             ("TapeSplitLines", Some(Value::Number(n))) if count(n).is_some_and(|c| c > 0) => {
                 split(options).max_lines = n as u64;
                 Ok(())
@@ -219,9 +236,16 @@ impl Lowerer<'_> {
             }
             ("TapeSplitLines" | "TapeSplitTolerance" | "TapeSplitStart", _) => Err(bad("a whole number")),
             ("MinArcRadius" | "MaxArcRadius", _) => Err(bad("a number")),
-            ("InverseTimeFeed" | "LaserSupport" | "PrintDirect" | "RapidPlungeToStartZ" | "TapeSplitIndexFirst", _) => {
-                Err(bad("True or False"))
-            }
+            (
+                "InverseTimeFeed"
+                | "LaserSupport"
+                | "PrintDirect"
+                | "RapidPlungeToStartZ"
+                | "TapeSplitIndexFirst"
+                | "OnChangeByValue"
+                | "RapidForgetsFeed",
+                _,
+            ) => Err(bad("True or False")),
             _ => Err(bad("text in quotes")),
         };
         if let Err(d) = result {
