@@ -71,6 +71,20 @@ fn lines(program: &str) -> Vec<&str> {
     program.split_inclusive('\n').collect()
 }
 
+/// The G0/G1/G2 lines of `moves` posted through the ShopSabre post, as one
+/// toolpath of tool 8 in an inch job.
+fn shopsabre_moves(moves: Vec<Event>) -> Vec<String> {
+    let mut events = vec![inch_job(), tool(62.5), start()];
+    events.extend(moves);
+    events.push(Event::End);
+    let program = post(&compile("shopsabre.pp", SHOPSABRE), events);
+    lines(&program)
+        .into_iter()
+        .filter(|l| l.starts_with("G0") || l.starts_with("G1") || l.starts_with("G2"))
+        .map(String::from)
+        .collect()
+}
+
 /// `[F]` alone on a line of HEADER, without quotes: VCarve prints the
 /// feed (`F62.5` in `LGC 50 Job 1 Board 1.tap`); postc used to ignore the
 /// line with PP018.
@@ -95,24 +109,16 @@ fn the_feed_prints_again_after_a_rapid() {
         feed: Some(60.0),
         ..ArcMove::default()
     });
-    let program = post(
-        &compile("shopsabre.pp", SHOPSABRE),
-        vec![
-            inch_job(),
-            tool(62.5),
-            start(),
-            rapid(0.75, 4.1314, 0.8),
-            feed(0.75, 4.1314, -1.5, 20.0),
-            rapid(0.75, 4.1314, 0.8),
-            rapid(1.0, 0.0, 0.8),
-            feed(1.0, 0.0, -1.5, 20.0),
-            feed(1.0, 0.0, -1.5, 60.0),
-            arc,
-            feed(3.0, 0.0, -1.5, 60.0),
-            Event::End,
-        ],
-    );
-    let moves: Vec<&str> = lines(&program).into_iter().filter(|l| l.starts_with('G') && l != &"G90\r\n").collect();
+    let moves = shopsabre_moves(vec![
+        rapid(0.75, 4.1314, 0.8),
+        feed(0.75, 4.1314, -1.5, 20.0),
+        rapid(0.75, 4.1314, 0.8),
+        rapid(1.0, 0.0, 0.8),
+        feed(1.0, 0.0, -1.5, 20.0),
+        feed(1.0, 0.0, -1.5, 60.0),
+        arc,
+        feed(3.0, 0.0, -1.5, 60.0),
+    ]);
     assert_eq!(
         moves,
         [
@@ -124,8 +130,7 @@ fn the_feed_prints_again_after_a_rapid() {
             "G1    F60.0\r\n",
             "G2 X2.0000  I0.5000 J0.0000 \r\n",
             "G1 X3.0000   \r\n",
-        ],
-        "{program}"
+        ]
     );
 }
 
@@ -135,32 +140,24 @@ fn the_feed_prints_again_after_a_rapid() {
 /// that did not change is still left out.
 #[test]
 fn on_change_words_compare_values() {
-    let program = post(
-        &compile("shopsabre.pp", SHOPSABRE),
-        vec![
-            inch_job(),
-            tool(62.5),
-            start(),
-            rapid(1.00019, 17.3513, 0.8),
-            feed(1.00019, 17.3513, -0.6, 25.0),
-            rapid(1.00019, 17.3513, 0.8),
-            rapid(1.00024, 19.0701, 0.8),
-            rapid(1.00024, 19.07014, 0.8),
-            rapid(1.00024, 19.07014, 0.8),
-            Event::End,
-        ],
-    );
-    let moves: Vec<&str> = lines(&program).into_iter().filter(|l| l.starts_with("G0")).collect();
+    let moves = shopsabre_moves(vec![
+        rapid(1.00019, 17.3513, 0.8),
+        feed(1.00019, 17.3513, -0.6, 25.0),
+        rapid(1.00019, 17.3513, 0.8),
+        rapid(1.00024, 19.0701, 0.8),
+        rapid(1.00024, 19.07014, 0.8),
+        rapid(1.00024, 19.07014, 0.8),
+    ]);
+    let rapids: Vec<&String> = moves.iter().filter(|l| l.starts_with("G0")).collect();
     assert_eq!(
-        moves,
+        rapids,
         [
             "G0 X1.0002 Y17.3513 Z0.8000\r\n",
             "G0   Z0.8000\r\n",
             "G0 X1.0002 Y19.0701 \r\n",
             "G0  Y19.0701 \r\n",
             "G0   \r\n",
-        ],
-        "{program}"
+        ]
     );
 }
 

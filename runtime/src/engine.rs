@@ -300,12 +300,26 @@ impl<'p> Engine<'p> {
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
                                 let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                                put_modal(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                                put_modal::<true>(
+                                    *modal,
+                                    &self.writers[format.index()],
+                                    state,
+                                    prefix,
+                                    n,
+                                    &mut self.out.buf,
+                                );
                             }
                             Op::Position { var, axis, format, modal } => {
                                 let n = self.machine.pos[*axis as usize];
                                 let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                                put_modal(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                                put_modal::<true>(
+                                    *modal,
+                                    &self.writers[format.index()],
+                                    state,
+                                    prefix,
+                                    n,
+                                    &mut self.out.buf,
+                                );
                             }
                             Op::Piece(piece) => self.write_piece(piece)?,
                         }
@@ -430,11 +444,11 @@ impl<'p> Engine<'p> {
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
                 let w = &self.writers[var.format.index()];
-                put_by::<false>(modal_of(post, var), w, state, prefix, self.block.next, &mut self.out.buf);
+                put_modal::<false>(modal_of(post, var), w, state, prefix, self.block.next, &mut self.out.buf);
             }
             ValueSource::Quantity(q) => {
                 let w = &self.writers[var.format.index()];
-                put_modal(modal_of(post, var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
+                put_modal::<true>(modal_of(post, var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
                 let v = state.value.clone();
@@ -548,30 +562,16 @@ pub(crate) fn modal_of(post: &Post, var: &Variable) -> Modal {
     }
 }
 
-/// Prints a runtime quantity through a variable under its [`Modal`]: like
-/// [`put_number`], but a quantity with no value
+/// Prints a number through a variable under a [`Modal`]: a variable that
+/// compares values prints when the number differs from the one it printed
+/// last (NaN, no value, is never equal), whatever text it makes. With
+/// `ABSENT_PRINTS_NOTHING` (runtime quantities), a quantity with no value
 /// ([`crate::machine::NO_VALUE`]) prints nothing, prefix included, and
 /// leaves the modal memory as it was (the controller still holds what was
 /// printed last). The check sits on the slow path, which NaN takes anyway:
 /// the fast path pays nothing.
 #[inline(always)]
-pub(crate) fn put_modal(
-    modal: Modal,
-    w: &NumberWriter,
-    state: &mut VarState,
-    prefix: &[u8],
-    n: f64,
-    out: &mut Vec<u8>,
-) {
-    put_by::<true>(modal, w, state, prefix, n, out);
-}
-
-/// Prints a number through a variable under a [`Modal`]: a variable that
-/// compares values prints when the number differs from the one it printed
-/// last (NaN, no value, is never equal, and prints nothing when
-/// `ABSENT_PRINTS_NOTHING`), whatever text it makes.
-#[inline(always)]
-fn put_by<const ABSENT_PRINTS_NOTHING: bool>(
+pub(crate) fn put_modal<const ABSENT_PRINTS_NOTHING: bool>(
     modal: Modal,
     w: &NumberWriter,
     state: &mut VarState,
