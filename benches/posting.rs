@@ -60,7 +60,8 @@ mod hand {
             v.abs() >= (2 * floor + 1) as f64 / (2.0 * scale)
         };
         let m = floor + u64::from(up);
-        (v < 0.0 && m != 0, m)
+        // Vectric keeps the minus of a negative value that rounds to zero.
+        (v < 0.0, m)
     }
 
     fn put(out: &mut Vec<u8>, letter: u8, (neg, m): (bool, u64), decimals: usize) {
@@ -91,11 +92,14 @@ mod hand {
         out.extend_from_slice(&buf[i..]);
     }
 
-    /// Prints the moves of the synthetic toolpath as the bench post does.
+    /// Prints the moves of the synthetic toolpath as the bench post does,
+    /// under Vectric's rules (docs/vectric.md): a modal word prints when
+    /// its value changes, and the feed prints again after a rapid.
     pub fn print(moves: u64, out: &mut Vec<u8>, sink: &mut impl FnMut(&mut Vec<u8>)) {
         let mut source = Synthetic::new("zigzag", moves).unwrap();
         let mut diags = Vec::new();
-        let mut last: [Option<(bool, u64)>; 4] = [None; 4];
+        // The value each word printed last; NaN: none since it was forgotten.
+        let mut last = [f64::NAN; 4];
         let (mut cut, mut plunge) = (0.0, 0.0);
         let mut last_feed = f64::NAN;
         let mut feed_run = false;
@@ -108,7 +112,7 @@ mod hand {
                     continue;
                 }
                 Event::ToolpathStart(_) => {
-                    last = [None; 4];
+                    last = [f64::NAN; 4];
                     last_feed = f64::NAN;
                     feed_run = false;
                     continue;
@@ -124,22 +128,19 @@ mod hand {
             let first = !rapid && (!feed_run || feed != last_feed);
             out.extend_from_slice(if rapid { b"G0" } else { b"G1" });
             for (axis, letter) in [b'X', b'Y', b'Z'].into_iter().enumerate() {
-                let r = round(target[axis], 1000.0);
-                if last[axis] != Some(r) {
-                    last[axis] = Some(r);
-                    put(out, letter, r, 3);
+                if last[axis] != target[axis] {
+                    last[axis] = target[axis];
+                    put(out, letter, round(target[axis], 1000.0), 3);
                 }
             }
-            if first {
-                let r = round(feed, 10.0);
-                if last[3] != Some(r) {
-                    last[3] = Some(r);
-                    put(out, b'F', r, 1);
-                }
+            if first && last[3] != feed {
+                last[3] = feed;
+                put(out, b'F', round(feed, 10.0), 1);
             }
             out.push(b'\n');
             if rapid {
                 feed_run = false;
+                last[3] = f64::NAN;
             } else {
                 feed_run = true;
                 last_feed = feed;

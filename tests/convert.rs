@@ -1,6 +1,8 @@
 //! `postc convert`: every corpus post converted to every target either is
 //! refused with a diagnostic, or posts every toolpath it applies to with
-//! the same bytes and the same warnings as its source.
+//! the same bytes and the same warnings as its source (but for the hash
+//! `[REVISION]` prints, which a converted Vectric post takes from its own
+//! file, as VCarve does: [`with_revision`]).
 //!
 //! - the project's posts (`corpus/posts/`): each converted post is
 //!   pinned in `corpus/converted/<target>/<source dialect>/` (a byte-exact
@@ -121,6 +123,34 @@ fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
     }
 }
 
+/// The source's program as a converted post prints it: a Vectric post
+/// prints the hash of its own file for `[REVISION]` (docs/vectric.md,
+/// "REVISION_COMMENT": VCarve hashes the post file, and a converted post is
+/// another file), so the source's hash is replaced by the converted post's.
+/// Posts of the other targets keep the source's hash (`revision`).
+fn with_revision(program: Program, from: &Post, to: &Post) -> Program {
+    let (old, new) = (from.info.revision.as_bytes(), to.info.revision.as_bytes());
+    if old.is_empty() || old == new {
+        return program;
+    }
+    program.map(|parts| {
+        parts
+            .into_iter()
+            .map(|part| {
+                let mut out = Vec::with_capacity(part.len());
+                let mut rest = &part[..];
+                while let Some(i) = rest.windows(old.len()).position(|w| w == old) {
+                    out.extend_from_slice(&rest[..i]);
+                    out.extend_from_slice(new);
+                    rest = &rest[i + old.len()..];
+                }
+                out.extend_from_slice(rest);
+                out
+            })
+            .collect()
+    })
+}
+
 fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
@@ -235,6 +265,7 @@ fn converted_posts_post_as_their_sources() {
                 programs += 1;
                 let pair = format!("{} over {}", file, stem(toolpath));
                 let (want, want_warnings) = post(&source, toolpath);
+                let want = with_revision(want, &source, &back);
                 let (got, got_warnings) = post(&back, toolpath);
                 match (want, got) {
                     (Ok(want), Ok(got)) => {
@@ -267,6 +298,7 @@ fn converted_posts_post_as_their_sources() {
                 round_trips += 1;
                 for toolpath in &case.toolpaths {
                     let (want, _) = post(&source, toolpath);
+                    let want = with_revision(want, &source, &again);
                     let (got, _) = post(&again, toolpath);
                     if want.as_ref().ok() != got.as_ref().ok() {
                         failures.push(format!(
@@ -499,11 +531,14 @@ fn a_handwritten_vcpost_section_post_posts_as_its_vectric_twin() {
     let vectric = "POST_NAME = \"twin\"\nFILE_EXTENSION = \"nc\"\nUNITS = MM\nLINE_ENDING = \"[13][10]\"\n\
         VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR Z_POSITION = [Z|C|Z|1.3]\nVAR FEED_RATE = [F|C|F|1.1]\n\
         begin HEADER\n\"G21 G90\"\nbegin RAPID_MOVE\n\"G0[X][Y][Z]\"\nbegin FEED_MOVE\n\"G1[X][Y][Z][F]\"\nbegin FOOTER\n\"M30\"\n";
+    // The twin says Vectric's rules: values compared, the feed printed
+    // again after a rapid, `-0.000` kept (docs/vectric.md).
     let vcpost = "Postc.Name = \"twin\"\nPostc.FileExtension = \"nc\"\nPostc.Units = \"MM\"\nPostc.LineEnding = \"CRLF\"\n\
-        X.Prefix = \"X\"\nX.Decimals = 3\nX.TrailingZeros = True\nX.Width = 1\nX.Modal = True\n\
-        Y.Prefix = \"Y\"\nY.Decimals = 3\nY.TrailingZeros = True\nY.Width = 1\nY.Modal = True\n\
-        Z.Prefix = \"Z\"\nZ.Decimals = 3\nZ.TrailingZeros = True\nZ.Width = 1\nZ.Modal = True\n\
-        F.Prefix = \"F\"\nF.Decimals = 1\nF.TrailingZeros = True\nF.Width = 1\nF.Modal = True\n\
+        Postc.OnChangeByValue = True\nPostc.RapidForgetsFeed = True\n\
+        X.Prefix = \"X\"\nX.Decimals = 3\nX.TrailingZeros = True\nX.Width = 1\nX.NegativeZero = True\nX.Modal = True\n\
+        Y.Prefix = \"Y\"\nY.Decimals = 3\nY.TrailingZeros = True\nY.Width = 1\nY.NegativeZero = True\nY.Modal = True\n\
+        Z.Prefix = \"Z\"\nZ.Decimals = 3\nZ.TrailingZeros = True\nZ.Width = 1\nZ.NegativeZero = True\nZ.Modal = True\n\
+        F.Prefix = \"F\"\nF.Decimals = 1\nF.TrailingZeros = True\nF.Width = 1\nF.NegativeZero = True\nF.Modal = True\n\
         Sub HEADER\n  Out \"G21 G90\"\nEnd Sub\nSub RAPID_MOVE\n  Out \"G0<X><Y><Z>\"\nEnd Sub\n\
         Sub FEED_MOVE\n  Out \"G1<X><Y><Z><F>\"\nEnd Sub\nSub FOOTER\n  Out \"M30\"\nEnd Sub\n";
     let (Some(a), _) = compile_bytes(Path::new("twin.pp"), vectric.as_bytes(), None) else {
@@ -533,10 +568,12 @@ fn a_handwritten_cimco_section_post_posts_as_its_vectric_twin() {
     let vectric = "POST_NAME = \"twin\"\nFILE_EXTENSION = \"nc\"\nUNITS = MM\n\
         VAR X_POSITION = [X|C|X|1.3]\nVAR Y_POSITION = [Y|C|Y|1.3]\nVAR FEED_RATE = [F|C|F|1.1]\n\
         begin HEADER\n\"G21 G90\"\nbegin RAPID_MOVE\n\"G0[X][Y]\"\nbegin FEED_MOVE\n\"G1[X][Y][F]\"\nbegin FOOTER\n\"M30\"\n";
-    let js = r#"var postcOptions = {name: "twin", fileExtension: "nc", units: "MM", lineEnding: "\r\n"};
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 3, trim: false}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 3, trim: false}));
-var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, trim: false}));
+    // The twin says Vectric's rules: values compared, the feed printed
+    // again after a rapid, `-0.000` kept (docs/vectric.md).
+    let js = r#"var postcOptions = {name: "twin", fileExtension: "nc", units: "MM", lineEnding: "\r\n", onChangeByValue: true, rapidForgetsFeed: true};
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 3, trim: false, negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 3, trim: false, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, trim: false, negativeZero: true}));
 function HEADER() { return "G21 G90\n"; }
 function RAPID_MOVE() { return "G0" + X_POSITION + Y_POSITION + "\n"; }
 function FEED_MOVE() { return "G1" + X_POSITION + Y_POSITION + FEED_RATE + "\n"; }

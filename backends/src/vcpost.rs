@@ -347,6 +347,8 @@ impl Printer<'_> {
             ("LaserSupport", info.laser_support),
             ("PrintDirect", info.print_direct),
             ("RapidPlungeToStartZ", info.rapid_plunge_to_start_z),
+            ("OnChangeByValue", o.on_change_by_value),
+            ("RapidForgetsFeed", o.rapid_forgets_feed),
         ] {
             if value {
                 lines.push(format!("Postc.{name} = True"));
@@ -354,6 +356,9 @@ impl Printer<'_> {
         }
         if let Some(d) = &info.direct_output {
             lines.push(format!("Postc.DirectOutput = {}", text_literal(d)));
+        }
+        if !info.revision.is_empty() {
+            lines.push(format!("Postc.Revision = {}", text_literal(&info.revision)));
         }
         if let Some(t) = &o.tape_splitting {
             lines.push(format!("Postc.TapeSplitLines = {}", t.max_lines));
@@ -495,6 +500,9 @@ impl Printer<'_> {
         }
         if f.rounding != postc_ir::format::Rounding::Decimal {
             cannot.push("its rounding of the binary value");
+        }
+        if f.negative_zero {
+            out.push(("NegativeZero", "True".into()));
         }
         if f.decimals > 9 {
             cannot.push("more than 9 decimals");

@@ -13,10 +13,13 @@
 //!   cycles, comments, ...) or a post dispatched by APT words is `CV001`;
 //! - a number format Vectric's `W.D` formats cannot write (trimmed zeros,
 //!   width of the integer digits, no leading zero, a format prefix,
-//!   rounding of the binary double) is `CV003`;
+//!   rounding of the binary double, a minus dropped from a negative value
+//!   that rounds to zero) is `CV003`;
 //! - an output option with no Vectric statement (a lathe, a chord
 //!   tolerance, a step budget other than the defaults, modal memory kept
-//!   across toolpaths) is `CV004`;
+//!   across toolpaths) is `CV004`, and so is a rule VCarve's engine does
+//!   not follow (on-change words that compare their text, a feed word that
+//!   keeps its memory across rapids: docs/vectric.md);
 //! - a variable Vectric cannot declare (assigned by code, a prefix holding
 //!   `|`, `]` or a line break, two variables printing one quantity in one
 //!   post) is `CV005`.
@@ -39,6 +42,7 @@ use postc_ir::{
 
 /// The guides' order of sections.
 const SECTION_ORDER: &[Section] = &[
+    Section::RevisionComment,
     Section::Header,
     Section::SpindleOn,
     Section::ToolChange,
@@ -157,6 +161,20 @@ impl Printer<'_> {
         no_statement("a chord tolerance for linearized arcs", o.arc_tolerance != d.arc_tolerance);
         no_statement("exact arc words", o.exact_arcs);
         no_statement("modal memory kept across toolpaths", !o.forget_modal_at_toolpath_start);
+        // VCarve compares an on-change word's value and prints the feed
+        // again after a rapid (docs/vectric.md): a post that does neither
+        // would print differently there.
+        let on_change = |q: Option<postc_ir::Quantity>| {
+            post.variables.iter().any(|v| {
+                v.modality == postc_ir::Modality::OnChange
+                    && matches!(v.source, ValueSource::Quantity(s) if !s.is_text() && q.is_none_or(|q| q == s))
+            })
+        };
+        no_statement("on-change words that compare their printed text", !o.on_change_by_value && on_change(None));
+        no_statement(
+            "a feed word that keeps its memory across rapids",
+            !o.rapid_forgets_feed && on_change(Some(postc_ir::Quantity::Feed)),
+        );
         no_statement("a step budget", o.step_budget != d.step_budget);
         if let Some(w) = &o.rotary_wrap
             && w.letter.is_none()
@@ -427,6 +445,9 @@ impl Printer<'_> {
         }
         if f.rounding == postc_ir::Rounding::Binary {
             why.push("it rounds the binary double (as JavaScript does), and Vectric rounds the decimal value");
+        }
+        if !f.negative_zero {
+            why.push("it drops the minus of a negative value that rounds to zero, and Vectric keeps it (`-0.000`)");
         }
         if !why.is_empty() {
             self.refuse(

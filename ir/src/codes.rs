@@ -553,6 +553,13 @@ declare_codes! {
     /// read or give a specific error.
     PP032: Error, "a line the grammar could not read at all (should not happen; report it)",
         fix = "Report the line to postc's authors; meanwhile, rewrite or remove it.";
+    /// A line of a section made only of variables, without quotes (`[F]`). The guides say every
+    /// output line is quoted, but VCarve prints such a line as if it were (the ShopSabre post's
+    /// HEADER ends with a bare `[F]`, and the programs VCarve wrote with it carry `F62.5` there),
+    /// and so does postc. Other text outside quotes is ignored (PP018).
+    PP033: Warning, "a line of variables without quotes: printed as if quoted, as VCarve prints it",
+        example = "begin HEADER\n\"G90\"\n[F]",
+        fix = "Put the line between double quotes: `\"[F]\"`.";
     /// This character cannot start anything in JavaScript at this place.
     JS001: Error, "a character that JavaScript does not allow here (`#`, `@`, a stray `\\`)",
         example = "var x = 1 # comment",

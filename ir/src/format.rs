@@ -14,7 +14,8 @@
 //! 3. drop trailing fraction zeros when `trim_zeros`; write the decimal mark
 //!    as `point` says;
 //! 4. write the sign (`-` for negatives, `+` too under `SignStyle::Always`;
-//!    a value that rounds to zero has no sign);
+//!    a value that rounds to zero has no sign, unless `negative_zero` keeps
+//!    the minus of a negative value: `-0.000`);
 //! 5. pad to `width` (counted as `WidthOf` says) with blanks or zeros, on the
 //!    left unless `justify` is `Left`;
 //! 6. put `prefix` in front.
@@ -56,6 +57,11 @@ pub struct NumberFormat {
     /// engine rounds). Written out (RON) only when it is `Binary`.
     #[serde(skip_serializing_if = "Rounding::is_decimal")]
     pub rounding: Rounding,
+    /// A negative value that rounds to zero keeps its minus sign (`-0.000`
+    /// for -0.0001), as Vectric's engine prints it; zero itself, -0.0
+    /// included, has no sign either way. Written out (RON) only when set.
+    #[serde(skip_serializing_if = "is_false")]
+    pub negative_zero: bool,
     /// Where the post defines the format (a Vectric `VAR` line, a CIMCO
     /// `createFormat` call); `None` for formats a frontend made up.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -65,6 +71,10 @@ pub struct NumberFormat {
     /// made without one (inside a `createVariable` call, a Vectric `VAR`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 /// Which value a format rounds to its decimals, half away from zero.
@@ -102,6 +112,7 @@ impl Default for NumberFormat {
             multiplier: 1.0,
             prefix: String::new(),
             rounding: Rounding::Decimal,
+            negative_zero: false,
             span: None,
             name: None,
         }

@@ -141,6 +141,11 @@ pub struct PostInfo {
     pub subs: Vec<crate::calls::SubSignature>,
     /// Free-form notes (CIMCO `PostInfo.summary`, author, version).
     pub notes: Vec<String>,
+    /// What Vectric's `[REVISION]` prints in a `REVISION_COMMENT` section:
+    /// a hash of the post file (docs/vectric.md); empty when the post
+    /// prints no `[REVISION]`.
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub revision: String,
     /// Where the post names itself (the Vectric `POST_NAME` statement).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub span: Option<Span>,
@@ -224,6 +229,20 @@ pub struct OutputOptions {
     /// out (RON) only when it is `false`.
     #[serde(skip_serializing_if = "is_true")]
     pub forget_modal_at_toolpath_start: bool,
+    /// An on-change variable that prints a runtime quantity (`[X]`, `[F]`)
+    /// prints when the number changes, not when its printed text does: a
+    /// coordinate that moved by less than the last printed digit prints
+    /// again with the same text. Values a post's code assigns compare text.
+    /// The Vectric rule (docs/vectric.md, "Modal words compare values");
+    /// CIMCO and VcPost compare the text. Written out (RON) only when set.
+    #[serde(skip_serializing_if = "is_false")]
+    pub on_change_by_value: bool,
+    /// A rapid move makes the feed variables forget what they printed, so
+    /// the first feed move after a rapid prints its feed again, changed or
+    /// not: the Vectric rule (docs/vectric.md, "The feed after a rapid").
+    /// Written out (RON) only when set.
+    #[serde(skip_serializing_if = "is_false")]
+    pub rapid_forgets_feed: bool,
 }
 
 fn is_true(b: &bool) -> bool {
@@ -247,6 +266,8 @@ impl Default for OutputOptions {
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,
+            on_change_by_value: false,
+            rapid_forgets_feed: false,
         }
     }
 }
@@ -573,6 +594,9 @@ sections! {
     Insert = "INSERT";
     /// Not Vectric: the end of a toolpath.
     ToolpathEnd = "TOOLPATH_END";
+    /// Printed first, before the header: the stock post's revision
+    /// (`(VECTRIC POST REVISION)` and `[REVISION]`).
+    RevisionComment = "REVISION_COMMENT";
 }
 
 impl Section {

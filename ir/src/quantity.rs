@@ -153,6 +153,8 @@ quantities! {
     UnitsText = "UNITS", Text;
     /// Text of the current comment or insert event.
     CommentText = "COMMENT", Text;
+    /// Text: the post's revision hash ([`crate::post::PostInfo::revision`]).
+    Revision = "REVISION", Text;
 }
 
 impl Quantity {

@@ -48,6 +48,7 @@ pub const VECTRIC_SECTIONS: &[(&str, &str)] = &[
     ("COMMENT", "postc extension: an operator comment."),
     ("INSERT", "postc extension: verbatim text from the toolpath."),
     ("TOOLPATH_END", "postc extension: the end of a toolpath."),
+    ("REVISION_COMMENT", "Written first, before the header: the stock post's revision ([REVISION])."),
 ];
 
 /// Vectric labels (`[LABEL]`): what each prints. The `VAR` name of each is
@@ -114,6 +115,7 @@ pub const VECTRIC_LABELS: &[(&str, &str)] = &[
     ("PRODUCT", "The name and version of the program that wrote the output."),
     ("TDIA", "The diameter of the current tool."),
     ("FI", "The inverse-time feed number (1 / minutes for the move)."),
+    ("REVISION", "The post's revision: a 32-digit hash of the post file."),
 ];
 
 /// Vectric global statements (`NAME = value` outside sections).

@@ -1,15 +1,37 @@
 //! The date and time `[DATE]` and `[TIME]` print when neither the job nor
-//! `--set` gives them, as `YYYY-MM-DD` and `HH:MM` in UTC, from the Unix
-//! time the caller passes as [`RunOptions::now`](crate::RunOptions::now).
+//! `--set` gives them, in UTC, from the Unix time the caller passes as
+//! [`RunOptions::now`](crate::RunOptions::now): the date in the long form
+//! VCarve writes (`Tuesday, November 15, 2011`, docs/vectric.md), the time
+//! as `HH:MM`.
 //! The runtime never reads the clock: the command line does (now, or the
 //! time `SOURCE_DATE_EPOCH` names, the reproducible-builds convention).
+
+const WEEKDAYS: [&str; 7] = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
+
+const MONTHS: [&str; 12] = [
+    "January",
+    "February",
+    "March",
+    "April",
+    "May",
+    "June",
+    "July",
+    "August",
+    "September",
+    "October",
+    "November",
+    "December",
+];
 
 /// Date and time of a Unix time, in UTC.
 pub fn format_utc(seconds: i64) -> (String, String) {
     let days = seconds.div_euclid(86_400);
     let secs = seconds.rem_euclid(86_400);
     let (y, m, d) = civil_from_days(days);
-    (format!("{y:04}-{m:02}-{d:02}"), format!("{:02}:{:02}", secs / 3600, secs % 3600 / 60))
+    // 1970-01-01 was a Thursday.
+    let weekday = WEEKDAYS[(days + 4).rem_euclid(7) as usize];
+    let month = MONTHS[(m - 1) as usize];
+    (format!("{weekday}, {month} {d}, {y}"), format!("{:02}:{:02}", secs / 3600, secs % 3600 / 60))
 }
 
 /// Gregorian date of a day count since 1970-01-01 (Howard Hinnant's algorithm).
@@ -32,8 +54,11 @@ mod tests {
 
     #[test]
     fn known_dates() {
-        assert_eq!(format_utc(0), ("1970-01-01".into(), "00:00".into()));
-        assert_eq!(format_utc(951_782_400), ("2000-02-29".into(), "00:00".into()));
-        assert_eq!(format_utc(1_795_422_900), ("2026-11-23".into(), "08:35".into()));
+        assert_eq!(format_utc(0), ("Thursday, January 1, 1970".into(), "00:00".into()));
+        assert_eq!(format_utc(951_782_400), ("Tuesday, February 29, 2000".into(), "00:00".into()));
+        assert_eq!(format_utc(1_795_422_900), ("Monday, November 23, 2026".into(), "08:35".into()));
+        // The date of the real program the long form comes from.
+        assert_eq!(format_utc(1_321_358_400).0, "Tuesday, November 15, 2011");
+        assert_eq!(format_utc(-86_400).0, "Wednesday, December 31, 1969");
     }
 }

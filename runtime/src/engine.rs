@@ -23,7 +23,7 @@ use crate::output::Output;
 use crate::value::{Text, Value};
 
 /// Per-variable run state.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct VarState {
     /// What the variable printed last, for on-change variables: the rounded
     /// number (`key`) when it printed a number on the fast path, else the
@@ -31,6 +31,10 @@ pub struct VarState {
     pub(crate) key: Option<Rounded>,
     pub(crate) last: Vec<u8>,
     pub(crate) has_last: bool,
+    /// The number an on-change variable that compares values
+    /// ([`Modal::Value`]) printed last; NaN when it has printed none since
+    /// its memory was cleared (NaN equals nothing).
+    pub(crate) last_value: f64,
     /// Current and previous value (registers, output variables).
     pub(crate) value: Value,
     pub(crate) previous: Value,
@@ -38,6 +42,20 @@ pub struct VarState {
     /// number. The same number makes the same word, so a feed formatted
     /// every move (`getFeedrate(m)`) is made, and read back, once.
     pub(crate) kept: Option<KeptWord>,
+}
+
+impl Default for VarState {
+    fn default() -> VarState {
+        VarState {
+            key: None,
+            last: Vec::new(),
+            has_last: false,
+            last_value: f64::NAN,
+            value: Value::default(),
+            previous: Value::default(),
+            kept: None,
+        }
+    }
 }
 
 /// A word a variable that always prints made of a number ([`VarState::kept`]).
@@ -128,7 +146,8 @@ pub struct Engine<'p> {
 
 impl<'p> Engine<'p> {
     /// An engine for `post`, whose code `code` is ([`crate::prepare::prepare`]).
-    pub fn new(post: &'p Post, code: &'p Code, machine: MachineState, out: Output) -> Engine<'p> {
+    pub fn new(post: &'p Post, code: &'p Code, mut machine: MachineState, out: Output) -> Engine<'p> {
+        machine.revision.clone_from(&post.info.revision);
         let writers = post.formats.iter().map(NumberWriter::new).collect();
         let mut sections = vec![None; Section::ALL.len()];
         for (i, h) in post.handlers.iter().enumerate() {
@@ -261,8 +280,7 @@ impl<'p> Engine<'p> {
     pub fn clear_modal(&mut self) {
         self.modal_epoch += 1;
         for v in &mut self.vars {
-            v.has_last = false;
-            v.key = None;
+            v.forget();
         }
     }
 
@@ -270,8 +288,7 @@ impl<'p> Engine<'p> {
     /// value prints whatever it is.
     pub fn forget_var(&mut self, var: VarId) {
         if let Some(v) = self.vars.get_mut(var.index()) {
-            v.has_last = false;
-            v.key = None;
+            v.forget();
         }
     }
 
@@ -287,7 +304,7 @@ impl<'p> Engine<'p> {
                             Op::Number { var, quantity, format, modal } => {
                                 let n = self.machine.number(*quantity);
                                 let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                                put_quantity(
+                                put_modal::<true>(
                                     *modal,
                                     &self.writers[format.index()],
                                     state,
@@ -299,7 +316,7 @@ impl<'p> Engine<'p> {
                             Op::Position { var, axis, format, modal } => {
                                 let n = self.machine.pos[*axis as usize];
                                 let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                                put_quantity(
+                                put_modal::<true>(
                                     *modal,
                                     &self.writers[format.index()],
                                     state,
@@ -411,13 +428,13 @@ impl<'p> Engine<'p> {
                         }
                     }
                     let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                    put_quantity(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                    put_modal::<true>(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
                     None
                 }
                 Op::Position { var, axis, format, modal } => {
                     let n = self.machine.pos[*axis as usize];
                     let (state, prefix) = (&mut self.vars[var.index()], &self.prefixes[var.index()]);
-                    put_quantity(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
+                    put_modal::<true>(*modal, &self.writers[format.index()], state, prefix, n, &mut self.out.buf);
                     values += 1;
                     None
                 }
@@ -544,11 +561,11 @@ impl<'p> Engine<'p> {
             ValueSource::Quantity(Quantity::BlockNumber) => {
                 self.block.printed = true;
                 let w = &self.writers[var.format.index()];
-                put_number(is_modal(var), w, state, prefix, self.block.next, &mut self.out.buf);
+                put_modal::<false>(modal_of(post, var), w, state, prefix, self.block.next, &mut self.out.buf);
             }
             ValueSource::Quantity(q) => {
                 let w = &self.writers[var.format.index()];
-                put_quantity(is_modal(var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
+                put_modal::<true>(modal_of(post, var), w, state, prefix, self.machine.number(q), &mut self.out.buf);
             }
             ValueSource::Assigned => {
                 let v = state.value.clone();
@@ -603,14 +620,16 @@ impl<'p> Engine<'p> {
 }
 
 /// The prefix of a variable as printed: under rotary wrap, the wrapped
-/// axis's letter in its prefix becomes the rotary letter.
+/// axis's letter in the prefix of its position and its home position
+/// (`[X]`, `[XH]`) becomes the rotary letter: VCarve writes the home of a
+/// post with `ROTARY_WRAP_Y = "A"` as `G0X0.000A0.000` (docs/vectric.md).
 fn wrapped_prefix(post: &Post, var: &postc_ir::Variable) -> Vec<u8> {
     let mut prefix = var.prefix.clone();
     let Some(wrap) = post.options.rotary_wrap else { return prefix };
     let Some(letter) = wrap.letter else { return prefix };
     let axis = match (var.source, wrap.axis) {
-        (ValueSource::Quantity(Quantity::X), WrappedAxis::X) => b'X',
-        (ValueSource::Quantity(Quantity::Y), WrappedAxis::Y) => b'Y',
+        (ValueSource::Quantity(Quantity::X | Quantity::HomeX), WrappedAxis::X) => b'X',
+        (ValueSource::Quantity(Quantity::Y | Quantity::HomeY), WrappedAxis::Y) => b'Y',
         _ => return prefix,
     };
     if let Some(p) = prefix.iter().position(|b| b.eq_ignore_ascii_case(&axis)) {
@@ -653,21 +672,55 @@ pub(crate) fn put_number(
     put::<false>(modal, w, state, prefix, n, out);
 }
 
-/// Prints a runtime quantity through a variable: like [`put_number`], but a
-/// quantity with no value ([`crate::machine::NO_VALUE`]) prints nothing,
-/// prefix included, and leaves the modal memory as it was (the controller
-/// still holds what was printed last). The check sits on the slow path,
-/// which NaN takes anyway: the fast path pays nothing.
+/// How an on-change variable tells that it must print again.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Modal {
+    /// It always prints.
+    Always,
+    /// It prints when its printed text changes (CIMCO, VcPost).
+    Text,
+    /// It prints when its number changes, even by less than the last
+    /// printed digit (Vectric: [`postc_ir::OutputOptions::on_change_by_value`]).
+    Value,
+}
+
+/// The modality of a variable that prints a runtime quantity.
+#[inline]
+pub(crate) fn modal_of(post: &Post, var: &Variable) -> Modal {
+    match (is_modal(var), post.options.on_change_by_value) {
+        (false, _) => Modal::Always,
+        (true, false) => Modal::Text,
+        (true, true) => Modal::Value,
+    }
+}
+
+/// Prints a number through a variable under a [`Modal`]: a variable that
+/// compares values prints when the number differs from the one it printed
+/// last (NaN, no value, is never equal), whatever text it makes. With
+/// `ABSENT_PRINTS_NOTHING` (runtime quantities), a quantity with no value
+/// ([`crate::machine::NO_VALUE`]) prints nothing, prefix included, and
+/// leaves the modal memory as it was (the controller still holds what was
+/// printed last). The check sits on the slow path, which NaN takes anyway:
+/// the fast path pays nothing.
 #[inline(always)]
-pub(crate) fn put_quantity(
-    modal: bool,
+pub(crate) fn put_modal<const ABSENT_PRINTS_NOTHING: bool>(
+    modal: Modal,
     w: &NumberWriter,
     state: &mut VarState,
     prefix: &[u8],
     n: f64,
     out: &mut Vec<u8>,
 ) {
-    put::<true>(modal, w, state, prefix, n, out);
+    match modal {
+        Modal::Value => {
+            if n == state.last_value || (ABSENT_PRINTS_NOTHING && n.is_nan()) {
+                return;
+            }
+            state.last_value = n;
+            put::<ABSENT_PRINTS_NOTHING>(false, w, state, prefix, n, out);
+        }
+        other => put::<ABSENT_PRINTS_NOTHING>(other == Modal::Text, w, state, prefix, n, out),
+    }
 }
 
 #[inline(always)]
@@ -807,9 +860,9 @@ pub(crate) enum Op<'p> {
     /// Literal bytes that fit a small window: appended as one fixed-size copy.
     ShortText(SmallBytes),
     /// A numeric quantity through a variable: no lookups left to do.
-    Number { var: VarId, quantity: Quantity, format: FormatId, modal: bool },
+    Number { var: VarId, quantity: Quantity, format: FormatId, modal: Modal },
     /// X, Y or Z of the current position (no rotary wrap): read directly.
-    Position { var: VarId, axis: u8, format: FormatId, modal: bool },
+    Position { var: VarId, axis: u8, format: FormatId, modal: Modal },
     /// Anything else (text quantities, block numbers, assigned variables, expressions).
     Piece(&'p Piece),
 }
@@ -848,11 +901,11 @@ pub(crate) fn prepare_lines<'p>(post: &'p Post, body: &'p [Stmt], moves: bool) -
                                             .position(|a| *a == q)
                                             .unwrap_or(0) as u8,
                                         format: var.format,
-                                        modal: is_modal(var),
+                                        modal: modal_of(post, var),
                                     }
                                 }
                                 ValueSource::Quantity(q) if !q.is_text() && q != Quantity::BlockNumber => {
-                                    Op::Number { var: *id, quantity: q, format: var.format, modal: is_modal(var) }
+                                    Op::Number { var: *id, quantity: q, format: var.format, modal: modal_of(post, var) }
                                 }
                                 _ => Op::Piece(piece),
                             }

@@ -77,7 +77,8 @@ pub struct RunOptions {
     /// Now, as a Unix time in seconds: what `[DATE]` and `[TIME]` print (in
     /// UTC) when neither the job nor `date`/`time` give them. The runtime
     /// never reads the clock; the caller does (the command line: the system
-    /// clock, or `SOURCE_DATE_EPOCH`). `None` prints 1970-01-01 00:00.
+    /// clock, or `SOURCE_DATE_EPOCH`). `None` prints Thursday, January 1,
+    /// 1970, 00:00.
     pub now: Option<i64>,
     /// The output file, overriding the job's (`-o`).
     pub file: Option<FileInfo>,

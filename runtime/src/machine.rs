@@ -82,6 +82,8 @@ pub struct MachineState {
     pub toolpaths_output: String,
     pub spindle_range: Option<SpindleSpeedRange>,
     pub wrap: Option<RotaryWrap>,
+    /// `[REVISION]`: the post's revision hash (`PostInfo::revision`).
+    pub revision: String,
 }
 
 impl MachineState {
@@ -122,6 +124,7 @@ impl MachineState {
             toolpaths_output: String::new(),
             spindle_range,
             wrap,
+            revision: String::new(),
         }
     }
 
@@ -241,8 +244,8 @@ impl MachineState {
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),
             Quantity::DwellTime => self.dwell,
-            Quantity::HomeX => home(|h| h.x),
-            Quantity::HomeY => home(|h| h.y),
+            Quantity::HomeX => self.wrapped(0, home(|h| h.x)),
+            Quantity::HomeY => self.wrapped(1, home(|h| h.y)),
             Quantity::HomeZ => home(|h| h.z),
             Quantity::SafeZ => self.job.safe_z.unwrap_or_else(|| home(|h| h.z)),
             Quantity::WrapDiameter => self.job.wrap_diameter.unwrap_or(NO_VALUE),
@@ -318,6 +321,7 @@ impl MachineState {
             Quantity::Product => self.job.product.as_deref().unwrap_or("postc"),
             Quantity::UnitsText => self.output_units.name(),
             Quantity::CommentText => &self.comment,
+            Quantity::Revision => &self.revision,
             _ => "",
         }
     }
@@ -334,9 +338,16 @@ impl MachineState {
     /// X or Y, as an angle when that axis is wrapped.
     #[inline]
     fn axis_value(&self, axis: usize) -> f64 {
+        self.wrapped(axis, self.pos[axis])
+    }
+
+    /// A value of X (`axis` 0) or Y (1), as an angle when that axis is
+    /// wrapped: positions and the home position alike.
+    #[inline]
+    fn wrapped(&self, axis: usize, v: f64) -> f64 {
         match self.wrap {
-            Some(w) if (w.axis == WrappedAxis::X) == (axis == 0) => self.wrap_angle(self.pos[axis], w),
-            _ => self.pos[axis],
+            Some(w) if (w.axis == WrappedAxis::X) == (axis == 0) => self.wrap_angle(v, w),
+            _ => v,
         }
     }
 

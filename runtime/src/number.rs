@@ -95,6 +95,8 @@ pub struct NumberWriter {
     plain: bool,
     /// Round the binary double, not its shortest decimal form.
     binary: bool,
+    /// A negative value that rounds to zero keeps its minus sign.
+    negative_zero: bool,
 }
 
 impl NumberWriter {
@@ -119,6 +121,7 @@ impl NumberWriter {
             prefix: format.prefix.as_bytes().to_vec(),
             plain: format.width <= 1,
             binary: format.rounding == Rounding::Binary,
+            negative_zero: format.negative_zero,
         }
     }
 
@@ -189,7 +192,7 @@ impl NumberWriter {
             magnitude >= tie
         };
         let m = (floor + i64::from(up)) as u64;
-        Some(Rounded { negative: value < 0.0 && m != 0, m })
+        Some(Rounded { negative: value < 0.0 && (m != 0 || self.negative_zero), m })
     }
 
     /// Appends the formatted value (prefix included) to `out`.
@@ -327,7 +330,7 @@ impl NumberWriter {
             }
         }
         let is_zero = integer.iter().chain(fraction).all(|&d| d == b'0');
-        let sign: &[u8] = match (negative && !is_zero, self.sign_always) {
+        let sign: &[u8] = match (negative && (!is_zero || self.negative_zero), self.sign_always) {
             (true, _) => b"-",
             (false, true) => b"+",
             (false, false) => b"",

@@ -52,6 +52,7 @@ impl VarState {
     pub fn forget(&mut self) {
         self.has_last = false;
         self.key = None;
+        self.last_value = f64::NAN;
     }
 
     /// Prints `v` through the variable (`modal` when it is on-change) into

@@ -231,6 +231,8 @@ impl Printer<'_> {
             ("laserSupport", info.laser_support),
             ("printDirect", info.print_direct),
             ("rapidPlungeToStartZ", info.rapid_plunge_to_start_z),
+            ("onChangeByValue", o.on_change_by_value),
+            ("rapidForgetsFeed", o.rapid_forgets_feed),
         ] {
             if on {
                 keys.push(format!("{key}: true"));
@@ -238,6 +240,9 @@ impl Printer<'_> {
         }
         if let Some(d) = &info.direct_output {
             keys.push(format!("directOutput: {}", js_string(d)));
+        }
+        if !info.revision.is_empty() {
+            keys.push(format!("revision: {}", js_string(&info.revision)));
         }
         if info.text_encoding == TextEncoding::Windows1252 {
             keys.push("textEncoding: \"windows-1252\"".into());
@@ -407,6 +412,9 @@ fn format_keys(f: &NumberFormat) -> Vec<String> {
     }
     if f.rounding != d.rounding {
         k.push(format!("binaryRounding: {}", f.rounding == postc_ir::format::Rounding::Binary));
+    }
+    if f.negative_zero != d.negative_zero {
+        k.push(format!("negativeZero: {}", f.negative_zero));
     }
     k
 }

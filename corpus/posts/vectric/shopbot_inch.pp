@@ -13,8 +13,10 @@
 + - FEED_RATE_CHANGE setting MS when the feed changes (M3 carries no
 +   speed);
 + - arc sections without [Z]: helices are linearized;
-+ - the seed 000 defaults of undeclared labels: [XMIN] [XMAX] [YMIN]
-+   [YMAX] [ZMIN] [ZMAX] print with a leading blank and 3 decimals;
++ - the defaults of undeclared labels: [XMIN] [XMAX] [YMIN] [YMAX]
++   [ZMIN] [ZMAX] print with no prefix and 3 decimals, so the line
++   writes its own blanks, as VCarve's ShopBot posts do
++   ("'Length of material in X = [XLENGTH]");
 + - job data: [Z_ORIGIN] [XY_ORIGIN] [X_ORIGIN_POS] [Y_ORIGIN_POS]
 +   [SAFEZ] [ZLENGTH] [FILE_NOTES] [TOOLPATHS_OUTPUT] [DATE] [TIME]
 +   [PRODUCT];
@@ -52,7 +54,7 @@ VAR DWELL_TIME = [DWELL|A||1.2]
 begin HEADER
 "'[TP_FILENAME]"
 "'Made by [PRODUCT] on [DATE] at [TIME]"
-"'Material X[XMIN] to[XMAX], Y[YMIN] to[YMAX], Z[ZMIN] to[ZMAX]"
+"'Material X [XMIN] to [XMAX], Y [YMIN] to [YMAX], Z [ZMIN] to [ZMAX]"
 "'Origin [XY_ORIGIN] at [X_ORIGIN_POS], [Y_ORIGIN_POS]"
 "'Notes: [FILE_NOTES]"
 "'Toolpaths: [TOOLPATHS_OUTPUT]"

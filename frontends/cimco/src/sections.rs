@@ -190,6 +190,10 @@ impl Lowerer<'_> {
         };
         for (key, v, span) in props {
             let (info, o) = (&mut self.post.info, &mut self.post.options);
+            if let (Some(flag), Value::Bool(b)) = (flag_of(&key, info, o), &v) {
+                *flag = *b;
+                continue;
+            }
             let ok = match (key.as_str(), v) {
                 ("name", Value::Text(t)) => {
                     info.name = t;
@@ -252,28 +256,16 @@ impl Lowerer<'_> {
                     o.max_arc_radius = Some(n);
                     true
                 }
-                ("inverseTimeFeed", Value::Bool(b)) => {
-                    o.inverse_time_feed = b;
-                    true
-                }
-                ("laserSupport", Value::Bool(b)) => {
-                    info.laser_support = b;
-                    true
-                }
-                ("printDirect", Value::Bool(b)) => {
-                    info.print_direct = b;
-                    true
-                }
-                ("rapidPlungeToStartZ", Value::Bool(b)) => {
-                    info.rapid_plunge_to_start_z = b;
-                    true
-                }
                 ("textEncoding", Value::Text(t)) if t == "windows-1252" => {
                     info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
                     true
                 }
                 ("directOutput", Value::Text(t)) => {
                     info.direct_output = Some(t);
+                    true
+                }
+                ("revision", Value::Text(t)) => {
+                    info.revision = t;
                     true
                 }
                 ("blockNumbers", Value::List(n)) => match n.as_slice() {
@@ -387,6 +379,10 @@ impl Lowerer<'_> {
                         if b { postc_ir::format::Rounding::Binary } else { postc_ir::format::Rounding::Decimal };
                     true
                 }
+                ("negativeZero", Value::Bool(b)) => {
+                    format.negative_zero = b;
+                    true
+                }
                 _ => false,
             };
             if !ok {
@@ -479,4 +475,21 @@ fn concat_leaves<'e>(e: &'e Expr, out: &mut Vec<&'e Expr>) {
         }
         _ => out.push(e),
     }
+}
+
+/// The yes/no setting a `true`/`false` option of `postcOptions` names.
+fn flag_of<'a>(
+    key: &str,
+    info: &'a mut postc_ir::PostInfo,
+    o: &'a mut postc_ir::OutputOptions,
+) -> Option<&'a mut bool> {
+    Some(match key {
+        "inverseTimeFeed" => &mut o.inverse_time_feed,
+        "laserSupport" => &mut info.laser_support,
+        "printDirect" => &mut info.print_direct,
+        "rapidPlungeToStartZ" => &mut info.rapid_plunge_to_start_z,
+        "onChangeByValue" => &mut o.on_change_by_value,
+        "rapidForgetsFeed" => &mut o.rapid_forgets_feed,
+        _ => return None,
+    })
 }

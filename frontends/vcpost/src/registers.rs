@@ -21,6 +21,7 @@
 //! | `Justify` | `"Left"`/`"Right"` | side of the value inside `Width` | `"Right"` |
 //! | `DecimalMark` | `"."` or `","` | the decimal mark | `"."` |
 //! | `Multiplier` (or `Scale`) | number | the value is multiplied by this before rounding | 1 |
+//! | `NegativeZero` | `True`/`False` | a negative value that rounds to zero keeps its minus (`-0.000`), as Vectric prints it | `False` |
 //! | `Modal` | `True`/`False` | print only when the printed text changes (memory cleared at each toolpath start) | `False` (always printed) |
 //! | `Start`, `Increment`, `Maximum` | number | `N` only: block numbering | 1, 1, 999999 |
 
@@ -46,6 +47,7 @@ pub const PROPERTIES: &[&str] = &[
     "DecimalMark",
     "Multiplier",
     "Scale",
+    "NegativeZero",
     "Modal",
     "Start",
     "Increment",
@@ -232,6 +234,7 @@ pub fn apply(
             spec.format.decimal_mark = t.chars().next().unwrap_or('.')
         }
         ("Multiplier" | "Scale", Constant::Number(n)) if n.is_finite() && *n != 0.0 => spec.format.multiplier = *n,
+        ("NegativeZero", Constant::Bool(b)) => spec.format.negative_zero = *b,
         ("Modal", Constant::Bool(b)) => spec.modality = if *b { Modality::OnChange } else { Modality::Always },
         ("Start" | "Increment" | "Maximum", _) if !sequence => {
             return Err(Diagnostic::error(
@@ -254,7 +257,7 @@ fn expected_for(property: &str) -> &'static str {
         "Prefix" => "text in quotes",
         "Format" => "a format in quotes, such as \"4.3\"",
         "Decimals" => "a whole number from 0 to 9",
-        "TrailingZeros" | "ZeroBeforePoint" | "Modal" => "True or False",
+        "TrailingZeros" | "ZeroBeforePoint" | "NegativeZero" | "Modal" => "True or False",
         "LeadingZeros" => "True, False or a digit count",
         "DecimalPoint" => "True, False, \"Always\" or \"Auto\"",
         "Sign" => "\"+\" (always) or \"-\" (negative only)",

@@ -1,46 +1,46 @@
 //! How a label prints when the post uses it without declaring it with `VAR`.
 //!
-//! Seed 000 ("Default Formatting for Variables") lists the defaults of the
-//! rows marked *seed 000*; they are copied as written there, including the
-//! single blank prefix of the position, home, arc and material labels
-//! (`[X|A| |1.3]`) and the on-change `C` of `[FC|C ||1.0]`, and the empty
-//! prefix of `[N|A|1.0]`, `[S|A|1.0]`, `[F|A|1.0]` and `[FP|A|1.0]`, which
-//! leave the prefix field out. Seed 001 lists other defaults (`[X|A||1.0]`,
-//! `[FC|A||1.0]`); seed 000 wins (brief, decision 8). Every other label has
-//! a default chosen here (*postc*): an empty prefix, printed every time,
-//! whole numbers for counts and numbers, three decimals for lengths and
-//! angles like the seed's lengths, two for dwell seconds as the corpus posts
-//! that declare `DWELL` do. Text labels print their text; their format does
-//! not matter.
+//! Both guides list defaults ("Default Formatting for Variables"), and
+//! they disagree; a program VCarve wrote outranks both (docs/vectric.md,
+//! "Defaults of undeclared labels"):
 //!
-//! | label | default | source |
-//! |-------|---------|--------|
-//! | N | `[N\|A\|1.0]` (empty prefix) | seed 000 |
-//! | S | `[S\|A\|1.0]` (empty prefix) | seed 000 |
-//! | F | `[F\|A\|1.0]` (empty prefix) | seed 000 |
-//! | FP | `[FP\|A\|1.0]` (empty prefix) | seed 000 |
-//! | FC | `[FC\|C\|\|1.0]` | seed 000 |
-//! | X Y Z | `[X\|A\| \|1.3]` | seed 000 |
-//! | XH YH ZH | `[XH\|A\| \|1.3]` | seed 000 |
-//! | SAFEZ | `[SAFEZ\|A\| \|1.3]` | seed 000 |
-//! | ArcStartX ArcStartY | `[ArcStartX\|A\| \|1.3]` | seed 000 |
-//! | I J | `[I\|A\| \|1.3]` | seed 000 |
-//! | IA JA | `[IA\|A\| \|1.3]` | seed 000 |
-//! | ArcMidX ArcMidY ArcMidXI ArcMidYI | `[ArcMidX\|A\| \|1.3]` | seed 000 |
-//! | Radius | `[Radius\|A\| \|1.3]` | seed 000 |
-//! | Angle | `[Angle\|A\| \|1.3]` | seed 000 |
-//! | XLENGTH YLENGTH ZLENGTH XMIN YMIN ZMIN XMAX YMAX ZMAX | `[XLENGTH\|A\| \|1.3]` | seed 000 |
-//! | K KA | `[K\|A\| \|1.3]` (like I and J) | postc |
-//! | A B C | `[A\|A\|\|1.3]` (degrees) | postc |
-//! | T TP | `[T\|A\|\|1.0]` | postc |
-//! | P | `[P\|A\|\|1.0]` | postc |
-//! | FI | `[FI\|A\|\|1.3]` | postc |
-//! | DWELL | `[DWELL\|A\|\|1.2]` (corpus posts use `1.2`) | postc |
-//! | TDIA | `[TDIA\|A\|\|1.3]` | postc |
-//! | WRAP_DIA | `[WRAP_DIA\|A\|\|1.3]` | postc |
-//! | X_ORIGIN_POS Y_ORIGIN_POS | `[X_ORIGIN_POS\|A\|\|1.3]` | postc |
-//! | D H | `[D\|A\|\|1.0]` | postc |
-//! | text labels (TOOLNAME, DATE, TIME, UNITS, ...) | `[TOOLNAME\|A\|\|1.0]`: the text | postc |
+//! - **Prefix: empty everywhere (seed 001).** Seed 000 writes a one-blank
+//!   prefix for positions, homes, arc words and the material block
+//!   (`[XMIN|A| |1.3]`), seed 001 none (`[XMIN|A||1.3]`). A ShopBot program
+//!   VCarve wrote from a header line `"'Length of material in X = [XLENGTH]"`
+//!   with `XLENGTH` undeclared reads `'Length of material in X = 24.000`: one
+//!   blank, the post's own, so no prefix. Seed 000's blank is the same
+//!   in every row of its table, so seed 001 wins for all of them.
+//! - **Format and modality: seed 000 where the guides disagree and no
+//!   program shows the label** (BRIEF decision 8): positions and homes
+//!   `1.3` (seed 001: `1.0`), `[FC]` on change (seed 001: always).
+//! - **Where they agree**, as both write them; the real programs agree
+//!   where they show one (`[XLENGTH]` prints `24.000`, three decimals).
+//! - **Labels neither guide lists** have a default chosen here (*postc*):
+//!   an empty prefix, printed every time, whole numbers for counts (`[T]`
+//!   prints `T1`, `T8` in the ShopSabre programs from `"T[T]"`), three
+//!   decimals for lengths and angles like the guides' lengths, two for
+//!   dwell seconds as the corpus posts that declare `DWELL` do. Text labels
+//!   print their text; their format does not matter.
+//!
+//! | label | seed 000 | seed 001 | postc | why |
+//! |-------|----------|----------|-------|-----|
+//! | N, S, F, FP | `[N\|A\|1.0]` | `[N\|A\|\|1.0]` | `[N\|A\|\|1.0]` | the guides agree |
+//! | FC | `[FC\|C \|\|1.0]` | `[FC\|A\|\|1.0]` | `[FC\|C\|\|1.0]` | seed 000's modality, no program shows it |
+//! | X Y Z, XH YH ZH | `[X\|A\| \|1.3]` | `[X\|A\|\|1.0]` | `[X\|A\|\|1.3]` | seed 001's prefix (program), seed 000's format |
+//! | SAFEZ, ArcStartX/Y, I J, IA JA, ArcMidX/Y, ArcMidXI/YI, Radius, Angle | `[I\|A\| \|1.3]` | `[I\|A\|\|1.3]` | `[I\|A\|\|1.3]` | seed 001 (program: the prefix) |
+//! | XLENGTH YLENGTH ZLENGTH XMIN YMIN ZMIN XMAX YMAX ZMAX | `[XMIN\|A\| \|1.3]` | `[XMIN\|A\|\|1.3]` | `[XMIN\|A\|\|1.3]` | seed 001, as the ShopBot program prints `[XLENGTH]` |
+//! | K KA | | | `[K\|A\|\|1.3]` (like I and J) | postc |
+//! | A B C | | | `[A\|A\|\|1.3]` (degrees) | postc |
+//! | T TP | | | `[T\|A\|\|1.0]` | postc; the ShopSabre programs print `T1` |
+//! | P | | | `[P\|A\|\|1.0]` | postc |
+//! | FI | | | `[FI\|A\|\|1.3]` | postc |
+//! | DWELL | | | `[DWELL\|A\|\|1.2]` (corpus posts use `1.2`) | postc |
+//! | TDIA | | | `[TDIA\|A\|\|1.3]` | postc |
+//! | WRAP_DIA | | | `[WRAP_DIA\|A\|\|1.3]` | postc |
+//! | X_ORIGIN_POS Y_ORIGIN_POS | | | `[X_ORIGIN_POS\|A\|\|1.3]` | postc |
+//! | D H | | | `[D\|A\|\|1.0]` | postc |
+//! | text labels (TOOLNAME, DATE, TIME, UNITS, REVISION, ...) | | | `[TOOLNAME\|A\|\|1.0]`: the text | postc |
 
 use postc_ir::{Modality, Quantity};
 
@@ -66,6 +66,8 @@ fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
     match quantity {
         Q::BlockNumber | Q::SpindleSpeed | Q::Feed | Q::PlungeFeed => (Modality::Always, "", "1.0"),
         Q::CutFeed => (Modality::OnChange, "", "1.0"),
+        // Lengths and angles: the guides' rows, then postc's own (A B C,
+        // FI, TDIA, WRAP_DIA, the origin).
         Q::X
         | Q::Y
         | Q::Z
@@ -95,12 +97,16 @@ fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
         | Q::ZMin
         | Q::XMax
         | Q::YMax
-        | Q::ZMax => (Modality::Always, " ", "1.3"),
-        Q::A | Q::B | Q::C | Q::InverseTimeFeed | Q::ToolDiameter | Q::WrapDiameter | Q::XOrigin | Q::YOrigin => {
-            (Modality::Always, "", "1.3")
-        }
+        | Q::ZMax
+        | Q::A
+        | Q::B
+        | Q::C
+        | Q::InverseTimeFeed
+        | Q::ToolDiameter
+        | Q::WrapDiameter
+        | Q::XOrigin
+        | Q::YOrigin => (Modality::Always, "", "1.3"),
         Q::DwellTime => (Modality::Always, "", "1.2"),
-        Q::Tool | Q::PreviousTool | Q::Power | Q::CompRegister | Q::LengthOffset => (Modality::Always, "", "1.0"),
         _ => (Modality::Always, "", "1.0"),
     }
 }
@@ -112,7 +118,9 @@ mod tests {
     #[test]
     fn seed_defaults() {
         let x = default_format(Quantity::X);
-        assert_eq!((x.modality, x.prefix, x.format.decimals), (Modality::Always, " ", 3));
+        assert_eq!((x.modality, x.prefix, x.format.decimals), (Modality::Always, "", 3));
+        let length = default_format(Quantity::XLength);
+        assert_eq!((length.modality, length.prefix, length.format.decimals), (Modality::Always, "", 3));
         let fc = default_format(Quantity::CutFeed);
         assert_eq!((fc.modality, fc.prefix, fc.format.decimals), (Modality::OnChange, "", 0));
         let n = default_format(Quantity::BlockNumber);

@@ -62,6 +62,7 @@ codes! {
     BaseChain = PP030;
     TwoRotaryWraps = PP031;
     Unreadable = PP032;
+    BareVariables = PP033;
 }
 
 impl Code {

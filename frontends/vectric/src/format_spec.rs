@@ -66,6 +66,8 @@ impl FormatSpec {
             multiplier,
             prefix: String::new(),
             rounding: postc_ir::Rounding::Decimal,
+            // VCarve writes `Z-0.000` for a small negative Z (docs/vectric.md).
+            negative_zero: true,
             span: None,
             name: None,
         }

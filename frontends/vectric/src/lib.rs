@@ -14,6 +14,7 @@
 //!   labels the defaults of [`defaults`], and builds the IR: one number
 //!   format and one variable per `VAR`, one handler per section whose lines
 //!   are literal bytes and variables, Lua kept as scripts postc does not run;
+//! - [`revision`]: what `[REVISION]` prints (a hash of the post file);
 //! - [`diagnostics`]: the `PP` codes.
 
 pub mod ast;
@@ -25,6 +26,7 @@ pub mod format_spec;
 mod lower;
 pub mod names;
 mod parser;
+pub mod revision;
 
 use std::path::Path;
 

@@ -100,6 +100,27 @@ fn negative_zero_has_no_sign() {
     assert_eq!(fmt("+1.3", -0.0004), "+0.000");
 }
 
+/// Vectric's engine keeps the minus of a negative value that rounds to
+/// zero (`Z-0.000`, docs/vectric.md); zero itself has no sign, -0.0 (a
+/// zero times a multiplier of -1) included.
+#[test]
+fn negative_zero_keeps_its_sign_when_asked() {
+    let f = |spec: &str, v: f64| {
+        let mut out = Vec::new();
+        NumberWriter::new(&NumberFormat { negative_zero: true, ..vectric(spec) }).write(v, &mut out);
+        String::from_utf8(out).unwrap()
+    };
+    assert_eq!(f("1.3", -0.0004), "-0.000");
+    assert_eq!(f("1.3", -1e-9), "-0.000");
+    assert_eq!(f("1.3", -0.0), "0.000");
+    assert_eq!(f("1.3", 0.0004), "0.000");
+    assert_eq!(f("+1.3", -0.0004), "-0.000");
+    assert_eq!(f("07.3", -0.0004), "-00.000");
+    assert_eq!(f("1.0", -0.4), "-0");
+    let w = NumberWriter::new(&NumberFormat { negative_zero: true, ..vectric("1.3") });
+    assert_ne!(w.round(-0.0004), w.round(0.0004), "modal memory tells -0.000 from 0.000");
+}
+
 #[test]
 fn flags_and_widths() {
     assert_eq!(fmt("1.3", 12.5), "12.500");
@@ -260,6 +281,7 @@ proptest! {
         point_always in any::<bool>(),
         sign_always in any::<bool>(),
         comma in any::<bool>(),
+        negative_zero in any::<bool>(),
     ) {
         // Trimmed formats (CIMCO's default) take the right-to-left writer
         // too: every flag it reads against the assembling writer.
@@ -271,6 +293,7 @@ proptest! {
             point: if point_always { PointStyle::Always } else { PointStyle::default() },
             sign: if sign_always { SignStyle::Always } else { SignStyle::default() },
             decimal_mark: if comma { ',' } else { '.' },
+            negative_zero,
             ..NumberFormat::default()
         };
         let w = NumberWriter::new(&f);

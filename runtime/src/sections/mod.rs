@@ -2,13 +2,15 @@
 //! rules that CIMCO posts share.
 //!
 //! - The header prints when the first toolpath starts, with the first tool's
-//!   data; `SPINDLE_ON` follows it and each `TOOLCHANGE` (not for jet tools,
+//!   data, after `REVISION_COMMENT`; `SPINDLE_ON` follows it and each `TOOLCHANGE` (not for jet tools,
 //!   nor when the speed is negative). Each later toolpath prints
 //!   `TOOLCHANGE` when the tool number changes, then `NEW_SEGMENT`. Modal
 //!   memory is cleared as a toolpath starts, so its first move prints every
 //!   word.
 //! - `FIRST_` sections print the first move of a run of moves of their kind
 //!   and again after the feed rate changes; otherwise the plain section.
+//!   A post may have the feed variables forget what they printed after each
+//!   rapid, so that the first feed move after a rapid prints its feed.
 //!   A missing `FIRST_` section falls back to the plain one, and the other
 //!   way round. Plunges without plunge sections, and retracts without
 //!   `RETRACT_MOVE`, print as feed (or rapid) moves.
@@ -85,6 +87,9 @@ pub struct SectionDispatch {
     /// Formats of the X and Y variables, to know the printed points.
     xy_formats: [Option<postc_ir::FormatId>; 2],
     exact_arcs: bool,
+    /// The variables that print the feed, forgotten after each rapid when
+    /// the post says so ([`postc_ir::OutputOptions::rapid_forgets_feed`]).
+    feed_vars: Vec<postc_ir::VarId>,
 }
 
 impl SectionDispatch {
@@ -106,6 +111,14 @@ impl SectionDispatch {
             held_bytes: 0,
             xy_formats: [format_of(Quantity::X), format_of(Quantity::Y)],
             exact_arcs: exact_arcs || eng.post.options.exact_arcs,
+            feed_vars: if eng.post.options.rapid_forgets_feed {
+                (0..eng.post.variables.len())
+                    .filter(|&i| eng.post.variables[i].source == postc_ir::ValueSource::Quantity(Quantity::Feed))
+                    .filter_map(postc_ir::VarId::from_usize)
+                    .collect()
+            } else {
+                Vec::new()
+            },
         }
     }
 
@@ -334,6 +347,8 @@ impl SectionDispatch {
     }
 
     fn start_program(&mut self, eng: &mut Engine) -> Result<()> {
+        // A stock Vectric post's revision lines come first (docs/vectric.md).
+        eng.run_section(Section::RevisionComment)?;
         eng.run_section(Section::Header)?;
         self.spindle_on = Self::spindle_tool(eng) && eng.run_section(Section::SpindleOn)?;
         self.initial_rapid = true;
@@ -386,6 +401,11 @@ impl SectionDispatch {
         self.initial_rapid = false;
         self.family = Family::Rapid;
         eng.run_section(section)?;
+        // Vectric prints the feed again on the first feed move after a
+        // rapid, changed or not (docs/vectric.md).
+        for &v in &self.feed_vars {
+            eng.forget_var(v);
+        }
         self.after_move(eng, retract)
     }
 

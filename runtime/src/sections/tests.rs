@@ -1,4 +1,4 @@
-//! Tape splitting and rotary-wrap behaviour of section dispatch.
+//! Tape splitting, rotary-wrap and modal-memory behaviour of section dispatch.
 
 use postc_ir::event::{Job, Tool, ToolpathStart, VecSource};
 use postc_ir::post::TapeSplitting;
@@ -160,4 +160,66 @@ fn a_wrapped_post_warns_when_the_job_has_no_wrap_diameter() {
     };
     assert_eq!(run(Job::default()), ["RT015"]);
     assert!(run(Job { wrap_diameter: Some(40.0), ..Job::default() }).is_empty());
+}
+
+/// A post whose moves print `[X]` and `[F]`, both on change, whole numbers.
+fn modal_post(by_value: bool, rapid_forgets_feed: bool) -> Post {
+    let mut post = Post::default();
+    post.formats.push(NumberFormat { decimals: 0, ..NumberFormat::default() });
+    for (name, q) in [("X", Quantity::X), ("F", Quantity::Feed)] {
+        post.variables.push(Variable {
+            name: name.into(),
+            source: ValueSource::Quantity(q),
+            prefix: name.as_bytes().to_vec(),
+            format: FormatId::new(0),
+            modality: postc_ir::Modality::OnChange,
+            span: None,
+        });
+    }
+    let var = |v: u16| Piece::Var(postc_ir::VarId::new(v));
+    for (section, pieces) in [
+        (Section::RapidMove, vec![Piece::Text(b"G0".to_vec()), var(0)]),
+        (Section::FeedMove, vec![Piece::Text(b"G1".to_vec()), var(0), var(1)]),
+    ] {
+        post.handlers.push(Handler {
+            key: HandlerKey::Section(section),
+            body: vec![Stmt::Line { pieces, span: None }],
+            span: None,
+        });
+    }
+    post.options.on_change_by_value = by_value;
+    post.options.rapid_forgets_feed = rapid_forgets_feed;
+    post
+}
+
+fn modal_run(post: &Post) -> String {
+    let feed = |x: f64| Event::Feed(FeedMove { x, y: 0.0, z: 0.0, feed: Some(100.0), ..FeedMove::default() });
+    let events = vec![
+        Event::Job(Box::default()),
+        tool(1),
+        Event::ToolpathStart(ToolpathStart::default()),
+        feed(1.0),
+        // 1.2 prints `1` as 1.0 does: the value changed, the text did not.
+        feed(1.2),
+        feed(1.2),
+        Event::Rapid(Move { x: 5.0, y: 0.0, z: 0.0, ..Move::default() }),
+        feed(6.0),
+    ];
+    parts(post, events).concat()
+}
+
+/// On change by value prints a word whose number changed though its text
+/// did not (Vectric); by text it does not (CIMCO, VcPost). An unchanged
+/// number prints nothing either way.
+#[test]
+fn on_change_compares_values_or_text() {
+    assert_eq!(modal_run(&modal_post(true, false)), "G1X1F100\nG1X1\nG1\nG0X5\nG1X6\n");
+    assert_eq!(modal_run(&modal_post(false, false)), "G1X1F100\nG1\nG1\nG0X5\nG1X6\n");
+}
+
+/// A rapid makes the feed forget what it printed when the post says so:
+/// the feed move after it prints `F100` again.
+#[test]
+fn a_rapid_forgets_the_feed_when_asked() {
+    assert_eq!(modal_run(&modal_post(true, true)), "G1X1F100\nG1X1\nG1\nG0X5\nG1X6F100\n");
 }

@@ -19,24 +19,26 @@ var postcOptions = {
     fileExtension: "tap",
     units: "INCH",
     lineEnding: "\r\n",
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
 };
 
 //================================================
 //    Formatting for variables
 //================================================
-var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0}));
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 4}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 4}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({decimals: 4}));
-var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({decimals: 4}));
-var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({decimals: 4}));
-var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({decimals: 4}));
-var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({decimals: 4}));
-var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({decimals: 4}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
+var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0, negativeZero: true}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({decimals: 4, negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({decimals: 4, negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({decimals: 4, negativeZero: true}));
+var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({decimals: 4, negativeZero: true}));
+var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({decimals: 4, negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({decimals: 4, negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({decimals: 4, negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({decimals: 4, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
 
 //================================================
 //    Block definitions for toolpath output

@@ -19,31 +19,33 @@ var postcOptions = {
     units: "MM",
     substitute: [["(", "{"], [")", "}"]],
     laserSupport: true,
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [10, 10, 99999],
 };
 
-var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0}));
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var POWER = createVariable({prefix: "S", label: "P"}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
-var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({decimals: 4}));
-var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({decimals: 4}));
-var SAFE_Z_HEIGHT = createVariable({prefix: "Z", label: "SAFEZ"}, createFormat({}));
-var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 2}));
-var X_LENGTH = createVariable({prefix: "", label: "XLENGTH"}, createFormat({decimals: 1}));
-var Y_LENGTH = createVariable({prefix: "", label: "YLENGTH"}, createFormat({decimals: 1}));
-var Z_LENGTH = createVariable({prefix: "", label: "ZLENGTH"}, createFormat({decimals: 1}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var PRODUCT = createVariable({prefix: "", label: "PRODUCT"}, createFormat({decimals: 0}));
-var DATE = createVariable({prefix: "", label: "DATE"}, createFormat({decimals: 0}));
-var TIME = createVariable({prefix: "", label: "TIME"}, createFormat({decimals: 0}));
-var TOOLS_USED = createVariable({prefix: "", label: "TOOLS_USED"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
-var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
+var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0, negativeZero: true}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var POWER = createVariable({prefix: "S", label: "P"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({negativeZero: true}));
+var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({decimals: 4, negativeZero: true}));
+var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({decimals: 4, negativeZero: true}));
+var SAFE_Z_HEIGHT = createVariable({prefix: "Z", label: "SAFEZ"}, createFormat({negativeZero: true}));
+var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 2, negativeZero: true}));
+var X_LENGTH = createVariable({prefix: "", label: "XLENGTH"}, createFormat({decimals: 1, negativeZero: true}));
+var Y_LENGTH = createVariable({prefix: "", label: "YLENGTH"}, createFormat({decimals: 1, negativeZero: true}));
+var Z_LENGTH = createVariable({prefix: "", label: "ZLENGTH"}, createFormat({decimals: 1, negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var PRODUCT = createVariable({prefix: "", label: "PRODUCT"}, createFormat({decimals: 0, negativeZero: true}));
+var DATE = createVariable({prefix: "", label: "DATE"}, createFormat({decimals: 0, negativeZero: true}));
+var TIME = createVariable({prefix: "", label: "TIME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLS_USED = createVariable({prefix: "", label: "TOOLS_USED"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "( " + TOOLPATH_FILENAME + " )\n" +

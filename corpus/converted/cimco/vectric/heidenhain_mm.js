@@ -27,34 +27,36 @@ var postcOptions = {
     lineEnding: "\r\n",
     minArcRadius: 0.5,
     maxArcRadius: 500,
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 1, 99999],
 };
 
-var LINE_NUMBER = createVariable({prefix: "", label: "N"}, createFormat({decimals: 0}));
-var SPINDLE_SPEED = createVariable({prefix: " S", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: " F", label: "F", modal: true}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "T", label: "TP"}, createFormat({decimals: 0, width: 3, zeropad: true}));
-var TOOL_DIAMETER = createVariable({prefix: "", label: "TDIA"}, createFormat({width: 8, justifyLeft: true, decimalMark: ","}));
-var X_POSITION = createVariable({prefix: " X", label: "X"}, createFormat({forceSign: true, decimalMark: ","}));
-var Y_POSITION = createVariable({prefix: " Y", label: "Y"}, createFormat({forceSign: true, decimalMark: ","}));
-var Z_POSITION = createVariable({prefix: " Z", label: "Z"}, createFormat({forceSign: true, decimalMark: ","}));
-var ARC_CENTRE_I_ABS_POSITION = createVariable({prefix: " X", label: "IA"}, createFormat({forceSign: true, decimalMark: ","}));
-var ARC_CENTRE_J_ABS_POSITION = createVariable({prefix: " Y", label: "JA"}, createFormat({forceSign: true, decimalMark: ","}));
-var X_HOME_POSITION = createVariable({prefix: " X", label: "XH"}, createFormat({forceSign: true, decimalMark: ","}));
-var Y_HOME_POSITION = createVariable({prefix: " Y", label: "YH"}, createFormat({forceSign: true, decimalMark: ","}));
-var Z_HOME_POSITION = createVariable({prefix: " Z", label: "ZH"}, createFormat({forceSign: true, decimalMark: ","}));
-var X_MIN = createVariable({prefix: " X", label: "XMIN"}, createFormat({forceSign: true, decimalMark: ","}));
-var Y_MIN = createVariable({prefix: " Y", label: "YMIN"}, createFormat({forceSign: true, decimalMark: ","}));
-var Z_MIN = createVariable({prefix: " Z", label: "ZMIN"}, createFormat({forceSign: true, decimalMark: ","}));
-var X_MAX = createVariable({prefix: " X", label: "XMAX"}, createFormat({forceSign: true, decimalMark: ","}));
-var Y_MAX = createVariable({prefix: " Y", label: "YMAX"}, createFormat({forceSign: true, decimalMark: ","}));
-var Z_MAX = createVariable({prefix: " Z", label: "ZMAX"}, createFormat({forceSign: true, decimalMark: ","}));
-var DWELL_TIME = createVariable({prefix: "", label: "DWELL"}, createFormat({decimals: 2, decimalMark: ","}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var FILE_NOTES = createVariable({prefix: "", label: "FILE_NOTES"}, createFormat({decimals: 0}));
-var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+var LINE_NUMBER = createVariable({prefix: "", label: "N"}, createFormat({decimals: 0, negativeZero: true}));
+var SPINDLE_SPEED = createVariable({prefix: " S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: " F", label: "F", modal: true}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "T", label: "TP"}, createFormat({decimals: 0, width: 3, zeropad: true, negativeZero: true}));
+var TOOL_DIAMETER = createVariable({prefix: "", label: "TDIA"}, createFormat({width: 8, justifyLeft: true, decimalMark: ",", negativeZero: true}));
+var X_POSITION = createVariable({prefix: " X", label: "X"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Y_POSITION = createVariable({prefix: " Y", label: "Y"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Z_POSITION = createVariable({prefix: " Z", label: "Z"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var ARC_CENTRE_I_ABS_POSITION = createVariable({prefix: " X", label: "IA"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var ARC_CENTRE_J_ABS_POSITION = createVariable({prefix: " Y", label: "JA"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: " X", label: "XH"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: " Y", label: "YH"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: " Z", label: "ZH"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var X_MIN = createVariable({prefix: " X", label: "XMIN"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Y_MIN = createVariable({prefix: " Y", label: "YMIN"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Z_MIN = createVariable({prefix: " Z", label: "ZMIN"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var X_MAX = createVariable({prefix: " X", label: "XMAX"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Y_MAX = createVariable({prefix: " Y", label: "YMAX"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var Z_MAX = createVariable({prefix: " Z", label: "ZMAX"}, createFormat({forceSign: true, decimalMark: ",", negativeZero: true}));
+var DWELL_TIME = createVariable({prefix: "", label: "DWELL"}, createFormat({decimals: 2, decimalMark: ",", negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var FILE_NOTES = createVariable({prefix: "", label: "FILE_NOTES"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return LINE_NUMBER + " BEGIN PGM " + TOOLPATH_FILENAME + " MM\n" +

@@ -14,16 +14,18 @@ var postcOptions = {
     fileExtension: "plt",
     units: "MM",
     lineEnding: "\r\n",
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
 };
 
-var X_POSITION = createVariable({prefix: "", label: "X"}, createFormat({decimals: 0, scale: 40}));
-var Y_POSITION = createVariable({prefix: "", label: "Y"}, createFormat({decimals: 0, scale: 40}));
-var ARC_CENTRE_I_ABS_POSITION = createVariable({prefix: "", label: "IA"}, createFormat({decimals: 0, scale: 40}));
-var ARC_CENTRE_J_ABS_POSITION = createVariable({prefix: "", label: "JA"}, createFormat({decimals: 0, scale: 40}));
-var ARC_ANGLE = createVariable({prefix: "", label: "Angle"}, createFormat({scale: 57.2957795}));
-var X_HOME_POSITION = createVariable({prefix: "", label: "XH"}, createFormat({decimals: 0, scale: 40}));
-var Y_HOME_POSITION = createVariable({prefix: "", label: "YH"}, createFormat({decimals: 0, scale: 40}));
+var X_POSITION = createVariable({prefix: "", label: "X"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "", label: "Y"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
+var ARC_CENTRE_I_ABS_POSITION = createVariable({prefix: "", label: "IA"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
+var ARC_CENTRE_J_ABS_POSITION = createVariable({prefix: "", label: "JA"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
+var ARC_ANGLE = createVariable({prefix: "", label: "Angle"}, createFormat({scale: 57.2957795, negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "", label: "XH"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "", label: "YH"}, createFormat({decimals: 0, scale: 40, negativeZero: true}));
 
 function HEADER() {
     return "IN;PA;\n";

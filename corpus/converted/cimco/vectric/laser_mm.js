@@ -24,25 +24,27 @@ var postcOptions = {
     fileExtension: "gcode",
     units: "MM",
     laserSupport: true,
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
 };
 
-var POWER = createVariable({prefix: "S", label: "P", modal: true}, createFormat({decimals: 0, scale: 10}));
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 0}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
-var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({}));
-var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({}));
-var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({}));
-var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({}));
-var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var TOOLS_USED = createVariable({prefix: "", label: "TOOLS_USED"}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+var POWER = createVariable({prefix: "S", label: "P", modal: true}, createFormat({decimals: 0, scale: 10, negativeZero: true}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 0, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({negativeZero: true}));
+var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({negativeZero: true}));
+var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLS_USED = createVariable({prefix: "", label: "TOOLS_USED"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "; " + TOOLPATH_FILENAME + " - " + TOOLS_USED + "\n" +

@@ -42,28 +42,30 @@ var postcOptions = {
     substitute: [["(", "["], [")", "]"]],
     spindleSpeedRange: [1, 15, 4500, 18000],
     rotaryWrap: ["X", "B", false],
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [10, 10, 990],
 };
 
-var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0}));
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "F", label: "F"}, createFormat({decimals: 0, forceDecimal: true}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "T", label: "TP"}, createFormat({decimals: 0}));
-var TOOL_DIAMETER = createVariable({prefix: "", label: "TDIA"}, createFormat({decimals: 2}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
-var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({}));
-var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({}));
-var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({}));
-var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 0, scale: 1000}));
-var WRAP_DIAMETER = createVariable({prefix: "", label: "WRAP_DIA"}, createFormat({}));
-var A_POSITION = createVariable({prefix: "", label: "A"}, createFormat({}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
-var TOOL_NOTES = createVariable({prefix: "", label: "TOOL_NOTES"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+var LINE_NUMBER = createVariable({prefix: "N", label: "N"}, createFormat({decimals: 0, negativeZero: true}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F"}, createFormat({decimals: 0, forceDecimal: true, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "T", label: "TP"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_DIAMETER = createVariable({prefix: "", label: "TDIA"}, createFormat({decimals: 2, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({negativeZero: true}));
+var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 0, scale: 1000, negativeZero: true}));
+var WRAP_DIAMETER = createVariable({prefix: "", label: "WRAP_DIA"}, createFormat({negativeZero: true}));
+var A_POSITION = createVariable({prefix: "", label: "A"}, createFormat({negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NOTES = createVariable({prefix: "", label: "TOOL_NOTES"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "%\n" +

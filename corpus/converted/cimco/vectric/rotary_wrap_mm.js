@@ -25,22 +25,24 @@ var postcOptions = {
     substitute: [["(", "{"], [")", "}"]],
     rotaryWrap: ["Y", "A", true],
     inverseTimeFeed: true,
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
 };
 
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var INVERSE_TIME = createVariable({prefix: "F", label: "FI"}, createFormat({}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
-var A_POSITION = createVariable({prefix: "A", label: "A"}, createFormat({}));
-var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({}));
-var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({}));
-var WRAP_DIAMETER = createVariable({prefix: "", label: "WRAP_DIA"}, createFormat({}));
-var X_LENGTH = createVariable({prefix: "", label: "XLENGTH"}, createFormat({decimals: 1}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var INVERSE_TIME = createVariable({prefix: "F", label: "FI"}, createFormat({negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({negativeZero: true}));
+var A_POSITION = createVariable({prefix: "A", label: "A"}, createFormat({negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({negativeZero: true}));
+var WRAP_DIAMETER = createVariable({prefix: "", label: "WRAP_DIA"}, createFormat({negativeZero: true}));
+var X_LENGTH = createVariable({prefix: "", label: "XLENGTH"}, createFormat({decimals: 1, negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "( " + TOOLPATH_FILENAME + " )\n" +

@@ -14,8 +14,10 @@
 // - FEED_RATE_CHANGE setting MS when the feed changes (M3 carries no
 //   speed);
 // - arc sections without [Z]: helices are linearized;
-// - the seed 000 defaults of undeclared labels: [XMIN] [XMAX] [YMIN]
-//   [YMAX] [ZMIN] [ZMAX] print with a leading blank and 3 decimals;
+// - the defaults of undeclared labels: [XMIN] [XMAX] [YMIN] [YMAX]
+//   [ZMIN] [ZMAX] print with no prefix and 3 decimals, so the line
+//   writes its own blanks, as VCarve's ShopBot posts do
+//   ("'Length of material in X = [XLENGTH]");
 // - job data: [Z_ORIGIN] [XY_ORIGIN] [X_ORIGIN_POS] [Y_ORIGIN_POS]
 //   [SAFEZ] [ZLENGTH] [FILE_NOTES] [TOOLPATHS_OUTPUT] [DATE] [TIME]
 //   [PRODUCT];
@@ -31,49 +33,51 @@ var postcOptions = {
     units: "INCH",
     lineEnding: "\r\n",
     substitute: [[",", ";"]],
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
 };
 
-var SPINDLE_SPEED = createVariable({prefix: "", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "", label: "F"}, createFormat({scale: 0.0166667}));
-var CUT_RATE = createVariable({prefix: "", label: "FC"}, createFormat({scale: 0.0166667}));
-var PLUNGE_RATE = createVariable({prefix: "", label: "FP"}, createFormat({scale: 0.0166667}));
-var X_POSITION = createVariable({prefix: "", label: "X"}, createFormat({decimals: 4}));
-var Y_POSITION = createVariable({prefix: "", label: "Y"}, createFormat({decimals: 4}));
-var Z_POSITION = createVariable({prefix: "", label: "Z"}, createFormat({decimals: 4}));
-var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "", label: "I"}, createFormat({decimals: 4}));
-var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "", label: "J"}, createFormat({decimals: 4}));
-var X_HOME_POSITION = createVariable({prefix: "", label: "XH"}, createFormat({decimals: 4}));
-var Y_HOME_POSITION = createVariable({prefix: "", label: "YH"}, createFormat({decimals: 4}));
-var Z_HOME_POSITION = createVariable({prefix: "", label: "ZH"}, createFormat({decimals: 4}));
-var SAFE_Z_HEIGHT = createVariable({prefix: "", label: "SAFEZ"}, createFormat({decimals: 4}));
-var Z_LENGTH = createVariable({prefix: "", label: "ZLENGTH"}, createFormat({decimals: 4}));
-var X_ORIGIN_POS = createVariable({prefix: "", label: "X_ORIGIN_POS"}, createFormat({decimals: 4}));
-var Y_ORIGIN_POS = createVariable({prefix: "", label: "Y_ORIGIN_POS"}, createFormat({decimals: 4}));
-var DWELL_TIME = createVariable({prefix: "", label: "DWELL"}, createFormat({decimals: 2}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var PRODUCT = createVariable({prefix: "", label: "PRODUCT"}, createFormat({decimals: 0}));
-var DATE = createVariable({prefix: "", label: "DATE"}, createFormat({decimals: 0}));
-var TIME = createVariable({prefix: "", label: "TIME"}, createFormat({decimals: 0}));
-var X_MIN = createVariable({prefix: " ", label: "XMIN"}, createFormat({}));
-var X_MAX = createVariable({prefix: " ", label: "XMAX"}, createFormat({}));
-var Y_MIN = createVariable({prefix: " ", label: "YMIN"}, createFormat({}));
-var Y_MAX = createVariable({prefix: " ", label: "YMAX"}, createFormat({}));
-var Z_MIN = createVariable({prefix: " ", label: "ZMIN"}, createFormat({}));
-var Z_MAX = createVariable({prefix: " ", label: "ZMAX"}, createFormat({}));
-var XY_ORIGIN = createVariable({prefix: "", label: "XY_ORIGIN"}, createFormat({decimals: 0}));
-var FILE_NOTES = createVariable({prefix: "", label: "FILE_NOTES"}, createFormat({decimals: 0}));
-var TOOLPATHS_OUTPUT = createVariable({prefix: "", label: "TOOLPATHS_OUTPUT"}, createFormat({decimals: 0}));
-var Z_ORIGIN = createVariable({prefix: "", label: "Z_ORIGIN"}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0}));
-var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "", label: "TP"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
+var SPINDLE_SPEED = createVariable({prefix: "", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "", label: "F"}, createFormat({scale: 0.0166667, negativeZero: true}));
+var CUT_RATE = createVariable({prefix: "", label: "FC"}, createFormat({scale: 0.0166667, negativeZero: true}));
+var PLUNGE_RATE = createVariable({prefix: "", label: "FP"}, createFormat({scale: 0.0166667, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "", label: "X"}, createFormat({decimals: 4, negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "", label: "Y"}, createFormat({decimals: 4, negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "", label: "Z"}, createFormat({decimals: 4, negativeZero: true}));
+var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "", label: "I"}, createFormat({decimals: 4, negativeZero: true}));
+var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "", label: "J"}, createFormat({decimals: 4, negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "", label: "XH"}, createFormat({decimals: 4, negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "", label: "YH"}, createFormat({decimals: 4, negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "", label: "ZH"}, createFormat({decimals: 4, negativeZero: true}));
+var SAFE_Z_HEIGHT = createVariable({prefix: "", label: "SAFEZ"}, createFormat({decimals: 4, negativeZero: true}));
+var Z_LENGTH = createVariable({prefix: "", label: "ZLENGTH"}, createFormat({decimals: 4, negativeZero: true}));
+var X_ORIGIN_POS = createVariable({prefix: "", label: "X_ORIGIN_POS"}, createFormat({decimals: 4, negativeZero: true}));
+var Y_ORIGIN_POS = createVariable({prefix: "", label: "Y_ORIGIN_POS"}, createFormat({decimals: 4, negativeZero: true}));
+var DWELL_TIME = createVariable({prefix: "", label: "DWELL"}, createFormat({decimals: 2, negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var PRODUCT = createVariable({prefix: "", label: "PRODUCT"}, createFormat({decimals: 0, negativeZero: true}));
+var DATE = createVariable({prefix: "", label: "DATE"}, createFormat({decimals: 0, negativeZero: true}));
+var TIME = createVariable({prefix: "", label: "TIME"}, createFormat({decimals: 0, negativeZero: true}));
+var X_MIN = createVariable({prefix: "", label: "XMIN"}, createFormat({negativeZero: true}));
+var X_MAX = createVariable({prefix: "", label: "XMAX"}, createFormat({negativeZero: true}));
+var Y_MIN = createVariable({prefix: "", label: "YMIN"}, createFormat({negativeZero: true}));
+var Y_MAX = createVariable({prefix: "", label: "YMAX"}, createFormat({negativeZero: true}));
+var Z_MIN = createVariable({prefix: "", label: "ZMIN"}, createFormat({negativeZero: true}));
+var Z_MAX = createVariable({prefix: "", label: "ZMAX"}, createFormat({negativeZero: true}));
+var XY_ORIGIN = createVariable({prefix: "", label: "XY_ORIGIN"}, createFormat({decimals: 0, negativeZero: true}));
+var FILE_NOTES = createVariable({prefix: "", label: "FILE_NOTES"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATHS_OUTPUT = createVariable({prefix: "", label: "TOOLPATHS_OUTPUT"}, createFormat({decimals: 0, negativeZero: true}));
+var Z_ORIGIN = createVariable({prefix: "", label: "Z_ORIGIN"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NAME = createVariable({prefix: "", label: "TOOLNAME"}, createFormat({decimals: 0, negativeZero: true}));
+var PREVIOUS_TOOL_NUMBER = createVariable({prefix: "", label: "TP"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "'" + TOOLPATH_FILENAME + "\n" +
         "'Made by " + PRODUCT + " on " + DATE + " at " + TIME + "\n" +
-        "'Material X" + X_MIN + " to" + X_MAX + ", Y" + Y_MIN + " to" + Y_MAX + ", Z" + Z_MIN + " to" + Z_MAX + "\n" +
+        "'Material X " + X_MIN + " to " + X_MAX + ", Y " + Y_MIN + " to " + Y_MAX + ", Z " + Z_MIN + " to " + Z_MAX + "\n" +
         "'Origin " + XY_ORIGIN + " at " + X_ORIGIN_POS + ", " + Y_ORIGIN_POS + "\n" +
         "'Notes: " + FILE_NOTES + "\n" +
         "'Toolpaths: " + TOOLPATHS_OUTPUT + "\n" +

@@ -23,30 +23,32 @@ var postcOptions = {
     fileExtension: "nc",
     units: "MM",
     substitute: [["(", "{"], [")", "}"]],
+    onChangeByValue: true,
+    rapidForgetsFeed: true,
     blockNumbers: [0, 10, 999999],
     tapeSplitting: [40, 15, "%s_%d.nc", 1, true],
 };
 
-var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0}));
-var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1}));
-var CUT_RATE = createVariable({prefix: "", label: "FC"}, createFormat({decimals: 0}));
-var PLUNGE_RATE = createVariable({prefix: "", label: "FP"}, createFormat({decimals: 0}));
-var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({}));
-var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({}));
-var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({}));
-var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({}));
-var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({}));
-var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({}));
-var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({}));
-var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({}));
-var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 2}));
-var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0}));
-var TOOLPATH_EXTENSION = createVariable({prefix: "", label: "TP_EXT"}, createFormat({decimals: 0}));
-var TOOLPATH_DIR = createVariable({prefix: "", label: "TP_DIR"}, createFormat({decimals: 0}));
-var TOOLPATH_PATHNAME = createVariable({prefix: "", label: "PATHNAME"}, createFormat({decimals: 0}));
-var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0}));
-var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0}));
-var TOOLPATH_NOTES = createVariable({prefix: "", label: "TOOLPATH_NOTES"}, createFormat({decimals: 0}));
+var SPINDLE_SPEED = createVariable({prefix: "S", label: "S"}, createFormat({decimals: 0, negativeZero: true}));
+var FEED_RATE = createVariable({prefix: "F", label: "F", modal: true}, createFormat({decimals: 1, negativeZero: true}));
+var CUT_RATE = createVariable({prefix: "", label: "FC"}, createFormat({decimals: 0, negativeZero: true}));
+var PLUNGE_RATE = createVariable({prefix: "", label: "FP"}, createFormat({decimals: 0, negativeZero: true}));
+var X_POSITION = createVariable({prefix: "X", label: "X", modal: true}, createFormat({negativeZero: true}));
+var Y_POSITION = createVariable({prefix: "Y", label: "Y", modal: true}, createFormat({negativeZero: true}));
+var Z_POSITION = createVariable({prefix: "Z", label: "Z", modal: true}, createFormat({negativeZero: true}));
+var ARC_CENTRE_I_INC_POSITION = createVariable({prefix: "I", label: "I"}, createFormat({negativeZero: true}));
+var ARC_CENTRE_J_INC_POSITION = createVariable({prefix: "J", label: "J"}, createFormat({negativeZero: true}));
+var X_HOME_POSITION = createVariable({prefix: "X", label: "XH"}, createFormat({negativeZero: true}));
+var Y_HOME_POSITION = createVariable({prefix: "Y", label: "YH"}, createFormat({negativeZero: true}));
+var Z_HOME_POSITION = createVariable({prefix: "Z", label: "ZH"}, createFormat({negativeZero: true}));
+var DWELL_TIME = createVariable({prefix: "P", label: "DWELL"}, createFormat({decimals: 2, negativeZero: true}));
+var TOOLPATH_FILENAME = createVariable({prefix: "", label: "TP_FILENAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_EXTENSION = createVariable({prefix: "", label: "TP_EXT"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_DIR = createVariable({prefix: "", label: "TP_DIR"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_PATHNAME = createVariable({prefix: "", label: "PATHNAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOL_NUMBER = createVariable({prefix: "", label: "T"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NAME = createVariable({prefix: "", label: "TOOLPATH_NAME"}, createFormat({decimals: 0, negativeZero: true}));
+var TOOLPATH_NOTES = createVariable({prefix: "", label: "TOOLPATH_NOTES"}, createFormat({decimals: 0, negativeZero: true}));
 
 function HEADER() {
     return "( " + TOOLPATH_FILENAME + "." + TOOLPATH_EXTENSION + " in " + TOOLPATH_DIR + " )\n" +

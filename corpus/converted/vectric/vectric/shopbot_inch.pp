@@ -14,8 +14,10 @@
 + - FEED_RATE_CHANGE setting MS when the feed changes (M3 carries no
 +   speed);
 + - arc sections without [Z]: helices are linearized;
-+ - the seed 000 defaults of undeclared labels: [XMIN] [XMAX] [YMIN]
-+   [YMAX] [ZMIN] [ZMAX] print with a leading blank and 3 decimals;
++ - the defaults of undeclared labels: [XMIN] [XMAX] [YMIN] [YMAX]
++   [ZMIN] [ZMAX] print with no prefix and 3 decimals, so the line
++   writes its own blanks, as VCarve's ShopBot posts do
++   ("'Length of material in X = [XLENGTH]");
 + - job data: [Z_ORIGIN] [XY_ORIGIN] [X_ORIGIN_POS] [Y_ORIGIN_POS]
 +   [SAFEZ] [ZLENGTH] [FILE_NOTES] [TOOLPATHS_OUTPUT] [DATE] [TIME]
 +   [PRODUCT];
@@ -54,12 +56,12 @@ VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
 VAR PRODUCT = [PRODUCT|A||1.0]
 VAR DATE = [DATE|A||1.0]
 VAR TIME = [TIME|A||1.0]
-VAR X_MIN = [XMIN|A| |1.3]
-VAR X_MAX = [XMAX|A| |1.3]
-VAR Y_MIN = [YMIN|A| |1.3]
-VAR Y_MAX = [YMAX|A| |1.3]
-VAR Z_MIN = [ZMIN|A| |1.3]
-VAR Z_MAX = [ZMAX|A| |1.3]
+VAR X_MIN = [XMIN|A||1.3]
+VAR X_MAX = [XMAX|A||1.3]
+VAR Y_MIN = [YMIN|A||1.3]
+VAR Y_MAX = [YMAX|A||1.3]
+VAR Z_MIN = [ZMIN|A||1.3]
+VAR Z_MAX = [ZMAX|A||1.3]
 VAR XY_ORIGIN = [XY_ORIGIN|A||1.0]
 VAR FILE_NOTES = [FILE_NOTES|A||1.0]
 VAR TOOLPATHS_OUTPUT = [TOOLPATHS_OUTPUT|A||1.0]
@@ -72,7 +74,7 @@ VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
 begin HEADER
 "'[TP_FILENAME]"
 "'Made by [PRODUCT] on [DATE] at [TIME]"
-"'Material X[XMIN] to[XMAX], Y[YMIN] to[YMAX], Z[ZMIN] to[ZMAX]"
+"'Material X [XMIN] to [XMAX], Y [YMIN] to [YMAX], Z [ZMIN] to [ZMAX]"
 "'Origin [XY_ORIGIN] at [X_ORIGIN_POS], [Y_ORIGIN_POS]"
 "'Notes: [FILE_NOTES]"
 "'Toolpaths: [TOOLPATHS_OUTPUT]"

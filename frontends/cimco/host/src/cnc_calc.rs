@@ -215,6 +215,7 @@ pub fn cimco_format(props: &Dynamic, mark: char) -> NumberFormat {
         multiplier: if scale.is_finite() { scale } else { 1.0 },
         prefix: if prefix.is_unit() { String::new() } else { to_string(&prefix) },
         rounding: postc_ir::Rounding::Binary,
+        negative_zero: false,
         span: None,
         name: None,
     }

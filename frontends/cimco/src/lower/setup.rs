@@ -277,6 +277,7 @@ fn number_format(
         prefix: get("prefix").and_then(|p| p.text()).unwrap_or_default(),
         // A post is JavaScript: numbers round as its engine rounds them.
         rounding: postc_ir::Rounding::Binary,
+        negative_zero: false,
         span: Some(span),
         name: None,
     }

@@ -16,9 +16,11 @@
 //! | `InverseTimeFeed`, `LaserSupport`, `PrintDirect`, `RapidPlungeToStartZ` | `True`/`False` | `INVERSE_TIME_MODE`, `LASER_SUPPORT`, `PRINT_DIRECT`, `RAPID_PLUNGE_TO_STARTZ` |
 //! | `DirectOutput` | text | `DIRECT_OUTPUT` |
 //! | `TapeSplitLines`, `TapeSplitTolerance`, `TapeSplitName`, `TapeSplitStart`, `TapeSplitIndexFirst` | number, number, text, number, `True`/`False` | `TAPE_SPLITTING = MAX TOL "FORMAT" START "INDEX_ON_FIRST"` (splitting is on once `TapeSplitLines` is set) |
+//! | `Revision` | text | none: what `[REVISION]` prints, the hash of the Vectric post it was converted from (docs/vectric.md) |
+//! | `OnChangeByValue`, `RapidForgetsFeed` | `True`/`False` | none: what VCarve's engine does (docs/vectric.md): a `Modal` register prints when its value changes, not its text; the feed prints again on the first feed move after a rapid |
 
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, Substitution, TapeSplitting, WrappedAxis};
-use postc_ir::{Diagnostic, Units};
+use postc_ir::{Diagnostic, OutputOptions, PostInfo, Units};
 
 use super::Lowerer;
 use crate::ast::{Expr, ExprKind, Name, UnaryOp};
@@ -48,6 +50,9 @@ pub const PROPERTIES: &[&str] = &[
     "TapeSplitName",
     "TapeSplitStart",
     "TapeSplitIndexFirst",
+    "OnChangeByValue",
+    "RapidForgetsFeed",
+    "Revision",
 ];
 
 enum Value {
@@ -88,7 +93,12 @@ impl Lowerer<'_> {
         let info = &mut self.post.info;
         let options = &mut self.post.options;
         let count = |n: f64| (n.fract() == 0.0 && (0.0..1e15).contains(&n)).then_some(n as u64);
-        let result = match (canonical, value(e)) {
+        let value = value(e);
+        if let (Some(flag), Some(Value::Bool(b))) = (flag_of(canonical, info, options), &value) {
+            *flag = *b;
+            return;
+        }
+        let result = match (canonical, value) {
             ("Name", Some(Value::Text(t))) => {
                 info.name = t;
                 Ok(())
@@ -177,24 +187,12 @@ impl Lowerer<'_> {
                 options.max_arc_radius = Some(n);
                 Ok(())
             }
-            ("InverseTimeFeed", Some(Value::Bool(b))) => {
-                options.inverse_time_feed = b;
-                Ok(())
-            }
-            ("LaserSupport", Some(Value::Bool(b))) => {
-                info.laser_support = b;
-                Ok(())
-            }
-            ("PrintDirect", Some(Value::Bool(b))) => {
-                info.print_direct = b;
-                Ok(())
-            }
-            ("RapidPlungeToStartZ", Some(Value::Bool(b))) => {
-                info.rapid_plunge_to_start_z = b;
-                Ok(())
-            }
             ("DirectOutput", Some(Value::Text(t))) => {
                 info.direct_output = Some(t);
+                Ok(())
+            }
+            ("Revision", Some(Value::Text(t))) => {
+                info.revision = t;
                 Ok(())
             }
             ("TapeSplitLines", Some(Value::Number(n))) if count(n).is_some_and(|c| c > 0) => {
@@ -219,15 +217,36 @@ impl Lowerer<'_> {
             }
             ("TapeSplitLines" | "TapeSplitTolerance" | "TapeSplitStart", _) => Err(bad("a whole number")),
             ("MinArcRadius" | "MaxArcRadius", _) => Err(bad("a number")),
-            ("InverseTimeFeed" | "LaserSupport" | "PrintDirect" | "RapidPlungeToStartZ" | "TapeSplitIndexFirst", _) => {
-                Err(bad("True or False"))
-            }
+            (
+                "InverseTimeFeed"
+                | "LaserSupport"
+                | "PrintDirect"
+                | "RapidPlungeToStartZ"
+                | "TapeSplitIndexFirst"
+                | "OnChangeByValue"
+                | "RapidForgetsFeed",
+                _,
+            ) => Err(bad("True or False")),
             _ => Err(bad("text in quotes")),
         };
         if let Err(d) = result {
             self.diagnostics.push(d);
         }
     }
+}
+
+/// The yes/no setting a `True`/`False` option names (but for
+/// `TapeSplitIndexFirst`, which makes tape splitting).
+fn flag_of<'a>(name: &str, info: &'a mut PostInfo, options: &'a mut OutputOptions) -> Option<&'a mut bool> {
+    Some(match name {
+        "InverseTimeFeed" => &mut options.inverse_time_feed,
+        "LaserSupport" => &mut info.laser_support,
+        "PrintDirect" => &mut info.print_direct,
+        "RapidPlungeToStartZ" => &mut info.rapid_plunge_to_start_z,
+        "OnChangeByValue" => &mut options.on_change_by_value,
+        "RapidForgetsFeed" => &mut options.rapid_forgets_feed,
+        _ => return None,
+    })
 }
 
 /// The tape splitting a `TapeSplit...` option sets, made on the first.

@@ -212,6 +212,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         text_encoding: postc_ir::post::TextEncoding::Utf8,
         subs: Vec::new(),
         notes: Vec::new(),
+        revision: String::new(),
         span: model.global(GlobalName::PostName).map(|g| g.span),
     }
 }
@@ -223,6 +224,11 @@ fn options(model: &Model, diags: &mut Vec<Diagnostic>) -> OutputOptions {
         // Decision 4 (docs/vectric.md): all modal memory is cleared when a
         // toolpath starts.
         forget_modal_at_toolpath_start: true,
+        // What VCarve's own programs show (docs/vectric.md): a `C` word
+        // prints when its value changes, and the feed prints again on the
+        // first feed move after a rapid.
+        on_change_by_value: true,
+        rapid_forgets_feed: true,
         ..OutputOptions::default()
     };
     for global in &model.globals {

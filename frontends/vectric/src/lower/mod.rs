@@ -30,6 +30,9 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     }
     let main = chain.last().map(|l| l.ast.file).unwrap_or_default();
     let mut post = emit::emit(&model, &path.display().to_string(), Span::new(main, 0, 0), &mut diags);
+    if post.variables.iter().any(|v| v.source == postc_ir::ValueSource::Quantity(postc_ir::Quantity::Revision)) {
+        post.info.revision = crate::revision::revision(bytes);
+    }
     if chain.iter().any(|l| l.encoding == crate::decode::Encoding::Windows1252) {
         post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
     }

@@ -7,11 +7,12 @@
 use chumsky::prelude::*;
 use postc_ir::{FileId, Span};
 
-use crate::ast::{BeginLine, ItemKind, OutputMode, Spanned, VarBody, VarDecl, VarFields};
+use crate::ast::{BeginLine, ItemKind, OutputMode, QuotedText, Spanned, TextPiece, VarBody, VarDecl, VarFields};
 use crate::diagnostics::Code;
 use crate::format_spec::parse_format;
 use crate::names::GlobalName;
 use crate::parser::common::{Extra, emit, eol, hspace, keyword, name, quoted, rest, span, trailing, values};
+use crate::parser::error::ParseIssue;
 
 const VAR_EXAMPLE: &str = "VAR X_POSITION = [X|C|X|1.3]";
 
@@ -120,6 +121,41 @@ pub fn global<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Ex
         .then_ignore(hspace())
         .then(values(file))
         .map(|(name, values)| Some(ItemKind::Global(crate::ast::GlobalStmt { name, values })))
+}
+
+/// A line made only of variables, without quotes (`[F]`): VCarve prints it
+/// as if it were quoted (the ShopSabre post's HEADER, docs/vectric.md), so
+/// it is an output line, with a warning that the guides want quotes.
+/// Blanks around it and a trailing comment are allowed, none between the
+/// variables.
+pub fn bare_variables<'a>(file: FileId) -> impl Parser<'a, &'a str, Option<ItemKind>, Extra> + Clone {
+    let piece = just('[')
+        .ignore_then(none_of("[]\" \t\r\n").repeated().at_least(1).to_slice())
+        .then_ignore(just(']'))
+        .try_map(move |inner: &str, s| {
+            let value = if inner.bytes().all(|b| b.is_ascii_digit()) {
+                TextPiece::Code(inner.parse::<u8>().map_err(|_| ParseIssue::Unexpected(s))?)
+            } else {
+                TextPiece::Label(inner.to_string())
+            };
+            Ok(Spanned::new(value, span(file, s)))
+        });
+    let end_of_line = hspace().then(one_of("+|").then(rest()).or_not()).then(eol().or(end()).rewind());
+    hspace()
+        .ignore_then(
+            piece.repeated().at_least(1).collect::<Vec<_>>().map_with(|pieces, e| (pieces, e.slice(), e.span())),
+        )
+        .then_ignore(end_of_line)
+        .validate(move |(pieces, raw, at): (Vec<Spanned<TextPiece>>, &str, SimpleSpan), _, emitter| {
+            emit(
+                emitter,
+                Code::BareVariables
+                    .diag("this line of variables has no quotes; it is printed as if it had, as VCarve prints it")
+                    .at(span(file, at), "no quotes")
+                    .help(format!("write it between double quotes: \"{raw}\"")),
+            );
+            Some(ItemKind::Output(QuotedText { pieces, raw: raw.to_string(), closed: true }))
+        })
 }
 
 /// Anything else: a known statement name without `=` is an error, other

@@ -28,6 +28,7 @@ fn file_parser<'a>(file: FileId) -> impl Parser<'a, &'a str, Vec<Item>, Extra> {
         lines::var(file),
         lines::begin(file),
         lines::global(file),
+        lines::bare_variables(file),
         lines::stray(file),
     ))
     .map_with(move |kind, e| kind.map(|kind| Item { kind, span: span(file, e.span()), blank_before: false }));
