@@ -1424,10 +1424,10 @@ declare_codes! {
     /// After G92 the coordinates are offset, so positions after it are not compared.
     VF008: Warning, "G92 coordinate offsets: positions after it are not compared",
         fix = "Use work offsets (G54 ...) instead of G92, if the post can.";
-    /// `postc post --verify` reads one program; the post split its output into parts, so they
-    /// were not verified.
-    VF009: Warning, "`postc post --verify` with a post that split its output into parts: the parts are not verified",
-        fix = "Verify each part with `postc verify`, or post without tape splitting.";
+    /// No longer reported: `postc post` verifies a program split into parts as the parts joined.
+    /// The code stays so that `postc.toml` files that name it still read.
+    VF009: Warning, "not reported: `postc post` verifies tape-split parts joined (a post that split its output was once not verified)",
+        fix = "Nothing to do.";
     /// A cutting move goes where the toolpath does not (or is an arc where the toolpath moves
     /// straight).
     VF010: Error, "a cutting move off the toolpath (or an arc where the toolpath moves straight)",
@@ -1478,9 +1478,11 @@ declare_codes! {
     /// A cutting move comes before any feed rate is set.
     VF034: Error, "a cutting move before any feed rate is set",
         fix = "Print the feed on the first feed move (a FIRST_FEED_MOVE section, or an always-printed F).";
-    /// A cut with the spindle (or jet) off.
-    VF035: Error, "a cut with the spindle (or jet) off",
-        fix = "Start the spindle in the header or tool change (M3/M4 with S).";
+    /// A cut with the spindle (or jet) off. A warning when the toolpath's tool is a jet (laser,
+    /// plasma, waterjet) and the post is a section post with no JET_TOOL_ON section: it cannot
+    /// switch a jet on at all, so it is not a jet post, and the toolpath is not one to post with it.
+    VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning for a jet toolpath through a post with no JET_TOOL_ON section)",
+        fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section.";
     /// A rapid move the toolpath does not make goes below the toolpath's lowest rapid height,
     /// into the material.
     VF037: Error, "a rapid move the toolpath does not make goes below the toolpath's lowest rapid height into the material",

@@ -40,6 +40,7 @@ pub mod sink;
 mod toolpath;
 mod trace;
 pub(crate) mod verify;
+mod verifying;
 
 use std::path::PathBuf;
 use std::process::ExitCode;

@@ -19,7 +19,8 @@ use postc_runtime::output::{Finished, Sink, part_names};
 
 use super::outputs::{Batch, Temp};
 
-const HOLD_STDOUT: usize = 64 << 20;
+/// Standard output held back at most.
+pub const HOLD_STDOUT: usize = 64 << 20;
 
 /// A program to be written to `target` (several parts beside it under
 /// tape splitting): its temporary files join `batch` when the run completes.

@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use postc_ir::{Diagnostic, Post, SourceMap};
 use postc_verify::{Controller, Settings};
 
+use super::post::FOREIGN_EXTENSIONS;
 use super::report::{self, Format};
 use super::{DialectArg, Failed, fail, load_post};
 
@@ -69,9 +70,6 @@ impl From<ControllerArg> for Controller {
 /// lines; larger ones are streamed and only located by line and column.
 const LOAD_LIMIT: u64 = 16 << 20;
 
-/// Output extensions of families verify does not read.
-const FOREIGN_EXTENSIONS: &[(&str, &str)] =
-    &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();

@@ -29,6 +29,8 @@ pub struct Expected {
     pub feed: f64,
     /// Whether the spindle (or the jet, for jet tools) runs during the move.
     pub powered: bool,
+    /// Whether a jet tool (laser, plasma, waterjet) makes the move.
+    pub jet: bool,
     pub span: Span,
 }
 
@@ -166,8 +168,8 @@ impl<'a> ExpectedPath<'a> {
             return;
         }
         self.count += 1;
-        let powered = self.powered();
-        self.window.push_back(Expected { kind, start, end, centre, dir, plane, intent, feed, powered, span });
+        let (powered, jet) = (self.powered(), self.jet_tool);
+        self.window.push_back(Expected { kind, start, end, centre, dir, plane, intent, feed, powered, jet, span });
     }
 
     fn feed_for(&self, intent: Intent, feed: Option<f64>) -> f64 {

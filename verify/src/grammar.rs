@@ -102,8 +102,17 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
         return None;
     }
     let written = body.iter().position(|&b| b == b'.' || b == b',').map_or(0, |p| body.len() - p - 1);
-    let value = mantissa as f64 / 10f64.powi(decimals as i32);
+    let value = mantissa as f64 / pow10(decimals);
     Some((i, if negative { -value } else { value }, written.min(255) as u8))
+}
+
+/// 10 to the power `n`, as `10f64.powi(n)` gives it (exact up to 10^22).
+pub(crate) fn pow10(n: u32) -> f64 {
+    const TABLE: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
+        1e20, 1e21, 1e22,
+    ];
+    TABLE.get(n as usize).copied().unwrap_or_else(|| 10f64.powi(n as i32))
 }
 
 /// Numbers with more than 18 integer digits: the standard library reads them.
@@ -215,13 +224,67 @@ pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
 }
 
 /// Parses a line into `items`; on an error, the byte offset where reading stopped.
+///
+/// Lines of words, blanks and simple comments (what posts write on almost
+/// every line) are read by [`plain`]; any other line, and every line that
+/// does not read, goes through the chumsky grammar, which gives the same
+/// items (a property test checks it) and says where reading stopped.
 pub fn parse(text: &[u8], items: &mut Items) -> Result<(), usize> {
+    items.0.clear();
+    if plain(text, &mut items.0) {
+        return Ok(());
+    }
     items.0.clear();
     let result = line().parse_with_state(text, items);
     match result.into_result() {
         Ok(()) => Ok(()),
         Err(errors) => Err(errors.first().map_or(0, |e| e.span().start)),
     }
+}
+
+/// The grammar's items for a line of words (`G1 X-1.5 y2.`), blanks, `( )`
+/// comments without nested parentheses and a closing `;` comment; false
+/// for anything else (block delete, `%`, `:`, nested or open comments,
+/// anything that does not read), which the chumsky grammar then reads.
+fn plain(text: &[u8], items: &mut Vec<Item>) -> bool {
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
+    let mut i = 0;
+    while i < text.len() {
+        let b = text[i];
+        if blank(b) {
+            i += 1;
+        } else if b.is_ascii_alphabetic() {
+            let start = i;
+            i += 1;
+            while i < text.len() && blank(text[i]) {
+                i += 1;
+            }
+            let Some((n, value, decimals)) = scan_number(&text[i..]) else { return false };
+            i += n;
+            items.push(Item {
+                kind: ItemKind::Word(b.to_ascii_uppercase()),
+                start: start as u32,
+                end: i as u32,
+                value,
+                decimals,
+            });
+        } else if b == b'(' {
+            let Some(n) = text[i + 1..].iter().position(|&c| c == b'(' || c == b')') else { return false };
+            if text[i + 1 + n] != b')' {
+                return false;
+            }
+            let end = i + n + 2;
+            items.push(Item { kind: ItemKind::Comment, start: i as u32, end: end as u32, value: 0.0, decimals: 0 });
+            i = end;
+        } else if b == b';' {
+            let end = text.len();
+            items.push(Item { kind: ItemKind::Comment, start: i as u32, end: end as u32, value: 0.0, decimals: 0 });
+            i = end;
+        } else {
+            return false;
+        }
+    }
+    true
 }
 
 #[cfg(test)]
@@ -257,6 +320,67 @@ mod tests {
         assert_eq!(words("X10,250Y-2,5").unwrap()[1].2, -2.5);
         assert_eq!(words("X10,250").unwrap()[0].3, 3);
         assert_eq!(words("X 1.0\r").unwrap()[0].2, 1.0);
+    }
+
+    /// The chumsky grammar alone: what [`parse`] gives for every line.
+    fn by_grammar(text: &[u8]) -> Result<Vec<Item>, usize> {
+        let mut items = TruncateState(Vec::new());
+        match line().parse_with_state(text, &mut items).into_result() {
+            Ok(()) => Ok(items.0),
+            Err(errors) => Err(errors.first().map_or(0, |e| e.span().start)),
+        }
+    }
+
+    /// Pieces of program lines: words as posts print them, blanks,
+    /// comments, and the bytes only the grammar reads.
+    fn piece() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        let letter = proptest::char::ranges(vec!['A'..='Z', 'a'..='z'].into());
+        let number = (any::<bool>(), 0u64..100_000, 0usize..5, any::<bool>()).prop_map(|(neg, m, d, comma)| {
+            let digits = m.to_string();
+            let sign = if neg { "-" } else { "" };
+            match d {
+                0 => format!("{sign}{digits}"),
+                _ if d >= digits.len() => format!("{sign}.{digits}"),
+                _ => {
+                    let (a, b) = digits.split_at(digits.len() - d);
+                    format!("{sign}{a}{}{b}", if comma { ',' } else { '.' })
+                }
+            }
+        });
+        prop_oneof![
+            6 => (letter, " {0,2}", number).prop_map(|(l, b, n)| format!("{l}{b}{n}")),
+            3 => " {1,3}|\\t|\\r".prop_map(String::from),
+            1 => "\\([ -~]{0,12}\\)".prop_map(String::from),
+            1 => ";[ -~]{0,12}".prop_map(String::from),
+            1 => "[%/:#=\\[\\]().,+\\-0-9A-Z]".prop_map(String::from),
+        ]
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(4000))]
+        /// The fast path and the grammar give the same items, or the same error.
+        #[test]
+        fn the_fast_path_reads_as_the_grammar_does(pieces in proptest::collection::vec(piece(), 0..12)) {
+            let text = pieces.concat();
+            let mut items = TruncateState(Vec::new());
+            let parsed = parse(text.as_bytes(), &mut items).map(|()| items.0.clone());
+            proptest::prop_assert_eq!(parsed, by_grammar(text.as_bytes()), "{:?}", text);
+            let mut plain_items = Vec::new();
+            if plain(text.as_bytes(), &mut plain_items) {
+                proptest::prop_assert_eq!(Ok(plain_items), by_grammar(text.as_bytes()), "{:?}", text);
+            }
+        }
+    }
+
+    #[test]
+    fn plain_lines_take_the_fast_path() {
+        for line in ["N10 G1 X-1.5 Y2. Z.25 F1200", "G0X1Y2", "G1 X1 (cut) ; rest", "X10,250Y-2,5", "x 1.0\r", ""] {
+            assert!(plain(line.as_bytes(), &mut Vec::new()), "{line}");
+        }
+        for line in ["/G0 X1", "%", ":1248", "(a (b) c)", "(open", "G1 X", "#1=2", "X1..2"] {
+            assert!(!plain(line.as_bytes(), &mut Vec::new()), "{line}");
+        }
     }
 
     #[test]

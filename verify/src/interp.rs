@@ -87,33 +87,64 @@ struct Word {
 
 const MAX_CODES: usize = 8;
 
-/// The words of one block.
-#[derive(Default)]
+/// The words of one block: a word of letter L is in `letters[L - 'A']`
+/// when bit `L - 'A'` of `present` is set.
 struct Block {
-    letters: [Option<Word>; 26],
+    letters: [Word; 26],
+    present: u32,
     g: [(f64, u32, u32); MAX_CODES],
     gs: usize,
     m: [(f64, u32, u32); MAX_CODES],
     ms: usize,
 }
 
+impl Default for Block {
+    fn default() -> Block {
+        let word = Word { value: 0.0, decimals: 0, start: 0, end: 0 };
+        Block { letters: [word; 26], present: 0, g: [(0.0, 0, 0); MAX_CODES], gs: 0, m: [(0.0, 0, 0); MAX_CODES], ms: 0 }
+    }
+}
+
 impl Block {
     fn clear(&mut self) {
-        self.letters = [None; 26];
+        self.present = 0;
         self.gs = 0;
         self.ms = 0;
     }
 
+    fn has(&self, letter: u8) -> bool {
+        self.present & (1 << (letter - b'A')) != 0
+    }
+
     fn get(&self, letter: u8) -> Option<Word> {
-        self.letters[(letter - b'A') as usize]
+        self.has(letter).then(|| self.letters[(letter - b'A') as usize])
+    }
+
+    fn set(&mut self, letter: u8, word: Word) {
+        self.letters[(letter - b'A') as usize] = word;
+        self.present |= 1 << (letter - b'A');
     }
 }
+
+/// The letters verify reads, as bits of `letter - 'A'`.
+const KNOWN_LETTERS: u32 = {
+    let letters = b"NXYZABCIJKRFSTPQLHDOUVW";
+    let mut mask = 0u32;
+    let mut i = 0;
+    while i < letters.len() {
+        mask |= 1 << (letters[i] - b'A');
+        i += 1;
+    }
+    mask
+};
 
 struct Run<'a> {
     settings: &'a Settings,
     observer: &'a mut dyn Observer,
     /// Where each kept finding is (mm), parallel to `findings`.
     at: Vec<[f64; 3]>,
+    /// The program line of each kept finding, parallel to `findings`.
+    lines: Vec<(u64, usize)>,
     file: FileId,
     path: ExpectedPath<'a>,
     findings: Vec<Diagnostic>,
@@ -152,7 +183,8 @@ struct Run<'a> {
     feed_reported: (f64, f64),
     stop_comparing: bool,
     syntax_errors: u32,
-    block: Block,
+    /// The tolerance ([`Run::tol`]) for the `units_key` it was computed at.
+    tol: (f64, (f64, Option<u8>)),
 }
 
 pub fn run(
@@ -166,6 +198,7 @@ pub fn run(
         settings,
         observer,
         at: Vec::new(),
+        lines: Vec::new(),
         file,
         path: ExpectedPath::new(toolpath),
         findings: Vec::new(),
@@ -201,8 +234,9 @@ pub fn run(
         feed_reported: (f64::NAN, f64::NAN),
         stop_comparing: false,
         syntax_errors: 0,
-        block: Block::default(),
+        tol: (f64::NAN, (f64::NAN, None)),
     };
+    let mut block = Block::default();
     run.path.start();
     let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
     let mut buf: Vec<u8> = Vec::with_capacity(256);
@@ -254,13 +288,13 @@ pub fn run(
             );
             continue;
         }
-        run.line(&buf, &mut items);
+        run.line(&buf, &mut items, &mut block);
     }
     run.finish();
     let mut stats = run.stats;
     stats.inch = run.unit > 1.0;
-    let Run { findings, at, errors, warnings, .. } = run;
-    Report { findings, at, errors, warnings, stats }
+    let Run { findings, at, lines, errors, warnings, .. } = run;
+    Report { findings, at, lines, errors, warnings, stats }
 }
 
 /// Reads one line (up to and with its `\n`) into `buf`, keeping at most
@@ -333,6 +367,7 @@ impl Run<'_> {
         if *shown <= MAX_SHOWN {
             self.findings.push(d);
             self.at.push(at);
+            self.lines.push((self.stats.lines, self.line_start));
         }
     }
 
@@ -389,17 +424,21 @@ impl Run<'_> {
 
     // ----- tolerances -----
 
-    fn tol(&self) -> f64 {
+    fn tol(&mut self) -> f64 {
         // Without the post, the program's own rounding: the most decimals its
         // X Y Z words have shown, but no coarser than three decimals.
-        let decimals = self.settings.decimals.unwrap_or(self.max_decimals.unwrap_or(3).max(3));
-        let unit = self.settings.units.map_or(self.unit, |u| u.mm_per_unit());
-        self.settings.tolerance.max(10f64.powi(-i32::from(decimals)) * unit + 1e-6)
+        let key = (self.unit, self.max_decimals);
+        if self.tol.1 != key {
+            let decimals = self.settings.decimals.unwrap_or(self.max_decimals.unwrap_or(3).max(3));
+            let unit = self.settings.units.map_or(self.unit, |u| u.mm_per_unit());
+            self.tol = (self.settings.tolerance.max(1.0 / grammar::pow10(u32::from(decimals)) * unit + 1e-6), key);
+        }
+        self.tol.0
     }
 
     // ----- blocks -----
 
-    fn line(&mut self, text: &[u8], items: &mut Items) {
+    fn line(&mut self, text: &[u8], items: &mut Items, block: &mut Block) {
         // Marlin's M117/M118 show the rest of the line as a message.
         let (text, message) = match message_word(text) {
             Some(k) => (&text[..k], Some(k)),
@@ -459,7 +498,7 @@ impl Run<'_> {
             }
             return;
         }
-        self.block.clear();
+        block.clear();
         for item in items.iter() {
             let (start, end) = (item.start as usize, item.end as usize);
             match item.kind {
@@ -469,20 +508,19 @@ impl Run<'_> {
                     let w = Word { value: item.value, decimals: item.decimals, start: item.start, end: item.end };
                     match letter {
                         b'G' => {
-                            if self.block.gs < MAX_CODES {
-                                self.block.g[self.block.gs] = (w.value, w.start, w.end);
-                                self.block.gs += 1;
+                            if block.gs < MAX_CODES {
+                                block.g[block.gs] = (w.value, w.start, w.end);
+                                block.gs += 1;
                             }
                         }
                         b'M' => {
-                            if self.block.ms < MAX_CODES {
-                                self.block.m[self.block.ms] = (w.value, w.start, w.end);
-                                self.block.ms += 1;
+                            if block.ms < MAX_CODES {
+                                block.m[block.ms] = (w.value, w.start, w.end);
+                                block.ms += 1;
                             }
                         }
                         _ => {
-                            let index = (letter - b'A') as usize;
-                            if self.block.letters[index].is_some() {
+                            if block.has(letter) {
                                 let d = self.finding(
                                     Severity::Error,
                                     codes::VF004.code,
@@ -493,8 +531,8 @@ impl Run<'_> {
                                 );
                                 Self::help(d, "a controller reads one word of each letter per block");
                             }
-                            self.block.letters[index] = Some(w);
-                            if !b"NXYZABCIJKRFSTPQLHDOUVW".contains(&letter) {
+                            block.set(letter, w);
+                            if KNOWN_LETTERS & (1 << (letter - b'A')) == 0 {
                                 let d = self.finding(
                                     Severity::Warning,
                                     codes::VF005.code,
@@ -513,7 +551,7 @@ impl Run<'_> {
                 }
             }
         }
-        self.execute();
+        self.execute_block(block);
     }
 
     fn comment(&mut self, text: &[u8], start: usize) {
@@ -587,12 +625,6 @@ impl Run<'_> {
             );
             Self::help(d, "the post should replace accented and other non-ASCII characters in comment text");
         }
-    }
-
-    fn execute(&mut self) {
-        let b = std::mem::take(&mut self.block);
-        self.execute_block(&b);
-        self.block = b;
     }
 
     fn execute_block(&mut self, b: &Block) {
@@ -687,7 +719,7 @@ impl Run<'_> {
             && !dwell
         {
             self.feed = f.value * self.unit / self.settings.feed_multiplier;
-            self.feed_step = 10f64.powi(-i32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
+            self.feed_step = 1.0 / grammar::pow10(u32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
         for &(code, start, end) in &b.m[..b.ms] {
             match (code * 10.0).round() as u32 {
@@ -1328,6 +1360,18 @@ impl Run<'_> {
     }
 
     fn check_feed_and_spindle(&mut self, p: &Motion, e: &Expected) {
+        if e.powered && !self.spindle && !self.spindle_reported && e.jet && !self.settings.jet_on {
+            self.spindle_reported = true;
+            let post = self.settings.post.as_deref().unwrap_or("the post");
+            self.motion_finding(
+                Severity::Warning,
+                codes::VF035.code,
+                format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
+                p,
+                Some(e),
+                Some("post jet toolpaths (laser, plasma, waterjet) with a post that has a JET_TOOL_ON section".into()),
+            );
+        }
         if e.powered && !self.spindle && !self.spindle_reported {
             self.spindle_reported = true;
             self.motion_finding(
@@ -1507,10 +1551,12 @@ impl Run<'_> {
 
 /// Where the message of an `M117`/`M118` word starts (after the word).
 fn message_word(text: &[u8]) -> Option<usize> {
-    let upper = |i: usize| text.get(i).map(u8::to_ascii_uppercase);
     (0..text.len()).find_map(|i| {
+        if !text[i].eq_ignore_ascii_case(&b'M') {
+            return None;
+        }
         let boundary = i == 0 || !text[i - 1].is_ascii_alphanumeric();
-        let word = upper(i) == Some(b'M') && text.get(i + 1..i + 4).is_some_and(|d| d == b"117" || d == b"118");
+        let word = text.get(i + 1..i + 4).is_some_and(|d| d == b"117" || d == b"118");
         let after = text.get(i + 4).is_none_or(|b| !b.is_ascii_digit() && *b != b'.');
         (boundary && word && after).then_some(i + 4)
     })

@@ -21,6 +21,7 @@ pub mod plot;
 
 use std::io::BufRead;
 
+use postc_ir::post::{Dispatch, Section};
 use postc_ir::{Diagnostic, EventSource, FileId, Post, Quantity, Units, ValueSource};
 
 pub use interp::Stats;
@@ -102,6 +103,10 @@ pub struct Settings {
     pub feed_multiplier: f64,
     /// The post wraps an axis onto a rotary one.
     pub rotary_wrap: bool,
+    /// The post can switch a jet on: false for a section post without a
+    /// JET_TOOL_ON section, whose jet cuts VF035 then reports as warnings
+    /// (a property of the post: it is not a jet post).
+    pub jet_on: bool,
     /// The post's name, for messages.
     pub post: Option<String>,
 }
@@ -118,6 +123,7 @@ impl Default for Settings {
             block_maximum: None,
             feed_multiplier: 1.0,
             rotary_wrap: false,
+            jet_on: true,
             post: None,
         }
     }
@@ -153,6 +159,7 @@ impl Settings {
             block_maximum: (has_n && numbers.maximum > 0.0).then_some(numbers.maximum),
             feed_multiplier,
             rotary_wrap: post.options.rotary_wrap.is_some(),
+            jet_on: post.info.dispatch != Dispatch::Sections || post.section(Section::JetToolOn).is_some(),
             post: Some(post.info.name.clone()),
         }
     }
@@ -209,6 +216,11 @@ pub struct Report {
     /// parallel to `findings`: the end of the program move it concerns,
     /// or the toolpath move the program does not make.
     pub at: Vec<[f64; 3]>,
+    /// The program line being read when each finding was made (parallel
+    /// to `findings`): its number (1-based) and the byte offset where it
+    /// starts, so that findings can be placed by line and column in a
+    /// program that is not held in memory.
+    pub lines: Vec<(u64, usize)>,
     pub errors: u64,
     pub warnings: u64,
     pub stats: Stats,

@@ -1,0 +1,331 @@
+//! `postc post` verifying the program while it writes it (docs/verify.md,
+//! "While posting").
+//!
+//! Two tees on the posting thread feed one verify thread over one bounded
+//! channel: [`TeeSink`] hands it each chunk of program bytes the runtime
+//! writes (64 KiB at a time), [`TeeSource`] the toolpath events the post
+//! reads, cloned, in batches. The verify thread reads the bytes as a
+//! `BufRead` and the events as an `EventSource` and runs
+//! [`postc_verify::verify`] over them, so the toolpath is read once and the
+//! program never goes back to disk.
+//!
+//! One channel carries both, in the order they were produced (the events
+//! read so far go before each chunk of bytes), so the posting thread never
+//! waits for a verify thread that waits for it: when verify needs bytes and
+//! events come first, or the reverse, it keeps what it received and reads
+//! on. What it keeps is bounded by what a post writes between two chunks;
+//! memory stays flat whatever the job's length.
+//!
+//! The program sink's own `finish` is held back ([`Verification::finish`]
+//! hands the sink over): the caller names and commits the files, or writes
+//! standard output, only once verification has passed.
+
+use std::collections::VecDeque;
+use std::io::{self, BufRead, Read};
+use std::rc::Rc;
+use std::cell::RefCell;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
+use std::thread::JoinHandle;
+
+use postc_ir::post::TapeSplitting;
+use postc_ir::{Diagnostic, Event, EventSource, FileId, Span};
+use postc_runtime::output::{Finished, Sink};
+use postc_verify::{Report, Settings};
+
+/// Events sent at a time.
+const BATCH: usize = 1024;
+/// Messages in flight at most.
+const IN_FLIGHT: usize = 8;
+/// Programs up to this size are kept to show their lines with findings.
+pub const HOLD: usize = 16 << 20;
+
+enum Message {
+    Bytes(Vec<u8>),
+    Events(Vec<(Event, Span)>),
+}
+
+/// What the verify thread found.
+pub enum Outcome {
+    /// The program is of a family verify does not read, told by its first
+    /// bytes (HPGL, ShopBot, Heidenhain conversational), or binary data.
+    Foreign,
+    /// The verification's report, and the program's bytes when it is at most [`HOLD`] long.
+    Verified { report: Report, held: Option<Vec<u8>> },
+}
+
+/// The posting thread's end of the channel, shared by the two tees.
+struct Tee {
+    tx: Option<SyncSender<Message>>,
+    events: Vec<(Event, Span)>,
+    /// Set by the verify thread when it reads no further (a foreign program).
+    stop: Arc<AtomicBool>,
+    /// The inner sink once the run finished.
+    parked: Option<Box<dyn Sink>>,
+    bytes: u64,
+}
+
+impl Tee {
+    fn send(&mut self, message: Message) {
+        if self.stop.load(Ordering::Relaxed) {
+            self.tx = None;
+        }
+        if let Some(tx) = &self.tx
+            && tx.send(message).is_err()
+        {
+            // The verify thread is gone (it panicked): `finish` says so.
+            self.tx = None;
+        }
+    }
+
+    fn send_events(&mut self) {
+        if !self.events.is_empty() {
+            let batch = std::mem::replace(&mut self.events, Vec::with_capacity(BATCH));
+            self.send(Message::Events(batch));
+        }
+    }
+}
+
+/// A verification running beside a run of the post.
+pub struct Verification {
+    tee: Rc<RefCell<Tee>>,
+    thread: Option<JoinHandle<Outcome>>,
+}
+
+impl Verification {
+    /// Starts the verify thread for a program whose spans are in `file`.
+    /// Without a thread the program is not verified (`None`).
+    pub fn start(file: FileId, settings: Settings) -> io::Result<Verification> {
+        let (tx, rx) = sync_channel(IN_FLIGHT);
+        let stop = Arc::new(AtomicBool::new(false));
+        let flag = Arc::clone(&stop);
+        let thread = std::thread::Builder::new()
+            .name("postc-verify".into())
+            .spawn(move || verify_thread(rx, file, &settings, &flag))?;
+        let tee = Tee { tx: Some(tx), events: Vec::with_capacity(BATCH), stop, parked: None, bytes: 0 };
+        Ok(Verification { tee: Rc::new(RefCell::new(tee)), thread: Some(thread) })
+    }
+
+    /// The program sink, teed to the verify thread.
+    pub fn sink(&self, inner: Box<dyn Sink>) -> Box<dyn Sink> {
+        Box::new(TeeSink { inner: Some(inner), tee: Rc::clone(&self.tee) })
+    }
+
+    /// The toolpath's events, teed to the verify thread.
+    pub fn source<'a>(&self, inner: &'a mut dyn EventSource) -> TeeSource<'a> {
+        TeeSource { inner, tee: Rc::clone(&self.tee) }
+    }
+
+    /// The run has finished: waits for the verify thread. Returns its
+    /// outcome, the program sink (whose `finish` the caller calls once the
+    /// program may be written) and the bytes of the program.
+    pub fn finish(mut self) -> (Outcome, Option<Box<dyn Sink>>, u64) {
+        let (sink, bytes) = {
+            let mut tee = self.tee.borrow_mut();
+            tee.send_events();
+            tee.tx = None;
+            (tee.parked.take(), tee.bytes)
+        };
+        let outcome = match self.thread.take().map(JoinHandle::join) {
+            Some(Ok(outcome)) => outcome,
+            Some(Err(panic)) => std::panic::resume_unwind(panic),
+            None => unreachable!("the thread is joined once"),
+        };
+        (outcome, sink, bytes)
+    }
+}
+
+impl Drop for Verification {
+    fn drop(&mut self) {
+        // A failed run: the channel closes, the thread ends at once.
+        self.tee.borrow_mut().tx = None;
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
+        }
+    }
+}
+
+/// The program sink, whose bytes also go to the verify thread.
+struct TeeSink {
+    inner: Option<Box<dyn Sink>>,
+    tee: Rc<RefCell<Tee>>,
+}
+
+impl Sink for TeeSink {
+    fn write(&mut self, bytes: &[u8]) -> io::Result<()> {
+        if let Some(inner) = self.inner.as_mut() {
+            inner.write(bytes)?;
+        }
+        let mut tee = self.tee.borrow_mut();
+        tee.bytes += bytes.len() as u64;
+        if tee.tx.is_some() {
+            tee.send_events();
+            tee.send(Message::Bytes(bytes.to_vec()));
+        }
+        Ok(())
+    }
+
+    fn new_part(&mut self) -> io::Result<()> {
+        // The parts are verified as one program, as if joined.
+        self.inner.as_mut().map_or(Ok(()), |s| s.new_part())
+    }
+
+    /// Parks the inner sink for [`Verification::finish`]; the program is
+    /// not written yet.
+    fn finish(mut self: Box<Self>, _tape: Option<&TapeSplitting>) -> io::Result<Finished> {
+        let mut tee = self.tee.borrow_mut();
+        tee.send_events();
+        tee.tx = None;
+        tee.parked = self.inner.take();
+        Ok(Finished::Streamed)
+    }
+}
+
+/// The toolpath's events, each also sent (cloned) to the verify thread.
+pub struct TeeSource<'a> {
+    inner: &'a mut dyn EventSource,
+    tee: Rc<RefCell<Tee>>,
+}
+
+impl EventSource for TeeSource<'_> {
+    fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+        let next = self.inner.next_event(diagnostics);
+        let mut tee = self.tee.borrow_mut();
+        if tee.tx.is_some() {
+            match &next {
+                Some((event, span)) => {
+                    tee.events.push((event.clone(), *span));
+                    if tee.events.len() >= BATCH {
+                        tee.send_events();
+                    }
+                }
+                None => tee.send_events(),
+            }
+        }
+        next
+    }
+}
+
+/// What the verify thread has received and not yet read.
+struct Demux {
+    rx: Receiver<Message>,
+    bytes: VecDeque<Vec<u8>>,
+    events: VecDeque<Vec<(Event, Span)>>,
+    ended: bool,
+}
+
+impl Demux {
+    /// Receives one message; false at the end of the run.
+    fn receive(&mut self) -> bool {
+        if self.ended {
+            return false;
+        }
+        match self.rx.recv() {
+            Ok(Message::Bytes(b)) => self.bytes.push_back(b),
+            Ok(Message::Events(e)) => self.events.push_back(e),
+            Err(_) => self.ended = true,
+        }
+        !self.ended
+    }
+}
+
+/// The program's bytes as the verify thread reads them.
+struct Program {
+    demux: Rc<RefCell<Demux>>,
+    chunk: Vec<u8>,
+    at: usize,
+    /// The bytes so far while they are at most [`HOLD`].
+    held: Option<Vec<u8>>,
+}
+
+impl Read for Program {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let available = self.fill_buf()?;
+        let n = available.len().min(buf.len());
+        buf[..n].copy_from_slice(&available[..n]);
+        self.consume(n);
+        Ok(n)
+    }
+}
+
+impl BufRead for Program {
+    fn fill_buf(&mut self) -> io::Result<&[u8]> {
+        while self.at >= self.chunk.len() {
+            let mut demux = self.demux.borrow_mut();
+            let next = loop {
+                if let Some(b) = demux.bytes.pop_front() {
+                    break Some(b);
+                }
+                if !demux.receive() {
+                    break None;
+                }
+            };
+            drop(demux);
+            let Some(chunk) = next else { return Ok(&[]) };
+            if let Some(held) = &mut self.held {
+                if held.len() + chunk.len() <= HOLD {
+                    held.extend_from_slice(&chunk);
+                } else {
+                    self.held = None;
+                }
+            }
+            self.chunk = chunk;
+            self.at = 0;
+        }
+        Ok(&self.chunk[self.at..])
+    }
+
+    fn consume(&mut self, amount: usize) {
+        self.at = (self.at + amount).min(self.chunk.len());
+    }
+}
+
+/// The toolpath's events as the verify thread reads them.
+struct Events {
+    demux: Rc<RefCell<Demux>>,
+    batch: std::vec::IntoIter<(Event, Span)>,
+}
+
+impl EventSource for Events {
+    fn next_event(&mut self, _diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+        loop {
+            if let Some(next) = self.batch.next() {
+                return Some(next);
+            }
+            let mut demux = self.demux.borrow_mut();
+            let batch = loop {
+                if let Some(e) = demux.events.pop_front() {
+                    break Some(e);
+                }
+                if !demux.receive() {
+                    break None;
+                }
+            };
+            self.batch = batch?.into_iter();
+        }
+    }
+}
+
+fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop: &AtomicBool) -> Outcome {
+    let demux = Rc::new(RefCell::new(Demux { rx, bytes: VecDeque::new(), events: VecDeque::new(), ended: false }));
+    let mut program = Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, held: Some(Vec::new()) };
+    let mut head = Vec::with_capacity(4096);
+    // Reading from the channel cannot fail.
+    let _ = program.by_ref().take(4096).read_to_end(&mut head);
+    if postc_verify::foreign_family(&head).is_some() || postc_verify::looks_binary(&head) {
+        stop.store(true, Ordering::Relaxed);
+        let mut demux = demux.borrow_mut();
+        while demux.receive() {
+            demux.bytes.clear();
+            demux.events.clear();
+        }
+        return Outcome::Foreign;
+    }
+    let mut events = Events { demux: Rc::clone(&demux), batch: Vec::new().into_iter() };
+    let mut reader = io::Cursor::new(head).chain(&mut program);
+    let report = postc_verify::verify(&mut reader, file, &mut events, settings);
+    // Whatever verify left unread (nothing, as it reads both to their end).
+    while demux.borrow_mut().receive() {}
+    Outcome::Verified { report, held: program.held.take() }
+}
