@@ -488,8 +488,9 @@ declare_codes! {
     PP018: Warning, "text outside quotes (or after the closing quote) is ignored",
         example = "begin HEADER\n\"G90\" G21\nthis is a note",
         fix = "Put output text between double quotes, and start a comment with `+` or `|`.";
-    /// `POST_BASE` names another post this one builds on, and that file cannot be read. The post
-    /// compiles without it, so the base's sections, `VAR`s and statements are missing.
+    /// `POST_BASE` names another post this one builds on, and that file cannot be read (it is not
+    /// there, it is not a regular file such as a folder or a device, or it is over 16 MiB). The
+    /// post compiles without it, so the base's sections, `VAR`s and statements are missing.
     PP019: Warning, "the `POST_BASE` file cannot be read: the post compiles without it",
         example = "POST_BASE = \"missing_base.pp\"",
         fix = "Put the base post next to this one, or correct its name.";
