@@ -1149,6 +1149,18 @@ declare_codes! {
     /// it is taken as counter-clockwise.
     CL022: Warning, "TLON,GOFWD arc with no INDIRV; taken as counter-clockwise",
         fix = "Make sure the CAM system writes INDIRV before the arc.";
+    /// A record gives a coordinate, feed, spindle speed, angle, dwell or power outside the range
+    /// a machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
+    /// docs/toolpath-format.md, "Ranges"). The record is refused: posting it would write a word
+    /// no controller reads, such as a 309-digit `X`.
+    CL023: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
+        example = "GOTO/1e308,5,0",
+        fix = "Correct the record; check the CAM system's units and the operation that wrote it.";
+    /// The CL file ends without FINI, the record that ends every CL file: it may have been cut
+    /// short (a copy or transfer that stopped), and the program posted from it would end early.
+    CL024: Warning, "the CL file ends without FINI: it may be cut short",
+        example = "GOTO/1,2,3",
+        fix = "Post the whole CL file; if it is whole, add FINI at its end.";
     /// `postc postp DIR` posts the CL file `DIR/cl.tap`, as the original `postp` did; there is
     /// none.
     PX001: Error, "no `DIR/cl.tap`",
@@ -1266,6 +1278,15 @@ declare_codes! {
     /// Toolpaths are text; this one is not valid UTF-8.
     TP003: Error, "the toolpath is not text (not valid UTF-8)",
         fix = "Save the toolpath as UTF-8 text.";
+    /// An event gives a coordinate, feed, spindle speed, angle, dwell or power outside the range a
+    /// machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
+    /// docs/toolpath-format.md, "Ranges"). The event is refused.
+    TP004: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
+        fix = "Correct the event; check the toolpath's units.";
+    /// The toolpath ends without its `End` event: it may have been cut short (a copy or transfer
+    /// that stopped), and the program posted from it would end early.
+    TP005: Warning, "the toolpath ends without an End event: it may be cut short",
+        fix = "Post the whole toolpath; if it is whole, end it with `End`.";
     /// Every event may run at most a step budget of statements, so that a loop that never ends
     /// stops. The post ran past it; the message points at the loop.
     RT002: Error, "a post ran more than its step budget for one event (a loop that never ends); points at the loop",
@@ -1468,6 +1489,13 @@ declare_codes! {
     /// generic controller and errors for the named ones.
     VF042: Error | Warning, "a comment character the controller refuses: `(` inside a comment, `%` or `;` on Fanuc/Haas, control characters, non-ASCII on Fanuc/Haas/grbl (warnings for the generic controller)",
         fix = "Filter the comment text in the post (SUBSTITUTE in a Vectric post).";
+    /// A word or block longer than the controller reads: a number of more than 8 digits for
+    /// Fanuc and Haas (Fanuc alarm PS0003 "TOO MANY DIGITS"), a block of more than 255 characters
+    /// for LinuxCNC and the generic controller ("Command too long"), of more than 80 characters
+    /// besides blanks and comments for grbl (error 11). docs/verify.md, "Word and block length".
+    VF043: Error, "a word or block longer than the controller reads (Fanuc/Haas 8 digits, LinuxCNC 255 characters, grbl 80)",
+        example = "G1 X100000000000000000000000000000000000000 F100",
+        fix = "Check the toolpath's coordinates and the post's number format.";
     /// The post writes feed moves, but no section prints a feed rate, so the machine cuts at
     /// whatever feed was set before the program ran.
     LN001: Warning, "a G-code post writes feed moves but no section prints a feed rate",
