@@ -1585,4 +1585,11 @@ declare_codes! {
     /// post cannot tell it from dead code.
     LN016: Warning, "a VcPost `Sub` or `Function` that no statement calls, that is not an event the applications raise, and that no keyword comment offers to a table or option card",
         fix = "Add the keyword comment of its role (`' #Option`, `' #Cycle`, `' #Probe`, ...) after the `Sub` line when a table or option calls it by name; otherwise call it or remove it.";
+    /// The post states its units (Vectric `UNITS`, VcPost `Postc.Units`, a section post's
+    /// `postcOptions.units`), and its text writes the units word of the other system only: `G21`
+    /// (millimetres) in a post that writes inches, or `G20` in one that writes millimetres. The
+    /// controller then reads every length 25.4 times too small or too large.
+    LN017: Warning, "the post states its units but writes only the other system's units word (`G21` in an inch post, `G20` in a millimetre post)",
+        example = "UNITS = \"INCHES\"\nbegin HEADER\n\"G21 G90\"",
+        fix = "Make the units statement and the units word agree.";
 }

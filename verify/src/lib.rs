@@ -176,7 +176,7 @@ impl Settings {
         Settings {
             controller,
             tolerance,
-            units: post.info.units,
+            units: post.output_units(),
             decimals,
             chord_tolerance: post.options.arc_tolerance,
             block_start: has_n.then_some(numbers.start),
