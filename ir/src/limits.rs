@@ -139,10 +139,19 @@ fn round(v: f64) -> String {
 /// comes back unchanged in the same field (the feed every later move
 /// carries after one bad `FEDRAT`), so a reader reports it once; the event
 /// is refused each time ([`RangeCheck::check`] says so).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct RangeCheck {
     units: Units,
     last: Option<(&'static str, u64)>,
+    /// The largest length and feed in `units`, for the moves' fast path.
+    length: f64,
+    feed: f64,
+}
+
+impl Default for RangeCheck {
+    fn default() -> RangeCheck {
+        RangeCheck::in_units(Units::Mm)
+    }
 }
 
 /// The verdict on one event.
@@ -161,10 +170,46 @@ impl RangeCheck {
         RangeCheck::default()
     }
 
+    fn in_units(units: Units) -> RangeCheck {
+        RangeCheck { units, last: None, length: Kind::Length.range(units).1, feed: Kind::Feed.range(units).1 }
+    }
+
+    /// Whether a move (nearly every event of a toolpath) is plainly within
+    /// range: its coordinates, feed, rotary axes and tool axis. A NaN fails
+    /// every comparison, so it takes the slow path, which reports it. (A
+    /// tool axis within the length limit of the units is within its own.)
+    #[inline]
+    fn plain_move(&self, event: &Event) -> bool {
+        let l = self.length;
+        let within = |x: f64, y: f64, z: f64| x.abs() <= l && y.abs() <= l && z.abs() <= l;
+        let feed = |f: Option<f64>| f.is_none_or(|f| (0.0..=self.feed).contains(&f));
+        let angle = |v: Option<f64>| v.is_none_or(|v| v.abs() <= MAX_ANGLE_DEG);
+        let axis = |v: Option<[f64; 3]>| v.is_none_or(|[i, j, k]| within(i, j, k));
+        match event {
+            Event::Rapid(m) => within(m.x, m.y, m.z) && angle(m.a) && angle(m.b) && angle(m.c) && axis(m.tool_axis),
+            Event::Feed(m) => {
+                within(m.x, m.y, m.z) && feed(m.feed) && angle(m.a) && angle(m.b) && angle(m.c) && axis(m.tool_axis)
+            }
+            Event::Arc(a) => within(a.x, a.y, a.z) && within(a.cx, a.cy, a.cz) && feed(a.feed),
+            _ => false,
+        }
+    }
+
     /// The verdict on `event`.
+    #[inline]
     pub fn check(&mut self, event: &Event) -> Verdict {
+        if self.plain_move(event) {
+            self.last = None;
+            return Verdict::Fine;
+        }
+        self.check_slowly(event)
+    }
+
+    fn check_slowly(&mut self, event: &Event) -> Verdict {
         if let Event::Job(job) = event {
-            self.units = job.units;
+            let last = self.last;
+            *self = RangeCheck::in_units(job.units);
+            self.last = last;
         }
         match first_out_of_range(event, self.units) {
             None => {
@@ -199,17 +244,19 @@ pub fn first_out_of_range(event: &Event, units: Units) -> Option<OutOfRange> {
         check(names[1], p.y, Length);
         check(names[2], p.z, Length);
     };
-    let rotary = |a: Option<f64>, b: Option<f64>, c: Option<f64>, axis: Option<[f64; 3]>| {
-        let mut list = Vec::new();
+    let rotary = |a: Option<f64>,
+                  b: Option<f64>,
+                  c: Option<f64>,
+                  axis: Option<[f64; 3]>,
+                  check: &mut dyn FnMut(&'static str, f64, Kind)| {
         for (name, v) in [("a", a), ("b", b), ("c", c)] {
             if let Some(v) = v {
-                list.push((name, v, Angle));
+                check(name, v, Angle);
             }
         }
-        if let Some([i, j, k]) = axis {
-            list.extend([("tool_axis", i, Axis), ("tool_axis", j, Axis), ("tool_axis", k, Axis)]);
+        for v in axis.into_iter().flatten() {
+            check("tool_axis", v, Axis);
         }
-        list
     };
     match event {
         Event::Job(job) => {
@@ -242,18 +289,14 @@ pub fn first_out_of_range(event: &Event, units: Units) -> Option<OutOfRange> {
         }
         Event::Rapid(m) => {
             point(&Point { x: m.x, y: m.y, z: m.z }, ["x", "y", "z"], &mut check);
-            for (name, v, kind) in rotary(m.a, m.b, m.c, m.tool_axis) {
-                check(name, v, kind);
-            }
+            rotary(m.a, m.b, m.c, m.tool_axis, &mut check);
         }
         Event::Feed(m) => {
             point(&Point { x: m.x, y: m.y, z: m.z }, ["x", "y", "z"], &mut check);
             if let Some(f) = m.feed {
                 check("feed", f, Feed);
             }
-            for (name, v, kind) in rotary(m.a, m.b, m.c, m.tool_axis) {
-                check(name, v, kind);
-            }
+            rotary(m.a, m.b, m.c, m.tool_axis, &mut check);
         }
         Event::Arc(a) => {
             point(&Point { x: a.x, y: a.y, z: a.z }, ["x", "y", "z"], &mut check);
@@ -335,6 +378,21 @@ mod tests {
         assert_eq!(inch.check(&far(39_000.0)), Verdict::Fine);
         let Verdict::Refuse(bad) = inch.check(&far(40_000.0)) else { panic!() };
         assert_eq!(bad.message("Rapid"), "Rapid x is 40000: a coordinate or length must be within ±39370.08 in");
+    }
+
+    /// Moves with rotary and tool axes take the fast path when they are
+    /// in range and the slow one, which reports, when they are not.
+    #[test]
+    fn rotary_and_tool_axes_are_checked() {
+        let with = |a: Option<f64>, axis: Option<[f64; 3]>| {
+            Event::Feed(FeedMove { x: 1.0, a, tool_axis: axis, ..FeedMove::default() })
+        };
+        let mut check = RangeCheck::new();
+        assert_eq!(check.check(&with(Some(720.0), Some([0.0, 0.0, 1.0]))), Verdict::Fine);
+        let Verdict::Refuse(bad) = check.check(&with(Some(2e6), None)) else { panic!() };
+        assert_eq!(bad.field, "a");
+        let Verdict::Refuse(bad) = check.check(&with(None, Some([f64::NAN, 0.0, 1.0]))) else { panic!() };
+        assert_eq!(bad.field, "tool_axis");
     }
 
     #[test]

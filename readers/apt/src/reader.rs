@@ -289,12 +289,13 @@ impl<R: BufRead> AptReader<R> {
 impl<R: BufRead> EventSource for AptReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         loop {
-            if let Some((event, span)) = self.core.out.pop_front() {
-                match self.ranges.check(&event) {
-                    Verdict::Fine => return Some((event, span)),
-                    Verdict::Refuse(bad) => diagnostics.push(diag::out_of_range(span, &bad, event.name())),
+            if let Some((event, span)) = self.core.out.front() {
+                match self.ranges.check(event) {
+                    Verdict::Fine => return self.core.out.pop_front(),
+                    Verdict::Refuse(bad) => diagnostics.push(diag::out_of_range(*span, &bad, event.name())),
                     Verdict::RefuseAgain => {}
                 }
+                self.core.out.pop_front();
                 continue;
             }
             match self.phase {

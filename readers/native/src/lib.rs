@@ -106,7 +106,10 @@ impl<R: BufRead> NativeReader<R> {
 impl<R: BufRead> EventSource for NativeReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         loop {
-            let Some((event, span)) = self.next_read(diagnostics) else {
+            // The event is looked at where it was read and returned as it
+            // is: moving it out and back costs two copies an event.
+            let next = self.next_read(diagnostics);
+            let Some((event, span)) = &next else {
                 if !self.ended && !self.finished {
                     self.finished = true;
                     let end = Span::new(self.file, self.offset, self.offset);
@@ -121,14 +124,14 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                 }
                 return None;
             };
-            match self.ranges.check(&event) {
+            match self.ranges.check(event) {
                 Verdict::Fine => {
                     self.ended |= matches!(event, Event::End);
-                    return Some((event, span));
+                    return next;
                 }
                 Verdict::Refuse(bad) => diagnostics.push(
                     Diagnostic::error(codes::TP004, format!("{}; the event is refused", bad.message(event.name())))
-                        .at(span, "this event")
+                        .at(*span, "this event")
                         .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
                         .help("correct the event; check the toolpath's units"),
                 ),
@@ -140,6 +143,7 @@ impl<R: BufRead> EventSource for NativeReader<R> {
 
 impl<R: BufRead> NativeReader<R> {
     /// The next event as read, before its ranges are checked.
+    #[inline(always)]
     fn next_read(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         while !self.done {
             // A move line whole in the input's buffer is read where it is,
