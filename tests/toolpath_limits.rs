@@ -4,20 +4,9 @@
 //! without its end record (FINI, End) posts with a warning that it may be
 //! cut short, which `postc check` gives too.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod support;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn postc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_postc")).current_dir(root()).args(args).output().unwrap()
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
+use support::{postc, said as text};
 
 #[test]
 fn a_coordinate_no_machine_reaches_is_refused_at_its_record() {

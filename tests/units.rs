@@ -13,7 +13,6 @@
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Event, EventSource, Post, Units};
-use postc_runtime::{Finished, Output};
 
 mod support;
 
@@ -49,15 +48,7 @@ fn compile(path: &Path, text: &str) -> Post {
 }
 
 fn post(post: &Post, toolpath: &Path) -> String {
-    let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
-        Ok(r) => match r.output {
-            Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
-            _ => unreachable!(),
-        },
-        Err(d) => panic!("{d:?}"),
-    }
+    String::from_utf8(support::post_parts(post, toolpath).unwrap().concat()).unwrap()
 }
 
 /// rs274 reads `program` with the toolpath's motion in millimetres, in

@@ -61,10 +61,14 @@ impl Conversion {
     }
 }
 
+fn times<const N: usize>(f: f64, values: [&mut f64; N]) {
+    for v in values {
+        *v *= f;
+    }
+}
+
 fn scale_point(p: &mut Point, f: f64) {
-    p.x *= f;
-    p.y *= f;
-    p.z *= f;
+    times(f, [&mut p.x, &mut p.y, &mut p.z]);
 }
 
 fn scale_job(job: &mut postc_ir::event::Job, f: f64) {
@@ -97,24 +101,13 @@ fn scale(event: &mut Event, f: f64) {
             t.cut_feed *= f;
             t.plunge_feed *= f;
         }
-        Event::Rapid(m) => {
-            m.x *= f;
-            m.y *= f;
-            m.z *= f;
-        }
+        Event::Rapid(m) => times(f, [&mut m.x, &mut m.y, &mut m.z]),
         Event::Feed(m) => {
-            m.x *= f;
-            m.y *= f;
-            m.z *= f;
+            times(f, [&mut m.x, &mut m.y, &mut m.z]);
             m.feed = m.feed.map(|v| v * f);
         }
         Event::Arc(a) => {
-            a.x *= f;
-            a.y *= f;
-            a.z *= f;
-            a.cx *= f;
-            a.cy *= f;
-            a.cz *= f;
+            times(f, [&mut a.x, &mut a.y, &mut a.z, &mut a.cx, &mut a.cy, &mut a.cz]);
             a.feed = a.feed.map(|v| v * f);
         }
         Event::DrillCycle(c) => {
@@ -126,11 +119,7 @@ fn scale(event: &mut Event, f: f64) {
             c.peck = c.peck.map(|v| v * f);
             c.pitch = c.pitch.map(|v| v * f);
         }
-        Event::DrillPoint(p) => {
-            p.x *= f;
-            p.y *= f;
-            p.z *= f;
-        }
+        Event::DrillPoint(p) => times(f, [&mut p.x, &mut p.y, &mut p.z]),
         Event::SpindleOn(s) if s.css => {
             let surface = if f > 1.0 { M_PER_FT } else { 1.0 / M_PER_FT };
             s.speed = s.speed.map(|v| v * surface);
