@@ -1151,7 +1151,7 @@ declare_codes! {
         fix = "Make sure the CAM system writes INDIRV before the arc.";
     /// A record gives a coordinate, feed, spindle speed, angle, dwell or power outside the range
     /// a machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
-    /// docs/toolpath-format.md, "Ranges"). The record is refused: posting it would write a word
+    /// docs/toolpath-format.md, "Ranges"). The toolpath is refused: posting it would write a word
     /// no controller reads, such as a 309-digit `X`.
     CL023: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
         example = "GOTO/1e308,5,0",
@@ -1280,7 +1280,7 @@ declare_codes! {
         fix = "Save the toolpath as UTF-8 text.";
     /// An event gives a coordinate, feed, spindle speed, angle, dwell or power outside the range a
     /// machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
-    /// docs/toolpath-format.md, "Ranges"). The event is refused.
+    /// docs/toolpath-format.md, "Ranges"). The toolpath is refused.
     TP004: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
         fix = "Correct the event; check the toolpath's units.";
     /// The toolpath ends without its `End` event: it may have been cut short (a copy or transfer

@@ -1,9 +1,12 @@
 //! The ranges of the numbers a toolpath may carry. Every toolpath reader
 //! (APT CL, native RON / JSON Lines) checks each event it gives out with a
-//! [`RangeCheck`] and refuses one whose coordinates, feeds, speeds, angles,
-//! times or power lie outside these ranges (or are not finite numbers), with
-//! an error at the record's line: a CL file that says `GOTO/1e308,5,0` would
-//! otherwise post as a 309-digit `X` word. `docs/toolpath-format.md`
+//! [`RangeCheck`] and refuses the toolpath when one has coordinates, feeds,
+//! speeds, angles, times or power outside these ranges (or numbers that are
+//! not finite), with an error at the record's line: a CL file that says
+//! `GOTO/1e308,5,0` would otherwise post as a 309-digit `X` word. The event
+//! is still given out, so that the stream keeps the order of its events
+//! (a drilling cycle's holes inside it); the error stops `postc post`
+//! before the event reaches a post. `docs/toolpath-format.md`
 //! ("Ranges") lists them.
 //!
 //! The limits are generous and physical: no machine tool has an axis a
@@ -135,10 +138,10 @@ fn round(v: f64) -> String {
 }
 
 /// Checks events in stream order: the `Job` says the units of what
-/// follows. A value the check refused once is not refused again while it
+/// follows. A value the check refused once is not reported again while it
 /// comes back unchanged in the same field (the feed every later move
-/// carries after one bad `FEDRAT`), so a reader reports it once; the event
-/// is refused each time ([`RangeCheck::check`] says so).
+/// carries after one bad `FEDRAT`), so a reader reports it once
+/// ([`Verdict::RefuseAgain`]).
 #[derive(Clone, Debug)]
 pub struct RangeCheck {
     units: Units,

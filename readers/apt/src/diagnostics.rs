@@ -128,7 +128,7 @@ pub(crate) fn stray_end_of_path(span: Span) -> Diagnostic {
 }
 
 pub(crate) fn out_of_range(span: Span, bad: &postc_ir::limits::OutOfRange, event: &str) -> Diagnostic {
-    Diagnostic::error(OUT_OF_RANGE, format!("{}; the record is refused", bad.message(event)))
+    Diagnostic::error(OUT_OF_RANGE, format!("{}; the toolpath is refused", bad.message(event)))
         .at(span, "this record")
         .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
         .help("correct the record; check the CAM system's units and the operation that wrote it")

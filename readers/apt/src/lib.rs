@@ -56,8 +56,8 @@
 //! `window.rs`).
 //!
 //! Every event is checked against the ranges of `postc_ir::limits` as it
-//! leaves the reader (in the job's units): one out of range is refused with
-//! error CL023 at its record.
+//! leaves the reader (in the job's units): one out of range is error CL023
+//! at its record, which refuses the toolpath.
 //!
 //! ## What is not CL text
 //!

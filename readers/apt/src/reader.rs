@@ -290,13 +290,10 @@ impl<R: BufRead> EventSource for AptReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         loop {
             if let Some((event, span)) = self.core.out.front() {
-                match self.ranges.check(event) {
-                    Verdict::Fine => return self.core.out.pop_front(),
-                    Verdict::Refuse(bad) => diagnostics.push(diag::out_of_range(*span, &bad, event.name())),
-                    Verdict::RefuseAgain => {}
+                if let Verdict::Refuse(bad) = self.ranges.check(event) {
+                    diagnostics.push(diag::out_of_range(*span, &bad, event.name()));
                 }
-                self.core.out.pop_front();
-                continue;
+                return self.core.out.pop_front();
             }
             match self.phase {
                 Phase::Start => self.start(diagnostics),

@@ -219,7 +219,7 @@ fn values_out_of_range_are_refused_at_their_record() {
     assert!(
         read.diagnostics[0].message.starts_with("Feed x is 1e308: a coordinate or length must be within ±1000000 mm")
     );
-    assert_eq!(read.count("Feed"), 1, "the far move is refused, the next one read");
+    assert_eq!(read.count("Feed"), 2, "the events keep their order; the error refuses the toolpath");
     let read = common::read_text("UNITS/INCHES\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
     assert_eq!(read.codes(), ["CL023"], "40,000 inches is over 1 km; 39,000 is not");
     let read =
@@ -231,6 +231,12 @@ fn values_out_of_range_are_refused_at_their_record() {
         .collect();
     assert_eq!(read.codes(), ["CL023", "CL023", "CL023"], "{:?}", read.diagnostics);
     assert_eq!(lines, [2, 3, 6], "the FEDRAT, the first move that carries it, the spindle speed");
+    // A drilling cycle out of range is an error, and its holes stay inside it.
+    let cl = "UNITS/MM\nTOOL PATH/D,TOOL,T1\nCYCLE/DRILL,RAPTO,3.0,FEDTO,5e9,MMPM,100.0\nGOTO/0,0,0\nGOTO/10,0,0\nCYCLE/OFF\nEND-OF-PATH\nFINI\n";
+    let read = common::read_text(cl);
+    assert_eq!(read.codes(), ["CL023"], "{:?}", read.diagnostics);
+    common::check_order("cycle out of range", &read.events, false);
+    assert_eq!((read.count("DrillCycle"), read.count("DrillPoint"), read.count("DrillEnd")), (1, 2, 1));
 }
 
 /// A CL file that ends without FINI may be cut short (CL024): a copy that

@@ -101,8 +101,10 @@ impl<R: BufRead> NativeReader<R> {
 }
 
 /// Events are checked against the ranges of `postc_ir::limits` (TP004:
-/// an event out of range is refused), and a stream that ends without its
-/// `End` event is said to be perhaps cut short (TP005).
+/// an event out of range is an error, so the toolpath is refused; the
+/// event is still given out, so that the stream keeps its order), and a
+/// stream that ends without its `End` event is said to be perhaps cut
+/// short (TP005).
 impl<R: BufRead> EventSource for NativeReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         loop {
@@ -124,19 +126,16 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                 }
                 return None;
             };
-            match self.ranges.check(event) {
-                Verdict::Fine => {
-                    self.ended |= matches!(event, Event::End);
-                    return next;
-                }
-                Verdict::Refuse(bad) => diagnostics.push(
-                    Diagnostic::error(codes::TP004, format!("{}; the event is refused", bad.message(event.name())))
+            if let Verdict::Refuse(bad) = self.ranges.check(event) {
+                diagnostics.push(
+                    Diagnostic::error(codes::TP004, format!("{}; the toolpath is refused", bad.message(event.name())))
                         .at(*span, "this event")
                         .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
                         .help("correct the event; check the toolpath's units"),
-                ),
-                Verdict::RefuseAgain => {}
+                );
             }
+            self.ended |= matches!(event, Event::End);
+            return next;
         }
     }
 }
@@ -274,11 +273,11 @@ mod tests {
         let ron = "Job(units: Mm)\nRapid(x: 1e308, y: 5, z: 0)\nFeed(x: 1, y: 2, z: 3, feed: -1)\nFeed(x: 2, y: 2, z: 3, feed: -1)\nSpindleOn(speed: 2e6)\nRapid(x: 1, y: 2, z: 3)\nEnd\n";
         let (events, diags) = read_checked(ron);
         assert_eq!(diags, [("TP004", 2), ("TP004", 3), ("TP004", 5)]);
-        assert_eq!(events.iter().map(Event::name).collect::<Vec<_>>(), ["Job", "Rapid", "End"]);
+        assert_eq!(events.len(), 7, "the events keep their order; the errors refuse the toolpath");
         let json = "{\"Job\":{\"units\":\"Inch\"}}\n{\"Rapid\":{\"x\":39000,\"y\":0,\"z\":0}}\n{\"Rapid\":{\"x\":40000,\"y\":0,\"z\":0}}\n\"End\"\n";
         let (events, diags) = read_checked(json);
         assert_eq!(diags, [("TP004", 3)], "40,000 inches is over 1 km; 39,000 is not");
-        assert_eq!(events.len(), 3);
+        assert_eq!(events.len(), 4);
     }
 
     /// A toolpath without its `End` may be cut short (TP005), at its end;
