@@ -107,36 +107,34 @@ impl<R: BufRead> NativeReader<R> {
 /// short (TP005).
 impl<R: BufRead> EventSource for NativeReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
-        loop {
-            // The event is looked at where it was read and returned as it
-            // is: moving it out and back costs two copies an event.
-            let next = self.next_read(diagnostics);
-            let Some((event, span)) = &next else {
-                if !self.ended && !self.finished {
-                    self.finished = true;
-                    let end = Span::new(self.file, self.offset, self.offset);
-                    diagnostics.push(
-                        Diagnostic::warning(
-                            codes::TP005,
-                            "the toolpath ends without an End event: it may be cut short, and the program would end early",
-                        )
-                        .at(end, "the toolpath ends here")
-                        .help("post the whole toolpath; if it is whole, end it with `End`"),
-                    );
-                }
-                return None;
-            };
-            if let Verdict::Refuse(bad) = self.ranges.check(event) {
+        // The event is looked at where it was read and returned as it
+        // is: moving it out and back costs two copies an event.
+        let next = self.next_read(diagnostics);
+        let Some((event, span)) = &next else {
+            if !self.ended && !self.finished {
+                self.finished = true;
+                let end = Span::new(self.file, self.offset, self.offset);
                 diagnostics.push(
-                    Diagnostic::error(codes::TP004, format!("{}; the toolpath is refused", bad.message(event.name())))
-                        .at(*span, "this event")
-                        .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
-                        .help("correct the event; check the toolpath's units"),
+                    Diagnostic::warning(
+                        codes::TP005,
+                        "the toolpath ends without an End event: it may be cut short, and the program would end early",
+                    )
+                    .at(end, "the toolpath ends here")
+                    .help("post the whole toolpath; if it is whole, end it with `End`"),
                 );
             }
-            self.ended |= matches!(event, Event::End);
-            return next;
+            return None;
+        };
+        if let Verdict::Refuse(bad) = self.ranges.check(event) {
+            diagnostics.push(
+                Diagnostic::error(codes::TP004, format!("{}; the toolpath is refused", bad.message(event.name())))
+                    .at(*span, "this event")
+                    .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
+                    .help("correct the event; check the toolpath's units"),
+            );
         }
+        self.ended |= matches!(event, Event::End);
+        next
     }
 }
 
