@@ -100,7 +100,7 @@ fn expected_moves(toolpath: &Path, post: &Post) -> (Vec<Expected>, Option<Wrap>)
         let p = |x: f64, y: f64, z: f64| Wrap::apply(&wrap, [x * factor, y * factor, z * factor]);
         match event {
             Event::Job(job) => {
-                factor = job.units.factor_to(post.info.units.unwrap_or(job.units));
+                factor = job.units.factor_to(post.output_units().unwrap_or(job.units));
                 if let Some(w) = post.options.rotary_wrap {
                     // Without a wrap diameter the runtime prints the distance unwrapped (RT015).
                     let diameter = job.wrap_diameter.filter(|d| *d > 0.0);

@@ -167,6 +167,20 @@ pub fn compile(path: &Path) -> Result<Post, String> {
     compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
 }
 
+/// Runs the `postc` binary in the repository's folder.
+pub fn postc(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_postc")).current_dir(root()).args(args).output().unwrap()
+}
+
+/// What a run of `postc` printed: standard output, then standard error.
+pub fn said(o: &std::process::Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
 /// Posts a toolpath into memory: the parts of the program.
 pub fn post_parts(post: &Post, toolpath: &Path) -> Result<Vec<Vec<u8>>, String> {
     let mut sources = postc_report::source_map();
