@@ -7,9 +7,9 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-mod support;
+use crate::support;
 
-use support::{corpus, files};
+use crate::support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
     let mut sources = postc_report::source_map();

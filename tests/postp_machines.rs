@@ -4,9 +4,9 @@
 //! options files, the `postc postp DIR` and `postp DIR` command lines, and
 //! the demo CL file read back by LinuxCNC's rs274.
 
-mod support;
+use crate::support;
 
-use support::postp;
+use crate::support::postp;
 
 use std::process::Command;
 
