@@ -1429,9 +1429,11 @@ declare_codes! {
     VF003: Error, "a line longer than 64 KiB; it is skipped",
         fix = "Check the program: G-code blocks are short.";
     /// A block cannot be read: a letter without a number, a number without a letter, a parameter
-    /// or expression, an unclosed comment, or a second word of one letter.
-    VF004: Error, "a block cannot be read: a letter without a number, a number without a letter, a parameter or expression, an unclosed comment, or a second word of one letter",
-        fix = "Correct the post that wrote the block.";
+    /// or expression, an unclosed comment, or a second word of one letter. A warning when the
+    /// line is text the toolpath asked to be inserted as it is (an APT `INSERT`, a native
+    /// `Insert` event): the toolpath's text, written as asked, not a fault of the post.
+    VF004: Error | Warning, "a block cannot be read: a letter without a number, a number without a letter, a parameter or expression, an unclosed comment, or a second word of one letter (a warning for text the toolpath inserts as it is)",
+        fix = "Correct the post that wrote the block; for inserted text, make it a comment in the CAM system.";
     /// verify does not know this G code, letter or block, and ignores it; what it does on the
     /// machine is not checked.
     VF005: Warning, "a G code, letter or block verify does not know (it is ignored)",
@@ -1500,10 +1502,12 @@ declare_codes! {
     /// A cutting move comes before any feed rate is set.
     VF034: Error, "a cutting move before any feed rate is set",
         fix = "Print the feed on the first feed move (a FIRST_FEED_MOVE section, or an always-printed F).";
-    /// A cut with the spindle (or jet) off. A warning when the toolpath's tool is a jet (laser,
-    /// plasma, waterjet) and the post is a section post with no JET_TOOL_ON section: it cannot
-    /// switch a jet on at all, so it is not a jet post, and the toolpath is not one to post with it.
-    VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning for a jet toolpath through a post with no JET_TOOL_ON section)",
+    /// A cut with the spindle (or jet) off. A warning when the post cannot switch it on at all,
+    /// a property of the post rather than a fault of the run: a jet toolpath (laser, plasma,
+    /// waterjet) through a section post with no JET_TOOL_ON section (it is not a jet post), or a
+    /// spindle toolpath through a section post with no SPINDLE_ON section and no M3 or M4 in any
+    /// line (a post for a spindle switched on by hand).
+    VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning when the post cannot switch it on at all: no JET_TOOL_ON section for a jet, no SPINDLE_ON and no M3/M4 for a spindle)",
         fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section.";
     /// A rapid move the toolpath does not make goes below the toolpath's lowest rapid height,
     /// into the material.
@@ -1531,6 +1535,13 @@ declare_codes! {
     VF043: Error, "a word or block longer than the controller reads (Fanuc/Haas 8 digits, LinuxCNC 255 characters, grbl 80)",
         example = "G1 X100000000000000000000000000000000000000 F100",
         fix = "Check the toolpath's coordinates and the post's number format.";
+    /// `postc post` did not verify the program it wrote, and says why: the post writes a family
+    /// verify does not read (HPGL, ShopBot, Heidenhain conversational, by the post's or the
+    /// output's extension, or by the program's first lines), the program is binary data or text
+    /// whose first blocks do not read as G-code, or the post is a lathe or rotary-wrapped one.
+    /// A note; `--deny VF044` refuses to write a program that could not be verified.
+    VF044: Note, "`postc post` did not verify the program: verify does not read what the post writes (the note says why)",
+        fix = "Nothing to do: the program is written as posted. `--deny VF044` refuses programs that cannot be verified.";
     /// The post writes feed moves, but no section prints a feed rate, so the machine cuts at
     /// whatever feed was set before the program ran.
     LN001: Warning, "a G-code post writes feed moves but no section prints a feed rate",

@@ -192,13 +192,27 @@ impl Batch {
     /// while holding the pending list, so that a signal finds all or none
     /// of them renamed.
     pub fn commit(&self, inputs: &[&Path], sources: Option<&SourceMap>) -> Result<(), Diagnostic> {
+        self.commit_except(inputs, sources, &[])
+    }
+
+    /// [`Batch::commit`], where the files `written` of `sources` are this
+    /// command's own outputs (a program verified as it was written), not
+    /// files it read.
+    pub fn commit_except(
+        &self,
+        inputs: &[&Path],
+        sources: Option<&SourceMap>,
+        written: &[postc_ir::FileId],
+    ) -> Result<(), Diagnostic> {
         let staged = std::mem::take(&mut *self.0.borrow_mut());
         let targets: Vec<&Path> = staged.iter().map(|(_, t)| t.as_path()).collect();
         let mut read: Vec<PathBuf> = inputs.iter().map(|p| p.to_path_buf()).collect();
         if let Some(sources) = sources {
             read.extend(
-                (0..sources.len())
-                    .map(|i| PathBuf::from(sources.name(postc_ir::FileId(i as u32))))
+                (0..sources.len() as u32)
+                    .map(postc_ir::FileId)
+                    .filter(|id| !written.contains(id))
+                    .map(|id| PathBuf::from(sources.name(id)))
                     .filter(|p| p.is_file()),
             );
         }

@@ -36,10 +36,10 @@ pub struct Args {
     /// VcPost composites: run this #Primer Sub before the event file's calls (repeatable).
     #[arg(long, value_name = "NAME")]
     primer: Vec<String>,
-    /// Verify the program (the default), and print verify's summary: it is replayed while it is posted and compared with the toolpath, as `postc verify` does; a program with an error finding is not written.
+    /// Verify the program (the default) and print verify's summary line as well.
     #[arg(long, conflicts_with = "no_verify")]
     verify: bool,
-    /// Do not verify the program: write it whatever it does.
+    /// Do not verify the program while posting it: write it as posted, whatever verify would find.
     #[arg(long)]
     no_verify: bool,
     #[command(flatten)]
@@ -113,6 +113,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             primers: &args.primer,
             output: args.output.as_ref(),
             options,
+            verify: !args.no_verify,
         };
         return super::probe::run_calls(job);
     }
@@ -172,11 +173,18 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
     };
     let name = args.output.as_ref().map_or_else(|| "<standard output>".to_string(), |p| p.display().to_string());
-    let verification = match verified(&args, &post) {
-        true => {
+    let mut unverified = Vec::new();
+    let verification = match (args.no_verify, not_verified(&args, &post)) {
+        (true, _) => None,
+        (false, Some(why)) => {
+            unverified.push(why);
+            None
+        }
+        (false, None) => {
             let file = sources.add_streamed(name.clone());
             let settings = Settings::from_post(&post, Controller::Generic, 0.01);
-            let started = Verification::start(file, settings).map_err(|e| {
+            let count_lines = args.trace.is_some() && post.options.tape_splitting.is_some();
+            let started = Verification::start(file, settings, count_lines).map_err(|e| {
                 fail(
                     &mut sources,
                     Diagnostic::error(codes::IO003, format!("cannot start verifying the program: {e}"))
@@ -185,7 +193,6 @@ pub fn run(args: Args) -> Result<(), Failed> {
             })?;
             Some((started, file))
         }
-        false => None,
     };
     let out = Output::new(match &verification {
         Some((v, _)) => v.sink(program),
@@ -214,78 +221,129 @@ pub fn run(args: Args) -> Result<(), Failed> {
         Some((v, _)) => postc_runtime::run(&post, &mut v.source(&mut *source), out, options),
         None => postc_runtime::run(&post, &mut source, out, options),
     };
-    match run {
-        Ok(mut report) => {
-            rules.apply(&mut report.warnings);
-            report::eprint(&mut sources, &report.warnings);
-            if postc_ir::diagnostic::has_errors(&report.warnings) {
-                match &args.output {
-                    Some(_) => eprintln!("postc: a denied warning was reported while posting; nothing was written"),
-                    None => eprintln!("postc: a denied warning was reported while posting"),
-                }
-                return Err(Failed);
-            }
-            if let Some((v, file)) = verification {
-                let (outcome, program, bytes) = v.finish();
-                let checked = Checked { name: &name, file, to_stdout: args.output.is_none(), bytes, summary: args.verify };
-                checked.judge(outcome, &rules, &mut sources)?;
-                let tape = post.options.tape_splitting.as_ref();
-                report.output = match program.map(|p| p.finish(tape)) {
-                    Some(Ok(output)) => output,
-                    Some(Err(e)) => {
-                        report::eprint(
-                            &mut sources,
-                            &[Diagnostic::error(codes::IO003, format!("could not write the program: {e}"))],
-                        );
-                        eprintln!("postc: posting failed; no output was written");
-                        return Err(Failed);
-                    }
-                    None => Finished::Streamed,
-                };
-            }
-            if let Some(recorder) = recorder {
-                let outputs = match &report.output {
-                    Finished::Files(files) => files.clone(),
-                    _ => vec![PathBuf::from("-")],
-                };
-                recorder.finish(&sources, &post, &outputs, &batch).map_err(|d| fail(&mut sources, d))?;
-            }
-            batch.commit(&inputs, Some(&sources)).map_err(|d| fail(&mut sources, d))?;
-            if let Finished::Files(files) = &report.output
-                && files.len() > 1
-            {
-                eprintln!(
-                    "postc: wrote {} parts: {}",
-                    files.len(),
-                    files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
-                );
-            }
-            Ok(())
-        }
+    let mut report = match run {
+        Ok(report) => report,
         Err(diagnostics) => {
             report::eprint(&mut sources, &diagnostics);
             eprintln!("postc: posting failed; no output was written");
-            Err(Failed)
+            return Err(Failed);
+        }
+    };
+    rules.apply(&mut report.warnings);
+    report::eprint(&mut sources, &report.warnings);
+    if postc_ir::diagnostic::has_errors(&report.warnings) {
+        match &args.output {
+            Some(_) => eprintln!("postc: a denied warning was reported while posting; nothing was written"),
+            None => eprintln!("postc: a denied warning was reported while posting"),
+        }
+        return Err(Failed);
+    }
+    let tape = post.options.tape_splitting.as_ref();
+    let cannot_write = |sources: &mut SourceMap, e: std::io::Error| {
+        report::eprint(sources, &[Diagnostic::error(codes::IO003, format!("could not write the program: {e}"))]);
+        eprintln!("postc: posting failed; no output was written");
+        Failed
+    };
+    let mut written = Vec::new();
+    let mut held_stdout = None;
+    let mut verdict = None;
+    if let Some((v, file)) = verification {
+        let finish = v.finish();
+        written.push(file);
+        // A program for files is staged now (committed below, or dropped);
+        // standard output waits for the verdict.
+        report.output = match (finish.program, args.output.is_some()) {
+            (Some(p), true) => p.finish(tape).map_err(|e| cannot_write(&mut sources, e))?,
+            (p, _) => {
+                held_stdout = p;
+                Finished::Streamed
+            }
+        };
+        verdict = Some((finish.outcome, finish.bytes, finish.part_lines, file));
+    }
+    let trace = match recorder {
+        Some(recorder) => {
+            let outputs = match &report.output {
+                Finished::Files(files) => files.clone(),
+                _ => vec![PathBuf::from("-")],
+            };
+            Some(recorder.finish(&sources, &post, &outputs, &batch).map_err(|d| fail(&mut sources, d))?)
+        }
+        None => None,
+    };
+    if let Some((outcome, bytes, part_lines, file)) = verdict {
+        let outputs = match &report.output {
+            Finished::Files(files) => files.iter().map(|f| f.display().to_string()).collect(),
+            _ => vec!["-".to_string()],
+        };
+        let checked = Checked {
+            name: &name,
+            file,
+            to_stdout: args.output.is_none(),
+            bytes,
+            summary: args.verify,
+            trace: trace.as_deref().map(|t| (t, outputs.as_slice(), part_lines.as_slice())),
+        };
+        unverified.extend(checked.judge(outcome, &rules, &mut sources)?);
+    }
+    for why in unverified {
+        let mut note = vec![
+            Diagnostic::new(Severity::Note, codes::VF044, format!("`{name}` was not verified: {why}"))
+                .help(format!("`postc post` verifies {}", postc_verify::FAMILIES)),
+        ];
+        rules.apply(&mut note);
+        report::eprint(&mut sources, &note);
+        if postc_ir::diagnostic::has_errors(&note) {
+            eprintln!("postc: the program could not be verified and VF044 is denied; the program was not written");
+            return Err(Failed);
         }
     }
+    if let Some(p) = held_stdout {
+        p.finish(tape).map_err(|e| cannot_write(&mut sources, e))?;
+    }
+    batch.commit_except(&inputs, Some(&sources), &written).map_err(|d| fail(&mut sources, d))?;
+    if let Finished::Files(files) = &report.output
+        && files.len() > 1
+    {
+        eprintln!(
+            "postc: wrote {} parts: {}",
+            files.len(),
+            files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
+        );
+    }
+    Ok(())
 }
 
 /// Output extensions of families verify does not read.
 pub(crate) const FOREIGN_EXTENSIONS: &[(&str, &str)] =
     &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
-/// Whether `post` verifies the program: unless `--no-verify`, and unless
-/// verify cannot read it (docs/verify.md, "While posting"): a family
-/// other than G-code by the post's or the output's extension, a lathe
+/// Why `post` cannot verify what the post writes, known before it runs
+/// (docs/verify.md, "While posting"): a family other than G-code by the
+/// post's or the output's extension or by the words it prints, a lathe
 /// post, a rotary-wrapped post.
-fn verified(args: &Args, post: &postc_ir::Post) -> bool {
-    let foreign = |ext: &str| FOREIGN_EXTENSIONS.iter().any(|(e, _)| e.eq_ignore_ascii_case(ext));
+fn not_verified(args: &Args, post: &postc_ir::Post) -> Option<String> {
+    let foreign = |ext: &str| FOREIGN_EXTENSIONS.iter().find(|(e, _)| e.eq_ignore_ascii_case(ext)).map(|(_, f)| *f);
     let output_ext = args.output.as_deref().and_then(Path::extension).map(|e| e.to_string_lossy().into_owned());
-    !args.no_verify
-        && !foreign(&post.info.file_extension)
-        && !output_ext.is_some_and(|e| foreign(&e))
-        && !post.options.lathe
-        && post.options.rotary_wrap.is_none()
+    if let Some(family) = foreign(&post.info.file_extension) {
+        return Some(format!("the post writes `.{}` files, {family}, which verify does not read", post.info.file_extension));
+    }
+    if let Some((ext, family)) = output_ext.as_deref().and_then(|e| Some((e, foreign(e)?))) {
+        return Some(format!("its extension `.{ext}` is that of {family}, which verify does not read"));
+    }
+    if let Some((family, word)) = postc_verify::post_family(post) {
+        return Some(format!("the post writes {family} (`{word}`), which verify does not read"));
+    }
+    if post.options.lathe {
+        return Some(format!("`{}` is a lathe post; verify compares milling programs only", post.info.name));
+    }
+    if post.options.rotary_wrap.is_some() {
+        return Some(format!(
+            "`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs",
+            post.info.name
+        ));
+    }
+    None
 }
 
 /// A program verified while it was posted, to be judged.
@@ -296,47 +354,111 @@ struct Checked<'a> {
     bytes: u64,
     /// `--verify` was given: print verify's summary line.
     summary: bool,
+    /// The trace of the run (`--trace`), staged, with the names of the
+    /// program's parts as it gives them and the lines before each part
+    /// after the first: findings then name the post line too.
+    trace: Option<(&'a Path, &'a [String], &'a [u64])>,
 }
 
 impl Checked<'_> {
     /// Prints the findings, with the severities the rules give them; fails
-    /// when an error remains (the program is then not written).
-    fn judge(&self, outcome: Outcome, rules: &LevelRules, sources: &mut SourceMap) -> Result<(), Failed> {
-        let Outcome::Verified { report, held } = outcome else { return Ok(()) };
+    /// when an error remains (the program is then not written). Returns
+    /// why the program was not verified, when verify could not read it.
+    fn judge(&self, outcome: Outcome, rules: &LevelRules, sources: &mut SourceMap) -> Result<Option<String>, Failed> {
+        let (report, held) = match outcome {
+            Outcome::Foreign(family) => {
+                return Ok(Some(format!("its first lines are {family}, which verify does not read")));
+            }
+            Outcome::Stalled { bytes, events } => {
+                let mut stalled = vec![Diagnostic::error(
+                    codes::VF011,
+                    format!(
+                        "the post wrote nothing for {events} toolpath events in a row after the program's first {bytes} bytes: the program does not make those moves"
+                    ),
+                )
+                .help("check the post's move sections: verification stopped here")];
+                self.apply(rules, &mut stalled, None);
+                return self.verdict(&stalled, sources);
+            }
+            Outcome::Verified { report, held } => (report, held),
+        };
         // Twenty blocks that do not read before any move: text output, not
         // a G-code program verify reads (docs/verify.md).
         if report.findings.iter().any(|d| d.code == codes::VF001.code) {
-            return Ok(());
+            return Ok(Some(format!(
+                "its first {} blocks do not read as G-code and none moves the tool",
+                postc_verify::NOT_GCODE
+            )));
         }
-        let mut findings: Vec<Diagnostic> = Vec::new();
-        for (mut d, (line, line_start)) in report.findings.into_iter().zip(report.lines) {
+        if let Some(bytes) = &held
+            && !report.findings.is_empty()
+        {
+            sources.hold(self.file, String::from_utf8_lossy(bytes).into_owned());
+        }
+        let mut report = report;
+        let mut findings = std::mem::take(&mut report.findings);
+        let lines: Vec<u64> = match held {
+            // The line of each finding's primary label, as `postc verify` gives it.
+            Some(_) => findings
+                .iter()
+                .zip(&report.lines)
+                .map(|(d, (line, _))| {
+                    d.primary_span()
+                        .filter(|s| s.file == self.file)
+                        .and_then(|s| sources.line_column(s.file, s.start))
+                        .map_or(*line, |(l, _)| l as u64)
+                })
+                .collect(),
+            None => {
+                for (d, &(line, line_start)) in findings.iter_mut().zip(&report.lines) {
+                    self.locate(d, line, line_start);
+                }
+                report.lines.iter().map(|(line, _)| *line).collect()
+            }
+        };
+        if let Some((trace, outputs, part_lines)) = self.trace {
+            let wanted = lines.iter().enumerate().map(|(i, l)| (*l, i)).collect();
+            let line_of = |r: &super::trace::Record| {
+                let part = outputs.iter().position(|o| *o == r.output)?;
+                Some(part.checked_sub(1).map_or(0, |p| part_lines.get(p).copied().unwrap_or(0)) + r.line)
+            };
+            super::trace::annotate_lines(trace, wanted, &line_of, &mut findings, sources)
+                .map_err(|d| super::fail(sources, d))?;
+        }
+        self.apply(rules, &mut findings, Some(&report));
+        self.verdict(&findings, sources)
+    }
+
+    /// Gives each finding the severity the rules set for its code
+    /// (verification findings' errors included) and drops the allowed
+    /// ones; prints verify's summary line for `--verify`.
+    fn apply(&self, rules: &LevelRules, findings: &mut Vec<Diagnostic>, report: Option<&postc_verify::Report>) {
+        findings.retain_mut(|d| {
             match rules.level(d.code) {
-                Some(Level::Allow) => continue,
+                Some(Level::Allow) => return false,
                 Some(Level::Warn) => d.severity = Severity::Warning,
                 Some(Level::Deny) => d.severity = Severity::Error,
                 None => {}
             }
-            if held.is_none() {
-                self.locate(&mut d, line, line_start);
-            }
-            findings.push(d);
-        }
-        if let Some(bytes) = &held
-            && !findings.is_empty()
+            true
+        });
+        if let Some(report) = report
+            && self.summary
         {
-            sources.hold(self.file, String::from_utf8_lossy(bytes).into_owned());
-        }
-        report::eprint(sources, &findings);
-        if self.summary {
             let s = report.stats;
             eprintln!(
                 "postc verify: `{}`: {} error(s), {} warning(s); {} lines, {} moves replayed, {} of {} toolpath moves made",
                 self.name, report.errors, report.warnings, s.lines, s.motions, s.matched, s.expected
             );
         }
+    }
+
+    /// Prints the findings; fails when an error remains.
+    fn verdict(&self, findings: &[Diagnostic], sources: &mut SourceMap) -> Result<Option<String>, Failed> {
+        report::eprint(sources, findings);
         let mut denied: Vec<&str> = findings.iter().filter(|d| d.is_error()).map(|d| d.code).collect();
         if denied.is_empty() {
-            return Ok(());
+            return Ok(None);
         }
         denied.sort_unstable();
         denied.dedup();
@@ -352,7 +474,7 @@ impl Checked<'_> {
         eprintln!(
             "postc: verifying the program found errors ({}); {written}. To write it anyway, post with `--no-verify`, or let these findings through with {}",
             denied.join(", "),
-            denied.iter().map(|c| format!("`--allow {c}`")).collect::<Vec<_>>().join(" ")
+            denied.iter().map(|c| format!("`--warn {c}`")).collect::<Vec<_>>().join(" ")
         );
         Err(Failed)
     }

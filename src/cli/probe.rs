@@ -78,6 +78,8 @@ pub struct Job<'a> {
     pub primers: &'a [String],
     pub output: Option<&'a PathBuf>,
     pub options: RunOptions,
+    /// `--no-verify` was not given: the note says that the program is not verified.
+    pub verify: bool,
 }
 
 /// Runs a probe table or a composites event file through a VcPost post.
@@ -121,6 +123,19 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     match postc_runtime::calls::run_calls(&postc_frontends::for_calls(&post), &mut source, out, options) {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
+            if job.verify {
+                let what = match job.kind {
+                    JobKind::ProbeTable => "a probe table",
+                    JobKind::Composites => "a composites event file",
+                };
+                let name = job.output.map_or_else(|| "<standard output>".to_string(), |p| p.display().to_string());
+                let note = Diagnostic::new(
+                    postc_ir::Severity::Note,
+                    codes::VF044,
+                    format!("`{name}` was not verified: {what} has no toolpath moves to compare the program with"),
+                );
+                report::eprint(&mut sources, &[note]);
+            }
             let inputs: Vec<&Path> = job.post.iter().map(|p| p.as_path()).chain([job.input]).collect();
             batch.commit(&inputs, Some(&sources)).map_err(|d| fail(&mut sources, d))?;
             if let Finished::Files(files) = &report.output

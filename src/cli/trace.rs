@@ -152,14 +152,15 @@ impl Recorder {
     /// Writes the trace: each record with places for offsets, and the
     /// names of the NC files (`outputs`, one per tape-split part), into
     /// its temporary file, which joins `batch` to be committed with the
-    /// program.
+    /// program. Returns where the temporary file is, to be read before
+    /// the commit.
     pub fn finish(
         self,
         sources: &SourceMap,
         post: &Post,
         outputs: &[PathBuf],
         batch: &Batch,
-    ) -> Result<(), Diagnostic> {
+    ) -> Result<PathBuf, Diagnostic> {
         let io_error = |e: io::Error| {
             Diagnostic::error(codes::IO003, format!("cannot write the trace `{}`: {e}", self.target.display()))
         };
@@ -196,8 +197,9 @@ impl Recorder {
             }
             w.flush().map_err(io_error)?;
         }
+        let staged = self.out.path().map_err(io_error)?.to_path_buf();
         batch.stage(self.out, self.target);
-        Ok(())
+        Ok(staged)
     }
 }
 
@@ -302,9 +304,6 @@ pub fn annotate(
     findings: &mut [Diagnostic],
     sources: &mut SourceMap,
 ) -> Result<(), Diagnostic> {
-    let read_error = |e: &dyn std::fmt::Display| {
-        Diagnostic::error(codes::IO001, format!("cannot read the trace `{}`: {e}", trace.display()))
-    };
     let mut wanted: Vec<(u64, usize)> = Vec::new();
     for (i, d) in findings.iter().enumerate() {
         if let Some(span) = d.primary_span()
@@ -313,20 +312,38 @@ pub fn annotate(
             wanted.push((line as u64, i));
         }
     }
+    let name = program.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let line_of = |r: &Record| {
+        Path::new(&r.output).file_name().is_some_and(|n| n.to_string_lossy() == name).then_some(r.line)
+    };
+    annotate_lines(trace, wanted, &line_of, findings, sources)
+}
+
+/// [`annotate`] for findings at known program lines: `wanted` holds
+/// (line, index of the finding), and `line_of` gives the line of the
+/// program a trace record is about, in the same numbering (`None` for a
+/// record about another program).
+pub fn annotate_lines(
+    trace: &Path,
+    mut wanted: Vec<(u64, usize)>,
+    line_of: &dyn Fn(&Record) -> Option<u64>,
+    findings: &mut [Diagnostic],
+    sources: &mut SourceMap,
+) -> Result<(), Diagnostic> {
+    let read_error = |e: &dyn std::fmt::Display| {
+        Diagnostic::error(codes::IO001, format!("cannot read the trace `{}`: {e}", trace.display()))
+    };
     if wanted.is_empty() {
         return Ok(());
     }
     wanted.sort_unstable();
-    let name = program.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let file = File::open(trace).map_err(|e| read_error(&e))?;
     for text in BufReader::new(file).lines() {
         let text = text.map_err(|e| read_error(&e))?;
         let record: Record = serde_json::from_str(&text).map_err(|e| read_error(&e))?;
-        if Path::new(&record.output).file_name().is_none_or(|n| n.to_string_lossy() != name) {
-            continue;
-        }
-        let from = wanted.partition_point(|w| w.0 < record.line);
-        for &(_, i) in wanted[from..].iter().take_while(|w| w.0 == record.line) {
+        let Some(line) = line_of(&record) else { continue };
+        let from = wanted.partition_point(|w| w.0 < line);
+        for &(_, i) in wanted[from..].iter().take_while(|w| w.0 == line) {
             let d = &mut findings[i];
             if let Some(p) = &record.post {
                 match span_of_place(sources, p) {

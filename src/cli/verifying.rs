@@ -40,6 +40,11 @@ const BATCH: usize = 1024;
 const IN_FLIGHT: usize = 8;
 /// Programs up to this size are kept to show their lines with findings.
 pub const HOLD: usize = 16 << 20;
+/// Batches of events kept at most while the verify thread waits for
+/// program bytes: past them the post has written nothing for this many
+/// events, and verification stops ([`Outcome::Stalled`]) rather than keep
+/// the toolpath in memory.
+const STALL: usize = 64;
 
 enum Message {
     Bytes(Vec<u8>),
@@ -49,8 +54,13 @@ enum Message {
 /// What the verify thread found.
 pub enum Outcome {
     /// The program is of a family verify does not read, told by its first
-    /// bytes (HPGL, ShopBot, Heidenhain conversational), or binary data.
-    Foreign,
+    /// bytes (HPGL, ShopBot, Heidenhain conversational), or binary data:
+    /// which.
+    Foreign(&'static str),
+    /// The post wrote nothing while the toolpath went on for
+    /// [`STALL`] batches of events, after this many bytes of program:
+    /// verification stopped there.
+    Stalled { bytes: u64, events: usize },
     /// The verification's report, and the program's bytes when it is at most [`HOLD`] long.
     Verified { report: Report, held: Option<Vec<u8>> },
 }
@@ -64,6 +74,11 @@ struct Tee {
     /// The inner sink once the run finished.
     parked: Option<Box<dyn Sink>>,
     bytes: u64,
+    /// Lines are counted (for a tape-split program whose trace is kept).
+    count_lines: bool,
+    lines: u64,
+    /// The lines of the program before each tape-split part after the first.
+    part_lines: Vec<u64>,
 }
 
 impl Tee {
@@ -87,6 +102,19 @@ impl Tee {
     }
 }
 
+/// What a verification running beside a run gives when the run is over.
+pub struct Finish {
+    pub outcome: Outcome,
+    /// The program sink, whose `finish` the caller calls once the program
+    /// may be written.
+    pub program: Option<Box<dyn Sink>>,
+    /// The program's length in bytes.
+    pub bytes: u64,
+    /// The lines of the joined program before each tape-split part after
+    /// the first (counted when [`Verification::start`] was asked to).
+    pub part_lines: Vec<u64>,
+}
+
 /// A verification running beside a run of the post.
 pub struct Verification {
     tee: Rc<RefCell<Tee>>,
@@ -94,16 +122,25 @@ pub struct Verification {
 }
 
 impl Verification {
-    /// Starts the verify thread for a program whose spans are in `file`.
-    /// Without a thread the program is not verified (`None`).
-    pub fn start(file: FileId, settings: Settings) -> io::Result<Verification> {
+    /// Starts the verify thread for a program whose spans are in `file`;
+    /// `count_lines` counts the program's lines where its parts start.
+    pub fn start(file: FileId, settings: Settings, count_lines: bool) -> io::Result<Verification> {
         let (tx, rx) = sync_channel(IN_FLIGHT);
         let stop = Arc::new(AtomicBool::new(false));
         let flag = Arc::clone(&stop);
         let thread = std::thread::Builder::new()
             .name("postc-verify".into())
             .spawn(move || verify_thread(rx, file, &settings, &flag))?;
-        let tee = Tee { tx: Some(tx), events: Vec::with_capacity(BATCH), stop, parked: None, bytes: 0 };
+        let tee = Tee {
+            tx: Some(tx),
+            events: Vec::with_capacity(BATCH),
+            stop,
+            parked: None,
+            bytes: 0,
+            count_lines,
+            lines: 0,
+            part_lines: Vec::new(),
+        };
         Ok(Verification { tee: Rc::new(RefCell::new(tee)), thread: Some(thread) })
     }
 
@@ -117,22 +154,20 @@ impl Verification {
         TeeSource { inner, tee: Rc::clone(&self.tee) }
     }
 
-    /// The run has finished: waits for the verify thread. Returns its
-    /// outcome, the program sink (whose `finish` the caller calls once the
-    /// program may be written) and the bytes of the program.
-    pub fn finish(mut self) -> (Outcome, Option<Box<dyn Sink>>, u64) {
-        let (sink, bytes) = {
+    /// The run has finished: waits for the verify thread.
+    pub fn finish(mut self) -> Finish {
+        let (program, bytes, part_lines) = {
             let mut tee = self.tee.borrow_mut();
             tee.send_events();
             tee.tx = None;
-            (tee.parked.take(), tee.bytes)
+            (tee.parked.take(), tee.bytes, std::mem::take(&mut tee.part_lines))
         };
         let outcome = match self.thread.take().map(JoinHandle::join) {
             Some(Ok(outcome)) => outcome,
             Some(Err(panic)) => std::panic::resume_unwind(panic),
             None => unreachable!("the thread is joined once"),
         };
-        (outcome, sink, bytes)
+        Finish { outcome, program, bytes, part_lines }
     }
 }
 
@@ -159,6 +194,9 @@ impl Sink for TeeSink {
         }
         let mut tee = self.tee.borrow_mut();
         tee.bytes += bytes.len() as u64;
+        if tee.count_lines {
+            tee.lines += bytes.iter().filter(|&&b| b == b'\n').count() as u64;
+        }
         if tee.tx.is_some() {
             tee.send_events();
             tee.send(Message::Bytes(bytes.to_vec()));
@@ -168,6 +206,9 @@ impl Sink for TeeSink {
 
     fn new_part(&mut self) -> io::Result<()> {
         // The parts are verified as one program, as if joined.
+        let mut tee = self.tee.borrow_mut();
+        let lines = tee.lines;
+        tee.part_lines.push(lines);
         self.inner.as_mut().map_or(Ok(()), |s| s.new_part())
     }
 
@@ -213,6 +254,9 @@ struct Demux {
     bytes: VecDeque<Vec<u8>>,
     events: VecDeque<Vec<(Event, Span)>>,
     ended: bool,
+    /// The post stopped writing while events went on ([`STALL`]): bytes
+    /// are no longer kept.
+    stalled: bool,
 }
 
 impl Demux {
@@ -222,6 +266,7 @@ impl Demux {
             return false;
         }
         match self.rx.recv() {
+            Ok(Message::Bytes(_)) if self.stalled => {}
             Ok(Message::Bytes(b)) => self.bytes.push_back(b),
             Ok(Message::Events(e)) => self.events.push_back(e),
             Err(_) => self.ended = true,
@@ -235,8 +280,52 @@ struct Program {
     demux: Rc<RefCell<Demux>>,
     chunk: Vec<u8>,
     at: usize,
+    /// Bytes read so far.
+    read: u64,
     /// The bytes so far while they are at most [`HOLD`].
     held: Option<Vec<u8>>,
+}
+
+impl Program {
+    /// The next chunk the posting thread sent; `None` at the end of the
+    /// program (or once the post stalled, [`STALL`]).
+    fn next_chunk(&mut self) -> Option<Vec<u8>> {
+        let chunk = {
+            let mut demux = self.demux.borrow_mut();
+            loop {
+                if let Some(b) = demux.bytes.pop_front() {
+                    break b;
+                }
+                if demux.events.len() > STALL {
+                    demux.stalled = true;
+                }
+                if demux.stalled || !demux.receive() {
+                    return None;
+                }
+            }
+        };
+        self.read += chunk.len() as u64;
+        if let Some(held) = &mut self.held {
+            if held.len() + chunk.len() <= HOLD {
+                held.extend_from_slice(&chunk);
+            } else {
+                self.held = None;
+            }
+        }
+        Some(chunk)
+    }
+
+    /// The next `n` bytes of the program (fewer at its end), not consumed.
+    fn peek(&mut self, n: usize) -> &[u8] {
+        while self.chunk.len() - self.at < n {
+            let Some(next) = self.next_chunk() else { break };
+            self.chunk.drain(..self.at);
+            self.chunk.extend_from_slice(&next);
+            self.at = 0;
+        }
+        let end = self.chunk.len().min(self.at + n);
+        &self.chunk[self.at..end]
+    }
 }
 
 impl Read for Program {
@@ -252,24 +341,7 @@ impl Read for Program {
 impl BufRead for Program {
     fn fill_buf(&mut self) -> io::Result<&[u8]> {
         while self.at >= self.chunk.len() {
-            let mut demux = self.demux.borrow_mut();
-            let next = loop {
-                if let Some(b) = demux.bytes.pop_front() {
-                    break Some(b);
-                }
-                if !demux.receive() {
-                    break None;
-                }
-            };
-            drop(demux);
-            let Some(chunk) = next else { return Ok(&[]) };
-            if let Some(held) = &mut self.held {
-                if held.len() + chunk.len() <= HOLD {
-                    held.extend_from_slice(&chunk);
-                } else {
-                    self.held = None;
-                }
-            }
+            let Some(chunk) = self.next_chunk() else { return Ok(&[]) };
             self.chunk = chunk;
             self.at = 0;
         }
@@ -308,24 +380,35 @@ impl EventSource for Events {
 }
 
 fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop: &AtomicBool) -> Outcome {
-    let demux = Rc::new(RefCell::new(Demux { rx, bytes: VecDeque::new(), events: VecDeque::new(), ended: false }));
-    let mut program = Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, held: Some(Vec::new()) };
-    let mut head = Vec::with_capacity(4096);
-    // Reading from the channel cannot fail.
-    let _ = program.by_ref().take(4096).read_to_end(&mut head);
-    if postc_verify::foreign_family(&head).is_some() || postc_verify::looks_binary(&head) {
+    let demux = Rc::new(RefCell::new(Demux {
+        rx,
+        bytes: VecDeque::new(),
+        events: VecDeque::new(),
+        ended: false,
+        stalled: false,
+    }));
+    let mut program =
+        Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, read: 0, held: Some(Vec::new()) };
+    let head = program.peek(4096);
+    let family = match postc_verify::looks_binary(head) {
+        true => Some("binary data"),
+        false => postc_verify::foreign_family(head),
+    };
+    if let Some(family) = family {
         stop.store(true, Ordering::Relaxed);
         let mut demux = demux.borrow_mut();
         while demux.receive() {
             demux.bytes.clear();
             demux.events.clear();
         }
-        return Outcome::Foreign;
+        return Outcome::Foreign(family);
     }
     let mut events = Events { demux: Rc::clone(&demux), batch: Vec::new().into_iter() };
-    let mut reader = io::Cursor::new(head).chain(&mut program);
-    let report = postc_verify::verify(&mut reader, file, &mut events, settings);
+    let report = postc_verify::verify(&mut program, file, &mut events, settings);
     // Whatever verify left unread (nothing, as it reads both to their end).
     while demux.borrow_mut().receive() {}
+    if demux.borrow().stalled {
+        return Outcome::Stalled { bytes: program.read, events: STALL * BATCH };
+    }
     Outcome::Verified { report, held: program.held.take() }
 }

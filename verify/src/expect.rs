@@ -63,6 +63,9 @@ pub struct ExpectedPath<'a> {
     spindle: bool,
     jet: bool,
     cycle: Option<DrillCycle>,
+    /// The lines of the toolpath's latest inserts (text it asks to be
+    /// written as it is), not yet found in the program; at most [`INSERTS`].
+    inserts: VecDeque<String>,
     pub job: JobData,
     /// The lowest Z a toolpath rapid has ended at so far (mm).
     pub min_rapid_z: f64,
@@ -78,6 +81,9 @@ pub struct ExpectedPath<'a> {
 /// How many moves the window holds at most before the program side must consume some.
 pub const WINDOW: usize = 512;
 
+/// Insert lines kept at most while they wait to be found in the program.
+const INSERTS: usize = 64;
+
 impl<'a> ExpectedPath<'a> {
     pub fn new(source: &'a mut dyn EventSource) -> ExpectedPath<'a> {
         ExpectedPath {
@@ -92,6 +98,7 @@ impl<'a> ExpectedPath<'a> {
             spindle: false,
             jet: false,
             cycle: None,
+            inserts: VecDeque::new(),
             job: JobData::default(),
             min_rapid_z: f64::INFINITY,
             max_rapid_z: f64::NEG_INFINITY,
@@ -139,6 +146,22 @@ impl<'a> ExpectedPath<'a> {
     pub fn is_done(&mut self) -> bool {
         self.fill(1);
         self.window.is_empty()
+    }
+
+    /// Whether `line` (a block that does not read as G-code) holds a line of
+    /// text the toolpath asked to be inserted as it is: the toolpath's text,
+    /// not the post's. Reads ahead to the next move for an insert not yet
+    /// read; a line found is forgotten.
+    pub fn inserted(&mut self, line: &[u8]) -> bool {
+        self.fill(self.window.len() + 1);
+        let line = String::from_utf8_lossy(line);
+        match self.inserts.iter().position(|t| line.contains(t.as_str())) {
+            Some(i) => {
+                self.inserts.remove(i);
+                true
+            }
+            None => false,
+        }
     }
 
     fn powered(&self) -> bool {
@@ -195,8 +218,9 @@ impl<'a> ExpectedPath<'a> {
                 self.cut_feed = tool.cut_feed * f;
                 self.plunge_feed = tool.plunge_feed * f;
                 self.jet_tool = tool.jet;
-                // The runtime starts a spindle tool's spindle after the header and each tool change.
-                self.spindle = !tool.jet;
+                // The runtime starts a spindle tool's spindle after the header and
+                // each tool change, when the toolpath gives it a speed.
+                self.spindle = !tool.jet && tool.spindle_speed > 0.0;
                 self.jet = false;
             }
             Event::SpindleOn(_) => self.spindle = true,
@@ -236,6 +260,14 @@ impl<'a> ExpectedPath<'a> {
                 let end = [a.x * f, a.y * f, a.z * f];
                 let centre = [a.cx * f, a.cy * f, a.cz * f];
                 self.push(Kind::Arc, end, centre, a.dir, a.plane, a.intent, feed, span)
+            }
+            Event::Insert(t) => {
+                for line in t.text.lines().map(str::trim).filter(|l| !l.is_empty()) {
+                    if self.inserts.len() == INSERTS {
+                        self.inserts.pop_front();
+                    }
+                    self.inserts.push_back(line.to_string());
+                }
             }
             Event::DrillCycle(c) => self.cycle = Some(c),
             Event::DrillEnd => self.cycle = None,

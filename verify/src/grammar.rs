@@ -62,7 +62,50 @@ fn push<'s, 'b>(
 }
 
 /// Reads a number at the start of `s`: bytes used, value, decimals.
+///
+/// Numbers of at most 18 digits (all a post prints) are read in two tight
+/// loops, integer part and fraction; longer ones by [`scan_long`].
+#[inline(always)]
 pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
+    let (negative, start) = match s.first() {
+        Some(b'-') => (true, 1),
+        Some(b'+') => (false, 1),
+        _ => (false, 0),
+    };
+    let digit = |i: usize| s.get(i).map(|b| b.wrapping_sub(b'0')).filter(|d| *d < 10);
+    let (mut i, mut mantissa) = (start, 0u64);
+    while let Some(d) = digit(i) {
+        mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d));
+        i += 1;
+    }
+    let integer = i - start;
+    let mut written = 0;
+    // The decimal comma some European controls print (`X10,000`).
+    if let Some(&b) = s.get(i)
+        && (b == b'.' || (b == b',' && digit(i + 1).is_some()))
+    {
+        i += 1;
+        let fraction = i;
+        while let Some(d) = digit(i) {
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d));
+            i += 1;
+        }
+        written = i - fraction;
+    }
+    if integer + written == 0 {
+        return None;
+    }
+    if integer + written > 18 {
+        return scan_long(s);
+    }
+    let value = mantissa as f64 / pow10(written as u32);
+    Some((i, if negative { -value } else { value }, written as u8))
+}
+
+/// [`scan_number`] for numbers of more than 18 digits: the first 18
+/// significant digits make the value (the rest of a fraction is dropped),
+/// and more than 18 integer digits go to the standard library.
+fn scan_long(s: &[u8]) -> Option<(usize, f64, u8)> {
     let mut i = 0;
     let negative = match s.first() {
         Some(b'-') => {
@@ -75,33 +118,30 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
         }
         _ => false,
     };
-    let (mut mantissa, mut digits, mut decimals, mut point) = (0u64, 0u32, 0u32, false);
+    let (mut mantissa, mut digits, mut decimals, mut written) = (0u64, 0u32, 0u32, 0u32);
+    let (mut point, mut any) = (false, false);
     while let Some(&b) = s.get(i) {
-        match b {
-            b'0'..=b'9' => {
-                if digits < 18 {
-                    mantissa = mantissa * 10 + u64::from(b - b'0');
-                    if mantissa > 0 {
-                        digits += 1;
-                    }
-                    if point {
-                        decimals += 1;
-                    }
-                } else if !point {
-                    return slow(s);
-                }
+        let d = b.wrapping_sub(b'0');
+        if d < 10 {
+            any = true;
+            written += u32::from(point);
+            if digits < 18 {
+                mantissa = mantissa * 10 + u64::from(d);
+                digits += u32::from(mantissa > 0);
+                decimals += u32::from(point);
+            } else if !point {
+                return slow(s);
             }
-            // The decimal comma some European controls print (`X10,000`).
-            b'.' | b',' if !point && (b == b'.' || s.get(i + 1).is_some_and(u8::is_ascii_digit)) => point = true,
-            _ => break,
+        } else if !point && (b == b'.' || (b == b',' && s.get(i + 1).is_some_and(u8::is_ascii_digit))) {
+            point = true;
+        } else {
+            break;
         }
         i += 1;
     }
-    let body = &s[usize::from(negative || s.first() == Some(&b'+'))..i];
-    if !body.iter().any(u8::is_ascii_digit) {
+    if !any {
         return None;
     }
-    let written = body.iter().position(|&b| b == b'.' || b == b',').map_or(0, |p| body.len() - p - 1);
     let value = mantissa as f64 / pow10(decimals);
     Some((i, if negative { -value } else { value }, written.min(255) as u8))
 }
@@ -242,8 +282,15 @@ pub fn parse(text: &[u8], items: &mut Items) -> Result<(), usize> {
     }
 }
 
+/// [`plain`] into `items`, cleared first: true when the line is plain.
+pub fn parse_plain(text: &[u8], items: &mut Items) -> bool {
+    items.0.clear();
+    plain(text, &mut items.0)
+}
+
 /// The grammar's items for a line of words (`G1 y2.`), blanks, `( )`
-/// comments without nested parentheses and a closing `;` comment; false
+/// comments without nested parentheses or NUL bytes and a closing `;`
+/// comment without NUL bytes; false
 /// for anything else (block delete, `%`, `:`, nested or open comments,
 /// anything that does not read), which the chumsky grammar then reads.
 fn plain(text: &[u8], items: &mut Vec<Item>) -> bool {
@@ -270,13 +317,16 @@ fn plain(text: &[u8], items: &mut Vec<Item>) -> bool {
             });
         } else if b == b'(' {
             let Some(n) = text[i + 1..].iter().position(|&c| c == b'(' || c == b')') else { return false };
-            if text[i + 1 + n] != b')' {
+            if text[i + 1 + n] != b')' || text[i + 1..i + 1 + n].contains(&0) {
                 return false;
             }
             let end = i + n + 2;
             items.push(Item { kind: ItemKind::Comment, start: i as u32, end: end as u32, value: 0.0, decimals: 0 });
             i = end;
         } else if b == b';' {
+            if text[i..].contains(&0) {
+                return false;
+            }
             let end = text.len();
             items.push(Item { kind: ItemKind::Comment, start: i as u32, end: end as u32, value: 0.0, decimals: 0 });
             i = end;
@@ -370,6 +420,14 @@ mod tests {
             if plain(text.as_bytes(), &mut plain_items) {
                 proptest::prop_assert_eq!(Ok(plain_items), by_grammar(text.as_bytes()), "{:?}", text);
             }
+        }
+
+        /// The two-loop number scan reads every number as the digit-by-digit one does.
+        #[test]
+        fn the_fast_number_scan_reads_as_the_long_one(text in "[-+]?[0-9]{0,22}([.,][0-9]{0,22})?[.,X0-9]?") {
+            let fast = scan_number(text.as_bytes());
+            let long = scan_long(text.as_bytes());
+            proptest::prop_assert_eq!(fast.map(|(n, v, d)| (n, v.to_bits(), d)), long.map(|(n, v, d)| (n, v.to_bits(), d)), "{:?}", text);
         }
     }
 

@@ -29,7 +29,7 @@ use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
 /// Longest line read; the rest of a longer line is skipped with a finding.
 const MAX_LINE: usize = 64 * 1024;
 /// Unreadable blocks before the first move after which a program is taken for another language.
-const NOT_GCODE: u32 = 20;
+pub const NOT_GCODE: u32 = 20;
 /// How many expected moves one program move may cover or skip.
 const LOOKAHEAD: usize = 64;
 
@@ -157,6 +157,8 @@ struct Run<'a> {
     /// The line's bytes before its line feed, carriage returns included
     /// (LinuxCNC counts them).
     line_bytes: usize,
+    /// Bytes of the program read before the current line.
+    offset: usize,
     // Modal state.
     unit: f64,
     units_stated: bool,
@@ -212,6 +214,7 @@ pub fn run(
         line_start: 0,
         line_len: 0,
         line_bytes: 0,
+        offset: 0,
         unit: settings.units.map_or(1.0, |u| u.mm_per_unit()),
         units_stated: false,
         units_reported: false,
@@ -244,59 +247,40 @@ pub fn run(
     run.path.start();
     let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
     let mut buf: Vec<u8> = Vec::with_capacity(256);
-    let mut offset = 0usize;
     loop {
+        // A line whole in the reader's buffer is read where it is; one across
+        // two buffers, or longer than MAX_LINE, is gathered into `buf`.
+        let avail = match program.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => {
+                run.read_error(&e);
+                break;
+            }
+        };
+        if avail.is_empty() {
+            break;
+        }
+        if let Some(i) = memchr::arch::all::memchr::One::new(b'\n').find(avail).filter(|&i| i < MAX_LINE) {
+            run.one_line(&avail[..i], i + 1, false, &mut items, &mut block);
+            program.consume(i + 1);
+            continue;
+        }
         buf.clear();
         let (consumed, overlong) = match read_line(program, &mut buf) {
             Ok(r) => r,
             Err(e) => {
-                run.line_start = offset;
-                run.line_len = 0;
-                let d = Diagnostic::error(codes::VF002, format!("cannot read the program: {e}"));
-                run.push(d, true);
+                run.read_error(&e);
                 break;
             }
         };
         if consumed == 0 {
             break;
         }
-        run.line_start = offset;
-        offset += consumed;
-        run.stats.lines += 1;
         if buf.last() == Some(&b'\n') {
             buf.pop();
         }
-        run.line_bytes = buf.len();
-        while matches!(buf.last(), Some(b'\n' | b'\r')) {
-            buf.pop();
-        }
-        run.line_len = buf.len();
-        if overlong {
-            run.finding(
-                Severity::Error,
-                codes::VF003.code,
-                format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024),
-                0,
-                1,
-                None,
-            );
-            continue;
-        }
-        if run.stopped {
-            continue;
-        }
-        if buf.contains(&0) {
-            run.finding(
-                Severity::Error,
-                codes::VF002.code,
-                "this line holds binary data (NUL bytes), not G-code",
-                0,
-                1,
-                None,
-            );
-            continue;
-        }
-        run.line(&buf, &mut items, &mut block);
+        run.one_line(&buf, consumed, overlong, &mut items, &mut block);
     }
     run.finish();
     let mut stats = run.stats;
@@ -430,6 +414,49 @@ impl Run<'_> {
         self.push(d, severity == Severity::Error);
     }
 
+    /// The program cannot be read on from here.
+    fn read_error(&mut self, e: &std::io::Error) {
+        self.line_start = self.offset;
+        self.line_len = 0;
+        let d = Diagnostic::error(codes::VF002, format!("cannot read the program: {e}"));
+        self.push(d, true);
+    }
+
+    /// One line of the program, without its `\n`; `consumed` is its length
+    /// in the program, `\n` included.
+    fn one_line(&mut self, line: &[u8], consumed: usize, overlong: bool, items: &mut Items, block: &mut Block) {
+        self.line_start = self.offset;
+        self.offset += consumed;
+        self.stats.lines += 1;
+        self.line_bytes = line.len();
+        let mut line = line;
+        while let [rest @ .., b'\n' | b'\r'] = line {
+            line = rest;
+        }
+        self.line_len = line.len();
+        if overlong {
+            self.finding(
+                Severity::Error,
+                codes::VF003.code,
+                format!("this line is longer than {} KiB; verify skipped it", MAX_LINE / 1024),
+                0,
+                1,
+                None,
+            );
+            return;
+        }
+        if self.stopped {
+            return;
+        }
+        // A plain line (words, blanks, simple comments) holds no NUL byte.
+        let plain = grammar::parse_plain(line, items);
+        if !plain && line.contains(&0) {
+            self.finding(Severity::Error, codes::VF002.code, "this line holds binary data (NUL bytes), not G-code", 0, 1, None);
+            return;
+        }
+        self.line(line, items, block, plain);
+    }
+
     // ----- tolerances -----
 
     fn tol(&mut self) -> f64 {
@@ -446,19 +473,34 @@ impl Run<'_> {
 
     // ----- blocks -----
 
-    fn line(&mut self, text: &[u8], items: &mut Items, block: &mut Block) {
+    /// A block; `plain`: `items` already holds the items of all of `text`.
+    fn line(&mut self, text: &[u8], items: &mut Items, block: &mut Block, plain: bool) {
         // Marlin's M117/M118 show the rest of the line as a message.
         let (text, message) = match message_word(text) {
             Some(k) => (&text[..k], Some(k)),
             None => (text, None),
         };
-        let mut parsed = grammar::parse(text, items);
+        let mut parsed = if plain && message.is_none() { Ok(()) } else { grammar::parse(text, items) };
         // Marlin's M0/M1 take a message too: `M0 Load the 6 mm end mill`.
         if let Err(at) = parsed
             && message.is_none()
             && let Some(k) = stop_with_message(&text[..at.min(text.len())])
         {
             parsed = grammar::parse(&text[..k], items);
+        }
+        if parsed.is_err() && self.path.inserted(text) {
+            // The toolpath's own text, written as it asked: not a fault of
+            // the post, but a controller may stop at it.
+            let d = self.finding(
+                Severity::Warning,
+                codes::VF004.code,
+                "this line is text the toolpath inserts as it is, and it does not read as G-code",
+                0,
+                text.len(),
+                None,
+            );
+            Self::help(d, "a controller may stop at it: make it a comment in the CAM system, if it is not meant for the controller");
+            return;
         }
         if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
@@ -1177,8 +1219,8 @@ impl Run<'_> {
             p.centre[2] = 0.0;
         }
         // Moves that flattening made zero-length (straight plunges) are made where the program is.
-        while let Some(e) = self.expected(0, flat)
-            && flat
+        while flat
+            && let Some(e) = self.expected(0, flat)
             && e.kind != Kind::Arc
             && dist(e.start, e.end) <= 1e-9
         {
@@ -1425,28 +1467,29 @@ impl Run<'_> {
     }
 
     fn check_feed_and_spindle(&mut self, p: &Motion, e: &Expected) {
-        if e.powered && !self.spindle && !self.spindle_reported && e.jet && !self.settings.jet_on {
-            self.spindle_reported = true;
-            let post = self.settings.post.as_deref().unwrap_or("the post");
-            self.motion_finding(
-                Severity::Warning,
-                codes::VF035.code,
-                format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
-                p,
-                Some(e),
-                Some("post jet toolpaths (laser, plasma, waterjet) with a post that has a JET_TOOL_ON section".into()),
-            );
-        }
         if e.powered && !self.spindle && !self.spindle_reported {
             self.spindle_reported = true;
-            self.motion_finding(
-                Severity::Error,
-                codes::VF035.code,
-                "a cut with the spindle (or jet) off",
-                p,
-                Some(e),
-                Some("the spindle must run (M3/M4; jets: M3/M4, M106, M62/M64) before the first cut".into()),
-            );
+            let post = self.settings.post.as_deref().unwrap_or("the post");
+            // A post that cannot switch it on at all is one for a spindle
+            // started by hand (or not a jet post): a property of the post.
+            let (severity, message, help) = match e.jet {
+                true if !self.settings.jet_on => (
+                    Severity::Warning,
+                    format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
+                    "post jet toolpaths (laser, plasma, waterjet) with a post that has a JET_TOOL_ON section",
+                ),
+                false if !self.settings.spindle_on => (
+                    Severity::Warning,
+                    format!("a cut with the spindle off: {post} never prints M3 or M4, so the spindle must be started by hand"),
+                    "start the spindle by hand before the first cut, or post with a post that starts it",
+                ),
+                _ => (
+                    Severity::Error,
+                    "a cut with the spindle (or jet) off".to_string(),
+                    "the spindle must run (M3/M4; jets: M3/M4, M106, M62/M64) before the first cut",
+                ),
+            };
+            self.motion_finding(severity, codes::VF035.code, message, p, Some(e), Some(help.into()));
         }
         if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
             return;
@@ -1634,15 +1677,19 @@ fn counted_length(text: &[u8]) -> usize {
 
 /// Where the message of an `M117`/`M118` word starts (after the word).
 fn message_word(text: &[u8]) -> Option<usize> {
-    (0..text.len()).find_map(|i| {
-        if !text[i].eq_ignore_ascii_case(&b'M') {
-            return None;
-        }
+    let m = memchr::arch::all::memchr::Two::new(b'M', b'm');
+    let mut from = 0;
+    while let Some(k) = text.get(from..).and_then(|rest| m.find(rest)) {
+        let i = from + k;
         let boundary = i == 0 || !text[i - 1].is_ascii_alphanumeric();
         let word = text.get(i + 1..i + 4).is_some_and(|d| d == b"117" || d == b"118");
         let after = text.get(i + 4).is_none_or(|b| !b.is_ascii_digit() && *b != b'.');
-        (boundary && word && after).then_some(i + 4)
-    })
+        if boundary && word && after {
+            return Some(i + 4);
+        }
+        from = i + 1;
+    }
+    None
 }
 
 /// When a block that failed to read has an `M0`/`M1` word (followed by a

@@ -24,7 +24,7 @@ use std::io::BufRead;
 use postc_ir::post::{Dispatch, Section};
 use postc_ir::{Diagnostic, EventSource, FileId, Post, Quantity, Units, ValueSource};
 
-pub use interp::Stats;
+pub use interp::{NOT_GCODE, Stats};
 
 /// The controller a program is checked for: its arc radius limit, block
 /// number maximum and the comment characters it accepts.
@@ -137,6 +137,11 @@ pub struct Settings {
     /// JET_TOOL_ON section, whose jet cuts VF035 then reports as warnings
     /// (a property of the post: it is not a jet post).
     pub jet_on: bool,
+    /// The post can start a spindle: false for a section post with no
+    /// SPINDLE_ON section and no M3 or M4 in any line it prints (a post for
+    /// a spindle switched on by hand), whose cuts VF035 then reports as
+    /// warnings.
+    pub spindle_on: bool,
     /// The post's name, for messages.
     pub post: Option<String>,
 }
@@ -154,6 +159,7 @@ impl Default for Settings {
             feed_multiplier: 1.0,
             rotary_wrap: false,
             jet_on: true,
+            spindle_on: true,
             post: None,
         }
     }
@@ -190,6 +196,9 @@ impl Settings {
             feed_multiplier,
             rotary_wrap: post.options.rotary_wrap.is_some(),
             jet_on: post.info.dispatch != Dispatch::Sections || post.section(Section::JetToolOn).is_some(),
+            spindle_on: post.info.dispatch != Dispatch::Sections
+                || post.section(Section::SpindleOn).is_some()
+                || prints_spindle_start(post),
             post: Some(post.info.name.clone()),
         }
     }
@@ -227,8 +236,67 @@ pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
         if upper.starts_with('&') || upper == "SA" {
             return Some("ShopBot");
         }
+        if sinumerik_word(&upper).is_some() {
+            return Some(SINUMERIK);
+        }
     }
     None
+}
+
+const SINUMERIK: &str = "Siemens Sinumerik";
+
+/// A word of Siemens Sinumerik's language that ISO G-code does not have,
+/// in upper-case `text`: `SUPA`, `MCALL`, `DIAMON`/`DIAMOF`/`DIAM90`, or a
+/// cycle call `CYCLE81(`.
+fn sinumerik_word(text: &str) -> Option<&'static str> {
+    const WORDS: [&str; 5] = ["SUPA", "MCALL", "DIAMON", "DIAMOF", "DIAM90"];
+    let b = text.as_bytes();
+    let alone = |i: usize, len: usize| {
+        (i == 0 || !b[i - 1].is_ascii_alphanumeric()) && b.get(i + len).is_none_or(|c| !c.is_ascii_alphanumeric())
+    };
+    for w in WORDS {
+        if text.match_indices(w).any(|(i, _)| alone(i, w.len())) {
+            return Some(w);
+        }
+    }
+    text.match_indices("CYCLE").find_map(|(i, _)| {
+        let digits = b[i + 5..].iter().take_while(|c| c.is_ascii_digit()).count();
+        (digits > 0 && (i == 0 || !b[i - 1].is_ascii_alphanumeric()) && b.get(i + 5 + digits) == Some(&b'('))
+            .then_some("CYCLE")
+    })
+}
+
+/// The family of the programs a post writes, when its text shows one verify
+/// does not read (Siemens Sinumerik words in the text it prints), and the
+/// word that shows it.
+pub fn post_family(post: &Post) -> Option<(&'static str, &'static str)> {
+    use postc_ir::code::{Expr, Piece};
+    use postc_ir::visit::{Visit, walk_expr, walk_piece};
+    struct Finds(Option<&'static str>);
+    impl Finds {
+        fn text(&mut self, bytes: &[u8]) {
+            if self.0.is_none() {
+                self.0 = sinumerik_word(&String::from_utf8_lossy(bytes).to_ascii_uppercase());
+            }
+        }
+    }
+    impl Visit for Finds {
+        fn visit_piece(&mut self, piece: &Piece) {
+            if let Piece::Text(bytes) = piece {
+                self.text(bytes);
+            }
+            walk_piece(self, piece);
+        }
+        fn visit_expr(&mut self, expr: &Expr) {
+            if let Expr::Text(t) = expr {
+                self.text(t.as_bytes());
+            }
+            walk_expr(self, expr);
+        }
+    }
+    let mut finds = Finds(None);
+    finds.visit_post(post);
+    finds.0.map(|w| (SINUMERIK, w))
 }
 
 /// Whether the head of a file looks binary (NUL bytes or mostly control bytes).
@@ -236,6 +304,32 @@ pub fn looks_binary(head: &[u8]) -> bool {
     let head = &head[..head.len().min(4096)];
     let control = head.iter().filter(|&&b| b < 32 && !matches!(b, b'\n' | b'\r' | b'\t' | 12)).count();
     head.contains(&0) || control * 10 > head.len()
+}
+
+/// Whether any line of the post prints an M3 or M4 word (`M3`, `M03`,
+/// `M4`, `M04`, not followed by a digit) in its literal text.
+fn prints_spindle_start(post: &Post) -> bool {
+    use postc_ir::code::Piece;
+    use postc_ir::visit::{Visit, walk_piece};
+    struct Finds(bool);
+    impl Visit for Finds {
+        fn visit_piece(&mut self, piece: &Piece) {
+            if let Piece::Text(bytes) = piece {
+                self.0 |= (0..bytes.len()).any(|i| {
+                    let after_m = &bytes[i + 1..];
+                    let digits = after_m.iter().take_while(|b| b.is_ascii_digit()).count();
+                    let number = &after_m[..digits];
+                    bytes[i].eq_ignore_ascii_case(&b'M')
+                        && (i == 0 || !bytes[i - 1].is_ascii_alphabetic())
+                        && matches!(number, b"3" | b"03" | b"4" | b"04")
+                });
+            }
+            walk_piece(self, piece);
+        }
+    }
+    let mut finds = Finds(false);
+    finds.visit_post(post);
+    finds.0
 }
 
 /// What a verification found.
@@ -340,5 +434,8 @@ mod family_tests {
         // Decimal commas are G-code too.
         assert_eq!(foreign_family(b"%\nG90G17G71\nG00X10,000Y10,000\nX5,000Y2,5\n"), None);
         assert_eq!(foreign_family(b"G21 G90\nG0 X1 Y2\n"), None);
+        assert_eq!(foreign_family(b"N10 G17 G90 G71\nN20 MCALL CYCLE81(10, 0, 2, -3, )\n"), Some("Siemens Sinumerik"));
+        assert_eq!(foreign_family(b"N430 G0 SUPA Z0\n"), Some("Siemens Sinumerik"));
+        assert_eq!(foreign_family(b"G0 X1 (SUPAX MCALLS CYCLE81)\n"), None);
     }
 }
