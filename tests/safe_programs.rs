@@ -80,12 +80,19 @@ fn the_header_waits_for_the_first_tool_of_a_cl_file() {
         return;
     }
     let carvera = shared("vectric/MakeraInc__CarveraProfiles/Carvera ATC (mm) (!.cnc).pp");
+    // The Carvera's tool change goes home with `G0[ZH]`, which this job (no
+    // home) leaves out (RT033): verify finds M6 with the tool down (VF038).
+    // The Carvera's own M6 macro raises Z, a property of the machine the
+    // user states by lowering the finding.
+    let warn = [Path::new("--warn"), Path::new("VF038")];
     for (post, tool, spindle) in [(None, "T1 M6", "S12000 M3"), (Some(carvera.as_path()), "T1M6", "S12000M3")] {
         let out = match post {
-            Some(p) => postc(&[p, &boss]),
+            Some(p) => postc(&[p, &boss, warn[0], warn[1]]),
             None => postc(&[&boss]),
         };
         assert!(out.status.success(), "{}", text(&out.stderr));
+        // The CL file's INSERTs do not read as G-code: warnings, as the toolpath's own text.
+        assert!(text(&out.stderr).contains("warning[VF004]: this line is text the toolpath inserts"));
         let program = text(&out.stdout);
         let first_move = program.lines().position(|l| l.starts_with("G0X")).expect("a move");
         let head: Vec<&str> = program.lines().take(first_move).collect();
@@ -113,11 +120,18 @@ fn a_letter_printed_with_no_value_is_a_warning_at_its_line() {
         "Job(units: Mm, home: (x: 0.0, y: 0.0, z: 20.0))\nToolpathStart()\nRapid(x: 1.0, y: 2.0, z: 5.0)\nEnd\n",
     )
     .unwrap();
-    let out = postc(&[&post, &job]);
+    let out = postc(&[&post, &job, Path::new("--no-verify")]);
     let stderr = text(&out.stderr);
     assert!(out.status.success(), "{stderr}");
     assert!(stderr.contains("warning[RT034]") && stderr.contains("address `T`"), "{stderr}");
     assert!(stderr.contains("t.pp:5:1"), "the warning names the post line: {stderr}");
+    // Verified, as by default, the program (`G0 ZZ20.000 T`) is refused:
+    // the warning is still printed at the post's line.
+    let out = postc(&[&post, &job]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[VF004]") && stderr.contains("t.pp:5:1"), "{stderr}");
+    assert!(out.stdout.is_empty());
 }
 
 #[test]

@@ -1,5 +1,6 @@
-//! The `postc verify` command line and `postc post --verify`: exit status,
-//! human and JSON findings, refusal of other output families.
+//! The `postc verify` command line, and `postc post` verifying what it
+//! writes (by default; `--no-verify`): exit status, human and JSON
+//! findings, severities the user sets, refusal of other output families.
 
 use std::path::PathBuf;
 
@@ -94,38 +95,260 @@ fn binary_and_missing_programs_are_clear_errors() {
     assert!(text(&o).contains("IO001"), "{}", text(&o));
 }
 
+/// A drilling fault: the canned cycle of `fanuc_mill.js` with its Z and R
+/// words swapped, so each hole is drilled to the R plane and the tool
+/// rapids down to the hole's bottom. `postc post` verifies the program it
+/// writes by default, finds the rapids into the material (VF012, VF037)
+/// and writes nothing.
+fn drilling_fault(dir: &std::path::Path) -> PathBuf {
+    let post = std::fs::read_to_string(root().join("corpus/posts/cimco/fanuc_mill.js")).unwrap();
+    let right = r#"+ " Z" + xyzFormat.format(holeBottom()) + " R" + xyzFormat.format(rPlane());"#;
+    let swapped = r#"+ " Z" + xyzFormat.format(rPlane()) + " R" + xyzFormat.format(holeBottom());"#;
+    assert!(post.contains(right), "the cycle block of fanuc_mill.js changed");
+    let path = dir.join("swapped_zr.js");
+    std::fs::write(&path, post.replace(right, swapped)).unwrap();
+    path
+}
+
+const DRILL: &str = "corpus/toolpaths/cimco/drill.ron";
+
+fn errors_of(o: &std::process::Output) -> Vec<String> {
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    let mut codes: Vec<String> = stderr
+        .lines()
+        .filter_map(|l| l.strip_prefix("error["))
+        .filter_map(|l| l.split(']').next())
+        .map(String::from)
+        .collect();
+    codes.sort();
+    codes.dedup();
+    codes
+}
+
 #[test]
-fn post_with_verify_checks_what_it_wrote() {
+fn post_verifies_by_default_and_writes_nothing_when_verify_finds_an_error() {
     let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("out.ngc");
+    let post = drilling_fault(dir.path());
+    let out = dir.path().join("holes.nc");
+    let (post, out_s) = (post.to_str().unwrap(), out.to_str().unwrap());
+    // The unmodified post verifies clean: nothing printed, the file written.
+    let o = postc(&["post", "corpus/posts/cimco/fanuc_mill.js", DRILL, "-o", out_s]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(!text(&o).contains("VF"), "{}", text(&o));
+    assert!(out.is_file());
+    std::fs::write(&out, "before").unwrap();
+
+    let o = postc(&["post", post, DRILL, "-o", out_s]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert_eq!(errors_of(&o), ["VF012", "VF037"], "{}", text(&o));
+    assert!(text(&o).contains("the program was not written"), "{}", text(&o));
+    assert!(text(&o).contains("--no-verify"), "{}", text(&o));
+    assert_eq!(std::fs::read(&out).unwrap(), b"before", "the file there before is left as it was");
+    // The findings name the program's lines.
+    assert!(text(&o).contains("holes.nc:"), "{}", text(&o));
+    // To standard output: nothing at all.
+    let o = postc(&["post", post, DRILL]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert!(o.stdout.is_empty());
+    assert!(text(&o).contains("<standard output>:"), "{}", text(&o));
+}
+
+#[test]
+fn no_verify_writes_the_program_and_warn_lowers_the_findings() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = drilling_fault(dir.path());
+    let out = dir.path().join("holes.nc");
+    let (post, out_s) = (post.to_str().unwrap(), out.to_str().unwrap());
+    let o = postc(&["post", post, DRILL, "-o", out_s, "--no-verify"]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(!text(&o).contains("VF"), "{}", text(&o));
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(written.contains("G98 G81"), "{written}");
+    // `postc verify` finds in it what `postc post` found.
+    let v = postc(&["verify", out_s, "--toolpath", DRILL, "--post", post]);
+    assert_eq!(v.status.code(), Some(1));
+    assert_eq!(errors_of(&v), ["VF012", "VF037"], "{}", text(&v));
+    std::fs::remove_file(&out).unwrap();
+
+    // --warn lowers the findings to warnings: printed, and the program written.
+    let o = postc(&["post", post, DRILL, "-o", out_s, "--warn", "VF012", "--warn", "VF037"]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("warning[VF012]") && text(&o).contains("warning[VF037]"), "{}", text(&o));
+    assert!(out.is_file());
+    std::fs::remove_file(&out).unwrap();
+    // One lowered, the other still an error.
+    let o = postc(&["post", post, DRILL, "-o", out_s, "--warn", "VF012"]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert_eq!(errors_of(&o), ["VF037"], "{}", text(&o));
+    assert!(!out.exists());
+    // --allow hides them.
+    let o = postc(&["post", post, DRILL, "-o", out_s, "--allow", "VF"]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(!text(&o).contains("VF"), "{}", text(&o));
+    std::fs::remove_file(&out).unwrap();
+    // postc.toml beside the post: a documented property of the post.
+    std::fs::write(dir.path().join("postc.toml"), "[diagnostics]\nwarn = [\"VF012\", \"VF037\"]\n").unwrap();
+    let o = postc(&["post", post, DRILL, "-o", out_s]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("warning[VF037]"), "{}", text(&o));
+}
+
+#[test]
+fn deny_makes_a_verification_warning_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("laser.ngc");
+    let out_s = out.to_str().unwrap();
+    // A milling post with no JET_TOOL_ON section over the job's laser
+    // toolpath: the jet cuts are a warning (the post cannot switch a jet on).
+    let args = ["post", "corpus/posts/vectric/gcode_noarcs_mm.pp", "corpus/toolpaths/standard.ron", "-o", out_s];
+    let o = postc(&args);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("warning[VF035]") && text(&o).contains("no JET_TOOL_ON section"), "{}", text(&o));
+    std::fs::remove_file(&out).unwrap();
+    for deny in ["VF035", "VF", "all"] {
+        let o = postc(&[&args[..], &["--deny", deny]].concat());
+        assert_eq!(o.status.code(), Some(1), "--deny {deny}: {}", text(&o));
+        assert!(text(&o).contains("error[VF035]"), "{}", text(&o));
+        assert!(!out.exists());
+    }
+    // --verify adds verify's summary line.
+    let o = postc(&[&args[..], &["--verify"]].concat());
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("postc verify: `") && text(&o).contains("1 warning(s)"), "{}", text(&o));
+    let o = postc(&[&args[..], &["--verify", "--no-verify"]].concat());
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+}
+
+#[test]
+fn what_post_cannot_verify_it_says_in_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (&["corpus/posts/vectric/hpgl_arcs.pp", "corpus/toolpaths/standard.ron"], "HPGL"),
+        (&["corpus/posts/vectric/shopbot_inch.pp", "corpus/toolpaths/standard.ron"], "ShopBot"),
+        (&["corpus/posts/cimco/siemens_840d.js", DRILL], "Siemens Sinumerik (`"),
+        (&["corpus/posts/vectric/rotary_wrap_mm.pp", "corpus/toolpaths/rotary_mm.ron"], "rotary"),
+        (&["corpus/posts/vcpost/siemens_probe.VcPost", "corpus/probe/siemens_probe__housing.csv"], "probe table"),
+    ];
+    for (i, (inputs, why)) in cases.iter().enumerate() {
+        let out = dir.path().join(format!("out{i}.txt"));
+        let args = [&["post"], *inputs, &["-o", out.to_str().unwrap()]].concat();
+        let o = postc(&args);
+        assert!(o.status.success(), "{inputs:?}: {}", text(&o));
+        assert!(text(&o).contains("note[VF044]") && text(&o).contains("was not verified"), "{inputs:?}: {}", text(&o));
+        assert!(text(&o).contains(why), "{inputs:?}: {}", text(&o));
+        assert!(out.is_file(), "{inputs:?}");
+        // --no-verify: no note.
+        let o = postc(&[&args[..], &["--no-verify"]].concat());
+        assert!(o.status.success() && !text(&o).contains("VF044"), "{inputs:?}: {}", text(&o));
+    }
+    // Text output that is not a G-code program, found by reading it.
+    let out = dir.path().join("text.txt");
     let o = postc(&[
         "post",
-        "corpus/posts/vectric/gcode_mm.pp",
+        "corpus/posts/vectric/text_output_mm.pp",
         "corpus/toolpaths/standard.ron",
         "-o",
         out.to_str().unwrap(),
-        "--verify",
     ]);
     assert!(o.status.success(), "{}", text(&o));
-    assert!(text(&o).contains("postc verify"), "{}", text(&o));
-    // A post that drops the spindle: the program is written, verify fails.
-    let bad = std::fs::read_to_string(root().join("corpus/posts/vectric/gcode_noarcs_mm.pp")).unwrap();
-    let post = dir.path().join("noarcs.pp");
-    std::fs::write(&post, bad).unwrap();
+    assert!(text(&o).contains("note[VF044]") && text(&o).contains("do not read as G-code"), "{}", text(&o));
+    // --deny VF044: a program that cannot be verified is not written.
+    std::fs::remove_file(&out).unwrap();
     let o = postc(&[
         "post",
-        post.to_str().unwrap(),
+        "corpus/posts/vectric/hpgl_arcs.pp",
         "corpus/toolpaths/standard.ron",
         "-o",
         out.to_str().unwrap(),
-        "--verify",
+        "--deny",
+        "VF044",
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
-    assert!(text(&o).contains("VF035"), "{}", text(&o));
-    // --verify needs -o.
-    let o = postc(&["post", "corpus/posts/vectric/gcode_mm.pp", "corpus/toolpaths/standard.ron", "--verify"]);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(text(&o).contains("IO007"), "{}", text(&o));
+    assert!(text(&o).contains("error[VF044]"), "{}", text(&o));
+    assert!(!out.exists());
+}
+
+/// A post that writes nothing for the toolpath's moves: verification does
+/// not keep the events waiting for program text without end; it stops,
+/// and the program, which makes none of those moves, is not written.
+#[test]
+fn a_post_that_writes_nothing_for_its_moves_stops_verification() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("silent.pp");
+    std::fs::write(&post, "POST_NAME = \"silent\"\nUNITS = \"MM\"\nbegin HEADER\n\"G21 G90\"\nbegin FOOTER\n\"M30\"\n").unwrap();
+    let toolpath = dir.path().join("moves.jsonl");
+    let o = postc(&["toolpath", "gen", "--moves", "80000", "-o", toolpath.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let out = dir.path().join("silent.nc");
+    let o = postc(&["post", post.to_str().unwrap(), toolpath.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert!(text(&o).contains("error[VF011]") && text(&o).contains("wrote nothing for 65536 toolpath events"), "{}", text(&o));
+    assert!(!out.exists());
+}
+
+/// Every post of the project's corpus posts every toolpath its goldens
+/// are made from with `postc post` as a user runs it, verification on:
+/// none is refused.
+#[test]
+fn every_corpus_post_still_posts_its_toolpaths_with_verification() {
+    let dir = tempfile::tempdir().unwrap();
+    let ron = |dir: &str| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(root().join(dir))
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+            .map(|p| p.strip_prefix(root()).unwrap().display().to_string())
+            .collect();
+        v.sort();
+        v
+    };
+    let posts_in = |dir: &str, ext: &str| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(root().join(dir))
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|e| e == ext))
+            .map(|p| p.strip_prefix(root()).unwrap().display().to_string())
+            .collect();
+        v.sort();
+        v
+    };
+    let vectric = ron("corpus/toolpaths");
+    let cimco: Vec<String> =
+        ["cimco/mill.ron", "cimco/drill.ron", "standard.ron"].iter().map(|t| format!("corpus/toolpaths/{t}")).collect();
+    let mut vcpost = vectric.clone();
+    vcpost.extend(ron("corpus/toolpaths/vcpost"));
+    let mut jobs: Vec<(String, &Vec<String>)> = Vec::new();
+    jobs.extend(posts_in("corpus/posts/vectric", "pp").into_iter().map(|p| (p, &vectric)));
+    jobs.extend(posts_in("corpus/posts/cimco", "js").into_iter().map(|p| (p, &cimco)));
+    jobs.extend(posts_in("corpus/posts/cimco-styles", "js").into_iter().map(|p| (p, &cimco)));
+    jobs.push(("corpus/posts/vcpost/fanuc_mill.VcPost".into(), &vcpost));
+    let (mut runs, mut warned, mut not_posted, mut failures) = (0, 0, 0, Vec::new());
+    for (post, toolpaths) in &jobs {
+        for toolpath in toolpaths.iter() {
+            let run = dir.path().join(format!("run{runs}"));
+            std::fs::create_dir(&run).unwrap();
+            let out = run.join("out.nc");
+            let args = ["post", post.as_str(), toolpath.as_str(), "-o", out.to_str().unwrap()];
+            let o = postc(&args);
+            runs += 1;
+            // What postc does not post (yet) whatever verify finds is not counted.
+            if !o.status.success() && !postc(&[&args[..], &["--no-verify"]].concat()).status.success() {
+                not_posted += 1;
+                continue;
+            }
+            // The program is written: as `out.nc`, or as its tape-split parts.
+            let written = std::fs::read_dir(&run).unwrap().count();
+            if !o.status.success() || written == 0 {
+                failures.push(format!("{post} over {toolpath}:\n{}", text(&o)));
+            }
+            warned += usize::from(text(&o).contains("warning[VF"));
+        }
+    }
+    println!("{runs} posts, {warned} with verification warnings, {not_posted} postc does not post");
+    assert!(runs - not_posted >= 140, "only {} runs posted", runs - not_posted);
+    assert!(failures.is_empty(), "{} refused:\n{}", failures.len(), failures.join("\n"));
 }
 
 #[test]

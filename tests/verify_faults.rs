@@ -219,6 +219,66 @@ fn z_not_raised_before_a_tool_change() {
     assert_caught(&program, &found, "VF038", line);
 }
 
+/// A post that never starts the spindle (nothing in SPINDLE_ON, no M3 or
+/// M4 outside its jet sections: a spindle switched on by hand) cuts with
+/// the spindle off by design: VF035 is a warning, and no error is left.
+#[test]
+fn a_post_for_a_spindle_started_by_hand_warns() {
+    let text = good_post()
+        .replace("begin SPINDLE_ON\n\"[S] M3\"", "begin SPINDLE_ON\n")
+        .replace("begin SPINDLE_ON\r\n\"[S] M3\"", "begin SPINDLE_ON\r\n");
+    assert!(!text.contains("\"[S] M3\""), "the seeded post still starts the spindle");
+    let (program, found) = seeded(&text);
+    assert!(errors(&found).is_empty(), "{found:#?}\n{program}");
+    let first_cut = line_of(&program, |l| l.starts_with("G1"));
+    assert!(
+        found.iter().any(|f| f.code == "VF035" && f.severity == Severity::Warning && f.line == first_cut),
+        "{found:#?}"
+    );
+}
+
+/// Verifies `program` against a native toolpath given as text.
+fn check_against(program: &str, toolpath: &str, settings: &Settings) -> Vec<Found> {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("job.ron");
+    std::fs::write(&path, toolpath).unwrap();
+    verify(program.as_bytes(), &path, settings)
+}
+
+/// A job whose tool has no spindle speed, and that never switches the
+/// spindle on, asks for none: a program without M3 makes it as it is (an
+/// APT CL file with no SPINDL record posts this way).
+#[test]
+fn a_tool_without_a_speed_asks_for_no_spindle() {
+    let job = "Job(units:Mm,safe_z:5.0)\nTool(number:1,cut_feed:1000.0,plunge_feed:300.0)\nToolpathStart()\nRapid(x:10.0,y:10.0,z:5.0)\nFeed(x:10.0,y:10.0,z:-2.0,intent:Plunge)\nFeed(x:30.0,y:10.0,z:-2.0)\nEnd\n";
+    let program = "G21 G90\nT1 M6\nG0 X10 Y10 Z5\nG1 Z-2 F300\nX30 F1000\nM30\n";
+    let found = check_against(program, job, &Settings::default());
+    assert!(found.is_empty(), "{found:#?}");
+    // With a speed, the runtime starts the spindle: the same program is wrong.
+    let job = job.replace("Tool(number:1,", "Tool(number:1,spindle_speed:12000.0,");
+    let found = check_against(program, &job, &Settings::default());
+    assert!(errors(&found).iter().any(|f| f.code == "VF035" && f.line == 4), "{found:#?}");
+    // An APT-word post (VcPost) is given no spindle record for it: a warning.
+    let found = check_against(program, &job, &Settings { apt_words: true, ..Settings::default() });
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    assert!(found.iter().any(|f| f.code == "VF035" && f.message.contains("SPINDL")), "{found:#?}");
+}
+
+/// Text the toolpath inserts as it is (an APT INSERT) is the toolpath's,
+/// not the post's: a line of it that does not read as G-code is a warning;
+/// the same line with no insert behind it is an error.
+#[test]
+fn inserted_text_that_is_not_gcode_warns() {
+    let job = "Job(units:Mm,safe_z:5.0)\nTool(number:1,spindle_speed:12000.0,cut_feed:1000.0,plunge_feed:300.0)\nToolpathStart()\nInsert(text:\"[HOLDER=C40] 6MM CRB\")\nRapid(x:10.0,y:10.0,z:5.0)\nFeed(x:10.0,y:10.0,z:-2.0,intent:Plunge)\nEnd\n";
+    let program = "G21 G90\nT1 M6\nS12000 M3\n[HOLDER=C40] 6MM CRB\nG0 X10 Y10 Z5\nG1 Z-2 F300\nM30\n";
+    let found = check_against(program, job, &Settings::default());
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    assert!(found.iter().any(|f| f.code == "VF004" && f.severity == Severity::Warning && f.line == 4), "{found:#?}");
+    let other = program.replace("[HOLDER=C40] 6MM CRB", "[HOLDER=C41] 6MM CRB");
+    let found = check_against(&other, job, &Settings::default());
+    assert!(errors(&found).iter().any(|f| f.code == "VF004" && f.line == 4), "{found:#?}");
+}
+
 /// Verifies a hand-written program against JOB (mm, generic controller unless given).
 fn check(program: &str, controller: Controller) -> Vec<Found> {
     let dir = tempfile::tempdir().unwrap();

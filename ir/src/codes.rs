@@ -1504,11 +1504,13 @@ declare_codes! {
         fix = "Print the feed on the first feed move (a FIRST_FEED_MOVE section, or an always-printed F).";
     /// A cut with the spindle (or jet) off. A warning when the post cannot switch it on at all,
     /// a property of the post rather than a fault of the run: a jet toolpath (laser, plasma,
-    /// waterjet) through a section post with no JET_TOOL_ON section (it is not a jet post), or a
-    /// spindle toolpath through a section post with no SPINDLE_ON section and no M3 or M4 in any
-    /// line (a post for a spindle switched on by hand).
-    VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning when the post cannot switch it on at all: no JET_TOOL_ON section for a jet, no SPINDLE_ON and no M3/M4 for a spindle)",
-        fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section.";
+    /// waterjet) through a section post with no JET_TOOL_ON section or through an APT-word post
+    /// (given no jet records): it is not a jet post; a spindle toolpath through a section post with
+    /// no SPINDLE_ON section and no M3 or M4 in any line (a post for a spindle switched on by
+    /// hand); or an APT-word post (VcPost) over a toolpath that gives the tool a speed but never
+    /// switches the spindle on (such a post starts it only from SPINDL records).
+    VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning when the post cannot switch it on: a jet through a post with no jet section, a spindle through a post that never prints M3/M4, an APT-word post never told to start it)",
+        fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section; give an APT-word post's toolpath a spindle-on event.";
     /// A rapid move the toolpath does not make goes below the toolpath's lowest rapid height,
     /// into the material.
     VF037: Error, "a rapid move the toolpath does not make goes below the toolpath's lowest rapid height into the material",

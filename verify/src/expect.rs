@@ -31,6 +31,10 @@ pub struct Expected {
     pub powered: bool,
     /// Whether a jet tool (laser, plasma, waterjet) makes the move.
     pub jet: bool,
+    /// The spindle runs only because the tool has a speed: nothing in the
+    /// toolpath switches it on, and the post, an APT-word one, starts it
+    /// only from the toolpath's spindle records.
+    pub implied: bool,
     pub span: Span,
 }
 
@@ -61,7 +65,15 @@ pub struct ExpectedPath<'a> {
     plunge_feed: f64,
     jet_tool: bool,
     spindle: bool,
+    /// The tool has a speed, but the toolpath has not switched the spindle
+    /// on (APT-word posts only, [`ExpectedPath::apt_words`]).
+    implied: bool,
     jet: bool,
+    /// The post is an APT-word one (VcPost milling, postp): the runtime
+    /// hands it the toolpath's records as they are, so a tool change does
+    /// not start the spindle and a straight move down is fed as its intent
+    /// says, not as a plunge.
+    pub apt_words: bool,
     cycle: Option<DrillCycle>,
     /// The lines of the toolpath's latest inserts (text it asks to be
     /// written as it is), not yet found in the program; at most [`INSERTS`].
@@ -96,7 +108,9 @@ impl<'a> ExpectedPath<'a> {
             plunge_feed: f64::NAN,
             jet_tool: false,
             spindle: false,
+            implied: false,
             jet: false,
+            apt_words: false,
             cycle: None,
             inserts: VecDeque::new(),
             job: JobData::default(),
@@ -165,7 +179,7 @@ impl<'a> ExpectedPath<'a> {
     }
 
     fn powered(&self) -> bool {
-        if self.jet_tool { self.jet } else { self.spindle }
+        if self.jet_tool { self.jet } else { self.spindle || self.implied }
     }
 
     #[allow(clippy::too_many_arguments)] // one expected move's fields, filled from five event kinds
@@ -191,8 +205,8 @@ impl<'a> ExpectedPath<'a> {
             return;
         }
         self.count += 1;
-        let (powered, jet) = (self.powered(), self.jet_tool);
-        self.window.push_back(Expected { kind, start, end, centre, dir, plane, intent, feed, powered, jet, span });
+        let (powered, jet, implied) = (self.powered(), self.jet_tool, self.implied && !self.spindle && !self.jet_tool);
+        self.window.push_back(Expected { kind, start, end, centre, dir, plane, intent, feed, powered, jet, implied, span });
     }
 
     fn feed_for(&self, intent: Intent, feed: Option<f64>) -> f64 {
@@ -219,12 +233,18 @@ impl<'a> ExpectedPath<'a> {
                 self.plunge_feed = tool.plunge_feed * f;
                 self.jet_tool = tool.jet;
                 // The runtime starts a spindle tool's spindle after the header and
-                // each tool change, when the toolpath gives it a speed.
-                self.spindle = !tool.jet && tool.spindle_speed > 0.0;
+                // each tool change, when the toolpath gives it a speed (section
+                // posts; an APT-word post is told by the toolpath's own records).
+                let speed = !tool.jet && tool.spindle_speed > 0.0;
+                self.spindle = speed && !self.apt_words;
+                self.implied = speed && self.apt_words;
                 self.jet = false;
             }
             Event::SpindleOn(_) => self.spindle = true,
-            Event::SpindleOff => self.spindle = false,
+            Event::SpindleOff => {
+                self.spindle = false;
+                self.implied = false;
+            }
             Event::JetOn => self.jet = true,
             Event::JetOff => self.jet = false,
             Event::Rapid(m) => {
@@ -244,8 +264,12 @@ impl<'a> ExpectedPath<'a> {
                 self.job.rotary |= m.a.is_some() || m.b.is_some() || m.c.is_some();
                 let mut intent = m.intent;
                 let end = [m.x * f, m.y * f, m.z * f];
-                if intent == Intent::Cut && (self.pos[0] - end[0]).abs() < 1e-9 && (self.pos[1] - end[1]).abs() < 1e-9 {
-                    // The runtime's rule: a straight move down is a plunge, up a retract.
+                if intent == Intent::Cut
+                    && !self.apt_words
+                    && (self.pos[0] - end[0]).abs() < 1e-9
+                    && (self.pos[1] - end[1]).abs() < 1e-9
+                {
+                    // The section runtime's rule: a straight move down is a plunge, up a retract.
                     if end[2] < self.pos[2] {
                         intent = Intent::Plunge;
                     } else if end[2] > self.pos[2] {

@@ -244,6 +244,7 @@ pub fn run(
         tol: (f64::NAN, (f64::NAN, None)),
     };
     let mut block = Block::default();
+    run.path.apt_words = settings.apt_words;
     run.path.start();
     let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
     let mut buf: Vec<u8> = Vec::with_capacity(256);
@@ -1475,13 +1476,21 @@ impl Run<'_> {
             let (severity, message, help) = match e.jet {
                 true if !self.settings.jet_on => (
                     Severity::Warning,
-                    format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
+                    match self.settings.apt_words {
+                        false => format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
+                        true => format!("a jet cut with the jet off: {post} is given no record that switches a jet on (APT-word posts get none for jet events)"),
+                    },
                     "post jet toolpaths (laser, plasma, waterjet) with a post that has a JET_TOOL_ON section",
                 ),
                 false if !self.settings.spindle_on => (
                     Severity::Warning,
                     format!("a cut with the spindle off: {post} never prints M3 or M4, so the spindle must be started by hand"),
                     "start the spindle by hand before the first cut, or post with a post that starts it",
+                ),
+                false if e.implied => (
+                    Severity::Warning,
+                    format!("a cut with the spindle off: the toolpath gives the tool a speed but never switches the spindle on, and {post} starts it only from the toolpath's spindle records (SPINDL)"),
+                    "give the toolpath a spindle-on event (SpindleOn, or SPINDL/ON in a CL file)",
                 ),
                 _ => (
                     Severity::Error,

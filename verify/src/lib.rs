@@ -134,14 +134,19 @@ pub struct Settings {
     /// The post wraps an axis onto a rotary one.
     pub rotary_wrap: bool,
     /// The post can switch a jet on: false for a section post without a
-    /// JET_TOOL_ON section, whose jet cuts VF035 then reports as warnings
-    /// (a property of the post: it is not a jet post).
+    /// JET_TOOL_ON section and for an APT-word post (the runtime gives it
+    /// no record for jet events), whose jet cuts VF035 then reports as
+    /// warnings (a property of the post: it is not a jet post).
     pub jet_on: bool,
-    /// The post can start a spindle: false for a section post with no
-    /// SPINDLE_ON section and no M3 or M4 in any line it prints (a post for
-    /// a spindle switched on by hand), whose cuts VF035 then reports as
-    /// warnings.
+    /// The post can start a spindle: false for a section post with nothing
+    /// in its SPINDLE_ON section and no M3 or M4 in any line it prints
+    /// outside its jet sections (a post for a spindle switched on by hand),
+    /// whose cuts VF035 then reports as warnings.
     pub spindle_on: bool,
+    /// The post is an APT-word one (VcPost milling, postp): what the
+    /// runtime hands it is the toolpath's records as they are
+    /// ([`expect::ExpectedPath::apt_words`]).
+    pub apt_words: bool,
     /// The post's name, for messages.
     pub post: Option<String>,
 }
@@ -160,6 +165,7 @@ impl Default for Settings {
             rotary_wrap: false,
             jet_on: true,
             spindle_on: true,
+            apt_words: false,
             post: None,
         }
     }
@@ -195,10 +201,12 @@ impl Settings {
             block_maximum: (has_n && numbers.maximum > 0.0).then_some(numbers.maximum),
             feed_multiplier,
             rotary_wrap: post.options.rotary_wrap.is_some(),
-            jet_on: post.info.dispatch != Dispatch::Sections || post.section(Section::JetToolOn).is_some(),
+            // An APT-word post is given no record for jet events.
+            jet_on: post.info.dispatch == Dispatch::Sections && post.section(Section::JetToolOn).is_some(),
             spindle_on: post.info.dispatch != Dispatch::Sections
-                || post.section(Section::SpindleOn).is_some()
+                || post.section(Section::SpindleOn).is_some_and(|h| !h.body.is_empty())
                 || prints_spindle_start(post),
+            apt_words: post.info.dispatch == Dispatch::AptWords,
             post: Some(post.info.name.clone()),
         }
     }
@@ -306,9 +314,11 @@ pub fn looks_binary(head: &[u8]) -> bool {
     head.contains(&0) || control * 10 > head.len()
 }
 
-/// Whether any line of the post prints an M3 or M4 word (`M3`, `M03`,
-/// `M4`, `M04`, not followed by a digit) in its literal text.
+/// Whether any line of the post, its jet sections left aside, prints an
+/// M3 or M4 word (`M3`, `M03`, `M4`, `M04`, not followed by a digit) in
+/// its literal text.
 fn prints_spindle_start(post: &Post) -> bool {
+    use postc_ir::HandlerKey;
     use postc_ir::code::Piece;
     use postc_ir::visit::{Visit, walk_piece};
     struct Finds(bool);
@@ -327,8 +337,17 @@ fn prints_spindle_start(post: &Post) -> bool {
             walk_piece(self, piece);
         }
     }
+    let jet = [Section::JetToolOn, Section::JetToolPower, Section::JetToolOff];
     let mut finds = Finds(false);
-    finds.visit_post(post);
+    post.init.iter().for_each(|s| finds.visit_stmt(s));
+    for h in post.handlers.iter().filter(|h| !matches!(h.key, HandlerKey::Section(s) if jet.contains(&s))) {
+        h.body.iter().for_each(|s| finds.visit_stmt(s));
+    }
+    for f in &post.functions {
+        if let postc_ir::post::Body::Native(body) = &f.body {
+            body.iter().for_each(|s| finds.visit_stmt(s));
+        }
+    }
     finds.0
 }
 

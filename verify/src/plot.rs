@@ -38,6 +38,7 @@ pub fn draw(
 ) -> (Plot, Report) {
     let mut plot = Plot::new();
     let mut path = ExpectedPath::new(toolpath);
+    path.apt_words = settings.apt_words;
     path.start();
     while let Some(e) = path.pop() {
         plot.toolpath(&e);
