@@ -38,8 +38,6 @@ use postc_ir::{Diagnostic, EventSource, Post, SourceMap, Span};
 use postc_runtime::geometry::ArcGeometry;
 use postc_runtime::{Finished, Output};
 
-use crate::support;
-
 use crate::support::postp;
 
 fn corpus() -> Option<Vec<PathBuf>> {

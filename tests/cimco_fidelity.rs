@@ -5,8 +5,6 @@
 //! installed, under the Node.js referee host (`tests/node_host/`), and both
 //! must print the expected program.
 
-use crate::support;
-
 use crate::support::cimco::*;
 
 /// Posts `js` over the native toolpath `ron` with postc and (when it is

@@ -11,8 +11,6 @@
 //! `POSTC_BLESS=1 cargo test --test suite cimco_goldens` rewrites the expected
 //! files from the current output and deletes the ones no pair makes.
 
-use crate::support;
-
 use crate::support::cimco::*;
 use crate::support::{Goldens, all_files};
 use postc_ir::Body;

@@ -6,8 +6,6 @@
 use postc_ir::visit::{Visit, walk_expr};
 use postc_ir::{Body, Expr, Function, Post};
 
-use crate::support;
-
 use crate::support::{corpus, files};
 
 /// Move handlers (and functions they call) of corpus posts that still run

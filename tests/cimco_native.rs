@@ -7,8 +7,6 @@
 //! function stays a script and says why); both must print what Node.js
 //! prints. Node.js is skipped, with a message, when it is not installed.
 
-use crate::support;
-
 use crate::support::cimco::*;
 use postc_ir::{Body, Post};
 

@@ -19,8 +19,6 @@
 
 use postc_runtime::output::part_names;
 
-use crate::support;
-
 use crate::support::{Goldens, all_files, compile, corpus, diff, files, post_parts as post_toolpath, stem};
 
 #[test]

@@ -7,8 +7,6 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use crate::support;
-
 use crate::support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {

@@ -4,8 +4,6 @@
 //! options files, the `postc postp DIR` and `postp DIR` command lines, and
 //! the demo CL file read back by LinuxCNC's rs274.
 
-use crate::support;
-
 use crate::support::postp;
 
 use std::process::Command;

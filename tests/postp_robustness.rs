@@ -2,8 +2,6 @@
 //! cut short or replaced by postp words with random arguments posts or
 //! fails with diagnostics, on every controller.
 
-use crate::support;
-
 use crate::support::postp;
 
 use postc_postp::Controller;

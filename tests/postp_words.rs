@@ -3,8 +3,6 @@
 //! snapshot in `tests/snapshots/postp/` (`POSTC_BLESS=1` rewrites them).
 //! Every CL file starts `MACHIN/<controller>` and `UNITS/MM`.
 
-use crate::support;
-
 use crate::support::postp;
 
 use postp::{check, run};

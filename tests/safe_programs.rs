@@ -4,8 +4,6 @@
 //! write. The programs are read by LinuxCNC's `rs274` where it is
 //! installed.
 
-use crate::support;
-
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -4,8 +4,6 @@
 //! without its end record (FINI, End) posts with a warning that it may be
 //! cut short, which `postc check` gives too.
 
-use crate::support;
-
 use crate::support::{postc, said as text};
 
 #[test]

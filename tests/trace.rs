@@ -13,8 +13,6 @@ use std::rc::Rc;
 use postc_ir::{Dialect, Span};
 use postc_runtime::{Finished, Output, RunOptions};
 
-use crate::support;
-
 use crate::support::{corpus, files, lines};
 
 /// One traced line: part, line, the span's text (or why there is none),

@@ -19,8 +19,6 @@
 //! `tests/corpus_goldens.rs` does. Read every blessed file before
 //! committing it.
 
-use crate::support;
-
 use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 

@@ -24,8 +24,6 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-use crate::support;
-
 use crate::support::rs274;
 
 use rs274::{Kind, Motion, axes};

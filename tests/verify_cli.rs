@@ -8,8 +8,6 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-use crate::support;
-
 use crate::support::{postc, said as text};
 
 #[test]
@@ -112,6 +110,14 @@ fn drilling_fault(dir: &std::path::Path) -> PathBuf {
 
 const DRILL: &str = "corpus/toolpaths/cimco/drill.ron";
 
+/// A folder holding the drilling fault's post, that post and the program's path there.
+fn faulty_job() -> (tempfile::TempDir, String, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let post = drilling_fault(dir.path()).to_str().unwrap().to_string();
+    let out = dir.path().join("holes.nc");
+    (dir, post, out)
+}
+
 fn errors_of(o: &std::process::Output) -> Vec<String> {
     let stderr = String::from_utf8_lossy(&o.stderr);
     let mut codes: Vec<String> = stderr
@@ -127,10 +133,8 @@ fn errors_of(o: &std::process::Output) -> Vec<String> {
 
 #[test]
 fn post_verifies_by_default_and_writes_nothing_when_verify_finds_an_error() {
-    let dir = tempfile::tempdir().unwrap();
-    let post = drilling_fault(dir.path());
-    let out = dir.path().join("holes.nc");
-    let (post, out_s) = (post.to_str().unwrap(), out.to_str().unwrap());
+    let (_dir, post, out) = faulty_job();
+    let (post, out_s) = (post.as_str(), out.to_str().unwrap());
     // The unmodified post verifies clean: nothing printed, the file written.
     let o = postc(&["post", "corpus/posts/cimco/fanuc_mill.js", DRILL, "-o", out_s]);
     assert!(o.status.success(), "{}", text(&o));
@@ -155,10 +159,8 @@ fn post_verifies_by_default_and_writes_nothing_when_verify_finds_an_error() {
 
 #[test]
 fn no_verify_writes_the_program_and_warn_lowers_the_findings() {
-    let dir = tempfile::tempdir().unwrap();
-    let post = drilling_fault(dir.path());
-    let out = dir.path().join("holes.nc");
-    let (post, out_s) = (post.to_str().unwrap(), out.to_str().unwrap());
+    let (dir, post, out) = faulty_job();
+    let (post, out_s) = (post.as_str(), out.to_str().unwrap());
     let o = postc(&["post", post, DRILL, "-o", out_s, "--no-verify"]);
     assert!(o.status.success(), "{}", text(&o));
     assert!(!text(&o).contains("VF"), "{}", text(&o));
@@ -275,14 +277,19 @@ fn what_post_cannot_verify_it_says_in_a_note() {
 fn a_post_that_writes_nothing_for_its_moves_stops_verification() {
     let dir = tempfile::tempdir().unwrap();
     let post = dir.path().join("silent.pp");
-    std::fs::write(&post, "POST_NAME = \"silent\"\nUNITS = \"MM\"\nbegin HEADER\n\"G21 G90\"\nbegin FOOTER\n\"M30\"\n").unwrap();
+    std::fs::write(&post, "POST_NAME = \"silent\"\nUNITS = \"MM\"\nbegin HEADER\n\"G21 G90\"\nbegin FOOTER\n\"M30\"\n")
+        .unwrap();
     let toolpath = dir.path().join("moves.jsonl");
     let o = postc(&["toolpath", "gen", "--moves", "80000", "-o", toolpath.to_str().unwrap()]);
     assert!(o.status.success(), "{}", text(&o));
     let out = dir.path().join("silent.nc");
     let o = postc(&["post", post.to_str().unwrap(), toolpath.to_str().unwrap(), "-o", out.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
-    assert!(text(&o).contains("error[VF011]") && text(&o).contains("wrote nothing for 65536 toolpath events"), "{}", text(&o));
+    assert!(
+        text(&o).contains("error[VF011]") && text(&o).contains("wrote nothing for 65536 toolpath events"),
+        "{}",
+        text(&o)
+    );
     assert!(!out.exists());
 }
 
@@ -292,18 +299,7 @@ fn a_post_that_writes_nothing_for_its_moves_stops_verification() {
 #[test]
 fn every_corpus_post_still_posts_its_toolpaths_with_verification() {
     let dir = tempfile::tempdir().unwrap();
-    let ron = |dir: &str| -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(root().join(dir))
-            .unwrap()
-            .flatten()
-            .map(|e| e.path())
-            .filter(|p| p.extension().is_some_and(|e| e == "ron"))
-            .map(|p| p.strip_prefix(root()).unwrap().display().to_string())
-            .collect();
-        v.sort();
-        v
-    };
-    let posts_in = |dir: &str, ext: &str| -> Vec<String> {
+    let files = |dir: &str, ext: &str| -> Vec<String> {
         let mut v: Vec<String> = std::fs::read_dir(root().join(dir))
             .unwrap()
             .flatten()
@@ -314,15 +310,15 @@ fn every_corpus_post_still_posts_its_toolpaths_with_verification() {
         v.sort();
         v
     };
-    let vectric = ron("corpus/toolpaths");
+    let vectric = files("corpus/toolpaths", "ron");
     let cimco: Vec<String> =
         ["cimco/mill.ron", "cimco/drill.ron", "standard.ron"].iter().map(|t| format!("corpus/toolpaths/{t}")).collect();
     let mut vcpost = vectric.clone();
-    vcpost.extend(ron("corpus/toolpaths/vcpost"));
+    vcpost.extend(files("corpus/toolpaths/vcpost", "ron"));
     let mut jobs: Vec<(String, &Vec<String>)> = Vec::new();
-    jobs.extend(posts_in("corpus/posts/vectric", "pp").into_iter().map(|p| (p, &vectric)));
-    jobs.extend(posts_in("corpus/posts/cimco", "js").into_iter().map(|p| (p, &cimco)));
-    jobs.extend(posts_in("corpus/posts/cimco-styles", "js").into_iter().map(|p| (p, &cimco)));
+    jobs.extend(files("corpus/posts/vectric", "pp").into_iter().map(|p| (p, &vectric)));
+    jobs.extend(files("corpus/posts/cimco", "js").into_iter().map(|p| (p, &cimco)));
+    jobs.extend(files("corpus/posts/cimco-styles", "js").into_iter().map(|p| (p, &cimco)));
     jobs.push(("corpus/posts/vcpost/fanuc_mill.VcPost".into(), &vcpost));
     let (mut runs, mut warned, mut not_posted, mut failures) = (0, 0, 0, Vec::new());
     for (post, toolpaths) in &jobs {

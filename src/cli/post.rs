@@ -7,8 +7,8 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use postc_ir::codes::{Level, LevelRules};
-use postc_ir::{Diagnostic, Severity, SourceMap};
 use postc_ir::event::FileInfo;
+use postc_ir::{Diagnostic, Severity, SourceMap};
 use postc_runtime::output::Sink;
 use postc_runtime::{Finished, Output, RunOptions};
 use postc_verify::{Controller, Settings};
@@ -326,7 +326,10 @@ fn not_verified(args: &Args, post: &postc_ir::Post) -> Option<String> {
     let foreign = |ext: &str| FOREIGN_EXTENSIONS.iter().find(|(e, _)| e.eq_ignore_ascii_case(ext)).map(|(_, f)| *f);
     let output_ext = args.output.as_deref().and_then(Path::extension).map(|e| e.to_string_lossy().into_owned());
     if let Some(family) = foreign(&post.info.file_extension) {
-        return Some(format!("the post writes `.{}` files, {family}, which verify does not read", post.info.file_extension));
+        return Some(format!(
+            "the post writes `.{}` files, {family}, which verify does not read",
+            post.info.file_extension
+        ));
     }
     if let Some((ext, family)) = output_ext.as_deref().and_then(|e| Some((e, foreign(e)?))) {
         return Some(format!("its extension `.{ext}` is that of {family}, which verify does not read"));

@@ -313,9 +313,8 @@ pub fn annotate(
         }
     }
     let name = program.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let line_of = |r: &Record| {
-        Path::new(&r.output).file_name().is_some_and(|n| n.to_string_lossy() == name).then_some(r.line)
-    };
+    let line_of =
+        |r: &Record| Path::new(&r.output).file_name().is_some_and(|n| n.to_string_lossy() == name).then_some(r.line);
     annotate_lines(trace, wanted, &line_of, findings, sources)
 }
 

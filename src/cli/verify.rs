@@ -70,7 +70,6 @@ impl From<ControllerArg> for Controller {
 /// lines; larger ones are streamed and only located by line and column.
 const LOAD_LIMIT: u64 = 16 << 20;
 
-
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
     let (post, postp) = post_for(args.post.as_ref(), args.dialect, args.postp, &args.toolpath, &mut sources)?;

@@ -20,10 +20,10 @@
 //! hands the sink over): the caller names and commits the files, or writes
 //! standard output, only once verification has passed.
 
+use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::io::{self, BufRead, Read};
 use std::rc::Rc;
-use std::cell::RefCell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
@@ -37,7 +37,7 @@ use postc_verify::{Report, Settings};
 /// Events sent at a time.
 const BATCH: usize = 1024;
 /// Messages in flight at most.
-const IN_FLIGHT: usize = 8;
+const IN_FLIGHT: usize = 32;
 /// Programs up to this size are kept to show their lines with findings.
 pub const HOLD: usize = 16 << 20;
 /// Batches of events kept at most while the verify thread waits for
@@ -387,8 +387,7 @@ fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop:
         ended: false,
         stalled: false,
     }));
-    let mut program =
-        Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, read: 0, held: Some(Vec::new()) };
+    let mut program = Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, read: 0, held: Some(Vec::new()) };
     let head = program.peek(4096);
     let family = match postc_verify::looks_binary(head) {
         true => Some("binary data"),

@@ -206,7 +206,20 @@ impl<'a> ExpectedPath<'a> {
         }
         self.count += 1;
         let (powered, jet, implied) = (self.powered(), self.jet_tool, self.implied && !self.spindle && !self.jet_tool);
-        self.window.push_back(Expected { kind, start, end, centre, dir, plane, intent, feed, powered, jet, implied, span });
+        self.window.push_back(Expected {
+            kind,
+            start,
+            end,
+            centre,
+            dir,
+            plane,
+            intent,
+            feed,
+            powered,
+            jet,
+            implied,
+            span,
+        });
     }
 
     fn feed_for(&self, intent: Intent, feed: Option<f64>) -> f64 {

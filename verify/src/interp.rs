@@ -101,7 +101,14 @@ struct Block {
 impl Default for Block {
     fn default() -> Block {
         let word = Word { value: 0.0, decimals: 0, start: 0, end: 0 };
-        Block { letters: [word; 26], present: 0, g: [(0.0, 0, 0); MAX_CODES], gs: 0, m: [(0.0, 0, 0); MAX_CODES], ms: 0 }
+        Block {
+            letters: [word; 26],
+            present: 0,
+            g: [(0.0, 0, 0); MAX_CODES],
+            gs: 0,
+            m: [(0.0, 0, 0); MAX_CODES],
+            ms: 0,
+        }
     }
 }
 
@@ -452,7 +459,14 @@ impl Run<'_> {
         // A plain line (words, blanks, simple comments) holds no NUL byte.
         let plain = grammar::parse_plain(line, items);
         if !plain && line.contains(&0) {
-            self.finding(Severity::Error, codes::VF002.code, "this line holds binary data (NUL bytes), not G-code", 0, 1, None);
+            self.finding(
+                Severity::Error,
+                codes::VF002.code,
+                "this line holds binary data (NUL bytes), not G-code",
+                0,
+                1,
+                None,
+            );
             return;
         }
         self.line(line, items, block, plain);
@@ -500,7 +514,10 @@ impl Run<'_> {
                 text.len(),
                 None,
             );
-            Self::help(d, "a controller may stop at it: make it a comment in the CAM system, if it is not meant for the controller");
+            Self::help(
+                d,
+                "a controller may stop at it: make it a comment in the CAM system, if it is not meant for the controller",
+            );
             return;
         }
         if let Err(at) = parsed {
@@ -1477,19 +1494,27 @@ impl Run<'_> {
                 true if !self.settings.jet_on => (
                     Severity::Warning,
                     match self.settings.apt_words {
-                        false => format!("a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"),
-                        true => format!("a jet cut with the jet off: {post} is given no record that switches a jet on (APT-word posts get none for jet events)"),
+                        false => format!(
+                            "a jet cut with the jet off: {post} has no JET_TOOL_ON section, so it cannot switch a jet on"
+                        ),
+                        true => format!(
+                            "a jet cut with the jet off: {post} is given no record that switches a jet on (APT-word posts get none for jet events)"
+                        ),
                     },
                     "post jet toolpaths (laser, plasma, waterjet) with a post that has a JET_TOOL_ON section",
                 ),
                 false if !self.settings.spindle_on => (
                     Severity::Warning,
-                    format!("a cut with the spindle off: {post} never prints M3 or M4, so the spindle must be started by hand"),
+                    format!(
+                        "a cut with the spindle off: {post} never prints M3 or M4, so the spindle must be started by hand"
+                    ),
                     "start the spindle by hand before the first cut, or post with a post that starts it",
                 ),
                 false if e.implied => (
                     Severity::Warning,
-                    format!("a cut with the spindle off: the toolpath gives the tool a speed but never switches the spindle on, and {post} starts it only from the toolpath's spindle records (SPINDL)"),
+                    format!(
+                        "a cut with the spindle off: the toolpath gives the tool a speed but never switches the spindle on, and {post} starts it only from the toolpath's spindle records (SPINDL)"
+                    ),
                     "give the toolpath a spindle-on event (SpindleOn, or SPINDL/ON in a CL file)",
                 ),
                 _ => (
