@@ -340,7 +340,7 @@ fn functions(
             body,
             span: Some(func.span),
             why_script,
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         });
     }
     if let Some((feed_var, feed_rev_var)) = feed {
@@ -380,7 +380,7 @@ fn functions(
             ]),
             span: None,
             why_script: None,
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         });
     }
     let init_native = {
@@ -398,7 +398,7 @@ fn functions(
         },
         span: Some(whole),
         why_script: init_native.err().map(|w| postc_ir::ScriptReason { what: w.what, span: Some(w.span) }),
-        source: Vec::new(),
+        source: Vec::new(), uses_arguments: false, starts_undefined: false
     });
     for (g, entry, _) in GLUE {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
@@ -416,7 +416,7 @@ fn functions(
             body,
             span,
             why_script,
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         });
     }
     // Lowering may add forms (`f.apply(null, words)` with a list whose
@@ -451,7 +451,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
             body: Body::Native(fold::stmts(b)),
             span: Some(func.span),
             why_script: None,
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         },
         Err(w) => Function {
             // Runs the script of the same name.
@@ -465,7 +465,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
                 what: format!("{} (its form for {arity} arguments)", w.what),
                 span: Some(w.span),
             }),
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         },
     }
 }

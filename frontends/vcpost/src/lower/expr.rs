@@ -245,7 +245,7 @@ impl Lowerer<'_> {
             body: Body::Native(vec![IrStmt::Return(Some(IrExpr::Number(0.0)))]),
             span: None,
             why_script: None,
-            source: Vec::new(),
+            source: Vec::new(), uses_arguments: false, starts_undefined: false
         });
         self.host_functions.insert(canonical.to_string(), id);
         Some(id)

@@ -72,7 +72,7 @@ impl Lowerer<'_> {
                 body: Body::Native(body),
                 span: Some(p.header),
                 why_script: None,
-                source: Vec::new(),
+                source: Vec::new(), uses_arguments: false, starts_undefined: false
             };
         }
     }
