@@ -7,7 +7,7 @@ use postc_report::Render as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-mod many_errors;
+use crate::many_errors;
 use many_errors::bad_cl;
 
 /// Checks a file as `postc check` does, both output forms: the JSON array

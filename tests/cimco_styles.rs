@@ -15,12 +15,12 @@
 //! pair the first difference or the error. LinuxCNC's rs274 reads the
 //! goldens in `tests/rs274.rs`, `postc verify` in `tests/verify_corpus.rs`.
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 
-use support::cimco::*;
-use support::{Goldens, all_files};
+use crate::support::cimco::*;
+use crate::support::{Goldens, all_files};
 
 /// Node.js's version, or None when the Node.js checks are to be skipped;
 /// under `CI=true` a missing `node` fails.

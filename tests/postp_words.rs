@@ -3,9 +3,7 @@
 //! snapshot in `tests/snapshots/postp/` (`POSTC_BLESS=1` rewrites them).
 //! Every CL file starts `MACHIN/<controller>` and `UNITS/MM`.
 
-mod support;
-
-use support::postp;
+use crate::support::postp;
 
 use postp::{check, run};
 

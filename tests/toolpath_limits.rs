@@ -4,9 +4,7 @@
 //! without its end record (FINI, End) posts with a warning that it may be
 //! cut short, which `postc check` gives too.
 
-mod support;
-
-use support::{postc, said as text};
+use crate::support::{postc, said as text};
 
 #[test]
 fn a_coordinate_no_machine_reaches_is_refused_at_its_record() {

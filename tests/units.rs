@@ -14,9 +14,9 @@ use std::path::{Path, PathBuf};
 
 use postc_ir::{Event, EventSource, Post, Units};
 
-mod support;
+use crate::support;
 
-use support::rs274;
+use crate::support::rs274;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

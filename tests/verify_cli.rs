@@ -7,9 +7,7 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-mod support;
-
-use support::{postc, said as text};
+use crate::support::{postc, said as text};
 
 #[test]
 fn a_golden_program_verifies_against_its_toolpath() {

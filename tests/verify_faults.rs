@@ -17,7 +17,7 @@ use postc_ir::{Post, Severity};
 use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
-mod support;
+use crate::support;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

@@ -62,7 +62,7 @@ pub fn blessing() -> bool {
 
 /// How a failure message tells to bless.
 pub fn bless_hint(test: &str) -> String {
-    format!("If the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test {test}")
+    format!("If the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test suite {test}")
 }
 
 /// Compares `actual`, byte for byte, with the golden at `path`. When
