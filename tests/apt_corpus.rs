@@ -38,9 +38,7 @@ use postc_ir::{Diagnostic, EventSource, Post, SourceMap, Span};
 use postc_runtime::geometry::ArcGeometry;
 use postc_runtime::{Finished, Output};
 
-mod support;
-
-use support::postp;
+use crate::support::postp;
 
 fn corpus() -> Option<Vec<PathBuf>> {
     let dir = postp::root().join("../shared/corpus/apt");

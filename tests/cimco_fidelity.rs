@@ -5,9 +5,7 @@
 //! installed, under the Node.js referee host (`tests/node_host/`), and both
 //! must print the expected program.
 
-mod support;
-
-use support::cimco::*;
+use crate::support::cimco::*;
 
 /// Posts `js` over the native toolpath `ron` with postc and (when it is
 /// installed) Node.js; both must print `expected`.

@@ -8,14 +8,12 @@
 //! `postc check` clean), and the acceptance post `fanuc_mill.js` must run
 //! `onLinear` and `onCircular` natively.
 //!
-//! `POSTC_BLESS=1 cargo test --test cimco_goldens` rewrites the expected
+//! `POSTC_BLESS=1 cargo test --test suite cimco_goldens` rewrites the expected
 //! files from the current output and deletes the ones no pair makes.
 
-mod support;
-
+use crate::support::cimco::*;
+use crate::support::{Goldens, all_files};
 use postc_ir::Body;
-use support::cimco::*;
-use support::{Goldens, all_files};
 
 #[test]
 fn cimco_posts_match_their_goldens() {

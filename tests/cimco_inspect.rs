@@ -6,9 +6,7 @@
 use postc_ir::visit::{Visit, walk_expr};
 use postc_ir::{Body, Expr, Function, Post};
 
-mod support;
-
-use support::{corpus, files};
+use crate::support::{corpus, files};
 
 /// Move handlers (and functions they call) of corpus posts that still run
 /// as scripts. Since issue 13 the field-style posts' variadic

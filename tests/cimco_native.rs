@@ -7,10 +7,8 @@
 //! function stays a script and says why); both must print what Node.js
 //! prints. Node.js is skipped, with a message, when it is not installed.
 
-mod support;
-
+use crate::support::cimco::*;
 use postc_ir::{Body, Post};
-use support::cimco::*;
 
 /// The head every test post shares: formats, variables, and a variadic
 /// `writeBlock` in the field style.

@@ -7,12 +7,12 @@
 //! `cargo bench --bench cimco_vs_node` measures both engines over a
 //! million-move toolpath (docs/performance.md).
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 
+use crate::support::cimco::*;
 use postc_ir::Post;
-use support::cimco::*;
 
 #[test]
 fn node_prints_what_postc_prints() {

@@ -16,15 +16,15 @@
 //! The test prints the matrix (source dialect x target: converted /
 //! refused, by reason) that `docs/convert.md` records.
 
-mod support;
+use crate::support;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
+use crate::support::{blessing, check_golden, corpus, diff, files, stem};
 use postc_backends::Target;
 use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
-use support::{blessing, check_golden, corpus, diff, files, stem};
 
 const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::Cimco, Target::Ron];
 
@@ -344,7 +344,7 @@ fn converted_posts_post_as_their_sources() {
     }
     assert!(
         failures.is_empty(),
-        "{} conversion failures:\n\n{}\n\nIf pinned posts changed on purpose, read them and bless: POSTC_BLESS=1 cargo test --test convert",
+        "{} conversion failures:\n\n{}\n\nIf pinned posts changed on purpose, read them and bless: POSTC_BLESS=1 cargo test --test suite convert",
         failures.len(),
         failures.join("\n\n")
     );

@@ -13,15 +13,13 @@
 //! written for (a jet toolpath through a post without jet sections, a rotary
 //! job through a flat post) must still post, and its output is pinned too.
 //!
-//! `POSTC_BLESS=1 cargo test --test corpus_goldens` rewrites the expected
+//! `POSTC_BLESS=1 cargo test --test suite corpus_goldens` rewrites the expected
 //! files from the current output and deletes expected files no pair makes
 //! any more. Read every blessed file before committing it.
 
 use postc_runtime::output::part_names;
 
-mod support;
-
-use support::{Goldens, all_files, compile, corpus, diff, files, post_parts as post_toolpath, stem};
+use crate::support::{Goldens, all_files, compile, corpus, diff, files, post_parts as post_toolpath, stem};
 
 #[test]
 fn corpus_posts_match_their_goldens() {

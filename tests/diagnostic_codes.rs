@@ -2,7 +2,7 @@
 //! source reports is declared there, with the severity it is reported at,
 //! and docs/diagnostics.md is the registry rendered.
 //!
-//! `POSTC_BLESS=1 cargo test --test diagnostic_codes` rewrites
+//! `POSTC_BLESS=1 cargo test --test suite diagnostic_codes` rewrites
 //! docs/diagnostics.md from the registry.
 
 use std::collections::BTreeSet;
@@ -11,7 +11,7 @@ use std::path::Path;
 use postc_ir::Severity;
 use postc_ir::codes::{self, ALL, PREFIXES, SECTIONS};
 
-mod support;
+use crate::support;
 
 /// The Rust sources under `dir`, without `tests` folders and the registry itself.
 fn sources(dir: &Path, found: &mut Vec<(String, String)>) {
@@ -124,7 +124,7 @@ fn docs_diagnostics_md_is_the_registry_rendered() {
     if let Err(e) = support::check_golden(&path, rendered.as_bytes()) {
         panic!(
             "docs/diagnostics.md is not the registry rendered; edit ir/src/codes.rs, then run \
-             `POSTC_BLESS=1 cargo test --test diagnostic_codes`\n{e}"
+             `POSTC_BLESS=1 cargo test --test suite diagnostic_codes`\n{e}"
         );
     }
     let committed = std::fs::read_to_string(&path).unwrap();

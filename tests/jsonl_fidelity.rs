@@ -14,9 +14,9 @@ use std::path::{Path, PathBuf};
 use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Event, Post};
 
-mod support;
+use crate::support;
 
-use support::{compile, corpus, files, post_parts, stem};
+use crate::support::{compile, corpus, files, post_parts, stem};
 
 fn corpus_toolpaths() -> Vec<PathBuf> {
     let root = corpus().join("toolpaths");

@@ -7,9 +7,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-mod support;
-
-use support::{corpus, files};
+use crate::support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
     let mut sources = postc_report::source_map();

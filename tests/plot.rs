@@ -13,7 +13,7 @@ use postc_ir::Post;
 use postc_runtime::Finished;
 use postc_verify::Settings;
 
-mod support;
+use crate::support;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

@@ -2,9 +2,7 @@
 //! cut short or replaced by postp words with random arguments posts or
 //! fails with diagnostics, on every controller.
 
-mod support;
-
-use support::postp;
+use crate::support::postp;
 
 use postc_postp::Controller;
 use proptest::prelude::*;

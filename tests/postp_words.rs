@@ -3,9 +3,7 @@
 //! snapshot in `tests/snapshots/postp/` (`POSTC_BLESS=1` rewrites them).
 //! Every CL file starts `MACHIN/<controller>` and `UNITS/MM`.
 
-mod support;
-
-use support::postp;
+use crate::support::postp;
 
 use postp::{check, run};
 
@@ -185,7 +183,7 @@ fn retrct_without_a_plane_goes_home() {
 
 #[test]
 fn rotabl_absolute_incremental_and_mapped() {
-    let body = "ROTABL/AAXIS,ATANGL,90\nROTABL/AAXIS,INCR,30,CCLW,NEXT\nGOTO/0,10,10\nROTABL/LINEAR,AAXIS,RADIUS,10\nGOTO/15.70796,10,10\nROTABL/LINEAR,NOMORE\nGOTO/5,10,10\n";
+    let body = "ROTABL/AAXIS,ATANGL,90\nROTABL/AAXIS,INCR,30,CCLW,NEXT\nGOTO/0,10,10\nROTABL/LINEAR,AAXIS,RADIUS,10\nGOTO/15.70796,10,10\nROTABL/LINEAR,NOMORE\nGOTO/5,10,10\nFINI\n";
     let r = postp::run_with(&format!("MACHIN/FANUCM,1\nUNITS/MM\n{START}{body}"), None, None);
     postp::snapshot("rotabl.FANUCM", &r.text());
     // 15.708 mm on a 10 mm radius is 90 degrees more than the 60 where the mapping began.

@@ -31,9 +31,9 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-mod support;
+use crate::support;
 
-use support::rs274;
+use crate::support::rs274;
 
 use rs274::{Kind, Motion};
 
@@ -100,7 +100,7 @@ fn expected_moves(toolpath: &Path, post: &Post) -> (Vec<Expected>, Option<Wrap>)
         let p = |x: f64, y: f64, z: f64| Wrap::apply(&wrap, [x * factor, y * factor, z * factor]);
         match event {
             Event::Job(job) => {
-                factor = job.units.factor_to(post.info.units.unwrap_or(job.units));
+                factor = job.units.factor_to(post.output_units().unwrap_or(job.units));
                 if let Some(w) = post.options.rotary_wrap {
                     // Without a wrap diameter the runtime prints the distance unwrapped (RT015).
                     let diameter = job.wrap_diameter.filter(|d| *d > 0.0);
@@ -262,6 +262,14 @@ fn check_motion(label: &str, toolpath: &Path, post: &Post, actual: &[Motion], fa
     }
 }
 
+/// A tool table of tools 1 to 20, every diameter zero, in `dir`.
+fn zero_diameter_table(dir: &Path) -> PathBuf {
+    let table = dir.join("zero.tbl");
+    let rows: String = (1..=20).map(|t| format!("T{t} P{t} D0 Z+0.000 ;tool {t}\n")).collect();
+    std::fs::write(&table, rows).expect("the tool table");
+    table
+}
+
 /// The CIMCO corpus posts written for LinuxCNC-dialect controllers.
 const CIMCO_RS274_POSTS: &[&str] = &["linuxcnc_field.js", "mach3_field.js"];
 
@@ -280,9 +288,7 @@ fn cimco_linuxcnc_posts_read_in_rs274_with_the_toolpaths_motion() {
         return;
     };
     let dir = tempfile::tempdir().expect("a temporary folder");
-    let table = dir.path().join("zero.tbl");
-    let rows: String = (1..=20).map(|t| format!("T{t} P{t} D0 Z+0.000 ;tool {t}\n")).collect();
-    std::fs::write(&table, rows).expect("the tool table");
+    let table = zero_diameter_table(dir.path());
     let (mut checked, mut failures) = (0, Vec::new());
     for name in CIMCO_RS274_POSTS {
         let post_path = root().join("corpus/posts/cimco").join(name);
@@ -306,4 +312,40 @@ fn cimco_linuxcnc_posts_read_in_rs274_with_the_toolpaths_motion() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert_eq!(checked, 3 * CIMCO_RS274_POSTS.len(), "every post and toolpath");
     println!("rs274 read {checked} CIMCO programs with the toolpaths' motion");
+}
+
+/// The field-style CIMCO posts (`corpus/posts/cimco-styles/`, one Fanuc
+/// mill written six ways) as Node.js prints them: rs274 reads their
+/// goldens (postc does not print them all yet, `tests/cimco_styles.rs`)
+/// with the toolpaths' motion, cutter compensation read with the
+/// zero-diameter table of the test above. No postc post is involved: the
+/// programs are in the toolpaths' millimetres with three decimals, which
+/// is what an empty post says to `check_motion`.
+#[test]
+fn cimco_field_style_goldens_read_in_rs274_with_the_toolpaths_motion() {
+    let Some(rs274) = rs274::find() else {
+        println!("skipped: rs274 not found on PATH (bash .ci/run installs it from Debian's linuxcnc-uspace)");
+        return;
+    };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let table = zero_diameter_table(dir.path());
+    let (mut checked, mut failures) = (0, Vec::new());
+    for (golden, toolpath) in support::cimco::style_goldens() {
+        let name = golden.file_name().unwrap().to_string_lossy().into_owned();
+        let program = match std::fs::read_to_string(&golden) {
+            Ok(p) => p,
+            Err(e) => {
+                failures.push(format!("{name}: {e}"));
+                continue;
+            }
+        };
+        match rs274::run_with_table(&rs274, &program, &table) {
+            Ok(actual) => check_motion(&name, &toolpath, &Post::default(), &actual, &mut failures),
+            Err(e) => failures.push(format!("{name}: {e}")),
+        }
+        checked += 1;
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(checked >= 18, "only {checked} field-style goldens");
+    println!("rs274 read {checked} field-style CIMCO programs with the toolpaths' motion");
 }

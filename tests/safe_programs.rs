@@ -4,12 +4,10 @@
 //! write. The programs are read by LinuxCNC's `rs274` where it is
 //! installed.
 
-mod support;
-
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use support::rs274;
+use crate::support::rs274;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

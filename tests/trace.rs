@@ -13,9 +13,7 @@ use std::rc::Rc;
 use postc_ir::{Dialect, Span};
 use postc_runtime::{Finished, Output, RunOptions};
 
-mod support;
-
-use support::{corpus, files, lines};
+use crate::support::{corpus, files, lines};
 
 /// One traced line: part, line, the span's text (or why there is none),
 /// and whether the span is a function that runs as a script.

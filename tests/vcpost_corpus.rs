@@ -14,19 +14,17 @@
 //! its (last, or `.vcp.*`) extension and EXT the post's (see [`extension`]).
 //! Every corpus VcPost must compile without any diagnostic.
 //!
-//! `POSTC_BLESS=1 cargo test --test vcpost_corpus` rewrites the expected
+//! `POSTC_BLESS=1 cargo test --test suite vcpost_corpus` rewrites the expected
 //! files and removes those no input makes any more, as
 //! `tests/corpus_goldens.rs` does. Read every blessed file before
 //! committing it.
 
-mod support;
-
 use postc_report::Render as _;
 use std::path::{Path, PathBuf};
 
+use crate::support::{Goldens, all_files as files};
 use postc_ir::{Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
-use support::{Goldens, all_files as files};
 
 /// The APT CL files of `../shared/corpus/apt/` with a golden: a drilling
 /// file, arcs, an NX CLSF, a Creo file, an inch file, an NCL file without

@@ -24,9 +24,7 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-mod support;
-
-use support::rs274;
+use crate::support::rs274;
 
 use rs274::{Kind, Motion, axes};
 

@@ -2,19 +2,12 @@
 //! human and JSON findings, refusal of other output families.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn postc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_postc")).current_dir(root()).args(args).output().unwrap()
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
+use crate::support::{postc, said as text};
 
 #[test]
 fn a_golden_program_verifies_against_its_toolpath() {

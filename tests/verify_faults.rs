@@ -17,6 +17,8 @@ use postc_ir::{Post, Severity};
 use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
+use crate::support;
+
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
@@ -306,6 +308,52 @@ fn hand_written_faults_are_caught_at_their_line() {
     assert!(errors(&check(&program, Controller::LinuxCnc)).is_empty(), "{program}");
     // An R full circle.
     caught(&program_with(&[(8, "N80 G3 X30 Y10 R5")]), Controller::LinuxCnc, "VF023", 9);
+}
+
+/// Words and blocks longer than the controller reads (VF043): a
+/// coordinate of 309 digits (what `GOTO/1e308,5,0` posted as) under every
+/// controller; Fanuc's 8 digits a word; LinuxCNC's 252 characters a line,
+/// past which its own interpreter (`rs274`) says "Command too long"; grbl's
+/// 80 characters besides blanks and comments.
+#[test]
+fn words_and_blocks_longer_than_the_controller_reads() {
+    let huge = format!("N70 X1{} F1000", "0".repeat(308));
+    for controller in [Controller::Generic, Controller::LinuxCnc, Controller::Fanuc, Controller::Haas, Controller::Grbl]
+    {
+        caught(&program_with(&[(7, &huge)]), controller, "VF043", 8);
+    }
+    let vf043 = |program: &str, controller| check(program, controller).iter().filter(|f| f.code == "VF043").count();
+    // Fanuc and Haas: 8 digits are read, 9 are not.
+    assert_eq!(vf043(&program_with(&[(7, "N70 X30.000000 F1000")]), Controller::Fanuc), 0);
+    caught(&program_with(&[(7, "N70 X30.0000000 F1000")]), Controller::Fanuc, "VF043", 8);
+    caught(&program_with(&[(7, "N70 X30.0000000 F1000")]), Controller::Haas, "VF043", 8);
+    assert_eq!(vf043(&program_with(&[(7, "N70 X30.0000000 F1000")]), Controller::LinuxCnc), 0);
+    // LinuxCNC: a line of 252 characters is read, one of 253 is not; a
+    // carriage return before the line feed counts.
+    let line = |n: usize| format!("N70 X30 F1000 ({})", "c".repeat(n - 16));
+    assert_eq!(line(253).len(), 253);
+    assert_eq!(vf043(&program_with(&[(7, &line(252))]), Controller::LinuxCnc), 0);
+    caught(&program_with(&[(7, &line(253))]), Controller::LinuxCnc, "VF043", 8);
+    let crlf = |text: &str| program_with(&[(7, text)]).replace('\n', "\r\n");
+    assert_eq!(vf043(&crlf(&line(251)), Controller::LinuxCnc), 0);
+    caught(&crlf(&line(252)), Controller::LinuxCnc, "VF043", 8);
+    if let Some(rs274) = support::rs274::find() {
+        let run = |text: &str, end: &str| {
+            support::rs274::run(&rs274, &format!("G21 G90{end}G1 X0 F100{end}{text}{end}M2{end}"))
+        };
+        assert!(run(&line(252), "\n").is_ok(), "rs274 reads 252 characters: {:?}", run(&line(252), "\n"));
+        assert!(run(&line(251), "\r\n").is_ok(), "rs274 reads 251 characters and a CR");
+        for (text, end) in [(line(253), "\n"), (line(252), "\r\n")] {
+            let refused = run(&text, end).expect_err("rs274 refuses the line");
+            assert!(refused.contains("Command too long"), "{refused}");
+        }
+    } else {
+        println!("rs274 not found: the LinuxCNC limit is not cross-checked");
+    }
+    // grbl: the comment does not count; 81 other characters do.
+    assert_eq!(vf043(&program_with(&[(7, &line(253))]), Controller::Grbl), 0);
+    let long = format!("N70 X30 F1000 G1 {}", "Y40 ".repeat(25));
+    caught(&program_with(&[(7, &long)]), Controller::Grbl, "VF043", 8);
 }
 
 #[test]

@@ -127,7 +127,7 @@ pub const SECTIONS: &[Section] = &[
     Section {
         title: "Lints (LN)",
         prefixes: &["LN"],
-        intro: "`postc check` runs the lints of `lint/` (one rule per file in\n`lint/src/rules/`) on every post that compiles without errors, whatever\nits dialect; `--product cut2d|vcarve|aspire|cut3d|photovcarve` adds what\nthat Vectric product does not support. The last column is how many of the\n112 real Vectric posts of `../shared/corpus/vectric` each rule fires on\n(`cargo test --test lint_corpus -- --nocapture`, 2026-11-25), with\nexamples; the project's own posts lint clean.\n\n`postc check --fix FILE...` first applies the fixes that are certain and\nrewrites each post whole (a temporary file renamed over it; a Windows-1252\nfile keeps its other bytes): a section name after `begin` with exactly one\nknown section within two edits (`begin HEADR` becomes `begin HEADER`), and\na known label whose `]` is missing in an output string (`\"G0 [X\"` becomes\n`\"G0 [X]\"`). The language server offers the same fixes as quick fixes.",
+        intro: "`postc check` runs the lints of `lint/` (one rule per file in\n`lint/src/rules/`) on every post that compiles without errors, whatever\nits dialect; `--product cut2d|vcarve|aspire|cut3d|photovcarve` adds what\nthat Vectric product does not support. The last column is how many of the\n112 real Vectric posts of `../shared/corpus/vectric` each rule fires on\n(`cargo test --test suite lint_corpus -- --nocapture`, 2026-11-25), with\nexamples; the project's own posts lint clean.\n\n`postc check --fix FILE...` first applies the fixes that are certain and\nrewrites each post whole (a temporary file renamed over it; a Windows-1252\nfile keeps its other bytes): a section name after `begin` with exactly one\nknown section within two edits (`begin HEADR` becomes `begin HEADER`), and\na known label whose `]` is missing in an output string (`\"G0 [X\"` becomes\n`\"G0 [X]\"`). The language server offers the same fixes as quick fixes.",
         extra: Some((
             "real posts",
             &[
@@ -488,8 +488,9 @@ declare_codes! {
     PP018: Warning, "text outside quotes (or after the closing quote) is ignored",
         example = "begin HEADER\n\"G90\" G21\nthis is a note",
         fix = "Put output text between double quotes, and start a comment with `+` or `|`.";
-    /// `POST_BASE` names another post this one builds on, and that file cannot be read. The post
-    /// compiles without it, so the base's sections, `VAR`s and statements are missing.
+    /// `POST_BASE` names another post this one builds on, and that file cannot be read (it is not
+    /// there, it is not a regular file such as a folder or a device, or it is over 16 MiB). The
+    /// post compiles without it, so the base's sections, `VAR`s and statements are missing.
     PP019: Warning, "the `POST_BASE` file cannot be read: the post compiles without it",
         example = "POST_BASE = \"missing_base.pp\"",
         fix = "Put the base post next to this one, or correct its name.";
@@ -1153,6 +1154,18 @@ declare_codes! {
     /// it is taken as counter-clockwise.
     CL022: Warning, "TLON,GOFWD arc with no INDIRV; taken as counter-clockwise",
         fix = "Make sure the CAM system writes INDIRV before the arc.";
+    /// A record gives a coordinate, feed, spindle speed, angle, dwell or power outside the range
+    /// a machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
+    /// docs/toolpath-format.md, "Ranges"). The toolpath is refused: posting it would write a word
+    /// no controller reads, such as a 309-digit `X`.
+    CL023: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
+        example = "GOTO/1e308,5,0",
+        fix = "Correct the record; check the CAM system's units and the operation that wrote it.";
+    /// The CL file ends without FINI, the record that ends every CL file: it may have been cut
+    /// short (a copy or transfer that stopped), and the program posted from it would end early.
+    CL024: Warning, "the CL file ends without FINI: it may be cut short",
+        example = "GOTO/1,2,3",
+        fix = "Post the whole CL file; if it is whole, add FINI at its end.";
     /// `postc postp DIR` posts the CL file `DIR/cl.tap`, as the original `postp` did; there is
     /// none.
     PX001: Error, "no `DIR/cl.tap`",
@@ -1277,6 +1290,15 @@ declare_codes! {
     /// Toolpaths are text; this one is not valid UTF-8.
     TP003: Error, "the toolpath is not text (not valid UTF-8)",
         fix = "Save the toolpath as UTF-8 text.";
+    /// An event gives a coordinate, feed, spindle speed, angle, dwell or power outside the range a
+    /// machine can have (a coordinate beyond ±1 km, a negative feed, a number that is not finite;
+    /// docs/toolpath-format.md, "Ranges"). The toolpath is refused.
+    TP004: Error, "a coordinate, feed or speed out of range (beyond ±1 km, negative feed, not finite)",
+        fix = "Correct the event; check the toolpath's units.";
+    /// The toolpath ends without its `End` event: it may have been cut short (a copy or transfer
+    /// that stopped), and the program posted from it would end early.
+    TP005: Warning, "the toolpath ends without an End event: it may be cut short",
+        fix = "Post the whole toolpath; if it is whole, end it with `End`.";
     /// Every event may run at most a step budget of statements, so that a loop that never ends
     /// stops. The post ran past it; the message points at the loop.
     RT002: Error, "a post ran more than its step budget for one event (a loop that never ends); points at the loop",
@@ -1509,6 +1531,13 @@ declare_codes! {
     /// generic controller and errors for the named ones.
     VF042: Error | Warning, "a comment character the controller refuses: `(` inside a comment, `%` or `;` on Fanuc/Haas, control characters, non-ASCII on Fanuc/Haas/grbl (warnings for the generic controller)",
         fix = "Filter the comment text in the post (SUBSTITUTE in a Vectric post).";
+    /// A word or block longer than the controller reads: a number of more than 8 digits for
+    /// Fanuc and Haas (Fanuc alarm PS0003 "TOO MANY DIGITS"), a block of more than 255 characters
+    /// for LinuxCNC and the generic controller ("Command too long"), of more than 80 characters
+    /// besides blanks and comments for grbl (error 11). docs/verify.md, "Word and block length".
+    VF043: Error, "a word or block longer than the controller reads (Fanuc/Haas 8 digits, LinuxCNC 255 characters, grbl 80)",
+        example = "G1 X100000000000000000000000000000000000000 F100",
+        fix = "Check the toolpath's coordinates and the post's number format.";
     /// The post writes feed moves, but no section prints a feed rate, so the machine cuts at
     /// whatever feed was set before the program ran.
     LN001: Warning, "a G-code post writes feed moves but no section prints a feed rate",
@@ -1598,4 +1627,11 @@ declare_codes! {
     /// post cannot tell it from dead code.
     LN016: Warning, "a VcPost `Sub` or `Function` that no statement calls, that is not an event the applications raise, and that no keyword comment offers to a table or option card",
         fix = "Add the keyword comment of its role (`' #Option`, `' #Cycle`, `' #Probe`, ...) after the `Sub` line when a table or option calls it by name; otherwise call it or remove it.";
+    /// The post states its units (Vectric `UNITS`, VcPost `Postc.Units`, a section post's
+    /// `postcOptions.units`), and its text writes the units word of the other system only: `G21`
+    /// (millimetres) in a post that writes inches, or `G20` in one that writes millimetres. The
+    /// controller then reads every length 25.4 times too small or too large.
+    LN017: Warning, "the post states its units but writes only the other system's units word (`G21` in an inch post, `G20` in a millimetre post)",
+        example = "UNITS = \"INCHES\"\nbegin HEADER\n\"G21 G90\"",
+        fix = "Make the units statement and the units word agree.";
 }

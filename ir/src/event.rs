@@ -12,8 +12,10 @@
 //! The stream is expected in this order: one `Job`, then for each toolpath a
 //! `Tool` (when the tool changes or for the first toolpath), a
 //! `ToolpathStart`, its moves and other events, and an optional
-//! `ToolpathEnd`; finally an optional `End`. Readers of foreign formats (APT
-//! CL) produce the same order.
+//! `ToolpathEnd`; finally `End` (a stream without it ends the program too,
+//! with a warning that it may be cut short). Readers of foreign formats
+//! (APT CL) produce the same order. The ranges a reader accepts are in
+//! [`crate::limits`].
 
 use serde::{Deserialize, Serialize};
 
@@ -66,8 +68,9 @@ pub enum Event {
     /// `AUXFUN/8`, `OPSTOP`, `ORIGIN/54`), passed through for posts that
     /// handle it; posts that do not know the word ignore it.
     Command(Command),
-    /// The program ends (the footer follows). Optional: the end of the
-    /// stream ends the program too.
+    /// The program ends (the footer follows). The end of the stream ends
+    /// the program too, but a reader warns that a stream without `End`
+    /// may be cut short.
     End,
     /// A feed rate as the toolpath wrote it (an APT `FEDRAT` record). Moves
     /// carry their feed already; posts never see this event.

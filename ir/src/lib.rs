@@ -103,6 +103,7 @@ pub mod diagnostic;
 pub mod event;
 pub mod format;
 pub mod id;
+pub mod limits;
 pub mod post;
 pub mod quantity;
 pub mod source;

@@ -1,7 +1,18 @@
 //! Length units, and the conversion between the units a toolpath is written
 //! in and the units a post writes.
+//!
+//! A post's output units are what it states (Vectric `UNITS`, VcPost
+//! `Postc.Units`, a CIMCO section post's `postcOptions.units`, a RON post's
+//! `info.units`); a post that states none and writes a units word of one
+//! system only in its text (`G21` and no `G20`, or the reverse) writes that
+//! system ([`Post::output_units`], docs/units.md). The runtime converts the
+//! toolpath's lengths and feeds into them before the post sees an event.
 
 use serde::{Deserialize, Serialize};
+
+use crate::code::{Expr, Piece};
+use crate::post::Post;
+use crate::visit::{Visit, walk_expr};
 
 /// The unit of every length (and of every feed, per minute) in a toolpath or
 /// in a post's output.
@@ -40,5 +51,105 @@ impl Units {
             Units::Mm => "MM",
             Units::Inch => "INCHES",
         }
+    }
+}
+
+/// The units words a post's text holds: `G21` (millimetres) and `G20`
+/// (inches), as G words (not after a letter, not followed by a digit or a
+/// point), in its literal output text, its text constants (globals, code)
+/// and its scripts' source.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WrittenUnits {
+    pub mm: bool,
+    pub inch: bool,
+}
+
+impl WrittenUnits {
+    /// The one system the post writes, if it writes words of one only.
+    pub fn only(self) -> Option<Units> {
+        match (self.mm, self.inch) {
+            (true, false) => Some(Units::Mm),
+            (false, true) => Some(Units::Inch),
+            _ => None,
+        }
+    }
+
+    /// Adds the units words of `text`.
+    pub fn scan(&mut self, text: &[u8]) {
+        for (i, &b) in text.iter().enumerate() {
+            if b != b'G' && b != b'g' {
+                continue;
+            }
+            if i > 0 && text[i - 1].is_ascii_alphabetic() {
+                continue;
+            }
+            let rest = &text[i + 1..];
+            let unit = match rest {
+                [b'2', b'1', ..] => &mut self.mm,
+                [b'2', b'0', ..] => &mut self.inch,
+                _ => continue,
+            };
+            if !rest.get(2).is_some_and(|c| c.is_ascii_digit() || *c == b'.') {
+                *unit = true;
+            }
+        }
+    }
+}
+
+impl Post {
+    /// The units words the post's text holds.
+    pub fn written_units(&self) -> WrittenUnits {
+        struct Scan(WrittenUnits);
+        impl Visit for Scan {
+            fn visit_piece(&mut self, piece: &Piece) {
+                match piece {
+                    Piece::Text(bytes) => self.0.scan(bytes),
+                    Piece::Expr(e) => self.visit_expr(e),
+                    Piece::Var(_) => {}
+                }
+            }
+            fn visit_expr(&mut self, expr: &Expr) {
+                if let Expr::Text(t) = expr {
+                    self.0.scan(t.as_bytes());
+                }
+                walk_expr(self, expr);
+            }
+        }
+        let mut scan = Scan(WrittenUnits::default());
+        scan.visit_post(self);
+        for g in &self.globals {
+            scan.visit_expr(&g.initial);
+        }
+        for s in &self.scripts {
+            scan.0.scan(s.source.as_bytes());
+        }
+        scan.0
+    }
+
+    /// The units the post writes: the ones it states, else the one system
+    /// whose units word its text holds, else `None` (the toolpath's own).
+    pub fn output_units(&self) -> Option<Units> {
+        self.info.units.or_else(|| self.written_units().only())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn units_words_are_g_words() {
+        let scan = |text: &str| {
+            let mut w = WrittenUnits::default();
+            w.scan(text.as_bytes());
+            w
+        };
+        assert_eq!(scan("G90 G17 G21 G40").only(), Some(Units::Mm));
+        assert_eq!(scan("N10G20").only(), Some(Units::Inch));
+        assert_eq!(scan("g21").only(), Some(Units::Mm));
+        for text in ["G2 X1", "G210", "G21.1", "MSG21", "G1 X21", "G02"] {
+            assert_eq!(scan(text), WrittenUnits::default(), "{text}");
+        }
+        assert_eq!(scan("G20 ... G21").only(), None);
     }
 }

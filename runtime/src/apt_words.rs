@@ -125,10 +125,6 @@ impl AptDispatch {
         }
     }
 
-    fn point(eng: &Engine, x: f64, y: f64, z: f64) -> [f64; 3] {
-        [eng.machine.len(x), eng.machine.len(y), eng.machine.len(z)]
-    }
-
     fn set_xyz(&self, eng: &mut Engine, p: [f64; 3]) {
         self.num(eng, "X", p[0]);
         self.num(eng, "Y", p[1]);
@@ -177,7 +173,7 @@ impl AptDispatch {
     }
 
     fn feed_for(eng: &Engine, intent: Intent, feed: Option<f64>) -> f64 {
-        feed.map(|f| eng.machine.len(f)).unwrap_or(match intent {
+        feed.unwrap_or(match intent {
             Intent::Plunge | Intent::Retract => eng.machine.tool.plunge_feed,
             _ => eng.machine.tool.cut_feed,
         })
@@ -196,8 +192,7 @@ impl AptDispatch {
 
     fn arc(&mut self, eng: &mut Engine, a: ArcMove) -> Result<()> {
         let start = eng.machine.pos;
-        let end = Self::point(eng, a.x, a.y, a.z);
-        let centre = Self::point(eng, a.cx, a.cy, a.cz);
+        let (end, centre) = ([a.x, a.y, a.z], [a.cx, a.cy, a.cz]);
         let g = ArcGeometry::new(start, end, centre, a.dir, a.plane);
         let feed = Self::feed_for(eng, a.intent, a.feed);
         self.feed(eng, feed)?;
@@ -246,15 +241,14 @@ impl AptDispatch {
                     .at(eng.event_span, "this hole"),
             ));
         };
-        let top = Self::point(eng, x, y, z);
+        let top = [x, y, z];
         if self.cycle_called {
             return self.goto(eng, top, 1.0, None);
         }
         self.cycle_called = true;
-        let len = |v: f64| eng.machine.len(v);
-        let (depth, reference) = (len(cycle.depth), len(cycle.reference_plane));
-        let peck = cycle.peck.map(len).unwrap_or(0.0);
-        let feed = cycle.feed.map(len).unwrap_or(eng.machine.tool.plunge_feed);
+        let (depth, reference) = (cycle.depth, cycle.reference_plane);
+        let peck = cycle.peck.unwrap_or(0.0);
+        let feed = cycle.feed.unwrap_or(eng.machine.tool.plunge_feed);
         eng.machine.pos = top;
         eng.machine.pos_known = true;
         self.set_xyz(eng, [top[0], top[1], depth]);
@@ -277,8 +271,7 @@ impl AptDispatch {
     pub fn event(&mut self, eng: &mut Engine, event: Event) -> Result<()> {
         if let Event::Job(job) = event {
             if !self.started {
-                let units = eng.post.info.units;
-                eng.machine.set_job(*job, units);
+                eng.machine.set_job(*job);
             }
             return self.start(eng);
         }
@@ -302,14 +295,14 @@ impl AptDispatch {
             }
             Event::ToolpathEnd => {}
             Event::Rapid(m) => {
-                let p = Self::point(eng, m.x, m.y, m.z);
+                let p = [m.x, m.y, m.z];
                 self.set_rotary(eng, [m.a, m.b, m.c]);
                 self.num(eng, "G", 0.0);
                 self.call(eng, "RAPID", "", "")?;
                 self.goto(eng, p, 0.0, m.tool_axis)?;
             }
             Event::Feed(m) => {
-                let p = Self::point(eng, m.x, m.y, m.z);
+                let p = [m.x, m.y, m.z];
                 self.set_rotary(eng, [m.a, m.b, m.c]);
                 let feed = Self::feed_for(eng, m.intent, m.feed);
                 self.feed(eng, feed)?;

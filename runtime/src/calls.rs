@@ -41,8 +41,11 @@ pub fn run_calls<S: CallSource + ?Sized>(
     out: Output,
     mut options: RunOptions,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    let mut machine =
-        crate::machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+    let mut machine = crate::machine::MachineState::new(
+        post.output_units(),
+        post.options.spindle_speed_range,
+        post.options.rotary_wrap,
+    );
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
     (machine.default_date, machine.default_time) = crate::clock::format_utc(options.now.unwrap_or(0));

@@ -24,6 +24,8 @@
 //!   the functions whose values a call's lists give;
 //! - [`script_host`]: the trait through which functions kept as scripts
 //!   run; the host itself comes from the caller ([`RunOptions::script_host`]);
+//! - [`units`]: every event's lengths and feeds in the post's output units,
+//!   before it is dispatched;
 //! - [`lathe`]: the `lathe` option, turning events into the runtime's plane;
 //! - [`js`]: JavaScript's conversions, which the IR's builtins name;
 //! - [`output`]: the [`output::Sink`] trait the caller's sinks implement
@@ -58,6 +60,7 @@ pub mod script_host;
 pub mod sections;
 mod slots;
 pub mod trace;
+pub mod units;
 pub mod value;
 
 use postc_ir::event::FileInfo;
@@ -120,8 +123,10 @@ pub fn run<S: EventSource + ?Sized>(
         post_storage.options.arc_tolerance = tol;
         post = &post_storage;
     }
+    let output_units = post.output_units();
+    let mut conversion = units::Conversion::new(output_units);
     let mut machine =
-        machine::MachineState::new(post.info.units, post.options.spindle_speed_range, post.options.rotary_wrap);
+        machine::MachineState::new(output_units, post.options.spindle_speed_range, post.options.rotary_wrap);
     machine.date = options.date.take().unwrap_or_default();
     machine.time = options.time.take().unwrap_or_default();
     (machine.default_date, machine.default_time) = clock::format_utc(options.now.unwrap_or(0));
@@ -175,6 +180,7 @@ pub fn run<S: EventSource + ?Sized>(
             t.event = Some(events);
             t.event_span = Some(span);
         }
+        conversion.convert(&mut event);
         if lathe {
             event = lathe::turn_event(event);
         }

@@ -1,9 +1,9 @@
 //! Machine state: everything the runtime knows at a moment of the toolpath,
 //! in the post's output units, and the [`Quantity`] values posts print.
 //!
-//! Events arrive in the toolpath's units; [`MachineState`] converts lengths and
-//! feeds by one factor as they come in, so that every quantity is already in
-//! output units when a handler formats it.
+//! Events arrive already in the post's output units (the runtime converts
+//! each one before dispatch, `units.rs`), so every quantity is in output
+//! units when a handler formats it.
 //!
 //! A quantity nothing has given a value (jet power while a spindle tool
 //! cuts, the A axis before any move sets it, a spindle speed or feed of 0,
@@ -34,8 +34,6 @@ fn given(v: f64) -> f64 {
 /// The current state of the machine and the job.
 #[derive(Clone, Debug)]
 pub struct MachineState {
-    /// Toolpath units to output units.
-    pub factor: f64,
     pub output_units: Units,
     pub job: Job,
     pub tool: Tool,
@@ -94,7 +92,6 @@ impl MachineState {
     ) -> MachineState {
         let units = output_units.unwrap_or_default();
         MachineState {
-            factor: 1.0,
             output_units: units,
             job: Job::default(),
             tool: Tool::default(),
@@ -128,31 +125,13 @@ impl MachineState {
         }
     }
 
-    /// Takes the job: fixes the unit factor and converts its lengths.
-    pub fn set_job(&mut self, mut job: Job, post_units: Option<Units>) {
-        self.output_units = post_units.unwrap_or(job.units);
-        self.factor = job.units.factor_to(self.output_units);
-        let f = self.factor;
-        if let Some(m) = &mut job.material {
-            for p in [&mut m.min, &mut m.max] {
-                p.x *= f;
-                p.y *= f;
-                p.z *= f;
-            }
-        }
-        if let Some(o) = &mut job.origin {
-            o.x *= f;
-            o.y *= f;
-        }
-        if let Some(h) = &mut job.home {
-            h.x *= f;
-            h.y *= f;
-            h.z *= f;
+    /// Takes the job, already in output units (its units are the output's).
+    pub fn set_job(&mut self, job: Job) {
+        self.output_units = job.units;
+        if let Some(h) = &job.home {
             self.pos = [h.x, h.y, h.z];
             self.pos_known = true;
         }
-        job.safe_z = job.safe_z.map(|z| z * f);
-        job.wrap_diameter = job.wrap_diameter.map(|d| d * f);
         if self.file_name.is_empty() {
             self.file_name.clone_from(&job.file.name);
             self.file_dir.clone_from(&job.file.dir);
@@ -174,10 +153,7 @@ impl MachineState {
     /// what a HEADER or TOOLCHANGE that prints `[F]` means ("Feed Rate used
     /// for cutting", seed 000) and what a rapid that carries `[F]` should
     /// print before the first cut, rather than 0.
-    pub fn set_tool(&mut self, mut tool: Tool) {
-        tool.diameter *= self.factor;
-        tool.cut_feed *= self.factor;
-        tool.plunge_feed *= self.factor;
+    pub fn set_tool(&mut self, tool: Tool) {
         self.feed = tool.cut_feed;
         // The first tool has no previous one: `[TP]` prints nothing until a
         // second tool comes.
@@ -195,12 +171,6 @@ impl MachineState {
         };
         self.has_tool = true;
         self.tool = tool;
-    }
-
-    /// A length in toolpath units, in output units.
-    #[inline]
-    pub fn len(&self, v: f64) -> f64 {
-        v * self.factor
     }
 
     /// The value of a numeric quantity; [`NO_VALUE`] when nothing gave it one.
@@ -392,12 +362,12 @@ mod tests {
     #[test]
     fn the_feed_is_the_new_tools_cut_feed_until_a_move_sets_it() {
         let mut m = MachineState::new(Some(Units::Mm), None, None);
-        m.set_job(Job { units: Units::Inch, ..Job::default() }, Some(Units::Mm));
+        m.set_job(Job { units: Units::Mm, ..Job::default() });
         // No tool, no move: the feed has no value and prints nothing.
         assert!(m.number(Quantity::Feed).is_nan());
-        m.set_tool(Tool { number: 1, cut_feed: 10.0, plunge_feed: 5.0, ..Tool::default() });
-        assert!((m.number(Quantity::Feed) - 254.0).abs() < 1e-9);
-        assert!((m.number(Quantity::PlungeFeed) - 127.0).abs() < 1e-9);
+        m.set_tool(Tool { number: 1, cut_feed: 254.0, plunge_feed: 127.0, ..Tool::default() });
+        assert_eq!(m.number(Quantity::Feed), 254.0);
+        assert_eq!(m.number(Quantity::PlungeFeed), 127.0);
     }
 
     #[test]
@@ -435,7 +405,7 @@ mod tests {
         ] {
             assert!(m.number(q).is_nan(), "{q:?}");
         }
-        m.set_job(Job { home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }), ..Job::default() }, None);
+        m.set_job(Job { home: Some(postc_ir::event::Point { x: 0.0, y: 0.0, z: 20.0 }), ..Job::default() });
         m.set_tool(Tool { number: 2, ..Tool::default() });
         assert_eq!(m.number(Quantity::Z), 20.0, "the tool starts at home");
         assert_eq!(m.number(Quantity::SafeZ), 20.0, "safe Z falls back to home Z");

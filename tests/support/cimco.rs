@@ -17,14 +17,35 @@ pub fn posts() -> Vec<PathBuf> {
     super::files(&corpus().join("posts/cimco"), "js")
 }
 
+/// The field-style CIMCO posts (`corpus/posts/cimco-styles/`), sorted.
+pub fn style_posts() -> Vec<PathBuf> {
+    super::files(&corpus().join("posts/cimco-styles"), "js")
+}
+
 /// The toolpaths a post is posted over.
 pub fn toolpaths(post: &Post) -> Vec<PathBuf> {
+    if post.options.lathe { vec![corpus().join("toolpaths/cimco/lathe.ron")] } else { mill_toolpaths() }
+}
+
+/// The toolpaths a milling post is posted over.
+pub fn mill_toolpaths() -> Vec<PathBuf> {
     let t = corpus().join("toolpaths");
-    if post.options.lathe {
-        vec![t.join("cimco/lathe.ron")]
-    } else {
-        vec![t.join("cimco/mill.ron"), t.join("cimco/drill.ron"), t.join("standard.ron")]
+    vec![t.join("cimco/mill.ron"), t.join("cimco/drill.ron"), t.join("standard.ron")]
+}
+
+/// The golden of a field-style post over a toolpath: the program Node.js
+/// prints (`tests/cimco_styles.rs`).
+pub fn style_golden(post: &Path, toolpath: &Path) -> PathBuf {
+    corpus().join("expected/cimco-styles").join(format!("{}__{}.nc", stem(post), stem(toolpath)))
+}
+
+/// Every field-style golden with the toolpath it was posted from.
+pub fn style_goldens() -> Vec<(PathBuf, PathBuf)> {
+    let mut out = Vec::new();
+    for post in style_posts() {
+        out.extend(mill_toolpaths().into_iter().map(|t| (style_golden(&post, &t), t)));
     }
+    out
 }
 
 /// Posts a toolpath into memory: the whole program.

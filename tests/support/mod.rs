@@ -62,7 +62,7 @@ pub fn blessing() -> bool {
 
 /// How a failure message tells to bless.
 pub fn bless_hint(test: &str) -> String {
-    format!("If the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test {test}")
+    format!("If the new output is right, read it and bless it: POSTC_BLESS=1 cargo test --test suite {test}")
 }
 
 /// Compares `actual`, byte for byte, with the golden at `path`. When
@@ -165,6 +165,20 @@ pub fn compile(path: &Path) -> Result<Post, String> {
         return Err(format!("{} does not compile cleanly:\n{}", path.display(), list.join("\n")));
     }
     compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
+}
+
+/// Runs the `postc` binary in the repository's folder.
+pub fn postc(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_postc")).current_dir(root()).args(args).output().unwrap()
+}
+
+/// What a run of `postc` printed: standard output, then standard error.
+pub fn said(o: &std::process::Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// Posts a toolpath into memory: the parts of the program.

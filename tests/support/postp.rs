@@ -65,9 +65,12 @@ pub fn run_file(path: &Path, settings: Settings) -> Run {
     }
 }
 
-/// Posts `body` after `MACHIN/<machine>` and `UNITS/MM`.
+/// Posts `body` after `MACHIN/<machine>` and `UNITS/MM`, and before `FINI`
+/// when the body has none (a CL file ends with FINI; one without it may be
+/// cut short, CL024).
 pub fn run(machine: &str, body: &str) -> Run {
-    run_with(&format!("MACHIN/{machine}\nUNITS/MM\n{body}"), None, None)
+    let fini = if body.lines().any(|l| l.trim().eq_ignore_ascii_case("FINI")) { "" } else { "\nFINI\n" };
+    run_with(&format!("MACHIN/{machine}\nUNITS/MM\n{body}{fini}"), None, None)
 }
 
 /// Compares `text`, byte for byte, with the golden

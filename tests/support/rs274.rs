@@ -33,12 +33,23 @@ pub enum Kind {
     },
 }
 
-/// One move: its kind, its end point X Y Z A B C, and the active plane.
+/// One move: its kind, its end point X Y Z A B C (in the program's units),
+/// the active plane, and whether the program's units were inches (the last
+/// `USE_LENGTH_UNITS` before it).
 #[derive(Debug, Clone, Copy)]
 pub struct Motion {
     pub kind: Kind,
     pub end: [f64; 6],
     pub plane: Plane,
+    pub inch: bool,
+}
+
+impl Motion {
+    /// X Y Z of the end point in millimetres.
+    pub fn end_mm(&self) -> [f64; 3] {
+        let f = if self.inch { 25.4 } else { 1.0 };
+        [self.end[0] * f, self.end[1] * f, self.end[2] * f]
+    }
 }
 
 /// Axis indices of a plane's first and second axes and its normal, as
@@ -87,7 +98,7 @@ pub fn run_with_table(rs274: &Path, program: &str, table: &Path) -> Result<Vec<M
     }
     let output = output.expect("rs274 ran");
     let (stdout, stderr) = (String::from_utf8_lossy(&output.stdout), String::from_utf8_lossy(&output.stderr));
-    let (mut moves, mut complaints, mut plane) = (Vec::new(), Vec::new(), Plane::Xy);
+    let (mut moves, mut complaints, mut plane, mut inch) = (Vec::new(), Vec::new(), Plane::Xy, false);
     for line in stdout.lines().chain(stderr.lines()) {
         let line = line.trim();
         // Canonical calls read `<count> N<block or .....> CALL(args)`.
@@ -109,15 +120,21 @@ pub fn run_with_table(rs274: &Path, program: &str, table: &Path) -> Result<Vec<M
             "SELECT_PLANE" if args.contains("YZ") => plane = Plane::Yz,
             "SELECT_PLANE" if args.contains("XZ") => plane = Plane::Zx,
             "SELECT_PLANE" => plane = Plane::Xy,
+            "USE_LENGTH_UNITS" => inch = args.contains("INCHES"),
             "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" if n.len() >= 6 => {
                 let kind = if name == "STRAIGHT_TRAVERSE" { Kind::Traverse } else { Kind::Feed };
-                moves.push(Motion { kind, end: [n[0], n[1], n[2], n[3], n[4], n[5]], plane });
+                moves.push(Motion { kind, end: [n[0], n[1], n[2], n[3], n[4], n[5]], plane, inch });
             }
             "ARC_FEED" if n.len() >= 9 => {
                 let [u, v, w] = axes(plane);
                 let mut end = [0.0, 0.0, 0.0, n[6], n[7], n[8]];
                 (end[u], end[v], end[w]) = (n[0], n[1], n[5]);
-                moves.push(Motion { kind: Kind::Arc { centre: [n[2], n[3]], rotation: n[4] as i32 }, end, plane });
+                moves.push(Motion {
+                    kind: Kind::Arc { centre: [n[2], n[3]], rotation: n[4] as i32 },
+                    end,
+                    plane,
+                    inch,
+                });
             }
             _ => {}
         }

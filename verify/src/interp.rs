@@ -123,6 +123,9 @@ struct Run<'a> {
     stats: Stats,
     line_start: usize,
     line_len: usize,
+    /// The line's bytes before its line feed, carriage returns included
+    /// (LinuxCNC counts them).
+    line_bytes: usize,
     // Modal state.
     unit: f64,
     units_stated: bool,
@@ -175,6 +178,7 @@ pub fn run(
         stats: Stats::default(),
         line_start: 0,
         line_len: 0,
+        line_bytes: 0,
         unit: settings.units.map_or(1.0, |u| u.mm_per_unit()),
         units_stated: false,
         units_reported: false,
@@ -225,6 +229,10 @@ pub fn run(
         run.line_start = offset;
         offset += consumed;
         run.stats.lines += 1;
+        if buf.last() == Some(&b'\n') {
+            buf.pop();
+        }
+        run.line_bytes = buf.len();
         while matches!(buf.last(), Some(b'\n' | b'\r')) {
             buf.pop();
         }
@@ -459,9 +467,16 @@ impl Run<'_> {
             }
             return;
         }
+        self.block_length(text);
+        let word_digits = self.settings.controller.word_digits();
         self.block.clear();
         for item in items.iter() {
             let (start, end) = (item.start as usize, item.end as usize);
+            if let (Some(limit), ItemKind::Word(letter)) = (word_digits, item.kind)
+                && end - start > limit + 1
+            {
+                self.word_digits(&text[start..end], letter, limit, start, end);
+            }
             match item.kind {
                 ItemKind::Comment => self.comment(&text[start..end], start),
                 ItemKind::Delete | ItemKind::Percent => {}
@@ -514,6 +529,56 @@ impl Run<'_> {
             }
         }
         self.execute();
+    }
+
+    /// A word whose number has more digits than the controller reads
+    /// (VF043).
+    fn word_digits(&mut self, word: &[u8], letter: u8, limit: usize, start: usize, end: usize) {
+        let digits = word.iter().filter(|b| b.is_ascii_digit()).count();
+        if digits > limit {
+            let name = self.settings.controller.name();
+            let d = self.finding(
+                Severity::Error,
+                codes::VF043.code,
+                format!(
+                    "this {} word has {digits} digits; {name} reads at most {limit} (alarm \"TOO MANY DIGITS\")",
+                    letter as char
+                ),
+                start,
+                end,
+                None,
+            );
+            Self::help(
+                d,
+                "a number this long is no position or feed a machine has: check the toolpath and the post's format",
+            );
+        }
+    }
+
+    /// A block longer than the controller reads (VF043).
+    fn block_length(&mut self, text: &[u8]) {
+        let Some((limit, all_count)) = self.settings.controller.block_length() else { return };
+        let bytes = if all_count { self.line_bytes.max(text.len()) } else { text.len() };
+        if bytes <= limit {
+            return;
+        }
+        let length = if all_count { bytes } else { counted_length(text) };
+        if length > limit {
+            let name = self.settings.controller.name();
+            let what = if all_count { "characters" } else { "characters besides blanks and comments" };
+            let d = self.finding(
+                Severity::Error,
+                codes::VF043.code,
+                format!("this block has {length} {what}; {name} reads at most {limit}"),
+                limit,
+                text.len(),
+                None,
+            );
+            Self::help(
+                d,
+                "a word this long is no position or feed a machine has: check the toolpath and the post's format",
+            );
+        }
     }
 
     fn comment(&mut self, text: &[u8], start: usize) {
@@ -1503,6 +1568,24 @@ impl Run<'_> {
             self.push(d, error);
         }
     }
+}
+
+/// The characters of a block grbl keeps: blanks and comments (`( ... )`,
+/// `;` to the end) left out.
+fn counted_length(text: &[u8]) -> usize {
+    let mut in_paren = false;
+    let mut n = 0;
+    for &b in text {
+        match b {
+            b'(' => in_paren = true,
+            b')' if in_paren => in_paren = false,
+            b';' if !in_paren => break,
+            b' ' | b'\t' | b'\r' => {}
+            _ if !in_paren => n += 1,
+            _ => {}
+        }
+    }
+    n
 }
 
 /// Where the message of an `M117`/`M118` word starts (after the word).

@@ -73,6 +73,36 @@ impl Controller {
         }
     }
 
+    /// The most digits a word's number may have, for the controllers that
+    /// refuse longer numbers: Fanuc's alarm PS0003 "TOO MANY DIGITS" (an
+    /// address takes at most 8 digits: ±99999.999 mm, ±9999.9999 in), and
+    /// Haas, which follows Fanuc's word format. LinuxCNC and grbl read a
+    /// number of any length (grbl keeps its first 8 digits); their limit is
+    /// the block's ([`Controller::block_length`]).
+    pub fn word_digits(self) -> Option<usize> {
+        match self {
+            Controller::Fanuc | Controller::Haas => Some(8),
+            Controller::LinuxCnc | Controller::Grbl | Controller::Generic => None,
+        }
+    }
+
+    /// The longest block the controller reads, in characters, and whether
+    /// blanks and comments count: LinuxCNC's interpreter reads a line of
+    /// at most 252 characters, all counted, a carriage return before the
+    /// line feed too (measured with `/usr/local/bin/rs274`: 253 are
+    /// "Command too long"; its `LINELEN` is 255); grbl keeps 80
+    /// characters of a line in its buffer, blanks and comments left out
+    /// (`LINE_BUFFER_SIZE`; a longer one is error 11, "Max characters per
+    /// line exceeded"). The generic controller follows LinuxCNC, as it does
+    /// for arcs.
+    pub fn block_length(self) -> Option<(usize, bool)> {
+        match self {
+            Controller::LinuxCnc | Controller::Generic => Some((252, true)),
+            Controller::Grbl => Some((80, false)),
+            Controller::Fanuc | Controller::Haas => None,
+        }
+    }
+
     /// The highest block number the controller reads.
     pub fn block_maximum(self) -> f64 {
         match self {
@@ -146,7 +176,7 @@ impl Settings {
         Settings {
             controller,
             tolerance,
-            units: post.info.units,
+            units: post.output_units(),
             decimals,
             chord_tolerance: post.options.arc_tolerance,
             block_start: has_n.then_some(numbers.start),

@@ -35,3 +35,26 @@ fn a_base_the_loader_lacks_is_pp019() {
         assert_eq!(d.message, "cannot read the POST_BASE file posts/BASE.PP: there is no such file");
     }
 }
+
+/// A base is read only when it is a regular file of at most 16 MiB: a
+/// name that points at a folder (or a device such as `/dev/urandom`,
+/// which would be read without end) or at a file too large to be a post
+/// is PP019, and nothing of it is read.
+#[test]
+fn a_base_that_is_no_regular_file_or_too_large_is_pp019() {
+    let mut folder = MemoryLoader::new();
+    folder.insert("posts/BASE.PP/inside.pp", BASE);
+    let mut large = MemoryLoader::new();
+    large.insert("posts/BASE.PP", vec![b'+'; (16 << 20) + 1]);
+    for (files, why) in [
+        (folder, "it is not a regular file (a folder, a device or a pipe), so it is not read"),
+        (large, "it is larger than 16 MiB, more than any post"),
+    ] {
+        let mut sources = SourceMap::with_loader(Arc::new(files));
+        let (_, diagnostics) = compile(&mut sources);
+        let [d] = diagnostics.as_slice() else { panic!("{diagnostics:?}") };
+        assert_eq!(d.code, "PP019");
+        assert_eq!(d.message, format!("cannot read the POST_BASE file posts/BASE.PP: {why}"));
+        assert_eq!(sources.len(), 1, "the base was not registered");
+    }
+}

@@ -23,7 +23,7 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     if !cx.writes_gcode() {
         return;
     }
-    let mm_per_unit = match cx.post.info.units {
+    let mm_per_unit = match cx.post.output_units() {
         Some(Units::Mm) => 1.0,
         Some(Units::Inch) => 25.4,
         None => return,

@@ -14,6 +14,7 @@ mod section_never_reached;
 mod spindle_never_printed;
 mod tape_split_spindle;
 mod toolchange_without_retract;
+mod units_word;
 mod unused;
 
 use crate::Rule;
@@ -38,4 +39,5 @@ pub const ALL: &[Rule] = &[
     section_never_reached::RULE,
     global_never_assigned::RULE,
     unused::SUB,
+    units_word::RULE,
 ];

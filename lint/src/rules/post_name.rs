@@ -29,7 +29,7 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         }
         out.push(d);
     };
-    match post.info.units {
+    match post.output_units() {
         Some(Units::Inch) if lower.contains("(mm)") => say(format!("`{name}` says (mm), but the post writes inches")),
         Some(Units::Mm) if lower.contains("(inch)") => say(format!("`{name}` says (inch), but the post writes mm")),
         _ => {}

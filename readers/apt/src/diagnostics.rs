@@ -27,6 +27,8 @@ pub(crate) const FEED_PER_REV: &str = codes::CL019.code;
 pub(crate) const LONG_LINE: &str = codes::CL020.code;
 pub(crate) const IO: &str = codes::CL021.code;
 pub(crate) const NO_INDIRV: &str = codes::CL022.code;
+pub(crate) const OUT_OF_RANGE: &str = codes::CL023.code;
+pub(crate) const NO_FINI: &str = codes::CL024.code;
 
 pub(crate) fn binary(span: Span, what: &str) -> Diagnostic {
     Diagnostic::error(BINARY, format!("this is a binary file ({what}), not a text CL file"))
@@ -123,6 +125,19 @@ pub(crate) fn late_units(span: Span) -> Diagnostic {
 
 pub(crate) fn stray_end_of_path(span: Span) -> Diagnostic {
     Diagnostic::warning(STRAY_END_OF_PATH, "END-OF-PATH without a TOOL PATH before it is ignored").at(span, "ignored")
+}
+
+pub(crate) fn out_of_range(span: Span, bad: &postc_ir::limits::OutOfRange, event: &str) -> Diagnostic {
+    Diagnostic::error(OUT_OF_RANGE, format!("{}; the toolpath is refused", bad.message(event)))
+        .at(span, "this record")
+        .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
+        .help("correct the record; check the CAM system's units and the operation that wrote it")
+}
+
+pub(crate) fn no_fini(span: Span) -> Diagnostic {
+    Diagnostic::warning(NO_FINI, "the CL file ends without FINI: it may be cut short, and the program would end early")
+        .at(span, "the file ends here")
+        .help("post the whole CL file; if it is whole, end it with FINI")
 }
 
 pub(crate) fn after_fini(span: Span) -> Diagnostic {

@@ -42,7 +42,7 @@
 //! | `PPRINT`, `REMARK` | `Comment` |
 //! | `INSERT` | `Insert` |
 //! | `PARTNO` | `Command { word: "PARTNO", args: [Text] }` |
-//! | `FINI` | `End` |
+//! | `FINI` | `End`; a file that ends without it (and not right after END-OF-PATH, as NX CLSF files do) may be cut short: warning CL024 |
 //! | other post words (`AUXFUN`, `OPSTOP`, `MACHIN`, `PAINT`, ...) | `Command { word, args }` |
 //! | unknown words | warning CL005, skipped |
 //! | `$$` comments | none (Creo's `$$-> CUTTER / d` gives the tool diameter, `$$*` the product) |
@@ -54,6 +54,10 @@
 //! in a small window until the header is settled, so that `Job` comes
 //! first and a `Tool` before the `ToolpathStart` it belongs to (see
 //! `window.rs`).
+//!
+//! Every event is checked against the ranges of `postc_ir::limits` as it
+//! leaves the reader (in the job's units): one out of range is error CL023
+//! at its record, which refuses the toolpath.
 //!
 //! ## What is not CL text
 //!

@@ -11,6 +11,7 @@ use chumsky::Parser;
 use chumsky::inspector::TruncateState;
 use postc_ir::diagnostic::{Diagnostic, FileId, Span};
 use postc_ir::event::{Event, EventSource};
+use postc_ir::limits::{RangeCheck, Verdict};
 
 use crate::detect::{Content, binary_kind, sniff};
 use crate::diagnostics as diag;
@@ -55,6 +56,7 @@ pub struct AptReader<R: BufRead> {
     phase: Phase,
     warned_after_fini: bool,
     part_program: bool,
+    ranges: RangeCheck,
 }
 
 /// The text of a text record, from the bytes after its word.
@@ -103,6 +105,7 @@ impl<R: BufRead> AptReader<R> {
             phase: Phase::Start,
             warned_after_fini: false,
             part_program: false,
+            ranges: RangeCheck::new(),
         }
     }
 
@@ -148,6 +151,9 @@ impl<R: BufRead> AptReader<R> {
                 if !self.core.ended {
                     let end = self.lexer.lines_mut().offset();
                     self.core.finish(None, self.span(end, end), diags);
+                    if !self.part_program && !self.core.closed_at_end {
+                        diags.push(diag::no_fini(self.span(end, end)));
+                    }
                 }
                 self.core.flush();
                 self.phase = Phase::Done;
@@ -176,6 +182,9 @@ impl<R: BufRead> AptReader<R> {
                 LexNote::JoinedWithoutDollar { start, end } => diags.push(diag::joined_line(self.span(start, end))),
                 LexNote::EofInContinuation { at } => diags.push(diag::eof_continuation(self.span(start, at))),
             }
+        }
+        if kind != RawKind::Comment {
+            self.core.closed_at_end = false;
         }
         match kind {
             RawKind::Statement => self.statement(span, diags),
@@ -280,8 +289,11 @@ impl<R: BufRead> AptReader<R> {
 impl<R: BufRead> EventSource for AptReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         loop {
-            if let Some(event) = self.core.out.pop_front() {
-                return Some(event);
+            if let Some((event, span)) = self.core.out.front() {
+                if let Verdict::Refuse(bad) = self.ranges.check(event) {
+                    diagnostics.push(diag::out_of_range(*span, &bad, event.name()));
+                }
+                return self.core.out.pop_front();
             }
             match self.phase {
                 Phase::Start => self.start(diagnostics),

@@ -81,6 +81,9 @@ pub(crate) struct Core {
     pub warned_per_rev: bool,
     /// FINI was read.
     pub ended: bool,
+    /// The last record read closed a toolpath (END-OF-PATH, OPFEATEND):
+    /// a file that ends there is whole without FINI (NX CLSF files).
+    pub closed_at_end: bool,
 }
 
 /// How the reader goes on after a record.
@@ -122,6 +125,7 @@ impl Core {
             warned_nurbs: false,
             warned_per_rev: false,
             ended: false,
+            closed_at_end: false,
         }
     }
 
@@ -302,6 +306,7 @@ impl Core {
     }
 
     pub fn end_toolpath(&mut self, span: Span, diags: &mut Vec<Diagnostic>) {
+        self.closed_at_end = true;
         if self.toolpath != Toolpath::Explicit {
             diags.push(diag::stray_end_of_path(span));
         }

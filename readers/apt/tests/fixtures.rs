@@ -118,7 +118,7 @@ fn cycles_of_every_vendor() {
     assert_eq!(read.codes(), ["CL006", "CL006"]);
     assert_eq!(read.count("DrillPoint"), 2);
     let read = snapshot("cycle_open.cl");
-    assert_eq!(read.codes(), ["CL013", "CL013"]);
+    assert_eq!(read.codes(), ["CL013", "CL013", "CL024"], "the file ends without FINI too");
     assert_eq!(read.count("DrillEnd"), 2);
 }
 
@@ -140,7 +140,7 @@ fn every_error_is_reported_and_reading_goes_on() {
     }
     assert_eq!(read.events.last().map(|e| e.0.name()), Some("End"));
     let read = snapshot("eof_continuation.cl");
-    assert_eq!(read.codes(), ["CL018", "CL004"], "the incomplete GOTO is reported too");
+    assert_eq!(read.codes(), ["CL018", "CL004", "CL024"], "the incomplete GOTO and the missing FINI are reported too");
     assert_eq!(read.count("Feed"), 0, "{:?}", read.events);
 }
 
@@ -154,11 +154,11 @@ fn part_programs_give_one_error() {
     let read = common::read_text("GOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
     assert_eq!(read.codes(), ["CL002"]);
     // An `=` inside a record's arguments is a syntax error, not a part program.
-    let read = common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\n");
+    let read = common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\nFINI\n");
     assert_eq!(read.codes(), ["CL003"]);
     assert_eq!(read.count("Feed"), 2);
     // CATIA's drive arc without its tool-position word still reads.
-    let read = common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\n");
+    let read = common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\nFINI\n");
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Arc"), 1);
 }
@@ -204,4 +204,55 @@ fn a_utf8_byte_order_mark_is_skipped() {
     let read = common::read_bytes("bom.cl", b"\xEF\xBB\xBFGOTO/1,2,3\nFINI\n");
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Feed"), 1);
+}
+
+/// Coordinates, feeds and speeds no machine can reach are refused, with an
+/// error at the record (CL023): `GOTO/1e308,5,0` would post as a 309-digit
+/// X. The limits are in the file's units; a feed every later move carries
+/// is reported once, at its first move.
+#[test]
+fn values_out_of_range_are_refused_at_their_record() {
+    let read = common::read_text("UNITS/MM\nLOADTL/1\nFEDRAT/100,MMPM\nGOTO/1e308,5,0\nGOTO/1,2,3\nFINI\n");
+    assert_eq!(read.codes(), ["CL023"]);
+    let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
+    assert_eq!((json.line, json.column), (Some(4), Some(1)));
+    assert!(
+        read.diagnostics[0].message.starts_with("Feed x is 1e308: a coordinate or length must be within ±1000000 mm")
+    );
+    assert_eq!(read.count("Feed"), 2, "the events keep their order; the error refuses the toolpath");
+    let read = common::read_text("UNITS/INCHES\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
+    assert_eq!(read.codes(), ["CL023"], "40,000 inches is over 1 km; 39,000 is not");
+    let read =
+        common::read_text("UNITS/MM\nFEDRAT/5e7,MMPM\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nSPINDL/RPM,2e6\nFINI\n");
+    let lines: Vec<_> = read
+        .diagnostics
+        .iter()
+        .map(|d| postc_report::Render::to_json(&read.sources, d, "test.cl").line.unwrap_or(0))
+        .collect();
+    assert_eq!(read.codes(), ["CL023", "CL023", "CL023"], "{:?}", read.diagnostics);
+    assert_eq!(lines, [2, 3, 6], "the FEDRAT, the first move that carries it, the spindle speed");
+    // A drilling cycle out of range is an error, and its holes stay inside it.
+    let cl = "UNITS/MM\nTOOL PATH/D,TOOL,T1\nCYCLE/DRILL,RAPTO,3.0,FEDTO,5e9,MMPM,100.0\nGOTO/0,0,0\nGOTO/10,0,0\nCYCLE/OFF\nEND-OF-PATH\nFINI\n";
+    let read = common::read_text(cl);
+    assert_eq!(read.codes(), ["CL023"], "{:?}", read.diagnostics);
+    common::check_order("cycle out of range", &read.events, false);
+    assert_eq!((read.count("DrillCycle"), read.count("DrillPoint"), read.count("DrillEnd")), (1, 2, 1));
+}
+
+/// A CL file that ends without FINI may be cut short (CL024): a copy that
+/// stopped inside a GOTO posts as a whole program otherwise. An NX CLSF
+/// file, which ends with END-OF-PATH and writes no FINI (the nine of the
+/// corpus's `HumMan__CLSFProcessor`), is whole.
+#[test]
+fn a_file_without_fini_may_be_cut_short() {
+    // Cut inside the last number of a GOTO: the record still reads.
+    let read = common::read_text("UNITS/MM\nGOTO/0,0,0\nGOTO/7.0000000000, -2.9062500000, 3.24");
+    assert_eq!(read.codes(), ["CL024"]);
+    let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
+    assert_eq!(json.line, Some(3));
+    assert!(common::read_text("UNITS/MM\nGOTO/0,0,0\nFINI\n").diagnostics.is_empty());
+    let nx = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\n$$ end\n";
+    assert!(common::read_text(nx).diagnostics.is_empty());
+    let cut = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\nTOOL PATH/B,TOOL,T1\nGOTO/1,0,0\n";
+    assert_eq!(common::read_text(cut).codes(), ["CL024"]);
 }

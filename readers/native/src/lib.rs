@@ -15,6 +15,7 @@ use std::io::{BufRead, BufReader};
 use postc_ir::source::SourceReader;
 use std::path::Path;
 
+use postc_ir::limits::{RangeCheck, Verdict};
 use postc_ir::{Diagnostic, Event, EventSource, FileId, SourceMap, Span};
 
 /// Native stream syntaxes.
@@ -33,6 +34,11 @@ pub struct NativeReader<R> {
     offset: usize,
     done: bool,
     ron: ron::Options,
+    ranges: RangeCheck,
+    /// An `End` event was read.
+    ended: bool,
+    /// The end of the stream was reported.
+    finished: bool,
 }
 
 /// Opens a native toolpath file; the syntax comes from the extension
@@ -56,7 +62,18 @@ impl<R: BufRead> NativeReader<R> {
         let ron = ron::Options::default().with_default_extension(
             ron::extensions::Extensions::IMPLICIT_SOME | ron::extensions::Extensions::UNWRAP_VARIANT_NEWTYPES,
         );
-        NativeReader { input, syntax, file, line: Vec::new(), offset: 0, done: false, ron }
+        NativeReader {
+            input,
+            syntax,
+            file,
+            line: Vec::new(),
+            offset: 0,
+            done: false,
+            ron,
+            ranges: RangeCheck::new(),
+            ended: false,
+            finished: false,
+        }
     }
 
     fn parse_line(&mut self, start: usize, text: &str) -> Result<Event, Diagnostic> {
@@ -83,8 +100,48 @@ impl<R: BufRead> NativeReader<R> {
     }
 }
 
+/// Events are checked against the ranges of `postc_ir::limits` (TP004:
+/// an event out of range is an error, so the toolpath is refused; the
+/// event is still given out, so that the stream keeps its order), and a
+/// stream that ends without its `End` event is said to be perhaps cut
+/// short (TP005).
 impl<R: BufRead> EventSource for NativeReader<R> {
     fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+        // The event is looked at where it was read and returned as it
+        // is: moving it out and back costs two copies an event.
+        let next = self.next_read(diagnostics);
+        let Some((event, span)) = &next else {
+            if !self.ended && !self.finished {
+                self.finished = true;
+                let end = Span::new(self.file, self.offset, self.offset);
+                diagnostics.push(
+                    Diagnostic::warning(
+                        codes::TP005,
+                        "the toolpath ends without an End event: it may be cut short, and the program would end early",
+                    )
+                    .at(end, "the toolpath ends here")
+                    .help("post the whole toolpath; if it is whole, end it with `End`"),
+                );
+            }
+            return None;
+        };
+        if let Verdict::Refuse(bad) = self.ranges.check(event) {
+            diagnostics.push(
+                Diagnostic::error(codes::TP004, format!("{}; the toolpath is refused", bad.message(event.name())))
+                    .at(*span, "this event")
+                    .note("postc refuses numbers no machine can reach, so that no program carries a word no controller reads (docs/toolpath-format.md, \"Ranges\")")
+                    .help("correct the event; check the toolpath's units"),
+            );
+        }
+        self.ended |= matches!(event, Event::End);
+        next
+    }
+}
+
+impl<R: BufRead> NativeReader<R> {
+    /// The next event as read, before its ranges are checked.
+    #[inline(always)]
+    fn next_read(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
         while !self.done {
             // A move line whole in the input's buffer is read where it is,
             // not copied out first.
@@ -178,16 +235,58 @@ mod tests {
     use super::*;
     use postc_ir::event::{FeedMove, Move};
 
+    /// The events of `text` as read, before ranges and the end are checked:
+    /// these tests read fragments of toolpaths, and doubles of any size.
     fn read(text: &str, syntax: Option<Syntax>) -> (Vec<Event>, Vec<Diagnostic>) {
         let mut sources = SourceMap::new();
         let id = sources.add("t", text);
         let mut reader = NativeReader::new(text.as_bytes(), syntax, id);
         let mut diags = Vec::new();
         let mut events = Vec::new();
-        while let Some((e, _)) = reader.next_event(&mut diags) {
+        while let Some((e, _)) = reader.next_read(&mut diags) {
             events.push(e);
         }
         (events, diags)
+    }
+
+    /// The events of `text` as a reader gives them out, with their checks.
+    fn read_checked(text: &str) -> (Vec<Event>, Vec<(&'static str, usize)>) {
+        let mut reader = NativeReader::new(text.as_bytes(), None, FileId(0));
+        let (mut events, mut diags) = (Vec::new(), Vec::new());
+        while let Some((e, _)) = reader.next_event(&mut diags) {
+            events.push(e);
+        }
+        let line = |d: &Diagnostic| {
+            let at = d.primary_span().map_or(0, |s| s.start);
+            text[..at].matches('\n').count() + 1
+        };
+        (events, diags.iter().map(|d| (d.code, line(d))).collect())
+    }
+
+    /// Coordinates, feeds and speeds no machine can reach are refused at
+    /// their line (TP004), in the job's units, in both syntaxes; a feed
+    /// repeated unchanged is reported once.
+    #[test]
+    fn values_out_of_range_are_refused_at_their_line() {
+        let ron = "Job(units: Mm)\nRapid(x: 1e308, y: 5, z: 0)\nFeed(x: 1, y: 2, z: 3, feed: -1)\nFeed(x: 2, y: 2, z: 3, feed: -1)\nSpindleOn(speed: 2e6)\nRapid(x: 1, y: 2, z: 3)\nEnd\n";
+        let (events, diags) = read_checked(ron);
+        assert_eq!(diags, [("TP004", 2), ("TP004", 3), ("TP004", 5)]);
+        assert_eq!(events.len(), 7, "the events keep their order; the errors refuse the toolpath");
+        let json = "{\"Job\":{\"units\":\"Inch\"}}\n{\"Rapid\":{\"x\":39000,\"y\":0,\"z\":0}}\n{\"Rapid\":{\"x\":40000,\"y\":0,\"z\":0}}\n\"End\"\n";
+        let (events, diags) = read_checked(json);
+        assert_eq!(diags, [("TP004", 3)], "40,000 inches is over 1 km; 39,000 is not");
+        assert_eq!(events.len(), 4);
+    }
+
+    /// A toolpath without its `End` may be cut short (TP005), at its end;
+    /// one with it is whole.
+    #[test]
+    fn a_toolpath_without_end_may_be_cut_short() {
+        let whole = "{\"Job\":{}}\n{\"Rapid\":{\"x\":0,\"y\":0,\"z\":5}}\n\"End\"\n";
+        assert_eq!(read_checked(whole).1, []);
+        let cut = "{\"Job\":{}}\n{\"Rapid\":{\"x\":0,\"y\":0,\"z\":5}}\n{\"Feed\":{\"x\":1,\"y\":0,\"z\":5}}\n";
+        assert_eq!(read_checked(cut).1, [("TP005", 4)]);
+        assert_eq!(read_checked("Job()\nRapid(x: 0, y: 0, z: 5)").1, [("TP005", 2)]);
     }
 
     #[test]
@@ -211,7 +310,7 @@ mod tests {
         let read_with = |capacity: usize| {
             let mut reader = NativeReader::new(BufReader::with_capacity(capacity, text.as_bytes()), None, FileId(0));
             let (mut found, mut diags) = (Vec::new(), Vec::new());
-            while let Some(e) = reader.next_event(&mut diags) {
+            while let Some(e) = reader.next_read(&mut diags) {
                 found.push(e);
             }
             (found, diags.iter().map(|d| (d.code, d.labels.first().map(|l| l.span))).collect::<Vec<_>>())

@@ -14,10 +14,10 @@ use crate::geometry::ArcGeometry;
 impl SectionDispatch {
     pub(super) fn arc(&mut self, eng: &mut Engine, a: &ArcMove) -> Result<()> {
         let start = eng.machine.pos;
-        let end = Self::point(eng, a.x, a.y, a.z);
-        let centre = Self::point(eng, a.cx, a.cy, a.cz);
+        let end = [a.x, a.y, a.z];
+        let centre = [a.cx, a.cy, a.cz];
         let geometry = ArcGeometry::new(start, end, centre, a.dir, a.plane);
-        let feed = a.feed.map(|f| eng.machine.len(f));
+        let feed = a.feed;
         let options = &eng.post.options;
         let unit = eng.machine.output_units.factor_to(postc_ir::Units::Mm).recip();
         if options.min_arc_radius.is_some_and(|min| geometry.radius < min) {
@@ -47,7 +47,7 @@ impl SectionDispatch {
 
     /// The section an arc prints through, or `None` to linearize it.
     fn arc_section(&self, eng: &Engine, g: &ArcGeometry, a: &ArcMove) -> Option<(Family, Section)> {
-        let feed = Self::feed_for(eng, a.intent, a.feed.map(|f| eng.machine.len(f)));
+        let feed = Self::feed_for(eng, a.intent, a.feed);
         let first = |fam: Family| self.family != fam || self.last_feed != Some(feed);
         let cw = a.dir == ArcDir::Cw;
         let flat = if cw {

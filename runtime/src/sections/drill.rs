@@ -12,7 +12,7 @@ use crate::engine::Engine;
 impl SectionDispatch {
     /// One hole: through DRILL_POINT, or as moves when the post has no drilling sections.
     pub(super) fn drill_point(&mut self, eng: &mut Engine, p: DrillPoint) -> Result<()> {
-        let at = Self::point(eng, p.x, p.y, p.z);
+        let at = [p.x, p.y, p.z];
         if eng.has(Section::DrillPoint) {
             eng.machine.pos = at;
             eng.machine.pos_known = true;
@@ -25,10 +25,8 @@ impl SectionDispatch {
                     .at(eng.event_span, "this hole"),
             ));
         };
-        let factor = eng.machine.factor;
-        let len = |v: f64| v * factor;
-        let (clear, reference, depth) = (len(cycle.retract_plane), len(cycle.reference_plane), len(cycle.depth));
-        let feed = cycle.feed.map(len);
+        let (clear, reference, depth) = (cycle.retract_plane, cycle.reference_plane, cycle.depth);
+        let feed = cycle.feed;
         let pos = eng.machine.pos;
         if pos[2] < clear {
             self.rapid_to(eng, [pos[0], pos[1], clear])?;
@@ -37,8 +35,7 @@ impl SectionDispatch {
         if reference < clear {
             self.rapid_to(eng, [at[0], at[1], reference])?;
         }
-        let mut peck =
-            cycle.peck.map(len).filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
+        let mut peck = cycle.peck.filter(|p| *p > 0.0 && matches!(cycle.kind, DrillKind::Deep | DrillKind::ChipBreak));
         if let Some(p) = peck
             && (reference - depth) / p > f64::from(MAX_PECKS)
         {

@@ -158,8 +158,7 @@ impl SectionDispatch {
                             .help("give the job a `wrap_diameter`"),
                         );
                     }
-                    let units = eng.post.info.units;
-                    eng.machine.set_job((**job).clone(), units);
+                    eng.machine.set_job((**job).clone());
                 }
             }
             Event::Tool(tool) => {
@@ -367,10 +366,6 @@ impl SectionDispatch {
         self.last_feed = None;
     }
 
-    fn point(eng: &Engine, x: f64, y: f64, z: f64) -> [f64; 3] {
-        [eng.machine.len(x), eng.machine.len(y), eng.machine.len(z)]
-    }
-
     fn set_rotary(eng: &mut Engine, a: Option<f64>, b: Option<f64>, c: Option<f64>) {
         for (slot, v) in [a, b, c].into_iter().enumerate() {
             if let Some(v) = v {
@@ -380,9 +375,8 @@ impl SectionDispatch {
     }
 
     fn rapid(&mut self, eng: &mut Engine, m: &Move) -> Result<()> {
-        let target = Self::point(eng, m.x, m.y, m.z);
         Self::set_rotary(eng, m.a, m.b, m.c);
-        self.rapid_to(eng, target)
+        self.rapid_to(eng, [m.x, m.y, m.z])
     }
 
     fn rapid_to(&mut self, eng: &mut Engine, target: [f64; 3]) -> Result<()> {
@@ -410,10 +404,8 @@ impl SectionDispatch {
     }
 
     fn feed(&mut self, eng: &mut Engine, m: &FeedMove) -> Result<()> {
-        let target = Self::point(eng, m.x, m.y, m.z);
         Self::set_rotary(eng, m.a, m.b, m.c);
-        let feed = m.feed.map(|f| eng.machine.len(f));
-        self.feed_to(eng, target, m.intent, feed)
+        self.feed_to(eng, [m.x, m.y, m.z], m.intent, m.feed)
     }
 
     /// The feed for a move: its own, or the tool's by intent.

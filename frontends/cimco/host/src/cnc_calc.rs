@@ -314,24 +314,23 @@ fn name_and_longhand(st: &State, list: &str) -> (String, bool) {
 fn drill_header(st: &State) -> Dynamic {
     let o = JsObj::new(ObjKind::Plain);
     let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
-    let f = st.ctx.factor;
     let (name, longhand) = name_and_longhand(st, names::MILL_DRILLING_FIELDS);
-    let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
-    let peck = c.peck.filter(|p| *p > 0.0).map_or(0.0, |p| p * f);
+    let feed = c.feed.unwrap_or(st.ctx.plunge_feed);
+    let peck = c.peck.filter(|p| *p > 0.0).unwrap_or(0.0);
     let dwell = c.dwell.filter(|d| *d > 0.0);
     let set = |k: &str, v: Dynamic| o.set(k, v);
     let b = Dynamic::from_bool;
     set("name", text(name));
     set("isLonghand", b(longhand));
-    set("retractPlane", num(c.retract_plane * f));
+    set("retractPlane", num(c.retract_plane));
     // Seed 002: "the absolute reference plane. If either the safe distance
     // or end depth is given as relative coordinates, they are relative to
     // this plane" -- the top of the holes; safeDistance is the R plane.
-    set("referencePlane", num(c.surface.unwrap_or(c.reference_plane) * f));
+    set("referencePlane", num(c.surface.unwrap_or(c.reference_plane)));
     set("safeDistanceIsAbsolute", b(true));
-    set("safeDistance", num(c.reference_plane * f));
+    set("safeDistance", num(c.reference_plane));
     set("endDepthIsAbsolute", b(true));
-    set("endDepth", num(c.depth * f));
+    set("endDepth", num(c.depth));
     set("firstDepth", num(peck));
     set("firstFeedrateFactor", num(1.0));
     set("degressionType", num(0.0));
@@ -346,7 +345,7 @@ fn drill_header(st: &State) -> Dynamic {
     set("topDwelling", num(0.0));
     set("useBottomDwelling", b(dwell.is_some()));
     set("bottomDwelling", num(dwell.unwrap_or(0.0)));
-    set("pitch", num(c.pitch.map_or(0.0, |p| p * f)));
+    set("pitch", num(c.pitch.unwrap_or(0.0)));
     set("useTappingSpeed", b(false));
     set("tappingSpeed", num(st.ctx.spindle));
     set("useRetractSpeed", b(false));
@@ -359,11 +358,10 @@ fn drill_header(st: &State) -> Dynamic {
 fn turn_drill(st: &State) -> Dynamic {
     let o = JsObj::new(ObjKind::Plain);
     let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
-    let f = st.ctx.factor;
     let (name, longhand) = name_and_longhand(st, names::TURN_DRILLING_FIELDS);
-    let feed = c.feed.map_or(st.ctx.plunge_feed, |v| v * f);
+    let feed = c.feed.unwrap_or(st.ctx.plunge_feed);
     let pecking = matches!(c.kind, DrillKind::Deep | DrillKind::ChipBreak) && c.peck.is_some_and(|p| p > 0.0);
-    let peck = if pecking { c.peck.unwrap_or(0.0) * f } else { 0.0 };
+    let peck = if pecking { c.peck.unwrap_or(0.0) } else { 0.0 };
     let dwell = c.dwell.filter(|d| *d > 0.0);
     let set = |ks: &[&str], v: Dynamic| ks.iter().for_each(|k| o.set(k, v.clone()));
     let b = Dynamic::from_bool;
@@ -371,14 +369,14 @@ fn turn_drill(st: &State) -> Dynamic {
     set(&["isLonghand"], b(longhand));
     // The hole's top: the turned toolpath keeps the lathe's Z in X.
     set(&["startDepth"], num(if st.ctx.lathe { st.ctx.pos[0] } else { st.ctx.pos[2] }));
-    set(&["endDepth"], num(c.depth * f));
-    set(&["safeDistance"], num(c.reference_plane * f));
-    set(&["retractDistance"], num(c.retract_plane * f));
+    set(&["endDepth"], num(c.depth));
+    set(&["safeDistance"], num(c.reference_plane));
+    set(&["retractDistance"], num(c.retract_plane));
     set(&["usePlungingFeedrate"], b(true));
     set(&["plungingFeedrate"], num(feed));
     set(&["useRetractFeedrate"], b(false));
     set(&["retractFeedrate"], num(feed));
-    set(&["pitch", "Pitch"], num(c.pitch.map_or(0.0, |p| p * f)));
+    set(&["pitch", "Pitch"], num(c.pitch.unwrap_or(0.0)));
     set(&["usePecking", "UsePecking"], b(pecking));
     set(&["firstPeckDepth"], num(peck));
     set(&["subsequentPecksDepths", "subsequentPeckDepths"], num(peck));

@@ -51,7 +51,6 @@ pub(crate) struct State {
 pub(crate) struct Context {
     pub feed: f64,
     pub feed_per_rev: bool,
-    pub factor: f64,
     pub plunge_feed: f64,
     pub spindle: f64,
     pub tool_diameter: f64,
@@ -90,7 +89,7 @@ impl Compiled {
             modal: post.variables.iter().map(runtime::is_modal).collect(),
             var_formats: post.variables.iter().map(|v| v.format.raw()).collect(),
             functions: Default::default(),
-            ctx: Context { lathe: post.options.lathe, factor: 1.0, ..Context::default() },
+            ctx: Context { lathe: post.options.lathe, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),
             feed_var: post.variables.iter().position(|v| v.name == host_names::FEED_VAR).map(|i| i as u16),
             feed_rev_var: post.variables.iter().position(|v| v.name == host_names::FEED_REV_VAR).map(|i| i as u16),
@@ -145,7 +144,6 @@ impl Compiled {
             let m = &eng.machine;
             st.ctx.feed = m.feed;
             st.ctx.feed_per_rev = m.toolpath.feed_per_rev;
-            st.ctx.factor = m.factor;
             st.ctx.plunge_feed = m.tool.plunge_feed;
             st.ctx.spindle = m.spindle_speed;
             st.ctx.tool_diameter = m.tool.diameter;

@@ -2,7 +2,9 @@
 //! apply first. This module reads the chain of bases (each one decoded,
 //! registered in the source map and parsed), stopping with a warning when a
 //! base cannot be read, when the chain loops back, or when it is deeper than
-//! [`MAX_DEPTH`]. Bases are read through the source map's
+//! [`MAX_DEPTH`]. A base is read only when it is a regular file of at most
+//! [`MAX_BASE_BYTES`]: a name such as `/dev/urandom` or `/dev/zero` would
+//! otherwise be read without end. Bases are read through the source map's
 //! [`SourceLoader`](postc_ir::SourceLoader) (the file system for the command
 //! line, memory for tests and the language server): the frontend opens no
 //! file itself.
@@ -19,6 +21,10 @@ use crate::parser::parse;
 
 /// The most bases a chain may have.
 pub const MAX_DEPTH: usize = 8;
+
+/// The largest base file read (16 MiB): the largest post of the corpus is
+/// under 100 KiB.
+pub const MAX_BASE_BYTES: u64 = 16 << 20;
 
 /// One parsed file of the chain.
 pub struct Loaded {
@@ -113,22 +119,18 @@ pub fn load_chain(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mu
             );
             break;
         }
-        match sources.loader().read(&base) {
+        match read_base(sources.loader(), &base) {
             Ok(bytes) => {
                 seen.push(canonical);
                 let loaded = load(&base, &bytes, sources, diags);
                 chain.push(loaded);
             }
-            Err(error) => {
-                let why = match error.kind() {
-                    std::io::ErrorKind::NotFound => "there is no such file",
-                    std::io::ErrorKind::PermissionDenied => "permission denied",
-                    _ => "the file cannot be read",
-                };
+            Err(why) => {
+                let label = if why == NO_SUCH_FILE { "base post not found" } else { "base post not read" };
                 diags.push(
                     Code::MissingBase
                         .diag(format!("cannot read the POST_BASE file {}: {why}", base.display()))
-                        .at(at, "base post not found")
+                        .at(at, label)
                         .note(
                             "the post compiles without its base: sections, VARs and statements of the base are missing",
                         )
@@ -140,4 +142,31 @@ pub fn load_chain(path: &Path, bytes: &[u8], sources: &mut SourceMap, diags: &mu
     }
     chain.reverse();
     chain
+}
+
+const NO_SUCH_FILE: &str = "there is no such file";
+
+/// The bytes of a base post, or why it is not read: only a regular file
+/// (not a folder, device or pipe) of at most [`MAX_BASE_BYTES`] is read,
+/// and never more than that many bytes, so the work stays bounded by the
+/// size of real files whatever the name points at.
+fn read_base(loader: &dyn SourceLoader, path: &Path) -> Result<Vec<u8>, String> {
+    if !loader.exists(path) {
+        return Err(NO_SUCH_FILE.into());
+    }
+    if !loader.is_file(path) {
+        return Err("it is not a regular file (a folder, a device or a pipe), so it is not read".into());
+    }
+    let bytes = loader.read_at(path, 0, MAX_BASE_BYTES + 1).map_err(|error| {
+        match error.kind() {
+            std::io::ErrorKind::NotFound => NO_SUCH_FILE,
+            std::io::ErrorKind::PermissionDenied => "permission denied",
+            _ => "the file cannot be read",
+        }
+        .to_string()
+    })?;
+    if bytes.len() as u64 > MAX_BASE_BYTES {
+        return Err(format!("it is larger than {} MiB, more than any post", MAX_BASE_BYTES >> 20));
+    }
+    Ok(bytes)
 }

@@ -9,7 +9,7 @@ use std::collections::HashMap;
 use postc_ir::post::{BlockNumbers, VarId};
 use postc_ir::{
     CommentTarget, Diagnostic, Dialect, Dispatch, FormatId, Handler, HandlerKey, NumberFormat, OutputOptions, Piece,
-    Post, PostInfo, Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, ValueSource, Variable,
+    Post, PostInfo, Quantity, Script, ScriptId, ScriptLanguage, Span, Stmt, Units, ValueSource, Variable,
 };
 
 use crate::defaults::default_format;
@@ -26,14 +26,15 @@ const DEFAULT_BLOCK_NUMBERS: BlockNumbers = BlockNumbers { start: 0.0, increment
 /// diagnostics about the whole post point.
 pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnostic>) -> Post {
     let mut post = Post { info: info(model, source), options: options(model, diags), ..Post::default() };
-    if model.global(GlobalName::Units).is_none() && !model.has_post_base {
+    let no_units = (model.global(GlobalName::Units).is_none() && !model.has_post_base).then(|| {
         diags.push(
             Code::NoUnits
                 .diag("this post has no UNITS statement: it writes the toolpath's own units")
                 .at(model.global(GlobalName::PostName).map_or(anchor, |g| g.span), "no UNITS in this post")
                 .help("add UNITS = \"MM\" or UNITS = \"INCHES\""),
         );
-    }
+        diags.len() - 1
+    });
     let mut vars = Variables::default();
     for def in &model.vars {
         let id = vars.add(
@@ -77,6 +78,16 @@ pub fn emit(model: &Model, source: &str, anchor: Span, diags: &mut Vec<Diagnosti
         post.add_comment(CommentTarget::Handler(HandlerKey::Section(section.section)), section.doc.clone());
     }
     crate::lower::lint::coarse_arc_words(&post, &vars, diags);
+    // A post that writes G21 (or G20) and no other units word writes that
+    // system (docs/units.md): the warning says which.
+    if let Some(d) = no_units.and_then(|at| diags.get_mut(at))
+        && let Some(units) = post.output_units()
+    {
+        let (word, name) = if units == Units::Mm { ("G21", "millimetres") } else { ("G20", "inches") };
+        d.message = format!(
+            "this post has no UNITS statement: it writes {word}, so its output is in {name} (toolpaths in other units are converted)"
+        );
+    }
     post
 }
 

@@ -1,0 +1,72 @@
+//! LN017: the post states its units and writes the other system's units
+//! word: `UNITS = "INCHES"` and a header that says `G21`. Every length the
+//! controller reads is then 25.4 times off. A post that states no units
+//! writes the system of the one units word it holds (docs/units.md), so
+//! only a post that states them can contradict itself.
+
+use postc_ir::codes;
+use postc_ir::units::WrittenUnits;
+use postc_ir::{Diagnostic, Piece, Stmt, Units};
+
+use crate::{Context, Options, Rule};
+
+pub const RULE: Rule = Rule { code: codes::LN017.code, name: "units-word-contradicts-units", check };
+
+fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
+    let post = cx.post;
+    let Some(stated) = post.info.units else { return };
+    let Some(written) = post.written_units().only().filter(|w| *w != stated) else { return };
+    let (word, said, wrote) = match stated {
+        Units::Inch => ("G21", "inches", "millimetres"),
+        Units::Mm => ("G20", "millimetres", "inches"),
+    };
+    let mut d = Diagnostic::warning(
+        RULE.code,
+        format!("the post writes {said}, but its text says {word} ({wrote}): the controller would read every length 25.4 times off"),
+    )
+    .help("make the units statement and the units word agree");
+    // The first output line that writes the word, else the post's name.
+    let line = post.handlers.iter().flat_map(|h| &h.body).find_map(|s| match s {
+        Stmt::Line { pieces, span: Some(span) } => pieces
+            .iter()
+            .any(|p| {
+                let Piece::Text(t) = p else { return false };
+                let mut w = WrittenUnits::default();
+                w.scan(t);
+                w.only() == Some(written)
+            })
+            .then_some(*span),
+        _ => None,
+    });
+    if let Some(span) = line.or(post.info.span) {
+        d = d.at(span, format!("{word} here"));
+    }
+    out.push(d);
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::tests::lint_vectric;
+
+    /// The header of `Marlin_in_with_arcs_and_fan_control.pp`, a real post:
+    /// `UNITS = "INCHES"` and `G21`.
+    #[test]
+    fn fires_on_an_inch_post_that_writes_g21() {
+        let found = lint_vectric("UNITS = \"INCHES\"\nbegin HEADER\n\"G90\"\n\"G21\"\nbegin FEED_MOVE\n\"G1[X][F]\"\n");
+        let d = found.iter().find(|d| d.code == "LN017").unwrap_or_else(|| panic!("{found:?}"));
+        assert!(d.message.starts_with("the post writes inches, but its text says G21"), "{}", d.message);
+    }
+
+    #[test]
+    fn quiet_when_the_words_agree_or_both_are_written() {
+        for post in [
+            "UNITS = \"MM\"\nbegin HEADER\n\"G21\"\nbegin FEED_MOVE\n\"G1[X][F]\"\n",
+            "UNITS = \"INCHES\"\nbegin HEADER\n\"G20\"\nbegin FEED_MOVE\n\"G1[X][F]\"\n",
+            "UNITS = \"INCHES\"\nbegin HEADER\n\"(G21 is metric, G20 is inch)\"\n\"G20\"\nbegin FEED_MOVE\n\"G1[X][F]\"\n",
+            "begin HEADER\n\"G21\"\nbegin FEED_MOVE\n\"G1[X][F]\"\n",
+        ] {
+            let found = lint_vectric(post);
+            assert!(!found.iter().any(|d| d.code == "LN017"), "{post}: {found:?}");
+        }
+    }
+}

@@ -1,0 +1,53 @@
+//! The one test binary of the `postc` package: every file in `tests/` is a
+//! module of it, so the whole product links once for its tests (one link of
+//! the CLI and every crate, not one per file). `cargo test --test suite NAME`
+//! runs the tests whose path holds NAME, for example
+//! `cargo test --test suite vcarve_real`.
+
+mod many_errors;
+mod support;
+
+mod apt_corpus;
+mod architecture;
+mod check_scaling;
+mod cimco_fidelity;
+mod cimco_goldens;
+mod cimco_inspect;
+mod cimco_native;
+mod cimco_node;
+mod cimco_runtime;
+mod cimco_styles;
+mod convert;
+mod corpus_goldens;
+mod diagnostic_codes;
+mod diagnostic_levels;
+mod docs;
+mod exact_arcs;
+mod fuzz;
+mod jsonl_fidelity;
+mod lint_corpus;
+mod lsp;
+mod plot;
+mod post_budgets;
+mod postp_machines;
+mod postp_robustness;
+mod postp_words;
+mod prepare;
+mod real_posts;
+mod robustness;
+mod rs274;
+mod safe_output;
+mod safe_programs;
+mod toolpath_limits;
+mod trace;
+mod units;
+mod vcarve_real;
+mod vcpost_apps;
+mod vcpost_corpus;
+mod vcpost_rs274;
+mod vectric_fidelity;
+mod vectric_vendor;
+mod verify_cli;
+mod verify_corpus;
+mod verify_faults;
+mod verify_postp;
