@@ -195,7 +195,10 @@ pub enum Expr {
     /// posts (CNC-Calc's drilling data, Fusion's `getParameter`), by name:
     /// the runtime asks the run's host, which the edge picks by the
     /// post's dialect.
-    Host { name: String, args: Vec<Expr> },
+    Host {
+        name: String,
+        args: Vec<Expr>,
+    },
 }
 
 /// Unary operators.

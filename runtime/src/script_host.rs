@@ -36,12 +36,7 @@ pub trait ScriptHost {
     /// Calls function `name` of the host's API, which native code names
     /// (`Expr::Host`): the data a dialect's engine hands posts that no
     /// quantity carries (CNC-Calc's drilling header).
-    fn host_call(
-        &mut self,
-        _engine: &mut Engine<'_>,
-        name: &str,
-        _args: Vec<Value>,
-    ) -> Result<Value, Box<Diagnostic>> {
+    fn host_call(&mut self, _engine: &mut Engine<'_>, name: &str, _args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
         Err(Box::new(Diagnostic::error("RT005", format!("the post's host has no function `{name}`"))))
     }
 }

@@ -582,6 +582,7 @@ impl Printer<'_> {
                 method(self.expr(&inner[0])?, m, vec![])
             }
             (Builtin::Len, [x]) => member(self.expr(x)?, "length"),
+            (Builtin::Keys, [x]) => method(js(ExprKind::Ident("Object".into())), "keys", vec![self.expr(x)?]),
             (Builtin::ToFixed, [x, d]) => {
                 let (x, d) = (self.expr(x)?, self.expr(d)?);
                 method(x, "toFixed", vec![d])

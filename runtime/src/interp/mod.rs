@@ -205,8 +205,12 @@ impl Engine<'_> {
                     self.finite(*span)?;
                 }
                 Stmt::Write(e) => {
+                    // An entry point that returns nothing (`undefined`)
+                    // writes nothing, as CNC-Calc does.
                     let v = self.eval(e, frame)?;
-                    self.write_blocks(&v.to_text());
+                    if !matches!(v, Value::Undefined) {
+                        self.write_blocks(&v.to_text());
+                    }
                 }
                 Stmt::Return(e) => {
                     let v = match e {
@@ -1071,6 +1075,7 @@ impl Engine<'_> {
                 // small): the stack grows on the heap when it runs low.
                 let result = match stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)) {
                     Ok(Flow::Return(v)) => Ok(v),
+                    Ok(_) if runnable.starts_undefined => Ok(Value::Undefined),
                     Ok(_) => Ok(Value::Null),
                     Err(e) => Err(e),
                 };

@@ -123,12 +123,27 @@ pub(crate) fn set_member(value: &Value, key: &Value, v: Value) -> Result<()> {
 /// The names `for (k in value)` walks.
 pub(crate) fn keys(value: &Value) -> Value {
     let names: Vec<Value> = match value {
-        Value::Object(o) => o.borrow().keys.iter().cloned().map(Value::Text).collect(),
+        Value::Object(o) => {
+            // ES2015 property order: array indices first, ascending, then
+            // the other names in the order they were made.
+            let o = o.borrow();
+            let mut indices: Vec<(u32, &Text)> =
+                o.keys.iter().filter_map(|k| array_index(k.as_str()).map(|i| (i, k))).collect();
+            indices.sort_by_key(|(i, _)| *i);
+            let names = o.keys.iter().filter(|k| array_index(k.as_str()).is_none());
+            indices.into_iter().map(|(_, k)| k).chain(names).cloned().map(Value::Text).collect()
+        }
         Value::Array(items) => (0..items.borrow().len()).map(|i| Value::text(&i.to_string())).collect(),
         Value::Text(t) => (0..t.chars().count()).map(|i| Value::text(&i.to_string())).collect(),
         _ => Vec::new(),
     };
     Value::array(names)
+}
+
+/// The array index a property name is (`"2"`, not `"02"` or `"-1"`).
+fn array_index(name: &str) -> Option<u32> {
+    let i: u32 = name.parse().ok()?;
+    (i != u32::MAX && i.to_string() == name).then_some(i)
 }
 
 impl Engine<'_> {

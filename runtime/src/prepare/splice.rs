@@ -201,7 +201,9 @@ mod tests {
                 },
                 Stmt::Assign(Place::Global(GlobalId::new(0)), local(0)),
                 Stmt::Return(Some(local(0))),
-            ]), starts_undefined: false, uses_arguments: false
+            ]),
+            starts_undefined: false,
+            uses_arguments: false,
         }
     }
 
@@ -246,12 +248,16 @@ mod tests {
             body: Body::Native(vec![
                 Stmt::Eval(Expr::Call(FunctionId::new(0), vec![])),
                 Stmt::Return(Some(Expr::Number(1.0))),
-            ]), starts_undefined: false, uses_arguments: false
+            ]),
+            starts_undefined: false,
+            uses_arguments: false,
         };
         let loops = Function {
             params: 0,
             slots: 0,
-            body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None, step: vec![] }]), starts_undefined: false, uses_arguments: false
+            body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None, step: vec![] }]),
+            starts_undefined: false,
+            uses_arguments: false,
         };
         let mut body =
             vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
@@ -270,7 +276,13 @@ mod tests {
 
     #[test]
     fn falling_off_the_end_returns_null_and_locals_start_null() {
-        let f = Function { params: 0, slots: 1, body: Body::Native(vec![Stmt::Eval(local(0))]), starts_undefined: false, uses_arguments: false };
+        let f = Function {
+            params: 0,
+            slots: 1,
+            body: Body::Native(vec![Stmt::Eval(local(0))]),
+            starts_undefined: false,
+            uses_arguments: false,
+        };
         let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![]))];
         small_functions(&[f], &mut body);
         let want = vec![

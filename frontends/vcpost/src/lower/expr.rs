@@ -245,7 +245,9 @@ impl Lowerer<'_> {
             body: Body::Native(vec![IrStmt::Return(Some(IrExpr::Number(0.0)))]),
             span: None,
             why_script: None,
-            source: Vec::new(), uses_arguments: false, starts_undefined: false
+            source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         });
         self.host_functions.insert(canonical.to_string(), id);
         Some(id)

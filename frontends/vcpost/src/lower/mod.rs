@@ -200,7 +200,9 @@ impl Lowerer<'_> {
                 body: Body::Native(Vec::new()),
                 span: Some(p.header),
                 why_script: None,
-                source: Vec::new(), uses_arguments: false, starts_undefined: false
+                source: Vec::new(),
+                uses_arguments: false,
+                starts_undefined: false,
             });
             let key = p.name.key();
             if !crate::token::is_valid_name(&p.name.text) {

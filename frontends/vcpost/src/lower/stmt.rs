@@ -72,7 +72,9 @@ impl Lowerer<'_> {
                 body: Body::Native(body),
                 span: Some(p.header),
                 why_script: None,
-                source: Vec::new(), uses_arguments: false, starts_undefined: false
+                source: Vec::new(),
+                uses_arguments: false,
+                starts_undefined: false,
             };
         }
     }
