@@ -745,7 +745,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn store(&mut self, t: &Target, v: Ir, pre: &mut Vec<IrStmt>) -> Ir {
         match t {
             Target::Place(p) => {
-                pre.push(IrStmt::Assign(p.clone(), v));
+                pre.push(IrStmt::Assign(*p, v));
                 place_value(p)
             }
             Target::Member(o, k) => {
