@@ -138,9 +138,20 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
         }
     }
     if let Some(Ok((general, general_layout))) = general {
-        // Every function lowers whole: no script, one form of every value.
-        functions = general;
-        layout = general_layout;
+        // Every function has a general form. Where the shaped form of a
+        // function is native and takes and returns plain values, it stays
+        // (it runs faster); the others take their general form. A shaped
+        // function that hands an object back through hidden globals
+        // (`native::aggregates`) has callers that expect that, so then the
+        // whole post takes the general form.
+        let returns_aggregate = layout.returns.values().any(|r| r.is_ok());
+        if returns_aggregate {
+            functions = general;
+            layout = general_layout;
+        } else {
+            functions = mixed(&model, functions, general);
+        }
+        layout.reshaped.extend(model.scopes.top_fns.iter().copied());
         keep_source(program, &model, &setup, &layout, text, &mut functions);
         post.handlers = handlers(&model, &layout, post.options.lathe, &functions);
         post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
@@ -245,6 +256,67 @@ fn general_post(
         }
     }
     Ok((functions, layout))
+}
+
+/// The shaped functions, with the general form of each top-level function
+/// that is a script or reads `arguments` (its general form takes any
+/// number of arguments; the shaped forms for each number stay for shaped
+/// callers), of `__postc_init` when it is a script, and of the bridges;
+/// the general form's closures come last.
+fn mixed(model: &Model, mut shaped: Vec<Function>, general: Vec<Function>) -> Vec<Function> {
+    let tops = model.scopes.top_fns.len();
+    // The general form's functions after the bridges are its closures.
+    let closures_from =
+        general.iter().rposition(|f| GLUE.iter().any(|g| g.0 == f.name)).map_or(general.len(), |i| i + 1);
+    let first_closure = shaped.len();
+    struct Renumber(usize, usize);
+    impl postc_ir::visit::VisitMut for Renumber {
+        fn visit_expr_mut(&mut self, e: &mut Expr) {
+            if let Expr::Call(f, _) | Expr::Closure { function: f, .. } = e
+                && f.index() >= self.0
+            {
+                *f = FunctionId::new((f.index() - self.0 + self.1) as u16);
+            }
+            postc_ir::visit::walk_expr_mut(self, e);
+        }
+    }
+    let mut renumber = Renumber(closures_from, first_closure);
+    let mut general: Vec<Function> = general
+        .into_iter()
+        .map(|mut f| {
+            if let Body::Native(b) = &mut f.body {
+                for s in b.iter_mut() {
+                    postc_ir::visit::VisitMut::visit_stmt_mut(&mut renumber, s);
+                }
+            }
+            f
+        })
+        .collect();
+    let closures = general.split_off(closures_from);
+    for (i, g) in general.into_iter().enumerate() {
+        let takes_general = if i < tops {
+            matches!(shaped[i].body, Body::Script(_)) || model.scopes.funcs[model.scopes.top_fns[i]].uses_arguments
+        } else {
+            matches!(shaped[i].body, Body::Script(_)) || GLUE.iter().any(|gl| gl.0 == g.name)
+        };
+        if takes_general {
+            shaped[i] = g;
+        }
+    }
+    // A shaped form for some number of arguments that runs the script
+    // (`specialization`) calls the general form instead.
+    for f in shaped.iter_mut().skip(tops) {
+        if matches!(f.body, Body::Script(_))
+            && let Some(&base) = model.scopes.top_fn_names.get(&f.name)
+        {
+            let args = (0..f.params.len()).map(|k| Expr::Local(LocalId::new(k as u16))).collect();
+            f.body = Body::Native(vec![Stmt::Return(Some(Expr::Call(FunctionId::new(base as u16), args)))]);
+            f.slots = f.params.len() as u16;
+            f.why_script = None;
+        }
+    }
+    shaped.extend(closures);
+    shaped
 }
 
 /// postc's `getFeedrate(movement)` for a post that has none: nothing for
