@@ -46,6 +46,10 @@ fn post_output(js: &str) -> String {
     run(&post).unwrap_or_else(|d| panic!("{d:?}"))
 }
 
+/// A function with a regular expression: the general lowering has no form
+/// for it, so the post keeps the shaped lowering and its Rhai scripts.
+const KEEPS_SCRIPTS: &str = "function keepsScripts(t) { return t.replace(/x/g, \"\"); }\n";
+
 #[test]
 fn formats_trim_pad_sign_and_scale() {
     let out = post_output(
@@ -74,10 +78,11 @@ fn modal_memory_is_shared_by_native_code_and_scripts() {
         var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 1}));
         var seen = [];
         function onLinear(x, y, z, m) { return "L" + xOutput.format(x) + "\n"; }
-        // Objects make this one a script.
+        // Objects make this one a script, with the regular expression below.
         function onClose() { seen.push(1); return "C" + xOutput.format(3) + "|" + xOutput.getLast() + "\n"; }
     "#;
-    let (post, diags, _) = compile(js);
+    let js = format!("{js}{KEEPS_SCRIPTS}");
+    let (post, diags, _) = compile(&js);
     assert!(diags.is_empty(), "{diags:?}");
     let kind = |name: &str| post.functions.iter().find(|f| f.name == name).map(|f| matches!(f.body, Body::Native(_)));
     assert_eq!(kind("onLinear"), Some(true));
@@ -89,7 +94,8 @@ fn modal_memory_is_shared_by_native_code_and_scripts() {
 #[test]
 fn script_errors_point_at_the_javascript() {
     let js = "var linebreak = \"\\n\";\nvar o = null;\nfunction onOpen() {\n    return \"O\" + o.name;\n}\nfunction onLinear(x, y, z, m) { return \"\"; }\n";
-    let (post, _, sources) = compile(js);
+    let js = format!("{js}{KEEPS_SCRIPTS}");
+    let (post, _, sources) = compile(&js);
     let d = run(&post).expect_err("the post fails");
     let d = d.iter().find(|d| d.code == "RT023").expect("an RT023 error");
     let span = d.primary_span().expect("a span");
@@ -256,6 +262,14 @@ fn formatting_a_value_that_is_not_a_number_stops_at_its_line() {
             false,
         ),
     ];
+    // The cases that use objects run three ways: natively as the general
+    // lowering makes them, and as scripts when a regular expression keeps
+    // the post on Rhai.
+    let cases = cases.into_iter().flat_map(|(body, line, native)| {
+        let general = (!native).then(|| (body.to_string(), line, true));
+        let script = (!native).then(|| (format!("{body}\n{KEEPS_SCRIPTS}"), line, false));
+        std::iter::once((body.to_string(), line, native)).filter(move |_| native).chain(general).chain(script)
+    });
     for (body, line, native) in cases {
         let js = format!(
             "var linebreak = \"\\n\";\nvar f = createFormat({{decimals: 3}});\nvar g = createVariable({{prefix: \"G\"}}, f);\n{body}\n"

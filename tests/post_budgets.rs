@@ -10,8 +10,12 @@ use std::time::{Duration, Instant};
 
 const NATIVE_JS: &str = "var linebreak = \"\\n\";\nfunction onOpen() { return \"%\\n\"; }\nfunction onLinear(x, y, z, feed) {\n  var s = \"x\";\n  while (true) { s = s + s; }\n  return \"G1\\n\";\n}\n";
 
-/// An object table makes `onLinear` a script (run by Rhai).
-const SCRIPT_JS: &str = "var linebreak = \"\\n\";\nvar seen = {count: 0};\nfunction onOpen() { return \"%\\n\"; }\nfunction onLinear(x, y, z, feed) {\n  var s = \"x\";\n  while (true) { s = s + s; seen.count = s.length; }\n  return \"G1\\n\";\n}\n";
+/// An object table makes `onLinear` a script (run by Rhai): the regular
+/// expression keeps the post off the general lowering.
+const SCRIPT_JS: &str = "var linebreak = \"\\n\";\nvar seen = {count: 0};\nfunction onOpen() { return \"%\\n\"; }\nfunction onLinear(x, y, z, feed) {\n  var s = \"x\";\n  while (true) { s = s + s; seen.count = s.length; }\n  return \"G1\\n\";\n}\nfunction keepsScripts(t) { return t.replace(/x/g, \"\"); }\n";
+
+/// The same post lowered whole (no regular expression): native objects.
+const GENERAL_JS: &str = "var linebreak = \"\\n\";\nvar seen = {count: 0};\nfunction onOpen() { return \"%\\n\"; }\nfunction onLinear(x, y, z, feed) {\n  var s = \"x\";\n  while (true) { s = s + s; seen.count = s.length; }\n  return \"G1\\n\";\n}\n";
 
 const GROW_VCPOST: &str =
     "Sub GOTO\n  Dim S\n  S = \"x\"\n  Do While True\n    S = S & S\n  Loop\n  Out \"<N> G1<X>\"\nEnd Sub\n";
@@ -60,6 +64,12 @@ fn native_cimco_text_doubling_stops_at_its_loop() {
 fn scripted_cimco_text_doubling_stops_at_its_loop() {
     let err = post_fails("double_script.js", SCRIPT_JS);
     assert!(err.contains("error[RT031]") && err.contains("double_script.js:6:3"), "{err}");
+}
+
+#[test]
+fn cimco_text_doubling_with_objects_stops_at_its_loop() {
+    let err = post_fails("double_general.js", GENERAL_JS);
+    assert!(err.contains("error[RT031]") && err.contains("double_general.js:6:"), "{err}");
 }
 
 #[test]

@@ -82,11 +82,30 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
 /// runs (none, or only Lua, which is kept and not run). Everything that
 /// runs a post passes this in [`postc_runtime::RunOptions::script_host`].
 pub fn script_host(post: &Post) -> Option<postc_runtime::script_host::ScriptHostFactory> {
-    if post.scripts.iter().any(|s| s.language == postc_ir::ScriptLanguage::Rhai) {
+    if post.scripts.iter().any(|s| s.language == postc_ir::ScriptLanguage::Rhai)
+        || (post.info.dialect == Dialect::Cimco && calls_host(post))
+    {
         Some(postc_cimco_host::compile)
     } else {
         None
     }
+}
+
+/// Whether the post's native code calls its host's API (`Expr::Host`:
+/// CNC-Calc's drilling data and compensation side).
+fn calls_host(post: &Post) -> bool {
+    struct Finds(bool);
+    impl postc_ir::visit::Visit for Finds {
+        fn visit_expr(&mut self, expr: &postc_ir::Expr) {
+            if matches!(expr, postc_ir::Expr::Host { .. }) {
+                self.0 = true;
+            }
+            postc_ir::visit::walk_expr(self, expr);
+        }
+    }
+    let mut f = Finds(false);
+    postc_ir::visit::walk_post(&mut f, post);
+    f.0
 }
 
 /// The options of a run of `post` with nothing overridden: the defaults,

@@ -42,7 +42,15 @@ pub enum Stmt {
     If { branches: Vec<(Expr, Vec<Stmt>)>, otherwise: Vec<Stmt> },
     /// A loop; the runtime stops it with a diagnostic at `span` when the
     /// post's step budget runs out.
-    While { cond: Expr, body: Vec<Stmt>, span: Option<Span> },
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+        span: Option<Span>,
+        /// Runs after each pass through `body`, `continue` included,
+        /// before `cond` is tested again (a `for` loop's update).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        step: Vec<Stmt>,
+    },
     /// Leave the innermost loop.
     Break,
     /// Next iteration of the innermost loop.
@@ -55,6 +63,23 @@ pub enum Stmt {
     /// Make a variable forget what it printed last, so that the next value
     /// prints whatever it is (CIMCO/HSM `xOutput.reset()`).
     Forget(VarId),
+    /// `object[key] = value`: sets a property of an object, an element of
+    /// an array (growing it, as JavaScript does), or nothing for other
+    /// values.
+    SetMember { object: Expr, key: Expr, value: Expr },
+    /// `throw value`: leaves every function up to the innermost `try`;
+    /// with none, the post stops with an error at `span`.
+    Throw {
+        value: Expr,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
+    },
+    /// `try { body } catch (local) { handler } finally { last }`: a
+    /// `throw` (or a run-time error of the post's code) in `body` runs
+    /// `handler` with the thrown value in `local`; `last` runs however the
+    /// two end. Step budgets, nesting limits and text budgets are not
+    /// caught.
+    Try { body: Vec<Stmt>, catch: Option<(LocalId, Vec<Stmt>)>, finally: Vec<Stmt> },
     /// Where the text a handler writes next comes from: a CIMCO entry
     /// point's `return` statement, placed before it. It does nothing when
     /// the post runs; `--trace` reports the blocks the handler writes after
@@ -92,8 +117,11 @@ pub enum Expr {
     Number(f64),
     Text(String),
     Bool(bool),
-    /// No value (JavaScript `null` and `undefined`).
+    /// No value: JavaScript's `null` (and BASIC's empty value).
     Null,
+    /// JavaScript's `undefined`: what a variable holds before it is
+    /// given a value, a missing argument, a missing property.
+    Undefined,
     /// A value the runtime knows (position, feed, tool name, ...), in the
     /// post's units.
     Quantity(Quantity),
@@ -131,6 +159,46 @@ pub enum Expr {
     Call(FunctionId, Vec<Expr>),
     /// Call a built-in function.
     Builtin(Builtin, Vec<Expr>),
+    /// `[a, b, c]`: a new array.
+    Array(Vec<Expr>),
+    /// `{k: v, ...}`: a new object, its properties in this order.
+    Object(Vec<(String, Expr)>),
+    /// `value[key]` (`value.key`): a property of an object, an element or
+    /// the `length` of an array or a text; `undefined` when there is none.
+    Member(Box<Expr>, Box<Expr>),
+    /// `object.method(args)`: the function the object holds under that
+    /// name, called with `this` the object; or a built-in method of an
+    /// array, a text or a number (`push`, `join`, `indexOf`, `substring`,
+    /// `toFixed`, ...).
+    Invoke {
+        object: Box<Expr>,
+        method: String,
+        args: Vec<Expr>,
+    },
+    /// A post function as a value. The function's first parameters take
+    /// `captures`, the values it closes over, when the value is made (a
+    /// closure that captures nothing it or its maker changes later); the
+    /// caller's arguments fill the rest.
+    Closure {
+        function: FunctionId,
+        captures: Vec<Expr>,
+    },
+    /// Calls a function value with `args` (`this` undefined).
+    CallValue(Box<Expr>, Vec<Expr>),
+    /// The object a method was called on (`undefined` elsewhere).
+    This,
+    /// The arguments the function was called with, as an array
+    /// (JavaScript's `arguments`); the function says it reads them
+    /// ([`crate::Function::uses_arguments`]).
+    Arguments,
+    /// A function of the post's host, the API its dialect's engine gives
+    /// posts (CNC-Calc's drilling data, Fusion's `getParameter`), by name:
+    /// the runtime asks the run's host, which the edge picks by the
+    /// post's dialect.
+    Host {
+        name: String,
+        args: Vec<Expr>,
+    },
 }
 
 /// Unary operators.
@@ -257,4 +325,7 @@ pub enum Builtin {
     /// end; a missing or null end is the end of the text. Indices count
     /// characters.
     Substring,
+    /// The names `for (k in value)` walks: an object's properties in
+    /// their order, an array's or a text's indices, as texts.
+    Keys,
 }

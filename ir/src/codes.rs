@@ -1388,6 +1388,15 @@ declare_codes! {
     /// before the post's own, a toolpath's end) are not reported.
     RT035: Warning, "the toolpath changes how the tool cuts (compensation, coolant, spindle speed) and the post cannot write it",
         fix = "Add the handler to the post, or post with a post that has it.";
+    /// The post threw a value (`throw`) that no `try` caught: it stops there, as a JavaScript
+    /// engine stops; the message is what it threw.
+    RT036: Error, "the post threw an error no `try` caught (points at the `throw`)",
+        fix = "Read the message: the post stops on purpose (an unknown cycle, a missing tool); give the toolpath what it needs, or correct the post.";
+    /// A JavaScript type error in the post's code: a property of `undefined` or `null`, a call of
+    /// what is not a function, a method a value does not have. A `try` catches it; uncaught, the
+    /// post stops at the function that ran into it.
+    RT037: Error, "a JavaScript type error: a property of undefined, a call of what is not a function, a method a value lacks",
+        fix = "Correct the post where the message says: check the value before using it.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), or a post driven by APT words.
     CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), or a post driven by APT words",

@@ -430,6 +430,15 @@ pub struct Function {
     /// `CV002` there), since the text means nothing in its dialect.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub source: Vec<SourceText>,
+    /// The function reads `arguments` ([`crate::Expr::Arguments`]): the
+    /// runtime keeps the arguments of its calls.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub uses_arguments: bool,
+    /// What a parameter the caller did not pass, and a local before it is
+    /// given a value, hold: `null` (BASIC's empty value; the CIMCO native
+    /// tier's stand-in for both), or JavaScript's `undefined`.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub starts_undefined: bool,
 }
 
 /// A piece of a post as written in its dialect (see [`Function::source`]).

@@ -216,6 +216,16 @@ impl Visit for Ids<'_> {
             Expr::Var(id) | Expr::Previous(id) | Expr::FormatVar { var: id, .. } => self.var(*id),
             Expr::Format { format, .. } => self.check("format", usize::from(*format), self.post.formats.len()),
             Expr::Call(f, _) => self.check("function", usize::from(*f), self.post.functions.len()),
+            Expr::Closure { function, captures } => match self.post.functions.get(function.index()) {
+                None => self.check("function", function.index(), self.post.functions.len()),
+                Some(f) if f.params.len() < captures.len() => self.bad(format!(
+                    "a closure of `{}` captures {} values and the function has {} parameters",
+                    f.name,
+                    captures.len(),
+                    f.params.len()
+                )),
+                Some(_) => {}
+            },
             Expr::Global(g) => self.check("global", usize::from(*g), self.post.globals.len()),
             _ => {}
         }

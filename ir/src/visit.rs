@@ -54,9 +54,23 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
             }
             otherwise.iter().for_each(|s| v.visit_stmt(s));
         }
-        Stmt::While { cond, body, .. } => {
+        Stmt::While { cond, body, step, .. } => {
             v.visit_expr(cond);
             body.iter().for_each(|s| v.visit_stmt(s));
+            step.iter().for_each(|s| v.visit_stmt(s));
+        }
+        Stmt::SetMember { object, key, value } => {
+            v.visit_expr(object);
+            v.visit_expr(key);
+            v.visit_expr(value);
+        }
+        Stmt::Throw { value, .. } => v.visit_expr(value),
+        Stmt::Try { body, catch, finally } => {
+            body.iter().for_each(|s| v.visit_stmt(s));
+            if let Some((_, handler)) = catch {
+                handler.iter().for_each(|s| v.visit_stmt(s));
+            }
+            finally.iter().for_each(|s| v.visit_stmt(s));
         }
         Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
@@ -80,11 +94,26 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
             v.visit_expr(a);
             v.visit_expr(b);
         }
-        Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter().for_each(|a| v.visit_expr(a)),
+        Expr::Call(_, args) | Expr::Builtin(_, args) | Expr::Array(args) => args.iter().for_each(|a| v.visit_expr(a)),
+        Expr::Closure { captures, .. } | Expr::Host { args: captures, .. } => {
+            captures.iter().for_each(|a| v.visit_expr(a))
+        }
+        Expr::Object(props) => props.iter().for_each(|(_, a)| v.visit_expr(a)),
+        Expr::Member(object, key) => {
+            v.visit_expr(object);
+            v.visit_expr(key);
+        }
+        Expr::Invoke { object, args, .. } | Expr::CallValue(object, args) => {
+            v.visit_expr(object);
+            args.iter().for_each(|a| v.visit_expr(a));
+        }
         Expr::Number(_)
         | Expr::Text(_)
         | Expr::Bool(_)
         | Expr::Null
+        | Expr::Undefined
+        | Expr::This
+        | Expr::Arguments
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)
@@ -141,9 +170,23 @@ pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
             }
             otherwise.iter_mut().for_each(|s| v.visit_stmt_mut(s));
         }
-        Stmt::While { cond, body, .. } => {
+        Stmt::While { cond, body, step, .. } => {
             v.visit_expr_mut(cond);
             body.iter_mut().for_each(|s| v.visit_stmt_mut(s));
+            step.iter_mut().for_each(|s| v.visit_stmt_mut(s));
+        }
+        Stmt::SetMember { object, key, value } => {
+            v.visit_expr_mut(object);
+            v.visit_expr_mut(key);
+            v.visit_expr_mut(value);
+        }
+        Stmt::Throw { value, .. } => v.visit_expr_mut(value),
+        Stmt::Try { body, catch, finally } => {
+            body.iter_mut().for_each(|s| v.visit_stmt_mut(s));
+            if let Some((_, handler)) = catch {
+                handler.iter_mut().for_each(|s| v.visit_stmt_mut(s));
+            }
+            finally.iter_mut().for_each(|s| v.visit_stmt_mut(s));
         }
         Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
     }
@@ -161,15 +204,57 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
             v.visit_expr_mut(a);
             v.visit_expr_mut(b);
         }
-        Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(|a| v.visit_expr_mut(a)),
+        Expr::Call(_, args) | Expr::Builtin(_, args) | Expr::Array(args) => {
+            args.iter_mut().for_each(|a| v.visit_expr_mut(a))
+        }
+        Expr::Closure { captures, .. } | Expr::Host { args: captures, .. } => {
+            captures.iter_mut().for_each(|a| v.visit_expr_mut(a))
+        }
+        Expr::Object(props) => props.iter_mut().for_each(|(_, a)| v.visit_expr_mut(a)),
+        Expr::Member(object, key) => {
+            v.visit_expr_mut(object);
+            v.visit_expr_mut(key);
+        }
+        Expr::Invoke { object, args, .. } | Expr::CallValue(object, args) => {
+            v.visit_expr_mut(object);
+            args.iter_mut().for_each(|a| v.visit_expr_mut(a));
+        }
         Expr::Number(_)
         | Expr::Text(_)
         | Expr::Bool(_)
         | Expr::Null
+        | Expr::Undefined
+        | Expr::This
+        | Expr::Arguments
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)
         | Expr::Var(_)
         | Expr::Previous(_) => {}
     }
+}
+
+/// Calls `f` on every local a statement names, where it reads one
+/// (`Expr::Local`) and where it stores one (`Place::Local`, the value a
+/// `catch` takes), in order, through nested statements and expressions:
+/// the one use/def walk of the IR's locals.
+pub fn locals_mut(stmt: &mut Stmt, f: &mut dyn FnMut(&mut crate::LocalId)) {
+    struct Locals<'f>(&'f mut dyn FnMut(&mut crate::LocalId));
+    impl VisitMut for Locals<'_> {
+        fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
+            match stmt {
+                Stmt::Assign(crate::Place::Local(k), _) => (self.0)(k),
+                Stmt::Try { catch: Some((k, _)), .. } => (self.0)(k),
+                _ => {}
+            }
+            walk_stmt_mut(self, stmt);
+        }
+        fn visit_expr_mut(&mut self, expr: &mut Expr) {
+            if let Expr::Local(k) = expr {
+                (self.0)(k);
+            }
+            walk_expr_mut(self, expr);
+        }
+    }
+    Locals(f).visit_stmt_mut(stmt);
 }

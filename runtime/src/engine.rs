@@ -113,6 +113,13 @@ pub struct Engine<'p> {
     pub warnings: Vec<Diagnostic>,
     pub(crate) steps: u64,
     pub(crate) depth: usize,
+    /// `this` of each method call in progress (`Expr::This` reads the last).
+    pub(crate) this_stack: Vec<Value>,
+    /// The value a `throw` is carrying up to its `try`.
+    pub(crate) thrown: Option<Value>,
+    /// The arguments of each call in progress of a function that reads
+    /// `arguments`.
+    pub(crate) arguments: Vec<Value>,
     /// Where the event being handled came from.
     pub event_span: Span,
     /// The run's script host ([`crate::script_host`]), if the post has scripts.
@@ -178,6 +185,9 @@ impl<'p> Engine<'p> {
             warnings: Vec::new(),
             steps: 0,
             depth: 0,
+            this_stack: Vec::new(),
+            thrown: None,
+            arguments: Vec::new(),
             event_span: Span::default(),
             script_host: None,
             handler_frame: vec![Value::Null; code.handler_slots],

@@ -39,6 +39,21 @@ pub enum Stmt {
         cond: Expr,
         body: Vec<Stmt>,
         span: Option<Span>,
+        step: Vec<Stmt>,
+    },
+    SetMember {
+        object: Expr,
+        key: Expr,
+        value: Expr,
+    },
+    Throw {
+        value: Expr,
+        span: Option<Span>,
+    },
+    Try {
+        body: Vec<Stmt>,
+        catch: Option<(LocalId, Vec<Stmt>)>,
+        finally: Vec<Stmt>,
     },
     Break,
     Continue,
@@ -131,6 +146,7 @@ pub enum Expr {
     Text(Text),
     Bool(bool),
     Null,
+    Undefined,
     /// Whether any text was written since a mark ([`Stmt::Mark`]).
     Written(LocalId),
     Quantity(Quantity),
@@ -171,6 +187,25 @@ pub enum Expr {
         all: bool,
         operands: Vec<Expr>,
     },
+    Array(Vec<Expr>),
+    Object(Vec<(Text, Expr)>),
+    Member(Box<Expr>, Box<Expr>),
+    Invoke {
+        object: Box<Expr>,
+        method: Text,
+        args: Vec<Expr>,
+    },
+    Closure {
+        function: FunctionId,
+        captures: Vec<Expr>,
+    },
+    CallValue(Box<Expr>, Vec<Expr>),
+    This,
+    Arguments,
+    Host {
+        name: Text,
+        args: Vec<Expr>,
+    },
     /// `parseFloat(text.substring(from))`: the number at character `from`
     /// of the text of `value`, read where the text is formatted, with no
     /// text made (a field post's `parseFloat(getFeedrate(m).substring(1))`).
@@ -203,9 +238,22 @@ impl Expr {
                 f(a);
                 f(b);
             }
-            Expr::Call(_, args) | Expr::Builtin(_, args) | Expr::Chain { operands: args, .. } => {
-                args.iter_mut().for_each(f)
+            Expr::Call(_, args)
+            | Expr::Builtin(_, args)
+            | Expr::Chain { operands: args, .. }
+            | Expr::Array(args)
+            | Expr::Closure { captures: args, .. }
+            | Expr::Host { args, .. } => args.iter_mut().for_each(f),
+            Expr::Object(props) => props.iter_mut().for_each(|(_, v)| f(v)),
+            Expr::Member(a, b) => {
+                f(a);
+                f(b);
             }
+            Expr::Invoke { object, args, .. } | Expr::CallValue(object, args) => {
+                f(object);
+                args.iter_mut().for_each(f);
+            }
+            Expr::This | Expr::Undefined | Expr::Arguments => {}
             Expr::LocalEmpty { .. }
             | Expr::LocalIsText { .. }
             | Expr::Number(_)
@@ -268,6 +316,13 @@ impl Stmt {
             Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => f(e),
             Stmt::If { branches, .. } => branches.iter_mut().for_each(|(c, _)| f(c)),
             Stmt::While { cond, .. } => f(cond),
+            Stmt::SetMember { object, key, value } => {
+                f(object);
+                f(key);
+                f(value);
+            }
+            Stmt::Throw { value, .. } => f(value),
+            Stmt::Try { .. } => {}
             Stmt::Word { cond, word, .. } => {
                 f(cond);
                 pieces(word, &mut f);
@@ -295,7 +350,17 @@ impl Stmt {
                 branches.iter_mut().for_each(|(_, b)| f(b));
                 f(otherwise);
             }
-            Stmt::While { body, .. } => f(body),
+            Stmt::While { body, step, .. } => {
+                f(body);
+                f(step);
+            }
+            Stmt::Try { body, catch, finally } => {
+                f(body);
+                if let Some((_, handler)) = catch {
+                    f(handler);
+                }
+                f(finally);
+            }
             Stmt::Words(run) => f(&mut run.general),
             _ => {}
         }
@@ -305,7 +370,9 @@ impl Stmt {
     /// expressions (assigned places and marks), with how it uses each.
     pub fn for_each_named_local_mut(&mut self, mut f: impl FnMut(LocalUse, &mut LocalId)) {
         match self {
-            Stmt::Assign(Place::Local(k), _) | Stmt::Mark(k) => f(LocalUse::Write, k),
+            Stmt::Assign(Place::Local(k), _) | Stmt::Mark(k) | Stmt::Try { catch: Some((k, _)), .. } => {
+                f(LocalUse::Write, k)
+            }
             Stmt::MoveBack { to, from } => {
                 f(LocalUse::Read, to);
                 f(LocalUse::Read, from);
@@ -316,6 +383,43 @@ impl Stmt {
             _ => {}
         }
     }
+}
+
+/// Whether statements use JavaScript's objects: arrays, objects,
+/// properties, methods, function values, `this`, `throw`, `try`, or a
+/// loop with a step. The fast-path passes of [`crate::prepare`] are
+/// written for code without them and leave such code as it is.
+pub fn uses_objects(body: &mut [Stmt]) -> bool {
+    fn expr(e: &mut Expr) -> bool {
+        if matches!(
+            e,
+            Expr::Array(_)
+                | Expr::Object(_)
+                | Expr::Member(..)
+                | Expr::Invoke { .. }
+                | Expr::Closure { .. }
+                | Expr::CallValue(..)
+                | Expr::This
+                | Expr::Arguments
+                | Expr::Host { .. }
+        ) {
+            return true;
+        }
+        let mut found = false;
+        e.for_each_operand_mut(|a| found |= expr(a));
+        found
+    }
+    body.iter_mut().any(|s| {
+        if matches!(s, Stmt::SetMember { .. } | Stmt::Throw { .. } | Stmt::Try { .. })
+            || matches!(s, Stmt::While { step, .. } if !step.is_empty())
+        {
+            return true;
+        }
+        let mut found = false;
+        s.for_each_expr_mut(|e| found |= expr(e));
+        s.for_each_body_mut(|b| found |= uses_objects(b));
+        found
+    })
 }
 
 /// A text literal: the text value it reads as (shared, never copied), and
@@ -363,6 +467,11 @@ impl std::ops::Deref for Text {
 pub struct Function {
     /// Number of parameters.
     pub params: usize,
+    /// The function reads `arguments`: its calls keep them.
+    pub uses_arguments: bool,
+    /// Parameters not passed and locals not yet set hold `undefined`
+    /// (JavaScript), not null.
+    pub starts_undefined: bool,
     /// Parameters plus locals.
     pub slots: u16,
     pub body: Body,
@@ -406,7 +515,16 @@ pub fn stmt(s: &postc_ir::Stmt) -> Stmt {
             branches: branches.iter().map(|(c, b)| (expr(c), stmts(b))).collect(),
             otherwise: stmts(otherwise),
         },
-        S::While { cond, body, span } => Stmt::While { cond: expr(cond), body: stmts(body), span: *span },
+        S::While { cond, body, span, step } => {
+            Stmt::While { cond: expr(cond), body: stmts(body), span: *span, step: stmts(step) }
+        }
+        S::SetMember { object, key, value } => {
+            Stmt::SetMember { object: expr(object), key: expr(key), value: expr(value) }
+        }
+        S::Throw { value, span } => Stmt::Throw { value: expr(value), span: *span },
+        S::Try { body, catch, finally } => {
+            Stmt::Try { body: stmts(body), catch: catch.as_ref().map(|(k, b)| (*k, stmts(b))), finally: stmts(finally) }
+        }
         S::Break => Stmt::Break,
         S::Continue => Stmt::Continue,
         S::Return(e) => Stmt::Return(e.as_ref().map(expr)),
@@ -447,6 +565,20 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
         E::Choose(c, a, b) => Expr::Choose(boxed(c), boxed(a), boxed(b)),
         E::Call(f, args) => Expr::Call(*f, list(args)),
         E::Builtin(b, args) => Expr::Builtin(*b, list(args)),
+        E::Undefined => Expr::Undefined,
+        E::Array(items) => Expr::Array(list(items)),
+        E::Object(props) => {
+            Expr::Object(props.iter().map(|(k, v)| (Text::new(crate::value::Text::new(k)), expr(v))).collect())
+        }
+        E::Member(o, k) => Expr::Member(boxed(o), boxed(k)),
+        E::Invoke { object, method, args } => {
+            Expr::Invoke { object: boxed(object), method: Text::new(crate::value::Text::new(method)), args: list(args) }
+        }
+        E::Closure { function, captures } => Expr::Closure { function: *function, captures: list(captures) },
+        E::CallValue(f, args) => Expr::CallValue(boxed(f), list(args)),
+        E::This => Expr::This,
+        E::Arguments => Expr::Arguments,
+        E::Host { name, args } => Expr::Host { name: Text::new(crate::value::Text::new(name)), args: list(args) },
     }
 }
 
@@ -454,6 +586,8 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
 pub fn function(f: &postc_ir::Function) -> Function {
     Function {
         params: f.params.len(),
+        uses_arguments: f.uses_arguments,
+        starts_undefined: f.starts_undefined,
         slots: f.slots,
         body: match &f.body {
             postc_ir::Body::Native(b) => Body::Native(stmts(b)),

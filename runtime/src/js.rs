@@ -181,6 +181,35 @@ pub fn parse_int(text: &str, radix: f64) -> f64 {
     if any { sign * value } else { f64::NAN }
 }
 
+/// JavaScript's `n.toString(radix)`; `Err` with the message of the
+/// `RangeError` for a radix outside 2..36, and for what postc does not
+/// write in another radix (a fraction, past 2^53).
+pub fn radix_string(n: f64, radix: f64) -> Result<String, String> {
+    if !(2.0..=36.0).contains(&radix) || radix.fract() != 0.0 {
+        return Err("RangeError: toString() radix must be between 2 and 36".into());
+    }
+    let radix = radix as u32;
+    if radix == 10 || !n.is_finite() {
+        return Ok(number_to_string(n));
+    }
+    if n.fract() != 0.0 || n.abs() >= 9_007_199_254_740_992.0 {
+        return Err("postc writes a number in another radix only when it is a whole number below 2^53".into());
+    }
+    let mut m = n.abs() as u64;
+    let mut digits = Vec::new();
+    loop {
+        digits.push(std::char::from_digit((m % u64::from(radix)) as u32, radix).unwrap_or('0'));
+        m /= u64::from(radix);
+        if m == 0 {
+            break;
+        }
+    }
+    if n < 0.0 {
+        digits.push('-');
+    }
+    Ok(digits.iter().rev().collect())
+}
+
 /// JavaScript's `Math.round`: the nearest integer, halves toward positive
 /// infinity.
 pub fn math_round(x: f64) -> f64 {

@@ -149,7 +149,9 @@ pub fn run<S: EventSource + ?Sized>(
         diagnostics.extend(engine.warnings);
         Err(diagnostics)
     };
-    if let (false, Some(make)) = (post.scripts.is_empty(), options.script_host) {
+    // The caller hands a host when the post needs one: for its scripts, or
+    // for the functions of its dialect's API its code calls.
+    if let Some(make) = options.script_host {
         match make(&engine) {
             Ok(host) => engine.script_host = Some(host),
             Err(d) => {

@@ -32,6 +32,13 @@ pub trait ScriptHost {
 
     /// Calls the script function of post function `name` with `args`.
     fn call(&mut self, engine: &mut Engine<'_>, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>>;
+
+    /// Calls function `name` of the host's API, which native code names
+    /// (`Expr::Host`): the data a dialect's engine hands posts that no
+    /// quantity carries (CNC-Calc's drilling header).
+    fn host_call(&mut self, _engine: &mut Engine<'_>, name: &str, _args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+        Err(Box::new(Diagnostic::error("RT005", format!("the post's host has no function `{name}`"))))
+    }
 }
 
 /// Builds the host of one run: compiles the post's scripts, once.
@@ -91,6 +98,19 @@ impl Engine<'_> {
     }
 
     /// Calls a script function through the run's host.
+    /// Calls a function of the host's API ([`ScriptHost::host_call`]).
+    pub(crate) fn call_host(&mut self, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+        let Some(mut host) = self.script_host.take() else {
+            return Err(Box::new(Diagnostic::error(
+                "RT005",
+                format!("the post calls `{name}` of its host, and this run has no host"),
+            )));
+        };
+        let result = host.host_call(self, name, args);
+        self.script_host = Some(host);
+        result
+    }
+
     pub(crate) fn call_script(&mut self, id: ScriptId, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
         let Some(mut host) = self.script_host.take() else {
             let why = if self.post.scripts.is_empty() {

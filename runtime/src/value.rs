@@ -1,20 +1,103 @@
-//! Values of the IR's statement language: numbers, text, booleans, null.
+//! Values of the IR's statement language: numbers, text, booleans, null
+//! and undefined, and JavaScript's arrays, objects and functions.
 //!
 //! Text is kept in the value itself when it is short ASCII ([`Text`]): the
 //! words a post formats (`X12.5`, `G1`, `F1500`) cost no allocation, and a
 //! value is 24 bytes either way. Longer text is shared ([`Rc<str>`]).
+//! Arrays and objects are shared and mutable, as in JavaScript: a value
+//! copied refers to the same array.
 
+use std::cell::RefCell;
 use std::fmt::Write as _;
 use std::rc::Rc;
 
+use postc_ir::FunctionId;
+
 /// A value computed by a post's code.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub enum Value {
     #[default]
     Null,
+    /// JavaScript's `undefined`.
+    Undefined,
     Num(f64),
     Bool(bool),
     Text(Text),
+    /// A JavaScript array.
+    Array(Rc<RefCell<Vec<Value>>>),
+    /// A JavaScript object: its properties in the order they were made.
+    Object(Rc<RefCell<Object>>),
+    /// A post function as a value, with the values it closes over.
+    Func(Rc<Closure>),
+}
+
+impl PartialEq for Value {
+    /// Primitives by value; arrays, objects and functions by identity (as
+    /// JavaScript's `===` compares them).
+    fn eq(&self, other: &Value) -> bool {
+        match (self, other) {
+            (Value::Null, Value::Null) | (Value::Undefined, Value::Undefined) => true,
+            (Value::Num(a), Value::Num(b)) => a == b,
+            (Value::Bool(a), Value::Bool(b)) => a == b,
+            (Value::Text(a), Value::Text(b)) => a == b,
+            (Value::Array(a), Value::Array(b)) => Rc::ptr_eq(a, b),
+            (Value::Object(a), Value::Object(b)) => Rc::ptr_eq(a, b),
+            (Value::Func(a), Value::Func(b)) => Rc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
+}
+
+/// The properties of a JavaScript object, in the order they were made.
+/// Post objects are small (a handful of keys): a property is found by a
+/// scan of the keys, compared as bytes.
+#[derive(Clone, Debug, Default)]
+pub struct Object {
+    pub keys: Vec<Text>,
+    pub values: Vec<Value>,
+}
+
+impl Object {
+    /// The index of a property.
+    #[inline]
+    pub fn find(&self, key: &[u8]) -> Option<usize> {
+        self.keys.iter().position(|k| k.as_bytes() == key)
+    }
+
+    pub fn get(&self, key: &[u8]) -> Option<&Value> {
+        self.find(key).map(|i| &self.values[i])
+    }
+
+    /// Sets a property, adding it last when it is new.
+    pub fn set(&mut self, key: Text, value: Value) {
+        match self.find(key.as_bytes()) {
+            Some(i) => self.values[i] = value,
+            None => {
+                self.keys.push(key);
+                self.values.push(value);
+            }
+        }
+    }
+}
+
+/// Arrays in arrays are written as text to this depth.
+const MAX_NESTED_TEXT: u32 = 64;
+
+/// A function value: the post function and the values it captured.
+#[derive(Debug)]
+pub struct Closure {
+    pub function: FunctionId,
+    pub captures: Vec<Value>,
+}
+
+impl Value {
+    pub fn array(items: Vec<Value>) -> Value {
+        Value::Array(Rc::new(RefCell::new(items)))
+    }
+
+    pub fn object(object: Object) -> Value {
+        Value::Object(Rc::new(RefCell::new(object)))
+    }
 }
 
 /// How many bytes of ASCII text a [`Text`] holds in place.
@@ -207,27 +290,53 @@ impl Value {
             Value::Bool(b) => f64::from(u8::from(*b)),
             Value::Text(s) => s.as_str().trim().parse().unwrap_or(0.0),
             Value::Null => 0.0,
+            Value::Undefined | Value::Array(_) | Value::Object(_) | Value::Func(_) => f64::NAN,
         }
     }
 
-    /// Truthiness: non-zero numbers, non-empty text, true.
+    /// Truthiness: non-zero numbers, non-empty text, true, and every
+    /// array, object and function.
     pub fn truthy(&self) -> bool {
         match self {
             Value::Num(n) => *n != 0.0 && !n.is_nan(),
             Value::Bool(b) => *b,
             Value::Text(s) => !s.is_empty(),
-            Value::Null => false,
+            Value::Null | Value::Undefined => false,
+            Value::Array(_) | Value::Object(_) | Value::Func(_) => true,
         }
     }
 
     /// Appends the value as text: numbers in their shortest form without a
-    /// trailing `.0`.
+    /// trailing `.0`; null as nothing (BASIC's empty value); `undefined`,
+    /// arrays (their items joined by commas), objects and functions as
+    /// JavaScript's `String()` writes them.
     pub fn append_to(&self, out: &mut String) {
+        self.append_nested(out, 0);
+    }
+
+    /// [`Value::append_to`] at a depth of arrays in arrays: an array that
+    /// holds itself (JavaScript writes nothing for the cycle) stops there.
+    fn append_nested(&self, out: &mut String, depth: u32) {
         match self {
             Value::Num(n) => push_number(out, *n),
             Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
             Value::Text(s) => out.push_str(s.as_str()),
             Value::Null => {}
+            Value::Undefined => out.push_str("undefined"),
+            Value::Array(_) if depth > MAX_NESTED_TEXT => {}
+            Value::Array(items) => {
+                for (i, item) in items.borrow().iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    // JavaScript's join writes null and undefined as nothing.
+                    if !matches!(item, Value::Null | Value::Undefined) {
+                        item.append_nested(out, depth + 1);
+                    }
+                }
+            }
+            Value::Object(_) => out.push_str("[object Object]"),
+            Value::Func(_) => out.push_str("function () { [native code] }"),
         }
     }
 

@@ -29,8 +29,8 @@
 use std::collections::HashSet;
 
 use postc_front_cimco::ast::{
-    AssignOp, BinaryOp as JsBin, Expr as Js, ExprKind, Function as JsFunction, Ident, IfBranch, LogicalOp,
-    Stmt as JsStmt, StmtKind, UnaryOp as JsUn, UpdateOp, VarDeclarator,
+    AssignOp, BinaryOp as JsBin, CatchClause, Expr as Js, ExprKind, Function as JsFunction, Ident, IfBranch, KeyForm,
+    LogicalOp, Property, PropertyKey, Stmt as JsStmt, StmtKind, UnaryOp as JsUn, UpdateOp, VarDeclarator,
 };
 use postc_front_cimco::{builtins, made};
 use postc_ir::{BinaryOp, Body, Builtin, Expr, FileId, Function, LocalId, Place, Post, Span, Stmt, UnaryOp};
@@ -207,8 +207,24 @@ pub(super) fn literal(e: &Expr) -> Option<Js> {
         Expr::Text(t) => ExprKind::String(t.clone()),
         Expr::Bool(b) => ExprKind::Bool(*b),
         Expr::Null => ExprKind::Null,
+        Expr::Undefined => ExprKind::Undefined,
         _ => return None,
     }))
+}
+
+/// Whether a text is a JavaScript name (`a.b` may be written for `a["b"]`).
+fn is_name(t: &str) -> bool {
+    let mut chars = t.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_' || c == '$')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$')
+}
+
+/// `object.key` for a name, `object[key]` otherwise.
+fn member_or_index(object: Js, key: Js) -> Js {
+    match &key.kind {
+        ExprKind::String(k) if is_name(k) => member(object, &k.clone()),
+        _ => js(ExprKind::Index { object: Box::new(object), index: Box::new(key) }),
+    }
 }
 
 impl Printer<'_> {
@@ -236,6 +252,43 @@ impl Printer<'_> {
                 }
                 let otherwise = if otherwise.is_empty() { None } else { Some(Box::new(block(self.stmts(otherwise)?))) };
                 stmt(StmtKind::If { branches: bs, otherwise })
+            }
+            Stmt::While { cond, body, step, .. } if !step.is_empty() => {
+                let mut updates = Vec::new();
+                for s in step {
+                    match self.stmt(s)? {
+                        Some(JsStmt { kind: StmtKind::Expr(e), .. }) => updates.push(e),
+                        Some(_) => return Err("a loop update that is not an expression".into()),
+                        None => {}
+                    }
+                }
+                let update = match updates.len() {
+                    0 => None,
+                    1 => updates.pop(),
+                    _ => Some(js(ExprKind::Sequence(updates))),
+                };
+                let test = Some(self.expr(cond)?);
+                stmt(StmtKind::For { init: None, test, update, body: Box::new(block(self.stmts(body)?)) })
+            }
+            Stmt::SetMember { object, key, value } => {
+                let target = member_or_index(self.expr(object)?, self.expr(key)?);
+                let assign = ExprKind::Assign {
+                    op: AssignOp::Assign,
+                    target: Box::new(target),
+                    value: Box::new(self.expr(value)?),
+                };
+                stmt(StmtKind::Expr(js(assign)))
+            }
+            Stmt::Throw { value, .. } => stmt(StmtKind::Throw(self.expr(value)?)),
+            Stmt::Try { body, catch, finally } => {
+                let handler = match catch {
+                    Some((k, b)) => {
+                        Some(CatchClause { param: ident(&self.local(*k)?), body: self.stmts(b)?, span: at() })
+                    }
+                    None => None,
+                };
+                let finalizer = if finally.is_empty() { None } else { Some(self.stmts(finally)?) };
+                stmt(StmtKind::Try { block: self.stmts(body)?, handler, finalizer })
             }
             Stmt::While { cond, body, .. } => match do_while(cond, body) {
                 Some((body, cond)) => {
@@ -349,8 +402,47 @@ impl Printer<'_> {
 
     fn expr(&mut self, e: &Expr) -> R<Js> {
         Ok(match e {
-            Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null => {
+            Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Undefined => {
                 literal(e).ok_or_else(|| "a constant".to_string())?
+            }
+            Expr::This => js(ExprKind::This),
+            Expr::Arguments => name("arguments"),
+            Expr::Host { name: host, args } => {
+                let args = self.exprs(args)?;
+                call(name(host), args)
+            }
+            Expr::Array(items) => js(ExprKind::Array(self.exprs(items)?)),
+            Expr::Object(props) => {
+                let mut out = Vec::with_capacity(props.len());
+                for (k, v) in props {
+                    let written = if is_name(k) { KeyForm::Ident } else { KeyForm::String };
+                    out.push(Property {
+                        key: PropertyKey { name: k.clone(), written, span: at() },
+                        value: self.expr(v)?,
+                        span: at(),
+                    });
+                }
+                js(ExprKind::Object(out))
+            }
+            Expr::Member(o, k) => member_or_index(self.expr(o)?, self.expr(k)?),
+            Expr::Invoke { object, method: m, args } => {
+                let args = self.exprs(args)?;
+                method(self.expr(object)?, m, args)
+            }
+            Expr::CallValue(f, args) => {
+                let args = self.exprs(args)?;
+                call(self.expr(f)?, args)
+            }
+            Expr::Closure { function, captures } => {
+                if !captures.is_empty() {
+                    return Err("a function that closes over values of the function that makes it".into());
+                }
+                let f = self
+                    .post
+                    .functions
+                    .get(function.index())
+                    .ok_or_else(|| format!("function {}, which the post does not have", function.index()))?;
+                name(&f.name)
             }
             Expr::Local(k) => name(&self.local(*k)?),
             Expr::Global(g) => self.global(g.index())?,
@@ -490,6 +582,7 @@ impl Printer<'_> {
                 method(self.expr(&inner[0])?, m, vec![])
             }
             (Builtin::Len, [x]) => member(self.expr(x)?, "length"),
+            (Builtin::Keys, [x]) => method(js(ExprKind::Ident("Object".into())), "keys", vec![self.expr(x)?]),
             (Builtin::ToFixed, [x, d]) => {
                 let (x, d) = (self.expr(x)?, self.expr(d)?);
                 method(x, "toFixed", vec![d])

@@ -9,6 +9,7 @@ use postc_ir::{
     BinaryOp, Builtin, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, Span, UnaryOp, ValueSource, VarId,
 };
 
+pub(crate) mod objects;
 pub(crate) mod ops;
 
 use ops::{binary, builtin, compare, unary};
@@ -141,7 +142,7 @@ impl Engine<'_> {
                         }
                     }
                 }
-                Stmt::While { cond, body, span } => loop {
+                Stmt::While { cond, body, span, step } => loop {
                     self.steps += 1;
                     if self.steps > self.post.options.step_budget {
                         return Err(Box::new(self.budget_error(*span)));
@@ -154,6 +155,26 @@ impl Engine<'_> {
                         Flow::Return(v) => return Ok(self.leave(Flow::Return(v), rest.len())),
                         Flow::Normal | Flow::Continue => {}
                     }
+                    if !step.is_empty() {
+                        // A `for` loop's update has no jumps of its own.
+                        self.exec(step, frame).map_err(|e| Self::in_loop(e, *span))?;
+                    }
+                },
+                Stmt::SetMember { object, key, value } => {
+                    let o = self.eval(object, frame)?;
+                    let k = self.eval(key, frame)?;
+                    let v = self.eval(value, frame)?;
+                    objects::set_member(&o, &k, v)?;
+                }
+                Stmt::Throw { value, span } => {
+                    let v = self.eval(value, frame)?;
+                    let error = objects::uncaught(&v, *span);
+                    self.thrown = Some(v);
+                    return Err(error);
+                }
+                Stmt::Try { body, catch, finally } => match self.run_try(body, catch.as_ref(), finally, frame)? {
+                    Flow::Normal => {}
+                    flow => return Ok(self.leave(flow, rest.len())),
                 },
                 Stmt::Break => return Ok(self.leave(Flow::Break, rest.len())),
                 Stmt::Continue => return Ok(self.leave(Flow::Continue, rest.len())),
@@ -184,8 +205,12 @@ impl Engine<'_> {
                     self.finite(*span)?;
                 }
                 Stmt::Write(e) => {
+                    // An entry point that returns nothing (`undefined`)
+                    // writes nothing, as CNC-Calc does.
                     let v = self.eval(e, frame)?;
-                    self.write_blocks(&v.to_text());
+                    if !matches!(v, Value::Undefined) {
+                        self.write_blocks(&v.to_text());
+                    }
                 }
                 Stmt::Return(e) => {
                     let v = match e {
@@ -397,6 +422,62 @@ impl Engine<'_> {
         Ok(())
     }
 
+    /// The values of a list of expressions, in order.
+    fn eval_list(&mut self, list: &[Expr], frame: &mut Vec<Value>) -> Result<Vec<Value>> {
+        let mut values = Vec::with_capacity(list.len());
+        for e in list {
+            values.push(self.eval(e, frame)?);
+        }
+        Ok(values)
+    }
+
+    /// `try { body } catch (k) { handler } finally { last }`. A `throw` or
+    /// a type error of the post's code in `body` runs the handler with
+    /// what was thrown (a type error as an object with `name` and
+    /// `message`); budget, depth and text errors, and a value that is not
+    /// a number given to a format, are not caught. `last` runs however
+    /// the rest ended; a jump or error of its own wins.
+    fn run_try(
+        &mut self,
+        body: &[Stmt],
+        catch: Option<&(LocalId, Vec<Stmt>)>,
+        last: &[Stmt],
+        frame: &mut Vec<Value>,
+    ) -> Result<Flow> {
+        let depth = (self.depth, self.this_stack.len());
+        let mut result = self.exec(body, frame);
+        if let (Err(e), Some((k, handler))) = (&result, catch)
+            && (e.code == objects::THROWN || e.code == objects::TYPE_ERROR)
+        {
+            let caught = match self.thrown.take() {
+                Some(v) if e.code == objects::THROWN => v,
+                _ => objects::object(vec![
+                    (crate::value::Text::new("name"), Value::text("TypeError")),
+                    (
+                        crate::value::Text::new("message"),
+                        Value::text(e.message.strip_prefix("TypeError: ").unwrap_or(&e.message)),
+                    ),
+                ]),
+            };
+            // Calls the error left unfinished are over.
+            (self.depth, _) = depth;
+            self.this_stack.truncate(depth.1);
+            self.assign(Place::Local(*k), caught, frame);
+            result = self.exec(handler, frame);
+        }
+        if last.is_empty() {
+            return result;
+        }
+        let held = std::mem::take(&mut self.thrown);
+        match self.exec(last, frame)? {
+            Flow::Normal => {
+                self.thrown = held;
+                result
+            }
+            flow => Ok(flow),
+        }
+    }
+
     /// A budget error from a loop's body points at the innermost loop.
     fn in_loop(e: Box<Diagnostic>, span: Option<postc_ir::Span>) -> Box<Diagnostic> {
         match span {
@@ -591,6 +672,50 @@ impl Engine<'_> {
                 return self.eval(e, frame);
             }
             Expr::Bool(b) => Value::Bool(*b),
+            Expr::Undefined => Value::Undefined,
+            Expr::This => self.this(),
+            Expr::Arguments => self.arguments.last().cloned().unwrap_or_else(|| Value::array(Vec::new())),
+            Expr::Host { name, args } => {
+                let args = self.eval_list(args, frame)?;
+                self.call_host(name, args)?
+            }
+            Expr::Array(items) => {
+                let mut values = Vec::with_capacity(items.len());
+                for item in items {
+                    values.push(self.eval(item, frame)?);
+                }
+                Value::array(values)
+            }
+            Expr::Object(props) => {
+                let mut values = Vec::with_capacity(props.len());
+                for (k, v) in props {
+                    values.push((crate::value::Text::new(k), self.eval(v, frame)?));
+                }
+                objects::object(values)
+            }
+            Expr::Member(o, k) => {
+                let o = self.eval(o, frame)?;
+                let k = self.eval(k, frame)?;
+                objects::member(&o, &k)?
+            }
+            Expr::Invoke { object, method, args } => {
+                let o = self.eval(object, frame)?;
+                let args = self.eval_list(args, frame)?;
+                let name = match method.value() {
+                    Value::Text(t) => t.clone(),
+                    _ => crate::value::Text::new(""),
+                };
+                self.invoke(o, &name, args)?
+            }
+            Expr::Closure { function, captures } => {
+                let captured = self.eval_list(captures, frame)?;
+                objects::closure(*function, captured)
+            }
+            Expr::CallValue(callee, args) => {
+                let f = self.eval(callee, frame)?;
+                let args = self.eval_list(args, frame)?;
+                self.call_value(&f, Value::Undefined, args)?
+            }
             Expr::Written(k) => Value::Bool(self.out.buf.len() > self.mark(*k, frame)),
             Expr::LocalEmpty { .. } | Expr::LocalIsText { .. } => Value::Bool(self.test(e, frame)?),
             // The value of `a && b && c` is the first operand that decides,
@@ -934,16 +1059,30 @@ impl Engine<'_> {
         let result = match &runnable.body {
             Body::Native(body) => {
                 let mut frame = args;
-                frame.resize((runnable.slots as usize).max(frame.len()), Value::Null);
+                if runnable.uses_arguments {
+                    self.arguments.push(Value::array(frame.clone()));
+                }
+                let fill = if runnable.starts_undefined {
+                    // Arguments past the parameters are only in `arguments`.
+                    frame.truncate(runnable.params);
+                    Value::Undefined
+                } else {
+                    Value::Null
+                };
+                frame.resize((runnable.slots as usize).max(frame.len()), fill);
                 // Calls nest up to MAX_DEPTH whatever the thread's stack
                 // (a debug build's frames are large, a host's thread may be
                 // small): the stack grows on the heap when it runs low.
                 let result = match stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)) {
                     Ok(Flow::Return(v)) => Ok(v),
+                    Ok(_) if runnable.starts_undefined => Ok(Value::Undefined),
                     Ok(_) => Ok(Value::Null),
                     Err(e) => Err(e),
                 };
                 self.give_back(frame);
+                if runnable.uses_arguments {
+                    self.arguments.pop();
+                }
                 result
             }
             Body::Script(id) => self.call_script(*id, &function.name, args),

@@ -27,7 +27,11 @@ pub(crate) fn type_name(a: &Value) -> &'static str {
         Value::Num(_) => "number",
         Value::Text(_) => "string",
         Value::Bool(_) => "boolean",
-        Value::Null => "undefined",
+        // The native tier's null stands for undefined too (its lowering
+        // reads `undefined` as null): `typeof` says what undefined is.
+        Value::Null | Value::Undefined => "undefined",
+        Value::Array(_) | Value::Object(_) => "object",
+        Value::Func(_) => "function",
     }
 }
 
@@ -134,22 +138,29 @@ pub(super) fn compare(op: BinaryOp, a: &Value, b: &Value) -> Option<bool> {
 /// `null` and `undefined`).
 #[inline]
 fn js_loose_eq(a: &Value, b: &Value) -> bool {
+    let absent = |v: &Value| matches!(v, Value::Null | Value::Undefined);
     match (a, b) {
-        (Value::Null, Value::Null) => true,
-        (Value::Null, _) | (_, Value::Null) => false,
+        _ if absent(a) || absent(b) => absent(a) && absent(b),
         (Value::Text(x), Value::Text(y)) => x == y,
+        (Value::Array(_) | Value::Object(_) | Value::Func(_), Value::Array(_) | Value::Object(_) | Value::Func(_)) => {
+            a == b
+        }
+        // An object against a primitive compares its text (ToPrimitive).
+        (Value::Array(_) | Value::Object(_) | Value::Func(_), _) => js_loose_eq(&Value::Text(a.to_text()), b),
+        (_, Value::Array(_) | Value::Object(_) | Value::Func(_)) => js_loose_eq(a, &Value::Text(b.to_text())),
         _ => js_number(a) == js_number(b),
     }
 }
 
 /// JavaScript `===` over the interpreter's values.
 #[inline]
-fn strict_eq(a: &Value, b: &Value) -> bool {
+pub(super) fn strict_eq(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Num(x), Value::Num(y)) => x == y,
         (Value::Text(x), Value::Text(y)) => x == y,
         (Value::Bool(x), Value::Bool(y)) => x == y,
-        (Value::Null, Value::Null) => true,
+        (Value::Null, Value::Null) | (Value::Undefined, Value::Undefined) => true,
+        (Value::Array(_) | Value::Object(_) | Value::Func(_), _) => a == b,
         _ => false,
     }
 }
@@ -158,7 +169,9 @@ fn strict_eq(a: &Value, b: &Value) -> bool {
 pub(super) fn js_number(v: &Value) -> f64 {
     match v {
         Value::Text(s) => js::text_to_number(s),
-        Value::Null => f64::NAN,
+        // The native tier's null stood for undefined too: NaN, as Number(undefined).
+        Value::Null | Value::Undefined => f64::NAN,
+        Value::Array(_) => js::text_to_number(&v.to_text()),
         other => other.num(),
     }
 }
@@ -244,7 +257,7 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
             let ascii = t.ascii_bytes();
             let len = ascii.map_or_else(|| t.chars().count(), <[u8]>::len);
             let index = |v: Option<&Value>| match v {
-                None | Some(Value::Null) => None,
+                None | Some(Value::Null | Value::Undefined) => None,
                 Some(v) => {
                     let x = js_number(v);
                     Some(if x.is_nan() { 0 } else { x.trunc().clamp(0.0, len as f64) as usize })
@@ -261,6 +274,7 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
                 Value::text(&t.chars().skip(a).take(b - a).collect::<String>())
             }
         }
+        Builtin::Keys => super::objects::keys(args.first().unwrap_or(&Value::Undefined)),
     }
 }
 

@@ -17,17 +17,22 @@ fn constant(e: &Expr) -> Option<Value> {
         Expr::Text(t) => t.value().clone(),
         Expr::Bool(b) => Value::Bool(*b),
         Expr::Null => Value::Null,
+        Expr::Undefined => Value::Undefined,
         _ => return None,
     })
 }
 
-fn literal(v: Value) -> Expr {
-    match v {
+/// The expression of a constant; `None` for arrays, objects and
+/// functions, which are made anew each time.
+fn literal(v: Value) -> Option<Expr> {
+    Some(match v {
         Value::Num(n) => Expr::Number(n),
         Value::Text(s) => Expr::Text(Text::new(s)),
         Value::Bool(b) => Expr::Bool(b),
         Value::Null => Expr::Null,
-    }
+        Value::Undefined => Expr::Undefined,
+        Value::Array(_) | Value::Object(_) | Value::Func(_) => return None,
+    })
 }
 
 /// Folds an expression.
@@ -35,8 +40,8 @@ pub fn expr(e: Expr) -> Expr {
     match e {
         Expr::Unary(op, a) => {
             let a = expr(*a);
-            match constant(&a) {
-                Some(v) => literal(unary(op, &v)),
+            match constant(&a).and_then(|v| literal(unary(op, &v))) {
+                Some(folded) => folded,
                 None => Expr::Unary(op, Box::new(a)),
             }
         }
@@ -52,7 +57,10 @@ pub fn expr(e: Expr) -> Expr {
                     }
                 }
                 (BinaryOp::And | BinaryOp::Or, None, _) => Expr::Binary(op, Box::new(a), Box::new(b)),
-                (_, Some(x), Some(y)) => literal(binary(op, &x, &y)),
+                (_, Some(x), Some(y)) => match literal(binary(op, &x, &y)) {
+                    Some(folded) => folded,
+                    None => Expr::Binary(op, Box::new(a), Box::new(b)),
+                },
                 _ => Expr::Binary(op, Box::new(a), Box::new(b)),
             }
         }
@@ -98,14 +106,16 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                     out.push(Stmt::If { branches: kept, otherwise: rest });
                 }
             }
-            Stmt::While { cond, body, span } => {
+            Stmt::While { cond, body, span, step } => {
                 let cond = expr(cond);
                 if constant(&cond).is_some_and(|c| !c.truthy()) {
                     continue;
                 }
                 let mut body = stmts(body);
+                let step = stmts(step);
                 // `while (true) { ...; break; }` with no other way out runs once.
                 if matches!(cond, Expr::Bool(true))
+                    && step.is_empty()
                     && matches!(body.last(), Some(Stmt::Break))
                     && !leaves(&body[..body.len() - 1])
                 {
@@ -113,7 +123,7 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                     out.extend(body);
                     continue;
                 }
-                out.push(Stmt::While { cond, body, span });
+                out.push(Stmt::While { cond, body, span, step });
             }
             Stmt::Write(e) => out.push(Stmt::Write(expr(e))),
             Stmt::Emit(pieces) => out.push(Stmt::Emit(pieces.into_iter().map(piece).collect())),

@@ -177,7 +177,7 @@ mod tests {
     }
 
     fn once(body: Vec<Stmt>) -> Stmt {
-        Stmt::While { cond: Expr::Bool(true), body, span: None }
+        Stmt::While { cond: Expr::Bool(true), body, span: None, step: vec![] }
     }
 
     #[test]
@@ -219,7 +219,7 @@ mod tests {
     #[test]
     fn a_loop_that_may_not_run_assigns_nothing_after_it() {
         let body = vec![
-            Stmt::While { cond: Expr::Bool(false), body: vec![set(0, Expr::Number(1.0))], span: None },
+            Stmt::While { cond: Expr::Bool(false), body: vec![set(0, Expr::Number(1.0))], span: None, step: vec![] },
             Stmt::Eval(local(0)),
         ];
         assert_eq!(nulls(body), vec![0]);

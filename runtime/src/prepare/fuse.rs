@@ -266,6 +266,7 @@ mod tests {
             cond: Expr::Bool(true),
             body: vec![counted(2, 9, 0.0), counted(3, 9, 1.0)],
             span: None,
+            step: vec![],
         }];
         stmts(&mut body);
         let Stmt::While { body, .. } = &body[0] else { panic!() };
@@ -399,6 +400,7 @@ mod tests {
                 cond: Expr::Bool(true),
                 body: [general.clone(), vec![Stmt::Break]].concat(),
                 span: None,
+                step: vec![],
             }];
             runs(&mut body);
             let want = WordRun {

@@ -337,6 +337,7 @@ mod tests {
                 Stmt::Break,
             ],
             span: None,
+            step: vec![],
         };
         let body = vec![set(1, Expr::Null), once.clone(), emit(local(1))];
         assert_eq!(tidy(body), vec![once, emit(local(1))]);
@@ -347,8 +348,11 @@ mod tests {
         // `n = 0; while (n < 3) { n = n + 1 }; emit n`: every store is read.
         let less = Expr::Binary(BinaryOp::JsLt, Box::new(local(0)), Box::new(Expr::Number(3.0)));
         let step = Expr::Binary(BinaryOp::Sub, Box::new(local(0)), Box::new(Expr::Number(-1.0)));
-        let body =
-            vec![set(0, call()), Stmt::While { cond: less, body: vec![set(0, step)], span: None }, emit(local(0))];
+        let body = vec![
+            set(0, call()),
+            Stmt::While { cond: less, body: vec![set(0, step)], span: None, step: vec![] },
+            emit(local(0)),
+        ];
         assert_eq!(tidy(body.clone()), body);
     }
 
@@ -365,6 +369,7 @@ mod tests {
                     Stmt::Break,
                 ],
                 span: None,
+                step: vec![],
             },
             emit(local(1)),
         ];

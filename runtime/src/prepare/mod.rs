@@ -51,10 +51,14 @@ pub fn prepare(post: &Post) -> Code {
             *body = fold::stmts(std::mem::take(body));
         }
     }
-    let handlers: Vec<Vec<Stmt>> = post.handlers.iter().map(|h| handler(&functions, exec::stmts(&h.body))).collect();
+    let objects = object_functions(&mut functions);
+    let handlers: Vec<Vec<Stmt>> =
+        post.handlers.iter().map(|h| handler(&functions, &objects, exec::stmts(&h.body))).collect();
     let handler_slots = handlers.iter().filter_map(|b| emit::max_slot(b)).map(|k| k.index() + 1).max().unwrap_or(0);
-    for f in &mut functions {
-        if let exec::Body::Native(body) = &mut f.body {
+    for (f, objects) in functions.iter_mut().zip(&objects) {
+        if let exec::Body::Native(body) = &mut f.body
+            && !objects
+        {
             *body = locals::tidy(std::mem::take(body));
             fuse::expressions(body);
         }
@@ -68,10 +72,61 @@ pub fn prepare(post: &Post) -> Code {
     }
 }
 
+/// Which functions use JavaScript's objects ([`exec::uses_objects`]), or
+/// call one that does, or a function value: the fast-path passes leave
+/// them, and the handlers that call them, as they are.
+fn object_functions(functions: &mut [exec::Function]) -> Vec<bool> {
+    let mut objects: Vec<bool> = functions
+        .iter_mut()
+        .map(|f| match &mut f.body {
+            exec::Body::Native(body) => exec::uses_objects(body),
+            exec::Body::Script(_) => false,
+        })
+        .collect();
+    let calls: Vec<Vec<usize>> = functions
+        .iter_mut()
+        .map(|f| match &mut f.body {
+            exec::Body::Native(body) => called(body),
+            exec::Body::Script(_) => Vec::new(),
+        })
+        .collect();
+    // Until nothing changes: a caller of an object function is one.
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for (i, callees) in calls.iter().enumerate() {
+            if !objects[i] && callees.iter().any(|&c| objects.get(c).copied().unwrap_or(false)) {
+                objects[i] = true;
+                changed = true;
+            }
+        }
+    }
+    objects
+}
+
+/// The functions statements call.
+fn called(body: &mut [Stmt]) -> Vec<usize> {
+    fn expr(e: &mut Expr, out: &mut Vec<usize>) {
+        if let Expr::Call(f, _) = e {
+            out.push(f.index());
+        }
+        e.for_each_operand_mut(|a| expr(a, out));
+    }
+    let mut out = Vec::new();
+    for s in body {
+        s.for_each_expr_mut(|e| expr(e, &mut out));
+        s.for_each_body_mut(|b| out.extend(called(b)));
+    }
+    out
+}
+
 /// A handler body, prepared.
-fn handler(functions: &[exec::Function], body: Vec<Stmt>) -> Vec<Stmt> {
+fn handler(functions: &[exec::Function], objects: &[bool], mut body: Vec<Stmt>) -> Vec<Stmt> {
     if body.iter().all(|s| matches!(s, Stmt::Line { .. })) {
         return body;
+    }
+    if exec::uses_objects(&mut body) || called(&mut body).iter().any(|&f| objects.get(f).copied().unwrap_or(false)) {
+        return one(fold::stmts(body));
     }
     let first_free = emit::max_slot(&body).map_or(0, |k| k.index().saturating_add(1).min(usize::from(u16::MAX)) as u16);
     let mut emitter = emit::Emitter::new(functions, first_free);

@@ -118,7 +118,7 @@ impl Splicer<'_> {
             }
             body.push(Stmt::Break);
         }
-        out.push(Stmt::While { cond: Expr::Bool(true), body, span: None });
+        out.push(Stmt::While { cond: Expr::Bool(true), body, span: None, step: vec![] });
     }
 }
 
@@ -202,6 +202,8 @@ mod tests {
                 Stmt::Assign(Place::Global(GlobalId::new(0)), local(0)),
                 Stmt::Return(Some(local(0))),
             ]),
+            starts_undefined: false,
+            uses_arguments: false,
         }
     }
 
@@ -233,6 +235,7 @@ mod tests {
                     Stmt::Break,
                 ],
                 span: None,
+                step: vec![],
             },
         ]
     }
@@ -246,11 +249,15 @@ mod tests {
                 Stmt::Eval(Expr::Call(FunctionId::new(0), vec![])),
                 Stmt::Return(Some(Expr::Number(1.0))),
             ]),
+            starts_undefined: false,
+            uses_arguments: false,
         };
         let loops = Function {
             params: 0,
             slots: 0,
-            body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None }]),
+            body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None, step: vec![] }]),
+            starts_undefined: false,
+            uses_arguments: false,
         };
         let mut body =
             vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
@@ -260,6 +267,7 @@ mod tests {
                 cond: Expr::Bool(true),
                 body: vec![Stmt::Eval(Expr::Call(FunctionId::new(0), vec![])), set(0, Expr::Number(1.0)), Stmt::Break],
                 span: None,
+                step: vec![],
             },
             set(1, Expr::Call(FunctionId::new(1), vec![])),
         ];
@@ -268,7 +276,13 @@ mod tests {
 
     #[test]
     fn falling_off_the_end_returns_null_and_locals_start_null() {
-        let f = Function { params: 0, slots: 1, body: Body::Native(vec![Stmt::Eval(local(0))]) };
+        let f = Function {
+            params: 0,
+            slots: 1,
+            body: Body::Native(vec![Stmt::Eval(local(0))]),
+            starts_undefined: false,
+            uses_arguments: false,
+        };
         let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![]))];
         small_functions(&[f], &mut body);
         let want = vec![
@@ -277,6 +291,7 @@ mod tests {
                 cond: Expr::Bool(true),
                 body: vec![Stmt::Eval(local(1)), set(0, Expr::Null), Stmt::Break],
                 span: None,
+                step: vec![],
             },
         ];
         assert_eq!(body, want);

@@ -387,6 +387,7 @@ mod tests {
                     Stmt::Break,
                 ],
                 span: None,
+                step: vec![],
             },
         ]
     }
@@ -437,6 +438,7 @@ mod tests {
                     Stmt::Break,
                 ],
                 span: None,
+                step: vec![],
             },
         ];
         block_numbers(&mut body);

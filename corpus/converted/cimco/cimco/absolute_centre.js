@@ -34,7 +34,7 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    return text + "\r\n";
+    return text + linebreak;
 }
 
 function onOpen(isClipboard) {
@@ -42,6 +42,8 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     yOutput.reset();
@@ -58,7 +60,7 @@ function onClose() {
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? "G41" : comp == 2 ? "G42" : "G40";
+    compensation = comp == COMPENSATION_LEFT ? "G41" : comp == COMPENSATION_RIGHT ? "G42" : "G40";
 }
 
 function getCompensation() {
@@ -68,12 +70,15 @@ function getCompensation() {
 }
 
 function onLinear(vx, vy, vz, movement) {
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + getFeedrate(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1)
+        + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + getFeedrate(movement));
 }
 
 function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
-    var centre = iOutput.format(cx) + jOutput.format(cy);
-    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + centre + getFeedrate(movement));
+    var centre = absoluteArcCenter ? iOutput.format(cx) + jOutput.format(cy)
+        : iOutput.format(cx - xOutput.getLast()) + jOutput.format(cy - yOutput.getLast());
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez)
+        + centre + getFeedrate(movement));
 }
 
 function onDrillingHeader(drillHeader) {

@@ -81,7 +81,7 @@ function writeComment(text) {
 }
 
 function programName() {
-    var s = String(42);
+    var s = String(programNumber);
     do {
         s = "0" + s;
     } while (s.length < 4);
@@ -89,7 +89,7 @@ function programName() {
 }
 
 function feed() {
-    return fOutput.format(parseFloat(getFeedrate(1).substring(1)));
+    return fOutput.format(parseFloat(getFeedrate(MOVEMENT_CUTTING).substring(1)));
 }
 
 function takeLengthOffset(z) {
@@ -108,7 +108,8 @@ function takeCompensation() {
 }
 
 function onOpen(isClipboard) {
-    return "%\n" + writeBlock(programName(), "(FADAL FIELD-STYLE POST, CIMCO CNC-CALC)") + writeBlock("G0", "G17", "G21", "G40", "G49", "G80", "G90");
+    return "%" + linebreak + writeBlock(programName(), "(FADAL FIELD-STYLE POST, CIMCO CNC-CALC)")
+        + writeBlock("G0", "G17", "G21", "G40", "G49", "G80", "G90");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
@@ -133,8 +134,8 @@ function onComment(text) {
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? "G41" : comp == 2 ? "G42" : "G40";
-    if (comp != 0) {
+    compensation = comp == COMPENSATION_LEFT ? "G41" : comp == COMPENSATION_RIGHT ? "G42" : "G40";
+    if (comp != COMPENSATION_OFF) {
         compensation += " D" + currentTool;
     }
 }
@@ -146,7 +147,7 @@ function onLinear(vx, vy, vz, movement) {
     if (x == "" && y == "" && z == "") {
         return "";
     }
-    if (movement == 0) {
+    if (movement == MOVEMENT_RAPID) {
         return writeBlock(takeCompensation(), gMotion.format(0), x, y, takeLengthOffset(z), z);
     }
     return writeBlock(takeCompensation(), gMotion.format(1), x, y, takeLengthOffset(z), z, feed());
@@ -154,7 +155,7 @@ function onLinear(vx, vy, vz, movement) {
 
 // The quadrant index, 0 to 3, of a quarter turn counted from 0 degrees.
 function quadrantIndex(k) {
-    return (k % 4 + 4) % 4;
+    return ((k % 4) + 4) % 4;
 }
 
 // The pieces of an arc: its end, and before it every quadrant point the

@@ -55,7 +55,7 @@ function writeBlock() {
 }
 
 function writeComment(text) {
-    return "(" + text.toUpperCase() + ")" + "\n";
+    return "(" + text.toUpperCase() + ")" + linebreak;
 }
 
 // The program number, padded with zeros to four digits.
@@ -72,7 +72,8 @@ function coolant(kind) {
 }
 
 function onOpen(isClipboard) {
-    return "%\n" + programName(42) + "\n" + writeComment("Haas field-style post") + writeBlock("G90", "G17", "G21", "G40", "G80");
+    return "%" + linebreak + programName(programNumber) + linebreak + writeComment("Haas field-style post")
+        + writeBlock("G90", "G17", "G21", "G40", "G80");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
@@ -81,7 +82,8 @@ function onToolChange(tool, name, diameter, spindleSpeed) {
     zOutput.reset();
     gMotion.reset();
     fOutput.reset();
-    return writeBlock("T" + tool, "M06") + writeComment(name) + writeBlock("S" + rpmFormat.format(spindleSpeed), "M03") + writeBlock(coolant("flood"));
+    return writeBlock("T" + tool, "M06") + writeComment(name)
+        + writeBlock("S" + rpmFormat.format(spindleSpeed), "M03") + writeBlock(coolant("flood"));
 }
 
 function onLinear(vx, vy, vz, movement) {
@@ -91,14 +93,14 @@ function onLinear(vx, vy, vz, movement) {
     if (x == "" && y == "" && z == "") {
         return "";
     }
-    if (movement == 0) {
+    if (movement == MOVEMENT_RAPID) {
         return writeBlock(gMotion.format(0), x, y, z);
     }
     return writeBlock(gMotion.format(1), x, y, z, fOutput.format(getFeedrateValue()));
 }
 
 function getFeedrateValue() {
-    var f = getFeedrate(1);
+    var f = getFeedrate(MOVEMENT_CUTTING);
     return parseFloat(f.substring(1));
 }
 
@@ -155,5 +157,6 @@ function onDwell(seconds) {
 }
 
 function onClose() {
-    return writeBlock(coolant("off")) + writeBlock("M05") + writeBlock("G91", "G28", "Z0.") + writeBlock("M30") + "%" + "\n";
+    return writeBlock(coolant("off")) + writeBlock("M05") + writeBlock("G91", "G28", "Z0.") + writeBlock("M30")
+        + "%" + linebreak;
 }

@@ -52,27 +52,31 @@ function writeBlock(text) {
         return "";
     }
     text = block + text;
-    block += 1;
-    return text + "\n";
+    block += sequenceNumberIncrement;
+    return text + linebreak;
 }
 
 // The feed of a movement: FMAX for rapids.
 function feed(movement) {
-    if (movement == 0) {
+    if (movement == MOVEMENT_RAPID) {
         return " FMAX";
     }
-    return " " + getFeedrate(movement);
+    return variableDelimeter + getFeedrate(movement);
 }
 
 function onOpen(isClipboard) {
-    return writeBlock(" BEGIN PGM CNCCALC MM");
+    return writeBlock(" BEGIN PGM " + program + " MM");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     xOutput.reset();
     yOutput.reset();
     zOutput.reset();
-    return writeBlock(" ; " + name.toUpperCase()) + writeBlock(" TOOL CALL " + tool + " Z S" + Math.round(spindleSpeed)) + writeBlock(" L Z+100.000 R0 FMAX M3");
+    return writeBlock(" ; " + name.toUpperCase())
+        + writeBlock(" TOOL CALL " + tool + " Z S" + Math.round(spindleSpeed))
+        + writeBlock(" L Z+100.000 R0 FMAX M3");
 }
 
 function onComment(text) {
@@ -84,11 +88,11 @@ function onDwell(seconds) {
 }
 
 function onClose() {
-    return writeBlock(" L Z+100.000 R0 FMAX M5") + writeBlock(" L M30") + writeBlock(" END PGM CNCCALC MM");
+    return writeBlock(" L Z+100.000 R0 FMAX M5") + writeBlock(" L M30") + writeBlock(" END PGM " + program + " MM");
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? " RL" : comp == 2 ? " RR" : " R0";
+    compensation = comp == COMPENSATION_LEFT ? " RL" : comp == COMPENSATION_RIGHT ? " RR" : " R0";
 }
 
 function getCompensation() {
@@ -103,7 +107,7 @@ function onLinear(vx, vy, vz, movement) {
         return "";
     }
     var radius = getCompensation();
-    if (radius == "" && movement == 0) {
+    if (radius == "" && movement == MOVEMENT_RAPID) {
         radius = " R0";
     }
     return writeBlock(" L" + xyz + radius + feed(movement));
@@ -116,17 +120,19 @@ function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var direction = isCW ? " DR-" : " DR+";
     var out = writeBlock(" CC" + ccX.format(cx) + ccY.format(cy));
     if (ez == sz) {
+        // A C block always gives its end point (a full circle ends where it starts).
         xOutput.format(ex);
         yOutput.format(ey);
         return out + writeBlock(" C" + ccX.format(ex) + ccY.format(ey) + direction + feed(movement));
     }
+    // A helix: the angle turned, the same sign as the direction.
     var a0 = Math.atan2(sy - cy, sx - cx);
     var a1 = Math.atan2(ey - cy, ex - cx);
     var turn = isCW ? a0 - a1 : a1 - a0;
     while (turn <= 0.000001) {
-        turn += 6.283185307179586;
+        turn += 2 * Math.PI;
     }
-    var degrees = turn * 180 / 3.141592653589793;
+    var degrees = turn * 180 / Math.PI;
     xOutput.format(ex);
     yOutput.format(ey);
     var dz = ez - sz;

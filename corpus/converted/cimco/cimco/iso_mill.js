@@ -49,17 +49,19 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    return text + "\n";
+    return text + globals.linebreak;
 }
 
 function onOpen(isClipboard) {
     if (isClipboard) {
         return "";
     }
-    return writeBlock("%") + writeBlock("(" + "Generic ISO mill".toUpperCase() + ")") + writeBlock("G90G17G21G40G49G80");
+    return writeBlock("%") + writeBlock("(" + PostInfo.title.toUpperCase() + ")") + writeBlock("G90G17G21G40G49G80");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     yOutput.reset();
@@ -76,7 +78,7 @@ function onClose() {
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? "G41" : comp == 2 ? "G42" : "G40";
+    compensation = comp == COMPENSATION_LEFT ? "G41" : comp == COMPENSATION_RIGHT ? "G42" : "G40";
 }
 
 function getCompensation() {
@@ -86,13 +88,15 @@ function getCompensation() {
 }
 
 function onLinear(vx, vy, vz, movement) {
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + getFeedrate(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1)
+        + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + getFeedrate(movement));
 }
 
 function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var sx = xOutput.getLast();
     var sy = yOutput.getLast();
-    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + iOutput.format(cx - sx) + jOutput.format(cy - sy) + getFeedrate(movement));
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez)
+        + iOutput.format(cx - sx) + jOutput.format(cy - sy) + getFeedrate(movement));
 }
 
 function onDrillingHeader(drillHeader) {

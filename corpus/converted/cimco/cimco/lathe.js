@@ -55,9 +55,11 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    text = "N" + sequence + text;
-    sequence += 10;
-    return text + "\n";
+    if (globals.showSequenceNumbers) {
+        text = "N" + sequence + text;
+        sequence += globals.sequenceNumberIncrement;
+    }
+    return text + globals.linebreak;
 }
 
 function feedWord(movement) {
@@ -65,15 +67,18 @@ function feedWord(movement) {
     if (f == "") {
         return "";
     }
-    return " " + f;
+    return globals.variableDelimeter + f;
 }
 
 function onOpen(isClipboard) {
-    return "%\nO2000 (" + "Fanuc lathe".toUpperCase() + ")" + "\n" + writeBlock(" G18 G21 G40 G99");
+    return "%" + globals.linebreak + "O2000 (" + PostInfo.title.toUpperCase() + ")" + globals.linebreak
+        + writeBlock(" G18 G21 G40 G99");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
     var t = toolFormat.format(tool);
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     zOutput.reset();
@@ -85,11 +90,11 @@ function onDwell(seconds) {
 }
 
 function onClose() {
-    return writeBlock(" G28 U0. W0.") + writeBlock(" M5") + writeBlock(" M30") + "%" + "\n";
+    return writeBlock(" G28 U0. W0.") + writeBlock(" M5") + writeBlock(" M30") + "%" + globals.linebreak;
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? " G41" : comp == 2 ? " G42" : " G40";
+    compensation = comp == COMPENSATION_LEFT ? " G41" : comp == COMPENSATION_RIGHT ? " G42" : " G40";
 }
 
 function getCompensation() {
@@ -99,7 +104,8 @@ function getCompensation() {
 }
 
 function onLinear(vx, vz, movement) {
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + zOutput.format(vz) + feedWord(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1)
+        + xOutput.format(vx) + zOutput.format(vz) + feedWord(movement));
 }
 
 function onCircular(cx, cz, ex, ez, isCW, movement) {

@@ -84,7 +84,7 @@ function sanitize(text) {
 }
 
 function writeComment(text) {
-    return "(" + sanitize(text) + ")" + "\n";
+    return "(" + sanitize(text) + ")" + linebreak;
 }
 
 // The feed word, only when it changed since the last one written.

@@ -45,7 +45,7 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    return text.substring(1) + "\n";
+    return text.substring(1) + linebreak;
 }
 
 // Long comments become several comment blocks of at most commentWidth
@@ -90,16 +90,16 @@ function coolant(mode) {
 }
 
 function motionWord(movement) {
-    var t1 = movement;
-    if (t1 === 0) {
+    switch (movement) {
+    case MOVEMENT_RAPID:
         return gMotion.format(0);
-    } else {
+    default:
         return gMotion.format(1);
     }
 }
 
 function feedWord(movement) {
-    if (movement == 0) {
+    if (movement == MOVEMENT_RAPID) {
         return "";
     }
     return fOutput.format(parseFloat(getFeedrate(movement).substring(1)));
@@ -120,7 +120,8 @@ function onOpen(isClipboard) {
     pendingLength = 0;
     compensation = "";
     activeTool = 0;
-    return writeBlock(" O1001") + writeComment("Okuma OSP-P field-style post for CIMCO CNC-Calc") + writeBlock(" G15 H1") + writeBlock(" G17 G21 G40 G80 G90 G94");
+    return writeBlock(" O1001") + writeComment("Okuma OSP-P field-style post for CIMCO CNC-Calc")
+        + writeBlock(" G15 H1") + writeBlock(" G17 G21 G40 G80 G90 G94");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
@@ -129,14 +130,14 @@ function onToolChange(tool, name, diameter, spindleSpeed) {
         out = writeBlock(coolant(0) + " M05") + writeBlock(" G30 P1");
     }
     activeTool = tool;
-    sequence += 1;
+    sequence = sequence + 1;
     pendingLength = tool;
     xOutput.reset();
     yOutput.reset();
     zOutput.reset();
     fOutput.reset();
     gMotion.reset();
-    out += writeComment(name + " D" + xyzFormat.format(diameter));
+    out = out + writeComment(name + " D" + xyzFormat.format(diameter));
     return out + writeBlock(" N" + sequence + " T" + tool + " M06") + writeBlock(" S" + Math.round(spindleSpeed) + " M03" + coolant(1));
 }
 
@@ -145,9 +146,9 @@ function onComment(text) {
 }
 
 function onCompensation(comp) {
-    if (comp == 1) {
+    if (comp == COMPENSATION_LEFT) {
         compensation = " G41 D" + activeTool;
-    } else if (comp == 2) {
+    } else if (comp == COMPENSATION_RIGHT) {
         compensation = " G42 D" + activeTool;
     } else {
         compensation = " G40";
@@ -176,7 +177,9 @@ function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var sy = yOutput.getLast();
     xOutput.reset();
     yOutput.reset();
-    return writeBlock(getCompensation() + gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + " I" + xyzFormat.format(cx - sx) + " J" + xyzFormat.format(cy - sy) + feedWord(movement));
+    return writeBlock(getCompensation() + gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey)
+        + zOutput.format(ez) + " I" + xyzFormat.format(cx - sx) + " J" + xyzFormat.format(cy - sy)
+        + feedWord(movement));
 }
 
 function onDwell(seconds) {

@@ -37,9 +37,11 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    text = "N" + n + text;
-    n += 1;
-    return text + "\n";
+    if (showSequenceNumbers) {
+        text = "N" + n + text;
+        n += sequenceNumberIncrement;
+    }
+    return text + linebreak;
 }
 
 function feedWord(movement) {
@@ -47,7 +49,7 @@ function feedWord(movement) {
     if (f == "") {
         return "";
     }
-    return " " + f;
+    return variableDelimeter + f;
 }
 
 function onOpen(isClipboard) {
@@ -55,6 +57,8 @@ function onOpen(isClipboard) {
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     yOutput.reset();
@@ -71,7 +75,7 @@ function onClose() {
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? " G41" : comp == 2 ? " G42" : " G40";
+    compensation = comp == COMPENSATION_LEFT ? " G41" : comp == COMPENSATION_RIGHT ? " G42" : " G40";
 }
 
 function getCompensation() {
@@ -81,14 +85,16 @@ function getCompensation() {
 }
 
 function onLinear(vx, vy, vz, movement) {
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + feedWord(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1)
+        + xOutput.format(vx) + yOutput.format(vy) + zOutput.format(vz) + feedWord(movement));
 }
 
 function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var sx = xOutput.getLast();
     var sy = yOutput.getLast();
     var radius = Math.sqrt((sx - cx) * (sx - cx) + (sy - cy) * (sy - cy));
-    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez) + rOutput.format(radius) + feedWord(movement));
+    return writeBlock(gMotion.format(isCW ? 2 : 3) + xOutput.format(ex) + yOutput.format(ey) + zOutput.format(ez)
+        + rOutput.format(radius) + feedWord(movement));
 }
 
 function onDrillingHeader(drillHeader) {

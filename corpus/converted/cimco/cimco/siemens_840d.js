@@ -49,20 +49,23 @@ function writeBlock(text) {
         return "";
     }
     text = "N" + sequence + text;
-    sequence += 10;
-    return text + "\r\n";
+    sequence += sequenceNumberIncrement;
+    return text + linebreak;
 }
 
 function onOpen(isClipboard) {
-    return "; CNC-CALC SIEMENS 840D\r\n" + writeBlock(" G17 G90 G94 G71 G40");
+    return "; CNC-CALC SIEMENS 840D" + linebreak + writeBlock(" G17 G90 G94 G71 G40");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     yOutput.reset();
     zOutput.reset();
-    return writeBlock(" ; " + name) + writeBlock(" T" + tool + " D1") + writeBlock(" M6") + writeBlock(" S" + Math.round(spindleSpeed) + " M3");
+    return writeBlock(" ; " + name) + writeBlock(" T" + tool + " D1") + writeBlock(" M6")
+        + writeBlock(" S" + Math.round(spindleSpeed) + " M3");
 }
 
 function onComment(text) {
@@ -78,7 +81,7 @@ function onClose() {
 }
 
 function onCompensation(comp) {
-    compensation = comp == 1 ? " G41" : comp == 2 ? " G42" : " G40";
+    compensation = comp == COMPENSATION_LEFT ? " G41" : comp == COMPENSATION_RIGHT ? " G42" : " G40";
 }
 
 function getCompensation() {
@@ -101,7 +104,7 @@ function onLinear(vx, vy, vz, movement) {
     if (xyz == "") {
         return "";
     }
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xyz + feedWord(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1) + xyz + feedWord(movement));
 }
 
 function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {

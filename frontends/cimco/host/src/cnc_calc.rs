@@ -13,7 +13,7 @@ use postc_ir::event::{CompSide, DrillKind};
 use postc_ir::{Justify, NumberFormat, Padding, PointStyle, SignStyle, WidthOf};
 use rhai::{Array, Dynamic, Engine, EvalAltResult, NativeCallContext};
 
-use crate::compiled::{Shared, State};
+use crate::compiled::{Context, Shared, State};
 use crate::ops::fail;
 use crate::values::{
     self, DynFormat, DynVar, DynVarState, FmtRef, JsArr, JsObj, ObjKind, VarRef, num, text, to_number, to_string,
@@ -293,101 +293,149 @@ fn kind_name(kind: DrillKind) -> &'static str {
     }
 }
 
-/// The cycle's name, and whether the post's field list marks it longhand.
-fn name_and_longhand(st: &State, list: &str) -> (String, bool) {
-    let Some(c) = &st.ctx.drill else { return (String::new(), false) };
+/// A field of the drilling data CNC-Calc hands a post.
+pub(crate) enum Field {
+    Num(f64),
+    Bool(bool),
+    Text(String),
+}
+
+/// The cycle's name, and whether the post's fields list (`MillDrillingFields`,
+/// `TurnDrillingFields`) marks it long-hand (`longhand_of` reads the list).
+fn name_and_longhand(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> (String, bool) {
+    let Some(c) = &ctx.drill else { return (String::new(), false) };
     let name = if c.name.is_empty() { kind_name(c.kind).to_string() } else { c.name.clone() };
-    let longhand = global(st, list)
-        .try_cast::<JsArr>()
-        .and_then(|a| {
-            a.0.borrow().iter().find_map(|e| {
-                let o = e.clone().try_cast::<JsObj>()?;
-                (o.get("name").map(|n| to_string(&n)) == Some(name.clone()))
-                    .then(|| o.get("isLonghand").is_some_and(|v| values::truthy(&v)))
-            })
-        })
-        .unwrap_or(false);
+    let longhand = longhand_of(&name);
     (name, longhand)
 }
 
 /// The `drillHeader` of `onDrillingHeader`, every field of seed 002's table.
-fn drill_header(st: &State) -> Dynamic {
-    let o = JsObj::new(ObjKind::Plain);
-    let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
-    let (name, longhand) = name_and_longhand(st, names::MILL_DRILLING_FIELDS);
-    let feed = c.feed.unwrap_or(st.ctx.plunge_feed);
+pub(crate) fn drill_header_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> Vec<(&'static str, Field)> {
+    let Some(c) = ctx.drill.clone() else { return Vec::new() };
+    let (name, longhand) = name_and_longhand(ctx, longhand_of);
+    let feed = c.feed.unwrap_or(ctx.plunge_feed);
     let peck = c.peck.filter(|p| *p > 0.0).unwrap_or(0.0);
     let dwell = c.dwell.filter(|d| *d > 0.0);
-    let set = |k: &str, v: Dynamic| o.set(k, v);
-    let b = Dynamic::from_bool;
-    set("name", text(name));
-    set("isLonghand", b(longhand));
-    set("retractPlane", num(c.retract_plane));
-    // Seed 002: "the absolute reference plane. If either the safe distance
-    // or end depth is given as relative coordinates, they are relative to
-    // this plane" -- the top of the holes; safeDistance is the R plane.
-    set("referencePlane", num(c.surface.unwrap_or(c.reference_plane)));
-    set("safeDistanceIsAbsolute", b(true));
-    set("safeDistance", num(c.reference_plane));
-    set("endDepthIsAbsolute", b(true));
-    set("endDepth", num(c.depth));
-    set("firstDepth", num(peck));
-    set("firstFeedrateFactor", num(1.0));
-    set("degressionType", num(0.0));
-    set("degression", num(0.0));
-    set("peckingRetract", num(0.0));
-    set("minimumDepth", num(0.0));
-    set("usePlungingFeedrate", b(true));
-    set("plungingFeedrate", num(feed));
-    set("useRetractFeedrate", b(false));
-    set("retractFeedrate", num(feed));
-    set("useTopDwelling", b(false));
-    set("topDwelling", num(0.0));
-    set("useBottomDwelling", b(dwell.is_some()));
-    set("bottomDwelling", num(dwell.unwrap_or(0.0)));
-    set("pitch", num(c.pitch.unwrap_or(0.0)));
-    set("useTappingSpeed", b(false));
-    set("tappingSpeed", num(st.ctx.spindle));
-    set("useRetractSpeed", b(false));
-    set("retractSpeed", num(st.ctx.spindle));
-    Dynamic::from(o)
+    use Field::{Bool as B, Num as N};
+    vec![
+        ("name", Field::Text(name)),
+        ("isLonghand", B(longhand)),
+        ("retractPlane", N(c.retract_plane)),
+        // Seed 002: "the absolute reference plane. If either the safe distance
+        // or end depth is given as relative coordinates, they are relative to
+        // this plane" -- the top of the holes; safeDistance is the R plane.
+        ("referencePlane", N(c.surface.unwrap_or(c.reference_plane))),
+        ("safeDistanceIsAbsolute", B(true)),
+        ("safeDistance", N(c.reference_plane)),
+        ("endDepthIsAbsolute", B(true)),
+        ("endDepth", N(c.depth)),
+        ("firstDepth", N(peck)),
+        ("firstFeedrateFactor", N(1.0)),
+        ("degressionType", N(0.0)),
+        ("degression", N(0.0)),
+        ("peckingRetract", N(0.0)),
+        ("minimumDepth", N(0.0)),
+        ("usePlungingFeedrate", B(true)),
+        ("plungingFeedrate", N(feed)),
+        ("useRetractFeedrate", B(false)),
+        ("retractFeedrate", N(feed)),
+        ("useTopDwelling", B(false)),
+        ("topDwelling", N(0.0)),
+        ("useBottomDwelling", B(dwell.is_some())),
+        ("bottomDwelling", N(dwell.unwrap_or(0.0))),
+        ("pitch", N(c.pitch.unwrap_or(0.0))),
+        ("useTappingSpeed", B(false)),
+        ("tappingSpeed", N(ctx.spindle)),
+        ("useRetractSpeed", B(false)),
+        ("retractSpeed", N(ctx.spindle)),
+    ]
 }
 
 /// The `drillHeader` of `onDrilling` (turning), every field of seed 002's
 /// table, under both spellings where the seed uses two.
-fn turn_drill(st: &State) -> Dynamic {
-    let o = JsObj::new(ObjKind::Plain);
-    let Some(c) = st.ctx.drill.clone() else { return Dynamic::from(o) };
-    let (name, longhand) = name_and_longhand(st, names::TURN_DRILLING_FIELDS);
-    let feed = c.feed.unwrap_or(st.ctx.plunge_feed);
+pub(crate) fn turn_drill_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> Vec<(&'static str, Field)> {
+    let Some(c) = ctx.drill.clone() else { return Vec::new() };
+    let (name, longhand) = name_and_longhand(ctx, longhand_of);
+    let feed = c.feed.unwrap_or(ctx.plunge_feed);
     let pecking = matches!(c.kind, DrillKind::Deep | DrillKind::ChipBreak) && c.peck.is_some_and(|p| p > 0.0);
     let peck = if pecking { c.peck.unwrap_or(0.0) } else { 0.0 };
     let dwell = c.dwell.filter(|d| *d > 0.0);
-    let set = |ks: &[&str], v: Dynamic| ks.iter().for_each(|k| o.set(k, v.clone()));
-    let b = Dynamic::from_bool;
-    set(&["name", "Name"], text(name));
-    set(&["isLonghand"], b(longhand));
+    use Field::{Bool as B, Num as N};
+    let mut out = Vec::new();
+    let mut set = |ks: &[&'static str], v: Field| {
+        for k in ks {
+            out.push((
+                *k,
+                match &v {
+                    Field::Num(n) => N(*n),
+                    Field::Bool(b) => B(*b),
+                    Field::Text(t) => Field::Text(t.clone()),
+                },
+            ));
+        }
+    };
+    set(&["name", "Name"], Field::Text(name));
+    set(&["isLonghand"], B(longhand));
     // The hole's top: the turned toolpath keeps the lathe's Z in X.
-    set(&["startDepth"], num(if st.ctx.lathe { st.ctx.pos[0] } else { st.ctx.pos[2] }));
-    set(&["endDepth"], num(c.depth));
-    set(&["safeDistance"], num(c.reference_plane));
-    set(&["retractDistance"], num(c.retract_plane));
-    set(&["usePlungingFeedrate"], b(true));
-    set(&["plungingFeedrate"], num(feed));
-    set(&["useRetractFeedrate"], b(false));
-    set(&["retractFeedrate"], num(feed));
-    set(&["pitch", "Pitch"], num(c.pitch.unwrap_or(0.0)));
-    set(&["usePecking", "UsePecking"], b(pecking));
-    set(&["firstPeckDepth"], num(peck));
-    set(&["subsequentPecksDepths", "subsequentPeckDepths"], num(peck));
-    set(&["peckClearance"], num(0.0));
-    set(&["peckRetract", "PeckRetract"], num(0.0));
-    set(&["useUpperDwell"], b(false));
-    set(&["upperDwell"], num(0.0));
-    set(&["useLowerDwell"], b(dwell.is_some()));
-    set(&["lowerDwell"], num(dwell.unwrap_or(0.0)));
-    set(&["useDrillTipCompensation"], b(false));
-    set(&["drillDiameter"], num(st.ctx.tool_diameter));
-    set(&["drillTipAngle"], num(118.0));
+    set(&["startDepth"], N(if ctx.lathe { ctx.pos[0] } else { ctx.pos[2] }));
+    set(&["endDepth"], N(c.depth));
+    set(&["safeDistance"], N(c.reference_plane));
+    set(&["retractDistance"], N(c.retract_plane));
+    set(&["usePlungingFeedrate"], B(true));
+    set(&["plungingFeedrate"], N(feed));
+    set(&["useRetractFeedrate"], B(false));
+    set(&["retractFeedrate"], N(feed));
+    set(&["pitch", "Pitch"], N(c.pitch.unwrap_or(0.0)));
+    set(&["usePecking", "UsePecking"], B(pecking));
+    set(&["firstPeckDepth"], N(peck));
+    set(&["subsequentPecksDepths", "subsequentPeckDepths"], N(peck));
+    set(&["peckClearance"], N(0.0));
+    set(&["peckRetract", "PeckRetract"], N(0.0));
+    set(&["useUpperDwell"], B(false));
+    set(&["upperDwell"], N(0.0));
+    set(&["useLowerDwell"], B(dwell.is_some()));
+    set(&["lowerDwell"], N(dwell.unwrap_or(0.0)));
+    set(&["useDrillTipCompensation"], B(false));
+    set(&["drillDiameter"], N(ctx.tool_diameter));
+    set(&["drillTipAngle"], N(118.0));
+    out
+}
+
+/// Whether the post's fields list (a Rhai array of objects) marks cycle
+/// `name` long-hand.
+fn rhai_longhand(st: &State, list: &str, name: &str) -> bool {
+    global(st, list)
+        .try_cast::<JsArr>()
+        .and_then(|a| {
+            a.0.borrow().iter().find_map(|e| {
+                let o = e.clone().try_cast::<JsObj>()?;
+                (o.get("name").map(|n| to_string(&n)).as_deref() == Some(name))
+                    .then(|| o.get("isLonghand").is_some_and(|v| values::truthy(&v)))
+            })
+        })
+        .unwrap_or(false)
+}
+
+/// Fields as a Rhai object.
+fn rhai_object(fields: Vec<(&'static str, Field)>) -> Dynamic {
+    let o = JsObj::new(ObjKind::Plain);
+    for (k, v) in fields {
+        o.set(
+            k,
+            match v {
+                Field::Num(n) => num(n),
+                Field::Bool(b) => Dynamic::from_bool(b),
+                Field::Text(t) => text(t),
+            },
+        );
+    }
     Dynamic::from(o)
+}
+
+fn drill_header(st: &State) -> Dynamic {
+    rhai_object(drill_header_fields(&st.ctx, &|n| rhai_longhand(st, names::MILL_DRILLING_FIELDS, n)))
+}
+
+fn turn_drill(st: &State) -> Dynamic {
+    rhai_object(turn_drill_fields(&st.ctx, &|n| rhai_longhand(st, names::TURN_DRILLING_FIELDS, n)))
 }

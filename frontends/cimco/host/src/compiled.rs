@@ -61,6 +61,26 @@ pub(crate) struct Context {
     pub lathe: bool,
 }
 
+impl Context {
+    /// What the host functions read now: the machine's state and the
+    /// notes of the last events.
+    pub(crate) fn of(eng: &Engine, notes: &Notes) -> Context {
+        let m = &eng.machine;
+        Context {
+            feed: m.feed,
+            feed_per_rev: m.toolpath.feed_per_rev,
+            plunge_feed: m.tool.plunge_feed,
+            spindle: m.spindle_speed,
+            tool_diameter: m.tool.diameter,
+            pos: m.pos,
+            drill: notes.drill.clone(),
+            comp: notes.comp,
+            epoch: eng.modal_epoch(),
+            lathe: eng.post.options.lathe,
+        }
+    }
+}
+
 pub(crate) type Shared = Rc<RefCell<State>>;
 
 /// A compiled script and its engine.
@@ -141,16 +161,7 @@ impl Compiled {
         {
             let mut st = self.state.borrow_mut();
             (st.vars, st.globals) = eng.lend_shared();
-            let m = &eng.machine;
-            st.ctx.feed = m.feed;
-            st.ctx.feed_per_rev = m.toolpath.feed_per_rev;
-            st.ctx.plunge_feed = m.tool.plunge_feed;
-            st.ctx.spindle = m.spindle_speed;
-            st.ctx.tool_diameter = m.tool.diameter;
-            st.ctx.pos = m.pos;
-            st.ctx.drill = notes.drill.clone();
-            st.ctx.comp = notes.comp;
-            st.ctx.epoch = eng.modal_epoch();
+            st.ctx = Context::of(eng, notes);
             st.ticks = 0;
             st.last_loop = None;
         }

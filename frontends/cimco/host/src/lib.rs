@@ -38,6 +38,7 @@ mod props;
 mod regex;
 mod values;
 
+use postc_front_cimco::host_names as names;
 use postc_ir::Diagnostic;
 use postc_ir::event::{CompSide, DrillCycle, Event};
 use postc_runtime::Engine;
@@ -78,4 +79,51 @@ impl ScriptHost for RhaiHost {
     fn call(&mut self, engine: &mut Engine<'_>, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
         self.compiled.call(engine, &self.notes, name, args)
     }
+
+    /// The data CNC-Calc hands the entry points, as values of the post's
+    /// native code: the drilling headers (the argument is the post's fields
+    /// list, which says which cycles are long-hand) and the compensation
+    /// side.
+    fn host_call(&mut self, engine: &mut Engine<'_>, name: &str, args: Vec<Value>) -> Result<Value, Box<Diagnostic>> {
+        let ctx = compiled::Context::of(engine, &self.notes);
+        let list = args.into_iter().next().unwrap_or(Value::Undefined);
+        let longhand = |n: &str| value_longhand(&list, n);
+        match name {
+            names::DRILL_HEADER => Ok(value_object(cnc_calc::drill_header_fields(&ctx, &longhand))),
+            names::TURN_DRILL => Ok(value_object(cnc_calc::turn_drill_fields(&ctx, &longhand))),
+            names::COMPENSATION => Ok(Value::Num(match ctx.comp {
+                CompSide::Off => 0.0,
+                CompSide::Left => 1.0,
+                CompSide::Right => 2.0,
+            })),
+            _ => Err(Box::new(Diagnostic::error("RT005", format!("the CNC-Calc host has no function `{name}`")))),
+        }
+    }
+}
+
+/// Fields as an object of native code.
+fn value_object(fields: Vec<(&'static str, cnc_calc::Field)>) -> Value {
+    let mut o = postc_runtime::value::Object::default();
+    for (k, v) in fields {
+        let v = match v {
+            cnc_calc::Field::Num(n) => Value::Num(n),
+            cnc_calc::Field::Bool(b) => Value::Bool(b),
+            cnc_calc::Field::Text(t) => Value::text(&t),
+        };
+        o.set(postc_runtime::value::Text::new(k), v);
+    }
+    Value::object(o)
+}
+
+/// Whether a fields list (an array of objects) marks cycle `name` long-hand.
+fn value_longhand(list: &Value, name: &str) -> bool {
+    let Value::Array(items) = list else { return false };
+    items.borrow().iter().any(|e| match e {
+        Value::Object(o) => {
+            let o = o.borrow();
+            o.get(b"name").is_some_and(|n| n.to_text().as_str() == name)
+                && o.get(b"isLonghand").is_some_and(Value::truthy)
+        }
+        _ => false,
+    })
 }

@@ -190,29 +190,7 @@ fn keys(o: &Dynamic) -> Array {
 /// `n.toString(radix)`: whole numbers in any radix from 2 to 36, as
 /// JavaScript writes them; a fraction only in radix 10.
 fn radix_string(n: f64, radix: f64) -> Result<String, Box<rhai::EvalAltResult>> {
-    if !(2.0..=36.0).contains(&radix) || radix.fract() != 0.0 {
-        return Err(fail("RangeError: toString() radix must be between 2 and 36"));
-    }
-    let radix = radix as u32;
-    if radix == 10 || !n.is_finite() {
-        return Ok(js::number_to_string(n));
-    }
-    if n.fract() != 0.0 || n.abs() >= 9_007_199_254_740_992.0 {
-        return Err(fail("postc writes a number in another radix only when it is a whole number below 2^53"));
-    }
-    let mut m = n.abs() as u64;
-    let mut digits = Vec::new();
-    loop {
-        digits.push(std::char::from_digit((m % u64::from(radix)) as u32, radix).unwrap_or('0'));
-        m /= u64::from(radix);
-        if m == 0 {
-            break;
-        }
-    }
-    if n < 0.0 {
-        digits.push('-');
-    }
-    Ok(digits.iter().rev().collect())
+    js::radix_string(n, radix).map_err(fail)
 }
 
 /// A key that is an array index (`"0"`, `"10"`, not `"01"` or `"-1"`):

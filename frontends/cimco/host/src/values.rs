@@ -129,7 +129,10 @@ pub fn is_null(v: &Dynamic) -> bool {
 /// A Rhai value from an interpreter value.
 pub fn from_value(v: &Value) -> Dynamic {
     match v {
-        Value::Null => Dynamic::UNIT,
+        Value::Null | Value::Undefined => Dynamic::UNIT,
+        // Native arrays, objects and functions stay in native code: no
+        // function that holds one runs as a script.
+        Value::Array(_) | Value::Object(_) | Value::Func(_) => Dynamic::UNIT,
         Value::Num(n) => Dynamic::from_float(*n),
         Value::Bool(b) => Dynamic::from_bool(*b),
         Value::Text(s) => Dynamic::from(ImmutableString::from(&**s)),

@@ -109,14 +109,16 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                     out.push(Stmt::If { branches: kept, otherwise: rest });
                 }
             }
-            Stmt::While { cond, body, span } => {
+            Stmt::While { cond, body, span, step } => {
                 let cond = expr(cond);
                 if as_const(&cond).is_some_and(|c| !c.truthy()) {
                     continue;
                 }
                 let mut body = stmts(body);
                 // `while (true) { ...; break; }` with no other way out runs once.
+                let step = stmts(step);
                 if matches!(cond, Expr::Bool(true))
+                    && step.is_empty()
                     && matches!(body.last(), Some(Stmt::Break))
                     && !leaves(&body[..body.len() - 1])
                 {
@@ -124,7 +126,7 @@ pub fn stmts(body: Vec<Stmt>) -> Vec<Stmt> {
                     out.extend(body);
                     continue;
                 }
-                out.push(Stmt::While { cond, body, span });
+                out.push(Stmt::While { cond, body, span, step });
             }
             Stmt::Write(e) => out.push(Stmt::Write(expr(e))),
             Stmt::Assign(p, e) => out.push(Stmt::Assign(p, expr(e))),

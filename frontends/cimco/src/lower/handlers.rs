@@ -226,6 +226,7 @@ impl Entry<'_> {
                         Stmt::Assign(Place::Local(i), b(BinaryOp::Add, Expr::Local(i), num(1.0))),
                     ],
                     span: None,
+                    step: vec![],
                 },
                 whole.clone(),
             ];

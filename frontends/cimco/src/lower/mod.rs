@@ -9,6 +9,10 @@
 //!    compares, computes and concatenates; [`rhai`]: every function (and
 //!    postc's glue) as Rhai, for the ones that are not native and for
 //!    scripts calling each other;
+//!    When any function would be a script, [`general`] lowers the whole
+//!    post again with JavaScript's values in the IR (objects, arrays,
+//!    closures, `undefined`), and that replaces the shaped form when every
+//!    function has a general form;
 //! 4. [`handlers`]: the sections the post's entry points occupy, each a
 //!    call of its entry point (`Write(onLinear(x, y, z, 1))`); [`fold`]:
 //!    constant folding of what the settings make known.
@@ -22,6 +26,7 @@
 pub mod builtins;
 mod consts;
 mod fold;
+mod general;
 mod handlers;
 mod layout;
 mod model;
@@ -119,7 +124,42 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
     if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
         post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
     }
-    let uses_script = functions.iter().any(|f| matches!(f.body, Body::Script(_)));
+    let mut uses_script = functions.iter().any(|f| matches!(f.body, Body::Script(_)));
+    let shaped_script =
+        functions.iter().any(|f| matches!(f.body, Body::Script(_)) && !GLUE.iter().any(|g| g.0 == f.name));
+    let general =
+        if shaped_script { Some(general_post(&model, &setup, whole, &init_stmts, own_feedrate, feed)) } else { None };
+    if let Some(Err(w)) = &general {
+        // `postc inspect` says why the post keeps its scripts.
+        for f in functions.iter_mut() {
+            if let Some(r) = &mut f.why_script {
+                r.what = format!("{}; the post has no general form: {}", r.what, w.what);
+            }
+        }
+    }
+    if let Some(Ok((general, general_layout))) = general {
+        // Every function has a general form. Where the shaped form of a
+        // function is native and takes and returns plain values, it stays
+        // (it runs faster); the others take their general form. A shaped
+        // function that hands an object back through hidden globals
+        // (`native::aggregates`) has callers that expect that, so then the
+        // whole post takes the general form.
+        let returns_aggregate = layout.returns.values().any(|r| r.is_ok());
+        if returns_aggregate {
+            functions = general;
+            layout = general_layout;
+        } else {
+            functions = mixed(&model, functions, general);
+        }
+        layout.reshaped.extend(model.scopes.top_fns.iter().copied());
+        keep_source(program, &model, &setup, &layout, text, &mut functions);
+        post.handlers = handlers(&model, &layout, post.options.lathe, &functions);
+        post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
+        if let (Some(_), Some(f)) = (arity("onInit"), layout.function("onInit")) {
+            post.init.push(Stmt::Eval(Expr::Call(f, vec![])));
+        }
+        uses_script = false;
+    }
     post.functions = functions;
     post.globals = layout.globals;
     if uses_script {
@@ -129,6 +169,199 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
         post.scripts.clear();
     }
     comments(program, text, post);
+}
+
+/// The post lowered whole by [`general`]: its functions (in the order of
+/// the layout it returns) or why it has no such form.
+fn general_post(
+    model: &Model,
+    setup: &Setup,
+    whole: Span,
+    init_stmts: &[ast::Stmt],
+    own_feedrate: bool,
+    feed: (VarId, VarId),
+) -> Result<(Vec<Function>, Layout), native::Why> {
+    // Globals start as the shaped lowering starts them, so that a post
+    // and the post printed from it lower the same way.
+    let mut layout = Layout::new(model);
+    // Its IR says what each function does, not in the words it was written
+    // in (a `switch` as a loop, statements before expressions): the CIMCO
+    // backend prints each from its source.
+    layout.reshaped.extend(model.scopes.top_fns.iter().copied());
+    if !own_feedrate {
+        layout.add_fn(layout::FEEDRATE);
+    }
+    layout.add_fn(layout::INIT);
+    for g in GLUE {
+        layout.add_fn(g.0);
+    }
+    let glue_ids: Vec<_> = GLUE.iter().map(|g| layout.function(g.0)).collect();
+    let mut shared = general::Shared::new(model, setup, &mut layout);
+    let mut functions = Vec::new();
+    for &id in &model.scopes.top_fns {
+        let f = &model.scopes.funcs[id];
+        let func = f.func.expect("top-level functions have a body");
+        let entry = f.name.as_deref().is_some_and(is_entry_point);
+        functions.push(shared.function(id, &func.body, entry, func.span)?);
+    }
+    if !own_feedrate {
+        functions.push(feedrate_function(feed));
+    }
+    let mut init = shared.function(0, init_stmts, false, whole)?;
+    init.name = layout::INIT.into();
+    init.params.clear();
+    functions.push(init);
+    for ((glue, entry, host), id) in GLUE.iter().zip(glue_ids) {
+        let target = shared.layout.function(entry).filter(|_| top_fn(model, entry).is_some());
+        let span = top_fn(model, entry).and_then(|f| f.func).map(|f| f.span);
+        let fields = match *host {
+            names::DRILL_HEADER => Some(names::MILL_DRILLING_FIELDS),
+            names::TURN_DRILL => Some(names::TURN_DRILLING_FIELDS),
+            _ => None,
+        };
+        let arg = fields.and_then(|f| shared.layout.global_index.get(f)).map_or(Expr::Undefined, |g| Expr::Global(*g));
+        let body = match target {
+            Some(f) => {
+                vec![Stmt::Return(Some(Expr::Call(f, vec![Expr::Host { name: (*host).to_string(), args: vec![arg] }])))]
+            }
+            None => vec![],
+        };
+        debug_assert_eq!(id.map(|i| i.index()), Some(functions.len()));
+        functions.push(Function {
+            name: (*glue).to_string(),
+            params: vec![],
+            slots: 0,
+            locals: Vec::new(),
+            body: Body::Native(body),
+            span,
+            why_script: None,
+            source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: true,
+        });
+    }
+    for (id, f) in shared.nested_functions()? {
+        if id.index() != functions.len() {
+            return Err(native::Why { what: "a nested function out of order".into(), span: whole });
+        }
+        functions.push(f);
+    }
+    if let Some((func, slot)) = shared.mutable {
+        let name = model.scopes.funcs[func].locals[slot].clone();
+        return Err(native::Why { what: format!("a closure captures `{name}`, which changes after"), span: whole });
+    }
+    for f in &mut functions {
+        if let Body::Native(b) = &mut f.body {
+            *b = fold::stmts(std::mem::take(b));
+        }
+    }
+    Ok((functions, layout))
+}
+
+/// The shaped functions, with the general form of each top-level function
+/// that is a script or reads `arguments` (its general form takes any
+/// number of arguments; the shaped forms for each number stay for shaped
+/// callers), of `__postc_init` when it is a script, and of the bridges;
+/// the general form's closures come last.
+fn mixed(model: &Model, mut shaped: Vec<Function>, general: Vec<Function>) -> Vec<Function> {
+    let tops = model.scopes.top_fns.len();
+    // The general form's functions after the bridges are its closures.
+    let closures_from =
+        general.iter().rposition(|f| GLUE.iter().any(|g| g.0 == f.name)).map_or(general.len(), |i| i + 1);
+    let first_closure = shaped.len();
+    struct Renumber(usize, usize);
+    impl postc_ir::visit::VisitMut for Renumber {
+        fn visit_expr_mut(&mut self, e: &mut Expr) {
+            if let Expr::Call(f, _) | Expr::Closure { function: f, .. } = e
+                && f.index() >= self.0
+            {
+                *f = FunctionId::new((f.index() - self.0 + self.1) as u16);
+            }
+            postc_ir::visit::walk_expr_mut(self, e);
+        }
+    }
+    let mut renumber = Renumber(closures_from, first_closure);
+    let mut general: Vec<Function> = general
+        .into_iter()
+        .map(|mut f| {
+            if let Body::Native(b) = &mut f.body {
+                for s in b.iter_mut() {
+                    postc_ir::visit::VisitMut::visit_stmt_mut(&mut renumber, s);
+                }
+            }
+            f
+        })
+        .collect();
+    let closures = general.split_off(closures_from);
+    for (i, g) in general.into_iter().enumerate() {
+        let takes_general = if i < tops {
+            matches!(shaped[i].body, Body::Script(_)) || model.scopes.funcs[model.scopes.top_fns[i]].uses_arguments
+        } else {
+            matches!(shaped[i].body, Body::Script(_)) || GLUE.iter().any(|gl| gl.0 == g.name)
+        };
+        if takes_general {
+            shaped[i] = g;
+        }
+    }
+    // A shaped form for some number of arguments that runs the script
+    // (`specialization`) calls the general form instead.
+    for f in shaped.iter_mut().skip(tops) {
+        if matches!(f.body, Body::Script(_))
+            && let Some(&base) = model.scopes.top_fn_names.get(&f.name)
+        {
+            let args = (0..f.params.len()).map(|k| Expr::Local(LocalId::new(k as u16))).collect();
+            f.body = Body::Native(vec![Stmt::Return(Some(Expr::Call(FunctionId::new(base as u16), args)))]);
+            f.slots = f.params.len() as u16;
+            f.why_script = None;
+        }
+    }
+    shaped.extend(closures);
+    shaped
+}
+
+/// postc's `getFeedrate(movement)` for a post that has none: nothing for
+/// a rapid, else the feed through the per-minute or per-revolution variable.
+fn feedrate_function((feed_var, feed_rev_var): (VarId, VarId)) -> Function {
+    Function {
+        name: layout::FEEDRATE.into(),
+        params: vec!["movement".into()],
+        slots: 1,
+        locals: Vec::new(),
+        body: Body::Native(vec![
+            Stmt::If {
+                branches: vec![(
+                    Expr::Binary(
+                        postc_ir::BinaryOp::Eq,
+                        Box::new(Expr::Local(LocalId::new(0))),
+                        Box::new(Expr::Number(builtins::MOVEMENT_RAPID)),
+                    ),
+                    vec![Stmt::Return(Some(Expr::Text(String::new())))],
+                )],
+                otherwise: vec![],
+            },
+            Stmt::If {
+                branches: vec![(
+                    Expr::Quantity(Quantity::FeedPerRev),
+                    vec![Stmt::Return(Some(Expr::FormatVar {
+                        var: feed_rev_var,
+                        value: Box::new(Expr::Quantity(Quantity::Feed)),
+                        span: None,
+                    }))],
+                )],
+                otherwise: vec![],
+            },
+            Stmt::Return(Some(Expr::FormatVar {
+                var: feed_var,
+                value: Box::new(Expr::Quantity(Quantity::Feed)),
+                span: None,
+            })),
+        ]),
+        span: None,
+        why_script: None,
+        source: Vec::new(),
+        uses_arguments: false,
+        starts_undefined: false,
+    }
 }
 
 /// The source's comments the IR keeps ([`crate::docs`]): the file's head,
@@ -341,47 +574,12 @@ fn functions(
             span: Some(func.span),
             why_script,
             source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         });
     }
-    if let Some((feed_var, feed_rev_var)) = feed {
-        functions.push(Function {
-            name: layout::FEEDRATE.into(),
-            params: vec!["movement".into()],
-            slots: 1,
-            locals: Vec::new(),
-            body: Body::Native(vec![
-                Stmt::If {
-                    branches: vec![(
-                        Expr::Binary(
-                            postc_ir::BinaryOp::Eq,
-                            Box::new(Expr::Local(LocalId::new(0))),
-                            Box::new(Expr::Number(builtins::MOVEMENT_RAPID)),
-                        ),
-                        vec![Stmt::Return(Some(Expr::Text(String::new())))],
-                    )],
-                    otherwise: vec![],
-                },
-                Stmt::If {
-                    branches: vec![(
-                        Expr::Quantity(Quantity::FeedPerRev),
-                        vec![Stmt::Return(Some(Expr::FormatVar {
-                            var: feed_rev_var,
-                            value: Box::new(Expr::Quantity(Quantity::Feed)),
-                            span: None,
-                        }))],
-                    )],
-                    otherwise: vec![],
-                },
-                Stmt::Return(Some(Expr::FormatVar {
-                    var: feed_var,
-                    value: Box::new(Expr::Quantity(Quantity::Feed)),
-                    span: None,
-                })),
-            ]),
-            span: None,
-            why_script: None,
-            source: Vec::new(),
-        });
+    if let Some(feed) = feed {
+        functions.push(feedrate_function(feed));
     }
     let init_native = {
         let mut n = native::Native::new(model, setup, layout, 0);
@@ -399,6 +597,8 @@ fn functions(
         span: Some(whole),
         why_script: init_native.err().map(|w| postc_ir::ScriptReason { what: w.what, span: Some(w.span) }),
         source: Vec::new(),
+        uses_arguments: false,
+        starts_undefined: false,
     });
     for (g, entry, _) in GLUE {
         let body = if arity(entry).is_some() { Body::Script(ScriptId::new(0)) } else { Body::Native(vec![]) };
@@ -417,6 +617,8 @@ fn functions(
             span,
             why_script,
             source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         });
     }
     // Lowering may add forms (`f.apply(null, words)` with a list whose
@@ -452,6 +654,8 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
             span: Some(func.span),
             why_script: None,
             source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         },
         Err(w) => Function {
             // Runs the script of the same name.
@@ -466,6 +670,8 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
                 span: Some(w.span),
             }),
             source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         },
     }
 }

@@ -41,7 +41,7 @@ impl Lowerer<'_> {
             }
             (None, _) => IrExpr::Bool(true),
         };
-        vec![IrStmt::While { cond, body: lowered, span: Some(s.span) }]
+        vec![IrStmt::While { cond, body: lowered, span: Some(s.span), step: vec![] }]
     }
 
     /// The condition that keeps a loop going (or, `negate`, that stops it).
@@ -175,7 +175,7 @@ impl Lowerer<'_> {
         let mut lowered = self.block(body);
         self.loops.pop();
         lowered.push(IrStmt::Assign(place, bin(IrOp::Add, counter, step_value)));
-        out.push(IrStmt::While { cond, body: lowered, span: Some(s.span) });
+        out.push(IrStmt::While { cond, body: lowered, span: Some(s.span), step: vec![] });
         out
     }
 

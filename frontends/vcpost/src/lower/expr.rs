@@ -246,6 +246,8 @@ impl Lowerer<'_> {
             span: None,
             why_script: None,
             source: Vec::new(),
+            uses_arguments: false,
+            starts_undefined: false,
         });
         self.host_functions.insert(canonical.to_string(), id);
         Some(id)

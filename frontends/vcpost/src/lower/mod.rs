@@ -201,6 +201,8 @@ impl Lowerer<'_> {
                 span: Some(p.header),
                 why_script: None,
                 source: Vec::new(),
+                uses_arguments: false,
+                starts_undefined: false,
             });
             let key = p.name.key();
             if !crate::token::is_valid_name(&p.name.text) {

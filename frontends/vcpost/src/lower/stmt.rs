@@ -73,6 +73,8 @@ impl Lowerer<'_> {
                 span: Some(p.header),
                 why_script: None,
                 source: Vec::new(),
+                uses_arguments: false,
+                starts_undefined: false,
             };
         }
     }

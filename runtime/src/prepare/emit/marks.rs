@@ -63,7 +63,9 @@ fn rename(body: Vec<Stmt>, alias: &HashMap<LocalId, LocalId>) -> Vec<Stmt> {
                 branches: branches.into_iter().map(|(c, b)| (rename_expr(c, alias), rename(b, alias))).collect(),
                 otherwise: rename(otherwise, alias),
             },
-            Stmt::While { cond, body, span } => Stmt::While { cond, body: rename(body, alias), span },
+            Stmt::While { cond, body, span, step } => {
+                Stmt::While { cond, body: rename(body, alias), span, step: rename(step, alias) }
+            }
             other => other,
         })
         .collect()
@@ -110,11 +112,11 @@ fn drop_truncates_after(body: Vec<Stmt>, mut fresh: Option<LocalId>) -> (Vec<Stm
                 out.push(Stmt::If { branches, otherwise });
                 fresh = fresh.filter(|_| quiet);
             }
-            Stmt::While { cond, body, span } => {
+            Stmt::While { cond, body, span, step } if step.is_empty() => {
                 let inherited = fresh.filter(|_| super::super::locals::runs_once(&body));
                 let (body, _) = drop_truncates_after(body, inherited);
                 fresh = fresh.filter(|_| writes_nothing(&body));
-                out.push(Stmt::While { cond, body, span });
+                out.push(Stmt::While { cond, body, span, step });
             }
             other => {
                 fresh = None;
@@ -199,7 +201,9 @@ fn drop_unread(body: Vec<Stmt>, read: &HashSet<LocalId>) -> Vec<Stmt> {
                 branches: branches.into_iter().map(|(c, b)| (c, drop_unread(b, read))).collect(),
                 otherwise: drop_unread(otherwise, read),
             },
-            Stmt::While { cond, body, span } => Stmt::While { cond, body: drop_unread(body, read), span },
+            Stmt::While { cond, body, span, step } => {
+                Stmt::While { cond, body: drop_unread(body, read), span, step: drop_unread(step, read) }
+            }
             other => other,
         })
         .collect()
@@ -211,7 +215,7 @@ mod tests {
     use crate::prepare::testing::set;
 
     fn once(body: Vec<Stmt>) -> Stmt {
-        Stmt::While { cond: Expr::Bool(true), body, span: None }
+        Stmt::While { cond: Expr::Bool(true), body, span: None, step: vec![] }
     }
 
     fn m(i: u16) -> LocalId {
@@ -252,7 +256,7 @@ mod tests {
         let emit = Stmt::Emit(vec![Piece::Text(b"G1".to_vec())]);
         let body = vec![
             Stmt::Mark(m(0)),
-            Stmt::While { cond: Expr::Bool(false), body: vec![Stmt::Truncate(m(0)), emit], span: None },
+            Stmt::While { cond: Expr::Bool(false), body: vec![Stmt::Truncate(m(0)), emit], span: None, step: vec![] },
         ];
         assert_eq!(drop_truncates(body.clone()), body);
     }

@@ -139,7 +139,9 @@ impl<'f> Emitter<'f> {
                 branches: branches.into_iter().map(|(c, b)| (c, self.handler(b))).collect(),
                 otherwise: self.handler(otherwise),
             },
-            Stmt::While { cond, body, span } => Stmt::While { cond, body: self.handler(body), span },
+            Stmt::While { cond, body, span, step } => {
+                Stmt::While { cond, body: self.handler(body), span, step: self.handler(step) }
+            }
             other => other,
         }
     }
@@ -298,7 +300,7 @@ impl<'f> Emitter<'f> {
         if breaks(&inner) {
             // An early `return`: a loop to leave.
             inner.push(Stmt::Break);
-            starts.push(Stmt::While { cond: Expr::Bool(true), body: merge(inner), span: None });
+            starts.push(Stmt::While { cond: Expr::Bool(true), body: merge(inner), span: None, step: vec![] });
         } else {
             starts.extend(inner);
         }

@@ -159,53 +159,14 @@ pub(super) fn breaks(body: &[Stmt]) -> bool {
 
 /// The highest local slot statements use.
 pub(crate) fn max_slot(body: &[Stmt]) -> Option<LocalId> {
-    fn e(x: &Expr, m: &mut Option<LocalId>) {
-        match x {
-            Expr::Local(k) | Expr::Written(k) => *m = (*m).max(Some(*k)),
-            Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => e(value, m),
-            Expr::Binary(_, a, b) => {
-                e(a, m);
-                e(b, m);
-            }
-            Expr::Choose(c, a, b) => {
-                e(c, m);
-                e(a, m);
-                e(b, m);
-            }
-            Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter().for_each(|a| e(a, m)),
-            _ => {}
-        }
-    }
     let mut m = None;
     for st in body {
-        match st {
-            Stmt::Mark(k) | Stmt::Truncate(k) | Stmt::Blocks(k) | Stmt::Cut { at: k, .. } => m = m.max(Some(*k)),
-            Stmt::MoveBack { to, from } => m = m.max(Some(*to)).max(Some(*from)),
-            Stmt::Assign(p, x) => {
-                if let Place::Local(k) = p {
-                    m = m.max(Some(*k));
-                }
-                e(x, &mut m);
-            }
-            Stmt::Eval(x) | Stmt::Write(x) | Stmt::Return(Some(x)) => e(x, &mut m),
-            Stmt::Emit(pieces) | Stmt::Line { pieces, .. } => pieces.iter().for_each(|p| {
-                if let Piece::Expr(x) = p {
-                    e(x, &mut m)
-                }
-            }),
-            Stmt::If { branches, otherwise } => {
-                for (c, b) in branches {
-                    e(c, &mut m);
-                    m = m.max(max_slot(b));
-                }
-                m = m.max(max_slot(otherwise));
-            }
-            Stmt::While { cond, body, .. } => {
-                e(cond, &mut m);
-                m = m.max(max_slot(body));
-            }
-            _ => {}
-        }
+        // The statement's walks are the exhaustive ones of `exec`; they
+        // take it mutably, so a copy is walked (this runs once a post).
+        let mut st = st.clone();
+        st.for_each_named_local_mut(|_, k| m = m.max(Some(*k)));
+        st.for_each_expr_mut(|x| x.for_each_local_mut(&mut |k: &mut LocalId| m = m.max(Some(*k))));
+        st.for_each_body_mut(|b| m = m.max(max_slot(b)));
     }
     m
 }
@@ -300,7 +261,9 @@ pub(super) fn merge(stmts: Vec<Stmt>) -> Vec<Stmt> {
                 branches: branches.into_iter().map(|(c, b)| (c, merge(b))).collect(),
                 otherwise: merge(otherwise),
             }),
-            (_, Stmt::While { cond, body, span }) => out.push(Stmt::While { cond, body: merge(body), span }),
+            (_, Stmt::While { cond, body, span, step }) => {
+                out.push(Stmt::While { cond, body: merge(body), span, step: merge(step) })
+            }
             (_, s) => out.push(s),
         }
     }

@@ -3,7 +3,7 @@
 //! used before, so `t` can live in `w`'s slot. The fast path (`emit`) then
 //! sees one local built by concatenation, which it keeps in the output.
 
-use postc_ir::{Expr, LocalId, Piece, Place, Stmt};
+use postc_ir::{Expr, LocalId, Place, Stmt};
 
 /// Coalesces top-level copies between locals at or past `first_var` (the
 /// parameters keep their slots), and drops top-level stores of constants
@@ -74,55 +74,5 @@ fn visit(s: &Stmt, f: &mut dyn FnMut(&LocalId)) {
 }
 
 fn visit_mut(s: &mut Stmt, f: &mut dyn FnMut(&mut LocalId)) {
-    match s {
-        Stmt::Line { pieces, .. } => pieces.iter_mut().for_each(|p| {
-            if let Piece::Expr(e) = p {
-                expr_mut(e, f)
-            }
-        }),
-        Stmt::Write(e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => expr_mut(e, f),
-        Stmt::Assign(place, e) => {
-            if let Place::Local(k) = place {
-                f(k);
-            }
-            expr_mut(e, f);
-        }
-        Stmt::If { branches, otherwise } => {
-            for (c, b) in branches {
-                expr_mut(c, f);
-                b.iter_mut().for_each(|s| visit_mut(s, f));
-            }
-            otherwise.iter_mut().for_each(|s| visit_mut(s, f));
-        }
-        Stmt::While { cond, body, .. } => {
-            expr_mut(cond, f);
-            body.iter_mut().for_each(|s| visit_mut(s, f));
-        }
-        Stmt::Break | Stmt::Continue | Stmt::Return(None) | Stmt::Script(_) | Stmt::Forget(_) | Stmt::Origin(_) => {}
-    }
-}
-
-fn expr_mut(e: &mut Expr, f: &mut dyn FnMut(&mut LocalId)) {
-    match e {
-        Expr::Local(k) => f(k),
-        Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => expr_mut(value, f),
-        Expr::Binary(_, a, b) => {
-            expr_mut(a, f);
-            expr_mut(b, f);
-        }
-        Expr::Choose(c, a, b) => {
-            expr_mut(c, f);
-            expr_mut(a, f);
-            expr_mut(b, f);
-        }
-        Expr::Call(_, args) | Expr::Builtin(_, args) => args.iter_mut().for_each(|a| expr_mut(a, f)),
-        Expr::Number(_)
-        | Expr::Text(_)
-        | Expr::Bool(_)
-        | Expr::Null
-        | Expr::Quantity(_)
-        | Expr::Global(_)
-        | Expr::Var(_)
-        | Expr::Previous(_) => {}
-    }
+    postc_ir::visit::locals_mut(s, f);
 }

@@ -50,7 +50,7 @@ impl Native<'_, '_> {
             body.push(IrStmt::If { branches: vec![(cond, b)], otherwise: vec![] });
         }
         body.push(IrStmt::Break);
-        out.push(IrStmt::While { cond: Ir::Bool(true), body, span: Some(at) });
+        out.push(IrStmt::While { cond: Ir::Bool(true), body, span: Some(at), step: vec![] });
         Ok(())
     }
 }

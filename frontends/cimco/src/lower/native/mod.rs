@@ -329,7 +329,7 @@ impl Native<'_, '_> {
             }
             StmtKind::While { cond, body } => {
                 let b = self.loop_body(body, None, s.span, out)?;
-                out.push(IrStmt::While { cond: self.expr(cond)?, body: b, span: Some(s.span) });
+                out.push(IrStmt::While { cond: self.expr(cond)?, body: b, span: Some(s.span), step: vec![] });
             }
             StmtKind::DoWhile { body, cond } => {
                 if has_continue(body) {
@@ -341,7 +341,7 @@ impl Native<'_, '_> {
                     branches: vec![(Ir::Unary(IrUn::Not, Box::new(c)), vec![IrStmt::Break])],
                     otherwise: vec![],
                 });
-                out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span) });
+                out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(s.span), step: vec![] });
             }
             StmtKind::For { init, test, update, body } => {
                 if let Some((slot, from, to)) = self.unrollable(init, test, update, body) {
@@ -367,7 +367,7 @@ impl Native<'_, '_> {
                     Some(t) => self.expr(t)?,
                     None => Ir::Bool(true),
                 };
-                out.push(IrStmt::While { cond, body: b, span: Some(s.span) });
+                out.push(IrStmt::While { cond, body: b, span: Some(s.span), step: vec![] });
             }
             StmtKind::Switch { discriminant, cases } => {
                 let before = self.counts();

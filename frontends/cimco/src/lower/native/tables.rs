@@ -160,7 +160,7 @@ impl Native<'_, '_> {
         }
         if breaks_switch(body) {
             b.push(IrStmt::Break);
-            out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(at) });
+            out.push(IrStmt::While { cond: Ir::Bool(true), body: b, span: Some(at), step: vec![] });
         } else {
             out.extend(b);
         }

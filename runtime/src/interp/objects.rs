@@ -1,0 +1,513 @@
+//! JavaScript's arrays, objects and function values in the interpreter:
+//! reading and setting properties, the built-in methods of arrays, texts
+//! and numbers, calling function values, `throw` and `try`.
+//!
+//! A property is looked up by its key's text: arrays and texts answer
+//! `length` and indices, objects their own properties (post objects have
+//! no prototypes beyond the built-in methods). Errors a JavaScript engine
+//! throws (reading a property of `undefined`, calling what is not a
+//! function) are [`TYPE_ERROR`]s, which `try` catches as it catches a
+//! `throw`.
+
+use postc_ir::{Diagnostic, FunctionId, Span};
+
+use super::Result;
+use super::ops::js_number;
+use crate::engine::Engine;
+use crate::js;
+use crate::value::{Closure, Object, Text, Value};
+
+/// The code of a value the post threw and did not catch.
+pub const THROWN: &str = "RT036";
+
+/// The code of a JavaScript type error in native code (a property of
+/// `undefined`, a call of what is not a function): `try` catches it.
+pub const TYPE_ERROR: &str = "RT037";
+
+/// Arrays grow to at most this many items (a post's arrays hold words,
+/// not toolpaths).
+pub const MAX_ITEMS: usize = 1 << 20;
+
+/// A JavaScript `TypeError` of native code.
+pub(crate) fn type_error(message: String) -> Box<Diagnostic> {
+    Box::new(Diagnostic::error(TYPE_ERROR, format!("TypeError: {message}")))
+}
+
+/// A key as text: numbers as JavaScript writes them (`a[1]` is `a["1"]`).
+fn key_text(key: &Value) -> Text {
+    match key {
+        Value::Text(t) => t.clone(),
+        other => other.to_text(),
+    }
+}
+
+/// An array index a key names, if it is one.
+fn index(key: &Value) -> Option<usize> {
+    match key {
+        Value::Num(n) if *n >= 0.0 && n.fract() == 0.0 && *n < MAX_ITEMS as f64 => Some(*n as usize),
+        Value::Text(t) => {
+            let b = t.as_bytes();
+            let canonical = !b.is_empty() && b.iter().all(u8::is_ascii_digit) && (b.len() == 1 || b[0] != b'0');
+            canonical.then(|| t.parse::<usize>().ok()).flatten().filter(|i| *i < MAX_ITEMS)
+        }
+        _ => None,
+    }
+}
+
+/// `value[key]`.
+pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
+    Ok(match value {
+        Value::Object(o) => {
+            let o = o.borrow();
+            let k = key_text(key);
+            o.get(k.as_bytes()).cloned().unwrap_or(Value::Undefined)
+        }
+        Value::Array(items) => {
+            let items = items.borrow();
+            match index(key) {
+                Some(i) => items.get(i).cloned().unwrap_or(Value::Undefined),
+                None if key_text(key).as_bytes() == b"length" => Value::Num(items.len() as f64),
+                None => Value::Undefined,
+            }
+        }
+        Value::Text(t) => match index(key) {
+            Some(i) => match t.ascii_bytes() {
+                Some(b) => b.get(i).map_or(Value::Undefined, |c| Value::Text(Text::from_bytes(&[*c]))),
+                None => t.chars().nth(i).map_or(Value::Undefined, |c| Value::text(c.encode_utf8(&mut [0; 4]))),
+            },
+            None if key_text(key).as_bytes() == b"length" => {
+                Value::Num(t.ascii_bytes().map_or_else(|| t.chars().count(), <[u8]>::len) as f64)
+            }
+            None => Value::Undefined,
+        },
+        Value::Null | Value::Undefined => {
+            let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
+            return Err(type_error(format!("cannot read property '{}' of {what}", key_text(key))));
+        }
+        Value::Num(_) | Value::Bool(_) | Value::Func(_) => Value::Undefined,
+    })
+}
+
+/// `value[key] = v`.
+pub(crate) fn set_member(value: &Value, key: &Value, v: Value) -> Result<()> {
+    match value {
+        Value::Object(o) => o.borrow_mut().set(key_text(key), v),
+        Value::Array(items) => {
+            let mut items = items.borrow_mut();
+            match index(key) {
+                Some(i) => {
+                    if i >= items.len() {
+                        items.resize(i + 1, Value::Undefined);
+                    }
+                    items[i] = v;
+                }
+                // `a.length = n` cuts or grows the array.
+                None if key_text(key).as_bytes() == b"length" => {
+                    let n = js_number(&v);
+                    if n >= 0.0 && n.fract() == 0.0 && n <= MAX_ITEMS as f64 {
+                        items.resize(n as usize, Value::Undefined);
+                    }
+                }
+                None => {}
+            }
+        }
+        Value::Null | Value::Undefined => {
+            let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
+            return Err(type_error(format!("cannot set property '{}' of {what}", key_text(key))));
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// The names `for (k in value)` walks.
+pub(crate) fn keys(value: &Value) -> Value {
+    let names: Vec<Value> = match value {
+        Value::Object(o) => {
+            // ES2015 property order: array indices first, ascending, then
+            // the other names in the order they were made.
+            let o = o.borrow();
+            let mut indices: Vec<(u32, &Text)> =
+                o.keys.iter().filter_map(|k| array_index(k.as_str()).map(|i| (i, k))).collect();
+            indices.sort_by_key(|(i, _)| *i);
+            let names = o.keys.iter().filter(|k| array_index(k.as_str()).is_none());
+            indices.into_iter().map(|(_, k)| k).chain(names).cloned().map(Value::Text).collect()
+        }
+        Value::Array(items) => (0..items.borrow().len()).map(|i| Value::text(&i.to_string())).collect(),
+        Value::Text(t) => (0..t.chars().count()).map(|i| Value::text(&i.to_string())).collect(),
+        _ => Vec::new(),
+    };
+    Value::array(names)
+}
+
+/// The array index a property name is (`"2"`, not `"02"` or `"-1"`).
+fn array_index(name: &str) -> Option<u32> {
+    let i: u32 = name.parse().ok()?;
+    (i != u32::MAX && i.to_string() == name).then_some(i)
+}
+
+impl Engine<'_> {
+    /// Calls a function value with `this` and arguments.
+    pub(crate) fn call_value(&mut self, callee: &Value, this: Value, mut args: Vec<Value>) -> Result<Value> {
+        let Value::Func(closure) = callee else {
+            return Err(type_error(format!("{} is not a function", describe(callee))));
+        };
+        let closure: &Closure = closure;
+        let function = closure.function;
+        if !closure.captures.is_empty() {
+            let mut all = closure.captures.clone();
+            all.append(&mut args);
+            args = all;
+        }
+        self.this_stack.push(this);
+        let result = self.call(function, args);
+        self.this_stack.pop();
+        result
+    }
+
+    /// The object a method runs on.
+    pub(crate) fn this(&self) -> Value {
+        self.this_stack.last().cloned().unwrap_or(Value::Undefined)
+    }
+
+    /// `object.method(args)`: the object's own function property, or a
+    /// built-in method of arrays, texts and numbers.
+    pub(crate) fn invoke(&mut self, object: Value, method: &Text, args: Vec<Value>) -> Result<Value> {
+        if let Value::Object(o) = &object {
+            let f = o.borrow().get(method.as_bytes()).cloned();
+            return match f {
+                Some(f) => self.call_value(&f, object.clone(), args),
+                None if method.as_bytes() == b"hasOwnProperty" => {
+                    let k = args.first().map(key_text).unwrap_or_else(|| Text::new("undefined"));
+                    Ok(Value::Bool(o.borrow().find(k.as_bytes()).is_some()))
+                }
+                None => Err(type_error(format!("the object has no method '{method}'"))),
+            };
+        }
+        let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
+        match (&object, method.as_str()) {
+            (Value::Array(items), name) => self.array_method(items, name, args),
+            (Value::Text(t), name) => text_method(t, name, &args),
+            (Value::Num(n), "toFixed") => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
+            (Value::Num(n), "toString") => match arg(0) {
+                Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
+                r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
+            },
+            (Value::Func(_), "call") => {
+                let this = arg(0);
+                self.call_value(&object, this, args.into_iter().skip(1).collect())
+            }
+            (Value::Func(_), "apply") => {
+                let this = arg(0);
+                let list = match arg(1) {
+                    Value::Array(items) => items.borrow().clone(),
+                    _ => Vec::new(),
+                };
+                self.call_value(&object, this, list)
+            }
+            (Value::Null | Value::Undefined, _) => {
+                Err(type_error(format!("cannot call method '{method}' of {}", describe(&object))))
+            }
+            (_, "toString") => Ok(Value::Text(object.to_text())),
+            _ => Err(type_error(format!("{} has no method '{method}'", describe(&object)))),
+        }
+    }
+
+    fn array_method(
+        &mut self,
+        items: &std::rc::Rc<std::cell::RefCell<Vec<Value>>>,
+        name: &str,
+        args: Vec<Value>,
+    ) -> Result<Value> {
+        let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
+        let len = items.borrow().len();
+        // A relative index (`slice(-2)`) as an offset into the array.
+        let at = |v: Value, default: usize| match v {
+            Value::Undefined => default,
+            v => {
+                let x = js_number(&v);
+                let x = if x.is_nan() { 0.0 } else { x.trunc() };
+                if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) }
+            }
+        };
+        Ok(match name {
+            "push" => {
+                let mut items = items.borrow_mut();
+                if items.len() + args.len() > MAX_ITEMS {
+                    return Err(too_many());
+                }
+                items.extend(args);
+                Value::Num(items.len() as f64)
+            }
+            "pop" => items.borrow_mut().pop().unwrap_or(Value::Undefined),
+            "shift" => {
+                let mut items = items.borrow_mut();
+                if items.is_empty() { Value::Undefined } else { items.remove(0) }
+            }
+            "unshift" => {
+                let mut items = items.borrow_mut();
+                if items.len() + args.len() > MAX_ITEMS {
+                    return Err(too_many());
+                }
+                items.splice(0..0, args);
+                Value::Num(items.len() as f64)
+            }
+            "join" => {
+                let sep = match arg(0) {
+                    Value::Undefined => Text::new(","),
+                    v => key_text(&v),
+                };
+                let mut s = String::new();
+                for (i, item) in items.borrow().iter().enumerate() {
+                    if i > 0 {
+                        s.push_str(sep.as_str());
+                    }
+                    if !matches!(item, Value::Null | Value::Undefined) {
+                        item.append_to(&mut s);
+                    }
+                    if s.len() > crate::interp::MAX_TEXT_BYTES {
+                        return Err(Box::new(crate::interp::text_budget_error(s.len())));
+                    }
+                }
+                Value::Text(Text::from(s))
+            }
+            "indexOf" => {
+                let target = arg(0);
+                let from = at(arg(1), 0);
+                let found = items.borrow().iter().skip(from).position(|v| super::ops::strict_eq(v, &target));
+                Value::Num(found.map_or(-1.0, |i| (i + from) as f64))
+            }
+            "slice" => {
+                let (a, b) = (at(arg(0), 0), at(arg(1), len));
+                Value::array(if a < b { items.borrow()[a..b].to_vec() } else { Vec::new() })
+            }
+            "concat" => {
+                let mut all = items.borrow().clone();
+                for a in args {
+                    match a {
+                        Value::Array(more) => all.extend(more.borrow().iter().cloned()),
+                        other => all.push(other),
+                    }
+                }
+                if all.len() > MAX_ITEMS {
+                    return Err(too_many());
+                }
+                Value::array(all)
+            }
+            "reverse" => {
+                items.borrow_mut().reverse();
+                Value::Array(items.clone())
+            }
+            "splice" => {
+                let start = at(arg(0), 0);
+                let count = match args.get(1) {
+                    None => len - start,
+                    Some(v) => (js_number(v).max(0.0) as usize).min(len - start),
+                };
+                let added: Vec<Value> = args.iter().skip(2).cloned().collect();
+                let removed: Vec<Value> = items.borrow_mut().splice(start..start + count, added).collect();
+                Value::array(removed)
+            }
+            "forEach" | "map" | "filter" | "some" | "every" => {
+                let f = arg(0);
+                let snapshot = items.borrow().clone();
+                let mut out = Vec::new();
+                for (i, item) in snapshot.into_iter().enumerate() {
+                    let r = self.call_value(
+                        &f,
+                        Value::Undefined,
+                        vec![item.clone(), Value::Num(i as f64), Value::Array(items.clone())],
+                    )?;
+                    match name {
+                        "map" => out.push(r),
+                        "filter" if r.truthy() => out.push(item),
+                        "some" if r.truthy() => return Ok(Value::Bool(true)),
+                        "every" if !r.truthy() => return Ok(Value::Bool(false)),
+                        _ => {}
+                    }
+                }
+                match name {
+                    "map" | "filter" => Value::array(out),
+                    "some" => Value::Bool(false),
+                    "every" => Value::Bool(true),
+                    _ => Value::Undefined,
+                }
+            }
+            "sort" => {
+                let f = arg(0);
+                let mut list = items.borrow().clone();
+                // Insertion sort with the post's comparison (stable, as
+                // ES2019 requires; posts sort a handful of items).
+                for i in 1..list.len() {
+                    let mut j = i;
+                    while j > 0 {
+                        let order = match &f {
+                            Value::Undefined => {
+                                if list[j - 1].to_text() > list[j].to_text() {
+                                    1.0
+                                } else {
+                                    0.0
+                                }
+                            }
+                            f => js_number(&self.call_value(
+                                f,
+                                Value::Undefined,
+                                vec![list[j - 1].clone(), list[j].clone()],
+                            )?),
+                        };
+                        if order > 0.0 {
+                            list.swap(j - 1, j);
+                            j -= 1;
+                        } else {
+                            break;
+                        }
+                    }
+                }
+                *items.borrow_mut() = list;
+                Value::Array(items.clone())
+            }
+            "toString" => Value::Text(Value::Array(items.clone()).to_text()),
+            other => return Err(type_error(format!("an array has no method '{other}'"))),
+        })
+    }
+}
+
+/// The built-in methods of a text.
+fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
+    let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
+    let chars: Vec<char> = t.chars().collect();
+    let len = chars.len();
+    let int = |v: Value, default: f64| match v {
+        Value::Undefined => default,
+        v => {
+            let x = js_number(&v);
+            if x.is_nan() { 0.0 } else { x.trunc() }
+        }
+    };
+    let slice =
+        |a: usize, b: usize| Value::text(&chars[a.min(len)..b.min(len).max(a.min(len))].iter().collect::<String>());
+    let rel = |x: f64| if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) };
+    Ok(match name {
+        "substring" => {
+            let a = int(arg(0), 0.0).clamp(0.0, len as f64) as usize;
+            let b = int(arg(1), len as f64).clamp(0.0, len as f64) as usize;
+            slice(a.min(b), a.max(b))
+        }
+        "substr" => {
+            let a = rel(int(arg(0), 0.0));
+            let n = int(arg(1), len as f64).max(0.0) as usize;
+            slice(a, a.saturating_add(n))
+        }
+        "slice" => {
+            let (a, b) = (rel(int(arg(0), 0.0)), rel(int(arg(1), len as f64)));
+            if a < b { slice(a, b) } else { Value::text("") }
+        }
+        "charAt" => {
+            let i = int(arg(0), 0.0);
+            if i >= 0.0 && (i as usize) < len { slice(i as usize, i as usize + 1) } else { Value::text("") }
+        }
+        "charCodeAt" => {
+            let i = int(arg(0), 0.0);
+            if i >= 0.0 && (i as usize) < len {
+                Value::Num(f64::from(chars[i as usize] as u32))
+            } else {
+                Value::Num(f64::NAN)
+            }
+        }
+        "indexOf" | "lastIndexOf" => {
+            let needle: Vec<char> = key_text(&arg(0)).chars().collect();
+            let fits = |i: usize| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..];
+            let found = if name == "indexOf" {
+                let from = int(arg(1), 0.0).clamp(0.0, len as f64) as usize;
+                (from..=len).find(|&i| fits(i))
+            } else {
+                let from = int(arg(1), len as f64).clamp(0.0, len as f64) as usize;
+                (0..=from.min(len)).rev().find(|&i| fits(i))
+            };
+            Value::Num(found.map_or(-1.0, |i| i as f64))
+        }
+        "toUpperCase" => Value::text(&t.to_uppercase()),
+        "toLowerCase" => Value::text(&t.to_lowercase()),
+        "trim" => Value::text(t.trim()),
+        "split" => {
+            let parts: Vec<Value> = match arg(0) {
+                Value::Undefined => vec![Value::Text(t.clone())],
+                sep => {
+                    let sep = key_text(&sep);
+                    if sep.is_empty() {
+                        chars.iter().map(|c| Value::text(c.encode_utf8(&mut [0; 4]))).collect()
+                    } else {
+                        t.split(sep.as_str()).map(Value::text).collect()
+                    }
+                }
+            };
+            Value::array(parts)
+        }
+        "concat" => {
+            let mut s = t.to_string();
+            args.iter().for_each(|a| a.append_to(&mut s));
+            Value::Text(Text::from(s))
+        }
+        "toString" | "valueOf" => Value::Text(t.clone()),
+        other => return Err(type_error(format!("a text has no method '{other}'"))),
+    })
+}
+
+fn too_many() -> Box<Diagnostic> {
+    Box::new(
+        Diagnostic::error(
+            crate::interp::TEXT_BUDGET,
+            format!("the post built an array of more than {MAX_ITEMS} items and was stopped"),
+        )
+        .note("no output is written"),
+    )
+}
+
+/// How a value is named in a type error.
+fn describe(v: &Value) -> String {
+    match v {
+        Value::Null => "null".into(),
+        Value::Undefined => "undefined".into(),
+        Value::Text(t) => format!("the text \"{t}\""),
+        Value::Num(n) => format!("the number {}", js::number_to_string(*n)),
+        Value::Bool(b) => format!("{b}"),
+        Value::Array(_) => "an array".into(),
+        Value::Object(_) => "an object".into(),
+        Value::Func(_) => "a function".into(),
+    }
+}
+
+/// A new object of properties.
+pub(crate) fn object(props: Vec<(Text, Value)>) -> Value {
+    let mut o = Object::default();
+    for (k, v) in props {
+        o.set(k, v);
+    }
+    Value::object(o)
+}
+
+/// A new function value.
+pub(crate) fn closure(function: FunctionId, captures: Vec<Value>) -> Value {
+    Value::Func(std::rc::Rc::new(Closure { function, captures }))
+}
+
+/// The error of a value thrown and not caught, at the `throw`.
+pub(crate) fn uncaught(value: &Value, span: Option<Span>) -> Box<Diagnostic> {
+    let text = match value {
+        Value::Object(o) => {
+            let o = o.borrow();
+            match (o.get(b"name"), o.get(b"message")) {
+                (Some(n), Some(m)) => format!("{}: {}", n.to_text(), m.to_text()),
+                (None, Some(m)) => m.to_text().to_string(),
+                _ => "[object Object]".into(),
+            }
+        }
+        other => other.to_text().to_string(),
+    };
+    let d = Diagnostic::error(THROWN, format!("the post stopped with an error it threw: {text}"))
+        .note("no output is written");
+    Box::new(match span {
+        Some(s) => d.at(s, "thrown here"),
+        None => d,
+    })
+}
