@@ -178,9 +178,11 @@ fn read_frame<R: BufRead>(input: &mut Resync<R>) -> Frame {
         }
         headers = true;
         // A frame whose length was short leaves the rest of its body
-        // before the next header (`}Content-Length: 45`): the header is
-        // found where it starts, and the frames after it read again.
-        let text = match text.to_ascii_lowercase().find("content-length:") {
+        // before the next header (`}Content-Length: 45`), and a frame cut
+        // inside its header leaves that header's start before it
+        // (`Content-Length: 1...Content-Length: 45`): the last header on
+        // the line is the frame's, and the frames after it read again.
+        let text = match text.to_ascii_lowercase().rfind("content-length:") {
             Some(at) => &text[at..],
             None => text,
         };
