@@ -80,7 +80,15 @@ impl Post {
     }
 
     /// Adds comment lines before `on` (after any it has already).
+    /// A line that holds a line break (a lone `\r` in the source, which
+    /// `str::lines` keeps) becomes as many lines: a comment line never
+    /// holds one.
     pub fn add_comment(&mut self, on: CommentTarget, lines: Vec<String>) {
+        let lines: Vec<String> = if lines.iter().any(|l| l.contains(['\n', '\r'])) {
+            lines.iter().flat_map(|l| l.split(['\n', '\r']).map(str::to_string).collect::<Vec<_>>()).collect()
+        } else {
+            lines
+        };
         if lines.is_empty() {
             return;
         }

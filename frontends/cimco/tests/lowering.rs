@@ -231,3 +231,13 @@ fn the_field_post_without_a_regular_expression_lowers_whole() {
         assert!(native(&post, f), "{f}: {}", why(&post, f));
     }
 }
+
+/// A comment with a lone carriage return (which `str::lines` keeps) is two
+/// comment lines: the IR is valid and the post compiles (the mutation
+/// fuzzer's case, IR002 with no position).
+#[test]
+fn a_lone_carriage_return_in_a_comment_makes_two_lines() {
+    let (post, diags) = compile("// first\rsecond\nfunction onLinear(x, y, z, m) { return \"\"; }\n");
+    assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+    assert!(post.comments.iter().all(|c| c.lines.iter().all(|l| !l.contains(['\n', '\r']))), "{:?}", post.comments);
+}

@@ -35,8 +35,16 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         ),
     )
     .help("raise LINE_NUMBER_MAXIMUM (99999 or more), or drop [N] if the controller does not need block numbers");
-    if let Some(span) = cx.post.info.span {
-        d = d.at(span, "in this post");
+    // The sections that print `[N]`, else the post as a whole.
+    let span = cx
+        .post
+        .handlers
+        .iter()
+        .filter(|h| matches!(h.key, postc_ir::HandlerKey::Section(s) if cx.prints(s, &[Quantity::BlockNumber])))
+        .find_map(|h| h.span)
+        .or(cx.post.info.span);
+    if let Some(span) = span {
+        d = d.at(span, "block numbers printed here");
     }
     out.push(d);
 }
@@ -51,6 +59,17 @@ mod tests {
             "POST_NAME = \"x\"\nLINE_NUMBER_INCREMENT = 10\nLINE_NUMBER_MAXIMUM = 9999\nbegin FEED_MOVE\n\"[N]G1[X][F]\"\n",
         );
         assert!(found.iter().any(|d| d.code == "LN012"), "{found:?}");
+    }
+
+    /// A post with no `POST_NAME` has no span of its own: the warning
+    /// stands at the section that prints `[N]` (the mutation fuzzer's
+    /// case, a diagnostic with no position).
+    #[test]
+    fn stands_at_the_section_that_prints_block_numbers() {
+        let found =
+            lint_vectric("LINE_NUMBER_INCREMENT = 10\nLINE_NUMBER_MAXIMUM = 990\nbegin FEED_MOVE\n\"[N]G1[X][F]\"\n");
+        let d = found.iter().find(|d| d.code == "LN012").expect("LN012");
+        assert!(d.primary_span().is_some(), "{d:?}");
     }
 
     #[test]
