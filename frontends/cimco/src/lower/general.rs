@@ -1084,11 +1084,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         self.host_call(&g, a, at)
                     }
                     _ => {
+                        // The function is read before its arguments run.
                         let f = self.ident(name, at)?;
-                        let mut a = vec![f];
-                        a.extend(self.args(args, pre)?);
-                        let f = a.remove(0);
-                        Ok(Ir::CallValue(Box::new(f), a))
+                        let f = if args.iter().any(|a| self.needs_statements(a)) { self.keep(f, pre) } else { f };
+                        Ok(Ir::CallValue(Box::new(f), self.args(args, pre)?))
                     }
                 }
             }
