@@ -60,13 +60,28 @@ pub use sniff::looks_like_cimco;
 /// Parses a CIMCO post. Always returns a tree (parts that did not parse
 /// are error nodes) and every problem found, sorted by position.
 pub fn parse(text: &str, file: FileId) -> (Program, Vec<Diagnostic>) {
+    let (program, diagnostics, _) = parse_counted(text, file);
+    (program, diagnostics)
+}
+
+/// How much work parsing a text takes: its number of tokens and the
+/// number of token reads the parser made (re-reads after backtracking and
+/// recovery included). Tests hold the ratio bounded, so that checking a
+/// post stays linear in its size whatever its errors.
+pub fn parse_work(text: &str) -> (usize, u64) {
+    let (tokens, _) = lexer::lex(text, FileId(0));
+    let (_, _, reads) = parse_counted(text, FileId(0));
+    (tokens.len(), reads)
+}
+
+fn parse_counted(text: &str, file: FileId) -> (Program, Vec<Diagnostic>, u64) {
     let (tokens, mut diagnostics) = lexer::lex(text, file);
     let brackets = parser::match_brackets(&tokens);
-    let (program, errors, too_deep) = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone());
-    diagnostics.extend(parser::report::diagnostics(errors, file, &brackets, too_deep));
-    let program = program.unwrap_or_else(|| Program { body: Vec::new(), span: Span::new(file, 0, text.len()) });
+    let parsed = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone());
+    diagnostics.extend(parser::report::diagnostics(parsed.errors, file, &brackets, parsed.too_deep));
+    let program = parsed.program.unwrap_or_else(|| Program { body: Vec::new(), span: Span::new(file, 0, text.len()) });
     diagnostics.extend(validate::check(&program));
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     diagnostics.dedup_by(|a, b| a.code == b.code && a.primary_span() == b.primary_span() && a.message == b.message);
-    (program, diagnostics)
+    (program, diagnostics, parsed.reads)
 }

@@ -47,6 +47,46 @@ impl<'src> Token<'src> {
         self.kind == TokenKind::Ident(name)
     }
 
+    /// Whether a line that starts with this token goes on with the
+    /// statement of the line before: a binary operator, a member dot, a
+    /// closing bracket, a comma or `?`/`:` (`+` and `-` too: a line that
+    /// starts with one is the rest of a sum far more often than a unary
+    /// expression statement).
+    pub fn continues_before(&self) -> bool {
+        match self.kind {
+            TokenKind::Punct(p) => !matches!(
+                p,
+                Punct::LBrace
+                    | Punct::RBrace
+                    | Punct::Semi
+                    | Punct::LParen
+                    | Punct::LBracket
+                    | Punct::Bang
+                    | Punct::Tilde
+                    | Punct::PlusPlus
+                    | Punct::MinusMinus
+            ),
+            TokenKind::Keyword(k) => matches!(k, Keyword::In | Keyword::Instanceof),
+            _ => false,
+        }
+    }
+
+    /// Whether the statement cannot end after this token: an operator, an
+    /// opening bracket or a comma waits for what follows on the next line.
+    pub fn continues_after(&self) -> bool {
+        match self.kind {
+            TokenKind::Punct(p) => !matches!(
+                p,
+                Punct::RBrace | Punct::RParen | Punct::RBracket | Punct::Semi | Punct::PlusPlus | Punct::MinusMinus
+            ),
+            TokenKind::Keyword(k) => matches!(
+                k,
+                Keyword::In | Keyword::Instanceof | Keyword::New | Keyword::Typeof | Keyword::Void | Keyword::Delete
+            ),
+            _ => false,
+        }
+    }
+
     /// Whether the token can start an expression (used to tell `await x`
     /// from a variable called `await`).
     pub fn starts_expression(&self) -> bool {

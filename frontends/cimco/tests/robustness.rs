@@ -160,3 +160,44 @@ proptest! {
         let _ = to_js(&program);
     }
 }
+
+/// A long expression over many lines with one error in it: the parser's
+/// work (token reads, re-reads included) per token stays the same when the
+/// expression grows, wherever the error is. Statement recovery once
+/// stopped at every line break, so each following `+` line started a new
+/// statement that re-read the rest of the chain: quadratic work, and a
+/// mutant of a corpus post took minutes to check.
+#[test]
+fn broken_long_expressions_parse_in_linear_work() {
+    let line = "        + \"Q202=\" + qFormat.format(peck) + \" ;DEPTH ~\" + linebreak";
+    let tail = "        \"Q202=\" + qFormat.format(peck) + \" ;DEPTH ~\" + linebreak +";
+    let shapes: [(&str, fn(usize, &str, &str) -> String); 4] = [
+        ("an unclosed call in the middle", |n, line, _| {
+            let half = vec![line; n / 2].join("\n");
+            format!("function f() {{\n    return w(\"x\")\n{half}\n{}\n{half};\n}}\n", line.replace("peck)", "peck("))
+        }),
+        ("an operator with nothing after it at the end", |n, line, _| {
+            format!("function f() {{\n    return w(\"x\")\n{}\n        + ;\n}}\n", vec![line; n].join("\n"))
+        }),
+        ("a trailing comma in a call at the end", |n, line, _| {
+            format!(
+                "function f() {{\n    return w(\"x\")\n{}\n        + q.format(p, ) +\n;\n}}\n",
+                vec![line; n].join("\n")
+            )
+        }),
+        ("operators at the line ends", |n, _, tail| {
+            format!("function f() {{\n    return w(\"x\") +\n{}\n        ;\n}}\n", vec![tail; n].join("\n"))
+        }),
+    ];
+    for (name, shape) in shapes {
+        let per_token = |n: usize| {
+            let (tokens, reads) = postc_front_cimco::parse_work(&shape(n, line, tail));
+            reads as f64 / tokens as f64
+        };
+        let (small, large) = (per_token(100), per_token(800));
+        assert!(
+            large < 1.5 * small && large < 64.0,
+            "{name}: {small:.1} reads per token at 100 lines, {large:.1} at 800"
+        );
+    }
+}

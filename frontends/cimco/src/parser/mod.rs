@@ -73,6 +73,9 @@ pub(crate) struct ParseState {
     /// For each opening bracket (by start offset), the end offset of the
     /// bracket that closes it.
     closers: HashMap<usize, usize>,
+    /// How many tokens the parser has read, re-reads after backtracking
+    /// included: the parser's work, which stays linear in the input.
+    reads: u64,
 }
 
 /// The nesting depth goes back with the input when the parser backtracks,
@@ -80,7 +83,9 @@ pub(crate) struct ParseState {
 impl<'t, I: chumsky::input::Input<'t>> Inspector<'t, I> for ParseState {
     type Checkpoint = u32;
 
-    fn on_token(&mut self, _: &I::Token) {}
+    fn on_token(&mut self, _: &I::Token) {
+        self.reads += 1;
+    }
 
     fn on_save<'p>(&self, _: &chumsky::input::Cursor<'t, 'p, I>) -> u32 {
         self.depth
@@ -123,18 +128,27 @@ pub(crate) fn match_brackets(tokens: &Tokens<'_>) -> Brackets {
     Brackets { closers, unclosed }
 }
 
-/// Parses tokens into a program. The chumsky errors are returned raw; the
-/// caller turns them into diagnostics.
+/// What parsing a token list gives: the tree, chumsky's errors raw (the
+/// caller turns them into diagnostics), where nesting first went too deep,
+/// and how many token reads it took.
+pub(crate) struct Parsed<'t, 's> {
+    pub program: Option<Program>,
+    pub errors: Vec<Error<'t, 's>>,
+    pub too_deep: Option<SimpleSpan>,
+    pub reads: u64,
+}
+
+/// Parses tokens into a program.
 pub(crate) fn parse_tokens<'t, 's: 't>(
     tokens: &'t Tokens<'s>,
     text_len: usize,
     file: FileId,
     closers: HashMap<usize, usize>,
-) -> (Option<Program>, Vec<Error<'t, 's>>, Option<SimpleSpan>) {
+) -> Parsed<'t, 's> {
     let input = tokens.as_slice().map(SimpleSpan::from(text_len..text_len), |(t, s)| (t, s));
     let mut state = ParseState { closers, ..ParseState::default() };
     let (program, errors) = stmt::program(file).parse_with_state(input, &mut state).into_output_errors();
-    (program, errors, state.too_deep)
+    Parsed { program, errors, too_deep: state.too_deep, reads: state.reads }
 }
 
 /// A byte span of the post file.
@@ -288,6 +302,7 @@ pub(crate) fn skip_statement<'t, 's: 't, I: TokenInput<'t, 's>>(
     custom(move |inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>| {
         let start = inp.cursor();
         let mut first = true;
+        let mut last: Option<Token<'s>> = None;
         loop {
             let here = inp.save();
             let before = inp.cursor();
@@ -296,20 +311,28 @@ pub(crate) fn skip_statement<'t, 's: 't, I: TokenInput<'t, 's>>(
                 break;
             };
             let token_span = inp.span_since(&before);
+            // A line break ends the skipped statement unless the lines
+            // around it are one expression: stopping inside a long chain
+            // of `+` lines would re-parse the rest of the chain once per
+            // line.
+            let line_ends = token.newline_before
+                && !token.continues_before()
+                && !last.is_some_and(|t: Token<'s>| t.continues_after());
             let stop_before = token.is_punct(Punct::RBrace)
-                || (!first
-                    && (token.newline_before || token.is_keyword(Keyword::Case) || token.is_keyword(Keyword::Default)));
+                || (!first && (line_ends || token.is_keyword(Keyword::Case) || token.is_keyword(Keyword::Default)));
             if stop_before {
                 inp.rewind(here);
                 break;
             }
             first = false;
+            last = Some(token);
             if token.is_punct(Punct::Semi) {
                 break;
             }
             let opens = matches!(token.kind, TokenKind::Punct(p) if p.closer().is_some());
             if opens && let Some(target) = inp.state().closers.get(&token_span.start).copied() {
                 skip_to(inp, target);
+                last = None;
             }
         }
         if first {
