@@ -399,6 +399,9 @@ pub struct Global {
     /// only when it is `true`.
     #[serde(default, skip_serializing_if = "is_false")]
     pub implicit: bool,
+    /// Where the post declares it, if it does.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub span: Option<Span>,
 }
 
 fn is_false(b: &bool) -> bool {
@@ -708,6 +711,7 @@ impl Post {
         }
         self.variables.iter_mut().for_each(|v| v.span = None);
         self.formats.iter_mut().for_each(|f| f.span = None);
+        self.globals.iter_mut().for_each(|g| g.span = None);
         for s in &mut self.scripts {
             s.span = None;
             s.span_map.clear();

@@ -91,7 +91,10 @@ fn difference(want: &Post, got: &Post) -> Option<Difference> {
             let name = |i: usize| format!("output variable `{}`", w.variables[i].name);
             first(&w.variables, &g.variables, "output variables", name, |i| want.variables[i].span)
         })
-        .or_else(|| first(&w.globals, &g.globals, "globals", |i| format!("global `{}`", w.globals[i].name), |_| None))
+        .or_else(|| {
+            let name = |i: usize| format!("global `{}`", w.globals[i].name);
+            first(&w.globals, &g.globals, "globals", name, |i| want.globals[i].span)
+        })
         .or_else(|| {
             let name = |i: usize| format!("function `{}`", w.functions[i].name);
             first(&w.functions, &g.functions, "functions", name, |i| want.functions[i].span)

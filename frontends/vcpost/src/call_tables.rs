@@ -49,7 +49,12 @@ pub fn lower(post: &Post) -> Option<Post> {
         }
         let name = post.functions[i].name.clone();
         for k in 0..MAX_ENTRIES {
-            post.globals.push(Global { name: format!("{name}#{k}"), initial: Expr::Number(0.0), implicit: false });
+            post.globals.push(Global {
+                name: format!("{name}#{k}"),
+                initial: Expr::Number(0.0),
+                implicit: false,
+                span: None,
+            });
         }
         let branches = (0..MAX_ENTRIES)
             .map(|k| {

@@ -66,10 +66,12 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
         if post.scripts.iter().any(|s| s.source.contains(&format!("\"{}\"", global.name))) {
             continue;
         }
-        out.push(
-            Diagnostic::warning(RULE.code, format!("global `{}` is read but never given a value", global.name))
-                .help("give it a value where it is declared, or assign it before it is read"),
-        );
+        let mut d = Diagnostic::warning(RULE.code, format!("global `{}` is read but never given a value", global.name))
+            .help("give it a value where it is declared, or assign it before it is read");
+        if let Some(span) = global.span {
+            d = d.at(span, "declared here, without a value");
+        }
+        out.push(d);
     }
 }
 
@@ -81,7 +83,10 @@ mod tests {
     fn fires_on_a_global_never_assigned() {
         let found =
             lint_cimco("var offset;\nfunction onLinear(x, y, z, movement) { return \"G1 X\" + (x + offset); }\n");
-        assert!(found.iter().any(|d| d.code == "LN015" && d.message.contains("`offset`")), "{found:?}");
+        let d = found.iter().find(|d| d.code == "LN015" && d.message.contains("`offset`")).expect("LN015");
+        // The warning stands at the declaration `var offset;` (bytes 4..10).
+        let span = d.primary_span().expect("a position");
+        assert_eq!((span.start, span.end), (4, 10), "{d:?}");
     }
 
     #[test]

@@ -62,6 +62,7 @@ impl Layout {
             };
             let i = l.add_global(&g.name, initial);
             l.globals[i.index()].implicit = !g.declared;
+            l.globals[i.index()].span = g.declared_at;
         }
         for &id in &model.scopes.top_fns {
             let name = model.scopes.funcs[id].name.clone().unwrap_or_default();
@@ -76,7 +77,7 @@ impl Layout {
             return i;
         }
         let i = GlobalId::new(self.globals.len() as u16);
-        self.globals.push(Global { name: name.to_string(), initial, implicit: false });
+        self.globals.push(Global { name: name.to_string(), initial, implicit: false, span: None });
         self.global_index.insert(name.to_string(), i);
         i
     }

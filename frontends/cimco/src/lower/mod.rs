@@ -445,8 +445,9 @@ fn keep_source(
         if matches!(s.kind, StmtKind::Function(_) | StmtKind::Empty) {
             continue;
         }
-        let mut declares = Vec::new();
-        scope::hoist_stmt(s, &mut declares, &mut Vec::new());
+        let mut hoisted = Vec::new();
+        scope::hoist_stmt(s, &mut hoisted, &mut Vec::new());
+        let mut declares: Vec<String> = hoisted.iter().map(|v| v.name.clone()).collect();
         // Implicit globals whose first value this statement gives.
         for g in &model.globals {
             if !g.declared

@@ -54,8 +54,8 @@ pub struct Scopes<'a> {
     /// Top-level function declarations, in order.
     pub top_fns: Vec<FnId>,
     pub top_fn_names: HashMap<String, usize>,
-    /// Top-level `var` names, in order.
-    pub top_vars: Vec<String>,
+    /// Top-level `var` declarations, in order (the first of each name).
+    pub top_vars: Vec<&'a Ident>,
 }
 
 impl<'a> Scopes<'a> {
@@ -81,11 +81,7 @@ impl<'a> Scopes<'a> {
         let mut vars = Vec::new();
         let mut decls = Vec::new();
         hoist(&program.body, &mut vars, &mut decls);
-        for v in vars {
-            if !s.top_vars.contains(&v) {
-                s.top_vars.push(v);
-            }
-        }
+        s.top_vars = vars;
         for f in decls {
             let id = s.add(f, 0);
             let name = f.name.as_ref().map(|n| n.name.clone()).unwrap_or_default();
@@ -107,9 +103,9 @@ impl<'a> Scopes<'a> {
         hoist(&f.body, &mut vars, &mut nested);
         let params: Vec<String> = f.params.iter().map(|p| p.name.clone()).collect();
         let mut locals = params.clone();
-        for v in vars.into_iter().chain(nested.iter().filter_map(|n| n.name.as_ref().map(|i| i.name.clone()))) {
-            if !locals.contains(&v) {
-                locals.push(v);
+        for v in vars.into_iter().chain(nested.iter().filter_map(|n| n.name.as_ref())) {
+            if !locals.contains(&v.name) {
+                locals.push(v.name.clone());
             }
         }
         let id = self.funcs.len();
@@ -170,20 +166,22 @@ impl<'a> Scopes<'a> {
 
 /// Collects the `var` names and nested function declarations of a body,
 /// not looking into nested functions.
-fn hoist<'a>(body: &'a [Stmt], vars: &mut Vec<String>, decls: &mut Vec<&'a Function>) {
+fn hoist<'a>(body: &'a [Stmt], vars: &mut Vec<&'a Ident>, decls: &mut Vec<&'a Function>) {
     for s in body {
         hoist_stmt(s, vars, decls);
     }
 }
 
-pub(super) fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<String>, decls: &mut Vec<&'a Function>) {
-    let push = |name: &str, vars: &mut Vec<String>| {
-        if !vars.iter().any(|v| v == name) {
-            vars.push(name.to_string());
+/// Collects the `var` declarations (the first of each name) and function
+/// declarations a body hoists.
+pub(super) fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<&'a Ident>, decls: &mut Vec<&'a Function>) {
+    let push = |name: &'a Ident, vars: &mut Vec<&'a Ident>| {
+        if !vars.iter().any(|v| v.name == name.name) {
+            vars.push(name);
         }
     };
     match &s.kind {
-        StmtKind::Var(ds) => ds.iter().for_each(|d| push(&d.name.name, vars)),
+        StmtKind::Var(ds) => ds.iter().for_each(|d| push(&d.name, vars)),
         StmtKind::Function(f) => decls.push(f),
         StmtKind::Block(b) => hoist(b, vars, decls),
         StmtKind::If { branches, otherwise } => {
@@ -197,13 +195,13 @@ pub(super) fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<String>, decls: &mut Ve
         StmtKind::Switch { cases, .. } => cases.iter().for_each(|c| hoist(&c.body, vars, decls)),
         StmtKind::For { init, body, .. } => {
             if let Some(ForInit::Var(ds)) = init {
-                ds.iter().for_each(|d| push(&d.name.name, vars));
+                ds.iter().for_each(|d| push(&d.name, vars));
             }
             hoist_stmt(body, vars, decls);
         }
         StmtKind::ForIn { declared, name, body, .. } => {
             if *declared {
-                push(&name.name, vars);
+                push(name, vars);
             }
             hoist_stmt(body, vars, decls);
         }
@@ -212,7 +210,7 @@ pub(super) fn hoist_stmt<'a>(s: &'a Stmt, vars: &mut Vec<String>, decls: &mut Ve
             hoist(block, vars, decls);
             if let Some(h) = handler {
                 // The caught value lives in a variable of the function.
-                push(&h.param.name, vars);
+                push(&h.param, vars);
                 hoist(&h.body, vars, decls);
             }
             if let Some(f) = finalizer {

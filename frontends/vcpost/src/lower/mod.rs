@@ -391,7 +391,7 @@ impl Lowerer<'_> {
         let text = self.text_globals.get(&key).copied().unwrap_or(false)
             || crate::routines::runtime_variable(name) == Some(crate::routines::VarType::Text);
         let initial = initial.unwrap_or(if text { IrExpr::Text(String::new()) } else { IrExpr::Number(0.0) });
-        self.post.globals.push(Global { name: name.to_string(), initial, implicit: false });
+        self.post.globals.push(Global { name: name.to_string(), initial, implicit: false, span: None });
         self.globals.insert(key, GlobalInfo { index, constant, declared, first_read: None });
         index
     }

@@ -37,6 +37,8 @@ pub struct GlobalInfo<'a> {
     pub plain: bool,
     /// Declared with `var` or flattened (not an implicit global).
     pub declared: bool,
+    /// Where it is declared (`var x`), if it is.
+    pub declared_at: Option<postc_ir::Span>,
 }
 
 /// The model of a program.
@@ -74,8 +76,9 @@ impl<'a> Model<'a> {
         };
         m.find_flattened(program);
         for v in m.scopes.top_vars.clone() {
-            if !m.flattened.contains(&v) {
-                m.add_global(&v, true);
+            if !m.flattened.contains(&v.name) {
+                let g = m.add_global(&v.name, true);
+                m.globals[g].declared_at = Some(v.span);
             }
         }
         m.declare_flattened(program);
@@ -99,6 +102,7 @@ impl<'a> Model<'a> {
             constant: None,
             plain: true,
             declared,
+            declared_at: None,
         });
         self.global_index.insert(name.to_string(), i);
         i
