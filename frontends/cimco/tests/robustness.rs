@@ -171,7 +171,8 @@ proptest! {
 fn broken_long_expressions_parse_in_linear_work() {
     let line = "        + \"Q202=\" + qFormat.format(peck) + \" ;DEPTH ~\" + linebreak";
     let tail = "        \"Q202=\" + qFormat.format(peck) + \" ;DEPTH ~\" + linebreak +";
-    let shapes: [(&str, fn(usize, &str, &str) -> String); 4] = [
+    type Shape = fn(usize, &str, &str) -> String;
+    let shapes: [(&str, Shape); 4] = [
         ("an unclosed call in the middle", |n, line, _| {
             let half = vec![line; n / 2].join("\n");
             format!("function f() {{\n    return w(\"x\")\n{half}\n{}\n{half};\n}}\n", line.replace("peck)", "peck("))
