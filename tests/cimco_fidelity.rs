@@ -259,3 +259,60 @@ function onLinear(x, y, z, m) { return ""; }
 "#;
     check(js, ONE_MOVE, "1.00 2.67 0.13 X-1.00 1.00|1.00 2.67 0.13\n");
 }
+
+/// Closures share the locals they capture with the function that made
+/// them and with each other, however often either changes them (the
+/// locals live in cells), and formats and output variables are values a
+/// post hands to helpers: every function runs natively, and the program is
+/// the one Node.js prints.
+#[test]
+fn closures_share_changing_captures_and_formats_are_values() {
+    let js = r#"
+var linebreak = "\n";
+var xyzFormat = createFormat({decimals: 3});
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+function counter(start) {
+    var n = start;
+    function bump(by) { n += by; return n; }
+    var api = { bump: bump, peek: function () { return n; }, set: function (v) { n = v; } };
+    n = n * 2;
+    return api;
+}
+function words(list, f) {
+    var out = [];
+    for (var i = 0; i < list.length; i++) {
+        out.push(f.format(list[i]));
+    }
+    return out.join(" ");
+}
+function later(w) {
+    var said = [];
+    return function (v) { said.push(w.format(v)); return said.join("|"); };
+}
+function onOpen() {
+    var c = counter(10);
+    var d = counter(1);
+    c.bump(5);
+    d.set(7);
+    var r = c.peek() + " " + c.bump(1) + " " + d.peek() + " " + d.bump(3);
+    var say = later(xOutput);
+    say(1.5);
+    say(1.5);
+    xOutput.reset();
+    return r + "; " + words([1, 2.25, -0.5], xyzFormat) + "; " + say(1.5) + "; " + words([3, 3], xOutput) + "\n";
+}
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("closures.js");
+    std::fs::write(&path, js).expect("write the post");
+    let post = compile(&path).unwrap_or_else(|e| panic!("{e}"));
+    let scripts: Vec<&str> = post
+        .functions
+        .iter()
+        .filter(|f| !matches!(f.body, postc_ir::Body::Native(_)))
+        .map(|f| f.name.as_str())
+        .collect();
+    assert!(scripts.is_empty() && post.scripts.is_empty(), "scripts: {scripts:?}");
+    check(js, ONE_MOVE, "25 26 7 10; 1 2.25 -0.5; X1.5||X1.5; X3 \n");
+}

@@ -260,6 +260,16 @@ fn formatting_a_value_that_is_not_a_number_stops_at_its_line() {
             "function onOpen() {\n    var state = {n: 0};\n    state.n = 1;\n    return f.format(1 / 0) + \"\\n\";\n}",
             7,
             false,
+        ), // A format and an output variable handed to a helper as values.
+        (
+            "function word(w, v) {\n    return w.format(v);\n}\nfunction onOpen() {\n    return word(f, 0 / 0) + \"\\n\";\n}",
+            5,
+            true,
+        ),
+        (
+            "function word(w, v) {\n    return w.format(v);\n}\nfunction onOpen() {\n    return word(g, 1 / 0) + \"\\n\";\n}",
+            5,
+            true,
         ),
     ];
     // The cases that use objects run three ways: natively as the general

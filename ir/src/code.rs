@@ -111,6 +111,13 @@ pub enum Place {
     Var(VarId),
 }
 
+/// A format or an output variable, held as a value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum OutputRef {
+    Format(FormatId),
+    Variable(VarId),
+}
+
 /// One expression.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Expr {
@@ -174,11 +181,20 @@ pub enum Expr {
         object: Box<Expr>,
         method: String,
         args: Vec<Expr>,
+        /// The call in the post: where a method that formats a value that
+        /// is not a finite number is reported.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
     },
+    /// A format or an output variable as a value (a CNC-Calc post hands
+    /// `xyzFormat` to a helper that calls `f.format(x)`): its methods are
+    /// those of the host object, called through [`Expr::Invoke`].
+    Output(OutputRef),
     /// A post function as a value. The function's first parameters take
     /// `captures`, the values it closes over, when the value is made (a
-    /// closure that captures nothing it or its maker changes later); the
-    /// caller's arguments fill the rest.
+    /// local that changes after it is captured lives in a cell the maker
+    /// and the closure share: a one-item array); the caller's arguments
+    /// fill the rest.
     Closure {
         function: FunctionId,
         captures: Vec<Expr>,

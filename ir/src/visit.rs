@@ -114,6 +114,7 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
         | Expr::Undefined
         | Expr::This
         | Expr::Arguments
+        | Expr::Output(_)
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)
@@ -226,6 +227,7 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
         | Expr::Undefined
         | Expr::This
         | Expr::Arguments
+        | Expr::Output(_)
         | Expr::Quantity(_)
         | Expr::Local(_)
         | Expr::Global(_)

@@ -190,10 +190,12 @@ pub enum Expr {
     Array(Vec<Expr>),
     Object(Vec<(Text, Expr)>),
     Member(Box<Expr>, Box<Expr>),
+    Output(postc_ir::OutputRef),
     Invoke {
         object: Box<Expr>,
         method: Text,
         args: Vec<Expr>,
+        span: Option<Span>,
     },
     Closure {
         function: FunctionId,
@@ -253,7 +255,7 @@ impl Expr {
                 f(object);
                 args.iter_mut().for_each(f);
             }
-            Expr::This | Expr::Undefined | Expr::Arguments => {}
+            Expr::This | Expr::Undefined | Expr::Arguments | Expr::Output(_) => {}
             Expr::LocalEmpty { .. }
             | Expr::LocalIsText { .. }
             | Expr::Number(_)
@@ -401,6 +403,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                 | Expr::CallValue(..)
                 | Expr::This
                 | Expr::Arguments
+                | Expr::Output(_)
                 | Expr::Host { .. }
         ) {
             return true;
@@ -571,13 +574,17 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
             Expr::Object(props.iter().map(|(k, v)| (Text::new(crate::value::Text::new(k)), expr(v))).collect())
         }
         E::Member(o, k) => Expr::Member(boxed(o), boxed(k)),
-        E::Invoke { object, method, args } => {
-            Expr::Invoke { object: boxed(object), method: Text::new(crate::value::Text::new(method)), args: list(args) }
-        }
+        E::Invoke { object, method, args, span } => Expr::Invoke {
+            object: boxed(object),
+            method: Text::new(crate::value::Text::new(method)),
+            args: list(args),
+            span: *span,
+        },
         E::Closure { function, captures } => Expr::Closure { function: *function, captures: list(captures) },
         E::CallValue(f, args) => Expr::CallValue(boxed(f), list(args)),
         E::This => Expr::This,
         E::Arguments => Expr::Arguments,
+        E::Output(o) => Expr::Output(*o),
         E::Host { name, args } => Expr::Host { name: Text::new(crate::value::Text::new(name)), args: list(args) },
     }
 }

@@ -11,7 +11,7 @@ use std::cell::RefCell;
 use std::fmt::Write as _;
 use std::rc::Rc;
 
-use postc_ir::FunctionId;
+use postc_ir::{FunctionId, OutputRef};
 
 /// A value computed by a post's code.
 #[derive(Clone, Debug, Default)]
@@ -29,6 +29,8 @@ pub enum Value {
     Object(Rc<RefCell<Object>>),
     /// A post function as a value, with the values it closes over.
     Func(Rc<Closure>),
+    /// A format or an output variable of the post as a value.
+    Output(OutputRef),
 }
 
 impl PartialEq for Value {
@@ -43,6 +45,7 @@ impl PartialEq for Value {
             (Value::Array(a), Value::Array(b)) => Rc::ptr_eq(a, b),
             (Value::Object(a), Value::Object(b)) => Rc::ptr_eq(a, b),
             (Value::Func(a), Value::Func(b)) => Rc::ptr_eq(a, b),
+            (Value::Output(a), Value::Output(b)) => a == b,
             _ => false,
         }
     }
@@ -290,7 +293,7 @@ impl Value {
             Value::Bool(b) => f64::from(u8::from(*b)),
             Value::Text(s) => s.as_str().trim().parse().unwrap_or(0.0),
             Value::Null => 0.0,
-            Value::Undefined | Value::Array(_) | Value::Object(_) | Value::Func(_) => f64::NAN,
+            Value::Undefined | Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => f64::NAN,
         }
     }
 
@@ -302,7 +305,7 @@ impl Value {
             Value::Bool(b) => *b,
             Value::Text(s) => !s.is_empty(),
             Value::Null | Value::Undefined => false,
-            Value::Array(_) | Value::Object(_) | Value::Func(_) => true,
+            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => true,
         }
     }
 
@@ -335,7 +338,7 @@ impl Value {
                     }
                 }
             }
-            Value::Object(_) => out.push_str("[object Object]"),
+            Value::Object(_) | Value::Output(_) => out.push_str("[object Object]"),
             Value::Func(_) => out.push_str("function () { [native code] }"),
         }
     }

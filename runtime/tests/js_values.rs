@@ -27,7 +27,7 @@ fn member(o: Expr, k: Expr) -> Expr {
     Expr::Member(Box::new(o), Box::new(k))
 }
 fn invoke(o: Expr, m: &str, args: Vec<Expr>) -> Expr {
-    Expr::Invoke { object: Box::new(o), method: m.into(), args }
+    Expr::Invoke { object: Box::new(o), method: m.into(), args, span: None }
 }
 
 /// A post whose header writes what function 0 returns; `functions` are

@@ -14,7 +14,8 @@
 //!   is not printed, since the lowering puts it back.
 //! - `Expr::FormatVar` is `xOutput.format(v)`, `Expr::Format`
 //!   `xyzFormat.format(v)`, `0 + Var(v)` `xOutput.getLast()`,
-//!   `Stmt::Forget` `xOutput.reset()`; built-ins are the CNC-Calc and
+//!   `Stmt::Forget` `xOutput.reset()`, `Expr::Output` the format or
+//!   variable's name; built-ins are the CNC-Calc and
 //!   JavaScript calls they came from (`Math.abs`, `parseFloat`,
 //!   `text.substring(a, b)`, `x.toFixed(n)`, ...); a call of a form for N
 //!   arguments (`writeBlock/5`) calls the function by its name.
@@ -33,7 +34,7 @@ use postc_front_cimco::ast::{
     LogicalOp, Property, PropertyKey, Stmt as JsStmt, StmtKind, UnaryOp as JsUn, UpdateOp, VarDeclarator,
 };
 use postc_front_cimco::{builtins, made};
-use postc_ir::{BinaryOp, Body, Builtin, Expr, FileId, Function, LocalId, Place, Post, Span, Stmt, UnaryOp};
+use postc_ir::{BinaryOp, Body, Builtin, Expr, FileId, Function, LocalId, OutputRef, Place, Post, Span, Stmt, UnaryOp};
 
 /// A construct a function body has that no CNC-Calc function says.
 pub(super) type Unsayable = String;
@@ -400,6 +401,15 @@ impl Printer<'_> {
         args.iter().map(|a| self.expr(a)).collect()
     }
 
+    /// The name the post gives a format.
+    fn format_name(&self, format: postc_ir::FormatId) -> R<String> {
+        self.post
+            .formats
+            .get(format.index())
+            .and_then(|f| f.name.clone())
+            .ok_or_else(|| "a format without a name".to_string())
+    }
+
     fn expr(&mut self, e: &Expr) -> R<Js> {
         Ok(match e {
             Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Undefined => {
@@ -425,7 +435,7 @@ impl Printer<'_> {
                 js(ExprKind::Object(out))
             }
             Expr::Member(o, k) => member_or_index(self.expr(o)?, self.expr(k)?),
-            Expr::Invoke { object, method: m, args } => {
+            Expr::Invoke { object, method: m, args, .. } => {
                 let args = self.exprs(args)?;
                 method(self.expr(object)?, m, args)
             }
@@ -450,13 +460,10 @@ impl Printer<'_> {
                 let v = self.number(value)?;
                 method(name(&self.var(var.index())?), "format", vec![v])
             }
+            Expr::Output(OutputRef::Variable(var)) => name(&self.var(var.index())?),
+            Expr::Output(OutputRef::Format(format)) => name(&self.format_name(*format)?),
             Expr::Format { format, value, .. } => {
-                let f = self
-                    .post
-                    .formats
-                    .get(format.index())
-                    .and_then(|f| f.name.clone())
-                    .ok_or_else(|| "a format without a name".to_string())?;
+                let f = self.format_name(*format)?;
                 let v = self.number(value)?;
                 method(name(&f), "format", vec![v])
             }

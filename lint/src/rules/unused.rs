@@ -17,7 +17,7 @@ use postc_ir::codes;
 use std::collections::BTreeSet;
 
 use postc_ir::visit::{Visit, walk_expr, walk_piece, walk_stmt};
-use postc_ir::{Diagnostic, Dialect, Expr, Piece, Place, Script, Stmt};
+use postc_ir::{Diagnostic, Dialect, Expr, OutputRef, Piece, Place, Script, Stmt};
 
 use crate::{Context, Options, Rule};
 
@@ -57,10 +57,15 @@ impl Visit for Uses {
             Expr::Var(v) | Expr::Previous(v) | Expr::FormatVar { var: v, .. } => {
                 self.vars.insert(v.index());
             }
-            Expr::Format { format, .. } => {
+            Expr::Format { format, .. } | Expr::Output(OutputRef::Format(format)) => {
                 self.formats.insert(format.index());
             }
-            Expr::Call(f, _) => {
+            Expr::Output(OutputRef::Variable(v)) => {
+                self.vars.insert(v.index());
+            }
+            // A function made a value (handed to `filter`, kept in an
+            // object) is used as much as one called by name.
+            Expr::Call(f, _) | Expr::Closure { function: f, .. } => {
                 self.functions.insert(f.index());
             }
             _ => {}
@@ -235,6 +240,16 @@ mod tests {
         assert!(found.iter().any(|d| d.code == "LN008"), "{found:?}");
         let fns: Vec<_> = found.iter().filter(|d| d.code == "LN009").map(|d| d.message.clone()).collect();
         assert_eq!(fns, ["function `unused` is never called"], "{found:?}");
+    }
+
+    /// A format handed to a helper as a value and a function handed to
+    /// `filter` are used.
+    #[test]
+    fn cimco_formats_and_functions_used_as_values_are_quiet() {
+        let found = lint_cimco(
+            "var xyzFormat = createFormat({decimals:3});\nfunction word(f, v) { return f.format(v); }\nfunction kept(w) { return w !== \"\"; }\nfunction onLinear(x, y, z, movement) { return [word(xyzFormat, x)].filter(kept).join(\"\"); }\n",
+        );
+        assert!(!found.iter().any(|d| d.code == "LN008" || d.code == "LN009"), "{found:?}");
     }
 
     #[test]

@@ -674,6 +674,7 @@ impl Engine<'_> {
             Expr::Bool(b) => Value::Bool(*b),
             Expr::Undefined => Value::Undefined,
             Expr::This => self.this(),
+            Expr::Output(o) => Value::Output(*o),
             Expr::Arguments => self.arguments.last().cloned().unwrap_or_else(|| Value::array(Vec::new())),
             Expr::Host { name, args } => {
                 let args = self.eval_list(args, frame)?;
@@ -698,14 +699,14 @@ impl Engine<'_> {
                 let k = self.eval(k, frame)?;
                 objects::member(&o, &k)?
             }
-            Expr::Invoke { object, method, args } => {
+            Expr::Invoke { object, method, args, span } => {
                 let o = self.eval(object, frame)?;
                 let args = self.eval_list(args, frame)?;
                 let name = match method.value() {
                     Value::Text(t) => t.clone(),
                     _ => crate::value::Text::new(""),
                 };
-                self.invoke(o, &name, args)?
+                self.invoke(o, &name, args, *span)?
             }
             Expr::Closure { function, captures } => {
                 let captured = self.eval_list(captures, frame)?;

@@ -9,7 +9,7 @@
 //! function) are [`TYPE_ERROR`]s, which `try` catches as it catches a
 //! `throw`.
 
-use postc_ir::{Diagnostic, FunctionId, Span};
+use postc_ir::{Diagnostic, FunctionId, OutputRef, Span};
 
 use super::Result;
 use super::ops::js_number;
@@ -84,7 +84,7 @@ pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
             let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
             return Err(type_error(format!("cannot read property '{}' of {what}", key_text(key))));
         }
-        Value::Num(_) | Value::Bool(_) | Value::Func(_) => Value::Undefined,
+        Value::Num(_) | Value::Bool(_) | Value::Func(_) | Value::Output(_) => Value::Undefined,
     })
 }
 
@@ -147,6 +147,29 @@ fn array_index(name: &str) -> Option<u32> {
 }
 
 impl Engine<'_> {
+    /// A method of a format or an output variable held as a value: what
+    /// `f.format(x)`, `v.format(x)`, `v.reset()` and `v.getLast()` do when
+    /// the post names them directly.
+    fn output_method(&mut self, output: OutputRef, name: &str, args: Vec<Value>, span: Option<Span>) -> Result<Value> {
+        let arg = args.into_iter().next().unwrap_or(Value::Undefined);
+        let word = match (output, name) {
+            (OutputRef::Format(f), "format") => {
+                let mut buf = Vec::new();
+                self.writers[f.index()].write(js_number(&arg), &mut buf);
+                Value::Text(Text::from_bytes(&buf))
+            }
+            (OutputRef::Variable(v), "format") => self.format_through_var(v, arg),
+            (OutputRef::Variable(v), "reset") => {
+                self.forget_var(v);
+                return Ok(Value::Undefined);
+            }
+            (OutputRef::Variable(v), "getLast") => return Ok(Value::Num(self.var_value(v).num())),
+            (_, other) => return Err(type_error(format!("a format or output variable has no method '{other}'"))),
+        };
+        self.finite(span)?;
+        Ok(word)
+    }
+
     /// Calls a function value with `this` and arguments.
     pub(crate) fn call_value(&mut self, callee: &Value, this: Value, mut args: Vec<Value>) -> Result<Value> {
         let Value::Func(closure) = callee else {
@@ -172,7 +195,13 @@ impl Engine<'_> {
 
     /// `object.method(args)`: the object's own function property, or a
     /// built-in method of arrays, texts and numbers.
-    pub(crate) fn invoke(&mut self, object: Value, method: &Text, args: Vec<Value>) -> Result<Value> {
+    pub(crate) fn invoke(
+        &mut self,
+        object: Value,
+        method: &Text,
+        args: Vec<Value>,
+        span: Option<Span>,
+    ) -> Result<Value> {
         if let Value::Object(o) = &object {
             let f = o.borrow().get(method.as_bytes()).cloned();
             return match f {
@@ -193,6 +222,7 @@ impl Engine<'_> {
                 Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
                 r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
             },
+            (Value::Output(o), name) => self.output_method(*o, name, args, span),
             (Value::Func(_), "call") => {
                 let this = arg(0);
                 self.call_value(&object, this, args.into_iter().skip(1).collect())
@@ -474,6 +504,7 @@ fn describe(v: &Value) -> String {
         Value::Array(_) => "an array".into(),
         Value::Object(_) => "an object".into(),
         Value::Func(_) => "a function".into(),
+        Value::Output(_) => "a format or output variable".into(),
     }
 }
 

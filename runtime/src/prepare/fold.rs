@@ -31,7 +31,7 @@ fn literal(v: Value) -> Option<Expr> {
         Value::Bool(b) => Expr::Bool(b),
         Value::Null => Expr::Null,
         Value::Undefined => Expr::Undefined,
-        Value::Array(_) | Value::Object(_) | Value::Func(_) => return None,
+        Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => return None,
     })
 }
 

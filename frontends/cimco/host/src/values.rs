@@ -132,7 +132,7 @@ pub fn from_value(v: &Value) -> Dynamic {
         Value::Null | Value::Undefined => Dynamic::UNIT,
         // Native arrays, objects and functions stay in native code: no
         // function that holds one runs as a script.
-        Value::Array(_) | Value::Object(_) | Value::Func(_) => Dynamic::UNIT,
+        Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => Dynamic::UNIT,
         Value::Num(n) => Dynamic::from_float(*n),
         Value::Bool(b) => Dynamic::from_bool(*b),
         Value::Text(s) => Dynamic::from(ImmutableString::from(&**s)),

@@ -7,15 +7,18 @@
 //! function of a post to Rhai, the post is lowered again here, whole: each
 //! function, `__postc_init` and postc's bridges, so that every value keeps
 //! one representation. A post with something this lowering has no form for
-//! either (a regular expression, `new` of anything but `Error`, a closure
-//! that changes what it captured) keeps the shaped lowering's result, and
+//! either (a regular expression, `new` of anything but `Error`) keeps the
+//! shaped lowering's result, and
 //! [`Why`] says what.
 //!
 //! How each construct lowers:
 //!
 //! - locals are slots; a closure's captured locals are its first
 //!   parameters, passed by value when the closure is made (at each mention
-//!   of a nested function), so a closure may not assign what it captures;
+//!   of a nested function); a captured local that changes after it is
+//!   first given (in its function or in a closure) lives in a cell, a
+//!   one-item array made when its function starts, so that the function
+//!   and every closure share it (reads and writes go through item 0);
 //! - an assignment or `++` inside an expression runs as statements before
 //!   it, with the operands to its left kept in temporaries so that they are
 //!   read in JavaScript's order; `&&`, `||` and `?:` keep their short
@@ -30,10 +33,10 @@
 //! - the drilling and compensation data CNC-Calc hands its entry points
 //!   are host calls (`Expr::Host`) the CIMCO host answers.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use postc_ir::{
-    BinaryOp as IrBin, Body, Builtin, Expr as Ir, Function as IrFunction, FunctionId, LocalId, Place, Span,
+    BinaryOp as IrBin, Body, Builtin, Expr as Ir, Function as IrFunction, FunctionId, LocalId, OutputRef, Place, Span,
     Stmt as IrStmt, UnaryOp as IrUn,
 };
 
@@ -63,14 +66,15 @@ pub struct Shared<'c, 'a> {
     nested: HashMap<FnId, (FunctionId, Vec<(FnId, usize)>)>,
     /// Nested functions still to lower.
     pending: Vec<FnId>,
-    /// A captured local that is assigned more than once: closures take
-    /// their captures by value, so the post keeps the shaped lowering.
-    pub mutable: Option<(FnId, usize)>,
+    /// The locals that live in cells: captured, and given a value more
+    /// than once (by their function or by a closure).
+    cells: HashSet<(FnId, usize)>,
 }
 
 impl<'c, 'a> Shared<'c, 'a> {
     pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c mut Layout) -> Self {
-        Shared { model, setup, layout, nested: HashMap::new(), pending: Vec::new(), mutable: None }
+        let cells = cells(model);
+        Shared { model, setup, layout, nested: HashMap::new(), pending: Vec::new(), cells }
     }
 
     /// The IR function of nested function `id` (added on first mention)
@@ -82,13 +86,6 @@ impl<'c, 'a> Shared<'c, 'a> {
         let name = self.model.scopes.funcs[id].name.clone().unwrap_or_else(|| format!("__postc_closure_{id}"));
         let f = self.layout.add_fn(&name);
         let captures = captures(self.model, id);
-        for &(func, slot) in &captures {
-            let info = &self.model.scopes.funcs[func];
-            let given = usize::from(slot < info.params.len());
-            if given + assignments(self.model, func, slot) > 1 {
-                self.mutable = Some((func, slot));
-            }
-        }
         self.nested.insert(id, (f, captures.clone()));
         self.pending.push(id);
         (f, captures)
@@ -100,7 +97,8 @@ impl<'c, 'a> Shared<'c, 'a> {
         let info = &self.model.scopes.funcs[id];
         let mut g = General::new(self, id, Vec::new());
         g.entry = entry;
-        let stmts = g.body(body)?;
+        let mut stmts = g.cells_made();
+        stmts.extend(g.body(body)?);
         let slots = g.slots;
         let info_name = info.name.clone().unwrap_or_default();
         Ok(IrFunction {
@@ -133,7 +131,8 @@ impl<'c, 'a> Shared<'c, 'a> {
             params.extend(info.params.iter().cloned());
             let locals = info.locals.iter().skip(info.params.len()).cloned().collect();
             let mut g = General::new(self, id, captures);
-            let stmts = g.body(&func.body)?;
+            let mut stmts = g.cells_made();
+            stmts.extend(g.body(&func.body)?);
             let slots = g.slots;
             out.push((
                 fid,
@@ -223,19 +222,40 @@ fn captures(model: &Model, id: FnId) -> Vec<(FnId, usize)> {
     v.found
 }
 
-/// How many times function `func` assigns its local `slot` (`var` with a
-/// value, `=`, `+=`, `++`, `for ... in`), not counting nested functions.
-fn assignments(model: &Model, func: FnId, slot: usize) -> usize {
+/// The captured locals that need a cell: given a value more than once
+/// (a parameter counts as given once), counting what closures assign.
+fn cells(model: &Model) -> HashSet<(FnId, usize)> {
+    let mut given: HashMap<(FnId, usize), usize> = HashMap::new();
+    let mut captured = HashSet::new();
+    for (id, info) in model.scopes.funcs.iter().enumerate() {
+        for slot in 0..info.params.len() {
+            *given.entry((id, slot)).or_default() += 1;
+        }
+        for local in assignments(model, id) {
+            *given.entry(local).or_default() += 1;
+        }
+        if info.parent.is_some() {
+            captured.extend(captures(model, id));
+        }
+    }
+    captured.into_iter().filter(|l| given.get(l).is_some_and(|&n| n > 1)).collect()
+}
+
+/// Each assignment function `func` makes (`var` with a value, `=`, `+=`,
+/// `++`, `for ... in`) to a local, its own or one of a function around it,
+/// not counting nested functions: the local assigned, once per assignment.
+fn assignments(model: &Model, func: FnId) -> Vec<(FnId, usize)> {
     struct Count<'m, 'a> {
         model: &'m Model<'a>,
         func: FnId,
-        slot: usize,
-        n: usize,
+        found: Vec<(FnId, usize)>,
     }
     impl Count<'_, '_> {
         fn name(&mut self, name: &str) {
-            if self.model.scopes.resolve(name, self.func) == (Symbol::Local { func: self.func, slot: self.slot }) {
-                self.n += 1;
+            if let Symbol::Local { func, slot } = self.model.scopes.resolve(name, self.func)
+                && slot != usize::MAX
+            {
+                self.found.push((func, slot));
             }
         }
     }
@@ -265,10 +285,10 @@ fn assignments(model: &Model, func: FnId, slot: usize) -> usize {
         }
         fn function_decl(&mut self, _f: &'a Function) {}
     }
-    let Some(f) = model.scopes.funcs[func].func else { return 0 };
-    let mut c = Count { model, func, slot, n: 0 };
+    let Some(f) = model.scopes.funcs[func].func else { return Vec::new() };
+    let mut c = Count { model, func, found: Vec::new() };
     super::scope::walk_stmts(&f.body, &mut c);
-    c.n
+    c.found
 }
 
 /// A loop or `switch` being lowered, for `break` and `continue`.
@@ -303,6 +323,30 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn temp(&mut self) -> LocalId {
         self.slots += 1;
         LocalId::new(self.slots - 1)
+    }
+
+    /// The cells of this function's own locals, made as it starts (a
+    /// parameter's cell holds the value it was given).
+    fn cells_made(&mut self) -> Vec<IrStmt> {
+        let info = &self.model().scopes.funcs[self.at];
+        let params = info.params.len();
+        let mut out = Vec::new();
+        for slot in 0..info.locals.len() {
+            if self.shared.cells.contains(&(self.at, slot)) {
+                let l = self.own(slot);
+                let first = if slot < params { Ir::Local(l) } else { Ir::Undefined };
+                out.push(IrStmt::Assign(Place::Local(l), Ir::Array(vec![first])));
+            }
+        }
+        out
+    }
+
+    /// Whether a name is a local that lives in a cell.
+    fn in_cell(&self, name: &str) -> bool {
+        match self.model().scopes.resolve(name, self.at) {
+            Symbol::Local { func, slot } => self.shared.cells.contains(&(func, slot)),
+            _ => false,
+        }
     }
 
     fn body(&mut self, body: &[Stmt]) -> R<Vec<IrStmt>> {
@@ -363,8 +407,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 if let Some(c) = &g.constant {
                     return Ok(const_expr(c));
                 }
-                if self.shared.setup.bindings.contains_key(name) {
-                    return Err(why(at, format!("uses output variable or format `{name}` as a value")));
+                if let Some(b) = self.shared.setup.bindings.get(name) {
+                    return Ok(Ir::Output(match *b {
+                        Binding::Var(v) => OutputRef::Variable(v),
+                        Binding::Format(f) => OutputRef::Format(f),
+                    }));
                 }
                 self.shared
                     .layout
@@ -386,7 +433,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         }
         match self.model().scopes.resolve(name, self.at) {
             Symbol::Local { slot: usize::MAX, .. } => Ok(Ir::Arguments),
-            Symbol::Local { .. } => Ok(Ir::Local(self.local_of(name, at)?.expect("a local"))),
+            Symbol::Local { .. } => {
+                let l = Ir::Local(self.local_of(name, at)?.expect("a local"));
+                Ok(if self.in_cell(name) { cell_item(l) } else { l })
+            }
             Symbol::TopFn(i) => Ok(Ir::Closure { function: self.shared.layout.top_fn[i], captures: vec![] }),
             Symbol::Global(g) => self.global_value(&g, at),
         }
@@ -475,8 +525,8 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 out.push(IrStmt::Assign(Place::Local(keys), Ir::Builtin(Builtin::Keys, vec![o])));
                 out.push(IrStmt::Assign(Place::Local(i), Ir::Number(0.0)));
                 let target = Expr::new(ExprKind::Ident(name.name.clone()), name.span);
-                let place = self.simple_place(&target)?;
-                let mut b = vec![IrStmt::Assign(place, Ir::Member(Box::new(Ir::Local(keys)), Box::new(Ir::Local(i))))];
+                let t = self.name_target(&target)?;
+                let mut b = vec![set(t, Ir::Member(Box::new(Ir::Local(keys)), Box::new(Ir::Local(i))))];
                 self.jumps.push(Jump::Loop);
                 let inner = self.nested_stmt(body);
                 self.jumps.pop();
@@ -586,8 +636,8 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let mut pre = Vec::new();
                 let v = self.expr(init, &mut pre)?;
                 out.extend(pre);
-                let place = self.simple_place(&target)?;
-                out.push(IrStmt::Assign(place, v));
+                let t = self.name_target(&target)?;
+                out.push(set(t, v));
             }
         }
         Ok(())
@@ -678,6 +728,17 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
 
     // ---- assignments ----
 
+    /// A name as a target: item 0 of its cell, or its place.
+    fn name_target(&mut self, target: &Expr) -> R<Target> {
+        if let ExprKind::Ident(name) = &target.kind
+            && self.in_cell(name)
+            && let Some(l) = self.local_of(name, target.span)?
+        {
+            return Ok(Target::Member(Ir::Local(l), Ir::Number(0.0)));
+        }
+        Ok(Target::Place(self.simple_place(target)?))
+    }
+
     /// A name as a place (a local or a global), for `var`, `for ... in`
     /// and plain assignments.
     fn simple_place(&mut self, target: &Expr) -> R<Place> {
@@ -737,7 +798,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let k = self.keep(k, pre);
                 Ok(Target::Member(o, k))
             }
-            _ => Ok(Target::Place(self.simple_place(target)?)),
+            _ => self.name_target(target),
         }
     }
 
@@ -788,10 +849,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     }
                 };
                 out.extend(pre);
-                match t {
-                    Target::Place(p) => out.push(IrStmt::Assign(p, v)),
-                    Target::Member(o, k) => out.push(IrStmt::SetMember { object: o, key: k, value: v }),
-                }
+                out.push(set(t, v));
                 Ok(())
             }
             ExprKind::Update { op, target, .. } => {
@@ -801,10 +859,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let op = if *op == UpdateOp::Increment { IrBin::Add } else { IrBin::Sub };
                 let v = Ir::Binary(op, Box::new(cur), Box::new(Ir::Number(1.0)));
                 out.extend(pre);
-                match t {
-                    Target::Place(p) => out.push(IrStmt::Assign(p, v)),
-                    Target::Member(o, k) => out.push(IrStmt::SetMember { object: o, key: k, value: v }),
-                }
+                out.push(set(t, v));
                 Ok(())
             }
             ExprKind::Call { callee, args } if args.is_empty() => {
@@ -1158,12 +1213,12 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         {
             let recv = self.global_value(&flat, at)?;
             let a = self.args(args, pre)?;
-            return Ok(Ir::Invoke { object: Box::new(recv), method: name.to_string(), args: a });
+            return Ok(Ir::Invoke { object: Box::new(recv), method: name.to_string(), args: a, span: Some(at) });
         }
         let recv = self.expr(object, pre)?;
         let recv = if args.iter().any(|a| self.needs_statements(a)) { self.keep(recv, pre) } else { recv };
         let a = self.args(args, pre)?;
-        Ok(Ir::Invoke { object: Box::new(recv), method: name.to_string(), args: a })
+        Ok(Ir::Invoke { object: Box::new(recv), method: name.to_string(), args: a, span: Some(at) })
     }
 }
 
@@ -1171,6 +1226,19 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
 enum Target {
     Place(Place),
     Member(Ir, Ir),
+}
+
+/// The statement that stores a value into a target.
+fn set(t: Target, value: Ir) -> IrStmt {
+    match t {
+        Target::Place(p) => IrStmt::Assign(p, value),
+        Target::Member(object, key) => IrStmt::SetMember { object, key, value },
+    }
+}
+
+/// Item 0 of a cell.
+fn cell_item(cell: Ir) -> Ir {
+    Ir::Member(Box::new(cell), Box::new(Ir::Number(0.0)))
 }
 
 fn place_value(p: &Place) -> Ir {

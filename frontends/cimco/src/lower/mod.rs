@@ -246,10 +246,6 @@ fn general_post(
         }
         functions.push(f);
     }
-    if let Some((func, slot)) = shared.mutable {
-        let name = model.scopes.funcs[func].locals[slot].clone();
-        return Err(native::Why { what: format!("a closure captures `{name}`, which changes after"), span: whole });
-    }
     for f in &mut functions {
         if let Body::Native(b) = &mut f.body {
             *b = fold::stmts(std::mem::take(b));
