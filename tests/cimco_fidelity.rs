@@ -316,3 +316,31 @@ function onLinear(x, y, z, m) { return ""; }
     assert!(scripts.is_empty() && post.scripts.is_empty(), "scripts: {scripts:?}");
     check(js, ONE_MOVE, "25 26 7 10; 1 2.25 -0.5; X1.5||X1.5; X3 \n");
 }
+
+/// `key in value` finds own properties and those of the value's prototype
+/// (`"toString" in {}`, `"push" in []`, `"call" in f`), array indices
+/// below the length and nothing else, natively as Node.js does.
+#[test]
+fn the_in_operator_finds_what_javascript_finds() {
+    let js = r#"
+var linebreak = "\n";
+var table = {a: 1, "(": "[", 2: "x"};
+var list = [10, 20];
+function f() {}
+function onOpen() {
+    var r = [];
+    r.push("a" in table, "b" in table, "(" in table, 2 in table, "2" in table, "toString" in table, "hasOwnProperty" in table);
+    r.push(0 in list, 1 in list, 2 in list, "length" in list, "push" in list, "1" in list, "01" in list);
+    r.push("call" in f, "name" in f, "x" in f);
+    var k = "a";
+    r.push(k in table ? table[k] : "none", !("z" in table));
+    return r.join(",") + "\n";
+}
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(
+        js,
+        ONE_MOVE,
+        "true,false,true,true,true,true,true,true,true,false,true,true,true,false,true,true,false,1,true\n",
+    );
+}

@@ -344,4 +344,8 @@ pub enum Builtin {
     /// The names `for (k in value)` walks: an object's properties in
     /// their order, an array's or a text's indices, as texts.
     Keys,
+    /// JavaScript `key in value`: whether the object, array or function
+    /// has the property, its own or its prototype's (`"length" in [1]`,
+    /// `"toString" in {}`); a TypeError for any other value.
+    HasProperty,
 }

@@ -676,11 +676,6 @@ declare_codes! {
         fix = "Set the property to `undefined` instead.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
-    JS026: Error, "the `in` operator (outside `for (var k in obj)`)",
-        example = "if (\"x\" in o) {}",
-        fix = "Compare the property with `undefined`: `o.x !== undefined`.";
-    /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
-    /// This construct is not part of it, so postc refuses the post rather than guess.
     JS027: Error, "the `instanceof` operator",
         example = "if (o instanceof Array) {}",
         fix = "Test a property of the object, or use `typeof`.";

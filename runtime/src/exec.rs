@@ -396,6 +396,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
         if matches!(
             e,
             Expr::Array(_)
+                | Expr::Builtin(Builtin::Keys | Builtin::HasProperty, _)
                 | Expr::Object(_)
                 | Expr::Member(..)
                 | Expr::Invoke { .. }

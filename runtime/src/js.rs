@@ -351,3 +351,74 @@ mod tests {
         assert_eq!(to_uint32(-1.0), 4294967295);
     }
 }
+
+/// What a JavaScript value is, for the properties its prototype gives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProtoKind {
+    Object,
+    Array,
+    Function,
+}
+
+/// Whether a value of this kind has `name` from its prototype chain in
+/// Node.js 20 (`"toString" in {}`, `"push" in []`, `"call" in f`): what
+/// `key in value` finds besides the value's own properties.
+pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
+    const OBJECT: &[&str] = &[
+        "constructor",
+        "hasOwnProperty",
+        "isPrototypeOf",
+        "propertyIsEnumerable",
+        "toLocaleString",
+        "toString",
+        "valueOf",
+        "__proto__",
+        "__defineGetter__",
+        "__defineSetter__",
+        "__lookupGetter__",
+        "__lookupSetter__",
+    ];
+    const ARRAY: &[&str] = &[
+        "length",
+        "at",
+        "concat",
+        "copyWithin",
+        "entries",
+        "every",
+        "fill",
+        "filter",
+        "find",
+        "findIndex",
+        "findLast",
+        "findLastIndex",
+        "flat",
+        "flatMap",
+        "forEach",
+        "includes",
+        "indexOf",
+        "join",
+        "keys",
+        "lastIndexOf",
+        "map",
+        "pop",
+        "push",
+        "reduce",
+        "reduceRight",
+        "reverse",
+        "shift",
+        "slice",
+        "some",
+        "sort",
+        "splice",
+        "unshift",
+        "values",
+    ];
+    const FUNCTION: &[&str] =
+        &["length", "name", "prototype", "arguments", "caller", "apply", "bind", "call", "toString"];
+    let own = match kind {
+        ProtoKind::Object => &[][..],
+        ProtoKind::Array => ARRAY,
+        ProtoKind::Function => FUNCTION,
+    };
+    own.contains(&name) || OBJECT.contains(&name)
+}

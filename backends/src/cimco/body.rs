@@ -590,6 +590,7 @@ impl Printer<'_> {
             }
             (Builtin::Len, [x]) => member(self.expr(x)?, "length"),
             (Builtin::Keys, [x]) => method(js(ExprKind::Ident("Object".into())), "keys", vec![self.expr(x)?]),
+            (Builtin::HasProperty, [k, o]) => binary(JsBin::In, self.expr(k)?, self.expr(o)?),
             (Builtin::ToFixed, [x, d]) => {
                 let (x, d) = (self.expr(x)?, self.expr(d)?);
                 method(x, "toFixed", vec![d])

@@ -38,7 +38,6 @@ pub enum Construct {
     With,
     Label,
     Delete,
-    In,
     Instanceof,
     Generator,
     Async,
@@ -77,7 +76,6 @@ impl Construct {
             With => codes::JS023.code,
             Label => codes::JS024.code,
             Delete => codes::JS025.code,
-            In => codes::JS026.code,
             Instanceof => codes::JS027.code,
             Generator => codes::JS028.code,
             Async => codes::JS029.code,
@@ -111,7 +109,6 @@ impl Construct {
             With => "the `with` statement",
             Label => "labels (`outer:`, `break outer`)",
             Delete => "the `delete` operator",
-            In => "the `in` operator",
             Instanceof => "the `instanceof` operator",
             Generator => "generator functions (`function*`) and `yield`",
             Async => "`async` functions and `await`",
@@ -150,7 +147,6 @@ impl Construct {
             With => "write the object name in front of each property",
             Label => "leave the outer loop with a flag variable instead",
             Delete => "set the property to `undefined` instead",
-            In => "compare the property with `undefined`: `obj.x !== undefined`",
             Instanceof => "test a property of the object, or use `typeof`",
             Generator => "return an array of the values instead",
             Async => "call the function directly; posts run synchronously",
@@ -194,7 +190,6 @@ impl Construct {
             With | Delete
                 | Spread
                 | Destructuring
-                | In
                 | Instanceof
                 | Exponent
                 | OptionalChaining

@@ -48,6 +48,7 @@ pub const LT: &str = "__lt";
 pub const LE: &str = "__le";
 pub const GT: &str = "__gt";
 pub const GE: &str = "__ge";
+pub const IN: &str = "__in";
 /// Truthiness.
 pub const TRUTHY: &str = "__t";
 pub const TYPEOF: &str = "__typeof";

@@ -810,7 +810,16 @@ impl Engine<'_> {
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
-                let v = builtin(*b, &values);
+                let v = match b {
+                    // The one built-in that can fail: `in` of a value that is not an object.
+                    Builtin::HasProperty => {
+                        let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
+                        let found = objects::has_property(arg(0), arg(1));
+                        self.give_back(values);
+                        return found;
+                    }
+                    _ => builtin(*b, &values),
+                };
                 self.give_back(values);
                 self.check_text(&v)?;
                 v

@@ -140,6 +140,25 @@ pub(crate) fn keys(value: &Value) -> Value {
     Value::array(names)
 }
 
+/// JavaScript `key in value`: the value's own properties and those of its
+/// prototype; a TypeError for a value that is not an object.
+pub(crate) fn has_property(key: &Value, value: &Value) -> Result<Value> {
+    use js::ProtoKind;
+    let k = key_text(key);
+    let found = match value {
+        Value::Object(o) => o.borrow().find(k.as_bytes()).is_some() || js::prototype_has(ProtoKind::Object, &k),
+        Value::Array(items) => {
+            index(key).is_some_and(|i| i < items.borrow().len()) || js::prototype_has(ProtoKind::Array, &k)
+        }
+        Value::Func(_) => js::prototype_has(ProtoKind::Function, &k),
+        Value::Output(_) => {
+            matches!(k.as_str(), "format" | "reset" | "getLast") || js::prototype_has(ProtoKind::Object, &k)
+        }
+        _ => return Err(type_error(format!("cannot use 'in' to search for '{k}' in {}", describe(value)))),
+    };
+    Ok(Value::Bool(found))
+}
+
 /// The array index a property name is (`"2"`, not `"02"` or `"-1"`).
 fn array_index(name: &str) -> Option<u32> {
     let i: u32 = name.parse().ok()?;

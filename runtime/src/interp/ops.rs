@@ -280,6 +280,12 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
             }
         }
         Builtin::Keys => super::objects::keys(args.first().unwrap_or(&Value::Undefined)),
+        // The interpreter reads `in` itself, for its TypeError; here (no
+        // error path) a value that is not an object has no property.
+        Builtin::HasProperty => {
+            let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
+            super::objects::has_property(arg(0), arg(1)).unwrap_or(Value::Bool(false))
+        }
     }
 }
 

@@ -14,6 +14,34 @@ use postc_runtime::js;
 type R = Result<Dynamic, Box<EvalAltResult>>;
 
 /// An error that stops the script, reported at the calling line.
+/// JavaScript `key in value`: own properties along the prototype chain,
+/// then what the value's built-in prototype has.
+fn has_property(key: Dynamic, value: Dynamic) -> Result<bool, Box<EvalAltResult>> {
+    use js::ProtoKind;
+    let k = values::to_string(&key);
+    if let Some(a) = value.clone().try_cast::<values::JsArr>() {
+        let n = to_number(&key);
+        let index = n >= 0.0 && n.fract() == 0.0 && js::number_to_string(n) == k;
+        return Ok((index && (n as usize) < a.0.borrow().len()) || js::prototype_has(ProtoKind::Array, &k));
+    }
+    let Some(o) = value.clone().try_cast::<values::JsObj>() else {
+        return Err(fail(format!("TypeError: cannot use 'in' to search for '{k}' in {}", values::to_string(&value))));
+    };
+    let mut at = Some(o);
+    let mut kind = ProtoKind::Object;
+    while let Some(obj) = at {
+        let data = obj.0.borrow();
+        if data.props.iter().any(|(name, _)| name.as_str() == k) {
+            return Ok(true);
+        }
+        if matches!(data.kind, values::ObjKind::Function(_) | values::ObjKind::Host(_)) {
+            kind = ProtoKind::Function;
+        }
+        at = data.proto.clone();
+    }
+    Ok(js::prototype_has(kind, &k))
+}
+
 pub fn fail(message: impl Into<String>) -> Box<EvalAltResult> {
     Box::new(EvalAltResult::ErrorRuntime(Dynamic::from(ImmutableString::from(message.into())), Position::NONE))
 }
@@ -58,6 +86,7 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn(names::GE, |a: Dynamic, b: Dynamic| {
         matches!(values::compare(&a, &b), Some(Ordering::Greater | Ordering::Equal))
     });
+    engine.register_fn(names::IN, has_property);
     engine.register_fn(names::TRUTHY, |a: Dynamic| values::truthy(&a));
     engine.register_fn(names::TYPEOF, |a: Dynamic| values::text(values::type_of(&a)));
     engine.register_fn(names::ARG, |a: Array, i: i64| -> Dynamic {

@@ -48,6 +48,8 @@ pub enum BinaryOp {
     Le,
     Gt,
     Ge,
+    /// `key in object`
+    In,
 }
 
 /// `&&` and `||`.
@@ -117,6 +119,7 @@ impl BinaryOp {
             BinaryOp::Le => "<=",
             BinaryOp::Gt => ">",
             BinaryOp::Ge => ">=",
+            BinaryOp::In => "in",
         }
     }
 }

@@ -46,7 +46,7 @@ use crate::host_names as names;
 use super::builtins;
 use super::layout::{self, Layout};
 use super::model::Model;
-use super::native::{Why, bin, binary_js, to_number};
+use super::native::{Why, binary_op, to_number};
 use super::scope::{FnId, Symbol};
 use super::setup::{Binding, Setup};
 
@@ -845,7 +845,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         let cur = self.read(&t);
                         let cur = if self.has_effects(value) { self.keep(cur, &mut pre) } else { cur };
                         let v = self.expr(value, &mut pre)?;
-                        binary_js(bin(b), cur, v)
+                        binary_op(b, cur, v)
                     }
                 };
                 out.extend(pre);
@@ -1045,7 +1045,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let v = self.operands(&[left, right], pre)?;
                 let mut v = v.into_iter();
                 let (a, b) = (v.next().unwrap_or(Ir::Undefined), v.next().unwrap_or(Ir::Undefined));
-                binary_js(bin(*op), a, b)
+                binary_op(*op, a, b)
             }
             ExprKind::Logical { op, left, right } => {
                 let a = self.expr(left, pre)?;
@@ -1091,7 +1091,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         let cur = self.read(&t);
                         let cur = self.keep(cur, pre);
                         let v = self.expr(value, pre)?;
-                        binary_js(bin(b), cur, v)
+                        binary_op(b, cur, v)
                     }
                 };
                 let v = self.keep(v, pre);

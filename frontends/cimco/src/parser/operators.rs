@@ -1,5 +1,5 @@
 //! The binary operators by precedence (a Pratt parser), the conditional
-//! operator, and assignments. `in`, `instanceof`, `**`, `??`, logical
+//! operator, and assignments. `instanceof`, `**`, `??`, logical
 //! assignment and arrow functions are parsed so they can be named in a
 //! diagnostic.
 
@@ -65,7 +65,7 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
         (Punct::Lt, Op::Binary(B::Lt)),
         (Punct::Gt, Op::Binary(B::Gt)),
     ])
-    .or(kw(Keyword::In).to(Op::Unsupported(Construct::In)).map_with(|op, e| (op, e.span())))
+    .or(kw(Keyword::In).to(Op::Binary(B::In)).map_with(|op, e| (op, e.span())))
     .or(kw(Keyword::Instanceof).to(Op::Unsupported(Construct::Instanceof)).map_with(|op, e| (op, e.span())));
     let shift = ops(vec![
         (Punct::UShr, Op::Binary(B::UShr)),

@@ -481,7 +481,7 @@ impl Native<'_, '_> {
                 let v = self.expr(value)?;
                 let v = match op.binary() {
                     None => v,
-                    Some(b) => binary_js(bin(b), self.expr(target)?, v),
+                    Some(b) => binary_op(b, self.expr(target)?, v),
                 };
                 Ok(IrStmt::Assign(place, v))
             }
@@ -652,7 +652,7 @@ impl Native<'_, '_> {
             ExprKind::Binary { op: BinaryOp::Add, left, right } => {
                 binary_js(IrBin::Add, self.expr_in_text(left, right)?, self.expr_in_text(right, left)?)
             }
-            ExprKind::Binary { op, left, right } => binary_js(bin(*op), self.expr(left)?, self.expr(right)?),
+            ExprKind::Binary { op, left, right } => binary_op(*op, self.expr(left)?, self.expr(right)?),
             ExprKind::Logical { op, left, right } => {
                 let op = if *op == LogicalOp::And { IrBin::And } else { IrBin::Or };
                 Ir::Binary(op, Box::new(self.expr(left)?), Box::new(self.expr(right)?))
@@ -751,9 +751,18 @@ pub fn binary_js(op: IrBin, a: Ir, b: Ir) -> Ir {
     }
 }
 
-/// The IR operator of a JavaScript binary operator.
-pub fn bin(op: BinaryOp) -> IrBin {
-    match op {
+/// A JavaScript binary operator applied to two operands: an IR operator,
+/// or for `in` the built-in that asks an object for a property.
+pub fn binary_op(op: BinaryOp, a: Ir, b: Ir) -> Ir {
+    match bin(op) {
+        Some(op) => binary_js(op, a, b),
+        None => Ir::Builtin(postc_ir::Builtin::HasProperty, vec![a, b]),
+    }
+}
+
+/// The IR operator of a JavaScript binary operator (`in` has none).
+fn bin(op: BinaryOp) -> Option<IrBin> {
+    Some(match op {
         BinaryOp::Add => IrBin::Add,
         BinaryOp::Sub => IrBin::Sub,
         BinaryOp::Mul => IrBin::Mul,
@@ -773,7 +782,8 @@ pub fn bin(op: BinaryOp) -> IrBin {
         BinaryOp::Le => IrBin::JsLe,
         BinaryOp::Gt => IrBin::JsGt,
         BinaryOp::Ge => IrBin::JsGe,
-    }
+        BinaryOp::In => return None,
+    })
 }
 
 /// Whether a loop body has a `continue` for this loop (not a nested one).

@@ -388,6 +388,7 @@ pub(super) fn binary_fn(op: BinaryOp) -> &'static str {
         BinaryOp::Le => names::LE,
         BinaryOp::Gt => names::GT,
         BinaryOp::Ge => names::GE,
+        BinaryOp::In => names::IN,
     }
 }
 
