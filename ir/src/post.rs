@@ -692,7 +692,10 @@ impl Post {
                 crate::visit::walk_stmt_mut(self, stmt);
             }
             fn visit_expr_mut(&mut self, expr: &mut crate::code::Expr) {
-                if let crate::code::Expr::FormatVar { span, .. } | crate::code::Expr::Format { span, .. } = expr {
+                if let crate::code::Expr::FormatVar { span, .. }
+                | crate::code::Expr::Format { span, .. }
+                | crate::code::Expr::Regex { span, .. } = expr
+                {
                     *span = None;
                 }
                 crate::visit::walk_expr_mut(self, expr);

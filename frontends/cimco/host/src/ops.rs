@@ -18,6 +18,28 @@ pub fn fail(message: impl Into<String>) -> Box<EvalAltResult> {
     Box::new(EvalAltResult::ErrorRuntime(Dynamic::from(ImmutableString::from(message.into())), Position::NONE))
 }
 
+/// A use of JavaScript postc does not run (a regular expression's
+/// `lastIndex`: [`postc_runtime::regex::UNSUPPORTED`]), at the call that
+/// asked. It is a system error, so the post's `try` does not catch it and
+/// no script function wraps it: the run stops there, as native code does.
+#[derive(Debug)]
+pub struct Unsupported {
+    pub message: String,
+    pub at: Position,
+}
+
+impl std::fmt::Display for Unsupported {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Unsupported {}
+
+pub fn unsupported(message: String, at: Position) -> Box<EvalAltResult> {
+    Box::new(EvalAltResult::ErrorSystem(String::new(), Box::new(Unsupported { message, at })))
+}
+
 pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_type_with_name::<JsNull>("null");
     engine.register_fn(names::NULL, || JsNull);
