@@ -333,14 +333,14 @@ function onOpen() {
     r.push(0 in list, 1 in list, 2 in list, "length" in list, "push" in list, "1" in list, "01" in list);
     r.push("call" in f, "name" in f, "x" in f);
     var k = "a";
-    r.push(k in table ? table[k] : "none", !("z" in table));
+    r.push(k in table ? table[k] : "none", !("z" in table), "source" in /x/g, "y" in /x/g);
     return r.join(",") + "\n";
 }
 function onLinear(x, y, z, m) { return ""; }
 "#;
-    check(
-        js,
-        ONE_MOVE,
-        "true,false,true,true,true,true,true,true,true,false,true,true,true,false,true,true,false,1,true\n",
-    );
+    let expected = "true,false,true,true,true,true,true,true,true,false,true,true,true,false,true,true,false,1,true,true,false\n";
+    check(js, ONE_MOVE, expected);
+    // The same in the Rhai tier: an `isFinite` call keeps the post there.
+    let scripted = format!("{js}function keepsScripts(t) {{ return isFinite(t); }}\n");
+    check(&scripted, ONE_MOVE, expected);
 }

@@ -94,7 +94,7 @@ fn inspect_names_the_construct_and_its_place() {
     let post = dir.path().join("args.js");
     std::fs::write(
         &post,
-        "function writeBlock() {\n  var words = arguments;\n  return words.length;\n}\nfunction onLinear(x, y, z, movement) { return writeBlock(\"G1\", \"X\" + x); }\nfunction keepsScripts(t) { return t.replace(/x/g, \"\"); }\n",
+        "function writeBlock() {\n  var words = arguments;\n  return words.length;\n}\nfunction onLinear(x, y, z, movement) { return writeBlock(\"G1\", \"X\" + x); }\nfunction keepsScripts(t) { return isFinite(t); }\n",
     )
     .unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc")).arg("inspect").arg(&post).output().unwrap();
@@ -114,7 +114,7 @@ fn bench_profile_shows_where_the_time_goes() {
     let post = dir.path().join("args.js");
     std::fs::write(
         &post,
-        "var xyzFormat = createFormat({decimals: 3});\nfunction writeBlock(a, b) {\n  return a + b;\n}\nfunction onLinear(x, y, z, movement) {\n  var words = {g: \"G1\"};\n  words.g = \"G01\";\n  return writeBlock(words.g, xyzFormat.format(x));\n}\nfunction keepsScripts(t) { return t.replace(/x/g, \"\"); }\n",
+        "var xyzFormat = createFormat({decimals: 3});\nfunction writeBlock(a, b) {\n  return a + b;\n}\nfunction onLinear(x, y, z, movement) {\n  var words = {g: \"G1\"};\n  words.g = \"G01\";\n  return writeBlock(words.g, xyzFormat.format(x));\n}\nfunction keepsScripts(t) { return isFinite(t); }\n",
     )
     .unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_postc"))

@@ -138,3 +138,89 @@ function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n"; }
     let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
     assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
 }
+
+/// A post that runs every text method with a regular expression, and
+/// `test`, over texts with parentheses, digits, letters past ASCII, an
+/// astral character and line breaks (`\n`, `\r\n`, U+2028): as postc
+/// lowers it (native IR, no script), kept in Rhai scripts (an `isFinite`
+/// keeps the post off the general lowering), and under Node.js, byte for
+/// byte. What postc refuses (RT038: `^` and `$` under `m` over `\r` or
+/// U+2028) the post steers around as a post would; where JavaScript steps
+/// through UTF-16 units (an empty match, a class over a character past
+/// U+FFFF) only the astral text's safe methods run (docs/cimco.md).
+const REGEX_POST: &str = r#"var linebreak = "\n";
+var samples = ["Tool (T1) D=6mm\nline 2 (\u00e9 \u00fc)", "G1 X10.5 Y-3 (cut)\r\nG0 Z25\u2028end", "\u00c4\u00d6\u00dc 123 abc_DEF (x(y)z)", "", "a\u00a0b\tc  d"];
+var astral = "Tool (T2) \ud83d\ude00 6mm\nnext (\u00e9)";
+function show(t) {
+    return String(t).replace(/\r/g, "\\r").replace(/\n/g, "\\n").replace(/\u2028/g, "\\u2028");
+}
+function safe(t, out) {
+    out.push(show(t.replace(/[()]/g, "")));
+    out.push(show(t.replace(/\d+/g, "<$&>")));
+    out.push(show(t.replace(/(\w)(\d)/g, "$2$1$$")));
+    out.push(show(t.replace(/\s+/g, "_")));
+    out.push(show(t.replace("(", "[").replace(")", "]")));
+    out.push(show(t.replace("1", "[$&|$`|$'|$1]")));
+    out.push(show(t.replace(/(\u00e9|\u00dc)/gi, "[$1|$`|$']")));
+    out.push(show(t.replace(/\bT(\d)\b/, "tool $1")));
+    out.push(show(t.split(/\s*[()]\s*/).join("|")));
+    out.push(show(t.split(/(\d)/).join("|")));
+    out.push(t.split(/\r?\n|\u2028/).length);
+    out.push(t.search(/\d/));
+    out.push(t.search(/\ud83d\ude00/));
+    out.push(t.search(/\)/));
+    out.push(t.search("Y"));
+    out.push(/\(T\d\)/.test(t));
+    out.push(/^line/.test(t));
+    out.push(/\u00c9/i.test(t));
+    out.push(/end$/.test(t));
+}
+function each(t) {
+    var out = [];
+    safe(t, out);
+    out.push(show(t.replace(/.$/g, "!")));
+    out.push(show(t.replace(/x*/g, "-")));
+    out.push(show(t.replace(/[^\x20-\x7e]/g, "?")));
+    out.push(t.split(/,?/).length);
+    if (!/[\r\u2028\u2029]/.test(t)) {
+        out.push(show(t.replace(/^/gm, "> ")));
+        out.push(show(t.replace(/.$/gm, "!")));
+        out.push(/^line/m.test(t));
+    }
+    return out.join(" ; ");
+}
+function onOpen() {
+    var lines = [];
+    for (var i = 0; i < samples.length; i++) {
+        lines.push(each(samples[i]));
+    }
+    var out = [];
+    safe(astral, out);
+    lines.push(out.join(" ; "));
+    var re = /a(b)c/g;
+    lines.push([String(re), typeof re, re.source, re.global, re.ignoreCase, /x/im.multiline, re === re, /x/ === /x/, re == String(re), re ? "truthy" : "falsy"].join(" "));
+    return lines.join("\n") + "\n";
+}
+function onLinear(x, y, z, m) { return ""; }
+"#;
+
+#[test]
+fn node_runs_regular_expressions_as_postc_does() {
+    let Some(_) = node_or_skip("cimco_node") else { return };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let toolpath = corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export the toolpath");
+    let keeps_scripts = format!("{REGEX_POST}function keepsScripts(t) {{ return isFinite(t); }}\n");
+    for (name, js, scripts) in [("regex.js", REGEX_POST.to_string(), false), ("regex_scripts.js", keeps_scripts, true)]
+    {
+        let path = dir.path().join(name);
+        std::fs::write(&path, &js).expect("write the post");
+        let post = compile(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(!post.scripts.is_empty(), scripts, "{name}: scripts {}", post.scripts.len());
+        let postc = post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let node = run_node(&path, &jsonl, &[]).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(String::from_utf8_lossy(&postc), String::from_utf8_lossy(&node), "{name}");
+        assert_eq!(postc, node, "{name}");
+    }
+}

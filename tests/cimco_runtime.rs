@@ -46,9 +46,9 @@ fn post_output(js: &str) -> String {
     run(&post).unwrap_or_else(|d| panic!("{d:?}"))
 }
 
-/// A function with a regular expression: the general lowering has no form
+/// A function calling `isFinite`: the general lowering has no form
 /// for it, so the post keeps the shaped lowering and its Rhai scripts.
-const KEEPS_SCRIPTS: &str = "function keepsScripts(t) { return t.replace(/x/g, \"\"); }\n";
+const KEEPS_SCRIPTS: &str = "function keepsScripts(t) { return isFinite(t); }\n";
 
 #[test]
 fn formats_trim_pad_sign_and_scale() {
@@ -78,7 +78,7 @@ fn modal_memory_is_shared_by_native_code_and_scripts() {
         var xOutput = createVariable({prefix: "X"}, createFormat({decimals: 1}));
         var seen = [];
         function onLinear(x, y, z, m) { return "L" + xOutput.format(x) + "\n"; }
-        // Objects make this one a script, with the regular expression below.
+        // Objects make this one a script, with the `isFinite` call below.
         function onClose() { seen.push(1); return "C" + xOutput.format(3) + "|" + xOutput.getLast() + "\n"; }
     "#;
     let js = format!("{js}{KEEPS_SCRIPTS}");
@@ -183,12 +183,48 @@ fn regular_expressions_as_javascript_runs_them() {
 #[test]
 fn regular_expressions_without_a_linear_form_are_errors_at_their_line() {
     let js = "var linebreak = \"\\n\";\nfunction onOpen() {\n    return \"aa\".replace(/(a)\\1/, \"b\");\n}\nfunction onLinear(x, y, z, m) { return \"\"; }\n";
-    let (post, _, sources) = compile(js);
+    // Lowered to native IR: refused when the post is compiled.
+    let (_, diags, sources) = compile(js);
+    let d = diags.iter().find(|d| d.code == "JS108").unwrap_or_else(|| panic!("a JS108 error: {diags:?}"));
+    assert!(d.message.contains("backreference"), "{d:?}");
+    let span = d.primary_span().expect("a span");
+    assert_eq!(sources.line_column(span.file, span.start), Some((3, 25)), "{d:?}");
+    // Kept in a script: an error when the script reaches it.
+    let (post, diags, sources) = compile(&format!("{js}{KEEPS_SCRIPTS}"));
+    assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
     let d = run(&post).expect_err("the post fails");
     let d = d.iter().find(|d| d.code == "RT023").unwrap_or_else(|| panic!("an RT023 error: {d:?}"));
     assert!(d.message.contains("backreference"), "{d:?}");
     let span = d.primary_span().expect("a span");
     assert_eq!(sources.line_column(span.file, span.start).map(|(l, _)| l), Some(3), "{d:?}");
+}
+
+/// What depends on a `lastIndex` postc does not keep, a function as a
+/// replacement, and `^` under `m` over a `\r` stop the post with RT038 at
+/// its function, natively and in a script alike, and a `try` does not
+/// catch it.
+#[test]
+fn what_needs_last_index_is_refused_in_both_tiers() {
+    for (body, what) in [
+        ("var re = /a/g; re.test(\"a\"); return re.test(\"a\") + \"\\n\";", "`test`"),
+        ("try { return /a/.exec(\"a\") + \"\\n\"; } catch (e) { return \"caught\\n\"; }", "`exec`"),
+        ("var re = /a/; return re.lastIndex + \"\\n\";", "`lastIndex`"),
+        ("return \"a\".replace(/a/, function (m) { return m; }) + \"\\n\";", "a function as the replacement"),
+        ("return \"a\\r\\nb\".replace(/^/gm, \"> \") + \"\\n\";", "line end"),
+    ] {
+        let js = format!(
+            "var linebreak = \"\\n\";\nfunction onOpen() {{\n    {body}\n}}\nfunction onLinear(x, y, z, m) {{ return \"\"; }}\n"
+        );
+        for js in [js.clone(), format!("{js}{KEEPS_SCRIPTS}")] {
+            let (post, diags, sources) = compile(&js);
+            assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+            let d = run(&post).expect_err("the post fails");
+            let d = d.iter().find(|d| d.code == "RT038").unwrap_or_else(|| panic!("an RT038 error for {body}: {d:?}"));
+            assert!(d.message.contains(what), "{d:?}");
+            let span = d.primary_span().unwrap_or_else(|| panic!("a span: {d:?}"));
+            assert!(matches!(sources.line_column(span.file, span.start), Some((2 | 3, _))), "{d:?}");
+        }
+    }
 }
 
 /// Posts cut short or with bytes changed still compile and run or fail
@@ -273,8 +309,8 @@ fn formatting_a_value_that_is_not_a_number_stops_at_its_line() {
         ),
     ];
     // The cases that use objects run three ways: natively as the general
-    // lowering makes them, and as scripts when a regular expression keeps
-    // the post on Rhai.
+    // lowering makes them, and as scripts when an `isFinite` call keeps the
+    // post on Rhai.
     let cases = cases.into_iter().flat_map(|(body, line, native)| {
         let general = (!native).then(|| (body.to_string(), line, true));
         let script = (!native).then(|| (format!("{body}\n{KEEPS_SCRIPTS}"), line, false));

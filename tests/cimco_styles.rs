@@ -22,20 +22,6 @@ use std::path::{Path, PathBuf};
 use crate::support::cimco::*;
 use crate::support::{Goldens, all_files};
 
-/// Node.js's version, or None when the Node.js checks are to be skipped;
-/// under `CI=true` a missing `node` fails.
-fn node_or_skip(test: &str) -> Option<String> {
-    let version = node();
-    if version.is_none() {
-        assert!(
-            std::env::var_os("CI").is_none_or(|v| v != "true"),
-            "{test}: `node` is not installed, and CI=true requires the Node.js referee"
-        );
-        eprintln!("{test}: `node` is not installed; the Node.js referee is skipped");
-    }
-    version
-}
-
 /// Every toolpath exported as JSON Lines into `dir`, in the order of
 /// [`mill_toolpaths`].
 fn exported(dir: &Path) -> Vec<(PathBuf, PathBuf)> {

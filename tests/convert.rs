@@ -824,9 +824,70 @@ fn cimco_posts_that_cannot_print_are_refused() {
     assert!(d.iter().any(|d| d.starts_with("CV004") && d.contains("modal memory cleared")), "{d:?}");
     assert!(d.iter().any(|d| d.starts_with("CV004") && d.contains("substitutions")), "{d:?}");
 
-    let mut edited = source.clone();
-    let comment = edited.functions.iter_mut().find(|f| f.name == "comment").expect("function comment");
-    comment.source.clear();
+    // A post that keeps a script (`isFinite` has no native form).
+    let js = "var linebreak = \"\\n\";\nvar seen = {n: 0};\nfunction onLinear(x, y, z, m) { seen.n = x; return \"\"; }\nfunction finite(t) { return isFinite(t); }\n";
+    let (Some(mut edited), _) = compile_bytes(Path::new("script.js"), js.as_bytes(), None) else {
+        panic!("the post compiles")
+    };
+    let finite = edited.functions.iter_mut().find(|f| f.name == "finite").expect("function finite");
+    assert!(matches!(finite.body, postc_ir::Body::Script(_)));
+    finite.source.clear();
     let d = refusal(&edited);
-    assert!(d.iter().any(|d| d.starts_with("CV002") && d.contains("`comment` runs as a script")), "{d:?}");
+    assert!(d.iter().any(|d| d.starts_with("CV002") && d.contains("`finite` runs as a script")), "{d:?}");
+}
+
+/// A CIMCO post with a regular expression converts to itself: the
+/// literal prints as written (`postc-backends` checks the printing of the
+/// IR's literal itself), compiles back to the same post, and posts the
+/// same program.
+#[test]
+fn regular_expressions_print_back_in_cimco() {
+    let (Some(source), _) = compile_bytes(Path::new("regex.js"), REGEX_JS.as_bytes(), None) else {
+        panic!("the post compiles")
+    };
+    assert!(source.scripts.is_empty(), "the regular expression is native IR");
+    let text = match postc_backends::convert(&source, Target::Cimco) {
+        Ok(t) => String::from_utf8(t).expect("text"),
+        Err(d) => panic!("refused: {d:?}"),
+    };
+    assert!(text.contains("t.replace(/[()]/g, \"\")"), "{text}");
+    let (Some(back), diags) = compile_bytes(Path::new("back.js"), text.as_bytes(), None) else {
+        panic!("the printed post compiles")
+    };
+    assert!(diags.is_empty(), "{diags:?}");
+    let toolpath = corpus().join("toolpaths/cimco/drill.ron");
+    let program = post(&source, &toolpath).0.expect("posts");
+    assert!(String::from_utf8_lossy(&program.concat()).contains("G1\n"));
+    assert_eq!(program, post(&back, &toolpath).0.expect("posts"));
+}
+
+const REGEX_JS: &str = "var linebreak = \"\\n\";\nfunction clean(t) {\n    return t.replace(/[()]/g, \"\");\n}\nfunction onLinear(x, y, z, m) { return clean(\"(G1)\") + linebreak; }\n";
+
+/// Vectric and VcPost have no regular expressions: converting a post with
+/// one is refused with CV002, which names it and points at it.
+#[test]
+fn regular_expressions_are_refused_by_dialects_without_them() {
+    let mut sources = postc_report::source_map();
+    // `clean` returns a local, as a VcPost Function does.
+    let js = "var linebreak = \"\\n\";\nfunction clean(t) {\n    var r = t.replace(/[()]/g, \"\");\n    return r;\n}\nfunction onLinear(x, y, z, m) { return clean(\"(G1)\") + linebreak; }\n";
+    let compiled = postc_frontends::compile_post_bytes(Path::new("regex.js"), js.as_bytes(), None, &mut sources);
+    assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
+    let mut post = compiled.post.expect("a post");
+    // Past what VcPost refuses first (CNC-Calc's modal memory kept across
+    // toolpaths), to the code.
+    post.options.forget_modal_at_toolpath_start = true;
+    for target in [Target::Vectric, Target::VcPost] {
+        let d = match postc_backends::convert(&post, target) {
+            Ok(_) => panic!("{target:?} converted a post with a regular expression"),
+            Err(d) => d,
+        };
+        // Vectric refuses every post with code; VcPost names the literal.
+        assert!(d.iter().any(|d| d.code == "CV002"), "{target:?}: {d:?}");
+        if target == Target::VcPost {
+            let d =
+                d.iter().find(|d| d.message.contains("a regular expression")).unwrap_or_else(|| panic!("named: {d:?}"));
+            let span = d.primary_span().expect("a span");
+            assert_eq!(sources.line_column(span.file, span.start), Some((3, 23)), "{d:?}");
+        }
+    }
 }

@@ -895,7 +895,12 @@ impl Printer<'_> {
                 format!("{name}({})", args.join(", "))
             }
             other => {
-                self.cannot(expr_name(other), None);
+                // A regular expression is named wherever it stands (in a
+                // method call's arguments, say), at its place in the post.
+                match regex_in(other) {
+                    Some(span) => self.cannot("a regular expression", span),
+                    None => self.cannot(expr_name(other), None),
+                }
                 String::new()
             }
         }
@@ -951,6 +956,24 @@ fn other_name(s: &Stmt) -> &'static str {
         Stmt::Eval(_) => "a value computed for nothing",
         _ => "a statement",
     }
+}
+
+/// The span of the first regular expression in `e`, if it holds one.
+fn regex_in(e: &Expr) -> Option<Option<Span>> {
+    struct Find(Option<Option<Span>>);
+    impl postc_ir::visit::Visit for Find {
+        fn visit_expr(&mut self, e: &Expr) {
+            if self.0.is_none() {
+                if let Expr::Regex { span, .. } = e {
+                    self.0 = Some(*span);
+                }
+                postc_ir::visit::walk_expr(self, e);
+            }
+        }
+    }
+    let mut find = Find(None);
+    postc_ir::visit::Visit::visit_expr(&mut find, e);
+    find.0
 }
 
 fn expr_name(e: &Expr) -> &'static str {

@@ -173,6 +173,7 @@ fn validated(compiled: &mut Compiled, ron_file: Option<FileId>, sources: &Source
     let Some(post) = &compiled.post else { return };
     let problems = postc_ir::validate::validate(post);
     if problems.is_empty() {
+        regexes_run(post, ron_file, sources, &mut compiled.diagnostics);
         return;
     }
     for p in problems {
@@ -198,6 +199,55 @@ fn validated(compiled: &mut Compiled, ron_file: Option<FileId>, sources: &Source
             d = d.at(span, "here");
         }
         compiled.diagnostics.push(d);
+    }
+}
+
+/// Compiles every regular expression of a valid post as the runtime will
+/// (`postc_runtime::regex`): a pattern it cannot run (one that does not
+/// read, a backreference, lookaround) is refused now, with JS108 at the
+/// literal (in a RON post, which keeps no spans, at the item that holds
+/// it), rather than when the post reaches it.
+fn regexes_run(post: &Post, ron_file: Option<FileId>, sources: &SourceMap, diagnostics: &mut Vec<Diagnostic>) {
+    use postc_ir::validate::Item;
+    struct Regexes(Vec<(String, Option<Span>)>);
+    impl postc_ir::visit::Visit for Regexes {
+        fn visit_expr(&mut self, expr: &postc_ir::Expr) {
+            if let postc_ir::Expr::Regex { pattern, flags, span } = expr
+                && let Err(why) = postc_runtime::regex::Regex::new(pattern, flags)
+            {
+                self.0.push((format!("postc cannot run the regular expression /{pattern}/{flags}: {why}"), *span));
+            }
+            postc_ir::visit::walk_expr(self, expr);
+        }
+    }
+    use postc_ir::visit::Visit as _;
+    let mut items: Vec<(Item, Vec<&postc_ir::Stmt>, Option<&postc_ir::Expr>)> = Vec::new();
+    items.extend(post.globals.iter().enumerate().map(|(i, g)| (Item::Global(i), Vec::new(), Some(&g.initial))));
+    items.push((Item::Init, post.init.iter().collect(), None));
+    items.extend(post.handlers.iter().enumerate().map(|(i, h)| (Item::Handler(i), h.body.iter().collect(), None)));
+    for (i, f) in post.functions.iter().enumerate() {
+        if let postc_ir::Body::Native(body) = &f.body {
+            items.push((Item::Function(i), body.iter().collect(), None));
+        }
+    }
+    for (item, body, initial) in items {
+        let mut found = Regexes(Vec::new());
+        body.into_iter().for_each(|s| found.visit_stmt(s));
+        initial.into_iter().for_each(|e| found.visit_expr(e));
+        for (message, span) in found.0 {
+            let mut d = Diagnostic::error(codes::JS108, message)
+                .help("postc matches in time linear in the text: a pattern without backreferences and lookaround runs");
+            let (field, index) = item.field();
+            let span = span.or_else(|| {
+                let file = ron_file?;
+                let (start, end) = ron_locate::item(sources.text(file)?, field, index)?;
+                Some(Span::new(file, start, end))
+            });
+            if let Some(s) = span {
+                d = d.at(s, "this regular expression");
+            }
+            diagnostics.push(d);
+        }
     }
 }
 

@@ -170,6 +170,16 @@ pub enum Expr {
     Array(Vec<Expr>),
     /// `{k: v, ...}`: a new object, its properties in this order.
     Object(Vec<(String, Expr)>),
+    /// `/pattern/flags`: a JavaScript regular expression, a new value each
+    /// time it is evaluated (JavaScript's meaning of the pattern; flags
+    /// among `g`, `i`, `m`, each at most once). `span` is the literal in
+    /// the post, where a pattern postc cannot run is reported.
+    Regex {
+        pattern: String,
+        flags: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<Span>,
+    },
     /// `value[key]` (`value.key`): a property of an object, an element or
     /// the `length` of an array or a text; `undefined` when there is none.
     Member(Box<Expr>, Box<Expr>),

@@ -799,6 +799,14 @@ declare_codes! {
     JS107: Error, "a section post holds something other than its options, its labelled variables and functions that return a section's lines",
         example = "var X = createVariable({prefix: \"X\", label: \"X\"}, createFormat({decimals: 3}));\nfunction FEED_MOVE() { if (X) { return \"\"; } return \"G1\" + X + \"\\n\"; }",
         fix = "Write the section as `return \"G1\" + X + \"\\n\";`, or write a CNC-Calc post with `onLinear` and friends.";
+    /// postc runs a post's regular expressions in time linear in the text, with JavaScript's
+    /// meaning (docs/cimco.md, "Regular expressions"). This pattern is not one it runs: it does
+    /// not read as a JavaScript pattern, or it uses a backreference (`\1`) or lookaround (`(?=`,
+    /// `(?!`, `(?<=`, `(?<!`), which have no linear-time form. The message names the construct;
+    /// the post is refused when it is compiled.
+    JS108: Error, "a regular expression postc cannot run: its pattern does not read, or uses a backreference or lookaround (no linear-time form)",
+        example = "function clean(t) { return t.replace(/(a)\\1/g, \"a\"); }",
+        fix = "Write the pattern without backreferences and lookaround (match the text and test it in code), or correct its syntax.";
     /// The line does not read as VcPost: a word or symbol stands where the language allows none.
     /// The help, when there is one, says what was expected.
     VC001: Error, "a line VcPost cannot read (unexpected word or symbol)",
@@ -1392,6 +1400,16 @@ declare_codes! {
     /// post stops at the function that ran into it.
     RT037: Error, "a JavaScript type error: a property of undefined, a call of what is not a function, a method a value lacks",
         fix = "Correct the post where the message says: check the value before using it.";
+    /// postc's regular expressions keep no `lastIndex`, so what reads or moves it is refused
+    /// rather than answered as if it were 0: `exec`, reading or setting `lastIndex`, and `test` of
+    /// a pattern with the `g` flag (JavaScript starts it where the previous `test` stopped). Under
+    /// the `m` flag, `^` and `$` see only `\n` as a line end, where JavaScript also sees `\r`,
+    /// U+2028 and U+2029: such a pattern over a text holding one is refused too, and so is a
+    /// function as the replacement of `replace`. A `try` does not catch it: the post stops, and
+    /// no output is written.
+    RT038: Error, "a regular expression used in a way postc does not run: its `lastIndex` (`exec`, `lastIndex`, `test` under `g`), `^`/`$` under `m` over `\\r` or U+2028/U+2029, a function as a replacement",
+        example = "var re = /\\d+/g;\nfunction onOpen() { while (re.test(s)) { n++; } }",
+        fix = "Drop the `g` flag from a pattern given to `test`; find matches with `replace`, `split` or `search`.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), or a post driven by APT words.
     CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), or a post driven by APT words",

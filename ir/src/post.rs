@@ -697,7 +697,8 @@ impl Post {
             fn visit_expr_mut(&mut self, expr: &mut crate::code::Expr) {
                 if let crate::code::Expr::FormatVar { span, .. }
                 | crate::code::Expr::Format { span, .. }
-                | crate::code::Expr::Invoke { span, .. } = expr
+                | crate::code::Expr::Invoke { span, .. }
+                | crate::code::Expr::Regex { span, .. } = expr
                 {
                     *span = None;
                 }

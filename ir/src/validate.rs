@@ -9,6 +9,9 @@
 //!   `FormatVar` variables, `Format` formats, `Call` functions, `Global`
 //!   globals, `Script` and script bodies' scripts;
 //! - a native function has at least as many slots as parameters;
+//! - a regular expression's flags are among `g`, `i`, `m`, each at most
+//!   once (whether its pattern is one postc runs is the runtime's to say:
+//!   `postc_frontends` compiles each pattern after validating);
 //! - numbers that steer the output are finite and sensible: format
 //!   multipliers, the decimal mark (ASCII), block numbering, the chord
 //!   tolerance (above zero), arc radius limits, tape splitting (at least
@@ -227,6 +230,18 @@ impl Visit for Ids<'_> {
                 Some(_) => {}
             },
             Expr::Global(g) => self.check("global", usize::from(*g), self.post.globals.len()),
+            Expr::Regex { flags, .. } => {
+                let mut seen = String::new();
+                for c in flags.chars() {
+                    if !matches!(c, 'g' | 'i' | 'm') || seen.contains(c) {
+                        self.bad(format!(
+                            "the regular expression flags `{flags}` are not `g`, `i` and `m`, each at most once"
+                        ));
+                        break;
+                    }
+                    seen.push(c);
+                }
+            }
             _ => {}
         }
         walk_expr(self, expr);
@@ -289,5 +304,18 @@ mod tests {
         p.formats[0].multiplier = f64::NAN;
         let found = validate(&p);
         assert_eq!(found.len(), 3, "{found:?}");
+    }
+
+    #[test]
+    fn regular_expression_flags_are_checked() {
+        let mut p = post();
+        let regex = |flags: &str| Expr::Regex { pattern: "x".into(), flags: flags.into(), span: None };
+        p.handlers[0].body.push(Stmt::Eval(regex("gim")));
+        assert_eq!(validate(&p), Vec::new());
+        p.handlers[0].body.push(Stmt::Eval(regex("gg")));
+        p.handlers[0].body.push(Stmt::Eval(regex("y")));
+        let found = validate(&p);
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(found[0].message.contains("`gg`"), "{found:?}");
     }
 }

@@ -109,6 +109,7 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
         }
         Expr::Number(_)
         | Expr::Text(_)
+        | Expr::Regex { .. }
         | Expr::Bool(_)
         | Expr::Null
         | Expr::Undefined
@@ -222,6 +223,7 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
         }
         Expr::Number(_)
         | Expr::Text(_)
+        | Expr::Regex { .. }
         | Expr::Bool(_)
         | Expr::Null
         | Expr::Undefined

@@ -189,6 +189,11 @@ pub enum Expr {
     },
     Array(Vec<Expr>),
     Object(Vec<(Text, Expr)>),
+    /// A regular expression literal, compiled when the post is prepared.
+    Regex {
+        literal: RegexLiteral,
+        span: Option<Span>,
+    },
     Member(Box<Expr>, Box<Expr>),
     Output(postc_ir::OutputRef),
     Invoke {
@@ -255,7 +260,7 @@ impl Expr {
                 f(object);
                 args.iter_mut().for_each(f);
             }
-            Expr::This | Expr::Undefined | Expr::Arguments | Expr::Output(_) => {}
+            Expr::This | Expr::Undefined | Expr::Arguments | Expr::Output(_) | Expr::Regex { .. } => {}
             Expr::LocalEmpty { .. }
             | Expr::LocalIsText { .. }
             | Expr::Number(_)
@@ -398,6 +403,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
             Expr::Array(_)
                 | Expr::Builtin(Builtin::Keys | Builtin::HasProperty, _)
                 | Expr::Object(_)
+                | Expr::Regex { .. }
                 | Expr::Member(..)
                 | Expr::Invoke { .. }
                 | Expr::Closure { .. }
@@ -461,6 +467,33 @@ impl std::ops::Deref for Text {
         match &self.0 {
             Value::Text(t) => t,
             _ => "",
+        }
+    }
+}
+
+/// A regular expression literal: its pattern compiled once, when the post
+/// is prepared, and shared by every value the literal makes (they keep no
+/// state: [`crate::regex`]); or why postc cannot run it, reported with
+/// code JS108 when the literal is evaluated (`postc_frontends` refuses
+/// such a post when it is compiled; a post built some other way meets it
+/// here).
+#[derive(Clone, Debug)]
+pub struct RegexLiteral(pub Result<std::rc::Rc<crate::regex::Regex>, std::rc::Rc<str>>);
+
+impl RegexLiteral {
+    /// Compiles `/pattern/flags`.
+    pub fn new(pattern: &str, flags: &str) -> RegexLiteral {
+        RegexLiteral(crate::regex::Regex::new(pattern, flags).map(std::rc::Rc::new).map_err(std::rc::Rc::from))
+    }
+}
+
+impl PartialEq for RegexLiteral {
+    /// The same compiled pattern, or the same reason.
+    fn eq(&self, other: &RegexLiteral) -> bool {
+        match (&self.0, &other.0) {
+            (Ok(a), Ok(b)) => std::rc::Rc::ptr_eq(a, b),
+            (Err(a), Err(b)) => a == b,
+            _ => false,
         }
     }
 }
@@ -574,6 +607,7 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
         E::Object(props) => {
             Expr::Object(props.iter().map(|(k, v)| (Text::new(crate::value::Text::new(k)), expr(v))).collect())
         }
+        E::Regex { pattern, flags, span } => Expr::Regex { literal: RegexLiteral::new(pattern, flags), span: *span },
         E::Member(o, k) => Expr::Member(boxed(o), boxed(k)),
         E::Invoke { object, method, args, span } => Expr::Invoke {
             object: boxed(object),

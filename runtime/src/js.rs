@@ -358,6 +358,7 @@ pub enum ProtoKind {
     Object,
     Array,
     Function,
+    RegExp,
 }
 
 /// Whether a value of this kind has `name` from its prototype chain in
@@ -415,10 +416,28 @@ pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
     ];
     const FUNCTION: &[&str] =
         &["length", "name", "prototype", "arguments", "caller", "apply", "bind", "call", "toString"];
+    const REGEXP: &[&str] = &[
+        "lastIndex",
+        "source",
+        "flags",
+        "global",
+        "ignoreCase",
+        "multiline",
+        "dotAll",
+        "sticky",
+        "unicode",
+        "unicodeSets",
+        "hasIndices",
+        "exec",
+        "test",
+        "toString",
+        "compile",
+    ];
     let own = match kind {
         ProtoKind::Object => &[][..],
         ProtoKind::Array => ARRAY,
         ProtoKind::Function => FUNCTION,
+        ProtoKind::RegExp => REGEXP,
     };
     own.contains(&name) || OBJECT.contains(&name)
 }

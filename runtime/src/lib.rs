@@ -28,6 +28,9 @@
 //!   before it is dispatched;
 //! - [`lathe`]: the `lathe` option, turning events into the runtime's plane;
 //! - [`js`]: JavaScript's conversions, which the IR's builtins name;
+//! - [`regex`]: JavaScript's regular expressions (translated onto the
+//!   `regex` crate, linear in the text) and the text methods that take
+//!   them, for the interpreter and the CIMCO script host alike;
 //! - [`output`]: the [`output::Sink`] trait the caller's sinks implement
 //!   (files, standard output: the command line), the memory and discard
 //!   sinks, and the names of tape-split parts;
@@ -56,6 +59,7 @@ pub mod number;
 pub mod output;
 pub mod prepare;
 pub mod profile;
+pub mod regex;
 pub mod script_host;
 pub mod sections;
 mod slots;

@@ -31,6 +31,10 @@ pub enum Value {
     Func(Rc<Closure>),
     /// A format or an output variable of the post as a value.
     Output(OutputRef),
+    /// A JavaScript regular expression: one evaluation of a literal, with
+    /// its own identity, sharing the pattern compiled once
+    /// ([`crate::regex`]).
+    Regex(Rc<crate::regex::RegExp>),
 }
 
 impl PartialEq for Value {
@@ -46,6 +50,7 @@ impl PartialEq for Value {
             (Value::Object(a), Value::Object(b)) => Rc::ptr_eq(a, b),
             (Value::Func(a), Value::Func(b)) => Rc::ptr_eq(a, b),
             (Value::Output(a), Value::Output(b)) => a == b,
+            (Value::Regex(a), Value::Regex(b)) => Rc::ptr_eq(a, b),
             _ => false,
         }
     }
@@ -293,26 +298,32 @@ impl Value {
             Value::Bool(b) => f64::from(u8::from(*b)),
             Value::Text(s) => s.as_str().trim().parse().unwrap_or(0.0),
             Value::Null => 0.0,
-            Value::Undefined | Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => f64::NAN,
+            Value::Undefined
+            | Value::Array(_)
+            | Value::Object(_)
+            | Value::Func(_)
+            | Value::Output(_)
+            | Value::Regex(_) => f64::NAN,
         }
     }
 
     /// Truthiness: non-zero numbers, non-empty text, true, and every
-    /// array, object and function.
+    /// array, object, function and regular expression.
     pub fn truthy(&self) -> bool {
         match self {
             Value::Num(n) => *n != 0.0 && !n.is_nan(),
             Value::Bool(b) => *b,
             Value::Text(s) => !s.is_empty(),
             Value::Null | Value::Undefined => false,
-            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => true,
+            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_) => true,
         }
     }
 
     /// Appends the value as text: numbers in their shortest form without a
     /// trailing `.0`; null as nothing (BASIC's empty value); `undefined`,
     /// arrays (their items joined by commas), objects and functions as
-    /// JavaScript's `String()` writes them.
+    /// JavaScript's `String()` writes them (a regular expression as
+    /// `/source/flags`).
     pub fn append_to(&self, out: &mut String) {
         self.append_nested(out, 0);
     }
@@ -340,6 +351,7 @@ impl Value {
             }
             Value::Object(_) | Value::Output(_) => out.push_str("[object Object]"),
             Value::Func(_) => out.push_str("function () { [native code] }"),
+            Value::Regex(r) => out.push_str(&r.0.to_text()),
         }
     }
 

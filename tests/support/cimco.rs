@@ -71,6 +71,20 @@ pub fn node() -> Option<String> {
     out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
+/// Node.js's version, or None when the Node.js checks are to be skipped;
+/// under `CI=true` a missing `node` fails.
+pub fn node_or_skip(test: &str) -> Option<String> {
+    let version = node();
+    if version.is_none() {
+        assert!(
+            std::env::var_os("CI").is_none_or(|v| v != "true"),
+            "{test}: `node` is not installed, and CI=true requires the Node.js referee"
+        );
+        eprintln!("{test}: `node` is not installed; the Node.js referee is skipped");
+    }
+    version
+}
+
 /// The referee host that runs a CIMCO post under Node.js.
 pub fn host_script() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/run.js")

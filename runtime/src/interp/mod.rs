@@ -694,6 +694,16 @@ impl Engine<'_> {
                 }
                 objects::object(values)
             }
+            Expr::Regex { literal, span } => match &literal.0 {
+                Ok(regex) => Value::Regex(std::rc::Rc::new(crate::regex::RegExp(regex.clone()))),
+                Err(why) => {
+                    let d = Diagnostic::error("JS108", format!("postc cannot run this regular expression: {why}"));
+                    return Err(Box::new(match span {
+                        Some(s) => d.at(*s, "this regular expression"),
+                        None => d,
+                    }));
+                }
+            },
             Expr::Member(o, k) => {
                 let o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
@@ -1109,7 +1119,9 @@ impl Engine<'_> {
         }
         self.depth -= 1;
         match (result, function.span) {
-            (Err(e), Some(s)) if e.code == TEXT_BUDGET && e.labels.is_empty() => {
+            (Err(e), Some(s))
+                if (e.code == TEXT_BUDGET || e.code == crate::regex::UNSUPPORTED) && e.labels.is_empty() =>
+            {
                 Err(Box::new(e.at(s, "in this function")))
             }
             (result, _) => result,

@@ -15,6 +15,7 @@ use super::Result;
 use super::ops::js_number;
 use crate::engine::Engine;
 use crate::js;
+use crate::regex::{self, Property};
 use crate::value::{Closure, Object, Text, Value};
 
 /// The code of a value the post threw and did not catch.
@@ -27,6 +28,12 @@ pub const TYPE_ERROR: &str = "RT037";
 /// Arrays grow to at most this many items (a post's arrays hold words,
 /// not toolpaths).
 pub const MAX_ITEMS: usize = 1 << 20;
+
+/// A use of a regular expression postc does not run ([`regex::UNSUPPORTED`]):
+/// not a `TypeError`, so `try` does not catch it.
+pub(crate) fn unsupported(message: String) -> Box<Diagnostic> {
+    Box::new(Diagnostic::error(regex::UNSUPPORTED, message).note("no output is written"))
+}
 
 /// A JavaScript `TypeError` of native code.
 pub(crate) fn type_error(message: String) -> Box<Diagnostic> {
@@ -84,6 +91,17 @@ pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
             let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
             return Err(type_error(format!("cannot read property '{}' of {what}", key_text(key))));
         }
+        Value::Regex(r) => {
+            let k = key_text(key);
+            match r.0.property(&k) {
+                Some(Property::Text(t)) => Value::text(t),
+                Some(Property::Flag(b)) => Value::Bool(b),
+                None => match regex::unsupported_member(&k) {
+                    Some(why) => return Err(unsupported(why)),
+                    None => Value::Undefined,
+                },
+            }
+        }
         Value::Num(_) | Value::Bool(_) | Value::Func(_) | Value::Output(_) => Value::Undefined,
     })
 }
@@ -114,6 +132,11 @@ pub(crate) fn set_member(value: &Value, key: &Value, v: Value) -> Result<()> {
         Value::Null | Value::Undefined => {
             let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
             return Err(type_error(format!("cannot set property '{}' of {what}", key_text(key))));
+        }
+        Value::Regex(_) => {
+            if let Some(why) = regex::unsupported_member(&key_text(key)) {
+                return Err(unsupported(why));
+            }
         }
         _ => {}
     }
@@ -151,6 +174,7 @@ pub(crate) fn has_property(key: &Value, value: &Value) -> Result<Value> {
             index(key).is_some_and(|i| i < items.borrow().len()) || js::prototype_has(ProtoKind::Array, &k)
         }
         Value::Func(_) => js::prototype_has(ProtoKind::Function, &k),
+        Value::Regex(_) => js::prototype_has(ProtoKind::RegExp, &k),
         Value::Output(_) => {
             matches!(k.as_str(), "format" | "reset" | "getLast") || js::prototype_has(ProtoKind::Object, &k)
         }
@@ -236,6 +260,11 @@ impl Engine<'_> {
         match (&object, method.as_str()) {
             (Value::Array(items), name) => self.array_method(items, name, args),
             (Value::Text(t), name) => text_method(t, name, &args),
+            (Value::Regex(r), "test") => {
+                let text = arg(0).to_text();
+                r.0.test(&text).map(Value::Bool).map_err(unsupported)
+            }
+            (Value::Regex(_), name) if let Some(why) = regex::unsupported_member(name) => Err(unsupported(why)),
             (Value::Num(n), "toFixed") => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
             (Value::Num(n), "toString") => match arg(0) {
                 Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
@@ -481,6 +510,7 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
         "split" => {
             let parts: Vec<Value> = match arg(0) {
                 Value::Undefined => vec![Value::Text(t.clone())],
+                Value::Regex(r) => regex::split(&r.0, t).map_err(unsupported)?.iter().map(|p| Value::text(p)).collect(),
                 sep => {
                     let sep = key_text(&sep);
                     if sep.is_empty() {
@@ -492,6 +522,22 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
             };
             Value::array(parts)
         }
+        "replace" => {
+            let with = match arg(1) {
+                Value::Func(_) => return Err(unsupported(regex::FUNCTION_REPLACEMENT.to_string())),
+                v => v.to_text(),
+            };
+            let out = match arg(0) {
+                Value::Regex(r) => regex::replace(&r.0, t, &with).map_err(unsupported)?,
+                pattern => regex::replace_text(t, &pattern.to_text(), &with),
+            };
+            Value::Text(Text::from(out))
+        }
+        "search" => Value::Num(match arg(0) {
+            Value::Regex(r) => regex::search(&r.0, t).map_err(unsupported)?,
+            pattern => regex::search_text(t, &pattern.to_text())
+                .map_err(|e| type_error(format!("the pattern of `search` does not read: {e}")))?,
+        }),
         "concat" => {
             let mut s = t.to_string();
             args.iter().for_each(|a| a.append_to(&mut s));
@@ -524,6 +570,7 @@ fn describe(v: &Value) -> String {
         Value::Object(_) => "an object".into(),
         Value::Func(_) => "a function".into(),
         Value::Output(_) => "a format or output variable".into(),
+        Value::Regex(r) => format!("the regular expression {}", r.0.to_text()),
     }
 }
 

@@ -30,7 +30,7 @@ pub(crate) fn type_name(a: &Value) -> &'static str {
         // The native tier's null stands for undefined too (its lowering
         // reads `undefined` as null): `typeof` says what undefined is.
         Value::Null | Value::Undefined => "undefined",
-        Value::Array(_) | Value::Object(_) | Value::Output(_) => "object",
+        Value::Array(_) | Value::Object(_) | Value::Output(_) | Value::Regex(_) => "object",
         Value::Func(_) => "function",
     }
 }
@@ -143,14 +143,14 @@ fn js_loose_eq(a: &Value, b: &Value) -> bool {
         _ if absent(a) || absent(b) => absent(a) && absent(b),
         (Value::Text(x), Value::Text(y)) => x == y,
         (
-            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_),
-            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_),
+            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_),
+            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_),
         ) => a == b,
         // An object against a primitive compares its text (ToPrimitive).
-        (Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_), _) => {
+        (Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_), _) => {
             js_loose_eq(&Value::Text(a.to_text()), b)
         }
-        (_, Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_)) => {
+        (_, Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_)) => {
             js_loose_eq(a, &Value::Text(b.to_text()))
         }
         _ => js_number(a) == js_number(b),
@@ -165,7 +165,7 @@ pub(super) fn strict_eq(a: &Value, b: &Value) -> bool {
         (Value::Text(x), Value::Text(y)) => x == y,
         (Value::Bool(x), Value::Bool(y)) => x == y,
         (Value::Null, Value::Null) | (Value::Undefined, Value::Undefined) => true,
-        (Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_), _) => a == b,
+        (Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_), _) => a == b,
         _ => false,
     }
 }

@@ -22,8 +22,8 @@ fn constant(e: &Expr) -> Option<Value> {
     })
 }
 
-/// The expression of a constant; `None` for arrays, objects and
-/// functions, which are made anew each time.
+/// The expression of a constant; `None` for arrays, objects, functions
+/// and regular expressions, which are made anew each time.
 fn literal(v: Value) -> Option<Expr> {
     Some(match v {
         Value::Num(n) => Expr::Number(n),
@@ -31,7 +31,7 @@ fn literal(v: Value) -> Option<Expr> {
         Value::Bool(b) => Expr::Bool(b),
         Value::Null => Expr::Null,
         Value::Undefined => Expr::Undefined,
-        Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => return None,
+        Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_) => return None,
     })
 }
 

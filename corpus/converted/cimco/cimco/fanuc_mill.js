@@ -55,9 +55,11 @@ function writeBlock(text) {
     if (text == "") {
         return "";
     }
-    text = "N" + sequenceNumber + text;
-    sequenceNumber += 10;
-    return text + "\n";
+    if (showSequenceNumbers) {
+        text = "N" + sequenceNumber + text;
+        sequenceNumber += sequenceNumberIncrement;
+    }
+    return text + linebreak;
 }
 
 // The feed word of a movement, with its delimiter; nothing for rapids.
@@ -66,7 +68,7 @@ function feedWord(movement) {
     if (f == "") {
         return "";
     }
-    return " " + f;
+    return variableDelimeter + f;
 }
 
 // An operator comment; brackets inside would end it early.
@@ -84,16 +86,22 @@ function onOpen(isClipboard) {
     if (isClipboard) {
         return "";
     }
-    return "%\nO1000 (FANUC 0I-MF MILL)\n" + writeBlock(" G90 G94 G17 G21 G40 G80");
+    return "%" + linebreak
+        + "O1000 (FANUC 0I-MF MILL)" + linebreak
+        + writeBlock(" G90 G94 G17 G21 G40 G80");
 }
 
 function onToolChange(tool, name, diameter, spindleSpeed) {
     toolNumber = tool;
+    // The tool change moves the axes: every word prints again after it
+    // (output variables keep their memory across toolpaths, seed 002).
     gMotion.reset();
     xOutput.reset();
     yOutput.reset();
     zOutput.reset();
-    return comment("T" + tool + " " + name + " D" + xyzFormat.format(diameter)) + writeBlock(" T" + toolFormat.format(tool) + " M6") + writeBlock(" S" + rpmFormat.format(spindleSpeed) + " M3");
+    return comment("T" + tool + " " + name + " D" + xyzFormat.format(diameter))
+        + writeBlock(" T" + toolFormat.format(tool) + " M6")
+        + writeBlock(" S" + rpmFormat.format(spindleSpeed) + " M3");
 }
 
 function onComment(text) {
@@ -107,16 +115,16 @@ function onDwell(seconds) {
 function onClose() {
     var out = writeBlock(" G80 G40") + writeBlock(" M5") + writeBlock(" G91 G28 Z0.");
     if (!clipboard) {
-        out += writeBlock(" M30") + "%" + "\n";
+        out += writeBlock(" M30") + "%" + linebreak;
     }
     return out;
 }
 
 // ------------------------------------------------------------ Compensation
 function onCompensation(comp) {
-    if (comp == 1) {
+    if (comp == COMPENSATION_LEFT) {
         pendingCompensation = " G41 D" + toolNumber;
-    } else if (comp == 2) {
+    } else if (comp == COMPENSATION_RIGHT) {
         pendingCompensation = " G42 D" + toolNumber;
     } else {
         pendingCompensation = " G40";
@@ -135,10 +143,11 @@ function onLinear(vx, vy, vz, movement) {
     if (xyz == "") {
         return "";
     }
-    return writeBlock(getCompensation() + gMotion.format(movement == 0 ? 0 : 1) + xyz + feedWord(movement));
+    return writeBlock(getCompensation() + gMotion.format(movement == MOVEMENT_RAPID ? 0 : 1) + xyz + feedWord(movement));
 }
 
 function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
+    // The arc starts where the last move ended.
     var sx = xOutput.getLast();
     var sy = yOutput.getLast();
     var centre = iOutput.format(cx - sx) + jOutput.format(cy - sy);

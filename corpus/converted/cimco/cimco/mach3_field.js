@@ -67,21 +67,22 @@ function retract() {
 }
 
 function coolantCode(mode) {
-    var t1 = mode;
-    if (t1 === "flood") {
+    switch (mode) {
+    case "flood":
         return "M8";
-    } else if (t1 === "mist") {
+    case "mist":
         return "M7";
-    } else {
+    default:
         return "M9";
     }
 }
 
 function motionCode(movement) {
-    var t1 = movement;
-    if (t1 === 0) {
+    switch (movement) {
+    case MOVEMENT_RAPID:
         return "G0";
-    } else if (t1 === 2 || t1 === 1) {
+    case MOVEMENT_PLUNGE:
+    case MOVEMENT_CUTTING:
         return "G1";
     }
     return "G1";
@@ -125,9 +126,10 @@ function onToolChange(tool, name, diameter, spindleSpeed) {
     if (toolCount > 0) {
         out = writeBlock("M5", coolantCode("off")) + retract();
     }
-    toolCount += 1;
+    toolCount = toolCount + 1;
     resetModals();
-    return out + writeComment("T" + tool + " - " + name.toUpperCase()) + writeBlock("T" + tool, "M6") + writeBlock("G43", "H" + tool) + writeBlock("S" + spindleSpeed, "M3") + writeBlock(coolantCode("flood"));
+    return out + writeComment("T" + tool + " - " + name.toUpperCase()) + writeBlock("T" + tool, "M6")
+        + writeBlock("G43", "H" + tool) + writeBlock("S" + spindleSpeed, "M3") + writeBlock(coolantCode("flood"));
 }
 
 function safeZ() {
@@ -139,12 +141,14 @@ function onComment(text) {
 }
 
 function onCompensation(comp) {
-    var t1 = comp;
-    if (t1 === 1) {
+    switch (comp) {
+    case COMPENSATION_LEFT:
         compensation = "G41";
-    } else if (t1 === 2) {
+        break;
+    case COMPENSATION_RIGHT:
         compensation = "G42";
-    } else {
+        break;
+    default:
         compensation = "G40";
     }
 }
@@ -162,7 +166,7 @@ function onLinear(vx, vy, vz, movement) {
     if (x == "" && y == "" && z == "") {
         return "";
     }
-    var f = movement == 0 ? "" : fOutput.format(feedValue(movement));
+    var f = movement == MOVEMENT_RAPID ? "" : fOutput.format(feedValue(movement));
     return writeBlock(takeCompensation(), motion(motionCode(movement)), x, y, z, f);
 }
 
@@ -171,7 +175,9 @@ function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {
     var sy = yOutput.getLast();
     xOutput.reset();
     yOutput.reset();
-    return writeBlock(takeCompensation(), motion(isCW ? "G2" : "G3"), xOutput.format(ex), yOutput.format(ey), zOutput.format(ez), "I" + xyzFormat.format(cx - sx), "J" + xyzFormat.format(cy - sy), fOutput.format(feedValue(movement)));
+    return writeBlock(takeCompensation(), motion(isCW ? "G2" : "G3"), xOutput.format(ex), yOutput.format(ey),
+        zOutput.format(ez), "I" + xyzFormat.format(cx - sx), "J" + xyzFormat.format(cy - sy),
+        fOutput.format(feedValue(movement)));
 }
 
 function onDwell(seconds) {
@@ -207,5 +213,5 @@ function onDrillingFooter() {
 }
 
 function onClose() {
-    return writeBlock("M5", coolantCode("off")) + retract() + writeBlock(motion("G0"), "X0", "Y0") + writeBlock("M30") + "%" + "\n";
+    return writeBlock("M5", coolantCode("off")) + retract() + writeBlock(motion("G0"), "X0", "Y0") + writeBlock("M30") + "%" + linebreak;
 }

@@ -33,6 +33,8 @@ pub(crate) struct State {
     pub var_formats: Vec<u16>,
     /// Function objects by Rhai name, made once each.
     pub functions: std::collections::HashMap<String, JsObj>,
+    /// Regular expressions by pattern and flags, compiled once each.
+    pub regexes: std::collections::HashMap<(String, String), std::rc::Rc<postc_runtime::regex::Regex>>,
     pub ctx: Context,
     /// Names of globals, to find `MillDrillingFields` and friends.
     pub global_names: Vec<String>,
@@ -109,6 +111,7 @@ impl Compiled {
             modal: post.variables.iter().map(runtime::is_modal).collect(),
             var_formats: post.variables.iter().map(|v| v.format.raw()).collect(),
             functions: Default::default(),
+            regexes: Default::default(),
             ctx: Context { lathe: post.options.lathe, ..Context::default() },
             global_names: post.globals.iter().map(|g| g.name.clone()).collect(),
             feed_var: post.variables.iter().position(|v| v.name == host_names::FEED_VAR).map(|i| i as u16),
@@ -195,6 +198,15 @@ impl Compiled {
             (inner, span, self.state.borrow().last_loop, self.script.span)
         {
             span = Some(Span::new(whole.file, at as usize, at as usize + 1));
+        }
+        if let EvalAltResult::ErrorSystem(_, e) = inner
+            && let Some(u) = e.downcast_ref::<crate::ops::Unsupported>()
+        {
+            let d = Diagnostic::error(postc_runtime::regex::UNSUPPORTED, u.message.clone());
+            return match span_at(&self.script, u.at) {
+                Some(s) => d.at(s, "here"),
+                None => d,
+            };
         }
         let d = match inner {
             EvalAltResult::ErrorTooManyOperations(_) => Diagnostic::error(

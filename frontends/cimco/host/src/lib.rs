@@ -8,9 +8,10 @@
 //! post whose scripts are Rhai.
 //!
 //! - `values`: JavaScript values in Rhai with reference semantics;
-//! - `ops`, `props`, `methods`, `regex`: the operators, properties,
-//!   methods and regular expressions the translated script calls
-//!   (JavaScript's conversions are the runtime's, [`postc_runtime::js`]);
+//! - `ops`, `props`, `methods`: the operators, properties and methods
+//!   the translated script calls (JavaScript's conversions are the
+//!   runtime's, [`postc_runtime::js`], and so are its regular
+//!   expressions, [`postc_runtime::regex`], which native code runs too);
 //! - `cnc_calc`: the CNC-Calc host functions (`createFormat`,
 //!   `createVariable`, `getFeedrate`, the drill headers, compensation);
 //! - `compiled`: the Rhai engine, compiled once per run, and the call in
@@ -35,7 +36,6 @@ mod compiled;
 mod methods;
 mod ops;
 mod props;
-mod regex;
 mod values;
 
 use postc_front_cimco::host_names as names;

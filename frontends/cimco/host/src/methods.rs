@@ -4,8 +4,10 @@
 
 use rhai::{Array, Dynamic, EvalAltResult};
 
-use crate::ops::fail;
-use crate::regex;
+use postc_runtime::regex;
+use rhai::Position;
+
+use crate::ops::{fail, unsupported};
 use crate::values::{self, JsArr, JsRegex, num, text, to_number, to_string};
 
 type R = Result<Dynamic, Box<EvalAltResult>>;
@@ -24,7 +26,9 @@ fn clamp_index(v: f64, len: usize) -> usize {
     }
 }
 
-pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
+/// `s.name(args)`; `at` is the call, where an error of what postc does
+/// not run is reported.
+pub(super) fn string_method(s: &str, name: &str, args: &Array, at: Position) -> R {
     let chars: Vec<char> = s.chars().collect();
     let len = chars.len();
     let a = |i: usize| arg(args, i);
@@ -93,7 +97,7 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
             let parts: Vec<String> = if sep.is_unit() {
                 vec![s.to_string()]
             } else if let Some(r) = sep.clone().try_cast::<JsRegex>() {
-                regex::split(&r.0, s)
+                regex::split(&r.0.0, s).map_err(|e| unsupported(e, at))?
             } else {
                 let sep = to_string(&sep);
                 if sep.is_empty() {
@@ -105,26 +109,21 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array) -> R {
             Dynamic::from(JsArr::new(parts.into_iter().map(text).collect()))
         }
         "replace" => {
-            let with = to_string(&a(1));
+            let with = a(1);
+            if with.is::<rhai::FnPtr>()
+                || with.clone().try_cast::<values::JsObj>().is_some_and(|o| o.function().is_some())
+            {
+                return Err(unsupported(regex::FUNCTION_REPLACEMENT.to_string(), at));
+            }
+            let with = to_string(&with);
             match a(0).try_cast::<JsRegex>() {
-                Some(r) => text(regex::replace(&r.0, s, &with)),
-                None => {
-                    let pattern = to_string(&a(0));
-                    match s.find(&pattern) {
-                        Some(i) => text(format!(
-                            "{}{}{}",
-                            &s[..i],
-                            with.replace("$&", &pattern).replace("$$", "$"),
-                            &s[i + pattern.len()..]
-                        )),
-                        None => text(s),
-                    }
-                }
+                Some(r) => text(regex::replace(&r.0.0, s, &with).map_err(|e| unsupported(e, at))?),
+                None => text(regex::replace_text(s, &to_string(&a(0)), &with)),
             }
         }
         "search" => match a(0).try_cast::<JsRegex>() {
-            Some(r) => num(regex::search(&r.0, s) as f64),
-            None => num(s.find(&to_string(&a(0))).map_or(-1.0, |i| s[..i].chars().count() as f64)),
+            Some(r) => num(regex::search(&r.0.0, s).map_err(|e| unsupported(e, at))?),
+            None => num(regex::search_text(s, &to_string(&a(0))).map_err(|e| fail(format!("SyntaxError: {e}")))?),
         },
         _ => return Err(fail(format!("TypeError: text has no method '{name}'"))),
     })

@@ -24,6 +24,9 @@ fn has_property(key: Dynamic, value: Dynamic) -> Result<bool, Box<EvalAltResult>
         let index = n >= 0.0 && n.fract() == 0.0 && js::number_to_string(n) == k;
         return Ok((index && (n as usize) < a.0.borrow().len()) || js::prototype_has(ProtoKind::Array, &k));
     }
+    if value.is::<values::JsRegex>() {
+        return Ok(js::prototype_has(ProtoKind::RegExp, &k));
+    }
     let Some(o) = value.clone().try_cast::<values::JsObj>() else {
         return Err(fail(format!("TypeError: cannot use 'in' to search for '{k}' in {}", values::to_string(&value))));
     };
@@ -44,6 +47,28 @@ fn has_property(key: Dynamic, value: Dynamic) -> Result<bool, Box<EvalAltResult>
 
 pub fn fail(message: impl Into<String>) -> Box<EvalAltResult> {
     Box::new(EvalAltResult::ErrorRuntime(Dynamic::from(ImmutableString::from(message.into())), Position::NONE))
+}
+
+/// A use of JavaScript postc does not run (a regular expression's
+/// `lastIndex`: [`postc_runtime::regex::UNSUPPORTED`]), at the call that
+/// asked. It is a system error, so the post's `try` does not catch it and
+/// no script function wraps it: the run stops there, as native code does.
+#[derive(Debug)]
+pub struct Unsupported {
+    pub message: String,
+    pub at: Position,
+}
+
+impl std::fmt::Display for Unsupported {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Unsupported {}
+
+pub fn unsupported(message: String, at: Position) -> Box<EvalAltResult> {
+    Box::new(EvalAltResult::ErrorSystem(String::new(), Box::new(Unsupported { message, at })))
 }
 
 pub fn register(engine: &mut Engine, state: &Shared) {

@@ -7,10 +7,10 @@ use postc_front_cimco::host_names as names;
 use rhai::{Array, Dynamic, Engine, EvalAltResult, FnPtr, ImmutableString, Map, NativeCallContext};
 
 use crate::compiled::Shared;
-use crate::ops::fail;
-use crate::regex::Regex;
+use crate::ops::{fail, unsupported};
 use crate::values::{self, JsArr, JsObj, JsRegex, ObjKind, num, text, to_number, to_string};
 use postc_runtime::js;
+use postc_runtime::regex::{self, Property, RegExp, Regex};
 
 type R = Result<Dynamic, Box<EvalAltResult>>;
 
@@ -39,16 +39,33 @@ pub fn register(engine: &mut Engine, state: &Shared) {
         st.functions.insert(name.to_string(), o.clone());
         Ok(Dynamic::from(o))
     });
-    engine.register_fn(names::REGEX, |p: ImmutableString, f: ImmutableString| -> R {
-        Regex::new(&p, &f)
-            .map(|r| Dynamic::from(JsRegex(std::rc::Rc::new(r))))
-            .map_err(|e| fail(format!("SyntaxError: {e}")))
+    // Each evaluation of a literal is a new value (its own identity), of
+    // the pattern compiled the first time.
+    let s = state.clone();
+    engine.register_fn(names::REGEX, move |p: ImmutableString, f: ImmutableString| -> R {
+        let key = (p.to_string(), f.to_string());
+        let known = s.borrow().regexes.get(&key).cloned();
+        let compiled = match known {
+            Some(r) => r,
+            None => {
+                let r = std::rc::Rc::new(Regex::new(&p, &f).map_err(|e| fail(format!("SyntaxError: {e}")))?);
+                s.borrow_mut().regexes.insert(key, r.clone());
+                r
+            }
+        };
+        Ok(Dynamic::from(JsRegex(std::rc::Rc::new(RegExp(compiled)))))
     });
     engine.register_fn(names::MATH_OBJECT, || JsObj::new(ObjKind::Math));
     engine.register_fn(names::HOST_FUNCTION, |name: ImmutableString| JsObj::new(ObjKind::Host(name.to_string())));
     engine.register_fn(names::MATH, |name: ImmutableString, args: Array| -> R { math(&name, &args) });
-    engine.register_fn(names::GET, |o: Dynamic, k: Dynamic| -> R { get(&o, &k) });
-    engine.register_fn(names::SET, |o: Dynamic, k: Dynamic, v: Dynamic| -> R { set(&o, &k, v) });
+    engine.register_fn(names::GET, |ctx: NativeCallContext, o: Dynamic, k: Dynamic| -> R {
+        regex_member(&o, &k, ctx.call_position())?;
+        get(&o, &k)
+    });
+    engine.register_fn(names::SET, |ctx: NativeCallContext, o: Dynamic, k: Dynamic, v: Dynamic| -> R {
+        regex_member(&o, &k, ctx.call_position())?;
+        set(&o, &k, v)
+    });
     engine.register_fn(names::KEYS, |o: Dynamic| -> Array { keys(&o) });
     // A `return`, `break` or `continue` leaving a `try` is thrown as a
     // jump and caught by the translation of that `try`, which runs the
@@ -133,13 +150,24 @@ pub fn get(o: &Dynamic, k: &Dynamic) -> R {
         return Ok(m.get(to_string(k).as_str()).cloned().unwrap_or(Dynamic::UNIT));
     }
     if let Some(r) = o.clone().try_cast::<JsRegex>() {
-        return Ok(match to_string(k).as_str() {
-            "source" => text(r.0.source.clone()),
-            "global" => Dynamic::from_bool(r.0.global),
-            _ => Dynamic::UNIT,
+        return Ok(match r.0.0.property(&to_string(k)) {
+            Some(Property::Text(t)) => text(t),
+            Some(Property::Flag(b)) => Dynamic::from_bool(b),
+            None => Dynamic::UNIT,
         });
     }
     Ok(Dynamic::UNIT)
+}
+
+/// A property of a regular expression that postc does not keep
+/// (`lastIndex`) is refused, read or set.
+fn regex_member(o: &Dynamic, k: &Dynamic, at: rhai::Position) -> Result<(), Box<EvalAltResult>> {
+    if o.is::<JsRegex>()
+        && let Some(why) = regex::unsupported_member(&to_string(k))
+    {
+        return Err(unsupported(why, at));
+    }
+    Ok(())
 }
 
 /// `o[k] = v`; the value of the assignment.
@@ -247,7 +275,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         return Err(fail(format!("TypeError: cannot call method '{name}' of {}", to_string(&o))));
     }
     if let Some(s) = o.clone().try_cast::<ImmutableString>() {
-        return crate::methods::string_method(&s, name, &args);
+        return crate::methods::string_method(&s, name, &args, ctx.call_position());
     }
     if o.is::<f64>() || o.is::<i64>() {
         let n = to_number(&o);
@@ -264,9 +292,14 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         return crate::methods::array_method(&a, name, args);
     }
     if let Some(r) = o.clone().try_cast::<JsRegex>() {
+        let at = ctx.call_position();
         return match name {
-            "test" => Ok(Dynamic::from_bool(r.0.is_match(&to_string(&arg(&args, 0))))),
-            _ => Err(fail(format!("TypeError: a regular expression has no method '{name}'"))),
+            "test" => r.0.0.test(&to_string(&arg(&args, 0))).map(Dynamic::from_bool).map_err(|e| unsupported(e, at)),
+            "toString" => Ok(text(r.0.0.to_text())),
+            _ => match regex::unsupported_member(name) {
+                Some(why) => Err(unsupported(why, at)),
+                None => Err(fail(format!("TypeError: a regular expression has no method '{name}'"))),
+            },
         };
     }
     if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args) {

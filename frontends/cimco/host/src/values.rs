@@ -120,7 +120,7 @@ pub struct DynVarState {
 
 /// A regular expression literal.
 #[derive(Clone, Debug)]
-pub struct JsRegex(pub Rc<crate::regex::Regex>);
+pub struct JsRegex(pub Rc<postc_runtime::regex::RegExp>);
 
 pub fn is_null(v: &Dynamic) -> bool {
     v.is::<JsNull>()
@@ -133,6 +133,7 @@ pub fn from_value(v: &Value) -> Dynamic {
         // Native arrays, objects and functions stay in native code: no
         // function that holds one runs as a script.
         Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) => Dynamic::UNIT,
+        Value::Regex(r) => Dynamic::from(JsRegex(r.clone())),
         Value::Num(n) => Dynamic::from_float(*n),
         Value::Bool(b) => Dynamic::from_bool(*b),
         Value::Text(s) => Dynamic::from(ImmutableString::from(&**s)),
@@ -156,6 +157,9 @@ pub fn to_value(v: &Dynamic) -> Option<Value> {
     }
     if let Some(s) = v.clone().try_cast::<ImmutableString>() {
         return Some(Value::text(&s));
+    }
+    if let Some(r) = v.clone().try_cast::<JsRegex>() {
+        return Some(Value::Regex(r.0));
     }
     None
 }
@@ -226,7 +230,7 @@ fn push_string(out: &mut String, v: &Dynamic, depth: usize) {
         };
         out.push_str(text);
     } else if let Some(r) = v.clone().try_cast::<JsRegex>() {
-        out.push_str(&r.0.source);
+        out.push_str(&r.0.0.to_text());
     } else {
         out.push_str("[object Object]");
     }
@@ -281,6 +285,9 @@ fn same_object(a: &Dynamic, b: &Dynamic) -> bool {
         return Rc::ptr_eq(&x.0, &y.0);
     }
     if let (Some(x), Some(y)) = (a.clone().try_cast::<JsArr>(), b.clone().try_cast::<JsArr>()) {
+        return Rc::ptr_eq(&x.0, &y.0);
+    }
+    if let (Some(x), Some(y)) = (a.clone().try_cast::<JsRegex>(), b.clone().try_cast::<JsRegex>()) {
         return Rc::ptr_eq(&x.0, &y.0);
     }
     if let (Some(x), Some(y)) = (a.clone().try_cast::<VarRef>(), b.clone().try_cast::<VarRef>()) {

@@ -7,8 +7,8 @@
 //! function of a post to Rhai, the post is lowered again here, whole: each
 //! function, `__postc_init` and postc's bridges, so that every value keeps
 //! one representation. A post with something this lowering has no form for
-//! either (a regular expression, `new` of anything but `Error`) keeps the
-//! shaped lowering's result, and
+//! either (`new` of anything but `Error`) keeps the shaped lowering's
+//! result, and
 //! [`Why`] says what.
 //!
 //! How each construct lowers:
@@ -31,7 +31,10 @@
 //!   on; `for`: a `While` with its update as the loop's step; `for ... in`:
 //!   the keys (`Builtin::Keys`) walked by index;
 //! - the drilling and compensation data CNC-Calc hands its entry points
-//!   are host calls (`Expr::Host`) the CIMCO host answers.
+//!   are host calls (`Expr::Host`) the CIMCO host answers;
+//! - a regular expression literal is `Expr::Regex`, with its span: the
+//!   runtime compiles its pattern once (and `postc_frontends` refuses one
+//!   it cannot run when the post is compiled, JS108).
 
 use std::collections::{HashMap, HashSet};
 
@@ -961,7 +964,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             ExprKind::Null => Ir::Null,
             ExprKind::Undefined => Ir::Undefined,
             ExprKind::This => Ir::This,
-            ExprKind::Regex { .. } => return Err(why(at, "a regular expression")),
+            ExprKind::Regex { pattern, flags } => {
+                Ir::Regex { pattern: pattern.clone(), flags: flags.clone(), span: Some(at) }
+            }
             ExprKind::Ident(name) => self.ident(name, at)?,
             ExprKind::Array(items) => {
                 let refs: Vec<&Expr> = items.iter().collect();
