@@ -132,3 +132,24 @@ fn bench_profile_shows_where_the_time_goes() {
     assert!(row.contains("handler"), "{text}");
     assert!(text.contains("`onLinear` runs as a script: assigns a property of an object"), "{text}");
 }
+
+/// Every function of every corpus CIMCO post and field-style post runs as
+/// native IR: a change that sends one back to the Rhai tier fails here,
+/// naming the function and the reason `postc inspect` gives.
+#[test]
+fn no_corpus_cimco_function_is_a_script() {
+    let mut problems = Vec::new();
+    let posts = files(&corpus().join("posts/cimco"), "js").into_iter().chain(crate::support::cimco::style_posts());
+    for path in posts {
+        let mut sources = postc_report::source_map();
+        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        for f in post.functions.iter().filter(|f| matches!(f.body, Body::Script(_))) {
+            let why = f.why_script.as_ref().map_or("", |w| w.what.as_str());
+            problems.push(format!("{}: `{}` is a script: {why}", path.display(), f.name));
+        }
+        if !post.scripts.is_empty() {
+            problems.push(format!("{}: {} script(s) left", path.display(), post.scripts.len()));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
