@@ -18,8 +18,7 @@ fn check(js: &str, ron: &str, expected: &str) {
     let post = compile(&post_path).unwrap_or_else(|e| panic!("{e}"));
     let ours = post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(String::from_utf8_lossy(&ours), expected, "postc");
-    if node().is_none() {
-        eprintln!("cimco_fidelity: `node` is not installed; the Node.js referee is skipped");
+    if node_or_skip("cimco_fidelity").is_none() {
         return;
     }
     let jsonl = dir.path().join("job.jsonl");
@@ -338,7 +337,8 @@ function onOpen() {
 }
 function onLinear(x, y, z, m) { return ""; }
 "#;
-    let expected = "true,false,true,true,true,true,true,true,true,false,true,true,true,false,true,true,false,1,true,true,false\n";
+    let expected =
+        "true,false,true,true,true,true,true,true,true,false,true,true,true,false,true,true,false,1,true,true,false\n";
     check(js, ONE_MOVE, expected);
     // The same in the Rhai tier: an `isFinite` call keeps the post there.
     let scripted = format!("{js}function keepsScripts(t) {{ return isFinite(t); }}\n");

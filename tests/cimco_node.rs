@@ -2,7 +2,7 @@
 //! Node.js with the host in `tests/node_host/` (written from docs/cimco.md,
 //! sharing no code with postc) over the same toolpaths, exported as JSON
 //! Lines, and must print byte for byte what postc prints. Skipped, with a
-//! message, when `node` is not installed.
+//! message, when `node` is not installed; under `CI=true` that fails.
 //!
 //! `cargo bench --bench cimco_vs_node` measures both engines over a
 //! million-move toolpath (docs/performance.md).
@@ -16,10 +16,7 @@ use postc_ir::Post;
 
 #[test]
 fn node_prints_what_postc_prints() {
-    let Some(version) = node() else {
-        eprintln!("cimco_node: `node` is not installed; the Node.js referee is skipped");
-        return;
-    };
+    let Some(version) = node_or_skip("cimco_node") else { return };
     eprintln!("cimco_node: referee is Node.js {version}");
     let dir = tempfile::tempdir().expect("a temporary folder");
     let mut failures = Vec::new();
@@ -40,10 +37,9 @@ fn node_prints_what_postc_prints() {
 /// what postc prints for the source post.
 #[test]
 fn node_runs_converted_posts_as_postc_posts_their_sources() {
-    let Some(_) = node() else {
-        eprintln!("cimco_node: `node` is not installed; the Node.js referee is skipped");
+    if node_or_skip("cimco_node").is_none() {
         return;
-    };
+    }
     let dir = tempfile::tempdir().expect("a temporary folder");
     let mut failures = Vec::new();
     let mut runs = Vec::new();
@@ -108,10 +104,9 @@ fn referee(runs: &[(PathBuf, Post)], dir: &Path, failures: &mut Vec<String>) -> 
 /// text joins them (built in one buffer by the runtime).
 #[test]
 fn javascript_corners_print_as_node_prints() {
-    let Some(_) = node() else {
-        eprintln!("cimco_node: `node` is not installed; the Node.js referee is skipped");
+    if node_or_skip("cimco_node").is_none() {
         return;
-    };
+    }
     let dir = tempfile::tempdir().expect("a temporary folder");
     let post_path = dir.path().join("corners.js");
     std::fs::write(
