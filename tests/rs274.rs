@@ -15,7 +15,7 @@
 //! Besides the project's posts, the real wrapping posts with arc sections
 //! of `../shared/corpus/vectric` are checked when that corpus is there.
 //!
-//! `.ci/run` installs rs274; without it the test says it is skipped.
+//! `.ci/run` installs rs274; without it the test says it is skipped (and fails under `CI=true`).
 
 use std::path::{Path, PathBuf};
 
