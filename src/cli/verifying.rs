@@ -4,9 +4,9 @@
 //! Two tees on the posting thread feed one verify thread over one bounded
 //! channel: [`TeeSink`] hands it each chunk of program bytes the runtime
 //! writes (64 KiB at a time), [`TeeSource`] the toolpath events the post
-//! reads, cloned, in batches. The verify thread reads the bytes as a
-//! `BufRead` and the events as an `EventSource` and runs
-//! [`postc_verify::verify`] over them, so the toolpath is read once and the
+//! reads, as the few fields verify reads of them ([`Record`]), in batches. The verify thread reads the bytes as a
+//! `BufRead` and the records as a `RecordSource` and runs
+//! [`postc_verify::verify_records`] over them, so the toolpath is read once and the
 //! program never goes back to disk.
 //!
 //! One channel carries both, in the order they were produced (the events
@@ -32,6 +32,7 @@ use std::thread::JoinHandle;
 use postc_ir::post::TapeSplitting;
 use postc_ir::{Diagnostic, Event, EventSource, FileId, Span};
 use postc_runtime::output::{Finished, Sink};
+use postc_verify::expect::{Record, RecordSource};
 use postc_verify::{Report, Settings};
 
 /// Events sent at a time.
@@ -48,7 +49,7 @@ const STALL: usize = 64;
 
 enum Message {
     Bytes(Vec<u8>),
-    Events(Vec<(Event, Span)>),
+    Events(Vec<(Record, Span)>),
 }
 
 /// What the verify thread found.
@@ -68,7 +69,7 @@ pub enum Outcome {
 /// The posting thread's end of the channel, shared by the two tees.
 struct Tee {
     tx: Option<SyncSender<Message>>,
-    events: Vec<(Event, Span)>,
+    events: Vec<(Record, Span)>,
     /// Set by the verify thread when it reads no further (a foreign program).
     stop: Arc<AtomicBool>,
     /// The inner sink once the run finished.
@@ -223,7 +224,8 @@ impl Sink for TeeSink {
     }
 }
 
-/// The toolpath's events, each also sent (cloned) to the verify thread.
+/// The toolpath's events, each also sent to the verify thread as its
+/// [`Record`] (events verify does not read are not sent).
 pub struct TeeSource<'a> {
     inner: &'a mut dyn EventSource,
     tee: Rc<RefCell<Tee>>,
@@ -236,9 +238,11 @@ impl EventSource for TeeSource<'_> {
         if tee.tx.is_some() {
             match &next {
                 Some((event, span)) => {
-                    tee.events.push((event.clone(), *span));
-                    if tee.events.len() >= BATCH {
-                        tee.send_events();
+                    if let Some(record) = Record::of(event) {
+                        tee.events.push((record, *span));
+                        if tee.events.len() >= BATCH {
+                            tee.send_events();
+                        }
                     }
                 }
                 None => tee.send_events(),
@@ -252,7 +256,7 @@ impl EventSource for TeeSource<'_> {
 struct Demux {
     rx: Receiver<Message>,
     bytes: VecDeque<Vec<u8>>,
-    events: VecDeque<Vec<(Event, Span)>>,
+    events: VecDeque<Vec<(Record, Span)>>,
     ended: bool,
     /// The post stopped writing while events went on ([`STALL`]): bytes
     /// are no longer kept.
@@ -353,28 +357,24 @@ impl BufRead for Program {
     }
 }
 
-/// The toolpath's events as the verify thread reads them.
+/// The toolpath's records as the verify thread reads them.
 struct Events {
     demux: Rc<RefCell<Demux>>,
-    batch: std::vec::IntoIter<(Event, Span)>,
 }
 
-impl EventSource for Events {
-    fn next_event(&mut self, _diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+impl RecordSource for Events {
+    fn next_batch(&mut self, batch: &mut Vec<(Record, Span)>, _diagnostics: &mut Vec<Diagnostic>) -> bool {
+        let mut demux = self.demux.borrow_mut();
         loop {
-            if let Some(next) = self.batch.next() {
-                return Some(next);
+            match demux.events.pop_front() {
+                Some(next) if next.is_empty() => {}
+                Some(next) => {
+                    *batch = next;
+                    return true;
+                }
+                None if !demux.receive() => return false,
+                None => {}
             }
-            let mut demux = self.demux.borrow_mut();
-            let batch = loop {
-                if let Some(e) = demux.events.pop_front() {
-                    break Some(e);
-                }
-                if !demux.receive() {
-                    break None;
-                }
-            };
-            self.batch = batch?.into_iter();
         }
     }
 }
@@ -402,8 +402,8 @@ fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop:
         }
         return Outcome::Foreign(family);
     }
-    let mut events = Events { demux: Rc::clone(&demux), batch: Vec::new().into_iter() };
-    let report = postc_verify::verify(&mut program, file, &mut events, settings);
+    let mut events = Events { demux: Rc::clone(&demux) };
+    let report = postc_verify::verify_records(&mut program, file, &mut events, settings);
     // Whatever verify left unread (nothing, as it reads both to their end).
     while demux.borrow_mut().receive() {}
     if demux.borrow().stalled {

@@ -19,9 +19,9 @@ use postc_ir::codes;
 use std::io::BufRead;
 
 use postc_ir::event::{ArcDir, Intent, Plane};
-use postc_ir::{Diagnostic, EventSource, FileId, Severity, Span};
+use postc_ir::{Diagnostic, FileId, Severity, Span};
 
-use crate::expect::{Expected, ExpectedPath, Kind};
+use crate::expect::{Expected, ExpectedPath, Kind, RecordSource};
 use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
 use crate::grammar::{self, ItemKind, Items};
 use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
@@ -202,7 +202,7 @@ struct Run<'a> {
 pub fn run(
     program: &mut dyn BufRead,
     file: FileId,
-    toolpath: &mut dyn EventSource,
+    toolpath: &mut dyn RecordSource,
     settings: &Settings,
     observer: &mut dyn Observer,
 ) -> Report {
