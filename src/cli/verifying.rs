@@ -62,7 +62,8 @@ pub enum Outcome {
     /// [`STALL`] batches of events, after this many bytes of program:
     /// verification stopped there.
     Stalled { bytes: u64, events: usize },
-    /// The verification's report, and the program's bytes when it is at most [`HOLD`] long.
+    /// The verification's report, and the program's bytes when it is at
+    /// most [`HOLD`] long and verify found something (to show its lines).
     Verified { report: Report, held: Option<Vec<u8>> },
 }
 
@@ -284,10 +285,12 @@ struct Program {
     demux: Rc<RefCell<Demux>>,
     chunk: Vec<u8>,
     at: usize,
-    /// Bytes read so far.
+    /// Bytes received so far.
     read: u64,
-    /// The bytes so far while they are at most [`HOLD`].
-    held: Option<Vec<u8>>,
+    /// While the program is at most [`HOLD`] long: the chunks read before
+    /// `chunk` (kept as they came, not copied), so that they and `chunk`
+    /// are the program so far.
+    held: Option<Vec<Vec<u8>>>,
 }
 
 impl Program {
@@ -309,23 +312,24 @@ impl Program {
             }
         };
         self.read += chunk.len() as u64;
-        if let Some(held) = &mut self.held {
-            if held.len() + chunk.len() <= HOLD {
-                held.extend_from_slice(&chunk);
-            } else {
-                self.held = None;
-            }
+        if self.read > HOLD as u64 {
+            self.held = None;
         }
         Some(chunk)
+    }
+
+    /// The program so far, when it is held.
+    fn held(&mut self) -> Option<Vec<u8>> {
+        let mut held = self.held.take()?;
+        held.push(std::mem::take(&mut self.chunk));
+        Some(held.concat())
     }
 
     /// The next `n` bytes of the program (fewer at its end), not consumed.
     fn peek(&mut self, n: usize) -> &[u8] {
         while self.chunk.len() - self.at < n {
             let Some(next) = self.next_chunk() else { break };
-            self.chunk.drain(..self.at);
             self.chunk.extend_from_slice(&next);
-            self.at = 0;
         }
         let end = self.chunk.len().min(self.at + n);
         &self.chunk[self.at..end]
@@ -346,7 +350,10 @@ impl BufRead for Program {
     fn fill_buf(&mut self) -> io::Result<&[u8]> {
         while self.at >= self.chunk.len() {
             let Some(chunk) = self.next_chunk() else { return Ok(&[]) };
-            self.chunk = chunk;
+            let read = std::mem::replace(&mut self.chunk, chunk);
+            if let Some(held) = &mut self.held {
+                held.push(read);
+            }
             self.at = 0;
         }
         Ok(&self.chunk[self.at..])
@@ -409,5 +416,6 @@ fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop:
     if demux.borrow().stalled {
         return Outcome::Stalled { bytes: program.read, events: STALL * BATCH };
     }
-    Outcome::Verified { report, held: program.held.take() }
+    let held = if report.findings.is_empty() { None } else { program.held() };
+    Outcome::Verified { report, held }
 }

@@ -52,19 +52,47 @@ impl Expected {
 pub enum Record {
     /// The job's units, material box (min, max) and safe Z.
     Job(Box<JobRecord>),
-    Tool { cut_feed: f64, plunge_feed: f64, spindle_speed: f64, jet: bool },
+    Tool {
+        cut_feed: f64,
+        plunge_feed: f64,
+        spindle_speed: f64,
+        jet: bool,
+    },
     SpindleOn,
     SpindleOff,
     JetOn,
     JetOff,
     /// A rapid; `rotary`: it has A, B or C values.
-    Rapid { end: [f64; 3], rotary: bool },
-    Feed { end: [f64; 3], intent: Intent, feed: Option<f64>, rotary: bool },
-    Arc { end: [f64; 3], centre: [f64; 3], dir: ArcDir, plane: Plane, intent: Intent, feed: Option<f64> },
+    Rapid {
+        end: [f64; 3],
+        rotary: bool,
+    },
+    Feed {
+        end: [f64; 3],
+        intent: Intent,
+        feed: Option<f64>,
+        rotary: bool,
+    },
+    Arc {
+        end: [f64; 3],
+        centre: [f64; 3],
+        dir: ArcDir,
+        plane: Plane,
+        intent: Intent,
+        feed: Option<f64>,
+    },
     /// Text the toolpath asks to be written as it is.
     Insert(Box<str>),
-    DrillCycle { retract: f64, reference: f64, depth: f64, feed: Option<f64> },
-    DrillPoint { x: f64, y: f64 },
+    DrillCycle {
+        retract: f64,
+        reference: f64,
+        depth: f64,
+        feed: Option<f64>,
+    },
+    DrillPoint {
+        x: f64,
+        y: f64,
+    },
     DrillEnd,
 }
 
