@@ -266,19 +266,22 @@ impl<'a> ExpectedPath<'a> {
     }
 
     /// Reads events until the window holds `n` moves or the toolpath ends.
+    #[inline]
     pub fn fill(&mut self, n: usize) {
         let n = n.min(WINDOW);
+        if self.window.len() < n && !self.done {
+            self.read(n);
+        }
+    }
+
+    fn read(&mut self, n: usize) {
         while self.window.len() < n && !self.done {
-            if self.at < self.batch.len() {
-                // The batch is taken out while its records are read.
-                let batch = std::mem::take(&mut self.batch);
-                while self.window.len() < n
-                    && let Some((record, span)) = batch.get(self.at)
-                {
-                    self.at += 1;
-                    self.record(record, *span);
-                }
-                self.batch = batch;
+            if let Some((record, span)) = self.batch.get_mut(self.at) {
+                // Taken out of the batch, which is read once.
+                let record = std::mem::replace(record, Record::DrillEnd);
+                let span = *span;
+                self.at += 1;
+                self.record(&record, span);
                 continue;
             }
             self.at = 0;
