@@ -4,9 +4,9 @@
 //! Two tees on the posting thread feed one verify thread over one bounded
 //! channel: [`TeeSink`] hands it each chunk of program bytes the runtime
 //! writes (64 KiB at a time), [`TeeSource`] the toolpath events the post
-//! reads, cloned, in batches. The verify thread reads the bytes as a
-//! `BufRead` and the events as an `EventSource` and runs
-//! [`postc_verify::verify`] over them, so the toolpath is read once and the
+//! reads, as the few fields verify reads of them ([`Record`]), in batches. The verify thread reads the bytes as a
+//! `BufRead` and the records as a `RecordSource` and runs
+//! [`postc_verify::verify_records`] over them, so the toolpath is read once and the
 //! program never goes back to disk.
 //!
 //! One channel carries both, in the order they were produced (the events
@@ -32,6 +32,7 @@ use std::thread::JoinHandle;
 use postc_ir::post::TapeSplitting;
 use postc_ir::{Diagnostic, Event, EventSource, FileId, Span};
 use postc_runtime::output::{Finished, Sink};
+use postc_verify::expect::{Record, RecordSource};
 use postc_verify::{Report, Settings};
 
 /// Events sent at a time.
@@ -48,7 +49,7 @@ const STALL: usize = 64;
 
 enum Message {
     Bytes(Vec<u8>),
-    Events(Vec<(Event, Span)>),
+    Events(Vec<(Record, Span)>),
 }
 
 /// What the verify thread found.
@@ -61,14 +62,15 @@ pub enum Outcome {
     /// [`STALL`] batches of events, after this many bytes of program:
     /// verification stopped there.
     Stalled { bytes: u64, events: usize },
-    /// The verification's report, and the program's bytes when it is at most [`HOLD`] long.
+    /// The verification's report, and the program's bytes when it is at
+    /// most [`HOLD`] long and verify found something (to show its lines).
     Verified { report: Report, held: Option<Vec<u8>> },
 }
 
 /// The posting thread's end of the channel, shared by the two tees.
 struct Tee {
     tx: Option<SyncSender<Message>>,
-    events: Vec<(Event, Span)>,
+    events: Vec<(Record, Span)>,
     /// Set by the verify thread when it reads no further (a foreign program).
     stop: Arc<AtomicBool>,
     /// The inner sink once the run finished.
@@ -223,7 +225,8 @@ impl Sink for TeeSink {
     }
 }
 
-/// The toolpath's events, each also sent (cloned) to the verify thread.
+/// The toolpath's events, each also sent to the verify thread as its
+/// [`Record`] (events verify does not read are not sent).
 pub struct TeeSource<'a> {
     inner: &'a mut dyn EventSource,
     tee: Rc<RefCell<Tee>>,
@@ -236,9 +239,11 @@ impl EventSource for TeeSource<'_> {
         if tee.tx.is_some() {
             match &next {
                 Some((event, span)) => {
-                    tee.events.push((event.clone(), *span));
-                    if tee.events.len() >= BATCH {
-                        tee.send_events();
+                    if let Some(record) = Record::of(event) {
+                        tee.events.push((record, *span));
+                        if tee.events.len() >= BATCH {
+                            tee.send_events();
+                        }
                     }
                 }
                 None => tee.send_events(),
@@ -252,7 +257,7 @@ impl EventSource for TeeSource<'_> {
 struct Demux {
     rx: Receiver<Message>,
     bytes: VecDeque<Vec<u8>>,
-    events: VecDeque<Vec<(Event, Span)>>,
+    events: VecDeque<Vec<(Record, Span)>>,
     ended: bool,
     /// The post stopped writing while events went on ([`STALL`]): bytes
     /// are no longer kept.
@@ -280,10 +285,12 @@ struct Program {
     demux: Rc<RefCell<Demux>>,
     chunk: Vec<u8>,
     at: usize,
-    /// Bytes read so far.
+    /// Bytes received so far.
     read: u64,
-    /// The bytes so far while they are at most [`HOLD`].
-    held: Option<Vec<u8>>,
+    /// While the program is at most [`HOLD`] long: the chunks read before
+    /// `chunk` (kept as they came, not copied), so that they and `chunk`
+    /// are the program so far.
+    held: Option<Vec<Vec<u8>>>,
 }
 
 impl Program {
@@ -305,23 +312,24 @@ impl Program {
             }
         };
         self.read += chunk.len() as u64;
-        if let Some(held) = &mut self.held {
-            if held.len() + chunk.len() <= HOLD {
-                held.extend_from_slice(&chunk);
-            } else {
-                self.held = None;
-            }
+        if self.read > HOLD as u64 {
+            self.held = None;
         }
         Some(chunk)
+    }
+
+    /// The program so far, when it is held.
+    fn held(&mut self) -> Option<Vec<u8>> {
+        let mut held = self.held.take()?;
+        held.push(std::mem::take(&mut self.chunk));
+        Some(held.concat())
     }
 
     /// The next `n` bytes of the program (fewer at its end), not consumed.
     fn peek(&mut self, n: usize) -> &[u8] {
         while self.chunk.len() - self.at < n {
             let Some(next) = self.next_chunk() else { break };
-            self.chunk.drain(..self.at);
             self.chunk.extend_from_slice(&next);
-            self.at = 0;
         }
         let end = self.chunk.len().min(self.at + n);
         &self.chunk[self.at..end]
@@ -342,7 +350,10 @@ impl BufRead for Program {
     fn fill_buf(&mut self) -> io::Result<&[u8]> {
         while self.at >= self.chunk.len() {
             let Some(chunk) = self.next_chunk() else { return Ok(&[]) };
-            self.chunk = chunk;
+            let read = std::mem::replace(&mut self.chunk, chunk);
+            if let Some(held) = &mut self.held {
+                held.push(read);
+            }
             self.at = 0;
         }
         Ok(&self.chunk[self.at..])
@@ -353,28 +364,24 @@ impl BufRead for Program {
     }
 }
 
-/// The toolpath's events as the verify thread reads them.
+/// The toolpath's records as the verify thread reads them.
 struct Events {
     demux: Rc<RefCell<Demux>>,
-    batch: std::vec::IntoIter<(Event, Span)>,
 }
 
-impl EventSource for Events {
-    fn next_event(&mut self, _diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+impl RecordSource for Events {
+    fn next_batch(&mut self, batch: &mut Vec<(Record, Span)>, _diagnostics: &mut Vec<Diagnostic>) -> bool {
+        let mut demux = self.demux.borrow_mut();
         loop {
-            if let Some(next) = self.batch.next() {
-                return Some(next);
+            match demux.events.pop_front() {
+                Some(next) if next.is_empty() => {}
+                Some(next) => {
+                    *batch = next;
+                    return true;
+                }
+                None if !demux.receive() => return false,
+                None => {}
             }
-            let mut demux = self.demux.borrow_mut();
-            let batch = loop {
-                if let Some(e) = demux.events.pop_front() {
-                    break Some(e);
-                }
-                if !demux.receive() {
-                    break None;
-                }
-            };
-            self.batch = batch?.into_iter();
         }
     }
 }
@@ -402,12 +409,13 @@ fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop:
         }
         return Outcome::Foreign(family);
     }
-    let mut events = Events { demux: Rc::clone(&demux), batch: Vec::new().into_iter() };
-    let report = postc_verify::verify(&mut program, file, &mut events, settings);
+    let mut events = Events { demux: Rc::clone(&demux) };
+    let report = postc_verify::verify_records(&mut program, file, &mut events, settings);
     // Whatever verify left unread (nothing, as it reads both to their end).
     while demux.borrow_mut().receive() {}
     if demux.borrow().stalled {
         return Outcome::Stalled { bytes: program.read, events: STALL * BATCH };
     }
-    Outcome::Verified { report, held: program.held.take() }
+    let held = if report.findings.is_empty() { None } else { program.held() };
+    Outcome::Verified { report, held }
 }

@@ -3,8 +3,8 @@
 
 use std::collections::VecDeque;
 
-use postc_ir::event::{ArcDir, DrillCycle, Event, Intent, Plane};
-use postc_ir::{Diagnostic, EventSource, Span};
+use postc_ir::event::{ArcDir, Event, Intent, Plane};
+use postc_ir::{Diagnostic, EventSource, Span, Units};
 
 /// What kind of move the toolpath asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,6 +44,143 @@ impl Expected {
     }
 }
 
+/// What verify reads of a toolpath event: the events it reads, each with
+/// only the fields it uses, in the toolpath's units. A move is a few words
+/// and owns nothing, so a verification running beside the post is handed
+/// records ([`Record::of`]) instead of clones of the events.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Record {
+    /// The job's units, material box (min, max) and safe Z.
+    Job(Box<JobRecord>),
+    Tool {
+        cut_feed: f64,
+        plunge_feed: f64,
+        spindle_speed: f64,
+        jet: bool,
+    },
+    SpindleOn,
+    SpindleOff,
+    JetOn,
+    JetOff,
+    /// A rapid; `rotary`: it has A, B or C values.
+    Rapid {
+        end: [f64; 3],
+        rotary: bool,
+    },
+    Feed {
+        end: [f64; 3],
+        intent: Intent,
+        feed: Option<f64>,
+        rotary: bool,
+    },
+    Arc {
+        end: [f64; 3],
+        centre: [f64; 3],
+        dir: ArcDir,
+        plane: Plane,
+        intent: Intent,
+        feed: Option<f64>,
+    },
+    /// Text the toolpath asks to be written as it is.
+    Insert(Box<str>),
+    DrillCycle {
+        retract: f64,
+        reference: f64,
+        depth: f64,
+        feed: Option<f64>,
+    },
+    DrillPoint {
+        x: f64,
+        y: f64,
+    },
+    DrillEnd,
+}
+
+/// The job data of a [`Record::Job`], in the toolpath's units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JobRecord {
+    pub units: Units,
+    pub material: Option<([f64; 3], [f64; 3])>,
+    pub safe_z: Option<f64>,
+}
+
+impl Record {
+    /// The record of an event; `None` for the events verify does not read.
+    #[inline]
+    pub fn of(event: &Event) -> Option<Record> {
+        Some(match event {
+            Event::Rapid(m) => {
+                Record::Rapid { end: [m.x, m.y, m.z], rotary: m.a.is_some() || m.b.is_some() || m.c.is_some() }
+            }
+            Event::Feed(m) => Record::Feed {
+                end: [m.x, m.y, m.z],
+                intent: m.intent,
+                feed: m.feed,
+                rotary: m.a.is_some() || m.b.is_some() || m.c.is_some(),
+            },
+            Event::Arc(a) => Record::Arc {
+                end: [a.x, a.y, a.z],
+                centre: [a.cx, a.cy, a.cz],
+                dir: a.dir,
+                plane: a.plane,
+                intent: a.intent,
+                feed: a.feed,
+            },
+            Event::Job(job) => Record::Job(Box::new(JobRecord {
+                units: job.units,
+                material: job.material.as_ref().map(|m| ([m.min.x, m.min.y, m.min.z], [m.max.x, m.max.y, m.max.z])),
+                safe_z: job.safe_z,
+            })),
+            Event::Tool(t) => Record::Tool {
+                cut_feed: t.cut_feed,
+                plunge_feed: t.plunge_feed,
+                spindle_speed: t.spindle_speed,
+                jet: t.jet,
+            },
+            Event::SpindleOn(_) => Record::SpindleOn,
+            Event::SpindleOff => Record::SpindleOff,
+            Event::JetOn => Record::JetOn,
+            Event::JetOff => Record::JetOff,
+            Event::Insert(t) => Record::Insert(t.text.as_str().into()),
+            Event::DrillCycle(c) => Record::DrillCycle {
+                retract: c.retract_plane,
+                reference: c.reference_plane,
+                depth: c.depth,
+                feed: c.feed,
+            },
+            Event::DrillPoint(p) => Record::DrillPoint { x: p.x, y: p.y },
+            Event::DrillEnd => Record::DrillEnd,
+            _ => return None,
+        })
+    }
+}
+
+/// A toolpath as records, a batch at a time: [`Record::of`] each event of
+/// an [`EventSource`] ([`Records`]), or batches made where the events were
+/// read.
+pub trait RecordSource {
+    /// Replaces `batch` with the next records, each with the span of its
+    /// event, at least one; false at the end. Diagnostics of the
+    /// toolpath's reader go to `diagnostics`.
+    fn next_batch(&mut self, batch: &mut Vec<(Record, Span)>, diagnostics: &mut Vec<Diagnostic>) -> bool;
+}
+
+/// The records of an event source's events, read one at a time.
+pub struct Records<'a>(pub &'a mut dyn EventSource);
+
+impl RecordSource for Records<'_> {
+    fn next_batch(&mut self, batch: &mut Vec<(Record, Span)>, diagnostics: &mut Vec<Diagnostic>) -> bool {
+        batch.clear();
+        while let Some((event, span)) = self.0.next_event(diagnostics) {
+            if let Some(record) = Record::of(&event) {
+                batch.push((record, span));
+                return true;
+            }
+        }
+        false
+    }
+}
+
 /// The job data verify uses.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct JobData {
@@ -56,7 +193,10 @@ pub struct JobData {
 
 /// The expected path: a window over the toolpath's moves.
 pub struct ExpectedPath<'a> {
-    source: &'a mut dyn EventSource,
+    source: &'a mut dyn RecordSource,
+    /// The source's latest batch, read up to `at`.
+    batch: Vec<(Record, Span)>,
+    at: usize,
     window: VecDeque<Expected>,
     done: bool,
     factor: f64,
@@ -74,7 +214,8 @@ pub struct ExpectedPath<'a> {
     /// not start the spindle and a straight move down is fed as its intent
     /// says, not as a plunge.
     pub apt_words: bool,
-    cycle: Option<DrillCycle>,
+    /// The current drilling cycle: clearance, reference plane, depth and feed.
+    cycle: Option<(f64, f64, f64, Option<f64>)>,
     /// The lines of the toolpath's latest inserts (text it asks to be
     /// written as it is), not yet found in the program; at most [`INSERTS`].
     inserts: VecDeque<String>,
@@ -97,9 +238,11 @@ pub const WINDOW: usize = 512;
 const INSERTS: usize = 64;
 
 impl<'a> ExpectedPath<'a> {
-    pub fn new(source: &'a mut dyn EventSource) -> ExpectedPath<'a> {
+    pub fn new(source: &'a mut dyn RecordSource) -> ExpectedPath<'a> {
         ExpectedPath {
             source,
+            batch: Vec::new(),
+            at: 0,
             window: VecDeque::with_capacity(WINDOW),
             done: false,
             factor: 1.0,
@@ -123,19 +266,30 @@ impl<'a> ExpectedPath<'a> {
     }
 
     /// Reads events until the window holds `n` moves or the toolpath ends.
+    #[inline]
     pub fn fill(&mut self, n: usize) {
         let n = n.min(WINDOW);
+        if self.window.len() < n && !self.done {
+            self.read(n);
+        }
+    }
+
+    fn read(&mut self, n: usize) {
         while self.window.len() < n && !self.done {
-            self.scratch.clear();
-            let next = self.source.next_event(&mut self.scratch);
+            if let Some((record, span)) = self.batch.get_mut(self.at) {
+                // Taken out of the batch, which is read once.
+                let record = std::mem::replace(record, Record::DrillEnd);
+                let span = *span;
+                self.at += 1;
+                self.record(&record, span);
+                continue;
+            }
+            self.at = 0;
+            self.done = !self.source.next_batch(&mut self.batch, &mut self.scratch);
             for d in self.scratch.drain(..) {
                 if self.diagnostics.len() < 100 {
                     self.diagnostics.push(d);
                 }
-            }
-            match next {
-                Some((event, span)) => self.event(event, span),
-                None => self.done = true,
             }
         }
     }
@@ -229,54 +383,43 @@ impl<'a> ExpectedPath<'a> {
         })
     }
 
-    fn event(&mut self, event: Event, span: Span) {
+    fn record(&mut self, record: &Record, span: Span) {
         let f = self.factor;
         let nan = [f64::NAN; 3];
-        match event {
-            Event::Job(job) => {
+        match record {
+            Record::Job(job) => {
                 self.factor = job.units.mm_per_unit();
                 let f = self.factor;
-                self.job.material = job
-                    .material
-                    .map(|m| ([m.min.x * f, m.min.y * f, m.min.z * f], [m.max.x * f, m.max.y * f, m.max.z * f]));
+                self.job.material = job.material.map(|(min, max)| (min.map(|v| v * f), max.map(|v| v * f)));
                 self.job.safe_z = job.safe_z.map(|z| z * f);
             }
-            Event::Tool(tool) => {
-                self.cut_feed = tool.cut_feed * f;
-                self.plunge_feed = tool.plunge_feed * f;
-                self.jet_tool = tool.jet;
+            &Record::Tool { cut_feed, plunge_feed, spindle_speed, jet } => {
+                self.cut_feed = cut_feed * f;
+                self.plunge_feed = plunge_feed * f;
+                self.jet_tool = jet;
                 // The runtime starts a spindle tool's spindle after the header and
                 // each tool change, when the toolpath gives it a speed (section
                 // posts; an APT-word post is told by the toolpath's own records).
-                let speed = !tool.jet && tool.spindle_speed > 0.0;
+                let speed = !jet && spindle_speed > 0.0;
                 self.spindle = speed && !self.apt_words;
                 self.implied = speed && self.apt_words;
                 self.jet = false;
             }
-            Event::SpindleOn(_) => self.spindle = true,
-            Event::SpindleOff => {
+            Record::SpindleOn => self.spindle = true,
+            Record::SpindleOff => {
                 self.spindle = false;
                 self.implied = false;
             }
-            Event::JetOn => self.jet = true,
-            Event::JetOff => self.jet = false,
-            Event::Rapid(m) => {
-                self.job.rotary |= m.a.is_some() || m.b.is_some() || m.c.is_some();
-                self.push(
-                    Kind::Rapid,
-                    [m.x * f, m.y * f, m.z * f],
-                    nan,
-                    ArcDir::Cw,
-                    Plane::Xy,
-                    Intent::Cut,
-                    f64::NAN,
-                    span,
-                )
+            Record::JetOn => self.jet = true,
+            Record::JetOff => self.jet = false,
+            &Record::Rapid { end, rotary } => {
+                self.job.rotary |= rotary;
+                self.push(Kind::Rapid, end.map(|v| v * f), nan, ArcDir::Cw, Plane::Xy, Intent::Cut, f64::NAN, span)
             }
-            Event::Feed(m) => {
-                self.job.rotary |= m.a.is_some() || m.b.is_some() || m.c.is_some();
-                let mut intent = m.intent;
-                let end = [m.x * f, m.y * f, m.z * f];
+            &Record::Feed { end, intent, feed, rotary } => {
+                self.job.rotary |= rotary;
+                let mut intent = intent;
+                let end = end.map(|v| v * f);
                 if intent == Intent::Cut
                     && !self.apt_words
                     && (self.pos[0] - end[0]).abs() < 1e-9
@@ -289,36 +432,35 @@ impl<'a> ExpectedPath<'a> {
                         intent = Intent::Retract;
                     }
                 }
-                let feed = self.feed_for(intent, m.feed);
+                let feed = self.feed_for(intent, feed);
                 self.push(Kind::Feed, end, nan, ArcDir::Cw, Plane::Xy, intent, feed, span)
             }
-            Event::Arc(a) => {
-                let feed = self.feed_for(a.intent, a.feed);
-                let end = [a.x * f, a.y * f, a.z * f];
-                let centre = [a.cx * f, a.cy * f, a.cz * f];
-                self.push(Kind::Arc, end, centre, a.dir, a.plane, a.intent, feed, span)
+            &Record::Arc { end, centre, dir, plane, intent, feed } => {
+                let feed = self.feed_for(intent, feed);
+                self.push(Kind::Arc, end.map(|v| v * f), centre.map(|v| v * f), dir, plane, intent, feed, span)
             }
-            Event::Insert(t) => {
-                for line in t.text.lines().map(str::trim).filter(|l| !l.is_empty()) {
+            Record::Insert(text) => {
+                for line in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
                     if self.inserts.len() == INSERTS {
                         self.inserts.pop_front();
                     }
                     self.inserts.push_back(line.to_string());
                 }
             }
-            Event::DrillCycle(c) => self.cycle = Some(c),
-            Event::DrillEnd => self.cycle = None,
-            Event::DrillPoint(p) => {
-                let Some(c) = self.cycle.clone() else { return };
-                let (x, y) = (p.x * f, p.y * f);
-                let (clear, reference, depth) = (c.retract_plane * f, c.reference_plane * f, c.depth * f);
-                let feed = c.feed.map_or(self.plunge_feed, |v| v * f);
+            &Record::DrillCycle { retract, reference, depth, feed } => {
+                self.cycle = Some((retract, reference, depth, feed))
+            }
+            Record::DrillEnd => self.cycle = None,
+            &Record::DrillPoint { x, y } => {
+                let Some((retract, reference, depth, feed)) = self.cycle else { return };
+                let (x, y) = (x * f, y * f);
+                let (clear, reference, depth) = (retract * f, reference * f, depth * f);
+                let feed = feed.map_or(self.plunge_feed, |v| v * f);
                 self.push(Kind::Rapid, [x, y, clear], nan, ArcDir::Cw, Plane::Xy, Intent::Cut, f64::NAN, span);
                 self.push(Kind::Rapid, [x, y, reference], nan, ArcDir::Cw, Plane::Xy, Intent::Cut, f64::NAN, span);
                 self.push(Kind::Feed, [x, y, depth], nan, ArcDir::Cw, Plane::Xy, Intent::Plunge, feed, span);
                 self.push(Kind::Rapid, [x, y, clear], nan, ArcDir::Cw, Plane::Xy, Intent::Cut, f64::NAN, span);
             }
-            _ => {}
         }
     }
 }

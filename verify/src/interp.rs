@@ -19,9 +19,9 @@ use postc_ir::codes;
 use std::io::BufRead;
 
 use postc_ir::event::{ArcDir, Intent, Plane};
-use postc_ir::{Diagnostic, EventSource, FileId, Severity, Span};
+use postc_ir::{Diagnostic, FileId, Severity, Span};
 
-use crate::expect::{Expected, ExpectedPath, Kind};
+use crate::expect::{Expected, ExpectedPath, Kind, RecordSource};
 use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
 use crate::grammar::{self, ItemKind, Items};
 use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
@@ -96,6 +96,8 @@ struct Block {
     gs: usize,
     m: [(f64, u32, u32); MAX_CODES],
     ms: usize,
+    /// The most decimals of its X, Y and Z words ([`words_line`] only).
+    decimals: Option<u8>,
 }
 
 impl Default for Block {
@@ -108,6 +110,7 @@ impl Default for Block {
             gs: 0,
             m: [(0.0, 0, 0); MAX_CODES],
             ms: 0,
+            decimals: None,
         }
     }
 }
@@ -125,6 +128,11 @@ impl Block {
 
     fn get(&self, letter: u8) -> Option<Word> {
         self.has(letter).then(|| self.letters[(letter - b'A') as usize])
+    }
+
+    /// Whether the block has a word of any of `letters`.
+    fn any(&self, letters: &[u8]) -> bool {
+        self.present & letters.iter().fold(0, |mask, l| mask | 1 << (l - b'A')) != 0
     }
 
     fn set(&mut self, letter: u8, word: Word) {
@@ -197,14 +205,29 @@ struct Run<'a> {
     syntax_errors: u32,
     /// The tolerance ([`Run::tol`]) for the `units_key` it was computed at.
     tol: (f64, (f64, Option<u8>)),
+    /// Lines of words only are read by [`words_line`] (the tests turn it
+    /// off to hold it to the general path).
+    fast: bool,
 }
 
 pub fn run(
     program: &mut dyn BufRead,
     file: FileId,
-    toolpath: &mut dyn EventSource,
+    toolpath: &mut dyn RecordSource,
     settings: &Settings,
     observer: &mut dyn Observer,
+) -> Report {
+    replay(program, file, toolpath, settings, observer, true)
+}
+
+/// [`run`]; `fast`: lines of words only are read by [`words_line`].
+fn replay(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn RecordSource,
+    settings: &Settings,
+    observer: &mut dyn Observer,
+    fast: bool,
 ) -> Report {
     let mut run = Run {
         settings,
@@ -249,6 +272,7 @@ pub fn run(
         stop_comparing: false,
         syntax_errors: 0,
         tol: (f64::NAN, (f64::NAN, None)),
+        fast,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -268,6 +292,19 @@ pub fn run(
         };
         if avail.is_empty() {
             break;
+        }
+        // The lines of words only the buffer holds, one after the other.
+        let mut used = 0;
+        while run.fast
+            && !run.stopped
+            && let Some(i) = words_line(&avail[used..], &mut block, run.settings.controller.word_digits())
+        {
+            run.words(&avail[used..used + i], i + 1, &block);
+            used += i + 1;
+        }
+        if used > 0 {
+            program.consume(used);
+            continue;
         }
         if let Some(i) = memchr::arch::all::memchr::One::new(b'\n').find(avail).filter(|&i| i < MAX_LINE) {
             run.one_line(&avail[..i], i + 1, false, &mut items, &mut block);
@@ -295,6 +332,67 @@ pub fn run(
     stats.inch = run.unit > 1.0;
     let Run { findings, at, lines, errors, warnings, .. } = run;
     Report { findings, at, lines, errors, warnings, stats }
+}
+
+/// Reads a line of words only (each a letter, blanks and a number, with
+/// blanks between them) from the start of `bytes` up to its `\n` into
+/// `block`: the words [`grammar::parse_plain`] reads from such a line, put
+/// in the block as [`Run::line`] puts them. The index of the `\n`; `None`
+/// when the line holds anything else (a comment, `%`, `/`, bytes that are
+/// not words), ends past `bytes` or [`MAX_LINE`], or has a word that gives
+/// a finding in [`Run::line`] or a message (an M word, a second word of
+/// one letter but G, a letter verify does not know, more digits than
+/// `digits` when the controller has that limit): the general path reads
+/// those lines.
+fn words_line(bytes: &[u8], block: &mut Block, digits: Option<usize>) -> Option<usize> {
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
+    let bytes = &bytes[..bytes.len().min(MAX_LINE)];
+    block.clear();
+    block.decimals = None;
+    let mut i = 0;
+    loop {
+        let b = *bytes.get(i)?;
+        if blank(b) {
+            i += 1;
+            continue;
+        }
+        if b == b'\n' {
+            return Some(i);
+        }
+        let letter = b.to_ascii_uppercase();
+        if !letter.is_ascii_uppercase() || letter == b'M' {
+            return None;
+        }
+        let start = i;
+        i += 1;
+        while bytes.get(i).is_some_and(|&b| blank(b)) {
+            i += 1;
+        }
+        let (n, value, decimals) = grammar::scan_number(&bytes[i..])?;
+        i += n;
+        if let Some(limit) = digits
+            && i - start > limit + 1
+            && bytes[start..i].iter().filter(|b| b.is_ascii_digit()).count() > limit
+        {
+            return None;
+        }
+        let (start, end) = (start as u32, i as u32);
+        if letter == b'G' {
+            if block.gs < MAX_CODES {
+                block.g[block.gs] = (value, start, end);
+                block.gs += 1;
+            }
+            continue;
+        }
+        let bit = 1 << (letter - b'A');
+        if block.present & bit != 0 || KNOWN_LETTERS & bit == 0 {
+            return None;
+        }
+        block.set(letter, Word { value, decimals, start, end });
+        if matches!(letter, b'X' | b'Y' | b'Z') {
+            block.decimals = Some(block.decimals.map_or(decimals, |d| d.max(decimals)));
+        }
+    }
 }
 
 /// Reads one line (up to and with its `\n`) into `buf`, keeping at most
@@ -470,6 +568,28 @@ impl Run<'_> {
             return;
         }
         self.line(line, items, block, plain);
+    }
+
+    /// A line of words only, read into `block` by [`words_line`]: what
+    /// [`Run::one_line`] and [`Run::line`] do with such a line, which has no
+    /// comment, no NUL byte and no M word (so no message), one word of each
+    /// letter but G, only letters verify knows, and no word longer than the
+    /// controller reads (so the words give no finding of their own).
+    fn words(&mut self, line: &[u8], consumed: usize, block: &Block) {
+        self.line_start = self.offset;
+        self.offset += consumed;
+        self.stats.lines += 1;
+        self.line_bytes = line.len();
+        let mut text = line;
+        while let [rest @ .., b'\r'] = text {
+            text = rest;
+        }
+        self.line_len = text.len();
+        if let Some(d) = block.decimals {
+            self.max_decimals = Some(self.max_decimals.map_or(d, |m| m.max(d)));
+        }
+        self.block_length(text);
+        self.execute_block(block);
     }
 
     // ----- tolerances -----
@@ -654,12 +774,16 @@ impl Run<'_> {
     }
 
     /// A block longer than the controller reads (VF043).
+    #[inline]
     fn block_length(&mut self, text: &[u8]) {
         let Some((limit, all_count)) = self.settings.controller.block_length() else { return };
         let bytes = if all_count { self.line_bytes.max(text.len()) } else { text.len() };
-        if bytes <= limit {
-            return;
+        if bytes > limit {
+            self.long_block(text, limit, all_count, bytes);
         }
+    }
+
+    fn long_block(&mut self, text: &[u8], limit: usize, all_count: bool, bytes: usize) {
         let length = if all_count { bytes } else { counted_length(text) };
         if length > limit {
             let name = self.settings.controller.name();
@@ -762,7 +886,7 @@ impl Run<'_> {
         let mut machine = false;
         let mut dwell = false;
         for &(code, start, end) in &b.g[..b.gs] {
-            let tenths = (code * 10.0).round() as u32;
+            let tenths = tenths(code);
             match tenths {
                 0 | 10 | 20 | 30 | 810..=890 | 730 | 740 | 760 => {
                     let cycle = |m: u32| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760);
@@ -847,7 +971,7 @@ impl Run<'_> {
             self.feed_step = 1.0 / grammar::pow10(u32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
         for &(code, start, end) in &b.m[..b.ms] {
-            match (code * 10.0).round() as u32 {
+            match tenths(code) {
                 30 | 40 | 130 | 140 | 1060 | 620 | 640 => {
                     if !self.spindle {
                         self.spindle_reported = false;
@@ -871,11 +995,11 @@ impl Run<'_> {
         if dwell {
             return; // G4, G10 and G92 read the block's axis words as their own arguments
         }
-        let any_axis = b.get(b'X').is_some() || b.get(b'Y').is_some() || b.get(b'Z').is_some();
+        let any_axis = b.any(b"XYZ");
         if home {
             // G28/G30 (through the given point to a home position) and G38.x
             // probes end where verify cannot know.
-            let axes_given = [b'X', b'Y', b'Z'].map(|l| b.get(l).is_some());
+            let axes_given = [b'X', b'Y', b'Z'].map(|l| b.has(l));
             for (i, given) in axes_given.iter().enumerate() {
                 if *given || !any_axis {
                     self.pos[i] = f64::NAN;
@@ -886,13 +1010,13 @@ impl Run<'_> {
         if machine {
             // G53: machine coordinates; the work position is unknown on those axes.
             for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
-                if b.get(*l).is_some() {
+                if b.has(*l) {
                     self.pos[i] = f64::NAN;
                 }
             }
             return;
         }
-        let has_ijkr = [b'I', b'J', b'K', b'R'].iter().any(|l| b.get(*l).is_some());
+        let has_ijkr = b.any(b"IJKR");
         if !(any_axis || has_ijkr && matches!(self.motion, Some(20 | 30))) {
             return;
         }
@@ -1243,6 +1367,17 @@ impl Run<'_> {
             && dist(e.start, e.end) <= 1e-9
         {
             self.skip();
+        }
+        // Most moves end where the next expected move does (the loop's first
+        // turn, without copying the expected move twice).
+        if !flat
+            && self.path.get(0).is_some_and(|e| dist(p.end, e.end) <= tol)
+            && let Some(e) = self.path.pop()
+        {
+            self.stats.matched += 1;
+            self.made(&p, &e, tol);
+            self.progress = 0.0;
+            return;
         }
         let mut k = 0;
         while let Some(e) = self.expected(k, flat) {
@@ -1741,6 +1876,209 @@ fn stop_with_message(prefix: &[u8]) -> Option<usize> {
     })
 }
 
+/// A G or M code in tenths (`G91.1` is 911), as `(code * 10.0).round() as
+/// u32` gives it; a whole number of tenths (every code a post prints)
+/// without the library's rounding call.
+#[inline]
+fn tenths(code: f64) -> u32 {
+    let t = code * 10.0;
+    if (t as i64) as f64 == t { t as u32 } else { t.round() as u32 }
+}
+
 fn format_code(code: f64) -> String {
     if code.fract().abs() < 1e-9 { format!("{}", code as i64) } else { format!("{code}") }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expect::Record;
+    use postc_ir::Units;
+    use proptest::prelude::*;
+
+    /// A toolpath handed over at once.
+    struct Path(Vec<(Record, Span)>);
+
+    impl RecordSource for Path {
+        fn next_batch(&mut self, batch: &mut Vec<(Record, Span)>, _: &mut Vec<Diagnostic>) -> bool {
+            *batch = std::mem::take(&mut self.0);
+            !batch.is_empty()
+        }
+    }
+
+    /// Every move replayed, as text.
+    struct Moves(Vec<String>);
+
+    impl Observer for Moves {
+        fn motion(&mut self, m: &Move) {
+            self.0.push(format!("{m:?}"));
+        }
+    }
+
+    /// Everything a verification gives: its report and the moves replayed.
+    fn replayed(program: &str, settings: &Settings, fast: bool) -> String {
+        let span = Span::new(FileId(1), 0, 1);
+        let moves = [[0.0, 0.0, 5.0], [10.0, 0.0, 5.0], [10.0, 0.0, -1.0], [10.0, 20.0, -1.0], [0.5, 20.0, -1.0]];
+        let mut records = vec![
+            (
+                Record::Job(Box::new(crate::expect::JobRecord {
+                    units: Units::Mm,
+                    material: Some(([0.0, 0.0, -20.0], [300.0, 200.0, 0.0])),
+                    safe_z: Some(5.0),
+                })),
+                span,
+            ),
+            (Record::Tool { cut_feed: 1500.0, plunge_feed: 500.0, spindle_speed: 18000.0, jet: false }, span),
+            (Record::Rapid { end: moves[0], rotary: false }, span),
+        ];
+        for end in &moves[1..] {
+            records.push((Record::Feed { end: *end, intent: Intent::Cut, feed: None, rotary: false }, span));
+        }
+        records.push((
+            Record::Arc {
+                end: [0.5, 21.0, -1.0],
+                centre: [0.5, 20.5, -1.0],
+                dir: ArcDir::Cw,
+                plane: Plane::Xy,
+                intent: Intent::Cut,
+                feed: None,
+            },
+            span,
+        ));
+        let mut moves = Moves(Vec::new());
+        let mut reader = std::io::Cursor::new(program.as_bytes());
+        let r = replay(&mut reader, FileId(0), &mut Path(records), settings, &mut moves, fast);
+        format!(
+            "{:?}\n{:?}\n{:?}\n{} {} {:?}\n{:#?}",
+            r.findings, r.at, r.lines, r.errors, r.warnings, r.stats, moves.0
+        )
+    }
+
+    /// Program lines: mostly words as posts print them (the letters verify
+    /// reads, G and M codes, now and then a letter it does not know or a
+    /// word twice), blanks, and now and then a comment or bytes only the
+    /// general path reads.
+    fn line() -> impl Strategy<Value = String> {
+        let letter = prop_oneof![
+            8 => proptest::sample::select(b"GXYZFIJKRN".to_vec()),
+            2 => proptest::sample::select(b"MSTPQLHDOUVWABCE".to_vec()),
+            1 => proptest::sample::select(b"gxyzfmqe".to_vec()),
+        ];
+        let code = prop_oneof![
+            4 => proptest::sample::select(vec!["0", "1", "2", "3", "01", "00"]),
+            1 => proptest::sample::select(vec!["17", "18", "20", "21", "90", "91", "81", "80", "28", "53", "4", "6", "117", "117,5", "5", "99"]),
+        ]
+        .prop_map(String::from);
+        let number = (any::<bool>(), 0u64..3_000_000_000, 0usize..5, any::<bool>()).prop_map(|(neg, m, d, comma)| {
+            let digits = m.to_string();
+            let sign = if neg { "-" } else { "" };
+            match d {
+                0 => format!("{sign}{digits}"),
+                _ if d >= digits.len() => format!("{sign}.{digits}"),
+                _ => {
+                    let (a, b) = digits.split_at(digits.len() - d);
+                    format!("{sign}{a}{}{b}", if comma { ',' } else { '.' })
+                }
+            }
+        });
+        let word = (letter, " {0,1}", prop_oneof![2 => code, 3 => number.clone()])
+            .prop_map(|(l, b, n)| format!("{}{b}{n}", l as char));
+        // Words of distinct letters with blanks between: lines of words only,
+        // long enough for the controllers' block limits.
+        let long = proptest::sample::subsequence(b"NGXYZIJKFRS".to_vec(), 1..11)
+            .prop_flat_map(move |letters| {
+                let n = letters.len();
+                (Just(letters), proptest::collection::vec((number.clone(), " {0,25}"), n))
+            })
+            .prop_map(|(letters, words)| {
+                letters.iter().zip(words).map(|(l, (n, b))| format!("{}{n}{b}", *l as char)).collect::<String>()
+            });
+        let piece = prop_oneof![
+            12 => word,
+            3 => " {1,2}|\\t|\\r".prop_map(String::from),
+            1 => "\\([ -~]{0,6}\\)".prop_map(String::from),
+            1 => "[%/:;#\\x00]".prop_map(String::from),
+        ];
+        // Now and then a line longer than grbl's and LinuxCNC's limits.
+        prop_oneof![8 => proptest::collection::vec(piece, 0..7).prop_map(|p| p.concat()), 1 => long]
+    }
+
+    /// The program that makes the test's toolpath, line by line.
+    const MAKES: [&str; 9] = [
+        "G21 G90 G17",
+        "M3 S18000",
+        "G0 X0 Y0 Z5",
+        "G1 X10.0004 F1500",
+        "G1 Z-1 F500",
+        "N20 G1 Y20. F1500.",
+        "g1 x0.500",
+        "G2 X0.5 Y21 I0 J0.5",
+        "G0 Z5",
+    ];
+
+    /// A program: the lines that make the toolpath, in order, with other
+    /// lines among them.
+    fn program() -> impl Strategy<Value = String> {
+        proptest::collection::vec(prop_oneof![1 => line().prop_map(Some), 1 => Just(None)], 0..30).prop_map(|lines| {
+            let mut makes = MAKES.iter();
+            let mut text = String::new();
+            for line in lines {
+                text += line.as_deref().or_else(|| makes.next().copied()).unwrap_or("");
+                text.push('\n');
+            }
+            text
+        })
+    }
+
+    fn controller() -> impl Strategy<Value = Controller> {
+        proptest::sample::select(vec![Controller::Generic, Controller::Fanuc, Controller::Grbl, Controller::LinuxCnc])
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+        /// Lines of words read by the fast path replay as the general path
+        /// replays them: the same findings, where and on which line, the
+        /// same counts and the same moves.
+        #[test]
+        fn the_words_fast_path_replays_as_the_general_path(
+            program in program(),
+            controller in controller(),
+            units in any::<bool>(),
+            numbered in any::<bool>(),
+            fine in any::<bool>(),
+        ) {
+            // A fine tolerance makes the program's own rounding count (the most decimals of its X Y Z words).
+            let tolerance = if fine { 0.0001 } else { 0.01 };
+            let mut settings = Settings { controller, tolerance, ..Settings::default() };
+            if units {
+                settings.units = Some(Units::Mm);
+                settings.decimals = Some(3);
+            }
+            if numbered {
+                settings.block_start = Some(10.0);
+                settings.block_maximum = Some(9999.0);
+            }
+            prop_assert_eq!(replayed(&program, &settings, true), replayed(&program, &settings, false), "{:?}", program);
+        }
+    }
+
+    #[test]
+    fn tenths_round_as_the_library_does() {
+        for code in [0.0, 1.0, 2.0, 91.1, 38.25, 38.35, 0.04, 0.05, -0.05, -1.0, 1e30, -1e30, f64::NAN, 4e8, 4.3e8] {
+            assert_eq!(tenths(code), (code * 10.0).round() as u32, "{code}");
+        }
+    }
+
+    #[test]
+    fn lines_of_words_take_the_fast_path() {
+        let mut block = Block::default();
+        for line in ["G1 X-1.5 Y2. Z.25 F1200\n", "G0X1Y2\r\n", "x 1.0 g2 i.5 j0\n", "\n", "N10 G90 G17 G21\n"] {
+            assert_eq!(words_line(line.as_bytes(), &mut block, None), Some(line.len() - 1), "{line:?}");
+        }
+        for line in ["G1 X1 (cut)\n", "M3 S1000\n", "G1 X1 X2\n", "G1 E5\n", "G1 X1", "/G0 X1\n", "G1 X\n"] {
+            assert_eq!(words_line(line.as_bytes(), &mut block, None), None, "{line:?}");
+        }
+        assert_eq!(words_line(b"G1 X123456789\n", &mut block, Some(8)), None);
+        assert_eq!(words_line(b"G1 X12345.678\n", &mut block, Some(8)), Some(13));
+    }
 }

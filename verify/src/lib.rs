@@ -375,6 +375,16 @@ pub const MAX_SHOWN: usize = 20;
 /// Verifies a program (read from `program`, its spans in `file`) against
 /// the toolpath it was posted from.
 pub fn verify(program: &mut dyn BufRead, file: FileId, toolpath: &mut dyn EventSource, settings: &Settings) -> Report {
+    interp::run(program, file, &mut expect::Records(toolpath), settings, &mut ())
+}
+
+/// [`verify`] against a toolpath given as [`expect::Record`]s.
+pub fn verify_records(
+    program: &mut dyn BufRead,
+    file: FileId,
+    toolpath: &mut dyn expect::RecordSource,
+    settings: &Settings,
+) -> Report {
     interp::run(program, file, toolpath, settings, &mut ())
 }
 
@@ -413,7 +423,7 @@ pub fn verify_observed(
     settings: &Settings,
     observer: &mut dyn Observer,
 ) -> Report {
-    interp::run(program, file, toolpath, settings, observer)
+    interp::run(program, file, &mut expect::Records(toolpath), settings, observer)
 }
 
 #[cfg(test)]

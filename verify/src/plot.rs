@@ -20,7 +20,7 @@ use std::io::BufRead;
 
 use postc_ir::{EventSource, FileId, Severity, SourceMap};
 
-use crate::expect::{Expected, ExpectedPath, Kind};
+use crate::expect::{Expected, ExpectedPath, Kind, Records};
 use crate::geometry::{Arc, axes};
 use crate::{Move, Observer, Report, Settings};
 
@@ -37,7 +37,8 @@ pub fn draw(
     sources: &SourceMap,
 ) -> (Plot, Report) {
     let mut plot = Plot::new();
-    let mut path = ExpectedPath::new(toolpath);
+    let mut records = Records(toolpath);
+    let mut path = ExpectedPath::new(&mut records);
     path.apt_words = settings.apt_words;
     path.start();
     while let Some(e) = path.pop() {
