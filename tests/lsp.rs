@@ -344,6 +344,17 @@ fn a_bad_frame_is_answered_and_the_server_goes_on() {
     // last header on the line is read (the mutation fuzzer's case, seed 7).
     raw(&mut c, b"Content-Length: 1cument/hover\"}}Content-Length: 11\r\n\r\n{\"id\": [1]}");
     assert_eq!(c.recv()["error"]["code"], -32600);
+    // A frame with no body at all before the next frame: its length
+    // takes the next frame, which starts its body: the frame is answered
+    // as not JSON and the frames after it are read again (the mutation
+    // fuzzer's case, seed 20261129).
+    raw(
+        &mut c,
+        b"Content-Length: 40\r\n\r\nContent-Length: 11\r\n\r\n{\"id\": [1]}Content-Length: 11\r\n\r\n{\"id\": [2]}",
+    );
+    assert_eq!(c.recv()["error"]["code"], -32700);
+    assert_eq!(c.recv()["error"]["code"], -32600);
+    assert_eq!(c.recv()["error"]["code"], -32600);
     // The server still serves.
     let hover = c.at("textDocument/hover", "file:///nothing.pp", 0, 0);
     assert!(hover.is_null() || hover.is_object(), "{hover}");

@@ -143,12 +143,14 @@ impl<R: BufRead> Resync<R> {
     }
 }
 
-/// Where a frame header starts inside `body`, past its first byte: the
-/// whole `Content-Length:`, or at the end of the body the start of it (a
-/// length that took the first bytes of the next frame).
+/// Where a frame header starts inside `body`: the whole `Content-Length:`,
+/// or at the end of the body the start of it (a length that took the first
+/// bytes of the next frame). At the body's first byte too: a frame sent
+/// with no body has the next frame for one. Reading again from there ends:
+/// the frame's own header is read.
 fn header_inside(body: &[u8]) -> Option<usize> {
     const HEADER: &[u8] = b"content-length:";
-    (1..body.len()).find(|&i| {
+    (0..body.len()).find(|&i| {
         let n = body[i..].len().min(HEADER.len());
         body[i..i + n].eq_ignore_ascii_case(&HEADER[..n])
     })
