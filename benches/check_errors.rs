@@ -1,4 +1,4 @@
-//! `postc check` over a CL file with many bad records (issue 14, fault 9):
+//! `postc check` over a CL file with many bad records:
 //! reading it, and giving every diagnostic its line and column as
 //! `check --format json` does. Each diagnostic must cost the same wherever
 //! it is in the file, so the time per MB is the same at both sizes.

@@ -295,3 +295,33 @@ fn readers_and_post_dialects_are_apart() {
         assert!(!deps.iter().any(|d| d.starts_with("postc-reader")), "{dialect} depends on a reader: {deps:?}");
     }
 }
+
+/// Comments describe the present: no Rust comment cites an issue number,
+/// a seed file by its number or a numbered BRIEF decision (the seeds are
+/// named by their titles; history lives in git).
+#[test]
+fn comments_cite_no_issue_seed_number_or_numbered_decision() {
+    let mut found = Vec::new();
+    for folder in
+        ["src", "ir", "runtime", "frontends", "backends", "readers", "verify", "lint", "lsp", "tests", "benches"]
+    {
+        if !Path::new(env!("CARGO_MANIFEST_DIR")).join(folder).is_dir() {
+            continue;
+        }
+        for (path, text) in sources(folder) {
+            for (i, line) in text.lines().enumerate() {
+                let Some(at) = line.find("//") else { continue };
+                let comment = line[at..].to_ascii_lowercase();
+                let cites = |word: &str| {
+                    comment
+                        .match_indices(word)
+                        .any(|(j, _)| comment[j + word.len()..].chars().next().is_some_and(|c| c.is_ascii_digit()))
+                };
+                if cites("issue ") || cites("seed 00") || cites("brief decision ") {
+                    found.push(format!("{path}:{}: {}", i + 1, line.trim()));
+                }
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}

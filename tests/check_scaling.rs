@@ -1,5 +1,5 @@
 //! `postc check` costs the same per diagnostic wherever it is in the file:
-//! a CL file of many bad records checks in linear time (issue 14, fault 9).
+//! a CL file of many bad records checks in linear time.
 //! Each diagnostic's line and column come from a line index built once per
 //! file, not from reading the file again from its start.
 

@@ -1,4 +1,4 @@
-//! Issue 14, CIMCO fidelity: modal memory for the whole program and
+//! CIMCO fidelity: modal memory for the whole program and
 //! `reset()`, feeds per revolution, the drill header's reference plane,
 //! `finally`, NaN in native code, and number-to-text as a JavaScript
 //! engine does it. Each case runs under postc and, when `node` is
@@ -42,7 +42,7 @@ Feed(x: 50, y: 40, z: 5)
 End
 ";
 
-/// Seed 002: a variable without force "will only be written if it has
+/// The CNC-Calc Post Processor Manual: a variable without force "will only be written if it has
 /// changed since the last time it was used" -- a toolpath start does not
 /// make it forget; `reset()` (here in `onToolChange`) does.
 #[test]
@@ -120,7 +120,7 @@ DrillEnd
 End
 ";
 
-/// The drill header's referencePlane is the top of the hole (seed 002:
+/// The drill header's referencePlane is the top of the hole (the CNC-Calc Post Processor Manual:
 /// safe distance and end depth "are relative to this plane"), so a
 /// set-up clearance (Heidenhain Q200 = safe distance - reference plane)
 /// is the real one, not 0.

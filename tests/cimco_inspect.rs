@@ -1,5 +1,5 @@
 //! `postc inspect` says, for every CIMCO function that runs as a script,
-//! why (issue 13): the construct with no native form and where it is.
+//! why: the construct with no native form and where it is.
 //! The functions every move goes through (`onLinear`, `onCircular`,
 //! `onRapid` and everything they call) are native in every corpus post.
 
@@ -9,7 +9,7 @@ use postc_ir::{Body, Expr, Function, Post};
 use crate::support::{corpus, files};
 
 /// Move handlers (and functions they call) of corpus posts that still run
-/// as scripts. Since issue 13 the field-style posts' variadic
+/// as scripts. The field-style posts' variadic
 /// `writeBlock(a, b, c)` is native, one form per number of arguments, and
 /// so are arrays kept in slots (indexed, handed to `writeBlock.apply` with
 /// a length the lowering follows, arrays of objects returned in an

@@ -1,5 +1,5 @@
-//! The JavaScript that field posts are written in lowers to native IR
-//! (issue 13), and posts what Node.js posts: variadic functions and
+//! The JavaScript that field posts are written in lowers to native IR,
+//! and posts what Node.js posts: variadic functions and
 //! `arguments`, `f.apply`, arrays gathered with `push` and joined,
 //! object-literal tables, `switch` with fallthrough, `for ... in` over a
 //! table, `do ... while`, `substring`. Each construct has a post where the

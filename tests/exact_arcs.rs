@@ -3,7 +3,7 @@
 //! centre the controller computes (start + I J), agrees within one unit of
 //! the printed arc words, for every G-code corpus post over every corpus
 //! toolpath. Without the option the seed job shows the vendor's mismatch
-//! (BRIEF decision 9), which is what the option is for.
+//! (the BRIEF's dialect decisions), which is what the option is for.
 
 use std::path::{Path, PathBuf};
 

@@ -1,4 +1,4 @@
-//! JSON Lines toolpaths post exactly as RON ones (issue 14, fault 1).
+//! JSON Lines toolpaths post exactly as RON ones.
 //!
 //! Every corpus toolpath (`corpus/toolpaths/**/*.ron`) is read, written as
 //! JSON Lines, read back and posted through every corpus post; the program

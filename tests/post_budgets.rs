@@ -1,5 +1,5 @@
-//! Posts are code from strangers: text they build has a size budget
-//! (issue 14, fault 10). A post that doubles a text in an endless loop
+//! Posts are code from strangers: text they build has a size budget.
+//! A post that doubles a text in an endless loop
 //! stops quickly with RT031 at its loop, in bounded memory, and writes no
 //! output file: in native CIMCO code, in a CIMCO function that runs as a
 //! script, and in VcPost.

@@ -1,4 +1,4 @@
-//! One test per word of seed 004 (the APT `postp`), each checking the
+//! One test per word of the APT post-processor guide (the APT `postp`), each checking the
 //! documented output on FANUCM (lathe words on FANUCL) against a committed
 //! snapshot in `tests/snapshots/postp/` (`POSTC_BLESS=1` rewrites them).
 //! Every CL file starts `MACHIN/<controller>` and `UNITS/MM`.

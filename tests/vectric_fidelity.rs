@@ -1,4 +1,4 @@
-//! Vectric fidelity (issue 14): a word whose value has no source prints
+//! Vectric fidelity: a word whose value has no source prints
 //! nothing, never a number the machine obeys, and arcs of a post that
 //! wraps an axis around a cylinder are cut into feed moves (a G2/G3 cannot
 //! turn a rotary axis). Real posts of `../shared/corpus/vectric` are used

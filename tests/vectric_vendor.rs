@@ -163,7 +163,7 @@ fn on_change_words_compare_values() {
 
 /// An undeclared material label prints with no prefix: VCarve's ShopBot
 /// program reads `'Length of material in X = 24.000` (one blank, the
-/// post's own); seed 000's default `[XMIN|A| |1.3]` gave two.
+/// post's own); the 2012 Vectric post guide's default `[XMIN|A| |1.3]` gave two.
 #[test]
 fn undeclared_labels_have_no_prefix() {
     let pp = "POST_NAME = \"sbp\"\nFILE_EXTENSION = \"sbp\"\nUNITS = \"INCHES\"\n\

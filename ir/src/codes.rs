@@ -1035,7 +1035,7 @@ declare_codes! {
     /// A composites event file starts with its `VcpFile` header line.
     CP002: Error, "the first line is not the `VcpFile` header",
         fix = "Add the header the file's kind needs as the first line.";
-    /// The calls of a composites event file follow a sequence (seed 003); this call is not
+    /// The calls of a composites event file follow a sequence (Vericut's post-processor notes); this call is not
     /// allowed at this place in it.
     CP003: Error, "a call the sequence does not allow here",
         fix = "Reorder the calls; docs/vcpost.md has the sequences seed 003 allows.";
@@ -1045,7 +1045,7 @@ declare_codes! {
     /// The file (or `--primer`) names an option, probe or primer Sub the post does not have.
     CP005: Error, "an option, probe or `--primer` Sub the post does not have",
         fix = "Correct the name, or add the Sub to the post.";
-    /// A value is outside what seed 003 allows: `LinkType`, `Rotation` other than -1, 0 or +1,
+    /// A value is outside what Vericut's post-processor notes allow: `LinkType`, `Rotation` other than -1, 0 or +1,
     /// `TowNum` below 0, or a list longer than 64.
     CP006: Error, "a value the seed does not allow (`LinkType`, `Rotation` other than -1, 0, +1; `TowNum` < 0; a list longer than 64)",
         fix = "Use an allowed value.";
@@ -1588,14 +1588,14 @@ declare_codes! {
         example = "begin TOOLCHANGE\n\"M6 T[T]\"",
         fix = "Raise Z (or go home with G28/G30/G53) before the M6.";
     /// The `POST_NAME` promises what the post does not do. The names of Vectric's own posts
-    /// follow a convention (seed 000): `(mm)`/`(inch)` the units, `(*.tap)` the file extension,
+    /// follow a convention (the 2012 Vectric post guide): `(mm)`/`(inch)` the units, `(*.tap)` the file extension,
     /// `Arc`/`Arcs` true arcs, `ATC` tool changes, `TS n` tape splitting, `WX`/`WY` a wrapped
     /// axis. A user picks a post by that name.
     LN005: Warning, "`POST_NAME` says `(mm)`/`(inch)`, `(*.ext)`, Arcs or no arcs, ATC, `TS`/`TSn`, WX/WY, and the post does otherwise",
         example = "POST_NAME = \"My router (mm) (*.tap)\"\nFILE_EXTENSION = \"nc\"",
         fix = "Make the name say what the post does, or the post do what the name says.";
     /// With `postc check --product NAME`: the chosen Vectric product's post processor does not
-    /// support this statement, section or variable (seed 000's table); that product rejects it or
+    /// support this statement, section or variable (the 2012 Vectric post guide's table); that product rejects it or
     /// silently ignores it.
     LN006: Warning, "with `--product`: a statement, section or variable that Vectric product does not support, or accepts and ignores (seed 000's table)",
         fix = "Remove it, or use the post with a product that supports it.";

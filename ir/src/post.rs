@@ -230,7 +230,7 @@ pub struct OutputOptions {
     /// Every output variable forgets what it printed when a toolpath
     /// starts, so the first block of each toolpath prints every word: the
     /// Vectric rule (docs/vectric.md, decision 4). A CIMCO post keeps its
-    /// modal memory for the whole program, as seed 002 says a variable
+    /// modal memory for the whole program, as the CNC-Calc Post Processor Manual says a variable
     /// without `force` "will only be written if it has changed since the
     /// last time it was used"; it forgets through [`crate::Stmt::Forget`]
     /// (`xOutput.reset()`). Each frontend sets this explicitly. Written

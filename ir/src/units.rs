@@ -45,7 +45,7 @@ impl Units {
 
     /// The word a post prints for these units (`[UNITS]` in Vectric
     /// posts): the guides' own words for the UNITS statement, "INCHES or
-    /// MM" (seed 000), which every inch post of the corpus writes.
+    /// MM" (the 2012 Vectric post guide), which every inch post of the corpus writes.
     pub fn name(self) -> &'static str {
         match self {
             Units::Mm => "MM",

@@ -1,5 +1,5 @@
 //! Vectric products and what their post processors do not support, from
-//! the Vectric post processor guide (seed 000, "Post Processor differences
+//! the Vectric post processor guide (the 2012 Vectric post guide, "Post Processor differences
 //! between different Vectric Products", products as of January 2012):
 //!
 //! | product | not supported |

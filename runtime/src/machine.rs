@@ -151,7 +151,7 @@ impl MachineState {
     /// Takes a tool: converts its feeds and diameter. Until a move sets
     /// another, the current feed (`[F]`) is the tool's cut feed, which is
     /// what a HEADER or TOOLCHANGE that prints `[F]` means ("Feed Rate used
-    /// for cutting", seed 000) and what a rapid that carries `[F]` should
+    /// for cutting", the 2012 Vectric post guide) and what a rapid that carries `[F]` should
     /// print before the first cut, rather than 0.
     pub fn set_tool(&mut self, tool: Tool) {
         self.feed = tool.cut_feed;

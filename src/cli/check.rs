@@ -22,7 +22,7 @@ pub struct Args {
     dialect: Option<DialectArg>,
     #[command(flatten)]
     levels: super::levels::Flags,
-    /// The Vectric product the posts are for: warn about what its post processor does not support (seed 000's table).
+    /// The Vectric product the posts are for: warn about what its post processor does not support (the 2012 Vectric post guide's table).
     #[arg(long, value_enum)]
     product: Option<ProductArg>,
     /// Apply the fixes that are certain (a misspelt section name with one close match, a label's missing `]`), rewriting each post whole, then check it.

@@ -1,5 +1,5 @@
 //! A CL file of many bad records, for `tests/check_scaling.rs` and
-//! `benches/check_errors.rs` (issue 14, fault 9).
+//! `benches/check_errors.rs`.
 
 /// A CL file of about `bytes` bytes where every other GOTO is bad (a stray
 /// word among its numbers: one error and one warning each).

@@ -1,6 +1,6 @@
 //! # CIMCO CNC-Calc JavaScript posts
 //!
-//! CNC-Calc posts (seed 002) are JavaScript files: globals that set up the
+//! CNC-Calc posts (the CNC-Calc Post Processor Manual) are JavaScript files: globals that set up the
 //! output (`decimalMark`, `linebreak`, `useRadius`, ... or a
 //! `globals = {...}` object with a `PostInfo`), number formats and output
 //! variables made with `createFormat` and `createVariable`, and the

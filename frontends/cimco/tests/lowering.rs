@@ -138,7 +138,7 @@ fn every_fixture_lowers_to_a_script_that_compiles() {
     }
 }
 
-/// Issue 13: the JavaScript of field posts lowers to native IR. Each
+/// The JavaScript of field posts lowers to native IR. Each
 /// lowering fires on the shape it handles and leaves anything else to the
 /// script, which says why. (`tests/cimco_native.rs` posts both under
 /// postc and Node.js.)

@@ -1,5 +1,5 @@
 //! Functions whose values come from the calls: VcPost composites'
-//! `getNthLength1(tow)`, `getNthLength2`, `getNthLength3` (seed 003,
+//! `getNthLength1(tow)`, `getNthLength2`, `getNthLength3` (Vericut's post-processor notes,
 //! GoTo) and `getNthAddCut(i)` (RestartBuffer), [`HOST_FUNCTIONS`].
 //!
 //! The lowering compiles a call of one of these names into a call of a

@@ -8,7 +8,7 @@
 //! Probe`, any case), a tip slot (`C1 C2 N1 N2 S1 S2`, followed by free
 //! text), or unknown (VC017). After a keyword come parameter names separated
 //! by blanks, `!` in front marking a mandatory one. This module reads them,
-//! attaches them to the Sub they sit in, and checks the rules of seed 003:
+//! attaches them to the Sub they sit in, and checks the rules of Vericut's post-processor notes:
 //! one keyword per Sub (VC012), at most 16 parameters (VC013), parameter
 //! names valid (VC015) and not reserved (VC014), the probe keywords on one
 //! Sub only (VC018).

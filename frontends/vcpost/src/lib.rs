@@ -23,7 +23,7 @@
 //! - [`table`]: probe-cycle tables (CSV, cells split by [`csv`]) checked
 //!   against the post's keyword comments (PT codes);
 //! - [`composites`]: composites event files (RON or JSON Lines) checked
-//!   against seed 003's call sequences (CP codes).
+//!   against Vericut's post-processor notes' call sequences (CP codes).
 //!
 //! Every post diagnostic has a `VC` code; [`diagnostics`] has the table.
 //! The language and the three applications as postc reads them (every

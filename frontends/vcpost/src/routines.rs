@@ -3,7 +3,7 @@
 //! variables the composites application and the milling records set before
 //! calling a Sub, and the composites functions the runtime provides.
 
-/// APT major words a milling post may have a Sub for (seed 004's list, the
+/// APT major words a milling post may have a Sub for (the APT post-processor guide's list, the
 /// motion words and the usual CL words).
 pub const APT_WORDS: &[&str] = &[
     "AIR", "ARC", "AUXFUN", "CALSUB", "CIRCLE", "CLEARP", "CLRSRF", "COOLNT", "CUTCOM", "CUTTER", "CYCLE", "DELAY",
@@ -60,7 +60,7 @@ pub enum VarType {
     Text,
 }
 
-/// Variables the composites application sets (seed 003's tables; `X`, `Y`,
+/// Variables the composites application sets (Vericut's post-processor notes' tables; `X`, `Y`,
 /// `Z`, `TowArea`, `TowLen`, `TowNum` are registers there) and
 /// `NeedThickness`, the flag a post sets to ask for `SumThick`.
 pub const COMPOSITES_VARIABLES: &[(&str, VarType)] = {
@@ -213,7 +213,7 @@ fn is_record_argument(name: &str) -> bool {
     matches!(digits.parse::<u8>(), Ok(1..=16)) && !digits.starts_with('0')
 }
 
-/// Functions the composites runtime provides (seed 003, GoTo and
+/// Functions the composites runtime provides (Vericut's post-processor notes, GoTo and
 /// RestartBuffer): name and parameter names.
 pub const HOST_FUNCTIONS: &[(&str, &[&str])] = &[
     ("getNthLength1", &["TowNumber"]),

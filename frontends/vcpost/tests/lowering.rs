@@ -300,7 +300,7 @@ fn sniffing() {
     assert!(!looks_like_vcpost(b""));
 }
 
-/// Issue 14, fault 7: `<Name` never closed with `>` in an `Out` string is
+/// `<Name` never closed with `>` in an `Out` string is
 /// an error at its line and column (it used to print literally, silently).
 #[test]
 fn an_unclosed_register_in_out_is_an_error_at_its_place() {

@@ -4,16 +4,16 @@
 //! they disagree; a program VCarve wrote outranks both (docs/vectric.md,
 //! "Defaults of undeclared labels"):
 //!
-//! - **Prefix: empty everywhere (seed 001).** Seed 000 writes a one-blank
+//! - **Prefix: empty everywhere (the newer Vectric post guide).** The 2012 guide writes a one-blank
 //!   prefix for positions, homes, arc words and the material block
-//!   (`[XMIN|A| |1.3]`), seed 001 none (`[XMIN|A||1.3]`). A ShopBot program
+//!   (`[XMIN|A| |1.3]`), the newer Vectric post guide none (`[XMIN|A||1.3]`). A ShopBot program
 //!   VCarve wrote from a header line `"'Length of material in X = [XLENGTH]"`
 //!   with `XLENGTH` undeclared reads `'Length of material in X = 24.000`: one
-//!   blank, the post's own, so no prefix. Seed 000's blank is the same
-//!   in every row of its table, so seed 001 wins for all of them.
-//! - **Format and modality: seed 000 where the guides disagree and no
-//!   program shows the label** (BRIEF decision 8): positions and homes
-//!   `1.3` (seed 001: `1.0`), `[FC]` on change (seed 001: always).
+//!   blank, the post's own, so no prefix. The 2012 guide's blank is the same
+//!   in every row of its table, so the newer Vectric post guide wins for all of them.
+//! - **Format and modality: the 2012 Vectric post guide where the guides disagree and no
+//!   program shows the label** (the BRIEF's dialect decisions): positions and homes
+//!   `1.3` (the newer Vectric post guide: `1.0`), `[FC]` on change (the newer Vectric post guide: always).
 //! - **Where they agree**, as both write them; the real programs agree
 //!   where they show one (`[XLENGTH]` prints `24.000`, three decimals).
 //! - **Labels neither guide lists** have a default chosen here (*postc*):
@@ -23,13 +23,13 @@
 //!   dwell seconds as the corpus posts that declare `DWELL` do. Text labels
 //!   print their text; their format does not matter.
 //!
-//! | label | seed 000 | seed 001 | postc | why |
+//! | label | the 2012 Vectric post guide | the newer Vectric post guide | postc | why |
 //! |-------|----------|----------|-------|-----|
 //! | N, S, F, FP | `[N\|A\|1.0]` | `[N\|A\|\|1.0]` | `[N\|A\|\|1.0]` | the guides agree |
-//! | FC | `[FC\|C \|\|1.0]` | `[FC\|A\|\|1.0]` | `[FC\|C\|\|1.0]` | seed 000's modality, no program shows it |
-//! | X Y Z, XH YH ZH | `[X\|A\| \|1.3]` | `[X\|A\|\|1.0]` | `[X\|A\|\|1.3]` | seed 001's prefix (program), seed 000's format |
-//! | SAFEZ, ArcStartX/Y, I J, IA JA, ArcMidX/Y, ArcMidXI/YI, Radius, Angle | `[I\|A\| \|1.3]` | `[I\|A\|\|1.3]` | `[I\|A\|\|1.3]` | seed 001 (program: the prefix) |
-//! | XLENGTH YLENGTH ZLENGTH XMIN YMIN ZMIN XMAX YMAX ZMAX | `[XMIN\|A\| \|1.3]` | `[XMIN\|A\|\|1.3]` | `[XMIN\|A\|\|1.3]` | seed 001, as the ShopBot program prints `[XLENGTH]` |
+//! | FC | `[FC\|C \|\|1.0]` | `[FC\|A\|\|1.0]` | `[FC\|C\|\|1.0]` | the 2012 Vectric post guide's modality, no program shows it |
+//! | X Y Z, XH YH ZH | `[X\|A\| \|1.3]` | `[X\|A\|\|1.0]` | `[X\|A\|\|1.3]` | the newer Vectric post guide's prefix (program), the 2012 Vectric post guide's format |
+//! | SAFEZ, ArcStartX/Y, I J, IA JA, ArcMidX/Y, ArcMidXI/YI, Radius, Angle | `[I\|A\| \|1.3]` | `[I\|A\|\|1.3]` | `[I\|A\|\|1.3]` | the newer Vectric post guide (program: the prefix) |
+//! | XLENGTH YLENGTH ZLENGTH XMIN YMIN ZMIN XMAX YMAX ZMAX | `[XMIN\|A\| \|1.3]` | `[XMIN\|A\|\|1.3]` | `[XMIN\|A\|\|1.3]` | the newer Vectric post guide, as the ShopBot program prints `[XLENGTH]` |
 //! | K KA | | | `[K\|A\|\|1.3]` (like I and J) | postc |
 //! | A B C | | | `[A\|A\|\|1.3]` (degrees) | postc |
 //! | T TP | | | `[T\|A\|\|1.0]` | postc; the ShopSabre programs print `T1` |

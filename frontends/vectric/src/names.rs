@@ -1,7 +1,7 @@
 //! The names a Vectric post may use: variable names after `VAR` (with the
 //! label each stands for) and global statement names.
 //!
-//! Variable names come from the variable tables of both seeds (seed 001
+//! Variable names come from the variable tables of both seeds (the newer Vectric post guide
 //! adds `A_POSITION`); `B_POSITION` and `C_POSITION` complete the rotary
 //! axes the IR knows.
 

@@ -1,5 +1,5 @@
 //! LN005: the `POST_NAME` promises what the post does not do. The names of
-//! Vectric's own posts follow a convention (seed 000, "Post Processor
+//! Vectric's own posts follow a convention (the 2012 Vectric post guide, "Post Processor
 //! Naming Conventions"): `(mm)`/`(inch)` the units, `(*.tap)` the file
 //! extension, `Arc`/`Arcs` true arcs, `ATC` tool changes, `TS n` tape
 //! splitting, `WX`/`WY` a wrapped axis. A user picks a post by that name.

@@ -1,5 +1,5 @@
 //! LN006: with `postc check --product NAME`, what the chosen Vectric
-//! product's post processor does not support (seed 000's table, in
+//! product's post processor does not support (the 2012 Vectric post guide's table, in
 //! `crate::product`): such a statement, section or variable is rejected
 //! or silently ignored by that product.
 

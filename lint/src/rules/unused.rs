@@ -10,7 +10,7 @@
 //! name. A VcPost Sub is used when a statement calls it, when it handles an
 //! event (an APT word or composites routine: its handler calls it), or when
 //! a keyword comment or tip offers it to the tables and option cards that
-//! call Subs by name (seed 003: those comments make a Sub's name appear in
+//! call Subs by name (Vericut's post-processor notes: those comments make a Sub's name appear in
 //! the applications' choice lists).
 
 use postc_ir::codes;

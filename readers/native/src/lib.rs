@@ -347,7 +347,7 @@ mod tests {
         }
     }
 
-    /// What a toolpath wrote (issue 10): `FeedRate`, a placed `Coolant` and a
+    /// What a toolpath wrote: `FeedRate`, a placed `Coolant` and a
     /// `Tool`'s `load` read in both syntaxes, in the forms
     /// docs/toolpath-format.md gives, and write back the same; a bare
     /// `Coolant(Flood)` and a `Tool` without `load` write as they always did.
@@ -384,7 +384,7 @@ mod tests {
         assert!(bare.starts_with("{\"Coolant\":\"Flood\"}\n") && !bare.contains("load"), "{bare}");
     }
 
-    /// Issue 14, fault 1: a JSON number is read as the double nearest to
+    /// A JSON number is read as the double nearest to
     /// its decimal text, as RON and Rust read it, not the next one.
     #[test]
     fn json_numbers_are_read_correctly_rounded() {

@@ -309,7 +309,7 @@ fn name_and_longhand(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> (Stri
     (name, longhand)
 }
 
-/// The `drillHeader` of `onDrillingHeader`, every field of seed 002's table.
+/// The `drillHeader` of `onDrillingHeader`, every field of the CNC-Calc Post Processor Manual's table.
 pub(crate) fn drill_header_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> Vec<(&'static str, Field)> {
     let Some(c) = ctx.drill.clone() else { return Vec::new() };
     let (name, longhand) = name_and_longhand(ctx, longhand_of);
@@ -321,7 +321,7 @@ pub(crate) fn drill_header_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> b
         ("name", Field::Text(name)),
         ("isLonghand", B(longhand)),
         ("retractPlane", N(c.retract_plane)),
-        // Seed 002: "the absolute reference plane. If either the safe distance
+        // The CNC-Calc Post Processor Manual: "the absolute reference plane. If either the safe distance
         // or end depth is given as relative coordinates, they are relative to
         // this plane" -- the top of the holes; safeDistance is the R plane.
         ("referencePlane", N(c.surface.unwrap_or(c.reference_plane))),
@@ -351,7 +351,7 @@ pub(crate) fn drill_header_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> b
     ]
 }
 
-/// The `drillHeader` of `onDrilling` (turning), every field of seed 002's
+/// The `drillHeader` of `onDrilling` (turning), every field of the CNC-Calc Post Processor Manual's
 /// table, under both spellings where the seed uses two.
 pub(crate) fn turn_drill_fields(ctx: &Context, longhand_of: &dyn Fn(&str) -> bool) -> Vec<(&'static str, Field)> {
     let Some(c) = ctx.drill.clone() else { return Vec::new() };

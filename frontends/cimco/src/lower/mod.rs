@@ -88,7 +88,7 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
     let arity = |name: &str| top_fn(&model, name).map(|f| f.params.len());
     settings(&model, post, diags);
     post.options.lathe = is_lathe(&model, arity("onLinear"));
-    // Seed 002: a variable without force "will only be written if it has
+    // The CNC-Calc Post Processor Manual: a variable without force "will only be written if it has
     // changed since the last time it was used" -- a toolpath start does not
     // make it forget (a post that wants that calls `reset()`).
     post.options.forget_modal_at_toolpath_start = false;

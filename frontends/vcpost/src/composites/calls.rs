@@ -230,7 +230,7 @@ pub enum ProbingCall {
     ProgramTrailer,
 }
 
-/// The two sequences of seed 003.
+/// The two sequences of Vericut's post-processor notes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Application {
     /// Material laying (VCP's Roller Post card).

@@ -1,4 +1,4 @@
-//! Checks of the values of composites calls, where seed 003 bounds them:
+//! Checks of the values of composites calls, where Vericut's post-processor notes bound them:
 //! `LinkType` and `Rotation` are -1, 0 or +1; `TowNum` is 0 or a tow
 //! number; a function table has at most [`MAX_LIST`] entries and, for a
 //! GoTo, one per tow of the packet; the four AddCut variables encode the

@@ -1,4 +1,4 @@
-//! The call sequences seed 003 allows, as two small state machines.
+//! The call sequences Vericut's post-processor notes allow, as two small state machines.
 //!
 //! Material laying (VCP's Roller Post card):
 //!

@@ -3,7 +3,7 @@
 //! calls the runtime makes.
 //!
 //! A file is RON or JSON Lines, read one line at a time (memory stays flat
-//! whatever its length). Its first line says which of seed 003's two
+//! whatever its length). Its first line says which of Vericut's post-processor notes' two
 //! sequences it follows:
 //!
 //! ```text

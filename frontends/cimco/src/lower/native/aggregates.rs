@@ -1,4 +1,4 @@
-//! Arrays and objects that native code keeps in slots (issue 13): the
+//! Arrays and objects that native code keeps in slots: the
 //! words of a block gathered in an array and handed to
 //! `writeBlock.apply(null, words)`, an array of axis words read by index,
 //! the pieces of an arc gathered as objects and returned in an object.
