@@ -153,3 +153,50 @@ fn no_corpus_cimco_function_is_a_script() {
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
+
+/// The runtime's passes keep what the code means: every corpus CIMCO post
+/// and field-style post, run as its IR says (no `prepare`) and prepared,
+/// prints the same bytes over the mill, drill and standard toolpaths.
+#[test]
+fn prepared_and_unprepared_runs_print_the_same() {
+    let mut problems = Vec::new();
+    let mut ran_short = Vec::new();
+    let posts = files(&corpus().join("posts/cimco"), "js").into_iter().chain(crate::support::cimco::style_posts());
+    let toolpaths = ["toolpaths/cimco/mill.ron", "toolpaths/cimco/drill.ron", "toolpaths/standard.ron"];
+    for path in posts {
+        let mut sources = postc_report::source_map();
+        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        for toolpath in toolpaths.map(|t| corpus().join(t)) {
+            let run = |unprepared: bool| {
+                let mut sources = postc_report::source_map();
+                let mut source = postc_frontends::open_toolpath(&toolpath, &mut sources).expect("opens");
+                let mut options = postc_frontends::run_options(&post);
+                options.unprepared = unprepared;
+                match postc_runtime::run(&post, &mut source, postc_runtime::output::Output::memory(), options) {
+                    Ok(report) => match report.output {
+                        postc_runtime::output::Finished::Memory(parts) => Ok(parts.concat()),
+                        _ => Err("not in memory".to_string()),
+                    },
+                    Err(d) => Err(d.iter().map(|d| format!("{} {}", d.code, d.message)).collect::<Vec<_>>().join("; ")),
+                }
+            };
+            let (prepared, raw) = (run(false), run(true));
+            if let Err(e) = &prepared {
+                ran_short.push(format!("{} over {}: {e}", path.display(), toolpath.display()));
+            }
+            if prepared != raw {
+                problems.push(format!(
+                    "{} over {}: prepared {:?} bytes, unprepared {:?} bytes",
+                    path.display(),
+                    toolpath.display(),
+                    prepared.as_ref().map(Vec::len),
+                    raw.as_ref().map(Vec::len)
+                ));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    // Every run posts a whole program (two runs that fail alike would
+    // compare equal and prove nothing).
+    assert!(ran_short.is_empty(), "{}", ran_short.join("\n"));
+}

@@ -100,6 +100,10 @@ pub struct RunOptions {
     pub trace: Option<trace::TraceSink>,
     /// Told of every handler run and function call (`bench --profile`).
     pub profile: Option<Box<dyn profile::CallObserver>>,
+    /// Run the post's code as its IR says it, with none of
+    /// [`prepare`]'s passes (folding, inlining, fused words, ...): what the
+    /// differential tests compare the prepared run with.
+    pub unprepared: bool,
 }
 
 /// What a successful run produced.
@@ -139,7 +143,7 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_dir = f.dir;
         machine.file_ext = f.extension;
     }
-    let code = prepare::prepare(post);
+    let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };
     let mut engine = Engine::new(post, &code, machine, out);
     engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
     engine.profile = options.profile.take();

@@ -150,6 +150,27 @@ fn handler(functions: &[exec::Function], objects: &[bool], mut body: Vec<Stmt>) 
     }
 }
 
+/// The post's code as its IR says it, with none of the passes: a
+/// handler's statements share one frame, as [`prepare`] gives them.
+pub fn unprepared(post: &Post) -> Code {
+    let handlers: Vec<Vec<Stmt>> = post
+        .handlers
+        .iter()
+        .map(|h| {
+            let body = exec::stmts(&h.body);
+            if body.iter().all(|s| matches!(s, Stmt::Line { .. })) { body } else { one(body) }
+        })
+        .collect();
+    let handler_slots = handlers.iter().filter_map(|b| emit::max_slot(b)).map(|k| k.index() + 1).max().unwrap_or(0);
+    Code {
+        handlers,
+        handler_slots,
+        init: exec::stmts(&post.init),
+        globals: post.globals.iter().map(|g| exec::expr(&g.initial)).collect(),
+        functions: post.functions.iter().map(exec::function).collect(),
+    }
+}
+
 /// Statements as one, so that their locals share a frame (the engine
 /// gives each top-level statement of a handler a fresh frame).
 fn one(body: Vec<Stmt>) -> Vec<Stmt> {
