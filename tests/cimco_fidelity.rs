@@ -306,13 +306,7 @@ function onLinear(x, y, z, m) { return ""; }
     let path = dir.path().join("closures.js");
     std::fs::write(&path, js).expect("write the post");
     let post = compile(&path).unwrap_or_else(|e| panic!("{e}"));
-    let scripts: Vec<&str> = post
-        .functions
-        .iter()
-        .filter(|f| !matches!(f.body, postc_ir::Body::Native(_)))
-        .map(|f| f.name.as_str())
-        .collect();
-    assert!(scripts.is_empty() && post.scripts.is_empty(), "scripts: {scripts:?}");
+    assert_eq!(script_functions(&post), (vec![], false), "scripts");
     check(js, ONE_MOVE, "25 26 7 10; 1 2.25 -0.5; X1.5||X1.5; X3 \n");
 }
 

@@ -191,13 +191,7 @@ const LOWERED_WHOLE: [&str; 6] = [
 fn styles_lowered_whole_print_what_node_prints() {
     for post_path in style_posts().iter().filter(|p| LOWERED_WHOLE.contains(&stem(p).as_str())) {
         let post = compile(post_path).unwrap_or_else(|e| panic!("{}: {e}", post_path.display()));
-        let scripts: Vec<&str> = post
-            .functions
-            .iter()
-            .filter(|f| !matches!(f.body, postc_ir::Body::Native(_)))
-            .map(|f| f.name.as_str())
-            .collect();
-        assert!(scripts.is_empty() && post.scripts.is_empty(), "{}: scripts {scripts:?}", post_path.display());
+        assert_eq!(script_functions(&post), (vec![], false), "{}: scripts", post_path.display());
         for toolpath in mill_toolpaths() {
             let expected = std::fs::read(style_golden(post_path, &toolpath)).expect("the golden");
             let ours = post_toolpath(&post, &toolpath).unwrap_or_else(|e| panic!("{}: {e}", post_path.display()));

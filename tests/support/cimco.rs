@@ -104,3 +104,15 @@ pub fn run_node(post: &Path, jsonl: &Path, extra: &[&str]) -> Result<Vec<u8>, St
     }
     Ok(out.stdout)
 }
+
+/// The names of a post's functions that run as Rhai scripts, and whether
+/// it keeps any script at all: empty and false when it runs natively whole.
+pub fn script_functions(post: &Post) -> (Vec<&str>, bool) {
+    let names = post
+        .functions
+        .iter()
+        .filter(|f| !matches!(f.body, postc_ir::Body::Native(_)))
+        .map(|f| f.name.as_str())
+        .collect();
+    (names, !post.scripts.is_empty())
+}

@@ -106,3 +106,35 @@ pub fn plain_method(name: &str) -> bool {
 pub fn entry_takes_object(name: &str) -> bool {
     matches!(name, "onDrillingHeader" | "onDrilling")
 }
+
+/// The built-in a `Math.name(...)` call is, with the number of arguments
+/// it reads (`min` and `max` read all they are given: `None`); `pow`,
+/// `min()` and `max()` with no argument are the lowerings' own.
+pub fn math(name: &str) -> Option<(postc_ir::Builtin, Option<usize>)> {
+    use postc_ir::Builtin;
+    let b = match name {
+        "abs" => Builtin::Abs,
+        "sqrt" => Builtin::Sqrt,
+        "sin" => Builtin::Sin,
+        "cos" => Builtin::Cos,
+        "tan" => Builtin::Tan,
+        "atan" => Builtin::Atan,
+        "atan2" => Builtin::Atan2,
+        "asin" => Builtin::Asin,
+        "acos" => Builtin::Acos,
+        "exp" => Builtin::Exp,
+        "log" => Builtin::Log,
+        "floor" => Builtin::Floor,
+        "ceil" => Builtin::Ceil,
+        "round" => Builtin::JsRound,
+        "min" => Builtin::Min,
+        "max" => Builtin::Max,
+        _ => return None,
+    };
+    let arity = match b {
+        Builtin::Atan2 => Some(2),
+        Builtin::Min | Builtin::Max => None,
+        _ => Some(1),
+    };
+    Some((b, arity))
+}

@@ -901,19 +901,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     /// Whether an expression may assign something (so operands read
     /// before it must be kept).
     fn has_effects(&self, e: &Expr) -> bool {
-        struct F(bool);
-        impl<'a> super::scope::Visit<'a> for F {
-            fn expr(&mut self, e: &'a Expr) -> bool {
-                if matches!(e.kind, ExprKind::Assign { .. } | ExprKind::Update { .. } | ExprKind::Call { .. }) {
-                    self.0 = true;
-                }
-                !self.0 && !matches!(e.kind, ExprKind::Function(_))
-            }
-            fn function_decl(&mut self, _f: &'a Function) {}
-        }
-        let mut f = F(false);
-        super::scope::walk_expr(e, &mut f);
-        f.0
+        any_expr(e, |k| matches!(k, ExprKind::Assign { .. } | ExprKind::Update { .. } | ExprKind::Call { .. }))
     }
 
     // ---- expressions ----
@@ -940,19 +928,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
 
     /// Whether lowering an expression puts statements before it.
     fn needs_statements(&self, e: &Expr) -> bool {
-        struct F(bool);
-        impl<'a> super::scope::Visit<'a> for F {
-            fn expr(&mut self, e: &'a Expr) -> bool {
-                if matches!(e.kind, ExprKind::Assign { .. } | ExprKind::Update { .. } | ExprKind::Sequence(_)) {
-                    self.0 = true;
-                }
-                !self.0 && !matches!(e.kind, ExprKind::Function(_))
-            }
-            fn function_decl(&mut self, _f: &'a Function) {}
-        }
-        let mut f = F(false);
-        super::scope::walk_expr(e, &mut f);
-        f.0
+        any_expr(e, |k| matches!(k, ExprKind::Assign { .. } | ExprKind::Update { .. } | ExprKind::Sequence(_)))
     }
 
     fn expr(&mut self, e: &Expr, pre: &mut Vec<IrStmt>) -> R<Ir> {
@@ -1233,6 +1209,22 @@ enum Target {
     Member(Ir, Ir),
 }
 
+/// Whether `e` or an expression inside it (not inside a nested function)
+/// is one `found` picks.
+fn any_expr(e: &Expr, found: fn(&ExprKind) -> bool) -> bool {
+    struct F(bool, fn(&ExprKind) -> bool);
+    impl<'a> super::scope::Visit<'a> for F {
+        fn expr(&mut self, e: &'a Expr) -> bool {
+            self.0 |= (self.1)(&e.kind);
+            !self.0 && !matches!(e.kind, ExprKind::Function(_))
+        }
+        fn function_decl(&mut self, _f: &'a Function) {}
+    }
+    let mut f = F(false, found);
+    super::scope::walk_expr(e, &mut f);
+    f.0
+}
+
 /// The statement that stores a value into a target.
 fn set(t: Target, value: Ir) -> IrStmt {
     match t {
@@ -1267,39 +1259,20 @@ fn const_expr(c: &super::consts::Const) -> Ir {
     }
 }
 
-/// `Math.name(args)`.
+/// `Math.name(args)`: missing arguments read as NaN, extra ones are dropped.
 fn math(name: &str, a: Vec<Ir>, at: Span) -> R<Ir> {
-    let b = match name {
-        "abs" => Builtin::Abs,
-        "sqrt" => Builtin::Sqrt,
-        "sin" => Builtin::Sin,
-        "cos" => Builtin::Cos,
-        "tan" => Builtin::Tan,
-        "atan" => Builtin::Atan,
-        "atan2" => Builtin::Atan2,
-        "asin" => Builtin::Asin,
-        "acos" => Builtin::Acos,
-        "exp" => Builtin::Exp,
-        "log" => Builtin::Log,
-        "floor" => Builtin::Floor,
-        "ceil" => Builtin::Ceil,
-        "round" => Builtin::JsRound,
-        "min" if !a.is_empty() => Builtin::Min,
-        "max" if !a.is_empty() => Builtin::Max,
-        "min" => return Ok(Ir::Number(f64::INFINITY)),
-        "max" => return Ok(Ir::Number(f64::NEG_INFINITY)),
-        "pow" => {
-            let mut it = a.into_iter().chain(std::iter::repeat(Ir::Undefined));
-            let (x, y) = (it.next().unwrap_or(Ir::Undefined), it.next().unwrap_or(Ir::Undefined));
-            return Ok(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
-        }
-        _ => return Err(why(at, format!("`Math.{name}`"))),
-    };
-    let arity = match b {
-        Builtin::Atan2 => 2,
-        Builtin::Min | Builtin::Max => a.len(),
-        _ => 1,
-    };
+    if name == "pow" {
+        let mut it = a.into_iter();
+        let (x, y) = (it.next().unwrap_or(Ir::Undefined), it.next().unwrap_or(Ir::Undefined));
+        return Ok(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
+    }
+    match (name, a.is_empty()) {
+        ("min", true) => return Ok(Ir::Number(f64::INFINITY)),
+        ("max", true) => return Ok(Ir::Number(f64::NEG_INFINITY)),
+        _ => {}
+    }
+    let (b, arity) = builtins::math(name).ok_or_else(|| why(at, format!("`Math.{name}`")))?;
+    let arity = arity.unwrap_or(a.len());
     let mut a: Vec<Ir> = a.into_iter().map(to_number).collect();
     a.resize(arity.max(a.len()), Ir::Number(f64::NAN));
     a.truncate(arity);

@@ -6,9 +6,9 @@ use postc_ir::{BinaryOp as IrBin, Builtin, Expr as Ir};
 
 use crate::ast::*;
 
-use super::super::layout;
 use super::super::scope::Symbol;
 use super::super::setup::Binding;
+use super::super::{builtins, layout};
 use super::{Native, R, to_number, why};
 
 impl Native<'_, '_> {
@@ -138,36 +138,15 @@ impl Native<'_, '_> {
 
     fn math(&mut self, name: &str, args: &[Expr], at: postc_ir::Span) -> R<Ir> {
         let a = self.args(args)?;
-        let b = match name {
-            "abs" => Builtin::Abs,
-            "sqrt" => Builtin::Sqrt,
-            "sin" => Builtin::Sin,
-            "cos" => Builtin::Cos,
-            "tan" => Builtin::Tan,
-            "atan" => Builtin::Atan,
-            "atan2" => Builtin::Atan2,
-            "asin" => Builtin::Asin,
-            "acos" => Builtin::Acos,
-            "exp" => Builtin::Exp,
-            "log" => Builtin::Log,
-            "floor" => Builtin::Floor,
-            "ceil" => Builtin::Ceil,
-            "round" => Builtin::JsRound,
-            "min" if !a.is_empty() => Builtin::Min,
-            "max" if !a.is_empty() => Builtin::Max,
-            "pow" if a.len() == 2 => {
-                let mut it = a.into_iter();
-                let (Some(x), Some(y)) = (it.next(), it.next()) else { return Err(why(at, "`Math.pow`")) };
-                return Ok(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
-            }
-            _ => return Err(why(at, format!("`Math.{name}`"))),
-        };
-        let arity = match b {
-            Builtin::Atan2 => 2,
-            Builtin::Min | Builtin::Max => a.len(),
-            _ => 1,
-        };
-        if a.len() < arity {
+        if name == "pow" && a.len() == 2 {
+            let mut it = a.into_iter();
+            let (Some(x), Some(y)) = (it.next(), it.next()) else { return Err(why(at, "`Math.pow`")) };
+            return Ok(Ir::Binary(IrBin::Pow, Box::new(to_number(x)), Box::new(to_number(y))));
+        }
+        let (b, arity) = builtins::math(name)
+            .filter(|_| !(matches!(name, "min" | "max") && a.is_empty()))
+            .ok_or_else(|| why(at, format!("`Math.{name}`")))?;
+        if a.len() < arity.unwrap_or(0) {
             return Err(why(at, format!("`Math.{name}` with too few arguments")));
         }
         Ok(Ir::Builtin(b, a.into_iter().map(to_number).collect()))
