@@ -999,7 +999,7 @@ impl Engine<'_> {
     /// The text formatted into `buf` (the engine's scratch buffer, given
     /// back): the shared empty text, or the bytes as a value.
     #[inline]
-    fn scratch_text(&mut self, mut buf: Vec<u8>) -> Value {
+    pub(super) fn scratch_text(&mut self, mut buf: Vec<u8>) -> Value {
         let len = buf.len();
         let text = if len == 0 {
             self.empty_text.clone()

@@ -197,9 +197,11 @@ impl Engine<'_> {
         let arg = args.into_iter().next().unwrap_or(Value::Undefined);
         let word = match (output, name) {
             (OutputRef::Format(f), "format") => {
-                let mut buf = Vec::new();
+                // The engine's reused buffer, as a named format's word is made.
+                let mut buf = std::mem::take(&mut self.scratch);
+                buf.clear();
                 self.writers[f.index()].write(js_number(&arg), &mut buf);
-                Value::Text(Text::from_bytes(&buf))
+                self.scratch_text(buf)
             }
             (OutputRef::Variable(v), "format") => self.format_through_var(v, arg),
             (OutputRef::Variable(v), "reset") => {
