@@ -52,6 +52,16 @@ enum Message {
     Events(Vec<(Record, Span)>),
 }
 
+/// Toolpath records sent at a time.
+type Batch = Vec<(Record, Span)>;
+
+/// The two kinds of buffer going back from the verify thread to the
+/// posting thread once read: either end of the two channels.
+struct Spare<B, E> {
+    bytes: B,
+    events: E,
+}
+
 /// What the verify thread found.
 pub enum Outcome {
     /// The program is of a family verify does not read, told by its first
@@ -70,6 +80,10 @@ pub enum Outcome {
 /// The posting thread's end of the channel, shared by the two tees.
 struct Tee {
     tx: Option<SyncSender<Message>>,
+    /// Buffers the verify thread has read, coming back to be filled again,
+    /// so that a long program does not take fresh memory (and its page
+    /// faults) for every chunk and batch.
+    spare: Spare<Receiver<Vec<u8>>, Receiver<Batch>>,
     events: Vec<(Record, Span)>,
     /// Set by the verify thread when it reads no further (a foreign program).
     stop: Arc<AtomicBool>,
@@ -98,9 +112,28 @@ impl Tee {
 
     fn send_events(&mut self) {
         if !self.events.is_empty() {
-            let batch = std::mem::replace(&mut self.events, Vec::with_capacity(BATCH));
+            let empty = match self.spare.events.try_recv() {
+                Ok(mut e) => {
+                    e.clear();
+                    e
+                }
+                Err(_) => Vec::with_capacity(BATCH),
+            };
+            let batch = std::mem::replace(&mut self.events, empty);
             self.send(Message::Events(batch));
         }
+    }
+
+    fn send_bytes(&mut self, bytes: &[u8]) {
+        let mut chunk = match self.spare.bytes.try_recv() {
+            Ok(mut b) => {
+                b.clear();
+                b
+            }
+            Err(_) => Vec::with_capacity(bytes.len()),
+        };
+        chunk.extend_from_slice(bytes);
+        self.send(Message::Bytes(chunk));
     }
 }
 
@@ -128,13 +161,17 @@ impl Verification {
     /// `count_lines` counts the program's lines where its parts start.
     pub fn start(file: FileId, settings: Settings, count_lines: bool) -> io::Result<Verification> {
         let (tx, rx) = sync_channel(IN_FLIGHT);
+        let (bytes_back, bytes) = sync_channel(IN_FLIGHT + 2);
+        let (events_back, events) = sync_channel(IN_FLIGHT + 2);
+        let (give_back, spare) = (Spare { bytes: bytes_back, events: events_back }, Spare { bytes, events });
         let stop = Arc::new(AtomicBool::new(false));
         let flag = Arc::clone(&stop);
         let thread = std::thread::Builder::new()
             .name("postc-verify".into())
-            .spawn(move || verify_thread(rx, file, &settings, &flag))?;
+            .spawn(move || verify_thread(rx, give_back, file, &settings, &flag))?;
         let tee = Tee {
             tx: Some(tx),
+            spare,
             events: Vec::with_capacity(BATCH),
             stop,
             parked: None,
@@ -201,7 +238,7 @@ impl Sink for TeeSink {
         }
         if tee.tx.is_some() {
             tee.send_events();
-            tee.send(Message::Bytes(bytes.to_vec()));
+            tee.send_bytes(bytes);
         }
         Ok(())
     }
@@ -256,6 +293,8 @@ impl EventSource for TeeSource<'_> {
 /// What the verify thread has received and not yet read.
 struct Demux {
     rx: Receiver<Message>,
+    /// Read buffers back to the posting thread (when it has room for them).
+    give_back: Spare<SyncSender<Vec<u8>>, SyncSender<Batch>>,
     bytes: VecDeque<Vec<u8>>,
     events: VecDeque<Vec<(Record, Span)>>,
     ended: bool,
@@ -351,8 +390,11 @@ impl BufRead for Program {
         while self.at >= self.chunk.len() {
             let Some(chunk) = self.next_chunk() else { return Ok(&[]) };
             let read = std::mem::replace(&mut self.chunk, chunk);
-            if let Some(held) = &mut self.held {
-                held.push(read);
+            match &mut self.held {
+                Some(held) => held.push(read),
+                None => {
+                    let _ = self.demux.borrow().give_back.bytes.try_send(read);
+                }
             }
             self.at = 0;
         }
@@ -376,7 +418,8 @@ impl RecordSource for Events {
             match demux.events.pop_front() {
                 Some(next) if next.is_empty() => {}
                 Some(next) => {
-                    *batch = next;
+                    let read = std::mem::replace(batch, next);
+                    let _ = demux.give_back.events.try_send(read);
                     return true;
                 }
                 None if !demux.receive() => return false,
@@ -386,9 +429,16 @@ impl RecordSource for Events {
     }
 }
 
-fn verify_thread(rx: Receiver<Message>, file: FileId, settings: &Settings, stop: &AtomicBool) -> Outcome {
+fn verify_thread(
+    rx: Receiver<Message>,
+    give_back: Spare<SyncSender<Vec<u8>>, SyncSender<Batch>>,
+    file: FileId,
+    settings: &Settings,
+    stop: &AtomicBool,
+) -> Outcome {
     let demux = Rc::new(RefCell::new(Demux {
         rx,
+        give_back,
         bytes: VecDeque::new(),
         events: VecDeque::new(),
         ended: false,
