@@ -15,7 +15,7 @@ use many_errors::bad_cl;
 
 fn check_json(path: &Path) -> usize {
     let mut sources = postc_report::source_map();
-    let diagnostics = postc_frontends::check_toolpath(path, &mut sources);
+    let diagnostics = postc_driver::check_toolpath(path, &mut sources);
     let name = path.display().to_string();
     diagnostics.iter().map(|d| sources.to_json(d, &name)).filter_map(|j| j.line).count()
 }

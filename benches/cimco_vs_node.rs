@@ -29,9 +29,9 @@ use std::io::Write;
 use std::path::Path;
 use std::time::Instant;
 
-use postc_frontends::native::{Syntax, write_event};
 use postc_ir::event::Event;
 use postc_ir::{EventSource, Post};
+use postc_reader_native::{Syntax, write_event};
 use postc_runtime::Output;
 use support::cimco::{compile, corpus, node, posts, run_node, stem};
 
@@ -48,7 +48,7 @@ fn write_jsonl(target: &Path, events: impl Iterator<Item = Event>) {
 
 fn read_events(path: &Path) -> Vec<Event> {
     let mut sources = postc_report::source_map();
-    let mut reader = postc_frontends::open_toolpath(path, &mut sources).expect("the toolpath opens");
+    let mut reader = postc_driver::open_toolpath(path, &mut sources).expect("the toolpath opens");
     let (mut all, mut diags) = (Vec::new(), Vec::new());
     while let Some((e, _)) = reader.next_event(&mut diags) {
         all.push(e);
@@ -95,17 +95,16 @@ fn measure(post_path: &Path, post: &Post, jsonl: &Path, events: &[Event], runs: 
     // the machine falls on both rather than on one engine's runs.
     for _ in 0..runs {
         let mut sources = postc_report::source_map();
-        let mut source = postc_frontends::open_toolpath(jsonl, &mut sources).expect("the toolpath opens");
+        let mut source = postc_driver::open_toolpath(jsonl, &mut sources).expect("the toolpath opens");
         let start = Instant::now();
-        let report = postc_runtime::run(post, &mut source, Output::discard(), postc_frontends::run_options(post))
+        let report = postc_runtime::run(post, &mut source, Output::discard(), postc_driver::run_options(post))
             .expect("postc posts");
         postc_total = postc_total.min(start.elapsed().as_secs_f64());
         bytes = report.bytes;
 
         let mut source = postc_ir::event::VecSource::new(events.to_vec(), postc_ir::FileId(0));
         let start = Instant::now();
-        postc_runtime::run(post, &mut source, Output::discard(), postc_frontends::run_options(post))
-            .expect("postc posts");
+        postc_runtime::run(post, &mut source, Output::discard(), postc_driver::run_options(post)).expect("postc posts");
         postc_post = postc_post.min(start.elapsed().as_secs_f64());
 
         let out = run_node(post_path, jsonl, &["--bench"]).expect("node runs");
@@ -137,7 +136,7 @@ fn main() {
     let dir = tempfile::tempdir().expect("a temporary folder");
 
     let zigzag = dir.path().join("zigzag.jsonl");
-    let mut generator = postc_frontends::synthetic::Synthetic::new("zigzag", moves).expect("the zigzag pattern");
+    let mut generator = postc_reader_synthetic::Synthetic::new("zigzag", moves).expect("the zigzag pattern");
     let mut diags = Vec::new();
     write_jsonl(&zigzag, std::iter::from_fn(|| generator.next_event(&mut diags).map(|(e, _)| e)));
     let zigzag_events = read_events(&zigzag);

@@ -6,9 +6,9 @@
 //! least 0.8 of the hand-written formatter's speed.
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use postc_frontends::synthetic::Synthetic;
 use postc_ir::event::{Event, Intent};
 use postc_ir::{EventSource, Post};
+use postc_reader_synthetic::Synthetic;
 use postc_runtime::{Finished, Output, run};
 
 /// The post both sides print: G0/G1 moves, modal X Y Z and F.
@@ -39,7 +39,7 @@ fn post() -> Post {
 
 fn postc_text(post: &Post, moves: u64, out: Output) -> Option<Vec<u8>> {
     let mut source = Synthetic::new("zigzag", moves).unwrap();
-    match run(post, &mut source, out, postc_frontends::run_options(post)).ok()?.output {
+    match run(post, &mut source, out, postc_driver::run_options(post)).ok()?.output {
         Finished::Memory(parts) => Some(parts.concat()),
         _ => None,
     }

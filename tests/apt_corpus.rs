@@ -170,13 +170,13 @@ impl Expected {
 
 fn default_post(sources: &mut SourceMap) -> Post {
     let name = Path::new(postc::default_post::NAME);
-    postc_frontends::compile_post_bytes(name, postc::default_post::TEXT, None, sources).post.unwrap()
+    postc_driver::compile_post_bytes(name, postc::default_post::TEXT, None, sources).post.unwrap()
 }
 
 /// Reads, posts and checks one file; returns what went wrong.
 fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     let mut sources = postc_report::source_map();
-    let diags = postc_frontends::check_toolpath(path, &mut sources);
+    let diags = postc_driver::check_toolpath(path, &mut sources);
     let errors: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
     if is_binary(path) {
         return match errors.as_slice() {
@@ -192,7 +192,7 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     let n = |k: &str| records.get(k).copied().unwrap_or(0);
     let feed = (n("FEDRAT") == 0).then_some(100.0);
     // Events, counted, and what the program should hold.
-    let mut reader = postc_frontends::open_toolpath(path, &mut sources).unwrap();
+    let mut reader = postc_driver::open_toolpath(path, &mut sources).unwrap();
     let mut d = Vec::new();
     let post = default_post(&mut sources);
     let tolerance = post.options.arc_tolerance;
@@ -225,9 +225,9 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
         ));
     }
     // Post through the default post.
-    let reader = postc_frontends::open_toolpath(path, &mut sources).unwrap();
+    let reader = postc_driver::open_toolpath(path, &mut sources).unwrap();
     let mut source = Adapted { inner: reader, feed };
-    let program = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
+    let program = match postc_runtime::run(&post, &mut source, Output::memory(), postc_driver::run_options(&post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8_lossy(&parts.concat()).into_owned(),
             _ => unreachable!(),

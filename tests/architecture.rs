@@ -153,12 +153,14 @@ fn only_the_edge_renders_diagnostics() {
     for krate in [
         "ir",
         "runtime",
-        "frontends",
+        "driver",
         "frontends/vectric",
         "frontends/cimco",
         "frontends/vcpost",
         "readers/apt",
         "readers/native",
+        "readers/synthetic",
+        "hosts/cimco",
         "postp",
         "verify",
         "backends",
@@ -197,12 +199,14 @@ fn only_the_edge_touches_files_the_clock_and_the_terminal() {
     for folder in [
         "ir/src",
         "runtime/src",
-        "frontends/src",
+        "driver/src",
         "frontends/vectric/src",
         "frontends/cimco/src",
         "frontends/vcpost/src",
         "readers/apt/src",
         "readers/native/src",
+        "readers/synthetic/src",
+        "hosts/cimco/src",
         "postp/src",
         "verify/src",
         "backends/src",
@@ -230,7 +234,7 @@ fn the_runtime_depends_on_no_frontend_at_any_depth() {
     let direct = dependencies("runtime");
     for name in &direct {
         assert!(
-            !name.starts_with("postc-front") && name != "postc-frontends" && name != "postc-cimco-host",
+            !name.starts_with("postc-front") && name != "postc-driver" && name != "postc-cimco-host",
             "postc-runtime depends on {name}"
         );
     }
@@ -240,12 +244,99 @@ fn the_runtime_depends_on_no_frontend_at_any_depth() {
     assert!(!direct.iter().any(|d| d == "rhai"), "postc-runtime depends on rhai");
 }
 
-/// The script host sits beside the CIMCO frontend and uses the runtime,
+/// A script host (`hosts/`) runs what a dialect's frontend compiled to
+/// script, for the runtime: it uses the runtime and its dialect's frontend,
 /// not the other way round.
 #[test]
 fn the_cimco_script_host_uses_the_runtime_and_the_frontends_names() {
-    assert_eq!(postc_crates("frontends/cimco/host"), ["postc-ir", "postc-runtime", "postc-front-cimco"]);
+    assert_eq!(postc_crates("hosts/cimco"), ["postc-ir", "postc-runtime", "postc-front-cimco"]);
     assert!(!postc_crates("frontends/cimco").iter().any(|d| d == "postc-runtime"));
+}
+
+/// The folders at the root are the architecture's layers
+/// (docs/architecture.md draws them): dialect frontends, toolpath readers,
+/// the driver, the runtime, script hosts, backends, lint, verify, the
+/// language server, report, the command line (`src/`), and beside them the
+/// fuzzer, benches, corpus, docs and tests.
+#[test]
+fn the_root_folders_are_the_layers() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut folders: Vec<String> = std::fs::read_dir(root)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| !name.starts_with('.') && name != "target")
+        .collect();
+    folders.sort();
+    assert_eq!(
+        folders,
+        [
+            "backends",
+            "benches",
+            "corpus",
+            "docs",
+            "driver",
+            "frontends",
+            "fuzz",
+            "hosts",
+            "ir",
+            "lint",
+            "lsp",
+            "postp",
+            "readers",
+            "report",
+            "runtime",
+            "src",
+            "tests",
+            "verify"
+        ]
+    );
+}
+
+/// The crates of a layer folder (`frontends`, `readers`, `hosts`): its
+/// subfolders with a `Cargo.toml`.
+fn layer(folder: &str) -> Vec<String> {
+    let mut crates: Vec<String> = std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(folder))
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().join("Cargo.toml").is_file())
+        .map(|e| format!("{folder}/{}", e.file_name().to_string_lossy()))
+        .collect();
+    crates.sort();
+    assert!(!crates.is_empty(), "no crate in {folder}/");
+    assert!(!Path::new(env!("CARGO_MANIFEST_DIR")).join(folder).join("Cargo.toml").exists(), "{folder}/ is a crate");
+    crates
+}
+
+/// A dialect frontend reads a post's text into IR, and a toolpath reader a
+/// toolpath into events: each uses the IR alone.
+#[test]
+fn frontends_and_readers_use_the_ir_alone() {
+    for krate in layer("frontends").into_iter().chain(layer("readers")) {
+        assert_eq!(postc_crates(&krate), ["postc-ir"], "{krate}");
+    }
+}
+
+/// The driver sits above the dialects, the readers, the hosts and the
+/// runtime, and below every application of them (the command line, lint's
+/// tests, the language server, `postp`): no crate it uses uses it.
+#[test]
+fn the_driver_sits_above_frontends_readers_hosts_and_the_runtime() {
+    for d in postc_crates("driver") {
+        assert!(
+            d == "postc-ir"
+                || d == "postc-runtime"
+                || d.starts_with("postc-front-")
+                || d.starts_with("postc-reader-")
+                || d.ends_with("-host"),
+            "the driver uses {d}"
+        );
+    }
+    let below = ["ir", "runtime", "backends", "verify", "report"].map(String::from);
+    for krate in below.into_iter().chain(layer("frontends")).chain(layer("readers")).chain(layer("hosts")) {
+        assert!(!postc_crates(&krate).iter().any(|d| d == "postc-driver"), "{krate} uses the driver");
+    }
 }
 
 /// The runtime never names a dialect: outside comments, no line of
@@ -286,38 +377,41 @@ fn the_runtime_names_no_dialect() {
 /// frontend on no reader.
 #[test]
 fn readers_and_post_dialects_are_apart() {
-    for reader in ["readers/apt", "readers/native"] {
-        let deps = dependencies(reader);
+    for reader in layer("readers") {
+        let deps = dependencies(&reader);
         assert!(!deps.iter().any(|d| d.starts_with("postc-front")), "{reader} depends on a post frontend: {deps:?}");
     }
-    for dialect in ["frontends/vectric", "frontends/cimco", "frontends/vcpost"] {
-        let deps = dependencies(dialect);
+    for dialect in layer("frontends") {
+        let deps = dependencies(&dialect);
         assert!(!deps.iter().any(|d| d.starts_with("postc-reader")), "{dialect} depends on a reader: {deps:?}");
     }
 }
 
-/// Comments describe the present: no Rust comment cites an issue number,
-/// a seed file by its number or a numbered BRIEF decision (the seeds are
-/// named by their titles; history lives in git).
+/// Comments describe the present: no line of Rust cites an issue number,
+/// a seed file by its number or the product brief (the seeds are named by
+/// their titles; history lives in git). The check of
+/// `grep -rnE 'issue [0-9]+|BRI[E]F|seed 00[0-9]' --include=*.rs .` (written here with `[E]` so that it does not find itself).
 #[test]
 fn comments_cite_no_issue_seed_number_or_numbered_decision() {
+    let brief = concat!("BRI", "EF");
     let mut found = Vec::new();
-    for folder in
-        ["src", "ir", "runtime", "frontends", "backends", "readers", "verify", "lint", "lsp", "tests", "benches"]
-    {
-        if !Path::new(env!("CARGO_MANIFEST_DIR")).join(folder).is_dir() {
-            continue;
-        }
-        for (path, text) in sources(folder) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut folders: Vec<String> = std::fs::read_dir(root)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| !name.starts_with('.') && name != "target" && name != "corpus" && name != "docs")
+        .collect();
+    folders.sort();
+    for folder in folders {
+        for (path, text) in sources(&folder) {
             for (i, line) in text.lines().enumerate() {
-                let Some(at) = line.find("//") else { continue };
-                let comment = line[at..].to_ascii_lowercase();
                 let cites = |word: &str| {
-                    comment
-                        .match_indices(word)
-                        .any(|(j, _)| comment[j + word.len()..].chars().next().is_some_and(|c| c.is_ascii_digit()))
+                    line.match_indices(word)
+                        .any(|(j, _)| line[j + word.len()..].chars().next().is_some_and(|c| c.is_ascii_digit()))
                 };
-                if cites("issue ") || cites("seed 00") || cites("brief decision ") {
+                if cites("issue ") || cites("seed 00") || line.contains(brief) {
                     found.push(format!("{path}:{}: {}", i + 1, line.trim()));
                 }
             }

@@ -15,7 +15,7 @@ use many_errors::bad_cl;
 fn check(path: &Path) -> (usize, Duration) {
     let start = Instant::now();
     let mut sources = postc_report::source_map();
-    let diagnostics = postc_frontends::check_toolpath(path, &mut sources);
+    let diagnostics = postc_driver::check_toolpath(path, &mut sources);
     let name = path.display().to_string();
     let json: Vec<_> = diagnostics.iter().map(|d| sources.to_json(d, &name)).collect();
     assert!(json.iter().all(|d| d.line.is_some() && d.column.is_some()));
@@ -137,18 +137,18 @@ fn fault_posts_read_no_more_than_their_size() {
         let size = std::fs::metadata(&path).unwrap().len();
         let read = std::sync::Arc::new(std::sync::atomic::AtomicU64::new(0));
         let mut sources = postc_ir::SourceMap::with_loader(std::sync::Arc::new(Counting { read: read.clone() }));
-        let compiled = postc_frontends::compile_post(&path, None, &mut sources);
+        let compiled = postc_driver::compile_post(&path, None, &mut sources);
         let mut diagnostics = compiled.diagnostics.clone();
         if let Some(post) = &compiled.post {
             diagnostics.extend(postc_lint::lint(post, &postc_lint::Options::default()));
             if !postc_ir::diagnostic::has_errors(&diagnostics) {
                 let toolpath = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/toolpaths/standard.ron");
-                let mut events = postc_frontends::open_toolpath(&toolpath, &mut sources).unwrap();
+                let mut events = postc_driver::open_toolpath(&toolpath, &mut sources).unwrap();
                 let _ = postc_runtime::run(
                     post,
                     &mut events,
                     postc_runtime::Output::discard(),
-                    postc_frontends::run_options(post),
+                    postc_driver::run_options(post),
                 );
             }
         }

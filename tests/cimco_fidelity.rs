@@ -151,7 +151,7 @@ fn apt_cycles_carry_the_hole_top() {
     let path = dir.path().join("job.cl");
     std::fs::write(&path, cl).expect("write the CL file");
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(&path, &mut sources).unwrap_or_else(|d| panic!("{}", d.message));
+    let mut source = postc_driver::open_toolpath(&path, &mut sources).unwrap_or_else(|d| panic!("{}", d.message));
     let mut diags = Vec::new();
     let mut cycle = None;
     while let Some((e, _)) = postc_ir::EventSource::next_event(&mut source, &mut diags) {

@@ -45,7 +45,7 @@ fn every_script_function_says_why_and_the_move_handlers_are_native() {
     let mut problems = Vec::new();
     for path in files(&corpus().join("posts/cimco"), "js") {
         let mut sources = postc_report::source_map();
-        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        let post = postc_driver::compile_post(&path, None, &mut sources).post.expect("compiles");
         for f in &post.functions {
             match (&f.body, &f.why_script) {
                 (Body::Script(_), None) => {
@@ -142,7 +142,7 @@ fn no_corpus_cimco_function_is_a_script() {
     let posts = files(&corpus().join("posts/cimco"), "js").into_iter().chain(crate::support::cimco::style_posts());
     for path in posts {
         let mut sources = postc_report::source_map();
-        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        let post = postc_driver::compile_post(&path, None, &mut sources).post.expect("compiles");
         for f in post.functions.iter().filter(|f| matches!(f.body, Body::Script(_))) {
             let why = f.why_script.as_ref().map_or("", |w| w.what.as_str());
             problems.push(format!("{}: `{}` is a script: {why}", path.display(), f.name));
@@ -165,12 +165,12 @@ fn prepared_and_unprepared_runs_print_the_same() {
     let toolpaths = ["toolpaths/cimco/mill.ron", "toolpaths/cimco/drill.ron", "toolpaths/standard.ron"];
     for path in posts {
         let mut sources = postc_report::source_map();
-        let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("compiles");
+        let post = postc_driver::compile_post(&path, None, &mut sources).post.expect("compiles");
         for toolpath in toolpaths.map(|t| corpus().join(t)) {
             let run = |unprepared: bool| {
                 let mut sources = postc_report::source_map();
-                let mut source = postc_frontends::open_toolpath(&toolpath, &mut sources).expect("opens");
-                let mut options = postc_frontends::run_options(&post);
+                let mut source = postc_driver::open_toolpath(&toolpath, &mut sources).expect("opens");
+                let mut options = postc_driver::run_options(&post);
                 options.unprepared = unprepared;
                 match postc_runtime::run(&post, &mut source, postc_runtime::output::Output::memory(), options) {
                     Ok(report) => match report.output {

@@ -15,7 +15,7 @@ fn compile(js: &str) -> (Post, Vec<postc_ir::Diagnostic>, SourceMap) {
 }
 
 fn cimco(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<postc_ir::Diagnostic>) {
-    let c = postc_frontends::compile_post_bytes(path, bytes, Some(postc_ir::Dialect::Cimco), sources);
+    let c = postc_driver::compile_post_bytes(path, bytes, Some(postc_ir::Dialect::Cimco), sources);
     (c.post.unwrap_or_default(), c.diagnostics)
 }
 
@@ -33,7 +33,7 @@ fn events() -> Vec<Event> {
 
 fn run(post: &Post) -> Result<String, Vec<postc_ir::Diagnostic>> {
     let mut source = VecSource::new(events(), FileId(0));
-    let report = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post))?;
+    let report = postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post))?;
     match report.output {
         Finished::Memory(parts) => Ok(String::from_utf8_lossy(&parts.concat()).into_owned()),
         _ => unreachable!("memory output"),

@@ -90,7 +90,7 @@ fn cases() -> Vec<Case> {
 /// Compiles post bytes; the diagnostics as `CODE message` lines.
 fn compile_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>) -> (Option<Post>, Vec<String>) {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(path, bytes, dialect, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(path, bytes, dialect, &mut sources);
     let errors = compiled.has_errors();
     let diags = compiled.diagnostics.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
     (if errors { None } else { compiled.post }, diags)
@@ -102,15 +102,12 @@ type Program = Result<Vec<Vec<u8>>, Vec<String>>;
 /// Posts a toolpath: the program, and the warnings.
 fn post(post: &Post, toolpath: &Path) -> (Program, Vec<String>) {
     let mut sources = postc_report::source_map();
-    let mut source = match postc_frontends::open_toolpath(toolpath, &mut sources) {
+    let mut source = match postc_driver::open_toolpath(toolpath, &mut sources) {
         Ok(s) => s,
         Err(d) => return (Err(vec![format!("{} {}", d.code, d.message)]), Vec::new()),
     };
-    let options = RunOptions {
-        date: Some("2026-01-01".into()),
-        time: Some("12:00".into()),
-        ..postc_frontends::run_options(post)
-    };
+    let options =
+        RunOptions { date: Some("2026-01-01".into()), time: Some("12:00".into()), ..postc_driver::run_options(post) };
     match postc_runtime::run(post, &mut source, Output::memory(), options) {
         Ok(report) => {
             let warnings = report.warnings.iter().map(|d| format!("{} {}", d.code, d.message)).collect();
@@ -870,7 +867,7 @@ fn regular_expressions_are_refused_by_dialects_without_them() {
     let mut sources = postc_report::source_map();
     // `clean` returns a local, as a VcPost Function does.
     let js = "var linebreak = \"\\n\";\nfunction clean(t) {\n    var r = t.replace(/[()]/g, \"\");\n    return r;\n}\nfunction onLinear(x, y, z, m) { return clean(\"(G1)\") + linebreak; }\n";
-    let compiled = postc_frontends::compile_post_bytes(Path::new("regex.js"), js.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("regex.js"), js.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     let mut post = compiled.post.expect("a post");
     // Past what VcPost refuses first (CNC-Calc's modal memory kept across

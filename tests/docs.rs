@@ -1,8 +1,8 @@
 //! The examples in docs/ read: every ```ron and ```json block of
 //! docs/toolpath-format.md is a valid toolpath.
 
-use postc_frontends::native::{NativeReader, Syntax};
 use postc_ir::EventSource;
+use postc_reader_native::{NativeReader, Syntax};
 
 fn blocks(text: &str, fence: &str) -> Vec<String> {
     let mut out = Vec::new();

@@ -3,7 +3,7 @@
 //! centre the controller computes (start + I J), agrees within one unit of
 //! the printed arc words, for every G-code corpus post over every corpus
 //! toolpath. Without the option the seed job shows the vendor's mismatch
-//! (the BRIEF's dialect decisions), which is what the option is for.
+//! (the project's dialect decisions, docs/vectric.md), which is what the option is for.
 
 use std::path::{Path, PathBuf};
 
@@ -15,10 +15,10 @@ fn root() -> PathBuf {
 
 fn post(post: &Path, toolpath: &Path, exact_arcs: bool) -> String {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(post, None, &mut sources);
+    let compiled = postc_driver::compile_post(post, None, &mut sources);
     let post = compiled.post.unwrap();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    let options = RunOptions { exact_arcs, ..postc_frontends::run_options(&post) };
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
+    let options = RunOptions { exact_arcs, ..postc_driver::run_options(&post) };
     match postc_runtime::run(&post, &mut source, Output::memory(), options).unwrap().output {
         Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
         _ => unreachable!(),

@@ -11,8 +11,8 @@
 
 use std::path::{Path, PathBuf};
 
-use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Event, Post};
+use postc_reader_native::{Syntax, write_event};
 
 use crate::support;
 
@@ -44,7 +44,7 @@ fn corpus_posts() -> Vec<(PathBuf, Post)> {
 
 fn read_events(path: &Path) -> Vec<Event> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(path, &mut sources).expect("a corpus toolpath opens");
+    let mut source = postc_driver::open_toolpath(path, &mut sources).expect("a corpus toolpath opens");
     let mut diagnostics = Vec::new();
     let mut events = Vec::new();
     while let Some((event, _)) = source.next_event(&mut diagnostics) {

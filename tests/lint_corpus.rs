@@ -11,7 +11,7 @@ use crate::support::{corpus, files};
 
 fn lint(path: &Path) -> Option<Vec<postc_ir::Diagnostic>> {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     let post = compiled.post?;
     Some(postc_lint::lint(&post, &postc_lint::Options::default()))
 }

@@ -28,15 +28,15 @@ const JOB: &str = "corpus/toolpaths/seed_job.ron";
 
 fn compile(text: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new("gcode_mm.pp"), text.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("gcode_mm.pp"), text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     compiled.post.unwrap()
 }
 
 fn post(post: &Post) -> String {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(post)) {
+    let mut source = postc_driver::open_toolpath(&root().join(JOB), &mut sources).unwrap();
+    match postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), postc_driver::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),
@@ -51,8 +51,8 @@ fn plot(text: &str) -> (String, usize) {
     let program = post(&post_ir);
     let mut sources = postc_report::source_map();
     let file = sources.add("seed.tap", program.clone());
-    let mut drawn = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
-    let mut again = postc_frontends::open_toolpath(&root().join(JOB), &mut sources).unwrap();
+    let mut drawn = postc_driver::open_toolpath(&root().join(JOB), &mut sources).unwrap();
+    let mut again = postc_driver::open_toolpath(&root().join(JOB), &mut sources).unwrap();
     let settings = Settings::from_post(&post_ir, postc_verify::Controller::Generic, 0.01);
     let (plot, report) = postc_verify::plot::draw(
         &mut Cursor::new(program.as_bytes()),

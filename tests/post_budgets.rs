@@ -87,12 +87,11 @@ fn slowly_growing_text_meets_the_step_budget_soon() {
 #[test]
 fn the_scripted_post_really_runs_as_a_script() {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new("s.js"), SCRIPT_JS.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("s.js"), SCRIPT_JS.as_bytes(), None, &mut sources);
     let post = compiled.post.unwrap();
     let f = post.functions.iter().find(|f| f.name == "onLinear").unwrap();
     assert!(matches!(f.body, postc_ir::Body::Script(_)));
-    let f =
-        postc_frontends::compile_post_bytes(Path::new("n.js"), NATIVE_JS.as_bytes(), None, &mut sources).post.unwrap();
+    let f = postc_driver::compile_post_bytes(Path::new("n.js"), NATIVE_JS.as_bytes(), None, &mut sources).post.unwrap();
     let f = f.functions.iter().find(|f| f.name == "onLinear").unwrap();
     assert!(matches!(f.body, postc_ir::Body::Native(_)));
 }

@@ -15,12 +15,8 @@ use postp::{check, interpret, root, rs274, run, run_with};
 fn every_embedded_post_compiles_without_a_diagnostic() {
     for c in Controller::ALL {
         let mut sources = postc_report::source_map();
-        let compiled = postc_frontends::compile_post_bytes(
-            std::path::Path::new(&c.post_name()),
-            c.post_source(),
-            None,
-            &mut sources,
-        );
+        let compiled =
+            postc_driver::compile_post_bytes(std::path::Path::new(&c.post_name()), c.post_source(), None, &mut sources);
         assert!(compiled.diagnostics.is_empty(), "{c}: {:?}", compiled.diagnostics);
     }
 }

@@ -11,7 +11,7 @@ use postc_ir::{HandlerKey, Post, Section};
 
 fn compile(js: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new("t.js"), js.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("t.js"), js.as_bytes(), None, &mut sources);
     compiled.post.unwrap_or_else(|| panic!("compiles: {:?}", compiled.diagnostics))
 }
 
@@ -54,10 +54,10 @@ fn expression_functions_are_inlined_into_the_prepared_handlers() {
 fn a_ron_post_is_prepared_as_its_source() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/posts/cimco/fanuc_mill.js");
     let mut sources = postc_report::source_map();
-    let post = postc_frontends::compile_post(&path, None, &mut sources).post.expect("fanuc_mill.js compiles");
+    let post = postc_driver::compile_post(&path, None, &mut sources).post.expect("fanuc_mill.js compiles");
     let ron = postc_backends::ron::print(&post).expect("prints as RON");
     let mut sources = postc_report::source_map();
-    let back = postc_frontends::compile_post_bytes(Path::new("fanuc_mill.ron"), ron.as_bytes(), None, &mut sources)
+    let back = postc_driver::compile_post_bytes(Path::new("fanuc_mill.ron"), ron.as_bytes(), None, &mut sources)
         .post
         .expect("the RON post reads back");
     // RON keeps no spans (they point into the source), so neither do the
@@ -111,7 +111,7 @@ fn write_block_post(on_linear: &str, feeds: &[(f64, f64)]) -> (String, String) {
     events.push(Event::End);
     let mut source = VecSource::new(events, postc_ir::FileId(0));
     let report =
-        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_frontends::run_options(&post))
+        postc_runtime::run(&post, &mut source, postc_runtime::Output::memory(), postc_driver::run_options(&post))
             .expect("posts");
     let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
     (handler, String::from_utf8_lossy(&parts.concat()).into_owned())

@@ -39,8 +39,8 @@ fn posts(dir: &Path) -> Vec<PathBuf> {
 fn post_standard(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
     let mut source =
-        postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+        postc_driver::open_toolpath(toolpath, &mut sources).map_err(|d| format!("{} {}", d.code, d.message))?;
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("a memory run did not finish in memory".into()),
@@ -87,7 +87,7 @@ fn every_real_vectric_post_compiles_and_posts_the_standard_job_the_same_way_twic
         let name = path.strip_prefix(&shared).unwrap_or(path).display().to_string();
         let result = guarded(|| {
             let mut sources = postc_report::source_map();
-            let compiled = postc_frontends::compile_post(path, None, &mut sources);
+            let compiled = postc_driver::compile_post(path, None, &mut sources);
             if has_errors(&compiled.diagnostics) {
                 let errors: Vec<String> = compiled
                     .diagnostics

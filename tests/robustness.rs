@@ -19,7 +19,7 @@ fn corpus_posts() -> Vec<Post> {
         .filter(|p| p.extension().is_some_and(|e| e == "pp"))
         .map(|p| {
             let mut sources = postc_report::source_map();
-            postc_frontends::compile_post(p, None, &mut sources).post.unwrap()
+            postc_driver::compile_post(p, None, &mut sources).post.unwrap()
         })
         .collect()
 }
@@ -103,7 +103,7 @@ proptest! {
         for post in &posts {
             let mut source = VecSource::new(all.clone(), FileId(0));
             // Errors are fine; panics and hangs are not.
-            let _ = run(post, &mut source, Output::memory(), postc_frontends::run_options(post));
+            let _ = run(post, &mut source, Output::memory(), postc_driver::run_options(post));
         }
     }
 }
@@ -130,7 +130,7 @@ fn a_tiny_peck_does_not_hang() {
     ];
     for post in corpus_posts() {
         let mut source = VecSource::new(events.clone(), FileId(0));
-        let report = run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)).unwrap();
+        let report = run(&post, &mut source, Output::memory(), postc_driver::run_options(&post)).unwrap();
         assert!(report.warnings.iter().any(|w| w.code == "RT018"), "{:?}", report.warnings);
     }
 }

@@ -91,7 +91,7 @@ impl Wrap {
 /// The toolpath's moves in the post's units, and the post's wrap.
 fn expected_moves(toolpath: &Path, post: &Post) -> (Vec<Expected>, Option<Wrap>) {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
     let mut diags = Vec::new();
     let mut factor = 1.0;
     let mut wrap = None;
@@ -187,7 +187,7 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy();
         let mut sources = postc_report::source_map();
-        let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
+        let compiled = postc_driver::compile_post(post_path, None, &mut sources);
         assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
         let post = compiled.post.unwrap();
         if !GCODE_EXTENSIONS.contains(&post.info.file_extension.to_ascii_lowercase().as_str()) {
@@ -195,9 +195,9 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
         }
         for toolpath in &toolpaths {
             let label = format!("{name} over {}", toolpath.file_name().unwrap().to_string_lossy());
-            let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+            let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
             let program =
-                match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
+                match postc_runtime::run(&post, &mut source, Output::memory(), postc_driver::run_options(&post)) {
                     Ok(r) => match r.output {
                         Finished::Memory(parts) => parts,
                         _ => unreachable!(),

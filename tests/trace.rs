@@ -26,18 +26,18 @@ type RawTrace = Rc<RefCell<Vec<(usize, u64, Option<Span>)>>>;
 /// parts and the trace, or `None` when the post does not post it.
 fn traced(path: &Path, toolpath: &Path) -> Option<(Dialect, Vec<Vec<u8>>, Vec<Traced>)> {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     let post = compiled.post?;
     let script_functions: Vec<Span> =
         post.functions.iter().filter(|f| matches!(f.body, postc_ir::Body::Script(_))).filter_map(|f| f.span).collect();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).ok()?;
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).ok()?;
     let raw: RawTrace = Rc::default();
     let sink = Rc::clone(&raw);
     let options = RunOptions {
         trace: Some(Box::new(move |t: &postc_runtime::trace::TraceLine<'_>| {
             sink.borrow_mut().push((t.part, t.line, t.span))
         })),
-        ..postc_frontends::run_options(&post)
+        ..postc_driver::run_options(&post)
     };
     let report = postc_runtime::run(&post, &mut source, Output::memory(), options).ok()?;
     let Finished::Memory(parts) = report.output else { panic!("a memory run did not finish in memory") };

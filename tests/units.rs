@@ -25,7 +25,7 @@ fn root() -> PathBuf {
 /// The end points of the toolpath's moves, in millimetres.
 fn toolpath_mm(toolpath: &Path) -> Vec<[f64; 3]> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
     let (mut diags, mut ends, mut mm) = (Vec::new(), Vec::new(), 1.0);
     while let Some((event, _)) = source.next_event(&mut diags) {
         match event {
@@ -42,7 +42,7 @@ fn toolpath_mm(toolpath: &Path) -> Vec<[f64; 3]> {
 
 fn compile(path: &Path, text: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(path, text.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(path, text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
     compiled.post.unwrap()
 }

@@ -204,14 +204,14 @@ fn rebuild(program: &str) -> Rebuilt {
 
 fn compile(path: &Path) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
     compiled.post.expect("a compiled post")
 }
 
 fn post_events(post: &Post, events: Vec<Event>) -> Vec<u8> {
     let mut source = VecSource::new(events, FileId(0));
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => parts.concat(),
             _ => unreachable!("a memory run"),

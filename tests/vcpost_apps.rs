@@ -15,7 +15,7 @@ fn root() -> PathBuf {
 }
 
 fn compile(text: &str, sources: &mut SourceMap) -> (Post, Vec<postc_ir::Diagnostic>) {
-    let compiled = postc_frontends::compile_post_bytes(Path::new("t.VcPost"), text.as_bytes(), None, sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("t.VcPost"), text.as_bytes(), None, sources);
     (compiled.post.unwrap(), compiled.diagnostics)
 }
 
@@ -33,8 +33,8 @@ fn runaway(body: &str, budget: Option<u64>) -> (String, usize) {
     if let Some(b) = budget {
         post.options.step_budget = b;
     }
-    let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
-    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)) {
+    let mut source = postc_driver::open_toolpath(&toolpath(), &mut sources).unwrap();
+    let errors = match postc_runtime::run(&post, &mut source, Output::memory(), postc_driver::run_options(&post)) {
         Ok(_) => panic!("{body}: the runaway loop was not stopped"),
         Err(d) => d,
     };
@@ -66,9 +66,9 @@ fn a_number_that_is_not_finite_stops_at_its_out() {
 fn endless_recursion_stops() {
     let mut sources = postc_report::source_map();
     let (post, _) = compile("Sub Again\n  Again\nEnd Sub\nSub GOTO\n  Again\nEnd Sub\n", &mut sources);
-    let mut source = postc_frontends::open_toolpath(&toolpath(), &mut sources).unwrap();
+    let mut source = postc_driver::open_toolpath(&toolpath(), &mut sources).unwrap();
     let errors =
-        postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post)).err().unwrap();
+        postc_runtime::run(&post, &mut source, Output::memory(), postc_driver::run_options(&post)).err().unwrap();
     assert!(errors.iter().any(|d| d.code == "RT004"), "{errors:?}");
 }
 
@@ -110,7 +110,7 @@ fn composites_functions_read_the_calls_lists() {
         SubCall { sub: "Optional".into(), vars: Vec::new(), span: Span::default(), missing: MissingSub::Skip },
     ];
     let report = postc_runtime::calls::run_calls(
-        &postc_frontends::for_calls(&post),
+        &postc_driver::for_calls(&post),
         &mut calls.into_iter(),
         Output::memory(),
         RunOptions::default(),

@@ -55,7 +55,7 @@ fn extension(post: &str) -> &'static str {
 fn compile(stem: &str) -> Result<Post, String> {
     let path = root().join("corpus/posts/vcpost").join(format!("{stem}.VcPost"));
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(&path, None, &mut sources);
+    let compiled = postc_driver::compile_post(&path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         return Err(format!("{stem}: {}", sources.render(&compiled.diagnostics, false)));
     }
@@ -87,7 +87,7 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
             return Err(sources.render(&diagnostics, false));
         }
         let result = postc_runtime::calls::run_calls(
-            &postc_frontends::for_calls(post),
+            &postc_driver::for_calls(post),
             &mut calls.into_iter(),
             Output::memory(),
             RunOptions::default(),
@@ -97,15 +97,15 @@ fn run(post: &Post, input: &Path) -> Result<Vec<u8>, String> {
         let mut reader =
             postc_front_vcpost::composites::open(input, &mut sources, post, Vec::new()).map_err(|d| d.message)?;
         let result = postc_runtime::calls::run_calls(
-            &postc_frontends::for_calls(post),
+            &postc_driver::for_calls(post),
             &mut reader,
             Output::memory(),
             RunOptions::default(),
         );
         memory(result, &mut sources)
     } else {
-        let mut source = postc_frontends::open_toolpath(input, &mut sources).map_err(|d| d.message)?;
-        let result = postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post));
+        let mut source = postc_driver::open_toolpath(input, &mut sources).map_err(|d| d.message)?;
+        let result = postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post));
         memory(result, &mut sources)
     }
 }

@@ -54,7 +54,7 @@ impl From<&Motion> for Move {
 /// `None` when the file does not read without errors.
 fn expected(toolpath: &Path, tol: f64) -> Option<Vec<Move>> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).ok()?;
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).ok()?;
     let (mut diags, mut moves, mut at) = (Vec::new(), Vec::new(), [f64::NAN; 3]);
     while let Some((event, _)) = source.next_event(&mut diags) {
         let (kind, end, centre, rotation, plane) = match event {
@@ -92,8 +92,8 @@ fn matches(e: &Move, c: &Move, tol: f64) -> bool {
 
 fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(mut parts) if parts.len() == 1 => Ok(parts.remove(0)),
             _ => Err("not one program in memory".into()),
@@ -116,7 +116,7 @@ fn toolpaths() -> Vec<PathBuf> {
             list(vendor, &mut out);
         }
     }
-    out.retain(|p| postc_frontends::is_toolpath(p, &postc_report::FsLoader));
+    out.retain(|p| postc_driver::is_toolpath(p, &postc_report::FsLoader));
     out.sort();
     out
 }
@@ -129,7 +129,7 @@ fn fanuc_mill_reads_in_rs274_with_every_goto_and_circle() {
     };
     let mut sources = postc_report::source_map();
     let compiled =
-        postc_frontends::compile_post(&root().join("corpus/posts/vcpost/fanuc_mill.VcPost"), None, &mut sources);
+        postc_driver::compile_post(&root().join("corpus/posts/vcpost/fanuc_mill.VcPost"), None, &mut sources);
     assert!(compiled.diagnostics.is_empty(), "{:?}", compiled.diagnostics);
     let post = compiled.post.unwrap();
     let tol = 1e-4 + 1e-4;

@@ -23,7 +23,7 @@ fn real_post(rel: &str) -> Option<PathBuf> {
 
 fn compile(path: &Path) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
     compiled.post.expect("a compiled post")
 }
@@ -34,8 +34,8 @@ fn text(parts: Vec<Vec<u8>>) -> String {
 
 fn post_file(post: &Post, toolpath: &Path) -> String {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("open the toolpath");
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).expect("open the toolpath");
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),
@@ -46,7 +46,7 @@ fn post_file(post: &Post, toolpath: &Path) -> String {
 
 fn post_events(post: &Post, events: Vec<Event>) -> String {
     let mut source = VecSource::new(events, FileId(0));
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => text(parts),
             _ => unreachable!("a memory run"),
@@ -339,12 +339,12 @@ fn lua_scripts_are_kept_and_not_run() {
         begin HEADER\n\"%\"\n\"<!>Hello()\"\nbegin RAPID_MOVE\n\"G0[X][Y][Z]\"\nbegin FEED_MOVE\n\"G1[X][Y][Z]\"\n\
         begin FOOTER\n\"%\"\nSCRIPT\nfunction Hello()\n  return \"x\"\nend\nENDSCRIPT\n";
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new("lua.pp"), pp.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("lua.pp"), pp.as_bytes(), None, &mut sources);
     let post = compiled.post.expect("a compiled post");
-    assert!(!post.scripts.is_empty() && postc_frontends::script_host(&post).is_none());
+    assert!(!post.scripts.is_empty() && postc_driver::script_host(&post).is_none());
     let toolpath = manifest().join("corpus/toolpaths/arcs_mm.ron");
-    let mut source = postc_frontends::open_toolpath(&toolpath, &mut sources).expect("open the toolpath");
-    let report = postc_runtime::run(&post, &mut source, Output::memory(), postc_frontends::run_options(&post))
+    let mut source = postc_driver::open_toolpath(&toolpath, &mut sources).expect("open the toolpath");
+    let report = postc_runtime::run(&post, &mut source, Output::memory(), postc_driver::run_options(&post))
         .expect("the post runs");
     assert!(report.warnings.iter().any(|w| w.code == "RT003"), "{:?}", report.warnings);
     let Finished::Memory(parts) = report.output else { unreachable!("a memory run") };

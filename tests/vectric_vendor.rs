@@ -13,7 +13,7 @@ use postc_runtime::{Finished, Output, RunOptions};
 /// Compiles a post from its text; any error fails the test.
 fn compile(name: &str, text: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
     compiled.post.expect("a compiled post")
 }
@@ -30,7 +30,7 @@ fn run(post: &Post, events: Vec<Event>, options: RunOptions) -> String {
 }
 
 fn post(post: &Post, events: Vec<Event>) -> String {
-    run(post, events, postc_frontends::run_options(post))
+    run(post, events, postc_driver::run_options(post))
 }
 
 /// The ShopSabre post's variables and move sections (`../shared/vcarve-real/`).
@@ -233,7 +233,7 @@ fn a_negative_value_that_rounds_to_zero_keeps_its_minus() {
 fn the_date_prints_in_the_long_form() {
     let pp = "POST_NAME = \"date\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"MM\"\nbegin HEADER\n\"( [DATE] )\"\n";
     let post = compile("date.pp", pp);
-    let options = RunOptions { now: Some(1_321_358_400), ..postc_frontends::run_options(&post) };
+    let options = RunOptions { now: Some(1_321_358_400), ..postc_driver::run_options(&post) };
     assert_eq!(run(&post, vec![Event::Job(Box::default()), Event::End], options), "( Tuesday, November 15, 2011 )\r\n");
 }
 

@@ -153,8 +153,8 @@ fn files(dir: &Path, ext: &[&str], recurse: bool) -> Vec<PathBuf> {
 
 fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts.concat()),
             _ => Err("not in memory".into()),
@@ -168,7 +168,7 @@ fn post_program(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
 fn verify(post: &Post, controller: Controller, program: &[u8], toolpath: &Path) -> Vec<(&'static str, usize, String)> {
     let mut sources = postc_report::source_map();
     let file = sources.add("program", String::from_utf8_lossy(program).into_owned());
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("toolpath opens");
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).expect("toolpath opens");
     let settings = Settings::from_post(post, controller, 0.01);
     let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, &settings);
     report
@@ -202,7 +202,7 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
     for post_path in &posts {
         let name = post_path.file_name().unwrap().to_string_lossy().into_owned();
         let mut sources = postc_report::source_map();
-        let compiled = postc_frontends::compile_post(post_path, None, &mut sources);
+        let compiled = postc_driver::compile_post(post_path, None, &mut sources);
         let errors = compiled.has_errors();
         let Some(post) = compiled.post.filter(|_| !errors) else { continue };
         let ext = post.info.file_extension.to_ascii_lowercase();

@@ -57,15 +57,15 @@ fn good_post() -> String {
 
 fn compile(text: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post_bytes(Path::new("seeded.pp"), text.as_bytes(), None, &mut sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new("seeded.pp"), text.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     compiled.post.unwrap()
 }
 
 fn post(post: &Post, toolpath: &Path) -> String {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(r) => match r.output {
             Finished::Memory(parts) => String::from_utf8(parts.concat()).unwrap(),
             _ => unreachable!(),
@@ -86,7 +86,7 @@ struct Found {
 fn verify(program: &[u8], toolpath: &Path, settings: &Settings) -> Vec<Found> {
     let mut sources = postc_report::source_map();
     let file = sources.add("program.ngc", String::from_utf8_lossy(program).into_owned());
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).unwrap();
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
     let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, settings);
     report
         .findings

@@ -51,7 +51,7 @@ fn cl_files(dir: &Path, out: &mut Vec<PathBuf>) {
         let path = entry.path();
         if path.is_dir() {
             cl_files(&path, out);
-        } else if postc_frontends::is_toolpath(&path, &postc_report::FsLoader)
+        } else if postc_driver::is_toolpath(&path, &postc_report::FsLoader)
             && path.metadata().is_ok_and(|m| m.len() <= MAX_BYTES)
         {
             out.push(path);
@@ -90,7 +90,7 @@ fn postp_mill_programs_verify_against_their_cl_files() {
             };
             let file_id = sources.add("program", String::from_utf8_lossy(&program).into_owned());
             // The events postp posts from: the CL reader's, through postp's transform.
-            let reader = postc_frontends::open_toolpath(file, &mut sources).unwrap();
+            let reader = postc_driver::open_toolpath(file, &mut sources).unwrap();
             let machine_data = Machine {
                 kind: machine.kind(),
                 name: machine.name(),

@@ -93,7 +93,7 @@ pub const PREFIXES: &[(&str, &str)] = &[
     ("CP", "VcPost composites event files"),
     ("CL", "APT CL files (`readers/apt`)"),
     ("PX", "`postc postp` and its controllers (`postp/`)"),
-    ("TP", "native toolpaths (`frontends/src/native.rs`)"),
+    ("TP", "native toolpaths (`readers/native`)"),
     ("RT", "the runtime, while posting"),
     ("IO", "files and the command line"),
     ("IR", "posts written as IR"),
@@ -1031,14 +1031,14 @@ declare_codes! {
     /// error, names an unknown routine or variable, misses a variable its routine carries, or has
     /// a value of the wrong type.
     CP001: Error, "a line that is not a call of the file's kind (syntax, unknown routine or variable, a missing variable, a wrong type)",
-        fix = "Correct the call; each call carries every variable seed 003 lists for its routine (docs/vcpost.md has the list).";
+        fix = "Correct the call; each call carries every variable Vericut's application notes list for its routine (docs/vcpost.md has the list).";
     /// A composites event file starts with its `VcpFile` header line.
     CP002: Error, "the first line is not the `VcpFile` header",
         fix = "Add the header the file's kind needs as the first line.";
     /// The calls of a composites event file follow a sequence (Vericut's post-processor notes); this call is not
     /// allowed at this place in it.
     CP003: Error, "a call the sequence does not allow here",
-        fix = "Reorder the calls; docs/vcpost.md has the sequences seed 003 allows.";
+        fix = "Reorder the calls; docs/vcpost.md has the sequences Vericut's application notes allow.";
     /// The file ends before its sequence does (a call the sequence needs is missing at the end).
     CP004: Error, "the file ends before its sequence does",
         fix = "Add the missing calls.";
@@ -1597,7 +1597,7 @@ declare_codes! {
     /// With `postc check --product NAME`: the chosen Vectric product's post processor does not
     /// support this statement, section or variable (the 2012 Vectric post guide's table); that product rejects it or
     /// silently ignores it.
-    LN006: Warning, "with `--product`: a statement, section or variable that Vectric product does not support, or accepts and ignores (seed 000's table)",
+    LN006: Warning, "with `--product`: a statement, section or variable that Vectric product does not support, or accepts and ignores (the 2012 Vectric post guide's table)",
         fix = "Remove it, or use the post with a product that supports it.";
     /// A variable is declared and never printed (a Vectric `VAR` under a name of the post's own,
     /// a CIMCO `createVariable`). It is dead text a reader must still understand, and often a

@@ -2,7 +2,7 @@
 //!
 //! Frontends build posts that hold these by construction; a post read from
 //! RON holds whatever its text says. [`validate`] runs on every post before
-//! the runtime or a backend sees it (`postc_frontends::compile_post_bytes`),
+//! the runtime or a backend sees it (`postc_driver::compile_post_bytes`),
 //! so that they can index without checking:
 //!
 //! - every id is in range: variables' formats, `Var`/`Previous`/`Forget`/
@@ -11,7 +11,7 @@
 //! - a native function has at least as many slots as parameters;
 //! - a regular expression's flags are among `g`, `i`, `m`, each at most
 //!   once (whether its pattern is one postc runs is the runtime's to say:
-//!   `postc_frontends` compiles each pattern after validating);
+//!   `postc_driver` compiles each pattern after validating);
 //! - numbers that steer the output are finite and sensible: format
 //!   multipliers, the decimal mark (ASCII), block numbering, the chord
 //!   tolerance (above zero), arc radius limits, tape splitting (at least

@@ -161,7 +161,7 @@ pub(crate) mod tests {
 
     fn compile(name: &str, text: &str, product: Option<Product>) -> Vec<Diagnostic> {
         let mut sources = SourceMap::new();
-        let compiled = postc_frontends::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
+        let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
         let post = compiled.post.unwrap_or_else(|| panic!("does not compile: {:?}", compiled.diagnostics));
         crate::lint(&post, &Options { product })
     }

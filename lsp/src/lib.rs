@@ -2,7 +2,7 @@
 //! `.pp`, CIMCO `.js` and Vericut `.VcPost` posts (`docs/editors.md`).
 //!
 //! - Diagnostics on open and on every change: the document's text is
-//!   compiled by `postc_frontends::compile_post_bytes` with the dialect of
+//!   compiled by `postc_driver::compile_post_bytes` with the dialect of
 //!   its extension; every diagnostic of the document itself becomes an LSP
 //!   diagnostic with its code and `source: "postc"`. Those of other files
 //!   (a Vectric `POST_BASE`) are shown at the top of the document, named.
@@ -289,7 +289,7 @@ fn diagnose(uri: &Uri, doc: &Document, loader: &Arc<dyn SourceLoader>) -> Vec<Di
     // A frontend bug must not take the editor's server down with it: the
     // panic becomes one diagnostic at the top of the document.
     let compiled = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        let mut compiled = postc_frontends::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources);
+        let mut compiled = postc_driver::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources);
         // The lints, as `postc check` runs them, on a post that compiles.
         if let Some(post) = &compiled.post
             && !postc_ir::diagnostic::has_errors(&compiled.diagnostics)

@@ -61,7 +61,7 @@ pub struct Head {
 
 /// Reads the head of a CL file: MACHIN and the units.
 pub fn head(cl: &Path, forced: Option<Controller>, sources: &mut SourceMap) -> Result<Head, Vec<Diagnostic>> {
-    let mut reader = postc_frontends::open_toolpath(cl, sources).map_err(|d| vec![d])?;
+    let mut reader = postc_driver::open_toolpath(cl, sources).map_err(|d| vec![d])?;
     let mut diags = Vec::new();
     let mut units = Units::Mm;
     let mut before: Option<Span> = None;
@@ -179,8 +179,7 @@ fn offset(text: &str, line: usize, col: usize) -> usize {
 pub fn compile(head: &Head, options: &Options, sources: &mut SourceMap) -> Result<Post, Vec<Diagnostic>> {
     let c = head.controller;
     let name = c.post_name();
-    let compiled =
-        postc_frontends::compile_post_bytes(Path::new(&name), c.post_source(), Some(Dialect::VcPost), sources);
+    let compiled = postc_driver::compile_post_bytes(Path::new(&name), c.post_source(), Some(Dialect::VcPost), sources);
     match compiled.post {
         Some(mut post) if !compiled.has_errors() => {
             options.inject(&mut post, head.units, head.axis_type, c.name());
@@ -225,7 +224,7 @@ pub fn post_compiled(
     out: Output,
     sources: &mut SourceMap,
 ) -> Result<RunReport, Vec<Diagnostic>> {
-    let reader = postc_frontends::open_toolpath(cl, sources).map_err(|d| vec![d])?;
+    let reader = postc_driver::open_toolpath(cl, sources).map_err(|d| vec![d])?;
     let machine = Machine {
         kind: head.controller.kind(),
         name: head.controller.name(),
@@ -234,7 +233,7 @@ pub fn post_compiled(
     };
     let mut source = Transform::new(reader, machine);
     // No file name: the program's first PARTNO is the CL file's own.
-    let run = RunOptions { file: Some(FileInfo::default()), now, ..postc_frontends::run_options(post) };
+    let run = RunOptions { file: Some(FileInfo::default()), now, ..postc_driver::run_options(post) };
     let prepend = |mut d: Vec<Diagnostic>| {
         d.splice(0..0, head.warnings.iter().cloned());
         d

@@ -474,7 +474,7 @@ impl std::ops::Deref for Text {
 /// A regular expression literal: its pattern compiled once, when the post
 /// is prepared, and shared by every value the literal makes (they keep no
 /// state: [`crate::regex`]); or why postc cannot run it, reported with
-/// code JS108 when the literal is evaluated (`postc_frontends` refuses
+/// code JS108 when the literal is evaluated (`postc_driver` refuses
 /// such a post when it is compiled; a post built some other way meets it
 /// here).
 #[derive(Clone, Debug)]

@@ -94,7 +94,7 @@ pub struct RunOptions {
     /// Called with the number of events handled, every 65536 events.
     pub progress: Option<Box<dyn FnMut(u64)>>,
     /// Builds the host that runs the post's scripts, if it has any
-    /// (`postc_frontends::script_host` picks it by the scripts' language).
+    /// (`postc_driver::script_host` picks it by the scripts' language).
     pub script_host: Option<script_host::ScriptHostFactory>,
     /// Called with the provenance of every block written (`--trace`).
     pub trace: Option<trace::TraceSink>,

@@ -2,7 +2,7 @@
 //! scripts (`Body::Script`), without knowing their language.
 //!
 //! The runtime names no script language and no dialect. Whoever runs a
-//! post (the command line, `postc_frontends::script_host`, tests) hands
+//! post (the command line, `postc_driver::script_host`, tests) hands
 //! [`run`](crate::run) a [`ScriptHostFactory`] in
 //! [`RunOptions::script_host`](crate::RunOptions::script_host); the
 //! runtime calls it once per run, after the engine is built and before

@@ -10,7 +10,7 @@ use postc_ir::{Diagnostic, EventSource, SourceMap};
 use postc_runtime::{Output, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
-use postc_frontends::synthetic::{PATTERNS, Synthetic};
+use postc_reader_synthetic::{PATTERNS, Synthetic};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -43,7 +43,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
     let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
     let (mut source, total): (Box<dyn EventSource>, Option<u64>) = match &args.toolpath {
-        Some(path) => (postc_frontends::open_toolpath(path, &mut sources).map_err(|d| fail(&mut sources, d))?, None),
+        Some(path) => (postc_driver::open_toolpath(path, &mut sources).map_err(|d| fail(&mut sources, d))?, None),
         None => match Synthetic::new(&args.pattern, args.moves) {
             Some(s) => (Box::new(s), Some(args.moves)),
             None => {
@@ -56,7 +56,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         },
     };
     let mut options =
-        postc_runtime::RunOptions { script_host: postc_frontends::script_host(&post), ..super::clock::run_options() };
+        postc_runtime::RunOptions { script_host: postc_driver::script_host(&post), ..super::clock::run_options() };
     let profiler = args.profile.then(super::profile::Profiler::default);
     if let Some(p) = &profiler {
         options.profile = Some(Box::new(p.clone()));

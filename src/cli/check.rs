@@ -58,7 +58,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let mut all: Vec<(String, Diagnostic)> = Vec::new();
     for file in &args.files {
         let name = file.display().to_string();
-        if args.fix && file.exists() && !postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
+        if args.fix && file.exists() && !postc_driver::is_toolpath(file, &postc_report::FsLoader) {
             match fix(file, args.dialect) {
                 Ok(0) => {}
                 Ok(n) => eprintln!("postc: fixed {n} problem(s) in `{name}`"),
@@ -70,10 +70,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         let diagnostics = if !file.exists() {
             vec![Diagnostic::error(codes::IO001, super::missing(file))]
-        } else if postc_frontends::is_toolpath(file, &postc_report::FsLoader) {
-            postc_frontends::check_toolpath(file, &mut sources)
+        } else if postc_driver::is_toolpath(file, &postc_report::FsLoader) {
+            postc_driver::check_toolpath(file, &mut sources)
         } else {
-            let compiled = postc_frontends::compile_post(file, args.dialect.map(Into::into), &mut sources);
+            let compiled = postc_driver::compile_post(file, args.dialect.map(Into::into), &mut sources);
             let mut diagnostics = compiled.diagnostics;
             if let Some(post) = &compiled.post
                 && !postc_ir::diagnostic::has_errors(&diagnostics)
@@ -115,7 +115,7 @@ fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Dia
     let bytes = std::fs::read(file).map_err(io)?;
     let dialect = match dialect {
         Some(d) => d.into(),
-        None => match postc_frontends::post_dialect(file, &bytes) {
+        None => match postc_driver::post_dialect(file, &bytes) {
             Some(d) => d,
             None => return Ok(0),
         },

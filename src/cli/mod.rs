@@ -1,4 +1,4 @@
-//! Command-line interface: the contract of BRIEF.md.
+//! Command-line interface: the commands, arguments and exit statuses of the product's contract.
 //!
 //! ```text
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
@@ -166,8 +166,8 @@ pub(crate) fn load_post_with(
     rules: &LevelRules,
 ) -> Result<Post, Failed> {
     let mut compiled = match path {
-        Some(p) => postc_frontends::compile_post(p, dialect.map(Into::into), sources),
-        None => postc_frontends::compile_post_bytes(
+        Some(p) => postc_driver::compile_post(p, dialect.map(Into::into), sources),
+        None => postc_driver::compile_post_bytes(
             std::path::Path::new(crate::default_post::NAME),
             crate::default_post::TEXT,
             Some(Dialect::Vectric),

@@ -119,8 +119,8 @@ pub fn run(args: Args) -> Result<(), Failed> {
     }
     if let Some(post) = post_path
         && args.dialect.is_none()
-        && postc_frontends::is_toolpath(post, &postc_report::FsLoader)
-        && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader)
+        && postc_driver::is_toolpath(post, &postc_report::FsLoader)
+        && !postc_driver::is_toolpath(toolpath, &postc_report::FsLoader)
         && toolpath.exists()
     {
         return Err(fail(
@@ -132,7 +132,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             .help(format!("postc post {} {}", toolpath.display(), post.display())),
         ));
     }
-    if post_path.is_none() && !postc_frontends::is_toolpath(toolpath, &postc_report::FsLoader) {
+    if post_path.is_none() && !postc_driver::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
             &mut sources,
             Diagnostic::error(codes::IO006, format!("`{}` is not a toolpath", toolpath.display()))
@@ -143,14 +143,14 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let post = load_post_with(post_path, args.dialect, &mut sources, &rules)?;
     let mut options = RunOptions {
         exact_arcs: args.exact_arcs,
-        script_host: postc_frontends::script_host(&post),
+        script_host: postc_driver::script_host(&post),
         ..super::clock::run_options()
     };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));
     }
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).map_err(|d| fail(&mut sources, d))?;
     let batch = super::outputs::Batch::default();
     let program: Box<dyn Sink> = match &args.output {
         Some(path) => Box::new(

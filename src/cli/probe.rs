@@ -120,7 +120,7 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
         let bar = indicatif::ProgressBar::new_spinner();
         options.progress = Some(Box::new(move |calls| bar.set_message(format!("ran {calls} calls"))));
     }
-    match postc_runtime::calls::run_calls(&postc_frontends::for_calls(&post), &mut source, out, options) {
+    match postc_runtime::calls::run_calls(&postc_driver::for_calls(&post), &mut source, out, options) {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
             if job.verify {

@@ -4,12 +4,12 @@ use postc_ir::codes;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{Diagnostic, EventSource};
+use postc_reader_native::{Syntax, write_event};
 
 use super::outputs::{Batch, Temp};
 use super::{Failed, fail};
-use postc_frontends::synthetic::{PATTERNS, Synthetic};
+use postc_reader_synthetic::{PATTERNS, Synthetic};
 
 #[derive(clap::Subcommand, Debug)]
 pub enum Command {

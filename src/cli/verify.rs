@@ -271,7 +271,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
 
 /// The toolpath's events, through postp's transform for a postp program.
 pub(crate) fn toolpath(job: &Job, sources: &mut SourceMap) -> Result<Box<dyn postc_ir::EventSource>, Failed> {
-    let reader_events = postc_frontends::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
+    let reader_events = postc_driver::open_toolpath(job.toolpath, sources).map_err(|d| fail(sources, d))?;
     Ok(match &job.postp {
         Some(machine) => Box::new(postc_postp::transform::Transform::new(reader_events, machine.clone())),
         None => reader_events,

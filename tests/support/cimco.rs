@@ -9,8 +9,8 @@ use std::process::Command;
 
 #[allow(unused_imports)]
 pub use super::{compile, corpus, diff, post_parts, stem};
-use postc_frontends::native::{Syntax, write_event};
 use postc_ir::{EventSource, Post};
+use postc_reader_native::{Syntax, write_event};
 
 /// The corpus CIMCO posts, sorted.
 pub fn posts() -> Vec<PathBuf> {
@@ -56,7 +56,7 @@ pub fn post_toolpath(post: &Post, toolpath: &Path) -> Result<Vec<u8>, String> {
 /// Writes a toolpath as JSON Lines (the referee host's input).
 pub fn export_jsonl(toolpath: &Path, target: &Path) -> Result<(), String> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).map_err(|d| d.message)?;
     let mut text = String::new();
     let mut diags = Vec::new();
     while let Some((event, _)) = source.next_event(&mut diags) {

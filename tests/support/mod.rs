@@ -159,7 +159,7 @@ pub fn stem(path: &Path) -> String {
 /// Compiles a corpus post; any diagnostic (error or warning) is a failure.
 pub fn compile(path: &Path) -> Result<Post, String> {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     if !compiled.diagnostics.is_empty() {
         let list: Vec<String> = compiled.diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
         return Err(format!("{} does not compile cleanly:\n{}", path.display(), list.join("\n")));
@@ -184,9 +184,9 @@ fn root() -> PathBuf {
 /// Posts a toolpath into memory: the parts of the program.
 pub fn post_parts(post: &Post, toolpath: &Path) -> Result<Vec<Vec<u8>>, String> {
     let mut sources = postc_report::source_map();
-    let mut source = postc_frontends::open_toolpath(toolpath, &mut sources)
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources)
         .map_err(|d| format!("cannot open {}: {} {}", toolpath.display(), d.code, d.message))?;
-    match postc_runtime::run(post, &mut source, Output::memory(), postc_frontends::run_options(post)) {
+    match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
         Ok(report) => match report.output {
             Finished::Memory(parts) => Ok(parts),
             _ => Err("a memory run did not finish in memory".into()),

@@ -18,7 +18,7 @@
 //!
 //! `postc convert` prints the post as compiled, with the stubs; the
 //! tables are made when the post is about to run over calls
-//! (`postc_frontends::for_calls`).
+//! (`postc_driver::for_calls`).
 
 use postc_ir::{BinaryOp, Body, CallList, Expr, Global, GlobalId, LocalId, Post, Stmt};
 

@@ -132,7 +132,7 @@ fn routines_the_post_leaves_out() {
         "{subs:?}"
     );
     let modals = calls.iter().find(|c| c.sub == "Modals").unwrap();
-    assert_eq!(modals.vars.len(), 70, "every Modals variable of seed 003");
+    assert_eq!(modals.vars.len(), 70, "every Modals variable of Vericut's application notes");
 }
 
 #[test]

@@ -12,7 +12,7 @@
 //!   blank, the post's own, so no prefix. The 2012 guide's blank is the same
 //!   in every row of its table, so the newer Vectric post guide wins for all of them.
 //! - **Format and modality: the 2012 Vectric post guide where the guides disagree and no
-//!   program shows the label** (the BRIEF's dialect decisions): positions and homes
+//!   program shows the label** (the project's dialect decisions, docs/vectric.md): positions and homes
 //!   `1.3` (the newer Vectric post guide: `1.0`), `[FC]` on change (the newer Vectric post guide: always).
 //! - **Where they agree**, as both write them; the real programs agree
 //!   where they show one (`[XLENGTH]` prints `24.000`, three decimals).

@@ -87,7 +87,7 @@ mod tests {
 
     fn lint(text: &str) -> Vec<postc_ir::Diagnostic> {
         let mut sources = SourceMap::new();
-        let post = postc_frontends::compile_post_bytes(Path::new("t.VcPost"), text.as_bytes(), None, &mut sources)
+        let post = postc_driver::compile_post_bytes(Path::new("t.VcPost"), text.as_bytes(), None, &mut sources)
             .post
             .expect("compiles");
         crate::lint(&post, &crate::Options::default())

@@ -33,7 +33,7 @@
 //! - the drilling and compensation data CNC-Calc hands its entry points
 //!   are host calls (`Expr::Host`) the CIMCO host answers;
 //! - a regular expression literal is `Expr::Regex`, with its span: the
-//!   runtime compiles its pattern once (and `postc_frontends` refuses one
+//!   runtime compiles its pattern once (and `postc_driver` refuses one
 //!   it cannot run when the post is compiled, JS108).
 
 use std::collections::{HashMap, HashSet};

@@ -70,7 +70,7 @@ impl Checked for ProbingCall {
 fn unit(name: &str, v: f64, span: Span, diagnostics: &mut Vec<Diagnostic>) {
     if ![-1.0, 0.0, 1.0].contains(&v) {
         diagnostics.push(
-            Diagnostic::error(codes::CP006, format!("{name} is {v}; seed 003 allows -1, 0 or +1"))
+            Diagnostic::error(codes::CP006, format!("{name} is {v}; Vericut's application notes allow -1, 0 or +1"))
                 .at(span, "in this call"),
         );
     }
@@ -140,7 +140,7 @@ fn add_cut(a: &str, b: &str, i: f64, j: f64, span: Span, diagnostics: &mut Vec<D
     if let Some(message) = problem {
         diagnostics.push(
             Diagnostic::warning(codes::CP008, message).at(span, "in this call").help(
-                "seed 003: AddCutA \"0001111111111100\", AddCutB \"0011111111111000\", AddCutI 8188, AddCutJ 16376",
+                "Vericut's application notes: AddCutA \"0001111111111100\", AddCutB \"0011111111111000\", AddCutI 8188, AddCutJ 16376",
             ),
         );
     }

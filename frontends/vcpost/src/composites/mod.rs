@@ -262,7 +262,7 @@ impl<R: BufRead> CompositesReader<R> {
         Err(Diagnostic::error(code, format!("this line is not a valid call: {message}"))
             .at(at, "here")
             .also(span, "in this call")
-            .help("each call carries every variable seed 003 lists for its routine; docs/vcpost.md has the list"))
+            .help("each call carries every variable Vericut's application notes list for its routine; docs/vcpost.md has the list"))
     }
 
     /// Checks one call against the sequence and the post, and makes its Sub call.
@@ -281,7 +281,7 @@ impl<R: BufRead> CompositesReader<R> {
                 diagnostics.push(
                     Diagnostic::error(codes::CP003, format!("`{}` cannot come here", step.routine))
                         .at(span, format!("expected {}", m.expected))
-                        .help("docs/vcpost.md has the sequences seed 003 allows"),
+                        .help("docs/vcpost.md has the sequences Vericut's application notes allow"),
                 );
                 self.state = if probing { grammar::probing_resync(step) } else { grammar::laying_resync(step) };
             }

@@ -1,6 +1,6 @@
 //! Lints over the compiled post.
 //!
-//! The BRIEF's dialect decisions: arc words ([I] [J] [IA] [JA] [Radius]) come from the
+//! The project's dialect decisions (docs/vectric.md): arc words ([I] [J] [IA] [JA] [Radius]) come from the
 //! unrounded geometry, so a post that prints them more coarsely than its
 //! positions makes arcs whose radius at the start and at the end differ by
 //! more than a controller with a tight radius check accepts. The lint

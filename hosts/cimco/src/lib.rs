@@ -4,7 +4,7 @@
 //! for the functions that do not lower to native IR. The runtime knows
 //! nothing of it: it calls script functions through
 //! [`postc_runtime::script_host::ScriptHost`], and the edge (the command
-//! line, `postc_frontends::script_host`, tests) hands it [`compile`] for a
+//! line, `postc_driver::script_host`, tests) hands it [`compile`] for a
 //! post whose scripts are Rhai.
 //!
 //! - `values`: JavaScript values in Rhai with reference semantics;

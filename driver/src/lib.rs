@@ -1,12 +1,14 @@
-//! postc frontends: finds the dialect of a post or the format of a toolpath
-//! and hands the file to the frontend crate that reads it.
+//! postc's driver: finds the dialect of a post or the format of a toolpath,
+//! hands the file to the crate that reads it, validates what comes back,
+//! picks the script host a post's scripts need, and opens toolpaths (read
+//! ahead on a thread of their own, [`ReadAhead`]).
 //!
 //! - `postc-front-vectric` (`frontends/vectric`): Vectric `.pp` posts;
-//! - `postc-front-cimco` (`frontends/cimco`): CIMCO CNC-Calc JavaScript posts;
+//! - `postc-front-cimco` (`frontends/cimco`): CIMCO CNC-Calc JavaScript posts,
+//!   whose script functions run in `postc-cimco-host` (`hosts/cimco`);
 //! - `postc-front-vcpost` (`frontends/vcpost`): Vericut VcPost posts;
 //! - `postc-reader-apt` (`readers/apt`): APT CL toolpaths;
-//! - [`native`] (here): the native toolpath stream, RON or JSON Lines;
-//! - [`synthetic`] (here): generated toolpaths of any length (`postc toolpath gen`, `postc bench`, the benchmarks);
+//! - `postc-reader-native` (`readers/native`): the native toolpath stream, RON or JSON Lines;
 //! - posts written directly as IR in RON (`.ron`), read here.
 //!
 //! A post's dialect comes from its extension (`.pp`, `.js`, `.VcPost`,
@@ -19,13 +21,7 @@ mod ron_locate;
 
 pub use read_ahead::ReadAhead;
 
-/// postc's own toolpath stream (`readers/native`), under its old path.
-pub use postc_reader_native as native;
-/// The synthetic toolpath generator (`postc toolpath gen`, `postc bench`,
-/// the posting benchmark). It stays in this crate: moved into
-/// `postc-reader-native`, the criterion `posting` bench ran 35% slower
-/// (91.7 ms against 124 ms per million moves, docs/performance.md).
-pub mod synthetic;
+use postc_reader_native as native;
 
 use postc_ir::codes;
 use std::path::Path;
