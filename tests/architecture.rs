@@ -419,3 +419,36 @@ fn comments_cite_no_issue_seed_number_or_numbered_decision() {
     }
     assert!(found.is_empty(), "{}", found.join("\n"));
 }
+
+/// Each crate's integration tests build as one binary (`autotests = false`
+/// and one `[[test]]` whose `tests/main.rs` holds every file of `tests/` as
+/// a module), so a test build links one binary per crate with tests, not
+/// one per file.
+#[test]
+fn each_crate_links_one_integration_test_binary() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let workspace = std::fs::read_to_string(root.join("Cargo.toml")).unwrap();
+    let members = workspace.split("members = [").nth(1).and_then(|m| m.split(']').next()).unwrap_or("");
+    let crates = members.split(',').map(|m| m.trim().trim_matches('"')).filter(|m| !m.is_empty());
+    for krate in std::iter::once(".").chain(crates) {
+        let dir = root.join(krate);
+        if !dir.join("tests").is_dir() {
+            continue;
+        }
+        let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
+        assert!(manifest.contains("autotests = false"), "{krate}: tests/ files would each link a binary");
+        assert_eq!(manifest.matches("[[test]]").count(), 1, "{krate}: one integration-test binary");
+        let main = std::fs::read_to_string(dir.join("tests/main.rs")).unwrap_or_default();
+        for entry in std::fs::read_dir(dir.join("tests")).unwrap().flatten() {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            let module = name.strip_suffix(".rs").unwrap_or(&name);
+            let is_module = name.ends_with(".rs") || entry.path().join("mod.rs").is_file();
+            if is_module && name != "main.rs" {
+                assert!(
+                    main.contains(&format!("mod {module};")),
+                    "{krate}/tests/{name} is not a module of tests/main.rs"
+                );
+            }
+        }
+    }
+}

@@ -4,8 +4,6 @@
 //! drill point per GOTO inside a cycle, counted here by a separate, simple
 //! scan of the records.
 
-mod common;
-
 use postc_report::Render as _;
 use std::path::Path;
 
@@ -75,15 +73,16 @@ fn expected_counts(text: &str) -> Counts {
 
 #[test]
 fn every_corpus_file_reads_and_counts_match() {
-    let files = common::corpus_files();
+    let files = crate::common::corpus_files();
     if files.is_empty() {
         return;
     }
     let mut checked = 0;
     for path in files {
         let bytes = std::fs::read(&path).expect("read corpus file");
-        let name = path.strip_prefix(common::corpus_dir().unwrap_or_default()).unwrap_or(&path).display().to_string();
-        let mut read = common::read_bytes(&name, &bytes);
+        let name =
+            path.strip_prefix(crate::common::corpus_dir().unwrap_or_default()).unwrap_or(&path).display().to_string();
+        let mut read = crate::common::read_bytes(&name, &bytes);
         if path.ends_with(Path::new("smooker__aptos-apt360/cl.tap")) {
             assert_eq!(read.errors().len(), 1, "{name}: {:?}", read.diagnostics);
             assert_eq!(read.errors()[0].code, "CL001", "{name}");
@@ -116,7 +115,7 @@ fn every_corpus_file_reads_and_counts_match() {
 
 #[test]
 fn every_corpus_file_is_recognised_by_content() {
-    for path in common::corpus_files() {
+    for path in crate::common::corpus_files() {
         let bytes = std::fs::read(&path).expect("read corpus file");
         let head = &bytes[..bytes.len().min(16 << 10)];
         assert!(postc_reader_apt::looks_like_cl(head), "{}", path.display());
@@ -130,7 +129,7 @@ fn every_corpus_file_is_recognised_by_content() {
 
 #[test]
 fn check_and_open_read_files_from_disk() {
-    let files = common::corpus_files();
+    let files = crate::common::corpus_files();
     for path in files.iter().filter(|p| p.ends_with("bohren_1.ncl.8") || p.ends_with("cl.tap")) {
         let mut sources = postc_report::source_map();
         let diagnostics = postc_reader_apt::check(path, &mut sources);
@@ -168,9 +167,9 @@ fn sweep(start: [f64; 3], arc: &postc_ir::event::ArcMove) -> f64 {
 #[test]
 fn corpus_arcs_mostly_turn_the_short_way() {
     use postc_ir::event::Event;
-    for path in common::corpus_files() {
+    for path in crate::common::corpus_files() {
         let bytes = std::fs::read(&path).expect("read corpus file");
-        let read = common::read_bytes("corpus", &bytes);
+        let read = crate::common::read_bytes("corpus", &bytes);
         let (mut short, mut long, mut nearly_full) = (0usize, 0usize, 0usize);
         let mut at = None;
         for (event, _) in &read.events {
@@ -202,15 +201,15 @@ fn corpus_arcs_mostly_turn_the_short_way() {
 
 #[test]
 fn corpus_events_come_in_contract_order() {
-    for path in common::corpus_files() {
+    for path in crate::common::corpus_files() {
         let bytes = std::fs::read(&path).expect("read corpus file");
-        let read = common::read_bytes("corpus", &bytes);
-        common::check_order(&path.display().to_string(), &read.events, false);
+        let read = crate::common::read_bytes("corpus", &bytes);
+        crate::common::check_order(&path.display().to_string(), &read.events, false);
     }
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
     for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
         let bytes = std::fs::read(entry.path()).expect("read fixture");
-        let read = common::read_bytes("fixture", &bytes);
-        common::check_order(&entry.path().display().to_string(), &read.events, false);
+        let read = crate::common::read_bytes("fixture", &bytes);
+        crate::common::check_order(&entry.path().display().to_string(), &read.events, false);
     }
 }

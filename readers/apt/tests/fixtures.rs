@@ -2,8 +2,6 @@
 //! form and diagnostic, with their events and diagnostics kept as
 //! `insta` snapshots in `tests/snapshots/` (`cargo insta review` accepts new output).
 
-mod common;
-
 use std::path::Path;
 
 use postc_ir::event::{ArcDir, Event, Plane};
@@ -13,14 +11,14 @@ fn fixture(name: &str) -> Vec<u8> {
     std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-fn snapshot(name: &str) -> common::Read {
-    let read = common::read_bytes(name, &fixture(name));
+fn snapshot(name: &str) -> crate::common::Read {
+    let read = crate::common::read_bytes(name, &fixture(name));
     let stem = name.split('.').next().unwrap_or(name);
-    common::assert_snapshot(stem, &common::render(&read));
+    crate::common::assert_snapshot(stem, &crate::common::render(&read));
     read
 }
 
-fn arcs(read: &common::Read) -> Vec<(ArcDir, Plane)> {
+fn arcs(read: &crate::common::Read) -> Vec<(ArcDir, Plane)> {
     read.events
         .iter()
         .filter_map(|(e, _)| match e {
@@ -38,8 +36,8 @@ fn lexing_rules() {
     assert_eq!(read.count("Feed"), 5);
     // The same file with CRLF line ends reads to the same events.
     let text = String::from_utf8(fixture("lexing.cl")).unwrap_or_default();
-    let crlf = common::read_text(&text.replace('\n', "\r\n"));
-    let events = |r: &common::Read| r.events.iter().map(|(e, _)| e.clone()).collect::<Vec<_>>();
+    let crlf = crate::common::read_text(&text.replace('\n', "\r\n"));
+    let events = |r: &crate::common::Read| r.events.iter().map(|(e, _)| e.clone()).collect::<Vec<_>>();
     assert_eq!(events(&crlf), events(&read));
     assert_eq!(crlf.codes(), read.codes());
 }
@@ -151,14 +149,15 @@ fn part_programs_give_one_error() {
         assert_eq!(read.codes(), ["CL002"], "{name}");
     }
     // An assignment found while reading (the head check only sees `NAME=WORD/`).
-    let read = common::read_text("GOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
+    let read = crate::common::read_text("GOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
     assert_eq!(read.codes(), ["CL002"]);
     // An `=` inside a record's arguments is a syntax error, not a part program.
-    let read = common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\nFINI\n");
+    let read = crate::common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\nFINI\n");
     assert_eq!(read.codes(), ["CL003"]);
     assert_eq!(read.count("Feed"), 2);
     // CATIA's drive arc without its tool-position word still reads.
-    let read = common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\nFINI\n");
+    let read =
+        crate::common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\nFINI\n");
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Arc"), 1);
 }
@@ -167,12 +166,12 @@ fn part_programs_give_one_error() {
 fn binary_files_give_one_error() {
     let mut apt360 = vec![1, 0, 0, 0, 2, 0, 0, 0, 0xe8, 3, 0, 0, 1, 0, 0, 0];
     apt360.extend_from_slice(b"\0\0\0\0\0\0\0\0        \n GOTO/1,2,3\n");
-    let read = common::read_bytes("cl.tap", &apt360);
+    let read = crate::common::read_bytes("cl.tap", &apt360);
     assert_eq!(read.codes(), ["CL001"]);
     assert!(read.diagnostics[0].message.contains("APT360"));
     assert!(read.events.is_empty());
     let utf16: Vec<u8> = "\u{feff}GOTO/1,2,3\n".encode_utf16().flat_map(u16::to_le_bytes).collect();
-    let read = common::read_bytes("utf16.cl", &utf16);
+    let read = crate::common::read_bytes("utf16.cl", &utf16);
     assert_eq!(read.codes(), ["CL001"]);
     assert!(read.diagnostics[0].message.contains("UTF-16"));
 }
@@ -182,7 +181,7 @@ fn a_line_longer_than_a_mebibyte_is_skipped() {
     let mut text = b"RAPID\nGOTO/0,0,0\nPPRINT ".to_vec();
     text.extend(std::iter::repeat_n(b'x', 3 << 20));
     text.extend_from_slice(b"\nGOTO/1,0,0\nFINI\n");
-    let read = common::read_bytes("long.cl", &text);
+    let read = crate::common::read_bytes("long.cl", &text);
     assert_eq!(read.codes(), ["CL020"]);
     assert_eq!(read.count("Rapid") + read.count("Feed"), 2);
 }
@@ -194,14 +193,14 @@ fn a_record_continued_past_a_mebibyte_is_skipped() {
         text.extend_from_slice(b"1.5,2.5,3.5,$\n");
     }
     text.extend_from_slice(b"3\nGOTO/1,0,0\nFINI\n");
-    let read = common::read_bytes("long.cl", &text);
+    let read = crate::common::read_bytes("long.cl", &text);
     assert_eq!(read.codes(), ["CL020"]);
     assert_eq!(read.count("Rapid") + read.count("Feed"), 2);
 }
 
 #[test]
 fn a_utf8_byte_order_mark_is_skipped() {
-    let read = common::read_bytes("bom.cl", b"\xEF\xBB\xBFGOTO/1,2,3\nFINI\n");
+    let read = crate::common::read_bytes("bom.cl", b"\xEF\xBB\xBFGOTO/1,2,3\nFINI\n");
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Feed"), 1);
 }
@@ -212,7 +211,7 @@ fn a_utf8_byte_order_mark_is_skipped() {
 /// is reported once, at its first move.
 #[test]
 fn values_out_of_range_are_refused_at_their_record() {
-    let read = common::read_text("UNITS/MM\nLOADTL/1\nFEDRAT/100,MMPM\nGOTO/1e308,5,0\nGOTO/1,2,3\nFINI\n");
+    let read = crate::common::read_text("UNITS/MM\nLOADTL/1\nFEDRAT/100,MMPM\nGOTO/1e308,5,0\nGOTO/1,2,3\nFINI\n");
     assert_eq!(read.codes(), ["CL023"]);
     let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
     assert_eq!((json.line, json.column), (Some(4), Some(1)));
@@ -220,10 +219,11 @@ fn values_out_of_range_are_refused_at_their_record() {
         read.diagnostics[0].message.starts_with("Feed x is 1e308: a coordinate or length must be within ±1000000 mm")
     );
     assert_eq!(read.count("Feed"), 2, "the events keep their order; the error refuses the toolpath");
-    let read = common::read_text("UNITS/INCHES\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
+    let read = crate::common::read_text("UNITS/INCHES\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
     assert_eq!(read.codes(), ["CL023"], "40,000 inches is over 1 km; 39,000 is not");
-    let read =
-        common::read_text("UNITS/MM\nFEDRAT/5e7,MMPM\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nSPINDL/RPM,2e6\nFINI\n");
+    let read = crate::common::read_text(
+        "UNITS/MM\nFEDRAT/5e7,MMPM\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nSPINDL/RPM,2e6\nFINI\n",
+    );
     let lines: Vec<_> = read
         .diagnostics
         .iter()
@@ -233,9 +233,9 @@ fn values_out_of_range_are_refused_at_their_record() {
     assert_eq!(lines, [2, 3, 6], "the FEDRAT, the first move that carries it, the spindle speed");
     // A drilling cycle out of range is an error, and its holes stay inside it.
     let cl = "UNITS/MM\nTOOL PATH/D,TOOL,T1\nCYCLE/DRILL,RAPTO,3.0,FEDTO,5e9,MMPM,100.0\nGOTO/0,0,0\nGOTO/10,0,0\nCYCLE/OFF\nEND-OF-PATH\nFINI\n";
-    let read = common::read_text(cl);
+    let read = crate::common::read_text(cl);
     assert_eq!(read.codes(), ["CL023"], "{:?}", read.diagnostics);
-    common::check_order("cycle out of range", &read.events, false);
+    crate::common::check_order("cycle out of range", &read.events, false);
     assert_eq!((read.count("DrillCycle"), read.count("DrillPoint"), read.count("DrillEnd")), (1, 2, 1));
 }
 
@@ -246,13 +246,13 @@ fn values_out_of_range_are_refused_at_their_record() {
 #[test]
 fn a_file_without_fini_may_be_cut_short() {
     // Cut inside the last number of a GOTO: the record still reads.
-    let read = common::read_text("UNITS/MM\nGOTO/0,0,0\nGOTO/7.0000000000, -2.9062500000, 3.24");
+    let read = crate::common::read_text("UNITS/MM\nGOTO/0,0,0\nGOTO/7.0000000000, -2.9062500000, 3.24");
     assert_eq!(read.codes(), ["CL024"]);
     let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
     assert_eq!(json.line, Some(3));
-    assert!(common::read_text("UNITS/MM\nGOTO/0,0,0\nFINI\n").diagnostics.is_empty());
+    assert!(crate::common::read_text("UNITS/MM\nGOTO/0,0,0\nFINI\n").diagnostics.is_empty());
     let nx = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\n$$ end\n";
-    assert!(common::read_text(nx).diagnostics.is_empty());
+    assert!(crate::common::read_text(nx).diagnostics.is_empty());
     let cut = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\nTOOL PATH/B,TOOL,T1\nGOTO/1,0,0\n";
-    assert_eq!(common::read_text(cut).codes(), ["CL024"]);
+    assert_eq!(crate::common::read_text(cut).codes(), ["CL024"]);
 }

@@ -2,8 +2,6 @@
 //! deletions, insertions of random lines and truncation of real and
 //! hand-written CL files, read to the end every time.
 
-mod common;
-
 use std::path::Path;
 
 use proptest::prelude::*;
@@ -13,7 +11,7 @@ fn seeds() -> Vec<Vec<u8>> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
     let mut seeds: Vec<Vec<u8>> =
         std::fs::read_dir(dir).into_iter().flatten().flatten().filter_map(|e| std::fs::read(e.path()).ok()).collect();
-    if let Some(corpus) = common::corpus_dir() {
+    if let Some(corpus) = crate::common::corpus_dir() {
         for name in [
             "MichaHofft__CreoPost/profilfraesen_2.ncl.2",
             "HumMan__CLSFProcessor/cutcom.clsf",
@@ -85,7 +83,7 @@ proptest! {
         for e in &edits {
             apply(&mut text, e);
         }
-        let read = common::read_bytes("mutated.cl", &text);
+        let read = crate::common::read_bytes("mutated.cl", &text);
         // Every event comes from a record; a tilted arc makes at most 10000 moves.
         prop_assert!(read.events.len() <= 10_001 * (text.len() + 2));
         for d in &read.diagnostics {
@@ -97,18 +95,18 @@ proptest! {
         for (_, span) in &read.events {
             prop_assert!(span.end <= text.len() + 1);
         }
-        common::check_order("mutated", &read.events, read.codes().contains(&"CL002"));
+        crate::common::check_order("mutated", &read.events, read.codes().contains(&"CL002"));
     }
 
     #[test]
     fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..2000)) {
-        let _ = common::read_bytes("random.cl", &bytes);
+        let _ = crate::common::read_bytes("random.cl", &bytes);
     }
 
     #[test]
     fn random_records_never_panic(lines in prop::collection::vec("(GOTO|CIRCLE|CYCLE|RAPID|END-OF-PATH|TOOL PATH|LOADTL|[A-Z]{1,6})(/[-0-9.,A-Z ()$]{0,30})?", 0..40)) {
         let text = lines.join("\n");
-        let read = common::read_text(&text);
-        common::check_order("random", &read.events, read.codes().contains(&"CL002"));
+        let read = crate::common::read_text(&text);
+        crate::common::check_order("random", &read.events, read.codes().contains(&"CL002"));
     }
 }

@@ -1,0 +1,7 @@
+//! The crate's integration tests: one test binary, each file of `tests/` a module of it.
+
+mod grammar;
+mod lowering;
+mod robustness;
+mod roundtrip;
+mod snapshots;

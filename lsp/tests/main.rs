@@ -1,0 +1,3 @@
+//! The crate's integration tests: one test binary, each file of `tests/` a module of it.
+
+mod corpus;

@@ -1,0 +1,4 @@
+//! The crate's integration tests: one test binary, each file of `tests/` a module of it.
+
+mod js_values;
+mod seed_listing;
