@@ -1,7 +1,9 @@
-//! The dependency invariants of `docs/architecture.md`: which crate may use
-//! which. Read from each crate's `Cargo.toml`, so a new dependency that
-//! breaks the architecture fails here.
+//! The invariants of `docs/architecture.md`: which crate may use which,
+//! read from each crate's `Cargo.toml`, so a new dependency that breaks the
+//! architecture fails here; what crates' sources may touch; and its code
+//! map, which names every module of every crate.
 
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The names in a crate's `[dependencies]` table.
@@ -451,4 +453,114 @@ fn each_crate_links_one_integration_test_binary() {
             }
         }
     }
+}
+
+/// The crates of the workspace, each as the code map names it (its folder,
+/// `frontends/cimco/`) with the folder of its modules (`frontends/cimco/src`):
+/// every root folder with a `Cargo.toml`, every crate of a layer folder
+/// (`frontends/`, `readers/`, `hosts/`), and `src/`, the command line
+/// (crate `postc`, whose modules are in `src` itself).
+fn crate_sources() -> Vec<(String, String)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut crates = vec![("src/".to_string(), "src".to_string())];
+    for entry in std::fs::read_dir(root).unwrap().flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if !entry.path().is_dir() || name.starts_with('.') || name == "target" {
+            continue;
+        }
+        if entry.path().join("Cargo.toml").is_file() {
+            crates.push((format!("{name}/"), format!("{name}/src")));
+        } else {
+            for sub in std::fs::read_dir(entry.path()).unwrap().flatten() {
+                if sub.path().join("Cargo.toml").is_file() {
+                    let folder = format!("{name}/{}", sub.file_name().to_string_lossy());
+                    crates.push((format!("{folder}/"), format!("{folder}/src")));
+                }
+            }
+        }
+    }
+    crates.sort();
+    crates
+}
+
+/// The `.rs` files under a crate's source folder, as paths relative to it
+/// (`prepare/fuse.rs`).
+fn modules(src: &str) -> Vec<String> {
+    let base = Path::new(env!("CARGO_MANIFEST_DIR")).join(src);
+    let mut found: Vec<String> = sources(src)
+        .into_iter()
+        .map(|(path, _)| Path::new(&path).strip_prefix(&base).unwrap().to_string_lossy().replace('\\', "/"))
+        .collect();
+    found.sort();
+    found
+}
+
+/// The code map of docs/architecture.md: its crates table, and each crate's
+/// subsection (`### runtime/`) with the modules its list names. An entry is
+/// `` - `a.rs`: what it owns `` or, for a group, `` - `a.rs`, `b.rs`: ... ``.
+fn code_map() -> (String, BTreeMap<String, Vec<String>>) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/architecture.md");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let start = text.find("\n## Code map\n").expect("docs/architecture.md has no \"## Code map\"") + 1;
+    let section = &text[start..];
+    let section = &section[..section[1..].find("\n## ").map_or(section.len(), |i| i + 1)];
+    let mut map: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut current: Option<String> = None;
+    for line in section.lines() {
+        if let Some(heading) = line.strip_prefix("### ") {
+            assert!(map.insert(heading.to_string(), Vec::new()).is_none(), "two subsections `### {heading}`");
+            current = Some(heading.to_string());
+        } else if let Some(mut rest) = line.strip_prefix("- ") {
+            let krate = current.as_ref().unwrap_or_else(|| panic!("a module entry before any crate: {line}"));
+            loop {
+                let name = rest
+                    .strip_prefix('`')
+                    .and_then(|r| r.split_once('`'))
+                    .unwrap_or_else(|| panic!("### {krate}: an entry that does not start with `module.rs`: {line}"));
+                map.get_mut(krate).unwrap().push(name.0.to_string());
+                if let Some(more) = name.1.strip_prefix(", ") {
+                    rest = more;
+                } else if name.1.starts_with(": ") {
+                    break;
+                } else {
+                    panic!("### {krate}: an entry is `a.rs`: ... or `a.rs`, `b.rs`: ...: {line}");
+                }
+            }
+        }
+    }
+    (section.to_string(), map)
+}
+
+/// docs/architecture.md's code map is whole and current: every crate has a
+/// row in its table and a subsection, and every `.rs` file under a crate's
+/// `src/` has an entry in its crate's subsection; every crate and module
+/// the map names exists, each named once.
+#[test]
+fn the_code_map_names_every_module() {
+    let (section, map) = code_map();
+    let crates = crate_sources();
+    let folders: Vec<&String> = crates.iter().map(|(folder, _)| folder).collect();
+    let headings: Vec<&String> = map.keys().collect();
+    assert_eq!(headings, folders, "the code map's subsections (`### folder/`) are not the workspace's crates");
+    let mut problems = Vec::new();
+    for (folder, src) in &crates {
+        if !section.contains(&format!("| `{folder}` |")) {
+            problems.push(format!("{folder}: no row in the crates table"));
+        }
+        let actual = modules(src);
+        let named = &map[folder];
+        for module in &actual {
+            if !named.contains(module) {
+                problems.push(format!("### {folder}: no entry for `{module}`"));
+            }
+        }
+        for (i, module) in named.iter().enumerate() {
+            if !actual.contains(module) {
+                problems.push(format!("### {folder}: `{module}` is no module of {src}/"));
+            } else if named[..i].contains(module) {
+                problems.push(format!("### {folder}: `{module}` has two entries"));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "docs/architecture.md's code map:\n{}", problems.join("\n"));
 }
