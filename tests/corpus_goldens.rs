@@ -1,6 +1,6 @@
 //! Corpus goldens: posts every Vectric post of `corpus/posts/vectric/` over
 //! every toolpath of `corpus/toolpaths/` and compares the program, byte for
-//! byte, with the committed file in `corpus/expected/`.
+//! byte, with the committed file in `corpus/expected/vectric/`.
 //!
 //! One expected file per pair, named `POST__TOOLPATH.EXT` after the two file
 //! stems and the post's FILE_EXTENSION (`gcode_mm__standard.ngc`). A
@@ -24,7 +24,7 @@ use crate::support::{Goldens, all_files, compile, corpus, diff, files, post_part
 #[test]
 fn corpus_posts_match_their_goldens() {
     let root = corpus();
-    let expected_dir = root.join("expected");
+    let expected_dir = root.join("expected/vectric");
     let posts = files(&root.join("posts/vectric"), "pp");
     let toolpaths = files(&root.join("toolpaths"), "ron");
     assert!(posts.len() >= 10, "the corpus has {} posts", posts.len());

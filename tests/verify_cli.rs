@@ -14,7 +14,7 @@ use crate::support::{postc, said as text};
 fn a_golden_program_verifies_against_its_toolpath() {
     let o = postc(&[
         "verify",
-        "corpus/expected/gcode_mm__standard.ngc",
+        "corpus/expected/vectric/gcode_mm__standard.ngc",
         "--toolpath",
         "corpus/toolpaths/standard.ron",
         "--post",
@@ -29,7 +29,7 @@ fn a_golden_program_verifies_against_its_toolpath() {
 #[test]
 fn a_wrong_program_exits_1_with_json_findings_at_their_line() {
     let dir = tempfile::tempdir().unwrap();
-    let program = std::fs::read_to_string(root().join("corpus/expected/gcode_mm__standard.ngc")).unwrap();
+    let program = std::fs::read_to_string(root().join("corpus/expected/vectric/gcode_mm__standard.ngc")).unwrap();
     // The first arc turns the other way.
     let wrong = program.replacen("G3X80.000", "G2X80.000", 1);
     let line = wrong.lines().position(|l| l.starts_with("G2X80.000")).unwrap() + 1;
@@ -48,9 +48,9 @@ fn a_wrong_program_exits_1_with_json_findings_at_their_line() {
 #[test]
 fn other_families_are_refused_with_the_families_verify_reads() {
     for (program, toolpath) in [
-        ("corpus/expected/hpgl_arcs__standard.plt", "corpus/toolpaths/standard.ron"),
-        ("corpus/expected/shopbot_inch__standard.sbp", "corpus/toolpaths/standard.ron"),
-        ("corpus/expected/heidenhain_mm__standard.h", "corpus/toolpaths/standard.ron"),
+        ("corpus/expected/vectric/hpgl_arcs__standard.plt", "corpus/toolpaths/standard.ron"),
+        ("corpus/expected/vectric/shopbot_inch__standard.sbp", "corpus/toolpaths/standard.ron"),
+        ("corpus/expected/vectric/heidenhain_mm__standard.h", "corpus/toolpaths/standard.ron"),
     ] {
         let o = postc(&["verify", program, "--toolpath", toolpath]);
         assert_eq!(o.status.code(), Some(1), "{}", text(&o));
@@ -59,7 +59,7 @@ fn other_families_are_refused_with_the_families_verify_reads() {
     // By the post, too.
     let o = postc(&[
         "verify",
-        "corpus/expected/gcode_mm__standard.ngc",
+        "corpus/expected/vectric/gcode_mm__standard.ngc",
         "--toolpath",
         "corpus/toolpaths/standard.ron",
         "--post",
@@ -70,7 +70,7 @@ fn other_families_are_refused_with_the_families_verify_reads() {
     // Rotary-wrapped posts are refused.
     let o = postc(&[
         "verify",
-        "corpus/expected/gcode_mm__standard.ngc",
+        "corpus/expected/vectric/gcode_mm__standard.ngc",
         "--toolpath",
         "corpus/toolpaths/standard.ron",
         "--post",
