@@ -26,11 +26,17 @@ use proptest::strategy::{Union, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
 use crate::support::cimco::*;
+use crate::support::{lines, show};
 
 /// Constructs the generator leaves out because postc and Node.js
 /// disagree on them and the fix is not local; each says what diverges
 /// and where. The generator consults [`excluded`].
-pub const EXCLUSIONS: &[(&str, &str)] = &[];
+pub const EXCLUSIONS: &[(&str, &str)] = &[(
+    "null",
+    "native code has one null (docs/cimco.md, *Known gaps*): `null` joins text as \"\" (JavaScript: \"null\"), \
+     reads as NaN in arithmetic and comparisons (JavaScript: 0), and `null` stored and read back may come out as \
+     `undefined`; the runtime's `Value::Null` is also VcPost's empty value, so a JavaScript null is a new value kind",
+)];
 
 fn excluded(name: &str) -> bool {
     EXCLUSIONS.iter().any(|(n, _)| *n == name)
@@ -100,7 +106,8 @@ fn pick(list: &'static [&'static str]) -> BoxedStrategy<String> {
 }
 
 fn literal() -> BoxedStrategy<String> {
-    prop_oneof![3 => pick(NUMBERS), 2 => pick(TEXTS), 2 => pick(OTHERS)].boxed()
+    let others: Vec<&'static str> = OTHERS.iter().copied().filter(|o| !excluded(o)).collect();
+    prop_oneof![3 => pick(NUMBERS), 2 => pick(TEXTS), 2 => prop::sample::select(others).prop_map(String::from)].boxed()
 }
 
 /// An expression of any type.
@@ -125,10 +132,6 @@ fn expr(scope: Scope) -> BoxedStrategy<String> {
             (1, (e(), e()).prop_map(|(a, b)| format!(r#"[{a}, {b}].join("/")"#)).boxed()),
             (1, e().prop_map(|a| format!("table[{a}]")).boxed()),
         ];
-        if !excluded("isFinite") {
-            // No native form: the function runs in the script tier.
-            arms.push((1, e().prop_map(|a| format!("isFinite({a})")).boxed()));
-        }
         if !scope.calls.is_empty() {
             let call = (pick(scope.calls), prop::collection::vec(e(), 0..=3))
                 .prop_map(|(f, args)| format!("{f}({})", args.join(", ")));
@@ -141,7 +144,8 @@ fn expr(scope: Scope) -> BoxedStrategy<String> {
 
 /// A number, mostly: what a post gives a format.
 fn number(scope: Scope) -> BoxedStrategy<String> {
-    let leaf = prop_oneof![pick(NUMBERS), pick(scope.names)];
+    let names: Vec<&'static str> = scope.names.iter().copied().filter(|n| ["x", "y", "z", "p"].contains(n)).collect();
+    let leaf = if names.is_empty() { pick(NUMBERS) } else { prop_oneof![pick(NUMBERS), prop::sample::select(names).prop_map(String::from)].boxed() };
     let num = leaf.prop_recursive(2, 6, 2, |inner| {
         prop_oneof![
             (inner.clone(), pick(&["+", "-", "*", "/"]), inner.clone())
@@ -149,7 +153,7 @@ fn number(scope: Scope) -> BoxedStrategy<String> {
             (pick(MATH1), inner.clone()).prop_map(|(f, a)| format!("Math.{f}({a})")),
         ]
     });
-    prop_oneof![4 => num, 1 => expr(scope)].boxed()
+    prop_oneof![8 => num, 1 => expr(scope)].boxed()
 }
 
 fn indent(body: &str) -> String {
@@ -317,6 +321,8 @@ fn format_props() -> BoxedStrategy<String> {
         .boxed()
 }
 
+const SCRIPT_TIER: &str = "\nfunction scriptTier(t) {\n    return isFinite(t);\n}\n";
+
 /// A whole post.
 fn post() -> BoxedStrategy<String> {
     let head = (
@@ -360,15 +366,19 @@ function writeBlock() {{
             )
         });
     let last = "    out += writeBlock(\"G1\", xOut.format(x), yOut.format(y), \"Z\" + zFormat.format(z), getFeedrate(movement));\n";
+    // One post in five has a function that calls `isFinite`, which has no
+    // native form: the post keeps the shaped lowering, and what that
+    // cannot hold runs in the Rhai script tier.
+    let tier = prop_oneof![4 => Just(String::new()), 1 => Just(SCRIPT_TIER.to_string())];
     (
-        head,
+        (head, tier),
         helper("f1", HELPER),
         helper("f2", HELPER2),
         handler("onOpen(isClipboard)", OPEN, ""),
         handler("onLinear(x, y, z, movement)", LINEAR, last),
         handler("onClose()", OPEN, ""),
     )
-        .prop_map(|(h, f1, f2, open, linear, close)| format!("{h}{f1}\n{f2}\n{open}\n{linear}\n{close}"))
+        .prop_map(|((h, tier), f1, f2, open, linear, close)| format!("{h}{f1}\n{f2}\n{open}\n{linear}\n{close}{tier}"))
         .boxed()
 }
 
@@ -381,6 +391,13 @@ enum Run {
     Printed(Vec<u8>),
     /// A runtime error: the diagnostic's code and message, or Node's error.
     Failed(String),
+}
+
+fn short(run: &Run) -> String {
+    match run {
+        Run::Printed(p) => format!("printed {} bytes", p.len()),
+        Run::Failed(e) => e.lines().next().unwrap_or("").chars().take(160).collect(),
+    }
 }
 
 impl Run {
@@ -512,7 +529,7 @@ fn shrink(
         best.1 = outputs;
     }
     let mut more = tree.simplify();
-    while more && steps < 400 && started.elapsed() < Duration::from_secs(90) {
+    while more && steps < 150 && started.elapsed() < Duration::from_secs(40) {
         steps += 1;
         let candidate = tree.current();
         match check(&candidate) {
@@ -567,19 +584,32 @@ fn generated_posts_print_as_node_prints() {
     let out = node.wait_with_output().expect("node ran");
     assert!(out.status.success(), "node batch.js failed: {}", String::from_utf8_lossy(&out.stderr));
 
-    let (mut printed, mut failed, mut scripts) = (0, 0, 0);
+    let (mut printed, mut scripts) = (0, 0);
+    let mut failed: BTreeMap<String, usize> = BTreeMap::new();
     let mut differ = Vec::new();
+    let mut first_lines = String::new();
     for (k, path, prepared, unprepared, script) in ran {
         let node = node_batch_result(path);
         scripts += usize::from(script);
         match disagreement(&prepared, &unprepared, &node) {
-            None if matches!(prepared, Run::Printed(_)) => printed += 1,
-            None => failed += 1,
-            Some(kind) => differ.push((k, kind)),
+            None => match &prepared {
+                Run::Printed(_) => printed += 1,
+                Run::Failed(e) => *failed.entry(e.chars().take(5).collect()).or_default() += 1,
+            },
+            Some(kind) => {
+                if let (Run::Printed(x), Run::Printed(y)) = (&prepared, &node) {
+                    let at = lines(x).iter().zip(lines(y)).find(|(a, b)| **a != *b).map(|(a, b)| (show(a), show(b)));
+                    let _ = writeln!(first_lines, "  {k}: postc {:?}", at);
+                } else {
+                    let _ = writeln!(first_lines, "  {k}: postc {} / Node.js {}", short(&prepared), short(&node));
+                }
+                differ.push((k, kind))
+            }
         }
     }
+    let failed_count: usize = failed.values().sum();
     eprintln!(
-        "cimco_differential: Node.js {version}, seed {seed}: {} programs in {:.1} s: {printed} print the same, {failed} fail in all three runs, {} differ, refused when compiled: {refused:?}; {scripts} keep script functions",
+        "cimco_differential: Node.js {version}, seed {seed}: {} programs in {:.1} s: {printed} print the same, {failed_count} fail in all three runs ({failed:?}), {} differ, refused when compiled: {refused:?}; {scripts} keep script functions\n{first_lines}",
         cases.len(),
         started.elapsed().as_secs_f64(),
         differ.len()
@@ -594,7 +624,7 @@ fn generated_posts_print_as_node_prints() {
     std::fs::copy(&ron, keep.join("toolpath.ron")).expect("keep the toolpath");
     std::fs::copy(&jsonl, keep.join("toolpath.jsonl")).expect("keep the toolpath");
     let mut report = String::new();
-    for &(k, kind) in differ.iter().take(3) {
+    for &(k, kind) in differ.iter().take(2) {
         let mut tree = strategy.new_tree(&mut runner(seed, k)).expect("a program");
         let original = tree.current();
         let (small, outputs) = shrink(&mut tree, kind, dir.path(), &ron, &jsonl);
