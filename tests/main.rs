@@ -10,6 +10,7 @@ mod support;
 mod apt_corpus;
 mod architecture;
 mod check_scaling;
+mod cimco_differential;
 mod cimco_fidelity;
 mod cimco_goldens;
 mod cimco_inspect;

@@ -210,6 +210,40 @@ pub fn radix_string(n: f64, radix: f64) -> Result<String, String> {
     Ok(digits.iter().rev().collect())
 }
 
+/// JavaScript's `Math.min`: NaN when any value is NaN (Rust's `f64::min`
+/// skips it), -0 below +0, `Infinity` of none.
+pub fn math_min(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(f64::INFINITY, |a, b| {
+        if a.is_nan() || b.is_nan() {
+            f64::NAN
+        } else if a < b || (a == b && a.is_sign_negative()) {
+            a
+        } else {
+            b
+        }
+    })
+}
+
+/// JavaScript's `Math.max`: NaN when any value is NaN, +0 above -0,
+/// `-Infinity` of none.
+pub fn math_max(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(f64::NEG_INFINITY, |a, b| {
+        if a.is_nan() || b.is_nan() {
+            f64::NAN
+        } else if a > b || (a == b && a.is_sign_positive()) {
+            a
+        } else {
+            b
+        }
+    })
+}
+
+/// JavaScript's `Math.pow` (and `**`): as `powf`, but NaN for a NaN
+/// exponent and for ±1 to an infinite power, where `powf` gives 1.
+pub fn math_pow(x: f64, y: f64) -> f64 {
+    if y.is_nan() || (x.abs() == 1.0 && y.is_infinite()) { f64::NAN } else { x.powf(y) }
+}
+
 /// JavaScript's `Math.round`: the nearest integer, halves toward positive
 /// infinity.
 pub fn math_round(x: f64) -> f64 {

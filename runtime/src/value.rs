@@ -8,7 +8,6 @@
 //! copied refers to the same array.
 
 use std::cell::RefCell;
-use std::fmt::Write as _;
 use std::rc::Rc;
 
 use postc_ir::{FunctionId, OutputRef};
@@ -367,20 +366,31 @@ impl Value {
     }
 }
 
-/// Shortest text of a number: `3`, `2.5`, `-0.125`.
+/// Shortest text of a number: `3`, `2.5`, `-0.125`, as JavaScript writes
+/// it ([`crate::js::push_number`], which the Rhai script host uses too):
+/// `Infinity`, `-Infinity`, `NaN`, and exponent form from 1e21 (`1e+21`)
+/// and below 1e-6 (`1e-7`).
 pub fn push_number(out: &mut String, n: f64) {
-    if n.is_finite() && n == n.trunc() && n.abs() < 1e21 {
-        let _ = write!(out, "{}", n as i128);
-    } else if n.is_nan() {
-        out.push_str("NaN");
-    } else {
-        let _ = write!(out, "{n}");
-    }
+    crate::js::push_number(out, n);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_join_text_as_javascript_writes_them() {
+        let text = |n: f64| Value::Num(n).to_text().as_str().to_string();
+        assert_eq!(text(f64::INFINITY), "Infinity");
+        assert_eq!(text(f64::NEG_INFINITY), "-Infinity");
+        assert_eq!(text(f64::NAN), "NaN");
+        assert_eq!(text(1e21), "1e+21");
+        assert_eq!(text(1e-7), "1e-7");
+        assert_eq!(text(0.000001), "0.000001");
+        assert_eq!(text(-0.0), "0");
+        assert_eq!(text(123.456), "123.456");
+        assert_eq!(text(1e20), "100000000000000000000");
+    }
 
     #[test]
     fn a_value_is_three_words_and_short_text_is_in_place() {

@@ -23,7 +23,10 @@ var fmt = require("./format.js");
 
 var RAPID = 0, CUTTING = 1, PLUNGE = 2;
 
-function Host(source, fileName) {
+// `context`, when given, is a fresh `vm` context the post runs in (so that
+// several posts can run one after another in one process, each with its
+// own globals); without it the post's globals are this process's.
+function Host(source, fileName, context) {
     var host = this;
     this.out = [];
     this.bytes = 0;
@@ -45,13 +48,19 @@ function Host(source, fileName) {
             return (host.feedPerRev ? host.feedRevVariable : host.feedVariable).format(host.feed);
         },
     };
-    // The post runs as an ordinary script in this context, so that its
-    // globals are plain globals (a vm sandbox would slow every access).
-    this.ctx = globalThis;
+    // By default the post runs as an ordinary script in this context, so
+    // that its globals are plain globals (a vm sandbox would slow every
+    // access).
+    var ctx = context || globalThis;
+    this.ctx = ctx;
     Object.keys(sandbox).forEach(function (k) {
-        globalThis[k] = sandbox[k];
+        ctx[k] = sandbox[k];
     });
-    vm.runInThisContext(source, { filename: fileName });
+    if (context) {
+        vm.runInContext(source, context, { filename: fileName });
+    } else {
+        vm.runInThisContext(source, { filename: fileName });
+    }
     // getFeedrate: one decimal per minute, four per revolution (0.15
     // mm/rev prints F0.15).
     this.feedVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 1 }, this.setting("decimalMark")));

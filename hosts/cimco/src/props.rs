@@ -348,15 +348,9 @@ pub fn math(name: &str, args: &Array) -> R {
         "exp" => n(0).exp(),
         "floor" => n(0).floor(),
         "log" => n(0).ln(),
-        "max" => args
-            .iter()
-            .map(to_number)
-            .fold(f64::NEG_INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }),
-        "min" => args
-            .iter()
-            .map(to_number)
-            .fold(f64::INFINITY, |a, b| if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }),
-        "pow" => n(0).powf(n(1)),
+        "max" => js::math_max(args.iter().map(to_number)),
+        "min" => js::math_min(args.iter().map(to_number)),
+        "pow" => js::math_pow(n(0), n(1)),
         // Posts must print the same program every time.
         "random" => 0.5,
         "round" => js::math_round(n(0)),

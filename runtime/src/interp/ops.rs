@@ -49,7 +49,7 @@ pub(crate) fn binary(op: BinaryOp, a: &Value, b: &Value) -> Value {
         Mul => Value::Num(a.num() * b.num()),
         Div => Value::Num(a.num() / b.num()),
         Rem => Value::Num(a.num() % b.num()),
-        Pow => Value::Num(a.num().powf(b.num())),
+        Pow => Value::Num(js::math_pow(a.num(), b.num())),
         IntDiv => {
             let d = b.num().round();
             Value::Num(if d == 0.0 { f64::NAN } else { (a.num().round() / d).trunc() })
@@ -210,8 +210,8 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
         Builtin::Ceil => Value::Num(n(0).ceil()),
         Builtin::Round => Value::Num(round_to(n(0), n(1))),
         Builtin::Trunc => Value::Num(n(0).trunc()),
-        Builtin::Min => Value::Num(args.iter().map(Value::num).fold(f64::INFINITY, f64::min)),
-        Builtin::Max => Value::Num(args.iter().map(Value::num).fold(f64::NEG_INFINITY, f64::max)),
+        Builtin::Min => Value::Num(js::math_min(args.iter().map(Value::num))),
+        Builtin::Max => Value::Num(js::math_max(args.iter().map(Value::num))),
         Builtin::Len => Value::Num(s(0).chars().count() as f64),
         Builtin::Left => {
             let c = chars(&s(0));
@@ -324,6 +324,22 @@ fn format_picture(v: f64, picture: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn min_max_and_pow_answer_as_javascript() {
+        let num = |v: Value| v.num();
+        let n = Value::Num;
+        assert!(num(builtin(Builtin::Min, &[n(0.0), n(f64::NAN)])).is_nan());
+        assert!(num(builtin(Builtin::Max, &[n(1.0), n(f64::NAN), n(3.0)])).is_nan());
+        assert_eq!(num(builtin(Builtin::Min, &[n(2.0), n(-1.0)])), -1.0);
+        assert!(num(builtin(Builtin::Min, &[n(0.0), n(-0.0)])).is_sign_negative());
+        assert!(num(builtin(Builtin::Max, &[n(-0.0), n(0.0)])).is_sign_positive());
+        assert_eq!(num(builtin(Builtin::Max, &[])), f64::NEG_INFINITY);
+        assert!(num(binary(BinaryOp::Pow, &n(1.0), &n(f64::NAN))).is_nan());
+        assert!(num(binary(BinaryOp::Pow, &n(-1.0), &n(f64::INFINITY))).is_nan());
+        assert_eq!(num(binary(BinaryOp::Pow, &n(f64::NAN), &n(0.0))), 1.0);
+        assert_eq!(num(binary(BinaryOp::Pow, &n(2.0), &n(10.0))), 1024.0);
+    }
 
     #[test]
     fn pictures() {
