@@ -450,14 +450,14 @@ enum Postc {
 
 fn postc_runs(path: &Path, toolpath: &Path) -> Postc {
     let mut sources = postc_report::source_map();
-    let compiled = postc_frontends::compile_post(path, None, &mut sources);
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
     let errors: Vec<&'static str> =
         compiled.diagnostics.iter().filter(|d| d.severity == postc_ir::Severity::Error).map(|d| d.code).collect();
     let Some(post) = compiled.post.filter(|_| errors.is_empty()) else { return Postc::Refused(errors) };
     let run = |unprepared: bool| {
         let mut sources = postc_report::source_map();
-        let mut source = postc_frontends::open_toolpath(toolpath, &mut sources).expect("the toolpath opens");
-        let mut options = postc_frontends::run_options(&post);
+        let mut source = postc_driver::open_toolpath(toolpath, &mut sources).expect("the toolpath opens");
+        let mut options = postc_driver::run_options(&post);
         options.unprepared = unprepared;
         match postc_runtime::run(&post, &mut source, postc_runtime::output::Output::memory(), options) {
             Ok(report) => match report.output {
