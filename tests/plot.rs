@@ -26,13 +26,6 @@ fn postc(args: &[&str]) -> Output {
 const POST: &str = "corpus/posts/vectric/gcode_mm.pp";
 const JOB: &str = "corpus/toolpaths/seed_job.ron";
 
-fn compile(text: &str) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post_bytes(Path::new("gcode_mm.pp"), text.as_bytes(), None, &mut sources);
-    assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
-    compiled.post.unwrap()
-}
-
 fn post(post: &Post) -> String {
     let mut sources = postc_report::source_map();
     let mut source = postc_driver::open_toolpath(&root().join(JOB), &mut sources).unwrap();
@@ -47,7 +40,7 @@ fn post(post: &Post) -> String {
 
 /// Posts the seed job with `text` as the post, then plots it: the SVG and the number of findings.
 fn plot(text: &str) -> (String, usize) {
-    let post_ir = compile(text);
+    let post_ir = support::compile_text("gcode_mm.pp", text);
     let program = post(&post_ir);
     let mut sources = postc_report::source_map();
     let file = sources.add("seed.tap", program.clone());

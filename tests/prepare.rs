@@ -5,15 +5,10 @@
 //! builds its text straight in the output, and turns calls of expression
 //! functions into the expressions.
 
+use crate::support;
 use std::path::Path;
 
 use postc_ir::{HandlerKey, Post, Section};
-
-fn compile(js: &str) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post_bytes(Path::new("t.js"), js.as_bytes(), None, &mut sources);
-    compiled.post.unwrap_or_else(|| panic!("compiles: {:?}", compiled.diagnostics))
-}
 
 fn feed_move(post: &Post) -> usize {
     post.handlers.iter().position(|h| h.key == HandlerKey::Section(Section::FeedMove)).expect("FEED_MOVE")
@@ -31,7 +26,7 @@ fn expression_functions_are_inlined_into_the_prepared_handlers() {
         function guarded(m) { var f = getFeedrate(m); return m == 0 ? "" : f; }
         function onLinear(x, y, z, m) { return (value() > 0 ? "p" : "n") + (guarded(m) == "" ? "r" : "f") + "\n"; }
     "#;
-    let post = compile(js);
+    let post = support::compile_text("t.js", js);
     let call = |name: &str| -> String {
         let i = post.functions.iter().position(|f| f.name == name).expect("the function");
         let text = format!("{:?}", postc_ir::Expr::Call(postc_ir::FunctionId::new(i as u16), vec![]));
@@ -103,7 +98,7 @@ const WRITE_BLOCK: &str = r#"
 /// given (x, y).
 fn write_block_post(on_linear: &str, feeds: &[(f64, f64)]) -> (String, String) {
     use postc_ir::event::{Event, FeedMove, VecSource};
-    let post = compile(&format!("{WRITE_BLOCK}{on_linear}"));
+    let post = support::compile_text("t.js", &format!("{WRITE_BLOCK}{on_linear}"));
     let code = postc_runtime::prepare::prepare(&post);
     let handler = format!("{:?}", code.handlers[feed_move(&post)]);
     let mut events = vec![Event::Job(Box::default())];

@@ -29,6 +29,7 @@
 //! When `../shared/vcarve-real` is not there the test prints "skipped" and
 //! passes.
 
+use crate::support;
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{ArcDir, ArcMove, Event, FeedMove, Job, Move, Tool, ToolpathStart, VecSource};
@@ -202,13 +203,6 @@ fn rebuild(program: &str) -> Rebuilt {
     Rebuilt { events, moved, toolpaths }
 }
 
-fn compile(path: &Path) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post(path, None, &mut sources);
-    assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
-    compiled.post.expect("a compiled post")
-}
-
 fn post_events(post: &Post, events: Vec<Event>) -> Vec<u8> {
     let mut source = VecSource::new(events, FileId(0));
     match postc_runtime::run(post, &mut source, Output::memory(), postc_driver::run_options(post)) {
@@ -269,7 +263,7 @@ fn vcarve_programs_reproduce_line_for_line() {
         println!("skipped: ../shared/vcarve-real not found");
         return;
     }
-    let post = compile(&dir.join(POST));
+    let post = support::compile_file(&dir.join(POST));
     let mut failures = Vec::new();
     let (mut total, mut differ) = (0, 0);
     for name in PROGRAMS {

@@ -5,6 +5,7 @@
 //! where the corpus holds one; without the corpus those cases print
 //! "skipped" and pass.
 
+use crate::support;
 use std::path::{Path, PathBuf};
 
 use postc_ir::event::{Event, FeedMove, Intent, Job, Move, Power, Tool, ToolpathStart, VecSource};
@@ -19,13 +20,6 @@ fn manifest() -> &'static Path {
 fn real_post(rel: &str) -> Option<PathBuf> {
     let path = manifest().join("../shared/corpus/vectric").join(rel);
     path.is_file().then_some(path)
-}
-
-fn compile(path: &Path) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post(path, None, &mut sources);
-    assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
-    compiled.post.expect("a compiled post")
 }
 
 fn text(parts: Vec<Vec<u8>>) -> String {
@@ -109,7 +103,7 @@ fn router_cuts_of_real_posts_print_no_power_word() {
             println!("skipped {rel}: ../shared/corpus not found");
             continue;
         };
-        let program = post_file(&compile(&path), &standard);
+        let program = post_file(&support::compile_file(&path), &standard);
         let motion = motion_lines(&program);
         assert!(!motion.is_empty(), "{rel}: no motion blocks in\n{program}");
         let bad: Vec<&String> = motion.iter().filter(|l| has_s0(l)).collect();
@@ -126,7 +120,7 @@ fn router_cuts_of_real_posts_print_no_power_word() {
 }
 
 fn laser_post() -> Post {
-    compile(&manifest().join("corpus/posts/vectric/laser_mm.pp"))
+    support::compile_file(&manifest().join("corpus/posts/vectric/laser_mm.pp"))
 }
 
 fn job() -> Event {
@@ -191,7 +185,7 @@ fn power_is_forgotten_when_a_spindle_tool_is_loaded() {
         Event::ToolpathStart(ToolpathStart { name: name.into(), notes: String::new(), ..ToolpathStart::default() })
     };
     let program = post_events(
-        &compile(&path),
+        &support::compile_file(&path),
         vec![
             job(),
             Event::Tool(laser),
@@ -217,7 +211,7 @@ fn power_is_forgotten_when_a_spindle_tool_is_loaded() {
 /// rotary axis back to zero).
 #[test]
 fn a_prints_nothing_before_the_toolpath_sets_it() {
-    let post = compile(&manifest().join("corpus/posts/vectric/text_output_mm.pp"));
+    let post = support::compile_file(&manifest().join("corpus/posts/vectric/text_output_mm.pp"));
     let mill = Tool { number: 1, spindle_speed: 18000.0, cut_feed: 1000.0, plunge_feed: 300.0, ..Tool::default() };
     let program = post_events(
         &post,
@@ -246,7 +240,7 @@ fn units_print_mm_or_inches() {
         "POST_NAME = \"units\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"INCHES\"\nbegin HEADER\n\"([UNITS])\"\n",
     )
     .unwrap();
-    let program = post_events(&compile(&pp), vec![job(), Event::End]);
+    let program = post_events(&support::compile_file(&pp), vec![job(), Event::End]);
     assert_eq!(program.lines().next(), Some("(INCHES)"), "{program}");
 }
 
@@ -259,7 +253,7 @@ fn wrapped_arcs_of_a_real_post_are_linearized() {
         println!("skipped: ../shared/corpus not found");
         return;
     };
-    let program = post_file(&compile(&path), &manifest().join("corpus/toolpaths/standard.ron"));
+    let program = post_file(&support::compile_file(&path), &manifest().join("corpus/toolpaths/standard.ron"));
     let arcs: Vec<&str> = program.lines().filter(|l| is_cut(l) && !l.starts_with("G1")).collect();
     assert!(arcs.is_empty(), "wrapped arcs must be linearized, found:\n{}", arcs.join("\n"));
     assert!(
@@ -280,7 +274,7 @@ fn wrapped_arc_chords_lie_on_the_arc() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let pp = dir.path().join("wrap_arcs.pp");
     std::fs::write(&pp, with_arcs).unwrap();
-    let post = compile(&pp);
+    let post = support::compile_file(&pp);
     let diameter = 40.0;
     let events = vec![
         Event::Job(Box::new(Job {

@@ -4,19 +4,12 @@
 //! small post written for it; `tests/vcarve_real.rs` reproduces the real
 //! programs of `../shared/vcarve-real/` as a whole.
 
+use crate::support;
 use std::path::Path;
 
 use postc_ir::event::{ArcDir, ArcMove, Event, FeedMove, Job, Material, Move, Point, Tool, ToolpathStart, VecSource};
 use postc_ir::{FileId, Post, Units};
 use postc_runtime::{Finished, Output, RunOptions};
-
-/// Compiles a post from its text; any error fails the test.
-fn compile(name: &str, text: &str) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
-    assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
-    compiled.post.expect("a compiled post")
-}
 
 fn run(post: &Post, events: Vec<Event>, options: RunOptions) -> String {
     let mut source = VecSource::new(events, FileId(0));
@@ -77,7 +70,7 @@ fn shopsabre_moves(moves: Vec<Event>) -> Vec<String> {
     let mut events = vec![inch_job(), tool(62.5), start()];
     events.extend(moves);
     events.push(Event::End);
-    let program = post(&compile("shopsabre.pp", SHOPSABRE), events);
+    let program = post(&support::compile_text("shopsabre.pp", SHOPSABRE), events);
     lines(&program)
         .into_iter()
         .filter(|l| l.starts_with("G0") || l.starts_with("G1") || l.starts_with("G2"))
@@ -90,7 +83,8 @@ fn shopsabre_moves(moves: Vec<Event>) -> Vec<String> {
 /// line with PP018.
 #[test]
 fn a_line_of_variables_without_quotes_prints() {
-    let program = post(&compile("shopsabre.pp", SHOPSABRE), vec![inch_job(), tool(62.5), start(), Event::End]);
+    let program =
+        post(&support::compile_text("shopsabre.pp", SHOPSABRE), vec![inch_job(), tool(62.5), start(), Event::End]);
     assert_eq!(lines(&program)[..2], ["G90\r\n", "F62.5\r\n"], "{program}");
 }
 
@@ -173,7 +167,7 @@ fn undeclared_labels_have_no_prefix() {
         material: Some(Material { min: Point { x: -1.5, y: 0.0, z: -0.75 }, max: Point { x: 22.5, y: 48.0, z: 0.0 } }),
         ..Job::default()
     }));
-    let program = post(&compile("sbp.pp", pp), vec![job, Event::End]);
+    let program = post(&support::compile_text("sbp.pp", pp), vec![job, Event::End]);
     assert_eq!(lines(&program)[..2], ["'Length of material in X = 24.000\r\n", "'Minimum X = -1.500\r\n"], "{program}");
 }
 
@@ -186,7 +180,7 @@ fn the_revision_comment_prints_first() {
     let pp = "POST_NAME = \"rev\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"MM\"\n\
         begin HEADER\n\"G21\"\n\
         begin REVISION_COMMENT\n\"(VECTRIC POST REVISION)\"\n\"([REVISION])\"\n";
-    let program = post(&compile("rev.pp", pp), vec![Event::Job(Box::default()), Event::End]);
+    let program = post(&support::compile_text("rev.pp", pp), vec![Event::Job(Box::default()), Event::End]);
     let hash = postc_front_vectric::revision::revision(pp.as_bytes());
     assert_eq!(hash.len(), 32);
     assert!(hash.bytes().all(|b| b.is_ascii_hexdigit() && !b.is_ascii_lowercase()), "{hash}");
@@ -207,7 +201,7 @@ fn the_home_position_of_a_wrapped_axis_prints_the_rotary_letter() {
             ..Job::default()
         }))
     };
-    let wrap = compile("wrap.pp", pp);
+    let wrap = support::compile_text("wrap.pp", pp);
     assert_eq!(post(&wrap, vec![job(0.0), Event::End]), "G0X0.000A0.000\r\n");
     // A home off zero turns like a position: 25 mm on a 100 mm circumference is 90 degrees.
     assert_eq!(post(&wrap, vec![job(25.0), Event::End]), "G0X0.000A90.000\r\n");
@@ -221,7 +215,7 @@ fn a_negative_value_that_rounds_to_zero_keeps_its_minus() {
         VAR X_POSITION = [X|A|X|1.3]\nVAR Y_POSITION = [Y|A|Y|1.3]\nVAR Z_POSITION = [Z|A|Z|1.3]\n\
         begin RAPID_MOVE\n\"G0[X][Y][Z]\"\n";
     let program = post(
-        &compile("nz.pp", pp),
+        &support::compile_text("nz.pp", pp),
         vec![Event::Job(Box::default()), start(), rapid(0.0, -0.0004, -0.0001), rapid(-0.0, 0.0004, 0.0), Event::End],
     );
     assert_eq!(program, "G0X0.000Y-0.000Z-0.000\nG0X0.000Y0.000Z0.000\n");
@@ -232,7 +226,7 @@ fn a_negative_value_that_rounds_to_zero_keeps_its_minus() {
 #[test]
 fn the_date_prints_in_the_long_form() {
     let pp = "POST_NAME = \"date\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"MM\"\nbegin HEADER\n\"( [DATE] )\"\n";
-    let post = compile("date.pp", pp);
+    let post = support::compile_text("date.pp", pp);
     let options = RunOptions { now: Some(1_321_358_400), ..postc_driver::run_options(&post) };
     assert_eq!(run(&post, vec![Event::Job(Box::default()), Event::End], options), "( Tuesday, November 15, 2011 )\r\n");
 }
@@ -244,5 +238,8 @@ fn the_date_prints_in_the_long_form() {
 fn an_lf_post_writes_crlf() {
     assert!(!SHOPSABRE.contains('\r'));
     let plain = "POST_NAME = \"lf\"\nFILE_EXTENSION = \"nc\"\nUNITS = \"MM\"\nbegin HEADER\n\"G21\"\n\"G90\"\n";
-    assert_eq!(post(&compile("lf.pp", plain), vec![Event::Job(Box::default()), Event::End]), "G21\r\nG90\r\n");
+    assert_eq!(
+        post(&support::compile_text("lf.pp", plain), vec![Event::Job(Box::default()), Event::End]),
+        "G21\r\nG90\r\n"
+    );
 }

@@ -55,13 +55,6 @@ fn good_post() -> String {
     std::fs::read_to_string(root().join("corpus/posts/vectric/gcode_mm.pp")).unwrap()
 }
 
-fn compile(text: &str) -> Post {
-    let mut sources = postc_report::source_map();
-    let compiled = postc_driver::compile_post_bytes(Path::new("seeded.pp"), text.as_bytes(), None, &mut sources);
-    assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
-    compiled.post.unwrap()
-}
-
 fn post(post: &Post, toolpath: &Path) -> String {
     let mut sources = postc_report::source_map();
     let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
@@ -112,7 +105,7 @@ fn line_of(program: &str, pred: impl Fn(&str) -> bool) -> usize {
 fn seeded(text: &str) -> (String, Vec<Found>) {
     let dir = tempfile::tempdir().unwrap();
     let toolpath = job_file(dir.path());
-    let p = compile(text);
+    let p = support::compile_text("seeded.pp", text);
     let program = post(&p, &toolpath);
     let found = verify(program.as_bytes(), &toolpath, &Settings::from_post(&p, Controller::LinuxCnc, 0.01));
     (program, found)
@@ -131,7 +124,7 @@ fn the_unmodified_post_verifies_clean() {
     let (program, found) = seeded(&good_post());
     assert!(found.is_empty(), "{found:#?}\n{program}");
     // And over the corpus's standard job.
-    let p = compile(&good_post());
+    let p = support::compile_text("seeded.pp", &good_post());
     let standard = root().join("corpus/toolpaths/standard.ron");
     let program = post(&p, &standard);
     let found = verify(program.as_bytes(), &standard, &Settings::from_post(&p, Controller::LinuxCnc, 0.01));
@@ -166,7 +159,7 @@ fn arc_words_with_too_few_decimals() {
     // grbl's limit catches it too.
     let dir = tempfile::tempdir().unwrap();
     let toolpath = job_file(dir.path());
-    let p = compile(&text);
+    let p = support::compile_text("seeded.pp", &text);
     let found = verify(program.as_bytes(), &toolpath, &Settings::from_post(&p, Controller::Grbl, 0.01));
     assert_caught(&program, &found, "VF020", line);
 }
@@ -443,7 +436,7 @@ fn bad_programs_give_findings_never_a_panic() {
     let found = verify(text.as_bytes(), &toolpath, &Settings::default());
     assert!(found.iter().any(|f| f.code == "VF001"), "{found:#?}");
     // Random mutations of a real program: findings, never a panic.
-    let p = compile(&good_post());
+    let p = support::compile_text("seeded.pp", &good_post());
     let standard = root().join("corpus/toolpaths/standard.ron");
     let program = post(&p, &standard).into_bytes();
     let mut seed = 0x2545_F491_4F6C_DD1Du64;

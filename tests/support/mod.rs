@@ -156,6 +156,34 @@ pub fn stem(path: &Path) -> String {
     path.file_stem().expect("a file name").to_string_lossy().into_owned()
 }
 
+/// Compiles a post given as text, its dialect told by `name`'s extension
+/// or its content, with its diagnostics and the source map they point into.
+pub fn compile_text_with_diagnostics(
+    name: &str,
+    text: &str,
+    sources: &mut postc_ir::SourceMap,
+) -> (Option<Post>, Vec<postc_ir::Diagnostic>) {
+    let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, sources);
+    (compiled.post, compiled.diagnostics)
+}
+
+/// Compiles a post given as text (named `name`, which tells its dialect);
+/// panics when it has errors.
+pub fn compile_text(name: &str, text: &str) -> Post {
+    let mut sources = postc_report::source_map();
+    let (post, diagnostics) = compile_text_with_diagnostics(name, text, &mut sources);
+    assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{name}: {diagnostics:?}");
+    post.expect("a compiled post")
+}
+
+/// Compiles a post file; panics when it has errors (warnings pass).
+pub fn compile_file(path: &Path) -> Post {
+    let mut sources = postc_report::source_map();
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
+    assert!(!compiled.has_errors(), "{}: {:?}", path.display(), compiled.diagnostics);
+    compiled.post.expect("a compiled post")
+}
+
 /// Compiles a corpus post; any diagnostic (error or warning) is a failure.
 pub fn compile(path: &Path) -> Result<Post, String> {
     let mut sources = postc_report::source_map();
