@@ -6,7 +6,7 @@
 //! no file.
 
 use std::io::Cursor;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::{Command, Output};
 
 use postc_ir::Post;

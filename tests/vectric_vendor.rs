@@ -5,7 +5,6 @@
 //! programs of `../shared/vcarve-real/` as a whole.
 
 use crate::support;
-use std::path::Path;
 
 use postc_ir::event::{ArcDir, ArcMove, Event, FeedMove, Job, Material, Move, Point, Tool, ToolpathStart, VecSource};
 use postc_ir::{FileId, Post, Units};
