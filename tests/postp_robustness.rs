@@ -89,3 +89,20 @@ proptest! {
         prop_assert!(r.ok || !r.diagnostics.is_empty());
     }
 }
+
+/// MAXRPM given on a mill is ignored with a warning of the registry's
+/// warning code for ignored words (a mutant once reported it under the
+/// lathe-word error code as a warning, and the diagnostic panicked).
+#[test]
+fn maxrpm_on_a_mill_is_an_ignored_word() {
+    for machine in Controller::ALL.into_iter().filter(|c| c.kind() == postc_postp::Kind::Mill) {
+        let mut lines = demo();
+        lines.insert(1, "SPINDL/1000,RPM,CLW,MAXRPM,2500".to_string());
+        let r = postp::run_with(&lines.join("\n"), None, Some(machine));
+        assert!(
+            r.diagnostics.iter().any(|d| d.contains("PX014") && d.contains("MAXRPM")),
+            "{machine:?}: {:?}",
+            r.diagnostics
+        );
+    }
+}

@@ -268,7 +268,7 @@ impl<S: EventSource> Transform<S> {
             self.warn_once(
                 diags,
                 "MAXRPM",
-                Diagnostic::warning(codes::LATHE_ONLY, "MAXRPM applies to lathes only; ignored on a mill"),
+                Diagnostic::warning(codes::IGNORED, "MAXRPM applies to lathes only; ignored on a mill"),
             );
             max = 0.0;
         }
