@@ -8,56 +8,11 @@
 use crate::support;
 use std::path::Path;
 
-use postc_ir::{FunctionId, HandlerKey, Post, Section};
-use postc_runtime::exec::{Expr as XExpr, Stmt as XStmt};
+use crate::support::prepared::*;
+use postc_ir::{HandlerKey, Post, Section};
 
 fn feed_move(post: &Post) -> usize {
     post.handlers.iter().position(|h| h.key == HandlerKey::Section(Section::FeedMove)).expect("FEED_MOVE")
-}
-
-fn function(post: &Post, name: &str) -> FunctionId {
-    FunctionId::new(post.functions.iter().position(|f| f.name == name).expect("the function") as u16)
-}
-
-/// How many statements of a prepared `body`, at any depth, satisfy `p`.
-fn count_stmts(body: &[XStmt], p: &impl Fn(&XStmt) -> bool) -> usize {
-    body.iter()
-        .map(|s| {
-            let mut n = usize::from(p(s));
-            s.clone().for_each_body_mut(|b| n += count_stmts(b, p));
-            n
-        })
-        .sum()
-}
-
-/// Whether an expression of a prepared `body`, at any depth, satisfies `p`.
-fn any_expr(body: &[XStmt], p: &impl Fn(&XExpr) -> bool) -> bool {
-    fn expr(e: &mut XExpr, p: &impl Fn(&XExpr) -> bool) -> bool {
-        let mut found = p(e);
-        e.for_each_operand_mut(|o| found |= expr(o, p));
-        found
-    }
-    body.iter().any(|s| {
-        let mut s = s.clone();
-        let mut found = false;
-        s.for_each_expr_mut(|e| found |= expr(e, p));
-        s.for_each_body_mut(|b| found |= any_expr(b, p));
-        found
-    })
-}
-
-/// Whether the IR `body` calls `f` anywhere.
-fn ir_calls(body: &[postc_ir::Stmt], f: FunctionId) -> bool {
-    struct Calls(FunctionId, bool);
-    impl postc_ir::visit::Visit for Calls {
-        fn visit_expr(&mut self, e: &postc_ir::Expr) {
-            self.1 |= matches!(e, postc_ir::Expr::Call(g, _) if *g == self.0);
-            postc_ir::visit::walk_expr(self, e);
-        }
-    }
-    let mut v = Calls(f, false);
-    body.iter().for_each(|s| postc_ir::visit::Visit::visit_stmt(&mut v, s));
-    v.1
 }
 
 /// Expression functions (a chain of `if (c) return a;` and a last
@@ -73,14 +28,13 @@ fn expression_functions_are_inlined_into_the_prepared_handlers() {
         function onLinear(x, y, z, m) { return (value() > 0 ? "p" : "n") + (guarded(m) == "" ? "r" : "f") + "\n"; }
     "#;
     let post = support::compile_text("t.js", js);
-    let calls = |body: &[XStmt], name: &str| {
-        let f = function(&post, name);
-        any_expr(body, &|e| matches!(e, XExpr::Call(g, _) if *g == f))
-    };
     let code = postc_runtime::prepare::prepare(&post);
     let handler = &code.handlers[feed_move(&post)];
-    assert!(!calls(handler, "value"), "value() is inlined: {handler:?}");
-    assert!(calls(handler, "guarded"), "guarded() reads its local under a choice: a call: {handler:?}");
+    assert!(!calls(handler, function(&post, "value")), "value() is inlined: {handler:?}");
+    assert!(
+        calls(handler, function(&post, "guarded")),
+        "guarded() reads its local under a choice: a call: {handler:?}"
+    );
     let on_linear = &post.functions[function(&post, "onLinear").index()];
     let postc_ir::Body::Native(on_linear) = &on_linear.body else { panic!("onLinear is native") };
     assert!(ir_calls(on_linear, function(&post, "value")), "the function keeps its call: {on_linear:?}");

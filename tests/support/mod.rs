@@ -22,6 +22,7 @@
 
 pub mod cimco;
 pub mod postp;
+pub mod prepared;
 pub mod rs274;
 
 use std::collections::BTreeSet;
