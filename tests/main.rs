@@ -4,6 +4,7 @@
 //! runs the tests whose path holds NAME, for example
 //! `cargo test --test suite vcarve_real`.
 
+mod cli_manual;
 mod many_errors;
 mod support;
 

@@ -16,6 +16,8 @@
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
 //! postc explain TRACE.jsonl LINE [--output NC]                # why an NC line exists (`post --trace`)
+//! postc completions bash|zsh|fish|elvish|powershell            # shell completions on stdout
+//! postc man     DIR                                           # man pages of every subcommand
 //! ```
 //!
 //! Exit status: 0 on success, 1 when an input has errors (after printing
@@ -29,6 +31,7 @@ mod explain;
 mod inspect;
 mod levels;
 mod lsp;
+mod manual;
 pub mod outputs;
 mod plot;
 mod post;
@@ -93,6 +96,10 @@ enum Command {
         #[command(subcommand)]
         command: toolpath::Command,
     },
+    /// Print the shell completion script for bash, zsh, fish, elvish or powershell.
+    Completions(manual::CompletionsArgs),
+    /// Write the man pages of postc and of each subcommand into a folder.
+    Man(manual::ManArgs),
 }
 
 /// Post dialects as `--dialect` names them.
@@ -135,6 +142,8 @@ pub fn main() -> ExitCode {
         Command::Lsp(args) => lsp::run(args),
         Command::Plot(args) => plot::run(args),
         Command::Toolpath { command } => toolpath::run(command),
+        Command::Completions(args) => manual::completions(args),
+        Command::Man(args) => manual::man(args),
     };
     report::summarize_held_back();
     match result {
