@@ -1,7 +1,9 @@
-//! The shell completions and man pages: `postc completions bash` loads in
-//! bash and completes the subcommands; `postc man DIR` writes a page for
-//! the command and each subcommand, and `man` renders every one. Under
-//! `CI=true` a missing `bash` or `man` fails (`.ci/run` installs man-db).
+//! The command line's conventions: `postc completions bash` loads in bash
+//! and completes the subcommands; `postc man DIR` writes a page for the
+//! command and each subcommand, and `man` renders every one (under
+//! `CI=true` a missing `bash` or `man` fails; `.ci/run` installs man-db);
+//! a command that writes files says what it wrote in one line, and `-q`
+//! keeps it quiet.
 
 use std::process::Command;
 
@@ -77,5 +79,30 @@ fn man_pages_render_for_every_subcommand() {
             "{page} does not render: {text}{}",
             String::from_utf8_lossy(&run.stderr)
         );
+    }
+}
+
+#[test]
+fn writes_say_what_they_wrote_unless_quiet() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("job.nc");
+    let out = out.display().to_string();
+    let o = postc(&["post", "corpus/toolpaths/seed_job.ron", "-o", &out]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && err.starts_with(&format!("postc: wrote {out} (")), "{}", said(&o));
+    assert!(err.contains("blocks") && err.contains("toolpath events"), "{err}");
+    let generated = dir.path().join("g.jsonl").display().to_string();
+    let o = postc(&["toolpath", "gen", "--pattern", "zigzag", "--moves", "100", "-o", &generated]);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("100 zigzag moves"), "{}", said(&o));
+    let js = dir.path().join("c.js").display().to_string();
+    let o = postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "cimco", "-o", &js]);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("a cimco post"), "{}", said(&o));
+    for args in [
+        vec!["-q", "post", "corpus/toolpaths/seed_job.ron", "-o", &out],
+        vec!["post", "corpus/toolpaths/seed_job.ron", "-o", &out, "--quiet"],
+        vec!["toolpath", "gen", "--pattern", "zigzag", "--moves", "100", "-o", &generated, "-q"],
+    ] {
+        let o = postc(&args);
+        assert!(o.status.success() && o.stderr.is_empty(), "{args:?}: {}", said(&o));
     }
 }

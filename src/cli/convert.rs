@@ -61,7 +61,15 @@ pub fn run(args: Args) -> Result<(), Failed> {
     };
     match &args.output {
         Some(path) => {
-            super::outputs::write_whole(path, &text, &[&args.post], Some(&sources)).map_err(|d| fail(&mut sources, d))
+            super::outputs::write_whole(path, &text, &[&args.post], Some(&sources))
+                .map_err(|d| fail(&mut sources, d))?;
+            let lines = text.iter().filter(|&&b| b == b'\n').count();
+            report::wrote(format_args!(
+                "{} (a {} post, {lines} lines)",
+                path.display(),
+                format!("{:?}", args.to).to_ascii_lowercase()
+            ));
+            Ok(())
         }
         None => {
             let mut stdout = std::io::stdout().lock();

@@ -21,7 +21,7 @@ pub struct Args {
     #[arg(value_name = "LINE")]
     line: Option<u64>,
     /// With a trace: which NC file, when the post split its output into parts (a path or its end).
-    #[arg(long, value_name = "NC")]
+    #[arg(short, long, value_name = "NC")]
     output: Option<String>,
 }
 

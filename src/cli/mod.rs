@@ -61,6 +61,9 @@ pub struct Cli {
     /// Diagnostics shown per file, for people (0: all); `--format json` lists every one.
     #[arg(long, global = true, value_name = "N", default_value_t = report::DEFAULT_MAX_DIAGNOSTICS)]
     max_diagnostics: usize,
+    /// No summary line after writing files (`postc: wrote ...`); diagnostics still print.
+    #[arg(short, long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -129,6 +132,7 @@ pub fn main() -> ExitCode {
     }
     let cli = Cli::parse();
     report::set_max_diagnostics(cli.max_diagnostics);
+    report::set_quiet(cli.quiet);
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),

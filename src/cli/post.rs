@@ -91,6 +91,7 @@ fn file_info(path: &Path) -> FileInfo {
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
+    let started = std::time::Instant::now();
     let mut sources = postc_report::source_map();
     args.levels.check(&mut sources)?;
     let (post_path, toolpath) = match args.files.as_slice() {
@@ -302,14 +303,16 @@ pub fn run(args: Args) -> Result<(), Failed> {
         p.finish(tape).map_err(|e| cannot_write(&mut sources, e))?;
     }
     batch.commit_except(&inputs, Some(&sources), &written).map_err(|d| fail(&mut sources, d))?;
-    if let Finished::Files(files) = &report.output
-        && files.len() > 1
-    {
-        eprintln!(
-            "postc: wrote {} parts: {}",
-            files.len(),
-            files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
-        );
+    if let Finished::Files(files) = &report.output {
+        let names = files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ");
+        let parts = if files.len() > 1 { format!("{} parts: ", files.len()) } else { String::new() };
+        report::wrote(format_args!(
+            "{parts}{names} ({} blocks, {} bytes, from {} toolpath events in {:.2} s)",
+            report.blocks,
+            report.bytes,
+            report.events,
+            started.elapsed().as_secs_f64()
+        ));
     }
     Ok(())
 }

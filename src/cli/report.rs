@@ -32,6 +32,23 @@ fn limit() -> MutexGuard<'static, Limit> {
     LIMIT.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
+/// `-q`: no summary line after a command that wrote files (diagnostics
+/// still print).
+static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Sets `-q/--quiet`.
+pub fn set_quiet(quiet: bool) {
+    QUIET.store(quiet, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// Prints the one-line summary of what a command wrote (`postc: wrote
+/// ...`) on standard error, unless `-q`.
+pub fn wrote(what: std::fmt::Arguments) {
+    if !QUIET.load(std::sync::atomic::Ordering::Relaxed) {
+        eprintln!("postc: wrote {what}");
+    }
+}
+
 /// Sets how many diagnostics are shown per file (`--max-diagnostics`; 0
 /// shows all).
 pub fn set_max_diagnostics(max: usize) {

@@ -61,6 +61,7 @@ fn free_bytes(_dir: &Path) -> Option<u64> {
 
 pub fn run(command: Command) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
+    let started = std::time::Instant::now();
     let Command::Gen { pattern, moves, output } = command;
     let Some(mut generator) = Synthetic::new(&pattern, moves) else {
         return Err(fail(
@@ -118,7 +119,14 @@ pub fn run(command: Command) -> Result<(), Failed> {
                     Ok(())
                 })
                 .map_err(|e| fail(&mut sources, super::outputs::cannot_write(path, &e)))?;
-            return batch.commit(&[], None).map_err(|d| fail(&mut sources, d));
+            batch.commit(&[], None).map_err(|d| fail(&mut sources, d))?;
+            let bytes = std::fs::metadata(path).map_or(0, |m| m.len());
+            super::report::wrote(format_args!(
+                "{} ({moves} {pattern} moves, {bytes} bytes, in {:.2} s)",
+                path.display(),
+                started.elapsed().as_secs_f64()
+            ));
+            return Ok(());
         }
         None => write(&mut std::io::BufWriter::new(std::io::stdout().lock()), &mut generator),
     };
