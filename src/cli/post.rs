@@ -213,15 +213,19 @@ pub fn run(args: Args) -> Result<(), Failed> {
         None => None,
     };
     let big = std::fs::metadata(toolpath).map(|m| m.len() > (32 << 20)).unwrap_or(false);
-    if big && std::io::stderr().is_terminal() {
-        let bar = indicatif::ProgressBar::new_spinner();
-        bar.set_message("posting");
-        options.progress = Some(Box::new(move |events| bar.set_message(format!("posted {events} events"))));
-    }
+    let spinner = (big && std::io::stderr().is_terminal()).then(|| {
+        let bar = report::spinner("posting");
+        let shown = bar.clone();
+        options.progress = Some(Box::new(move |events| shown.set_message(format!("posted {events} events"))));
+        bar
+    });
     let run = match &verification {
         Some((v, _)) => postc_runtime::run(&post, &mut v.source(&mut *source), out, options),
         None => postc_runtime::run(&post, &mut source, out, options),
     };
+    if let Some(bar) = spinner {
+        bar.finish_and_clear();
+    }
     let mut report = match run {
         Ok(report) => report,
         Err(diagnostics) => {

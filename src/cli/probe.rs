@@ -116,11 +116,17 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     };
     let mut options = job.options;
     let big = std::fs::metadata(job.input).map(|m| m.len() > (32 << 20)).unwrap_or(false);
-    if big && std::io::stderr().is_terminal() {
-        let bar = indicatif::ProgressBar::new_spinner();
-        options.progress = Some(Box::new(move |calls| bar.set_message(format!("ran {calls} calls"))));
+    let spinner = (big && std::io::stderr().is_terminal()).then(|| {
+        let bar = report::spinner("running the calls");
+        let shown = bar.clone();
+        options.progress = Some(Box::new(move |calls| shown.set_message(format!("ran {calls} calls"))));
+        bar
+    });
+    let ran = postc_runtime::calls::run_calls(&postc_driver::for_calls(&post), &mut source, out, options);
+    if let Some(bar) = spinner {
+        bar.finish_and_clear();
     }
-    match postc_runtime::calls::run_calls(&postc_driver::for_calls(&post), &mut source, out, options) {
+    match ran {
         Ok(report) => {
             report::eprint(&mut sources, &report.warnings);
             if job.verify {

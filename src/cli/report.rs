@@ -41,6 +41,16 @@ pub fn set_quiet(quiet: bool) {
     QUIET.store(quiet, std::sync::atomic::Ordering::Relaxed);
 }
 
+/// A spinner on standard error that turns on its own (a tick every
+/// 120 ms) while a long run goes on, saying `message` until told more;
+/// the caller clears it when the run ends. Only for a terminal.
+pub fn spinner(message: &'static str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new_spinner();
+    bar.set_message(message);
+    bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    bar
+}
+
 /// Prints the one-line summary of what a command wrote (`postc: wrote
 /// ...`) on standard error, unless `-q`.
 pub fn wrote(what: std::fmt::Arguments) {
