@@ -255,15 +255,10 @@ fn the_cimco_script_host_uses_the_runtime_and_the_frontends_names() {
     assert!(!postc_crates("frontends/cimco").iter().any(|d| d == "postc-runtime"));
 }
 
-/// The folders at the root are the architecture's layers
-/// (docs/architecture.md draws them): dialect frontends, toolpath readers,
-/// the driver, the runtime, script hosts, backends, lint, verify, the
-/// language server, report, the command line (`src/`), and beside them the
-/// fuzzer, benches, corpus, docs and tests.
-#[test]
-fn the_root_folders_are_the_layers() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut folders: Vec<String> = std::fs::read_dir(root)
+/// The folders at the repository's root, sorted (hidden ones and `target`
+/// left out).
+fn root_folders() -> Vec<String> {
+    let mut folders: Vec<String> = std::fs::read_dir(env!("CARGO_MANIFEST_DIR"))
         .unwrap()
         .flatten()
         .filter(|e| e.path().is_dir())
@@ -271,8 +266,39 @@ fn the_root_folders_are_the_layers() {
         .filter(|name| !name.starts_with('.') && name != "target")
         .collect();
     folders.sort();
+    folders
+}
+
+/// The workspace's crate folders (`ir`, `frontends/cimco`): every root
+/// folder with a `Cargo.toml`, and every crate of a layer folder
+/// (`frontends/`, `readers/`, `hosts/`).
+fn crate_folders() -> Vec<String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut crates = Vec::new();
+    for name in root_folders() {
+        if root.join(&name).join("Cargo.toml").is_file() {
+            crates.push(name);
+        } else {
+            for sub in std::fs::read_dir(root.join(&name)).unwrap().flatten() {
+                if sub.path().join("Cargo.toml").is_file() {
+                    crates.push(format!("{name}/{}", sub.file_name().to_string_lossy()));
+                }
+            }
+        }
+    }
+    crates.sort();
+    crates
+}
+
+/// The folders at the root are the architecture's layers
+/// (docs/architecture.md draws them): dialect frontends, toolpath readers,
+/// the driver, the runtime, script hosts, backends, lint, verify, the
+/// language server, report, the command line (`src/`), and beside them the
+/// fuzzer, benches, corpus, docs and tests.
+#[test]
+fn the_root_folders_are_the_layers() {
     assert_eq!(
-        folders,
+        root_folders(),
         [
             "backends",
             "benches",
@@ -299,13 +325,7 @@ fn the_root_folders_are_the_layers() {
 /// The crates of a layer folder (`frontends`, `readers`, `hosts`): its
 /// subfolders with a `Cargo.toml`.
 fn layer(folder: &str) -> Vec<String> {
-    let mut crates: Vec<String> = std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(folder))
-        .unwrap()
-        .flatten()
-        .filter(|e| e.path().join("Cargo.toml").is_file())
-        .map(|e| format!("{folder}/{}", e.file_name().to_string_lossy()))
-        .collect();
-    crates.sort();
+    let crates: Vec<String> = crate_folders().into_iter().filter(|c| c.starts_with(&format!("{folder}/"))).collect();
     assert!(!crates.is_empty(), "no crate in {folder}/");
     assert!(!Path::new(env!("CARGO_MANIFEST_DIR")).join(folder).join("Cargo.toml").exists(), "{folder}/ is a crate");
     crates
@@ -397,16 +417,7 @@ fn readers_and_post_dialects_are_apart() {
 fn comments_cite_no_issue_seed_number_or_numbered_decision() {
     let brief = concat!("BRI", "EF");
     let mut found = Vec::new();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut folders: Vec<String> = std::fs::read_dir(root)
-        .unwrap()
-        .flatten()
-        .filter(|e| e.path().is_dir())
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|name| !name.starts_with('.') && name != "target" && name != "corpus" && name != "docs")
-        .collect();
-    folders.sort();
-    for folder in folders {
+    for folder in root_folders().into_iter().filter(|f| f != "corpus" && f != "docs") {
         for (path, text) in sources(&folder) {
             for (i, line) in text.lines().enumerate() {
                 let cites = |word: &str| {
@@ -429,11 +440,8 @@ fn comments_cite_no_issue_seed_number_or_numbered_decision() {
 #[test]
 fn each_crate_links_one_integration_test_binary() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let workspace = std::fs::read_to_string(root.join("Cargo.toml")).unwrap();
-    let members = workspace.split("members = [").nth(1).and_then(|m| m.split(']').next()).unwrap_or("");
-    let crates = members.split(',').map(|m| m.trim().trim_matches('"')).filter(|m| !m.is_empty());
-    for krate in std::iter::once(".").chain(crates) {
-        let dir = root.join(krate);
+    for krate in std::iter::once(".".to_string()).chain(crate_folders()) {
+        let dir = root.join(&krate);
         if !dir.join("tests").is_dir() {
             continue;
         }
@@ -461,24 +469,8 @@ fn each_crate_links_one_integration_test_binary() {
 /// (`frontends/`, `readers/`, `hosts/`), and `src/`, the command line
 /// (crate `postc`, whose modules are in `src` itself).
 fn crate_sources() -> Vec<(String, String)> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut crates = vec![("src/".to_string(), "src".to_string())];
-    for entry in std::fs::read_dir(root).unwrap().flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if !entry.path().is_dir() || name.starts_with('.') || name == "target" {
-            continue;
-        }
-        if entry.path().join("Cargo.toml").is_file() {
-            crates.push((format!("{name}/"), format!("{name}/src")));
-        } else {
-            for sub in std::fs::read_dir(entry.path()).unwrap().flatten() {
-                if sub.path().join("Cargo.toml").is_file() {
-                    let folder = format!("{name}/{}", sub.file_name().to_string_lossy());
-                    crates.push((format!("{folder}/"), format!("{folder}/src")));
-                }
-            }
-        }
-    }
+    crates.extend(crate_folders().into_iter().map(|f| (format!("{f}/"), format!("{f}/src"))));
     crates.sort();
     crates
 }
