@@ -45,21 +45,11 @@ pub fn man(args: ManArgs) -> Result<(), Failed> {
     let mut pages = Vec::new();
     pages_of(&command, "postc", &mut pages);
     let batch = super::outputs::Batch::default();
-    let mut targets = Vec::new();
     for (name, page) in &pages {
-        let target = args.dir.join(format!("{name}.1"));
-        let temp = super::outputs::Temp::beside(&target)
-            .map_err(|e| fail(&mut sources, super::outputs::cannot_write(&target, &e)))?;
-        std::io::Write::write_all(
-            &mut temp.file().map_err(|e| fail(&mut sources, super::outputs::cannot_write(&target, &e)))?,
-            page,
-        )
-        .map_err(|e| fail(&mut sources, super::outputs::cannot_write(&target, &e)))?;
-        batch.stage(temp, target.clone());
-        targets.push(target);
+        batch.stage_bytes(&args.dir.join(format!("{name}.1")), page).map_err(|d| fail(&mut sources, d))?;
     }
     batch.commit(&[], None).map_err(|d| fail(&mut sources, d))?;
-    eprintln!("postc: wrote {} man pages to {}", targets.len(), args.dir.display());
+    super::report::wrote(format_args!("{} man pages to {}", pages.len(), args.dir.display()));
     Ok(())
 }
 
@@ -67,9 +57,9 @@ pub fn man(args: ManArgs) -> Result<(), Failed> {
 fn pages_of(command: &clap::Command, name: &str, out: &mut Vec<(String, Vec<u8>)>) {
     let mut page = Vec::new();
     let titled = command.clone().name(name.to_string());
-    if clap_mangen::Man::new(titled).render(&mut page).is_ok() {
-        out.push((name.to_string(), page));
-    }
+    // Rendering into memory cannot fail: a `Vec` takes every write.
+    let _ = clap_mangen::Man::new(titled).render(&mut page);
+    out.push((name.to_string(), page));
     for sub in command.get_subcommands().filter(|s| s.get_name() != "help") {
         pages_of(sub, &format!("{name}-{}", sub.get_name()), out);
     }

@@ -177,6 +177,16 @@ pub struct Batch(Rc<RefCell<Vec<(Temp, PathBuf)>>>);
 
 impl Batch {
     /// Adds a complete temporary file, to become `target` at the commit.
+    /// Writes `bytes` whole to a temporary file beside `target` and stages
+    /// it to become `target`.
+    pub fn stage_bytes(&self, target: &Path, bytes: &[u8]) -> Result<(), Diagnostic> {
+        let temp = Temp::beside(target).map_err(|e| cannot_write(target, &e))?;
+        io::Write::write_all(&mut temp.file().map_err(|e| cannot_write(target, &e))?, bytes)
+            .map_err(|e| cannot_write(target, &e))?;
+        self.stage(temp, target.to_path_buf());
+        Ok(())
+    }
+
     pub fn stage(&self, temp: Temp, target: PathBuf) {
         self.0.borrow_mut().push((temp, target));
     }
@@ -240,11 +250,8 @@ pub fn write_whole(
     inputs: &[&Path],
     sources: Option<&SourceMap>,
 ) -> Result<(), Diagnostic> {
-    let temp = Temp::beside(target).map_err(|e| cannot_write(target, &e))?;
-    io::Write::write_all(&mut temp.file().map_err(|e| cannot_write(target, &e))?, bytes)
-        .map_err(|e| cannot_write(target, &e))?;
     let batch = Batch::default();
-    batch.stage(temp, target.to_path_buf());
+    batch.stage_bytes(target, bytes)?;
     batch.commit(inputs, sources)
 }
 

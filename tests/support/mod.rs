@@ -157,24 +157,13 @@ pub fn stem(path: &Path) -> String {
     path.file_stem().expect("a file name").to_string_lossy().into_owned()
 }
 
-/// Compiles a post given as text, its dialect told by `name`'s extension
-/// or its content, with its diagnostics and the source map they point into.
-pub fn compile_text_with_diagnostics(
-    name: &str,
-    text: &str,
-    sources: &mut postc_ir::SourceMap,
-) -> (Option<Post>, Vec<postc_ir::Diagnostic>) {
-    let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, sources);
-    (compiled.post, compiled.diagnostics)
-}
-
 /// Compiles a post given as text (named `name`, which tells its dialect);
 /// panics when it has errors.
 pub fn compile_text(name: &str, text: &str) -> Post {
     let mut sources = postc_report::source_map();
-    let (post, diagnostics) = compile_text_with_diagnostics(name, text, &mut sources);
-    assert!(!postc_ir::diagnostic::has_errors(&diagnostics), "{name}: {diagnostics:?}");
-    post.expect("a compiled post")
+    let compiled = postc_driver::compile_post_bytes(Path::new(name), text.as_bytes(), None, &mut sources);
+    assert!(!compiled.has_errors(), "{name}: {:?}", compiled.diagnostics);
+    compiled.post.expect("a compiled post")
 }
 
 /// Compiles a post file; panics when it has errors (warnings pass).
@@ -194,6 +183,18 @@ pub fn compile(path: &Path) -> Result<Post, String> {
         return Err(format!("{} does not compile cleanly:\n{}", path.display(), list.join("\n")));
     }
     compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
+}
+
+/// A referee of a test (an outside program postc is checked against:
+/// Node.js, rs274, bash, man) is not installed: under `CI=true` that fails
+/// the test, since CI never skips a referee (`bash .ci/run` installs them);
+/// elsewhere the check is skipped with a message.
+pub fn referee_missing(test: &str, tool: &str) {
+    assert!(
+        std::env::var_os("CI").is_none_or(|v| v != "true"),
+        "{test}: `{tool}` is not installed, and CI=true requires it (bash .ci/run installs it)"
+    );
+    eprintln!("{test}: `{tool}` is not installed; that check is skipped");
 }
 
 /// Runs the `postc` binary in the repository's folder.
