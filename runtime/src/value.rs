@@ -331,7 +331,8 @@ impl Value {
     /// holds itself (JavaScript writes nothing for the cycle) stops there.
     fn append_nested(&self, out: &mut String, depth: u32) {
         match self {
-            Value::Num(n) => push_number(out, *n),
+            // As JavaScript writes it: `Infinity`, `1e+21`, `1e-7`.
+            Value::Num(n) => crate::js::push_number(out, *n),
             Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
             Value::Text(s) => out.push_str(s.as_str()),
             Value::Null => {}
@@ -364,14 +365,6 @@ impl Value {
             }
         }
     }
-}
-
-/// Shortest text of a number: `3`, `2.5`, `-0.125`, as JavaScript writes
-/// it ([`crate::js::push_number`], which the Rhai script host uses too):
-/// `Infinity`, `-Infinity`, `NaN`, and exponent form from 1e21 (`1e+21`)
-/// and below 1e-6 (`1e-7`).
-pub fn push_number(out: &mut String, n: f64) {
-    crate::js::push_number(out, n);
 }
 
 #[cfg(test)]
