@@ -65,6 +65,7 @@ fn statement_shape(dialect: Dialect, text: &str, script_function: bool) -> bool 
         Dialect::Vectric => text.trim_start().starts_with('"'),
         Dialect::VcPost => text.trim_start().to_ascii_lowercase().starts_with("out"),
         Dialect::Cimco => text.starts_with("return") || script_function && text.starts_with("function"),
+        Dialect::Fusion => text.starts_with("write"),
         Dialect::Ron => true,
     }
 }

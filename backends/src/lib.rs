@@ -68,6 +68,7 @@ pub(crate) fn dialect_name(d: Dialect) -> &'static str {
     match d {
         Dialect::Vectric => "Vectric",
         Dialect::Cimco => "CIMCO CNC-Calc JavaScript",
+        Dialect::Fusion => "Autodesk Fusion JavaScript (.cps)",
         Dialect::VcPost => "Vericut VcPost",
         Dialect::Ron => "postc IR (RON)",
     }

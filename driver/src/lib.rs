@@ -52,6 +52,7 @@ pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
     match ext.as_deref() {
         Some("pp") => return Some(Dialect::Vectric),
         Some("js") => return Some(Dialect::Cimco),
+        Some("cps") => return Some(Dialect::Fusion),
         Some("vcpost") => return Some(Dialect::VcPost),
         Some("ron") => return Some(Dialect::Ron),
         _ => {}
@@ -139,7 +140,7 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
     let Some(dialect) = dialect.or_else(|| post_dialect(path, bytes)) else {
         return Compiled::failed(
             Diagnostic::error(codes::IO004, format!("cannot tell which dialect `{}` is written in", path.display()))
-                .help("name it .pp (Vectric), .js (CIMCO), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
+                .help("name it .pp (Vectric), .js (CIMCO), .cps (Fusion), .VcPost (Vericut) or .ron (postc IR), or pass --dialect"),
         );
     };
     let mut compiled = match dialect {
@@ -153,6 +154,10 @@ pub fn compile_post_bytes(path: &Path, bytes: &[u8], dialect: Option<Dialect>, s
         }
         Dialect::Cimco => {
             let (post, diagnostics) = postc_front_cimco::compile(path, bytes, sources);
+            Compiled { post: Some(post), diagnostics }
+        }
+        Dialect::Fusion => {
+            let (post, diagnostics) = postc_front_cimco::fusion::compile(path, bytes, sources);
             Compiled { post: Some(post), diagnostics }
         }
         Dialect::Ron => return compile_ron(path, bytes, sources),

@@ -358,4 +358,16 @@ pub enum Builtin {
     /// has the property, its own or its prototype's (`"length" in [1]`,
     /// `"toString" in {}`); a TypeError for any other value.
     HasProperty,
+    /// JavaScript `new F(args)`: the first operand is `F`, the rest its
+    /// arguments. `F` runs with a new empty object as `this`; the value is
+    /// what `F` returns when that is an object, an array or a function,
+    /// else the new object. Objects have no prototypes: `F.prototype` is
+    /// not consulted. A TypeError when `F` is not a function.
+    Construct,
+    /// JavaScript `Array.isArray(value)`.
+    IsArray,
+    /// A name the post never defines, read or called: JavaScript's
+    /// `ReferenceError` when it runs (`try` catches it). The operand is the
+    /// name, as text.
+    Undeclared,
 }

@@ -807,6 +807,13 @@ declare_codes! {
     JS108: Error, "a regular expression postc cannot run: its pattern does not read, or uses a backreference or lookaround (no linear-time form)",
         example = "function clean(t) { return t.replace(/(a)\\1/g, \"a\"); }",
         fix = "Write the pattern without backreferences and lookaround (match the text and test it in code), or correct its syntax.";
+    /// postc runs a Fusion `.cps` post whole in its engine, with Autodesk's host API written from
+    /// Autodesk's public declarations (docs/fusion.md). This post uses a construct of JavaScript or
+    /// a host function postc does not run yet; the message names it at its line, and the post is
+    /// refused rather than run with a guess.
+    JS109: Error, "a Fusion post uses a construct or host API postc does not run",
+        example = "function onOpen() { getRegistryString(\"a\", \"b\"); }",
+        fix = "Report it to postc's authors with the post; meanwhile, rewriting that part of the post in plainer JavaScript may avoid it.";
     /// The line does not read as VcPost: a word or symbol stands where the language allows none.
     /// The help, when there is one, says what was expected.
     VC001: Error, "a line VcPost cannot read (unexpected word or symbol)",

@@ -177,6 +177,8 @@ pub enum Dialect {
     VcPost,
     /// A post written directly as IR (RON).
     Ron,
+    /// An Autodesk Fusion / HSM `.cps` post (JavaScript, Fusion's host API).
+    Fusion,
 }
 
 /// How toolpath events reach handlers.

@@ -73,7 +73,7 @@ pub fn hover(dialect: Dialect, text: &str, at: usize) -> Option<Hover> {
         Dialect::Vectric => vectric_hover(text, word, before, line_head)?,
         Dialect::Cimco => cimco_hover(text, word)?,
         Dialect::VcPost => vcpost_hover(text, word, before)?,
-        Dialect::Ron => return None,
+        Dialect::Ron | Dialect::Fusion => return None,
     };
     Some(Hover { markdown, start, end })
 }
@@ -264,7 +264,7 @@ pub fn definition(dialect: Dialect, text: &str, at: usize) -> Option<(usize, usi
             let label = if text[..start].ends_with('[') { Some(word) } else { label_of_var_name(word) };
             vectric_var_line(text, label?)
         }
-        Dialect::Cimco => cimco_definition(text, word),
+        Dialect::Cimco | Dialect::Fusion => cimco_definition(text, word),
         Dialect::VcPost => vcpost_definition(text, word),
         Dialect::Ron => None,
     };
@@ -326,6 +326,13 @@ pub fn completion(dialect: Dialect, text: &str, at: usize, after_space: bool) ->
                 for (n, d) in vocab::CIMCO_GLOBALS {
                     add(n, CompletionKind::Constant, d);
                 }
+                for (name, kind, line) in cimco_names(text) {
+                    add(name, kind, line.trim());
+                }
+            }
+        }
+        Dialect::Fusion => {
+            if !before_word.ends_with('.') {
                 for (name, kind, line) in cimco_names(text) {
                     add(name, kind, line.trim());
                 }

@@ -112,6 +112,7 @@ pub enum DialectArg {
     Cimco,
     Vcpost,
     Ron,
+    Fusion,
 }
 
 impl From<DialectArg> for Dialect {
@@ -121,6 +122,7 @@ impl From<DialectArg> for Dialect {
             DialectArg::Cimco => Dialect::Cimco,
             DialectArg::Vcpost => Dialect::VcPost,
             DialectArg::Ron => Dialect::Ron,
+            DialectArg::Fusion => Dialect::Fusion,
         }
     }
 }

@@ -98,6 +98,9 @@ pub const CALL_METHOD: &str = "__callm";
 pub const CALL: &str = "__call";
 /// `new F(args)`.
 pub const NEW: &str = "__new";
+/// The output primitive of a host written in JavaScript (Fusion's):
+/// `__postc_write(text)` writes the text as it is.
+pub const WRITE: &str = "__postc_write";
 /// A CNC-Calc global function by name ([`FUNCTIONS`]).
 pub const HOST: &str = "__host";
 

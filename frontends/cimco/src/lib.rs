@@ -33,6 +33,7 @@ pub mod ast;
 pub mod diagnostics;
 pub mod docs;
 pub mod dump;
+pub mod fusion;
 pub mod host_names;
 pub mod lexer;
 mod lower;

@@ -828,6 +828,21 @@ impl Engine<'_> {
                         self.give_back(values);
                         return found;
                     }
+                    Builtin::Undeclared => {
+                        let name = values.first().map(Value::to_text).unwrap_or_else(|| crate::value::Text::new(""));
+                        self.give_back(values);
+                        return Err(objects::reference_error(&name));
+                    }
+                    Builtin::Construct => {
+                        let mut values = values.into_iter();
+                        let callee = values.next().unwrap_or(Value::Undefined);
+                        let this = Value::Object(Default::default());
+                        let made = self.call_value(&callee, this.clone(), values.collect())?;
+                        return Ok(match made {
+                            Value::Object(_) | Value::Array(_) | Value::Func(_) => made,
+                            _ => this,
+                        });
+                    }
                     _ => builtin(*b, &values),
                 };
                 self.give_back(values);
@@ -1097,6 +1112,13 @@ impl Engine<'_> {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) if runnable.starts_undefined => Ok(Value::Undefined),
                     Ok(_) => Ok(Value::Null),
+                    // An error with no place of its own is placed in the
+                    // innermost function it stopped.
+                    Err(e) if e.primary_span().is_none() && function.span.is_some() => {
+                        let span = function.span.unwrap_or_default();
+                        let name = function.name.clone();
+                        Err(Box::new(e.at(span, format!("in function `{name}`"))))
+                    }
                     Err(e) => Err(e),
                 };
                 self.give_back(frame);

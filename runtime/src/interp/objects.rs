@@ -35,6 +35,12 @@ pub(crate) fn unsupported(message: String) -> Box<Diagnostic> {
     Box::new(Diagnostic::error(regex::UNSUPPORTED, message).note("no output is written"))
 }
 
+/// JavaScript's `ReferenceError` for a name the post never defines: a
+/// [`TYPE_ERROR`] too, so that `try` catches it as JavaScript's does.
+pub(crate) fn reference_error(name: &Text) -> Box<Diagnostic> {
+    Box::new(Diagnostic::error(TYPE_ERROR, format!("ReferenceError: {name} is not defined")))
+}
+
 /// A JavaScript `TypeError` of native code.
 pub(crate) fn type_error(message: String) -> Box<Diagnostic> {
     Box::new(Diagnostic::error(TYPE_ERROR, format!("TypeError: {message}")))

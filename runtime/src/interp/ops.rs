@@ -286,6 +286,10 @@ pub(super) fn builtin(b: Builtin, args: &[Value]) -> Value {
             let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
             super::objects::has_property(arg(0), arg(1)).unwrap_or(Value::Bool(false))
         }
+        // Only the interpreter constructs (it calls the function); a
+        // construction is never a constant.
+        Builtin::Construct | Builtin::Undeclared => Value::Undefined,
+        Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }
 

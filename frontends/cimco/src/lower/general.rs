@@ -72,12 +72,26 @@ pub struct Shared<'c, 'a> {
     /// The locals that live in cells: captured, and given a value more
     /// than once (by their function or by a closure).
     cells: HashSet<(FnId, usize)>,
+    /// The post is a Fusion post: its host is JavaScript the program
+    /// holds, so a name it never defines is a `ReferenceError` when it
+    /// runs, unless Autodesk's host declares it (then the post is refused:
+    /// postc's host lacks it).
+    pub fusion: bool,
 }
 
 impl<'c, 'a> Shared<'c, 'a> {
     pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c mut Layout) -> Self {
         let cells = cells(model);
-        Shared { model, setup, layout, nested: HashMap::new(), pending: Vec::new(), cells }
+        Shared { model, setup, layout, nested: HashMap::new(), pending: Vec::new(), cells, fusion: false }
+    }
+
+    /// A name no one defines, in a Fusion post: refused when Fusion's
+    /// host has it, else JavaScript's `ReferenceError` when it runs.
+    fn undeclared(&self, name: &str, at: Span) -> R<Ir> {
+        if crate::fusion::api::is_declared(name) {
+            return Err(why(at, format!("uses `{name}` of Fusion's host, which postc does not provide yet")));
+        }
+        Ok(Ir::Builtin(Builtin::Undeclared, vec![Ir::Text(name.to_string())]))
     }
 
     /// The IR function of nested function `id` (added on first mention)
@@ -422,6 +436,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     .get(name)
                     .map(|g| Ir::Global(*g))
                     .ok_or_else(|| why(at, format!("reads `{name}`")))
+            }
+            None if self.shared.fusion && !matches!(name, "NaN" | "Infinity" | "undefined") => {
+                self.shared.undeclared(name, at)
             }
             None => match builtins::constant(name) {
                 Some(c) => Ok(const_expr(&c)),
@@ -958,6 +975,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 self.closure(id, at)?
             }
             ExprKind::Member { object, property } => {
+                if property.name == "prototype" {
+                    // The IR's objects have no prototypes (`Builtin::Construct`).
+                    return Err(why(at, "uses a function's `prototype`"));
+                }
                 if let Some(flat) = self.model().flattened_name(e) {
                     return self.global_value(&flat, at);
                 }
@@ -968,6 +989,20 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     return names::math_constant(&property.name)
                         .map(Ir::Number)
                         .ok_or_else(|| why(at, format!("`Math.{}`", property.name)));
+                }
+                if let ExprKind::Ident(o) = &object.kind
+                    && o == "Number"
+                    && self.is_host("Number")
+                {
+                    let n = match property.name.as_str() {
+                        "POSITIVE_INFINITY" => f64::INFINITY,
+                        "NEGATIVE_INFINITY" => f64::NEG_INFINITY,
+                        "NaN" => f64::NAN,
+                        "MAX_VALUE" => f64::MAX,
+                        "MIN_VALUE" => 5e-324,
+                        _ => return Err(why(at, format!("reads `Number.{}`", property.name))),
+                    };
+                    return Ok(Ir::Number(n));
                 }
                 if let ExprKind::Ident(o) = &object.kind
                     && self.binding(o).is_some()
@@ -994,7 +1029,31 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     };
                     Ir::Object(vec![("name".into(), Ir::Text("Error".into())), ("message".into(), message)])
                 }
-                _ => return Err(why(at, "`new`")),
+                ExprKind::Ident(n) if n == "Array" && self.is_host(n) => match args.as_slice() {
+                    // `new Array(n)`: n empty items; `new Array(a, b)`: those items.
+                    [Expr { kind: ExprKind::Number(n), .. }] if *n >= 0.0 && n.fract() == 0.0 && *n <= 65536.0 => {
+                        Ir::Array(vec![Ir::Undefined; *n as usize])
+                    }
+                    [_] => return Err(why(at, "makes a `new Array(n)` of a length known only when the post runs")),
+                    _ => Ir::Array(self.args(args, pre)?),
+                },
+                ExprKind::Ident(n) if n == "RegExp" && self.is_host(n) => match args.as_slice() {
+                    [Expr { kind: ExprKind::String(p), .. }] => {
+                        Ir::Regex { pattern: p.clone(), flags: String::new(), span: Some(at) }
+                    }
+                    [Expr { kind: ExprKind::String(p), .. }, Expr { kind: ExprKind::String(f), .. }] => {
+                        Ir::Regex { pattern: p.clone(), flags: f.clone(), span: Some(at) }
+                    }
+                    _ => return Err(why(at, "makes a `new RegExp` of a pattern known only when the post runs")),
+                },
+                ExprKind::Ident(n) if self.is_host(n) => {
+                    return Err(why(at, format!("makes a `new {n}`, which the host does not provide")));
+                }
+                _ => {
+                    let mut operands: Vec<&Expr> = vec![callee];
+                    operands.extend(args.iter());
+                    Ir::Builtin(Builtin::Construct, self.operands(&operands, pre)?)
+                }
             },
             ExprKind::Unary { op, operand } => {
                 if *op == UnaryOp::Typeof
@@ -1117,6 +1176,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     }
                     Symbol::Global(g) if self.model().global(&g).is_none() => {
                         let a = self.args(args, pre)?;
+                        if g == names::WRITE {
+                            // The output primitive of a host written in JavaScript.
+                            pre.push(IrStmt::Write(a.into_iter().next().unwrap_or(Ir::Text(String::new()))));
+                            return Ok(Ir::Undefined);
+                        }
                         self.host_call(&g, a, at)
                     }
                     _ => {
@@ -1137,7 +1201,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
 
     fn host_call(&mut self, name: &str, a: Vec<Ir>, at: Span) -> R<Ir> {
         let b = match name {
-            "getFeedrate" => {
+            "getFeedrate" if !self.shared.fusion => {
                 let f = self.shared.layout.function(layout::FEEDRATE).ok_or_else(|| why(at, "calls `getFeedrate`"))?;
                 return Ok(Ir::Call(f, a));
             }
@@ -1150,7 +1214,13 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 return Ok(Ir::Builtin(Builtin::Str, a.into_iter().take(1).collect()));
             }
             "String" => return Ok(Ir::Text(String::new())),
-            names::GET_COMPENSATION => return Ok(Ir::Host { name: names::COMPENSATION.into(), args: vec![] }),
+            names::GET_COMPENSATION if !self.shared.fusion => {
+                return Ok(Ir::Host { name: names::COMPENSATION.into(), args: vec![] });
+            }
+            _ if self.shared.fusion => {
+                let f = self.shared.undeclared(name, at)?;
+                return Ok(Ir::CallValue(Box::new(f), a));
+            }
             _ => return Err(why(at, format!("calls `{name}`, a host function with no native form"))),
         };
         Ok(Ir::Builtin(b, a))
@@ -1162,9 +1232,28 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let a = self.args(args, pre)?;
                 return math(name, a, at);
             }
+            if o == "String" && name == "fromCharCode" && self.is_host("String") {
+                let a = self.args(args, pre)?;
+                let mut chars = a.into_iter().map(|c| Ir::Builtin(Builtin::Chr, vec![c]));
+                let first = chars.next().unwrap_or(Ir::Text(String::new()));
+                return Ok(chars.fold(first, |text, c| Ir::Binary(IrBin::Add, Box::new(text), Box::new(c))));
+            }
+            if o == "Array" && name == "isArray" && args.len() == 1 && self.is_host("Array") {
+                let a = self.args(args, pre)?;
+                return Ok(Ir::Builtin(Builtin::IsArray, a));
+            }
             if o == "Object" && name == "keys" && args.len() == 1 && self.is_host("Object") {
                 let a = self.args(args, pre)?;
                 return Ok(Ir::Builtin(Builtin::Keys, a));
+            }
+            // A static method of a class the host defines in JavaScript
+            // (`Vector.diff(a, b)`), or one it adds to JavaScript's
+            // (`Object.create(o)`), is its top-level function `__Vector_diff`.
+            if (matches!(self.model().scopes.resolve(o, self.at), Symbol::TopFn(_)) || self.is_host(o))
+                && let Some(&i) = self.model().scopes.top_fn_names.get(&format!("__{o}_{name}"))
+            {
+                let f = self.shared.layout.top_fn[i];
+                return Ok(Ir::Call(f, self.args(args, pre)?));
             }
             if let Some(b) = self.binding(o) {
                 let mut a = self.args(args, pre)?;

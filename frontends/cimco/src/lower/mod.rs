@@ -26,6 +26,7 @@
 pub mod builtins;
 mod consts;
 mod fold;
+pub(crate) mod fusion;
 mod general;
 mod handlers;
 mod layout;

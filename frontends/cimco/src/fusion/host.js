@@ -1,0 +1,1494 @@
+// postc's Fusion host API, in JavaScript: what Autodesk's post engine gives a
+// `.cps` post (constants, settings, formats, output variables, sections,
+// tools, vectors), and the engine functions (`__fusion_*`) that turn postc's
+// events into Fusion's entry-point calls. It runs in postc's engine and in
+// Node.js (the tests' referee) alike; docs/fusion.md says what each part does
+// and which choices Autodesk's reference leaves open.
+
+// ---- Constants (names from Autodesk's declarations, globals.d.ts) ----
+var NUL = "";
+var SOH = String.fromCharCode(1);
+var STX = String.fromCharCode(2);
+var ETX = String.fromCharCode(3);
+var EOT = String.fromCharCode(4);
+var ENQ = String.fromCharCode(5);
+var ACK = String.fromCharCode(6);
+var BEL = String.fromCharCode(7);
+var BS = String.fromCharCode(8);
+var TAB = String.fromCharCode(9);
+var LF = String.fromCharCode(10);
+var VT = String.fromCharCode(11);
+var FF = String.fromCharCode(12);
+var CR = String.fromCharCode(13);
+var SO = String.fromCharCode(14);
+var SI = String.fromCharCode(15);
+var DLE = String.fromCharCode(16);
+var DC1 = String.fromCharCode(17);
+var DC2 = String.fromCharCode(18);
+var DC3 = String.fromCharCode(19);
+var DC4 = String.fromCharCode(20);
+var NAK = String.fromCharCode(21);
+var SYN = String.fromCharCode(22);
+var ETB = String.fromCharCode(23);
+var CAN = String.fromCharCode(24);
+var EM = String.fromCharCode(25);
+var SUB = String.fromCharCode(26);
+var ESC = String.fromCharCode(27);
+var FS = String.fromCharCode(28);
+var GS = String.fromCharCode(29);
+var RS = String.fromCharCode(30);
+var US = String.fromCharCode(31);
+var EOL = "\r\n";
+var SP = " ";
+var PATH_SEPARATOR = "\\";
+var IN = 0;
+var MM = 1;
+var PLANE_XY = 0;
+var PLANE_XZ = 1;
+var PLANE_ZX = 1;
+var PLANE_YZ = 2;
+var X = 0;
+var Y = 1;
+var Z = 2;
+var TOOL_AXIS_X = 0;
+var TOOL_AXIS_Y = 1;
+var TOOL_AXIS_Z = 2;
+var RADIUS_COMPENSATION_OFF = 0;
+var RADIUS_COMPENSATION_LEFT = 1;
+var RADIUS_COMPENSATION_RIGHT = 2;
+var SINGULARITY_LINEARIZE_OFF = 0;
+var SINGULARITY_LINEARIZE_LINEAR = 1;
+var SINGULARITY_LINEARIZE_ROTARY = 2;
+var COOLANT_DISABLED = -1;
+var COOLANT_OFF = 0;
+var COOLANT_FLOOD = 1;
+var COOLANT_MIST = 2;
+var COOLANT_TOOL = 3;
+var COOLANT_THROUGH_TOOL = 3;
+var COOLANT_AIR = 4;
+var COOLANT_AIR_THROUGH_TOOL = 5;
+var COOLANT_SUCTION = 6;
+var COOLANT_FLOOD_MIST = 7;
+var COOLANT_FLOOD_THROUGH_TOOL = 8;
+var MATERIAL_UNSPECIFIED = 0;
+var MATERIAL_HSS = 1;
+var MATERIAL_TI_COATED = 2;
+var MATERIAL_CARBIDE = 3;
+var MATERIAL_CERAMICS = 4;
+var TOOL_UNSPECIFIED = 0;
+var TOOL_DRILL = 1;
+var TOOL_DRILL_CENTER = 2;
+var TOOL_DRILL_SPOT = 3;
+var TOOL_DRILL_BLOCK = 4;
+var TOOL_MILLING_END_FLAT = 5;
+var TOOL_MILLING_END_BALL = 6;
+var TOOL_MILLING_END_BULLNOSE = 7;
+var TOOL_MILLING_CHAMFER = 8;
+var TOOL_MILLING_FACE = 9;
+var TOOL_MILLING_SLOT = 10;
+var TOOL_MILLING_RADIUS = 11;
+var TOOL_MILLING_DOVETAIL = 12;
+var TOOL_MILLING_TAPERED = 13;
+var TOOL_MILLING_LOLLIPOP = 14;
+var TOOL_TAP_RIGHT_HAND = 15;
+var TOOL_TAP_LEFT_HAND = 16;
+var TOOL_REAMER = 17;
+var TOOL_BORING_BAR = 18;
+var TOOL_COUNTER_BORE = 19;
+var TOOL_COUNTER_SINK = 20;
+var TOOL_HOLDER_ONLY = 21;
+var TOOL_TURNING_GENERAL = 22;
+var TOOL_TURNING_THREADING = 23;
+var TOOL_TURNING_GROOVING = 24;
+var TOOL_TURNING_BORING = 25;
+var TOOL_TURNING_CUSTOM = 26;
+var TOOL_PROBE = 27;
+var TOOL_WIRE = 28;
+var TOOL_WATER_JET = 29;
+var TOOL_LASER_CUTTER = 30;
+var TOOL_WELDER = 31;
+var TOOL_GRINDER = 32;
+var TOOL_MILLING_FORM = 33;
+var TOOL_PLASMA_CUTTER = 34;
+var TOOL_MARKER = 35;
+var TOOL_MILLING_THREAD = 36;
+var TOOL_COMPENSATION_INSERT_CENTER = 0;
+var TOOL_COMPENSATION_TIP = 1;
+var TOOL_COMPENSATION_TIP_CENTER = 2;
+var TOOL_COMPENSATION_TIP_TANGENT = 3;
+var HAS_PARAMETER = 1;
+var HAS_RAPID = 2;
+var HAS_LINEAR = 4;
+var HAS_DWELL = 8;
+var HAS_CIRCULAR = 16;
+var HAS_CYCLE = 32;
+var HAS_WELL_KNOWN_COMMAND = 64;
+var HAS_COMMENT = 128;
+var RECORD_INVALID = -1;
+var RECORD_WELL_KNOWN_COMMAND = 0;
+var RECORD_PARAMETER = 1;
+var RECORD_LINEAR = 2;
+var RECORD_LINEAR_5D = 3;
+var RECORD_LINEAR_ZXN = 4;
+var RECORD_CIRCULAR = 5;
+var RECORD_DWELL = 6;
+var RECORD_CYCLE = 7;
+var RECORD_CYCLE_OFF = 8;
+var RECORD_COMMENT = 9;
+var RECORD_WIDE_COMMENT = 10;
+var COMMAND_INVALID = -1;
+var COMMAND_STOP = 0;
+var COMMAND_OPTIONAL_STOP = 1;
+var COMMAND_END = 2;
+var COMMAND_SPINDLE_CLOCKWISE = 3;
+var COMMAND_SPINDLE_COUNTERCLOCKWISE = 4;
+var COMMAND_START_SPINDLE = 5;
+var COMMAND_STOP_SPINDLE = 6;
+var COMMAND_ORIENTATE_SPINDLE = 7;
+var COMMAND_LOAD_TOOL = 8;
+var COMMAND_COOLANT_ON = 9;
+var COMMAND_COOLANT_OFF = 10;
+var COMMAND_ACTIVATE_SPEED_FEED_SYNCHRONIZATION = 11;
+var COMMAND_DEACTIVATE_SPEED_FEED_SYNCHRONIZATION = 12;
+var COMMAND_LOCK_MULTI_AXIS = 13;
+var COMMAND_UNLOCK_MULTI_AXIS = 14;
+var COMMAND_EXACT_STOP = 15;
+var COMMAND_START_CHIP_TRANSPORT = 16;
+var COMMAND_STOP_CHIP_TRANSPORT = 17;
+var COMMAND_OPEN_DOOR = 18;
+var COMMAND_CLOSE_DOOR = 19;
+var COMMAND_BREAK_CONTROL = 20;
+var COMMAND_TOOL_MEASURE = 21;
+var COMMAND_CALIBRATE = 22;
+var COMMAND_VERIFY = 23;
+var COMMAND_CLEAN = 24;
+var COMMAND_ALARM = 25;
+var COMMAND_ALERT = 26;
+var COMMAND_CHANGE_PALLET = 27;
+var COMMAND_POWER_ON = 28;
+var COMMAND_POWER_OFF = 29;
+var COMMAND_MAIN_CHUCK_OPEN = 30;
+var COMMAND_MAIN_CHUCK_CLOSE = 31;
+var COMMAND_SECONDARY_CHUCK_OPEN = 32;
+var COMMAND_SECONDARY_CHUCK_CLOSE = 33;
+var COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_ACTIVATE = 34;
+var COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_DEACTIVATE = 35;
+var COMMAND_SYNC_CHANNELS = 36;
+var COMMAND_PROBE_ON = 37;
+var COMMAND_PROBE_OFF = 38;
+var MOVEMENT_RAPID = 0;
+var MOVEMENT_LEAD_IN = 1;
+var MOVEMENT_CUTTING = 2;
+var MOVEMENT_LEAD_OUT = 3;
+var MOVEMENT_LINK_TRANSITION = 4;
+var MOVEMENT_LINK_DIRECT = 5;
+var MOVEMENT_RAMP_HELIX = 6;
+var MOVEMENT_RAMP_PROFILE = 7;
+var MOVEMENT_RAMP_ZIG_ZAG = 8;
+var MOVEMENT_RAMP = 9;
+var MOVEMENT_PLUNGE = 10;
+var MOVEMENT_PREDRILL = 11;
+var MOVEMENT_EXTENDED = 12;
+var MOVEMENT_REDUCED = 13;
+var MOVEMENT_FINISH_CUTTING = 14;
+var MOVEMENT_HIGH_FEED = 15;
+var HIGH_FEED_NO_MAPPING = 0;
+var HIGH_FEED_MAP_MULTI = 1;
+var HIGH_FEED_MAP_XY_Z = 2;
+var HIGH_FEED_MAP_ANY = 3;
+// ---- Constants the declarations do not list ----
+var DEG = 180 / Math.PI;
+var CAPABILITY_MILLING = 1;
+var CAPABILITY_TURNING = 2;
+var CAPABILITY_JET = 4;
+var CAPABILITY_SETUP_SHEET = 8;
+var CAPABILITY_INTERMEDIATE = 16;
+var CAPABILITY_MACHINE_SIMULATION = 32;
+var CAPABILITY_INSPECTION = 64;
+var CAPABILITY_ADDITIVE = 128;
+var CAPABILITY_CASCADING = 256;
+var TYPE_MILLING = 0;
+var TYPE_TURNING = 1;
+var TYPE_JET = 2;
+var TYPE_ADDITIVE = 3;
+var FEED_PER_MINUTE = 0;
+var FEED_PER_REVOLUTION = 1;
+var FEED_INVERSE_TIME = 2;
+var FEED_FPM = 3;
+var FEED_DPM = 4;
+var SPINDLE_PRIMARY = 0;
+var SPINDLE_SECONDARY = 1;
+var SPINDLE_CONSTANT_SPINDLE_SPEED = 0;
+var SPINDLE_CONSTANT_SURFACE_SPEED = 1;
+var JET_MODE_THROUGH = 0;
+var JET_MODE_ETCHING = 1;
+var JET_MODE_VAPORIZE = 2;
+var OPTIMIZE_NONE = 0;
+var OPTIMIZE_BOTH = 1;
+var OPTIMIZE_TABLES = 2;
+var OPTIMIZE_HEADS = 3;
+var OPTIMIZE_AXIS = 4;
+var TCP_MODE_OFF = 0;
+var ENABLE_NONE = 0;
+var ENABLE_RESET = 1;
+var ENABLE_WCS = 2;
+var ENABLE_LIMITS = 4;
+var ENABLE_HOMING = 8;
+var ENABLE_ALL = 15;
+var PREFER_PREFERENCE = 0;
+var PREFER_CLOSEST = 1;
+var PREFER_POSITIVE = 2;
+var PREFER_NEGATIVE = 3;
+var PREFER_CW = 4;
+var PREFER_CCW = 5;
+var EULER_XYZ_S = 0;
+var EULER_ZXZ_R = 1;
+var EULER_ZYZ_R = 2;
+var EULER_XYZ_R = 3;
+var EULER_ZYX_R = 4;
+var STRATEGY_DRILLING = 0;
+var CONTROL_NONZERO = 1;
+var CONTROL_FORCE = 2;
+var DPM_STANDARD = 0;
+var DPM_COMBINATION = 1;
+var INVERSE_MINUTES = 0;
+var INVERSE_SECONDS = 1;
+var EXPAND_NONE = 0;
+var EXPAND_TCP = 1;
+var FORMAT_REAL = 0;
+var ORIGINAL_UNIT = -1;
+
+// ---- Settings a post assigns at its top (the engine reads them) ----
+var description = "";
+var vendor = "";
+var vendorUrl = "";
+var legal = "";
+var certificationLevel = 0;
+var minimumRevision = 0;
+var longDescription = "";
+var extension = "nc";
+var filename = "";
+var version = "";
+var revision = 0;
+var deprecated = false;
+var capabilities = CAPABILITY_MILLING;
+var tolerance = 0.002;
+var mapWorkOrigin = true;
+var mapToWCS = true;
+var allowMachineChangeOnSection = false;
+var minimumChordLength = 0.01;
+var minimumCircularRadius = 0.01;
+var maximumCircularRadius = 1000;
+var minimumCircularSweep = 0.01 * Math.PI / 180;
+var maximumCircularSweep = Math.PI;
+var allowHelicalMoves = false;
+var allowSpiralMoves = false;
+var allowedCircularPlanes = undefined;
+var highFeedMapping = HIGH_FEED_NO_MAPPING;
+var highFeedrate = 0;
+var properties = {};
+var propertyDefinitions = {};
+var groupDefinitions = {};
+var keywords = "";
+var programNameIsInteger = false;
+var debugMode = false;
+var preventPost = false;
+var abortOnDeprecation = false;
+
+// ---- What the engine hands the post ----
+var unit = MM;
+var outputUnit = MM;
+var programName = "1001";
+var programComment = "";
+var tool = undefined;
+var currentSection = undefined;
+var cycle = undefined;
+var cycleType = "";
+var cycleExpanded = false;
+var movement = MOVEMENT_CUTTING;
+var radiusCompensation = RADIUS_COMPENSATION_OFF;
+var feedrate = 0;
+var spindleSpeed = 0;
+var spindleAxis = TOOL_AXIS_Z;
+var lineNumber = 0;
+var end = undefined;
+var machineConfiguration = undefined;
+var machineParameters = {};
+var initialCyclePosition = undefined;
+
+// ---- Numbers ----
+function toRad(degrees) { return degrees * Math.PI / 180; }
+function toDeg(radians) { return radians * 180 / Math.PI; }
+function spatial(value, u) { return (u == unit) ? value : ((u == MM) ? value / 25.4 : value * 25.4); }
+function toPreciseUnit(value, u) { return spatial(value, u); }
+function toUnit(value, u) { return spatial(value, u); }
+function parseSpatial(text) { return parseFloat(text); }
+function clamp(low, value, high) { return Math.max(low, Math.min(value, high)); }
+function getAsInt(value) { return Math.floor(Number(value) + 0.5); }
+
+function Range(minimum, maximum) {
+  this.minimum = minimum;
+  this.maximum = maximum;
+  this.getMinimum = function () { return this.minimum; };
+  this.getMaximum = function () { return this.maximum; };
+  this.getSpan = function () { return this.maximum - this.minimum; };
+  this.getMiddle = function () { return (this.minimum + this.maximum) / 2; };
+  this.isNonRange = function () { return this.minimum > this.maximum; };
+  this.expandTo = function (v) {
+    if (v < this.minimum) { this.minimum = v; }
+    if (v > this.maximum) { this.maximum = v; }
+  };
+}
+
+function Vector(x, y, z) {
+  if (x === undefined) { x = 0; }
+  if (y === undefined) { y = 0; }
+  if (z === undefined) { z = 0; }
+  this.x = x;
+  this.y = y;
+  this.z = z;
+  this.getX = function () { return this.x; };
+  this.getY = function () { return this.y; };
+  this.getZ = function () { return this.z; };
+  this.setX = function (v) { this.x = v; };
+  this.setY = function (v) { this.y = v; };
+  this.setZ = function (v) { this.z = v; };
+  this.getCoordinate = function (i) { return i == 0 ? this.x : (i == 1 ? this.y : this.z); };
+  this.setCoordinate = function (i, v) { if (i == 0) { this.x = v; } else if (i == 1) { this.y = v; } else { this.z = v; } };
+  this.getLength = function () { return Math.sqrt(this.x * this.x + this.y * this.y + this.z * this.z); };
+  this.getLength2 = function () { return this.x * this.x + this.y * this.y + this.z * this.z; };
+  this.length = this.getLength();
+  this.isZero = function () { return this.x == 0 && this.y == 0 && this.z == 0; };
+  this.isNonZero = function () { return !this.isZero(); };
+  this.getNegated = function () { return new Vector(-this.x, -this.y, -this.z); };
+  this.negate = function () { this.x = -this.x; this.y = -this.y; this.z = -this.z; };
+  this.getAbsolute = function () { return new Vector(Math.abs(this.x), Math.abs(this.y), Math.abs(this.z)); };
+  this.getNormalized = function () {
+    var l = this.getLength();
+    return l == 0 ? new Vector(0, 0, 0) : new Vector(this.x / l, this.y / l, this.z / l);
+  };
+  this.normalize = function () { var n = this.getNormalized(); this.x = n.x; this.y = n.y; this.z = n.z; };
+  this.add = function (a, b, c) {
+    if (b === undefined) { this.x += a.x; this.y += a.y; this.z += a.z; } else { this.x += a; this.y += b; this.z += c; }
+  };
+  this.subtract = function (a, b, c) {
+    if (b === undefined) { this.x -= a.x; this.y -= a.y; this.z -= a.z; } else { this.x -= a; this.y -= b; this.z -= c; }
+  };
+  this.multiply = function (f) { this.x *= f; this.y *= f; this.z *= f; };
+  this.divide = function (f) { this.x /= f; this.y /= f; this.z /= f; };
+  this.getXYAngle = function () { return Math.atan2(this.y, this.x); };
+  this.getZAngle = function () { return Math.acos(clamp(-1, this.z / (this.getLength() || 1), 1)); };
+  this.getMinimum = function () { return Math.min(this.x, this.y, this.z); };
+  this.getMaximum = function () { return Math.max(this.x, this.y, this.z); };
+  this.toString = function () { return "(" + this.x + ", " + this.y + ", " + this.z + ")"; };
+}
+function __vector(v) { return new Vector(v.x, v.y, v.z); }
+function __Vector_sum(a, b) { return new Vector(a.x + b.x, a.y + b.y, a.z + b.z); };
+function __Vector_diff(a, b) { return new Vector(a.x - b.x, a.y - b.y, a.z - b.z); };
+function __Vector_product(a, f) { return new Vector(a.x * f, a.y * f, a.z * f); };
+function __Vector_dot(a, b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+function __Vector_cross(a, b) {
+  return new Vector(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+};
+function __Vector_getDistance(a, b) { return Vector.diff(a, b).getLength(); };
+function __Vector_getDistance2(a, b) { return Vector.diff(a, b).getLength2(); };
+function __Vector_getAngle(a, b) {
+  var l = a.getLength() * b.getLength();
+  return l == 0 ? 0 : Math.acos(clamp(-1, Vector.dot(a, b) / l, 1));
+};
+function __Vector_lerp(a, b, t) { return new Vector(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t); };
+
+function isSameDirection(a, b) {
+  var l = a.getLength() * b.getLength();
+  return l > 0 && Math.abs(Vector.dot(a, b) / l - 1) < 1e-9;
+}
+
+// A 3x3 matrix: rows as vectors.
+function Matrix(a, b, c) {
+  var rows;
+  if (a === undefined) {
+    rows = [new Vector(1, 0, 0), new Vector(0, 1, 0), new Vector(0, 0, 1)];
+  } else if (b === undefined) {
+    rows = [__vector(a[0]), __vector(a[1]), __vector(a[2])];
+  } else {
+    rows = [__vector(a), __vector(b), __vector(c)];
+  }
+  this.rows = rows;
+  this.forward = new Vector(rows[0].z, rows[1].z, rows[2].z);
+  this.right = new Vector(rows[0].x, rows[1].x, rows[2].x);
+  this.up = new Vector(rows[0].y, rows[1].y, rows[2].y);
+  this.getElement = function (row, column) { return this.rows[row].getCoordinate(column); };
+  this.setElement = function (row, column, value) { this.rows[row].setCoordinate(column, value); };
+  this.getRow = function (row) { return __vector(this.rows[row]); };
+  this.getColumn = function (column) {
+    return new Vector(this.rows[0].getCoordinate(column), this.rows[1].getCoordinate(column), this.rows[2].getCoordinate(column));
+  };
+  this.getForward = function () { return this.getColumn(2); };
+  this.getRight = function () { return this.getColumn(0); };
+  this.getUp = function () { return this.getColumn(1); };
+  this.isIdentity = function () {
+    for (var i = 0; i < 3; ++i) {
+      for (var j = 0; j < 3; ++j) {
+        if (Math.abs(this.getElement(i, j) - (i == j ? 1 : 0)) > 1e-9) { return false; }
+      }
+    }
+    return true;
+  };
+  this.isZero = function () { return false; };
+  this.getTransposed = function () { return new Matrix(this.getColumn(0), this.getColumn(1), this.getColumn(2)); };
+  this.multiply = function (v) {
+    if (v.rows !== undefined) {
+      var t = v.getTransposed();
+      var r = [];
+      for (var i = 0; i < 3; ++i) {
+        r.push(new Vector(Vector.dot(this.rows[i], t.rows[0]), Vector.dot(this.rows[i], t.rows[1]), Vector.dot(this.rows[i], t.rows[2])));
+      }
+      return new Matrix(r[0], r[1], r[2]);
+    }
+    return new Vector(Vector.dot(this.rows[0], v), Vector.dot(this.rows[1], v), Vector.dot(this.rows[2], v));
+  };
+  this.getEuler2 = function (convention) { return new Vector(0, 0, 0); };
+  this.getTurnAndTilt = function (a, b) { return new Vector(0, 0, 0); };
+}
+function __Matrix_getIdentity() { return new Matrix(); };
+function __Matrix_getXRotation(a) {
+  return new Matrix(new Vector(1, 0, 0), new Vector(0, Math.cos(a), -Math.sin(a)), new Vector(0, Math.sin(a), Math.cos(a)));
+};
+function __Matrix_getYRotation(a) {
+  return new Matrix(new Vector(Math.cos(a), 0, Math.sin(a)), new Vector(0, 1, 0), new Vector(-Math.sin(a), 0, Math.cos(a)));
+};
+function __Matrix_getZRotation(a) {
+  return new Matrix(new Vector(Math.cos(a), -Math.sin(a), 0), new Vector(Math.sin(a), Math.cos(a), 0), new Vector(0, 0, 1));
+};
+function __Matrix_getAxisRotation(axis, a) { return new Matrix(); };
+function __Matrix_getOrientationFromDirection(v) { return new Matrix(); };
+
+// ---- Formats and output variables ----
+
+// The text of `value` under a format's specifiers: scaled, offset,
+// rounded half away from zero to `decimals`, trailing zeros trimmed
+// (`trim`), the point kept only with `forceDecimal`, the integer part
+// zero-padded to `width` (`zeropad`), `+` for positive values with
+// `forceSign`, the lead zero dropped with `trimLeadZero`.
+function __formatNumber(spec, value) {
+  var v = value * spec.scale + spec.offset;
+  if (spec.cyclicLimit !== undefined && spec.cyclicLimit > 0) {
+    v = v % spec.cyclicLimit;
+    if (v < 0 && spec.cyclicSign >= 0) { v += spec.cyclicLimit; }
+  }
+  if (!(v - v == 0)) {
+    error(localize("Cannot format a value that is not a finite number") + ": " + value);
+  }
+  var factor = Math.pow(10, spec.decimals);
+  var units = Math.floor(Math.abs(v) * factor + 0.5);
+  var negative = v < 0 && units != 0;
+  var digits = String(units);
+  while (digits.length <= spec.decimals) { digits = "0" + digits; }
+  var whole = digits.substring(0, digits.length - spec.decimals);
+  var fraction = digits.substring(digits.length - spec.decimals);
+  if (spec.trim) {
+    var n = fraction.length;
+    while (n > 0 && fraction.charAt(n - 1) == "0") { --n; }
+    fraction = fraction.substring(0, n);
+  }
+  if (spec.trimLeadZero && whole == "0" && fraction.length > 0) { whole = ""; }
+  var text;
+  if (fraction.length > 0) {
+    text = whole + spec.decimalSymbol + fraction;
+  } else {
+    text = spec.forceDecimal ? whole + spec.decimalSymbol : whole;
+  }
+  if (spec.zeropad && spec.width > 0) {
+    var sign = (negative || spec.forceSign) ? 1 : 0;
+    var wholeLength = whole.length;
+    var pad = spec.width - sign - text.length;
+    if (fraction.length > 0 || spec.forceDecimal) {
+      pad = spec.width - sign - wholeLength;
+    }
+    while (pad > 0) { text = "0" + text; --pad; }
+  }
+  if (negative) {
+    text = "-" + text;
+  } else if (spec.forceSign) {
+    text = "+" + text;
+  }
+  if (!spec.zeropad && spec.width > 0) {
+    while (text.length < spec.width) { text = " " + text; }
+  }
+  return spec.prefix + text + spec.suffix;
+}
+
+function __spec(s) {
+  if (s === undefined) { s = {}; }
+  function pick(name, otherwise) { return s[name] === undefined ? otherwise : s[name]; }
+  return {
+    prefix: pick("prefix", ""),
+    suffix: pick("suffix", ""),
+    decimals: pick("decimals", 6),
+    forceDecimal: pick("forceDecimal", false),
+    forceSign: pick("forceSign", false),
+    zeropad: pick("zeropad", false),
+    width: pick("width", 0),
+    trim: pick("trim", true),
+    trimLeadZero: pick("trimLeadZero", false),
+    scale: pick("scale", 1),
+    offset: pick("offset", 0),
+    cyclicLimit: pick("cyclicLimit", undefined),
+    cyclicSign: pick("cyclicSign", 0),
+    decimalSymbol: pick("separator", pick("decimalSymbol", ".")),
+    type: pick("type", FORMAT_REAL)
+  };
+}
+
+function FormatNumber(specifiers) {
+  var spec = __spec(specifiers);
+  this.spec = spec;
+  this.format = function (value) { return __formatNumber(spec, value); };
+  this.getResultingValue = function (value) {
+    var f = Math.pow(10, spec.decimals);
+    var v = value * spec.scale + spec.offset;
+    return (v < 0 ? -1 : 1) * Math.floor(Math.abs(v) * f + 0.5) / f;
+  };
+  this.getError = function (value) { return this.getResultingValue(value) - value; };
+  this.isSignificant = function (value) { return this.getResultingValue(value) != 0; };
+  this.areDifferent = function (a, b) { return this.getResultingValue(a) != this.getResultingValue(b); };
+  this.getMinimumValue = function () { return Math.pow(10, -spec.decimals); };
+  this.getDecimalSymbol = function () { return spec.decimalSymbol; };
+  this.setDecimalSymbol = function (v) { spec.decimalSymbol = v; };
+  this.getZeroPad = function () { return spec.zeropad; };
+  this.setZeroPad = function (v) { spec.zeropad = v; };
+  this.getForceSign = function () { return spec.forceSign; };
+  this.setForceSign = function (v) { spec.forceSign = v; };
+  this.getForceDecimal = function () { return spec.forceDecimal; };
+  this.setForceDecimal = function (v) { spec.forceDecimal = v; };
+  this.getWidth = function () { return spec.width; };
+  this.setWidth = function (v) { spec.width = v; };
+  this.getNumberOfDecimals = function () { return spec.decimals; };
+  this.setNumberOfDecimals = function (v) { spec.decimals = v; };
+  this.getTrimZeroDecimals = function () { return spec.trim; };
+  this.setTrimZeroDecimals = function (v) { spec.trim = v; };
+  this.getTrimLeadZero = function () { return spec.trimLeadZero; };
+  this.setTrimLeadZero = function (v) { spec.trimLeadZero = v; };
+  this.getScale = function () { return spec.scale; };
+  this.setScale = function (v) { spec.scale = v; };
+  this.getOffset = function () { return spec.offset; };
+  this.setOffset = function (v) { spec.offset = v; };
+  this.getPrefix = function () { return spec.prefix; };
+  this.setPrefix = function (v) { spec.prefix = v; };
+  this.getSuffix = function () { return spec.suffix; };
+  this.setSuffix = function (v) { spec.suffix = v; };
+  this.getCyclicLimit = function () { return spec.cyclicLimit; };
+  this.getCyclicSign = function () { return spec.cyclicSign; };
+  this.setCyclicMapping = function (limit, sign) { spec.cyclicLimit = limit; spec.cyclicSign = sign; };
+  this.remap = function (value) { return value; };
+}
+function createFormat(specifiers) { return new FormatNumber(specifiers); }
+
+function __prefixed(s, name) { return (s === undefined || s[name] === undefined) ? "" : s[name]; }
+
+// `createVariable`: prints when the formatted value changes (or always,
+// with `force`), with the variable's prefix before the format's text.
+function Variable(specifiers, format) {
+  this.prefix = __prefixed(specifiers, "prefix");
+  this.force = specifiers !== undefined && specifiers.force === true;
+  this.onchange = specifiers === undefined ? undefined : specifiers.onchange;
+  this.formatter = format;
+  this.last = undefined;
+  this.current = undefined;
+  this.enabled = true;
+  this.format = function (value) {
+    if (!this.enabled) { return ""; }
+    var text = this.formatter.format(value);
+    if (text == this.last && !this.force) { return ""; }
+    var changed = this.last !== undefined;
+    this.last = text;
+    this.current = value;
+    if (changed && this.onchange !== undefined) { this.onchange(); }
+    return this.prefix + text;
+  };
+  this.getPrefix = function () { return this.prefix; };
+  this.setPrefix = function (p) { this.prefix = p; };
+  this.getFormat = function () { return this.formatter; };
+  this.setFormat = function (f) { this.formatter = f; };
+  this.reset = function () { this.last = undefined; };
+  this.disable = function () { this.enabled = false; };
+  this.enable = function () { this.enabled = true; };
+  this.isEnabled = function () { return this.enabled; };
+  this.getCurrent = function () { return this.current; };
+  this.setCurrent = function (value) { this.current = value; this.last = this.formatter.format(value); };
+}
+function createVariable(specifiers, format) { return new Variable(specifiers, format); }
+function createOutputVariable(specifiers, format) {
+  var v = new Variable(specifiers, format);
+  if (specifiers !== undefined && specifiers.control == CONTROL_FORCE) { v.force = true; }
+  return v;
+}
+
+// `createModal`: like a variable; a modal code's value may be text.
+function Modal(specifiers, format) {
+  this.prefix = __prefixed(specifiers, "prefix");
+  this.suffix = __prefixed(specifiers, "suffix");
+  this.force = specifiers !== undefined && specifiers.force === true;
+  this.onchange = specifiers === undefined ? undefined : specifiers.onchange;
+  this.formatter = format;
+  this.last = undefined;
+  this.current = undefined;
+  this.format = function (value) {
+    var text = (typeof value == "number" && this.formatter !== undefined) ? this.formatter.format(value) : String(value);
+    if (text == this.last && !this.force) { return ""; }
+    var changed = this.last !== undefined;
+    this.last = text;
+    this.current = value;
+    if (changed && this.onchange !== undefined) { this.onchange(); }
+    return this.prefix + text + this.suffix;
+  };
+  this.getPrefix = function () { return this.prefix; };
+  this.setPrefix = function (p) { this.prefix = p; };
+  this.getSuffix = function () { return this.suffix; };
+  this.setSuffix = function (p) { this.suffix = p; };
+  this.reset = function () { this.last = undefined; };
+  this.getCurrent = function () { return this.current; };
+  this.disable = function () { this.force = false; };
+}
+function createModal(specifiers, format) { return new Modal(specifiers, format); }
+
+// `createReferenceVariable`: prints when the value differs from the
+// reference given with it (or always, with `force`).
+function ReferenceVariable(specifiers, format) {
+  this.prefix = __prefixed(specifiers, "prefix");
+  this.force = specifiers !== undefined && specifiers.force === true;
+  this.formatter = format;
+  this.enabled = true;
+  this.format = function (value, reference) {
+    if (!this.enabled) { return ""; }
+    if (!this.force && !this.formatter.areDifferent(value, reference)) { return ""; }
+    return this.prefix + this.formatter.format(value);
+  };
+  this.getPrefix = function () { return this.prefix; };
+  this.setPrefix = function (p) { this.prefix = p; };
+  this.disable = function () { this.enabled = false; };
+  this.enable = function () { this.enabled = true; };
+}
+function createReferenceVariable(specifiers, format) { return new ReferenceVariable(specifiers, format); }
+
+// `createIncrementalVariable`: prints the change from the last value.
+function IncrementalVariable(specifiers, format) {
+  this.prefix = __prefixed(specifiers, "prefix");
+  this.force = specifiers !== undefined && specifiers.force === true;
+  this.formatter = format;
+  this.current = undefined;
+  this.enabled = true;
+  this.format = function (value) {
+    if (!this.enabled) { return ""; }
+    var previous = this.current === undefined ? 0 : this.current;
+    this.current = value;
+    if (!this.force && !this.formatter.areDifferent(value, previous)) { return ""; }
+    return this.prefix + this.formatter.format(value - previous);
+  };
+  this.getPrefix = function () { return this.prefix; };
+  this.setPrefix = function (p) { this.prefix = p; };
+  this.reset = function () { this.current = undefined; };
+  this.disable = function () { this.enabled = false; };
+  this.getCurrent = function () { return this.current; };
+}
+function createIncrementalVariable(specifiers, format) { return new IncrementalVariable(specifiers, format); }
+
+// ---- Writing ----
+var __wordSeparator = " ";
+function setWordSeparator(separator) { __wordSeparator = separator; }
+function getWordSeparator() { return __wordSeparator; }
+function setCodePage(name) {}
+function getCodePage() { return 1252; }
+function setEOL(eol) { EOL = eol; }
+var __redirect = undefined;
+function writeln(text) {
+  if (__redirect !== undefined) {
+    __redirect.text += text + EOL;
+  } else {
+    __postc_write(text + EOL);
+  }
+}
+function write(text) {
+  if (__redirect !== undefined) {
+    __redirect.text += text;
+  } else {
+    __postc_write(String(text));
+  }
+}
+function redirectToBuffer() { __redirect = { text: "" }; }
+function getRedirectionBuffer() { return __redirect === undefined ? "" : __redirect.text; }
+function closeRedirection() { __redirect = undefined; }
+function isRedirecting() { return __redirect !== undefined; }
+
+// The words of a block: texts and arrays of texts (an `arguments`
+// object too), the empty ones left out.
+function __words(list, into) {
+  for (var i = 0; i < list.length; ++i) {
+    var w = list[i];
+    if (w === undefined || w === null) { continue; }
+    if (typeof w == "object") {
+      __words(w, into);
+    } else {
+      var t = String(w);
+      if (t != "") { into.push(t); }
+    }
+  }
+}
+function formatWords() {
+  var words = [];
+  __words(arguments, words);
+  return words.join(__wordSeparator);
+}
+function writeWords() {
+  var words = [];
+  __words(arguments, words);
+  if (words.length > 0) { writeln(words.join(__wordSeparator)); }
+}
+// The first word only when a word follows it.
+function writeWords2(first) {
+  var words = [];
+  var rest = [];
+  for (var i = 1; i < arguments.length; ++i) { rest.push(arguments[i]); }
+  __words(rest, words);
+  if (words.length > 0) {
+    var all = [];
+    __words([first], all);
+    writeln(all.concat(words).join(__wordSeparator));
+  }
+}
+function subst(text) {
+  var result = String(text);
+  for (var i = 1; i < arguments.length; ++i) {
+    result = result.split("%" + i).join(String(arguments[i]));
+  }
+  return result;
+}
+function localize(text) { return text; }
+function filterText(text, keep) {
+  var result = "";
+  var s = String(text);
+  for (var i = 0; i < s.length; ++i) {
+    if (keep.indexOf(s.charAt(i)) >= 0) { result += s.charAt(i); }
+  }
+  return result;
+}
+function translateText(text, from, to) {
+  var result = "";
+  var s = String(text);
+  for (var i = 0; i < s.length; ++i) {
+    var k = from.indexOf(s.charAt(i));
+    result += k >= 0 ? to.charAt(k) : s.charAt(i);
+  }
+  return result;
+}
+function conditional(condition, value) { return condition ? value : ""; }
+function isSafeText(text, permitted) { return filterText(text, permitted) == text; }
+function isTextSupported(text) { return true; }
+
+// ---- Messages ----
+function error(message) { throw new Error(message); }
+function warning(message) {}
+var __warnedOnce = {};
+function warningOnce(message, id) { __warnedOnce[id] = true; }
+function log(message) {}
+function debug(message) {}
+function validate(condition, message) { if (!condition) { error(message); } }
+
+// ---- Properties ----
+function getProperty(name, otherwise) {
+  var p = properties[name];
+  if (p === undefined) { return otherwise; }
+  if (p !== null && typeof p == "object" && p.value !== undefined) { return p.value; }
+  return p;
+}
+function setProperty(name, value) {
+  var p = properties[name];
+  if (p !== null && typeof p == "object" && p.value !== undefined) { p.value = value; } else { properties[name] = value; }
+}
+
+// ---- The job: sections, tools, parameters ----
+var __sections = [];
+var __section = undefined;
+var __position = new Vector(0, 0, 0);
+var __closing = false;
+var __circular = undefined;
+var __spindle = 0;
+var __coolantOn = false;
+
+function Tool(number, diameter, name) {
+  this.number = number;
+  this.turret = 0;
+  this.diameter = diameter;
+  this.cornerRadius = 0;
+  this.taperAngle = 0;
+  this.fluteLength = 0;
+  this.shoulderLength = 0;
+  this.shaftDiameter = diameter;
+  this.bodyLength = 0;
+  this.overallLength = 0;
+  this.numberOfFlutes = 2;
+  this.threadPitch = 0;
+  this.tipAngle = 0;
+  this.type = TOOL_MILLING_END_FLAT;
+  this.material = MATERIAL_CARBIDE;
+  this.comment = name;
+  this.description = name;
+  this.vendor = "";
+  this.productId = "";
+  this.holderNumber = 0;
+  this.holderDescription = "";
+  this.holderComment = "";
+  this.holderVendor = "";
+  this.holderProductId = "";
+  this.holderLength = 0;
+  this.lengthOffset = number;
+  this.diameterOffset = number;
+  this.compensationOffset = number;
+  this.spindleRPM = 0;
+  this.rampingSpindleRPM = 0;
+  this.surfaceSpeed = 0;
+  this.maximumSpindleSpeed = 0;
+  this.clockwise = true;
+  this.coolant = COOLANT_OFF;
+  this.breakControl = false;
+  this.manualToolChange = false;
+  this.liveTool = false;
+  this.jetTool = false;
+  this.isJetTool = function () { return this.jetTool; };
+  this.isTurningTool = function () { return false; };
+  this.isDrill = function () { return this.type == TOOL_DRILL; };
+  this.isLiveTool = function () { return this.liveTool; };
+  this.getNumber = function () { return this.number; };
+  this.getDiameter = function () { return this.diameter; };
+  this.getCornerRadius = function () { return this.cornerRadius; };
+  this.getTaperAngle = function () { return this.taperAngle; };
+  this.getFluteLength = function () { return this.fluteLength; };
+  this.getBodyLength = function () { return this.bodyLength; };
+  this.getHolderLength = function () { return this.holderLength; };
+  this.getThreadPitch = function () { return this.threadPitch; };
+  this.getTappingFeedrate = function () { return this.threadPitch * this.spindleRPM; };
+  this.getDescription = function () { return this.description; };
+  this.getComment = function () { return this.comment; };
+  this.getType = function () { return this.type; };
+  this.getSpindleMode = function () { return SPINDLE_CONSTANT_SPINDLE_SPEED; };
+  this.getManualToolChange = function () { return this.manualToolChange; };
+  this.getBreakControl = function () { return this.breakControl; };
+  this.getLengthOffset = function () { return this.lengthOffset; };
+  this.getDiameterOffset = function () { return this.diameterOffset; };
+  this.getCoolant = function () { return this.coolant; };
+  this.getCoolants = function () { return [this.coolant]; };
+  this.getHolder = function () { return undefined; };
+  this.getShaft = function () { return undefined; };
+  this.getSpindleRPM = function () { return this.spindleRPM; };
+  this.isClockwise = function () { return this.clockwise; };
+}
+
+function __Section(id, theTool, name) {
+  this.id = id;
+  this.tool = theTool;
+  this.name = name;
+  this.workOffset = 0;
+  this.wcs = "";
+  this.workPlane = new Matrix();
+  this.workOrigin = new Vector(0, 0, 0);
+  this.spindle = SPINDLE_PRIMARY;
+  this.feedMode = FEED_PER_MINUTE;
+  this.strategy = "";
+  this.type = TYPE_MILLING;
+  this.quality = 0;
+  this.jetMode = JET_MODE_THROUGH;
+  this.polarMode = 0;
+  this.machiningType = 0;
+  this.probeWorkOffset = 0;
+  this.partCatcher = false;
+  this.tailstock = false;
+  this.toolOrientation = 0;
+  this.initialPosition = undefined;
+  this.finalPosition = undefined;
+  this.zRange = undefined;
+  this.parameters = {};
+  this.getId = function () { return this.id; };
+  this.getTool = function () { return this.tool; };
+  this.getType = function () { return this.type; };
+  this.getParameter = function (name, otherwise) {
+    var v = this.parameters[name];
+    return v === undefined ? otherwise : v;
+  };
+  this.hasParameter = function (name) { return this.parameters[name] !== undefined; };
+  this.getInitialPosition = function () { return __vector(this.initialPosition === undefined ? __position : this.initialPosition); };
+  this.getFinalPosition = function () { return __vector(this.finalPosition === undefined ? __position : this.finalPosition); };
+  this.getGlobalInitialToolAxis = function () { return new Vector(0, 0, 1); };
+  this.getGlobalFinalToolAxis = function () { return new Vector(0, 0, 1); };
+  this.getInitialToolAxis = function () { return new Vector(0, 0, 1); };
+  this.getFinalToolAxis = function () { return new Vector(0, 0, 1); };
+  this.getInitialToolAxisABC = function () { return new Vector(0, 0, 0); };
+  this.getFinalToolAxisABC = function () { return new Vector(0, 0, 0); };
+  this.getGlobalZRange = function () {
+    return this.zRange === undefined ? new Range(__position.z, __position.z) : new Range(this.zRange.minimum, this.zRange.maximum);
+  };
+  this.getGlobalRange = function (direction) { return this.getGlobalZRange(); };
+  this.getBoundingBox = function () { return { lower: new Vector(0, 0, 0), upper: new Vector(0, 0, 0) }; };
+  this.getGlobalBoundingBox = function () { return this.getBoundingBox(); };
+  this.getPatternId = function () { return 0; };
+  this.getInternalPatternId = function () { return 0; };
+  this.isPatterned = function () { return false; };
+  this.getNumberOfPatternInstances = function () { return 1; };
+  this.getForceToolChange = function () { return false; };
+  this.isOptional = function () { return false; };
+  this.isMultiAxis = function () { return false; };
+  this.isOptimizedForMachine = function () { return false; };
+  this.getOptimizedTCPMode = function () { return TCP_MODE_OFF; };
+  this.optimizeMachineAnglesByMachine = function (machine, mode) {};
+  this.optimize = function () {};
+  this.getABCByPreference = function () { return new Vector(0, 0, 0); };
+  this.hasAnyCycle = function () { return false; };
+  this.hasCycle = function (type) { return false; };
+  this.getNumberOfCycles = function () { return 0; };
+  this.getNumberOfCyclePoints = function () { return 0; };
+  this.getFirstCycle = function () { return ""; };
+  this.doesStrictCycle = function (type) { return false; };
+  this.getMovements = function () { return 0; };
+  this.getCycleTime = function () { return 0; };
+  this.getMaximumFeedrate = function () { return 0; };
+  this.getMaximumSpindleSpeed = function () { return this.tool.spindleRPM; };
+  this.getInitialSpindleSpeed = function () { return this.tool.spindleRPM; };
+  this.getRapidDistance = function () { return 0; };
+  this.getCuttingDistance = function () { return 0; };
+  this.getModelPlane = function () { return new Matrix(); };
+  this.getModelOrigin = function () { return new Vector(0, 0, 0); };
+  this.getWorkOrigin = function () { return new Vector(0, 0, 0); };
+  this.getWorkOffset = function () { return this.workOffset; };
+  this.getDynamicWorkOffset = function () { return 0; };
+  this.hasDynamicWorkOffset = function () { return false; };
+  this.getDynamicWCSPlane = function () { return new Matrix(); };
+  this.getDynamicWCSOrigin = function () { return new Vector(0, 0, 0); };
+  this.isZOriented = function () { return true; };
+  this.getPolarMode = function () { return 0; };
+  this.getJetMode = function () { return this.jetMode; };
+  this.getUnit = function () { return unit; };
+  this.getSpindle = function () { return this.spindle; };
+  this.isConnectionSection = function () { return false; };
+  this.checkGroup = function (groups) { return false; };
+  this.getProperty = function (name, otherwise) { return getProperty(name, otherwise); };
+  this.doesToolpathFitWithinLimits = function (machine, position) { return true; };
+}
+
+function getNumberOfSections() { return __sections.length; }
+function getSection(index) {
+  if (index < 0 || index >= __sections.length) {
+    error(subst(localize("postc knows section %1 only when it is posted: this post reads ahead"), index));
+  }
+  return __sections[index];
+}
+function getCurrentSectionId() { return __section === undefined ? -1 : __section.id; }
+function isFirstSection() { return __section !== undefined && __section.id == 0; }
+function isLastSection() { return __section !== undefined && __section.id == __sections.length - 1 && __closing; }
+function getPreviousSection() { return (__section === undefined || __section.id == 0) ? undefined : __sections[__section.id - 1]; }
+function hasNextSection() { return __section !== undefined && __section.id + 1 < __sections.length; }
+function getNextSection() { return hasNextSection() ? __sections[__section.id + 1] : undefined; }
+function getNextTool(number) {
+  for (var i = (__section === undefined ? 0 : __section.id + 1); i < __sections.length; ++i) {
+    if (__sections[i].tool.number != number) { return __sections[i].tool; }
+  }
+  return undefined;
+}
+function isToolChangeNeeded() {
+  var previous = getPreviousSection();
+  return previous === undefined || previous.tool.number != tool.number;
+}
+function isNewWorkPlane() { return isFirstSection(); }
+function isNewWorkOffset() {
+  var previous = getPreviousSection();
+  return previous === undefined || previous.workOffset != currentSection.workOffset;
+}
+function getToolTable() {
+  var tools = [];
+  var seen = {};
+  for (var i = 0; i < __sections.length; ++i) {
+    var t = __sections[i].tool;
+    if (!seen[t.number]) {
+      seen[t.number] = true;
+      tools.push(t);
+    }
+  }
+  return {
+    getNumberOfTools: function () { return tools.length; },
+    getTool: function (i) { return tools[i]; }
+  };
+}
+function getToolTypeName(type) {
+  var names = ["unspecified", "drill", "center drill", "spot drill", "block drill", "flat end mill", "ball end mill",
+    "bullnose end mill", "chamfer mill", "face mill", "slot mill", "radius mill", "dovetail mill", "tapered mill",
+    "lollipop mill", "right tap", "left tap", "reamer", "boring bar", "counterbore", "countersink", "holder",
+    "general turning", "thread turning", "groove turning", "boring turning", "custom turning", "probe", "wire",
+    "water jet", "laser cutter", "welder", "grinder", "form mill", "plasma cutter", "marker", "thread mill"];
+  return names[type] === undefined ? "unspecified" : names[type];
+}
+
+var __parameters = {};
+function getParameter(name, otherwise) {
+  if (__section !== undefined && __section.parameters[name] !== undefined) { return __section.parameters[name]; }
+  var v = __parameters[name];
+  return v === undefined ? otherwise : v;
+}
+function hasParameter(name) { return getParameter(name) !== undefined; }
+function getGlobalParameter(name, otherwise) {
+  var v = __parameters[name];
+  return v === undefined ? otherwise : v;
+}
+function hasGlobalParameter(name) { return __parameters[name] !== undefined; }
+
+function getCurrentPosition() { return __vector(__position); }
+function setCurrentPosition(p) { __position = __vector(p); }
+function getFramePosition(p) { return __vector(p); }
+function getFrameDirection(d) { return __vector(d); }
+function getCurrentDirection() { return new Vector(0, 0, 1); }
+function getCurrentToolAxis() { return new Vector(0, 0, 1); }
+function setCurrentABC(abc) {}
+function getWorkpiece() { return { lower: new Vector(0, 0, 0), upper: new Vector(0, 0, 0) }; }
+function isWorkpieceDefined() { return false; }
+function getMachineConfiguration() { return machineConfiguration; }
+function setMachineConfiguration(machine) { machineConfiguration = machine; }
+function optimizeMachineAngles() {}
+function optimizeMachineAngles2(mode) {}
+function setRotation(matrix) {}
+function setTranslation(vector) {}
+function cancelTransformation() {}
+function getRotation() { return new Matrix(); }
+function getTranslation() { return new Vector(0, 0, 0); }
+function is3D() { return true; }
+function isMultiAxis() { return false; }
+function getHeaderVersion() { return ""; }
+function getHeaderDate() { return ""; }
+function getProduct() { return "postc"; }
+function getVersion() { return ""; }
+function getPlatform() { return ""; }
+function getMaterialName() { return ""; }
+function getGlobalZRange() { return currentSection.getGlobalZRange(); }
+function isProbeOperation() { return false; }
+function isInspectionOperation() { return false; }
+function isDepositionOperation() { return false; }
+function isMilling() { return currentSection === undefined || currentSection.type == TYPE_MILLING; }
+function isTurning() { return currentSection !== undefined && currentSection.type == TYPE_TURNING; }
+function isJet() { return currentSection !== undefined && currentSection.type == TYPE_JET; }
+function skipRemainingSection() {}
+function getCommandStringId(command) { return "COMMAND_" + command; }
+function getMovementStringId(m, jet) { return "MOVEMENT_" + m; }
+
+// A machine with no rotary axis: what `new MachineConfiguration()` gives.
+function MachineConfiguration() {
+  this.vendor = "";
+  this.model = "";
+  this.description = "";
+  this.isMultiAxisConfiguration = function () { return false; };
+  this.isMachineCoordinate = function (i) { return false; };
+  this.getNumberOfAxes = function () { return 3; };
+  this.getAxisU = function () { return { isEnabled: function () { return false; } }; };
+  this.getAxisV = function () { return { isEnabled: function () { return false; } }; };
+  this.getAxisW = function () { return { isEnabled: function () { return false; } }; };
+  this.isHeadConfiguration = function () { return false; };
+  this.isTableConfiguration = function () { return false; };
+  this.getVendor = function () { return this.vendor; };
+  this.getModel = function () { return this.model; };
+  this.getDescription = function () { return this.description; };
+  this.setVendor = function (v) { this.vendor = v; };
+  this.setModel = function (v) { this.model = v; };
+  this.setDescription = function (v) { this.description = v; };
+  this.setVirtualTooltip = function (v) {};
+  this.setMultiAxisFeedrate = function () {};
+  this.setSingularity = function () {};
+  this.setHomePositionX = function (v) {};
+  this.setHomePositionY = function (v) {};
+  this.setRetractPlane = function (v) {};
+  this.getRetractPlane = function () { return 0; };
+  this.hasHomePositionX = function () { return false; };
+  this.hasHomePositionY = function () { return false; };
+  this.getHomePositionX = function () { return 0; };
+  this.getHomePositionY = function () { return 0; };
+  this.getMaximumSpindleSpeed = function () { return 0; };
+  this.setMaximumSpindleSpeed = function (v) {};
+  this.getSpindleAxis = function () { return new Vector(0, 0, 1); };
+  this.setSpindleAxis = function (v) {};
+  this.getRemainingOrientation = function (abc, m) { return m; };
+  this.getOptimizedDirection = function (axis, abc, reverse, tcp) { return new Vector(0, 0, 0); };
+  this.getABCByPreference = function () { return new Vector(0, 0, 0); };
+  this.getDirection = function (abc) { return new Vector(0, 0, 1); };
+  this.getOrientation = function (abc) { return new Matrix(); };
+  this.getABC = function (m) { return new Vector(0, 0, 0); };
+  this.getPreferredABC = function (abc) { return abc; };
+  this.isSupported = function (m) { return true; };
+  this.enableMachineRewinds = function () {};
+  this.isReceived = function () { return false; };
+  this.getModelUnit = function () { return unit; };
+}
+machineConfiguration = new MachineConfiguration();
+function createAxis(specifiers) {
+  return { isEnabled: function () { return true; }, getCoordinate: function () { return 0; } };
+}
+
+// ---- Circular moves (the current `onCircular` call) ----
+function getCircularPlane() { return __circular.plane; }
+function getCircularCenter() { return __vector(__circular.center); }
+function getCircularStartRadius() { return __circular.radius; }
+function getCircularRadius() { return __circular.radius; }
+function getCircularSweep() { return __circular.sweep; }
+function getCircularChordLength() { return Vector.diff(__circular.end, __circular.start).getLength(); }
+function getCircularNormal() { return new Vector(0, 0, __circular.clockwise ? -1 : 1); }
+function getPositionU(u) {
+  var c = __circular;
+  var angle = Math.atan2(c.start.y - c.center.y, c.start.x - c.center.x) + (c.clockwise ? -1 : 1) * c.sweep * u;
+  return new Vector(c.center.x + c.radius * Math.cos(angle), c.center.y + c.radius * Math.sin(angle),
+    c.start.z + (c.end.z - c.start.z) * u);
+}
+function isFullCircle() { return Math.abs(__circular.sweep - 2 * Math.PI) < 1e-9; }
+function isHelical() { return Math.abs(__circular.end.z - __circular.start.z) > 1e-9; }
+function isSpiral() { return false; }
+function isClockwise() { return __circular.clockwise; }
+function getHelicalOffset() { return new Vector(0, 0, __circular.end.z - __circular.start.z); }
+function getHelicalDistance() { return __circular.end.z - __circular.start.z; }
+function getHelicalPitch() {
+  return __circular.sweep == 0 ? 0 : Math.abs(getHelicalDistance()) * 2 * Math.PI / __circular.sweep;
+}
+// The current arc as `onLinear` calls, each chord within `tol` of the arc.
+function linearize(tol) {
+  var c = __circular;
+  var steps = 1;
+  if (c.radius > tol) {
+    var step = 2 * Math.acos(1 - tol / c.radius);
+    steps = Math.max(1, Math.ceil(c.sweep / step));
+  }
+  for (var i = 1; i <= steps; ++i) {
+    var p = i == steps ? c.end : getPositionU(i / steps);
+    onLinear(p.x, p.y, p.z, c.feed);
+    __position = __vector(p);
+  }
+}
+
+
+// ---- JavaScript's globals the engine lacks ----
+function isFinite(v) { var n = Number(v); return n - n == 0; }
+
+// ---- Tables, colours, files ----
+// `new Table(values, {initial, force}, message)`: `lookup(id)` is the
+// value for `id` (counted from `initial`), or an error with `message`.
+function Table(values, specifiers, message) {
+  this.values = values;
+  this.initial = (specifiers !== undefined && specifiers.initial !== undefined) ? specifiers.initial : 0;
+  this.message = message === undefined ? "Invalid index" : message;
+  this.lookup = function (id) {
+    var v = this.values[id - this.initial];
+    if (v === undefined) { error(this.message); }
+    return v;
+  };
+}
+function Color(r, g, b) { this.r = r; this.g = g; this.b = b; }
+function __FileSystem_getCombinedPath(a, b) { return a == "" ? b : a + PATH_SEPARATOR + b; }
+function __FileSystem_getFilename(path) {
+  var i = Math.max(path.lastIndexOf("/"), path.lastIndexOf("\\"));
+  return path.substring(i + 1);
+}
+function __FileSystem_getFolderPath(path) {
+  var i = Math.max(path.lastIndexOf("/"), path.lastIndexOf("\\"));
+  return i < 0 ? "" : path.substring(0, i);
+}
+function __FileSystem_replaceExtension(path, ext) {
+  var name = __FileSystem_getFilename(path);
+  var dot = name.lastIndexOf(".");
+  var stem = dot < 0 ? path : path.substring(0, path.length - name.length + dot);
+  return stem + "." + ext;
+}
+function __FileSystem_isFile(path) { return false; }
+function __FileSystem_isFolder(path) { return false; }
+function __FileSystem_getFileSize(path) { __unsupported("FileSystem.getFileSize"); }
+function __FileSystem_copyFile(a, b) { __unsupported("FileSystem.copyFile"); }
+function __FileSystem_remove(path) { __unsupported("FileSystem.remove"); }
+function __FileSystem_removeFolderRecursive(path) { __unsupported("FileSystem.removeFolderRecursive"); }
+function __FileSystem_makeFolder(path) { __unsupported("FileSystem.makeFolder"); }
+function __FileSystem_getTemporaryFolder() { __unsupported("FileSystem.getTemporaryFolder"); }
+function __FileSystem_getTemporaryFile(prefix) { __unsupported("FileSystem.getTemporaryFile"); }
+function FileSystem() {}
+function isSpeedFeedSynchronizationActive() { return false; }
+function getGlobalPosition(p) { return __vector(p); }
+function getFirstTool() { return __sections.length > 0 ? __sections[0].tool : undefined; }
+var EULER_ZXY_R = 5;
+
+// `Object.create(o)`: a new object with `o`'s properties (postc's objects
+// have no prototypes, so later changes to `o` do not show through).
+function __Object_create(o) {
+  var r = {};
+  if (o !== null && o !== undefined) {
+    for (var k in o) { r[k] = o[k]; }
+  }
+  return r;
+}
+// `new StringSubstitution()`: `setValue(name, value)`, then
+// `substitute(text)` replaces each `${name}`.
+function StringSubstitution() {
+  this.values = {};
+  this.setValue = function (name, value) { this.values[name] = value; };
+  this.substitute = function (text) {
+    var result = String(text);
+    for (var k in this.values) { result = result.split("${" + k + "}").join(String(this.values[k])); }
+    return result;
+  };
+}
+function onUnsupportedCoolant(coolant) {}
+function cycleNotSupported() { error(localize("The cycle is not supported.")); }
+function onExpandedRapid(x, y, z) { onRapid(x, y, z); }
+function onExpandedLinear(x, y, z, feed) { onLinear(x, y, z, feed); }
+function onExpandedCircular(clockwise, cx, cy, cz, x, y, z, feed) { onCircular(clockwise, cx, cy, cz, x, y, z, feed); }
+function setCurrentDirection(d) {}
+function setCurrentPositionX(v) { __position.x = v; }
+function setCurrentPositionY(v) { __position.y = v; }
+function setCurrentPositionZ(v) { __position.z = v; }
+function getCyclePoint(i) { __unsupported("getCyclePoint"); }
+function isWellKnownCommand(command) { return command >= 0 && command <= COMMAND_PROBE_OFF; }
+function getQuadrant(angle) { return Math.floor((angle % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI) / (Math.PI / 2)); }
+function getConfigurationPath() { __unsupported("getConfigurationPath"); }
+function loadText(path, encoding) { __unsupported("loadText"); }
+function include(path) { __unsupported("include"); }
+function execute(path, args, hide, workingFolder) { __unsupported("execute"); }
+function isSubSpindleCycle(type) { return false; }
+function getMachineConfigurationAsText(machine) { return ""; }
+var center = undefined;
+var radius = 0;
+
+// ---- What postc does not run yet: an error when the post calls it ----
+function __unsupported(name) {
+  error("postc does not run `" + name + "` of Fusion's host yet (docs/fusion.md)");
+}
+function isFirstCyclePoint() { __unsupported("isFirstCyclePoint"); }
+function isLastCyclePoint() { __unsupported("isLastCyclePoint"); }
+function expandCyclePoint(x, y, z) { __unsupported("expandCyclePoint"); }
+function repositionToCycleClearance(c, x, y, z) { __unsupported("repositionToCycleClearance"); }
+function getCyclePointId() { __unsupported("getCyclePointId"); }
+function getNumberOfCyclePoints() { __unsupported("getNumberOfCyclePoints"); }
+function getNextRecord() { __unsupported("getNextRecord"); }
+function getCurrentRecordId() { __unsupported("getCurrentRecordId"); }
+function getRecord(id) { __unsupported("getRecord"); }
+function inspectionWriteVariables() { __unsupported("inspectionWriteVariables"); }
+function createToolRenderer() { __unsupported("createToolRenderer"); }
+function redirectToFile(path) { __unsupported("redirectToFile"); }
+function getOutputPath() { __unsupported("getOutputPath"); }
+function getIntermediatePath() { __unsupported("getIntermediatePath"); }
+function findFile(path) { __unsupported("findFile"); }
+function getFixture() { __unsupported("getFixture"); }
+function setExitCode(code) { __unsupported("setExitCode"); }
+// No drilling cycle reaches the post: postc drills with moves.
+function isTappingCycle() { return false; }
+function isProbingCycle() { return false; }
+function isPolarModeActive() { return false; }
+function setWriteInvocations(on) {}
+function setWriteStack(on) {}
+var POLAR_MODE_OFF = 0;
+var COMMAND_DISPLAY_MESSAGE = 44;
+
+// ---- Dates: the job's date and time (`--set date=`, `--set time=`) ----
+var __date = "";
+var __time = "";
+function Date() {
+  var months = ["January", "February", "March", "April", "May", "June", "July", "August", "September", "October",
+    "November", "December"];
+  var words = __date.split(" ");
+  var iso = __date.split("-");
+  var year = 1970;
+  var month = 0;
+  var day = 1;
+  if (words.length == 4) {
+    month = Math.max(0, months.indexOf(words[1]));
+    day = parseInt(words[2], 10);
+    year = parseInt(words[3], 10);
+  } else if (iso.length == 3) {
+    year = parseInt(iso[0], 10);
+    month = parseInt(iso[1], 10) - 1;
+    day = parseInt(iso[2], 10);
+  }
+  var clock = __time.split(":");
+  var hours = clock.length >= 2 ? parseInt(clock[0], 10) : 0;
+  var minutes = clock.length >= 2 ? parseInt(clock[1], 10) : 0;
+  var two = function (n) { return n < 10 ? "0" + n : "" + n; };
+  this.getFullYear = function () { return year; };
+  this.getYear = function () { return year - 1900; };
+  this.getMonth = function () { return month; };
+  this.getDate = function () { return day; };
+  this.getDay = function () { return 0; };
+  this.getHours = function () { return hours; };
+  this.getMinutes = function () { return minutes; };
+  this.getSeconds = function () { return 0; };
+  this.getMilliseconds = function () { return 0; };
+  this.getTime = function () { return 0; };
+  this.toLocaleDateString = function () { return __date; };
+  this.toLocaleTimeString = function () { return __time; };
+  this.toLocaleString = function () { return __date + " " + __time; };
+  this.toDateString = function () { return __date; };
+  this.toTimeString = function () { return __time; };
+  this.toString = function () { return __date + " " + __time; };
+  this.toISOString = function () { return year + "-" + two(month + 1) + "-" + two(day) + "T" + two(hours) + ":" + two(minutes) + ":00.000Z"; };
+}
+
+// ---- Entry points a post may leave out ----
+function onOpen() {}
+function onClose() {}
+function onTerminate() {}
+function onSection() {}
+function onSectionEnd() {}
+function onParameter(name, value) {}
+function onComment(text) {}
+function onDwell(seconds) {}
+function onSpindleSpeed(speed) {}
+function onRadiusCompensation() {}
+function onCommand(command) {}
+function onRapid(x, y, z) {}
+function onLinear(x, y, z, feed) {}
+function onCircular(clockwise, cx, cy, cz, x, y, z, feed) { linearize(tolerance); }
+function onMovement(m) {}
+function onPassThrough(text) {}
+function onCycle() {}
+function onCyclePoint(x, y, z) {}
+function onCycleEnd() {}
+function onUnsupportedCommand(command) {}
+function onImpliedCommand(command) {}
+function onError(message) {}
+
+// ---- The engine: postc's events as Fusion's calls ----
+function __fusion_open(mm, name, comment, date, time) {
+  __date = date;
+  __time = time;
+  unit = mm ? MM : IN;
+  outputUnit = unit;
+  if (name != "") { programComment = name; }
+  if (comment != "") { programComment = comment; }
+  onOpen();
+}
+
+// A toolpath starts: a new section with its tool. The previous section
+// ends now, so that its `onSectionEnd` sees the next section.
+function __fusion_toolpath(number, diameter, name, toolpathName) {
+  var t = new Tool(number, diameter, name);
+  t.spindleRPM = __spindle;
+  var s = new __Section(__sections.length, t, toolpathName);
+  s.parameters["operation-comment"] = toolpathName;
+  s.parameters["operation:tool_diameter"] = diameter;
+  __sections.push(s);
+  __fusion_end_section();
+  __section = s;
+  __section.pending = true;
+}
+
+function __fusion_end_section() {
+  if (currentSection !== undefined && !currentSection.ended) {
+    currentSection.ended = true;
+    currentSection.finalPosition = __vector(__position);
+    onSectionEnd();
+  }
+}
+
+// The section's first move: Fusion calls `onSection` with the section's
+// initial position known.
+function __fusion_begin(x, y, z) {
+  var s = __section;
+  if (s === undefined || !s.pending) { return; }
+  s.pending = false;
+  s.initialPosition = new Vector(x, y, z);
+  s.zRange = new Range(z, z);
+  currentSection = s;
+  tool = s.tool;
+  spindleSpeed = tool.spindleRPM;
+  movement = MOVEMENT_RAPID;
+  radiusCompensation = RADIUS_COMPENSATION_OFF;
+  onParameter("operation-comment", s.name);
+  onSection();
+}
+
+function __fusion_spindle(speed) {
+  __spindle = speed;
+  if (__section !== undefined && __section.pending) {
+    __section.tool.spindleRPM = speed;
+  } else if (currentSection !== undefined && speed != spindleSpeed) {
+    spindleSpeed = speed;
+    onSpindleSpeed(speed);
+  }
+}
+
+function __fusion_moved(x, y, z) {
+  __position = new Vector(x, y, z);
+  if (currentSection !== undefined) { currentSection.zRange.expandTo(z); }
+}
+
+function __fusion_rapid(x, y, z) {
+  __fusion_begin(x, y, z);
+  movement = MOVEMENT_RAPID;
+  onRapid(x, y, z);
+  __fusion_moved(x, y, z);
+}
+
+function __fusion_linear(x, y, z, feed, plunge) {
+  __fusion_begin(x, y, z);
+  movement = plunge ? MOVEMENT_PLUNGE : MOVEMENT_CUTTING;
+  feedrate = feed;
+  onLinear(x, y, z, feed);
+  __fusion_moved(x, y, z);
+}
+
+// An arc as the post's settings allow it: linearized when its plane is
+// not allowed (`allowedCircularPlanes`), when it is helical and
+// `allowHelicalMoves` is off, or when its radius or sweep is outside
+// `minimumCircularRadius` .. `maximumCircularRadius`,
+// `minimumCircularSweep`, `minimumChordLength`; split into equal parts
+// when its sweep is over `maximumCircularSweep`; else one `onCircular`.
+function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius) {
+  __fusion_begin(x, y, z);
+  movement = MOVEMENT_CUTTING;
+  feedrate = feed;
+  var start = __vector(__position);
+  var c = {
+    clockwise: clockwise,
+    center: new Vector(cx, cy, cz),
+    start: start,
+    end: new Vector(x, y, z),
+    sweep: Math.abs(sweep),
+    radius: radius,
+    plane: PLANE_XY,
+    feed: feed
+  };
+  __circular = c;
+  var helical = Math.abs(z - start.z) > 1e-9;
+  var planeAllowed = allowedCircularPlanes === undefined || (allowedCircularPlanes & (1 << PLANE_XY)) != 0;
+  var chord = Vector.diff(c.end, start).getLength();
+  var full = c.sweep > Math.PI && chord < 1e-9;
+  if (!planeAllowed || (helical && !allowHelicalMoves) || radius < minimumCircularRadius ||
+      radius > maximumCircularRadius || c.sweep < minimumCircularSweep || (!full && chord < minimumChordLength)) {
+    linearize(tolerance);
+    return;
+  }
+  var parts = Math.max(1, Math.ceil(c.sweep / maximumCircularSweep - 1e-9));
+  for (var i = 1; i <= parts; ++i) {
+    var p = i == parts ? c.end : getPositionU(i / parts);
+    __circular = {
+      clockwise: clockwise,
+      center: new Vector(cx, cy, start.z + (z - start.z) * (i - 1) / parts),
+      start: __vector(__position),
+      end: __vector(p),
+      sweep: c.sweep / parts,
+      radius: radius,
+      plane: PLANE_XY,
+      feed: feed
+    };
+    onCircular(clockwise, cx, cy, cz, p.x, p.y, p.z, feed);
+    __fusion_moved(p.x, p.y, p.z);
+    __circular = c;
+  }
+}
+
+function __fusion_dwell(seconds) { onDwell(seconds); }
+function __fusion_comment(text) { onComment(text); }
+
+function __fusion_close() {
+  __closing = true;
+  if (__section !== undefined && __section.pending) {
+    __fusion_begin(__position.x, __position.y, __position.z);
+  }
+  __fusion_end_section();
+  onClose();
+  onTerminate();
+}

@@ -1,0 +1,74 @@
+//! Autodesk Fusion / HSM `.cps` posts: the same JavaScript front end as
+//! CNC-Calc's (lexer, parser, the general lowering, JavaScript's values),
+//! with Fusion's host API in place of CNC-Calc's.
+//!
+//! The host API is JavaScript ([`HOST`], `host.js`): the constants,
+//! settings, formats, output variables, sections, tools and vectors
+//! Autodesk's engine gives a post, and the engine functions that call the
+//! post's entry points. [`compile`] reads it as a second source file,
+//! puts its statements before the post's and lowers the two as one
+//! program; a function the post declares replaces the host's of that
+//! name, as a post's declaration shadows a global in Fusion.
+
+pub mod api;
+
+use std::collections::HashSet;
+use std::path::Path;
+
+use postc_ir::{Diagnostic, Dialect, Post, SourceMap, Span, codes};
+
+use crate::ast::{Program, StmtKind};
+
+/// postc's Fusion host API, in JavaScript.
+pub const HOST: &str = include_str!("host.js");
+
+/// The name the host's source has in diagnostics.
+pub const HOST_NAME: &str = "<postc fusion host>";
+
+/// Compiles a Fusion post: the IR and every diagnostic, sorted by position.
+pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<Diagnostic>) {
+    let text = String::from_utf8_lossy(bytes).into_owned();
+    let file = sources.add(path.display().to_string(), text);
+    let host_file = sources.add(HOST_NAME.to_string(), HOST.to_string());
+    let text = sources.text(file).unwrap_or_default();
+    let (program, mut diagnostics) = crate::parse(text, file);
+    // Fusion's engine reads `let` and `const` (CNC-Calc's does not); postc
+    // reads them as `var` (docs/fusion.md, "Language").
+    diagnostics.retain(|d| d.code != codes::JS018.code);
+    let (host, host_diagnostics) = crate::parse(HOST, host_file);
+    diagnostics.extend(host_diagnostics);
+    let mut post = Post::default();
+    post.info.dialect = Dialect::Fusion;
+    post.info.source = path.display().to_string();
+    post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    post.info.file_extension = "nc".into();
+    if !postc_ir::diagnostic::has_errors(&diagnostics) {
+        let merged = merge(host, program);
+        crate::lower::fusion::lower(&merged, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+    }
+    diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
+    (post, diagnostics)
+}
+
+/// The host's statements, less the functions the post declares, then the
+/// post's.
+fn merge(host: Program, post: Program) -> Program {
+    let declared: HashSet<&str> = post
+        .body
+        .iter()
+        .filter_map(|s| match &s.kind {
+            StmtKind::Function(f) => f.name.as_ref().map(|n| n.name.as_str()),
+            _ => None,
+        })
+        .collect();
+    let mut body: Vec<_> = host
+        .body
+        .into_iter()
+        .filter(|s| match &s.kind {
+            StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())),
+            _ => true,
+        })
+        .collect();
+    body.extend(post.body);
+    Program { body, span: post.span }
+}

@@ -1,0 +1,178 @@
+//! Lowering a Fusion `.cps` post: the post and postc's Fusion host API
+//! (`fusion/host.js`, JavaScript) as one program, every function in the
+//! general form ([`super::general`]), and handlers that call the host's
+//! engine functions (`__fusion_*`), which call the post's entry points in
+//! Fusion's order.
+//!
+//! | section | calls |
+//! |---|---|
+//! | `HEADER` | `__fusion_open(mm, file name, notes, date, time)`, then `__fusion_toolpath(...)` for the first toolpath |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name)` |
+//! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
+//! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
+//! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
+//! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius)` |
+//! | `DWELL_MOVE`, `COMMENT` | `__fusion_dwell(seconds)`, `__fusion_comment(text)` |
+//! | `FOOTER` | `__fusion_close()` |
+//!
+//! A post that has a construct or host call the general form cannot
+//! hold is refused with JS109 at that construct: a Fusion post has no
+//! script tier to fall back to.
+
+use postc_ir::{
+    BinaryOp, Body, Diagnostic, Expr, Function, Handler, HandlerKey, Post, Quantity, Section, Span, Stmt, codes,
+};
+
+use crate::ast::{Program, StmtKind};
+
+use super::fold;
+use super::general;
+use super::layout::{self, Layout};
+use super::model::Model;
+use super::setup::Setup;
+
+/// Lowers the merged program (host first, then the post) into `post`.
+pub(crate) fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+    let model = Model::build(program);
+    let setup = Setup::default();
+    let mut layout = Layout::new(&model);
+    let init_fn = layout.add_fn(layout::INIT);
+    let functions = match functions(program, &model, &setup, &mut layout, whole) {
+        Ok(f) => f,
+        Err(why) => {
+            diags.push(
+                Diagnostic::error(codes::JS109, format!("postc cannot run this Fusion post: it {}", why.what))
+                    .at(why.span, "here")
+                    .note("no program is written"),
+            );
+            return;
+        }
+    };
+    if let Some(super::consts::Const::Str(ext)) = model.constant("extension")
+        && !ext.is_empty()
+    {
+        post.info.file_extension = ext.clone();
+    }
+    post.options.forget_modal_at_toolpath_start = false;
+    post.handlers = handlers(&layout);
+    post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
+    post.functions = functions;
+    post.globals = layout.globals;
+    post.scripts.clear();
+}
+
+fn functions(
+    program: &Program,
+    model: &Model,
+    setup: &Setup,
+    layout: &mut Layout,
+    whole: Span,
+) -> Result<Vec<Function>, super::native::Why> {
+    let init_stmts: Vec<_> = program
+        .body
+        .iter()
+        .filter(|s| match &s.kind {
+            StmtKind::Function(_) | StmtKind::Empty => false,
+            StmtKind::Var(ds) => ds.iter().any(|d| d.init.is_some() && model.constant(&d.name.name).is_none()),
+            _ => true,
+        })
+        .cloned()
+        .collect();
+    let mut shared = general::Shared::new(model, setup, layout);
+    shared.fusion = true;
+    let mut functions = Vec::new();
+    for &id in &model.scopes.top_fns {
+        let f = &model.scopes.funcs[id];
+        let func = f.func.expect("top-level functions have a body");
+        functions.push(shared.function(id, &func.body, false, func.span)?);
+    }
+    let mut init = shared.function(0, &init_stmts, false, whole)?;
+    init.name = layout::INIT.into();
+    init.params.clear();
+    functions.push(init);
+    for (id, f) in shared.nested_functions()? {
+        if id.index() != functions.len() {
+            return Err(super::native::Why { what: "has a nested function out of order".into(), span: whole });
+        }
+        functions.push(f);
+    }
+    for f in &mut functions {
+        if let Body::Native(b) = &mut f.body {
+            *b = fold::stmts(std::mem::take(b));
+        }
+    }
+    Ok(functions)
+}
+
+/// The handlers: each section calls the host's engine function for it.
+fn handlers(layout: &Layout) -> Vec<Handler> {
+    let q = Expr::Quantity;
+    let call = |name: &str, args: Vec<Expr>| -> Vec<Stmt> {
+        match layout.function(name) {
+            Some(f) => vec![Stmt::Eval(Expr::Call(f, args))],
+            None => Vec::new(),
+        }
+    };
+    let toolpath = || {
+        call(
+            "__fusion_toolpath",
+            vec![q(Quantity::Tool), q(Quantity::ToolDiameter), q(Quantity::ToolName), q(Quantity::ToolpathName)],
+        )
+    };
+    let mm = Expr::Binary(
+        BinaryOp::Eq,
+        Box::new(q(Quantity::UnitsText)),
+        Box::new(Expr::Text(postc_ir::Units::Mm.name().into())),
+    );
+    let mut header = call(
+        "__fusion_open",
+        vec![mm, q(Quantity::FileName), q(Quantity::FileNotes), q(Quantity::Date), q(Quantity::Time)],
+    );
+    header.extend(toolpath());
+    let linear = |plunge: bool| {
+        call(
+            "__fusion_linear",
+            vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z), q(Quantity::Feed), Expr::Bool(plunge)],
+        )
+    };
+    let arc = |cw: bool| {
+        call(
+            "__fusion_circular",
+            vec![
+                Expr::Bool(cw),
+                q(Quantity::IA),
+                q(Quantity::JA),
+                q(Quantity::KA),
+                q(Quantity::X),
+                q(Quantity::Y),
+                q(Quantity::Z),
+                q(Quantity::Feed),
+                q(Quantity::Angle),
+                q(Quantity::Radius),
+            ],
+        )
+    };
+    let mut hs = Vec::new();
+    let mut add = |section: Section, body: Vec<Stmt>| {
+        if !body.is_empty() {
+            hs.push(Handler { key: HandlerKey::Section(section), body, span: None });
+        }
+    };
+    add(Section::Header, header);
+    add(Section::NewSegment, toolpath());
+    add(Section::SpindleOn, call("__fusion_spindle", vec![q(Quantity::SpindleSpeed)]));
+    add(Section::RapidMove, call("__fusion_rapid", vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z)]));
+    add(Section::FeedMove, linear(false));
+    add(Section::PlungeMove, linear(true));
+    add(Section::CwArcMove, arc(true));
+    add(Section::CcwArcMove, arc(false));
+    add(Section::CwHelicalArcMove, arc(true));
+    add(Section::CcwHelicalArcMove, arc(false));
+    add(Section::DwellMove, call("__fusion_dwell", vec![q(Quantity::DwellTime)]));
+    add(Section::Comment, call("__fusion_comment", vec![q(Quantity::CommentText)]));
+    add(Section::Footer, call("__fusion_close", vec![]));
+    for h in &mut hs {
+        h.body = fold::stmts(std::mem::take(&mut h.body));
+    }
+    hs
+}
