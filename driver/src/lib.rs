@@ -395,3 +395,15 @@ pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
     while source.next_event(&mut diagnostics).is_some() {}
     diagnostics
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod read_ahead {
+        pub use crate::read_ahead::{BATCH, ReadAhead};
+    }
+    pub mod ron_locate {
+        pub use crate::ron_locate::item;
+    }
+}
