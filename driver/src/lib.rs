@@ -401,7 +401,7 @@ pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
 #[doc(hidden)]
 pub mod testing {
     pub mod read_ahead {
-        pub use crate::read_ahead::{BATCH, ReadAhead};
+        pub use crate::read_ahead::BATCH;
     }
     pub mod ron_locate {
         pub use crate::ron_locate::item;

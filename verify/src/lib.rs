@@ -437,6 +437,6 @@ pub mod testing {
         pub use crate::interp::{Block, replay, tenths, words_line};
     }
     pub mod plot {
-        pub use crate::plot::{Cmd, MERGE, nice_step};
+        pub use crate::plot::nice_step;
     }
 }

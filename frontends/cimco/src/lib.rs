@@ -90,9 +90,6 @@ fn parse_counted(text: &str, file: FileId) -> (Program, Vec<Diagnostic>, u64) {
 /// not its interface: nothing else uses these.
 #[doc(hidden)]
 pub mod testing {
-    pub mod sniff {
-        pub use crate::sniff::looks_like_cimco;
-    }
     pub mod strings {
         pub use crate::strings::{decode, quote};
     }

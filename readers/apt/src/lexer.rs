@@ -229,6 +229,8 @@ impl<R: BufRead> Lexer<R> {
     }
 
     /// The next record, `None` at the end of the file.
+    // Reading can fail (`io::Result<Option<_>>`), which `Iterator::next` cannot say.
+    #[allow(clippy::should_implement_trait)]
     pub fn next(&mut self) -> io::Result<Option<RawKind>> {
         self.record.clear();
         self.record_start = 0;

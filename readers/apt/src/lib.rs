@@ -140,9 +140,6 @@ pub mod testing {
     pub mod circle {
         pub use crate::circle::{ArcOutcome, CircleSpec, Convention, V3, build_arc, norm, rotate, unit};
     }
-    pub mod detect {
-        pub use crate::detect::{Content, sniff};
-    }
     pub mod grammar {
         pub use crate::grammar::{ItemKind, Shape, record};
     }

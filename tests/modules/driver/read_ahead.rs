@@ -1,8 +1,9 @@
-use postc_driver::testing::read_ahead::*;
-
+use postc_driver::ReadAhead;
+use postc_driver::testing::read_ahead::BATCH;
 use postc_ir::FileId;
 use postc_ir::event::{Move, VecSource};
 use postc_ir::{Diagnostic, Event, EventSource, Span};
+
 /// A source that reports a diagnostic before every third event.
 struct Noisy {
     inner: VecSource,

@@ -1,4 +1,5 @@
 use postc_driver::testing::ron_locate::*;
+
 const TEXT: &str = "// header\n(\n    info: (name: \"a, [b]\"),\n    options: (step_budget: 0),\n    formats: [(decimals: 3), (decimals: 1)],\n    handlers: [\n        (key: Section(RapidMove), body: [Line(pieces: [Var(0)])]),\n        (key: Section(FeedMove), body: [Line(pieces: [Var(9)])]),\n    ],\n)\n";
 
 #[test]

@@ -1,10 +1,8 @@
 mod rules;
 
-use std::path::Path;
-
 use postc_ir::{Diagnostic, SourceMap};
-
 use postc_lint::{Options, Product};
+use std::path::Path;
 
 fn compile(name: &str, text: &str, product: Option<Product>) -> Vec<Diagnostic> {
     let mut sources = SourceMap::new();

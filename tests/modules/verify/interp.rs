@@ -1,12 +1,12 @@
+use postc_ir::Units;
 use postc_ir::event::{ArcDir, Intent, Plane};
 use postc_ir::{Diagnostic, FileId, Span};
+use postc_verify::expect::Record;
 use postc_verify::expect::RecordSource;
 use postc_verify::testing::interp::*;
-
-use postc_ir::Units;
-use postc_verify::expect::Record;
 use postc_verify::{Controller, Move, Observer, Settings};
 use proptest::prelude::*;
+
 /// A toolpath handed over at once.
 struct Path(Vec<(Record, Span)>);
 

@@ -1,4 +1,5 @@
-use postc_front_cimco::testing::sniff::*;
+use postc_front_cimco::looks_like_cimco;
+
 #[test]
 fn recognises_cimco_posts() {
     assert!(looks_like_cimco(b"function onLinear(vx, vy, vz, movement) {}"));

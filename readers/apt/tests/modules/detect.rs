@@ -1,4 +1,4 @@
-use postc_reader_apt::testing::detect::*;
+use postc_reader_apt::{Content, sniff};
 
 #[test]
 fn heads_are_told_apart() {

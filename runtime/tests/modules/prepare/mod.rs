@@ -5,7 +5,7 @@ mod locals;
 mod splice;
 mod unshift;
 
-/// What the passes' unit tests build code from.
+/// What the passes' tests build code from.
 pub mod testing {
     use postc_ir::{LocalId, Place};
 

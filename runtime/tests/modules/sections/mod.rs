@@ -1,12 +1,11 @@
 //! Tape splitting, rotary-wrap and modal-memory behaviour of section dispatch.
 
+use postc_ir::FormatId;
 use postc_ir::event::{Event, FeedMove, Intent, Move};
 use postc_ir::event::{Job, Tool, ToolpathStart, VecSource};
 use postc_ir::post::TapeSplitting;
 use postc_ir::{FileId, Handler, HandlerKey, NumberFormat, Piece, Post, Stmt, ValueSource, Variable};
 use postc_ir::{Quantity, Section};
-
-use postc_ir::FormatId;
 use postc_runtime::{Finished, Output, RunOptions};
 
 /// A post that prints each section's name and, for moves, Z; split

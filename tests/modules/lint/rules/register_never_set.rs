@@ -1,6 +1,5 @@
-use std::path::Path;
-
 use postc_ir::SourceMap;
+use std::path::Path;
 
 fn lint(text: &str) -> Vec<postc_ir::Diagnostic> {
     let mut sources = SourceMap::new();

@@ -1,4 +1,5 @@
 use crate::modules::lint::lint_vectric;
+
 const SPLIT: &str = "TAPE_SPLITTING = 1000 100 \"%s_%d.tap\" 1 \"NO\"\n";
 
 #[test]

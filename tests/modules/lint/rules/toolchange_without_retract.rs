@@ -1,4 +1,5 @@
 use crate::modules::lint::lint_vectric;
+
 #[test]
 fn fires_on_m6_first() {
     let found = lint_vectric("begin TOOLCHANGE\n\"T[T] M6\"\n\"G0 Z[SAFEZ]\"\n");

@@ -1,7 +1,7 @@
 use postc_ir::Event;
+use postc_ir::event::{ArcDir, ArcMove, FeedMove, Intent, Move, Plane};
 use postc_reader_native::testing::json_moves::*;
 
-use postc_ir::event::{ArcDir, ArcMove, FeedMove, Intent, Move, Plane};
 fn serde(line: &str) -> Option<Event> {
     serde_json::from_str::<Event>(line).ok()
 }

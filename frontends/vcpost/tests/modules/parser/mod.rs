@@ -2,11 +2,10 @@
 
 mod recover;
 
-use postc_ir::FileId;
-
 use postc_front_vcpost::ast::{BinaryOp, ExprKind, StmtKind, UnaryOp};
 use postc_front_vcpost::lexer::lex;
 use postc_front_vcpost::parser::{LineItem, parse_lines};
+use postc_ir::FileId;
 
 fn lines(text: &str) -> (Vec<Vec<LineItem>>, usize) {
     let lexed = lex(text, FileId(0));

@@ -1,10 +1,9 @@
 use postc_front_vcpost::parser::LineItem;
 use postc_front_vcpost::testing::parser_recover::*;
+use postc_front_vcpost::token::Op;
 use postc_front_vcpost::token::{Kw, Token};
 use postc_ir::FileId;
 use postc_ir::Span;
-
-use postc_front_vcpost::token::Op;
 
 #[test]
 fn block_lines_keep_their_shape() {
