@@ -79,8 +79,9 @@ pub(crate) fn source_name(post: &Post) -> &str {
     s.rsplit(['/', '\\']).next().unwrap_or(s)
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/backends/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod cimco_body {

@@ -396,8 +396,9 @@ pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
     diagnostics
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/driver/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod read_ahead {

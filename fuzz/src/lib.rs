@@ -672,8 +672,9 @@ pub fn fuzz(settings: &Settings, seeds: &[Seed], count: u64, rng_seed: u64, mut 
     tally
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/fuzz/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod root {

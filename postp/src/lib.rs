@@ -247,8 +247,9 @@ pub fn post_compiled(
     }
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/postp/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod font {

@@ -426,8 +426,9 @@ pub fn verify_observed(
     interp::run(program, file, &mut expect::Records(toolpath), settings, observer)
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/verify/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod grammar {

@@ -231,8 +231,9 @@ pub fn write_event(event: &Event, syntax: Syntax, out: &mut String) {
     out.push('\n');
 }
 
-/// What the tests of this crate's modules (`tests/modules/`) reach that is
-/// not its interface: nothing else uses these.
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/readers/native/`) reach that is not its interface: nothing
+/// else uses these.
 #[doc(hidden)]
 pub mod testing {
     pub mod json_moves {
