@@ -84,17 +84,12 @@ fn sources(folder: &str) -> Vec<(String, String)> {
     out
 }
 
-/// The code of a source file before its `#[cfg(test)]` module.
-fn non_test(text: &str) -> &str {
-    text.find("#[cfg(test)]").map_or(text, |i| &text[..i])
-}
-
-/// Lines of `folder`'s sources (outside unit tests) that contain any of
+/// Lines of `folder`'s sources that contain any of
 /// `needles`, as `file: line`.
 fn uses(folder: &str, needles: &[&str]) -> Vec<String> {
     let mut found = Vec::new();
     for (path, text) in sources(folder) {
-        for line in non_test(&text).lines() {
+        for line in text.lines() {
             let code = line.trim_start();
             if code.starts_with("//") {
                 continue;
@@ -431,6 +426,54 @@ fn comments_cite_no_issue_seed_number_or_numbered_decision() {
         }
     }
     assert!(found.is_empty(), "{}", found.join("\n"));
+}
+
+/// The sections of a `Cargo.toml` as (header, lines), in order: the
+/// header as written (`[lib]`, `[[test]]`), the lines up to the next one
+/// with comments and blank lines left out.
+fn manifest_sections(krate: &str) -> Vec<(String, Vec<String>)> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(krate).join("Cargo.toml");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    let mut sections: Vec<(String, Vec<String>)> = vec![(String::new(), Vec::new())];
+    for line in text.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')) {
+        if line.starts_with('[') {
+            sections.push((line.to_string(), Vec::new()));
+        } else {
+            sections.last_mut().unwrap().1.push(line.replace(' ', ""));
+        }
+    }
+    sections
+}
+
+/// No crate links a unit-test binary: each crate's `[lib]` (and each
+/// `[[bin]]`) says `test = false`, and no source under a `src/` holds a
+/// `#[cfg(test)]` module. The tests of a module of `src/` are in its crate's
+/// `tests/modules/` when the crate has a test binary, else in the root's
+/// `tests/modules/CRATE/` (the command line's in `tests/modules/cli/`). So
+/// the test executables of the workspace are the root's `suite` and each
+/// crate's one `tests` binary (`each_crate_links_one_integration_test_binary`).
+#[test]
+fn no_crate_links_a_unit_test_binary() {
+    let mut binaries = Vec::new();
+    for krate in std::iter::once(".".to_string()).chain(crate_folders()) {
+        let sections = manifest_sections(&krate);
+        let targets: Vec<_> = sections.iter().filter(|(h, _)| h == "[lib]" || h == "[[bin]]").collect();
+        assert!(targets.iter().any(|(h, _)| h == "[lib]"), "{krate}/Cargo.toml has no [lib] saying test = false");
+        for (header, lines) in targets {
+            assert!(lines.iter().any(|l| l == "test=false"), "{krate}/Cargo.toml: {header} links a unit-test binary");
+        }
+        for (header, lines) in &sections {
+            if header == "[[test]]" {
+                let name = lines.iter().find_map(|l| l.strip_prefix("name=")).unwrap_or("?");
+                binaries.push(format!("{krate}: {name}"));
+            }
+        }
+        let src = if krate == "." { "src".to_string() } else { format!("{krate}/src") };
+        for (path, text) in sources(&src) {
+            assert!(!text.contains("#[cfg(test)]"), "{path} has unit tests: move them to tests/modules/");
+        }
+    }
+    assert!(binaries.len() <= 7, "{} test binaries: {binaries:?}", binaries.len());
 }
 
 /// Each crate's integration tests build as one binary (`autotests = false`

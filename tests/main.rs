@@ -6,6 +6,7 @@
 
 mod cli_manual;
 mod many_errors;
+mod modules;
 mod support;
 
 mod apt_corpus;

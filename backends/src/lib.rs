@@ -79,3 +79,13 @@ pub(crate) fn source_name(post: &Post) -> &str {
     let s = post.info.source.as_str();
     s.rsplit(['/', '\\']).next().unwrap_or(s)
 }
+
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/backends/`) reach that is not its interface: nothing
+/// else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod cimco_body {
+        pub use crate::cimco::body::{at, function};
+    }
+}

@@ -400,3 +400,16 @@ pub fn check_toolpath(path: &Path, sources: &mut SourceMap) -> Vec<Diagnostic> {
     while source.next_event(&mut diagnostics).is_some() {}
     diagnostics
 }
+
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/driver/`) reach that is not its interface: nothing
+/// else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod read_ahead {
+        pub use crate::read_ahead::BATCH;
+    }
+    pub mod ron_locate {
+        pub use crate::ron_locate::item;
+    }
+}

@@ -486,7 +486,8 @@ fn execute(settings: &Settings, dir: &Path, args: &[String], input: &[u8]) -> st
 }
 
 /// Every `error`/`warning` header of human output has a code.
-fn uncoded(stderr: &[u8]) -> Option<String> {
+#[doc(hidden)]
+pub fn uncoded(stderr: &[u8]) -> Option<String> {
     let text = String::from_utf8_lossy(stderr);
     text.lines()
         .find(|l| {
@@ -499,7 +500,8 @@ fn uncoded(stderr: &[u8]) -> Option<String> {
 
 /// Every item of `check --format json` has a code, and a line and column
 /// when it names a file.
-fn json_problem(stdout: &[u8]) -> Option<Problem> {
+#[doc(hidden)]
+pub fn json_problem(stdout: &[u8]) -> Option<Problem> {
     let Ok(serde_json::Value::Array(items)) = serde_json::from_slice::<serde_json::Value>(stdout) else {
         return (!stdout.is_empty()).then(|| Problem::NoCode("check --format json printed no JSON array".into()));
     };
@@ -670,36 +672,12 @@ pub fn fuzz(settings: &Settings, seeds: &[Seed], count: u64, rng_seed: u64, mut 
     tally
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn mutants_are_reproducible_and_differ_from_their_seed() {
-        let seed = b"VAR X = [X|C|X|1.3]\nbegin HEADER\n\"G0 [X]\"\n";
-        let a = mutate(&mut fastrand::Rng::with_seed(7), seed, &[]);
-        let b = mutate(&mut fastrand::Rng::with_seed(7), seed, &[]);
-        assert_eq!(a, b);
-        let differ = (0..50).filter(|s| mutate(&mut fastrand::Rng::with_seed(*s), seed, &[]) != seed).count();
-        assert!(differ > 40, "{differ} of 50 mutants differ");
-    }
-
-    #[test]
-    fn human_output_without_a_code_is_found() {
-        assert_eq!(uncoded(b"error[PP001]: x\nwarning[RT010]: y\n"), None);
-        assert!(uncoded(b"error: something\n").is_some());
-    }
-
-    #[test]
-    fn json_items_need_a_code_and_a_position() {
-        assert_eq!(json_problem(br#"[{"file":"a.pp","code":"PP001","line":1,"column":2}]"#), None);
-        assert!(matches!(
-            json_problem(br#"[{"file":"a.pp","code":"","line":1,"column":2}]"#),
-            Some(Problem::NoCode(_))
-        ));
-        assert!(matches!(
-            json_problem(br#"[{"file":"a.pp","code":"PP001","line":null,"column":null}]"#),
-            Some(Problem::NoPosition(_))
-        ));
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/fuzz/`) reach that is not its interface: nothing
+/// else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod root {
+        pub use crate::{json_problem, uncoded};
     }
 }

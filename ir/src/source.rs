@@ -157,21 +157,3 @@ impl SourceLoader for MemoryLoader {
         if names.is_empty() { Err(not_found(dir)) } else { Ok(names) }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn memory_files() {
-        let mut m = MemoryLoader::new();
-        m.insert("posts/a.pp", b"abcdef".to_vec());
-        assert_eq!(m.read(Path::new("posts/a.pp")).unwrap(), b"abcdef");
-        assert_eq!(m.read_at(Path::new("posts/a.pp"), 2, 3).unwrap(), b"cde");
-        assert_eq!(m.read_at(Path::new("posts/a.pp"), 5, 9).unwrap(), b"f");
-        assert!(m.exists(Path::new("posts")));
-        assert_eq!(m.read_dir(Path::new("posts")).unwrap(), [OsString::from("a.pp")]);
-        assert_eq!(m.read(Path::new("b.pp")).unwrap_err().kind(), io::ErrorKind::NotFound);
-        assert!(!NoFiles.exists(Path::new("posts/a.pp")));
-    }
-}

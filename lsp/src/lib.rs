@@ -241,7 +241,8 @@ fn overlaps(a: Range, b: Range) -> bool {
 }
 
 /// The dialect a document's extension names.
-fn dialect_of(uri: &str) -> Option<Dialect> {
+#[doc(hidden)]
+pub fn dialect_of(uri: &str) -> Option<Dialect> {
     let path = uri.split(['?', '#']).next().unwrap_or(uri);
     let ext = path.rsplit_once('.').map(|(_, e)| e)?;
     match ext.to_ascii_lowercase().as_str() {
@@ -367,23 +368,9 @@ pub fn convert(path: &Path, text: &str, sources: &SourceMap, diagnostics: &[post
     out
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn file_uris_become_paths() {
-        assert_eq!(path_of("file:///home/a/Pi%C3%A8ce%201.pp"), PathBuf::from("/home/a/Pièce 1.pp"));
-        assert_eq!(path_of("file:///C:/posts/x.pp"), PathBuf::from("C:/posts/x.pp"));
-        assert_eq!(path_of("untitled:Untitled-1"), PathBuf::from("untitled:Untitled-1"));
-        assert_eq!(path_of("file:///a%2"), PathBuf::from("/a%2"));
-    }
-
-    #[test]
-    fn dialects_from_extensions() {
-        assert_eq!(dialect_of("file:///a/b.PP"), Some(Dialect::Vectric));
-        assert_eq!(dialect_of("file:///a/b.VcPost"), Some(Dialect::VcPost));
-        assert_eq!(dialect_of("file:///a/b.js"), Some(Dialect::Cimco));
-        assert_eq!(dialect_of("file:///a.d/b"), None);
-    }
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub use crate::dialect_of;
 }

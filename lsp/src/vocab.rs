@@ -358,21 +358,3 @@ pub fn lookup(table: &[(&'static str, &'static str)], name: &str) -> Option<(&'s
 pub fn section_names() -> impl Iterator<Item = &'static str> {
     Section::ALL.iter().map(|s| s.name())
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_section_and_label_has_a_description() {
-        for name in section_names() {
-            assert!(lookup(VECTRIC_SECTIONS, name).is_some(), "section {name} undescribed");
-        }
-        for (var, label) in postc_front_vectric::names::VAR_NAMES {
-            assert!(lookup(VECTRIC_LABELS, label).is_some(), "label {label} of {var} undescribed");
-        }
-        for (name, _) in VECTRIC_GLOBALS {
-            assert!(postc_front_vectric::names::GlobalName::from_name(name).is_some(), "{name}");
-        }
-    }
-}

@@ -1,3 +1,4 @@
 //! The crate's integration tests: one test binary, each file of `tests/` a module of it.
 
 mod corpus;
+mod modules;

@@ -246,3 +246,13 @@ pub fn post_compiled(
         Err(d) => Err(prepend(d)),
     }
 }
+
+/// What the tests of this crate's modules (the root suite's
+/// `tests/modules/postp/`) reach that is not its interface: nothing
+/// else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod font {
+        pub use crate::font::GLYPHS;
+    }
+}

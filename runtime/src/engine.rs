@@ -60,7 +60,8 @@ impl Default for VarState {
 
 /// A word a variable that always prints made of a number ([`VarState::kept`]).
 #[derive(Clone, Debug)]
-pub(crate) struct KeptWord {
+#[doc(hidden)]
+pub struct KeptWord {
     /// The number's bits.
     pub bits: u64,
     /// The number as rounded, the variable's modal key after printing it.
@@ -111,7 +112,8 @@ pub struct Engine<'p> {
     prepared: Vec<std::rc::Rc<Vec<Prepared<'p>>>>,
     /// Warnings collected during the run (each said once).
     pub warnings: Vec<Diagnostic>,
-    pub(crate) steps: u64,
+    #[doc(hidden)]
+    pub steps: u64,
     pub(crate) depth: usize,
     /// `this` of each method call in progress (`Expr::This` reads the last).
     pub(crate) this_stack: Vec<Value>,
@@ -671,14 +673,8 @@ pub(crate) fn substitute_into(text: &[u8], subs: &[Substitution], out: &mut Vec<
 /// Prints a number through a variable, unless it is on-change and prints
 /// what it printed last.
 #[inline(always)]
-pub(crate) fn put_number(
-    modal: bool,
-    w: &NumberWriter,
-    state: &mut VarState,
-    prefix: &[u8],
-    n: f64,
-    out: &mut Vec<u8>,
-) {
+#[doc(hidden)]
+pub fn put_number(modal: bool, w: &NumberWriter, state: &mut VarState, prefix: &[u8], n: f64, out: &mut Vec<u8>) {
     put::<false>(modal, w, state, prefix, n, out);
 }
 
@@ -791,7 +787,8 @@ fn put<const ABSENT_PRINTS_NOTHING: bool>(
 /// the fast range, a padded format, text printed last): the caller then
 /// formats into a buffer.
 #[inline(always)]
-pub(crate) fn number_word(
+#[doc(hidden)]
+pub fn number_word(
     modal: bool,
     w: &NumberWriter,
     state: &mut VarState,
@@ -815,7 +812,8 @@ pub(crate) fn number_word(
 
 /// Prints text through a variable, unless it is on-change and prints what
 /// it printed last.
-pub(crate) fn put_text(
+#[doc(hidden)]
+pub fn put_text(
     modal: bool,
     state: &mut VarState,
     prefix: &[u8],
@@ -843,7 +841,8 @@ fn keep_if_changed(modal: bool, state: &mut VarState, start: usize, out: &mut Ve
 }
 
 #[inline]
-pub(crate) fn is_modal(var: &Variable) -> bool {
+#[doc(hidden)]
+pub fn is_modal(var: &Variable) -> bool {
     var.modality == Modality::OnChange
 }
 

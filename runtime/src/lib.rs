@@ -255,3 +255,48 @@ impl Dispatcher for apt_words::AptDispatch {
         apt_words::AptDispatch::finish(self, engine)
     }
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod engine {
+        pub use crate::engine::{KeptWord, is_modal, number_word, put_number, put_text};
+    }
+    pub mod interp {
+        pub use crate::interp::{Flow, move_back, texts_empty};
+    }
+    pub mod interp_ops {
+        pub use crate::interp::ops::{binary, builtin, compare, format_picture};
+    }
+    pub mod js {
+        pub use crate::js::parse_short_decimal;
+    }
+    pub mod number {
+        pub use crate::number::push_integer;
+    }
+    pub mod output {
+        pub use crate::output::c_format;
+    }
+    pub mod prepare_emit_marks {
+        pub use crate::prepare::emit::marks::drop_truncates;
+    }
+    pub mod prepare_fresh {
+        pub use crate::prepare::fresh::start_nulls;
+    }
+    pub mod prepare_fuse {
+        pub use crate::prepare::fuse::{expressions, runs, stmts};
+    }
+    pub mod prepare_locals {
+        pub use crate::prepare::locals::tidy;
+    }
+    pub mod prepare_splice {
+        pub use crate::prepare::splice::small_functions;
+    }
+    pub mod prepare_unshift {
+        pub use crate::prepare::unshift::{block_numbers, count_is_positive, count_is_zero};
+    }
+    pub mod value {
+        pub use crate::value::Repr;
+    }
+}

@@ -92,7 +92,8 @@ pub struct NumberWriter {
     multiplier: f64,
     prefix: Vec<u8>,
     /// Nothing to pad: the fast right-to-left writer applies.
-    plain: bool,
+    #[doc(hidden)]
+    pub plain: bool,
     /// Round the binary double, not its shortest decimal form.
     binary: bool,
     /// A negative value that rounds to zero keeps its minus sign.
@@ -309,7 +310,8 @@ impl NumberWriter {
         i
     }
 
-    fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
+    #[doc(hidden)]
+    pub fn write_slow(&self, value: f64, out: &mut Vec<u8>) {
         if !(value * self.multiplier).is_finite() {
             report_non_finite(value);
             return;
@@ -460,7 +462,8 @@ fn append_word(out: &mut Vec<u8>, buf: &[u8; WORD_END + WINDOW], start: usize) {
 /// Appends an integer's decimal digits (a block number, `N1234`), written
 /// two at a time and appended as one fixed-size copy.
 #[inline]
-pub(crate) fn push_integer(out: &mut Vec<u8>, n: i64) {
+#[doc(hidden)]
+pub fn push_integer(out: &mut Vec<u8>, n: i64) {
     let mut buf = [0u8; WORD_END + WINDOW];
     let mut i = digits_before(n.unsigned_abs(), &mut buf, WORD_END);
     if n < 0 {
@@ -641,6 +644,3 @@ fn at_or_above_binary_tie(magnitude: f64, k: u64, pow10: u64) -> bool {
         s < 128 && odd.leading_zeros() > s && lhs >= odd << s
     }
 }
-
-#[cfg(test)]
-mod tests;

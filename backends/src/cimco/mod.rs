@@ -14,7 +14,7 @@
 //!
 //! Everything else is refused with a diagnostic per reason (`docs/convert.md`).
 
-mod body;
+pub(crate) mod body;
 mod check;
 mod code;
 mod sections;

@@ -86,3 +86,12 @@ fn parse_counted(text: &str, file: FileId) -> (Program, Vec<Diagnostic>, u64) {
     diagnostics.dedup_by(|a, b| a.code == b.code && a.primary_span() == b.primary_span() && a.message == b.message);
     (program, diagnostics, parsed.reads)
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod strings {
+        pub use crate::strings::{decode, quote};
+    }
+}

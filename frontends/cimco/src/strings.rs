@@ -6,7 +6,8 @@ use std::ops::Range;
 /// A problem with one escape sequence, as a byte range of the literal's
 /// body and a message.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct EscapeProblem {
+#[doc(hidden)]
+pub struct EscapeProblem {
     pub range: Range<usize>,
     pub message: &'static str,
 }
@@ -14,7 +15,8 @@ pub(crate) struct EscapeProblem {
 /// Decodes the body of a string literal (the text between the quotes).
 /// Bad escapes decode to the character after the backslash and are
 /// reported.
-pub(crate) fn decode(body: &str) -> (String, Vec<EscapeProblem>) {
+#[doc(hidden)]
+pub fn decode(body: &str) -> (String, Vec<EscapeProblem>) {
     let mut out = String::with_capacity(body.len());
     let mut problems = Vec::new();
     let mut chars = body.char_indices().peekable();
@@ -124,7 +126,8 @@ fn flush_surrogate(out: &mut String, pending_high: &mut Option<u32>) {
 }
 
 /// Writes a string as a double-quoted JavaScript literal.
-pub(crate) fn quote(value: &str) -> String {
+#[doc(hidden)]
+pub fn quote(value: &str) -> String {
     let mut out = String::with_capacity(value.len() + 2);
     out.push('"');
     for c in value.chars() {
@@ -146,33 +149,4 @@ pub(crate) fn quote(value: &str) -> String {
     }
     out.push('"');
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn decodes_escapes() {
-        assert_eq!(decode(r"a\nb\t\x41\u00B0\'\\").0, "a\nb\tA\u{b0}'\\");
-        assert_eq!(decode(r"\uD83D\uDE00").0, "\u{1F600}");
-        assert_eq!(decode("a\\\nb").0, "ab");
-        assert_eq!(decode(r"\0").0, "\0");
-    }
-
-    #[test]
-    fn reports_bad_escapes() {
-        assert_eq!(decode(r"\x4").1.len(), 1);
-        assert_eq!(decode(r"\u12").1.len(), 1);
-        assert_eq!(decode(r"\12").1.len(), 1);
-        assert_eq!(decode(r"\u{41}").1.len(), 1);
-    }
-
-    #[test]
-    fn quote_round_trips() {
-        for s in ["plain", "a\"b", "back\\slash", "line\nbreak", "\u{1}", "G\u{b0}"] {
-            let q = quote(s);
-            assert_eq!(decode(&q[1..q.len() - 1]).0, s);
-        }
-    }
 }

@@ -2,6 +2,7 @@
 
 mod grammar;
 mod lowering;
+mod modules;
 mod robustness;
 mod roundtrip;
 mod snapshots;

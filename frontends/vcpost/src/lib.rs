@@ -128,3 +128,18 @@ fn decode(bytes: &[u8]) -> (String, bool) {
 fn sort_by_position(diagnostics: &mut [Diagnostic]) {
     diagnostics.sort_by_key(|d| d.primary_span().map_or(usize::MAX, |s| s.start));
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod composites_check {
+        pub use crate::composites::check::add_cut;
+    }
+    pub mod lower_template {
+        pub use crate::lower::template::{TemplatePart, split, unclosed};
+    }
+    pub mod parser_recover {
+        pub use crate::parser::recover::line;
+    }
+}

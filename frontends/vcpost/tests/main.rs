@@ -2,6 +2,7 @@
 
 mod composites;
 mod lowering;
+mod modules;
 mod robustness;
 mod snapshots;
 mod table;

@@ -61,7 +61,8 @@ pub fn default_format(quantity: Quantity) -> DefaultFormat {
 }
 
 /// The default of a quantity as written: modality, prefix, format text.
-fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
+#[doc(hidden)]
+pub fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
     use Quantity as Q;
     match quantity {
         Q::BlockNumber | Q::SpindleSpeed | Q::Feed | Q::PlungeFeed => (Modality::Always, "", "1.0"),
@@ -108,31 +109,5 @@ fn default_text(quantity: Quantity) -> (Modality, &'static str, &'static str) {
         | Q::YOrigin => (Modality::Always, "", "1.3"),
         Q::DwellTime => (Modality::Always, "", "1.2"),
         _ => (Modality::Always, "", "1.0"),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn seed_defaults() {
-        let x = default_format(Quantity::X);
-        assert_eq!((x.modality, x.prefix, x.format.decimals), (Modality::Always, "", 3));
-        let length = default_format(Quantity::XLength);
-        assert_eq!((length.modality, length.prefix, length.format.decimals), (Modality::Always, "", 3));
-        let fc = default_format(Quantity::CutFeed);
-        assert_eq!((fc.modality, fc.prefix, fc.format.decimals), (Modality::OnChange, "", 0));
-        let n = default_format(Quantity::BlockNumber);
-        assert_eq!((n.prefix, n.format.decimals), ("", 0));
-    }
-
-    #[test]
-    fn every_format_parses() {
-        for &q in Quantity::ALL {
-            let (_, _, text) = default_text(q);
-            assert!(parse_format(text).is_ok(), "{q:?}: {text}");
-        }
-        assert_eq!(default_format(Quantity::DwellTime).format.decimals, 2);
     }
 }

@@ -53,3 +53,10 @@ pub fn parse(text: &str, file: FileId) -> (ast::PostFile, Vec<Diagnostic>) {
 pub fn looks_like_vectric(bytes: &[u8]) -> bool {
     detect::looks_like_vectric(bytes)
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub use crate::defaults::default_text;
+}

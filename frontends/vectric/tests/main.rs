@@ -2,5 +2,6 @@
 
 mod corpus;
 mod loader;
+mod modules;
 mod mutations;
 mod snapshots;

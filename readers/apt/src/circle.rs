@@ -51,7 +51,8 @@ use postc_ir::event::{ArcDir, ArcMove, Intent, Plane};
 
 use crate::words::{Arg, Problem, Rec};
 
-pub(crate) type V3 = [f64; 3];
+#[doc(hidden)]
+pub type V3 = [f64; 3];
 
 fn sub(a: V3, b: V3) -> V3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
@@ -68,17 +69,20 @@ fn scale(a: V3, s: f64) -> V3 {
 fn add(a: V3, b: V3) -> V3 {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
-fn norm(a: V3) -> f64 {
+#[doc(hidden)]
+pub fn norm(a: V3) -> f64 {
     dot(a, a).sqrt()
 }
-pub(crate) fn unit(a: V3) -> Option<V3> {
+#[doc(hidden)]
+pub fn unit(a: V3) -> Option<V3> {
     let n = norm(a);
     (n > 1e-12 && n.is_finite()).then(|| scale(a, 1.0 / n))
 }
 
 /// Which writer's form a circle was given in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Convention {
+#[doc(hidden)]
+pub enum Convention {
     SolidWorks,
     Apt,
     Clt,
@@ -88,7 +92,8 @@ pub(crate) enum Convention {
 
 /// A circle the next move follows.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct CircleSpec {
+#[doc(hidden)]
+pub struct CircleSpec {
     pub centre: V3,
     /// Unit axis.
     pub axis: V3,
@@ -152,7 +157,8 @@ pub(crate) fn parse_circle(rec: &Rec<'_>) -> Result<(CircleSpec, Option<usize>),
 
 /// What a CIRCLE and its end point become.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum ArcOutcome {
+#[doc(hidden)]
+pub enum ArcOutcome {
     Arc {
         arc: ArcMove,
         /// Start and end distance from the centre, when they disagree.
@@ -164,13 +170,8 @@ pub(crate) enum ArcOutcome {
 
 /// The arc from `start` to `end` around `spec`. `tolerance` is the chord
 /// error allowed when a tilted arc is cut into straight moves.
-pub(crate) fn build_arc(
-    spec: &CircleSpec,
-    start: Option<V3>,
-    end: V3,
-    feed: Option<f64>,
-    tolerance: f64,
-) -> ArcOutcome {
+#[doc(hidden)]
+pub fn build_arc(spec: &CircleSpec, start: Option<V3>, end: V3, feed: Option<f64>, tolerance: f64) -> ArcOutcome {
     let a = spec.axis;
     let (dominant, component) = (0..3)
         .map(|i| (i, a[i]))
@@ -220,7 +221,8 @@ fn radial(spec: &CircleSpec, p: V3) -> f64 {
 }
 
 /// Rotates `v` about unit axis `k` by `angle` (Rodrigues).
-fn rotate(v: V3, k: V3, angle: f64) -> V3 {
+#[doc(hidden)]
+pub fn rotate(v: V3, k: V3, angle: f64) -> V3 {
     let (s, c) = angle.sin_cos();
     add(add(scale(v, c), scale(cross(k, v), s)), scale(k, dot(k, v) * (1.0 - c)))
 }
@@ -316,41 +318,4 @@ pub(crate) fn parse_drive_circle(
     };
     let axis = turned.or(given_axis).unwrap_or([0.0, 0.0, 1.0]);
     Ok((CircleSpec { centre, axis, ccw: true, convention: Convention::Catia }, end))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn spec(axis: V3, ccw: bool) -> CircleSpec {
-        CircleSpec { centre: [0.0, 0.0, 0.0], axis, ccw, convention: Convention::Apt }
-    }
-
-    #[test]
-    fn direction_follows_the_axis() {
-        let arc = |axis, ccw| match build_arc(&spec(axis, ccw), Some([1.0, 0.0, 0.0]), [0.0, 1.0, 0.0], None, 0.01) {
-            ArcOutcome::Arc { arc, .. } => (arc.dir, arc.plane),
-            other => panic!("{other:?}"),
-        };
-        assert_eq!(arc([0.0, 0.0, 1.0], true), (ArcDir::Ccw, Plane::Xy));
-        assert_eq!(arc([0.0, 0.0, -1.0], true), (ArcDir::Cw, Plane::Xy));
-        assert_eq!(arc([0.0, 0.0, -1.0], false), (ArcDir::Ccw, Plane::Xy));
-        assert_eq!(arc([-1.0, 0.0, 0.0], true), (ArcDir::Cw, Plane::Yz));
-        assert_eq!(arc([0.0, 1.0, 0.0], true), (ArcDir::Ccw, Plane::Zx));
-    }
-
-    #[test]
-    fn tilted_arcs_are_cut_into_points_on_the_circle() {
-        let axis = unit([0.0, 1.0, 1.0]).unwrap();
-        let start = [1.0, 0.0, 0.0];
-        let end = rotate(start, axis, std::f64::consts::FRAC_PI_2);
-        let ArcOutcome::Linear(points) = build_arc(&spec(axis, true), Some(start), end, None, 0.001) else {
-            panic!("not linearized")
-        };
-        assert!(points.len() > 5);
-        for p in &points {
-            assert!((norm(*p) - 1.0).abs() < 1e-9);
-        }
-        assert_eq!(*points.last().unwrap(), end);
-    }
 }

@@ -19,7 +19,8 @@ use crate::lines::{LineInfo, Lines, MAX_LINE};
 
 /// What the lexer found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum RawKind {
+#[doc(hidden)]
+pub enum RawKind {
     /// A statement: major word(s), optional `/` and arguments.
     Statement,
     /// A text record; the text follows the word at [`Lexer::text_at`].
@@ -34,7 +35,8 @@ pub(crate) enum RawKind {
 
 /// The words whose records are free text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum TextWord {
+#[doc(hidden)]
+pub enum TextWord {
     Pprint,
     Partno,
     Insert,
@@ -67,7 +69,8 @@ impl TextWord {
 
 /// Something the lexer noticed about the record it just returned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum LexNote {
+#[doc(hidden)]
+pub enum LexNote {
     /// A line of numbers (file bytes `start..end`) was joined to the record
     /// although the line before it had no `$`.
     JoinedWithoutDollar { start: usize, end: usize },
@@ -84,7 +87,8 @@ enum LineClass {
 }
 
 /// Assembles records from physical lines.
-pub(crate) struct Lexer<R> {
+#[doc(hidden)]
+pub struct Lexer<R> {
     lines: Lines<R>,
     line: Vec<u8>,
     line_info: LineInfo,
@@ -225,6 +229,8 @@ impl<R: BufRead> Lexer<R> {
     }
 
     /// The next record, `None` at the end of the file.
+    // Reading can fail (`io::Result<Option<_>>`), which `Iterator::next` cannot say.
+    #[allow(clippy::should_implement_trait)]
     pub fn next(&mut self) -> io::Result<Option<RawKind>> {
         self.record.clear();
         self.record_start = 0;
@@ -346,37 +352,5 @@ impl<R: BufRead> Lexer<R> {
             }
             (a, b) = (na, nb);
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn lex(text: &str) -> Vec<(RawKind, String, (usize, usize))> {
-        let mut lexer = Lexer::new(Lines::new(text.as_bytes()));
-        let mut out = Vec::new();
-        while let Some(kind) = lexer.next().unwrap() {
-            out.push((kind, String::from_utf8_lossy(lexer.record()).into_owned(), lexer.span()));
-        }
-        out
-    }
-
-    #[test]
-    fn continuation_and_comments() {
-        let got = lex("CIRCLE / 1, 2, 3,  $\r\n0, 0, 1, 5\n$$-> CSYS / 1, 0,  $\n   0, 1\nRAPID \n");
-        assert_eq!(got[0].0, RawKind::Statement);
-        assert_eq!(got[0].1, "CIRCLE / 1, 2, 3,   0, 0, 1, 5");
-        assert_eq!(got[1].0, RawKind::Comment);
-        assert_eq!(got[1].1, "-> CSYS / 1, 0,   0, 1");
-        assert_eq!(got[2].1, "RAPID");
-    }
-
-    #[test]
-    fn bare_numbers_join_the_record_before() {
-        let got = lex("CUTTER/1,2,\n3\nGOTO/1,2\n3\n");
-        assert_eq!(got[0].1, "CUTTER/1,2,3");
-        assert_eq!(got[1].1, "GOTO/1,2,3");
-        assert_eq!(got.len(), 2);
     }
 }

@@ -132,3 +132,24 @@ pub fn looks_like_cl(head: &[u8]) -> bool {
         Content::Other => false,
     }
 }
+
+/// What the tests of this crate's modules (`tests/modules/`) reach that is
+/// not its interface: nothing else uses these.
+#[doc(hidden)]
+pub mod testing {
+    pub mod circle {
+        pub use crate::circle::{ArcOutcome, CircleSpec, Convention, V3, build_arc, norm, rotate, unit};
+    }
+    pub mod grammar {
+        pub use crate::grammar::{ItemKind, Shape, record};
+    }
+    pub mod lexer {
+        pub use crate::lexer::{Lexer, RawKind};
+    }
+    pub mod lines {
+        pub use crate::lines::{Lines, find_newline};
+    }
+    pub mod number {
+        pub use crate::number::parse_number;
+    }
+}

@@ -10,7 +10,8 @@ use std::io::{self, BufRead};
 pub(crate) const MAX_LINE: usize = 1 << 20;
 
 /// Position of the first `\n`.
-fn find_newline(hay: &[u8]) -> Option<usize> {
+#[doc(hidden)]
+pub fn find_newline(hay: &[u8]) -> Option<usize> {
     find_byte(hay, b'\n')
 }
 
@@ -36,7 +37,8 @@ pub(crate) fn find_byte(hay: &[u8], needle: u8) -> Option<usize> {
 
 /// Where a physical line sits in the file.
 #[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct LineInfo {
+#[doc(hidden)]
+pub struct LineInfo {
     /// Byte offset of the line's first byte.
     pub start: usize,
     /// The line was longer than [`MAX_LINE`]; the buffer holds its start only.
@@ -44,7 +46,8 @@ pub(crate) struct LineInfo {
 }
 
 /// Reads physical lines from a buffered reader.
-pub(crate) struct Lines<R> {
+#[doc(hidden)]
+pub struct Lines<R> {
     inner: R,
     offset: usize,
     eof: bool,
@@ -115,38 +118,5 @@ impl<R: BufRead> Lines<R> {
             buf.pop();
         }
         Ok(Some(LineInfo { start, too_long }))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn newlines_are_found_in_every_position() {
-        for len in 0..40 {
-            for at in 0..len {
-                let mut hay = vec![b'x'; len];
-                hay[at] = b'\n';
-                if at + 3 < len {
-                    hay[at + 3] = b'\n';
-                }
-                assert_eq!(find_newline(&hay), Some(at));
-            }
-            assert_eq!(find_newline(&vec![0x8a; len]), None);
-        }
-    }
-
-    #[test]
-    fn lines_strip_crlf_and_keep_offsets() {
-        let mut lines = Lines::new(&b"GOTO/1,2,3\r\nFINI\nX"[..]);
-        let mut buf = Vec::new();
-        let a = lines.read(&mut buf).unwrap().unwrap();
-        assert_eq!((a.start, &buf[..]), (0, &b"GOTO/1,2,3"[..]));
-        let b = lines.read(&mut buf).unwrap().unwrap();
-        assert_eq!((b.start, &buf[..]), (12, &b"FINI"[..]));
-        let c = lines.read(&mut buf).unwrap().unwrap();
-        assert_eq!((c.start, &buf[..]), (17, &b"X"[..]));
-        assert!(lines.read(&mut buf).unwrap().is_none());
     }
 }

@@ -4,4 +4,5 @@ mod common;
 mod corpus;
 mod dump;
 mod fixtures;
+mod modules;
 mod mutation;

@@ -30,14 +30,14 @@
 //! A handler of output lines only (every Vectric section) is kept as it
 //! is: the engine runs its lines on a faster path still.
 
-mod emit;
+pub(crate) mod emit;
 mod fold;
-mod fresh;
-mod fuse;
+pub(crate) mod fresh;
+pub(crate) mod fuse;
 mod inline;
-mod locals;
-mod splice;
-mod unshift;
+pub(crate) mod locals;
+pub(crate) mod splice;
+pub(crate) mod unshift;
 
 use postc_ir::Post;
 
@@ -178,22 +178,4 @@ fn one(body: Vec<Stmt>) -> Vec<Stmt> {
         return body;
     }
     vec![Stmt::If { branches: vec![(Expr::Bool(true), body)], otherwise: vec![] }]
-}
-
-/// What the passes' unit tests build code from.
-#[cfg(test)]
-mod testing {
-    use postc_ir::{LocalId, Place};
-
-    use crate::exec::{Expr, Stmt};
-
-    /// A read of local `i`.
-    pub fn local(i: u16) -> Expr {
-        Expr::Local(LocalId::new(i))
-    }
-
-    /// `local i = e`.
-    pub fn set(i: u16, e: Expr) -> Stmt {
-        Stmt::Assign(Place::Local(LocalId::new(i)), e)
-    }
 }

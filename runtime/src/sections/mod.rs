@@ -545,6 +545,3 @@ fn pick(eng: &Engine, first_section: Section, plain: Section, first: bool) -> Op
 fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
     (a[0] - b[0]).abs() <= 1e-9 && (a[1] - b[1]).abs() <= 1e-9
 }
-
-#[cfg(test)]
-mod tests;

@@ -22,7 +22,7 @@ mod expr;
 mod names;
 pub mod options;
 mod stmt;
-mod template;
+pub(crate) mod template;
 mod walk;
 
 use std::collections::{HashMap, HashSet};

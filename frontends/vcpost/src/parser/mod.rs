@@ -9,7 +9,7 @@
 //! line at once and so can point a missing `End If` at its `If`.
 
 mod expr;
-mod recover;
+pub(crate) mod recover;
 mod stmt;
 
 use chumsky::error::RichPattern;
@@ -239,6 +239,3 @@ fn syntax_help(found: Option<&Token>) -> Option<&'static str> {
         _ => None,
     }
 }
-
-#[cfg(test)]
-mod tests;

@@ -13,7 +13,8 @@ use crate::ast::{Expr, ExprKind, LoopKind, LoopTest, Name, ProcKind, Stmt, StmtK
 use crate::token::{Kw, Token};
 
 /// The items a line that could not be parsed stands for.
-pub(super) fn line(tokens: &[Token], span: Span) -> Vec<LineItem> {
+#[doc(hidden)]
+pub fn line(tokens: &[Token], span: Span) -> Vec<LineItem> {
     let error = || Expr { kind: ExprKind::Error, span };
     let name_after = |i: usize| Name {
         text: match tokens.get(i) {
@@ -68,26 +69,4 @@ pub(super) fn line(tokens: &[Token], span: Span) -> Vec<LineItem> {
         _ => LineItem::Stmt(Stmt { kind: StmtKind::Error, span }),
     };
     vec![item]
-}
-
-#[cfg(test)]
-mod tests {
-    use postc_ir::FileId;
-
-    use super::*;
-    use crate::token::Op;
-
-    #[test]
-    fn block_lines_keep_their_shape() {
-        let span = Span::new(FileId(0), 0, 1);
-        let kinds = |tokens: &[Token]| line(tokens, span);
-        assert!(matches!(kinds(&[Token::Kw(Kw::If), Token::Error, Token::Kw(Kw::Then)])[0], LineItem::IfStart { .. }));
-        assert!(matches!(kinds(&[Token::Kw(Kw::If), Token::Error])[0], LineItem::Stmt(_)));
-        assert!(matches!(
-            &kinds(&[Token::Kw(Kw::Sub), Token::Ident("A".into()), Token::Error])[0],
-            LineItem::ProcStart { name, .. } if name.text == "A"
-        ));
-        assert!(matches!(kinds(&[Token::Kw(Kw::Next), Token::Number(1.0)])[0], LineItem::Next { .. }));
-        assert!(matches!(kinds(&[Token::Op(Op::Eq)])[0], LineItem::Stmt(_)));
-    }
 }

@@ -20,7 +20,7 @@
 //! A function whose shape is outside these rules keeps the allocating
 //! `Write`; the result is the same either way.
 
-mod marks;
+pub(crate) mod marks;
 mod shape;
 
 use crate::exec::{Body, Expr, Function, Piece, Stmt};

@@ -1,0 +1,6 @@
+//! The tests of this crate's modules, one file per module of `src/`: `tests/modules/PATH` holds the tests of `src/PATH` (`mod.rs` those of `lib.rs` or of a folder's `mod.rs`).
+
+mod docs;
+mod lexer;
+mod sniff;
+mod strings;

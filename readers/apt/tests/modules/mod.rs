@@ -1,0 +1,8 @@
+//! The tests of this crate's modules, one file per module of `src/`: `tests/modules/PATH` holds the tests of `src/PATH` (`mod.rs` those of `lib.rs` or of a folder's `mod.rs`).
+
+mod circle;
+mod detect;
+mod grammar;
+mod lexer;
+mod lines;
+mod number;

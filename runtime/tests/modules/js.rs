@@ -1,0 +1,69 @@
+use postc_runtime::js::*;
+use proptest::prelude::*;
+
+proptest! {
+    #[test]
+    fn short_decimals_read_as_the_full_parse_reads_them(n in 0u64..1_000_000_000_000_000, point in 0usize..17) {
+        let digits = n.to_string();
+        let text = if point < digits.len() { format!("{}.{}", &digits[..point], &digits[point..]) } else { format!("{digits}.") };
+        let full: f64 = text.parse().unwrap();
+        prop_assert_eq!(parse_float(&text).to_bits(), full.to_bits(), "{}", text);
+        prop_assert_eq!(parse_float(&format!("-{text}x")).to_bits(), (-full).to_bits());
+        for signed in [text.clone(), format!("-{text}"), format!("+{text}")] {
+            let short = parse_short_decimal(signed.as_bytes());
+            prop_assert_eq!(short.map(f64::to_bits), Some(parse_float(&signed).to_bits()), "{}", signed);
+        }
+    }
+}
+
+#[test]
+fn numbers_print_as_javascript_prints_them() {
+    let cases = [
+        (1.0, "1"),
+        (-2.5, "-2.5"),
+        (0.1 + 0.2, "0.30000000000000004"),
+        (1e21, "1e+21"),
+        (123456789012345680000.0, "123456789012345680000"),
+        (1e-7, "1e-7"),
+        (0.000001, "0.000001"),
+        (1.5e-10, "1.5e-10"),
+        (f64::NAN, "NaN"),
+        (-0.0, "0"),
+    ];
+    for (n, text) in cases {
+        assert_eq!(number_to_string(n), text, "{n}");
+    }
+}
+
+#[test]
+fn text_reads_as_javascript_reads_it() {
+    assert_eq!(text_to_number(" 12.5 "), 12.5);
+    assert_eq!(text_to_number(""), 0.0);
+    assert!(text_to_number("12mm").is_nan());
+    assert_eq!(text_to_number("0x1F"), 31.0);
+    assert_eq!(parse_float("12.5mm"), 12.5);
+    assert!(parse_float("mm").is_nan());
+    assert_eq!(parse_int("  42px", 0.0), 42.0);
+    assert_eq!(parse_int("0x10", 0.0), 16.0);
+    assert_eq!(parse_int("-7.9", 10.0), -7.0);
+}
+
+#[test]
+fn to_fixed_rounds_the_binary_value() {
+    assert_eq!(to_fixed(2.675, 2.0), "2.67");
+    assert_eq!(to_fixed(2.5, 0.0), "3");
+    assert_eq!(to_fixed(-2.5, 0.0), "-3");
+    assert_eq!(to_fixed(1.0, 3.0), "1.000");
+    assert_eq!(to_fixed(-0.0001, 2.0), "0.00");
+    assert_eq!(to_fixed(0.125, 2.0), "0.13");
+}
+
+#[test]
+fn rounding_and_integers() {
+    assert_eq!(math_round(2.5), 3.0);
+    assert_eq!(math_round(-2.5), -2.0);
+    assert_eq!(math_round(0.49999999999999994), 0.0);
+    assert_eq!(to_int32(4294967297.0), 1);
+    assert_eq!(to_int32(-1.0), -1);
+    assert_eq!(to_uint32(-1.0), 4294967295);
+}

@@ -1,0 +1,2 @@
+mod read_ahead;
+mod ron_locate;

@@ -1,0 +1,4 @@
+mod limits;
+mod source;
+mod units;
+mod validate;

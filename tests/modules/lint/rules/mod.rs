@@ -1,0 +1,14 @@
+mod arc_words_coarse;
+mod block_numbers_wrap;
+mod comment_parentheses;
+mod feed_never_printed;
+mod global_never_assigned;
+mod post_name;
+mod product_support;
+mod register_never_set;
+mod section_never_reached;
+mod spindle_never_printed;
+mod tape_split_spindle;
+mod toolchange_without_retract;
+mod units_word;
+mod unused;
