@@ -94,6 +94,9 @@ quantities! {
     SpindleSpeed = "S", Plain;
     /// Jet power.
     Power = "P", Plain;
+    /// 1 when the current tool is a jet tool (laser, plasma, waterjet), else 0
+    /// (postc's; Fusion posts read it as the section's type).
+    JetTool = "JET_TOOL", Plain;
     /// Tool number.
     Tool = "T", Plain;
     /// Previous tool number.

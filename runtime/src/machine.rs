@@ -210,6 +210,7 @@ impl MachineState {
             Quantity::SpindleSpeed if !self.has_tool && self.spindle_speed == 0.0 => NO_VALUE,
             Quantity::SpindleSpeed => self.spindle_output(),
             Quantity::Power => self.jet_power(),
+            Quantity::JetTool => f64::from(u8::from(self.has_tool && self.tool.jet)),
             Quantity::Tool => tool(f64::from(self.tool.number)),
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),

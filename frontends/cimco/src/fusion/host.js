@@ -338,6 +338,10 @@ function Range(minimum, maximum) {
     if (v < this.minimum) { this.minimum = v; }
     if (v > this.maximum) { this.maximum = v; }
   };
+  this.expandToRange = function (r) {
+    this.expandTo(r.minimum);
+    this.expandTo(r.maximum);
+  };
 }
 
 function Vector(x, y, z) {
@@ -1211,6 +1215,7 @@ function isSpeedFeedSynchronizationActive() { return false; }
 function getGlobalPosition(p) { return __vector(p); }
 function getFirstTool() { return __sections.length > 0 ? __sections[0].tool : undefined; }
 var EULER_ZXY_R = 5;
+var ABC = 3;
 
 // `Object.create(o)`: a new object with `o`'s properties (postc's objects
 // have no prototypes, so later changes to `o` do not show through).
@@ -1253,6 +1258,177 @@ function getMachineConfigurationAsText(machine) { return ""; }
 var center = undefined;
 var radius = 0;
 
+// `JSON.stringify(value)`: numbers, texts, booleans, null, arrays and
+// objects (functions and undefined properties left out).
+function __JSON_stringify(v) {
+  if (v === null || v === undefined) { return "null"; }
+  if (typeof v == "number") { return (v - v == 0) ? String(v) : "null"; }
+  if (typeof v == "boolean") { return String(v); }
+  if (typeof v == "string") {
+    var out = "\"";
+    for (var i = 0; i < v.length; ++i) {
+      var c = v.charAt(i);
+      var code = v.charCodeAt(i);
+      if (c == "\"" || c == "\\") { out += "\\" + c; } else if (c == "\n") { out += "\\n"; } else if (c == "\r") {
+        out += "\\r";
+      } else if (c == "\t") { out += "\\t"; } else if (code < 32) {
+        var hex = code.toString(16);
+        while (hex.length < 4) { hex = "0" + hex; }
+        out += "\\u" + hex;
+      } else { out += c; }
+    }
+    return out + "\"";
+  }
+  if (typeof v == "function") { return undefined; }
+  var parts = [];
+  if (Array.isArray(v)) {
+    for (var j = 0; j < v.length; ++j) {
+      var item = __JSON_stringify(v[j]);
+      parts.push(item === undefined ? "null" : item);
+    }
+    return "[" + parts.join(",") + "]";
+  }
+  for (var k in v) {
+    if (v[k] === undefined || typeof v[k] == "function") { continue; }
+    parts.push(__JSON_stringify(String(k)) + ":" + __JSON_stringify(v[k]));
+  }
+  return "{" + parts.join(",") + "}";
+}
+// `JSON.parse(text)`: JSON's values as objects, arrays, texts, numbers,
+// booleans and null; an error at the first character that is not JSON.
+function __JSON_parse(text) {
+  var t = String(text);
+  var at = 0;
+  function fail() { throw new Error("SyntaxError: JSON.parse: unexpected character at " + at); }
+  function blank() { while (at < t.length && " \t\r\n".indexOf(t.charAt(at)) >= 0) { ++at; } }
+  function value() {
+    blank();
+    var c = t.charAt(at);
+    if (c == "{") {
+      ++at;
+      var o = {};
+      blank();
+      if (t.charAt(at) == "}") { ++at; return o; }
+      while (true) {
+        blank();
+        if (t.charAt(at) != "\"") { fail(); }
+        var k = text_();
+        blank();
+        if (t.charAt(at) != ":") { fail(); }
+        ++at;
+        o[k] = value();
+        blank();
+        if (t.charAt(at) == ",") { ++at; continue; }
+        if (t.charAt(at) == "}") { ++at; return o; }
+        fail();
+      }
+    }
+    if (c == "[") {
+      ++at;
+      var a = [];
+      blank();
+      if (t.charAt(at) == "]") { ++at; return a; }
+      while (true) {
+        a.push(value());
+        blank();
+        if (t.charAt(at) == ",") { ++at; continue; }
+        if (t.charAt(at) == "]") { ++at; return a; }
+        fail();
+      }
+    }
+    if (c == "\"") { return text_(); }
+    if (t.substring(at, at + 4) == "true") { at += 4; return true; }
+    if (t.substring(at, at + 5) == "false") { at += 5; return false; }
+    if (t.substring(at, at + 4) == "null") { at += 4; return null; }
+    var start = at;
+    while (at < t.length && "+-0123456789.eE".indexOf(t.charAt(at)) >= 0) { ++at; }
+    if (at == start) { fail(); }
+    return Number(t.substring(start, at));
+  }
+  function text_() {
+    ++at;
+    var out = "";
+    while (at < t.length && t.charAt(at) != "\"") {
+      var ch = t.charAt(at);
+      if (ch == "\\") {
+        ++at;
+        var e = t.charAt(at);
+        if (e == "n") { out += "\n"; } else if (e == "r") { out += "\r"; } else if (e == "t") { out += "\t"; } else if (e == "b") {
+          out += "\b";
+        } else if (e == "f") { out += "\f"; } else if (e == "u") {
+          out += String.fromCharCode(parseInt(t.substring(at + 1, at + 5), 16));
+          at += 4;
+        } else { out += e; }
+      } else {
+        out += ch;
+      }
+      ++at;
+    }
+    if (at >= t.length) { fail(); }
+    ++at;
+    return out;
+  }
+  var result = value();
+  blank();
+  if (at < t.length) { fail(); }
+  return result;
+}
+
+// `new StringBuffer()`: text appended piece by piece.
+function StringBuffer() {
+  this.text = "";
+  this.append = function (t) { this.text += String(t); };
+  this.toString = function () { return this.text; };
+  this.length = function () { return this.text.length; };
+  this.clear = function () { this.text = ""; };
+}
+// `createModalGroup(specifiers, groups, format)`: codes in groups; a code
+// prints when its group's active code changes (or always, with `force`).
+function ModalGroup(specifiers, groups, format) {
+  this.groups = groups;
+  this.formatter = format;
+  this.active = [];
+  this.force = specifiers !== undefined && specifiers.force === true;
+  this.enabled = true;
+  this.prefix = "";
+  this.suffix = "";
+  this.getGroup = function (code) {
+    for (var g = 0; g < this.groups.length; ++g) {
+      if (this.groups[g].indexOf(code) >= 0) { return g; }
+    }
+    return -1;
+  };
+  this.isCodeDefined = function (code) { return this.getGroup(code) >= 0; };
+  this.isGroup = function (g) { return g >= 0 && g < this.groups.length; };
+  this.getNumberOfGroups = function () { return this.groups.length; };
+  this.getActiveCode = function (g) { return this.active[g]; };
+  this.hasActiveCode = function (g) { return this.active[g] !== undefined; };
+  this.isActiveCode = function (code) { var g = this.getGroup(code); return g >= 0 && this.active[g] == code; };
+  this.makeActiveCode = function (code) { var g = this.getGroup(code); if (g >= 0) { this.active[g] = code; } };
+  this.inSameGroup = function (a, b) { return this.getGroup(a) == this.getGroup(b); };
+  this.reset = function () { this.active = []; };
+  this.resetGroup = function (g) { this.active[g] = undefined; };
+  this.setForce = function (f) { this.force = f; };
+  this.setPrefix = function (p) { this.prefix = p; };
+  this.setSuffix = function (p) { this.suffix = p; };
+  this.setFormatNumber = function (f) { this.formatter = f; };
+  this.isEnabled = function () { return this.enabled; };
+  this.enable = function () { this.enabled = true; };
+  this.disable = function () { this.enabled = false; };
+  this.setStrict = function (v) {};
+  this.setAutoReset = function (v) {};
+  this.setLogUndefined = function (v) {};
+  this.format = function (code) {
+    if (!this.enabled) { return ""; }
+    var g = this.getGroup(code);
+    if (g < 0) { error(subst(localize("Code '%1' is not defined in the modal group."), code)); }
+    if (!this.force && this.active[g] == code) { return ""; }
+    this.active[g] = code;
+    return this.prefix + this.formatter.format(code) + this.suffix;
+  };
+}
+function createModalGroup(specifiers, groups, format) { return new ModalGroup(specifiers, groups, format); }
+
 // ---- What postc does not run yet: an error when the post calls it ----
 function __unsupported(name) {
   error("postc does not run `" + name + "` of Fusion's host yet (docs/fusion.md)");
@@ -1266,7 +1442,6 @@ function getNumberOfCyclePoints() { __unsupported("getNumberOfCyclePoints"); }
 function getNextRecord() { __unsupported("getNextRecord"); }
 function getCurrentRecordId() { __unsupported("getCurrentRecordId"); }
 function getRecord(id) { __unsupported("getRecord"); }
-function inspectionWriteVariables() { __unsupported("inspectionWriteVariables"); }
 function createToolRenderer() { __unsupported("createToolRenderer"); }
 function redirectToFile(path) { __unsupported("redirectToFile"); }
 function getOutputPath() { __unsupported("getOutputPath"); }
@@ -1346,6 +1521,7 @@ function onPassThrough(text) {}
 function onCycle() {}
 function onCyclePoint(x, y, z) {}
 function onCycleEnd() {}
+function onPower(power) {}
 function onUnsupportedCommand(command) {}
 function onImpliedCommand(command) {}
 function onError(message) {}
@@ -1363,10 +1539,17 @@ function __fusion_open(mm, name, comment, date, time) {
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet) {
   var t = new Tool(number, diameter, name);
-  t.spindleRPM = __spindle;
+  t.spindleRPM = jet ? 0 : __spindle;
   var s = new __Section(__sections.length, t, toolpathName);
+  if (jet) {
+    // A jet tool's kind, from its name (postc's toolpaths say only "jet").
+    var lower = String(name).toLowerCase();
+    t.jetTool = true;
+    t.type = lower.indexOf("plasma") >= 0 ? TOOL_PLASMA_CUTTER : (lower.indexOf("water") >= 0 ? TOOL_WATER_JET : TOOL_LASER_CUTTER);
+    s.type = TYPE_JET;
+  }
   s.parameters["operation-comment"] = toolpathName;
   s.parameters["operation:tool_diameter"] = diameter;
   __sections.push(s);
@@ -1389,6 +1572,13 @@ function __fusion_begin(x, y, z) {
   var s = __section;
   if (s === undefined || !s.pending) { return; }
   s.pending = false;
+  // Fusion refuses an operation the post's capabilities do not include.
+  if (s.type == TYPE_MILLING && (capabilities & CAPABILITY_MILLING) == 0) {
+    error(localize("The post does not support milling operations (its capabilities)."));
+  }
+  if (s.type == TYPE_JET && (capabilities & CAPABILITY_JET) == 0) {
+    error(localize("The post does not support jet operations (its capabilities)."));
+  }
   s.initialPosition = new Vector(x, y, z);
   s.zRange = new Range(z, z);
   currentSection = s;
@@ -1481,6 +1671,7 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius) 
 }
 
 function __fusion_dwell(seconds) { onDwell(seconds); }
+function __fusion_power(on) { onPower(on); }
 function __fusion_comment(text) { onComment(text); }
 
 function __fusion_close() {

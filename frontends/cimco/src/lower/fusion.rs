@@ -6,8 +6,9 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_open(mm, file name, notes, date, time)`, then `__fusion_toolpath(...)` for the first toolpath |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet)` |
+//! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
 //! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
@@ -23,7 +24,7 @@ use postc_ir::{
     BinaryOp, Body, Diagnostic, Expr, Function, Handler, HandlerKey, Post, Quantity, Section, Span, Stmt, codes,
 };
 
-use crate::ast::{Program, StmtKind};
+use crate::ast::Program;
 
 use super::fold;
 use super::general;
@@ -68,16 +69,7 @@ fn functions(
     layout: &mut Layout,
     whole: Span,
 ) -> Result<Vec<Function>, super::native::Why> {
-    let init_stmts: Vec<_> = program
-        .body
-        .iter()
-        .filter(|s| match &s.kind {
-            StmtKind::Function(_) | StmtKind::Empty => false,
-            StmtKind::Var(ds) => ds.iter().any(|d| d.init.is_some() && model.constant(&d.name.name).is_none()),
-            _ => true,
-        })
-        .cloned()
-        .collect();
+    let init_stmts = super::init_statements(program, model, setup);
     let mut shared = general::Shared::new(model, setup, layout);
     shared.fusion = true;
     let mut functions = Vec::new();
@@ -116,7 +108,13 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     let toolpath = || {
         call(
             "__fusion_toolpath",
-            vec![q(Quantity::Tool), q(Quantity::ToolDiameter), q(Quantity::ToolName), q(Quantity::ToolpathName)],
+            vec![
+                q(Quantity::Tool),
+                q(Quantity::ToolDiameter),
+                q(Quantity::ToolName),
+                q(Quantity::ToolpathName),
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::JetTool)), Box::new(Expr::Number(0.0))),
+            ],
         )
     };
     let mm = Expr::Binary(
@@ -124,11 +122,13 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
         Box::new(q(Quantity::UnitsText)),
         Box::new(Expr::Text(postc_ir::Units::Mm.name().into())),
     );
-    let mut header = call(
+    // The first section exists before `onOpen`, so that `getSection(0)` and
+    // the tool table answer there.
+    let mut header = toolpath();
+    header.extend(call(
         "__fusion_open",
         vec![mm, q(Quantity::FileName), q(Quantity::FileNotes), q(Quantity::Date), q(Quantity::Time)],
-    );
-    header.extend(toolpath());
+    ));
     let linear = |plunge: bool| {
         call(
             "__fusion_linear",
@@ -168,6 +168,8 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::CcwArcMove, arc(false));
     add(Section::CwHelicalArcMove, arc(true));
     add(Section::CcwHelicalArcMove, arc(false));
+    add(Section::JetToolOn, call("__fusion_power", vec![Expr::Bool(true)]));
+    add(Section::JetToolOff, call("__fusion_power", vec![Expr::Bool(false)]));
     add(Section::DwellMove, call("__fusion_dwell", vec![q(Quantity::DwellTime)]));
     add(Section::Comment, call("__fusion_comment", vec![q(Quantity::CommentText)]));
     add(Section::Footer, call("__fusion_close", vec![]));

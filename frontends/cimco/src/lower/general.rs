@@ -1029,14 +1029,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     };
                     Ir::Object(vec![("name".into(), Ir::Text("Error".into())), ("message".into(), message)])
                 }
-                ExprKind::Ident(n) if n == "Array" && self.is_host(n) => match args.as_slice() {
-                    // `new Array(n)`: n empty items; `new Array(a, b)`: those items.
-                    [Expr { kind: ExprKind::Number(n), .. }] if *n >= 0.0 && n.fract() == 0.0 && *n <= 65536.0 => {
-                        Ir::Array(vec![Ir::Undefined; *n as usize])
-                    }
-                    [_] => return Err(why(at, "makes a `new Array(n)` of a length known only when the post runs")),
-                    _ => Ir::Array(self.args(args, pre)?),
-                },
+                ExprKind::Ident(n) if n == "Array" && self.is_host(n) => {
+                    let a = self.args(args, pre)?;
+                    array_of(a, at)?
+                }
                 ExprKind::Ident(n) if n == "RegExp" && self.is_host(n) => match args.as_slice() {
                     [Expr { kind: ExprKind::String(p), .. }] => {
                         Ir::Regex { pattern: p.clone(), flags: String::new(), span: Some(at) }
@@ -1205,6 +1201,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let f = self.shared.layout.function(layout::FEEDRATE).ok_or_else(|| why(at, "calls `getFeedrate`"))?;
                 return Ok(Ir::Call(f, a));
             }
+            "Array" => return array_of(a, at),
             "parseInt" => Builtin::ParseInt,
             "parseFloat" => Builtin::ParseFloat,
             "isNaN" => Builtin::IsNaN,
@@ -1289,6 +1286,18 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         let recv = if args.iter().any(|a| self.needs_statements(a)) { self.keep(recv, pre) } else { recv };
         let a = self.args(args, pre)?;
         Ok(Ir::Invoke { object: Box::new(recv), method: name.to_string(), args: a, span: Some(at) })
+    }
+}
+
+/// `Array(...)` or `new Array(...)`: `n` empty items for one number
+/// `n`, else the items given.
+fn array_of(a: Vec<Ir>, at: Span) -> R<Ir> {
+    match a.as_slice() {
+        [Ir::Number(n)] if *n >= 0.0 && n.fract() == 0.0 && *n <= 65536.0 => {
+            Ok(Ir::Array(vec![Ir::Undefined; *n as usize]))
+        }
+        [_] => Err(why(at, "makes an `Array(n)` of a length known only when the post runs")),
+        _ => Ok(Ir::Array(a)),
     }
 }
 

@@ -49,8 +49,8 @@ pub enum Symbol {
 /// Every function of a program.
 pub struct Scopes<'a> {
     pub funcs: Vec<FuncInfo<'a>>,
-    /// Function of each `Function` node, by the start of its span.
-    by_span: HashMap<usize, FnId>,
+    /// Function of each `Function` node, by its file and the start of its span.
+    by_span: HashMap<(postc_ir::FileId, usize), FnId>,
     /// Top-level function declarations, in order.
     pub top_fns: Vec<FnId>,
     pub top_fn_names: HashMap<String, usize>,
@@ -95,7 +95,7 @@ impl<'a> Scopes<'a> {
     }
 
     fn add(&mut self, f: &'a Function, parent: FnId) -> FnId {
-        if let Some(&id) = self.by_span.get(&f.span.start) {
+        if let Some(&id) = self.by_span.get(&(f.span.file, f.span.start)) {
             return id;
         }
         let mut vars = Vec::new();
@@ -120,7 +120,7 @@ impl<'a> Scopes<'a> {
             uses_arguments: false,
             captures: false,
         });
-        self.by_span.insert(f.span.start, id);
+        self.by_span.insert((f.span.file, f.span.start), id);
         for n in nested {
             self.add(n, id);
         }
@@ -130,7 +130,7 @@ impl<'a> Scopes<'a> {
 
     /// The function a `Function` node is.
     pub fn id_of(&self, f: &Function) -> Option<FnId> {
-        self.by_span.get(&f.span.start).copied()
+        self.by_span.get(&(f.span.file, f.span.start)).copied()
     }
 
     /// What `name` means inside function `at`.
