@@ -26,6 +26,7 @@ mod diagnostic_codes;
 mod diagnostic_levels;
 mod docs;
 mod exact_arcs;
+mod fusion_corpus;
 mod fuzz;
 mod jsonl_fidelity;
 mod lint_corpus;

@@ -1,0 +1,143 @@
+//! Real Fusion `.cps` posts: every post of `../shared/corpus/fusion/`
+//! (public posts from 57 repositories, never copied into this one) posts
+//! the standard job's milling toolpaths (`corpus/toolpaths/standard.ron`
+//! without its laser toolpath) through `postc post`, whose verification
+//! replays the program against the toolpath. Each post either writes a
+//! program that verifies, or is refused with a diagnostic and writes
+//! nothing; none panics. The test prints the count by outcome (the table
+//! of docs/fusion.md) and holds the number that post and verify at or
+//! above [`AT_LEAST`].
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::support;
+
+/// Posts that post the milling job and pass verification today.
+const AT_LEAST: usize = 85;
+
+fn shared() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/fusion")
+}
+
+/// Every `.cps` under the corpus folder, sorted.
+fn posts(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d).expect("list the Fusion corpus") {
+            let path = entry.expect("directory entry").path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("cps")) {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The standard job without its jet toolpath: the events from the jet
+/// tool's `Tool` up to the `ToolpathEnd` of its toolpath are left out.
+fn milling_job(dir: &Path) -> PathBuf {
+    let text = std::fs::read_to_string(support::corpus().join("toolpaths/standard.ron")).expect("standard.ron");
+    let mut out = String::new();
+    let mut jet = false;
+    for line in text.lines() {
+        if line.starts_with("Tool(") {
+            jet = line.contains("jet:true");
+        }
+        if !jet {
+            out.push_str(line);
+            out.push('\n');
+        }
+        if jet && line.starts_with("ToolpathEnd") {
+            jet = false;
+        }
+    }
+    let path = dir.join("standard_milling.ron");
+    std::fs::write(&path, out).expect("write the milling job");
+    path
+}
+
+/// The outcome of one post, as the table counts it.
+fn outcome(said: &str, status: Option<i32>) -> String {
+    if status == Some(0) {
+        return "posts and verifies".into();
+    }
+    let first = said.lines().find(|l| l.starts_with("error[")).unwrap_or("no error printed");
+    let code = first.get(6..11).unwrap_or("?");
+    if first.contains("does not support milling operations") {
+        return "refuses milling (its capabilities)".into();
+    }
+    code.to_string()
+}
+
+#[test]
+fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
+    let dir = shared();
+    if !dir.is_dir() {
+        support::referee_missing("corpus_fusion_posts", "../shared/corpus/fusion");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-corpus-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let job = milling_job(&tmp);
+    let posts = posts(&dir);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
+    // Each worker posts the next post not taken into a file of its own.
+    let runs: Vec<(String, String, Option<i32>, bool)> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|w| {
+                let (posts, next, job, tmp, dir) = (&posts, &next, &job, &tmp, &dir);
+                scope.spawn(move || {
+                    let mut done = Vec::new();
+                    let out = tmp.join(format!("program-{w}.nc"));
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some(post) = posts.get(i) else { break };
+                        let _ = std::fs::remove_file(&out);
+                        let run = support::postc(&[
+                            "post",
+                            "-q",
+                            post.to_str().expect("a UTF-8 path"),
+                            job.to_str().expect("a UTF-8 path"),
+                            "-o",
+                            out.to_str().expect("a UTF-8 path"),
+                        ]);
+                        let name = post.strip_prefix(dir).unwrap_or(post).display().to_string();
+                        let left = !run.status.success() && out.exists();
+                        done.push((name, support::said(&run), run.status.code(), left));
+                    }
+                    done
+                })
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    });
+    let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut broken = Vec::new();
+    for (name, said, status, left) in runs {
+        if said.contains("panicked") || status.is_none_or(|c| c > 1) {
+            broken.push(format!("{name}: exit {status:?}: {said}"));
+        }
+        if left {
+            broken.push(format!("{name}: failed and left its output behind"));
+        }
+        table.entry(outcome(&said, status)).or_default().push(name);
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+    let mut summary = String::new();
+    for (what, names) in &table {
+        summary.push_str(&format!("{:>4}  {what}\n", names.len()));
+    }
+    println!("{summary}");
+    assert!(broken.is_empty(), "posts that panic or leave output behind:\n{}", broken.join("\n"));
+    let good = table.get("posts and verifies").map_or(0, Vec::len);
+    assert!(
+        good >= AT_LEAST,
+        "{good} corpus Fusion posts post and verify the milling job, fewer than {AT_LEAST}:\n{summary}"
+    );
+}
