@@ -27,6 +27,7 @@ mod diagnostic_levels;
 mod docs;
 mod exact_arcs;
 mod fusion_corpus;
+mod fusion_node;
 mod fuzz;
 mod jsonl_fidelity;
 mod lint_corpus;

@@ -770,11 +770,22 @@ impl Engine<'_> {
             // Locals, globals and numbers are read in place: no reference
             // count changes hands (the common `x != ""`, `n + 1`).
             Expr::Binary(op, a, b) if is_leaf(a) && is_leaf(b) => {
-                let v = {
+                let (v, objects) = {
                     let (mut ta, mut tb) = (Value::Null, Value::Null);
                     let x = leaf(a, frame, &self.globals, &mut ta);
                     let y = leaf(b, frame, &self.globals, &mut tb);
-                    binary(*op, x, y)
+                    let objects = matches!(op, BinaryOp::Add | BinaryOp::Concat)
+                        && (matches!(x, Value::Object(_)) || matches!(y, Value::Object(_)));
+                    (if objects { Value::Null } else { binary(*op, x, y) }, objects)
+                };
+                let v = if objects {
+                    let x = self.eval(a, frame)?;
+                    let x = self.primitive(x)?;
+                    let y = self.eval(b, frame)?;
+                    let y = self.primitive(y)?;
+                    binary(*op, &x, &y)
+                } else {
+                    v
                 };
                 self.check_text(&v)?;
                 v
@@ -799,8 +810,12 @@ impl Engine<'_> {
                 v
             }
             Expr::Binary(op, a, b) => {
-                let a = self.eval(a, frame)?;
-                let b = self.eval(b, frame)?;
+                let mut a = self.eval(a, frame)?;
+                let mut b = self.eval(b, frame)?;
+                if matches!(op, BinaryOp::Add | BinaryOp::Concat) {
+                    a = self.primitive(a)?;
+                    b = self.primitive(b)?;
+                }
                 let v = binary(*op, &a, &b);
                 self.check_text(&v)?;
                 v
@@ -1240,12 +1255,33 @@ impl Engine<'_> {
     /// operator at a time from the left: `None` when the value so far is
     /// text, which is then in `buf`; the value itself while it is not
     /// (numbers add until a text joins them).
+    /// JavaScript's ToPrimitive for `+`: an object's own `valueOf`, when it
+    /// gives a value that is not an object, else its own `toString`'s;
+    /// other values (and objects without them) are themselves.
+    fn primitive(&mut self, v: Value) -> Result<Value> {
+        let Value::Object(o) = &v else { return Ok(v) };
+        for name in [&b"valueOf"[..], &b"toString"[..]] {
+            let f = o.borrow().get(name).cloned();
+            if let Some(f @ Value::Func(_)) = f {
+                let r = self.call_value(&f, v.clone(), Vec::new())?;
+                if !matches!(r, Value::Object(_) | Value::Array(_) | Value::Func(_)) {
+                    return Ok(r);
+                }
+            }
+        }
+        Ok(v)
+    }
+
     fn chain(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut String) -> Result<Option<Value>> {
         let Expr::Binary(op @ (BinaryOp::Add | BinaryOp::Concat), l, r) = e else {
             return Ok(Some(self.eval(e, frame)?));
         };
-        let left = self.chain(l, frame, buf)?;
+        let left = match self.chain(l, frame, buf)? {
+            Some(v) => Some(self.primitive(v)?),
+            None => None,
+        };
         let right = self.eval(r, frame)?;
+        let right = self.primitive(right)?;
         Ok(match left {
             None => {
                 right.append_to(buf);

@@ -703,20 +703,23 @@ function setWordSeparator(separator) { __wordSeparator = separator; }
 function getWordSeparator() { return __wordSeparator; }
 function setCodePage(name) {}
 function getCodePage() { return 1252; }
-function setEOL(eol) { EOL = eol; }
+function setEOL(eol) { __unsupported("setEOL"); }
 var __redirect = undefined;
+// Text `write` gave that no line ending has closed yet.
+var __partial = "";
 function writeln(text) {
   if (__redirect !== undefined) {
     __redirect.text += text + EOL;
   } else {
-    __postc_write(text + EOL);
+    __postc_writeln(__partial + text);
+    __partial = "";
   }
 }
 function write(text) {
   if (__redirect !== undefined) {
     __redirect.text += text;
   } else {
-    __postc_write(String(text));
+    __partial += String(text);
   }
 }
 function redirectToBuffer() { __redirect = { text: "" }; }
@@ -863,6 +866,7 @@ function Tool(number, diameter, name) {
   this.isDrill = function () { return this.type == TOOL_DRILL; };
   this.isLiveTool = function () { return this.liveTool; };
   this.getNumber = function () { return this.number; };
+  this.getToolId = function () { return "T" + this.number + " D" + this.diameter + " " + this.description; };
   this.getDiameter = function () { return this.diameter; };
   this.getCornerRadius = function () { return this.cornerRadius; };
   this.getTaperAngle = function () { return this.taperAngle; };
@@ -1079,6 +1083,26 @@ function skipRemainingSection() {}
 function getCommandStringId(command) { return "COMMAND_" + command; }
 function getMovementStringId(m, jet) { return "MOVEMENT_" + m; }
 
+// An axis a machine without rotary axes does not have.
+function __Axis() {
+  this.isEnabled = function () { return false; };
+  this.getAxis = function () { return new Vector(0, 0, 0); };
+  this.getCoordinate = function () { return -1; };
+  this.getOffset = function () { return new Vector(0, 0, 0); };
+  this.getRange = function () { return new Range(0, 0); };
+  this.getPreference = function () { return 0; };
+  this.getResolution = function () { return 0; };
+  this.isCyclic = function () { return false; };
+  this.isHead = function () { return false; };
+  this.isTable = function () { return false; };
+  this.isAggregate = function () { return false; };
+  this.getEffectiveAxis = function () { return new Vector(0, 0, 0); };
+  this.clamp = function (v) { return v; };
+  this.remapToRange = function (v) { return v; };
+  this.getMaximumFeed = function () { return 0; };
+  this.getTCP = function () { return false; };
+}
+
 // A machine with no rotary axis: what `new MachineConfiguration()` gives.
 function MachineConfiguration() {
   this.vendor = "";
@@ -1087,9 +1111,32 @@ function MachineConfiguration() {
   this.isMultiAxisConfiguration = function () { return false; };
   this.isMachineCoordinate = function (i) { return false; };
   this.getNumberOfAxes = function () { return 3; };
-  this.getAxisU = function () { return { isEnabled: function () { return false; } }; };
-  this.getAxisV = function () { return { isEnabled: function () { return false; } }; };
-  this.getAxisW = function () { return { isEnabled: function () { return false; } }; };
+  this.getAxisU = function () { return new __Axis(); };
+  this.getAxisV = function () { return new __Axis(); };
+  this.getAxisW = function () { return new __Axis(); };
+  this.getAxisByCoordinate = function (coordinate) { return new __Axis(); };
+  this.getAxisX = function () { return new __Axis(); };
+  this.getAxisY = function () { return new __Axis(); };
+  this.getAxisZ = function () { return new __Axis(); };
+  this.setAxisU = function (a) {};
+  this.setAxisV = function (a) {};
+  this.setAxisW = function (a) {};
+  this.setAxisX = function (a) {};
+  this.setAxisY = function (a) {};
+  this.setAxisZ = function (a) {};
+  this.setSafeRetractDistance = function (v) {};
+  this.getSafeRetractDistance = function () { return 0; };
+  this.setSafeRetractAndHomePositionsAvailable = function (v) {};
+  this.setHomePositionZ = function (v) {};
+  this.getHomePositionZ = function () { return 0; };
+  this.hasHomePositionZ = function () { return false; };
+  this.setToolLength = function (v) {};
+  this.getToolLength = function () { return 0; };
+  this.setCenterPositionX = function (v) {};
+  this.setCenterPositionY = function (v) {};
+  this.setCenterPositionZ = function (v) {};
+  this.setRetractPlane = function (v) {};
+  this.setModel = function (v) { this.model = v; };
   this.isHeadConfiguration = function () { return false; };
   this.isTableConfiguration = function () { return false; };
   this.getVendor = function () { return this.vendor; };
@@ -1444,7 +1491,7 @@ function getCurrentRecordId() { __unsupported("getCurrentRecordId"); }
 function getRecord(id) { __unsupported("getRecord"); }
 function createToolRenderer() { __unsupported("createToolRenderer"); }
 function redirectToFile(path) { __unsupported("redirectToFile"); }
-function getOutputPath() { __unsupported("getOutputPath"); }
+function getOutputPath() { return __outputPath; }
 function getIntermediatePath() { __unsupported("getIntermediatePath"); }
 function findFile(path) { __unsupported("findFile"); }
 function getFixture() { __unsupported("getFixture"); }
@@ -1461,35 +1508,43 @@ var COMMAND_DISPLAY_MESSAGE = 44;
 // ---- Dates: the job's date and time (`--set date=`, `--set time=`) ----
 var __date = "";
 var __time = "";
-function Date() {
+// The job's date and time, read when asked (a post may make its `Date`
+// before the job is known).
+function __dateParts() {
   var months = ["January", "February", "March", "April", "May", "June", "July", "August", "September", "October",
     "November", "December"];
   var words = __date.split(" ");
   var iso = __date.split("-");
-  var year = 1970;
-  var month = 0;
-  var day = 1;
+  var p = { year: 1970, month: 0, day: 1, hours: 0, minutes: 0, seconds: 0 };
   if (words.length == 4) {
-    month = Math.max(0, months.indexOf(words[1]));
-    day = parseInt(words[2], 10);
-    year = parseInt(words[3], 10);
+    p.month = Math.max(0, months.indexOf(words[1]));
+    p.day = parseInt(words[2], 10);
+    p.year = parseInt(words[3], 10);
   } else if (iso.length == 3) {
-    year = parseInt(iso[0], 10);
-    month = parseInt(iso[1], 10) - 1;
-    day = parseInt(iso[2], 10);
+    p.year = parseInt(iso[0], 10);
+    p.month = parseInt(iso[1], 10) - 1;
+    p.day = parseInt(iso[2], 10);
   }
   var clock = __time.split(":");
-  var hours = clock.length >= 2 ? parseInt(clock[0], 10) : 0;
-  var minutes = clock.length >= 2 ? parseInt(clock[1], 10) : 0;
+  if (clock.length >= 2) {
+    p.hours = parseInt(clock[0], 10);
+    p.minutes = parseInt(clock[1], 10);
+  }
+  if (clock.length >= 3) {
+    p.seconds = parseInt(clock[2], 10);
+  }
+  return p;
+}
+function Date() {
   var two = function (n) { return n < 10 ? "0" + n : "" + n; };
-  this.getFullYear = function () { return year; };
-  this.getYear = function () { return year - 1900; };
-  this.getMonth = function () { return month; };
-  this.getDate = function () { return day; };
+  this.getFullYear = function () { return __dateParts().year; };
+  this.getYear = function () { return __dateParts().year - 1900; };
+  this.getMonth = function () { return __dateParts().month; };
+  this.getDate = function () { return __dateParts().day; };
   this.getDay = function () { return 0; };
-  this.getHours = function () { return hours; };
-  this.getMinutes = function () { return minutes; };
-  this.getSeconds = function () { return 0; };
+  this.getHours = function () { return __dateParts().hours; };
+  this.getMinutes = function () { return __dateParts().minutes; };
+  this.getSeconds = function () { return __dateParts().seconds; };
   this.getMilliseconds = function () { return 0; };
   this.getTime = function () { return 0; };
   this.toLocaleDateString = function () { return __date; };
@@ -1498,7 +1553,11 @@ function Date() {
   this.toDateString = function () { return __date; };
   this.toTimeString = function () { return __time; };
   this.toString = function () { return __date + " " + __time; };
-  this.toISOString = function () { return year + "-" + two(month + 1) + "-" + two(day) + "T" + two(hours) + ":" + two(minutes) + ":00.000Z"; };
+  this.toISOString = function () {
+    var p = __dateParts();
+    return p.year + "-" + two(p.month + 1) + "-" + two(p.day) + "T" + two(p.hours) + ":" + two(p.minutes) + ":" +
+      two(p.seconds) + ".000Z";
+  };
 }
 
 // ---- Entry points a post may leave out ----
@@ -1527,7 +1586,9 @@ function onImpliedCommand(command) {}
 function onError(message) {}
 
 // ---- The engine: postc's events as Fusion's calls ----
-function __fusion_open(mm, name, comment, date, time) {
+var __outputPath = "";
+function __fusion_open(mm, name, comment, date, time, path) {
+  __outputPath = __FileSystem_getCombinedPath(path, name + "." + extension);
   __date = date;
   __time = time;
   unit = mm ? MM : IN;
@@ -1539,9 +1600,11 @@ function __fusion_open(mm, name, comment, date, time) {
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed) {
+  __toolChanging = false;
+  __spindle = jet ? 0 : speed;
   var t = new Tool(number, diameter, name);
-  t.spindleRPM = jet ? 0 : __spindle;
+  t.spindleRPM = __spindle;
   var s = new __Section(__sections.length, t, toolpathName);
   if (jet) {
     // A jet tool's kind, from its name (postc's toolpaths say only "jet").
@@ -1590,8 +1653,15 @@ function __fusion_begin(x, y, z) {
   onSection();
 }
 
+// A tool change: its spindle speed belongs to the section that follows.
+var __toolChanging = false;
+function __fusion_tool_change() { __toolChanging = true; }
+
 function __fusion_spindle(speed) {
   __spindle = speed;
+  if (__toolChanging) {
+    return;
+  }
   if (__section !== undefined && __section.pending) {
     __section.tool.spindleRPM = speed;
   } else if (currentSection !== undefined && speed != spindleSpeed) {
@@ -1682,4 +1752,7 @@ function __fusion_close() {
   __fusion_end_section();
   onClose();
   onTerminate();
+  if (__partial != "") {
+    writeln("");
+  }
 }

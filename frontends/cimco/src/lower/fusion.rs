@@ -6,8 +6,9 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time)` |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder)` |
+//! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
 //! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
@@ -55,6 +56,8 @@ pub(crate) fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut
         post.info.file_extension = ext.clone();
     }
     post.options.forget_modal_at_toolpath_start = false;
+    // The host's `EOL` (docs/fusion.md, choice 5).
+    post.options.line_ending = b"\r\n".to_vec();
     post.handlers = handlers(&layout);
     post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
     post.functions = functions;
@@ -114,6 +117,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::ToolName),
                 q(Quantity::ToolpathName),
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::JetTool)), Box::new(Expr::Number(0.0))),
+                q(Quantity::SpindleSpeed),
             ],
         )
     };
@@ -127,7 +131,14 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     let mut header = toolpath();
     header.extend(call(
         "__fusion_open",
-        vec![mm, q(Quantity::FileName), q(Quantity::FileNotes), q(Quantity::Date), q(Quantity::Time)],
+        vec![
+            mm,
+            q(Quantity::FileName),
+            q(Quantity::FileNotes),
+            q(Quantity::Date),
+            q(Quantity::Time),
+            q(Quantity::PathName),
+        ],
     ));
     let linear = |plunge: bool| {
         call(
@@ -159,6 +170,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
         }
     };
     add(Section::Header, header);
+    add(Section::ToolChange, call("__fusion_tool_change", vec![]));
     add(Section::NewSegment, toolpath());
     add(Section::SpindleOn, call("__fusion_spindle", vec![q(Quantity::SpindleSpeed)]));
     add(Section::RapidMove, call("__fusion_rapid", vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z)]));

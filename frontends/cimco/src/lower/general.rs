@@ -1172,9 +1172,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     }
                     Symbol::Global(g) if self.model().global(&g).is_none() => {
                         let a = self.args(args, pre)?;
-                        if g == names::WRITE {
-                            // The output primitive of a host written in JavaScript.
-                            pre.push(IrStmt::Write(a.into_iter().next().unwrap_or(Ir::Text(String::new()))));
+                        if g == names::WRITE_LINE {
+                            // The output primitive of a host written in JavaScript:
+                            // one block, the text as it is, then the line ending.
+                            let text = a.into_iter().next().unwrap_or(Ir::Text(String::new()));
+                            pre.push(IrStmt::Line { pieces: vec![postc_ir::Piece::Expr(text)], span: Some(at) });
                             return Ok(Ir::Undefined);
                         }
                         self.host_call(&g, a, at)

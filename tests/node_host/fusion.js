@@ -1,0 +1,244 @@
+// A referee for Fusion posts: Node.js runs postc's Fusion host API
+// (frontends/cimco/src/fusion/host.js, JavaScript) and the post in one
+// context, and turns a toolpath of native events (JSON Lines) into the
+// host's engine calls (`__fusion_*`) in the order docs/fusion.md and the
+// runtime's section dispatch give them. The host API is shared with postc
+// on purpose (it is JavaScript); what this checks is postc's JavaScript
+// engine against V8 on real posts, and the event order against a second
+// reading of the documentation.
+//
+//   node fusion.js POST.cps TOOLPATH.jsonl
+"use strict";
+
+var fs = require("fs");
+var path = require("path");
+var vm = require("vm");
+
+var HOST = path.join(__dirname, "..", "..", "frontends", "cimco", "src", "fusion", "host.js");
+
+function Referee(postSource, postName) {
+    var out = [];
+    var context = vm.createContext({});
+    context.__postc_writeln = function (text) {
+        out.push(String(text) + context.EOL);
+    };
+    vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
+    vm.runInContext(postSource, context, { filename: postName });
+    // A static method the host writes as `__Class_method` (postc calls it
+    // for `Class.method(...)`).
+    vm.runInContext(
+        "Object.getOwnPropertyNames(this).forEach(function (n) {" +
+            "  var m = /^__([A-Za-z]+)_([A-Za-z0-9]+)$/.exec(n);" +
+            "  if (m && this[m[1]] !== undefined) { this[m[1]][m[2]] = this[n]; }" +
+            "}, this);",
+        context
+    );
+    this.ctx = context;
+    this.out = out;
+    this.started = false;
+    this.finished = false;
+    this.spindleOn = false;
+    this.pos = [0, 0, 0];
+    this.job = {};
+    this.tool = null;
+    this.toolChanged = false;
+    this.lastTool = null;
+    this.spindle = 0;
+}
+
+Referee.prototype.call = function (name, args) {
+    this.ctx[name].apply(null, args);
+};
+
+Referee.prototype.spindleTool = function () {
+    return !this.tool.jet && this.spindle > 0;
+};
+
+Referee.prototype.toolpathArgs = function () {
+    var t = this.tool;
+    return [t.number, t.diameter, t.name, this.toolpathName, !!t.jet, this.spindle];
+};
+
+Referee.prototype.beginToolpath = function () {
+    if (!this.started) {
+        this.started = true;
+        var j = this.job;
+        var file = j.file || {};
+        this.call("__fusion_toolpath", this.toolpathArgs());
+        this.call("__fusion_open", [
+            (j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || "",
+        ]);
+        this.spindleOn = this.spindleTool();
+        if (this.spindleOn) {
+            this.call("__fusion_spindle", [this.spindle]);
+        }
+    } else {
+        if (this.toolChanged) {
+            this.call("__fusion_tool_change", []);
+            this.spindleOn = this.spindleTool();
+            if (this.spindleOn) {
+                this.call("__fusion_spindle", [this.spindle]);
+            }
+        }
+        this.call("__fusion_toolpath", this.toolpathArgs());
+    }
+    this.toolChanged = false;
+    this.lastTool = this.tool.number;
+};
+
+Referee.prototype.ensureStarted = function () {
+    if (!this.started) {
+        this.beginToolpath();
+    }
+};
+
+Referee.prototype.feedOf = function (m, slow) {
+    return m.feed != null ? m.feed : slow ? this.tool.plunge_feed : this.tool.cut_feed;
+};
+
+Referee.prototype.feedMove = function (m) {
+    var from = this.pos;
+    var intent = m.intent || "Cut";
+    if (intent === "Cut" && from[0] === m.x && from[1] === m.y) {
+        if (m.z < from[2]) {
+            intent = "Plunge";
+        } else if (m.z > from[2]) {
+            intent = "Retract";
+        }
+    }
+    var slow = intent === "Plunge" || intent === "Retract";
+    this.pos = [m.x, m.y, m.z];
+    this.call("__fusion_linear", [m.x, m.y, m.z, this.feedOf(m, slow), intent === "Plunge"]);
+};
+
+Referee.prototype.arc = function (a) {
+    if ((a.plane || "Xy") !== "Xy") {
+        throw new Error("the referee does not linearize arcs outside XY");
+    }
+    var s = this.pos;
+    var cx = a.cx, cy = a.cy, cz = s[2];
+    var r = Math.hypot(s[0] - cx, s[1] - cy);
+    var a0 = Math.atan2(s[1] - cy, s[0] - cx);
+    var a1 = Math.atan2(a.y - cy, a.x - cx);
+    var closed = Math.hypot(a.x - s[0], a.y - s[1]) <= 1e-9 * Math.max(r, 1);
+    var TAU = 2 * Math.PI;
+    var cw = a.dir === "Cw";
+    var turn = closed ? TAU : (((cw ? a0 - a1 : a1 - a0) % TAU) + TAU) % TAU;
+    if (turn <= 1e-12) {
+        turn = TAU;
+    }
+    var intent = a.intent || "Cut";
+    var slow = intent === "Plunge" || intent === "Retract";
+    this.pos = [a.x, a.y, a.z];
+    this.call("__fusion_circular", [cw, cx, cy, cz, a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r]);
+};
+
+Referee.prototype.event = function (e) {
+    var kind = typeof e === "string" ? e : Object.keys(e)[0];
+    var d = typeof e === "string" ? null : e[kind];
+    switch (kind) {
+        case "Job":
+            this.job = d;
+            if (d.home) {
+                this.pos = [d.home.x, d.home.y, d.home.z];
+            }
+            break;
+        case "Tool":
+            this.toolChanged = this.lastTool !== d.number;
+            this.tool = {
+                number: d.number || 0, name: d.name || "", diameter: d.diameter || 0, jet: !!d.jet,
+                cut_feed: d.cut_feed || 0, plunge_feed: d.plunge_feed || 0,
+            };
+            this.spindle = d.spindle_speed || 0;
+            break;
+        case "ToolpathStart":
+            this.toolpathName = d.name || "";
+            this.beginToolpath();
+            break;
+        case "Rapid":
+            this.ensureStarted();
+            this.pos = [d.x, d.y, d.z];
+            this.call("__fusion_rapid", [d.x, d.y, d.z]);
+            break;
+        case "Feed":
+            this.ensureStarted();
+            this.feedMove(d);
+            break;
+        case "Arc":
+            this.ensureStarted();
+            this.arc(d);
+            break;
+        case "Dwell":
+            this.ensureStarted();
+            this.call("__fusion_dwell", [d.revolutions && this.spindle > 0 ? d.seconds * 60 / this.spindle : d.seconds]);
+            break;
+        case "SpindleOn": {
+            var speed = d.speed != null ? d.speed : this.spindle;
+            var changed = speed !== this.spindle;
+            this.spindle = speed;
+            if (this.started && (!this.spindleOn || changed) && !this.tool.jet) {
+                this.spindleOn = true;
+                this.call("__fusion_spindle", [speed]);
+            }
+            break;
+        }
+        case "SpindleOff":
+            this.spindleOn = false;
+            break;
+        case "JetOn":
+            this.ensureStarted();
+            this.call("__fusion_power", [true]);
+            break;
+        case "JetOff":
+            this.ensureStarted();
+            this.call("__fusion_power", [false]);
+            break;
+        case "Comment":
+            if (this.started) {
+                this.call("__fusion_comment", [d.text]);
+            }
+            break;
+        case "End":
+            this.finish();
+            break;
+        default:
+            break;
+    }
+};
+
+Referee.prototype.finish = function () {
+    if (this.finished) {
+        return;
+    }
+    this.ensureStarted();
+    this.call("__fusion_close", []);
+    this.finished = true;
+};
+
+function main(argv) {
+    var post = argv[2];
+    var toolpath = argv[3];
+    if (!post || !toolpath) {
+        process.stderr.write("usage: node fusion.js POST.cps TOOLPATH.jsonl\n");
+        return 2;
+    }
+    var referee = new Referee(fs.readFileSync(post, "utf8"), post);
+    var lines = fs.readFileSync(toolpath, "utf8").split("\n");
+    try {
+        for (var i = 0; i < lines.length; i++) {
+            var line = lines[i].trim();
+            if (line !== "") {
+                referee.event(JSON.parse(line));
+            }
+        }
+        referee.finish();
+    } catch (e) {
+        process.stdout.write(Buffer.from(referee.out.join(""), "utf8"));
+        process.stderr.write("error: " + (e && e.message ? e.message : String(e)) + "\n");
+        return 1;
+    }
+    process.stdout.write(Buffer.from(referee.out.join(""), "utf8"));
+    return 0;
+}
+
+process.exitCode = main(process.argv);
