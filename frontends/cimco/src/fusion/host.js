@@ -1026,8 +1026,8 @@ function getToolTable() {
 }
 function getToolTypeName(type) {
   var names = ["unspecified", "drill", "center drill", "spot drill", "block drill", "flat end mill", "ball end mill",
-    "bullnose end mill", "chamfer mill", "face mill", "slot mill", "radius mill", "dovetail mill", "tapered mill",
-    "lollipop mill", "right tap", "left tap", "reamer", "boring bar", "counterbore", "countersink", "holder",
+    "bull nose end mill", "chamfer mill", "face mill", "slot mill", "radius mill", "dovetail mill", "tapered mill",
+    "lollipop mill", "tap right hand", "tap left hand", "reamer", "boring bar", "counter bore", "counter sink", "holder",
     "general turning", "thread turning", "groove turning", "boring turning", "custom turning", "probe", "wire",
     "water jet", "laser cutter", "welder", "grinder", "form mill", "plasma cutter", "marker", "thread mill"];
   return names[type] === undefined ? "unspecified" : names[type];
@@ -1606,6 +1606,17 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed) {
   var t = new Tool(number, diameter, name);
   t.spindleRPM = __spindle;
   var s = new __Section(__sections.length, t, toolpathName);
+  // A milling tool's kind, from its name (postc's toolpaths give none).
+  var named = String(name).toLowerCase();
+  var kinds = [["ball", TOOL_MILLING_END_BALL], ["bull", TOOL_MILLING_END_BULLNOSE], ["chamfer", TOOL_MILLING_CHAMFER],
+    ["v-bit", TOOL_MILLING_CHAMFER], ["face", TOOL_MILLING_FACE], ["spot", TOOL_DRILL_SPOT], ["center drill", TOOL_DRILL_CENTER],
+    ["drill", TOOL_DRILL], ["tap", TOOL_TAP_RIGHT_HAND], ["ream", TOOL_REAMER], ["thread", TOOL_MILLING_THREAD]];
+  for (var k = 0; k < kinds.length; ++k) {
+    if (named.indexOf(kinds[k][0]) >= 0) {
+      t.type = kinds[k][1];
+      break;
+    }
+  }
   if (jet) {
     // A jet tool's kind, from its name (postc's toolpaths say only "jet").
     var lower = String(name).toLowerCase();
@@ -1614,7 +1625,10 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed) {
     s.type = TYPE_JET;
   }
   s.parameters["operation-comment"] = toolpathName;
+  s.parameters["operation:tool_type"] = getToolTypeName(t.type);
+  s.parameters["operation:tool_number"] = number;
   s.parameters["operation:tool_diameter"] = diameter;
+  s.parameters["operation:tool_clockwise"] = 1;
   __sections.push(s);
   __fusion_end_section();
   __section = s;
@@ -1649,7 +1663,9 @@ function __fusion_begin(x, y, z) {
   spindleSpeed = tool.spindleRPM;
   movement = MOVEMENT_RAPID;
   radiusCompensation = RADIUS_COMPENSATION_OFF;
-  onParameter("operation-comment", s.name);
+  for (var name in s.parameters) {
+    onParameter(name, s.parameters[name]);
+  }
   onSection();
 }
 
