@@ -11,7 +11,7 @@ use super::{DialectArg, Failed};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Posts (.pp, .js, .VcPost, .ron) and toolpaths (.apt, .cl, .cls, .ron, .jsonl, ...).
+    /// Posts (.pp, .js, .cps, .VcPost, .ron) and toolpaths (.apt, .cl, .cls, .ron, .jsonl, ...).
     #[arg(required = true)]
     files: Vec<PathBuf>,
     /// Diagnostics for people, or one JSON array of {file, severity, code, message, line, column, end_line, end_column}.
