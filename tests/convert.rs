@@ -82,7 +82,7 @@ fn cases() -> Vec<Case> {
                 cases.push(Case { post, origin: "real", toolpaths: standard.clone() });
             }
         }
-        None => eprintln!("convert: ../shared/corpus/vectric is absent; the real Vectric posts are skipped"),
+        None => crate::support::referee_missing("convert", "../shared/corpus/vectric"),
     }
     cases
 }

@@ -26,8 +26,8 @@
 //!   toolpath (modal memory is cleared as a toolpath starts, so its first
 //!   move prints every word); so does the first move after a TOOLCHANGE.
 //!
-//! When `../shared/vcarve-real` is not there the test prints "skipped" and
-//! passes.
+//! When `../shared/vcarve-real` is not there the test fails under `CI=true`
+//! and is skipped, with a message, elsewhere.
 
 use crate::support;
 use std::path::{Path, PathBuf};
@@ -260,6 +260,7 @@ fn hunks(real: &[&[u8]], ours: &[&[u8]]) -> Vec<(usize, usize, usize, usize)> {
 fn vcarve_programs_reproduce_line_for_line() {
     let dir = shared();
     if !dir.join(POST).is_file() {
+        crate::support::referee_missing("vcarve_real", "../shared/vcarve-real");
         println!("skipped: ../shared/vcarve-real not found");
         return;
     }

@@ -896,7 +896,7 @@ function __Section(id, theTool, name) {
   this.tool = theTool;
   this.name = name;
   this.workOffset = 0;
-  this.wcs = "";
+  this.wcs = "G54";
   this.workPlane = new Matrix();
   this.workOrigin = new Vector(0, 0, 0);
   this.spindle = SPINDLE_PRIMARY;
