@@ -512,8 +512,8 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
             };
             Value::Num(found.map_or(-1.0, |i| i as f64))
         }
-        "toUpperCase" => Value::text(&t.to_uppercase()),
-        "toLowerCase" => Value::text(&t.to_lowercase()),
+        "toUpperCase" | "toLocaleUpperCase" => Value::text(&t.to_uppercase()),
+        "toLowerCase" | "toLocaleLowerCase" => Value::text(&t.to_lowercase()),
         "trim" => Value::text(t.trim()),
         "split" => {
             let parts: Vec<Value> = match arg(0) {

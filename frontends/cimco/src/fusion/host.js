@@ -1137,6 +1137,29 @@ function MachineConfiguration() {
   this.setCenterPositionZ = function (v) {};
   this.setRetractPlane = function (v) {};
   this.setModel = function (v) { this.model = v; };
+  // Settings a post gives the machine for Fusion's simulation and retracts:
+  // kept, and given back by their getters.
+  this.settings = {};
+  var kept = ["SafeRetractFeedrate", "SafePlungeFeedrate", "MaximumFeedrate", "MaximumCuttingFeedrate", "Control",
+    "RewindStockExpansion", "Wire", "Jet"];
+  for (var i = 0; i < kept.length; ++i) {
+    (function (machine, name) {
+      machine["set" + name] = function (v) { machine.settings[name] = v; };
+      machine["get" + name] = function () { return machine.settings[name] === undefined ? 0 : machine.settings[name]; };
+    })(this, kept[i]);
+  }
+  this.getNumberOfTools = function () { return 0; };
+  this.isABCSupported = function (abc) { return true; };
+  this.getTableABC = function (abc) { return new Vector(0, 0, 0); };
+  this.getOptimizedPosition = function (p, abc, tcp, options, verbose) { return __vector(p); };
+  this.getABCByDirectionBoth = function (d) { return [new Vector(0, 0, 0), new Vector(0, 0, 0)]; };
+  this.getRetractPosition = function () { return new Vector(0, 0, 0); };
+  this.getMultiAxisFeedrateMode = function () { return FEED_FPM; };
+  this.getMultiAxisFeedrateOutputTolerance = function () { return 0; };
+  this.getMultiAxisFeedrateMaximum = function () { return 0; };
+  this.getMultiAxisFeedrateInverseTimeUnits = function () { return INVERSE_MINUTES; };
+  this.getMultiAxisFeedrateDPMType = function () { return DPM_STANDARD; };
+  this.getMultiAxisFeedrateBpwRatio = function () { return 1; };
   this.isHeadConfiguration = function () { return false; };
   this.isTableConfiguration = function () { return false; };
   this.getVendor = function () { return this.vendor; };
@@ -1503,6 +1526,8 @@ function isPolarModeActive() { return false; }
 function setWriteInvocations(on) {}
 function setWriteStack(on) {}
 var POLAR_MODE_OFF = 0;
+// The model image a setup sheet shows: none.
+var modelImagePath = "";
 var COMMAND_DISPLAY_MESSAGE = 44;
 
 // ---- Dates: the job's date and time (`--set date=`, `--set time=`) ----
