@@ -141,3 +141,30 @@ fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
         "{good} corpus Fusion posts post and verify the milling job, fewer than {AT_LEAST}:\n{summary}"
     );
 }
+
+/// A Fusion post's IR nests deeply (the host's and the post's JavaScript):
+/// `convert --to ron` writes it, and postc reads that RON back and posts
+/// the same program as the `.cps`.
+#[test]
+fn a_fusion_post_as_ron_reads_back_and_posts_the_same() {
+    let post = shared().join("OpenPostProject__haas/haas.cps");
+    if !post.is_file() {
+        support::referee_missing("fusion_corpus", "../shared/corpus/fusion");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-ron-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let (ron, from_ron, from_cps) = (tmp.join("haas.ron"), tmp.join("ron.nc"), tmp.join("cps.nc"));
+    let job = support::corpus().join("toolpaths/arcs_mm.ron");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let convert = support::postc(&["convert", "-q", &s(&post), "--to", "ron", "-o", &s(&ron)]);
+    assert!(convert.status.success(), "{}", support::said(&convert));
+    for (from, out) in [(&ron, &from_ron), (&post, &from_cps)] {
+        let run = support::postc(&["post", "-q", &s(from), &s(&job), "-o", &s(out)]);
+        assert!(run.status.success(), "{}: {}", from.display(), support::said(&run));
+    }
+    let (a, b) =
+        (std::fs::read(&from_cps).expect("the .cps program"), std::fs::read(&from_ron).expect("the RON program"));
+    let _ = std::fs::remove_dir_all(&tmp);
+    assert!(a == b, "{}", support::diff(&a, &b));
+}

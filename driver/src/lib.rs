@@ -252,11 +252,21 @@ fn regexes_run(post: &Post, ron_file: Option<FileId>, sources: &SourceMap, diagn
     }
 }
 
+/// How deeply a RON post's items may nest.
+const RON_DEPTH: usize = 4096;
+/// The stack a RON post is read on: room for [`RON_DEPTH`] levels of the
+/// reader's recursion in a debug build.
+const RON_STACK: usize = 512 << 20;
+
 /// A post written directly as IR in RON.
 fn compile_ron(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> Compiled {
     let text = String::from_utf8_lossy(bytes).into_owned();
     let file = sources.add(path.display().to_string(), text.clone());
-    match ron::from_str::<Post>(&text) {
+    // The IR of a large post nests deeply (a JavaScript post's `else if`
+    // chains and expressions): RON reads it to RON_DEPTH levels, on a
+    // stack of its own big enough for them.
+    let options = ron::Options::default().with_recursion_limit(RON_DEPTH);
+    match stacker::grow(RON_STACK, || options.from_str::<Post>(&text)) {
         Ok(post) => {
             let mut compiled = Compiled { post: Some(post), diagnostics: Vec::new() };
             validated(&mut compiled, Some(file), sources);
