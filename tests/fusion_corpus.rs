@@ -16,12 +16,13 @@ use crate::support;
 /// Posts that post the milling job and pass verification today.
 const AT_LEAST: usize = 96;
 
-fn shared() -> PathBuf {
+/// The Fusion corpus beside the checkout.
+pub fn shared() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/fusion")
 }
 
 /// Every `.cps` under the corpus folder, sorted.
-fn posts(dir: &Path) -> Vec<PathBuf> {
+pub fn posts(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {

@@ -6,31 +6,11 @@
 //! engine disagreeing with V8, or the event order disagreeing with a second
 //! reading of the documentation.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
+use crate::fusion_corpus::{posts, shared};
 use crate::support;
-
-fn shared() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/fusion")
-}
-
-fn posts(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in std::fs::read_dir(&d).expect("list the Fusion corpus") {
-            let path = entry.expect("directory entry").path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("cps")) {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 #[test]
 fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs() {
