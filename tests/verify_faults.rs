@@ -317,6 +317,25 @@ fn the_hand_written_program_verifies_clean() {
     assert!(found.is_empty(), "{found:#?}");
 }
 
+/// Under G95 a feed is per spindle revolution: F times S is the feed a
+/// minute the toolpath gives (F0.01875 at S16000 is 300 mm/min).
+#[test]
+fn feeds_per_revolution_are_read_with_the_spindle_speed() {
+    let per_rev = [
+        (1, "N10 G21 G95 G90 G17 (JOB)"),
+        (6, "N60 G1 Z-2 F0.01875"),
+        (7, "N70 X30 F0.0625"),
+        (15, "N150 G1 Z-1 F0.01111"),
+        (16, "N160 X80 F0.04444"),
+    ];
+    let found = check(&program_with(&per_rev), Controller::LinuxCnc);
+    assert!(found.is_empty(), "{found:#?}");
+    // The per-minute number under G95 is 16,000 times too fast.
+    let mut wrong = per_rev.to_vec();
+    wrong[2] = (7, "N70 X30 F1000");
+    caught(&program_with(&wrong), Controller::LinuxCnc, "VF033", 8);
+}
+
 fn caught(program: &str, controller: Controller, code: &str, line: usize) {
     let found = check(program, controller);
     assert_caught(program, &found, code, line);

@@ -187,6 +187,10 @@ struct Run<'a> {
     /// The feed's rounding as printed, mm/min.
     feed_step: f64,
     inverse_time: bool,
+    /// G95: F is a feed per spindle revolution.
+    per_rev: bool,
+    /// The last S word, revolutions a minute.
+    speed: f64,
     spindle: bool,
     pos: [f64; 3],
     cycle_initial_z: f64,
@@ -257,6 +261,8 @@ pub fn replay(
         feed: f64::NAN,
         feed_step: 0.0,
         inverse_time: false,
+        per_rev: false,
+        speed: f64::NAN,
         spindle: false,
         pos: [f64::NAN; 3],
         cycle_initial_z: f64::NAN,
@@ -935,8 +941,18 @@ impl Run<'_> {
                 910 => self.absolute = false,
                 901 => self.arc_absolute = true,
                 911 => self.arc_absolute = false,
-                930 => self.inverse_time = true,
-                940 | 950 => self.inverse_time = false,
+                930 => {
+                    self.inverse_time = true;
+                    self.per_rev = false;
+                }
+                940 => {
+                    self.inverse_time = false;
+                    self.per_rev = false;
+                }
+                950 => {
+                    self.inverse_time = false;
+                    self.per_rev = true;
+                }
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
                 920..=923 => {
@@ -973,6 +989,9 @@ impl Run<'_> {
             self.feed = f.value * self.unit / self.settings.feed_multiplier;
             self.feed_step = 1.0 / grammar::pow10(u32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
+        if let Some(s) = b.get(b'S') {
+            self.speed = s.value;
+        }
         for &(code, start, end) in &b.m[..b.ms] {
             match tenths(code) {
                 30 | 40 | 130 | 140 | 1060 | 620 | 640 => {
@@ -990,6 +1009,7 @@ impl Run<'_> {
                     self.motion = None;
                     self.absolute = true;
                     self.inverse_time = false;
+                    self.per_rev = false;
                 }
                 _ => {}
             }
@@ -1666,17 +1686,30 @@ impl Run<'_> {
         if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
             return;
         }
-        let (got, want) = (self.feed, e.feed);
-        if (got - want).abs() > (0.005 * want).max(0.5 * self.feed_step + 1e-6) && self.feed_reported != (got, want) {
+        // Under G95 the feed a minute is F times the spindle speed.
+        let per_minute = if self.per_rev { self.speed.abs() } else { 1.0 };
+        if !per_minute.is_finite() {
+            return;
+        }
+        let (got, want) = (self.feed * per_minute, e.feed);
+        let step = self.feed_step * per_minute;
+        if (got - want).abs() > (0.005 * want).max(0.5 * step + 1e-6) && self.feed_reported != (got, want) {
             self.feed_reported = (got, want);
-            let per_unit = if self.unit > 1.0 { "in/min" } else { "mm/min" };
+            let per_unit = match (self.per_rev, self.unit > 1.0) {
+                (true, true) => "in/rev times the spindle's S (G95)",
+                (true, false) => "mm/rev times the spindle's S (G95)",
+                (false, true) => "in/min (G94)",
+                (false, false) => "mm/min (G94)",
+            };
             self.motion_finding(
                 Severity::Error,
                 codes::VF033.code,
                 format!("this cut runs at {:.1} mm/min; the toolpath's feed is {want:.1} mm/min", got),
                 p,
                 Some(e),
-                Some(format!("the program's F is read in {per_unit} (G94); check the post's feed variable, its units and multiplier")),
+                Some(format!(
+                    "the program's F is read in {per_unit}; check the post's feed variable, its units and multiplier"
+                )),
             );
         }
     }
