@@ -100,8 +100,9 @@ fn referee(runs: &[(PathBuf, Post)], dir: &Path, failures: &mut Vec<String>) -> 
 /// JavaScript corners Node.js and postc once disagreed on (found while
 /// writing the field-style posts): `lastIndexOf` from an index, the
 /// order of `for ... in` over keys that are array indices, whole
-/// numbers in another radix, and chains of `+` that add numbers until a
-/// text joins them (built in one buffer by the runtime).
+/// numbers in another radix, chains of `+` that add numbers until a
+/// text joins them (built in one buffer by the runtime), and the text
+/// methods of ES2015 that real posts call (`startsWith`, `padStart` ...).
 #[test]
 fn javascript_corners_print_as_node_prints() {
     if node_or_skip("cimco_node").is_none() {
@@ -121,7 +122,13 @@ function onOpen(isClipboard) {
 }
 function chain(p) { return p + 1 + "a" + p + 2 + "|" + (p + 1) + (p & 1) + "b"; }
 function onLinear(x, y, z, movement) { return ""; }
-function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n"; }
+function es2015(t) {
+    return [t.startsWith("ab"), t.startsWith("b", 1), t.startsWith("x"), t.endsWith("ab"), t.endsWith("a", 1),
+        t.includes(" a"), t.includes("ab", 7), t.includes(""), "5".padStart(3, "0"), "5".padStart(4, "ab"),
+        "5".padEnd(3), "abc".padStart(2, "x"), "ab".repeat(3), "[" + "  x ".trimStart() + "]",
+        "[" + "  x ".trimEnd() + "]"].join(",");
+}
+function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n(" + es2015("ab ab ab") + ")\n"; }
 "#,
     )
     .expect("write the post");

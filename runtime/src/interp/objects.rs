@@ -515,6 +515,50 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
         "toUpperCase" | "toLocaleUpperCase" => Value::text(&t.to_uppercase()),
         "toLowerCase" | "toLocaleLowerCase" => Value::text(&t.to_lowercase()),
         "trim" => Value::text(t.trim()),
+        "trimStart" | "trimLeft" => Value::text(t.trim_start()),
+        "trimEnd" | "trimRight" => Value::text(t.trim_end()),
+        "startsWith" | "endsWith" | "includes" => {
+            let needle: Vec<char> = key_text(&arg(0)).chars().collect();
+            let fits = |i: usize| i + needle.len() <= len && chars[i..i + needle.len()] == needle[..];
+            Value::Bool(match name {
+                "startsWith" => fits(int(arg(1), 0.0).clamp(0.0, len as f64) as usize),
+                "endsWith" => {
+                    let end = int(arg(1), len as f64).clamp(0.0, len as f64) as usize;
+                    end >= needle.len() && fits(end - needle.len())
+                }
+                _ => (int(arg(1), 0.0).clamp(0.0, len as f64) as usize..=len).any(fits),
+            })
+        }
+        "repeat" => {
+            let n = int(arg(0), 0.0);
+            if !(0.0..f64::INFINITY).contains(&n) {
+                return Err(Box::new(Diagnostic::error(
+                    TYPE_ERROR,
+                    format!("RangeError: Invalid count value: {}", js::number_to_string(n)),
+                )));
+            }
+            let bytes = (n as usize).saturating_mul(t.len());
+            if bytes > crate::interp::MAX_TEXT_BYTES {
+                return Err(Box::new(crate::interp::text_budget_error(bytes)));
+            }
+            Value::text(&t.repeat(n as usize))
+        }
+        "padStart" | "padEnd" => {
+            let target = int(arg(0), 0.0).max(0.0) as usize;
+            let fill: Vec<char> = match arg(1) {
+                Value::Undefined => vec![' '],
+                v => key_text(&v).chars().collect(),
+            };
+            if target > crate::interp::MAX_TEXT_BYTES {
+                return Err(Box::new(crate::interp::text_budget_error(target)));
+            }
+            if target <= len || fill.is_empty() {
+                Value::Text(t.clone())
+            } else {
+                let pad: String = fill.iter().cycle().take(target - len).collect();
+                Value::text(&if name == "padStart" { pad + t.as_ref() } else { t.to_string() + &pad })
+            }
+        }
         "split" => {
             let parts: Vec<Value> = match arg(0) {
                 Value::Undefined => vec![Value::Text(t.clone())],
