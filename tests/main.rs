@@ -28,6 +28,7 @@ mod docs;
 mod exact_arcs;
 mod fusion_corpus;
 mod fusion_node;
+mod fusion_real;
 mod fuzz;
 mod jsonl_fidelity;
 mod lint_corpus;

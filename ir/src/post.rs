@@ -221,6 +221,10 @@ pub struct OutputOptions {
     /// Arc words computed from the printed start and end points so the
     /// radius at both ends agrees after rounding.
     pub exact_arcs: bool,
+    /// Arcs in the ZX and YZ planes reach the arc sections (with the
+    /// `ARC_PLANE` quantity) instead of being linearized: for posts that
+    /// write G18 and G19 arcs themselves (Fusion posts).
+    pub arcs_in_every_plane: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
@@ -273,6 +277,7 @@ impl Default for OutputOptions {
             inverse_time_feed: false,
             arc_tolerance: 0.01,
             exact_arcs: false,
+            arcs_in_every_plane: false,
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,

@@ -97,6 +97,14 @@ quantities! {
     /// 1 when the current tool is a jet tool (laser, plasma, waterjet), else 0
     /// (postc's; Fusion posts read it as the section's type).
     JetTool = "JET_TOOL", Plain;
+    /// The cutter compensation side of the last CutterComp event: 0 off,
+    /// 1 left, 2 right.
+    CompSide = "COMP_SIDE", Plain;
+    /// The coolant of the last Coolant event: 0 off, 1 flood, 2 mist,
+    /// 3 through the tool, 4 air.
+    CoolantKind = "COOLANT_KIND", Plain;
+    /// The plane of the arc being printed: 0 XY, 1 ZX, 2 YZ.
+    ArcPlane = "ARC_PLANE", Plain;
     /// Tool number.
     Tool = "T", Plain;
     /// Previous tool number.

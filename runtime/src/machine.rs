@@ -13,7 +13,7 @@
 //! `G0 Z0` for a home Z the job never gave). `docs/vectric.md` lists every
 //! quantity and what it prints without a source.
 
-use postc_ir::event::{Job, Tool, ToolpathStart, ZOrigin};
+use postc_ir::event::{CompSide, Coolant, Job, Plane, Tool, ToolpathStart, ZOrigin};
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, WrappedAxis};
 use postc_ir::{Quantity, Units};
 
@@ -75,6 +75,10 @@ pub struct MachineState {
     pub file_ext: String,
     /// Cutter compensation register a CutterComp event named.
     pub comp_register: Option<f64>,
+    /// The side of the last CutterComp event.
+    pub comp_side: CompSide,
+    /// The coolant of the last Coolant event.
+    pub coolant: Coolant,
     /// `[TOOLS_USED]` and `[TOOLPATHS_OUTPUT]`: the job's lists, joined.
     pub tools_used: String,
     pub toolpaths_output: String,
@@ -117,6 +121,8 @@ impl MachineState {
             file_dir: String::new(),
             file_ext: String::new(),
             comp_register: None,
+            comp_side: CompSide::Off,
+            coolant: Coolant::Off,
             tools_used: String::new(),
             toolpaths_output: String::new(),
             spindle_range,
@@ -211,6 +217,23 @@ impl MachineState {
             Quantity::SpindleSpeed => self.spindle_output(),
             Quantity::Power => self.jet_power(),
             Quantity::JetTool => f64::from(u8::from(self.has_tool && self.tool.jet)),
+            Quantity::ArcPlane => match self.arc.plane {
+                Plane::Xy => 0.0,
+                Plane::Zx => 1.0,
+                Plane::Yz => 2.0,
+            },
+            Quantity::CompSide => match self.comp_side {
+                CompSide::Off => 0.0,
+                CompSide::Left => 1.0,
+                CompSide::Right => 2.0,
+            },
+            Quantity::CoolantKind => match self.coolant {
+                Coolant::Off => 0.0,
+                Coolant::Flood => 1.0,
+                Coolant::Mist => 2.0,
+                Coolant::Through => 3.0,
+                Coolant::Air => 4.0,
+            },
             Quantity::Tool => tool(f64::from(self.tool.number)),
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),

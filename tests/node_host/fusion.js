@@ -44,7 +44,12 @@ function Referee(postSource, postName) {
     this.toolChanged = false;
     this.lastTool = null;
     this.spindle = 0;
+    this.coolant = 0;
 }
+
+// The coolant kinds as the host numbers them (COOLANT_OFF ... COOLANT_AIR).
+var COOLANT_KINDS = { Off: 0, Flood: 1, Mist: 2, Through: 3, Air: 4 };
+var COMP_SIDES = { Off: 0, Left: 1, Right: 2 };
 
 Referee.prototype.call = function (name, args) {
     this.ctx[name].apply(null, args);
@@ -56,7 +61,7 @@ Referee.prototype.spindleTool = function () {
 
 Referee.prototype.toolpathArgs = function () {
     var t = this.tool;
-    return [t.number, t.diameter, t.name, this.toolpathName, !!t.jet, this.spindle];
+    return [t.number, t.diameter, t.name, this.toolpathName, !!t.jet, this.spindle, t.notes, this.coolant, t.lengthOffset];
 };
 
 Referee.prototype.beginToolpath = function () {
@@ -65,9 +70,14 @@ Referee.prototype.beginToolpath = function () {
         var j = this.job;
         var file = j.file || {};
         this.call("__fusion_toolpath", this.toolpathArgs());
-        this.call("__fusion_open", [
-            (j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || "",
-        ]);
+        var m = j.material;
+        var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
+        this.call(
+            "__fusion_open",
+            [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""].concat(
+                stock
+            )
+        );
         this.spindleOn = this.spindleTool();
         if (this.spindleOn) {
             this.call("__fusion_spindle", [this.spindle]);
@@ -130,7 +140,7 @@ Referee.prototype.arc = function (a) {
     var intent = a.intent || "Cut";
     var slow = intent === "Plunge" || intent === "Retract";
     this.pos = [a.x, a.y, a.z];
-    this.call("__fusion_circular", [cw, cx, cy, cz, a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r]);
+    this.call("__fusion_circular", [cw, cx, cy, cz, a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r, 0]);
 };
 
 Referee.prototype.event = function (e) {
@@ -147,7 +157,8 @@ Referee.prototype.event = function (e) {
             this.toolChanged = this.lastTool !== d.number;
             this.tool = {
                 number: d.number || 0, name: d.name || "", diameter: d.diameter || 0, jet: !!d.jet,
-                cut_feed: d.cut_feed || 0, plunge_feed: d.plunge_feed || 0,
+                cut_feed: d.cut_feed || 0, plunge_feed: d.plunge_feed || 0, notes: d.notes || "",
+                lengthOffset: d.length_offset != null ? d.length_offset : d.number || 0,
             };
             this.spindle = d.spindle_speed || 0;
             break;
@@ -192,6 +203,19 @@ Referee.prototype.event = function (e) {
         case "JetOff":
             this.ensureStarted();
             this.call("__fusion_power", [false]);
+            break;
+        case "Coolant": {
+            var c = typeof d === "string" ? d : d.coolant;
+            this.coolant = COOLANT_KINDS[c] || 0;
+            if (this.started) {
+                this.call("__fusion_coolant", [this.coolant]);
+            }
+            break;
+        }
+        case "CutterComp":
+            if (this.started) {
+                this.call("__fusion_compensation", [COMP_SIDES[d.side || "Off"]]);
+            }
             break;
         case "Comment":
             if (this.started) {

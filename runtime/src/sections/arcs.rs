@@ -29,7 +29,8 @@ impl SectionDispatch {
         // cannot move it, so wrapped arcs are cut into feed moves, as for
         // posts without arc sections.
         let wrapped = options.rotary_wrap.is_some();
-        if too_big || wrapped || a.plane != Plane::Xy || !geometry.radius.is_finite() || geometry.radius <= 0.0 {
+        let plane_written = a.plane == Plane::Xy || options.arcs_in_every_plane;
+        if too_big || wrapped || !plane_written || !geometry.radius.is_finite() || geometry.radius <= 0.0 {
             return self.linearize(eng, &geometry, a.intent, feed, tolerance);
         }
         let Some((family, section)) = self.arc_section(eng, &geometry, a) else {

@@ -234,7 +234,8 @@ impl SectionDispatch {
                 self.ensure_started(eng)?;
                 eng.run_section(Section::JetToolPower)?;
             }
-            Event::Coolant(_) => {
+            Event::Coolant(c) => {
+                eng.machine.coolant = c.coolant;
                 if self.started && !eng.run_section(Section::Coolant)? {
                     unwritten(eng, "a coolant change", "the coolant stays as it was", Section::Coolant);
                 }
@@ -242,6 +243,7 @@ impl SectionDispatch {
             Event::CutterComp(c) => {
                 let tool = &eng.machine.tool;
                 eng.machine.comp_register = Some(f64::from(c.register.or(tool.diameter_offset).unwrap_or(tool.number)));
+                eng.machine.comp_side = c.side;
                 if self.started && !eng.run_section(Section::CutterComp)? {
                     unwritten(
                         eng,

@@ -603,8 +603,9 @@ function Variable(specifiers, format) {
   this.format = function (value) {
     if (!this.enabled) { return ""; }
     var text = this.formatter.format(value);
-    if (text == this.last && !this.force) { return ""; }
-    var changed = this.last !== undefined;
+    // The first value a variable prints is a change too (docs/fusion.md).
+    var changed = text !== this.last;
+    if (!changed && !this.force) { return ""; }
     this.last = text;
     this.current = value;
     if (changed && this.onchange !== undefined) { this.onchange(); }
@@ -639,8 +640,8 @@ function Modal(specifiers, format) {
   this.current = undefined;
   this.format = function (value) {
     var text = (typeof value == "number" && this.formatter !== undefined) ? this.formatter.format(value) : String(value);
-    if (text == this.last && !this.force) { return ""; }
-    var changed = this.last !== undefined;
+    var changed = text !== this.last;
+    if (!changed && !this.force) { return ""; }
     this.last = text;
     this.current = value;
     if (changed && this.onchange !== undefined) { this.onchange(); }
@@ -795,6 +796,10 @@ function isTextSupported(text) { return true; }
 // ---- Messages ----
 function error(message) { throw new Error(message); }
 function warning(message) {}
+// A dialog in Fusion when it may interact; a batch run has none.
+function alert(title, description) {}
+function isInteractionAllowed() { return false; }
+function getRadiusCompensation() { return radiusCompensation; }
 var __warnedOnce = {};
 function warningOnce(message, id) { __warnedOnce[id] = true; }
 function log(message) {}
@@ -1053,8 +1058,11 @@ function getFrameDirection(d) { return __vector(d); }
 function getCurrentDirection() { return new Vector(0, 0, 1); }
 function getCurrentToolAxis() { return new Vector(0, 0, 1); }
 function setCurrentABC(abc) {}
-function getWorkpiece() { return { lower: new Vector(0, 0, 0), upper: new Vector(0, 0, 0) }; }
-function isWorkpieceDefined() { return false; }
+var __workpiece = undefined;
+function getWorkpiece() {
+  return __workpiece !== undefined ? __workpiece : { lower: new Vector(0, 0, 0), upper: new Vector(0, 0, 0) };
+}
+function isWorkpieceDefined() { return __workpiece !== undefined; }
 function getMachineConfiguration() { return machineConfiguration; }
 function setMachineConfiguration(machine) { machineConfiguration = machine; }
 function optimizeMachineAngles() {}
@@ -1080,8 +1088,12 @@ function isMilling() { return currentSection === undefined || currentSection.typ
 function isTurning() { return currentSection !== undefined && currentSection.type == TYPE_TURNING; }
 function isJet() { return currentSection !== undefined && currentSection.type == TYPE_JET; }
 function skipRemainingSection() {}
-function getCommandStringId(command) { return "COMMAND_" + command; }
-function getMovementStringId(m, jet) { return "MOVEMENT_" + m; }
+// The names of the command constants, by value.
+var __commandNames = {"-1": "COMMAND_INVALID", "0": "COMMAND_STOP", "1": "COMMAND_OPTIONAL_STOP", "2": "COMMAND_END", "3": "COMMAND_SPINDLE_CLOCKWISE", "4": "COMMAND_SPINDLE_COUNTERCLOCKWISE", "5": "COMMAND_START_SPINDLE", "6": "COMMAND_STOP_SPINDLE", "7": "COMMAND_ORIENTATE_SPINDLE", "8": "COMMAND_LOAD_TOOL", "9": "COMMAND_COOLANT_ON", "10": "COMMAND_COOLANT_OFF", "11": "COMMAND_ACTIVATE_SPEED_FEED_SYNCHRONIZATION", "12": "COMMAND_DEACTIVATE_SPEED_FEED_SYNCHRONIZATION", "13": "COMMAND_LOCK_MULTI_AXIS", "14": "COMMAND_UNLOCK_MULTI_AXIS", "15": "COMMAND_EXACT_STOP", "16": "COMMAND_START_CHIP_TRANSPORT", "17": "COMMAND_STOP_CHIP_TRANSPORT", "18": "COMMAND_OPEN_DOOR", "19": "COMMAND_CLOSE_DOOR", "20": "COMMAND_BREAK_CONTROL", "21": "COMMAND_TOOL_MEASURE", "22": "COMMAND_CALIBRATE", "23": "COMMAND_VERIFY", "24": "COMMAND_CLEAN", "25": "COMMAND_ALARM", "26": "COMMAND_ALERT", "27": "COMMAND_CHANGE_PALLET", "28": "COMMAND_POWER_ON", "29": "COMMAND_POWER_OFF", "30": "COMMAND_MAIN_CHUCK_OPEN", "31": "COMMAND_MAIN_CHUCK_CLOSE", "32": "COMMAND_SECONDARY_CHUCK_OPEN", "33": "COMMAND_SECONDARY_CHUCK_CLOSE", "34": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_ACTIVATE", "35": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_DEACTIVATE", "36": "COMMAND_SYNC_CHANNELS", "37": "COMMAND_PROBE_ON", "38": "COMMAND_PROBE_OFF", "44": "COMMAND_DISPLAY_MESSAGE"};
+function getCommandStringId(command) {
+  var name = __commandNames[command];
+  return name === undefined ? "COMMAND_" + command : name;
+}
 
 // An axis a machine without rotary axes does not have.
 function __Axis() {
@@ -1207,19 +1219,42 @@ function getCircularStartRadius() { return __circular.radius; }
 function getCircularRadius() { return __circular.radius; }
 function getCircularSweep() { return __circular.sweep; }
 function getCircularChordLength() { return Vector.diff(__circular.end, __circular.start).getLength(); }
-function getCircularNormal() { return new Vector(0, 0, __circular.clockwise ? -1 : 1); }
+// The axes of a circular plane: the first two span it (an arc turns
+// from the first towards the second counter-clockwise, as G2/G3 under
+// G17, G18 and G19), the third is its normal.
+function __planeAxes(plane) {
+  return plane == PLANE_ZX ? ["z", "x", "y"] : (plane == PLANE_YZ ? ["y", "z", "x"] : ["x", "y", "z"]);
+}
+// A vector of the plane's coordinates (u, v, w).
+function __fromPlane(plane, u, v, w) {
+  var a = __planeAxes(plane);
+  var p = {};
+  p[a[0]] = u;
+  p[a[1]] = v;
+  p[a[2]] = w;
+  return new Vector(p.x, p.y, p.z);
+}
+function getCircularNormal() {
+  var n = __circular.clockwise ? -1 : 1;
+  return __fromPlane(__circular.plane, 0, 0, n);
+}
 function getPositionU(u) {
   var c = __circular;
-  var angle = Math.atan2(c.start.y - c.center.y, c.start.x - c.center.x) + (c.clockwise ? -1 : 1) * c.sweep * u;
-  return new Vector(c.center.x + c.radius * Math.cos(angle), c.center.y + c.radius * Math.sin(angle),
-    c.start.z + (c.end.z - c.start.z) * u);
+  var a = __planeAxes(c.plane);
+  var angle = Math.atan2(c.start[a[1]] - c.center[a[1]], c.start[a[0]] - c.center[a[0]]) +
+    (c.clockwise ? -1 : 1) * c.sweep * u;
+  return __fromPlane(c.plane, c.center[a[0]] + c.radius * Math.cos(angle), c.center[a[1]] + c.radius * Math.sin(angle),
+    c.start[a[2]] + (c.end[a[2]] - c.start[a[2]]) * u);
 }
 function isFullCircle() { return Math.abs(__circular.sweep - 2 * Math.PI) < 1e-9; }
-function isHelical() { return Math.abs(__circular.end.z - __circular.start.z) > 1e-9; }
+function getHelicalDistance() {
+  var w = __planeAxes(__circular.plane)[2];
+  return __circular.end[w] - __circular.start[w];
+}
+function isHelical() { return Math.abs(getHelicalDistance()) > 1e-9; }
 function isSpiral() { return false; }
 function isClockwise() { return __circular.clockwise; }
-function getHelicalOffset() { return new Vector(0, 0, __circular.end.z - __circular.start.z); }
-function getHelicalDistance() { return __circular.end.z - __circular.start.z; }
+function getHelicalOffset() { return __fromPlane(__circular.plane, 0, 0, getHelicalDistance()); }
 function getHelicalPitch() {
   return __circular.sweep == 0 ? 0 : Math.abs(getHelicalDistance()) * 2 * Math.PI / __circular.sweep;
 }
@@ -1245,6 +1280,28 @@ function isFinite(v) { var n = Number(v); return n - n == 0; }
 // ---- Tables, colours, files ----
 // `new Table(values, {initial, force}, message)`: `lookup(id)` is the
 // value for `id` (counted from `initial`), or an error with `message`.
+// Text with `${name}` fields that `substitute(values)` fills from an
+// object's properties; a field with no property stays as written.
+function Template(text) {
+  this.text = String(text);
+  this.substitute = function (values) {
+    var out = "";
+    var rest = this.text;
+    for (;;) {
+      var open = rest.indexOf("${");
+      var close = open < 0 ? -1 : rest.indexOf("}", open + 2);
+      if (close < 0) { return out + rest; }
+      var key = rest.substring(open + 2, close);
+      var v = values === undefined || values === null ? undefined : values[key];
+      out += rest.substring(0, open) + (v === undefined ? rest.substring(open, close + 1) : v);
+      rest = rest.substring(close + 1);
+    }
+  };
+}
+
+// Files beside the program: a post that opens one stops when it does.
+function TextFile(path, write, encoding) { __unsupported("TextFile"); }
+
 function Table(values, specifiers, message) {
   this.values = values;
   this.initial = (specifiers !== undefined && specifiers.initial !== undefined) ? specifiers.initial : 0;
@@ -1612,24 +1669,50 @@ function onError(message) {}
 
 // ---- The engine: postc's events as Fusion's calls ----
 var __outputPath = "";
-function __fusion_open(mm, name, comment, date, time, path) {
+function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1) {
   __outputPath = __FileSystem_getCombinedPath(path, name + "." + extension);
   __date = date;
   __time = time;
   unit = mm ? MM : IN;
   outputUnit = unit;
-  if (name != "") { programComment = name; }
-  if (comment != "") { programComment = comment; }
+  // The program's number is the output file's name when that is a
+  // number, as Fusion names the file after it; the comment is the job's
+  // notes (docs/fusion.md, choice 9).
+  if (/^[0-9]+$/.test(name)) {
+    programName = name;
+  }
+  programComment = comment;
+  // The job's material block is Fusion's stock (docs/fusion.md).
+  var stock = [x0, y0, z0, x1, y1, z1];
+  var known = true;
+  for (var i = 0; i < stock.length; ++i) {
+    if (typeof stock[i] != "number" || !isFinite(stock[i])) { known = false; }
+  }
+  if (known) {
+    __workpiece = { lower: new Vector(x0, y0, z0), upper: new Vector(x1, y1, z1) };
+    var axes = ["x", "y", "z"];
+    for (var a = 0; a < 3; ++a) {
+      __parameters["stock-lower-" + axes[a]] = stock[a];
+      __parameters["stock-upper-" + axes[a]] = stock[a + 3];
+    }
+  }
   onOpen();
+  for (var p in __parameters) {
+    onParameter(p, __parameters[p]);
+  }
 }
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset) {
   __toolChanging = false;
   __spindle = jet ? 0 : speed;
   var t = new Tool(number, diameter, name);
   t.spindleRPM = __spindle;
+  // The toolpath's tool notes are Fusion's tool comment (docs/fusion.md).
+  t.comment = notes;
+  t.coolant = coolant;
+  if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
   var s = new __Section(__sections.length, t, toolpathName);
   // A milling tool's kind, from its name (postc's toolpaths give none).
   var named = String(name).toLowerCase();
@@ -1692,6 +1775,36 @@ function __fusion_begin(x, y, z) {
     onParameter(name, s.parameters[name]);
   }
   onSection();
+  if (__compensation != RADIUS_COMPENSATION_OFF) {
+    radiusCompensation = __compensation;
+    onRadiusCompensation();
+  }
+}
+
+// Cutter compensation: Fusion calls `onRadiusCompensation` before the
+// move that starts or ends it; one that comes before the section's first
+// move waits for `onSection`.
+var __compensation = RADIUS_COMPENSATION_OFF;
+function __fusion_compensation(side) {
+  __compensation = side;
+  if (__section !== undefined && __section.pending) { return; }
+  if (side != radiusCompensation) {
+    radiusCompensation = side;
+    onRadiusCompensation();
+  }
+}
+
+// Coolant is the operation's tool's: a change before the section's first
+// move is its tool's coolant; a change within a section is a command.
+function __fusion_coolant(coolant) {
+  if (__section !== undefined && __section.pending) {
+    __section.tool.coolant = coolant;
+    return;
+  }
+  if (currentSection !== undefined) {
+    tool.coolant = coolant;
+    onCommand(coolant == COOLANT_OFF ? COMMAND_COOLANT_OFF : COMMAND_COOLANT_ON);
+  }
 }
 
 // A tool change: its spindle speed belongs to the section that follows.
@@ -1737,11 +1850,12 @@ function __fusion_linear(x, y, z, feed, plunge) {
 // `minimumCircularRadius` .. `maximumCircularRadius`,
 // `minimumCircularSweep`, `minimumChordLength`; split into equal parts
 // when its sweep is over `maximumCircularSweep`; else one `onCircular`.
-function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius) {
+function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane) {
   __fusion_begin(x, y, z);
   movement = MOVEMENT_CUTTING;
   feedrate = feed;
   var start = __vector(__position);
+  var w = __planeAxes(plane)[2];
   var c = {
     clockwise: clockwise,
     center: new Vector(cx, cy, cz),
@@ -1749,12 +1863,14 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius) 
     end: new Vector(x, y, z),
     sweep: Math.abs(sweep),
     radius: radius,
-    plane: PLANE_XY,
+    plane: plane,
     feed: feed
   };
+  // A helix's centre is at its start along the plane's normal.
+  c.center[w] = start[w];
   __circular = c;
-  var helical = Math.abs(z - start.z) > 1e-9;
-  var planeAllowed = allowedCircularPlanes === undefined || (allowedCircularPlanes & (1 << PLANE_XY)) != 0;
+  var helical = isHelical();
+  var planeAllowed = allowedCircularPlanes === undefined || (allowedCircularPlanes & (1 << plane)) != 0;
   var chord = Vector.diff(c.end, start).getLength();
   var full = c.sweep > Math.PI && chord < 1e-9;
   if (!planeAllowed || (helical && !allowHelicalMoves) || radius < minimumCircularRadius ||
@@ -1765,17 +1881,19 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius) 
   var parts = Math.max(1, Math.ceil(c.sweep / maximumCircularSweep - 1e-9));
   for (var i = 1; i <= parts; ++i) {
     var p = i == parts ? c.end : getPositionU(i / parts);
+    var center = __vector(c.center);
+    center[w] = start[w] + (c.end[w] - start[w]) * (i - 1) / parts;
     __circular = {
       clockwise: clockwise,
-      center: new Vector(cx, cy, start.z + (z - start.z) * (i - 1) / parts),
+      center: center,
       start: __vector(__position),
       end: __vector(p),
       sweep: c.sweep / parts,
       radius: radius,
-      plane: PLANE_XY,
+      plane: plane,
       feed: feed
     };
-    onCircular(clockwise, cx, cy, cz, p.x, p.y, p.z, feed);
+    onCircular(clockwise, center.x, center.y, center.z, p.x, p.y, p.z, feed);
     __fusion_moved(p.x, p.y, p.z);
     __circular = c;
   }

@@ -6,15 +6,16 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
 //! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
-//! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius)` |
+//! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane)` |
 //! | `DWELL_MOVE`, `COMMENT` | `__fusion_dwell(seconds)`, `__fusion_comment(text)` |
+//! | `COOLANT`, `CUTTER_COMP` | `__fusion_coolant(kind)`, `__fusion_compensation(side)` |
 //! | `FOOTER` | `__fusion_close()` |
 //!
 //! A post that has a construct or host call the general form cannot
@@ -56,6 +57,8 @@ pub(crate) fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut
         post.info.file_extension = ext.clone();
     }
     post.options.forget_modal_at_toolpath_start = false;
+    // The host applies the post's `allowedCircularPlanes` itself.
+    post.options.arcs_in_every_plane = true;
     // The host's `EOL` (docs/fusion.md, choice 5).
     post.options.line_ending = b"\r\n".to_vec();
     post.handlers = handlers(&layout);
@@ -118,6 +121,9 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::ToolpathName),
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::JetTool)), Box::new(Expr::Number(0.0))),
                 q(Quantity::SpindleSpeed),
+                q(Quantity::ToolNotes),
+                q(Quantity::CoolantKind),
+                q(Quantity::LengthOffset),
             ],
         )
     };
@@ -138,6 +144,12 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
             q(Quantity::Date),
             q(Quantity::Time),
             q(Quantity::PathName),
+            q(Quantity::XMin),
+            q(Quantity::YMin),
+            q(Quantity::ZMin),
+            q(Quantity::XMax),
+            q(Quantity::YMax),
+            q(Quantity::ZMax),
         ],
     ));
     let linear = |plunge: bool| {
@@ -160,6 +172,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::Feed),
                 q(Quantity::Angle),
                 q(Quantity::Radius),
+                q(Quantity::ArcPlane),
             ],
         )
     };
@@ -184,6 +197,8 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::JetToolOff, call("__fusion_power", vec![Expr::Bool(false)]));
     add(Section::DwellMove, call("__fusion_dwell", vec![q(Quantity::DwellTime)]));
     add(Section::Comment, call("__fusion_comment", vec![q(Quantity::CommentText)]));
+    add(Section::Coolant, call("__fusion_coolant", vec![q(Quantity::CoolantKind)]));
+    add(Section::CutterComp, call("__fusion_compensation", vec![q(Quantity::CompSide)]));
     add(Section::Footer, call("__fusion_close", vec![]));
     for h in &mut hs {
         h.body = fold::stmts(std::mem::take(&mut h.body));

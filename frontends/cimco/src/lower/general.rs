@@ -1033,6 +1033,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     let a = self.args(args, pre)?;
                     array_of(a, at)?
                 }
+                ExprKind::Ident(n) if n == "Object" && self.is_host(n) && args.is_empty() => Ir::Object(vec![]),
                 ExprKind::Ident(n) if n == "RegExp" && self.is_host(n) => match args.as_slice() {
                     [Expr { kind: ExprKind::String(p), .. }] => {
                         Ir::Regex { pattern: p.clone(), flags: String::new(), span: Some(at) }
