@@ -196,7 +196,9 @@ fn uses_this(f: &Function) -> bool {
         fn expr(&mut self, e: &'a Expr) -> bool {
             match &e.kind {
                 ExprKind::This => self.0 = true,
-                ExprKind::Function(inner) if !inner.arrow => return false,
+                // The walk does not go into functions: an arrow function's
+                // body is looked at here, another function's `this` is its own.
+                ExprKind::Function(inner) => self.0 |= inner.arrow && uses_this(inner),
                 _ => {}
             }
             !self.0

@@ -174,20 +174,37 @@ fn template_literal<'t, 's: 't, I: TokenInput<'t, 's>>(
     let head = select! { Token { kind: TokenKind::TemplatePart { raw, head: true, tail: false }, .. } => raw };
     let middle = select! { Token { kind: TokenKind::TemplatePart { raw, head: false, tail: false }, .. } => raw };
     let tail = select! { Token { kind: TokenKind::TemplatePart { raw, head: false, tail: true }, .. } => raw };
-    let substituted = head.then(seq.clone().then(middle).repeated().collect::<Vec<_>>()).then(seq).then(tail).map_with(
-        move |(((head, middles), last), tail), e| {
+    // Each substitution and the piece after it, read once: a substitution
+    // is not parsed again when the piece after it ends the literal.
+    let substituted = head
+        .then(seq.then(middle.or_not()).repeated().at_least(1).collect::<Vec<_>>())
+        .then(tail)
+        .validate(move |((head, parts), tail), e, emitter| {
             let mut quasis = vec![cooked(head)];
-            let mut exprs = Vec::with_capacity(middles.len() + 1);
-            for (expr, raw) in middles {
+            let mut exprs = Vec::with_capacity(parts.len());
+            let last = parts.len().saturating_sub(1);
+            for (k, (expr, middle)) in parts.into_iter().enumerate() {
+                let at = SimpleSpan::from(expr.span.end..expr.span.end);
                 exprs.push(expr);
-                quasis.push(cooked(raw));
+                match middle {
+                    Some(raw) => quasis.push(cooked(raw)),
+                    None if k < last => emitter.emit(Rich::custom(
+                        at,
+                        Problem::Custom(
+                            d::SYNTAX_ERROR,
+                            "a template literal's substitution ends with `}`".to_string(),
+                            "expected `}` here",
+                            None,
+                        ),
+                    )),
+                    None => {}
+                }
             }
-            exprs.push(last);
+            quasis.resize(exprs.len(), String::new());
             quasis.push(cooked(tail));
             let s = e.span();
             cap_expr(Expr::new(ExprKind::Template { quasis, exprs }, span(file, s)), e.state(), s)
-        },
-    );
+        });
     choice((whole.boxed(), substituted.boxed())).boxed()
 }
 

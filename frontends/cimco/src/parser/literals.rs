@@ -98,6 +98,9 @@ pub(super) fn function_body<'t, 's>(
                 }
                 let at = el.pattern.span();
                 emitter.emit(unsupported(Construct::Destructuring, to_simple(at)));
+                if el.default.is_some() {
+                    emitter.emit(unsupported(Construct::DefaultParam, to_simple(el.span)));
+                }
                 Ident { name: String::new(), span: at }
             })
             .collect();
