@@ -394,16 +394,22 @@ impl<'src> Lexer<'src> {
             }
         }
         if !closed {
-            self.error(
-                d::UNTERMINATED_TEXT,
-                start,
-                start + 1,
-                "this template literal is never closed with `` ` ``",
-                "starts here",
-            );
+            self.unclosed_template(start);
         }
         let body = &self.text[start + 1..if closed { self.pos - 1 } else { self.pos }];
         self.push(TokenKind::Template(body), start);
+    }
+
+    /// A template literal (or the piece of one) starting at `start` that
+    /// reaches the end of the text.
+    fn unclosed_template(&mut self, start: usize) {
+        self.error(
+            d::UNTERMINATED_TEXT,
+            start,
+            start + 1,
+            "this template literal is never closed with `` ` ``",
+            "starts here",
+        );
     }
 
     /// A piece of a template literal (Fusion), from just after its
@@ -435,13 +441,7 @@ impl<'src> Lexer<'src> {
             }
         }
         let (body_end, tail) = end.unwrap_or_else(|| {
-            self.error(
-                d::UNTERMINATED_TEXT,
-                start,
-                start + 1,
-                "this template literal is never closed with `` ` ``",
-                "starts here",
-            );
+            self.unclosed_template(start);
             (self.pos, true)
         });
         let raw = &self.text[body_start..body_end];

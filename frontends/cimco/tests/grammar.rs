@@ -9,15 +9,7 @@ use postc_ir::FileId;
 fn tree(text: &str) -> String {
     let (program, diagnostics) = parse(text, FileId(0));
     assert!(diagnostics.is_empty(), "{text:?} reported {diagnostics:#?}");
-    dump(&program, text)
-        .lines()
-        .map(|l| {
-            let indent = l.len() - l.trim_start().len();
-            let rest = l.trim_start().split_once(' ').map_or("", |(_, r)| r);
-            format!("{}{rest}", " ".repeat(indent))
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
+    shape(&dump(&program, text))
 }
 
 /// The codes a snippet reports.
@@ -175,6 +167,7 @@ fn fusion_tree(text: &str) -> String {
     shape(&dump(&program, text))
 }
 
+/// A dump without positions.
 fn shape(dump: &str) -> String {
     dump.lines()
         .map(|l| {
