@@ -282,20 +282,36 @@ pub(crate) fn balanced<'t, 's: 't, I: TokenInput<'t, 's>>(
 ) -> impl Parser<'t, I, SimpleSpan, Extra<'t, 's>> + Clone {
     let skip = custom(move |inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>| {
         let start = inp.cursor();
-        inp.next();
-        let first_span = inp.span_since(&start);
-        let Some(target) = inp.state().closers.get(&first_span.start).copied() else {
-            let message = format!("this `{}` is never closed", open.as_str());
-            let help = Some("add the missing closing bracket");
-            return Err(Rich::custom(
-                first_span,
-                Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help),
-            ));
-        };
+        let target = closer_of(inp, open)?;
         skip_to(inp, target);
         Ok(inp.span_since(&start))
     });
     punct(open).rewind().ignore_then(skip)
+}
+
+/// Succeeds, consuming nothing, when the next token is `open` and a
+/// bracket closes it; fails as [`balanced`] does otherwise. A pattern is
+/// read only inside closed brackets, so that an unclosed one is reported
+/// where it opens.
+pub(crate) fn closed<'t, 's: 't, I: TokenInput<'t, 's>>(open: Punct) -> impl Parser<'t, I, (), Extra<'t, 's>> + Clone {
+    let check = custom(move |inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>| closer_of(inp, open).map(|_| ()));
+    punct(open).rewind().ignore_then(check.rewind())
+}
+
+/// Reads the opening bracket `open` and gives the end offset of the
+/// bracket that closes it, or the error of a bracket never closed.
+fn closer_of<'t, 's: 't, I: TokenInput<'t, 's>>(
+    inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>,
+    open: Punct,
+) -> Result<usize, Error<'t, 's>> {
+    let start = inp.cursor();
+    inp.next();
+    let first_span = inp.span_since(&start);
+    inp.state().closers.get(&first_span.start).copied().ok_or_else(|| {
+        let message = format!("this `{}` is never closed", open.as_str());
+        let help = Some("add the missing closing bracket");
+        Rich::custom(first_span, Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help))
+    })
 }
 
 /// Consumes tokens until one ends at or after `end`.

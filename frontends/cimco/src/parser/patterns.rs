@@ -28,7 +28,7 @@ use chumsky::prelude::*;
 use postc_ir::{FileId, Span};
 
 use super::literals::property_key;
-use super::{Extra, ParseState, TokenInput, guarded, name, punct, span, unsupported};
+use super::{Extra, ParseState, TokenInput, closed, guarded, name, punct, span, unsupported};
 use crate::ast::{BinaryOp, Expr, ExprKind, Ident, KeyForm, PropertyKey, Stmt, StmtKind, VarDeclarator};
 use crate::diagnostics::Construct;
 use crate::token::Punct;
@@ -111,7 +111,11 @@ pub(super) fn element<'t, 's: 't, I: TokenInput<'t, 's>>(
             .collect::<Vec<_>>()
             .delimited_by(punct(Punct::LBrace), punct(Punct::RBrace))
             .map_with(move |props, e| Pattern::Object { props, span: span(file, e.span()) });
-        let pattern = choice((name(file).map(Pattern::Name).boxed(), array.boxed(), object.boxed()));
+        let pattern = choice((
+            name(file).map(Pattern::Name).boxed(),
+            closed(Punct::LBracket).ignore_then(array).boxed(),
+            closed(Punct::LBrace).ignore_then(object).boxed(),
+        ));
         pattern
             .then(punct(Punct::Assign).ignore_then(assign.clone()).or_not())
             .map_with(move |(pattern, default), e| Element { pattern, default, span: span(file, e.span()) })
