@@ -74,3 +74,116 @@ fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs(
     println!("{same} corpus Fusion posts print the same program under Node.js and postc");
     assert!(differ.is_empty(), "{} posts differ (Node.js first, postc second):\n{}", differ.len(), differ.join("\n"));
 }
+
+/// The JavaScript newer than ES5 that Fusion's engine runs and real posts
+/// use (docs/fusion.md, "Language"), each in a small post whose `onOpen`
+/// prints what it computes: postc prints what Node.js prints.
+const MODERN: &[(&str, &str)] = &[
+    (
+        "template literals",
+        r#"var o = {toString: function () { return "T"; }, valueOf: function () { return 5; }};
+  var n = null, u;
+  writeln(`plain ${1 + 1} ${"s"}${n}${u} ${o} ${[1, [2, 3]]} ${{}} ${1e21} ${0.1 + 0.2} ${-0} ${true}`);
+  writeln(`multi
+line \`tick\` \${not} \x41\u0042 ${`nested ${`deep ${3}`}`} ${ {a: 1}.a } ${"}"}`);
+  writeln(`(WCS# ${o.valueOf()})` + `#1000=${2.5}`);
+  var calls = [];
+  function f(x) { calls.push(x); return x; }
+  writeln(`${f(1)}-${f(2)}-${f(3)}` + calls.join(""));"#,
+    ),
+    (
+        "arrow functions",
+        r#"var sq = x => x * x;
+  var add = (a, b) => { return a + b; };
+  var none = () => "none";
+  var obj = () => ({k: 7});
+  writeln([sq(4), add(2, 3), none(), obj().k, [1, 2, 3].map(v => v + 1).join(",")].join(" "));
+  var total = 0;
+  [4, 5, 6].forEach(i => { total += i; });
+  writeln("total " + total);
+  function Thing(n) {
+    this.n = n;
+    this.twice = function () { var inner = () => () => this.n * 2; return inner()(); };
+  }
+  writeln("this " + new Thing(21).twice());
+  var counter = (start => () => start++)(10);
+  writeln("closure " + counter() + counter() + counter());"#,
+    ),
+    (
+        "legacy octal numbers",
+        r#"writeln([010, 08, 09.5, 019, 0777, 00, 007 + 1, 0x1F, 0b101, 0o17, 08e1].join(" "));
+  writeln(gFormat.format(010) + " " + gFormat.format(09));"#,
+    ),
+    (
+        "destructuring",
+        r#"var state = {x: 1, y: 2, z: 3};
+  var saved = [10, 20, 30];
+  [state.x, state.y, state.z] = saved;
+  writeln("assign " + state.x + " " + state.y + " " + state.z);
+  var a = 1, b = 2;
+  [a, b] = [b, a];
+  writeln("swap " + a + " " + b);
+  var list = [0, 0];
+  var i = 0;
+  [list[i++], list[i++]] = [7, 8];
+  writeln("elements " + list.join(",") + " " + i);
+  var r = ([a, b] = [5, 6]);
+  writeln("value " + r.join(",") + " " + a + b);
+  var [p, , q = 9, [s], t = "d"] = [1, 2, undefined, [4]];
+  var {x, y: why, w = "dw", nested: {deep} = {deep: "dd"}} = state;
+  writeln("var " + p + q + s + t + x + why + w + deep);
+  var {length} = "four";
+  writeln("length " + length);
+  ({x: state.z, y: state.x} = {x: "zz", y: "xx"});
+  writeln("object " + state.x + state.z);
+  var shorthand = {x, why};
+  writeln("shorthand " + shorthand.x + shorthand.why);"#,
+    ),
+    (
+        "default parameters",
+        r#"function pick({ a = false, b = 7 } = {}, c = 3) { return `${a}/${b}/${c}`; }
+  writeln(pick() + " " + pick({a: true}) + " " + pick({b: undefined}, 0) + " " + pick({b: null}, null));
+  var count = 0;
+  var f = function (k = count++, m = k + 1) { return k + ":" + m; };
+  writeln(f() + " " + f(5) + " " + f() + " " + f(undefined, 0) + " " + count);
+  function pair([first, second] = [1, 2]) { return first + second; }
+  writeln("pair " + pair() + " " + pair([3, 4]));
+  var g = ({ afterToolChange = false } = {}) => afterToolChange ? "after" : "before";
+  writeln(g() + " " + g({ afterToolChange: true }));"#,
+    ),
+];
+
+#[test]
+fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
+    if support::cimco::node().is_none() {
+        support::referee_missing("fusion_node", "node");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-modern-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let job = crate::fusion_corpus::milling_job(&tmp);
+    let jsonl = tmp.join("standard_milling.jsonl");
+    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let mut differ = Vec::new();
+    for (k, (what, body)) in MODERN.iter().enumerate() {
+        let text = format!(
+            "description = \"{what}\";\ncapabilities = CAPABILITY_MILLING;\n\
+             var gFormat = createFormat({{prefix: \"G\", decimals: 0, width: 2, zeropad: true}});\n\
+             function onOpen() {{\n  {body}\n}}\n\
+             function onSection() {{}}\nfunction onRapid(x, y, z) {{}}\nfunction onLinear(x, y, z, feed) {{}}\n\
+             function onClose() {{ writeln(\"M30\"); }}\n"
+        );
+        let post = tmp.join(format!("modern_{k}.cps"));
+        std::fs::write(&post, &text).expect("write the post");
+        let compiled = support::compile_file(&post);
+        let ours = support::cimco::post_toolpath(&compiled, &job).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+        assert!(node.status.success(), "{what}: Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
+        if node.stdout != ours {
+            differ.push(format!("{what}:\n{}", support::diff(&node.stdout, &ours)));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+    assert!(differ.is_empty(), "Node.js first, postc second:\n{}", differ.join("\n"));
+}

@@ -323,6 +323,10 @@ pub enum Builtin {
     Lower,
     /// Number to text (shortest form).
     Str,
+    /// JavaScript's ToString (`String(v)`, a template literal's
+    /// substitution): `null` is `"null"`, `undefined` `"undefined"`, an
+    /// object's own `toString` is asked first, then its `valueOf`.
+    JsString,
     /// Text to number (0 when it is not a number).
     Val,
     /// `Format(value, "0.000")`: a VB-style picture format.

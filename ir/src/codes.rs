@@ -636,11 +636,17 @@ declare_codes! {
         fix = "Add `catch (e) { ... }` or `finally { ... }`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there postc reads `let` and `const` as `var`
+    /// (docs/fusion.md, "Language").
     JS018: Error, "`let` / `const` declarations",
         example = "let x = 1;",
         fix = "Declare the variable with `var`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there arrow functions are read, their `this`
+    /// that of the function around them (docs/fusion.md, "Language").
     JS019: Error, "arrow functions (`=>`)",
         example = "var f = (x) => x * 2;",
         fix = "Write `function (x) { ... }`.";
@@ -651,6 +657,10 @@ declare_codes! {
         fix = "Write a constructor function and add methods to its `prototype`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there template literals are read, each
+    /// substitution joined as JavaScript's `String(x)` gives it; a tagged template (`` tag`...` ``) is refused
+    /// in every dialect.
     JS021: Error, "template literals (`` `...` ``)",
         example = "var s = `X${x}`;",
         fix = "Join the text with `+`: `\"X\" + x`.";
@@ -676,6 +686,9 @@ declare_codes! {
         fix = "Set the property to `undefined` instead.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// In a Fusion `.cps` post, `instanceof` is refused too, for another reason: postc's objects keep no
+    /// prototype chain (nor a constructor's `prototype`), so it has nothing to answer from.
     JS027: Error, "the `instanceof` operator",
         example = "if (o instanceof Array) {}",
         fix = "Test a property of the object, or use `typeof`.";
@@ -696,16 +709,24 @@ declare_codes! {
         fix = "Pass the values one by one, or read them from `arguments`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there array and object patterns are read in
+    /// `var`, in assignments and in parameters, with default values (docs/fusion.md, "Language").
     JS031: Error, "destructuring (`var {a, b} = obj`)",
         example = "var {a, b} = o;",
         fix = "Read each property on its own: `var a = o.a;`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there default parameter values are read.
     JS032: Error, "default parameter values (`function f(a = 1)`)",
         example = "function f(a = 1) {}",
         fix = "Set the default in the body: `if (a === undefined) { a = 1; }`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there shorthand properties (`{ x }`) are read;
+    /// methods and computed keys are refused in every dialect.
     JS033: Error, "shorthand properties, methods and computed keys in object literals",
         example = "var o = { x, f() {}, [key]: 1 };",
         fix = "Write `x: x`, `f: function () { ... }`, and set computed keys after creating the object: `o[key] = 1;`.";
@@ -746,11 +767,16 @@ declare_codes! {
         fix = "Use only the flags `g`, `i` and `m`.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine in sloppy mode: there `0b101`, `0o17` and the
+    /// legacy octal `010` (8; `08` and `09` are decimal) are read; BigInt is refused in every dialect.
     JS041: Error, "number forms outside ES5: `0b101`, `0o17`, `10n`, legacy octal `010`",
         example = "var a = 0b101, b = 010;",
         fix = "Write the number in decimal or hexadecimal (`0x1F`); remove a leading zero.";
     /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
     /// This construct is not part of it, so postc refuses the post rather than guess.
+    ///
+    /// Fusion `.cps` posts run on Autodesk's modern engine: there a trailing comma is allowed.
     JS042: Error, "a comma after the last argument or parameter",
         example = "f(a, b,);",
         fix = "Remove the comma.";

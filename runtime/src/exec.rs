@@ -401,7 +401,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
         if matches!(
             e,
             Expr::Array(_)
-                | Expr::Builtin(Builtin::Keys | Builtin::HasProperty, _)
+                | Expr::Builtin(Builtin::Keys | Builtin::HasProperty | Builtin::JsString, _)
                 | Expr::Object(_)
                 | Expr::Regex { .. }
                 | Expr::Member(..)

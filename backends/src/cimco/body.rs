@@ -123,6 +123,7 @@ pub fn function(post: &Post, f: &Function) -> R<JsStmt> {
         body: stmts,
         body_span: at(),
         span: at(),
+        arrow: false,
     })))
 }
 
@@ -588,7 +589,7 @@ impl Printer<'_> {
             (Builtin::ParseFloat, _) => host(self, "parseFloat")?,
             (Builtin::IsNaN, _) => host(self, "isNaN")?,
             (Builtin::ToNumber, _) => host(self, "Number")?,
-            (Builtin::Str, [_]) => host(self, "String")?,
+            (Builtin::Str | Builtin::JsString, [_]) => host(self, "String")?,
             (Builtin::Upper | Builtin::Lower, [Expr::Builtin(Builtin::Str, inner)]) if inner.len() == 1 => {
                 let m = if b == Builtin::Upper { "toUpperCase" } else { "toLowerCase" };
                 method(self.expr(&inner[0])?, m, vec![])

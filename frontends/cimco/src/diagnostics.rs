@@ -4,6 +4,7 @@
 //! Its diagnostic codes are declared in the registry `postc_ir::codes`
 //! (rendered as docs/diagnostics.md; `postc explain CODE`).
 
+use crate::Syntax;
 use postc_ir::codes;
 use postc_ir::{Diagnostic, FileId, Span};
 
@@ -34,6 +35,7 @@ pub enum Construct {
     Arrow,
     Class,
     Template,
+    TaggedTemplate,
     GetterSetter,
     With,
     Label,
@@ -71,7 +73,7 @@ impl Construct {
             Let | Const => codes::JS018.code,
             Arrow => codes::JS019.code,
             Class => codes::JS020.code,
-            Template => codes::JS021.code,
+            Template | TaggedTemplate => codes::JS021.code,
             GetterSetter => codes::JS022.code,
             With => codes::JS023.code,
             Label => codes::JS024.code,
@@ -105,6 +107,7 @@ impl Construct {
             Arrow => "arrow functions (`=>`)",
             Class => "classes (`class`)",
             Template => "template literals (`` `...` ``)",
+            TaggedTemplate => "tagged templates (`` tag`...` ``)",
             GetterSetter => "getters and setters (`get x() {}`)",
             With => "the `with` statement",
             Label => "labels (`outer:`, `break outer`)",
@@ -143,6 +146,7 @@ impl Construct {
             Arrow => "write `function (x) { ... }`",
             Class => "write a constructor function and add methods to its `prototype`",
             Template => "join the text with `+`: \"X\" + x",
+            TaggedTemplate => "call the function with the text and the values: `tag([\"a\", \"b\"], x)`",
             GetterSetter => "use an ordinary property, or a function that returns the value",
             With => "write the object name in front of each property",
             Label => "leave the outer loop with a flag variable instead",
@@ -172,15 +176,30 @@ impl Construct {
         }
     }
 
-    /// The diagnostic at the construct.
+    /// The diagnostic at the construct, in a CNC-Calc post.
     pub fn diagnostic(self, span: Span) -> Diagnostic {
+        self.diagnostic_as(span, Syntax::Cimco)
+    }
+
+    /// The diagnostic at the construct, in a post read as `syntax`.
+    pub fn diagnostic_as(self, span: Span, syntax: Syntax) -> Diagnostic {
         let verb = if self.is_plural() { "are" } else { "is" };
-        Diagnostic::error(
-            self.code(),
-            format!("{} {verb} not part of the JavaScript that CNC-Calc posts use", self.name()),
-        )
-        .at(span, "not supported by postc")
-        .help(self.help())
+        let message = match (syntax, self) {
+            (Syntax::Cimco, _) => format!("{} {verb} not part of the JavaScript that CNC-Calc posts use", self.name()),
+            (Syntax::Fusion, Construct::Instanceof) => {
+                "postc cannot answer `instanceof`: its objects keep no prototype chain to test (a constructor's \
+                 `prototype` is not kept either)"
+                    .to_string()
+            }
+            (Syntax::Fusion, _) => format!("postc does not read {} in Fusion posts yet", self.name()),
+        };
+        let help = match (syntax, self) {
+            (Syntax::Fusion, Construct::Instanceof) => {
+                "test a property the constructor sets, or use `typeof` or `Array.isArray`"
+            }
+            _ => self.help(),
+        };
+        Diagnostic::error(self.code(), message).at(span, "not supported by postc").help(help)
     }
 
     fn is_plural(self) -> bool {

@@ -203,6 +203,10 @@ fn expr<'a>(e: &'a Expr, fns: &mut Vec<&'a Function>) -> String {
         ExprKind::Regex { pattern, flags } => format!("/{pattern}/{flags}"),
         ExprKind::Ident(n) => n.clone(),
         ExprKind::Array(items) => format!("[{}]", list(items, fns).trim_start()),
+        ExprKind::Template { quasis, exprs } => {
+            let texts: Vec<String> = quasis.iter().map(|q| quote(q)).collect();
+            format!("(template [{}]{})", texts.join(" "), list(exprs, fns))
+        }
         ExprKind::Object(props) => {
             let parts: Vec<String> = props
                 .iter()
@@ -219,7 +223,8 @@ fn expr<'a>(e: &'a Expr, fns: &mut Vec<&'a Function>) -> String {
         ExprKind::Function(f) => {
             fns.push(f);
             let name = f.name.as_ref().map_or(String::new(), |n| format!(" {}", n.name));
-            format!("(function{name} ({}))", params(f))
+            let kind = if f.arrow { "arrow" } else { "function" };
+            format!("({kind}{name} ({}))", params(f))
         }
         ExprKind::Member { object, property } => format!("(. {} {})", expr(object, fns), property.name),
         ExprKind::Index { object, index } => format!("([] {} {})", expr(object, fns), expr(index, fns)),

@@ -8,10 +8,17 @@
 //! keyword such as `return`; after a name, a number or a closing bracket it
 //! divides). Bad characters and unclosed literals are reported and skipped,
 //! so lexing always finishes.
+//!
+//! Read as Fusion's JavaScript ([`Syntax::Fusion`]), a template literal
+//! is lexed in pieces around its substitutions (the tokens of each
+//! `${...}` between them), a number with a leading zero is the legacy octal
+//! number sloppy-mode JavaScript reads (`010` is 8, `08` is 8), and
+//! `0b`/`0o` numbers are read.
 
 use chumsky::span::SimpleSpan;
 use postc_ir::{Diagnostic, FileId};
 
+use crate::Syntax;
 use crate::diagnostics::{self as d, Construct};
 use crate::strings;
 use crate::token::{Keyword, Punct, Token, TokenKind};
@@ -19,9 +26,24 @@ use crate::token::{Keyword, Punct, Token, TokenKind};
 /// Tokens with their byte spans.
 pub type Tokens<'src> = Vec<(Token<'src>, SimpleSpan)>;
 
-/// Splits post text into tokens. Problems are reported and lexing goes on.
+/// Splits post text into tokens, as CNC-Calc's JavaScript reads it.
+/// Problems are reported and lexing goes on.
 pub fn lex(text: &str, file: FileId) -> (Tokens<'_>, Vec<Diagnostic>) {
-    let mut lexer = Lexer { text, pos: 0, file, tokens: Vec::new(), diagnostics: Vec::new(), newline: false };
+    lex_as(text, file, Syntax::Cimco)
+}
+
+/// Splits post text into tokens, as the engine of `syntax` reads it.
+pub fn lex_as(text: &str, file: FileId, syntax: Syntax) -> (Tokens<'_>, Vec<Diagnostic>) {
+    let mut lexer = Lexer {
+        text,
+        pos: 0,
+        file,
+        tokens: Vec::new(),
+        diagnostics: Vec::new(),
+        newline: false,
+        syntax,
+        substitutions: Vec::new(),
+    };
     lexer.run();
     (lexer.tokens, lexer.diagnostics)
 }
@@ -34,6 +56,10 @@ struct Lexer<'src> {
     diagnostics: Vec<Diagnostic>,
     /// A line break was seen since the last token.
     newline: bool,
+    syntax: Syntax,
+    /// For each template substitution (`${`) open around the position, the
+    /// number of `{` opened inside it and not yet closed (Fusion).
+    substitutions: Vec<usize>,
 }
 
 fn is_line_break(c: char) -> bool {
@@ -84,11 +110,25 @@ impl<'src> Lexer<'src> {
                 self.number(start);
             } else if c == '"' || c == '\'' {
                 self.string(start, c);
+            } else if c == '`' && self.syntax == Syntax::Fusion {
+                self.pos += 1;
+                self.template_part(start, true);
             } else if c == '`' {
                 self.template(start);
             } else if c == '/' && self.regex_allowed() {
                 self.regex(start);
+            } else if c == '}' && self.substitutions.last() == Some(&0) {
+                self.substitutions.pop();
+                self.pos += 1;
+                self.template_part(start, false);
             } else if let Some(p) = self.punct() {
+                if let Some(open) = self.substitutions.last_mut() {
+                    match p {
+                        Punct::LBrace => *open += 1,
+                        Punct::RBrace => *open -= 1,
+                        _ => {}
+                    }
+                }
                 self.pos += p.as_str().len();
                 self.push(TokenKind::Punct(p), start);
             } else {
@@ -188,13 +228,27 @@ impl<'src> Lexer<'src> {
                 self.pos += 2;
                 let radix = if lower.as_deref() == Some("0b") { 2 } else { 8 };
                 let digits = self.take_while(|c| c.is_ascii_digit());
-                self.unsupported(Construct::BinaryOctal, start);
+                if self.syntax == Syntax::Cimco {
+                    self.unsupported(Construct::BinaryOctal, start);
+                } else if digits.is_empty() || digits.chars().any(|c| c.to_digit(10).is_none_or(|d| d >= radix)) {
+                    self.error(
+                        d::MALFORMED_NUMBER,
+                        start,
+                        self.pos,
+                        format!("`{}` is not a number: its digits must be below {radix}", &self.text[start..self.pos]),
+                        "malformed number",
+                    );
+                }
                 digits.chars().fold(0.0, |v, c| v * f64::from(radix) + f64::from(c.to_digit(10).unwrap_or(0)))
             }
             _ if rest.starts_with('0') && rest[1..].starts_with(|c: char| c.is_ascii_digit()) => {
-                let digits = self.take_while(|c| c.is_ascii_digit());
-                self.unsupported(Construct::LegacyOctal, start);
-                digits.parse().unwrap_or(0.0)
+                if self.syntax == Syntax::Fusion {
+                    self.legacy_octal(start)
+                } else {
+                    let digits = self.take_while(|c| c.is_ascii_digit());
+                    self.unsupported(Construct::LegacyOctal, start);
+                    digits.parse().unwrap_or(0.0)
+                }
             }
             _ => self.decimal(start),
         };
@@ -217,6 +271,21 @@ impl<'src> Lexer<'src> {
             }
         }
         self.push(TokenKind::Number(value), start);
+    }
+
+    /// A number with a leading zero in sloppy-mode JavaScript: octal when
+    /// every digit is below 8 (`010` is 8, and a `.` after it is a member
+    /// access), else decimal with an optional fraction and exponent (`08`
+    /// is 8, `09.5` is 9.5).
+    fn legacy_octal(&mut self, start: usize) -> f64 {
+        let digits = self.text[start..]
+            .find(|c: char| !c.is_ascii_digit())
+            .map_or(&self.text[start..], |n| &self.text[start..start + n]);
+        if digits.bytes().all(|b| b < b'8') {
+            self.pos += digits.len();
+            return digits.bytes().fold(0.0, |v, b| v * 8.0 + f64::from(b - b'0'));
+        }
+        self.decimal(start)
     }
 
     /// Digits, an optional fraction and an optional exponent.
@@ -255,7 +324,7 @@ impl<'src> Lexer<'src> {
 
     fn unsupported(&mut self, construct: Construct, start: usize) {
         let span = postc_ir::Span::new(self.file, start, self.pos);
-        self.diagnostics.push(construct.diagnostic(span));
+        self.diagnostics.push(construct.diagnostic_as(span, self.syntax));
     }
 
     fn string(&mut self, start: usize, quote: char) {
@@ -325,16 +394,62 @@ impl<'src> Lexer<'src> {
             }
         }
         if !closed {
-            self.error(
-                d::UNTERMINATED_TEXT,
-                start,
-                start + 1,
-                "this template literal is never closed with `` ` ``",
-                "starts here",
-            );
+            self.unclosed_template(start);
         }
         let body = &self.text[start + 1..if closed { self.pos - 1 } else { self.pos }];
         self.push(TokenKind::Template(body), start);
+    }
+
+    /// A template literal (or the piece of one) starting at `start` that
+    /// reaches the end of the text.
+    fn unclosed_template(&mut self, start: usize) {
+        self.error(
+            d::UNTERMINATED_TEXT,
+            start,
+            start + 1,
+            "this template literal is never closed with `` ` ``",
+            "starts here",
+        );
+    }
+
+    /// A piece of a template literal (Fusion), from just after its
+    /// backquote (`head`) or the `}` that ends a substitution, to the next
+    /// `${` (which opens a substitution) or the closing backquote.
+    fn template_part(&mut self, start: usize, head: bool) {
+        let body_start = self.pos;
+        let mut end = None;
+        while let Some(c) = self.peek() {
+            match c {
+                '\\' => {
+                    self.pos += 1;
+                    if let Some(e) = self.peek() {
+                        self.pos += e.len_utf8();
+                    }
+                }
+                '`' => {
+                    end = Some((self.pos, true));
+                    self.pos += 1;
+                    break;
+                }
+                '$' if self.peek_at(1) == Some('{') => {
+                    end = Some((self.pos, false));
+                    self.pos += 2;
+                    self.substitutions.push(0);
+                    break;
+                }
+                c => self.pos += c.len_utf8(),
+            }
+        }
+        let (body_end, tail) = end.unwrap_or_else(|| {
+            self.unclosed_template(start);
+            (self.pos, true)
+        });
+        let raw = &self.text[body_start..body_end];
+        for problem in strings::decode_template(raw).1 {
+            let (s, e) = (body_start + problem.range.start, body_start + problem.range.end.min(raw.len()));
+            self.error(d::BAD_ESCAPE, s, e, problem.message, "bad escape");
+        }
+        self.push(TokenKind::TemplatePart { raw, head, tail }, start);
     }
 
     /// Whether a `/` here starts a regular expression rather than dividing.
@@ -348,6 +463,9 @@ impl<'src> Lexer<'src> {
             | TokenKind::String(_)
             | TokenKind::Regex { .. }
             | TokenKind::Template(_) => false,
+            // After `${` an expression starts; after the closing backquote
+            // one has ended.
+            TokenKind::TemplatePart { tail, .. } => !tail,
             TokenKind::Keyword(k) => {
                 !matches!(k, Keyword::This | Keyword::Null | Keyword::True | Keyword::False | Keyword::Super)
             }

@@ -58,10 +58,30 @@ pub use lower::to_number;
 pub use parser::MAX_NESTING;
 pub use sniff::looks_like_cimco;
 
+/// Which engine's JavaScript a text is read as.
+///
+/// CNC-Calc's engine reads the ES5 of its era; what is newer is reported
+/// by name ([`diagnostics::Construct`]). Autodesk's Fusion engine runs
+/// modern JavaScript in sloppy mode: read as [`Syntax::Fusion`], template
+/// literals, arrow functions, destructuring, default parameter values,
+/// shorthand properties, legacy octal and `0b`/`0o` numbers are part of
+/// the language (docs/fusion.md, "Language").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Syntax {
+    #[default]
+    Cimco,
+    Fusion,
+}
+
 /// Parses a CIMCO post. Always returns a tree (parts that did not parse
 /// are error nodes) and every problem found, sorted by position.
 pub fn parse(text: &str, file: FileId) -> (Program, Vec<Diagnostic>) {
-    let (program, diagnostics, _) = parse_counted(text, file);
+    parse_as(text, file, Syntax::Cimco)
+}
+
+/// Parses a post as the engine of `syntax` reads it.
+pub fn parse_as(text: &str, file: FileId, syntax: Syntax) -> (Program, Vec<Diagnostic>) {
+    let (program, diagnostics, _) = parse_counted(text, file, syntax);
     (program, diagnostics)
 }
 
@@ -70,16 +90,21 @@ pub fn parse(text: &str, file: FileId) -> (Program, Vec<Diagnostic>) {
 /// recovery included). Tests hold the ratio bounded, so that checking a
 /// post stays linear in its size whatever its errors.
 pub fn parse_work(text: &str) -> (usize, u64) {
-    let (tokens, _) = lexer::lex(text, FileId(0));
-    let (_, _, reads) = parse_counted(text, FileId(0));
+    parse_work_as(text, Syntax::Cimco)
+}
+
+/// [`parse_work`] for a text read as the engine of `syntax` reads it.
+pub fn parse_work_as(text: &str, syntax: Syntax) -> (usize, u64) {
+    let (tokens, _) = lexer::lex_as(text, FileId(0), syntax);
+    let (_, _, reads) = parse_counted(text, FileId(0), syntax);
     (tokens.len(), reads)
 }
 
-fn parse_counted(text: &str, file: FileId) -> (Program, Vec<Diagnostic>, u64) {
-    let (tokens, mut diagnostics) = lexer::lex(text, file);
+fn parse_counted(text: &str, file: FileId, syntax: Syntax) -> (Program, Vec<Diagnostic>, u64) {
+    let (tokens, mut diagnostics) = lexer::lex_as(text, file, syntax);
     let brackets = parser::match_brackets(&tokens);
-    let parsed = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone());
-    diagnostics.extend(parser::report::diagnostics(parsed.errors, file, &brackets, parsed.too_deep));
+    let parsed = parser::parse_tokens(&tokens, text.len(), file, brackets.closers.clone(), syntax);
+    diagnostics.extend(parser::report::diagnostics(parsed.errors, file, &brackets, parsed.too_deep, syntax));
     let program = parsed.program.unwrap_or_else(|| Program { body: Vec::new(), span: Span::new(file, 0, text.len()) });
     diagnostics.extend(validate::check(&program));
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));

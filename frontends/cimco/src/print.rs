@@ -38,6 +38,13 @@ pub fn js_number(n: f64) -> String {
     }
 }
 
+/// A piece of a template literal's text as written between backquotes.
+fn template_text(text: &str) -> String {
+    let quoted = quote(text);
+    let inner = &quoted[1..quoted.len() - 1];
+    inner.replace("\\\"", "\"").replace('`', "\\`").replace("${", "\\${")
+}
+
 /// Whether a name can be written without quotes as a property key.
 fn is_plain_name(name: &str) -> bool {
     let mut chars = name.chars();
@@ -53,6 +60,7 @@ fn precedence(e: &Expr) -> u8 {
     match &e.kind {
         ExprKind::Sequence(_) => 0,
         ExprKind::Assign { .. } => 1,
+        ExprKind::Function(f) if f.arrow => 1,
         ExprKind::Conditional { .. } => 2,
         ExprKind::Logical { op: LogicalOp::Or, .. } => 3,
         ExprKind::Logical { op: LogicalOp::And, .. } => 4,
@@ -255,6 +263,9 @@ impl Printer {
     fn function_head(&self, f: &Function) -> String {
         let name = f.name.as_ref().map(|n| format!(" {}", n.name)).unwrap_or_default();
         let params: Vec<&str> = f.params.iter().map(|p| p.name.as_str()).collect();
+        if f.arrow {
+            return format!("({}) =>", params.join(", "));
+        }
         format!("function{name}({})", params.join(", "))
     }
 
@@ -287,6 +298,17 @@ impl Printer {
                 let _ = write!(self.out, "/{pattern}/{flags}");
             }
             ExprKind::Ident(n) => self.out.push_str(n),
+            ExprKind::Template { quasis, exprs } => {
+                self.out.push('`');
+                for (k, text) in quasis.iter().enumerate() {
+                    self.out.push_str(&template_text(text));
+                    if let Some(e) = exprs.get(k) {
+                        let e = self.text(e, 0);
+                        let _ = write!(self.out, "${{{e}}}");
+                    }
+                }
+                self.out.push('`');
+            }
             ExprKind::Array(items) => {
                 let items = self.list(items);
                 let _ = write!(self.out, "[{items}]");

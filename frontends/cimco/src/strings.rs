@@ -17,6 +17,17 @@ pub struct EscapeProblem {
 /// reported.
 #[doc(hidden)]
 pub fn decode(body: &str) -> (String, Vec<EscapeProblem>) {
+    decode_as(body, false)
+}
+
+/// Decodes the raw text of a piece of a template literal: escapes as in a
+/// string, and a line break written in it (CR LF, CR or LF) is LF.
+#[doc(hidden)]
+pub fn decode_template(raw: &str) -> (String, Vec<EscapeProblem>) {
+    decode_as(raw, true)
+}
+
+fn decode_as(body: &str, template: bool) -> (String, Vec<EscapeProblem>) {
     let mut out = String::with_capacity(body.len());
     let mut problems = Vec::new();
     let mut chars = body.char_indices().peekable();
@@ -24,7 +35,14 @@ pub fn decode(body: &str) -> (String, Vec<EscapeProblem>) {
     while let Some((at, c)) = chars.next() {
         if c != '\\' {
             flush_surrogate(&mut out, &mut pending_high);
-            out.push(c);
+            if template && c == '\r' {
+                if chars.peek().is_some_and(|(_, d)| *d == '\n') {
+                    chars.next();
+                }
+                out.push('\n');
+            } else {
+                out.push(c);
+            }
             continue;
         }
         let Some((_, e)) = chars.next() else {

@@ -96,6 +96,7 @@ impl<'src> Token<'src> {
             | TokenKind::String(_)
             | TokenKind::Regex { .. }
             | TokenKind::Template(_) => true,
+            TokenKind::TemplatePart { head, .. } => head,
             TokenKind::Keyword(k) => matches!(
                 k,
                 Keyword::This
@@ -139,8 +140,19 @@ pub enum TokenKind<'src> {
         pattern: &'src str,
         flags: &'src str,
     },
-    /// A template literal (not supported; lexed so it can be named).
+    /// A whole template literal, as CNC-Calc's JavaScript reads it (not
+    /// supported; lexed so it can be named): the text between the
+    /// backquotes.
     Template(&'src str),
+    /// A piece of a template literal as Fusion's JavaScript reads it: the
+    /// raw text from a backquote or the `}` that ends a substitution to the
+    /// next `${` or backquote, escapes not decoded. `head`: it starts the
+    /// literal (after `` ` ``); `tail`: it ends it (before `` ` ``).
+    TemplatePart {
+        raw: &'src str,
+        head: bool,
+        tail: bool,
+    },
     Punct(Punct),
 }
 
@@ -299,6 +311,8 @@ impl fmt::Display for Token<'_> {
             }
             TokenKind::Regex { .. } => f.write_str("a regular expression"),
             TokenKind::Template(_) => f.write_str("a template literal"),
+            TokenKind::TemplatePart { head: true, .. } => f.write_str("a template literal"),
+            TokenKind::TemplatePart { .. } => f.write_str("the rest of a template literal"),
             TokenKind::Punct(p) => write!(f, "`{}`", p.as_str()),
         }
     }

@@ -1,7 +1,7 @@
 //! Small grammar cases: automatic semicolon insertion, regular
 //! expressions, precedence, and what each unsupported construct reports.
 
-use postc_front_cimco::{dump::dump, parse};
+use postc_front_cimco::{Syntax, dump::dump, parse, parse_as, print};
 use postc_ir::FileId;
 
 /// The dump of a snippet without positions, one statement per line; the
@@ -9,15 +9,7 @@ use postc_ir::FileId;
 fn tree(text: &str) -> String {
     let (program, diagnostics) = parse(text, FileId(0));
     assert!(diagnostics.is_empty(), "{text:?} reported {diagnostics:#?}");
-    dump(&program, text)
-        .lines()
-        .map(|l| {
-            let indent = l.len() - l.trim_start().len();
-            let rest = l.trim_start().split_once(' ').map_or("", |(_, r)| r);
-            format!("{}{rest}", " ".repeat(indent))
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
+    shape(&dump(&program, text))
 }
 
 /// The codes a snippet reports.
@@ -163,4 +155,129 @@ fn sniffs_cimco_posts() {
     assert!(postc_front_cimco::looks_like_cimco(mill));
     assert!(postc_front_cimco::looks_like_cimco(lathe));
     assert!(!postc_front_cimco::looks_like_cimco(b"begin HEADER\n\"G21\"\n"));
+}
+
+/// [`tree`] of a snippet read as Fusion's JavaScript.
+fn fusion_tree(text: &str) -> String {
+    let (program, diagnostics) = parse_as(text, FileId(0), Syntax::Fusion);
+    assert!(diagnostics.is_empty(), "{text:?} reported {diagnostics:#?}");
+    let printed = print::to_js(&program);
+    let (again, _) = parse_as(&printed, FileId(0), Syntax::Fusion);
+    assert_eq!(shape(&dump(&again, &printed)), shape(&dump(&program, text)), "{text:?} printed as {printed:?}");
+    shape(&dump(&program, text))
+}
+
+/// A dump without positions.
+fn shape(dump: &str) -> String {
+    dump.lines()
+        .map(|l| {
+            let indent = l.len() - l.trim_start().len();
+            let rest = l.trim_start().split_once(' ').map_or("", |(_, r)| r);
+            format!("{}{rest}", " ".repeat(indent))
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The diagnostics of a snippet read as Fusion's JavaScript: code and message.
+fn fusion_diagnostics(text: &str) -> Vec<(&'static str, String)> {
+    parse_as(text, FileId(0), Syntax::Fusion).1.into_iter().map(|d| (d.code, d.message)).collect()
+}
+
+#[test]
+fn fusion_reads_template_literals() {
+    assert_eq!(fusion_tree("x = `a${b}c${d + 1}`"), "(= x (template [\"a\" \"c\" \"\"] b (+ d 1)))");
+    assert_eq!(fusion_tree("x = `plain`"), "(= x (template [\"plain\"]))");
+    // Escapes, line breaks (CR LF is LF), and a `}` inside a substitution.
+    assert_eq!(
+        fusion_tree("x = `\\`\\${a}\r\n${ {k: 1}.k }${`in${\"}\"}`}`"),
+        "(= x (template [\"`${a}\\n\" \"\" \"\"] (. {k: 1} k) (template [\"in\" \"\"] \"}\")))"
+    );
+    // A `/` after a substitution divides; after `${` it starts a regular expression.
+    assert_eq!(
+        fusion_tree("x = `${a}` / 2 + `${/b/.source}`"),
+        "(= x (+ (/ (template [\"\" \"\"] a) 2) (template [\"\" \"\"] (. /b/ source))))"
+    );
+}
+
+#[test]
+fn fusion_reads_arrow_functions() {
+    assert_eq!(fusion_tree("f = x => x * 2"), "(= f (arrow (x)))\n  fn (x)\n    return (* x 2)");
+    assert_eq!(fusion_tree("f = (a, b) => { return a + b; }"), "(= f (arrow (a b)))\n  fn (a b)\n    return (+ a b)");
+    assert_eq!(fusion_tree("f = () => ({k: 1})"), "(= f (arrow ()))\n  fn ()\n    return {k: 1}");
+    assert_eq!(
+        fusion_tree("list.forEach(i => { n += i; })"),
+        "(call (. list forEach) (arrow (i)))\n  fn (i)\n    (+= n i)"
+    );
+    // A parameter's default starts the body.
+    assert_eq!(
+        fusion_tree("f = (a = 1) => a"),
+        "(= f (arrow (a)))\n  fn (a)\n    (= a (? (=== a undefined) 1 a))\n    return a"
+    );
+}
+
+#[test]
+fn fusion_reads_legacy_octal_and_newer_numbers() {
+    assert_eq!(
+        fusion_tree("x = [010, 08, 019, 09.5, 0777, 00, 0b101, 0o17, 0x1F]"),
+        "(= x [8 8 19 9.5 511 0 5 15 31])"
+    );
+    // `07.5` is the octal 7 then a number: JavaScript refuses it too.
+    assert!(!fusion_diagnostics("x = 07.5").is_empty());
+    assert_eq!(fusion_diagnostics("x = 0b102")[0].0, "JS005");
+}
+
+#[test]
+fn fusion_reads_destructuring_written_out() {
+    assert_eq!(
+        fusion_tree("[s.a, s.b] = list;"),
+        "var __postc_d0\n(, (= __postc_d0 list) (= (. s a) ([] __postc_d0 0)) (= (. s b) ([] __postc_d0 1)) __postc_d0)"
+    );
+    assert_eq!(
+        fusion_tree("var [a, , b = 2] = list, {c, d: e} = o"),
+        "var __postc_d4 = list, a = ([] __postc_d4 0), b = (? (=== ([] __postc_d4 2) undefined) 2 ([] __postc_d4 2)), __postc_d25 = o, c = (. __postc_d25 c), e = (. __postc_d25 d)"
+    );
+    assert_eq!(
+        fusion_tree("function f({ a = false } = {}) { return a; }"),
+        "function f(__postc_p11)\n  var __postc_d11 = (? (=== __postc_p11 undefined) {} __postc_p11), a = (? (=== (. __postc_d11 a) undefined) false (. __postc_d11 a))\n  return a"
+    );
+    // The temporary of an assignment pattern is declared by the function around it.
+    assert_eq!(
+        fusion_tree("function g() { [a, b] = [b, a]; }"),
+        "function g()\n  var __postc_d15\n  (, (= __postc_d15 [b a]) (= a ([] __postc_d15 0)) (= b ([] __postc_d15 1)) __postc_d15)"
+    );
+    assert_eq!(fusion_tree("o = {a, b: 2}"), "(= o {a: a, b: 2})");
+    assert_eq!(fusion_tree("f(a, b,)"), "(call f a b)");
+}
+
+#[test]
+fn fusion_reports_what_it_still_does_not_read() {
+    let first = |text: &str| fusion_diagnostics(text).into_iter().next().unwrap_or(("none", String::new()));
+    assert_eq!(first("x = tag`a${b}`").0, "JS021");
+    assert_eq!(first("x = (1) => 2").0, "JS007");
+    assert_eq!(first("var [a, b];").0, "JS007");
+    assert_eq!(first("[a + 1, b] = c").0, "JS012");
+    let (code, message) = first("x = this instanceof F");
+    assert_eq!(code, "JS027");
+    assert!(message.contains("prototype"), "{message}");
+    let (code, message) = first("class A {}");
+    assert_eq!(code, "JS020");
+    assert!(message.contains("Fusion"), "{message}");
+}
+
+#[test]
+fn cnc_calc_posts_still_refuse_the_newer_forms() {
+    let cases: &[(&str, &[&str])] = &[
+        ("x = `a${b}`", &["JS021"]),
+        ("f = x => x", &["JS019"]),
+        ("f = () => ({})", &["JS019"]),
+        ("x = 010", &["JS041"]),
+        ("x = 08", &["JS041"]),
+        ("[a, b] = c", &["JS012"]),
+        ("function f({ a = false } = {}) {}", &["JS031", "JS032"]),
+        ("var {a} = o", &["JS031"]),
+    ];
+    for (text, expected) in cases {
+        assert_eq!(codes(text), *expected, "{text}");
+    }
 }

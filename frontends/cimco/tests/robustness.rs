@@ -6,7 +6,7 @@
 use postc_report::Render as _;
 use std::time::{Duration, Instant};
 
-use postc_front_cimco::{dump::dump, parse, print::to_js};
+use postc_front_cimco::{Syntax, dump::dump, parse, parse_as, print::to_js};
 use postc_ir::FileId;
 use proptest::prelude::*;
 
@@ -14,10 +14,14 @@ use proptest::prelude::*;
 /// that unbounded recursion would show as a crash here rather than pass on
 /// a big main stack.
 fn parse_small_stack(text: String) -> Vec<&'static str> {
+    parse_small_stack_as(text, Syntax::Cimco)
+}
+
+fn parse_small_stack_as(text: String, syntax: Syntax) -> Vec<&'static str> {
     std::thread::Builder::new()
         .stack_size(1024 * 1024)
         .spawn(move || {
-            let (program, diagnostics) = parse(&text, FileId(0));
+            let (program, diagnostics) = parse_as(&text, FileId(0), syntax);
             // Walking the tree must be safe too.
             let _ = dump(&program, &text);
             let _ = to_js(&program);
@@ -49,6 +53,30 @@ fn deep_and_long_inputs_are_refused_once() {
     for (name, text) in cases {
         let start = Instant::now();
         let codes = parse_small_stack(text);
+        let took = start.elapsed();
+        assert!(took < Duration::from_secs(30), "{name}: took {took:?}");
+        assert_eq!(codes.iter().filter(|c| **c == "JS013").count(), 1, "{name}: {codes:?}");
+    }
+}
+
+/// The same, for the forms only Fusion's JavaScript reads: nested
+/// template substitutions, arrow functions and patterns, and parentheses
+/// (each of which may open an arrow function's parameters).
+#[test]
+fn deep_fusion_inputs_are_refused_once() {
+    let n = 20_000;
+    let cases = [
+        ("parentheses", format!("x = {}1{};", "(".repeat(n), ")".repeat(n))),
+        ("parenthesised names", format!("x = {}a{};", "(".repeat(n), ")".repeat(n))),
+        ("templates", format!("x = {}1{};", "`${".repeat(n), "}`".repeat(n))),
+        ("arrow functions", format!("f = {}1;", "x => ".repeat(n))),
+        ("array patterns", format!("var {}a{} = b;", "[".repeat(n), "]".repeat(n))),
+        ("assignment patterns", format!("{}a{} = b;", "[".repeat(n), "]".repeat(n))),
+        ("parameter patterns", format!("function f({}a{}) {{}}", "{k:".repeat(n), "}".repeat(n))),
+    ];
+    for (name, text) in cases {
+        let start = Instant::now();
+        let codes = parse_small_stack_as(text, Syntax::Fusion);
         let took = start.elapsed();
         assert!(took < Duration::from_secs(30), "{name}: took {took:?}");
         assert_eq!(codes.iter().filter(|c| **c == "JS013").count(), 1, "{name}: {codes:?}");

@@ -850,6 +850,11 @@ impl Engine<'_> {
                         self.give_back(values);
                         return Err(objects::reference_error(&name));
                     }
+                    Builtin::JsString if matches!(values.first(), Some(Value::Object(_))) => {
+                        let v = values.first().cloned().unwrap_or(Value::Undefined);
+                        self.give_back(values);
+                        return self.text_of(v);
+                    }
                     Builtin::Construct => {
                         let mut values = values.into_iter();
                         let callee = values.next().unwrap_or(Value::Undefined);
@@ -1251,16 +1256,25 @@ impl Engine<'_> {
 }
 
 impl Engine<'_> {
-    /// Evaluates a left-nested chain of `+`/`&` as [`binary`] would, one
-    /// operator at a time from the left: `None` when the value so far is
-    /// text, which is then in `buf`; the value itself while it is not
-    /// (numbers add until a text joins them).
     /// JavaScript's ToPrimitive for `+`: an object's own `valueOf`, when it
     /// gives a value that is not an object, else its own `toString`'s;
     /// other values (and objects without them) are themselves.
     fn primitive(&mut self, v: Value) -> Result<Value> {
+        self.primitive_by(v, [&b"valueOf"[..], &b"toString"[..]])
+    }
+
+    /// JavaScript's ToString (`String(v)`, a template literal's
+    /// substitution): an object's own `toString` is asked first, then its
+    /// `valueOf` (ToPrimitive with the hint string).
+    fn text_of(&mut self, v: Value) -> Result<Value> {
+        let p = self.primitive_by(v, [&b"toString"[..], &b"valueOf"[..]])?;
+        Ok(Value::Text(p.to_text()))
+    }
+
+    /// ToPrimitive asking an object's methods in the order given.
+    fn primitive_by(&mut self, v: Value, order: [&[u8]; 2]) -> Result<Value> {
         let Value::Object(o) = &v else { return Ok(v) };
-        for name in [&b"valueOf"[..], &b"toString"[..]] {
+        for name in order {
             let f = o.borrow().get(name).cloned();
             if let Some(f @ Value::Func(_)) = f {
                 let r = self.call_value(&f, v.clone(), Vec::new())?;
@@ -1272,6 +1286,10 @@ impl Engine<'_> {
         Ok(v)
     }
 
+    /// Evaluates a left-nested chain of `+`/`&` as [`binary`] would, one
+    /// operator at a time from the left: `None` when the value so far is
+    /// text, which is then in `buf`; the value itself while it is not
+    /// (numbers add until a text joins them).
     fn chain(&mut self, e: &Expr, frame: &mut Vec<Value>, buf: &mut String) -> Result<Option<Value>> {
         let Expr::Binary(op @ (BinaryOp::Add | BinaryOp::Concat), l, r) = e else {
             return Ok(Some(self.eval(e, frame)?));

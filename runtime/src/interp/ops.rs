@@ -236,6 +236,12 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         Builtin::Upper => Value::text(&s(0).to_uppercase()),
         Builtin::Lower => Value::text(&s(0).to_lowercase()),
         Builtin::Str => Value::Text(args.first().map(Value::to_text).unwrap_or_else(|| Text::new(""))),
+        // Objects ask their methods first (`Engine::text_of`).
+        Builtin::JsString => match args.first() {
+            Some(Value::Null) => Value::text("null"),
+            Some(v) => Value::Text(v.to_text()),
+            None => Value::text("undefined"),
+        },
         Builtin::Val => {
             let t = s(0);
             let t = t.trim();

@@ -30,7 +30,7 @@ pub(super) fn expr_children_depth(kind: &ExprKind) -> u32 {
         | ExprKind::Regex { .. }
         | ExprKind::Ident(_)
         | ExprKind::Error => 0,
-        ExprKind::Array(items) | ExprKind::Sequence(items) => max_expr(items),
+        ExprKind::Array(items) | ExprKind::Sequence(items) | ExprKind::Template { exprs: items, .. } => max_expr(items),
         ExprKind::Object(props) => 1 + max_expr(props.iter().map(|p| &p.value)),
         ExprKind::Function(f) => function_depth(f),
         ExprKind::Member { object, .. } => object.depth,

@@ -52,6 +52,10 @@ pub struct Function {
     pub body_span: Span,
     /// From `function` to the closing brace.
     pub span: Span,
+    /// An arrow function (`(a) => a + 1`, Fusion): `this` is the `this` of
+    /// the function around it; an expression body is the `return` of that
+    /// expression.
+    pub arrow: bool,
 }
 
 /// One statement.
@@ -184,6 +188,12 @@ pub enum ExprKind {
     Null,
     Undefined,
     This,
+    /// `` `text ${a} more ${b}` `` (Fusion): the pieces of text, escapes
+    /// decoded, one more than the substitutions between them.
+    Template {
+        quasis: Vec<String>,
+        exprs: Vec<Expr>,
+    },
     /// `/pattern/flags`, as written (escapes kept).
     Regex {
         pattern: String,

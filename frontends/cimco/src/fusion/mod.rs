@@ -31,11 +31,11 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     let file = sources.add(path.display().to_string(), text);
     let host_file = sources.add(HOST_NAME.to_string(), HOST.to_string());
     let text = sources.text(file).unwrap_or_default();
-    let (program, mut diagnostics) = crate::parse(text, file);
+    let (program, mut diagnostics) = crate::parse_as(text, file, crate::Syntax::Fusion);
     // Fusion's engine reads `let` and `const` (CNC-Calc's does not); postc
     // reads them as `var` (docs/fusion.md, "Language").
     diagnostics.retain(|d| d.code != codes::JS018.code);
-    let (host, host_diagnostics) = crate::parse(HOST, host_file);
+    let (host, host_diagnostics) = crate::parse_as(HOST, host_file, crate::Syntax::Fusion);
     diagnostics.extend(host_diagnostics);
     let mut post = Post::default();
     post.info.dialect = Dialect::Fusion;

@@ -102,7 +102,14 @@ impl<'c, 'a> Shared<'c, 'a> {
         }
         let name = self.model.scopes.funcs[id].name.clone().unwrap_or_else(|| format!("__postc_closure_{id}"));
         let f = self.layout.add_fn(&name);
-        let captures = captures(self.model, id);
+        let mut captures = captures(self.model, id);
+        let info = &self.model.scopes.funcs[id];
+        if let (Some(func), Some(parent)) = (info.func, info.parent)
+            && func.arrow
+            && uses_this(func)
+        {
+            captures.push((parent, LEXICAL_THIS));
+        }
         self.nested.insert(id, (f, captures.clone()));
         self.pending.push(id);
         (f, captures)
@@ -143,8 +150,13 @@ impl<'c, 'a> Shared<'c, 'a> {
             if info.uses_arguments {
                 return Err(why(func.span, "a nested function that reads `arguments`"));
             }
-            let mut params: Vec<String> =
-                captures.iter().map(|&(f, s)| self.model.scopes.funcs[f].locals[s].clone()).collect();
+            let mut params: Vec<String> = captures
+                .iter()
+                .map(|&(f, s)| match s {
+                    LEXICAL_THIS => "__postc_this".to_string(),
+                    s => self.model.scopes.funcs[f].locals[s].clone(),
+                })
+                .collect();
             params.extend(info.params.iter().cloned());
             let locals = info.locals.iter().skip(info.params.len()).cloned().collect();
             let mut g = General::new(self, id, captures);
@@ -170,6 +182,32 @@ impl<'c, 'a> Shared<'c, 'a> {
         out.sort_by_key(|(f, _)| f.index());
         Ok(out)
     }
+}
+
+/// The capture of an arrow function that reads `this`: the `this` of the
+/// function around it, in the place of a local's slot.
+const LEXICAL_THIS: usize = usize::MAX - 1;
+
+/// Whether an arrow function reads `this`, its own or that of an arrow
+/// function inside it (whose `this` is the same).
+fn uses_this(f: &Function) -> bool {
+    struct This(bool);
+    impl<'a> super::scope::Visit<'a> for This {
+        fn expr(&mut self, e: &'a Expr) -> bool {
+            match &e.kind {
+                ExprKind::This => self.0 = true,
+                // The walk does not go into functions: an arrow function's
+                // body is looked at here, another function's `this` is its own.
+                ExprKind::Function(inner) => self.0 |= inner.arrow && uses_this(inner),
+                _ => {}
+            }
+            !self.0
+        }
+        fn function_decl(&mut self, _f: &'a Function) {}
+    }
+    let mut v = This(false);
+    super::scope::walk_stmts(&f.body, &mut v);
+    v.0
 }
 
 /// The locals of enclosing functions that nested function `id` (or a
@@ -409,13 +447,32 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     /// A nested function as a value: its captures read now.
     fn closure(&mut self, id: FnId, at: Span) -> R<Ir> {
         let (function, captures) = self.shared.nested(id);
-        let mut values = Vec::new();
-        for (func, slot) in captures {
-            let name = self.model().scopes.funcs[func].locals[slot].clone();
-            let local = self.local_of(&name, at)?.ok_or_else(|| why(at, format!("captures `{name}`")))?;
+        let values = self.capture_values(&captures, at)?;
+        Ok(Ir::Closure { function, captures: values })
+    }
+
+    /// The values a nested function captures, read here.
+    fn capture_values(&self, captures: &[(FnId, usize)], at: Span) -> R<Vec<Ir>> {
+        let mut values = Vec::with_capacity(captures.len());
+        for &(func, slot) in captures {
+            if slot == LEXICAL_THIS {
+                values.push(self.this_value());
+                continue;
+            }
+            let name = &self.model().scopes.funcs[func].locals[slot];
+            let local = self.local_of(name, at)?.ok_or_else(|| why(at, format!("captures `{name}`")))?;
             values.push(Ir::Local(local));
         }
-        Ok(Ir::Closure { function, captures: values })
+        Ok(values)
+    }
+
+    /// `this`: the object the function was called on, or, in an arrow
+    /// function, the `this` it captured.
+    fn this_value(&self) -> Ir {
+        match self.captures.iter().position(|&(_, slot)| slot == LEXICAL_THIS) {
+            Some(p) => Ir::Local(LocalId::new(p as u16)),
+            None => Ir::This,
+        }
     }
 
     fn global_value(&mut self, name: &str, at: Span) -> R<Ir> {
@@ -956,11 +1013,26 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             ExprKind::Bool(b) => Ir::Bool(*b),
             ExprKind::Null => Ir::Null,
             ExprKind::Undefined => Ir::Undefined,
-            ExprKind::This => Ir::This,
+            ExprKind::This => self.this_value(),
             ExprKind::Regex { pattern, flags } => {
                 Ir::Regex { pattern: pattern.clone(), flags: flags.clone(), span: Some(at) }
             }
             ExprKind::Ident(name) => self.ident(name, at)?,
+            ExprKind::Template { quasis, exprs } => {
+                // The text pieces and each substitution's ToString, joined
+                // with `+` (text with text only joins).
+                let refs: Vec<&Expr> = exprs.iter().collect();
+                let values = self.operands(&refs, pre)?;
+                let mut text = Ir::Text(quasis.first().cloned().unwrap_or_default());
+                for (value, piece) in values.into_iter().zip(quasis.iter().skip(1)) {
+                    let value = Ir::Builtin(Builtin::JsString, vec![value]);
+                    text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(value));
+                    if !piece.is_empty() {
+                        text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(Ir::Text(piece.clone())));
+                    }
+                }
+                text
+            }
             ExprKind::Array(items) => {
                 let refs: Vec<&Expr> = items.iter().collect();
                 Ir::Array(self.operands(&refs, pre)?)
@@ -1157,12 +1229,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             ExprKind::Ident(name) => {
                 if let Some(id) = self.nested_decl(name) {
                     let (function, captures) = self.shared.nested(id);
-                    let mut values = Vec::new();
-                    for (func, slot) in captures {
-                        let n = self.model().scopes.funcs[func].locals[slot].clone();
-                        let local = self.local_of(&n, at)?.ok_or_else(|| why(at, format!("captures `{n}`")))?;
-                        values.push(Ir::Local(local));
-                    }
+                    let mut values = self.capture_values(&captures, at)?;
                     values.extend(self.args(args, pre)?);
                     return Ok(Ir::Call(function, values));
                 }
@@ -1210,6 +1277,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             "isNaN" => Builtin::IsNaN,
             "Number" if !a.is_empty() => Builtin::ToNumber,
             "Number" => return Ok(Ir::Number(0.0)),
+            "String" if !a.is_empty() && self.shared.fusion => {
+                return Ok(Ir::Builtin(Builtin::JsString, a.into_iter().take(1).collect()));
+            }
             "String" if !a.is_empty() => {
                 return Ok(Ir::Builtin(Builtin::Str, a.into_iter().take(1).collect()));
             }

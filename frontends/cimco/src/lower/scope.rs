@@ -334,7 +334,9 @@ pub fn walk_expr<'a>(e: &'a Expr, v: &mut impl Visit<'a>) {
         return;
     }
     match &e.kind {
-        ExprKind::Array(items) | ExprKind::Sequence(items) => items.iter().for_each(|i| walk_expr(i, v)),
+        ExprKind::Array(items) | ExprKind::Sequence(items) | ExprKind::Template { exprs: items, .. } => {
+            items.iter().for_each(|i| walk_expr(i, v))
+        }
         ExprKind::Object(props) => props.iter().for_each(|p| walk_expr(&p.value, v)),
         ExprKind::Member { object, .. } => walk_expr(object, v),
         ExprKind::Unary { operand: a, .. } | ExprKind::Update { target: a, .. } => walk_expr(a, v),

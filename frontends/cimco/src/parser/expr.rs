@@ -7,10 +7,14 @@
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
-use super::literals::{arguments, array, function_parts, object};
+use super::literals::{arguments, array, function_body, function_parts, object, parameter_list};
 use super::operators::{binary, conditional_and_assignment};
-use super::{Extra, Problem, TokenInput, balanced, cap_expr, guarded, kw, punct, same_line, span, unsupported, word};
-use crate::ast::{Expr, ExprKind, Ident, Stmt, UnaryOp, UpdateOp};
+use super::patterns::{Element, Pattern};
+use super::stmt::braced;
+use super::{
+    Extra, Problem, TokenInput, balanced, cap_expr, guarded, kw, name, punct, same_line, span, unsupported, word,
+};
+use crate::ast::{Expr, ExprKind, Function, Ident, Stmt, StmtKind, UnaryOp, UpdateOp};
 use crate::diagnostics::{self as d, Construct};
 use crate::strings;
 use crate::token::{Keyword, Punct, Token, TokenKind};
@@ -99,6 +103,8 @@ where
         emitter.emit(unsupported(Construct::Template, e.span()));
         Expr::error(span(file, e.span()))
     });
+    let fusion_template = template_literal(file, seq.clone());
+    let arrow = arrow_function(file, assign.clone(), stmt.clone());
 
     // `() =>`: the arrow itself is reported by the assignment level.
     let empty_arrow_params = punct(Punct::LParen)
@@ -137,9 +143,11 @@ where
 
     choice((
         async_function.boxed(),
+        arrow,
         literal.boxed(),
         regex.boxed(),
         template.boxed(),
+        fusion_template,
         empty_arrow_params.boxed(),
         paren.boxed(),
         array,
@@ -151,12 +159,106 @@ where
     .boxed()
 }
 
+/// A template literal as Fusion's lexer gives it
+/// ([`TokenKind::TemplatePart`]): its text pieces, escapes decoded, and
+/// the expression of each `${...}` between them.
+fn template_literal<'t, 's: 't, I: TokenInput<'t, 's>>(
+    file: FileId,
+    seq: Boxed<'t, 's, I, Expr>,
+) -> Boxed<'t, 's, I, Expr> {
+    let cooked = |raw: &str| strings::decode_template(raw).0;
+    let whole = select! { Token { kind: TokenKind::TemplatePart { raw, head: true, tail: true }, .. } => raw }
+        .map_with(move |raw, e| {
+            Expr::new(ExprKind::Template { quasis: vec![cooked(raw)], exprs: vec![] }, span(file, e.span()))
+        });
+    let head = select! { Token { kind: TokenKind::TemplatePart { raw, head: true, tail: false }, .. } => raw };
+    let middle = select! { Token { kind: TokenKind::TemplatePart { raw, head: false, tail: false }, .. } => raw };
+    let tail = select! { Token { kind: TokenKind::TemplatePart { raw, head: false, tail: true }, .. } => raw };
+    // Each substitution and the piece after it, read once: a substitution
+    // is not parsed again when the piece after it ends the literal.
+    let substituted = head
+        .then(seq.then(middle.or_not()).repeated().at_least(1).collect::<Vec<_>>())
+        .then(tail)
+        .validate(move |((head, parts), tail), e, emitter| {
+            let mut quasis = vec![cooked(head)];
+            let mut exprs = Vec::with_capacity(parts.len());
+            let last = parts.len().saturating_sub(1);
+            for (k, (expr, middle)) in parts.into_iter().enumerate() {
+                let at = SimpleSpan::from(expr.span.end..expr.span.end);
+                exprs.push(expr);
+                match middle {
+                    Some(raw) => quasis.push(cooked(raw)),
+                    None if k < last => emitter.emit(Rich::custom(
+                        at,
+                        Problem::Custom(
+                            d::SYNTAX_ERROR,
+                            "a template literal's substitution ends with `}`".to_string(),
+                            "expected `}` here",
+                            None,
+                        ),
+                    )),
+                    None => {}
+                }
+            }
+            quasis.resize(exprs.len(), String::new());
+            quasis.push(cooked(tail));
+            let s = e.span();
+            cap_expr(Expr::new(ExprKind::Template { quasis, exprs }, span(file, s)), e.state(), s)
+        });
+    choice((whole.boxed(), substituted.boxed())).boxed()
+}
+
+/// `x => body`, `(a, b = 1, {c}) => body`: an arrow function, its body a
+/// block or an expression (the `return` of it). Reported in CNC-Calc
+/// posts.
+fn arrow_function<'t, 's: 't, I, S>(file: FileId, assign: Boxed<'t, 's, I, Expr>, stmt: S) -> Boxed<'t, 's, I, Expr>
+where
+    I: TokenInput<'t, 's>,
+    S: Parser<'t, I, Stmt, Extra<'t, 's>> + Clone + 't,
+{
+    #[derive(Clone)]
+    enum Body {
+        Block(Vec<Stmt>, SimpleSpan),
+        Expr(Expr),
+    }
+    let single = name(file)
+        .map_with(move |n, e| vec![Element { pattern: Pattern::Name(n), default: None, span: span(file, e.span()) }]);
+    let params = choice((single.boxed(), parameter_list(file, assign.clone())));
+    let body = choice((
+        braced(stmt).map(|(b, s)| Body::Block(b, s)),
+        punct(Punct::LBrace).not().ignore_then(assign).map(Body::Expr),
+    ));
+    params
+        .then(punct(Punct::Arrow).map_with(|_, e| e.span()))
+        .then(body)
+        .validate(move |((params, arrow_at), body), e, emitter| {
+            let whole = e.span();
+            if !e.state().fusion() {
+                emitter.emit(unsupported(Construct::Arrow, arrow_at));
+                return Expr::error(span(file, whole));
+            }
+            let (stmts, body_span) = match body {
+                Body::Block(stmts, s) => (stmts, span(file, s)),
+                Body::Expr(value) => {
+                    let at = value.span;
+                    (vec![Stmt::new(StmtKind::Return(Some(value)), at)], at)
+                }
+            };
+            let (params, body) = function_body(file, params, stmts, whole, e.state(), emitter);
+            let f = Function { name: None, params, body, body_span, span: span(file, whole), arrow: true };
+            cap_expr(Expr::new(ExprKind::Function(Box::new(f)), span(file, whole)), e.state(), whole)
+        })
+        .boxed()
+}
+
 /// What can follow an expression in a member/call chain.
 #[derive(Clone)]
 enum Suffix {
     Member(Ident),
     Index(Expr),
     Call(Vec<Expr>),
+    /// A template literal after the function: a tagged template.
+    Tagged(SimpleSpan),
 }
 
 /// `a.b`, `a[b]`, `a(b)` chains, and `new`.
@@ -172,6 +274,7 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
     }
     .map_with(move |n, e| Ident { name: n.to_string(), span: span(file, e.span()) })
     .labelled("a property name");
+    let tagged = template_literal(file, seq.clone()).map_with(|_, e| Suffix::Tagged(e.span()));
     let index = seq
         .delimited_by(punct(Punct::LBracket), punct(Punct::RBracket))
         .recover_with(via_parser(balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at)))));
@@ -188,9 +291,14 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
             suffix
         });
     let member_suffix = choice((member.clone(), index.clone().map(Suffix::Index))).boxed();
-    let suffix =
-        choice((member, optional.boxed(), index.map(Suffix::Index), arguments(file, assign.clone()).map(Suffix::Call)))
-            .boxed();
+    let suffix = choice((
+        member,
+        optional.boxed(),
+        index.map(Suffix::Index),
+        arguments(file, assign.clone()).map(Suffix::Call),
+        tagged.boxed(),
+    ))
+    .boxed();
 
     let apply = move |object: Expr, suffix: Suffix, e: &mut chumsky::input::MapExtra<'t, '_, I, Extra<'t, 's>>| {
         let at = span(file, e.span());
@@ -198,6 +306,10 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
             Suffix::Member(property) => ExprKind::Member { object: Box::new(object), property },
             Suffix::Index(index) => ExprKind::Index { object: Box::new(object), index: Box::new(index) },
             Suffix::Call(args) => ExprKind::Call { callee: Box::new(object), args },
+            Suffix::Tagged(template) => {
+                e.emit(unsupported(Construct::TaggedTemplate, template));
+                ExprKind::Error
+            }
         };
         let s = e.span();
         cap_expr(Expr::new(kind, at), e.state(), s)

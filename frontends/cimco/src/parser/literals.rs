@@ -7,7 +7,8 @@
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
-use super::{Extra, TokenInput, balanced, kw, name, punct, span, unsupported, word};
+use super::patterns::{self, Element, Pattern, element};
+use super::{Extra, ParseState, TokenInput, balanced, kw, name, punct, span, unsupported, word};
 use crate::ast::{Expr, ExprKind, Function, Ident, KeyForm, Property, PropertyKey, Stmt};
 use crate::diagnostics::Construct;
 use crate::print::js_number;
@@ -28,28 +29,7 @@ where
     I: TokenInput<'t, 's>,
     S: Parser<'t, I, Stmt, Extra<'t, 's>> + Clone + 't,
 {
-    let rest = punct(Punct::Ellipsis).map_with(|_, e| e.span()).then(name(file)).validate(|(at, n), _, emitter| {
-        emitter.emit(unsupported(Construct::Spread, at));
-        n
-    });
-    let destructured = balanced(Punct::LBrace).or(balanced(Punct::LBracket)).validate(move |at, _, emitter| {
-        emitter.emit(unsupported(Construct::Destructuring, at));
-        Ident { name: String::new(), span: span(file, at) }
-    });
-    let plain =
-        name(file).then(punct(Punct::Assign).ignore_then(assign).or_not()).validate(|(n, default), e, emitter| {
-            if default.is_some() {
-                emitter.emit(unsupported(Construct::DefaultParam, e.span()));
-            }
-            n
-        });
-    let params = choice((rest, destructured, plain))
-        .labelled("a parameter name")
-        .separated_by(punct(Punct::Comma))
-        .collect::<Vec<_>>()
-        .then(trailing_comma())
-        .map(|(params, _)| params)
-        .delimited_by(punct(Punct::LParen), punct(Punct::RParen));
+    let params = parameter_list(file, assign);
     kw(Keyword::Function)
         .ignore_then(punct(Punct::Star).map_with(|_, e| e.span()).or_not())
         .then(name(file).or_not())
@@ -59,15 +39,91 @@ where
             if let Some(at) = star {
                 emitter.emit(unsupported(Construct::Generator, at));
             }
-            Function { name, params, body, body_span: span(file, body_span), span: span(file, e.span()) }
+            let whole = e.span();
+            let (params, body) = function_body(file, params, body, whole, e.state(), emitter);
+            Function { name, params, body, body_span: span(file, body_span), span: span(file, whole), arrow: false }
         })
         .boxed()
 }
 
+/// `(a, b = 1, {c})`: parameters as elements; a rest parameter, and what
+/// the element grammar does not read, reported.
+pub(super) fn parameter_list<'t, 's: 't, I: TokenInput<'t, 's>>(
+    file: FileId,
+    assign: Boxed<'t, 's, I, Expr>,
+) -> Boxed<'t, 's, I, Vec<Element>> {
+    let rest =
+        punct(Punct::Ellipsis).map_with(|_, e| e.span()).then(name(file)).validate(move |(at, n), e, emitter| {
+            emitter.emit(unsupported(Construct::Spread, at));
+            Element { pattern: Pattern::Name(n), default: None, span: span(file, e.span()) }
+        });
+    // What the element grammar does not read, reported as destructuring.
+    let destructured = balanced(Punct::LBrace).or(balanced(Punct::LBracket)).validate(move |at, _, emitter| {
+        emitter.emit(unsupported(Construct::Destructuring, at));
+        let name = Ident { name: String::new(), span: span(file, at) };
+        Element { pattern: Pattern::Name(name), default: None, span: span(file, at) }
+    });
+    choice((rest.boxed(), element(file, assign), destructured.boxed()))
+        .labelled("a parameter name")
+        .separated_by(punct(Punct::Comma))
+        .collect::<Vec<_>>()
+        .then(trailing_comma())
+        .map(|(params, _)| params)
+        .delimited_by(punct(Punct::LParen), punct(Punct::RParen))
+        .boxed()
+}
+
+/// A function's parameter names and body. Read as Fusion's JavaScript,
+/// parameters with defaults or patterns become plain names and statements
+/// the body starts with, and the temporaries of assignment patterns in the
+/// body are declared ([`super::patterns`]); read as CNC-Calc's, they are
+/// reported.
+pub(super) fn function_body<'t, 's>(
+    file: FileId,
+    params: Vec<Element>,
+    body: Vec<Stmt>,
+    whole: SimpleSpan,
+    state: &mut ParseState,
+    emitter: &mut chumsky::input::Emitter<super::Error<'t, 's>>,
+) -> (Vec<Ident>, Vec<Stmt>) {
+    if !state.fusion() {
+        let names = params
+            .into_iter()
+            .map(|el| {
+                if let Some(n) = el.pattern.as_name() {
+                    if el.default.is_some() {
+                        emitter.emit(unsupported(Construct::DefaultParam, to_simple(el.span)));
+                    }
+                    return n.clone();
+                }
+                let at = el.pattern.span();
+                emitter.emit(unsupported(Construct::Destructuring, to_simple(at)));
+                if el.default.is_some() {
+                    emitter.emit(unsupported(Construct::DefaultParam, to_simple(el.span)));
+                }
+                Ident { name: String::new(), span: at }
+            })
+            .collect();
+        return (names, body);
+    }
+    let (names, prologue) = patterns::parameters(params);
+    let mut stmts: Vec<Stmt> = patterns::declare_temps(state, whole, file).into_iter().collect();
+    stmts.extend(prologue);
+    stmts.extend(body);
+    (names, stmts)
+}
+
+fn to_simple(s: postc_ir::Span) -> SimpleSpan {
+    SimpleSpan::from(s.start..s.end)
+}
+
 /// An optional comma before a closing bracket, reported when present.
 fn trailing_comma<'t, 's: 't, I: TokenInput<'t, 's>>() -> impl Parser<'t, I, (), Extra<'t, 's>> + Clone {
-    punct(Punct::Comma).map_with(|_, e| e.span()).or_not().validate(|at, _, emitter| {
-        if let Some(at) = at {
+    // Fusion's JavaScript allows it.
+    punct(Punct::Comma).map_with(|_, e| e.span()).or_not().validate(|at, e, emitter| {
+        if let Some(at) = at
+            && !e.state().fusion()
+        {
             emitter.emit(unsupported(Construct::TrailingComma, at));
         }
     })
@@ -118,7 +174,7 @@ pub(super) fn array<'t, 's: 't, I: TokenInput<'t, 's>>(
 }
 
 /// A property name: a name, a keyword, a string or a number.
-fn property_key<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> Boxed<'t, 's, I, PropertyKey> {
+pub(super) fn property_key<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> Boxed<'t, 's, I, PropertyKey> {
     select! {
         Token { kind: TokenKind::Ident(n), .. } => (n.to_string(), KeyForm::Ident),
         Token { kind: TokenKind::Keyword(k), .. } => (k.as_str().to_string(), KeyForm::Ident),
@@ -178,6 +234,13 @@ where
     let keyed = key.then(tail).validate(move |(key, tail), e, emitter| match tail {
         Tail::Value(value) => Property { span: key.span.to(value.span), key, value },
         Tail::Method => error_value(key, Construct::Method, e.span(), emitter),
+        // `{ x }` is `{ x: x }` in Fusion's JavaScript.
+        Tail::Shorthand
+            if e.state().fusion() && key.written == KeyForm::Ident && Keyword::from_word(&key.name).is_none() =>
+        {
+            let value = Expr::new(ExprKind::Ident(key.name.clone()), key.span);
+            Property { span: key.span, key, value }
+        }
         Tail::Shorthand => error_value(key, Construct::Shorthand, e.span(), emitter),
     });
     choice((accessor.boxed(), computed.boxed(), spread.boxed(), keyed.boxed()))

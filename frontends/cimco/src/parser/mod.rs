@@ -22,6 +22,7 @@ mod control;
 mod expr;
 mod literals;
 mod operators;
+mod patterns;
 pub(crate) mod report;
 mod stmt;
 mod unsupported;
@@ -36,6 +37,7 @@ use chumsky::inspector::Inspector;
 use chumsky::prelude::*;
 use postc_ir::{Diagnostic, FileId, Span};
 
+use crate::Syntax;
 use crate::ast::{Expr, MAX_TREE_DEPTH, Program, Stmt};
 use crate::diagnostics::Construct;
 use crate::lexer::Tokens;
@@ -76,6 +78,20 @@ pub(crate) struct ParseState {
     /// How many tokens the parser has read, re-reads after backtracking
     /// included: the parser's work, which stays linear in the input.
     reads: u64,
+    /// Whose JavaScript the text is: Fusion's reads what CNC-Calc's
+    /// refuses.
+    syntax: Syntax,
+    /// The temporaries destructuring introduced (`__postc_d<offset>`),
+    /// by offset, not yet declared: the function around them declares
+    /// them when it is built, the program those left at the top level.
+    temps: Vec<(usize, String)>,
+}
+
+impl ParseState {
+    /// Whether the text is read as Fusion's JavaScript.
+    pub(crate) fn fusion(&self) -> bool {
+        self.syntax == Syntax::Fusion
+    }
 }
 
 /// The nesting depth goes back with the input when the parser backtracks,
@@ -144,9 +160,10 @@ pub(crate) fn parse_tokens<'t, 's: 't>(
     text_len: usize,
     file: FileId,
     closers: HashMap<usize, usize>,
+    syntax: Syntax,
 ) -> Parsed<'t, 's> {
     let input = tokens.as_slice().map(SimpleSpan::from(text_len..text_len), |(t, s)| (t, s));
-    let mut state = ParseState { closers, ..ParseState::default() };
+    let mut state = ParseState { closers, syntax, ..ParseState::default() };
     let (program, errors) = stmt::program(file).parse_with_state(input, &mut state).into_output_errors();
     Parsed { program, errors, too_deep: state.too_deep, reads: state.reads }
 }
@@ -265,20 +282,36 @@ pub(crate) fn balanced<'t, 's: 't, I: TokenInput<'t, 's>>(
 ) -> impl Parser<'t, I, SimpleSpan, Extra<'t, 's>> + Clone {
     let skip = custom(move |inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>| {
         let start = inp.cursor();
-        inp.next();
-        let first_span = inp.span_since(&start);
-        let Some(target) = inp.state().closers.get(&first_span.start).copied() else {
-            let message = format!("this `{}` is never closed", open.as_str());
-            let help = Some("add the missing closing bracket");
-            return Err(Rich::custom(
-                first_span,
-                Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help),
-            ));
-        };
+        let target = closer_of(inp, open)?;
         skip_to(inp, target);
         Ok(inp.span_since(&start))
     });
     punct(open).rewind().ignore_then(skip)
+}
+
+/// Succeeds, consuming nothing, when the next token is `open` and a
+/// bracket closes it; fails as [`balanced`] does otherwise. A pattern is
+/// read only inside closed brackets, so that an unclosed one is reported
+/// where it opens.
+pub(crate) fn closed<'t, 's: 't, I: TokenInput<'t, 's>>(open: Punct) -> impl Parser<'t, I, (), Extra<'t, 's>> + Clone {
+    let check = custom(move |inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>| closer_of(inp, open).map(|_| ()));
+    punct(open).rewind().ignore_then(check.rewind())
+}
+
+/// Reads the opening bracket `open` and gives the end offset of the
+/// bracket that closes it, or the error of a bracket never closed.
+fn closer_of<'t, 's: 't, I: TokenInput<'t, 's>>(
+    inp: &mut InputRef<'t, '_, I, Extra<'t, 's>>,
+    open: Punct,
+) -> Result<usize, Error<'t, 's>> {
+    let start = inp.cursor();
+    inp.next();
+    let first_span = inp.span_since(&start);
+    inp.state().closers.get(&first_span.start).copied().ok_or_else(|| {
+        let message = format!("this `{}` is never closed", open.as_str());
+        let help = Some("add the missing closing bracket");
+        Rich::custom(first_span, Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help))
+    })
 }
 
 /// Consumes tokens until one ends at or after `end`.
@@ -351,9 +384,9 @@ pub(crate) fn is_internal(e: &Error<'_, '_>) -> bool {
 }
 
 /// Turns a grammar problem into a diagnostic.
-pub(crate) fn problem_diagnostic(problem: &Problem, at: Span) -> Diagnostic {
+pub(crate) fn problem_diagnostic(problem: &Problem, at: Span, syntax: Syntax) -> Diagnostic {
     match problem {
-        Problem::Unsupported(c) => c.diagnostic(at),
+        Problem::Unsupported(c) => c.diagnostic_as(at, syntax),
         Problem::Custom(code, message, label, help) => {
             let d = Diagnostic::error(*code, message.clone()).at(at, *label);
             match help {

@@ -7,8 +7,10 @@ use chumsky::pratt::{infix, left, right};
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
-use super::{Extra, TokenInput, cap_expr, kw, punct, span, unsupported};
+use super::patterns;
+use super::{Extra, Problem, TokenInput, cap_expr, kw, punct, span, unsupported};
 use crate::ast::{AssignOp, BinaryOp, Expr, ExprKind, LogicalOp, Stmt};
+use crate::diagnostics as d;
 use crate::diagnostics::Construct;
 use crate::token::{Keyword, Punct, Token, TokenKind};
 
@@ -172,6 +174,22 @@ where
         .then(choice((assignment, arrow)).or_not())
         .validate(move |(target, tail), e, emitter| match tail {
             None => target,
+            // Arrow functions are read where an expression starts
+            // (`super::expr`); what is left has no parameters an arrow
+            // function can take.
+            Some(Tail::Arrow(_)) if e.state().fusion() => {
+                let params = SimpleSpan::from(target.span.start..target.span.end);
+                emitter.emit(Rich::custom(
+                    params,
+                    Problem::Custom(
+                        d::SYNTAX_ERROR,
+                        "an arrow function's parameters are names in brackets: `(a, b) => a + b`".to_string(),
+                        "not parameters",
+                        None,
+                    ),
+                ));
+                Expr::error(span(file, e.span()))
+            }
             Some(Tail::Arrow(at)) => {
                 emitter.emit(unsupported(Construct::Arrow, at));
                 Expr::error(span(file, e.span()))
@@ -179,6 +197,27 @@ where
             Some(Tail::Assign(op, construct, at, value)) => {
                 if let Some(construct) = construct {
                     emitter.emit(unsupported(construct, at));
+                }
+                // `[a, b] = list`, `({a, b} = obj)`: destructuring in Fusion.
+                if op == AssignOp::Assign
+                    && matches!(target.kind, ExprKind::Array(_) | ExprKind::Object(_))
+                    && e.state().fusion()
+                {
+                    let whole = span(file, e.span());
+                    match patterns::from_expr(&target) {
+                        Ok(pattern) => return patterns::assignment(&pattern, value, whole, e.state()),
+                        Err(bad) => emitter.emit(Rich::custom(
+                            SimpleSpan::from(bad.start..bad.end),
+                            Problem::Custom(
+                                d::INVALID_ASSIGNMENT,
+                                "a destructuring assignment takes variables, properties (`a.b`) and elements (`a[i]`)"
+                                    .to_string(),
+                                "cannot be assigned",
+                                None,
+                            ),
+                        )),
+                    }
+                    return Expr::error(whole);
                 }
                 check_target(&target, emitter);
                 let kind = ExprKind::Assign { op, target: Box::new(target), value: Box::new(value) };

@@ -8,6 +8,7 @@ use chumsky::span::SimpleSpan;
 use postc_ir::{Diagnostic, FileId};
 
 use super::{Brackets, Error, TERMINATOR, is_internal, problem_diagnostic, span, too_deep_diagnostic};
+use crate::Syntax;
 use crate::diagnostics as d;
 use crate::token::{Keyword, Punct, Token, TokenKind};
 
@@ -18,18 +19,20 @@ pub(crate) fn diagnostics(
     file: FileId,
     brackets: &Brackets,
     too_deep: Option<SimpleSpan>,
+    syntax: Syntax,
 ) -> Vec<Diagnostic> {
-    let mut out: Vec<Diagnostic> = errors.iter().filter(|e| !is_internal(e)).map(|e| one(e, file, brackets)).collect();
+    let mut out: Vec<Diagnostic> =
+        errors.iter().filter(|e| !is_internal(e)).map(|e| one(e, file, brackets, syntax)).collect();
     if let Some(at) = too_deep {
         out.push(too_deep_diagnostic(span(file, at)));
     }
     out
 }
 
-fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets) -> Diagnostic {
+fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets, syntax: Syntax) -> Diagnostic {
     let at = span(file, *e.span());
     match e.reason() {
-        RichReason::Custom(problem) => problem_diagnostic(problem, at),
+        RichReason::Custom(problem) => problem_diagnostic(problem, at, syntax),
         RichReason::ExpectedFound { expected, found } => {
             let expected = describe_expected(expected);
             match found.as_deref() {
@@ -123,6 +126,8 @@ fn suggestible(t: &Token<'_>) -> bool {
                 | Punct::Ellipsis
         ),
         TokenKind::Keyword(k) => !matches!(k, Keyword::In | Keyword::Instanceof | Keyword::Delete | Keyword::Void),
+        // A template after an expression would be a tagged template.
+        TokenKind::TemplatePart { .. } => false,
         _ => true,
     }
 }

@@ -12,6 +12,7 @@ use postc_ir::FileId;
 use super::control::{for_statement, switch_statement};
 use super::expr::{expression, sequence};
 use super::literals::function_parts;
+use super::patterns::{self, element};
 use super::unsupported::unsupported_statements;
 use super::{
     Extra, Problem, TokenInput, cap_stmt, guarded, kw, name, punct, same_line, skip_statement, span, terminator,
@@ -39,11 +40,13 @@ pub(super) fn program<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> impl P
         ));
         Stmt::error(span(file, e.span()))
     });
-    stmt.or(stray)
-        .repeated()
-        .collect::<Vec<_>>()
-        .then_ignore(end())
-        .map_with(move |body, e| Program { body, span: span(file, e.span()) })
+    stmt.or(stray).repeated().collect::<Vec<_>>().then_ignore(end()).map_with(move |mut body, e| {
+        let whole: SimpleSpan = e.span();
+        if let Some(temps) = patterns::declare_temps(e.state(), SimpleSpan::from(0..usize::MAX), file) {
+            body.insert(0, temps);
+        }
+        Program { body, span: span(file, whole) }
+    })
 }
 
 /// `{ statements }`, with the span of the braces. At the end of the file a
@@ -94,21 +97,48 @@ where
 
     let declarator = name(file)
         .then(punct(Punct::Assign).ignore_then(assign.clone()).or_not())
-        .map_with(move |(name, init), e| VarDeclarator { name, init, span: at(e.span()) });
+        .map_with(move |(name, init), e| vec![VarDeclarator { name, init, span: at(e.span()) }]);
+    // `var [a, b] = list`, `var {a, b} = obj`: written out in Fusion
+    // (super::patterns), reported in CNC-Calc posts.
+    let patterned = element(file, assign.clone()).validate(move |el, e, emitter| {
+        let whole = at(e.span());
+        let pattern_at = el.pattern.span();
+        let simple = SimpleSpan::from(pattern_at.start..pattern_at.end);
+        match el.default {
+            Some(init) if e.state().fusion() => patterns::declarators(&el.pattern, init, whole),
+            init => {
+                if e.state().fusion() {
+                    emitter.emit(Rich::custom(
+                        simple,
+                        Problem::Custom(
+                            d::SYNTAX_ERROR,
+                            "a destructuring declaration needs a value".to_string(),
+                            "no `=` after this",
+                            Some("write `var [a, b] = list;`"),
+                        ),
+                    ));
+                } else {
+                    emitter.emit(unsupported(Construct::Destructuring, simple));
+                }
+                let name = crate::ast::Ident { name: String::new(), span: pattern_at };
+                vec![VarDeclarator { name, init, span: whole }]
+            }
+        }
+    });
     let destructured = super::balanced(Punct::LBrace)
         .or(super::balanced(Punct::LBracket))
         .then(punct(Punct::Assign).ignore_then(assign.clone()).or_not())
         .validate(move |(s, init), e, emitter| {
             emitter.emit(unsupported(Construct::Destructuring, s));
             let name = crate::ast::Ident { name: String::new(), span: at(s) };
-            VarDeclarator { name, init, span: at(e.span()) }
+            vec![VarDeclarator { name, init, span: at(e.span()) }]
         });
-    let declarators = declarator
-        .or(destructured)
+    let declarators = choice((declarator.boxed(), patterned.boxed(), destructured.boxed()))
         .labelled("a variable name")
         .separated_by(punct(Punct::Comma))
         .at_least(1)
         .collect::<Vec<_>>()
+        .map(|groups| groups.into_iter().flatten().collect::<Vec<_>>())
         .boxed();
     // `let x` / `const x`: reported, then read as `var`.
     let let_or_const = word("let")

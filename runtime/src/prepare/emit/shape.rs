@@ -203,9 +203,10 @@ pub(super) fn is_text(e: &Expr, returns_text: &[bool]) -> bool {
         Expr::Binary(BinaryOp::Add, a, b) => is_text(a, returns_text) || is_text(b, returns_text),
         Expr::Choose(_, a, b) => is_text(a, returns_text) && is_text(b, returns_text),
         Expr::Call(f, _) => returns_text.get(f.index()).copied().unwrap_or(false),
-        Expr::Builtin(Builtin::Str | Builtin::Upper | Builtin::Lower | Builtin::ToFixed | Builtin::Substring, _) => {
-            true
-        }
+        Expr::Builtin(
+            Builtin::Str | Builtin::JsString | Builtin::Upper | Builtin::Lower | Builtin::ToFixed | Builtin::Substring,
+            _,
+        ) => true,
         _ => false,
     }
 }

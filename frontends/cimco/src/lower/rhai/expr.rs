@@ -82,7 +82,9 @@ impl Gen<'_, '_> {
             ExprKind::String(s) => self.w(&quote(s)),
             ExprKind::Bool(b) => self.w(if *b { "true" } else { "false" }),
             ExprKind::Null => self.w(&format!("{}()", names::NULL)),
-            ExprKind::Undefined | ExprKind::Error => self.w("()"),
+            // A template literal is Fusion's, and Fusion posts never become
+            // Rhai: as an error node.
+            ExprKind::Undefined | ExprKind::Error | ExprKind::Template { .. } => self.w("()"),
             ExprKind::This => self.w(if self.at == 0 { "()" } else { "this" }),
             ExprKind::Regex { pattern, flags } => {
                 self.mark(e.span);
