@@ -348,31 +348,40 @@ pub fn replay(
 /// those lines.
 #[doc(hidden)]
 pub fn words_line(bytes: &[u8], block: &mut Block, digits: Option<usize>) -> Option<usize> {
-    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
     let bytes = &bytes[..bytes.len().min(MAX_LINE)];
     block.clear();
-    block.decimals = None;
+    // The most decimals of the X, Y and Z words, one more than it (0: none yet).
+    let mut xyz = 0u8;
     let mut i = 0;
     loop {
         let b = *bytes.get(i)?;
-        if blank(b) {
-            i += 1;
-            continue;
+        // `b & 0xDF` is the upper case of a letter and no letter for any other byte.
+        let index = (b & 0xDF).wrapping_sub(b'A');
+        if index >= 26 {
+            match b {
+                b' ' | b'\t' | b'\r' => {
+                    i += 1;
+                    continue;
+                }
+                b'\n' => {
+                    block.decimals = xyz.checked_sub(1);
+                    return Some(i);
+                }
+                _ => return None,
+            }
         }
-        if b == b'\n' {
-            return Some(i);
-        }
-        let letter = b.to_ascii_uppercase();
-        if !letter.is_ascii_uppercase() || letter == b'M' {
+        if index == b'M' - b'A' {
             return None;
         }
         let start = i;
         i += 1;
-        while bytes.get(i).is_some_and(|&b| blank(b)) {
-            i += 1;
+        if bytes.get(i).is_some_and(|&c| c <= b' ') {
+            while matches!(bytes.get(i), Some(b' ' | b'\t' | b'\r')) {
+                i += 1;
+            }
         }
-        let (n, value, decimals) = grammar::scan_number(&bytes[i..])?;
-        i += n;
+        let (end, value, decimals) = grammar::scan_at(bytes, i)?;
+        i = end;
         if let Some(limit) = digits
             && i - start > limit + 1
             && bytes[start..i].iter().filter(|b| b.is_ascii_digit()).count() > limit
@@ -380,23 +389,27 @@ pub fn words_line(bytes: &[u8], block: &mut Block, digits: Option<usize>) -> Opt
             return None;
         }
         let (start, end) = (start as u32, i as u32);
-        if letter == b'G' {
+        if index == b'G' - b'A' {
             if block.gs < MAX_CODES {
                 block.g[block.gs] = (value, start, end);
                 block.gs += 1;
             }
             continue;
         }
-        let bit = 1 << (letter - b'A');
+        let bit = 1 << index;
         if block.present & bit != 0 || KNOWN_LETTERS & bit == 0 {
             return None;
         }
-        block.set(letter, Word { value, decimals, start, end });
-        if matches!(letter, b'X' | b'Y' | b'Z') {
-            block.decimals = Some(block.decimals.map_or(decimals, |d| d.max(decimals)));
+        block.present |= bit;
+        block.letters[usize::from(index)] = Word { value, decimals, start, end };
+        if XYZ & bit != 0 {
+            xyz = xyz.max(decimals + 1);
         }
     }
 }
+
+/// X, Y and Z, as bits of `letter - 'A'`.
+const XYZ: u32 = 1 << (b'X' - b'A') | 1 << (b'Y' - b'A') | 1 << (b'Z' - b'A');
 
 /// Reads one line (up to and with its `\n`) into `buf`, keeping at most
 /// [`MAX_LINE`] bytes; the bytes consumed and whether the line was longer.
