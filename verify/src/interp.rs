@@ -154,9 +154,11 @@ const KNOWN_LETTERS: u32 = {
     mask
 };
 
-struct Run<'a> {
+struct Run<'a, O: Observer + ?Sized> {
     settings: &'a Settings,
-    observer: &'a mut dyn Observer,
+    /// Generic, so that the observer of a verification that draws nothing
+    /// (`()`) costs nothing.
+    observer: &'a mut O,
     /// Where each kept finding is (mm), parallel to `findings`.
     at: Vec<[f64; 3]>,
     /// The program line of each kept finding, parallel to `findings`.
@@ -211,24 +213,24 @@ struct Run<'a> {
     fast: bool,
 }
 
-pub fn run(
+pub fn run<O: Observer + ?Sized>(
     program: &mut dyn BufRead,
     file: FileId,
     toolpath: &mut dyn RecordSource,
     settings: &Settings,
-    observer: &mut dyn Observer,
+    observer: &mut O,
 ) -> Report {
     replay(program, file, toolpath, settings, observer, true)
 }
 
 /// [`run`]; `fast`: lines of words only are read by [`words_line`].
 #[doc(hidden)]
-pub fn replay(
+pub fn replay<O: Observer + ?Sized>(
     program: &mut dyn BufRead,
     file: FileId,
     toolpath: &mut dyn RecordSource,
     settings: &Settings,
-    observer: &mut dyn Observer,
+    observer: &mut O,
     fast: bool,
 ) -> Report {
     let mut run = Run {
@@ -454,7 +456,7 @@ fn fmt_point(p: [f64; 3]) -> String {
     format!("X{} Y{} Z{}", f(p[0]), f(p[1]), f(p[2]))
 }
 
-impl Run<'_> {
+impl<O: Observer + ?Sized> Run<'_, O> {
     // ----- findings -----
 
     fn push(&mut self, d: Diagnostic, error: bool) {
@@ -1331,7 +1333,7 @@ impl Run<'_> {
         if self.settings.rotary_wrap || self.stop_comparing || !(p.end[0].is_finite() && p.end[1].is_finite()) {
             return;
         }
-        self.compare(p);
+        self.compare(&p);
     }
 
     /// Feed and spindle state of a cutting move (before the comparison, which checks them against the toolpath).
@@ -1367,15 +1369,21 @@ impl Run<'_> {
         Some(e)
     }
 
-    fn compare(&mut self, mut p: Motion) {
+    fn compare(&mut self, p: &Motion) {
         let tol = self.tol();
         // A program that has not written Z (2D laser and plasma posts) is compared in X and Y.
         let flat = !p.end[2].is_finite();
-        if flat {
-            p.start[2] = 0.0;
-            p.end[2] = 0.0;
-            p.centre[2] = 0.0;
-        }
+        let flattened;
+        let p = if flat {
+            let mut q = *p;
+            q.start[2] = 0.0;
+            q.end[2] = 0.0;
+            q.centre[2] = 0.0;
+            flattened = q;
+            &flattened
+        } else {
+            p
+        };
         // Moves that flattening made zero-length (straight plunges) are made where the program is.
         while flat
             && let Some(e) = self.expected(0, flat)
@@ -1391,7 +1399,7 @@ impl Run<'_> {
             && let Some(e) = self.path.pop()
         {
             self.stats.matched += 1;
-            self.made(&p, &e, tol);
+            self.made(p, &e, tol);
             self.progress = 0.0;
             return;
         }
@@ -1403,30 +1411,30 @@ impl Run<'_> {
                 }
                 self.path.pop();
                 self.stats.matched += 1;
-                self.made(&p, &e, tol);
+                self.made(p, &e, tol);
                 self.progress = 0.0;
                 return;
             }
-            if k >= LOOKAHEAD || !self.skippable(&p, &e, tol) {
+            if k >= LOOKAHEAD || !self.skippable(p, &e, tol) {
                 break;
             }
             k += 1;
         }
         if let Some(e) = self.expected(0, flat)
-            && let Some(t) = self.on_path(&p, &e, tol)
+            && let Some(t) = self.on_path(p, &e, tol)
         {
             if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
                 self.motion_finding(
                     Severity::Error,
                     codes::VF012.code,
                     "a rapid move along a cut of the toolpath",
-                    &p,
+                    p,
                     Some(&e),
                     Some("the toolpath cuts here at a feed rate".into()),
                 );
             }
             if p.cutting() {
-                self.made(&p, &e, tol);
+                self.made(p, &e, tol);
             }
             self.progress = self.progress.max(t);
             return;
@@ -1444,7 +1452,7 @@ impl Run<'_> {
                     Severity::Error,
                     codes::VF012.code,
                     "a rapid move over a cut of the toolpath",
-                    &p,
+                    p,
                     Some(&e),
                     Some("the toolpath makes this move at a feed rate".into()),
                 );
@@ -1452,15 +1460,15 @@ impl Run<'_> {
                 self.progress = 0.0;
                 return;
             }
-            if !self.wrong_units(&p, tol, flat) {
-                self.extra_rapid(&p, tol);
+            if !self.wrong_units(p, tol, flat) {
+                self.extra_rapid(p, tol);
             }
             return;
         }
-        if !flat && self.in_the_air(&p, tol) {
+        if !flat && self.in_the_air(p, tol) {
             return; // a header or footer feed move above the material cuts nothing
         }
-        self.off_path(&p, tol, flat);
+        self.off_path(p, tol, flat);
     }
 
     /// Moves over an expected move the program skipped (covered on its way).
