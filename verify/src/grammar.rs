@@ -61,16 +61,44 @@ fn push<'s, 'b>(
     Ok(())
 }
 
-/// Reads a number at the start of `s`: bytes used, value, decimals.
-///
-/// Numbers of at most 18 digits (all a post prints) are read in two tight
-/// loops, integer part and fraction; longer ones by [`scan_long`].
+/// Reads a number at the start of `s`: bytes used, value, decimals
+/// ([`scan_at`]).
 #[inline(always)]
 pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
-    let (negative, start) = match s.first() {
-        Some(b'-') => (true, 1),
-        Some(b'+') => (false, 1),
-        _ => (false, 0),
+    scan_at(s, 0)
+}
+
+/// [`scan_number`] for the number at `s[at..]`: where it ends in `s`,
+/// value, decimals.
+///
+/// A number whose integer part and fraction have at most 7 digits each,
+/// with 8 bytes of `s` from the first digit of each, is read 8 bytes at a
+/// time ([`non_digits`], [`digits_value`]); the value is the same, from the
+/// same integer of all its digits. Others are read a byte at a time
+/// ([`scan_bytes`]).
+#[inline(always)]
+pub fn scan_at(s: &[u8], at: usize) -> Option<(usize, f64, u8)> {
+    let negative = s.get(at) == Some(&b'-');
+    match eights(s, at + usize::from(negative)) {
+        Some((i, mantissa, written)) => {
+            // At most 14 digits: under 2^63, where an i64 converts as a u64 does.
+            let value = mantissa as i64 as f64 / pow10(written as u32);
+            Some((i, if negative { -value } else { value }, written as u8))
+        }
+        None => scan_bytes(s, at),
+    }
+}
+
+/// [`scan_at`] a byte at a time: numbers of at most 18 digits (all a post
+/// prints) in two tight loops, integer part and fraction; longer ones by
+/// [`scan_long`].
+#[inline(never)]
+#[doc(hidden)]
+pub fn scan_bytes(s: &[u8], at: usize) -> Option<(usize, f64, u8)> {
+    let (negative, start) = match s.get(at) {
+        Some(b'-') => (true, at + 1),
+        Some(b'+') => (false, at + 1),
+        _ => (false, at),
     };
     let digit = |i: usize| s.get(i).map(|b| b.wrapping_sub(b'0')).filter(|d| *d < 10);
     let (mut i, mut mantissa) = (start, 0u64);
@@ -96,11 +124,86 @@ pub fn scan_number(s: &[u8]) -> Option<(usize, f64, u8)> {
         return None;
     }
     if integer + written > 18 {
-        return scan_long(s);
+        let (n, value, decimals) = scan_long(s.get(at..)?)?;
+        return Some((at + n, value, decimals));
     }
     let value = mantissa as f64 / pow10(written as u32);
     Some((i, if negative { -value } else { value }, written as u8))
 }
+
+/// `b'0'` in each byte.
+const ZEROS: u64 = 0x3030_3030_3030_3030;
+
+/// The digits of the number at `s[start..]` (after its sign), 8 bytes at a
+/// time: where it ends, the integer of all its digits and how many are
+/// the fraction's. `None` when the loads do not settle it (fewer than 8
+/// bytes left, 8 digits or more in a part, a decimal comma, no digit):
+/// the digit-by-digit loops read those.
+#[inline(always)]
+fn eights(s: &[u8], start: usize) -> Option<(usize, u64, usize)> {
+    let d = eight(s, start)? ^ ZEROS;
+    let other = non_digits(d);
+    let n = (other.trailing_zeros() / 8) as usize;
+    if n == 8 {
+        return None;
+    }
+    match (d >> (8 * n)) as u8 ^ b'0' {
+        b'.' => {
+            // The fraction ends at the next byte that is not a digit.
+            let after = other & u64::MAX.checked_shl(8 * n as u32 + 8).unwrap_or(0);
+            let end = (after.trailing_zeros() / 8) as usize;
+            if end < 8 {
+                // Within these 8 bytes: the integer part moved one byte up,
+                // onto the point, makes the digits one run behind a zero.
+                let below = (1u64 << (8 * n)) - 1;
+                let joined = ((d & below) << 8) | (d & !(below << 8 | 0xFF));
+                return (end > 1).then(|| (start + end, digits_value(joined, end), end - n - 1));
+            }
+            let f = eight(s, start + n + 1)? ^ ZEROS;
+            let m = (non_digits(f).trailing_zeros() / 8) as usize;
+            if m == 8 || n + m == 0 {
+                return None;
+            }
+            Some((start + n + 1 + m, digits_value(d, n) * POW10[m] + digits_value(f, m), m))
+        }
+        b',' => None,
+        _ if n == 0 => None,
+        _ => Some((start + n, digits_value(d, n), 0)),
+    }
+}
+
+/// The bytes of `d` (bytes minus `b'0'`) that are not digits: bits in
+/// their high nibble, none in a digit's byte.
+#[inline(always)]
+fn non_digits(d: u64) -> u64 {
+    const HIGH: u64 = 0xF0F0_F0F0_F0F0_F0F0;
+    // A byte is a digit when its high nibble is 0 and its low one under 10.
+    (d & HIGH) | ((d & !HIGH).wrapping_add(0x0606_0606_0606_0606) & HIGH)
+}
+
+/// The 8 bytes of `s` from `at`, the first the lowest, if `s` has them.
+#[inline(always)]
+fn eight(s: &[u8], at: usize) -> Option<u64> {
+    let bytes: [u8; 8] = s.get(at..at.checked_add(8)?)?.try_into().ok()?;
+    Some(u64::from_le_bytes(bytes))
+}
+
+/// The value of the first `n` (0 to 8) digits of `d` (bytes minus
+/// `b'0'`, the first the lowest): the digits moved to the top as the last
+/// of 8, behind zeros, and combined in pairs, fours and eights.
+#[inline(always)]
+fn digits_value(d: u64, n: usize) -> u64 {
+    let Some(v) = d.checked_shl(8 * (8 - n as u32)) else { return 0 };
+    let v = v.wrapping_mul(10).wrapping_add(v >> 8);
+    let pairs = 0x0000_00FF_0000_00FF;
+    ((v & pairs)
+        .wrapping_mul(100 + (1_000_000 << 32))
+        .wrapping_add(((v >> 16) & pairs).wrapping_mul(1 + (10_000 << 32))))
+        >> 32
+}
+
+/// Powers of ten up to 10^7, as integers.
+const POW10: [u64; 8] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000];
 
 /// [`scan_number`] for numbers of more than 18 digits: the first 18
 /// significant digits make the value (the rest of a fraction is dropped),

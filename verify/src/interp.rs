@@ -154,9 +154,11 @@ const KNOWN_LETTERS: u32 = {
     mask
 };
 
-struct Run<'a> {
+struct Run<'a, O: Observer + ?Sized> {
     settings: &'a Settings,
-    observer: &'a mut dyn Observer,
+    /// Generic, so that the observer of a verification that draws nothing
+    /// (`()`) costs nothing.
+    observer: &'a mut O,
     /// Where each kept finding is (mm), parallel to `findings`.
     at: Vec<[f64; 3]>,
     /// The program line of each kept finding, parallel to `findings`.
@@ -215,24 +217,24 @@ struct Run<'a> {
     fast: bool,
 }
 
-pub fn run(
+pub fn run<O: Observer + ?Sized>(
     program: &mut dyn BufRead,
     file: FileId,
     toolpath: &mut dyn RecordSource,
     settings: &Settings,
-    observer: &mut dyn Observer,
+    observer: &mut O,
 ) -> Report {
     replay(program, file, toolpath, settings, observer, true)
 }
 
 /// [`run`]; `fast`: lines of words only are read by [`words_line`].
 #[doc(hidden)]
-pub fn replay(
+pub fn replay<O: Observer + ?Sized>(
     program: &mut dyn BufRead,
     file: FileId,
     toolpath: &mut dyn RecordSource,
     settings: &Settings,
-    observer: &mut dyn Observer,
+    observer: &mut O,
     fast: bool,
 ) -> Report {
     let mut run = Run {
@@ -354,31 +356,40 @@ pub fn replay(
 /// those lines.
 #[doc(hidden)]
 pub fn words_line(bytes: &[u8], block: &mut Block, digits: Option<usize>) -> Option<usize> {
-    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
     let bytes = &bytes[..bytes.len().min(MAX_LINE)];
     block.clear();
-    block.decimals = None;
+    // The most decimals of the X, Y and Z words, one more than it (0: none yet).
+    let mut xyz = 0u8;
     let mut i = 0;
     loop {
         let b = *bytes.get(i)?;
-        if blank(b) {
-            i += 1;
-            continue;
+        // `b & 0xDF` is the upper case of a letter and no letter for any other byte.
+        let index = (b & 0xDF).wrapping_sub(b'A');
+        if index >= 26 {
+            match b {
+                b' ' | b'\t' | b'\r' => {
+                    i += 1;
+                    continue;
+                }
+                b'\n' => {
+                    block.decimals = xyz.checked_sub(1);
+                    return Some(i);
+                }
+                _ => return None,
+            }
         }
-        if b == b'\n' {
-            return Some(i);
-        }
-        let letter = b.to_ascii_uppercase();
-        if !letter.is_ascii_uppercase() || letter == b'M' {
+        if index == b'M' - b'A' {
             return None;
         }
         let start = i;
         i += 1;
-        while bytes.get(i).is_some_and(|&b| blank(b)) {
-            i += 1;
+        if bytes.get(i).is_some_and(|&c| c <= b' ') {
+            while matches!(bytes.get(i), Some(b' ' | b'\t' | b'\r')) {
+                i += 1;
+            }
         }
-        let (n, value, decimals) = grammar::scan_number(&bytes[i..])?;
-        i += n;
+        let (end, value, decimals) = grammar::scan_at(bytes, i)?;
+        i = end;
         if let Some(limit) = digits
             && i - start > limit + 1
             && bytes[start..i].iter().filter(|b| b.is_ascii_digit()).count() > limit
@@ -386,23 +397,27 @@ pub fn words_line(bytes: &[u8], block: &mut Block, digits: Option<usize>) -> Opt
             return None;
         }
         let (start, end) = (start as u32, i as u32);
-        if letter == b'G' {
+        if index == b'G' - b'A' {
             if block.gs < MAX_CODES {
                 block.g[block.gs] = (value, start, end);
                 block.gs += 1;
             }
             continue;
         }
-        let bit = 1 << (letter - b'A');
+        let bit = 1 << index;
         if block.present & bit != 0 || KNOWN_LETTERS & bit == 0 {
             return None;
         }
-        block.set(letter, Word { value, decimals, start, end });
-        if matches!(letter, b'X' | b'Y' | b'Z') {
-            block.decimals = Some(block.decimals.map_or(decimals, |d| d.max(decimals)));
+        block.present |= bit;
+        block.letters[usize::from(index)] = Word { value, decimals, start, end };
+        if XYZ & bit != 0 {
+            xyz = xyz.max(decimals + 1);
         }
     }
 }
+
+/// X, Y and Z, as bits of `letter - 'A'`.
+const XYZ: u32 = 1 << (b'X' - b'A') | 1 << (b'Y' - b'A') | 1 << (b'Z' - b'A');
 
 /// Reads one line (up to and with its `\n`) into `buf`, keeping at most
 /// [`MAX_LINE`] bytes; the bytes consumed and whether the line was longer.
@@ -447,7 +462,7 @@ fn fmt_point(p: [f64; 3]) -> String {
     format!("X{} Y{} Z{}", f(p[0]), f(p[1]), f(p[2]))
 }
 
-impl Run<'_> {
+impl<O: Observer + ?Sized> Run<'_, O> {
     // ----- findings -----
 
     fn push(&mut self, d: Diagnostic, error: bool) {
@@ -1338,7 +1353,7 @@ impl Run<'_> {
         if self.settings.rotary_wrap || self.stop_comparing || !(p.end[0].is_finite() && p.end[1].is_finite()) {
             return;
         }
-        self.compare(p);
+        self.compare(&p);
     }
 
     /// Feed and spindle state of a cutting move (before the comparison, which checks them against the toolpath).
@@ -1374,15 +1389,21 @@ impl Run<'_> {
         Some(e)
     }
 
-    fn compare(&mut self, mut p: Motion) {
+    fn compare(&mut self, p: &Motion) {
         let tol = self.tol();
         // A program that has not written Z (2D laser and plasma posts) is compared in X and Y.
         let flat = !p.end[2].is_finite();
-        if flat {
-            p.start[2] = 0.0;
-            p.end[2] = 0.0;
-            p.centre[2] = 0.0;
-        }
+        let flattened;
+        let p = if flat {
+            let mut q = *p;
+            q.start[2] = 0.0;
+            q.end[2] = 0.0;
+            q.centre[2] = 0.0;
+            flattened = q;
+            &flattened
+        } else {
+            p
+        };
         // Moves that flattening made zero-length (straight plunges) are made where the program is.
         while flat
             && let Some(e) = self.expected(0, flat)
@@ -1398,7 +1419,7 @@ impl Run<'_> {
             && let Some(e) = self.path.pop()
         {
             self.stats.matched += 1;
-            self.made(&p, &e, tol);
+            self.made(p, &e, tol);
             self.progress = 0.0;
             return;
         }
@@ -1410,30 +1431,30 @@ impl Run<'_> {
                 }
                 self.path.pop();
                 self.stats.matched += 1;
-                self.made(&p, &e, tol);
+                self.made(p, &e, tol);
                 self.progress = 0.0;
                 return;
             }
-            if k >= LOOKAHEAD || !self.skippable(&p, &e, tol) {
+            if k >= LOOKAHEAD || !self.skippable(p, &e, tol) {
                 break;
             }
             k += 1;
         }
         if let Some(e) = self.expected(0, flat)
-            && let Some(t) = self.on_path(&p, &e, tol)
+            && let Some(t) = self.on_path(p, &e, tol)
         {
             if p.kind == MKind::Rapid && e.cutting() && t > self.progress + 1e-6 && !Self::retract_like(&e) {
                 self.motion_finding(
                     Severity::Error,
                     codes::VF012.code,
                     "a rapid move along a cut of the toolpath",
-                    &p,
+                    p,
                     Some(&e),
                     Some("the toolpath cuts here at a feed rate".into()),
                 );
             }
             if p.cutting() {
-                self.made(&p, &e, tol);
+                self.made(p, &e, tol);
             }
             self.progress = self.progress.max(t);
             return;
@@ -1451,7 +1472,7 @@ impl Run<'_> {
                     Severity::Error,
                     codes::VF012.code,
                     "a rapid move over a cut of the toolpath",
-                    &p,
+                    p,
                     Some(&e),
                     Some("the toolpath makes this move at a feed rate".into()),
                 );
@@ -1459,15 +1480,15 @@ impl Run<'_> {
                 self.progress = 0.0;
                 return;
             }
-            if !self.wrong_units(&p, tol, flat) {
-                self.extra_rapid(&p, tol);
+            if !self.wrong_units(p, tol, flat) {
+                self.extra_rapid(p, tol);
             }
             return;
         }
-        if !flat && self.in_the_air(&p, tol) {
+        if !flat && self.in_the_air(p, tol) {
             return; // a header or footer feed move above the material cuts nothing
         }
-        self.off_path(&p, tol, flat);
+        self.off_path(p, tol, flat);
     }
 
     /// Moves over an expected move the program skipped (covered on its way).

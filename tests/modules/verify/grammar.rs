@@ -90,6 +90,24 @@ proptest::proptest! {
         let long = scan_long(text.as_bytes());
         proptest::prop_assert_eq!(fast.map(|(n, v, d)| (n, v.to_bits(), d)), long.map(|(n, v, d)| (n, v.to_bits(), d)), "{:?}", text);
     }
+
+    /// Numbers followed by the rest of a program (what the 8-byte reads of
+    /// `scan_at` see), anywhere in it: read as the byte-at-a-time scan and
+    /// the digit-by-digit one read them.
+    #[test]
+    fn the_eight_byte_number_scan_reads_as_the_others(
+        before in "[ -~]{0,3}",
+        number in "[-+]?[0-9]{0,9}([.,][0-9]{0,9})?",
+        after in "[-+.,:/ A-Z0-9\n\r\t\x00\x7f\u{e9}]{0,12}",
+    ) {
+        let text = format!("{before}{number}{after}");
+        let (s, at) = (text.as_bytes(), before.len());
+        let eight = scan_at(s, at).map(|(n, v, d)| (n, v.to_bits(), d));
+        let bytes = scan_bytes(s, at).map(|(n, v, d)| (n, v.to_bits(), d));
+        let long = scan_long(&s[at..]).map(|(n, v, d)| (at + n, v.to_bits(), d));
+        proptest::prop_assert_eq!(eight, bytes, "{:?}", text);
+        proptest::prop_assert_eq!(eight, long, "{:?}", text);
+    }
 }
 
 #[test]
