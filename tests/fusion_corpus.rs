@@ -169,3 +169,42 @@ fn a_fusion_post_as_ron_reads_back_and_posts_the_same() {
     let _ = std::fs::remove_dir_all(&tmp);
     assert!(a == b, "{}", support::diff(&a, &b));
 }
+
+/// A post that calls host API postc defines but does not run yet (here
+/// `redirectToFile` and `new TextFile`) is named by `postc check` at each
+/// call (JS110, a warning: the post runs while a job does not reach the
+/// call), and stops with an error naming it when a job does.
+#[test]
+fn check_names_host_api_postc_does_not_run_yet() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post = dir.path().join("stub.cps");
+    std::fs::write(
+        &post,
+        "description = \"stub\";\ncapabilities = CAPABILITY_MILLING;\nfunction onOpen() {\n  if (programName == \"none\") {\n    redirectToFile(\"x.txt\");\n    var f = new TextFile(\"y.txt\", true, \"ansi\");\n  }\n}\nfunction onClose() {\n  redirectToFile(\"z.txt\");\n}\n",
+    )
+    .expect("write the post");
+    let run = support::postc(&["check", post.to_str().expect("UTF-8")]);
+    let said = support::said(&run);
+    assert!(run.status.success(), "{said}");
+    for (name, line) in [("redirectToFile", 5), ("TextFile", 6), ("redirectToFile", 10)] {
+        let at = format!("stub.cps:{line}:");
+        assert!(
+            said.lines().any(|l| l.contains(&at))
+                && said.contains(&format!("warning[JS110]: this post calls `{name}`")),
+            "no JS110 for `{name}` at line {line}:\n{said}"
+        );
+    }
+    let job = dir.path().join("job.ron");
+    std::fs::write(&job, "Job(units:Mm)\nTool(number:1,diameter:6.0,spindle_speed:1000.0)\nToolpathStart(name:\"a\")\nRapid(x:0.0,y:0.0,z:5.0)\nToolpathEnd\nEnd\n").expect("write the job");
+    let out = dir.path().join("out.nc");
+    let run = support::postc(&[
+        "post",
+        "-q",
+        post.to_str().expect("UTF-8"),
+        job.to_str().expect("UTF-8"),
+        "-o",
+        out.to_str().expect("UTF-8"),
+    ]);
+    let said = support::said(&run);
+    assert!(!run.status.success() && said.contains("`redirectToFile`") && !out.exists(), "{said}");
+}

@@ -840,6 +840,13 @@ declare_codes! {
     JS109: Error, "a Fusion post uses a construct or host API postc does not run",
         example = "function onOpen() { getRegistryString(\"a\", \"b\"); }",
         fix = "Report it to postc's authors with the post; meanwhile, rewriting that part of the post in plainer JavaScript may avoid it.";
+    /// A Fusion post calls a function of Autodesk's host that postc defines but does not run yet
+    /// (records, cycle points, extra files, `include`, the tool renderer). The post runs; if a job
+    /// takes it to this call, the post stops there with an error naming the function (RT036) and
+    /// writes nothing.
+    JS110: Warning, "a Fusion post calls host API postc does not run yet",
+        example = "function onClose() { if (false) { redirectToFile(\"setup.txt\"); } }",
+        fix = "Nothing to do if the job never reaches the call; otherwise report it to postc's authors with the post.";
     /// The line does not read as VcPost: a word or symbol stands where the language allows none.
     /// The help, when there is one, says what was expected.
     VC001: Error, "a line VcPost cannot read (unexpected word or symbol)",

@@ -17,7 +17,7 @@ use std::path::Path;
 
 use postc_ir::{Diagnostic, Dialect, Post, SourceMap, Span, codes};
 
-use crate::ast::{Program, StmtKind};
+use crate::ast::{ExprKind, Program, StmtKind};
 
 /// postc's Fusion host API, in JavaScript.
 pub const HOST: &str = include_str!("host.js");
@@ -43,11 +43,37 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     post.info.file_extension = "nc".into();
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
+        let stubs = stubs(&host);
         let merged = merge(host, program);
-        crate::lower::fusion::lower(&merged, Span::new(file, 0, text.len()), &mut post, &mut diagnostics);
+        crate::lower::fusion::lower(&merged, Span::new(file, 0, text.len()), &stubs, &mut post, &mut diagnostics);
     }
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     (post, diagnostics)
+}
+
+/// The host's functions that only stop the post (`__unsupported(...)`):
+/// host API postc does not run yet.
+fn stubs(host: &Program) -> HashSet<String> {
+    host.body
+        .iter()
+        .filter_map(|s| match &s.kind {
+            StmtKind::Function(f) => match f.body.as_slice() {
+                [only] => match &only.kind {
+                    StmtKind::Expr(e) => match &e.kind {
+                        ExprKind::Call { callee, .. }
+                            if matches!(&callee.kind, ExprKind::Ident(n) if n == "__unsupported") =>
+                        {
+                            f.name.as_ref().map(|n| n.name.clone())
+                        }
+                        _ => None,
+                    },
+                    _ => None,
+                },
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect()
 }
 
 /// The host's statements, less the functions the post declares, then the

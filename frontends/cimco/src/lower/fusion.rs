@@ -26,6 +26,8 @@ use postc_ir::{
     BinaryOp, Body, Diagnostic, Expr, Function, Handler, HandlerKey, Post, Quantity, Section, Span, Stmt, codes,
 };
 
+use std::collections::HashSet;
+
 use crate::ast::Program;
 
 use super::fold;
@@ -35,13 +37,31 @@ use super::model::Model;
 use super::setup::Setup;
 
 /// Lowers the merged program (host first, then the post) into `post`.
-pub(crate) fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut Vec<Diagnostic>) {
+pub(crate) fn lower(
+    program: &Program,
+    whole: Span,
+    stubs: &HashSet<String>,
+    post: &mut Post,
+    diags: &mut Vec<Diagnostic>,
+) {
     let model = Model::build(program);
     let setup = Setup::default();
     let mut layout = Layout::new(&model);
     let init_fn = layout.add_fn(layout::INIT);
-    let functions = match functions(program, &model, &setup, &mut layout, whole) {
-        Ok(f) => f,
+    let functions = match functions(program, &model, &setup, &mut layout, whole, stubs) {
+        Ok((f, stub_calls)) => {
+            for (name, at) in stub_calls {
+                diags.push(
+                    Diagnostic::warning(
+                        codes::JS110,
+                        format!("this post calls `{name}` of Fusion's host, which postc does not run yet"),
+                    )
+                    .at(at, "the post stops here if it gets here")
+                    .note("a job whose toolpaths never reach this call posts as usual"),
+                );
+            }
+            f
+        }
         Err(why) => {
             diags.push(
                 Diagnostic::error(codes::JS109, format!("postc cannot run this Fusion post: it {}", why.what))
@@ -68,16 +88,22 @@ pub(crate) fn lower(program: &Program, whole: Span, post: &mut Post, diags: &mut
     post.scripts.clear();
 }
 
+/// The post's calls to host functions postc does not run yet, by name.
+type StubCalls = Vec<(String, Span)>;
+
 fn functions(
     program: &Program,
     model: &Model,
     setup: &Setup,
     layout: &mut Layout,
     whole: Span,
-) -> Result<Vec<Function>, super::native::Why> {
+    stubs: &HashSet<String>,
+) -> Result<(Vec<Function>, StubCalls), super::native::Why> {
     let init_stmts = super::init_statements(program, model, setup);
     let mut shared = general::Shared::new(model, setup, layout);
     shared.fusion = true;
+    shared.stubs = stubs.clone();
+    shared.post_file = Some(whole.file);
     let mut functions = Vec::new();
     for &id in &model.scopes.top_fns {
         let f = &model.scopes.funcs[id];
@@ -94,12 +120,13 @@ fn functions(
         }
         functions.push(f);
     }
+    let stub_calls = std::mem::take(&mut shared.stub_calls);
     for f in &mut functions {
         if let Body::Native(b) = &mut f.body {
             *b = fold::stmts(std::mem::take(b));
         }
     }
-    Ok(functions)
+    Ok((functions, stub_calls))
 }
 
 /// The handlers: each section calls the host's engine function for it.

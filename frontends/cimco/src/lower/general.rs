@@ -77,12 +77,30 @@ pub struct Shared<'c, 'a> {
     /// runs, unless Autodesk's host declares it (then the post is refused:
     /// postc's host lacks it).
     pub fusion: bool,
+    /// Host functions that stop the post when called (postc does not
+    /// run them yet), and the calls of the post's own file to them: `postc
+    /// check` names each (JS110).
+    pub stubs: std::collections::HashSet<String>,
+    pub stub_calls: Vec<(String, Span)>,
+    /// The post's own file (not the host's).
+    pub post_file: Option<postc_ir::FileId>,
 }
 
 impl<'c, 'a> Shared<'c, 'a> {
     pub fn new(model: &'c Model<'a>, setup: &'c Setup, layout: &'c mut Layout) -> Self {
         let cells = cells(model);
-        Shared { model, setup, layout, nested: HashMap::new(), pending: Vec::new(), cells, fusion: false }
+        Shared {
+            model,
+            setup,
+            layout,
+            nested: HashMap::new(),
+            pending: Vec::new(),
+            cells,
+            fusion: false,
+            stubs: Default::default(),
+            stub_calls: Vec::new(),
+            post_file: None,
+        }
     }
 
     /// A name no one defines, in a Fusion post: refused when Fusion's
@@ -1119,6 +1137,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     return Err(why(at, format!("makes a `new {n}`, which the host does not provide")));
                 }
                 _ => {
+                    if let ExprKind::Ident(n) = &callee.kind {
+                        self.note_stub(n, at);
+                    }
                     let mut operands: Vec<&Expr> = vec![callee];
                     operands.extend(args.iter());
                     Ir::Builtin(Builtin::Construct, self.operands(&operands, pre)?)
@@ -1223,6 +1244,14 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         self.operands(&refs, pre)
     }
 
+    /// Notes a call (or `new`) of the post's own file to a host function
+    /// postc does not run yet.
+    fn note_stub(&mut self, name: &str, at: Span) {
+        if self.shared.stubs.contains(name) && Some(at.file) == self.shared.post_file {
+            self.shared.stub_calls.push((name.to_string(), at));
+        }
+    }
+
     fn call(&mut self, callee: &Expr, args: &[Expr], at: Span, pre: &mut Vec<IrStmt>) -> R<Ir> {
         match &callee.kind {
             ExprKind::Member { object, property } => self.method(object, &property.name, args, at, pre),
@@ -1235,6 +1264,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 }
                 match self.model().scopes.resolve(name, self.at) {
                     Symbol::TopFn(i) => {
+                        self.note_stub(name, at);
                         let f = self.shared.layout.top_fn[i];
                         Ok(Ir::Call(f, self.args(args, pre)?))
                     }
