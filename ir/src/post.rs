@@ -223,7 +223,9 @@ pub struct OutputOptions {
     pub exact_arcs: bool,
     /// Arcs in the ZX and YZ planes reach the arc sections (with the
     /// `ARC_PLANE` quantity) instead of being linearized: for posts that
-    /// write G18 and G19 arcs themselves (Fusion posts).
+    /// write G18 and G19 arcs themselves (Fusion posts). Written to RON
+    /// only when set.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub arcs_in_every_plane: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
