@@ -6,11 +6,22 @@
 //! engine disagreeing with V8, or the event order disagreeing with a second
 //! reading of the documentation.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use crate::fusion_corpus::{posts, shared};
 use crate::support;
+
+/// A temporary folder with the standard milling job as RON (for postc)
+/// and JSON Lines (for the Node.js referee), and the referee's script.
+fn milling_job_for_node() -> (tempfile::TempDir, PathBuf, PathBuf, PathBuf) {
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let job = crate::fusion_corpus::milling_job(folder.path());
+    let jsonl = folder.path().join("standard_milling.jsonl");
+    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    (folder, job, jsonl, script)
+}
 
 #[test]
 fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs() {
@@ -23,12 +34,7 @@ fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs(
         support::referee_missing("fusion_node", "node");
         return;
     }
-    let tmp = std::env::temp_dir().join(format!("postc-fusion-node-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).expect("temporary folder");
-    let job = crate::fusion_corpus::milling_job(&tmp);
-    let jsonl = tmp.join("standard_milling.jsonl");
-    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let (_folder, job, jsonl, script) = milling_job_for_node();
     let posts = posts(&dir);
     let next = std::sync::atomic::AtomicUsize::new(0);
     let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
@@ -70,7 +76,6 @@ fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs(
     });
     let same = results.iter().filter(|r| r.is_ok()).count();
     let differ: Vec<String> = results.into_iter().filter_map(Result::err).collect();
-    let _ = std::fs::remove_dir_all(&tmp);
     println!("{same} corpus Fusion posts print the same program under Node.js and postc");
     assert!(differ.is_empty(), "{} posts differ (Node.js first, postc second):\n{}", differ.len(), differ.join("\n"));
 }
@@ -159,12 +164,8 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
         support::referee_missing("fusion_node", "node");
         return;
     }
-    let tmp = std::env::temp_dir().join(format!("postc-fusion-modern-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).expect("temporary folder");
-    let job = crate::fusion_corpus::milling_job(&tmp);
-    let jsonl = tmp.join("standard_milling.jsonl");
-    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let (folder, job, jsonl, script) = milling_job_for_node();
+    let tmp = folder.path();
     let mut differ = Vec::new();
     for (k, (what, body)) in MODERN.iter().enumerate() {
         let text = format!(
@@ -184,6 +185,5 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
             differ.push(format!("{what}:\n{}", support::diff(&node.stdout, &ours)));
         }
     }
-    let _ = std::fs::remove_dir_all(&tmp);
     assert!(differ.is_empty(), "Node.js first, postc second:\n{}", differ.join("\n"));
 }

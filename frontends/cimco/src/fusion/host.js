@@ -1278,8 +1278,6 @@ function linearize(tol) {
 function isFinite(v) { var n = Number(v); return n - n == 0; }
 
 // ---- Tables, colours, files ----
-// `new Table(values, {initial, force}, message)`: `lookup(id)` is the
-// value for `id` (counted from `initial`), or an error with `message`.
 // Text with `${name}` fields that `substitute(values)` fills from an
 // object's properties; a field with no property stays as written.
 function Template(text) {
@@ -1302,6 +1300,8 @@ function Template(text) {
 // Files beside the program: a post that opens one stops when it does.
 function TextFile(path, write, encoding) { __unsupported("TextFile"); }
 
+// `new Table(values, {initial, force}, message)`: `lookup(id)` is the
+// value for `id` (counted from `initial`), or an error with `message`.
 function Table(values, specifiers, message) {
   this.values = values;
   this.initial = (specifiers !== undefined && specifiers.initial !== undefined) ? specifiers.initial : 0;
