@@ -1,20 +1,24 @@
 //! Real Fusion `.cps` posts: every post of `../shared/corpus/fusion/`
 //! (public posts from 57 repositories, never copied into this one) posts
-//! the standard job's milling toolpaths (`corpus/toolpaths/standard.ron`
-//! without its laser toolpath) through `postc post`, whose verification
-//! replays the program against the toolpath. Each post either writes a
-//! program that verifies, or is refused with a diagnostic and writes
-//! nothing; none panics. The test prints the count by outcome (the table
-//! of docs/fusion.md) and holds the number that post and verify at or
-//! above [`AT_LEAST`].
+//! the four jobs of the corpus bar through `postc post`, whose
+//! verification replays the program against the toolpath: the standard
+//! job's milling toolpaths (`corpus/toolpaths/standard.ron` without its
+//! laser toolpath), the arcs job, the drilling job, and a real APT CL file
+//! (`../shared/corpus/apt/aamorim1913__AptPostProcessor/Top-light-cover.apt`:
+//! a deep drilling cycle, pockets of arcs, cutter compensation, inserted
+//! text). Each post either writes programs that verify, or is refused with
+//! a diagnostic and writes nothing; none panics. The test prints the count
+//! by outcome (the table of docs/fusion.md: a post counts under the first
+//! job it does not post) and holds the number that post and verify all
+//! four at or above [`AT_LEAST`].
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use crate::support;
 
-/// Posts that post the milling job and pass verification today.
-const AT_LEAST: usize = 101;
+/// Posts that post all four jobs and pass verification today.
+const AT_LEAST: usize = 77;
 
 /// The Fusion corpus beside the checkout.
 pub fn shared() -> PathBuf {
@@ -62,7 +66,7 @@ pub fn milling_job(dir: &Path) -> PathBuf {
     path
 }
 
-/// The outcome of one post, as the table counts it.
+/// The outcome of one post over one job, as the table counts it.
 fn outcome(said: &str, status: Option<i32>) -> String {
     if status == Some(0) {
         return "posts and verifies".into();
@@ -75,8 +79,24 @@ fn outcome(said: &str, status: Option<i32>) -> String {
     code.to_string()
 }
 
+/// The jobs of the bar: the milling job first (a post that refuses it is
+/// not run over the others).
+fn jobs(tmp: &Path) -> Vec<(&'static str, PathBuf)> {
+    let toolpaths = support::corpus().join("toolpaths");
+    vec![
+        ("milling", milling_job(tmp)),
+        ("arcs", toolpaths.join("arcs_mm.ron")),
+        ("drilling", toolpaths.join("drill_mm.ron")),
+        (
+            "APT CL file",
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../shared/corpus/apt/aamorim1913__AptPostProcessor/Top-light-cover.apt"),
+        ),
+    ]
+}
+
 #[test]
-fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
+fn corpus_fusion_posts_post_the_milling_jobs_or_say_why_not() {
     let dir = shared();
     if !dir.is_dir() {
         support::referee_missing("corpus_fusion_posts", "../shared/corpus/fusion");
@@ -84,33 +104,50 @@ fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
     }
     let tmp = std::env::temp_dir().join(format!("postc-fusion-corpus-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).expect("temporary folder");
-    let job = milling_job(&tmp);
+    let jobs = jobs(&tmp);
     let posts = posts(&dir);
     let next = std::sync::atomic::AtomicUsize::new(0);
     let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
-    // Each worker posts the next post not taken into a file of its own.
-    let runs: Vec<(String, String, Option<i32>, bool)> = std::thread::scope(|scope| {
+    // Each worker takes the next post not taken and posts it over each job
+    // in turn, into a file of its own, until a job fails.
+    let runs: Vec<(String, String, Vec<String>)> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..workers)
             .map(|w| {
-                let (posts, next, job, tmp, dir) = (&posts, &next, &job, &tmp, &dir);
+                let (posts, next, jobs, tmp, dir) = (&posts, &next, &jobs, &tmp, &dir);
                 scope.spawn(move || {
                     let mut done = Vec::new();
                     let out = tmp.join(format!("program-{w}.nc"));
                     loop {
                         let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                         let Some(post) = posts.get(i) else { break };
-                        let _ = std::fs::remove_file(&out);
-                        let run = support::postc(&[
-                            "post",
-                            "-q",
-                            post.to_str().expect("a UTF-8 path"),
-                            job.to_str().expect("a UTF-8 path"),
-                            "-o",
-                            out.to_str().expect("a UTF-8 path"),
-                        ]);
                         let name = post.strip_prefix(dir).unwrap_or(post).display().to_string();
-                        let left = !run.status.success() && out.exists();
-                        done.push((name, support::said(&run), run.status.code(), left));
+                        let mut broken = Vec::new();
+                        let mut result = "posts and verifies".to_string();
+                        for (job, path) in jobs {
+                            let _ = std::fs::remove_file(&out);
+                            let run = support::postc(&[
+                                "post",
+                                "-q",
+                                post.to_str().expect("a UTF-8 path"),
+                                path.to_str().expect("a UTF-8 path"),
+                                "-o",
+                                out.to_str().expect("a UTF-8 path"),
+                            ]);
+                            let said = support::said(&run);
+                            let status = run.status.code();
+                            if said.contains("panicked") || status.is_none_or(|c| c > 1) {
+                                broken.push(format!("{name} ({job}): exit {status:?}: {said}"));
+                            }
+                            if !run.status.success() && out.exists() {
+                                broken.push(format!("{name} ({job}): failed and left its output behind"));
+                            }
+                            let got = outcome(&said, status);
+                            if got != "posts and verifies" {
+                                result = if *job == "milling" { got } else { format!("{got} ({job})") };
+                                break;
+                            }
+                        }
+                        done.push((name, result, broken));
                     }
                     done
                 })
@@ -120,14 +157,9 @@ fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
     });
     let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut broken = Vec::new();
-    for (name, said, status, left) in runs {
-        if said.contains("panicked") || status.is_none_or(|c| c > 1) {
-            broken.push(format!("{name}: exit {status:?}: {said}"));
-        }
-        if left {
-            broken.push(format!("{name}: failed and left its output behind"));
-        }
-        table.entry(outcome(&said, status)).or_default().push(name);
+    for (name, result, mut wrong) in runs {
+        broken.append(&mut wrong);
+        table.entry(result).or_default().push(name);
     }
     let _ = std::fs::remove_dir_all(&tmp);
     let mut summary = String::new();
@@ -139,7 +171,7 @@ fn corpus_fusion_posts_post_the_milling_job_or_say_why_not() {
     let good = table.get("posts and verifies").map_or(0, Vec::len);
     assert!(
         good >= AT_LEAST,
-        "{good} corpus Fusion posts post and verify the milling job, fewer than {AT_LEAST}:\n{summary}"
+        "{good} corpus Fusion posts post and verify the four jobs, fewer than {AT_LEAST}:\n{summary}"
     );
 }
 

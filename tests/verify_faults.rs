@@ -488,3 +488,46 @@ fn bad_programs_give_findings_never_a_panic() {
         let _ = verify(&mutated, &standard, &Settings::default());
     }
 }
+
+/// The spot holes of `drill_mm.ron` as Autodesk's `fanuc.cps` writes them:
+/// a canned cycle, G80, then a rapid with no G0 (a Fanuc control moves
+/// it in the G0 of before the cycle), a plunge, a dwell, another cycle.
+const SPOT_HOLES: &[&str] = &[
+    "%",
+    "N10 G90 G94 G17 G21",
+    "N30 T4 M06",
+    "N35 S6000 M03",
+    "N45 G00 X20. Y20. Z5.",
+    "N50 G98 G83 X20. Y20. Z-7. R1. Q3. F120.",
+    "N55 X40.",
+    "N60 G80",
+    "N160 G00 X20. Y40.",
+    "N170 G98 G82 X20. Y40. Z-2. R2. P1250 F150.",
+    "N175 G80",
+    "N180 X30. Z5.",
+    "N185 G01 Z-1. F150.",
+    "N190 G04 P2000",
+    "N195 G00 Z5.",
+    "N200 X40.",
+    "N205 G82 X40. Y40. Z-2. R2. P1250 F150.",
+    "N210 G80",
+    "N240 M30",
+    "%",
+];
+
+#[test]
+fn axis_words_after_a_cycles_g80_move_in_the_motion_mode_of_before_the_cycle() {
+    let toolpath = root().join("corpus/toolpaths/drill_mm.ron");
+    let settings = Settings { controller: Controller::Fanuc, ..Settings::default() };
+    let program = SPOT_HOLES.join("\n") + "\n";
+    let found = verify(program.as_bytes(), &toolpath, &settings);
+    let errors: Vec<_> = found.iter().filter(|f| f.severity == Severity::Error).collect();
+    assert!(errors.is_empty(), "{found:#?}");
+    // LinuxCNC refuses the block: a warning at it, naming both readings.
+    let warned = found.iter().find(|f| f.code == "VF005" && f.line == 12).expect("a VF005 warning at N180");
+    assert!(warned.message.contains("Fanuc") && warned.message.contains("LinuxCNC"), "{}", warned.message);
+    // The move is compared: to the wrong place, it is caught.
+    let wrong = program.replace("N180 X30. Z5.", "N180 X35. Z5.");
+    let found = verify(wrong.as_bytes(), &toolpath, &settings);
+    assert!(found.iter().any(|f| f.severity == Severity::Error && f.code.starts_with("VF01")), "{found:#?}");
+}

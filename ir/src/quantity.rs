@@ -105,6 +105,26 @@ quantities! {
     CoolantKind = "COOLANT_KIND", Plain;
     /// The plane of the arc being printed: 0 XY, 1 ZX, 2 YZ.
     ArcPlane = "ARC_PLANE", Plain;
+    /// The drilling cycle being printed (between DrillCycle and DrillEnd;
+    /// [`crate::event::DrillCycle`]): its kind, 0 drill, 1 deep (full
+    /// retract pecks), 2 chip breaking, 3 tap, 4 bore, 5 ream.
+    DrillKind = "DRILL_KIND", Plain;
+    /// The cycle's clearance plane, where the tool goes between holes.
+    DrillClearance = "DRILL_CLEARANCE", Length;
+    /// The cycle's R plane, where feeding starts.
+    DrillReference = "DRILL_R", Length;
+    /// The top of the cycle's holes (the R plane when the cycle names none).
+    DrillSurface = "DRILL_SURFACE", Length;
+    /// The bottom of the cycle's holes.
+    DrillBottom = "DRILL_BOTTOM", Length;
+    /// The cycle's feed: its own, else the tool's plunge feed, else its cut feed.
+    DrillFeed = "DRILL_FEED", Feed;
+    /// The cycle's peck depth; no value when it does not peck.
+    DrillPeck = "DRILL_PECK", Length;
+    /// The cycle's dwell at the bottom in seconds; 0 when it has none.
+    DrillDwell = "DRILL_DWELL", Plain;
+    /// The cycle's thread pitch (tapping); no value when it has none.
+    DrillPitch = "DRILL_PITCH", Length;
     /// Tool number.
     Tool = "T", Plain;
     /// Previous tool number.

@@ -13,7 +13,7 @@
 //! `G0 Z0` for a home Z the job never gave). `docs/vectric.md` lists every
 //! quantity and what it prints without a source.
 
-use postc_ir::event::{CompSide, Coolant, Job, Plane, Tool, ToolpathStart, ZOrigin};
+use postc_ir::event::{CompSide, Coolant, DrillCycle, DrillKind, Job, Plane, Tool, ToolpathStart, ZOrigin};
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, WrappedAxis};
 use postc_ir::{Quantity, Units};
 
@@ -60,6 +60,8 @@ pub struct MachineState {
     pub power: Option<f64>,
     /// Dwell time in seconds; [`NO_VALUE`] before any dwell.
     pub dwell: f64,
+    /// The drilling cycle between its DrillCycle and DrillEnd events.
+    pub drill: Option<DrillCycle>,
     /// Geometry of the arc being printed.
     pub arc: ArcGeometry,
     pub comment: String,
@@ -111,6 +113,7 @@ impl MachineState {
             spindle_speed: 0.0,
             power: None,
             dwell: NO_VALUE,
+            drill: None,
             arc: ArcGeometry::default(),
             comment: String::new(),
             date: String::new(),
@@ -238,6 +241,28 @@ impl MachineState {
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),
             Quantity::DwellTime => self.dwell,
+            Quantity::DrillKind => self.drill.as_ref().map_or(NO_VALUE, |c| match c.kind {
+                DrillKind::Drill => 0.0,
+                DrillKind::Deep => 1.0,
+                DrillKind::ChipBreak => 2.0,
+                DrillKind::Tap => 3.0,
+                DrillKind::Bore => 4.0,
+                DrillKind::Ream => 5.0,
+            }),
+            Quantity::DrillClearance => self.drill.as_ref().map_or(NO_VALUE, |c| c.retract_plane),
+            Quantity::DrillReference => self.drill.as_ref().map_or(NO_VALUE, |c| c.reference_plane),
+            Quantity::DrillSurface => self.drill.as_ref().map_or(NO_VALUE, |c| c.surface.unwrap_or(c.reference_plane)),
+            Quantity::DrillBottom => self.drill.as_ref().map_or(NO_VALUE, |c| c.depth),
+            Quantity::DrillFeed => self.drill.as_ref().map_or(NO_VALUE, |c| {
+                let tool_feed =
+                    if self.tool.plunge_feed > 0.0 { self.tool.plunge_feed } else { given(self.tool.cut_feed) };
+                c.feed.filter(|f| *f > 0.0).unwrap_or(tool_feed)
+            }),
+            Quantity::DrillPeck => self.drill.as_ref().and_then(|c| c.peck).filter(|p| *p > 0.0).unwrap_or(NO_VALUE),
+            Quantity::DrillDwell => {
+                self.drill.as_ref().map_or(NO_VALUE, |c| c.dwell.filter(|d| *d > 0.0).unwrap_or(0.0))
+            }
+            Quantity::DrillPitch => self.drill.as_ref().and_then(|c| c.pitch).filter(|p| *p > 0.0).unwrap_or(NO_VALUE),
             Quantity::HomeX => self.wrapped(0, home(|h| h.x)),
             Quantity::HomeY => self.wrapped(1, home(|h| h.y)),
             Quantity::HomeZ => home(|h| h.z),

@@ -222,6 +222,33 @@ Referee.prototype.event = function (e) {
                 this.call("__fusion_comment", [d.text]);
             }
             break;
+        case "DrillCycle": {
+            // The cycle's data as docs/fusion.md gives it (`__fusion_cycle`):
+            // kind number, clearance, R plane, top (the R plane when the
+            // cycle names none), bottom, feed (the cycle's, else the tool's
+            // plunge feed, else its cut feed), peck, dwell (0 when none),
+            // pitch.
+            this.ensureStarted();
+            var kinds = { Drill: 0, Deep: 1, ChipBreak: 2, Tap: 3, Bore: 4, Ream: 5 };
+            var toolFeed = this.tool.plunge_feed > 0 ? this.tool.plunge_feed : this.tool.cut_feed > 0 ? this.tool.cut_feed : NaN;
+            var feed = d.feed > 0 ? d.feed : toolFeed;
+            this.call("__fusion_cycle", [
+                kinds[d.kind || "Drill"], d.retract_plane || 0, d.reference_plane || 0,
+                d.surface != null ? d.surface : d.reference_plane || 0, d.depth || 0, feed,
+                d.peck > 0 ? d.peck : NaN, d.dwell > 0 ? d.dwell : 0, d.pitch > 0 ? d.pitch : NaN,
+            ]);
+            break;
+        }
+        case "DrillPoint":
+            this.ensureStarted();
+            this.pos = [d.x, d.y, d.z || 0];
+            this.call("__fusion_cycle_point", [d.x, d.y]);
+            break;
+        case "DrillEnd":
+            if (this.started) {
+                this.call("__fusion_cycle_end", []);
+            }
+            break;
         case "End":
             this.finish();
             break;

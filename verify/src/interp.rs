@@ -185,6 +185,9 @@ struct Run<'a, O: Observer + ?Sized> {
     arc_absolute: bool,
     plane: Plane,
     motion: Option<u32>,
+    /// The G0/G1 mode in force when a canned cycle began, which a Fanuc
+    /// family control moves in after the cycle's G80.
+    motion_before_cycle: Option<u32>,
     feed: f64,
     /// The feed's rounding as printed, mm/min.
     feed_step: f64,
@@ -260,6 +263,7 @@ pub fn replay<O: Observer + ?Sized>(
         arc_absolute: false,
         plane: Plane::Xy,
         motion: None,
+        motion_before_cycle: None,
         feed: f64::NAN,
         feed_step: 0.0,
         inverse_time: false,
@@ -916,10 +920,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     let cycle = |m: u32| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760);
                     if cycle(tenths) && !self.motion.is_some_and(cycle) {
                         self.cycle_initial_z = self.pos[2];
+                        self.motion_before_cycle = self.motion.filter(|m| *m == 0 || *m == 10);
                     }
                     self.motion = Some(tenths);
                 }
-                800 => self.motion = None,
+                800 => {
+                    // The G0/G1 of before the cycle is kept only when G80 ends a cycle.
+                    if !self.motion.is_some_and(|m| m >= 730) {
+                        self.motion_before_cycle = None;
+                    }
+                    self.motion = None;
+                }
                 40 => dwell = true,
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
@@ -1058,16 +1069,38 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         if !(any_axis || has_ijkr && matches!(self.motion, Some(20 | 30))) {
             return;
         }
-        let Some(motion) = self.motion else {
-            self.finding(
-                Severity::Warning,
-                codes::VF005.code,
-                "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block",
-                0,
-                self.line_len,
-                None,
-            );
-            return;
+        let before_cycle = if self.motion.is_none() { self.motion_before_cycle.take() } else { None };
+        let motion = match (self.motion, before_cycle) {
+            (Some(m), _) => m,
+            // After a cycle's G80, a Fanuc family control moves in the G0
+            // or G1 of before the cycle (its own modal group); LinuxCNC
+            // refuses the block.
+            (None, Some(before)) => {
+                self.finding(
+                    Severity::Warning,
+                    codes::VF005.code,
+                    format!(
+                        "axis words with no motion mode after G80: a Fanuc family control moves in the G{} of before the cycle, LinuxCNC refuses this block",
+                        before / 10
+                    ),
+                    0,
+                    self.line_len,
+                    None,
+                );
+                self.motion = Some(before);
+                before
+            }
+            (None, None) => {
+                self.finding(
+                    Severity::Warning,
+                    codes::VF005.code,
+                    "axis words with no motion mode (after G80 or before any G0/G1); a controller refuses this block",
+                    0,
+                    self.line_len,
+                    None,
+                );
+                return;
+            }
         };
         if !self.units_stated && !self.units_reported {
             self.units_reported = true;

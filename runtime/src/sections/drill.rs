@@ -19,7 +19,7 @@ impl SectionDispatch {
             eng.run_section(Section::DrillPoint)?;
             return Ok(());
         }
-        let Some(cycle) = self.drill.clone() else {
+        let Some(cycle) = eng.machine.drill.clone() else {
             return Err(Box::new(
                 Diagnostic::error("RT013", "a DrillPoint came outside a drilling cycle")
                     .at(eng.event_span, "this hole"),

@@ -32,7 +32,7 @@
 //!   that starts at a toolpath boundary starts like a program: the header
 //!   carries the tool and toolpath, with no TOOLCHANGE or NEW_SEGMENT.
 
-use postc_ir::event::{ArcDir, DrillCycle, Event, FeedMove, Intent, Move};
+use postc_ir::event::{ArcDir, Event, FeedMove, Intent, Move};
 use postc_ir::{Diagnostic, Quantity, Section};
 
 mod arcs;
@@ -76,7 +76,6 @@ pub struct SectionDispatch {
     family: Family,
     last_feed: Option<f64>,
     spindle_on: bool,
-    drill: Option<DrillCycle>,
     /// Tape splitting: the current part ends before the next block.
     split_pending: bool,
     /// Inserts, comments, coolant and compensation that came before the
@@ -105,7 +104,6 @@ impl SectionDispatch {
             family: Family::None,
             last_feed: None,
             spindle_on: false,
-            drill: None,
             split_pending: false,
             held: Vec::new(),
             held_bytes: 0,
@@ -255,8 +253,8 @@ impl SectionDispatch {
             }
             Event::DrillCycle(c) => {
                 self.ensure_started(eng)?;
+                eng.machine.drill = Some(c.clone());
                 eng.run_section(Section::DrillHeader)?;
-                self.drill = Some(c.clone());
             }
             Event::DrillPoint(p) => {
                 self.ensure_started(eng)?;
@@ -266,7 +264,7 @@ impl SectionDispatch {
                 if self.started {
                     eng.run_section(Section::DrillFooter)?;
                 }
-                self.drill = None;
+                eng.machine.drill = None;
             }
             Event::Comment(t) => {
                 eng.machine.comment.clone_from(&t.text);

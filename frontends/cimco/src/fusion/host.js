@@ -677,22 +677,27 @@ function ReferenceVariable(specifiers, format) {
 function createReferenceVariable(specifiers, format) { return new ReferenceVariable(specifiers, format); }
 
 // `createIncrementalVariable`: prints the change from the last value.
+// `reset()` makes the next value print even when it is no change; the
+// last value stays the base of the next change (docs/fusion.md).
 function IncrementalVariable(specifiers, format) {
   this.prefix = __prefixed(specifiers, "prefix");
   this.force = specifiers !== undefined && specifiers.force === true;
   this.formatter = format;
   this.current = undefined;
+  this.forced = false;
   this.enabled = true;
   this.format = function (value) {
     if (!this.enabled) { return ""; }
     var previous = this.current === undefined ? 0 : this.current;
     this.current = value;
-    if (!this.force && !this.formatter.areDifferent(value, previous)) { return ""; }
+    var forced = this.forced;
+    this.forced = false;
+    if (!this.force && !forced && !this.formatter.areDifferent(value, previous)) { return ""; }
     return this.prefix + this.formatter.format(value - previous);
   };
   this.getPrefix = function () { return this.prefix; };
   this.setPrefix = function (p) { this.prefix = p; };
-  this.reset = function () { this.current = undefined; };
+  this.reset = function () { this.forced = true; };
   this.disable = function () { this.enabled = false; };
   this.getCurrent = function () { return this.current; };
 }
@@ -954,12 +959,38 @@ function __Section(id, theTool, name) {
   this.optimizeMachineAnglesByMachine = function (machine, mode) {};
   this.optimize = function () {};
   this.getABCByPreference = function () { return new Vector(0, 0, 0); };
-  this.hasAnyCycle = function () { return false; };
-  this.hasCycle = function (type) { return false; };
-  this.getNumberOfCycles = function () { return 0; };
-  this.getNumberOfCyclePoints = function () { return 0; };
-  this.getFirstCycle = function () { return ""; };
-  this.doesStrictCycle = function (type) { return false; };
+  // The section's drilling cycles as far as postc has read them: those
+  // before its first move and every one posted since (docs/fusion.md,
+  // choice 19).
+  this.cycles = [];
+  this.hasAnyCycle = function () { return this.cycles.length > 0; };
+  this.hasCycle = function (type) {
+    for (var i = 0; i < this.cycles.length; ++i) {
+      if (this.cycles[i].type == type) { return true; }
+    }
+    return false;
+  };
+  this.getNumberOfCycles = function () { return this.cycles.length; };
+  this.getNumberOfCyclesWithId = function (type) {
+    var n = 0;
+    for (var i = 0; i < this.cycles.length; ++i) {
+      if (this.cycles[i].type == type) { ++n; }
+    }
+    return n;
+  };
+  this.getCycleId = function (i) { return this.cycles[i].type; };
+  this.getNumberOfCyclePoints = function () {
+    var n = 0;
+    for (var i = 0; i < this.cycles.length; ++i) { n += this.cycles[i].points.length; }
+    return n;
+  };
+  this.getFirstCycle = function () { return this.cycles.length > 0 ? this.cycles[0].type : ""; };
+  this.doesStartWithCycle = function (type) { return this.cycles.length > 0 && this.cycles[0].type == type && this.startsWithCycle; };
+  this.doesStartWithCycleIgnoringPositioning = function (type) { return this.doesStartWithCycle(type); };
+  this.doesStrictCycle = function (type) { return this.startsWithCycle && this.getNumberOfCyclesWithId(type) == this.cycles.length; };
+  this.hasCycleParameter = function (i, name) { return i < this.cycles.length && this.cycles[i].cycle[name] !== undefined; };
+  this.getCycleParameter = function (i, name) { return this.cycles[i].cycle[name]; };
+  this.startsWithCycle = false;
   this.getMovements = function () { return 0; };
   this.getCycleTime = function () { return 0; };
   this.getMaximumFeedrate = function () { return 0; };
@@ -1373,7 +1404,6 @@ function setCurrentDirection(d) {}
 function setCurrentPositionX(v) { __position.x = v; }
 function setCurrentPositionY(v) { __position.y = v; }
 function setCurrentPositionZ(v) { __position.z = v; }
-function getCyclePoint(i) { __unsupported("getCyclePoint"); }
 function isWellKnownCommand(command) { return command >= 0 && command <= COMMAND_PROBE_OFF; }
 function getQuadrant(angle) { return Math.floor((angle % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI) / (Math.PI / 2)); }
 function getConfigurationPath() { __unsupported("getConfigurationPath"); }
@@ -1560,12 +1590,6 @@ function createModalGroup(specifiers, groups, format) { return new ModalGroup(sp
 function __unsupported(name) {
   error("postc does not run `" + name + "` of Fusion's host yet (docs/fusion.md)");
 }
-function isFirstCyclePoint() { __unsupported("isFirstCyclePoint"); }
-function isLastCyclePoint() { __unsupported("isLastCyclePoint"); }
-function expandCyclePoint(x, y, z) { __unsupported("expandCyclePoint"); }
-function repositionToCycleClearance(c, x, y, z) { __unsupported("repositionToCycleClearance"); }
-function getCyclePointId() { __unsupported("getCyclePointId"); }
-function getNumberOfCyclePoints() { __unsupported("getNumberOfCyclePoints"); }
 function getNextRecord() { __unsupported("getNextRecord"); }
 function getCurrentRecordId() { __unsupported("getCurrentRecordId"); }
 function getRecord(id) { __unsupported("getRecord"); }
@@ -1576,8 +1600,6 @@ function getIntermediatePath() { __unsupported("getIntermediatePath"); }
 function findFile(path) { __unsupported("findFile"); }
 function getFixture() { __unsupported("getFixture"); }
 function setExitCode(code) { __unsupported("setExitCode"); }
-// No drilling cycle reaches the post: postc drills with moves.
-function isTappingCycle() { return false; }
 function isProbingCycle() { return false; }
 function isPolarModeActive() { return false; }
 function setWriteInvocations(on) {}
@@ -1660,7 +1682,8 @@ function onCircular(clockwise, cx, cy, cz, x, y, z, feed) { linearize(tolerance)
 function onMovement(m) {}
 function onPassThrough(text) {}
 function onCycle() {}
-function onCyclePoint(x, y, z) {}
+// A post without `onCyclePoint` gets its cycles as moves.
+function onCyclePoint(x, y, z) { expandCyclePoint(x, y, z); }
 function onCycleEnd() {}
 function onPower(power) {}
 function onUnsupportedCommand(command) {}
@@ -1713,6 +1736,12 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
   t.comment = notes;
   t.coolant = coolant;
   if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
+  // A toolpath that never moved is no section of Fusion's: the next
+  // takes its place (an APT file's INSERT before its first LOAD/TOOL).
+  if (__section !== undefined && __section.pending) {
+    __sections.pop();
+    __section = __sections.length > 0 ? __sections[__sections.length - 1] : undefined;
+  }
   var s = new __Section(__sections.length, t, toolpathName);
   // A milling tool's kind, from its name (postc's toolpaths give none).
   var named = String(name).toLowerCase();
@@ -1897,6 +1926,163 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, 
     __fusion_moved(p.x, p.y, p.z);
     __circular = c;
   }
+}
+
+// ---- Drilling cycles ----
+// postc's cycle kinds (`DRILL_KIND`) as Fusion's cycle types.
+function __cycleType(kind, dwell) {
+  switch (kind) {
+  case 0: return dwell > 0 ? "counter-boring" : "drilling";
+  case 1: return "deep-drilling";
+  case 2: return "chip-breaking";
+  case 3: return "tapping";
+  case 4: return "boring";
+  default: return "reaming";
+  }
+}
+
+// A cycle starts: its holes are read until it ends, then Fusion's calls
+// are made with the whole cycle known (`isLastCyclePoint`,
+// `getNumberOfCyclePoints`; docs/fusion.md, choice 19).
+var __cycleRead = undefined;
+var __cyclePoints = [];
+var __cyclePointId = -1;
+function __fusion_cycle(kind, clearance, retract, stock, bottom, feed, peck, dwell, pitch) {
+  var depth = stock - bottom;
+  var pecking = typeof peck == "number" && isFinite(peck) && peck > 0;
+  var step = pecking ? peck : depth;
+  var c = {
+    clearance: clearance,
+    retract: retract,
+    stock: stock,
+    depth: depth,
+    bottom: bottom,
+    feedrate: feed,
+    plungeFeedrate: feed,
+    retractFeedrate: feed,
+    dwell: dwell,
+    incrementalDepth: step,
+    incrementalDepthReduction: 0,
+    minimumIncrementalDepth: step,
+    accumulatedDepth: kind == 2 ? depth : step,
+    chipBreakDistance: step / 2,
+    plungesPerRetract: kind == 2 ? Math.max(1, Math.ceil(depth / step)) : 1,
+    shift: 0,
+    backBoreDistance: 0,
+    stopSpindle: 0,
+    compensation: "",
+    positionedSpindle: false
+  };
+  if (typeof pitch == "number" && isFinite(pitch)) { c.pitch = pitch; }
+  __cycleRead = { type: __cycleType(kind, dwell), cycle: c, points: [] };
+}
+
+function __fusion_cycle_point(x, y) {
+  if (__cycleRead !== undefined) { __cycleRead.points.push(new Vector(x, y, __cycleRead.cycle.bottom)); }
+}
+
+// The cycle ends: `onSection` first when the cycle starts its section
+// (the tool above the first hole at the clearance plane), then
+// `onCycle`, `onCyclePoint` for each hole, `onCycleEnd`.
+function __fusion_cycle_end() {
+  var c = __cycleRead;
+  __cycleRead = undefined;
+  if (c === undefined || c.points.length == 0) { return; }
+  var s = __section;
+  if (s !== undefined && s.pending) {
+    s.startsWithCycle = true;
+    s.strategy = "drill";
+    s.parameters["operation-strategy"] = "drill";
+    s.parameters["operation:cycleType"] = c.type;
+    if (c.cycle.pitch !== undefined) { s.tool.threadPitch = c.cycle.pitch; }
+  }
+  if (s !== undefined) { s.cycles.push(c); }
+  var first = c.points[0];
+  if (s !== undefined && s.pending) {
+    __fusion_begin(first.x, first.y, c.cycle.clearance);
+    __fusion_moved(first.x, first.y, c.cycle.clearance);
+  } else if (Math.abs(__position.x - first.x) > 1e-9 || Math.abs(__position.y - first.y) > 1e-9 ||
+             Math.abs(__position.z - c.cycle.clearance) > 1e-9) {
+    // Within a section, Fusion's linking moves take the tool over the
+    // first hole at the clearance plane before the cycle starts.
+    if (__position.z < c.cycle.clearance) { __fusion_rapid(__position.x, __position.y, c.cycle.clearance); }
+    __fusion_rapid(first.x, first.y, Math.max(__position.z, c.cycle.clearance));
+    if (__position.z > c.cycle.clearance) { __fusion_rapid(first.x, first.y, c.cycle.clearance); }
+  }
+  cycleType = c.type;
+  cycle = c.cycle;
+  __cyclePoints = c.points;
+  movement = MOVEMENT_CUTTING;
+  feedrate = cycle.feedrate;
+  // Once a post expands a hole, Fusion reads the rest of the cycle as
+  // expanded too (`cycleExpanded` stays set until the next cycle).
+  cycleExpanded = false;
+  onCycle();
+  for (var i = 0; i < c.points.length; ++i) {
+    var p = c.points[i];
+    __cyclePointId = i;
+    onCyclePoint(p.x, p.y, p.z);
+    // A canned cycle leaves the tool at the clearance plane above the
+    // hole (G98); an expanded one where its moves took it.
+    if (!cycleExpanded) { __fusion_moved(p.x, p.y, cycle.clearance); }
+  }
+  onCycleEnd();
+  __cyclePointId = -1;
+  __cyclePoints = [];
+}
+
+function isFirstCyclePoint() { return __cyclePointId == 0; }
+function isLastCyclePoint() { return __cyclePointId >= 0 && __cyclePointId == __cyclePoints.length - 1; }
+function getCyclePointId() { return __cyclePointId; }
+function getNumberOfCyclePoints() { return __cyclePoints.length; }
+function getCyclePoint(i) { return __vector(__cyclePoints[i]); }
+function isTappingCycle() { return cycleType.indexOf("tapping") >= 0; }
+
+// To X Y at the cycle's clearance plane (posts pass the hole to go over
+// it, or the current position to go up only).
+function repositionToCycleClearance(c, x, y, z) {
+  __expandedRapid(x, y, c.clearance);
+}
+
+function __expandedRapid(x, y, z) {
+  movement = MOVEMENT_RAPID;
+  onExpandedRapid(x, y, z);
+  __fusion_moved(x, y, z);
+}
+function __expandedLinear(x, y, z, feed) {
+  movement = MOVEMENT_CUTTING;
+  feedrate = feed;
+  onExpandedLinear(x, y, z, feed);
+  __fusion_moved(x, y, z);
+}
+
+// The hole as moves (Fusion's `expandCyclePoint`): up to the clearance
+// plane, over the hole, down to the R plane; the feed to the bottom, in
+// pecks for deep drilling (back to the R plane after each) and chip
+// breaking (back `chipBreakDistance`); the dwell; out at the feed for
+// boring, reaming and tapping, else at rapid; up to the clearance plane.
+function expandCyclePoint(x, y, z) {
+  cycleExpanded = true;
+  var c = cycle;
+  if (__position.z < c.clearance) { __expandedRapid(__position.x, __position.y, c.clearance); }
+  if (Math.abs(__position.x - x) > 1e-9 || Math.abs(__position.y - y) > 1e-9) { __expandedRapid(x, y, __position.z); }
+  if (__position.z > c.retract) { __expandedRapid(x, y, c.retract); }
+  var pecking = cycleType == "deep-drilling" || cycleType == "chip-breaking";
+  var step = pecking && c.incrementalDepth > 0 ? c.incrementalDepth : c.retract - z;
+  var at = c.retract;
+  while (at - z > 1e-9) {
+    at = Math.max(z, at - step);
+    __expandedLinear(x, y, at, c.feedrate);
+    if (at > z) {
+      __expandedRapid(x, y, cycleType == "deep-drilling" ? c.retract : at + c.chipBreakDistance);
+      __expandedRapid(x, y, at);
+    }
+  }
+  if (c.dwell > 0) { onDwell(c.dwell); }
+  if (cycleType == "boring" || cycleType == "reaming" || isTappingCycle()) {
+    __expandedLinear(x, y, c.retract, c.retractFeedrate);
+  }
+  __expandedRapid(x, y, c.clearance);
 }
 
 function __fusion_dwell(seconds) { onDwell(seconds); }

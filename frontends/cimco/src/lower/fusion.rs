@@ -16,6 +16,8 @@
 //! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane)` |
 //! | `DWELL_MOVE`, `COMMENT` | `__fusion_dwell(seconds)`, `__fusion_comment(text)` |
 //! | `COOLANT`, `CUTTER_COMP` | `__fusion_coolant(kind)`, `__fusion_compensation(side)` |
+//! | `DRILL_HEADER` | `__fusion_cycle(kind, clearance, R plane, top, bottom, feed, peck, dwell, pitch)` |
+//! | `DRILL_POINT`, `DRILL_FOOTER` | `__fusion_cycle_point(x, y)`, `__fusion_cycle_end()` |
 //! | `FOOTER` | `__fusion_close()` |
 //!
 //! A post that has a construct or host call the general form cannot
@@ -226,6 +228,25 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::Comment, call("__fusion_comment", vec![q(Quantity::CommentText)]));
     add(Section::Coolant, call("__fusion_coolant", vec![q(Quantity::CoolantKind)]));
     add(Section::CutterComp, call("__fusion_compensation", vec![q(Quantity::CompSide)]));
+    add(
+        Section::DrillHeader,
+        call(
+            "__fusion_cycle",
+            vec![
+                q(Quantity::DrillKind),
+                q(Quantity::DrillClearance),
+                q(Quantity::DrillReference),
+                q(Quantity::DrillSurface),
+                q(Quantity::DrillBottom),
+                q(Quantity::DrillFeed),
+                q(Quantity::DrillPeck),
+                q(Quantity::DrillDwell),
+                q(Quantity::DrillPitch),
+            ],
+        ),
+    );
+    add(Section::DrillPoint, call("__fusion_cycle_point", vec![q(Quantity::X), q(Quantity::Y)]));
+    add(Section::DrillFooter, call("__fusion_cycle_end", vec![]));
     add(Section::Footer, call("__fusion_close", vec![]));
     for h in &mut hs {
         h.body = fold::stmts(std::mem::take(&mut h.body));
