@@ -185,6 +185,17 @@ pub fn compile(path: &Path) -> Result<Post, String> {
     compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
 }
 
+/// Compiles a corpus post that may have warnings; its errors are a failure.
+pub fn compile_warned(path: &Path) -> Result<Post, String> {
+    let mut sources = postc_report::source_map();
+    let compiled = postc_driver::compile_post(path, None, &mut sources);
+    if compiled.has_errors() {
+        let list: Vec<String> = compiled.diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
+        return Err(format!("{} does not compile:\n{}", path.display(), list.join("\n")));
+    }
+    compiled.post.ok_or_else(|| format!("{} gave no post", path.display()))
+}
+
 /// A referee of a test (an outside program postc is checked against:
 /// Node.js, rs274, bash, man) is not installed: under `CI=true` that fails
 /// the test, since CI never skips a referee (`bash .ci/run` installs them);
