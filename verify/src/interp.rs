@@ -926,7 +926,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 }
                 800 => {
                     // The G0/G1 of before the cycle is kept only when G80 ends a cycle.
-                    if !self.motion.is_some_and(|m| m >= 730) {
+                    if self.motion.is_none_or(|m| m < 730) {
                         self.motion_before_cycle = None;
                     }
                     self.motion = None;
