@@ -23,16 +23,10 @@ const NAMESPACE: &str = "http://www.cimco-software.com/namespace/nc/parameter/";
 /// Differences between the engine's program (`-`) and postc's (`+`), block
 /// numbers left out, with the reason each is not postc's fault or what
 /// postc lacks.
-const KNOWN: &[(&str, &str)] = &[
-    (
-        "-(T1 D=50.8 CR=0. - ZMIN=0. - FACE MILL)\n-(T2 D=9.525 CR=0. - ZMIN=-10. - FLAT END MILL)\n+(T1 D=50.8 CR=0. - ZMIN=0. - FLAT END MILL)",
-        "the tool table of `onOpen`. FACE MILL is a rebuilding artefact: postc's toolpaths carry no tool kind, and the host takes it from the tool's name (docs/fusion.md, choice 12), `myTool1` in the trace. The missing T2 line is postc's: a toolpath is read as a stream, so the table holds the first tool only (docs/fusion.md, choice 3)",
-    ),
-    (
-        "-T2",
-        "postc: the next tool is known when its section starts, so `getNextTool()` in the first `onSection` finds none and the post preloads nothing (docs/fusion.md, choices 2 and 3)",
-    ),
-];
+const KNOWN: &[(&str, &str)] = &[(
+    "-(T1 D=50.8 CR=0. - ZMIN=0. - FACE MILL)\n+(T1 D=50.8 CR=0. - ZMIN=0. - FLAT END MILL)",
+    "the first tool's kind in the tool table of `onOpen`, a rebuilding artefact: postc's toolpaths carry no tool kind, and the host takes it from the tool's name (docs/fusion.md, choice 12), `myTool1` in the trace",
+)];
 
 fn real() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/fusion-real")

@@ -387,13 +387,46 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
         };
         return Err(Diagnostic::error(codes::IO001, message));
     }
-    match toolpath_format(path, &read_head(sources.loader(), path)) {
-        Some(ToolpathFormat::Native) => Ok(ReadAhead::start(native::open(path, sources)?)),
-        Some(ToolpathFormat::Apt) => Ok(ReadAhead::start(postc_reader_apt::open(path, sources)?)),
+    let events = match toolpath_format(path, &read_head(sources.loader(), path)) {
+        Some(ToolpathFormat::Native) => ReadAhead::start(native::open(path, sources)?),
+        Some(ToolpathFormat::Apt) => ReadAhead::start(postc_reader_apt::open(path, sources)?),
         None => {
-            Err(Diagnostic::error(codes::IO006, format!("cannot tell what kind of toolpath `{}` is", path.display()))
-                .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"))
+            return Err(Diagnostic::error(
+                codes::IO006,
+                format!("cannot tell what kind of toolpath `{}` is", path.display()),
+            )
+            .help("name it .ron or .jsonl (native events) or .apt/.cl/.cls/.ncl (APT CL)"));
         }
+    };
+    Ok(Box::new(Outlined { events, path: path.to_path_buf(), loader: sources.shared_loader() }))
+}
+
+/// A toolpath file's events, and the job's outline read from the file once
+/// more when a post that reads ahead asks for it.
+struct Outlined {
+    events: Box<dyn EventSource>,
+    path: std::path::PathBuf,
+    loader: Option<std::sync::Arc<dyn postc_ir::source::SourceLoader>>,
+}
+
+impl EventSource for Outlined {
+    fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(postc_ir::event::Event, Span)> {
+        self.events.next_event(diagnostics)
+    }
+
+    /// The second reading's diagnostics are the first's: they are dropped.
+    fn outline(&mut self) -> Option<postc_ir::outline::JobOutline> {
+        let mut sources = SourceMap::with_loader(self.loader.clone()?);
+        let mut source: Box<dyn EventSource> =
+            match toolpath_format(&self.path, &read_head(sources.loader(), &self.path))? {
+                ToolpathFormat::Native => Box::new(native::open(&self.path, &mut sources).ok()?),
+                ToolpathFormat::Apt => Box::new(postc_reader_apt::open(&self.path, &mut sources).ok()?),
+            };
+        let mut dropped = Vec::new();
+        Some(postc_ir::outline::JobOutline::of(std::iter::from_fn(|| {
+            dropped.clear();
+            source.next_event(&mut dropped).map(|(e, _)| e)
+        })))
     }
 }
 

@@ -249,6 +249,11 @@ impl SourceMap {
         self.loader.as_deref().unwrap_or(&NoFiles)
     }
 
+    /// The loader itself, to read files again on another map.
+    pub fn shared_loader(&self) -> Option<Arc<dyn SourceLoader>> {
+        self.loader.clone()
+    }
+
     /// Adds a file whose text is held in memory.
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         let text = text.into();

@@ -634,6 +634,14 @@ pub trait EventSource {
         &mut self,
         diagnostics: &mut Vec<crate::diagnostic::Diagnostic>,
     ) -> Option<(Event, crate::diagnostic::Span)>;
+
+    /// The whole job's outline, read ahead of the stream (a file read once
+    /// more), for posts that ask for later toolpaths before they come;
+    /// `None` when the source cannot read ahead (a stream that is read
+    /// once).
+    fn outline(&mut self) -> Option<crate::outline::JobOutline> {
+        None
+    }
 }
 
 impl<S: EventSource + ?Sized> EventSource for Box<S> {
@@ -642,6 +650,10 @@ impl<S: EventSource + ?Sized> EventSource for Box<S> {
         diagnostics: &mut Vec<crate::diagnostic::Diagnostic>,
     ) -> Option<(Event, crate::diagnostic::Span)> {
         (**self).next_event(diagnostics)
+    }
+
+    fn outline(&mut self) -> Option<crate::outline::JobOutline> {
+        (**self).outline()
     }
 }
 

@@ -104,6 +104,7 @@ pub mod event;
 pub mod format;
 pub mod id;
 pub mod limits;
+pub mod outline;
 pub mod post;
 pub mod quantity;
 pub mod source;

@@ -227,6 +227,12 @@ pub struct OutputOptions {
     /// only when set.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub arcs_in_every_plane: bool,
+    /// The post reads later toolpaths before they come (Fusion's
+    /// `getSection(i)`, tool table, next tool): the runtime asks the
+    /// toolpath source for the job's outline (`JOB_OUTLINE`). Written to
+    /// RON only when set.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub reads_ahead: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
@@ -280,6 +286,7 @@ impl Default for OutputOptions {
             arc_tolerance: 0.01,
             exact_arcs: false,
             arcs_in_every_plane: false,
+            reads_ahead: false,
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,

@@ -186,6 +186,10 @@ quantities! {
     CommentText = "COMMENT", Text;
     /// Text: the post's revision hash ([`crate::post::PostInfo::revision`]).
     Revision = "REVISION", Text;
+    /// Text: the job's outline as JSON, in the post's units, for posts
+    /// that read ahead ([`crate::post::OutputOptions::reads_ahead`]); an
+    /// empty text when the toolpath source cannot read ahead.
+    JobOutline = "JOB_OUTLINE", Text;
 }
 
 impl Quantity {

@@ -56,6 +56,7 @@ pub mod js;
 pub mod lathe;
 pub mod machine;
 pub mod number;
+pub mod outline;
 pub mod output;
 pub mod prepare;
 pub mod profile;
@@ -142,6 +143,12 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_name = f.name;
         machine.file_dir = f.dir;
         machine.file_ext = f.extension;
+    }
+    if post.options.reads_ahead
+        && let Some(outline) = source.outline()
+    {
+        let factor = output_units.map_or(1.0, |u| outline.units.factor_to(u));
+        machine.outline = outline::to_json(&outline, factor);
     }
     let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };
     let mut engine = Engine::new(post, &code, machine, out);

@@ -31,6 +31,31 @@ fn given(v: f64) -> f64 {
     if v == 0.0 { NO_VALUE } else { v }
 }
 
+/// The `COOLANT_KIND` number of a coolant: 0 off, 1 flood, 2 mist, 3
+/// through the tool, 4 air.
+pub fn coolant_kind(coolant: Coolant) -> f64 {
+    match coolant {
+        Coolant::Off => 0.0,
+        Coolant::Flood => 1.0,
+        Coolant::Mist => 2.0,
+        Coolant::Through => 3.0,
+        Coolant::Air => 4.0,
+    }
+}
+
+/// The `DRILL_KIND` number of a cycle: 0 drill, 1 deep, 2 chip breaking,
+/// 3 tap, 4 bore, 5 ream.
+pub fn drill_kind(kind: DrillKind) -> f64 {
+    match kind {
+        DrillKind::Drill => 0.0,
+        DrillKind::Deep => 1.0,
+        DrillKind::ChipBreak => 2.0,
+        DrillKind::Tap => 3.0,
+        DrillKind::Bore => 4.0,
+        DrillKind::Ream => 5.0,
+    }
+}
+
 /// The current state of the machine and the job.
 #[derive(Clone, Debug)]
 pub struct MachineState {
@@ -88,6 +113,8 @@ pub struct MachineState {
     pub wrap: Option<RotaryWrap>,
     /// `[REVISION]`: the post's revision hash (`PostInfo::revision`).
     pub revision: String,
+    /// `JOB_OUTLINE`: the job's outline as JSON, for posts that read ahead.
+    pub outline: String,
 }
 
 impl MachineState {
@@ -131,6 +158,7 @@ impl MachineState {
             spindle_range,
             wrap,
             revision: String::new(),
+            outline: String::new(),
         }
     }
 
@@ -230,25 +258,12 @@ impl MachineState {
                 CompSide::Left => 1.0,
                 CompSide::Right => 2.0,
             },
-            Quantity::CoolantKind => match self.coolant {
-                Coolant::Off => 0.0,
-                Coolant::Flood => 1.0,
-                Coolant::Mist => 2.0,
-                Coolant::Through => 3.0,
-                Coolant::Air => 4.0,
-            },
+            Quantity::CoolantKind => coolant_kind(self.coolant),
             Quantity::Tool => tool(f64::from(self.tool.number)),
             Quantity::PreviousTool => self.previous_tool.map_or(NO_VALUE, f64::from),
             Quantity::ToolDiameter => tool(self.tool.diameter),
             Quantity::DwellTime => self.dwell,
-            Quantity::DrillKind => self.drill.as_ref().map_or(NO_VALUE, |c| match c.kind {
-                DrillKind::Drill => 0.0,
-                DrillKind::Deep => 1.0,
-                DrillKind::ChipBreak => 2.0,
-                DrillKind::Tap => 3.0,
-                DrillKind::Bore => 4.0,
-                DrillKind::Ream => 5.0,
-            }),
+            Quantity::DrillKind => self.drill.as_ref().map_or(NO_VALUE, |c| drill_kind(c.kind)),
             Quantity::DrillClearance => self.drill.as_ref().map_or(NO_VALUE, |c| c.retract_plane),
             Quantity::DrillReference => self.drill.as_ref().map_or(NO_VALUE, |c| c.reference_plane),
             Quantity::DrillSurface => self.drill.as_ref().map_or(NO_VALUE, |c| c.surface.unwrap_or(c.reference_plane)),
@@ -341,6 +356,7 @@ impl MachineState {
             Quantity::UnitsText => self.output_units.name(),
             Quantity::CommentText => &self.comment,
             Quantity::Revision => &self.revision,
+            Quantity::JobOutline => &self.outline,
             _ => "",
         }
     }

@@ -288,6 +288,10 @@ impl EventSource for TeeSource<'_> {
         }
         next
     }
+
+    fn outline(&mut self) -> Option<postc_ir::outline::JobOutline> {
+        self.inner.outline()
+    }
 }
 
 /// What the verify thread has received and not yet read.

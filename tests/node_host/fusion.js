@@ -74,9 +74,9 @@ Referee.prototype.beginToolpath = function () {
         var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
         this.call(
             "__fusion_open",
-            [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""].concat(
-                stock
-            )
+            [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""]
+                .concat(stock)
+                .concat([JSON.stringify(this.outline || [])])
         );
         this.spindleOn = this.spindleTool();
         if (this.spindleOn) {
@@ -266,6 +266,100 @@ Referee.prototype.finish = function () {
     this.finished = true;
 };
 
+// The job's outline as docs/fusion.md describes `JOB_OUTLINE`: one entry
+// per section (a toolpath, or its part after a tool change, that moves),
+// with its tool, where its first move goes (over the first hole at the
+// clearance plane for a cycle), the Z it spans, and its cycles.
+function outlineOf(events) {
+    var KINDS = { Drill: 0, Deep: 1, ChipBreak: 2, Tap: 3, Bore: 4, Ream: 5 };
+    var sections = [];
+    var tool = {};
+    var speed = 0;
+    var toolpath = "";
+    var coolant = 0;
+    var cycle = null;
+    var open = null;
+    var fresh = true;
+    function close() {
+        if (open) {
+            sections.push(open);
+            open = null;
+        }
+    }
+    events.forEach(function (e) {
+        var kind = typeof e === "string" ? e : Object.keys(e)[0];
+        var d = typeof e === "string" ? null : e[kind];
+        var reached = null;
+        switch (kind) {
+            case "Tool":
+                if ((d.number || 0) !== tool.number) {
+                    close();
+                    fresh = true;
+                }
+                tool = { number: d.number || 0, name: d.name || "", notes: d.notes || "", diameter: d.diameter || 0,
+                    jet: !!d.jet, lengthOffset: d.length_offset != null ? d.length_offset : d.number || 0 };
+                speed = d.spindle_speed || 0;
+                break;
+            case "ToolpathStart":
+                close();
+                fresh = true;
+                toolpath = d.name || "";
+                break;
+            case "SpindleOn":
+                if (fresh && d.speed != null) {
+                    speed = d.speed;
+                }
+                break;
+            case "Coolant": {
+                var c = typeof d === "string" ? d : d.coolant;
+                coolant = COOLANT_KINDS[c] || 0;
+                break;
+            }
+            case "Rapid":
+            case "Feed":
+            case "Arc":
+                reached = [d.x, d.y, d.z, d.z, d.z];
+                break;
+            case "DrillCycle":
+                cycle = d;
+                if (open) {
+                    open.cycles += 1;
+                }
+                break;
+            case "DrillPoint":
+                if (cycle) {
+                    var clear = cycle.retract_plane || 0, bottom = cycle.depth || 0;
+                    reached = [d.x, d.y, clear, Math.min(bottom, clear), Math.max(bottom, clear)];
+                }
+                break;
+            case "DrillEnd":
+                cycle = null;
+                break;
+        }
+        if (!reached) {
+            return;
+        }
+        if (fresh) {
+            fresh = false;
+            var starts = kind === "DrillPoint";
+            open = {
+                tool: tool.number || 0, diameter: tool.diameter || 0, name: tool.name || "", notes: tool.notes || "",
+                lengthOffset: tool.lengthOffset || 0, speed: speed, jet: !!tool.jet, coolant: coolant,
+                toolpath: toolpath, x: reached[0], y: reached[1], z: reached[2], zMin: reached[3], zMax: reached[4],
+                cycle: starts ? KINDS[cycle.kind || "Drill"] : -1, dwell: starts && cycle.dwell > 0,
+                cycles: starts ? 1 : 0, points: 0,
+            };
+        }
+        open.zMin = Math.min(open.zMin, reached[3]);
+        open.zMax = Math.max(open.zMax, reached[4]);
+        if (kind === "DrillPoint") {
+            open.points += 1;
+        }
+    });
+    close();
+    return sections;
+}
+
 function main(argv) {
     var post = argv[2];
     var toolpath = argv[3];
@@ -274,13 +368,16 @@ function main(argv) {
         return 2;
     }
     var referee = new Referee(fs.readFileSync(post, "utf8"), post);
-    var lines = fs.readFileSync(toolpath, "utf8").split("\n");
+    var events = fs
+        .readFileSync(toolpath, "utf8")
+        .split("\n")
+        .map(function (line) { return line.trim(); })
+        .filter(function (line) { return line !== ""; })
+        .map(function (line) { return JSON.parse(line); });
+    referee.outline = outlineOf(events);
     try {
-        for (var i = 0; i < lines.length; i++) {
-            var line = lines[i].trim();
-            if (line !== "") {
-                referee.event(JSON.parse(line));
-            }
+        for (var i = 0; i < events.length; i++) {
+            referee.event(events[i]);
         }
         referee.finish();
     } catch (e) {

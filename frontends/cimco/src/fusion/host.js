@@ -962,15 +962,20 @@ function __Section(id, theTool, name) {
   // The section's drilling cycles as far as postc has read them: those
   // before its first move and every one posted since (docs/fusion.md,
   // choice 19).
+  // With the job read ahead, the section's cycles are known before they
+  // come: their number, their holes, the type of the first.
   this.cycles = [];
-  this.hasAnyCycle = function () { return this.cycles.length > 0; };
+  this.plannedCycles = 0;
+  this.plannedCyclePoints = 0;
+  this.plannedCycle = "";
+  this.hasAnyCycle = function () { return this.getNumberOfCycles() > 0; };
   this.hasCycle = function (type) {
     for (var i = 0; i < this.cycles.length; ++i) {
       if (this.cycles[i].type == type) { return true; }
     }
-    return false;
+    return this.plannedCycle == type;
   };
-  this.getNumberOfCycles = function () { return this.cycles.length; };
+  this.getNumberOfCycles = function () { return Math.max(this.cycles.length, this.plannedCycles); };
   this.getNumberOfCyclesWithId = function (type) {
     var n = 0;
     for (var i = 0; i < this.cycles.length; ++i) {
@@ -982,12 +987,14 @@ function __Section(id, theTool, name) {
   this.getNumberOfCyclePoints = function () {
     var n = 0;
     for (var i = 0; i < this.cycles.length; ++i) { n += this.cycles[i].points.length; }
-    return n;
+    return Math.max(n, this.plannedCyclePoints);
   };
-  this.getFirstCycle = function () { return this.cycles.length > 0 ? this.cycles[0].type : ""; };
-  this.doesStartWithCycle = function (type) { return this.cycles.length > 0 && this.cycles[0].type == type && this.startsWithCycle; };
+  this.getFirstCycle = function () { return this.cycles.length > 0 ? this.cycles[0].type : this.plannedCycle; };
+  this.doesStartWithCycle = function (type) { return this.startsWithCycle && this.getFirstCycle() == type; };
   this.doesStartWithCycleIgnoringPositioning = function (type) { return this.doesStartWithCycle(type); };
-  this.doesStrictCycle = function (type) { return this.startsWithCycle && this.getNumberOfCyclesWithId(type) == this.cycles.length; };
+  this.doesStrictCycle = function (type) {
+    return this.startsWithCycle && this.getFirstCycle() == type && this.getNumberOfCyclesWithId(type) == this.cycles.length;
+  };
   this.hasCycleParameter = function (i, name) { return i < this.cycles.length && this.cycles[i].cycle[name] !== undefined; };
   this.getCycleParameter = function (i, name) { return this.cycles[i].cycle[name]; };
   this.startsWithCycle = false;
@@ -1017,22 +1024,30 @@ function __Section(id, theTool, name) {
   this.doesToolpathFitWithinLimits = function (machine, position) { return true; };
 }
 
-function getNumberOfSections() { return __sections.length; }
+// The job read ahead: `__outline` holds every section of the job as postc
+// read it before posting (`JOB_OUTLINE`; empty when the toolpath is a
+// stream read once), `__future` the sections made from it before they
+// start (docs/fusion.md, choice 3).
+var __outline = [];
+var __future = [];
+function getNumberOfSections() { return Math.max(__sections.length, __outline.length); }
 function getSection(index) {
-  if (index < 0 || index >= __sections.length) {
-    error(subst(localize("postc knows section %1 only when it is posted: this post reads ahead"), index));
-  }
-  return __sections[index];
+  if (index >= 0 && index < __sections.length) { return __sections[index]; }
+  if (index >= 0 && index < __outline.length) { return __outlineSection(index); }
+  error(subst(localize("postc knows section %1 only when it is posted: the toolpath is a stream it cannot read ahead"), index));
 }
 function getCurrentSectionId() { return __section === undefined ? -1 : __section.id; }
 function isFirstSection() { return __section !== undefined && __section.id == 0; }
-function isLastSection() { return __section !== undefined && __section.id == __sections.length - 1 && __closing; }
+function isLastSection() {
+  return __section !== undefined && __section.id == getNumberOfSections() - 1 && (__outline.length > 0 || __closing);
+}
 function getPreviousSection() { return (__section === undefined || __section.id == 0) ? undefined : __sections[__section.id - 1]; }
-function hasNextSection() { return __section !== undefined && __section.id + 1 < __sections.length; }
-function getNextSection() { return hasNextSection() ? __sections[__section.id + 1] : undefined; }
+function hasNextSection() { return __section !== undefined && __section.id + 1 < getNumberOfSections(); }
+function getNextSection() { return hasNextSection() ? getSection(__section.id + 1) : undefined; }
 function getNextTool(number) {
-  for (var i = (__section === undefined ? 0 : __section.id + 1); i < __sections.length; ++i) {
-    if (__sections[i].tool.number != number) { return __sections[i].tool; }
+  for (var i = (__section === undefined ? 0 : __section.id + 1); i < getNumberOfSections(); ++i) {
+    var t = getSection(i).tool;
+    if (t.number != number) { return t; }
   }
   return undefined;
 }
@@ -1048,8 +1063,8 @@ function isNewWorkOffset() {
 function getToolTable() {
   var tools = [];
   var seen = {};
-  for (var i = 0; i < __sections.length; ++i) {
-    var t = __sections[i].tool;
+  for (var i = 0; i < getNumberOfSections(); ++i) {
+    var t = getSection(i).tool;
     if (!seen[t.number]) {
       seen[t.number] = true;
       tools.push(t);
@@ -1371,7 +1386,7 @@ function __FileSystem_getTemporaryFile(prefix) { __unsupported("FileSystem.getTe
 function FileSystem() {}
 function isSpeedFeedSynchronizationActive() { return false; }
 function getGlobalPosition(p) { return __vector(p); }
-function getFirstTool() { return __sections.length > 0 ? __sections[0].tool : undefined; }
+function getFirstTool() { return getNumberOfSections() > 0 ? getSection(0).tool : undefined; }
 var EULER_ZXY_R = 5;
 var ABC = 3;
 
@@ -1692,7 +1707,24 @@ function onError(message) {}
 
 // ---- The engine: postc's events as Fusion's calls ----
 var __outputPath = "";
-function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1) {
+function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1, outline) {
+  if (typeof outline == "string" && outline != "") {
+    __outline = __JSON_parse(outline);
+    // The first section exists already: it is the outline's first when
+    // their tools agree.
+    if (__sections.length == 1 && __outline.length > 0 && __outline[0].tool == __sections[0].tool.number) {
+      var first = __sections[0];
+      var o = __outline[0];
+      __future[0] = first;
+      first.initialPosition = new Vector(o.x, o.y, o.z);
+      first.zRange = new Range(o.zMin, o.zMax);
+      first.plannedCycles = o.cycles;
+      first.plannedCyclePoints = o.points;
+      if (o.cycle >= 0) { first.plannedCycle = __cycleType(o.cycle, o.dwell ? 1 : 0); }
+    } else {
+      __outline = [];
+    }
+  }
   __outputPath = __FileSystem_getCombinedPath(path, name + "." + extension);
   __date = date;
   __time = time;
@@ -1730,20 +1762,37 @@ function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, 
 function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset) {
   __toolChanging = false;
   __spindle = jet ? 0 : speed;
-  var t = new Tool(number, diameter, name);
-  t.spindleRPM = __spindle;
-  // The toolpath's tool notes are Fusion's tool comment (docs/fusion.md).
-  t.comment = notes;
-  t.coolant = coolant;
-  if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
   // A toolpath that never moved is no section of Fusion's: the next
   // takes its place (an APT file's INSERT before its first LOAD/TOOL).
   if (__section !== undefined && __section.pending) {
     __sections.pop();
     __section = __sections.length > 0 ? __sections[__sections.length - 1] : undefined;
   }
-  var s = new __Section(__sections.length, t, toolpathName);
-  // A milling tool's kind, from its name (postc's toolpaths give none).
+  var id = __sections.length;
+  // The section read ahead, when the toolpath agrees with it.
+  var s = id < __outline.length && __outline[id].tool == number ? __outlineSection(id) : undefined;
+  if (s === undefined) {
+    __outline = [];
+    __future = [];
+    s = new __Section(id, new Tool(number, diameter, name), toolpathName);
+  }
+  var t = s.tool;
+  t.spindleRPM = __spindle;
+  // The toolpath's tool notes are Fusion's tool comment (docs/fusion.md).
+  t.comment = notes;
+  t.coolant = coolant;
+  if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
+  __describeSection(s, name, jet);
+  __sections.push(s);
+  __fusion_end_section();
+  __section = s;
+  __section.pending = true;
+}
+
+// A tool's kind from its name (postc's toolpaths give none, or only
+// "jet"), and the section's type and parameters from its tool.
+function __describeSection(s, name, jet) {
+  var t = s.tool;
   var named = String(name).toLowerCase();
   var kinds = [["ball", TOOL_MILLING_END_BALL], ["bull", TOOL_MILLING_END_BULLNOSE], ["chamfer", TOOL_MILLING_CHAMFER],
     ["v-bit", TOOL_MILLING_CHAMFER], ["face", TOOL_MILLING_FACE], ["spot", TOOL_DRILL_SPOT], ["center drill", TOOL_DRILL_CENTER],
@@ -1755,21 +1804,42 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
     }
   }
   if (jet) {
-    // A jet tool's kind, from its name (postc's toolpaths say only "jet").
-    var lower = String(name).toLowerCase();
     t.jetTool = true;
-    t.type = lower.indexOf("plasma") >= 0 ? TOOL_PLASMA_CUTTER : (lower.indexOf("water") >= 0 ? TOOL_WATER_JET : TOOL_LASER_CUTTER);
+    t.type = named.indexOf("plasma") >= 0 ? TOOL_PLASMA_CUTTER : (named.indexOf("water") >= 0 ? TOOL_WATER_JET : TOOL_LASER_CUTTER);
     s.type = TYPE_JET;
   }
-  s.parameters["operation-comment"] = toolpathName;
+  s.parameters["operation-comment"] = s.name;
   s.parameters["operation:tool_type"] = getToolTypeName(t.type);
-  s.parameters["operation:tool_number"] = number;
-  s.parameters["operation:tool_diameter"] = diameter;
+  s.parameters["operation:tool_number"] = t.number;
+  s.parameters["operation:tool_diameter"] = t.diameter;
   s.parameters["operation:tool_clockwise"] = 1;
-  __sections.push(s);
-  __fusion_end_section();
-  __section = s;
-  __section.pending = true;
+}
+
+// Section `i` of the outline, made once: its tool, where it starts, the
+// Z it spans, the cycle it starts with.
+function __outlineSection(i) {
+  if (__future[i] !== undefined) { return __future[i]; }
+  var o = __outline[i];
+  var t = new Tool(o.tool, o.diameter, o.name);
+  t.spindleRPM = o.jet ? 0 : o.speed;
+  t.comment = o.notes;
+  t.coolant = o.coolant;
+  t.lengthOffset = o.lengthOffset;
+  var s = new __Section(i, t, o.toolpath);
+  __describeSection(s, o.name, o.jet);
+  s.initialPosition = new Vector(o.x, o.y, o.z);
+  s.zRange = new Range(o.zMin, o.zMax);
+  s.plannedCycles = o.cycles;
+  s.plannedCyclePoints = o.points;
+  if (o.cycle >= 0) {
+    s.plannedCycle = __cycleType(o.cycle, o.dwell ? 1 : 0);
+    s.startsWithCycle = true;
+    s.strategy = "drill";
+    s.parameters["operation-strategy"] = "drill";
+    s.parameters["operation:cycleType"] = s.plannedCycle;
+  }
+  __future[i] = s;
+  return s;
 }
 
 function __fusion_end_section() {
@@ -1794,7 +1864,7 @@ function __fusion_begin(x, y, z) {
     error(localize("The post does not support jet operations (its capabilities)."));
   }
   s.initialPosition = new Vector(x, y, z);
-  s.zRange = new Range(z, z);
+  if (s.zRange === undefined) { s.zRange = new Range(z, z); }
   currentSection = s;
   tool = s.tool;
   spindleSpeed = tool.spindleRPM;

@@ -6,7 +6,7 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
 //! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
@@ -81,6 +81,8 @@ pub(crate) fn lower(
     post.options.forget_modal_at_toolpath_start = false;
     // The host applies the post's `allowedCircularPlanes` itself.
     post.options.arcs_in_every_plane = true;
+    // `getSection(i)`, the tool table and the next tool know the whole job.
+    post.options.reads_ahead = true;
     // The host's `EOL` (docs/fusion.md, choice 5).
     post.options.line_ending = b"\r\n".to_vec();
     post.handlers = handlers(&layout);
@@ -179,6 +181,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
             q(Quantity::XMax),
             q(Quantity::YMax),
             q(Quantity::ZMax),
+            q(Quantity::JobOutline),
         ],
     ));
     let linear = |plunge: bool| {
