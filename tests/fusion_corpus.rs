@@ -239,4 +239,6 @@ fn check_names_host_api_postc_does_not_run_yet() {
     ]);
     let said = support::said(&run);
     assert!(!run.status.success() && said.contains("`redirectToFile`") && !out.exists(), "{said}");
+    // The error is in the host's JavaScript; it is also placed in the post.
+    assert!(said.contains("stub.cps:9:1") && said.contains("in the post's function `onClose`"), "{said}");
 }

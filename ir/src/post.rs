@@ -157,6 +157,11 @@ pub struct PostInfo {
     /// Where the post names itself (the Vectric `POST_NAME` statement).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub span: Option<Span>,
+    /// The file of the dialect's host API when it is code compiled with the
+    /// post (Fusion's `host.js`): an error there is also placed at the
+    /// post's function it passed through.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub host_file: Option<crate::diagnostic::FileId>,
 }
 
 /// The encoding a post file was read in.

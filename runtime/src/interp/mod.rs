@@ -1141,6 +1141,22 @@ impl Engine<'_> {
                         let name = function.name.clone();
                         Err(Box::new(e.at(span, format!("in function `{name}`"))))
                     }
+                    // An error in the host's API (code compiled with the
+                    // post) is also placed at the first function of the
+                    // post it passes through.
+                    Err(e)
+                        if function.span.is_some_and(|f| {
+                            post.info.host_file.is_some_and(|h| {
+                                f.file != h
+                                    && e.primary_span().is_some_and(|p| p.file == h)
+                                    && !e.labels.iter().any(|l| l.span.file == f.file)
+                            })
+                        }) =>
+                    {
+                        let f = function.span.unwrap_or_default();
+                        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
+                        Err(Box::new(e.also(start, format!("in the post's function `{}`", function.name))))
+                    }
                     Err(e) => Err(e),
                 };
                 self.give_back(frame);

@@ -39,6 +39,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     diagnostics.extend(host_diagnostics);
     let mut post = Post::default();
     post.info.dialect = Dialect::Fusion;
+    post.info.host_file = Some(host_file);
     post.info.source = path.display().to_string();
     post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     post.info.file_extension = "nc".into();

@@ -225,6 +225,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         notes: Vec::new(),
         revision: String::new(),
         span: model.global(GlobalName::PostName).map(|g| g.span),
+        host_file: None,
     }
 }
 
