@@ -141,6 +141,48 @@ function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n(" + es2015(
     assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
 }
 
+/// A CNC-Calc post with JavaScript's prototypes (a constructor, another
+/// inheriting from it through `Object.create`, a super call, a method added
+/// to `String.prototype`, `for ... in` over inherited methods): the shaped
+/// lowering leaves it to the general form, which runs it as Node.js does.
+#[test]
+fn prototypes_print_as_node_prints() {
+    let Some(_) = node_or_skip("cimco_node") else { return };
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post_path = dir.path().join("prototypes.js");
+    std::fs::write(
+        &post_path,
+        r#"function Counter(start) { this.n = start; }
+Counter.prototype.next = function () { this.n += 1; return this.n; };
+Counter.prototype.label = function (prefix) { return prefix + this.n; };
+function Labeled(start, prefix) { Counter.call(this, start); this.prefix = prefix; }
+Labeled.prototype = Object.create(Counter.prototype);
+Labeled.prototype.constructor = Labeled;
+Labeled.prototype.label = function () { return "[" + Counter.prototype.label.call(this, this.prefix) + "]"; };
+String.prototype.shout = function () { return this.toUpperCase() + "!"; };
+var counter = new Labeled(10, "N");
+function onOpen(isClipboard) {
+    var keys = [];
+    for (var k in counter) { keys.push(k); }
+    return "(" + counter.label() + " " + counter.next() + " " + counter.label() + " " + ("next" in counter) + " " +
+        counter.hasOwnProperty("next") + " " + (counter.constructor === Labeled) + " " + keys.join(",") + " " +
+        "open".shout() + " " + Object.prototype.toString.call([]) + ")\n";
+}
+function onLinear(x, y, z, movement) { return ""; }
+function onClose() { counter.next(); return "(" + counter.label() + " " + Object.keys(counter).join(",") + ")\n"; }
+"#,
+    )
+    .expect("write the post");
+    let post = compile(&post_path).expect("compiles");
+    assert!(post.scripts.is_empty(), "the general form runs the post, with no script");
+    let toolpath = corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export");
+    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
+    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
+    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+}
+
 /// A post that runs every text method with a regular expression, and
 /// `test`, over texts with parentheses, digits, letters past ASCII, an
 /// astral character and line breaks (`\n`, `\r\n`, U+2028): as postc

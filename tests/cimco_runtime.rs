@@ -131,10 +131,11 @@ fn posts_have_no_file_network_or_process_access() {
     assert!(d.iter().any(|d| d.message.contains("require is not defined")), "{d:?}");
 }
 
+/// In Rhai scripts (the post keeps them) and in the general form (which
+/// runs `prototype` as JavaScript does), the same text.
 #[test]
 fn javascript_semantics_in_scripts() {
-    let out = post_output(
-        r#"
+    let js = r#"
         var linebreak = "\n";
         function Point(x) { this.x = x; }
         Point.prototype.twice = function () { return this.x * 2; };
@@ -155,9 +156,14 @@ fn javascript_semantics_in_scripts() {
             return [c(), p.twice(), parts.join("+"), s, typeof p, 1 + "2", "3" * 2, 7 / 2, (1 / 3).toFixed(3), parseInt("12px"), 0.1 + 0.2].join(" ") + "\n";
         }
         function onLinear(x, y, z, m) { return ""; }
-        "#,
-    );
-    assert_eq!(out, "6 8 eight+nine+a+b+boom a-b-c object 12 6 3.5 0.333 12 0.30000000000000004\n");
+        "#;
+    for (js, scripts) in [(js.to_string(), false), (format!("{js}{KEEPS_SCRIPTS}"), true)] {
+        let (post, diags, _) = compile(&js);
+        assert!(!postc_ir::diagnostic::has_errors(&diags), "{diags:?}");
+        assert_eq!(!post.scripts.is_empty(), scripts);
+        let out = run(&post).unwrap_or_else(|d| panic!("{d:?}"));
+        assert_eq!(out, "6 8 eight+nine+a+b+boom a-b-c object 12 6 3.5 0.333 12 0.30000000000000004\n");
+    }
 }
 
 #[test]

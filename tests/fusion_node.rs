@@ -24,6 +24,16 @@ fn milling_job_for_node() -> (tempfile::TempDir, PathBuf, PathBuf, PathBuf) {
     (folder, job, jsonl, script)
 }
 
+/// [`milling_job_for_node`], or `None` (the referee said missing) when
+/// `node` is not installed.
+fn node_and_milling_job() -> Option<(tempfile::TempDir, PathBuf, PathBuf, PathBuf)> {
+    if support::cimco::node().is_none() {
+        support::referee_missing("fusion_node", "node");
+        return None;
+    }
+    Some(milling_job_for_node())
+}
+
 #[test]
 fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs() {
     let dir = shared();
@@ -172,19 +182,133 @@ line \`tick\` \${not} \x41\u0042 ${`nested ${`deep ${3}`}`} ${ {a: 1}.a } ${"}"}
     ),
 ];
 
+/// JavaScript's prototypes (docs/fusion.md, "Language"), each case a post
+/// whose top level defines constructors and adds to prototypes, and whose
+/// `onOpen` prints what they give: constructors and their `prototype`,
+/// inheritance through `Object.create`, `constructor`, super calls with
+/// `call` and `apply`, `instanceof`, `in` and `hasOwnProperty`, `for ...
+/// in` over inherited properties, `toString` and `valueOf` from a
+/// prototype, and methods added to the prototypes of texts, numbers,
+/// arrays, booleans and functions; built-in methods read as values
+/// (`Object.prototype.toString.call`, `Array.prototype.slice.call`), and
+/// the TypeErrors of methods on no chain.
+const PROTOTYPES: &[(&str, &str, &str)] = &[
+    (
+        "constructors and inheritance",
+        r#"function Shape(name) { this.name = name; this.sides = 0; }
+Shape.prototype.describe = function () { return this.name + " with " + this.sides + " sides"; };
+Shape.prototype.area = function () { return 0; };
+Shape.count = 0;
+function Square(side) {
+  Shape.call(this, "square");
+  this.sides = 4;
+  this.side = side;
+  Shape.count++;
+}
+Square.prototype = Object.create(Shape.prototype);
+Square.prototype.constructor = Square;
+Square.prototype.area = function () { return this.side * this.side; };
+Square.prototype.describe = function () {
+  return "[" + Shape.prototype.describe.call(this) + ", area " + this.area() + "]";
+};
+function Cube(side) {
+  Square.apply(this, arguments);
+  this.name = "cube";
+}
+Cube.prototype = Object.create(Square.prototype);
+Cube.prototype.constructor = Cube;
+Cube.prototype.area = function () { return 6 * Square.prototype.area.call(this); };
+function Point(x, y) { this.x = x; this.y = y; }
+Point.prototype.toString = function () { return "(" + this.x + "," + this.y + ")"; };
+Point.prototype.valueOf = function () { return this.x * 10 + this.y; };
+function Made() { return {made: true}; }
+function Plain() {}
+Plain.prototype = 5;"#,
+        r#"var s = new Shape("blob"), q = new Square(3), c = new Cube(2);
+  writeln(s.describe() + " | " + q.describe() + " | " + c.describe());
+  writeln([q instanceof Square, q instanceof Shape, q instanceof Cube, c instanceof Shape, s instanceof Square,
+    [] instanceof Array, [] instanceof Object, {} instanceof Object, "t" instanceof String, q instanceof Object,
+    Square instanceof Function, Object.create(null) instanceof Object].join(" "));
+  writeln([q.constructor === Square, s.constructor === Shape, c.constructor === Cube, Square.prototype.constructor === Square,
+    Shape.count, typeof Shape.prototype, typeof q.area, typeof q.nothing, Shape === Shape].join(" "));
+  writeln([q.hasOwnProperty("side"), q.hasOwnProperty("area"), "area" in q, "describe" in c, "nothing" in q,
+    "constructor" in s, "toString" in q, Shape.prototype.hasOwnProperty("describe")].join(" "));
+  var keys = [];
+  for (var k in c) { keys.push(k); }
+  writeln("keys " + keys.join(","));
+  var pk = [];
+  for (var k2 in Shape.prototype) { pk.push(k2); }
+  writeln("proto keys " + pk.join(",") + " / " + Object.keys(c).join(","));
+  var p = new Point(1, 2);
+  writeln("point " + p + " " + (p + 1) + " " + String(p) + ` ${p}` + " " + [p, p].join(";"));
+  writeln("made " + new Made().made + " " + (new Plain() instanceof Object) + " " + typeof new Plain().toString);
+  var m = q.describe;
+  var other = new Square(5);
+  writeln("borrowed " + m.call(other) + " " + m.apply(other, []));
+  q.area = function () { return -1; };
+  writeln("own " + q.area() + " " + new Square(2).area());
+  Shape.prototype.extra = function () { return "late " + this.name; };
+  writeln(q.extra() + " " + c.extra());"#,
+    ),
+    (
+        "built-in prototypes and Object.create",
+        r#"var initialState = {feed: 100, units: "mm", nested: {a: 1}};
+String.prototype.capitalizeFirstLetter = function () {
+  return this.charAt(0).toUpperCase() + this.slice(1);
+};
+Number.prototype.round = function (places) {
+  return +(Math.round(this + "e+" + places) + "e-" + places);
+};
+Array.prototype.last = function () { return this[this.length - 1]; };
+Boolean.prototype.yes = function () { return this == true ? "yes" : "no"; };
+Function.prototype.twice = function (x) { return this(this(x)); };
+function inc(x) { return x + 1; }
+function isType(obj, s) { return Object.prototype.toString.call(obj) === "[object " + s + "]"; }
+function rest() { return Array.prototype.slice.call(arguments, 1); }"#,
+        r#"writeln("abc".capitalizeFirstLetter() + " " + "x".capitalizeFirstLetter() + " " + "".capitalizeFirstLetter());
+  writeln((1.005).round(2) + " " + (1.5).round(0) + " " + (2.345).round(1) + " " + Math.PI.round(3));
+  writeln([1, 2, 3].last() + " " + [].last() + " " + true.yes() + " " + false.yes() + " " + inc.twice(5));
+  writeln(["a".toUpperCase(), "trim" in String.prototype, typeof "".capitalizeFirstLetter, typeof "".trim,
+    typeof [].push, typeof (5).toFixed, typeof "".nothing].join(" "));
+  writeln([isType([], "Array"), isType({}, "Object"), isType("s", "String"), isType(1, "Number"), isType(true, "Boolean"),
+    isType(inc, "Function"), isType(null, "Null"), isType(undefined, "Undefined"), isType(/x/, "RegExp")].join(" "));
+  writeln(Object.prototype.toString.call([1]) + " " + Object.prototype.toString.call(null) + " " + {}.toString());
+  writeln(rest(1, 2, 3).join("+") + " " + Array.prototype.join.call([1, 2], "-") + " " + String.prototype.trim.call("  t  ") + "|");
+  var a = [1];
+  Array.prototype.push.apply(a, [2, 3]);
+  writeln("pushed " + a.join(","));
+  var state = Object.create(initialState);
+  state.feed = 200;
+  writeln([state.feed, initialState.feed, state.units, state.hasOwnProperty("units"), "units" in state].join(" "));
+  initialState.units = "in";
+  state.nested.a = 2;
+  writeln([state.units, initialState.nested.a].join(" "));
+  var ks = [];
+  for (var k in state) { ks.push(k); }
+  writeln("state keys " + ks.join(","));
+  var bare = Object.create(null);
+  bare.x = 1;
+  writeln(["toString" in bare, "x" in bare, typeof bare.toString, bare.x].join(" "));
+  var caught = [];
+  try { state.nothing(); } catch (e) { caught.push(e.name); }
+  try { "x".nothing(); } catch (e) { caught.push(e.name); }
+  try { new Object.prototype.toString(); } catch (e) { caught.push(e.name); }
+  try { Object.create(5); } catch (e) { caught.push(e.name); }
+  try { ({}) instanceof inc.nothing; } catch (e) { caught.push(e.name); }
+  writeln("caught " + caught.join(","));"#,
+    ),
+];
+
 #[test]
 fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
-    if support::cimco::node().is_none() {
-        support::referee_missing("fusion_node", "node");
-        return;
-    }
-    let (folder, job, jsonl, script) = milling_job_for_node();
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
     let tmp = folder.path();
     let mut differ = Vec::new();
-    for (k, (what, body)) in MODERN.iter().enumerate() {
+    let cases = MODERN.iter().map(|(what, body)| (what, "", body)).chain(PROTOTYPES.iter().map(|(w, t, b)| (w, *t, b)));
+    for (k, (what, top, body)) in cases.enumerate() {
         let text = format!(
             "description = \"{what}\";\ncapabilities = CAPABILITY_MILLING;\n\
-             var gFormat = createFormat({{prefix: \"G\", decimals: 0, width: 2, zeropad: true}});\n\
+             var gFormat = createFormat({{prefix: \"G\", decimals: 0, width: 2, zeropad: true}});\n{top}\n\
              function onOpen() {{\n  {body}\n}}\n\
              function onSection() {{}}\nfunction onRapid(x, y, z) {{}}\nfunction onLinear(x, y, z, feed) {{}}\n\
              function onClose() {{ writeln(\"M30\"); }}\n"
@@ -200,4 +324,31 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
         }
     }
     assert!(differ.is_empty(), "Node.js first, postc second:\n{}", differ.join("\n"));
+}
+
+/// A method that is on no prototype chain: Node.js throws a TypeError, and
+/// postc stops with RT037 at the line of the call, writing nothing.
+#[test]
+fn a_method_on_no_prototype_chain_stops_the_post_at_its_call() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("missing.cps");
+    std::fs::write(
+        &post,
+        "description = \"missing\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function Tool(n) { this.n = n; }\nTool.prototype.get = function () { return this.n; };\n\
+         function onOpen() {\n  var t = new Tool(1);\n  writeln(\"T\" + t.get());\n  writeln(t.put(2));\n}\n\
+         function onClose() {}\n",
+    )
+    .expect("write the post");
+    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    let stderr = String::from_utf8_lossy(&node.stderr);
+    assert!(!node.status.success() && stderr.contains("t.put is not a function"), "Node.js: {stderr}");
+    let out = folder.path().join("missing.nc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    let said = support::said(&run);
+    assert_eq!(run.status.code(), Some(1), "{said}");
+    assert!(said.contains("error[RT037]: TypeError: the object has no method 'put'"), "{said}");
+    assert!(said.contains("missing.cps:8:"), "not at the call's line:\n{said}");
+    assert!(!out.exists(), "no program is written");
 }

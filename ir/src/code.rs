@@ -180,13 +180,18 @@ pub enum Expr {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         span: Option<Span>,
     },
-    /// `value[key]` (`value.key`): a property of an object, an element or
-    /// the `length` of an array or a text; `undefined` when there is none.
+    /// `value[key]` (`value.key`): a property of an object or a function,
+    /// an element or the `length` of an array or a text; what the value
+    /// does not have is looked for along its prototype chain (an object
+    /// made by `new F()` reads the methods of `F.prototype`; every value
+    /// reads the built-in methods of its kind as function values);
+    /// `undefined` when there is none.
     Member(Box<Expr>, Box<Expr>),
     /// `object.method(args)`: the function the object holds under that
-    /// name, called with `this` the object; or a built-in method of an
-    /// array, a text or a number (`push`, `join`, `indexOf`, `substring`,
-    /// `toFixed`, ...).
+    /// name, its own or its prototype chain's, called with `this` the
+    /// object; or a built-in method of an array, a text, a number, a
+    /// function (`push`, `join`, `indexOf`, `substring`, `toFixed`, `call`,
+    /// ...). A TypeError when there is none.
     Invoke {
         object: Box<Expr>,
         method: String,
@@ -204,7 +209,11 @@ pub enum Expr {
     /// `captures`, the values it closes over, when the value is made (a
     /// local that changes after it is captured lives in a cell the maker
     /// and the closure share: a one-item array); the caller's arguments
-    /// fill the rest.
+    /// fill the rest. A function value has properties of its own, its
+    /// `prototype` first (`{constructor: f}` until the post sets another).
+    /// A function with no captures is one value however often it is made
+    /// (a top-level function is one object in JavaScript): the same
+    /// identity and the same `prototype` everywhere.
     Closure {
         function: FunctionId,
         captures: Vec<Expr>,
@@ -325,7 +334,8 @@ pub enum Builtin {
     Str,
     /// JavaScript's ToString (`String(v)`, a template literal's
     /// substitution): `null` is `"null"`, `undefined` `"undefined"`, an
-    /// object's own `toString` is asked first, then its `valueOf`.
+    /// object's `toString` (its own or its prototype chain's) is asked
+    /// first, then its `valueOf`.
     JsString,
     /// Text to number (0 when it is not a number).
     Val,
@@ -356,18 +366,44 @@ pub enum Builtin {
     /// characters.
     Substring,
     /// The names `for (k in value)` walks: an object's properties in
-    /// their order, an array's or a text's indices, as texts.
+    /// their order, an array's or a text's indices, as texts; then the
+    /// properties of its prototype chain it does not have, each
+    /// prototype's in their order (those the post set: a function's first
+    /// `prototype.constructor` and the built-in methods are not listed).
     Keys,
+    /// JavaScript `Object.keys(value)`: the names of [`Builtin::Keys`]
+    /// that are the value's own.
+    OwnKeys,
     /// JavaScript `key in value`: whether the object, array or function
-    /// has the property, its own or its prototype's (`"length" in [1]`,
-    /// `"toString" in {}`); a TypeError for any other value.
+    /// has the property, its own or its prototype chain's (`"length" in
+    /// [1]`, `"toString" in {}`, a method the post put on `F.prototype`);
+    /// a TypeError for any other value.
     HasProperty,
     /// JavaScript `new F(args)`: the first operand is `F`, the rest its
-    /// arguments. `F` runs with a new empty object as `this`; the value is
-    /// what `F` returns when that is an object, an array or a function,
-    /// else the new object. Objects have no prototypes: `F.prototype` is
-    /// not consulted. A TypeError when `F` is not a function.
+    /// arguments. `F` runs with a new empty object as `this`, whose
+    /// prototype is `F.prototype` (when that is an object; else
+    /// `Object.prototype`); the value is what `F` returns when that is an
+    /// object, an array or a function, else the new object. A TypeError
+    /// when `F` is not a function of the post.
     Construct,
+    /// The prototype object of one of JavaScript's built-in constructors,
+    /// named by the operand as text: `"Object"`, `"Array"`, `"String"`,
+    /// `"Number"`, `"Boolean"`, `"Function"`, `"RegExp"`
+    /// (`String.prototype`). One object per run. Its built-in methods are
+    /// those of values of that kind (`Array.prototype.slice`, as a function
+    /// value run on the `this` it is called with); a method the post adds
+    /// to it is found by every value of that kind that has no built-in
+    /// method of that name (`String.prototype.f = ...`, then `"a".f()`).
+    Prototype,
+    /// JavaScript `Object.create(proto)`: a new empty object whose
+    /// prototype is the operand, an object, or none for `null`; a
+    /// TypeError for any other value.
+    CreateObject,
+    /// JavaScript `value instanceof F`, the second operand `F.prototype`:
+    /// whether that object is on the prototype chain of the first (never
+    /// for a text, a number or a boolean); a TypeError when the second is
+    /// not an object.
+    InstanceOf,
     /// JavaScript `Array.isArray(value)`.
     IsArray,
     /// A name the post never defines, read or called: JavaScript's

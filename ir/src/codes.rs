@@ -684,11 +684,9 @@ declare_codes! {
     JS025: Error, "the `delete` operator",
         example = "delete o.x;",
         fix = "Set the property to `undefined` instead.";
-    /// CNC-Calc posts are written in the JavaScript of 2009 (ES5), and postc reads that language.
-    /// This construct is not part of it, so postc refuses the post rather than guess.
-    ///
-    /// In a Fusion `.cps` post, `instanceof` is refused too, for another reason: postc's objects keep no
-    /// prototype chain (nor a constructor's `prototype`), so it has nothing to answer from.
+    /// `instanceof` is ES5, but no CNC-Calc post postc has seen uses it, and postc reads CIMCO posts
+    /// without it, refusing it rather than guessing. A Fusion `.cps` post may use it: postc answers
+    /// it from the prototype chain.
     JS027: Error, "the `instanceof` operator",
         example = "if (o instanceof Array) {}",
         fix = "Test a property of the object, or use `typeof`.";

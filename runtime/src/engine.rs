@@ -119,6 +119,11 @@ pub struct Engine<'p> {
     pub(crate) this_stack: Vec<Value>,
     /// The value a `throw` is carrying up to its `try`.
     pub(crate) thrown: Option<Value>,
+    /// The built-in prototypes of the run (`Object.prototype`, ...).
+    pub(crate) protos: crate::interp::protos::Protos,
+    /// The one value of each post function that captures nothing, by
+    /// function, made when first needed.
+    pub(crate) function_values: Vec<Option<Value>>,
     /// The arguments of each call in progress of a function that reads
     /// `arguments`.
     pub(crate) arguments: Vec<Value>,
@@ -189,6 +194,8 @@ impl<'p> Engine<'p> {
             depth: 0,
             this_stack: Vec::new(),
             thrown: None,
+            protos: Default::default(),
+            function_values: Vec::new(),
             arguments: Vec::new(),
             event_span: Span::default(),
             script_host: None,

@@ -401,7 +401,17 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
         if matches!(
             e,
             Expr::Array(_)
-                | Expr::Builtin(Builtin::Keys | Builtin::HasProperty | Builtin::JsString, _)
+                | Expr::Builtin(
+                    Builtin::Keys
+                        | Builtin::OwnKeys
+                        | Builtin::HasProperty
+                        | Builtin::JsString
+                        | Builtin::Construct
+                        | Builtin::Prototype
+                        | Builtin::CreateObject
+                        | Builtin::InstanceOf,
+                    _
+                )
                 | Expr::Object(_)
                 | Expr::Regex { .. }
                 | Expr::Member(..)

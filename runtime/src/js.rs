@@ -314,18 +314,55 @@ pub fn to_fixed(x: f64, digits: f64) -> String {
     s
 }
 
-/// What a JavaScript value is, for the properties its prototype gives it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What a JavaScript value is, for the properties its prototype gives it:
+/// each kind is a built-in prototype (`Array.prototype`, ...), whose own
+/// prototype is `Object.prototype`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ProtoKind {
     Object,
     Array,
     Function,
     RegExp,
+    String,
+    Number,
+    Boolean,
+}
+
+impl ProtoKind {
+    pub const ALL: [ProtoKind; 7] = [
+        ProtoKind::Object,
+        ProtoKind::Array,
+        ProtoKind::Function,
+        ProtoKind::RegExp,
+        ProtoKind::String,
+        ProtoKind::Number,
+        ProtoKind::Boolean,
+    ];
+
+    /// The kind of the built-in constructor `name` (`"Array"` for
+    /// `Array.prototype`).
+    pub fn of_constructor(name: &str) -> Option<ProtoKind> {
+        ProtoKind::ALL.into_iter().find(|k| k.constructor() == name)
+    }
+
+    /// The name of the kind's constructor.
+    pub fn constructor(self) -> &'static str {
+        match self {
+            ProtoKind::Object => "Object",
+            ProtoKind::Array => "Array",
+            ProtoKind::Function => "Function",
+            ProtoKind::RegExp => "RegExp",
+            ProtoKind::String => "String",
+            ProtoKind::Number => "Number",
+            ProtoKind::Boolean => "Boolean",
+        }
+    }
 }
 
 /// Whether a value of this kind has `name` from its prototype chain in
 /// Node.js 20 (`"toString" in {}`, `"push" in []`, `"call" in f`): what
-/// `key in value` finds besides the value's own properties.
+/// `key in value` finds besides the value's own properties and what the
+/// post added to the prototypes.
 pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
     const OBJECT: &[&str] = &[
         "constructor",
@@ -375,6 +412,10 @@ pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
         "splice",
         "unshift",
         "values",
+        "toReversed",
+        "toSorted",
+        "toSpliced",
+        "with",
     ];
     const FUNCTION: &[&str] =
         &["length", "name", "prototype", "arguments", "caller", "apply", "bind", "call", "toString"];
@@ -395,11 +436,69 @@ pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
         "toString",
         "compile",
     ];
+    const STRING: &[&str] = &[
+        "length",
+        "anchor",
+        "at",
+        "big",
+        "blink",
+        "bold",
+        "charAt",
+        "charCodeAt",
+        "codePointAt",
+        "concat",
+        "endsWith",
+        "fontcolor",
+        "fontsize",
+        "fixed",
+        "includes",
+        "indexOf",
+        "isWellFormed",
+        "italics",
+        "lastIndexOf",
+        "link",
+        "localeCompare",
+        "match",
+        "matchAll",
+        "normalize",
+        "padEnd",
+        "padStart",
+        "repeat",
+        "replace",
+        "replaceAll",
+        "search",
+        "slice",
+        "small",
+        "split",
+        "strike",
+        "sub",
+        "substr",
+        "substring",
+        "sup",
+        "startsWith",
+        "toString",
+        "toWellFormed",
+        "trim",
+        "trimStart",
+        "trimLeft",
+        "trimEnd",
+        "trimRight",
+        "toLocaleLowerCase",
+        "toLocaleUpperCase",
+        "toLowerCase",
+        "toUpperCase",
+        "valueOf",
+    ];
+    const NUMBER: &[&str] = &["toExponential", "toFixed", "toPrecision", "toString", "valueOf", "toLocaleString"];
+    const BOOLEAN: &[&str] = &["toString", "valueOf"];
     let own = match kind {
         ProtoKind::Object => &[][..],
         ProtoKind::Array => ARRAY,
         ProtoKind::Function => FUNCTION,
         ProtoKind::RegExp => REGEXP,
+        ProtoKind::String => STRING,
+        ProtoKind::Number => NUMBER,
+        ProtoKind::Boolean => BOOLEAN,
     };
     own.contains(&name) || OBJECT.contains(&name)
 }

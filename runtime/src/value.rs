@@ -6,11 +6,17 @@
 //! value is 24 bytes either way. Longer text is shared ([`Rc<str>`]).
 //! Arrays and objects are shared and mutable, as in JavaScript: a value
 //! copied refers to the same array.
+//!
+//! Objects carry JavaScript's prototype link ([`Proto`]) and functions
+//! their own properties, `prototype` among them ([`Closure::props`]); the
+//! interpreter's `objects` module walks the chain.
 
-use std::cell::RefCell;
+use std::cell::{OnceCell, RefCell};
 use std::rc::Rc;
 
 use postc_ir::{FunctionId, OutputRef};
+
+use crate::js::ProtoKind;
 
 /// A value computed by a post's code.
 #[derive(Clone, Debug, Default)]
@@ -57,11 +63,64 @@ impl PartialEq for Value {
 
 /// The properties of a JavaScript object, in the order they were made.
 /// Post objects are small (a handful of keys): a property is found by a
-/// scan of the keys, compared as bytes.
+/// scan of the keys, compared as bytes. A property the object does not
+/// have is looked for along its prototype chain ([`Proto`]).
 #[derive(Clone, Debug, Default)]
 pub struct Object {
     pub keys: Vec<Text>,
     pub values: Vec<Value>,
+    /// Where a property the object does not have is looked for next.
+    pub proto: Proto,
+    /// The built-in prototype this object is (`Array.prototype`, ...):
+    /// it answers the built-in methods of values of that kind.
+    pub builtin: Option<ProtoKind>,
+    /// Its `constructor` is not enumerable: the object is a function's
+    /// first `prototype`, made by the engine (`for ... in` skips it, as
+    /// JavaScript does).
+    pub hidden_constructor: bool,
+}
+
+/// The prototype of an object.
+#[derive(Clone, Debug, Default)]
+pub enum Proto {
+    /// `Object.prototype`: what an object literal has. The engine holds
+    /// that object (with the methods a post adds to it) and makes it when
+    /// it is first needed.
+    #[default]
+    Object,
+    /// None: `Object.create(null)`, and `Object.prototype` itself.
+    Null,
+    /// Another object: `Object.create(p)`, `new F()` with `F.prototype`.
+    Of(Rc<RefCell<Object>>),
+}
+
+/// A chain of prototypes is at most this many objects long (JavaScript
+/// sets no bound; a post's classes are a few levels deep). The bound
+/// keeps every walk along a chain, and dropping one, short.
+pub const MAX_PROTO_CHAIN: usize = 1024;
+
+impl Proto {
+    /// How many objects the chain from this prototype has, up to and
+    /// including `Object.prototype` (0 for none).
+    pub fn depth(&self) -> usize {
+        match self {
+            Proto::Null => 0,
+            Proto::Object => 1,
+            Proto::Of(p) => {
+                let mut n = 1;
+                let mut next = p.borrow().proto.clone();
+                while let Proto::Of(q) = &next {
+                    n += 1;
+                    if n > MAX_PROTO_CHAIN {
+                        break;
+                    }
+                    let after = q.borrow().proto.clone();
+                    next = after;
+                }
+                n + usize::from(matches!(next, Proto::Object))
+            }
+        }
+    }
 }
 
 impl Object {
@@ -90,11 +149,33 @@ impl Object {
 /// Arrays in arrays are written as text to this depth.
 const MAX_NESTED_TEXT: u32 = 64;
 
-/// A function value: the post function and the values it captured.
+/// A function value: the post function and the values it captured, or
+/// a built-in method held as a value (`Array.prototype.slice`).
 #[derive(Debug)]
 pub struct Closure {
-    pub function: FunctionId,
+    pub callee: Callee,
     pub captures: Vec<Value>,
+    /// The function's own properties (`prototype`, and what the post sets
+    /// on it), made when first needed. A post function's first
+    /// `prototype` is `{constructor: f}`.
+    pub props: OnceCell<Rc<RefCell<Object>>>,
+}
+
+/// What a function value runs.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Callee {
+    /// A function of the post.
+    Post(FunctionId),
+    /// The built-in method `name` of values of `kind`, run on the `this`
+    /// it is called with (`Object.prototype.toString.call(x)`).
+    Method(ProtoKind, Text),
+}
+
+impl Closure {
+    /// A function value of the post with its captures.
+    pub fn post(function: FunctionId, captures: Vec<Value>) -> Closure {
+        Closure { callee: Callee::Post(function), captures, props: OnceCell::new() }
+    }
 }
 
 impl Value {

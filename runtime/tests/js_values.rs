@@ -272,3 +272,75 @@ fn array_methods_and_callbacks() {
     ];
     assert_eq!(output(&post(vec![function("f", 0, 1, body), cmp, big])).unwrap(), "1,2,3,5 3,5 3 35\n");
 }
+
+fn closure(f: u16) -> Expr {
+    Expr::Closure { function: FunctionId::new(f), captures: vec![] }
+}
+
+/// `function F(n) { this.n = n; } F.prototype.get = function () { return
+/// this.n; }` as functions 1 and 2 of a post whose function 0 runs `body`
+/// (local 0 is `F`, local 1 `new F(5)`).
+fn with_constructor(body: Vec<Stmt>) -> Post {
+    let mut main = vec![
+        set(0, closure(1)),
+        Stmt::SetMember { object: member(local(0), text("prototype")), key: text("get"), value: closure(2) },
+        set(1, Expr::Builtin(Builtin::Construct, vec![local(0), num(5.0)])),
+    ];
+    main.extend(body);
+    let ctor = function("F", 1, 1, vec![Stmt::SetMember { object: Expr::This, key: text("n"), value: local(0) }]);
+    let get = function("get", 0, 0, vec![Stmt::Return(Some(member(Expr::This, text("n"))))]);
+    post(vec![function("f", 0, 3, main), ctor, get])
+}
+
+#[test]
+fn new_objects_read_the_methods_of_their_constructors_prototype() {
+    // var o = new F(5); return o.get() + "|" + (o.constructor === F) + "|" + o.hasOwnProperty("get") + "|" + ("get" in o);
+    // Node.js: "5|true|false|true"
+    let sep = |e: Expr, next: Expr| add(add(e, text("|")), next);
+    let body = vec![Stmt::Return(Some(sep(
+        sep(
+            sep(
+                invoke(local(1), "get", vec![]),
+                Expr::Binary(BinaryOp::StrictEq, Box::new(member(local(1), text("constructor"))), Box::new(closure(1))),
+            ),
+            invoke(local(1), "hasOwnProperty", vec![text("get")]),
+        ),
+        Expr::Builtin(Builtin::HasProperty, vec![text("get"), local(1)]),
+    )))];
+    assert_eq!(output(&with_constructor(body)).unwrap(), "5|true|false|true\n");
+}
+
+#[test]
+fn a_method_on_no_chain_is_a_type_error_at_its_call() {
+    // var o = new F(5); o.put(1);  Node.js: TypeError: o.put is not a function
+    let span = Span::new(FileId(0), 30, 38);
+    let call =
+        Expr::Invoke { object: Box::new(local(1)), method: "put".into(), args: vec![num(1.0)], span: Some(span) };
+    let errors = output(&with_constructor(vec![Stmt::Eval(call)])).unwrap_err();
+    let e = errors.iter().find(|d| d.code == "RT037").expect("RT037");
+    assert_eq!(e.message, "TypeError: the object has no method 'put'");
+    assert_eq!(e.primary_span(), Some(span));
+}
+
+#[test]
+fn a_chain_of_prototypes_is_walked_and_bounded() {
+    // var o = {x: 7}; for (var i = 0; i < n; i++) o = Object.create(o); return o.x;
+    let chain = |n: f64| {
+        let body = vec![
+            set(0, Expr::Object(vec![("x".into(), num(7.0))])),
+            set(1, num(0.0)),
+            Stmt::While {
+                cond: Expr::Binary(BinaryOp::JsLt, Box::new(local(1)), Box::new(num(n))),
+                body: vec![set(0, Expr::Builtin(Builtin::CreateObject, vec![local(0)]))],
+                span: None,
+                step: vec![set(1, add(local(1), num(1.0)))],
+            },
+            Stmt::Return(Some(member(local(0), text("x")))),
+        ];
+        output(&post(vec![function("f", 0, 2, body)]))
+    };
+    assert_eq!(chain(1000.0).unwrap(), "7\n");
+    let errors = chain(5000.0).unwrap_err();
+    let e = errors.iter().find(|d| d.code == "RT031").expect("RT031");
+    assert!(e.message.contains("chain of more than 1024 prototypes"), "{}", e.message);
+}

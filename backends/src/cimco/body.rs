@@ -595,7 +595,9 @@ impl Printer<'_> {
                 method(self.expr(&inner[0])?, m, vec![])
             }
             (Builtin::Len, [x]) => member(self.expr(x)?, "length"),
-            (Builtin::Keys, [x]) => method(js(ExprKind::Ident("Object".into())), "keys", vec![self.expr(x)?]),
+            (Builtin::Keys | Builtin::OwnKeys, [x]) => {
+                method(js(ExprKind::Ident("Object".into())), "keys", vec![self.expr(x)?])
+            }
             (Builtin::HasProperty, [k, o]) => binary(JsBin::In, self.expr(k)?, self.expr(o)?),
             (Builtin::ToFixed, [x, d]) => {
                 let (x, d) = (self.expr(x)?, self.expr(d)?);

@@ -186,20 +186,9 @@ impl Construct {
         let verb = if self.is_plural() { "are" } else { "is" };
         let message = match (syntax, self) {
             (Syntax::Cimco, _) => format!("{} {verb} not part of the JavaScript that CNC-Calc posts use", self.name()),
-            (Syntax::Fusion, Construct::Instanceof) => {
-                "postc cannot answer `instanceof`: its objects keep no prototype chain to test (a constructor's \
-                 `prototype` is not kept either)"
-                    .to_string()
-            }
             (Syntax::Fusion, _) => format!("postc does not read {} in Fusion posts yet", self.name()),
         };
-        let help = match (syntax, self) {
-            (Syntax::Fusion, Construct::Instanceof) => {
-                "test a property the constructor sets, or use `typeof` or `Array.isArray`"
-            }
-            _ => self.help(),
-        };
-        Diagnostic::error(self.code(), message).at(span, "not supported by postc").help(help)
+        Diagnostic::error(self.code(), message).at(span, "not supported by postc").help(self.help())
     }
 
     fn is_plural(self) -> bool {

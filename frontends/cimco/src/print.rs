@@ -80,7 +80,7 @@ fn binary_precedence(op: BinaryOp) -> u8 {
         BitXor => 6,
         BitAnd => 7,
         Eq | Ne | StrictEq | StrictNe => 8,
-        Lt | Le | Gt | Ge | In => 9,
+        Lt | Le | Gt | Ge | In | Instanceof => 9,
         Shl | Shr | UShr => 10,
         Add | Sub => 11,
         Mul | Div | Rem => 12,

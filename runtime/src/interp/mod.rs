@@ -11,6 +11,7 @@ use postc_ir::{
 
 pub(crate) mod objects;
 pub(crate) mod ops;
+pub(crate) mod protos;
 
 use ops::{binary, builtin, compare, unary};
 
@@ -709,7 +710,7 @@ impl Engine<'_> {
             Expr::Member(o, k) => {
                 let o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
-                objects::member(&o, &k)?
+                objects::member(&o, &k, &self.protos)?
             }
             Expr::Invoke { object, method, args, span } => {
                 let o = self.eval(object, frame)?;
@@ -720,6 +721,10 @@ impl Engine<'_> {
                 };
                 self.invoke(o, &name, args, *span)?
             }
+            // A function that captures nothing is one value however often
+            // it is made: a top-level function is one object in
+            // JavaScript, with one `prototype`.
+            Expr::Closure { function, captures } if captures.is_empty() => self.function_value(*function),
             Expr::Closure { function, captures } => {
                 let captured = self.eval_list(captures, frame)?;
                 objects::closure(*function, captured)
@@ -838,12 +843,19 @@ impl Engine<'_> {
                     values.push(self.eval(a, frame)?);
                 }
                 let v = match b {
-                    // The one built-in that can fail: `in` of a value that is not an object.
+                    // The built-ins that can fail, and those that read the
+                    // run's prototypes.
                     Builtin::HasProperty => {
                         let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
-                        let found = objects::has_property(arg(0), arg(1));
+                        let found = objects::has_property(arg(0), arg(1), &self.protos);
                         self.give_back(values);
                         return found;
+                    }
+                    Builtin::Keys | Builtin::OwnKeys => {
+                        let (value, chain) = (values.first().unwrap_or(&Value::Undefined), *b == Builtin::Keys);
+                        let keys = objects::keys(value, chain.then_some(&self.protos));
+                        self.give_back(values);
+                        return Ok(keys);
                     }
                     Builtin::Undeclared => {
                         let name = values.first().map(Value::to_text).unwrap_or_else(|| crate::value::Text::new(""));
@@ -858,12 +870,41 @@ impl Engine<'_> {
                     Builtin::Construct => {
                         let mut values = values.into_iter();
                         let callee = values.next().unwrap_or(Value::Undefined);
-                        let this = Value::Object(Default::default());
+                        let proto = protos::proto_for_new(&callee)?;
+                        let this = Value::object(crate::value::Object { proto, ..Default::default() });
                         let made = self.call_value(&callee, this.clone(), values.collect())?;
                         return Ok(match made {
                             Value::Object(_) | Value::Array(_) | Value::Func(_) => made,
                             _ => this,
                         });
+                    }
+                    Builtin::Prototype => {
+                        let kind = match values.first() {
+                            Some(Value::Text(name)) => crate::js::ProtoKind::of_constructor(name),
+                            _ => None,
+                        };
+                        self.give_back(values);
+                        return Ok(match kind {
+                            Some(kind) => Value::Object(self.protos.get(kind).clone()),
+                            None => Value::Undefined,
+                        });
+                    }
+                    Builtin::CreateObject => {
+                        let proto = protos::proto_of_new(values.first().unwrap_or(&Value::Undefined));
+                        self.give_back(values);
+                        return Ok(Value::object(crate::value::Object { proto: proto?, ..Default::default() }));
+                    }
+                    Builtin::InstanceOf => {
+                        let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
+                        let found = match arg(1) {
+                            Value::Object(p) => Ok(Value::Bool(protos::chain_has(arg(0), p, &self.protos))),
+                            other => Err(objects::type_error(format!(
+                                "the right-hand side of 'instanceof' has no prototype object ({} instead)",
+                                objects::describe(other)
+                            ))),
+                        };
+                        self.give_back(values);
+                        return found;
                     }
                     _ => builtin(*b, &values),
                 };
@@ -1272,26 +1313,32 @@ impl Engine<'_> {
 }
 
 impl Engine<'_> {
-    /// JavaScript's ToPrimitive for `+`: an object's own `valueOf`, when it
-    /// gives a value that is not an object, else its own `toString`'s;
-    /// other values (and objects without them) are themselves.
+    /// JavaScript's ToPrimitive for `+`: an object's `valueOf` (its own or
+    /// its prototypes'), when it gives a value that is not an object, else
+    /// its `toString`'s; other values (and objects without them) are
+    /// themselves.
     fn primitive(&mut self, v: Value) -> Result<Value> {
         self.primitive_by(v, [&b"valueOf"[..], &b"toString"[..]])
     }
 
     /// JavaScript's ToString (`String(v)`, a template literal's
-    /// substitution): an object's own `toString` is asked first, then its
-    /// `valueOf` (ToPrimitive with the hint string).
-    fn text_of(&mut self, v: Value) -> Result<Value> {
+    /// substitution, an array's `join`): an object's `toString` is asked
+    /// first, then its `valueOf` (ToPrimitive with the hint string).
+    pub(crate) fn text_of(&mut self, v: Value) -> Result<Value> {
         let p = self.primitive_by(v, [&b"toString"[..], &b"valueOf"[..]])?;
         Ok(Value::Text(p.to_text()))
     }
 
-    /// ToPrimitive asking an object's methods in the order given.
+    /// ToPrimitive asking an object's methods in the order given, its own
+    /// or its prototypes' (`Object.prototype`'s built-in ones give the
+    /// object, and then its text `[object Object]`, as the object is).
     fn primitive_by(&mut self, v: Value, order: [&[u8]; 2]) -> Result<Value> {
         let Value::Object(o) = &v else { return Ok(v) };
         for name in order {
-            let f = o.borrow().get(name).cloned();
+            let f = match protos::find_in(&o.borrow(), name, &self.protos, false) {
+                Some(protos::Found::Value(f)) => Some(f),
+                _ => None,
+            };
             if let Some(f @ Value::Func(_)) = f {
                 let r = self.call_value(&f, v.clone(), Vec::new())?;
                 if !matches!(r, Value::Object(_) | Value::Array(_) | Value::Func(_)) {

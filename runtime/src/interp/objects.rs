@@ -3,20 +3,21 @@
 //! and numbers, calling function values, `throw` and `try`.
 //!
 //! A property is looked up by its key's text: arrays and texts answer
-//! `length` and indices, objects their own properties (post objects have
-//! no prototypes beyond the built-in methods). Errors a JavaScript engine
-//! throws (reading a property of `undefined`, calling what is not a
-//! function) are [`TYPE_ERROR`]s, which `try` catches as it catches a
-//! `throw`.
+//! `length` and indices, objects and functions their own properties, and
+//! what a value misses is looked for along its prototype chain
+//! ([`super::protos`]). Errors a JavaScript engine throws (reading a
+//! property of `undefined`, calling what is not a function) are
+//! [`TYPE_ERROR`]s, which `try` catches as it catches a `throw`.
 
 use postc_ir::{Diagnostic, FunctionId, OutputRef, Span};
 
 use super::Result;
 use super::ops::js_number;
+use super::protos::{self, Found, Protos, find_builtin, find_in, function_own, kind_of, props_of};
 use crate::engine::Engine;
-use crate::js;
+use crate::js::{self, ProtoKind};
 use crate::regex::{self, Property};
-use crate::value::{Closure, Object, Text, Value};
+use crate::value::{Callee, Closure, Object, Text, Value};
 
 /// The code of a value the post threw and did not catch.
 pub const THROWN: &str = "RT036";
@@ -67,20 +68,29 @@ fn index(key: &Value) -> Option<usize> {
     }
 }
 
-/// `value[key]`.
-pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
+/// `value[key]`: own properties first, then the value's prototype chain.
+pub(crate) fn member(value: &Value, key: &Value, protos: &Protos) -> Result<Value> {
     Ok(match value {
         Value::Object(o) => {
             let o = o.borrow();
             let k = key_text(key);
-            o.get(k.as_bytes()).cloned().unwrap_or(Value::Undefined)
+            match o.get(k.as_bytes()) {
+                Some(v) if o.builtin.is_none() => v.clone(),
+                _ => inherited(find_in(&o, k.as_bytes(), protos, false), &k),
+            }
         }
         Value::Array(items) => {
             let items = items.borrow();
             match index(key) {
                 Some(i) => items.get(i).cloned().unwrap_or(Value::Undefined),
-                None if key_text(key).as_bytes() == b"length" => Value::Num(items.len() as f64),
-                None => Value::Undefined,
+                None => {
+                    let k = key_text(key);
+                    if k.as_bytes() == b"length" {
+                        Value::Num(items.len() as f64)
+                    } else {
+                        inherited(find_builtin(ProtoKind::Array, k.as_bytes(), protos, false), &k)
+                    }
+                }
             }
         }
         Value::Text(t) => match index(key) {
@@ -88,10 +98,14 @@ pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
                 Some(b) => b.get(i).map_or(Value::Undefined, |c| Value::Text(Text::from_bytes(&[*c]))),
                 None => t.chars().nth(i).map_or(Value::Undefined, |c| Value::text(c.encode_utf8(&mut [0; 4]))),
             },
-            None if key_text(key).as_bytes() == b"length" => {
-                Value::Num(t.ascii_bytes().map_or_else(|| t.chars().count(), <[u8]>::len) as f64)
+            None => {
+                let k = key_text(key);
+                if k.as_bytes() == b"length" {
+                    Value::Num(t.ascii_bytes().map_or_else(|| t.chars().count(), <[u8]>::len) as f64)
+                } else {
+                    inherited(find_builtin(ProtoKind::String, k.as_bytes(), protos, false), &k)
+                }
             }
-            None => Value::Undefined,
         },
         Value::Null | Value::Undefined => {
             let what = if matches!(value, Value::Null) { "null" } else { "undefined" };
@@ -104,12 +118,29 @@ pub(crate) fn member(value: &Value, key: &Value) -> Result<Value> {
                 Some(Property::Flag(b)) => Value::Bool(b),
                 None => match regex::unsupported_member(&k) {
                     Some(why) => return Err(unsupported(why)),
-                    None => Value::Undefined,
+                    None => inherited(find_builtin(ProtoKind::RegExp, k.as_bytes(), protos, false), &k),
                 },
             }
         }
-        Value::Num(_) | Value::Bool(_) | Value::Func(_) | Value::Output(_) => Value::Undefined,
+        Value::Func(f) => {
+            let k = key_text(key);
+            match function_own(f, k.as_bytes()) {
+                Some(v) => v,
+                None => inherited(find_builtin(ProtoKind::Function, k.as_bytes(), protos, false), &k),
+            }
+        }
+        Value::Num(_) | Value::Bool(_) => {
+            let kind = if matches!(value, Value::Num(_)) { ProtoKind::Number } else { ProtoKind::Boolean };
+            let k = key_text(key);
+            inherited(find_builtin(kind, k.as_bytes(), protos, false), &k)
+        }
+        Value::Output(_) => Value::Undefined,
     })
+}
+
+/// A property found along a chain, as a value; `undefined` when none.
+fn inherited(found: Option<Found>, name: &Text) -> Value {
+    found.map_or(Value::Undefined, |f| f.into_value(name))
 }
 
 /// `value[key] = v`.
@@ -144,14 +175,18 @@ pub(crate) fn set_member(value: &Value, key: &Value, v: Value) -> Result<()> {
                 return Err(unsupported(why));
             }
         }
+        // A function's own properties: `F.prototype = p` replaces its prototype.
+        Value::Func(f) => props_of(f).borrow_mut().set(key_text(key), v),
         _ => {}
     }
     Ok(())
 }
 
-/// The names `for (k in value)` walks.
-pub(crate) fn keys(value: &Value) -> Value {
-    let names: Vec<Value> = match value {
+/// The names `for (k in value)` walks: the value's own, then, with the
+/// run's prototypes, the enumerable ones of its prototype chain that it
+/// does not have (what the post set there).
+pub(crate) fn keys(value: &Value, chain: Option<&Protos>) -> Value {
+    let mut names: Vec<Text> = match value {
         Value::Object(o) => {
             // ES2015 property order: array indices first, ascending, then
             // the other names in the order they were made.
@@ -160,27 +195,54 @@ pub(crate) fn keys(value: &Value) -> Value {
                 o.keys.iter().filter_map(|k| array_index(k.as_str()).map(|i| (i, k))).collect();
             indices.sort_by_key(|(i, _)| *i);
             let names = o.keys.iter().filter(|k| array_index(k.as_str()).is_none());
-            indices.into_iter().map(|(_, k)| k).chain(names).cloned().map(Value::Text).collect()
+            let hidden = |k: &&Text| o.hidden_constructor && k.as_bytes() == b"constructor";
+            indices.into_iter().map(|(_, k)| k).chain(names).filter(|k| !hidden(k)).cloned().collect()
         }
-        Value::Array(items) => (0..items.borrow().len()).map(|i| Value::text(&i.to_string())).collect(),
-        Value::Text(t) => (0..t.chars().count()).map(|i| Value::text(&i.to_string())).collect(),
+        Value::Array(items) => (0..items.borrow().len()).map(|i| Text::new(&i.to_string())).collect(),
+        Value::Text(t) => (0..t.chars().count()).map(|i| Text::new(&i.to_string())).collect(),
+        // A function's `prototype` is not enumerable.
+        Value::Func(f) => match f.props.get() {
+            Some(p) => p.borrow().keys.iter().filter(|k| k.as_bytes() != b"prototype").cloned().collect(),
+            None => Vec::new(),
+        },
         _ => Vec::new(),
     };
-    Value::array(names)
+    if let Some(protos) = chain {
+        let inherited = protos::chain_keys(value, protos);
+        names.extend(inherited.into_iter().filter(|k| !has_own(value, k)));
+    }
+    Value::array(names.into_iter().map(Value::Text).collect())
+}
+
+/// Whether a value has a property of its own (`hasOwnProperty`).
+fn has_own(value: &Value, k: &Text) -> bool {
+    let key = Value::Text(k.clone());
+    match value {
+        Value::Object(o) => o.borrow().find(k.as_bytes()).is_some(),
+        Value::Array(items) => index(&key).is_some_and(|i| i < items.borrow().len()) || k.as_bytes() == b"length",
+        Value::Text(t) => index(&key).is_some_and(|i| i < t.chars().count()) || k.as_bytes() == b"length",
+        Value::Func(f) => function_own(f, k.as_bytes()).is_some(),
+        _ => false,
+    }
 }
 
 /// JavaScript `key in value`: the value's own properties and those of its
-/// prototype; a TypeError for a value that is not an object.
-pub(crate) fn has_property(key: &Value, value: &Value) -> Result<Value> {
-    use js::ProtoKind;
+/// prototype chain (what the post added to the prototypes, and every
+/// built-in property Node.js has); a TypeError for a value that is not an
+/// object.
+pub(crate) fn has_property(key: &Value, value: &Value, protos: &Protos) -> Result<Value> {
     let k = key_text(key);
     let found = match value {
-        Value::Object(o) => o.borrow().find(k.as_bytes()).is_some() || js::prototype_has(ProtoKind::Object, &k),
+        Value::Object(o) => find_in(&o.borrow(), k.as_bytes(), protos, true).is_some(),
         Value::Array(items) => {
-            index(key).is_some_and(|i| i < items.borrow().len()) || js::prototype_has(ProtoKind::Array, &k)
+            index(key).is_some_and(|i| i < items.borrow().len())
+                || find_builtin(ProtoKind::Array, k.as_bytes(), protos, true).is_some()
         }
-        Value::Func(_) => js::prototype_has(ProtoKind::Function, &k),
-        Value::Regex(_) => js::prototype_has(ProtoKind::RegExp, &k),
+        Value::Func(f) => {
+            function_own(f, k.as_bytes()).is_some()
+                || find_builtin(ProtoKind::Function, k.as_bytes(), protos, true).is_some()
+        }
+        Value::Regex(_) => find_builtin(ProtoKind::RegExp, k.as_bytes(), protos, true).is_some(),
         Value::Output(_) => {
             matches!(k.as_str(), "format" | "reset" | "getLast") || js::prototype_has(ProtoKind::Object, &k)
         }
@@ -227,7 +289,10 @@ impl Engine<'_> {
             return Err(type_error(format!("{} is not a function", describe(callee))));
         };
         let closure: &Closure = closure;
-        let function = closure.function;
+        let function = match &closure.callee {
+            Callee::Post(f) => *f,
+            Callee::Method(kind, name) => return self.run_method(*kind, name, this, args),
+        };
         if !closure.captures.is_empty() {
             let mut all = closure.captures.clone();
             all.append(&mut args);
@@ -239,13 +304,25 @@ impl Engine<'_> {
         result
     }
 
+    /// The one value of a post function that captures nothing, made when
+    /// it is first needed.
+    pub(crate) fn function_value(&mut self, function: FunctionId) -> Value {
+        let i = function.index();
+        if i >= self.function_values.len() {
+            self.function_values.resize(self.post.functions.len().max(i + 1), None);
+        }
+        self.function_values[i].get_or_insert_with(|| closure(function, Vec::new())).clone()
+    }
+
     /// The object a method runs on.
     pub(crate) fn this(&self) -> Value {
         self.this_stack.last().cloned().unwrap_or(Value::Undefined)
     }
 
-    /// `object.method(args)`: the object's own function property, or a
-    /// built-in method of arrays, texts and numbers.
+    /// `object.method(args)`: the object's own function property, or one
+    /// found along its prototype chain: a built-in method of arrays, texts,
+    /// numbers and the rest, or a method the post added to a prototype.
+    /// Calling a method that is on no chain is a TypeError at `span`.
     pub(crate) fn invoke(
         &mut self,
         object: Value,
@@ -253,50 +330,104 @@ impl Engine<'_> {
         args: Vec<Value>,
         span: Option<Span>,
     ) -> Result<Value> {
-        if let Value::Object(o) = &object {
-            let f = o.borrow().get(method.as_bytes()).cloned();
-            return match f {
-                Some(f) => self.call_value(&f, object.clone(), args),
-                None if method.as_bytes() == b"hasOwnProperty" => {
-                    let k = args.first().map(key_text).unwrap_or_else(|| Text::new("undefined"));
-                    Ok(Value::Bool(o.borrow().find(k.as_bytes()).is_some()))
+        let found = match &object {
+            Value::Object(o) => {
+                let o = o.borrow();
+                match o.get(method.as_bytes()) {
+                    // An own method, the commonest call: no walk.
+                    Some(f) if o.builtin.is_none() => Some(Found::Value(f.clone())),
+                    _ => find_in(&o, method.as_bytes(), &self.protos, false),
                 }
-                None => Err(type_error(format!("the object has no method '{method}'"))),
-            };
-        }
-        let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
-        match (&object, method.as_str()) {
-            (Value::Array(items), name) => self.array_method(items, name, args),
-            (Value::Text(t), name) => text_method(t, name, &args),
-            (Value::Regex(r), "test") => {
-                let text = arg(0).to_text();
-                r.0.test(&text).map(Value::Bool).map_err(unsupported)
             }
-            (Value::Regex(_), name) if let Some(why) = regex::unsupported_member(name) => Err(unsupported(why)),
-            (Value::Num(n), "toFixed") => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
-            (Value::Num(n), "toString") => match arg(0) {
-                Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
-                r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
-            },
-            (Value::Output(o), name) => self.output_method(*o, name, args, span),
-            (Value::Func(_), "call") => {
-                let this = arg(0);
-                self.call_value(&object, this, args.into_iter().skip(1).collect())
+            Value::Output(o) => return self.output_method(*o, method, args, span),
+            Value::Null | Value::Undefined => {
+                return Err(at(type_error(format!("cannot call method '{method}' of {}", describe(&object))), span));
             }
-            (Value::Func(_), "apply") => {
-                let this = arg(0);
-                let list = match arg(1) {
-                    Value::Array(items) => items.borrow().clone(),
-                    _ => Vec::new(),
+            Value::Regex(_) if let Some(why) = regex::unsupported_member(method) => return Err(unsupported(why)),
+            Value::Func(f) if let Some(own) = function_own(f, method.as_bytes()) => Some(Found::Value(own)),
+            other => kind_of(other).and_then(|kind| find_builtin(kind, method.as_bytes(), &self.protos, false)),
+        };
+        match found {
+            Some(Found::Value(f)) => self.call_value(&f, object, args).map_err(|e| at(e, span)),
+            Some(Found::Method(kind)) => self.run_method(kind, method, object, args).map_err(|e| at(e, span)),
+            None => {
+                let what = match &object {
+                    Value::Object(_) => "the object".to_string(),
+                    Value::Text(_) => "a text".to_string(),
+                    other => describe(other),
                 };
-                self.call_value(&object, this, list)
+                Err(at(type_error(format!("{what} has no method '{method}'")), span))
             }
-            (Value::Null | Value::Undefined, _) => {
-                Err(type_error(format!("cannot call method '{method}' of {}", describe(&object))))
-            }
-            (_, "toString") => Ok(Value::Text(object.to_text())),
-            _ => Err(type_error(format!("{} has no method '{method}'", describe(&object)))),
         }
+    }
+
+    /// Runs the built-in method `name` of values of `kind` on `this` (a
+    /// method called on a value, or held as a value and called with
+    /// `call` or `apply`). A TypeError when `this` is not of that kind
+    /// (texts take any value but null and undefined, as their text).
+    fn run_method(&mut self, kind: ProtoKind, name: &str, this: Value, args: Vec<Value>) -> Result<Value> {
+        let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
+        let wrong =
+            |this: &Value| type_error(format!("{}.prototype.{name} called on {}", kind.constructor(), describe(this)));
+        match (kind, &this) {
+            (ProtoKind::Object, _) => self.object_method(name, this, args),
+            (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
+            (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
+            (ProtoKind::String, Value::Text(t)) => text_method(t, name, &args),
+            (ProtoKind::String, other) => text_method(&other.to_text(), name, &args),
+            (ProtoKind::Number, Value::Num(n)) => match name {
+                "toFixed" => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
+                "toString" => match arg(0) {
+                    Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
+                    r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
+                },
+                "valueOf" => Ok(this.clone()),
+                other => Err(type_error(format!("a number has no method '{other}'"))),
+            },
+            (ProtoKind::Boolean, Value::Bool(_)) => match name {
+                "toString" => Ok(Value::Text(this.to_text())),
+                _ => Ok(this.clone()),
+            },
+            (ProtoKind::Function, Value::Func(_)) => match name {
+                "call" => self.call_value(&this, arg(0), args.into_iter().skip(1).collect()),
+                "apply" => {
+                    let list = match arg(1) {
+                        Value::Array(items) => items.borrow().clone(),
+                        _ => Vec::new(),
+                    };
+                    self.call_value(&this, arg(0), list)
+                }
+                _ => Ok(Value::Text(this.to_text())),
+            },
+            (ProtoKind::RegExp, Value::Regex(r)) => match name {
+                "test" => {
+                    let text = arg(0).to_text();
+                    r.0.test(&text).map(Value::Bool).map_err(unsupported)
+                }
+                _ => Ok(Value::Text(this.to_text())),
+            },
+            _ => Err(wrong(&this)),
+        }
+    }
+
+    /// The built-in methods of `Object.prototype`, on any `this`.
+    fn object_method(&mut self, name: &str, this: Value, args: Vec<Value>) -> Result<Value> {
+        let arg = args.into_iter().next().unwrap_or(Value::Undefined);
+        Ok(match name {
+            "hasOwnProperty" => match &this {
+                Value::Null | Value::Undefined => {
+                    return Err(type_error("Cannot convert undefined or null to object".into()));
+                }
+                _ => Value::Bool(has_own(&this, &key_text(&arg))),
+            },
+            "isPrototypeOf" => match &this {
+                Value::Object(o) => Value::Bool(protos::chain_has(&arg, o, &self.protos)),
+                _ => Value::Bool(false),
+            },
+            "toString" => protos::tag(&this),
+            "valueOf" => this,
+            other => return Err(type_error(format!("the object has no method '{other}'"))),
+        })
     }
 
     fn array_method(
@@ -344,7 +475,18 @@ impl Engine<'_> {
                     v => key_text(&v),
                 };
                 let mut s = String::new();
-                for (i, item) in items.borrow().iter().enumerate() {
+                // An object's text is its `toString`'s (post code, which
+                // may change the array: the items are read first).
+                let mut texts = Vec::new();
+                if items.borrow().iter().any(|v| matches!(v, Value::Object(_))) {
+                    let list = items.borrow().clone();
+                    for v in list {
+                        texts.push(if let Value::Object(_) = v { self.text_of(v)? } else { v });
+                    }
+                }
+                let list = items.borrow();
+                let list = if texts.is_empty() { &list[..] } else { &texts[..] };
+                for (i, item) in list.iter().enumerate() {
                     if i > 0 {
                         s.push_str(sep.as_str());
                     }
@@ -611,7 +753,7 @@ fn too_many() -> Box<Diagnostic> {
 }
 
 /// How a value is named in a type error.
-fn describe(v: &Value) -> String {
+pub(crate) fn describe(v: &Value) -> String {
     match v {
         Value::Null => "null".into(),
         Value::Undefined => "undefined".into(),
@@ -637,7 +779,17 @@ pub(crate) fn object(props: Vec<(Text, Value)>) -> Value {
 
 /// A new function value.
 pub(crate) fn closure(function: FunctionId, captures: Vec<Value>) -> Value {
-    Value::Func(std::rc::Rc::new(Closure { function, captures }))
+    Value::Func(std::rc::Rc::new(Closure::post(function, captures)))
+}
+
+/// An error placed at `span` when it has no place yet (a TypeError of
+/// the call the post wrote there, not one from inside the function it
+/// called).
+pub(crate) fn at(e: Box<Diagnostic>, span: Option<Span>) -> Box<Diagnostic> {
+    match span {
+        Some(s) if e.primary_span().is_none() => Box::new(e.at(s, "here")),
+        _ => e,
+    }
 }
 
 /// The error of a value thrown and not caught, at the `throw`.

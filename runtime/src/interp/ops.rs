@@ -288,16 +288,21 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
                 Value::text(&t.chars().skip(a).take(b - a).collect::<String>())
             }
         }
-        Builtin::Keys => super::objects::keys(args.first().unwrap_or(&Value::Undefined)),
-        // The interpreter reads `in` itself, for its TypeError; here (no
-        // error path) a value that is not an object has no property.
+        // The interpreter reads `in`, `for ... in`'s keys and the
+        // built-ins below itself, with the run's prototypes; here (no run,
+        // no error path) the built-in prototypes hold nothing the post
+        // added, and a value that is not an object has no property.
+        Builtin::Keys | Builtin::OwnKeys => super::objects::keys(args.first().unwrap_or(&Value::Undefined), None),
         Builtin::HasProperty => {
             let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
-            super::objects::has_property(arg(0), arg(1)).unwrap_or(Value::Bool(false))
+            super::objects::has_property(arg(0), arg(1), &super::protos::Protos::default())
+                .unwrap_or(Value::Bool(false))
         }
-        // Only the interpreter constructs (it calls the function); a
-        // construction is never a constant.
-        Builtin::Construct | Builtin::Undeclared => Value::Undefined,
+        // Only the interpreter constructs (it calls the function) and makes
+        // objects with prototypes; they are never constants.
+        Builtin::Construct | Builtin::Undeclared | Builtin::Prototype | Builtin::CreateObject | Builtin::InstanceOf => {
+            Value::Undefined
+        }
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }

@@ -50,6 +50,8 @@ pub enum BinaryOp {
     Ge,
     /// `key in object`
     In,
+    /// `value instanceof F` (Fusion posts; CNC-Calc posts are refused it)
+    Instanceof,
 }
 
 /// `&&` and `||`.
@@ -120,6 +122,7 @@ impl BinaryOp {
             BinaryOp::Gt => ">",
             BinaryOp::Ge => ">=",
             BinaryOp::In => "in",
+            BinaryOp::Instanceof => "instanceof",
         }
     }
 }

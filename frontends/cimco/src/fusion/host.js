@@ -1390,15 +1390,6 @@ function getFirstTool() { return getNumberOfSections() > 0 ? getSection(0).tool 
 var EULER_ZXY_R = 5;
 var ABC = 3;
 
-// `Object.create(o)`: a new object with `o`'s properties (postc's objects
-// have no prototypes, so later changes to `o` do not show through).
-function __Object_create(o) {
-  var r = {};
-  if (o !== null && o !== undefined) {
-    for (var k in o) { r[k] = o[k]; }
-  }
-  return r;
-}
 // `new StringSubstitution()`: `setValue(name, value)`, then
 // `substitute(text)` replaces each `${name}`.
 function StringSubstitution() {

@@ -145,7 +145,7 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
             (Const::Str(_), _) | (_, Const::Str(_)) => Some(Const::Str(format!("{}{}", a.text()?, b.text()?))),
             _ => num(|x, y| x + y),
         },
-        In => None,
+        In | Instanceof => None,
         Sub => num(|x, y| x - y),
         Mul => num(|x, y| x * y),
         Div => num(|x, y| x / y),

@@ -32,6 +32,13 @@
 //!   the keys (`Builtin::Keys`) walked by index;
 //! - the drilling and compensation data CNC-Calc hands its entry points
 //!   are host calls (`Expr::Host`) the CIMCO host answers;
+//! - `F.prototype` is a property of the function value (a function that
+//!   captures nothing is one value, so it has one `prototype`; the
+//!   `prototype` of a nested function that captures locals is refused);
+//!   `String.prototype` and the other built-in constructors' are
+//!   `Builtin::Prototype`, `Object.create(p)` is `Builtin::CreateObject`,
+//!   and `v instanceof F` is `Builtin::InstanceOf` of `v` and
+//!   `F.prototype`;
 //! - a regular expression literal is `Expr::Regex`, with its span: the
 //!   runtime compiles its pattern once (and `postc_driver` refuses one
 //!   it cannot run when the post is compiled, JS108).
@@ -165,8 +172,12 @@ impl<'c, 'a> Shared<'c, 'a> {
             let (fid, captures) = self.nested[&id].clone();
             let info = &self.model.scopes.funcs[id];
             let func = info.func.ok_or_else(|| why(Span::default(), "a function without a body"))?;
-            if info.uses_arguments {
-                return Err(why(func.span, "a nested function that reads `arguments`"));
+            // `arguments` is what the caller passed: a closure's captures
+            // come first in its frame, and an arrow function's `arguments`
+            // is the function's around it.
+            if info.uses_arguments && (!captures.is_empty() || func.arrow) {
+                let what = if func.arrow { "an arrow function" } else { "a nested function that captures locals" };
+                return Err(why(func.span, format!("reads `arguments` in {what}")));
             }
             let mut params: Vec<String> = captures
                 .iter()
@@ -192,7 +203,7 @@ impl<'c, 'a> Shared<'c, 'a> {
                     span: Some(func.span),
                     why_script: None,
                     source: Vec::new(),
-                    uses_arguments: false,
+                    uses_arguments: info.uses_arguments,
                     starts_undefined: true,
                 },
             ));
@@ -535,6 +546,30 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             Symbol::TopFn(i) => Ok(Ir::Closure { function: self.shared.layout.top_fn[i], captures: vec![] }),
             Symbol::Global(g) => self.global_value(&g, at),
         }
+    }
+
+    /// `object.prototype` where the object is a name that says more than
+    /// a property read: the prototype of a built-in constructor
+    /// (`String.prototype`), or a refusal. A nested function that captures
+    /// locals is a new value at each mention (`Ir::Closure`), so it has no
+    /// one `prototype` to read or set: the post is refused. `None` for the
+    /// rest, a property read like any other.
+    fn prototype(&self, object: &Expr, at: Span) -> R<Option<Ir>> {
+        let ExprKind::Ident(name) = &object.kind else { return Ok(None) };
+        if let Some(id) = self.nested_decl(name) {
+            if !captures(self.model(), id).is_empty() {
+                return Err(why(
+                    at,
+                    format!(
+                        "uses the `prototype` of `{name}`, a nested function that captures locals of the function around it"
+                    ),
+                ));
+            }
+            return Ok(None);
+        }
+        let builtin =
+            matches!(name.as_str(), "Object" | "Array" | "String" | "Number" | "Boolean" | "Function" | "RegExp");
+        Ok((builtin && self.is_host(name)).then(|| Ir::Builtin(Builtin::Prototype, vec![Ir::Text(name.clone())])))
     }
 
     fn binding(&self, name: &str) -> Option<Binding> {
@@ -882,6 +917,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn target(&mut self, target: &Expr, pre: &mut Vec<IrStmt>) -> R<Target> {
         match &target.kind {
             ExprKind::Member { object, property } if self.model().flattened_name(target).is_none() => {
+                if property.name == "prototype" {
+                    self.prototype(object, target.span)?;
+                }
                 let o = self.expr(object, pre)?;
                 let o = self.keep(o, pre);
                 Ok(Target::Member(o, Ir::Text(property.name.clone())))
@@ -1065,9 +1103,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 self.closure(id, at)?
             }
             ExprKind::Member { object, property } => {
-                if property.name == "prototype" {
-                    // The IR's objects have no prototypes (`Builtin::Construct`).
-                    return Err(why(at, "uses a function's `prototype`"));
+                if property.name == "prototype"
+                    && let Some(p) = self.prototype(object, at)?
+                {
+                    return Ok(p);
                 }
                 if let Some(flat) = self.model().flattened_name(e) {
                     return self.global_value(&flat, at);
@@ -1171,6 +1210,17 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 let stored = self.store(&t, new, pre);
                 if *prefix { self.keep(stored, pre) } else { old }
             }
+            // `v instanceof F`: whether `F.prototype` is on `v`'s chain.
+            ExprKind::Binary { op: BinaryOp::Instanceof, left, right } => match self.prototype(right, at)? {
+                Some(builtin) => Ir::Builtin(Builtin::InstanceOf, vec![self.expr(left, pre)?, builtin]),
+                None => {
+                    let v = self.operands(&[left, right], pre)?;
+                    let mut v = v.into_iter();
+                    let (a, f) = (v.next().unwrap_or(Ir::Undefined), v.next().unwrap_or(Ir::Undefined));
+                    let proto = Ir::Member(Box::new(f), Box::new(Ir::Text("prototype".into())));
+                    Ir::Builtin(Builtin::InstanceOf, vec![a, proto])
+                }
+            },
             ExprKind::Binary { op, left, right } => {
                 let v = self.operands(&[left, right], pre)?;
                 let mut v = v.into_iter();
@@ -1344,11 +1394,18 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             }
             if o == "Object" && name == "keys" && args.len() == 1 && self.is_host("Object") {
                 let a = self.args(args, pre)?;
-                return Ok(Ir::Builtin(Builtin::Keys, a));
+                return Ok(Ir::Builtin(Builtin::OwnKeys, a));
+            }
+            if o == "Object" && name == "create" && self.is_host("Object") {
+                if args.len() > 1 {
+                    return Err(why(at, "calls `Object.create` with property descriptors"));
+                }
+                let a = self.args(args, pre)?;
+                return Ok(Ir::Builtin(Builtin::CreateObject, a));
             }
             // A static method of a class the host defines in JavaScript
             // (`Vector.diff(a, b)`), or one it adds to JavaScript's
-            // (`Object.create(o)`), is its top-level function `__Vector_diff`.
+            // (`JSON.stringify(v)`), is its top-level function `__Vector_diff`.
             if (matches!(self.model().scopes.resolve(o, self.at), Symbol::TopFn(_)) || self.is_host(o))
                 && let Some(&i) = self.model().scopes.top_fn_names.get(&format!("__{o}_{name}"))
             {

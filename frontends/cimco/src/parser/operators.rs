@@ -1,7 +1,7 @@
 //! The binary operators by precedence (a Pratt parser), the conditional
-//! operator, and assignments. `instanceof`, `**`, `??`, logical
-//! assignment and arrow functions are parsed so they can be named in a
-//! diagnostic.
+//! operator, and assignments. `instanceof` (in CNC-Calc posts), `**`,
+//! `??`, logical assignment and arrow functions are parsed so they can be
+//! named in a diagnostic.
 
 use chumsky::pratt::{infix, left, right};
 use chumsky::prelude::*;
@@ -34,6 +34,11 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
         let whole = l.span.to(r.span);
         let node = match op {
             Op::Binary(op) => Expr::new(ExprKind::Binary { op, left: Box::new(l), right: Box::new(r) }, whole),
+            // Fusion posts have prototypes to test; CNC-Calc posts are refused it.
+            Op::Unsupported(Construct::Instanceof) if e.state().fusion() => {
+                let op = BinaryOp::Instanceof;
+                Expr::new(ExprKind::Binary { op, left: Box::new(l), right: Box::new(r) }, whole)
+            }
             Op::Logical(op) => Expr::new(ExprKind::Logical { op, left: Box::new(l), right: Box::new(r) }, whole),
             Op::Unsupported(construct) => {
                 e.emit(unsupported(construct, at));

@@ -756,11 +756,14 @@ pub fn binary_js(op: IrBin, a: Ir, b: Ir) -> Ir {
 pub fn binary_op(op: BinaryOp, a: Ir, b: Ir) -> Ir {
     match bin(op) {
         Some(op) => binary_js(op, a, b),
+        // The caller gives `instanceof` the constructor's `prototype` as `b`.
+        None if op == BinaryOp::Instanceof => Ir::Builtin(postc_ir::Builtin::InstanceOf, vec![a, b]),
         None => Ir::Builtin(postc_ir::Builtin::HasProperty, vec![a, b]),
     }
 }
 
-/// The IR operator of a JavaScript binary operator (`in` has none).
+/// The IR operator of a JavaScript binary operator (`in` and `instanceof`
+/// have none).
 fn bin(op: BinaryOp) -> Option<IrBin> {
     Some(match op {
         BinaryOp::Add => IrBin::Add,
@@ -782,7 +785,7 @@ fn bin(op: BinaryOp) -> Option<IrBin> {
         BinaryOp::Le => IrBin::JsLe,
         BinaryOp::Gt => IrBin::JsGt,
         BinaryOp::Ge => IrBin::JsGe,
-        BinaryOp::In => return None,
+        BinaryOp::In | BinaryOp::Instanceof => return None,
     })
 }
 

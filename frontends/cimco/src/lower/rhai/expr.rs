@@ -212,6 +212,8 @@ impl Gen<'_, '_> {
                     self.w("])");
                 }
             }
+            // Fusion's, as a template literal is.
+            ExprKind::Binary { op: BinaryOp::Instanceof, .. } => self.w("()"),
             ExprKind::Binary { op, left, right } => {
                 self.mark(e.span);
                 self.w(binary_fn(*op));
@@ -391,6 +393,9 @@ pub(super) fn binary_fn(op: BinaryOp) -> &'static str {
         BinaryOp::Gt => names::GT,
         BinaryOp::Ge => names::GE,
         BinaryOp::In => names::IN,
+        // Fusion's: Fusion posts never become scripts, and the `Binary`
+        // arm writes `()` for it.
+        BinaryOp::Instanceof => "",
     }
 }
 
