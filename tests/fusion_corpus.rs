@@ -6,8 +6,9 @@
 //! laser toolpath), the arcs job, the drilling job, and a real APT CL file
 //! (`../shared/corpus/apt/aamorim1913__AptPostProcessor/Top-light-cover.apt`:
 //! a deep drilling cycle, pockets of arcs, cutter compensation, inserted
-//! text). Each post either writes programs that verify, or is refused with
-//! a diagnostic and writes nothing; none panics. The test prints the count
+//! text). Each post either writes programs that verify, or writes programs
+//! in a dialect verify says (VF044) it does not read, or is refused with a
+//! diagnostic and writes nothing; none panics. The test prints the count
 //! by outcome (the table of docs/fusion.md: a post counts under the first
 //! job it does not post) and holds the number that post and verify all
 //! four at or above [`AT_LEAST`].
@@ -17,8 +18,13 @@ use std::path::{Path, PathBuf};
 
 use crate::support;
 
-/// Posts that post all four jobs and pass verification today.
+/// Posts that post all four jobs and whose every program verify reads and
+/// passes today.
 const AT_LEAST: usize = 77;
+
+/// The outcome of a post whose programs all post but whose dialect verify
+/// does not read (VF044, a note): it posts, unverified.
+const UNREAD: &str = "posts, but verify does not read its dialect (VF044)";
 
 /// The Fusion corpus beside the checkout.
 pub fn shared() -> PathBuf {
@@ -69,7 +75,7 @@ pub fn milling_job(dir: &Path) -> PathBuf {
 /// The outcome of one post over one job, as the table counts it.
 fn outcome(said: &str, status: Option<i32>) -> String {
     if status == Some(0) {
-        return "posts and verifies".into();
+        return if said.contains("note[VF044]") { UNREAD } else { "posts and verifies" }.into();
     }
     let first = said.lines().find(|l| l.starts_with("error[")).unwrap_or("no error printed");
     let code = first.get(6..11).unwrap_or("?");
@@ -142,7 +148,9 @@ fn corpus_fusion_posts_post_the_milling_jobs_or_say_why_not() {
                                 broken.push(format!("{name} ({job}): failed and left its output behind"));
                             }
                             let got = outcome(&said, status);
-                            if got != "posts and verifies" {
+                            if got == UNREAD {
+                                result = got;
+                            } else if got != "posts and verifies" {
                                 result = if *job == "milling" { got } else { format!("{got} ({job})") };
                                 break;
                             }

@@ -352,3 +352,59 @@ fn a_method_on_no_prototype_chain_stops_the_post_at_its_call() {
     assert!(said.contains("missing.cps:8:"), "not at the call's line:\n{said}");
     assert!(!out.exists(), "no program is written");
 }
+
+/// `getCurrentRecordId()` and `getNextRecord().isMotion()` (docs/fusion.md,
+/// choice 22) over a toolpath whose feed changes with no motion (a Feed to
+/// where the tool is, a FeedRate record, a dwell): postc's runtime, which
+/// holds one event in hand, prints what the Node.js referee computes from
+/// the whole file.
+#[test]
+fn records_number_the_events_and_say_whether_a_move_follows() {
+    if support::cimco::node().is_none() {
+        support::referee_missing("fusion_node", "node");
+        return;
+    }
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let tmp = folder.path();
+    let job = tmp.join("records.ron");
+    std::fs::write(
+        &job,
+        "Job(units: Mm, home: (x: 0, y: 0, z: 25), safe_z: 5)\n\
+         Tool(number: 1, name: \"T1\", diameter: 6, spindle_speed: 10000, cut_feed: 1000, plunge_feed: 300)\n\
+         ToolpathStart(name: \"P\")\n\
+         Rapid(x: 1, y: 2, z: 5)\n\
+         Feed(x: 1, y: 2, z: -1, intent: Plunge)\n\
+         Feed(x: 1, y: 2, z: -1, feed: 500)\n\
+         FeedRate(value: 700)\n\
+         Feed(x: 9, y: 2, z: -1, feed: 700)\n\
+         Dwell(seconds: 1)\n\
+         Feed(x: 9, y: 2, z: -1, feed: 200)\n\
+         ToolpathEnd\n\
+         End\n",
+    )
+    .expect("write the job");
+    let jsonl = tmp.join("records.jsonl");
+    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
+    let post = tmp.join("records.cps");
+    std::fs::write(
+        &post,
+        "description = \"records\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function at(what) { writeln(what + \" \" + getCurrentRecordId() + \" \" + getNextRecord().isMotion()); }\n\
+         function onOpen() { at(\"open\"); }\n\
+         function onSection() { at(\"section\"); }\n\
+         function onRapid(x, y, z) { at(\"rapid\"); }\n\
+         function onLinear(x, y, z, feed) { at(\"linear \" + feed); }\n\
+         function onDwell(seconds) { at(\"dwell\"); }\n\
+         function onSectionEnd() { at(\"section end\"); }\n\
+         function onClose() { at(\"close\"); }\n",
+    )
+    .expect("write the post");
+    let compiled = support::compile_file(&post);
+    let ours = support::cimco::post_toolpath(&compiled, &job).expect("postc posts the job");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    assert!(node.status.success(), "Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
+    assert_eq!(String::from_utf8_lossy(&node.stdout), String::from_utf8_lossy(&ours));
+    // The zero-length feed that only changes the feed is followed by a move.
+    assert!(String::from_utf8_lossy(&ours).contains("linear 500 5 true"), "{}", String::from_utf8_lossy(&ours));
+}

@@ -78,6 +78,11 @@ pub enum Event {
 }
 
 impl Event {
+    /// A move of the tool: Rapid, Feed or Arc.
+    pub fn is_move(&self) -> bool {
+        matches!(self, Event::Rapid(_) | Event::Feed(_) | Event::Arc(_))
+    }
+
     /// The event's name as written in the native formats (`Rapid`, `Feed`, ...).
     pub fn name(&self) -> &'static str {
         match self {

@@ -125,6 +125,13 @@ quantities! {
     DrillDwell = "DRILL_DWELL", Plain;
     /// The cycle's thread pitch (tapping); no value when it has none.
     DrillPitch = "DRILL_PITCH", Length;
+    /// For posts that read ahead ([`crate::post::OutputOptions::reads_ahead`]):
+    /// the index of the event being posted in the toolpath (FeedRate
+    /// records not counted), from 0.
+    RecordId = "RECORD_ID", Plain;
+    /// For posts that read ahead: 1 when the event after the one being
+    /// posted is a move (Rapid, Feed, Arc), else 0.
+    NextRecordMotion = "NEXT_RECORD_MOTION", Plain;
     /// Tool number.
     Tool = "T", Plain;
     /// Previous tool number.

@@ -181,14 +181,18 @@ pub fn run<S: EventSource + ?Sized>(
         return fail(diagnostics, engine);
     }
     let observe = engine.script_host.is_some();
-    while let Some((mut event, span)) = source.next_event(&mut diagnostics) {
+    // A post that reads ahead knows the event after the one it posts
+    // (`NEXT_RECORD_MOTION`): the loop holds one event in hand.
+    let reads_ahead = post.options.reads_ahead;
+    let mut ahead: Option<(postc_ir::Event, postc_ir::diagnostic::Span)> = None;
+    while let Some((mut event, span)) = ahead.take().or_else(|| next_posted(source, &mut diagnostics)) {
+        if reads_ahead {
+            ahead = next_posted(source, &mut diagnostics);
+            engine.machine.record_id = events as f64;
+            engine.machine.next_record_motion = ahead.as_ref().is_some_and(|(e, _)| e.is_move());
+        }
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
-        }
-        // What a FEDRAT record said is for toolpath readers (postp's
-        // transform); posts see the feed on the moves.
-        if matches!(event, postc_ir::Event::FeedRate(_)) {
-            continue;
         }
         engine.event_span = span;
         if let Some(t) = engine.trace.as_deref_mut() {
@@ -232,6 +236,20 @@ pub fn run<S: EventSource + ?Sized>(
         Err(e) => {
             diagnostics.push(Diagnostic::error("IO003", format!("could not write the program: {e}")));
             Err(diagnostics)
+        }
+    }
+}
+
+/// The next event a post sees: what a FEDRAT record said is for toolpath
+/// readers (postp's transform); posts see the feed on the moves.
+fn next_posted<S: EventSource + ?Sized>(
+    source: &mut S,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Option<(postc_ir::Event, postc_ir::diagnostic::Span)> {
+    loop {
+        match source.next_event(diagnostics)? {
+            (postc_ir::Event::FeedRate(_), _) => continue,
+            read => return Some(read),
         }
     }
 }

@@ -115,6 +115,11 @@ pub struct MachineState {
     pub revision: String,
     /// `JOB_OUTLINE`: the job's outline as JSON, for posts that read ahead.
     pub outline: String,
+    /// `RECORD_ID` and `NEXT_RECORD_MOTION`: where the event being posted
+    /// is in the toolpath, and whether a move follows it (posts that read
+    /// ahead).
+    pub record_id: f64,
+    pub next_record_motion: bool,
 }
 
 impl MachineState {
@@ -159,6 +164,8 @@ impl MachineState {
             wrap,
             revision: String::new(),
             outline: String::new(),
+            record_id: 0.0,
+            next_record_motion: false,
         }
     }
 
@@ -277,6 +284,8 @@ impl MachineState {
             Quantity::DrillDwell => {
                 self.drill.as_ref().map_or(NO_VALUE, |c| c.dwell.filter(|d| *d > 0.0).unwrap_or(0.0))
             }
+            Quantity::RecordId => self.record_id,
+            Quantity::NextRecordMotion => f64::from(u8::from(self.next_record_motion)),
             Quantity::DrillPitch => self.drill.as_ref().and_then(|c| c.pitch).filter(|p| *p > 0.0).unwrap_or(NO_VALUE),
             Quantity::HomeX => self.wrapped(0, home(|h| h.x)),
             Quantity::HomeY => self.wrapped(1, home(|h| h.y)),

@@ -51,8 +51,11 @@ function Referee(postSource, postName) {
 var COOLANT_KINDS = { Off: 0, Flood: 1, Mist: 2, Through: 3, Air: 4 };
 var COMP_SIDES = { Off: 0, Left: 1, Right: 2 };
 
+// Each engine function also gets where the event is in the toolpath and
+// whether a move follows it (FeedRate records not counted), as postc's
+// runtime passes them.
 Referee.prototype.call = function (name, args) {
-    this.ctx[name].apply(null, args);
+    this.ctx[name].apply(null, args.concat([this.record, this.nextMotion]));
 };
 
 Referee.prototype.spindleTool = function () {
@@ -375,10 +378,20 @@ function main(argv) {
         .filter(function (line) { return line !== ""; })
         .map(function (line) { return JSON.parse(line); });
     referee.outline = outlineOf(events);
+    var posted = events.filter(function (e) { return Object.keys(e)[0] !== "FeedRate"; });
+    var isMove = function (e) {
+        var kind = typeof e === "string" ? e : Object.keys(e)[0];
+        return kind === "Rapid" || kind === "Feed" || kind === "Arc";
+    };
+    referee.record = 0;
+    referee.nextMotion = 0;
     try {
-        for (var i = 0; i < events.length; i++) {
-            referee.event(events[i]);
+        for (var i = 0; i < posted.length; i++) {
+            referee.record = i;
+            referee.nextMotion = i + 1 < posted.length && isMove(posted[i + 1]) ? 1 : 0;
+            referee.event(posted[i]);
         }
+        referee.nextMotion = 0;
         referee.finish();
     } catch (e) {
         process.stdout.write(Buffer.from(referee.out.join(""), "utf8"));

@@ -1596,8 +1596,24 @@ function createModalGroup(specifiers, groups, format) { return new ModalGroup(sp
 function __unsupported(name) {
   error("postc does not run `" + name + "` of Fusion's host yet (docs/fusion.md)");
 }
-function getNextRecord() { __unsupported("getNextRecord"); }
-function getCurrentRecordId() { __unsupported("getCurrentRecordId"); }
+// Records: postc's records are the toolpath's events (FeedRate records not
+// counted), numbered from 0; of the record after the current one, postc
+// knows whether it is a move (docs/fusion.md, choice 22).
+var __recordId = 0;
+var __nextMotion = 0;
+function __at(record, nextMotion) {
+  __recordId = record;
+  __nextMotion = nextMotion;
+}
+function Record(id, motion) {
+  this.id = id;
+  this.motion = motion;
+  this.getId = function () { return this.id; };
+  this.isValid = function () { return true; };
+  this.isMotion = function () { return this.motion; };
+}
+function getCurrentRecordId() { return __recordId; }
+function getNextRecord() { return new Record(__recordId + 1, __nextMotion != 0); }
 function getRecord(id) { __unsupported("getRecord"); }
 function createToolRenderer() { __unsupported("createToolRenderer"); }
 function redirectToFile(path) { __unsupported("redirectToFile"); }
@@ -1698,7 +1714,8 @@ function onError(message) {}
 
 // ---- The engine: postc's events as Fusion's calls ----
 var __outputPath = "";
-function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1, outline) {
+function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1, outline, record, nextMotion) {
+  __at(record, nextMotion);
   if (typeof outline == "string" && outline != "") {
     __outline = __JSON_parse(outline);
     // The first section exists already: it is the outline's first when
@@ -1750,7 +1767,8 @@ function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, 
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, record, nextMotion) {
+  __at(record, nextMotion);
   __toolChanging = false;
   __spindle = jet ? 0 : speed;
   // A toolpath that never moved is no section of Fusion's: the next
@@ -1875,7 +1893,8 @@ function __fusion_begin(x, y, z) {
 // move that starts or ends it; one that comes before the section's first
 // move waits for `onSection`.
 var __compensation = RADIUS_COMPENSATION_OFF;
-function __fusion_compensation(side) {
+function __fusion_compensation(side, record, nextMotion) {
+  __at(record, nextMotion);
   __compensation = side;
   if (__section !== undefined && __section.pending) { return; }
   if (side != radiusCompensation) {
@@ -1886,7 +1905,8 @@ function __fusion_compensation(side) {
 
 // Coolant is the operation's tool's: a change before the section's first
 // move is its tool's coolant; a change within a section is a command.
-function __fusion_coolant(coolant) {
+function __fusion_coolant(coolant, record, nextMotion) {
+  __at(record, nextMotion);
   if (__section !== undefined && __section.pending) {
     __section.tool.coolant = coolant;
     return;
@@ -1899,9 +1919,13 @@ function __fusion_coolant(coolant) {
 
 // A tool change: its spindle speed belongs to the section that follows.
 var __toolChanging = false;
-function __fusion_tool_change() { __toolChanging = true; }
+function __fusion_tool_change(record, nextMotion) {
+  __at(record, nextMotion);
+  __toolChanging = true;
+}
 
-function __fusion_spindle(speed) {
+function __fusion_spindle(speed, record, nextMotion) {
+  __at(record, nextMotion);
   __spindle = speed;
   if (__toolChanging) {
     return;
@@ -1919,14 +1943,16 @@ function __fusion_moved(x, y, z) {
   if (currentSection !== undefined) { currentSection.zRange.expandTo(z); }
 }
 
-function __fusion_rapid(x, y, z) {
+function __fusion_rapid(x, y, z, record, nextMotion) {
+  __at(record, nextMotion);
   __fusion_begin(x, y, z);
   movement = MOVEMENT_RAPID;
   onRapid(x, y, z);
   __fusion_moved(x, y, z);
 }
 
-function __fusion_linear(x, y, z, feed, plunge) {
+function __fusion_linear(x, y, z, feed, plunge, record, nextMotion) {
+  __at(record, nextMotion);
   __fusion_begin(x, y, z);
   movement = plunge ? MOVEMENT_PLUNGE : MOVEMENT_CUTTING;
   feedrate = feed;
@@ -1940,7 +1966,8 @@ function __fusion_linear(x, y, z, feed, plunge) {
 // `minimumCircularRadius` .. `maximumCircularRadius`,
 // `minimumCircularSweep`, `minimumChordLength`; split into equal parts
 // when its sweep is over `maximumCircularSweep`; else one `onCircular`.
-function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane) {
+function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, record, nextMotion) {
+  __at(record, nextMotion);
   __fusion_begin(x, y, z);
   movement = MOVEMENT_CUTTING;
   feedrate = feed;
@@ -2008,7 +2035,8 @@ function __cycleType(kind, dwell) {
 var __cycleRead = undefined;
 var __cyclePoints = [];
 var __cyclePointId = -1;
-function __fusion_cycle(kind, clearance, retract, stock, bottom, feed, peck, dwell, pitch) {
+function __fusion_cycle(kind, clearance, retract, stock, bottom, feed, peck, dwell, pitch, record, nextMotion) {
+  __at(record, nextMotion);
   var depth = stock - bottom;
   var pecking = typeof peck == "number" && isFinite(peck) && peck > 0;
   var step = pecking ? peck : depth;
@@ -2038,14 +2066,16 @@ function __fusion_cycle(kind, clearance, retract, stock, bottom, feed, peck, dwe
   __cycleRead = { type: __cycleType(kind, dwell), cycle: c, points: [] };
 }
 
-function __fusion_cycle_point(x, y) {
+function __fusion_cycle_point(x, y, record, nextMotion) {
+  __at(record, nextMotion);
   if (__cycleRead !== undefined) { __cycleRead.points.push(new Vector(x, y, __cycleRead.cycle.bottom)); }
 }
 
 // The cycle ends: `onSection` first when the cycle starts its section
 // (the tool above the first hole at the clearance plane), then
 // `onCycle`, `onCyclePoint` for each hole, `onCycleEnd`.
-function __fusion_cycle_end() {
+function __fusion_cycle_end(record, nextMotion) {
+  __at(record, nextMotion);
   var c = __cycleRead;
   __cycleRead = undefined;
   if (c === undefined || c.points.length == 0) { return; }
@@ -2066,9 +2096,9 @@ function __fusion_cycle_end() {
              Math.abs(__position.z - c.cycle.clearance) > 1e-9) {
     // Within a section, Fusion's linking moves take the tool over the
     // first hole at the clearance plane before the cycle starts.
-    if (__position.z < c.cycle.clearance) { __fusion_rapid(__position.x, __position.y, c.cycle.clearance); }
-    __fusion_rapid(first.x, first.y, Math.max(__position.z, c.cycle.clearance));
-    if (__position.z > c.cycle.clearance) { __fusion_rapid(first.x, first.y, c.cycle.clearance); }
+    if (__position.z < c.cycle.clearance) { __fusion_rapid(__position.x, __position.y, c.cycle.clearance, __recordId, __nextMotion); }
+    __fusion_rapid(first.x, first.y, Math.max(__position.z, c.cycle.clearance), __recordId, __nextMotion);
+    if (__position.z > c.cycle.clearance) { __fusion_rapid(first.x, first.y, c.cycle.clearance, __recordId, __nextMotion); }
   }
   cycleType = c.type;
   cycle = c.cycle;
@@ -2146,11 +2176,21 @@ function expandCyclePoint(x, y, z) {
   __expandedRapid(x, y, c.clearance);
 }
 
-function __fusion_dwell(seconds) { onDwell(seconds); }
-function __fusion_power(on) { onPower(on); }
-function __fusion_comment(text) { onComment(text); }
+function __fusion_dwell(seconds, record, nextMotion) {
+  __at(record, nextMotion);
+  onDwell(seconds);
+}
+function __fusion_power(on, record, nextMotion) {
+  __at(record, nextMotion);
+  onPower(on);
+}
+function __fusion_comment(text, record, nextMotion) {
+  __at(record, nextMotion);
+  onComment(text);
+}
 
-function __fusion_close() {
+function __fusion_close(record, nextMotion) {
+  __at(record, nextMotion);
   __closing = true;
   if (__section !== undefined && __section.pending) {
     __fusion_begin(__position.x, __position.y, __position.z);

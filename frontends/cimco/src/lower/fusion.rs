@@ -20,6 +20,9 @@
 //! | `DRILL_POINT`, `DRILL_FOOTER` | `__fusion_cycle_point(x, y)`, `__fusion_cycle_end()` |
 //! | `FOOTER` | `__fusion_close()` |
 //!
+//! Each call also passes `RECORD_ID` and `NEXT_RECORD_MOTION` last: where
+//! the event is in the toolpath and whether a move follows it.
+//!
 //! A post that has a construct or host call the general form cannot
 //! hold is refused with JS109 at that construct: a Fusion post has no
 //! script tier to fall back to.
@@ -136,7 +139,10 @@ fn functions(
 /// The handlers: each section calls the host's engine function for it.
 fn handlers(layout: &Layout) -> Vec<Handler> {
     let q = Expr::Quantity;
-    let call = |name: &str, args: Vec<Expr>| -> Vec<Stmt> {
+    // Every engine function also gets where the event is in the toolpath
+    // and whether a move follows it (`getCurrentRecordId`, `getNextRecord`).
+    let call = |name: &str, mut args: Vec<Expr>| -> Vec<Stmt> {
+        args.extend([q(Quantity::RecordId), q(Quantity::NextRecordMotion)]);
         match layout.function(name) {
             Some(f) => vec![Stmt::Eval(Expr::Call(f, args))],
             None => Vec::new(),
