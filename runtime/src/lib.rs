@@ -185,7 +185,14 @@ pub fn run<S: EventSource + ?Sized>(
     // (`NEXT_RECORD_MOTION`): the loop holds one event in hand.
     let reads_ahead = post.options.reads_ahead;
     let mut ahead: Option<(postc_ir::Event, postc_ir::diagnostic::Span)> = None;
-    while let Some((mut event, span)) = ahead.take().or_else(|| next_posted(source, &mut diagnostics)) {
+    loop {
+        // Posts that do not read ahead take each event as it is read.
+        let read = if reads_ahead {
+            ahead.take().or_else(|| next_posted(source, &mut diagnostics))
+        } else {
+            source.next_event(&mut diagnostics)
+        };
+        let Some((mut event, span)) = read else { break };
         if reads_ahead {
             ahead = next_posted(source, &mut diagnostics);
             engine.machine.record_id = events as f64;
@@ -193,6 +200,9 @@ pub fn run<S: EventSource + ?Sized>(
         }
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
+        }
+        if matches!(event, postc_ir::Event::FeedRate(_)) {
+            continue;
         }
         engine.event_span = span;
         if let Some(t) = engine.trace.as_deref_mut() {
