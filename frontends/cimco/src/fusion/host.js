@@ -198,15 +198,16 @@ var HIGH_FEED_MAP_XY_Z = 2;
 var HIGH_FEED_MAP_ANY = 3;
 // ---- Constants the declarations do not list ----
 var DEG = 180 / Math.PI;
+// The values of the Fusion API's PostCapabilities enumerator.
 var CAPABILITY_MILLING = 1;
 var CAPABILITY_TURNING = 2;
-var CAPABILITY_JET = 4;
-var CAPABILITY_SETUP_SHEET = 8;
-var CAPABILITY_INTERMEDIATE = 16;
-var CAPABILITY_MACHINE_SIMULATION = 32;
-var CAPABILITY_INSPECTION = 64;
-var CAPABILITY_ADDITIVE = 128;
-var CAPABILITY_CASCADING = 256;
+var CAPABILITY_SETUP_SHEET = 4;
+var CAPABILITY_INTERMEDIATE = 8;
+var CAPABILITY_JET = 16;
+var CAPABILITY_CASCADING = 32;
+var CAPABILITY_ADDITIVE = 64;
+var CAPABILITY_INSPECTION = 128;
+var CAPABILITY_MACHINE_SIMULATION = 256;
 var TYPE_MILLING = 0;
 var TYPE_TURNING = 1;
 var TYPE_JET = 2;
@@ -216,6 +217,8 @@ var FEED_PER_REVOLUTION = 1;
 var FEED_INVERSE_TIME = 2;
 var FEED_FPM = 3;
 var FEED_DPM = 4;
+// Newer engines than the declarations name it; its value is postc's.
+var FEED_DEGREES_MINUTE = 5;
 var SPINDLE_PRIMARY = 0;
 var SPINDLE_SECONDARY = 1;
 var SPINDLE_CONSTANT_SPINDLE_SPEED = 0;
@@ -1135,7 +1138,7 @@ function isTurning() { return currentSection !== undefined && currentSection.typ
 function isJet() { return currentSection !== undefined && currentSection.type == TYPE_JET; }
 function skipRemainingSection() {}
 // The names of the command constants, by value.
-var __commandNames = {"-1": "COMMAND_INVALID", "0": "COMMAND_STOP", "1": "COMMAND_OPTIONAL_STOP", "2": "COMMAND_END", "3": "COMMAND_SPINDLE_CLOCKWISE", "4": "COMMAND_SPINDLE_COUNTERCLOCKWISE", "5": "COMMAND_START_SPINDLE", "6": "COMMAND_STOP_SPINDLE", "7": "COMMAND_ORIENTATE_SPINDLE", "8": "COMMAND_LOAD_TOOL", "9": "COMMAND_COOLANT_ON", "10": "COMMAND_COOLANT_OFF", "11": "COMMAND_ACTIVATE_SPEED_FEED_SYNCHRONIZATION", "12": "COMMAND_DEACTIVATE_SPEED_FEED_SYNCHRONIZATION", "13": "COMMAND_LOCK_MULTI_AXIS", "14": "COMMAND_UNLOCK_MULTI_AXIS", "15": "COMMAND_EXACT_STOP", "16": "COMMAND_START_CHIP_TRANSPORT", "17": "COMMAND_STOP_CHIP_TRANSPORT", "18": "COMMAND_OPEN_DOOR", "19": "COMMAND_CLOSE_DOOR", "20": "COMMAND_BREAK_CONTROL", "21": "COMMAND_TOOL_MEASURE", "22": "COMMAND_CALIBRATE", "23": "COMMAND_VERIFY", "24": "COMMAND_CLEAN", "25": "COMMAND_ALARM", "26": "COMMAND_ALERT", "27": "COMMAND_CHANGE_PALLET", "28": "COMMAND_POWER_ON", "29": "COMMAND_POWER_OFF", "30": "COMMAND_MAIN_CHUCK_OPEN", "31": "COMMAND_MAIN_CHUCK_CLOSE", "32": "COMMAND_SECONDARY_CHUCK_OPEN", "33": "COMMAND_SECONDARY_CHUCK_CLOSE", "34": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_ACTIVATE", "35": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_DEACTIVATE", "36": "COMMAND_SYNC_CHANNELS", "37": "COMMAND_PROBE_ON", "38": "COMMAND_PROBE_OFF", "44": "COMMAND_DISPLAY_MESSAGE"};
+var __commandNames = {"-1": "COMMAND_INVALID", "0": "COMMAND_STOP", "1": "COMMAND_OPTIONAL_STOP", "2": "COMMAND_END", "3": "COMMAND_SPINDLE_CLOCKWISE", "4": "COMMAND_SPINDLE_COUNTERCLOCKWISE", "5": "COMMAND_START_SPINDLE", "6": "COMMAND_STOP_SPINDLE", "7": "COMMAND_ORIENTATE_SPINDLE", "8": "COMMAND_LOAD_TOOL", "9": "COMMAND_COOLANT_ON", "10": "COMMAND_COOLANT_OFF", "11": "COMMAND_ACTIVATE_SPEED_FEED_SYNCHRONIZATION", "12": "COMMAND_DEACTIVATE_SPEED_FEED_SYNCHRONIZATION", "13": "COMMAND_LOCK_MULTI_AXIS", "14": "COMMAND_UNLOCK_MULTI_AXIS", "15": "COMMAND_EXACT_STOP", "16": "COMMAND_START_CHIP_TRANSPORT", "17": "COMMAND_STOP_CHIP_TRANSPORT", "18": "COMMAND_OPEN_DOOR", "19": "COMMAND_CLOSE_DOOR", "20": "COMMAND_BREAK_CONTROL", "21": "COMMAND_TOOL_MEASURE", "22": "COMMAND_CALIBRATE", "23": "COMMAND_VERIFY", "24": "COMMAND_CLEAN", "25": "COMMAND_ALARM", "26": "COMMAND_ALERT", "27": "COMMAND_CHANGE_PALLET", "28": "COMMAND_POWER_ON", "29": "COMMAND_POWER_OFF", "30": "COMMAND_MAIN_CHUCK_OPEN", "31": "COMMAND_MAIN_CHUCK_CLOSE", "32": "COMMAND_SECONDARY_CHUCK_OPEN", "33": "COMMAND_SECONDARY_CHUCK_CLOSE", "34": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_ACTIVATE", "35": "COMMAND_SECONDARY_SPINDLE_SYNCHRONIZATION_DEACTIVATE", "36": "COMMAND_SYNC_CHANNELS", "37": "COMMAND_PROBE_ON", "38": "COMMAND_PROBE_OFF", "44": "COMMAND_DISPLAY_MESSAGE", "45": "COMMAND_LIVE_ALIGNMENT"};
 function getCommandStringId(command) {
   var name = __commandNames[command];
   return name === undefined ? "COMMAND_" + command : name;
@@ -1630,6 +1633,8 @@ var POLAR_MODE_OFF = 0;
 // The model image a setup sheet shows: none.
 var modelImagePath = "";
 var COMMAND_DISPLAY_MESSAGE = 44;
+// Newer engines than the declarations name it; its value is postc's.
+var COMMAND_LIVE_ALIGNMENT = 45;
 
 // ---- Dates: the job's date and time (`--set date=`, `--set time=`) ----
 var __date = "";
@@ -1865,11 +1870,13 @@ function __fusion_begin(x, y, z) {
   var s = __section;
   if (s === undefined || !s.pending) { return; }
   s.pending = false;
-  // Fusion refuses an operation the post's capabilities do not include.
-  if (s.type == TYPE_MILLING && (capabilities & CAPABILITY_MILLING) == 0) {
+  // Fusion refuses an operation the post's capabilities do not include;
+  // setup sheets and intermediate posts take every operation.
+  var every = (capabilities & (CAPABILITY_SETUP_SHEET | CAPABILITY_INTERMEDIATE)) != 0;
+  if (!every && s.type == TYPE_MILLING && (capabilities & CAPABILITY_MILLING) == 0) {
     error(localize("The post does not support milling operations (its capabilities)."));
   }
-  if (s.type == TYPE_JET && (capabilities & CAPABILITY_JET) == 0) {
+  if (!every && s.type == TYPE_JET && (capabilities & CAPABILITY_JET) == 0) {
     error(localize("The post does not support jet operations (its capabilities)."));
   }
   s.initialPosition = new Vector(x, y, z);
