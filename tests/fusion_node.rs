@@ -297,6 +297,44 @@ function rest() { return Array.prototype.slice.call(arguments, 1); }"#,
   try { ({}) instanceof inc.nothing; } catch (e) { caught.push(e.name); }
   writeln("caught " + caught.join(","));"#,
     ),
+    (
+        "the global object",
+        r#"var gMotionModal = createModal({prefix: "G"}, gFormat);
+var feedOutput = createVariable({prefix: "F"}, gFormat);
+var counter = 1;
+function forceModals() {
+  var modals = ["gMotionModal", "feedOutput", "noSuchModal"];
+  var found = [];
+  for (var i = 0; i < modals.length; ++i) {
+    if (typeof this[modals[i]] != "undefined") {
+      this[modals[i]].reset();
+      found.push(modals[i]);
+    }
+  }
+  return found.join(",");
+}
+function bump() { this.added = "new"; return this.counter + 1; }
+function self() { return this; }
+var holder = {m: function () { return this === holder; }, n: self};"#,
+        r#"writeln(gMotionModal.format(1) + "|" + gMotionModal.format(1) + "|" + feedOutput.format(5));
+  writeln("reset " + forceModals());
+  writeln(gMotionModal.format(1) + "|" + feedOutput.format(5));
+  writeln("bump " + bump() + " " + counter + " " + typeof this.bump + " " + this.bump() + " " + self().added);
+  var f = self;
+  writeln([f() === this, self() === this, typeof this.nothing, this["counter"]].join(" "));
+  writeln([holder.m(), holder.n() === holder].join(" "));"#,
+    ),
+    (
+        "output variables that print every value not zero",
+        r#"var iOutput = createOutputVariable({prefix: "I", control: CONTROL_NONZERO}, gFormat);
+var xOutput = createOutputVariable({prefix: "X"}, gFormat);
+var fOutput = createOutputVariable({prefix: "F", control: CONTROL_FORCE}, gFormat);"#,
+        r#"var words = [];
+  [1, 1, 0, 0, 2, 2, -1, 0.1].forEach(function (v) {
+    words.push(iOutput.format(v) + "/" + xOutput.format(v) + "/" + fOutput.format(v));
+  });
+  writeln(words.join(" "));"#,
+    ),
 ];
 
 #[test]
@@ -407,4 +445,30 @@ fn records_number_the_events_and_say_whether_a_move_follows() {
     assert_eq!(String::from_utf8_lossy(&node.stdout), String::from_utf8_lossy(&ours));
     // The zero-length feed that only changes the feed is followed by a move.
     assert!(String::from_utf8_lossy(&ours).contains("linear 500 5 true"), "{}", String::from_utf8_lossy(&ours));
+}
+
+/// Setting one of the post's own globals through the global object
+/// (`this.counter = ...` in a plain function) is refused with RT039 and
+/// writes nothing; a property the post does not declare is set, and read
+/// back, as Node.js does.
+#[test]
+fn a_global_set_through_this_is_refused() {
+    let Some((folder, job, _jsonl, _script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("global.cps");
+    std::fs::write(
+        &post,
+        "description = \"global\";\ncapabilities = CAPABILITY_MILLING;\nvar counter = 1;\n\
+         function bump() { this.counter = 2; }\n\
+         function onOpen() {\n  writeln(\"C\" + counter);\n  bump();\n}\n\
+         function onClose() {}\n",
+    )
+    .expect("write the post");
+    let out = folder.path().join("global.nc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    let said = support::said(&run);
+    assert_eq!(run.status.code(), Some(1), "{said}");
+    assert!(said.contains("error[RT039]"), "{said}");
+    assert!(said.contains("`counter`"), "{said}");
+    assert!(!out.exists(), "no program is written");
 }

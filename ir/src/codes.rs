@@ -1448,6 +1448,14 @@ declare_codes! {
     RT038: Error, "a regular expression used in a way postc does not run: its `lastIndex` (`exec`, `lastIndex`, `test` under `g`), `^`/`$` under `m` over `\\r` or U+2028/U+2029, a function as a replacement",
         example = "var re = /\\d+/g;\nfunction onOpen() { while (re.test(s)) { n++; } }",
         fix = "Drop the `g` flag from a pattern given to `test`; find matches with `replace`, `split` or `search`.";
+    /// Outside a method, `this` is JavaScript's global object, and its properties are the post's
+    /// globals, functions and output variables: postc reads them by name (`this[name]`), but
+    /// does not set them through it, because the engine reads a global the post never assigns
+    /// by name as the constant it starts as. Setting a property the post does not declare is
+    /// allowed. A `try` does not catch it: the post stops, and no output is written.
+    RT039: Error, "the post sets one of its own globals, functions or output variables through the global object (`this.name = ...` outside a method), which postc does not run",
+        example = "var counter = 1;\nfunction bump() { this.counter = 2; }",
+        fix = "Assign the global by its name: `counter = 2`.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), or a post driven by APT words.
     CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), or a post driven by APT words",

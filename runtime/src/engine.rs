@@ -117,6 +117,9 @@ pub struct Engine<'p> {
     pub(crate) depth: usize,
     /// `this` of each method call in progress (`Expr::This` reads the last).
     pub(crate) this_stack: Vec<Value>,
+    /// JavaScript's global object, what `this` is outside a method
+    /// ([`crate::interp::objects`]), made when first read.
+    pub(crate) global_object: std::cell::OnceCell<crate::interp::objects::GlobalObject>,
     /// The value a `throw` is carrying up to its `try`.
     pub(crate) thrown: Option<Value>,
     /// The built-in prototypes of the run (`Object.prototype`, ...).
@@ -193,6 +196,7 @@ impl<'p> Engine<'p> {
             steps: 0,
             depth: 0,
             this_stack: Vec::new(),
+            global_object: std::cell::OnceCell::new(),
             thrown: None,
             protos: Default::default(),
             function_values: Vec::new(),

@@ -167,7 +167,11 @@ impl Engine<'_> {
                     let o = self.eval(object, frame)?;
                     let k = self.eval(key, frame)?;
                     let v = self.eval(value, frame)?;
-                    objects::set_member(&o, &k, v)?;
+                    if self.is_global_object(&o) {
+                        self.set_global_member(&k, v)?;
+                    } else {
+                        objects::set_member(&o, &k, v)?;
+                    }
                 }
                 Stmt::Throw { value, span } => {
                     let v = self.eval(value, frame)?;
@@ -710,7 +714,7 @@ impl Engine<'_> {
             Expr::Member(o, k) => {
                 let o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
-                objects::member(&o, &k, &self.protos)?
+                if self.is_global_object(&o) { self.global_member(&k)? } else { objects::member(&o, &k, &self.protos)? }
             }
             Expr::Invoke { object, method, args, span } => {
                 let o = self.eval(object, frame)?;

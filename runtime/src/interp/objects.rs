@@ -19,6 +19,45 @@ use crate::js::{self, ProtoKind};
 use crate::regex::{self, Property};
 use crate::value::{Callee, Closure, Object, Text, Value};
 
+/// JavaScript's global object: `this` outside a method. The post's
+/// globals, functions and output variables are its properties, read and
+/// set by name ([`Engine::global_member`]); other properties live on
+/// [`GlobalObject::object`].
+pub struct GlobalObject {
+    /// The object `this` evaluates to, compared by identity.
+    pub(crate) object: std::rc::Rc<std::cell::RefCell<Object>>,
+    names: std::collections::HashMap<Box<[u8]>, GlobalName>,
+}
+
+/// What a name of the global object stands for.
+#[derive(Clone, Copy)]
+enum GlobalName {
+    Global(postc_ir::GlobalId),
+    Function(FunctionId),
+    Variable(postc_ir::VarId),
+}
+
+impl GlobalObject {
+    fn new(post: &postc_ir::Post) -> GlobalObject {
+        let mut names = std::collections::HashMap::new();
+        let mut add = |name: &str, what: Option<GlobalName>| {
+            if let Some(what) = what {
+                names.entry(name.as_bytes().into()).or_insert(what);
+            }
+        };
+        for (i, g) in post.globals.iter().enumerate() {
+            add(&g.name, postc_ir::GlobalId::from_usize(i).map(GlobalName::Global));
+        }
+        for (i, f) in post.functions.iter().enumerate() {
+            add(&f.name, FunctionId::from_usize(i).map(GlobalName::Function));
+        }
+        for (i, v) in post.variables.iter().enumerate() {
+            add(&v.name, postc_ir::VarId::from_usize(i).map(GlobalName::Variable));
+        }
+        GlobalObject { object: Default::default(), names }
+    }
+}
+
 /// The code of a value the post threw and did not catch.
 pub const THROWN: &str = "RT036";
 
@@ -314,9 +353,62 @@ impl Engine<'_> {
         self.function_values[i].get_or_insert_with(|| closure(function, Vec::new())).clone()
     }
 
-    /// The object a method runs on.
+    /// The object a method runs on; outside a method, and in a function
+    /// called as a value, JavaScript's global object (a post's functions
+    /// are not strict-mode code).
     pub(crate) fn this(&self) -> Value {
-        self.this_stack.last().cloned().unwrap_or(Value::Undefined)
+        match self.this_stack.last() {
+            Some(Value::Undefined) | None => Value::Object(self.global_object().object.clone()),
+            Some(this) => this.clone(),
+        }
+    }
+
+    /// The run's global object, made when first read.
+    fn global_object(&self) -> &GlobalObject {
+        self.global_object.get_or_init(|| GlobalObject::new(self.post))
+    }
+
+    /// Whether `value` is the global object.
+    #[inline]
+    pub(crate) fn is_global_object(&self, value: &Value) -> bool {
+        match (value, self.global_object.get()) {
+            (Value::Object(o), Some(g)) => std::rc::Rc::ptr_eq(o, &g.object),
+            _ => false,
+        }
+    }
+
+    /// `this[key]` on the global object: the post's global, function or
+    /// output variable of that name, else a property set on the object.
+    pub(crate) fn global_member(&mut self, key: &Value) -> Result<Value> {
+        let k = key_text(key);
+        let g = self.global_object();
+        match g.names.get(k.as_bytes()).copied() {
+            Some(GlobalName::Global(i)) => Ok(self.globals.get(i.index()).cloned().unwrap_or(Value::Undefined)),
+            Some(GlobalName::Function(f)) => Ok(self.function_value(f)),
+            Some(GlobalName::Variable(v)) => Ok(Value::Output(OutputRef::Variable(v))),
+            None => member(&Value::Object(g.object.clone()), key, &self.protos),
+        }
+    }
+
+    /// `this[key] = v` on the global object: sets a property the post does
+    /// not declare. Setting one of the post's own names this way is
+    /// refused (RT039): `prepare` reads a global the post never assigns by
+    /// name as the constant it starts as.
+    pub(crate) fn set_global_member(&mut self, key: &Value, v: Value) -> Result<()> {
+        let k = key_text(key);
+        let g = self.global_object();
+        if g.names.contains_key(k.as_bytes()) {
+            return Err(Box::new(
+                Diagnostic::error(
+                    "RT039",
+                    format!(
+                        "postc does not set `{k}` through the global object (`this.{k} = ...`); assign it by its name"
+                    ),
+                )
+                .note("no output is written"),
+            ));
+        }
+        set_member(&Value::Object(g.object.clone()), key, v)
     }
 
     /// `object.method(args)`: the object's own function property, or one
@@ -330,6 +422,10 @@ impl Engine<'_> {
         args: Vec<Value>,
         span: Option<Span>,
     ) -> Result<Value> {
+        if self.is_global_object(&object) {
+            let f = self.global_member(&Value::Text(method.clone()))?;
+            return self.call_value(&f, object, args).map_err(|e| at(e, span));
+        }
         let found = match &object {
             Value::Object(o) => {
                 let o = o.borrow();

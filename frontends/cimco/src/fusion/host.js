@@ -599,6 +599,7 @@ function Variable(specifiers, format) {
   this.prefix = __prefixed(specifiers, "prefix");
   this.force = specifiers !== undefined && specifiers.force === true;
   this.onchange = specifiers === undefined ? undefined : specifiers.onchange;
+  this.nonzero = false;
   this.formatter = format;
   this.last = undefined;
   this.current = undefined;
@@ -608,7 +609,10 @@ function Variable(specifiers, format) {
     var text = this.formatter.format(value);
     // The first value a variable prints is a change too (docs/fusion.md).
     var changed = text !== this.last;
-    if (!changed && !this.force) { return ""; }
+    // `CONTROL_NONZERO` prints every value that is not zero, changed or not.
+    if (this.nonzero) {
+      if (!this.formatter.areDifferent(value, 0)) { return ""; }
+    } else if (!changed && !this.force) { return ""; }
     this.last = text;
     this.current = value;
     if (changed && this.onchange !== undefined) { this.onchange(); }
@@ -629,6 +633,7 @@ function createVariable(specifiers, format) { return new Variable(specifiers, fo
 function createOutputVariable(specifiers, format) {
   var v = new Variable(specifiers, format);
   if (specifiers !== undefined && specifiers.control == CONTROL_FORCE) { v.force = true; }
+  if (specifiers !== undefined && specifiers.control == CONTROL_NONZERO) { v.nonzero = true; }
   return v;
 }
 
@@ -807,6 +812,8 @@ function warning(message) {}
 // A dialog in Fusion when it may interact; a batch run has none.
 function alert(title, description) {}
 function isInteractionAllowed() { return false; }
+// postc runs no machine simulation: there is no stream to write.
+function getSimulationStreamPath() { return ""; }
 function getRadiusCompensation() { return radiusCompensation; }
 var __warnedOnce = {};
 function warningOnce(message, id) { __warnedOnce[id] = true; }
