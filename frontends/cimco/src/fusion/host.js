@@ -856,6 +856,9 @@ function Tool(number, diameter, name) {
   this.numberOfFlutes = 2;
   this.threadPitch = 0;
   this.tipAngle = 0;
+  // Newer engines than the declarations give it (a chamfer mill's small
+  // diameter); postc's tools have none.
+  this.tipDiameter = 0;
   this.type = TOOL_MILLING_END_FLAT;
   this.material = MATERIAL_CARBIDE;
   this.comment = name;
