@@ -201,6 +201,10 @@ pub fn run<S: EventSource + ?Sized>(
         if postc_ir::diagnostic::has_errors(&diagnostics) {
             return fail(diagnostics, engine);
         }
+        // Posts never see FeedRate records ([`next_posted`] skips them for
+        // posts that read ahead). Skipped here, in the loop, a Vectric move
+        // costs 48 instructions fewer than through `next_posted` (callgrind,
+        // `postc bench gcode_mm.pp`: 1,425 against 1,473).
         if matches!(event, postc_ir::Event::FeedRate(_)) {
             continue;
         }
