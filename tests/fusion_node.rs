@@ -325,6 +325,12 @@ var holder = {m: function () { return this === holder; }, n: self};"#,
   writeln([holder.m(), holder.n() === holder].join(" "));"#,
     ),
     (
+        "Array.from",
+        r#"function words() { return Array.from(arguments).join(" "); }"#,
+        r#"writeln(words("G1", "X1", 2) + "|" + Array.from("abc", function (c, i) { return c + i; }).join(",") + "|" +
+    Array.from([1, 2, 3], function (v) { return v * 2; }).join(",") + "|" + Array.from([]).length);"#,
+    ),
+    (
         "output variables that print every value not zero",
         r#"var iOutput = createOutputVariable({prefix: "I", control: CONTROL_NONZERO}, gFormat);
 var xOutput = createOutputVariable({prefix: "X"}, gFormat);

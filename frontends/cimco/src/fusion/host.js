@@ -1434,6 +1434,19 @@ function getMachineConfigurationAsText(machine) { return ""; }
 var center = undefined;
 var radius = 0;
 
+// `Array.from(items, mapFn)`: a new array of the items of an array,
+// `arguments` or a text, each given to `mapFn` (with its index) if there
+// is one. Reading the length of undefined or null is the TypeError
+// JavaScript's `Array.from` throws for them.
+function __Array_from(items, mapFn) {
+  var out = [];
+  var n = items.length;
+  for (var i = 0; i < n; i++) {
+    out.push(mapFn === undefined ? items[i] : mapFn(items[i], i));
+  }
+  return out;
+}
+
 // `JSON.stringify(value)`: numbers, texts, booleans, null, arrays and
 // objects (functions and undefined properties left out).
 function __JSON_stringify(v) {
