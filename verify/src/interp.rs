@@ -24,6 +24,7 @@ use postc_ir::{Diagnostic, FileId, Severity, Span};
 use crate::expect::{Expected, ExpectedPath, Kind, RecordSource};
 use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
 use crate::grammar::{self, ItemKind, Items};
+use crate::params::{self, Cycle, Note};
 use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
 
 /// Longest line read; the rest of a longer line is skipped with a finding.
@@ -218,6 +219,15 @@ struct Run<'a, O: Observer + ?Sized> {
     /// Lines of words only are read by [`words_line`] (the tests turn it
     /// off to hold it to the general path).
     fast: bool,
+    /// The parameters the program sets, and the reader of lines beyond
+    /// plain words ([`params`]).
+    params: params::Reader,
+    extras: params::Extras,
+    /// The block's axis words are machine coordinates (Sinumerik `SUPA`).
+    supa: bool,
+    /// A Sinumerik cycle called modally (`MCALL CYCLE81(...)`), in mm:
+    /// drilled after every block that moves the axes.
+    mcall: Option<Cycle>,
 }
 
 pub fn run<O: Observer + ?Sized>(
@@ -287,6 +297,10 @@ pub fn replay<O: Observer + ?Sized>(
         syntax_errors: 0,
         tol: (f64::NAN, (f64::NAN, None)),
         fast,
+        params: params::Reader::default(),
+        extras: params::Extras::default(),
+        supa: false,
+        mcall: None,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -668,6 +682,13 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             );
             return;
         }
+        // Parameters, expressions and the statements of the macro and
+        // Sinumerik families: only for a line the grammar does not read.
+        let mut extended = false;
+        if parsed.is_err() && self.params.line(text, &mut items.0, &mut self.extras).is_ok() {
+            parsed = Ok(());
+            extended = true;
+        }
         if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
                 None if text.contains(&b'(') && !text.contains(&b')') => {
@@ -686,10 +707,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 ),
                 Some(&b) if b.is_ascii_graphic() => (
                     format!(
-                        "unexpected `{}`: verify reads words, comments and `%`, not parameters or expressions",
+                        "unexpected `{}`: this is no word, comment, parameter or statement verify reads",
                         b as char
                     ),
-                    "verify reads the G-code posts write: words, ( ) and ; comments, block delete and `%`",
+                    "verify reads words, ( ) and ; comments, block delete, `%`, `#` and R parameters, [ ] expressions and the Sinumerik statements of docs/verify.md",
                 ),
                 Some(&b) => (
                     format!("unexpected byte 0x{b:02X} in a block"),
@@ -729,6 +750,27 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 ItemKind::Delete | ItemKind::Percent => {}
                 ItemKind::Word(letter) => {
                     let w = Word { value: item.value, decimals: item.decimals, start: item.start, end: item.end };
+                    // A word whose value is a parameter the program never set: an
+                    // axis word leaves its axis unknown (the block says, when it
+                    // moves); any other is ignored.
+                    if extended && w.value.is_nan() && !matches!(letter, b'X' | b'Y' | b'Z') {
+                        let d = self.finding(
+                            Severity::Warning,
+                            codes::VF005.code,
+                            format!(
+                                "verify does not know the value of this {} word (a parameter the program does not set); it is ignored",
+                                letter as char
+                            ),
+                            start,
+                            end,
+                            None,
+                        );
+                        Self::help(
+                            d,
+                            "the controller reads the value from its own parameters; verify cannot check what it does",
+                        );
+                        continue;
+                    }
                     match letter {
                         b'G' => {
                             if block.gs < MAX_CODES {
@@ -766,7 +808,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                                 );
                                 Self::help(d, "a controller that does not know it either refuses the block");
                             }
-                            if matches!(letter, b'X' | b'Y' | b'Z') {
+                            if matches!(letter, b'X' | b'Y' | b'Z') && !extended {
                                 self.max_decimals = Some(self.max_decimals.map_or(w.decimals, |d| d.max(w.decimals)));
                             }
                         }
@@ -774,7 +816,106 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 }
             }
         }
+        if extended {
+            self.statements();
+        }
         self.execute_block(block);
+        if extended && let Some(cycle) = self.extras.cycle.take() {
+            let cycle = self.cycle_in_mm(cycle);
+            if cycle.modal {
+                self.mcall = Some(cycle);
+            } else {
+                self.sinumerik_cycle(&cycle);
+            }
+        }
+    }
+
+    /// The statements of a line read by [`params`], before its block runs:
+    /// what verify does not replay is a warning that names it; `SUPA` and
+    /// the end of a modal call take effect.
+    fn statements(&mut self) {
+        self.supa = self.extras.machine;
+        if self.extras.mcall_off {
+            self.mcall = None;
+        }
+        for i in 0..self.extras.notes.len() {
+            let (note, start, end, word) = self.extras.notes[i];
+            let (message, help) = match note {
+                Note::Flow => (
+                    format!("verify reads the program line by line and does not follow `{word}` (a jump, loop, condition or subroutine)"),
+                    "the moves are compared in the order they are written; a program whose jumps repeat or skip moves may show findings where the machine has none",
+                ),
+                Note::NotReplayed => (
+                    format!("verify does not replay `{word}` (Sinumerik frames, swivel cycles and contour statements); the moves after it are compared as written"),
+                    "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
+                ),
+                Note::Call => {
+                    let d = self.finding(
+                        Severity::Note,
+                        codes::VF044.code,
+                        format!("verify does not follow `{word}` (a call or definition of a block or subroutine, whose moves run in another order than they are written): the moves from here on are not compared"),
+                        start as usize,
+                        end as usize,
+                        None,
+                    );
+                    Self::help(d, "the program is verified up to this line; the rest is read for its syntax only");
+                    self.stop_comparing = true;
+                    continue;
+                }
+                Note::UnknownValue => (
+                    "verify does not know the value this parameter is set to (it uses a parameter the program does not set)".to_string(),
+                    "words that use this parameter are not compared",
+                ),
+            };
+            let d = self.finding(Severity::Warning, codes::VF005.code, message, start as usize, end as usize, None);
+            Self::help(d, help);
+        }
+    }
+
+    /// A Sinumerik cycle's planes in mm.
+    fn cycle_in_mm(&self, c: Cycle) -> Cycle {
+        let u = self.unit;
+        Cycle { rtp: c.rtp * u, rfp: c.rfp * u, sdis: c.sdis * u, dp: c.dp * u, dpr: c.dpr * u, ..c }
+    }
+
+    /// A Sinumerik drilling cycle (`CYCLE81`..`CYCLE89`, `CYCLE840`) at the
+    /// current position, as Siemens' cycle documentation describes it: a
+    /// rapid to the reference plane plus the safety distance (RFP + SDIS),
+    /// a feed to the final depth (DP, or RFP - DPR when DPR is given, which
+    /// then wins), for the tapping and reaming cycles (84, 840, 85, 89) a
+    /// feed back to RFP + SDIS, and a rapid to the return plane (RTP).
+    fn sinumerik_cycle(&mut self, c: &Cycle) {
+        let depth = if c.dpr.is_finite() { c.rfp - c.dpr.abs() } else { c.dp };
+        let span = Span::new(self.file, self.line_start + c.start as usize, self.line_start + c.end as usize);
+        if !(c.rtp.is_finite() && c.rfp.is_finite() && depth.is_finite()) {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                format!("CYCLE{} without its return plane, reference plane and depth (RTP, RFP, DP or DPR)", c.number),
+                c.start as usize,
+                c.end as usize,
+                None,
+            );
+            return;
+        }
+        let start = c.rfp + if c.sdis.is_finite() { c.sdis.abs() } else { 0.0 };
+        let [x, y, _] = self.pos;
+        let make = |kind, start, end| Motion {
+            kind,
+            start,
+            end,
+            centre: [f64::NAN; 3],
+            dir: ArcDir::Cw,
+            plane: Plane::Xy,
+            r: None,
+            span,
+        };
+        self.emit(make(MKind::Rapid, self.pos, [x, y, start]));
+        self.emit(make(MKind::Feed, self.pos, [x, y, depth]));
+        if matches!(c.number, 84 | 840 | 85 | 89) {
+            self.emit(make(MKind::Feed, self.pos, [x, y, start]));
+        }
+        self.emit(make(MKind::Rapid, self.pos, [x, y, c.rtp]));
     }
 
     /// A word whose number has more digits than the controller reads
@@ -911,7 +1052,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         // G codes that set modes, in the RS274/NGC order of execution.
         let mut home = false;
-        let mut machine = false;
+        let mut machine = std::mem::take(&mut self.supa);
         let mut dwell = false;
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
@@ -935,9 +1076,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
                 190 => self.plane = Plane::Yz,
-                200 | 210 | 700 | 710 => {
-                    // G20/G21, and G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM).
-                    let inch = tenths == 200 || tenths == 700;
+                200 | 210 | 700 | 710 | 7000 | 7100 => {
+                    // G20/G21, G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM), Sinumerik's G700/G710.
+                    let inch = matches!(tenths, 200 | 700 | 7000);
                     self.unit = if inch { 25.4 } else { 1.0 };
                     self.units_stated = true;
                     if let Some(units) = self.settings.units
@@ -960,8 +1101,11 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     }
                 }
                 280 | 300 | 382..=385 => home = true,
-                530 => machine = true,
+                530 | 1530 => machine = true,
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
+                // Sinumerik: G500 and G505-G599 settable frames, G60/G601/G602
+                // exact stop, G642 smoothing, G450/G451 corners.
+                5000 | 5050..=5990 | 600 | 6010 | 6020 | 6420 | 4500 | 4510 => {}
                 100 => dwell = true,
                 900 => self.absolute = true,
                 910 => self.absolute = false,
@@ -1116,11 +1260,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             Self::help(d, "a controller uses whatever units were last active; state them in the header");
         }
         let mut target = self.pos;
+        let mut unknown = false;
         for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
             if let Some(w) = b.get(*l) {
                 let v = w.value * self.unit;
                 target[i] = if self.absolute { v } else { self.pos[i] + v };
+                unknown |= w.value.is_nan();
             }
+        }
+        if unknown {
+            self.unknown_move(target);
+            return;
         }
         let span = self.whole_line();
         match motion {
@@ -1147,6 +1297,28 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             20 | 30 => self.arc(b, motion == 20, target, span),
             _ => self.cycle(b, motion, target, span),
         }
+        if let Some(cycle) = self.mcall
+            && motion <= 10
+        {
+            self.sinumerik_cycle(&cycle);
+        }
+    }
+
+    /// A move to a position with an axis word whose value is a parameter
+    /// the program never set: not compared, the axis unknown until the
+    /// program sets it.
+    #[cold]
+    fn unknown_move(&mut self, target: [f64; 3]) {
+        let d = self.finding(
+            Severity::Warning,
+            codes::VF005.code,
+            "this move goes to a position verify cannot compute (a parameter the program does not set); it is not compared",
+            0,
+            self.line_len,
+            None,
+        );
+        Self::help(d, "the position is unknown to verify until the program moves that axis to a number");
+        self.pos = target;
     }
 
     fn block_number(&mut self, n: Word) {
