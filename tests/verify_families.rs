@@ -293,3 +293,39 @@ fn sinumerik_statements_verify_does_not_replay_are_warnings_naming_them() {
     let found = verify(&program, MILL);
     assert!(errors(&found).iter().any(|f| f.code == "VF004" && f.line == line_of(&program, "FOOBAR")), "{found:#?}");
 }
+
+/// MILL as Okuma OSP posts write it (`OKUMA_MB-5000H.cps`): common
+/// variables `VC`, a work offset set in a system variable, `X=VC1`.
+const OKUMA: &str = "%
+O1001
+N10 (TOMBSTONE SETUP B ANGLE)VC1=10.
+N11 VZOFX[21]=0.
+N12 VC2=VC1*3
+N13 G40 G80 G90 G94 G17
+N14 G21
+N15 G15 H01
+N16 T1 M06
+N17 S16000 M03
+N18 G00 X=VC1 Y=VC[1] Z5.
+N19 G01 Z-2. F300.
+N20 X=VC2 F1000.
+N21 G03 X40. Y20. I0 J10.
+N22 G01 Y40.
+N23 G00 Z5.
+N24 M02
+%
+";
+
+#[test]
+fn okuma_variables_are_read() {
+    let found = verify(OKUMA, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    // The system variable is not replayed: a warning that names it, and nothing else.
+    assert!(
+        found.len() == 1 && found[0].code == "VF005" && found[0].line == 4 && found[0].message.contains("Okuma"),
+        "{found:#?}"
+    );
+    let wrong = OKUMA.replace("VC2=VC1*3", "VC2=VC1*3.1");
+    let found = verify(&wrong, MILL);
+    assert!(errors(&found).iter().any(|f| f.code == "VF010" && f.line == line_of(&wrong, "N20")), "{found:#?}");
+}

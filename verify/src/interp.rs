@@ -846,7 +846,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     "the moves are compared in the order they are written; a program whose jumps repeat or skip moves may show findings where the machine has none",
                 ),
                 Note::NotReplayed => (
-                    format!("verify does not replay `{word}` (Sinumerik frames, swivel cycles and contour statements); the moves after it are compared as written"),
+                    format!("verify does not replay `{word}` (a frame, swivel cycle, system variable or contour statement); the moves after it are compared as written"),
                     "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
                 ),
                 Note::Call => {

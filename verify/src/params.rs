@@ -1,6 +1,7 @@
 //! Blocks beyond letter-and-number words: parameters, expressions and the
 //! statements of the Fanuc/Haas macro, LinuxCNC and Siemens Sinumerik
-//! families, read into the same [`Item`]s as [`crate::grammar`] gives.
+//! families, and Okuma's variables, read into the same [`Item`]s as
+//! [`crate::grammar`] gives.
 //!
 //! ```text
 //! line       = ( "/" )? ( item )*
@@ -13,7 +14,9 @@
 //! expr       = operands joined by + - * / MOD ** EQ NE GT GE LT LE AND OR XOR
 //!              (Sinumerik also == <> < > <= >=), unary - +, [ ] and ( ) groups,
 //!              functions SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX FUP
-//!              TRUNC LN EXP, AC( ) IC( ), R parameters by name (R1)
+//!              TRUNC LN EXP, AC( ) IC( ), R parameters by name (R1),
+//!              Okuma common variables (VC1, VC[2])
+//! okuma      = "VC" digits "=" expr | "V" name ( "[" expr "]" )? "=" expr
 //! statement  = Sinumerik keywords and cycle calls (SUPA, MCALL, CYCLE81( .. ),
 //!              WORKPIECE( .. ), MSG( .. ), T="name"), jumps and loops of the
 //!              families (IF GOTO WHILE DO END, O-word subroutines, GOTOF),
@@ -476,6 +479,33 @@ impl Reader {
             c.at = c.text.len();
             return Ok(true);
         }
+        // Okuma's common variables, `VC1=0`, `VC[2]=VC1*2`; its system
+        // variables (`VZOFX[21]=0.`, a work offset) are set and not replayed.
+        if name[0] == b'V' && name.len() > 1 {
+            let common = name.starts_with(b"VC") && name[2..].iter().all(u8::is_ascii_digit);
+            let index = if c.peek() == Some(b'[') { Some(self.operand(c)?.0) } else { None };
+            if !c.assigns() {
+                return Err(start);
+            }
+            c.at += 1;
+            let value = self.expr(c)?;
+            let key = match (common, index) {
+                (true, None) if name.len() > 2 => Some(upper.to_string()),
+                (true, Some(i)) if name.len() == 2 => Some(format!("VC{i}")),
+                _ => None,
+            };
+            match key {
+                Some(key) if value.is_nan() => {
+                    note(extras, Note::UnknownValue, "VC", c.at);
+                    self.values.remove(key.as_str());
+                }
+                Some(key) => {
+                    self.values.insert(key.into(), value);
+                }
+                None => note(extras, Note::NotReplayed, "Okuma system variable", c.at),
+            }
+            return Ok(false);
+        }
         // `$P_UIFR[1,X,TR]=120.05`: a Sinumerik system variable (here a
         // work offset), set and not replayed.
         if name[0] == b'$' {
@@ -649,6 +679,16 @@ impl Reader {
                 if *name == *b"R" && c.peek() == Some(b'[') {
                     let (i, _) = self.operand(c)?;
                     return Ok((self.get(&format!("R{i}")), 4));
+                }
+                // Okuma's common variables.
+                if name.starts_with(b"VC") {
+                    if name.len() == 2 && c.peek() == Some(b'[') {
+                        let (i, _) = self.operand(c)?;
+                        return Ok((self.get(&format!("VC{i}")), 4));
+                    }
+                    if name.len() > 2 && name[2..].iter().all(u8::is_ascii_digit) {
+                        return Ok((self.get(std::str::from_utf8(&name).unwrap_or("")), 4));
+                    }
                 }
                 if name.len() > 1 && name[0] == b'R' && name[1..].iter().all(u8::is_ascii_digit) {
                     let i: u32 = std::str::from_utf8(&name[1..]).ok().and_then(|d| d.parse().ok()).ok_or(start)?;
