@@ -1,8 +1,9 @@
 //! `postc verify` reads the families real posts write besides plain ISO
 //! words (docs/verify.md, "What it reads"): Fanuc/Haas/LinuxCNC `#`
-//! parameters and `[ ]` expressions, and Siemens Sinumerik (`;` comments,
+//! parameters and `[ ]` expressions, Siemens Sinumerik (`;` comments,
 //! R parameters, `X=` values, `CR=` arcs, `SUPA`, `MCALL CYCLE8x(...)`
-//! drilling). Hand-written programs in the style of the corpus posts'
+//! drilling), Okuma's `VC` variables and Heidenhain ISO (centres, `G83
+//! P01 ...` cycles called by `M99`). Hand-written programs in the style of the corpus posts'
 //! verify clean against their toolpath; the same programs with a fault are
 //! still caught; what verify does not replay is a warning (VF005) naming
 //! the word, never an error; broken syntax stays an error (VF004). The
@@ -328,4 +329,62 @@ fn okuma_variables_are_read() {
     let wrong = OKUMA.replace("VC2=VC1*3", "VC2=VC1*3.1");
     let found = verify(&wrong, MILL);
     assert!(errors(&found).iter().any(|f| f.code == "VF010" && f.line == line_of(&wrong, "N20")), "{found:#?}");
+}
+
+/// MILL as `heidenhain_iso.cps` writes it: the `%1001 G71` program lines,
+/// the blank (`G30`/`G31`), signed numbers, I J as the circle centre.
+const HEIDENHAIN_ISO_MILL: &str = "N10 %1001 G71
+(STANDARD TEST JOB)
+N15 G30 G17 X+0. Y+0. Z-10.
+N20 G31 G90 X+100. Y+100. Z+0.
+N25 G94
+N40 T1 G17 S16000
+N45 S16000 M03
+N55 G00 X+10. Y+10.
+N60 Z+5.
+N65 G01 Z-2. F300.
+N70 X+30. F1000.
+N75 I+30. J+20. G03 X+40. Y+20.
+N80 G01 Y+40.
+N85 G00 Z+5.
+N90 M30
+N95 %1001 G71
+";
+
+/// DRILL as `heidenhain_iso.cps` writes it: the cycle defined (`G83
+/// P01` set-up clearance, `P02` depth from the surface) and called by
+/// `M99` at each hole.
+const HEIDENHAIN_ISO_DRILL: &str = "N10 %1001 G71
+N15 G30 G17 X+0. Y+0. Z-20.
+N20 G31 G90 X+80. Y+60. Z+0.
+N40 T4 G17 S6000
+N45 S6000 M03
+N55 G00 X+20. Y+20.
+N60 Z+5.
+N70 G83 P01 -4. P02 -8. P03 +3. P04 0.5 P05 F120.
+N75 M99
+N80 X+40. M99
+N85 M30
+N90 %1001 G71
+";
+
+#[test]
+fn heidenhain_iso_programs_are_read_and_compared() {
+    let found = verify(HEIDENHAIN_ISO_MILL, MILL);
+    assert!(found.is_empty(), "{found:#?}");
+    let found = verify(HEIDENHAIN_ISO_DRILL, DRILL);
+    assert!(found.is_empty(), "{found:#?}");
+    // The centre read as an offset (as a Fanuc control would) is wrong.
+    let wrong = HEIDENHAIN_ISO_MILL.replace("I+30. J+20.", "I+0. J+10.");
+    let found = verify(&wrong, MILL);
+    assert!(errors(&found).iter().any(|f| f.line == line_of(&wrong, "N75")), "{found:#?}");
+    // Drilled too deep.
+    let wrong = HEIDENHAIN_ISO_DRILL.replace("P02 -8.", "P02 -9.");
+    let found = verify(&wrong, DRILL);
+    assert!(errors(&found).iter().any(|f| f.line == line_of(&wrong, "N75")), "{found:#?}");
+    // Without the `%1001 G71` line, it is not Heidenhain ISO: M99 is no cycle call
+    // and the holes are never drilled.
+    let other = HEIDENHAIN_ISO_DRILL.replace("N10 %1001 G71", "N10 G71");
+    let found = verify(&other, DRILL);
+    assert!(errors(&found).iter().any(|f| f.code == "VF011" || f.code == "VF004"), "{found:#?}");
 }

@@ -228,6 +228,15 @@ struct Run<'a, O: Observer + ?Sized> {
     /// A Sinumerik cycle called modally (`MCALL CYCLE81(...)`), in mm:
     /// drilled after every block that moves the axes.
     mcall: Option<Cycle>,
+    /// The program is Heidenhain ISO (its `%name G71` line): I J K are the
+    /// circle centre, G30/G31 the blank, `G83 P01 ...` defines a cycle that
+    /// `M99` calls.
+    heidenhain: bool,
+    /// The last circle centre (Heidenhain ISO's I J K are modal), mm.
+    centre: [f64; 3],
+    /// The Heidenhain ISO cycle defined: its G code and parameters P01..P03
+    /// (set-up clearance and depth, signed toward the work, mm).
+    defined: Option<(u32, [f64; 3])>,
 }
 
 pub fn run<O: Observer + ?Sized>(
@@ -301,6 +310,9 @@ pub fn replay<O: Observer + ?Sized>(
         extras: params::Extras::default(),
         supa: false,
         mcall: None,
+        heidenhain: false,
+        centre: [f64::NAN; 3],
+        defined: None,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -747,7 +759,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
             match item.kind {
                 ItemKind::Comment => self.comment(&text[start..end], start),
-                ItemKind::Delete | ItemKind::Percent => {}
+                ItemKind::Delete => {}
+                ItemKind::Percent => self.percent(&text[start..end]),
                 ItemKind::Word(letter) => {
                     let w = Word { value: item.value, decimals: item.decimals, start: item.start, end: item.end };
                     // A word whose value is a parameter the program never set: an
@@ -818,8 +831,14 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         if extended {
             self.statements();
+            if self.extras.parameters && self.heidenhain {
+                self.define_cycle(block);
+            }
         }
         self.execute_block(block);
+        if self.heidenhain && block.m[..block.ms].iter().any(|m| tenths(m.0) == 990) {
+            self.heidenhain_cycle();
+        }
         if extended && let Some(cycle) = self.extras.cycle.take() {
             let cycle = self.cycle_in_mm(cycle);
             if cycle.modal {
@@ -870,6 +889,83 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             let d = self.finding(Severity::Warning, codes::VF005.code, message, start as usize, end as usize, None);
             Self::help(d, help);
         }
+    }
+
+    /// A `%` line: `%1001 G71`, the start (and end) of a Heidenhain ISO
+    /// program, says the family and its units.
+    fn percent(&mut self, text: &[u8]) {
+        let name = text[1..].iter().take_while(|b| b.is_ascii_alphanumeric() || **b == b'_').count();
+        let rest = std::str::from_utf8(&text[1 + name..]).unwrap_or("").trim().to_ascii_uppercase();
+        let inch = match rest.split_whitespace().next() {
+            Some("G70") => true,
+            Some("G71") => false,
+            _ => return,
+        };
+        if name == 0 {
+            return;
+        }
+        self.heidenhain = true;
+        self.unit = if inch { 25.4 } else { 1.0 };
+        self.units_stated = true;
+    }
+
+    /// A Heidenhain ISO cycle definition (`G83 P01 -4. P02 -8. ...`): its G
+    /// code is no motion mode; the cycle runs where `M99` calls it.
+    fn define_cycle(&mut self, block: &mut Block) {
+        let Some(i) = block.g[..block.gs].iter().position(|g| matches!(tenths(g.0), 830 | 840 | 850 | 860)) else {
+            return;
+        };
+        let code = tenths(block.g[i].0);
+        block.g.copy_within(i + 1..block.gs, i);
+        block.gs -= 1;
+        let p = self.extras.p;
+        self.defined = Some((code, [p[0] * self.unit, p[1] * self.unit, p[2] * self.unit]));
+    }
+
+    /// The Heidenhain ISO cycle defined, called by `M99` where the block
+    /// ends, as the TNC's DIN/ISO pecking and tapping cycles (G83, G84,
+    /// G85) run: from the start position, set-up clearance (P01) above the
+    /// surface, a feed to the depth (P02, from the surface), then back to
+    /// the start, at rapid (G83) or at the feed (tapping).
+    fn heidenhain_cycle(&mut self) {
+        let Some((code, [setup, depth, _])) = self.defined else {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                "M99 calls a cycle, but no cycle (G83 P01 ...) is defined",
+                0,
+                self.line_len,
+                None,
+            );
+            return;
+        };
+        let [x, y, z0] = self.pos;
+        let bottom = z0 + setup + depth;
+        if !bottom.is_finite() {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                "a cycle without its set-up clearance and depth (P01, P02)",
+                0,
+                self.line_len,
+                None,
+            );
+            return;
+        }
+        let span = self.whole_line();
+        let make = |kind, start, end| Motion {
+            kind,
+            start,
+            end,
+            centre: [f64::NAN; 3],
+            dir: ArcDir::Cw,
+            plane: Plane::Xy,
+            r: None,
+            span,
+        };
+        self.emit(make(MKind::Feed, self.pos, [x, y, bottom]));
+        let out = if code == 830 { MKind::Rapid } else { MKind::Feed };
+        self.emit(make(out, self.pos, [x, y, z0]));
     }
 
     /// A Sinumerik cycle's planes in mm.
@@ -1100,6 +1196,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                         Self::help(d, "the units word must match the units the post prints its numbers in");
                     }
                 }
+                // Heidenhain ISO: G30/G31 define the blank (its corners).
+                300 | 310 if self.heidenhain => dwell = true,
                 280 | 300 | 382..=385 => home = true,
                 530 | 1530 => machine = true,
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
@@ -1453,10 +1551,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
         } else {
             let mut c = start;
+            // Heidenhain ISO's I J K are the circle centre, kept until the next.
+            let absolute = self.arc_absolute || self.heidenhain && self.absolute;
             for axis in [u, v] {
-                let value = b.get(letters[axis]).map_or(0.0, |x| x.value * self.unit);
-                c[axis] = if self.arc_absolute { value } else { start[axis] + value };
+                c[axis] = match b.get(letters[axis]) {
+                    Some(x) if absolute => x.value * self.unit,
+                    Some(x) => start[axis] + x.value * self.unit,
+                    None if self.heidenhain => self.centre[axis],
+                    None => start[axis],
+                };
             }
+            self.centre = c;
             let arc = Arc { start, end: target, centre: c, dir, plane: self.plane };
             let (r0, r1) = (arc.start_radius(), arc.end_radius());
             if let Some(limit) = self.settings.controller.radius_error(r0, r1, self.unit > 1.0) {

@@ -16,6 +16,7 @@
 //!              functions SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX FUP
 //!              TRUNC LN EXP, AC( ) IC( ), R parameters by name (R1),
 //!              Okuma common variables (VC1, VC[2])
+//! heidenhain = "P" digit digit value               Heidenhain ISO cycle parameter: P01 -4.
 //! okuma      = "VC" digits "=" expr | "V" name ( "[" expr "]" )? "=" expr
 //! statement  = Sinumerik keywords and cycle calls (SUPA, MCALL, CYCLE81( .. ),
 //!              WORKPIECE( .. ), MSG( .. ), T="name"), jumps and loops of the
@@ -83,6 +84,10 @@ pub struct Extras {
     pub notes: Vec<(Note, u32, u32, &'static str)>,
     /// A drilling cycle called on the line.
     pub cycle: Option<Cycle>,
+    /// Heidenhain ISO cycle parameters `P01 -4.` ... `P09`, NaN where not
+    /// given; `parameters` says whether the line had any.
+    pub p: [f64; 9],
+    pub parameters: bool,
     /// `MCALL` alone: the modal call ends.
     pub mcall_off: bool,
     /// `SUPA` (Sinumerik): the block's axis words are machine coordinates.
@@ -287,6 +292,8 @@ impl Reader {
         items.clear();
         extras.notes.clear();
         extras.cycle = None;
+        extras.p = [f64::NAN; 9];
+        extras.parameters = false;
         extras.mcall_off = false;
         extras.machine = false;
         self.pending.clear();
@@ -372,7 +379,17 @@ impl Reader {
             }
             self.valued(c)?
         } else {
+            let digits = c.at;
             let (value, decimals) = self.operand(c)?;
+            // Heidenhain ISO's cycle parameters: `P01 -4.`, a two-digit
+            // number and then the value (`P05 F120.`: the feed word that follows).
+            if letter == b'P' && c.at - digits == 2 && decimals == 0 && (1.0..=9.0).contains(&value) {
+                extras.parameters = true;
+                if c.peek().is_some_and(|b| matches!(b, b'+' | b'-' | b'.' | b'0'..=b'9')) {
+                    extras.p[value as usize - 1] = self.operand(c)?.0;
+                }
+                return Ok(());
+            }
             if letter == b'R' && c.assigns() {
                 // `R1=5`: Sinumerik's R parameters.
                 // They take effect at once: a later word of the block reads the new value.
