@@ -223,6 +223,10 @@ struct Run<'a, O: Observer + ?Sized> {
     /// plain words ([`params`]).
     params: params::Reader,
     extras: params::Extras,
+    /// The block being executed was read by [`params`]: its axis words may
+    /// have values verify does not know, and `supa` may be set. Blocks of
+    /// plain words never look further.
+    extended: bool,
     /// The block's axis words are machine coordinates (Sinumerik `SUPA`).
     supa: bool,
     /// A Sinumerik cycle called modally (`MCALL CYCLE81(...)`), in mm:
@@ -308,6 +312,7 @@ pub fn replay<O: Observer + ?Sized>(
         fast,
         params: params::Reader::default(),
         extras: params::Extras::default(),
+        extended: false,
         supa: false,
         mcall: None,
         heidenhain: false,
@@ -835,7 +840,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 self.define_cycle(block);
             }
         }
+        self.extended = extended;
         self.execute_block(block);
+        self.extended = false;
         if self.heidenhain && block.m[..block.ms].iter().any(|m| tenths(m.0) == 990) {
             self.heidenhain_cycle();
         }
@@ -1148,7 +1155,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         // G codes that set modes, in the RS274/NGC order of execution.
         let mut home = false;
-        let mut machine = std::mem::take(&mut self.supa);
+        let mut machine = self.extended && self.supa;
         let mut dwell = false;
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
@@ -1358,15 +1365,13 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             Self::help(d, "a controller uses whatever units were last active; state them in the header");
         }
         let mut target = self.pos;
-        let mut unknown = false;
         for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
             if let Some(w) = b.get(*l) {
                 let v = w.value * self.unit;
                 target[i] = if self.absolute { v } else { self.pos[i] + v };
-                unknown |= w.value.is_nan();
             }
         }
-        if unknown {
+        if self.extended && [b'X', b'Y', b'Z'].iter().any(|l| b.get(*l).is_some_and(|w| w.value.is_nan())) {
             self.unknown_move(target);
             return;
         }
