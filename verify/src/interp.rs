@@ -232,6 +232,9 @@ struct Run<'a, O: Observer + ?Sized> {
     /// A Sinumerik cycle called modally (`MCALL CYCLE81(...)`), in mm:
     /// drilled after every block that moves the axes.
     mcall: Option<Cycle>,
+    /// Moves to a position verify could not compute ([`Run::unknown_move`]):
+    /// toolpath moves they may have made are not reported as missing.
+    uncomputed: u64,
     /// The program is Heidenhain ISO (its `%name G71` line): I J K are the
     /// circle centre, G30/G31 the blank, `G83 P01 ...` defines a cycle that
     /// `M99` calls.
@@ -315,6 +318,7 @@ pub fn replay<O: Observer + ?Sized>(
         extended: false,
         supa: false,
         mcall: None,
+        uncomputed: 0,
         heidenhain: false,
         centre: [f64::NAN; 3],
         defined: None,
@@ -1422,6 +1426,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         );
         Self::help(d, "the position is unknown to verify until the program moves that axis to a number");
         self.pos = target;
+        self.uncomputed += 1;
     }
 
     fn block_number(&mut self, n: Word) {
@@ -2179,7 +2184,18 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         self.stats.expected = self.path.count;
         if let Some(e) = first {
             let line = Span::new(self.file, self.line_start, self.line_start + self.line_len);
-            let d = Diagnostic::error(
+            // Moves verify could not compute may be these: a warning that says so.
+            let (severity, help) = match self.uncomputed {
+                0 => (Severity::Error, "the program is truncated, or the post dropped moves".to_string()),
+                n => (
+                    Severity::Warning,
+                    format!(
+                        "{n} move(s) of the program go to positions verify cannot compute (VF005): they may be these"
+                    ),
+                ),
+            };
+            let d = Diagnostic::new(
+                severity,
                 codes::VF011,
                 format!(
                     "the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}",
@@ -2188,8 +2204,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             )
             .at(e.span, "the first move the program does not make")
             .also(line, "the program's last line")
-            .help("the program is truncated, or the post dropped moves");
-            self.push_at(d, true, e.end);
+            .help(help);
+            self.push_at(d, severity == Severity::Error, e.end);
         }
         for d in std::mem::take(&mut self.path.diagnostics) {
             let error = d.is_error();

@@ -280,7 +280,9 @@ fn function(name: &[u8]) -> Option<fn(f64) -> f64> {
         b"FUP" => f64::ceil,
         b"LN" => f64::ln,
         b"EXP" => f64::exp,
-        b"AC" | b"IC" => |v: f64| v,
+        b"AC" => |v: f64| v,
+        // IC(..): incremental for this word alone, which a value cannot say.
+        b"IC" => |_: f64| f64::NAN,
         _ => return None,
     })
 }
