@@ -261,7 +261,7 @@ const CALLS: &[&str] = &["CALL", "PCALL", "SUB", "PROC"];
 /// tool in ways verify does not replay.
 const NOT_REPLAYED: &[&str] = &[
     "TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "TRAORI", "TRAFOOF", "TRANSMIT",
-    "TRACYL", "RND", "RNDM", "CHF", "CHR", "AP", "RP", "AR", "CIP", "CT", "OFFN", "G65", "G66",
+    "TRACYL", "RND", "RNDM", "CHF", "CHR", "AP", "RP", "AR", "CIP", "CT", "OFFN",
 ];
 
 /// Functions of one argument, by name.
@@ -272,7 +272,7 @@ fn function(name: &[u8]) -> Option<fn(f64) -> f64> {
         b"TAN" => |v: f64| v.to_radians().tan(),
         b"ASIN" => |v: f64| v.asin().to_degrees(),
         b"ACOS" => |v: f64| v.acos().to_degrees(),
-        b"ATAN" | b"ATAN2" => |v: f64| v.atan().to_degrees(),
+        b"ATAN" => |v: f64| v.atan().to_degrees(),
         b"SQRT" | b"SQR" => f64::sqrt,
         b"ABS" => f64::abs,
         b"ROUND" => f64::round,
