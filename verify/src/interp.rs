@@ -839,7 +839,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
         }
         if extended {
-            self.statements();
+            self.statements(text);
             if self.extras.parameters && self.heidenhain {
                 self.define_cycle(block);
             }
@@ -863,7 +863,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
     /// The statements of a line read by [`params`], before its block runs:
     /// what verify does not replay is a warning that names it; `SUPA` and
     /// the end of a modal call take effect.
-    fn statements(&mut self) {
+    fn statements(&mut self, text: &[u8]) {
         self.supa = self.extras.machine;
         if self.extras.mcall_off {
             self.mcall = None;
@@ -876,7 +876,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     "the moves are compared in the order they are written; a program whose jumps repeat or skip moves may show findings where the machine has none",
                 ),
                 Note::NotReplayed => (
-                    format!("verify does not replay `{word}` (a frame, swivel cycle, system variable or contour statement); the moves after it are compared as written"),
+                    format!("verify does not replay `{}` ({word}); the moves after it are compared as written",
+                        name_at(text, start as usize)),
                     "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
                 ),
                 Note::Call => {
@@ -2230,6 +2231,14 @@ fn counted_length(text: &[u8]) -> usize {
         }
     }
     n
+}
+
+/// The name that starts at `text[at..]` (`TRANS`, `CYCLE800`, `$P_UIFR`,
+/// `VZOFX`), for a message.
+fn name_at(text: &[u8], at: usize) -> String {
+    let rest = text.get(at..).unwrap_or_default();
+    let n = rest.iter().take_while(|b| b.is_ascii_alphanumeric() || matches!(b, b'_' | b'$')).count();
+    String::from_utf8_lossy(&rest[..n]).into_owned()
 }
 
 /// Where the message of an `M117`/`M118` word starts (after the word).

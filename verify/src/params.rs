@@ -80,7 +80,8 @@ pub struct Cycle {
 #[derive(Default, Debug)]
 pub struct Extras {
     /// Statements verify reads and does not replay, with their span and
-    /// the family and word that name them.
+    /// the word that names them (for [`Note::NotReplayed`], what the
+    /// statement is: the span names the word).
     pub notes: Vec<(Note, u32, u32, &'static str)>,
     /// A drilling cycle called on the line.
     pub cycle: Option<Cycle>,
@@ -482,7 +483,7 @@ impl Reader {
                 }
                 // CYCLE832: the high-speed settings (tolerance, smoothing); no motion.
                 832 => {}
-                _ => note(extras, Note::NotReplayed, "CYCLE", c.at),
+                _ => note(extras, Note::NotReplayed, "a Sinumerik cycle that is not a drilling cycle", c.at),
             }
             return Ok(false);
         }
@@ -521,7 +522,7 @@ impl Reader {
                 Some(key) => {
                     self.values.insert(key.into(), value);
                 }
-                None => note(extras, Note::NotReplayed, "Okuma system variable", c.at),
+                None => note(extras, Note::NotReplayed, "an Okuma system variable set", c.at),
             }
             return Ok(false);
         }
@@ -536,7 +537,7 @@ impl Reader {
             }
             c.at += 1;
             self.expr(c)?;
-            note(extras, Note::NotReplayed, "$ system variable", c.at);
+            note(extras, Note::NotReplayed, "a Sinumerik system variable set", c.at);
             return Ok(false);
         }
         if let Some(w) =
@@ -546,11 +547,11 @@ impl Reader {
             c.at = c.text.len();
             return Ok(true);
         }
-        if let Some(w) = NOT_REPLAYED.iter().find(|w| **w == upper) {
+        if NOT_REPLAYED.contains(&upper) {
             // A frame statement alone resets it: nothing to replay.
             let alone = c.peek().is_none_or(|b| b == b';');
             if !alone {
-                note(extras, Note::NotReplayed, w, c.text.len());
+                note(extras, Note::NotReplayed, "a Sinumerik frame or contour statement", c.text.len());
             }
             c.at = c.text.len();
             return Ok(true);
