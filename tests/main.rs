@@ -55,5 +55,6 @@ mod vectric_fidelity;
 mod vectric_vendor;
 mod verify_cli;
 mod verify_corpus;
+mod verify_families;
 mod verify_faults;
 mod verify_postp;

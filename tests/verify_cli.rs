@@ -227,7 +227,7 @@ fn what_post_cannot_verify_it_says_in_a_note() {
     let cases: [(&[&str], &str); 5] = [
         (&["corpus/posts/vectric/hpgl_arcs.pp", "corpus/toolpaths/standard.ron"], "HPGL"),
         (&["corpus/posts/vectric/shopbot_inch.pp", "corpus/toolpaths/standard.ron"], "ShopBot"),
-        (&["corpus/posts/cimco/siemens_840d.js", DRILL], "Siemens Sinumerik (`"),
+        (&["corpus/posts/cimco/heidenhain.js", DRILL], "Heidenhain conversational"),
         (&["corpus/posts/vectric/rotary_wrap_mm.pp", "corpus/toolpaths/rotary_mm.ron"], "rotary"),
         (&["corpus/posts/vcpost/siemens_probe.VcPost", "corpus/probe/siemens_probe__housing.csv"], "probe table"),
     ];

@@ -220,11 +220,6 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
             *refused.entry("rotary wrap (VF006)").or_insert(0) += 1;
             continue;
         }
-        if let Some((family, _)) = postc_verify::post_family(&post) {
-            println!("refused by the words it prints: {name} ({family})");
-            *refused.entry("not G-code (by the post's words)").or_insert(0) += 1;
-            continue;
-        }
         // The project's own posts have no error finding at all: `postc post`
         // verifies by default and writes every program they post.
         let own = post_path.starts_with(root().join("corpus"));

@@ -435,8 +435,12 @@ fn bad_programs_give_findings_never_a_panic() {
         check(&program_with(&[(7, "N70 X30 F1000 E5"), (8, "N80 G3 X40.35 Y20.35 I0 J10.35 G7.7")]), Controller::Grbl);
     assert!(found.iter().any(|f| f.code == "VF005" && f.line == 8), "{found:#?}");
     assert!(found.iter().any(|f| f.code == "VF005" && f.line == 9), "{found:#?}");
-    // Parameters and expressions.
+    // Parameters and expressions are read (tests/verify_families.rs): one
+    // the program never set leaves the move uncompared, a warning; an
+    // unclosed bracket is an error.
     let found = check(&program_with(&[(7, "N70 X[#1+2] F1000")]), Controller::LinuxCnc);
+    assert!(found.iter().any(|f| f.code == "VF005" && f.severity == Severity::Warning && f.line == 8), "{found:#?}");
+    let found = check(&program_with(&[(7, "N70 X[#1+2 F1000")]), Controller::LinuxCnc);
     assert!(found.iter().any(|f| f.code == "VF004" && f.line == 8), "{found:#?}");
     // Binary data in a line.
     let mut bytes = program_with(&[]).into_bytes();

@@ -1496,15 +1496,19 @@ declare_codes! {
     /// A line is longer than 64 KiB; it is skipped.
     VF003: Error, "a line longer than 64 KiB; it is skipped",
         fix = "Check the program: G-code blocks are short.";
-    /// A block cannot be read: a letter without a number, a number without a letter, a parameter
-    /// or expression, an unclosed comment, or a second word of one letter. A warning when the
+    /// A block cannot be read: a letter without a number, a number without a letter, a name or
+    /// statement of no family verify reads (docs/verify.md: `#` and R parameters, `[ ]`
+    /// expressions and the Sinumerik, Okuma and Heidenhain ISO statements are read), an
+    /// unclosed comment or bracket, or a second word of one letter. A warning when the
     /// line is text the toolpath asked to be inserted as it is (an APT `INSERT`, a native
     /// `Insert` event): the toolpath's text, written as asked, not a fault of the post.
-    VF004: Error | Warning, "a block cannot be read: a letter without a number, a number without a letter, a parameter or expression, an unclosed comment, or a second word of one letter (a warning for text the toolpath inserts as it is)",
+    VF004: Error | Warning, "a block cannot be read: a letter without a number, a number without a letter, a name or statement of no family verify reads, an unclosed comment or bracket, or a second word of one letter (a warning for text the toolpath inserts as it is)",
         fix = "Correct the post that wrote the block; for inserted text, make it a comment in the CAM system.";
-    /// verify does not know this G code, letter or block, and ignores it; what it does on the
-    /// machine is not checked.
-    VF005: Warning, "a G code, letter or block verify does not know (it is ignored)",
+    /// verify does not know this G code, letter or block, and ignores it; or it reads a
+    /// statement it does not replay (a jump, a loop, a Sinumerik frame, a system variable set),
+    /// or a value it cannot compute (a parameter the program never sets), and says so. What it
+    /// does on the machine is not checked.
+    VF005: Warning, "a G code, letter or block verify does not know, a statement it does not replay, or a value it cannot compute (it is ignored)",
         fix = "None needed if the code is right for the controller.";
     /// The post wraps an axis onto a rotary axis; verify does not compare rotary-wrapped
     /// programs.
@@ -1525,8 +1529,9 @@ declare_codes! {
     VF010: Error, "a cutting move off the toolpath (or an arc where the toolpath moves straight)",
         fix = "Look at the post's move sections and variable formats around the line given.";
     /// The program ends before cutting moves of the toolpath: it is truncated, or moves were
-    /// dropped.
-    VF011: Error, "the program ends before cutting moves of the toolpath (truncated, or moves dropped)",
+    /// dropped. A warning when the program has moves to positions verify cannot compute (a
+    /// parameter the program never sets, VF005): they may be the moves it misses.
+    VF011: Error | Warning, "the program ends before cutting moves of the toolpath (truncated, or moves dropped; a warning when the program has moves to positions verify cannot compute, which may be them)",
         fix = "Check the post's sections for the missing moves, and that the program was written whole.";
     /// A rapid move where the toolpath cuts: the tool would cut at rapid speed.
     VF012: Error, "a rapid move where the toolpath cuts",
@@ -1609,6 +1614,9 @@ declare_codes! {
     /// verify does not read (HPGL, ShopBot, Heidenhain conversational, by the post's or the
     /// output's extension, or by the program's first lines), the program is binary data or text
     /// whose first blocks do not read as G-code, or the post is a lathe or rotary-wrapped one.
+    /// verify gives it too, at a call of a block or subroutine written elsewhere in the program
+    /// (Sinumerik `CALL BLOCK`, LinuxCNC `o<name> call`): the moves from there on are not
+    /// compared.
     /// A note; `--deny VF044` refuses to write a program that could not be verified.
     VF044: Note, "`postc post` did not verify the program: verify does not read what the post writes (the note says why)",
         fix = "Nothing to do: the program is written as posted. `--deny VF044` refuses programs that cannot be verified.";

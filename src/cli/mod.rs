@@ -72,7 +72,7 @@ enum Command {
     ///
     /// The G-code it writes is verified while it is posted, on a second thread, as `postc verify PROGRAM --toolpath TOOLPATH --post POST` would (generic controller, 0.01 mm): every move replayed and compared with the toolpath, feeds, spindle, units, arcs, block numbers. Findings are VF diagnostics: a warning is printed and the program written; an error means no program is written and the exit status is 1. Their severities change as any code's (`--warn VF033`, `--deny VF`, `--allow VF035`, `postc.toml`); `--no-verify` skips verification.
     ///
-    /// Not verified, with a VF044 note saying why: programs of families verify does not read (HPGL, ShopBot, Heidenhain conversational, Siemens Sinumerik: by the post's or the output's extension, the words the post prints, or the program's first lines), binary or non-G-code text output, lathe and rotary-wrapped posts, VcPost probe tables and composites event files. `--deny VF044` refuses to write a program that cannot be verified.
+    /// Not verified, with a VF044 note saying why: programs of families verify does not read (HPGL, ShopBot, Heidenhain conversational: by the post's or the output's extension or the program's first lines), programs from a call of a block or subroutine on (Sinumerik `CALL BLOCK`, LinuxCNC `o<name> call`), binary or non-G-code text output, lathe and rotary-wrapped posts, VcPost probe tables and composites event files. `--deny VF044` refuses to write a program that cannot be verified.
     Post(post::Args),
     /// Convert a post to another dialect (Vectric .pp, VcPost, CIMCO, or the IR as RON); refused with reasons when the target cannot hold it.
     Convert(convert::Args),

@@ -327,7 +327,7 @@ pub(crate) const FOREIGN_EXTENSIONS: &[(&str, &str)] =
 
 /// Why `post` cannot verify what the post writes, known before it runs
 /// (docs/verify.md, "While posting"): a family other than G-code by the
-/// post's or the output's extension or by the words it prints, a lathe
+/// post's or the output's extension, a lathe
 /// post, a rotary-wrapped post.
 fn not_verified(args: &Args, post: &postc_ir::Post) -> Option<String> {
     let foreign = |ext: &str| FOREIGN_EXTENSIONS.iter().find(|(e, _)| e.eq_ignore_ascii_case(ext)).map(|(_, f)| *f);
@@ -340,9 +340,6 @@ fn not_verified(args: &Args, post: &postc_ir::Post) -> Option<String> {
     }
     if let Some((ext, family)) = output_ext.as_deref().and_then(|e| Some((e, foreign(e)?))) {
         return Some(format!("its extension `.{ext}` is that of {family}, which verify does not read"));
-    }
-    if let Some((family, word)) = postc_verify::post_family(post) {
-        return Some(format!("the post writes {family} (`{word}`), which verify does not read"));
     }
     if post.options.lathe {
         return Some(format!("`{}` is a lathe post; verify compares milling programs only", post.info.name));

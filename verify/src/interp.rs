@@ -24,6 +24,7 @@ use postc_ir::{Diagnostic, FileId, Severity, Span};
 use crate::expect::{Expected, ExpectedPath, Kind, RecordSource};
 use crate::geometry::{Arc, axes, dist, known, r_centre, to_segment};
 use crate::grammar::{self, ItemKind, Items};
+use crate::params::{self, Cycle, Note};
 use crate::{Controller, MAX_SHOWN, Move, Observer, Report, Settings};
 
 /// Longest line read; the rest of a longer line is skipped with a finding.
@@ -218,6 +219,31 @@ struct Run<'a, O: Observer + ?Sized> {
     /// Lines of words only are read by [`words_line`] (the tests turn it
     /// off to hold it to the general path).
     fast: bool,
+    /// The parameters the program sets, and the reader of lines beyond
+    /// plain words ([`params`]).
+    params: params::Reader,
+    extras: params::Extras,
+    /// The block being executed was read by [`params`]: its axis words may
+    /// have values verify does not know, and `supa` may be set. Blocks of
+    /// plain words never look further.
+    extended: bool,
+    /// The block's axis words are machine coordinates (Sinumerik `SUPA`).
+    supa: bool,
+    /// A Sinumerik cycle called modally (`MCALL CYCLE81(...)`), in mm:
+    /// drilled after every block that moves the axes.
+    mcall: Option<Cycle>,
+    /// Moves to a position verify could not compute ([`Run::unknown_move`]):
+    /// toolpath moves they may have made are not reported as missing.
+    uncomputed: u64,
+    /// The program is Heidenhain ISO (its `%name G71` line): I J K are the
+    /// circle centre, G30/G31 the blank, `G83 P01 ...` defines a cycle that
+    /// `M99` calls.
+    heidenhain: bool,
+    /// The last circle centre (Heidenhain ISO's I J K are modal), mm.
+    centre: [f64; 3],
+    /// The Heidenhain ISO cycle defined: its G code and parameters P01..P03
+    /// (set-up clearance and depth, signed toward the work, mm).
+    defined: Option<(u32, [f64; 3])>,
 }
 
 pub fn run<O: Observer + ?Sized>(
@@ -287,6 +313,15 @@ pub fn replay<O: Observer + ?Sized>(
         syntax_errors: 0,
         tol: (f64::NAN, (f64::NAN, None)),
         fast,
+        params: params::Reader::default(),
+        extras: params::Extras::default(),
+        extended: false,
+        supa: false,
+        mcall: None,
+        uncomputed: 0,
+        heidenhain: false,
+        centre: [f64::NAN; 3],
+        defined: None,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -668,6 +703,13 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             );
             return;
         }
+        // Parameters, expressions and the statements of the macro and
+        // Sinumerik families: only for a line the grammar does not read.
+        let mut extended = false;
+        if parsed.is_err() && self.params.line(text, &mut items.0, &mut self.extras).is_ok() {
+            parsed = Ok(());
+            extended = true;
+        }
         if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
                 None if text.contains(&b'(') && !text.contains(&b')') => {
@@ -686,10 +728,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 ),
                 Some(&b) if b.is_ascii_graphic() => (
                     format!(
-                        "unexpected `{}`: verify reads words, comments and `%`, not parameters or expressions",
+                        "unexpected `{}`: this is no word, comment, parameter or statement verify reads",
                         b as char
                     ),
-                    "verify reads the G-code posts write: words, ( ) and ; comments, block delete and `%`",
+                    "verify reads words, ( ) and ; comments, block delete, `%`, `#` and R parameters, [ ] expressions and the Sinumerik statements of docs/verify.md",
                 ),
                 Some(&b) => (
                     format!("unexpected byte 0x{b:02X} in a block"),
@@ -726,9 +768,31 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
             match item.kind {
                 ItemKind::Comment => self.comment(&text[start..end], start),
-                ItemKind::Delete | ItemKind::Percent => {}
+                ItemKind::Delete => {}
+                ItemKind::Percent => self.percent(&text[start..end]),
                 ItemKind::Word(letter) => {
                     let w = Word { value: item.value, decimals: item.decimals, start: item.start, end: item.end };
+                    // A word whose value is a parameter the program never set: an
+                    // axis word leaves its axis unknown (the block says, when it
+                    // moves); any other is ignored.
+                    if extended && w.value.is_nan() && !matches!(letter, b'X' | b'Y' | b'Z') {
+                        let d = self.finding(
+                            Severity::Warning,
+                            codes::VF005.code,
+                            format!(
+                                "verify does not know the value of this {} word (a parameter the program does not set); it is ignored",
+                                letter as char
+                            ),
+                            start,
+                            end,
+                            None,
+                        );
+                        Self::help(
+                            d,
+                            "the controller reads the value from its own parameters; verify cannot check what it does",
+                        );
+                        continue;
+                    }
                     match letter {
                         b'G' => {
                             if block.gs < MAX_CODES {
@@ -766,7 +830,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                                 );
                                 Self::help(d, "a controller that does not know it either refuses the block");
                             }
-                            if matches!(letter, b'X' | b'Y' | b'Z') {
+                            if matches!(letter, b'X' | b'Y' | b'Z') && !extended {
                                 self.max_decimals = Some(self.max_decimals.map_or(w.decimals, |d| d.max(w.decimals)));
                             }
                         }
@@ -774,7 +838,192 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 }
             }
         }
+        if extended {
+            self.statements(text);
+            if self.extras.parameters && self.heidenhain {
+                self.define_cycle(block);
+            }
+        }
+        self.extended = extended;
         self.execute_block(block);
+        self.extended = false;
+        if self.heidenhain && block.m[..block.ms].iter().any(|m| tenths(m.0) == 990) {
+            self.heidenhain_cycle();
+        }
+        if extended && let Some(cycle) = self.extras.cycle.take() {
+            let cycle = self.cycle_in_mm(cycle);
+            if cycle.modal {
+                self.mcall = Some(cycle);
+            } else {
+                self.sinumerik_cycle(&cycle);
+            }
+        }
+    }
+
+    /// The statements of a line read by [`params`], before its block runs:
+    /// what verify does not replay is a warning that names it; `SUPA` and
+    /// the end of a modal call take effect.
+    fn statements(&mut self, text: &[u8]) {
+        self.supa = self.extras.machine;
+        if self.extras.mcall_off {
+            self.mcall = None;
+        }
+        for i in 0..self.extras.notes.len() {
+            let (note, start, end, word) = self.extras.notes[i];
+            let (message, help) = match note {
+                Note::Flow => (
+                    format!("verify reads the program line by line and does not follow `{word}` (a jump, loop, condition or subroutine)"),
+                    "the moves are compared in the order they are written; a program whose jumps repeat or skip moves may show findings where the machine has none",
+                ),
+                Note::NotReplayed => (
+                    format!("verify does not replay `{}` ({word}); the moves after it are compared as written",
+                        name_at(text, start as usize)),
+                    "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
+                ),
+                Note::Call => {
+                    let d = self.finding(
+                        Severity::Note,
+                        codes::VF044.code,
+                        format!("verify does not follow `{word}` (a call or definition of a block or subroutine, whose moves run in another order than they are written): the moves from here on are not compared"),
+                        start as usize,
+                        end as usize,
+                        None,
+                    );
+                    Self::help(d, "the program is verified up to this line; the rest is read for its syntax only");
+                    self.stop_comparing = true;
+                    continue;
+                }
+                Note::UnknownValue => (
+                    "verify does not know the value this parameter is set to (it uses a parameter the program does not set)".to_string(),
+                    "words that use this parameter are not compared",
+                ),
+            };
+            let d = self.finding(Severity::Warning, codes::VF005.code, message, start as usize, end as usize, None);
+            Self::help(d, help);
+        }
+    }
+
+    /// A `%` line: `%1001 G71`, the start (and end) of a Heidenhain ISO
+    /// program, says the family and its units.
+    fn percent(&mut self, text: &[u8]) {
+        let name = text[1..].iter().take_while(|b| b.is_ascii_alphanumeric() || **b == b'_').count();
+        let rest = std::str::from_utf8(&text[1 + name..]).unwrap_or("").trim().to_ascii_uppercase();
+        let inch = match rest.split_whitespace().next() {
+            Some("G70") => true,
+            Some("G71") => false,
+            _ => return,
+        };
+        if name == 0 {
+            return;
+        }
+        self.heidenhain = true;
+        self.unit = if inch { 25.4 } else { 1.0 };
+        self.units_stated = true;
+    }
+
+    /// A Heidenhain ISO cycle definition (`G83 P01 -4. P02 -8. ...`): its G
+    /// code is no motion mode; the cycle runs where `M99` calls it.
+    fn define_cycle(&mut self, block: &mut Block) {
+        let Some(i) = block.g[..block.gs].iter().position(|g| matches!(tenths(g.0), 830 | 840 | 850 | 860)) else {
+            return;
+        };
+        let code = tenths(block.g[i].0);
+        block.g.copy_within(i + 1..block.gs, i);
+        block.gs -= 1;
+        let p = self.extras.p;
+        self.defined = Some((code, [p[0] * self.unit, p[1] * self.unit, p[2] * self.unit]));
+    }
+
+    /// The Heidenhain ISO cycle defined, called by `M99` where the block
+    /// ends, as the TNC's DIN/ISO pecking and tapping cycles (G83, G84,
+    /// G85) run: from the start position, set-up clearance (P01) above the
+    /// surface, a feed to the depth (P02, from the surface), then back to
+    /// the start, at rapid (G83) or at the feed (tapping).
+    fn heidenhain_cycle(&mut self) {
+        let Some((code, [setup, depth, _])) = self.defined else {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                "M99 calls a cycle, but no cycle (G83 P01 ...) is defined",
+                0,
+                self.line_len,
+                None,
+            );
+            return;
+        };
+        let [x, y, z0] = self.pos;
+        let bottom = z0 + setup + depth;
+        if !bottom.is_finite() {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                "a cycle without its set-up clearance and depth (P01, P02)",
+                0,
+                self.line_len,
+                None,
+            );
+            return;
+        }
+        let span = self.whole_line();
+        let make = |kind, start, end| Motion {
+            kind,
+            start,
+            end,
+            centre: [f64::NAN; 3],
+            dir: ArcDir::Cw,
+            plane: Plane::Xy,
+            r: None,
+            span,
+        };
+        self.emit(make(MKind::Feed, self.pos, [x, y, bottom]));
+        let out = if code == 830 { MKind::Rapid } else { MKind::Feed };
+        self.emit(make(out, self.pos, [x, y, z0]));
+    }
+
+    /// A Sinumerik cycle's planes in mm.
+    fn cycle_in_mm(&self, c: Cycle) -> Cycle {
+        let u = self.unit;
+        Cycle { rtp: c.rtp * u, rfp: c.rfp * u, sdis: c.sdis * u, dp: c.dp * u, dpr: c.dpr * u, ..c }
+    }
+
+    /// A Sinumerik drilling cycle (`CYCLE81`..`CYCLE89`, `CYCLE840`) at the
+    /// current position, as Siemens' cycle documentation describes it: a
+    /// rapid to the reference plane plus the safety distance (RFP + SDIS),
+    /// a feed to the final depth (DP, or RFP - DPR when DPR is given, which
+    /// then wins), for the tapping and reaming cycles (84, 840, 85, 89) a
+    /// feed back to RFP + SDIS, and a rapid to the return plane (RTP).
+    fn sinumerik_cycle(&mut self, c: &Cycle) {
+        let depth = if c.dpr.is_finite() { c.rfp - c.dpr.abs() } else { c.dp };
+        let span = Span::new(self.file, self.line_start + c.start as usize, self.line_start + c.end as usize);
+        if !(c.rtp.is_finite() && c.rfp.is_finite() && depth.is_finite()) {
+            self.finding(
+                Severity::Error,
+                codes::VF024.code,
+                format!("CYCLE{} without its return plane, reference plane and depth (RTP, RFP, DP or DPR)", c.number),
+                c.start as usize,
+                c.end as usize,
+                None,
+            );
+            return;
+        }
+        let start = c.rfp + if c.sdis.is_finite() { c.sdis.abs() } else { 0.0 };
+        let [x, y, _] = self.pos;
+        let make = |kind, start, end| Motion {
+            kind,
+            start,
+            end,
+            centre: [f64::NAN; 3],
+            dir: ArcDir::Cw,
+            plane: Plane::Xy,
+            r: None,
+            span,
+        };
+        self.emit(make(MKind::Rapid, self.pos, [x, y, start]));
+        self.emit(make(MKind::Feed, self.pos, [x, y, depth]));
+        if matches!(c.number, 84 | 840 | 85 | 89) {
+            self.emit(make(MKind::Feed, self.pos, [x, y, start]));
+        }
+        self.emit(make(MKind::Rapid, self.pos, [x, y, c.rtp]));
     }
 
     /// A word whose number has more digits than the controller reads
@@ -911,7 +1160,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         // G codes that set modes, in the RS274/NGC order of execution.
         let mut home = false;
-        let mut machine = false;
+        let mut machine = self.extended && self.supa;
         let mut dwell = false;
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
@@ -935,9 +1184,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
                 190 => self.plane = Plane::Yz,
-                200 | 210 | 700 | 710 => {
-                    // G20/G21, and G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM).
-                    let inch = tenths == 200 || tenths == 700;
+                200 | 210 | 700 | 710 | 7000 | 7100 => {
+                    // G20/G21, G70/G71 of the ISO dialects (Heidenhain, Siemens, NUM), Sinumerik's G700/G710.
+                    let inch = matches!(tenths, 200 | 700 | 7000);
                     self.unit = if inch { 25.4 } else { 1.0 };
                     self.units_stated = true;
                     if let Some(units) = self.settings.units
@@ -959,9 +1208,14 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                         Self::help(d, "the units word must match the units the post prints its numbers in");
                     }
                 }
+                // Heidenhain ISO: G30/G31 define the blank (its corners).
+                300 | 310 if self.heidenhain => dwell = true,
                 280 | 300 | 382..=385 => home = true,
-                530 => machine = true,
+                530 | 1530 => machine = true,
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
+                // Sinumerik: G500 and G505-G599 settable frames, G60/G601/G602
+                // exact stop, G642 smoothing, G450/G451 corners.
+                5000 | 5050..=5990 | 600 | 6010 | 6020 | 6420 | 4500 | 4510 => {}
                 100 => dwell = true,
                 900 => self.absolute = true,
                 910 => self.absolute = false,
@@ -1122,6 +1376,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 target[i] = if self.absolute { v } else { self.pos[i] + v };
             }
         }
+        if self.extended && [b'X', b'Y', b'Z'].iter().any(|l| b.get(*l).is_some_and(|w| w.value.is_nan())) {
+            self.unknown_move(target);
+            return;
+        }
         let span = self.whole_line();
         match motion {
             0 => self.emit(Motion {
@@ -1147,6 +1405,29 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             20 | 30 => self.arc(b, motion == 20, target, span),
             _ => self.cycle(b, motion, target, span),
         }
+        if let Some(cycle) = self.mcall
+            && motion <= 10
+        {
+            self.sinumerik_cycle(&cycle);
+        }
+    }
+
+    /// A move to a position with an axis word whose value is a parameter
+    /// the program never set: not compared, the axis unknown until the
+    /// program sets it.
+    #[cold]
+    fn unknown_move(&mut self, target: [f64; 3]) {
+        let d = self.finding(
+            Severity::Warning,
+            codes::VF005.code,
+            "this move goes to a position verify cannot compute (a parameter the program does not set); it is not compared",
+            0,
+            self.line_len,
+            None,
+        );
+        Self::help(d, "the position is unknown to verify until the program moves that axis to a number");
+        self.pos = target;
+        self.uncomputed += 1;
     }
 
     fn block_number(&mut self, n: Word) {
@@ -1281,10 +1562,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
         } else {
             let mut c = start;
+            // Heidenhain ISO's I J K are the circle centre, kept until the next.
+            let absolute = self.arc_absolute || self.heidenhain && self.absolute;
             for axis in [u, v] {
-                let value = b.get(letters[axis]).map_or(0.0, |x| x.value * self.unit);
-                c[axis] = if self.arc_absolute { value } else { start[axis] + value };
+                c[axis] = match b.get(letters[axis]) {
+                    Some(x) if absolute => x.value * self.unit,
+                    Some(x) => start[axis] + x.value * self.unit,
+                    None if self.heidenhain => self.centre[axis],
+                    None => start[axis],
+                };
             }
+            self.centre = c;
             let arc = Arc { start, end: target, centre: c, dir, plane: self.plane };
             let (r0, r1) = (arc.start_radius(), arc.end_radius());
             if let Some(limit) = self.settings.controller.radius_error(r0, r1, self.unit > 1.0) {
@@ -1897,7 +2185,18 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         self.stats.expected = self.path.count;
         if let Some(e) = first {
             let line = Span::new(self.file, self.line_start, self.line_start + self.line_len);
-            let d = Diagnostic::error(
+            // Moves verify could not compute may be these: a warning that says so.
+            let (severity, help) = match self.uncomputed {
+                0 => (Severity::Error, "the program is truncated, or the post dropped moves".to_string()),
+                n => (
+                    Severity::Warning,
+                    format!(
+                        "{n} move(s) of the program go to positions verify cannot compute (VF005): they may be these"
+                    ),
+                ),
+            };
+            let d = Diagnostic::new(
+                severity,
                 codes::VF011,
                 format!(
                     "the program ends before {missing} cutting move(s) of the toolpath; the first goes to {}",
@@ -1906,8 +2205,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             )
             .at(e.span, "the first move the program does not make")
             .also(line, "the program's last line")
-            .help("the program is truncated, or the post dropped moves");
-            self.push_at(d, true, e.end);
+            .help(help);
+            self.push_at(d, severity == Severity::Error, e.end);
         }
         for d in std::mem::take(&mut self.path.diagnostics) {
             let error = d.is_error();
@@ -1932,6 +2231,14 @@ fn counted_length(text: &[u8]) -> usize {
         }
     }
     n
+}
+
+/// The name that starts at `text[at..]` (`TRANS`, `CYCLE800`, `$P_UIFR`,
+/// `VZOFX`), for a message.
+fn name_at(text: &[u8], at: usize) -> String {
+    let rest = text.get(at..).unwrap_or_default();
+    let n = rest.iter().take_while(|b| b.is_ascii_alphanumeric() || matches!(b, b'_' | b'$')).count();
+    String::from_utf8_lossy(&rest[..n]).into_owned()
 }
 
 /// Where the message of an `M117`/`M118` word starts (after the word).

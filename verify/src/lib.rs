@@ -17,6 +17,7 @@ pub mod expect;
 pub mod geometry;
 pub mod grammar;
 mod interp;
+mod params;
 pub mod plot;
 
 use std::io::BufRead;
@@ -213,7 +214,7 @@ impl Settings {
 }
 
 /// The program families verify knows, for the refusal message.
-pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style)";
+pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style, with `#` parameters and [ ] expressions, and Siemens Sinumerik)";
 
 /// ShopBot commands that start a line with a comma after them.
 const SHOPBOT: &[&str] = &[
@@ -244,67 +245,8 @@ pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
         if upper.starts_with('&') || upper == "SA" {
             return Some("ShopBot");
         }
-        if sinumerik_word(&upper).is_some() {
-            return Some(SINUMERIK);
-        }
     }
     None
-}
-
-const SINUMERIK: &str = "Siemens Sinumerik";
-
-/// A word of Siemens Sinumerik's language that ISO G-code does not have,
-/// in upper-case `text`: `SUPA`, `MCALL`, `DIAMON`/`DIAMOF`/`DIAM90`, or a
-/// cycle call `CYCLE81(`.
-fn sinumerik_word(text: &str) -> Option<&'static str> {
-    const WORDS: [&str; 5] = ["SUPA", "MCALL", "DIAMON", "DIAMOF", "DIAM90"];
-    let b = text.as_bytes();
-    let alone = |i: usize, len: usize| {
-        (i == 0 || !b[i - 1].is_ascii_alphanumeric()) && b.get(i + len).is_none_or(|c| !c.is_ascii_alphanumeric())
-    };
-    for w in WORDS {
-        if text.match_indices(w).any(|(i, _)| alone(i, w.len())) {
-            return Some(w);
-        }
-    }
-    text.match_indices("CYCLE").find_map(|(i, _)| {
-        let digits = b[i + 5..].iter().take_while(|c| c.is_ascii_digit()).count();
-        (digits > 0 && (i == 0 || !b[i - 1].is_ascii_alphanumeric()) && b.get(i + 5 + digits) == Some(&b'('))
-            .then_some("CYCLE")
-    })
-}
-
-/// The family of the programs a post writes, when its text shows one verify
-/// does not read (Siemens Sinumerik words in the text it prints), and the
-/// word that shows it.
-pub fn post_family(post: &Post) -> Option<(&'static str, &'static str)> {
-    use postc_ir::code::{Expr, Piece};
-    use postc_ir::visit::{Visit, walk_expr, walk_piece};
-    struct Finds(Option<&'static str>);
-    impl Finds {
-        fn text(&mut self, bytes: &[u8]) {
-            if self.0.is_none() {
-                self.0 = sinumerik_word(&String::from_utf8_lossy(bytes).to_ascii_uppercase());
-            }
-        }
-    }
-    impl Visit for Finds {
-        fn visit_piece(&mut self, piece: &Piece) {
-            if let Piece::Text(bytes) = piece {
-                self.text(bytes);
-            }
-            walk_piece(self, piece);
-        }
-        fn visit_expr(&mut self, expr: &Expr) {
-            if let Expr::Text(t) = expr {
-                self.text(t.as_bytes());
-            }
-            walk_expr(self, expr);
-        }
-    }
-    let mut finds = Finds(None);
-    finds.visit_post(post);
-    finds.0.map(|w| (SINUMERIK, w))
 }
 
 /// Whether the head of a file looks binary (NUL bytes or mostly control bytes).
