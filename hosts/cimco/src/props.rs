@@ -302,7 +302,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
             },
         };
     }
-    if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args) {
+    if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args, ctx.call_position()) {
         return r;
     }
     if let Some(obj) = o.clone().try_cast::<JsObj>() {
