@@ -200,6 +200,8 @@ pub fn to_string(v: &Dynamic) -> String {
 fn push_string(out: &mut String, v: &Dynamic, depth: usize) {
     if let Some(s) = v.clone().try_cast::<ImmutableString>() {
         out.push_str(&s);
+    } else if let Some(crate::ops::HostError(s)) = v.clone().try_cast::<crate::ops::HostError>() {
+        out.push_str(&s);
     } else if let Some(n) = v.clone().try_cast::<f64>() {
         js::push_number(out, n);
     } else if let Some(i) = v.clone().try_cast::<i64>() {

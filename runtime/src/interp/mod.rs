@@ -460,13 +460,13 @@ impl Engine<'_> {
         {
             let caught = match self.thrown.take() {
                 Some(v) if e.code == objects::THROWN => v,
-                _ => objects::object(vec![
-                    (crate::value::Text::new("name"), Value::text("TypeError")),
-                    (
-                        crate::value::Text::new("message"),
-                        Value::text(e.message.strip_prefix("TypeError: ").unwrap_or(&e.message)),
-                    ),
-                ]),
+                _ => {
+                    let (name, message) = crate::js::error_parts(&e.message).unwrap_or(("TypeError", &e.message));
+                    objects::object(vec![
+                        (crate::value::Text::new("name"), Value::text(name)),
+                        (crate::value::Text::new("message"), Value::text(message)),
+                    ])
+                }
             };
             // Calls the error left unfinished are over.
             (self.depth, _) = depth;
