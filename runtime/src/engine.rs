@@ -416,6 +416,13 @@ impl<'p> Engine<'p> {
                 let v = self.eval(e, &mut frame)?;
                 self.write_value_text(&v);
             }
+            Piece::Joined(e) => {
+                let mut frame = Vec::new();
+                let v = self.eval(e, &mut frame)?;
+                if !matches!(v, Value::Null | Value::Undefined) {
+                    self.write_value_text(&v);
+                }
+            }
         }
         Ok(())
     }

@@ -136,6 +136,12 @@ pub enum Piece {
     Text(Vec<u8>),
     Var(VarId),
     Expr(Expr),
+    /// An element of an array as `join` writes it: `undefined` and null
+    /// as nothing, anything else as [`Piece::Expr`] writes it. `prepare`
+    /// makes it of the IR's `c == null ? "" : c` that a word array kept as
+    /// its joined text writes (`lower/native/arrays.rs` in the CIMCO front
+    /// end), so that a word stays one piece.
+    Joined(Expr),
 }
 
 /// One expression: the IR's ([`postc_ir::Expr`], which documents each),
@@ -313,7 +319,7 @@ impl Stmt {
     pub fn for_each_expr_mut(&mut self, mut f: impl FnMut(&mut Expr)) {
         let pieces = |pieces: &mut Vec<Piece>, f: &mut dyn FnMut(&mut Expr)| {
             for p in pieces {
-                if let Piece::Expr(e) = p {
+                if let Piece::Expr(e) | Piece::Joined(e) = p {
                     f(e);
                 }
             }
@@ -522,6 +528,14 @@ pub struct Function {
     /// Parameters plus locals.
     pub slots: u16,
     pub body: Body,
+}
+
+impl Function {
+    /// What a parameter not passed, a local before its value and a call
+    /// that returns nothing hold: `undefined` or null.
+    pub fn fill(&self) -> Expr {
+        if self.starts_undefined { Expr::Undefined } else { Expr::Null }
+    }
 }
 
 /// Native statements, or a script the host runs.

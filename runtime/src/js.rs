@@ -211,6 +211,42 @@ pub fn radix_string(n: f64, radix: f64) -> Result<String, String> {
     Ok(digits.iter().rev().collect())
 }
 
+/// The `name` and `message` of the error object JavaScript's `catch`
+/// receives for an error postc words as `"TypeError: message"`
+/// (`ReferenceError`, `RangeError`, `SyntaxError` likewise); `None` for
+/// text that names no error.
+pub fn error_parts(text: &str) -> Option<(&'static str, &str)> {
+    ["TypeError", "ReferenceError", "RangeError", "SyntaxError"]
+        .into_iter()
+        .find_map(|name| text.strip_prefix(name).and_then(|r| r.strip_prefix(": ")).map(|m| (name, m)))
+}
+
+/// A property key, for [`array_index`]: a number, a text, or any other
+/// value (a boolean, `null`, `undefined`, an object).
+#[derive(Clone, Copy, Debug)]
+pub enum Key<'a> {
+    Number(f64),
+    Text(&'a str),
+    Other,
+}
+
+/// The element of an array (or character of a text) a property key names:
+/// a key names element `i` when its text is `i` as JavaScript writes it,
+/// below 2^32 - 1. So `a[1]`, `a["1"]` and `a[-0]` read element 1 (0),
+/// while `a["01"]`, `a[" 1"]`, `a[1.5]`, `a[true]` and `a[null]` name
+/// properties the array does not have.
+pub fn array_index(key: Key<'_>) -> Option<u32> {
+    match key {
+        Key::Number(n) => (n >= 0.0 && n.fract() == 0.0 && n < 4_294_967_295.0).then_some(n as u32),
+        Key::Text(t) => {
+            let b = t.as_bytes();
+            let canonical = !b.is_empty() && b.iter().all(u8::is_ascii_digit) && (b.len() == 1 || b[0] != b'0');
+            canonical.then(|| t.parse::<u32>().ok()).flatten().filter(|&i| i != u32::MAX)
+        }
+        Key::Other => None,
+    }
+}
+
 /// JavaScript's `Math.min`: NaN when any value is NaN (Rust's `f64::min`
 /// skips it), -0 below +0, `Infinity` of none.
 pub fn math_min(values: impl IntoIterator<Item = f64>) -> f64 {
@@ -270,7 +306,8 @@ pub fn to_uint32(x: f64) -> u32 {
 }
 
 /// JavaScript's `x.toFixed(digits)`: rounds the exact binary value, exact
-/// halves away from zero; 1e21 and above print as `String(x)`.
+/// halves away from zero, a sign for every number below zero; 1e21 and
+/// above print as `String(x)`.
 pub fn to_fixed(x: f64, digits: f64) -> String {
     let d = if digits.is_finite() { digits.trunc().clamp(0.0, 100.0) as usize } else { 0 };
     if x.is_nan() {
@@ -302,8 +339,9 @@ pub fn to_fixed(x: f64, digits: f64) -> String {
     }
     let int_len = digits.len() - d;
     let mut s = String::new();
-    let is_zero = digits.iter().all(|&c| c == b'0');
-    if x < 0.0 && !is_zero {
+    // A negative number keeps its sign when it rounds to zero
+    // (`(-0.001).toFixed(2)` is "-0.00"); -0 is not below zero.
+    if x < 0.0 {
         s.push('-');
     }
     s.push_str(std::str::from_utf8(&digits[..int_len]).unwrap_or("0"));

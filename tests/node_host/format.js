@@ -13,6 +13,20 @@
 // reset() forgets the text, so the next format(v) returns it.
 "use strict";
 
+// A value that is not a finite number stops the post (docs/cimco.md,
+// formats, 8): postc stops with RT032, which a post's `try` does not
+// catch. The RangeError thrown here is also kept, so that the host stops
+// the post when a `catch` took it and the post went on (`takeStop`).
+var stopped = null;
+
+// The RangeError of the first format since the last call that was given
+// a value that is not a finite number, or null; forgets it.
+function takeStop() {
+    var e = stopped;
+    stopped = null;
+    return e;
+}
+
 function createFormat(props, decimalMark) {
     props = props || {};
     var decimals = props.decimals === undefined ? 0 : Number(props.decimals);
@@ -47,7 +61,11 @@ function createFormat(props, decimalMark) {
         var v = Number(value) * scale;
         if (!isFinite(v)) {
             // No controller reads NaN or Infinity: the post stops here.
-            throw new RangeError("format() was given " + value + ", which is not a finite number");
+            var e = new RangeError("format() was given " + value + ", which is not a finite number");
+            if (stopped === null) {
+                stopped = e;
+            }
+            throw e;
         }
         var r = digits(Math.abs(v));
         var fracText = r.frac;
@@ -92,4 +110,4 @@ function createVariable(props, format) {
     };
 }
 
-module.exports = { createFormat: createFormat, createVariable: createVariable };
+module.exports = { createFormat: createFormat, createVariable: createVariable, takeStop: takeStop };

@@ -32,6 +32,8 @@ function Host(source, fileName, context) {
     this.bytes = 0;
     this.keepOutput = true;
     var createVariable = fmt.createVariable;
+    // A format error of a post before this one is not this post's.
+    fmt.takeStop();
     var sandbox = {
         MOVEMENT_RAPID: RAPID, MOVEMENT_CUTTING: CUTTING, MOVEMENT_FEED: CUTTING, MOVEMENT_PLUNGE: PLUNGE, MOVEMENT_RETRACT: 3,
         COMPENSATION_OFF: 0, COMPENSATION_LEFT: 1, COMPENSATION_RIGHT: 2,
@@ -61,6 +63,7 @@ function Host(source, fileName, context) {
     } else {
         vm.runInThisContext(source, { filename: fileName });
     }
+    this.stopIfFormatFailed();
     // getFeedrate: one decimal per minute, four per revolution (0.15
     // mm/rev prints F0.15).
     this.feedVariable = createVariable({ prefix: "F", force: true }, fmt.createFormat({ decimals: 1 }, this.setting("decimalMark")));
@@ -88,8 +91,19 @@ function Host(source, fileName, context) {
     this.comp = 0;
     if (typeof this.ctx.onInit === "function") {
         this.ctx.onInit();
+        this.stopIfFormatFailed();
     }
 }
+
+// A format was given a value that is not a finite number and the post's
+// `catch` took the error: the post stops there all the same, as it stops
+// in postc (RT032 is not catchable).
+Host.prototype.stopIfFormatFailed = function () {
+    var e = fmt.takeStop();
+    if (e !== null) {
+        throw e;
+    }
+};
 
 // A setting in either form: `name` or `globals.name`.
 Host.prototype.setting = function (name) {
@@ -143,7 +157,9 @@ Host.prototype.emit = function (line) {
 
 Host.prototype.call = function (name, args) {
     if (this.has(name)) {
-        this.write(this.ctx[name].apply(null, args));
+        var value = this.ctx[name].apply(null, args);
+        this.stopIfFormatFailed();
+        this.write(value);
     }
 };
 

@@ -32,17 +32,19 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn(names::VAR_REF, |id: i64| VarRef(id as u16));
     engine.register_fn(names::FORMAT_REF, |id: i64| FmtRef(id as u16));
     let s = state.clone();
-    engine.register_fn(names::VAR_FORMAT, move |id: i64, v: Dynamic| {
-        finite(text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v))))
+    engine.register_fn(names::VAR_FORMAT, move |ctx: NativeCallContext, id: i64, v: Dynamic| {
+        finite(text(format_var(&mut s.borrow_mut(), id as u16, to_number(&v))), ctx.call_position())
     });
     let s = state.clone();
     engine.register_fn(names::VAR_LAST, move |id: i64| num(last(&s.borrow(), id as u16)));
     let s = state.clone();
-    engine.register_fn(names::FORMAT_FORMAT, move |id: i64, v: Dynamic| {
-        finite(text(format_with(&s.borrow(), id as u16, to_number(&v))))
+    engine.register_fn(names::FORMAT_FORMAT, move |ctx: NativeCallContext, id: i64, v: Dynamic| {
+        finite(text(format_with(&s.borrow(), id as u16, to_number(&v))), ctx.call_position())
     });
     let s = state.clone();
-    engine.register_fn(names::FEEDRATE, move |m: Dynamic| finite(text(feedrate(&mut s.borrow_mut(), &m))));
+    engine.register_fn(names::FEEDRATE, move |ctx: NativeCallContext, m: Dynamic| {
+        finite(text(feedrate(&mut s.borrow_mut(), &m)), ctx.call_position())
+    });
     let s = state.clone();
     engine.register_fn(names::COMPENSATION, move || {
         num(match s.borrow().ctx.comp {
@@ -98,32 +100,43 @@ fn format_with(st: &State, id: u16, v: f64) -> String {
     String::from_utf8_lossy(&buf).into_owned()
 }
 
-/// A value that is not a finite number, thrown by a format: the host
-/// reports it as the runtime does (`RT032`) at the JavaScript line.
+/// A value that is not a finite number, given to a format at `at`: the
+/// host reports it as the runtime does (`RT032`) at the JavaScript line.
+/// It is a system error, so the post's `try` does not catch it, as in
+/// native code (docs/cimco.md, formats): no program is written past a
+/// word that could not be formatted.
 #[derive(Clone, Copy, Debug)]
-pub struct NonFinite(pub f64);
+pub struct NonFinite(pub f64, pub rhai::Position);
 
-fn non_finite(v: f64) -> Box<rhai::EvalAltResult> {
-    Box::new(rhai::EvalAltResult::ErrorRuntime(Dynamic::from(NonFinite(v)), rhai::Position::NONE))
+impl std::fmt::Display for NonFinite {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "a format was given {}", self.0)
+    }
 }
 
-/// The formatted word, or the error of a format given a value that is not
-/// a finite number.
-fn finite(word: Dynamic) -> R {
+impl std::error::Error for NonFinite {}
+
+fn non_finite(v: f64, at: rhai::Position) -> Box<rhai::EvalAltResult> {
+    Box::new(rhai::EvalAltResult::ErrorSystem(String::new(), Box::new(NonFinite(v, at))))
+}
+
+/// The formatted word, or the error of a format at `at` given a value
+/// that is not a finite number.
+fn finite(word: Dynamic, at: rhai::Position) -> R {
     match postc_runtime::number::take_non_finite() {
         None => Ok(word),
-        Some(v) => Err(non_finite(v)),
+        Some(v) => Err(non_finite(v, at)),
     }
 }
 
 /// `format`, `getLast` and `reset` of output variables and `format` of
 /// formats, whichever way
 /// they were made.
-pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> Option<R> {
+pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array, at: rhai::Position) -> Option<R> {
     let a0 = || args.first().map_or(f64::NAN, to_number);
     if let Some(VarRef(id)) = o.clone().try_cast::<VarRef>() {
         return Some(match name {
-            "format" => finite(text(format_var(&mut state.borrow_mut(), id, a0()))),
+            "format" => finite(text(format_var(&mut state.borrow_mut(), id, a0())), at),
             "getLast" => Ok(num(last(&state.borrow(), id))),
             "reset" => {
                 if let Some(v) = state.borrow_mut().vars.get_mut(id as usize) {
@@ -136,7 +149,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
     }
     if let Some(FmtRef(id)) = o.clone().try_cast::<FmtRef>() {
         return Some(match name {
-            "format" => finite(text(format_with(&state.borrow(), id, a0()))),
+            "format" => finite(text(format_with(&state.borrow(), id, a0())), at),
             _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
         });
     }
@@ -145,7 +158,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
             "format" => {
                 let mut buf = Vec::new();
                 w.write(a0(), &mut buf);
-                finite(text(String::from_utf8_lossy(&buf).into_owned()))
+                finite(text(String::from_utf8_lossy(&buf).into_owned()), at)
             }
             _ => Err(fail(format!("TypeError: a format has no method '{name}'"))),
         });
@@ -159,7 +172,7 @@ pub fn output_method(state: &Shared, o: &Dynamic, name: &str, args: &Array) -> O
                 let mut buf = var.prefix.as_bytes().to_vec();
                 var.writer.write(value, &mut buf);
                 if let Some(v) = postc_runtime::number::take_non_finite() {
-                    return Some(Err(non_finite(v)));
+                    return Some(Err(non_finite(v, at)));
                 }
                 let t = String::from_utf8_lossy(&buf).into_owned();
                 var.last_value = value;

@@ -208,6 +208,11 @@ impl Compiled {
                 None => d,
             };
         }
+        if let EvalAltResult::ErrorSystem(_, e) = inner
+            && let Some(crate::cnc_calc::NonFinite(n, at)) = e.downcast_ref::<crate::cnc_calc::NonFinite>()
+        {
+            return *runtime::non_finite_error(*n, span_at(&self.script, *at).or(span));
+        }
         let d = match inner {
             EvalAltResult::ErrorTooManyOperations(_) => Diagnostic::error(
                 "RT002",
@@ -230,9 +235,6 @@ impl Compiled {
                 ),
             )
             .note("no output is written"),
-            EvalAltResult::ErrorRuntime(v, _) if let Some(crate::cnc_calc::NonFinite(n)) = v.clone().try_cast() => {
-                return *runtime::non_finite_error(n, span);
-            }
             EvalAltResult::ErrorRuntime(v, _) => {
                 Diagnostic::error("RT023", format!("the post stopped with an error: {}", values::to_string(v)))
             }

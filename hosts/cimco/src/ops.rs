@@ -45,8 +45,15 @@ fn has_property(key: Dynamic, value: Dynamic) -> Result<bool, Box<EvalAltResult>
     Ok(js::prototype_has(kind, &k))
 }
 
+/// An error of JavaScript's the host raises (`"TypeError: message"`): the
+/// post's `catch` receives it as an error object with its `name` and
+/// `message` ([`postc_runtime::js::error_parts`]), as a JavaScript engine
+/// gives it; uncaught, the run stops with its text.
+#[derive(Clone, Debug)]
+pub struct HostError(pub ImmutableString);
+
 pub fn fail(message: impl Into<String>) -> Box<EvalAltResult> {
-    Box::new(EvalAltResult::ErrorRuntime(Dynamic::from(ImmutableString::from(message.into())), Position::NONE))
+    Box::new(EvalAltResult::ErrorRuntime(Dynamic::from(HostError(message.into().into())), Position::NONE))
 }
 
 /// A use of JavaScript postc does not run (a regular expression's

@@ -74,7 +74,15 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     engine.register_fn(names::JUMP, |kind: i64, value: Dynamic| Dynamic::from(Jump(kind, value)));
     engine.register_fn(names::JUMP_KIND, |e: Dynamic| e.try_cast::<Jump>().map_or(0, |j| j.0));
     engine.register_fn(names::JUMP_VALUE, |e: Dynamic| e.try_cast::<Jump>().map_or(Dynamic::UNIT, |j| j.1));
+    engine.register_type_with_name::<crate::ops::HostError>("error");
     engine.register_fn(names::CAUGHT, |e: Dynamic| -> Dynamic {
+        if let Some(crate::ops::HostError(t)) = e.clone().try_cast::<crate::ops::HostError>() {
+            let o = JsObj::new(ObjKind::Plain);
+            let (name, message) = js::error_parts(&t).unwrap_or(("Error", &t));
+            o.set("message", text(message.to_string()));
+            o.set("name", text(name));
+            return Dynamic::from(o);
+        }
         match e.clone().try_cast::<Map>() {
             Some(m) => {
                 let o = JsObj::new(ObjKind::Plain);
@@ -107,9 +115,16 @@ pub fn register(engine: &mut Engine, state: &Shared) {
     });
 }
 
+/// The element a key names ([`js::array_index`]).
 fn index_of(k: &Dynamic) -> Option<usize> {
-    let n = if k.is::<ImmutableString>() { js::text_to_number(&to_string(k)) } else { to_number(k) };
-    (n >= 0.0 && n.fract() == 0.0 && n < 1e15).then_some(n as usize)
+    let i = if let Some(t) = k.read_lock::<ImmutableString>() {
+        js::array_index(js::Key::Text(t.as_str()))
+    } else if k.is::<f64>() || k.is::<i64>() {
+        js::array_index(js::Key::Number(to_number(k)))
+    } else {
+        js::array_index(js::Key::Other)
+    };
+    i.map(|i| i as usize)
 }
 
 /// `o[k]`.
@@ -302,7 +317,7 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
             },
         };
     }
-    if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args) {
+    if let Some(r) = crate::cnc_calc::output_method(state, &o, name, &args, ctx.call_position()) {
         return r;
     }
     if let Some(obj) = o.clone().try_cast::<JsObj>() {

@@ -140,10 +140,14 @@ pub fn from_value(v: &Value) -> Dynamic {
     }
 }
 
-/// An interpreter value from a Rhai value; objects become nothing, as the
+/// An interpreter value from a Rhai value: `()` is JavaScript's
+/// `undefined`, as native code holds it; objects become nothing, as the
 /// native side never reads them.
 pub fn to_value(v: &Dynamic) -> Option<Value> {
-    if v.is_unit() || is_null(v) {
+    if v.is_unit() {
+        return Some(Value::Undefined);
+    }
+    if is_null(v) {
         return Some(Value::Null);
     }
     if let Some(n) = v.clone().try_cast::<f64>() {
@@ -199,6 +203,8 @@ pub fn to_string(v: &Dynamic) -> String {
 
 fn push_string(out: &mut String, v: &Dynamic, depth: usize) {
     if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        out.push_str(&s);
+    } else if let Some(crate::ops::HostError(s)) = v.clone().try_cast::<crate::ops::HostError>() {
         out.push_str(&s);
     } else if let Some(n) = v.clone().try_cast::<f64>() {
         js::push_number(out, n);

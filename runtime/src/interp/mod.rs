@@ -336,7 +336,9 @@ impl Engine<'_> {
         }
         // The usual word, a local's text, is copied where it is.
         match word {
-            [Piece::Expr(Expr::Local(i))] if let Some(Value::Text(t)) = frame.get(i.index()) => {
+            [Piece::Expr(Expr::Local(i)) | Piece::Joined(Expr::Local(i))]
+                if let Some(Value::Text(t)) = frame.get(i.index()) =>
+            {
                 t.append_to_bytes(&mut self.out.buf);
             }
             _ => self.emit_pieces(word, frame)?,
@@ -423,6 +425,10 @@ impl Engine<'_> {
                     let v = self.eval(e, frame)?;
                     self.write_value_text(&v);
                 }
+                Piece::Joined(e) => match self.eval(e, frame)? {
+                    Value::Null | Value::Undefined => {}
+                    v => self.write_value_text(&v),
+                },
             }
         }
         self.end_block();
@@ -458,13 +464,13 @@ impl Engine<'_> {
         {
             let caught = match self.thrown.take() {
                 Some(v) if e.code == objects::THROWN => v,
-                _ => objects::object(vec![
-                    (crate::value::Text::new("name"), Value::text("TypeError")),
-                    (
-                        crate::value::Text::new("message"),
-                        Value::text(e.message.strip_prefix("TypeError: ").unwrap_or(&e.message)),
-                    ),
-                ]),
+                _ => {
+                    let (name, message) = crate::js::error_parts(&e.message).unwrap_or(("TypeError", &e.message));
+                    objects::object(vec![
+                        (crate::value::Text::new("name"), Value::text(name)),
+                        (crate::value::Text::new("message"), Value::text(message)),
+                    ])
+                }
             };
             // Calls the error left unfinished are over.
             (self.depth, _) = depth;
@@ -1296,6 +1302,13 @@ impl Engine<'_> {
                     self.out.buf.extend_from_slice(&t.as_bytes()[from..]);
                 }
                 Piece::Expr(e) => match self.eval(e, frame)? {
+                    Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => {
+                        crate::number::push_integer(&mut self.out.buf, n as i64)
+                    }
+                    v => self.write_value_text(&v),
+                },
+                Piece::Joined(e) => match self.eval(e, frame)? {
+                    Value::Null | Value::Undefined => {}
                     Value::Num(n) if n == n.trunc() && n.abs() < 1e15 => {
                         crate::number::push_integer(&mut self.out.buf, n as i64)
                     }

@@ -94,17 +94,15 @@ fn key_text(key: &Value) -> Text {
     }
 }
 
-/// An array index a key names, if it is one.
+/// An array index a key names, if it is one ([`js::array_index`]), below
+/// the most items an array holds.
 fn index(key: &Value) -> Option<usize> {
-    match key {
-        Value::Num(n) if *n >= 0.0 && n.fract() == 0.0 && *n < MAX_ITEMS as f64 => Some(*n as usize),
-        Value::Text(t) => {
-            let b = t.as_bytes();
-            let canonical = !b.is_empty() && b.iter().all(u8::is_ascii_digit) && (b.len() == 1 || b[0] != b'0');
-            canonical.then(|| t.parse::<usize>().ok()).flatten().filter(|i| *i < MAX_ITEMS)
-        }
-        _ => None,
-    }
+    let key = match key {
+        Value::Num(n) => js::Key::Number(*n),
+        Value::Text(t) => js::Key::Text(t.as_str()),
+        _ => js::Key::Other,
+    };
+    js::array_index(key).map(|i| i as usize).filter(|&i| i < MAX_ITEMS)
 }
 
 /// `value[key]`: own properties first, then the value's prototype chain.
@@ -292,8 +290,7 @@ pub(crate) fn has_property(key: &Value, value: &Value, protos: &Protos) -> Resul
 
 /// The array index a property name is (`"2"`, not `"02"` or `"-1"`).
 fn array_index(name: &str) -> Option<u32> {
-    let i: u32 = name.parse().ok()?;
-    (i != u32::MAX && i.to_string() == name).then_some(i)
+    js::array_index(js::Key::Text(name))
 }
 
 impl Engine<'_> {

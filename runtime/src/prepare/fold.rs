@@ -150,6 +150,11 @@ fn piece(p: Piece) -> Piece {
             Expr::Text(t) => Piece::Text(t.as_bytes().to_vec()),
             e => Piece::Expr(e),
         },
+        Piece::Joined(e) => match expr(e) {
+            Expr::Text(t) => Piece::Text(t.as_bytes().to_vec()),
+            Expr::Null | Expr::Undefined => Piece::Text(Vec::new()),
+            e => Piece::Joined(e),
+        },
         other => other,
     }
 }

@@ -21,18 +21,30 @@ use postc_ir::{LocalId, Place};
 
 use crate::exec::{Expr, LocalUse, Stmt};
 
-/// `body` with its leading `k = null` statements replaced by those its
-/// statements need: one for each local that some path may read before it
-/// writes it, in slot order.
+/// `body` with its leading `k = null` (or `k = undefined`) statements
+/// replaced by those its statements need: one for each local that some
+/// path may read before it writes it, in slot order, starting as the
+/// statement it replaces said (null for a local none named).
 #[doc(hidden)]
 pub fn start_nulls(mut body: Vec<Stmt>) -> Vec<Stmt> {
-    let leading = body.iter().take_while(|s| matches!(s, Stmt::Assign(Place::Local(_), Expr::Null))).count();
+    let leading =
+        body.iter().take_while(|s| matches!(s, Stmt::Assign(Place::Local(_), Expr::Null | Expr::Undefined))).count();
+    let undefined: Vec<LocalId> = body[..leading]
+        .iter()
+        .filter_map(|s| match s {
+            Stmt::Assign(Place::Local(k), Expr::Undefined) => Some(*k),
+            _ => None,
+        })
+        .collect();
     body.drain(..leading);
     let mut reads = Reads::default();
     reads.list(&mut body, &mut Assigned::default(), &mut Vec::new());
     let mut out: Vec<Stmt> = (0..reads.first.len())
         .filter(|&k| reads.first[k])
-        .map(|k| Stmt::Assign(Place::Local(LocalId::new(k as u16)), Expr::Null))
+        .map(|k| {
+            let k = LocalId::new(k as u16);
+            Stmt::Assign(Place::Local(k), if undefined.contains(&k) { Expr::Undefined } else { Expr::Null })
+        })
         .collect();
     out.append(&mut body);
     out

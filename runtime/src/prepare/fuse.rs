@@ -83,7 +83,9 @@ fn run_at(body: &[Stmt]) -> Option<(WordRun, usize)> {
     let (mut sep, mut locals): (Option<&Vec<u8>>, _) = (None, Vec::new());
     for s in &body[1..] {
         let Stmt::Word { cond, word, sep: this_sep, before: b } = s else { break };
-        let [Piece::Expr(Expr::Local(w))] = word.as_slice() else { break };
+        // A word kept as its joined text is the same when it is text, the
+        // only case the run writes in one step.
+        let [Piece::Expr(Expr::Local(w)) | Piece::Joined(Expr::Local(w))] = word.as_slice() else { break };
         let printed = match cond {
             Expr::Local(c) => c == w,
             Expr::LocalEmpty { local, op: BinaryOp::JsNe | BinaryOp::StrictNe } => local == w,

@@ -18,7 +18,7 @@ use postc_ir::{BinaryOp, LocalId, Place};
 /// Inlines expression functions into a body (a handler's, after the fast
 /// path has inlined the functions it writes).
 pub fn expression_functions(functions: &[Function], body: &mut [Stmt]) {
-    let templates: Vec<Option<(usize, Expr)>> = functions.iter().map(template).collect();
+    let templates: Vec<Option<(usize, Expr, Expr)>> = functions.iter().map(template).collect();
     if templates.iter().all(Option::is_none) {
         return;
     }
@@ -34,7 +34,7 @@ pub(super) fn is_expression_function(f: &Function) -> bool {
 }
 
 /// The expression a function is, over its parameters, and their number.
-fn template(f: &Function) -> Option<(usize, Expr)> {
+fn template(f: &Function) -> Option<(usize, Expr, Expr)> {
     let Body::Native(body) = &f.body else { return None };
     let params = f.params;
     let (local, rest) = match body.first() {
@@ -63,13 +63,13 @@ fn template(f: &Function) -> Option<(usize, Expr)> {
     if max_local(&e).is_some_and(|m| m >= params) {
         return None;
     }
-    Some((params, e))
+    Some((params, e, f.fill()))
 }
 
-fn stmt(s: &mut Stmt, templates: &[Option<(usize, Expr)>], at: Option<usize>) {
+fn stmt(s: &mut Stmt, templates: &[Option<(usize, Expr, Expr)>], at: Option<usize>) {
     match s {
         Stmt::Line { pieces, .. } | Stmt::Emit(pieces) => pieces.iter_mut().for_each(|p| {
-            if let Piece::Expr(e) = p {
+            if let Piece::Expr(e) | Piece::Joined(e) = p {
                 expr(e, templates, at)
             }
         }),
@@ -89,7 +89,7 @@ fn stmt(s: &mut Stmt, templates: &[Option<(usize, Expr)>], at: Option<usize>) {
     }
 }
 
-fn expr(e: &mut Expr, templates: &[Option<(usize, Expr)>], at: Option<usize>) {
+fn expr(e: &mut Expr, templates: &[Option<(usize, Expr, Expr)>], at: Option<usize>) {
     match e {
         Expr::FormatVar { value, .. } | Expr::Format { value, .. } | Expr::Unary(_, value) => {
             expr(value, templates, at)
@@ -110,13 +110,13 @@ fn expr(e: &mut Expr, templates: &[Option<(usize, Expr)>], at: Option<usize>) {
             if Some(i) == at {
                 return;
             }
-            let Some(Some((params, t))) = templates.get(i) else { return };
+            let Some(Some((params, t, fill))) = templates.get(i) else { return };
             if args.len() > *params || !args.iter().all(cheap) {
                 return;
             }
             let mut body = t.clone();
             let args = args.clone();
-            substitute(&mut body, &|k: LocalId| Some(args.get(k.index()).cloned().unwrap_or(Expr::Null)));
+            substitute(&mut body, &|k: LocalId| Some(args.get(k.index()).cloned().unwrap_or_else(|| fill.clone())));
             *e = super::fold::expr(body);
         }
         _ => {}
@@ -131,6 +131,7 @@ fn cheap(e: &Expr) -> bool {
             | Expr::Text(_)
             | Expr::Bool(_)
             | Expr::Null
+            | Expr::Undefined
             | Expr::Local(_)
             | Expr::Global(_)
             | Expr::Quantity(_)

@@ -57,7 +57,7 @@ fn read_through(body: &mut [Stmt]) {
         if let Stmt::Assign(Place::Local(d), value) = &head[i] {
             let by = match value {
                 Expr::Local(s) if s != d => Some(value.clone()),
-                Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null => Some(value.clone()),
+                Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Undefined => Some(value.clone()),
                 _ => None,
             };
             if let Some(by) = by {

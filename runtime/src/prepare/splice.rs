@@ -107,15 +107,16 @@ impl Splicer<'_> {
                 a => out.push(Stmt::Assign(Place::Local(slot(i)), a)),
             }
         }
+        let fill = function.fill();
         for i in given..usize::from(function.slots) {
-            out.push(Stmt::Assign(Place::Local(slot(i)), Expr::Null));
+            out.push(Stmt::Assign(Place::Local(slot(i)), fill.clone()));
         }
         let mut body = code.clone();
         body.iter_mut().for_each(|s| shift(s, base));
-        let mut body = returns(body, dest);
+        let mut body = returns(body, dest, &fill);
         if !matches!(body.last(), Some(Stmt::Break)) {
             if let Some(d) = dest {
-                body.push(Stmt::Assign(Place::Local(d), Expr::Null));
+                body.push(Stmt::Assign(Place::Local(d), fill));
             }
             body.push(Stmt::Break);
         }
@@ -133,12 +134,12 @@ fn shift(s: &mut Stmt, by: usize) {
 
 /// `return v` as `dest = v; break` (or `v; break` when the value is not
 /// kept), at any depth.
-fn returns(body: Vec<Stmt>, dest: Option<LocalId>) -> Vec<Stmt> {
+fn returns(body: Vec<Stmt>, dest: Option<LocalId>, fill: &Expr) -> Vec<Stmt> {
     let mut out = Vec::with_capacity(body.len());
     for mut s in body {
         match s {
             Stmt::Return(value) => {
-                let value = value.unwrap_or(Expr::Null);
+                let value = value.unwrap_or_else(|| fill.clone());
                 out.push(match dest {
                     Some(d) => Stmt::Assign(Place::Local(d), value),
                     None => Stmt::Eval(value),
@@ -147,7 +148,7 @@ fn returns(body: Vec<Stmt>, dest: Option<LocalId>) -> Vec<Stmt> {
                 break;
             }
             _ => {
-                s.for_each_body_mut(|b| *b = returns(std::mem::take(b), dest));
+                s.for_each_body_mut(|b| *b = returns(std::mem::take(b), dest, fill));
                 out.push(s);
             }
         }

@@ -213,7 +213,7 @@ fn words_fit(words: &[Stmt], r: LocalId, t: LocalId, marks: &HashSet<LocalId>) -
                     zeroed.remove(k);
                 }
             }
-            Stmt::Assign(Place::Local(k), Expr::Text(_) | Expr::Bool(_) | Expr::Null) => {
+            Stmt::Assign(Place::Local(k), Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Undefined) => {
                 zeroed.remove(k);
             }
             Stmt::Mark(k) if *k != r && *k != t && !marks.contains(k) && !zeroed.contains(k) && count != Some(*k) => {}
@@ -311,7 +311,7 @@ pub fn count_is_positive(c: LocalId) -> Expr {
 fn pure_pieces(pieces: &[Piece], r: LocalId) -> bool {
     pieces.iter().all(|p| match p {
         Piece::Text(_) => true,
-        Piece::Expr(e) => pure(e, r),
+        Piece::Expr(e) | Piece::Joined(e) => pure(e, r),
         Piece::Var(_) => false,
     })
 }

@@ -54,7 +54,9 @@ fn to_fixed_rounds_the_binary_value() {
     assert_eq!(to_fixed(2.5, 0.0), "3");
     assert_eq!(to_fixed(-2.5, 0.0), "-3");
     assert_eq!(to_fixed(1.0, 3.0), "1.000");
-    assert_eq!(to_fixed(-0.0001, 2.0), "0.00");
+    // Node.js: (-0.0001).toFixed(2) is "-0.00", (-0).toFixed(2) "0.00".
+    assert_eq!(to_fixed(-0.0001, 2.0), "-0.00");
+    assert_eq!(to_fixed(-0.0, 2.0), "0.00");
     assert_eq!(to_fixed(0.125, 2.0), "0.13");
 }
 
@@ -66,4 +68,25 @@ fn rounding_and_integers() {
     assert_eq!(to_int32(4294967297.0), 1);
     assert_eq!(to_int32(-1.0), -1);
     assert_eq!(to_uint32(-1.0), 4294967295);
+}
+
+#[test]
+fn a_key_names_an_element_only_as_javascript_writes_the_index() {
+    assert_eq!(array_index(Key::Number(1.0)), Some(1));
+    assert_eq!(array_index(Key::Number(-0.0)), Some(0));
+    assert_eq!(array_index(Key::Text("12")), Some(12));
+    // Node.js: [5, 6][true], [5, 6]["01"], [5, 6][" 1"], [5, 6][1.5] are undefined.
+    for key in [Key::Other, Key::Text("01"), Key::Text(" 1"), Key::Text("1.0"), Key::Text("+1"), Key::Text("")] {
+        assert_eq!(array_index(key), None, "{key:?}");
+    }
+    assert_eq!(array_index(Key::Number(1.5)), None);
+    assert_eq!(array_index(Key::Number(-1.0)), None);
+    assert_eq!(array_index(Key::Number(4_294_967_295.0)), None);
+}
+
+#[test]
+fn an_error_text_gives_the_name_and_message_of_its_object() {
+    assert_eq!(error_parts("ReferenceError: out is not defined"), Some(("ReferenceError", "out is not defined")));
+    assert_eq!(error_parts("TypeError: cannot read property 'x' of undefined").map(|p| p.0), Some("TypeError"));
+    assert_eq!(error_parts("the post stopped"), None);
 }

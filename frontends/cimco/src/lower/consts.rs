@@ -27,18 +27,28 @@ impl Const {
         }
     }
 
-    /// ToNumber.
-    pub fn num(&self) -> f64 {
-        match self {
+    /// ToNumber, when it is certain here: text is read only when it is
+    /// blank or a plain decimal number (`" 12 "`, `"-1.5e3"`), where
+    /// Rust's parse and JavaScript's `Number()` agree. Other text
+    /// (`"0x10"`, `"Infinity"`, `"inf"`, which Rust reads as infinity) is
+    /// `None`: the runtime reads it, as JavaScript does.
+    pub fn num(&self) -> Option<f64> {
+        Some(match self {
             Const::Num(n) => *n,
             Const::Bool(b) => f64::from(u8::from(*b)),
             Const::Str(s) => {
                 let t = s.trim();
-                if t.is_empty() { 0.0 } else { t.parse().unwrap_or(f64::NAN) }
+                if t.is_empty() {
+                    0.0
+                } else if plain_decimal(t) {
+                    t.parse().ok()?
+                } else {
+                    return None;
+                }
             }
             Const::Null => 0.0,
             Const::Undefined => f64::NAN,
-        }
+        })
     }
 
     /// ToString, when JavaScript's text of the value is certain.
@@ -53,8 +63,29 @@ impl Const {
     }
 }
 
-/// A number as JavaScript prints it, for the range where Rust prints the
-/// same digits (no exponent form).
+/// Text that is a decimal number and nothing else: a sign, digits with
+/// at most one point (a digit on one side), an exponent.
+fn plain_decimal(t: &str) -> bool {
+    let b = t.strip_prefix(['+', '-']).unwrap_or(t).as_bytes();
+    let mantissa = b.iter().position(|c| *c == b'e' || *c == b'E').unwrap_or(b.len());
+    let (m, e) = b.split_at(mantissa);
+    let digits = m.iter().filter(|c| c.is_ascii_digit()).count();
+    let points = m.iter().filter(|c| **c == b'.').count();
+    let exponent_ok = match e {
+        [] => true,
+        [_, rest @ ..] => {
+            let rest = rest.strip_prefix(b"+").or_else(|| rest.strip_prefix(b"-")).unwrap_or(rest);
+            !rest.is_empty() && rest.iter().all(u8::is_ascii_digit)
+        }
+    };
+    digits > 0 && points <= 1 && digits + points == m.len() && exponent_ok
+}
+
+/// A number as JavaScript prints it (Number::toString), for the range
+/// where it has no exponent form: the shortest digits that read back as
+/// the same double (Rust finds the same digits), and a whole number past
+/// 2^53 as those digits padded with zeros (`2 ** 60` is
+/// `1152921504606847000`, not its exact value).
 pub fn number_text(n: f64) -> Option<String> {
     if n == 0.0 {
         return Some("0".into());
@@ -63,7 +94,16 @@ pub fn number_text(n: f64) -> Option<String> {
         return None;
     }
     if n == n.trunc() {
-        return Some(format!("{}", n as i128));
+        if n.abs() < 9_007_199_254_740_992.0 {
+            return Some(format!("{}", n as i64));
+        }
+        // Shortest digits and exponent: `1.152921504606847e18`.
+        let e = format!("{:e}", n.abs());
+        let (mantissa, exp) = e.split_once('e')?;
+        let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+        let exp: usize = exp.parse().ok()?;
+        let sign = if n < 0.0 { "-" } else { "" };
+        return Some(format!("{sign}{digits:0<width$}", width = exp + 1));
     }
     Some(format!("{n}"))
 }
@@ -94,10 +134,10 @@ pub fn const_eval(
         ExprKind::Unary { op, operand } => {
             let v = ev(operand)?;
             match op {
-                UnaryOp::Neg => Const::Num(-v.num()),
-                UnaryOp::Plus => Const::Num(v.num()),
+                UnaryOp::Neg => Const::Num(-v.num()?),
+                UnaryOp::Plus => Const::Num(v.num()?),
                 UnaryOp::Not => Const::Bool(!v.truthy()),
-                UnaryOp::BitNot => Const::Num(f64::from(!to_int32(v.num()))),
+                UnaryOp::BitNot => Const::Num(f64::from(!to_int32(v.num()?))),
                 UnaryOp::Typeof => Const::Str(
                     match v {
                         Const::Num(_) => "number",
@@ -139,7 +179,7 @@ fn to_int32(x: f64) -> i32 {
 /// A binary operator over known values.
 pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
     use BinaryOp::*;
-    let num = |f: fn(f64, f64) -> f64| Some(Const::Num(f(a.num(), b.num())));
+    let num = |f: fn(f64, f64) -> f64| Some(Const::Num(f(a.num()?, b.num()?)));
     match op {
         Add => match (a, b) {
             (Const::Str(_), _) | (_, Const::Str(_)) => Some(Const::Str(format!("{}{}", a.text()?, b.text()?))),
@@ -153,7 +193,7 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
         Lt | Le | Gt | Ge => {
             let ord = match (a, b) {
                 (Const::Str(x), Const::Str(y)) => x.partial_cmp(y),
-                _ => a.num().partial_cmp(&b.num()),
+                _ => a.num()?.partial_cmp(&b.num()?),
             };
             let r = match op {
                 Lt => ord == Some(std::cmp::Ordering::Less),
@@ -165,10 +205,10 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
         }
         StrictEq => Some(Const::Bool(strict_eq(a, b))),
         StrictNe => Some(Const::Bool(!strict_eq(a, b))),
-        Eq => Some(Const::Bool(loose_eq(a, b))),
-        Ne => Some(Const::Bool(!loose_eq(a, b))),
+        Eq => Some(Const::Bool(loose_eq(a, b)?)),
+        Ne => Some(Const::Bool(!loose_eq(a, b)?)),
         BitAnd | BitOr | BitXor | Shl | Shr | UShr => {
-            let (x, y) = (to_int32(a.num()), to_int32(b.num()));
+            let (x, y) = (to_int32(a.num()?), to_int32(b.num()?));
             let s = (y as u32) & 31;
             Some(Const::Num(match op {
                 BitAnd => f64::from(x & y),
@@ -192,11 +232,11 @@ fn strict_eq(a: &Const, b: &Const) -> bool {
     }
 }
 
-fn loose_eq(a: &Const, b: &Const) -> bool {
-    match (a, b) {
+fn loose_eq(a: &Const, b: &Const) -> Option<bool> {
+    Some(match (a, b) {
         (Const::Null | Const::Undefined, Const::Null | Const::Undefined) => true,
         (Const::Null | Const::Undefined, _) | (_, Const::Null | Const::Undefined) => false,
         (Const::Str(x), Const::Str(y)) => x == y,
-        _ => a.num() == b.num(),
-    }
+        _ => a.num()? == b.num()?,
+    })
 }

@@ -11,7 +11,8 @@ fn as_const(e: &Expr) -> Option<Const> {
         Expr::Number(n) => Const::Num(*n),
         Expr::Text(s) => Const::Str(s.clone()),
         Expr::Bool(b) => Const::Bool(*b),
-        Expr::Null => Const::Undefined,
+        Expr::Null => Const::Null,
+        Expr::Undefined => Const::Undefined,
         _ => return None,
     })
 }

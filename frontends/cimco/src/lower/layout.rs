@@ -58,7 +58,8 @@ impl Layout {
         for g in &model.globals {
             let initial = match &g.constant {
                 Some(c) => const_expr(c),
-                None => Expr::Null,
+                // `var g;`: undefined until the post's top level gives it a value.
+                None => Expr::Undefined,
             };
             let i = l.add_global(&g.name, initial);
             l.globals[i.index()].implicit = !g.declared;
@@ -102,6 +103,7 @@ pub fn const_expr(c: &Const) -> Expr {
         Const::Num(n) => Expr::Number(*n),
         Const::Str(s) => Expr::Text(s.clone()),
         Const::Bool(b) => Expr::Bool(*b),
-        Const::Null | Const::Undefined => Expr::Null,
+        Const::Null => Expr::Null,
+        Const::Undefined => Expr::Undefined,
     }
 }

@@ -573,7 +573,7 @@ fn functions(
             why_script,
             source: Vec::new(),
             uses_arguments: false,
-            starts_undefined: false,
+            starts_undefined: true,
         });
     }
     if let Some(feed) = feed {
@@ -653,7 +653,7 @@ fn specialization(model: &Model, setup: &Setup, layout: &mut Layout, id: scope::
             why_script: None,
             source: Vec::new(),
             uses_arguments: false,
-            starts_undefined: false,
+            starts_undefined: true,
         },
         Err(w) => Function {
             // Runs the script of the same name.

@@ -247,7 +247,7 @@ fn number_format(
     diags: &mut Vec<Diagnostic>,
 ) -> NumberFormat {
     let get = |k: &str| props.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone());
-    let mut decimals = get("decimals").map_or(0.0, |d| d.num());
+    let mut decimals = get("decimals").and_then(|d| d.num()).unwrap_or(0.0);
     if !decimals.is_finite() || decimals < 0.0 {
         decimals = 0.0;
     }
@@ -258,10 +258,10 @@ fn number_format(
         );
         decimals = 15.0;
     }
-    let width = get("width").map_or(0.0, |w| w.num());
+    let width = get("width").and_then(|w| w.num()).unwrap_or(0.0);
     let width = if width.is_finite() { width.clamp(0.0, 64.0) as u8 } else { 0 };
     let force_decimal = get("forceDecimal").is_some_and(|f| f.truthy());
-    let scale = get("scale").map_or(1.0, |s| s.num());
+    let scale = get("scale").and_then(|s| s.num()).unwrap_or(1.0);
     NumberFormat {
         decimals: decimals as u8,
         width,

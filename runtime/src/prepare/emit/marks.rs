@@ -185,7 +185,7 @@ fn reads(body: &[Stmt], read: &mut HashSet<LocalId>) {
             }
             Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Write(e) | Stmt::Return(Some(e)) => expr(e, read),
             Stmt::Emit(p) | Stmt::Line { pieces: p, .. } => p.iter().for_each(|p| {
-                if let Piece::Expr(e) = p {
+                if let Piece::Expr(e) | Piece::Joined(e) = p {
                     expr(e, read)
                 }
             }),

@@ -252,12 +252,12 @@ impl<'f> Emitter<'f> {
                 if first.is_some()
                     && !matches!(first, Some(Stmt::Assign(Place::Local(x), e)) if x.index() == k && !expr_reads(e, LocalId::new(k as u16)))
                 {
-                    starts.push(Stmt::Assign(Place::Local(s), Expr::Null));
+                    starts.push(Stmt::Assign(Place::Local(s), function.fill()));
                 }
                 map.push(Binding::Slot(s));
                 continue;
             }
-            let arg = args.get(k).cloned().unwrap_or(Expr::Null);
+            let arg = args.get(k).cloned().unwrap_or_else(|| function.fill());
             if Some(k) == region_param {
                 // Bound by writing it: its text starts at the function's base.
                 if bound.is_none() {
@@ -524,6 +524,14 @@ impl<'f> Emitter<'f> {
                 let mut out = self.text(a, fr, depth)?;
                 out.extend(self.text(b, fr, depth)?);
                 out
+            }
+            // An element of a word array: `w == null ? "" : w`.
+            Expr::Choose(c, a, b)
+                if matches!(&**a, Expr::Text(t) if t.is_empty())
+                    && matches!(&**c, Expr::Binary(BinaryOp::JsEq, x, null) if **x == **b && **null == Expr::Null)
+                    && (shape::is_pure(b) || matches!(&**b, Expr::Local(_))) =>
+            {
+                vec![Stmt::Emit(vec![Piece::Joined(value(b, fr)?)])]
             }
             Expr::Choose(c, a, b) => {
                 let cond = value(c, fr)?;

@@ -193,7 +193,7 @@ pub(super) fn count(body: &[Stmt]) -> usize {
 
 /// Cheap and free of effects: safe to evaluate where it is used instead.
 pub(super) fn is_pure(e: &Expr) -> bool {
-    matches!(e, Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Quantity(_))
+    matches!(e, Expr::Number(_) | Expr::Text(_) | Expr::Bool(_) | Expr::Null | Expr::Undefined | Expr::Quantity(_))
 }
 
 /// Whether an expression is surely text.

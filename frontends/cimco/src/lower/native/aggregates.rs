@@ -272,7 +272,7 @@ impl Native<'_, '_> {
     }
 
     fn missing(&self) -> Ir {
-        self.aggs.missing.clone().unwrap_or(Ir::Null)
+        self.aggs.missing.clone().unwrap_or(Ir::Undefined)
     }
 
     /// Reads an element, property or length of an object or array, with
@@ -350,13 +350,13 @@ impl Native<'_, '_> {
                         super::super::model::tables::Entry::Record(fs) => fs
                             .iter()
                             .find(|(f, _)| *f == k)
-                            .map_or(Ir::Null, |(_, c)| super::super::layout::const_expr(c)),
-                        super::super::model::tables::Entry::Const(_) => Ir::Null,
+                            .map_or(Ir::Undefined, |(_, c)| super::super::layout::const_expr(c)),
+                        super::super::model::tables::Entry::Const(_) => Ir::Undefined,
                     };
                     (key.clone(), v)
                 })
                 .collect();
-            let v = lookup(i.clone(), &column, &Ir::Null)
+            let v = lookup(i.clone(), &column, &Ir::Undefined)
                 .ok_or_else(|| why(at, format!("reads a record of table `{t}` with a key that has effects")))?;
             fields.push((k, Agg::Plain(v)));
         }
@@ -483,7 +483,7 @@ impl Native<'_, '_> {
             ExprKind::Index { object, index } if self.agg_root(object) => {
                 // The index is computed once, before the element is read.
                 let i = super::super::fold::expr(self.expr(index)?);
-                let i = if matches!(i, Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null) {
+                let i = if matches!(i, Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null | Ir::Undefined) {
                     i
                 } else {
                     let t = self.temp();
@@ -521,7 +521,7 @@ impl Native<'_, '_> {
 
     /// A value kept in a slot of its own, unless it is a constant.
     fn keep(&mut self, v: Ir, out: &mut Vec<IrStmt>) -> Ir {
-        if matches!(v, Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null) {
+        if matches!(v, Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null | Ir::Undefined) {
             return v;
         }
         let t = self.temp();
@@ -864,8 +864,8 @@ impl Native<'_, '_> {
                     text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(sep.clone()));
                 }
                 let e = match &s.aggs.arrays[id].elems[k] {
-                    Agg::Plain(v) => v.clone(),
-                    _ => Ir::Null,
+                    Agg::Plain(v) => super::arrays::join_part(v.clone()),
+                    _ => Ir::Text(String::new()),
                 };
                 text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(e));
             }
@@ -1307,8 +1307,10 @@ fn leaf(a: &Agg) -> LocalId {
 /// A property of an element's slots.
 fn field(a: &Agg, key: &str) -> Agg {
     match a {
-        Agg::Object(fields) => fields.iter().find(|(k, _)| k == key).map_or(Agg::Plain(Ir::Null), |(_, f)| f.clone()),
-        _ => Agg::Plain(Ir::Null),
+        Agg::Object(fields) => {
+            fields.iter().find(|(k, _)| k == key).map_or(Agg::Plain(Ir::Undefined), |(_, f)| f.clone())
+        }
+        _ => Agg::Plain(Ir::Undefined),
     }
 }
 
@@ -1334,7 +1336,8 @@ fn const_key(i: &Ir) -> Option<String> {
         Ir::Number(n) => super::super::consts::number_text(*n)?,
         Ir::Text(s) => s.clone(),
         Ir::Bool(b) => b.to_string(),
-        Ir::Null => "undefined".into(),
+        Ir::Null => "null".into(),
+        Ir::Undefined => "undefined".into(),
         _ => return None,
     })
 }

@@ -72,7 +72,8 @@ impl Native<'_, '_> {
             if i > 0 && !sep.is_empty() {
                 text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(Ir::Text(sep.clone())));
             }
-            text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(self.expr(item)?));
+            let item = self.join_element(item, out)?;
+            text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(item));
         }
         out.push(IrStmt::Assign(Place::Local(self.local(slot)), text));
         out.push(IrStmt::Assign(Place::Local(count), Ir::Number(items.len() as f64)));
@@ -107,7 +108,8 @@ impl Native<'_, '_> {
                             if i > 0 && !sep.is_empty() {
                                 front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(Ir::Text(sep.clone())));
                             }
-                            front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(self.expr(a)?));
+                            let a = self.join_element(a, &mut out)?;
+                            front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(a));
                         }
                         if !sep.is_empty() {
                             front = Ir::Binary(IrBin::Add, Box::new(front), Box::new(more()));
@@ -123,7 +125,7 @@ impl Native<'_, '_> {
                     _ => return Ok(None),
                 }
                 for a in args {
-                    let v = self.expr(a)?;
+                    let v = self.join_element(a, &mut out)?;
                     let mut text = Ir::Local(w);
                     if !sep.is_empty() {
                         text = Ir::Binary(IrBin::Add, Box::new(text), Box::new(more()));
@@ -152,6 +154,46 @@ impl Native<'_, '_> {
     /// `words.length`.
     pub(super) fn array_length(&self, slot: usize) -> Ir {
         Ir::Local(self.arrays[&slot].count)
+    }
+}
+
+/// An element as `join` prints it: `undefined` and `null` as nothing,
+/// anything else as `+` joins it to text. `v` is read twice unless it is
+/// surely neither: it must be [`super::tables::repeatable`].
+pub(super) fn join_part(v: Ir) -> Ir {
+    match v {
+        Ir::Null | Ir::Undefined => Ir::Text(String::new()),
+        v if never_absent(&v) => v,
+        v => {
+            let absent = Ir::Binary(IrBin::JsEq, Box::new(v.clone()), Box::new(Ir::Null));
+            Ir::Choose(Box::new(absent), Box::new(Ir::Text(String::new())), Box::new(v))
+        }
+    }
+}
+
+/// Surely neither `undefined` nor `null`: a constant, a format's text, a
+/// number an operator or `Number()` makes.
+fn never_absent(v: &Ir) -> bool {
+    match v {
+        Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Quantity(_) => true,
+        Ir::FormatVar { .. } | Ir::Format { .. } | Ir::Unary(..) => true,
+        Ir::Binary(op, ..) => !matches!(op, IrBin::And | IrBin::Or),
+        Ir::Choose(_, a, b) => never_absent(a) && never_absent(b),
+        _ => false,
+    }
+}
+
+/// An element of a push or an array literal as `join` prints it, kept in
+/// a slot first when it is read twice and has effects.
+impl Native<'_, '_> {
+    fn join_element(&mut self, e: &Expr, out: &mut Vec<IrStmt>) -> R<Ir> {
+        let v = self.expr(e)?;
+        if never_absent(&v) || super::tables::repeatable(&v) {
+            return Ok(join_part(v));
+        }
+        let t = self.temp();
+        out.push(IrStmt::Assign(Place::Local(t), v));
+        Ok(join_part(Ir::Local(t)))
     }
 }
 

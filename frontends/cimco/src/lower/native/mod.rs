@@ -403,10 +403,11 @@ impl Native<'_, '_> {
                 if self.entry {
                     out.push(IrStmt::Origin(s.span));
                 }
-                out.push(IrStmt::Return(match e {
-                    Some(e) => Some(self.expr(e)?),
-                    None => None,
-                }))
+                // `return;` gives `undefined`, as falling off the end does.
+                out.push(IrStmt::Return(Some(match e {
+                    Some(e) => self.expr(e)?,
+                    None => Ir::Undefined,
+                })))
             }
             other => return Err(why(s.span, stmt_name(other))),
         }
@@ -583,7 +584,8 @@ impl Native<'_, '_> {
             ExprKind::Number(n) => Ir::Number(*n),
             ExprKind::String(s) => Ir::Text(s.clone()),
             ExprKind::Bool(b) => Ir::Bool(*b),
-            ExprKind::Null | ExprKind::Undefined => Ir::Null,
+            ExprKind::Null => Ir::Null,
+            ExprKind::Undefined => Ir::Undefined,
             ExprKind::Ident(name) if name == "arguments" && self.model.scopes.funcs[self.at].uses_arguments => {
                 return Err(why(
                     e.span,
@@ -607,11 +609,11 @@ impl Native<'_, '_> {
                     return self.plain_of(a, e.span);
                 }
                 match &e.kind {
-                    ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Null),
+                    ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Undefined),
                     _ => return self.member(e),
                 }
             }
-            ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Null),
+            ExprKind::Index { object, index } => return self.index(object, index, e.span, Ir::Undefined),
             ExprKind::Ident(name) => match self.model.scopes.resolve(name, self.at) {
                 Symbol::Local { func, slot } if func == self.at && self.unrolled.contains_key(&slot) => {
                     Ir::Number(self.unrolled[&slot])
@@ -682,7 +684,7 @@ impl Native<'_, '_> {
                 .map(Ir::Number)
                 .ok_or_else(|| why(e.span, format!("`Math.{}`", property.name)));
         }
-        if let Some(v) = self.member_special(object, &property.name, e.span, Ir::Null)? {
+        if let Some(v) = self.member_special(object, &property.name, e.span, Ir::Undefined)? {
             return Ok(v);
         }
         if property.name == "length" {

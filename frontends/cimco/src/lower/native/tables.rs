@@ -107,7 +107,7 @@ impl Native<'_, '_> {
     /// An operand of `+`: a table's missing entry reads as the text
     /// "undefined" when the other operand is surely text.
     pub(super) fn expr_in_text(&mut self, e: &Expr, other: &Expr) -> R<Ir> {
-        let missing = if surely_text(other) { Ir::Text("undefined".into()) } else { Ir::Null };
+        let missing = if surely_text(other) { Ir::Text("undefined".into()) } else { Ir::Undefined };
         if self.agg_root(e) {
             if let Some(a) = self.agg_read_in_text(e, missing)? {
                 return self.plain_of(a, e.span);
@@ -203,7 +203,8 @@ fn const_key(i: &Ir) -> Option<String> {
         Ir::Number(n) => consts::number_text(*n)?,
         Ir::Text(s) => s.clone(),
         Ir::Bool(b) => b.to_string(),
-        Ir::Null => "undefined".into(),
+        Ir::Null => "null".into(),
+        Ir::Undefined => "undefined".into(),
         _ => return None,
     })
 }
@@ -217,7 +218,14 @@ fn numeric_key(k: &str) -> Option<f64> {
 /// Cheap and free of effects: may be evaluated once per entry.
 pub(super) fn repeatable(e: &Ir) -> bool {
     match e {
-        Ir::Number(_) | Ir::Text(_) | Ir::Bool(_) | Ir::Null | Ir::Local(_) | Ir::Global(_) | Ir::Quantity(_) => true,
+        Ir::Number(_)
+        | Ir::Text(_)
+        | Ir::Bool(_)
+        | Ir::Null
+        | Ir::Undefined
+        | Ir::Local(_)
+        | Ir::Global(_)
+        | Ir::Quantity(_) => true,
         Ir::Var(_) | Ir::Previous(_) => true,
         Ir::Unary(_, a) => repeatable(a),
         Ir::Binary(_, a, b) => repeatable(a) && repeatable(b),
