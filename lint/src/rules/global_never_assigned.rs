@@ -56,7 +56,7 @@ fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     }
     for (i, global) in post.globals.iter().enumerate() {
         if global.name.starts_with("__postc")
-            || global.initial != Expr::Null
+            || !matches!(global.initial, Expr::Undefined | Expr::Null)
             || g.written.contains(&i)
             || !g.read.contains(&i)
         {
