@@ -68,6 +68,11 @@ struct Motion {
 }
 
 impl Motion {
+    /// A straight move (a rapid or a feed) in `plane`.
+    fn straight(kind: MKind, start: [f64; 3], end: [f64; 3], plane: Plane, span: Span) -> Motion {
+        Motion { kind, start, end, centre: [f64::NAN; 3], dir: ArcDir::Cw, plane, r: None, span }
+    }
+
     fn cutting(&self) -> bool {
         self.kind != MKind::Rapid
     }
@@ -965,16 +970,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             return;
         }
         let span = self.whole_line();
-        let make = |kind, start, end| Motion {
-            kind,
-            start,
-            end,
-            centre: [f64::NAN; 3],
-            dir: ArcDir::Cw,
-            plane: Plane::Xy,
-            r: None,
-            span,
-        };
+        let make = |kind, start, end| Motion::straight(kind, start, end, Plane::Xy, span);
         self.emit(make(MKind::Feed, self.pos, [x, y, bottom]));
         let out = if code == 830 { MKind::Rapid } else { MKind::Feed };
         self.emit(make(out, self.pos, [x, y, z0]));
@@ -1008,16 +1004,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         let start = c.rfp + if c.sdis.is_finite() { c.sdis.abs() } else { 0.0 };
         let [x, y, _] = self.pos;
-        let make = |kind, start, end| Motion {
-            kind,
-            start,
-            end,
-            centre: [f64::NAN; 3],
-            dir: ArcDir::Cw,
-            plane: Plane::Xy,
-            r: None,
-            span,
-        };
+        let make = |kind, start, end| Motion::straight(kind, start, end, Plane::Xy, span);
         self.emit(make(MKind::Rapid, self.pos, [x, y, start]));
         self.emit(make(MKind::Feed, self.pos, [x, y, depth]));
         if matches!(c.number, 84 | 840 | 85 | 89) {
@@ -1382,26 +1369,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         let span = self.whole_line();
         match motion {
-            0 => self.emit(Motion {
-                kind: MKind::Rapid,
-                start: self.pos,
-                end: target,
-                centre: [f64::NAN; 3],
-                dir: ArcDir::Cw,
-                plane: self.plane,
-                r: None,
-                span,
-            }),
-            10 => self.emit(Motion {
-                kind: MKind::Feed,
-                start: self.pos,
-                end: target,
-                centre: [f64::NAN; 3],
-                dir: ArcDir::Cw,
-                plane: self.plane,
-                r: None,
-                span,
-            }),
+            0 => self.emit(Motion::straight(MKind::Rapid, self.pos, target, self.plane, span)),
+            10 => self.emit(Motion::straight(MKind::Feed, self.pos, target, self.plane, span)),
             20 | 30 => self.arc(b, motion == 20, target, span),
             _ => self.cycle(b, motion, target, span),
         }
@@ -1624,16 +1593,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             return;
         }
         let (x, y) = (target[0], target[1]);
-        let make = |kind, start, end| Motion {
-            kind,
-            start,
-            end,
-            centre: [f64::NAN; 3],
-            dir: ArcDir::Cw,
-            plane: Plane::Xy,
-            r: None,
-            span,
-        };
+        let make = |kind, start, end| Motion::straight(kind, start, end, Plane::Xy, span);
         if self.pos[2] < r {
             let to = [self.pos[0], self.pos[1], r];
             self.emit(make(MKind::Rapid, self.pos, to));
