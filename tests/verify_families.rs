@@ -10,45 +10,19 @@
 //! macro program is also read by LinuxCNC's `rs274`, the reference for `#`
 //! and `[ ]`.
 
-use std::io::Cursor;
-
 use postc_ir::Severity;
 use postc_verify::{Controller, Settings};
 
 use crate::support;
-
-/// A finding: code, severity, line.
-#[derive(Debug)]
-struct Found {
-    code: &'static str,
-    severity: Severity,
-    line: usize,
-    message: String,
-}
+use crate::support::verifying::{self, Found, errors};
 
 /// Verifies `program` against the native toolpath `toolpath`.
 fn verify(program: &str, toolpath: &str) -> Vec<Found> {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("job.ron");
     std::fs::write(&path, toolpath).unwrap();
-    let mut sources = postc_report::source_map();
-    let file = sources.add("program.nc", program.to_string());
-    let mut source = postc_driver::open_toolpath(&path, &mut sources).unwrap();
     let settings = Settings { controller: Controller::Generic, ..Settings::default() };
-    let report = postc_verify::verify(&mut Cursor::new(program.as_bytes()), file, &mut source, &settings);
-    report
-        .findings
-        .iter()
-        .map(|d| {
-            let span = d.primary_span().unwrap();
-            let line = if span.file == file { sources.line_column(file, span.start).unwrap().0 } else { 0 };
-            Found { code: d.code, severity: d.severity, line, message: d.message.clone() }
-        })
-        .collect()
-}
-
-fn errors(found: &[Found]) -> Vec<&Found> {
-    found.iter().filter(|f| f.severity == Severity::Error).collect()
+    verifying::verify(program.as_bytes(), &path, &settings)
 }
 
 fn line_of(program: &str, text: &str) -> usize {
@@ -252,8 +226,7 @@ fn sinumerik_faults_are_still_caught() {
     let wrong = SINUMERIK_DRILL.replace("CYCLE83(5, 1, 0, -7,", "CYCLE83(5, 1, 0, -9,");
     let found = verify(&wrong, DRILL);
     assert!(errors(&found).iter().any(|f| f.line == line_of(&wrong, "N22")), "{found:#?}");
-    // No MCALL cancel: the footer's move to the machine Z is not drilled, but a
-    // positioning move after it would be; a cycle without its planes is an error.
+    // A cycle without its reference plane (RFP) is an error at the hole it drills.
     let wrong = SINUMERIK_DRILL.replace("CYCLE83(5, 1, 0, -7,", "CYCLE83(5, , 0, -7,");
     let found = verify(&wrong, DRILL);
     assert!(errors(&found).iter().any(|f| f.code == "VF024" && f.line == line_of(&wrong, "N22")), "{found:#?}");

@@ -10,7 +10,6 @@
 //! Bad programs (truncated, binary, unknown words, a 10 MB line, random
 //! bytes) give findings, never a panic.
 
-use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{Post, Severity};
@@ -18,6 +17,7 @@ use postc_runtime::{Finished, Output};
 use postc_verify::{Controller, Settings};
 
 use crate::support;
+use crate::support::verifying::{Found, errors, verify};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -65,35 +65,6 @@ fn post(post: &Post, toolpath: &Path) -> String {
         },
         Err(d) => panic!("{d:?}"),
     }
-}
-
-/// A finding: code, severity, line and message.
-#[derive(Debug)]
-struct Found {
-    code: &'static str,
-    severity: Severity,
-    line: usize,
-    message: String,
-}
-
-fn verify(program: &[u8], toolpath: &Path, settings: &Settings) -> Vec<Found> {
-    let mut sources = postc_report::source_map();
-    let file = sources.add("program.ngc", String::from_utf8_lossy(program).into_owned());
-    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
-    let report = postc_verify::verify(&mut Cursor::new(program), file, &mut source, settings);
-    report
-        .findings
-        .iter()
-        .map(|d| {
-            let span = d.primary_span().unwrap();
-            let line = if span.file == file { sources.line_column(file, span.start).unwrap().0 } else { 0 };
-            Found { code: d.code, severity: d.severity, line, message: d.message.clone() }
-        })
-        .collect()
-}
-
-fn errors(found: &[Found]) -> Vec<&Found> {
-    found.iter().filter(|f| f.severity == Severity::Error).collect()
 }
 
 /// The 1-based number of the first program line that satisfies `pred`.

@@ -24,6 +24,7 @@ pub mod cimco;
 pub mod postp;
 pub mod prepared;
 pub mod rs274;
+pub mod verifying;
 
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
