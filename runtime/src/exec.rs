@@ -522,6 +522,9 @@ pub struct Function {
     pub params: usize,
     /// The function reads `arguments`: its calls keep them.
     pub uses_arguments: bool,
+    /// The function reads `this`: called plainly (`f()`), its `this` is
+    /// the global object, whatever method called it.
+    pub uses_this: bool,
     /// Parameters not passed and locals not yet set hold `undefined`
     /// (JavaScript), not null.
     pub starts_undefined: bool,
@@ -648,11 +651,32 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
     }
 }
 
+/// Whether a function's own body reads `this` (a function it makes is a
+/// function of its own).
+fn reads_this(f: &postc_ir::Function) -> bool {
+    use postc_ir::visit::{Visit, walk_expr};
+    struct Finds(bool);
+    impl Visit for Finds {
+        fn visit_expr(&mut self, e: &postc_ir::Expr) {
+            self.0 |= matches!(e, postc_ir::Expr::This);
+            walk_expr(self, e);
+        }
+    }
+    let mut finds = Finds(false);
+    if let postc_ir::Body::Native(body) = &f.body {
+        for s in body {
+            finds.visit_stmt(s);
+        }
+    }
+    finds.0
+}
+
 /// The runtime form of a post function.
 pub fn function(f: &postc_ir::Function) -> Function {
     Function {
         params: f.params.len(),
         uses_arguments: f.uses_arguments,
+        uses_this: reads_this(f),
         starts_undefined: f.starts_undefined,
         slots: f.slots,
         body: match &f.body {

@@ -845,7 +845,18 @@ impl Engine<'_> {
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
-                self.call(*f, values)?
+                // A plain call inside a method: the callee's `this` is the
+                // global object, not the method's.
+                let plain =
+                    !self.this_stack.is_empty() && self.code.functions.get(f.index()).is_some_and(|r| r.uses_this);
+                if plain {
+                    self.this_stack.push(Value::Undefined);
+                }
+                let result = self.call(*f, values);
+                if plain {
+                    self.this_stack.pop();
+                }
+                result?
             }
             Expr::Builtin(b, args) => {
                 let mut values = self.spare_frames.pop().unwrap_or_default();
