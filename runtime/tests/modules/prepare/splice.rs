@@ -23,6 +23,7 @@ fn motion() -> Function {
         ]),
         starts_undefined: false,
         uses_arguments: false,
+        uses_this: false,
     }
 }
 
@@ -70,6 +71,7 @@ fn a_function_that_loops_is_called_and_a_recursive_one_spliced_once() {
         ]),
         starts_undefined: false,
         uses_arguments: false,
+        uses_this: false,
     };
     let loops = Function {
         params: 0,
@@ -77,6 +79,7 @@ fn a_function_that_loops_is_called_and_a_recursive_one_spliced_once() {
         body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None, step: vec![] }]),
         starts_undefined: false,
         uses_arguments: false,
+        uses_this: false,
     };
     let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![])), set(1, Expr::Call(FunctionId::new(1), vec![]))];
     small_functions(&[recursive, loops], &mut body);
@@ -100,6 +103,7 @@ fn falling_off_the_end_returns_null_and_locals_start_null() {
         body: Body::Native(vec![Stmt::Eval(local(0))]),
         starts_undefined: false,
         uses_arguments: false,
+        uses_this: false,
     };
     let mut body = vec![set(0, Expr::Call(FunctionId::new(0), vec![]))];
     small_functions(&[f], &mut body);
