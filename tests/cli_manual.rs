@@ -3,7 +3,8 @@
 //! command and each subcommand, and `man` renders every one (under
 //! `CI=true` a missing `bash` or `man` fails; `.ci/run` installs man-db);
 //! a command that writes files says what it wrote in one line, and `-q`
-//! keeps it quiet.
+//! keeps it quiet; long work shows a progress bar on a terminal only (run
+//! under `script`'s pseudo-terminal); `-v` says what each step did.
 
 use std::process::Command;
 
@@ -100,5 +101,84 @@ fn writes_say_what_they_wrote_unless_quiet() {
     ] {
         let o = postc(&args);
         assert!(o.status.success() && o.stderr.is_empty(), "{args:?}: {}", said(&o));
+    }
+}
+
+/// Runs `postc ARGS` under a pseudo-terminal (`script`), as a person at a
+/// terminal would; what the terminal showed.
+fn on_a_terminal(args: &[&str]) -> String {
+    let line = std::iter::once(env!("CARGO_BIN_EXE_postc"))
+        .chain(args.iter().copied())
+        .map(|a| format!("'{a}'"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let o = Command::new("script").args(["-qec", &line, "/dev/null"]).output().unwrap();
+    assert!(o.status.success(), "{line}: {}", said(&o));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+#[test]
+fn long_work_shows_a_progress_bar_on_a_terminal_only() {
+    let dir = tempfile::tempdir().unwrap();
+    let toolpath = dir.path().join("z.jsonl").display().to_string();
+    let program = dir.path().join("z.ngc").display().to_string();
+    let o = postc(&["toolpath", "gen", "--pattern", "zigzag", "--moves", "200000", "-o", &toolpath]);
+    assert!(o.status.success() && !said(&o).contains('['), "a bar without a terminal: {}", said(&o));
+    let o = postc(&["post", &toolpath, "-o", &program, "--no-verify"]);
+    assert!(o.status.success(), "{}", said(&o));
+    let verify = ["verify", &program, "--toolpath", &toolpath];
+    let piped = postc(&verify);
+    assert!(piped.status.success() && !said(&piped).contains("verifying"), "{}", said(&piped));
+    if !have("script", "long_work_shows_a_progress_bar_on_a_terminal_only") {
+        return;
+    }
+    let shown = on_a_terminal(&verify);
+    assert!(shown.contains("verifying [") && shown.contains("MiB"), "no progress bar on a terminal: {shown}");
+    let quiet = on_a_terminal(&["-q", "verify", &program, "--toolpath", &toolpath]);
+    assert!(!quiet.contains("verifying ["), "-q shows a bar: {quiet}");
+}
+
+#[test]
+fn verbose_says_what_each_step_did() {
+    let o = postc(&["-v", "check", "corpus/posts/vectric/gcode_mm.pp"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && err.contains("checked `corpus/posts/vectric/gcode_mm.pp`: 0 diagnostic(s)"), "{err}");
+    let o = postc(&["-v", "post", "corpus/toolpaths/seed_job.ron"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && err.contains("compiled `<embedded>/gcode_mm.pp`"), "{err}");
+    assert!(err.contains("posted 27 toolpath events"), "{err}");
+    let o = postc(&["check", "corpus/posts/vectric/gcode_mm.pp"]);
+    assert_eq!(String::from_utf8_lossy(&o.stderr), "postc: checked 1 file(s): no problems\n");
+    let o = postc(&["-q", "check", "corpus/posts/vectric/gcode_mm.pp"]);
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", said(&o));
+    let o = postc(&["-q", "-v", "check", "corpus/posts/vectric/gcode_mm.pp"]);
+    assert_eq!(o.status.code(), Some(2), "-q and -v together: {}", said(&o));
+}
+
+#[test]
+fn every_value_of_every_subcommand_has_a_line_of_help() {
+    let top = postc(&["--help"]);
+    let text = String::from_utf8_lossy(&top.stdout);
+    let subcommands: Vec<&str> = text
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .collect();
+    assert!(subcommands.len() > 10, "{text}");
+    for sub in subcommands {
+        let mut args: Vec<&str> = vec![sub];
+        if sub == "toolpath" {
+            args.push("gen");
+        }
+        args.push("--help");
+        let o = postc(&args);
+        let help = String::from_utf8_lossy(&o.stdout);
+        assert!(o.status.success(), "{args:?}: {}", said(&o));
+        // clap lists values without help as `[possible values: a, b]`, and
+        // values with help one a line (`- a: what it is`).
+        assert!(!help.contains("[possible values:"), "`postc {}` has values without help:\n{help}", args.join(" "));
     }
 }

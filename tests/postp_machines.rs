@@ -247,6 +247,26 @@ fn postc_postp_dir_prints_the_demo_as_a_fanuc_program_that_rs274_reads() {
 }
 
 #[test]
+fn postc_postp_o_writes_what_it_prints_and_says_so() {
+    let dir = demo_dir();
+    let printed = Command::new(env!("CARGO_BIN_EXE_postc")).arg("postp").arg(dir.path()).output().unwrap();
+    let out = dir.path().join("demo.nc");
+    let wrote =
+        Command::new(env!("CARGO_BIN_EXE_postc")).arg("postp").arg(dir.path()).arg("-o").arg(&out).output().unwrap();
+    let said = String::from_utf8_lossy(&wrote.stderr);
+    assert!(wrote.status.success() && wrote.stdout.is_empty(), "{said}");
+    assert!(said.starts_with(&format!("postc: wrote {} (", out.display())), "{said}");
+    assert_eq!(std::fs::read(&out).unwrap(), printed.stdout);
+    // The CL file is an input: `-o` naming it is refused and it is kept.
+    let cl = dir.path().join("cl.tap");
+    let before = std::fs::read(&cl).unwrap();
+    let refused =
+        Command::new(env!("CARGO_BIN_EXE_postc")).arg("postp").arg(dir.path()).arg("-o").arg(&cl).output().unwrap();
+    assert_eq!(refused.status.code(), Some(1), "{}", String::from_utf8_lossy(&refused.stderr));
+    assert_eq!(std::fs::read(&cl).unwrap(), before);
+}
+
+#[test]
 fn invoked_as_postp_the_binary_takes_dir_alone() {
     let dir = demo_dir();
     let bin = tempfile::tempdir().unwrap();

@@ -2,7 +2,6 @@
 //! synthetic toolpath, with a progress bar, into a sink that counts bytes.
 
 use postc_ir::codes;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -10,7 +9,7 @@ use postc_ir::{Diagnostic, EventSource, SourceMap};
 use postc_runtime::{Output, RunOptions};
 
 use super::{DialectArg, Failed, fail, load_post, report};
-use postc_reader_synthetic::{PATTERNS, Synthetic};
+use postc_reader_synthetic::Synthetic;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -21,8 +20,8 @@ pub struct Args {
     /// Moves of the synthetic toolpath (at most 10000000000).
     #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u64).range(0..=super::toolpath::MAX_MOVES))]
     moves: u64,
-    /// Pattern of the synthetic toolpath: zigzag, arcs, mixed.
-    #[arg(long, default_value = "zigzag")]
+    /// Pattern of the synthetic toolpath.
+    #[arg(long, default_value = "zigzag", value_parser = super::toolpath::patterns())]
     pattern: String,
     /// The post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
@@ -50,7 +49,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                 return Err(fail(
                     &mut sources,
                     Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{}`", args.pattern))
-                        .help(format!("patterns: {}", PATTERNS.join(", "))),
+                        .help(format!("patterns: {}", super::toolpath::pattern_names())),
                 ));
             }
         },
@@ -61,29 +60,25 @@ pub fn run(args: Args) -> Result<(), Failed> {
     if let Some(p) = &profiler {
         options.profile = Some(Box::new(p.clone()));
     }
-    if std::io::stderr().is_terminal() {
-        let bar = match total {
-            Some(n) => indicatif::ProgressBar::new(n),
-            None => indicatif::ProgressBar::new_spinner(),
-        };
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {bar:40} {pos}/{len} events {per_sec}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        let progress = bar.clone();
-        options.progress = Some(Box::new(move |events| progress.set_position(events)));
-        let measured = measure(&post, &mut source, options, &mut sources)?;
+    let bar = match total {
+        Some(n) => report::progress(n, report::Unit::Events, "posting"),
+        None => report::spinner("posting"),
+    };
+    if let Some(bar) = &bar {
+        let shown = bar.clone();
+        options.progress = Some(match total {
+            Some(_) => Box::new(move |events| shown.set_position(events)),
+            None => Box::new(move |events| shown.set_message(format!("posted {events} events"))),
+        });
+    }
+    let measured = measure(&post, &mut source, options, &mut sources);
+    if let Some(bar) = bar {
         bar.finish_and_clear();
-        print_measured(&args, &measured);
-        if let Some(p) = &profiler {
-            report::out(&p.report(&post, std::time::Duration::from_secs_f64(measured.seconds)));
-        }
-    } else {
-        let measured = measure(&post, &mut source, options, &mut sources)?;
-        print_measured(&args, &measured);
-        if let Some(p) = &profiler {
-            report::out(&p.report(&post, std::time::Duration::from_secs_f64(measured.seconds)));
-        }
+    }
+    let measured = measured?;
+    print_measured(&args, &measured);
+    if let Some(p) = &profiler {
+        report::out(&p.report(&post, std::time::Duration::from_secs_f64(measured.seconds)));
     }
     Ok(())
 }

@@ -33,10 +33,15 @@ pub struct Args {
 /// Vectric products as `--product` names them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum ProductArg {
+    /// Cut2D: no rotary wrapping.
     Cut2d,
+    /// VCarve: everything.
     Vcarve,
+    /// Aspire: everything.
     Aspire,
+    /// Cut3D: no DIRECT_OUTPUT, SUBSTITUTE, TAPE_SPLITTING, rotary wrapping, FIRST_PLUNGE_MOVE, and fewer variables.
     Cut3d,
+    /// PhotoVCarve: as Cut3D, and no arcs or NEW_SEGMENT.
     Photovcarve,
 }
 
@@ -68,6 +73,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
                 }
             }
         }
+        let started = std::time::Instant::now();
+        let big = std::fs::metadata(file).is_ok_and(|m| m.len() > (32 << 20));
+        let spinner = big.then(|| report::spinner("checking")).flatten();
         let diagnostics = if !file.exists() {
             vec![Diagnostic::error(codes::IO001, super::missing(file))]
         } else if postc_driver::is_toolpath(file, &postc_report::FsLoader) {
@@ -83,6 +91,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
             }
             diagnostics
         };
+        if let Some(bar) = spinner {
+            bar.finish_and_clear();
+        }
+        report::step(started, format_args!("checked `{name}`: {} diagnostic(s)", diagnostics.len()));
         let mut diagnostics = diagnostics;
         match args.levels.rules_for(Some(file)) {
             Ok(rules) => rules.apply(&mut diagnostics),
@@ -100,6 +112,8 @@ pub fn run(args: Args) -> Result<(), Failed> {
             let warnings = all.len() - errors;
             if errors > 0 || warnings > 0 {
                 eprintln!("postc: {errors} error(s), {warnings} warning(s) in {} file(s)", args.files.len());
+            } else {
+                report::summary(format_args!("checked {} file(s): no problems", args.files.len()));
             }
         }
     }

@@ -16,7 +16,34 @@ pub struct CompletionsArgs {
     /// bash: `postc completions bash > ~/.local/share/bash-completion/completions/postc`;
     /// zsh: into a folder of `$fpath` as `_postc`; fish: `~/.config/fish/completions/postc.fish`.
     #[arg(value_enum)]
-    shell: clap_complete::Shell,
+    shell: ShellArg,
+}
+
+/// The shells `completions` writes for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ShellArg {
+    /// GNU bash (bash-completion).
+    Bash,
+    /// zsh (a `_postc` file on `$fpath`).
+    Zsh,
+    /// fish.
+    Fish,
+    /// elvish.
+    Elvish,
+    /// PowerShell (`Register-ArgumentCompleter`).
+    Powershell,
+}
+
+impl From<ShellArg> for clap_complete::Shell {
+    fn from(shell: ShellArg) -> clap_complete::Shell {
+        match shell {
+            ShellArg::Bash => clap_complete::Shell::Bash,
+            ShellArg::Zsh => clap_complete::Shell::Zsh,
+            ShellArg::Fish => clap_complete::Shell::Fish,
+            ShellArg::Elvish => clap_complete::Shell::Elvish,
+            ShellArg::Powershell => clap_complete::Shell::PowerShell,
+        }
+    }
 }
 
 #[derive(clap::Args, Debug)]
@@ -32,7 +59,7 @@ pub struct ManArgs {
 /// Prints the completion script of `shell` on standard output.
 pub fn completions(args: CompletionsArgs) -> Result<(), Failed> {
     let mut command = Cli::command();
-    clap_complete::generate(args.shell, &mut command, "postc", &mut std::io::stdout());
+    clap_complete::generate(clap_complete::Shell::from(args.shell), &mut command, "postc", &mut std::io::stdout());
     Ok(())
 }
 

@@ -61,9 +61,12 @@ pub struct Cli {
     /// Diagnostics shown per file, for people (0: all); `--format json` lists every one.
     #[arg(long, global = true, value_name = "N", default_value_t = report::DEFAULT_MAX_DIAGNOSTICS)]
     max_diagnostics: usize,
-    /// No summary line after writing files (`postc: wrote ...`); diagnostics still print.
-    #[arg(short, long, global = true)]
+    /// No summary line after writing files (`postc: wrote ...`) and no progress bars; diagnostics still print.
+    #[arg(short, long, global = true, conflicts_with = "verbose")]
     quiet: bool,
+    /// Also say what each step did (the post compiled, the toolpath read, the program verified) and how long it took.
+    #[arg(short, long, global = true)]
+    verbose: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -108,10 +111,15 @@ enum Command {
 /// Post dialects as `--dialect` names them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DialectArg {
+    /// A Vectric .pp post.
     Vectric,
+    /// A CIMCO CNC-Calc JavaScript post (.js).
     Cimco,
+    /// A Vericut VcPost post (.VcPost).
     Vcpost,
+    /// A post's IR as RON (`postc convert --to ron`).
     Ron,
+    /// An Autodesk Fusion / HSM post (.cps).
     Fusion,
 }
 
@@ -134,7 +142,11 @@ pub fn main() -> ExitCode {
     }
     let cli = Cli::parse();
     report::set_max_diagnostics(cli.max_diagnostics);
-    report::set_quiet(cli.quiet);
+    report::set_verbosity(match (cli.quiet, cli.verbose) {
+        (true, _) => report::Verbosity::Quiet,
+        (false, true) => report::Verbosity::Verbose,
+        (false, false) => report::Verbosity::Normal,
+    });
     let result = match cli.command {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
@@ -180,6 +192,7 @@ pub(crate) fn load_post_with(
     sources: &mut SourceMap,
     rules: &LevelRules,
 ) -> Result<Post, Failed> {
+    let started = std::time::Instant::now();
     let mut compiled = match path {
         Some(p) => postc_driver::compile_post(p, dialect.map(Into::into), sources),
         None => postc_driver::compile_post_bytes(
@@ -192,7 +205,21 @@ pub(crate) fn load_post_with(
     rules.apply(&mut compiled.diagnostics);
     report::eprint(sources, &compiled.diagnostics);
     match compiled.post {
-        Some(post) if !compiled.has_errors() => Ok(post),
+        Some(post) if !compiled.has_errors() => {
+            report::step(
+                started,
+                format_args!(
+                    "compiled `{}` ({:?} post `{}`: {} functions, {} handlers, {} variables)",
+                    path.map_or(crate::default_post::NAME.into(), |p| p.display().to_string()),
+                    post.info.dialect,
+                    post.info.name,
+                    post.functions.len(),
+                    post.handlers.len(),
+                    post.variables.len()
+                ),
+            );
+            Ok(post)
+        }
         _ => {
             let name = path.map_or(crate::default_post::NAME.into(), |p| p.display().to_string());
             eprintln!("postc: `{name}` has errors; nothing was posted");

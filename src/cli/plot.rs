@@ -84,17 +84,21 @@ pub fn run(args: Args) -> Result<(), Failed> {
         })?,
     };
     super::outputs::write_whole(&args.output, &bytes, &inputs, None).map_err(|d| fail(&mut sources, d))?;
-    eprintln!("postc plot: wrote `{}`", args.output.display());
+    super::report::wrote(format_args!("{} ({} bytes of {})", args.output.display(), bytes.len(), ext.to_uppercase()));
     Ok(())
 }
 
 /// Verifies the program, drawing its moves and the toolpath's; the SVG text.
 /// The findings are printed as `postc verify` prints them (they do not fail the plot).
 pub(crate) fn plot(job: &Job, sources: &mut SourceMap) -> Result<String, Failed> {
-    let Opened { mut reader, file, settings, name } = open(job, sources)?;
+    let Opened { reader, file, settings, name, size } = open(job, sources)?;
     let mut drawn = toolpath(job, sources)?;
     let mut source = toolpath(job, sources)?;
+    let (mut reader, bar) = Opened::with_progress(reader, size, "plotting");
     let (mut plot, report) = postc_verify::plot::draw(&mut reader, file, &mut drawn, &mut source, &settings, sources);
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
     plot.title = format!("{} over {}", file_name(job.program), file_name(job.toolpath));
     report_findings(sources, &report, &name);
     Ok(plot.svg())

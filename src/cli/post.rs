@@ -3,7 +3,6 @@
 //! composites event file goes to `probe.rs` instead.
 
 use postc_ir::codes;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use postc_ir::codes::{Level, LevelRules};
@@ -213,12 +212,11 @@ pub fn run(args: Args) -> Result<(), Failed> {
         None => None,
     };
     let big = std::fs::metadata(toolpath).map(|m| m.len() > (32 << 20)).unwrap_or(false);
-    let spinner = (big && std::io::stderr().is_terminal()).then(|| {
-        let bar = report::spinner("posting");
+    let spinner = big.then(|| report::spinner("posting")).flatten();
+    if let Some(bar) = &spinner {
         let shown = bar.clone();
         options.progress = Some(Box::new(move |events| shown.set_message(format!("posted {events} events"))));
-        bar
-    });
+    }
     let run = match &verification {
         Some((v, _)) => postc_runtime::run(&post, &mut v.source(&mut *source), out, options),
         None => postc_runtime::run(&post, &mut source, out, options),
@@ -236,6 +234,17 @@ pub fn run(args: Args) -> Result<(), Failed> {
     };
     rules.apply(&mut report.warnings);
     report::eprint(&mut sources, &report.warnings);
+    report::step(
+        started,
+        format_args!(
+            "posted {} toolpath events from `{}` into {} blocks, {} bytes{}",
+            report.events,
+            toolpath.display(),
+            report.blocks,
+            report.bytes,
+            if verification.is_some() { ", verified while posting" } else { "" }
+        ),
+    );
     if postc_ir::diagnostic::has_errors(&report.warnings) {
         match &args.output {
             Some(_) => eprintln!("postc: a denied warning was reported while posting; nothing was written"),

@@ -22,6 +22,9 @@ pub struct Args {
     /// An options file (RON) whose fields replace the controller's defaults.
     #[arg(long, value_name = "FILE")]
     options: Option<PathBuf>,
+    /// Write the program here (whole, or not at all) instead of standard output.
+    #[arg(short, long, value_name = "OUT")]
+    output: Option<PathBuf>,
 }
 
 /// `postp DIR`: the seed's command line.
@@ -51,11 +54,33 @@ pub fn main() -> ExitCode {
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
-    let settings = Settings { options: args.options, now: Some(super::clock::now()), ..Settings::default() };
+    let settings = Settings { options: args.options.clone(), now: Some(super::clock::now()), ..Settings::default() };
     let cl = args.dir.join("cl.tap");
-    match postc_postp::post(&cl, &settings, super::sink::stdout(), &mut sources) {
+    let started = std::time::Instant::now();
+    let mut inputs: Vec<&std::path::Path> = vec![&cl];
+    inputs.extend(args.options.as_deref());
+    let batch = super::outputs::Batch::default();
+    let out = match &args.output {
+        Some(path) => {
+            super::outputs::check_paths(&inputs, &[path]).map_err(|d| super::fail(&mut sources, d))?;
+            super::sink::file(path, &batch)
+                .map_err(|e| super::fail(&mut sources, super::outputs::cannot_write(path, &e)))?
+        }
+        None => super::sink::stdout(),
+    };
+    match postc_postp::post(&cl, &settings, out, &mut sources) {
         Ok(r) => {
             report::eprint(&mut sources, &r.warnings);
+            batch.commit(&inputs, Some(&sources)).map_err(|d| super::fail(&mut sources, d))?;
+            if let Some(path) = &args.output {
+                report::wrote(format_args!(
+                    "{} ({} blocks, {} bytes, in {:.2} s)",
+                    path.display(),
+                    r.blocks,
+                    r.bytes,
+                    started.elapsed().as_secs_f64()
+                ));
+            }
             Ok(())
         }
         Err(diagnostics) => {

@@ -12,7 +12,6 @@
 //! one whose first line is `VcpFile(...)`, is a composites event file.
 
 use postc_ir::codes;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use postc_ir::{CallSource, Diagnostic, Dialect, Post, SourceMap};
@@ -116,12 +115,11 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
     };
     let mut options = job.options;
     let big = std::fs::metadata(job.input).map(|m| m.len() > (32 << 20)).unwrap_or(false);
-    let spinner = (big && std::io::stderr().is_terminal()).then(|| {
-        let bar = report::spinner("running the calls");
+    let spinner = big.then(|| report::spinner("running the calls")).flatten();
+    if let Some(bar) = &spinner {
         let shown = bar.clone();
         options.progress = Some(Box::new(move |calls| shown.set_message(format!("ran {calls} calls"))));
-        bar
-    });
+    }
     let ran = postc_runtime::calls::run_calls(&postc_driver::for_calls(&post), &mut source, out, options);
     if let Some(bar) = spinner {
         bar.finish_and_clear();
@@ -144,10 +142,10 @@ pub fn run_calls(job: Job<'_>) -> Result<(), Failed> {
             }
             let inputs: Vec<&Path> = job.post.iter().map(|p| p.as_path()).chain([job.input]).collect();
             batch.commit(&inputs, Some(&sources)).map_err(|d| fail(&mut sources, d))?;
-            if let Finished::Files(files) = &report.output
-                && files.len() > 1
-            {
-                eprintln!("postc: wrote {} parts", files.len());
+            if let Finished::Files(files) = &report.output {
+                let names = files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ");
+                let parts = if files.len() > 1 { format!("{} parts: ", files.len()) } else { String::new() };
+                report::wrote(format_args!("{parts}{names} ({} blocks, {} bytes)", report.blocks, report.bytes));
             }
             Ok(())
         }

@@ -10,7 +10,9 @@ use postc_report::Render;
 /// How `check` prints diagnostics.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
+    /// Rendered for people on standard error, with the source lines.
     Human,
+    /// One JSON array on standard output: code, severity, message, file, line, column, end.
     Json,
 }
 
@@ -32,30 +34,99 @@ fn limit() -> MutexGuard<'static, Limit> {
     LIMIT.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-/// `-q`: no summary line after a command that wrote files (diagnostics
-/// still print).
-static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+/// How much a command says besides its diagnostics: `-q` (nothing), the
+/// default (a summary line after writing files, progress on a terminal),
+/// `-v` (also what each step did and how long it took).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Verbosity {
+    Quiet = 0,
+    Normal = 1,
+    Verbose = 2,
+}
 
-/// Sets `-q/--quiet`.
-pub fn set_quiet(quiet: bool) {
-    QUIET.store(quiet, std::sync::atomic::Ordering::Relaxed);
+static VERBOSITY: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(Verbosity::Normal as u8);
+
+/// Sets `-q/--quiet` or `-v/--verbose`.
+pub fn set_verbosity(verbosity: Verbosity) {
+    VERBOSITY.store(verbosity as u8, std::sync::atomic::Ordering::Relaxed);
+}
+
+fn verbosity() -> Verbosity {
+    match VERBOSITY.load(std::sync::atomic::Ordering::Relaxed) {
+        0 => Verbosity::Quiet,
+        1 => Verbosity::Normal,
+        _ => Verbosity::Verbose,
+    }
 }
 
 /// A spinner on standard error that turns on its own (a tick every
 /// 120 ms) while a long run goes on, saying `message` until told more;
-/// the caller clears it when the run ends. Only for a terminal.
-pub fn spinner(message: &'static str) -> indicatif::ProgressBar {
+/// the caller clears it when the run ends. Only when standard error is a
+/// terminal and not `-q`.
+pub fn spinner(message: &'static str) -> Option<indicatif::ProgressBar> {
+    if verbosity() == Verbosity::Quiet || !std::io::stderr().is_terminal() {
+        return None;
+    }
     let bar = indicatif::ProgressBar::new_spinner();
     bar.set_message(message);
     bar.enable_steady_tick(std::time::Duration::from_millis(120));
-    bar
+    Some(bar)
+}
+
+/// What a [`progress`] bar counts.
+#[derive(Clone, Copy, Debug)]
+pub enum Unit {
+    /// Bytes of a file read or written.
+    Bytes,
+    /// Toolpath moves.
+    Moves,
+    /// Toolpath events posted.
+    Events,
+}
+
+/// A progress bar on standard error for work of `total` units, saying
+/// `message`: only when standard error is a terminal and not `-q`, so
+/// logs and pipes never see one. The caller moves it (`inc`, or
+/// `wrap_read` on a reader) and clears it when the work ends.
+pub fn progress(total: u64, unit: Unit, message: &'static str) -> Option<indicatif::ProgressBar> {
+    if verbosity() == Verbosity::Quiet || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let counts = match unit {
+        Unit::Bytes => "{bytes}/{total_bytes}",
+        Unit::Moves => "{human_pos}/{human_len} moves",
+        Unit::Events => "{human_pos}/{human_len} events, {per_sec}",
+    };
+    let template = format!("{{spinner}} {{msg}} [{{bar:30}}] {counts} ({{eta}} left)");
+    let style = indicatif::ProgressStyle::with_template(&template)
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+        .progress_chars("=> ");
+    let bar = indicatif::ProgressBar::new(total).with_style(style).with_message(message);
+    bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    Some(bar)
 }
 
 /// Prints the one-line summary of what a command wrote (`postc: wrote
 /// ...`) on standard error, unless `-q`.
 pub fn wrote(what: std::fmt::Arguments) {
-    if !QUIET.load(std::sync::atomic::Ordering::Relaxed) {
+    if verbosity() >= Verbosity::Normal {
         eprintln!("postc: wrote {what}");
+    }
+}
+
+/// Prints a one-line summary of a command that wrote nothing (`postc:
+/// checked ...`) on standard error, unless `-q`.
+pub fn summary(what: std::fmt::Arguments) {
+    if verbosity() >= Verbosity::Normal {
+        eprintln!("postc: {what}");
+    }
+}
+
+/// Says what a step did and how long it took since `started`, under `-v`
+/// only.
+pub fn step(started: std::time::Instant, what: std::fmt::Arguments) {
+    if verbosity() == Verbosity::Verbose {
+        eprintln!("postc: {what} ({:.3} s)", started.elapsed().as_secs_f64());
     }
 }
 

@@ -15,8 +15,8 @@ use postc_reader_synthetic::{PATTERNS, Synthetic};
 pub enum Command {
     /// Generate a synthetic toolpath (zigzag, arcs, mixed, standard).
     Gen {
-        /// The pattern: zigzag, arcs, mixed or standard.
-        #[arg(long, default_value = "zigzag")]
+        /// The pattern.
+        #[arg(long, default_value = "zigzag", value_parser = patterns())]
         pattern: String,
         /// Number of moves (at most 10000000000: about a terabyte of RON).
         #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(0..=MAX_MOVES))]
@@ -25,6 +25,18 @@ pub enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+}
+
+/// The patterns `--pattern` takes, each with its help line.
+pub(super) fn patterns() -> clap::builder::PossibleValuesParser {
+    clap::builder::PossibleValuesParser::new(
+        PATTERNS.iter().map(|(name, help)| clap::builder::PossibleValue::new(*name).help(*help)),
+    )
+}
+
+/// The pattern names, for a message.
+pub(super) fn pattern_names() -> String {
+    PATTERNS.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(", ")
 }
 
 /// The most moves `toolpath gen` and `bench` make: 10^10 moves are about
@@ -67,7 +79,7 @@ pub fn run(command: Command) -> Result<(), Failed> {
         return Err(fail(
             &mut sources,
             Diagnostic::error(codes::IO007, format!("there is no toolpath pattern `{pattern}`"))
-                .help(format!("patterns: {}", PATTERNS.join(", "))),
+                .help(format!("patterns: {}", super::toolpath::pattern_names())),
         ));
     };
     let syntax = match output.as_ref().and_then(|p| p.extension()).and_then(|e| e.to_str()) {
@@ -75,12 +87,23 @@ pub fn run(command: Command) -> Result<(), Failed> {
         _ => Syntax::Ron,
     };
     let write = |w: &mut dyn Write, generator: &mut Synthetic| -> std::io::Result<()> {
+        let bar = super::report::progress(moves, super::report::Unit::Moves, "generating");
         let mut line = String::new();
         let mut diags = Vec::new();
+        let mut events = 0u64;
         while let Some((event, _)) = generator.next_event(&mut diags) {
             line.clear();
             write_event(&event, syntax, &mut line);
             w.write_all(line.as_bytes())?;
+            events += 1;
+            if events.is_multiple_of(65_536)
+                && let Some(bar) = &bar
+            {
+                bar.set_position(generator.moves_made());
+            }
+        }
+        if let Some(bar) = bar {
+            bar.finish_and_clear();
         }
         w.flush()
     };

@@ -46,11 +46,16 @@ pub struct Args {
 /// Controllers as `--controller` names them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum ControllerArg {
+    /// LinuxCNC: its arc radius tolerance, blocks of at most 252 characters.
     #[value(name = "linuxcnc")]
     LinuxCnc,
+    /// Fanuc: 0.01 mm arc radius difference, at most 8 digits a word.
     Fanuc,
+    /// Haas: as Fanuc.
     Haas,
+    /// grbl: its arc radius tolerance, 80 characters a line without blanks and comments.
     Grbl,
+    /// Any RS274 controller: LinuxCNC's limits.
     Generic,
 }
 
@@ -139,12 +144,35 @@ pub(crate) struct Opened {
     pub file: postc_ir::FileId,
     pub settings: Settings,
     pub name: String,
+    /// The program's size in bytes, for the progress bar.
+    pub size: u64,
+}
+
+impl Opened {
+    /// The program's reader, moving a progress bar of `message` over its
+    /// bytes on a terminal (the bar, to clear when the work ends).
+    pub fn with_progress(
+        reader: BufReader<std::fs::File>,
+        size: u64,
+        message: &'static str,
+    ) -> (Box<dyn std::io::BufRead>, Option<indicatif::ProgressBar>) {
+        match report::progress(size, report::Unit::Bytes, message) {
+            Some(bar) => (Box::new(bar.wrap_read(reader)), Some(bar)),
+            None => (Box::new(reader), None),
+        }
+    }
 }
 
 pub fn verify(job: &Job, sources: &mut SourceMap) -> Result<(), Failed> {
-    let Opened { mut reader, file: file_id, settings, name } = open(job, sources)?;
+    let started = std::time::Instant::now();
+    let Opened { reader, file: file_id, settings, name, size } = open(job, sources)?;
     let mut source = toolpath(job, sources)?;
+    let (mut reader, bar) = Opened::with_progress(reader, size, "verifying");
     let mut report = postc_verify::verify(&mut reader, file_id, &mut source, &settings);
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    report::step(started, format_args!("replayed `{name}` ({size} bytes) against `{}`", job.toolpath.display()));
     if let Some(trace) = job.trace {
         super::trace::annotate(trace, job.program, &mut report.findings, sources).map_err(|d| fail(sources, d))?;
     }
@@ -266,7 +294,7 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
         );
         sources.add_streamed(name.clone())
     };
-    Ok(Opened { reader, file: file_id, settings, name })
+    Ok(Opened { reader, file: file_id, settings, name, size })
 }
 
 /// The toolpath's events, through postp's transform for a postp program.

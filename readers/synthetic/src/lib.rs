@@ -13,8 +13,13 @@
 use postc_ir::event::*;
 use postc_ir::{Diagnostic, EventSource, FileId, Span, Units};
 
-/// The toolpath patterns `gen` knows.
-pub const PATTERNS: &[&str] = &["zigzag", "arcs", "mixed", "standard"];
+/// The toolpath patterns `gen` knows, each with what it makes.
+pub const PATTERNS: &[(&str, &str)] = &[
+    ("zigzag", "a 3D raster, with a retract, rapid and plunge every 200 moves"),
+    ("arcs", "rows of half circles turning both ways"),
+    ("mixed", "the raster with an arc every fourth move"),
+    ("standard", "a small job with every kind of event, two tools and a jet toolpath (--moves is ignored)"),
+];
 
 /// A generated toolpath.
 pub struct Synthetic {
@@ -65,6 +70,11 @@ impl Synthetic {
             queue: Default::default(),
             pos: [0.0; 3],
         })
+    }
+
+    /// The moves made so far (for a progress bar).
+    pub fn moves_made(&self) -> u64 {
+        self.done_moves
     }
 
     fn preamble(&mut self) {
