@@ -248,6 +248,22 @@ fn an_editor_session() {
     let def = c.at("textDocument/definition", js, 2, 20);
     assert_eq!(def["range"], range(0, 4, 0, 13), "{def}");
 
+    // A Fusion post: a hover on a host function gives Autodesk's
+    // declaration and what postc's host does with it; completion offers
+    // the host's names.
+    let cps = "file:///work/posts/mill.cps";
+    let _ = c.open(
+        cps,
+        "javascript",
+        "function onOpen() {\n  var p = getParameter(\"job-description\");\n  setEOL(\"\\n\");\n}\n",
+    );
+    let hover = c.at("textDocument/hover", cps, 1, 12);
+    let text = hover["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("getParameter(name: String): Value"), "{hover}");
+    let hover = c.at("textDocument/hover", cps, 2, 4);
+    assert!(hover["contents"]["value"].as_str().unwrap().contains("JS110"), "{hover}");
+    assert!(labels(&c.at("textDocument/completion", cps, 1, 16)).contains(&"getParameter".to_owned()));
+
     // A VcPost post: the missing End If, a hover on a register, the
     // definition of a Sub.
     let vc = "file:///work/posts/mill.VcPost";

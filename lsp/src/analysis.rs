@@ -1,6 +1,7 @@
 //! Hover, definition, completion and code actions, from the document's
 //! text with small dialect-aware scanners (the IR keeps no symbols).
 
+use postc_front_cimco::fusion;
 use postc_front_vectric::names::{VAR_NAMES, label_of_var_name, var_name_of_label};
 use postc_ir::Dialect;
 use postc_ir::post::Section;
@@ -72,8 +73,9 @@ pub fn hover(dialect: Dialect, text: &str, at: usize) -> Option<Hover> {
     let markdown = match dialect {
         Dialect::Vectric => vectric_hover(text, word, before, line_head)?,
         Dialect::Cimco => cimco_hover(text, word)?,
+        Dialect::Fusion => fusion_hover(text, word, before)?,
         Dialect::VcPost => vcpost_hover(text, word, before)?,
-        Dialect::Ron | Dialect::Fusion => return None,
+        Dialect::Ron => return None,
     };
     Some(Hover { markdown, start, end })
 }
@@ -114,6 +116,46 @@ fn cimco_hover(text: &str, word: &str) -> Option<String> {
     }
     let (line, _, _) = cimco_definition(text, word)?;
     Some(format!("```js\n{}\n```", line.trim()))
+}
+
+/// A Fusion post's name: the post's own definition, and the declaration of
+/// Fusion's host API with what postc's host does with it.
+fn fusion_hover(text: &str, word: &str, before: Option<u8>) -> Option<String> {
+    let own = cimco_definition(text, word).map(|(line, _, _)| format!("```js\n{}\n```", line.trim()));
+    let host = (before != Some(b'.')).then(|| fusion::api::declaration(word)).flatten().map(fusion_entry);
+    match (own, host) {
+        (Some(own), Some(host)) => Some(format!("{own}\n\n---\n\n{host}")),
+        (own, host) => own.or(host),
+    }
+}
+
+/// The hover of a declared name of Fusion's host API.
+fn fusion_entry(d: &fusion::api::Declaration) -> String {
+    let what = match d.kind {
+        fusion::api::Kind::Function if d.name.starts_with("on") => "entry point, called by the host",
+        fusion::api::Kind::Function => "host function",
+        fusion::api::Kind::Constant => "host constant",
+        fusion::api::Kind::Variable => "host setting or object",
+    };
+    let mut s = format!("**{}** — Fusion {what}\n\n```ts\n{}\n```", d.name, d.signature);
+    if !d.doc.is_empty() {
+        s.push_str(&format!("\n\n{}", d.doc));
+    }
+    let postc = match fusion::support(d.name) {
+        fusion::Support::Runs { value: Some(v) } if v.len() <= 60 && !v.contains('\n') => {
+            format!("postc's host: `{} = {v}`", d.name)
+        }
+        fusion::Support::Runs { .. } => "postc's host defines it.".to_string(),
+        fusion::Support::Stub => {
+            "postc does not run it yet: a post that reaches it stops with a message naming it (JS110).".to_string()
+        }
+        fusion::Support::Missing => {
+            "postc's host does not define it: a post that uses it is refused (JS109), unless it defines it itself."
+                .to_string()
+        }
+    };
+    s.push_str(&format!("\n\n{postc}\n\n*(declaration: Autodesk/cam-posteditor, MIT)*"));
+    s
 }
 
 fn vcpost_hover(text: &str, word: &str, before: Option<u8>) -> Option<String> {
@@ -333,8 +375,17 @@ pub fn completion(dialect: Dialect, text: &str, at: usize, after_space: bool) ->
         }
         Dialect::Fusion => {
             if !before_word.ends_with('.') {
-                for (name, kind, line) in cimco_names(text) {
-                    add(name, kind, line.trim());
+                let own = cimco_names(text);
+                for (name, kind, line) in &own {
+                    add(name, *kind, line.trim());
+                }
+                for d in fusion::api::declarations().iter().filter(|d| own.iter().all(|(n, _, _)| *n != d.name)) {
+                    let kind = match d.kind {
+                        fusion::api::Kind::Function => CompletionKind::Function,
+                        fusion::api::Kind::Constant => CompletionKind::Constant,
+                        fusion::api::Kind::Variable => CompletionKind::Variable,
+                    };
+                    add(d.name, kind, d.signature);
                 }
             }
         }

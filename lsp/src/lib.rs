@@ -249,6 +249,7 @@ pub fn dialect_of(uri: &str) -> Option<Dialect> {
         "pp" => Some(Dialect::Vectric),
         "js" => Some(Dialect::Cimco),
         "vcpost" => Some(Dialect::VcPost),
+        "cps" => Some(Dialect::Fusion),
         "ron" => Some(Dialect::Ron),
         _ => None,
     }

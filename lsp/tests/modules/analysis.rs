@@ -52,3 +52,32 @@ fn cimco_and_vcpost_definitions() {
     let h = hover(Dialect::VcPost, vb, vb.find("<X>").unwrap()).unwrap();
     assert!(h.markdown.contains("end point"), "{}", h.markdown);
 }
+
+const CPS: &str = "description = \"test\";\nfunction onLinear(x, y, z, feed) {\n  writeBlock(getParameter(\"operation-comment\"));\n}\nfunction onClose() {\n  redirectToFile(\"x\");\n  exportNCAs(\"a\", \"b\");\n  var p = PLANE_XY;\n}\n";
+
+#[test]
+fn fusion_hover_shows_the_declaration_and_what_postc_does() {
+    let at = |word: &str| CPS.find(word).unwrap();
+    let h = hover(Dialect::Fusion, CPS, at("getParameter")).unwrap();
+    assert!(h.markdown.contains("getParameter(name: String): Value") && h.markdown.contains("postc's host defines it"));
+    let h = hover(Dialect::Fusion, CPS, at("PLANE_XY")).unwrap();
+    assert!(h.markdown.contains("Circular XY plane.") && h.markdown.contains("`PLANE_XY = 0`"), "{}", h.markdown);
+    let h = hover(Dialect::Fusion, CPS, at("redirectToFile")).unwrap();
+    assert!(h.markdown.contains("JS110"), "{}", h.markdown);
+    let h = hover(Dialect::Fusion, CPS, at("exportNCAs")).unwrap();
+    assert!(h.markdown.contains("JS109"), "{}", h.markdown);
+    // The post's own entry point: its definition, then the declaration.
+    let h = hover(Dialect::Fusion, CPS, at("onLinear")).unwrap();
+    assert!(h.markdown.starts_with("```js\nfunction onLinear(x, y, z, feed) {"), "{}", h.markdown);
+    assert!(h.markdown.contains("entry point, called by the host"), "{}", h.markdown);
+}
+
+#[test]
+fn fusion_completion_offers_host_names_once() {
+    let text = "function onOpen() {\n  getPar";
+    let names: Vec<String> =
+        completion(Dialect::Fusion, text, text.len(), false).into_iter().map(|c| c.label).collect();
+    assert!(names.iter().any(|n| n == "getParameter"), "{names:?}");
+    assert!(names.iter().any(|n| n == "PLANE_XY"), "{names:?}");
+    assert_eq!(names.iter().filter(|n| *n == "onOpen").count(), 1, "{names:?}");
+}

@@ -22,5 +22,6 @@ fn dialects_from_extensions() {
     assert_eq!(dialect_of("file:///a/b.PP"), Some(Dialect::Vectric));
     assert_eq!(dialect_of("file:///a/b.VcPost"), Some(Dialect::VcPost));
     assert_eq!(dialect_of("file:///a/b.js"), Some(Dialect::Cimco));
+    assert_eq!(dialect_of("file:///a/haas.CPS"), Some(Dialect::Fusion));
     assert_eq!(dialect_of("file:///a.d/b"), None);
 }

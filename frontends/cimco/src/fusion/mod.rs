@@ -25,6 +25,49 @@ pub const HOST: &str = include_str!("host.js");
 /// The name the host's source has in diagnostics.
 pub const HOST_NAME: &str = "<postc fusion host>";
 
+/// What postc's host does with a name of Fusion's host API.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Support {
+    /// The host defines it: a function, or a variable with the source text
+    /// of its starting value (`1`, `"\r\n"`), when it has one.
+    Runs { value: Option<String> },
+    /// The host has it only to stop the post with a message naming it
+    /// (`JS110`: postc does not run it yet).
+    Stub,
+    /// The host does not define it (`JS109` when a post uses it).
+    Missing,
+}
+
+/// The host's top-level names and what it does with each, read once.
+static SUPPORT: std::sync::LazyLock<std::collections::HashMap<String, Support>> = std::sync::LazyLock::new(|| {
+    let (host, _) = crate::parse_as(HOST, postc_ir::FileId(0), crate::Syntax::Fusion);
+    let stubs = stubs(&host);
+    let mut names = std::collections::HashMap::new();
+    for s in &host.body {
+        match &s.kind {
+            StmtKind::Function(f) => {
+                if let Some(n) = &f.name {
+                    let support = if stubs.contains(&n.name) { Support::Stub } else { Support::Runs { value: None } };
+                    names.insert(n.name.clone(), support);
+                }
+            }
+            StmtKind::Var(declarators) => {
+                for d in declarators {
+                    let value = d.init.as_ref().and_then(|e| HOST.get(e.span.start..e.span.end));
+                    names.insert(d.name.name.clone(), Support::Runs { value: value.map(str::to_string) });
+                }
+            }
+            _ => {}
+        }
+    }
+    names
+});
+
+/// What postc's host does with `name` (a name of Fusion's host API).
+pub fn support(name: &str) -> Support {
+    SUPPORT.get(name).cloned().unwrap_or(Support::Missing)
+}
+
 /// Compiles a Fusion post: the IR and every diagnostic, sorted by position.
 pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<Diagnostic>) {
     let text = String::from_utf8_lossy(bytes).into_owned();
