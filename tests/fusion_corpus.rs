@@ -12,7 +12,8 @@
 //! by outcome (the table of docs/fusion.md: a post counts under the first
 //! job it does not post) and holds the number that post and verify all
 //! four at or above [`AT_LEAST`], and the number that post all four at or
-//! above [`POSTING_AT_LEAST`].
+//! above [`POSTING_AT_LEAST`]. A second test posts the jet job
+//! (`corpus/toolpaths/jet_mm.ron`) through every post the same way.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -32,6 +33,14 @@ const POSTING_AT_LEAST: usize = 80;
 /// The outcome of a post whose programs all post but whose dialect verify
 /// does not read (VF044, a note): it posts, unverified.
 const UNREAD: &str = "posts, but verify does not read its dialect (VF044)";
+
+/// The outcome of a post whose capabilities take no jet operation.
+const REFUSES_JET: &str = "refuses jet operations (its capabilities)";
+
+/// Posts that post the jet job (with one of the three jet tools) today,
+/// and of those the ones whose program verify reads and passes.
+const JET_POSTING_AT_LEAST: usize = 9;
+const JET_AT_LEAST: usize = 7;
 
 /// The Fusion corpus beside the checkout.
 pub fn shared() -> PathBuf {
@@ -89,6 +98,9 @@ fn outcome(said: &str, status: Option<i32>) -> String {
     if first.contains("does not support milling operations") {
         return "refuses milling (its capabilities)".into();
     }
+    if first.contains("does not support jet operations") {
+        return REFUSES_JET.into();
+    }
     code.to_string()
 }
 
@@ -108,6 +120,63 @@ fn jobs(tmp: &Path) -> Vec<(&'static str, PathBuf)> {
     ]
 }
 
+/// Runs `run(post, name, output file)` for every post, on as many threads
+/// as the machine has cores (at most 8), each thread writing into a file
+/// of its own: each post's name and what `run` gave.
+fn each_post<T: Send>(
+    posts: &[PathBuf],
+    dir: &Path,
+    tmp: &Path,
+    run: impl Fn(&Path, &str, &Path) -> T + Sync,
+) -> Vec<(String, T)> {
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|w| {
+                let (next, run) = (&next, &run);
+                scope.spawn(move || {
+                    let mut done = Vec::new();
+                    let out = tmp.join(format!("program-{w}.nc"));
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some(post) = posts.get(i) else { break };
+                        let name = post.strip_prefix(dir).unwrap_or(post).display().to_string();
+                        let got = run(post, &name, &out);
+                        done.push((name, got));
+                    }
+                    done
+                })
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    })
+}
+
+/// Posts `job` with `post` into `out`: the outcome, as the tables count
+/// it. A panic, a crash or an output left behind by a failed run is
+/// added to `broken`, under `what`.
+fn post_one(post: &Path, job: &Path, out: &Path, what: &str, broken: &mut Vec<String>) -> String {
+    let _ = std::fs::remove_file(out);
+    let run = support::postc(&[
+        "post",
+        "-q",
+        post.to_str().expect("a UTF-8 path"),
+        job.to_str().expect("a UTF-8 path"),
+        "-o",
+        out.to_str().expect("a UTF-8 path"),
+    ]);
+    let said = support::said(&run);
+    let status = run.status.code();
+    if said.contains("panicked") || status.is_none_or(|c| c > 1) {
+        broken.push(format!("{what}: exit {status:?}: {said}"));
+    }
+    if !run.status.success() && out.exists() {
+        broken.push(format!("{what}: failed and left its output behind"));
+    }
+    outcome(&said, status)
+}
+
 #[test]
 fn corpus_fusion_posts_post_the_milling_jobs_or_say_why_not() {
     let dir = shared();
@@ -119,60 +188,24 @@ fn corpus_fusion_posts_post_the_milling_jobs_or_say_why_not() {
     std::fs::create_dir_all(&tmp).expect("temporary folder");
     let jobs = jobs(&tmp);
     let posts = posts(&dir);
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
-    // Each worker takes the next post not taken and posts it over each job
-    // in turn, into a file of its own, until a job fails.
-    let runs: Vec<(String, String, Vec<String>)> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers)
-            .map(|w| {
-                let (posts, next, jobs, tmp, dir) = (&posts, &next, &jobs, &tmp, &dir);
-                scope.spawn(move || {
-                    let mut done = Vec::new();
-                    let out = tmp.join(format!("program-{w}.nc"));
-                    loop {
-                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        let Some(post) = posts.get(i) else { break };
-                        let name = post.strip_prefix(dir).unwrap_or(post).display().to_string();
-                        let mut broken = Vec::new();
-                        let mut result = "posts and verifies".to_string();
-                        for (job, path) in jobs {
-                            let _ = std::fs::remove_file(&out);
-                            let run = support::postc(&[
-                                "post",
-                                "-q",
-                                post.to_str().expect("a UTF-8 path"),
-                                path.to_str().expect("a UTF-8 path"),
-                                "-o",
-                                out.to_str().expect("a UTF-8 path"),
-                            ]);
-                            let said = support::said(&run);
-                            let status = run.status.code();
-                            if said.contains("panicked") || status.is_none_or(|c| c > 1) {
-                                broken.push(format!("{name} ({job}): exit {status:?}: {said}"));
-                            }
-                            if !run.status.success() && out.exists() {
-                                broken.push(format!("{name} ({job}): failed and left its output behind"));
-                            }
-                            let got = outcome(&said, status);
-                            if got == UNREAD {
-                                result = got;
-                            } else if got != "posts and verifies" {
-                                result = if *job == "milling" { got } else { format!("{got} ({job})") };
-                                break;
-                            }
-                        }
-                        done.push((name, result, broken));
-                    }
-                    done
-                })
-            })
-            .collect();
-        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    // Each post over each job in turn, into a file of its own, until a job fails.
+    let runs = each_post(&posts, &dir, &tmp, |post, name, out| {
+        let mut broken = Vec::new();
+        let mut result = "posts and verifies".to_string();
+        for (job, path) in &jobs {
+            let got = post_one(post, path, out, &format!("{name} ({job})"), &mut broken);
+            if got == UNREAD {
+                result = got;
+            } else if got != "posts and verifies" {
+                result = if *job == "milling" { got } else { format!("{got} ({job})") };
+                break;
+            }
+        }
+        (result, broken)
     });
     let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut broken = Vec::new();
-    for (name, result, mut wrong) in runs {
+    for (name, (result, mut wrong)) in runs {
         broken.append(&mut wrong);
         table.entry(result).or_default().push(name);
     }
@@ -261,4 +294,92 @@ fn check_names_host_api_postc_does_not_run_yet() {
     assert!(!run.status.success() && said.contains("`redirectToFile`") && !out.exists(), "{said}");
     // The error is in the host's JavaScript; it is also placed in the post.
     assert!(said.contains("stub.cps:9:1") && said.contains("in the post's function `onClose`"), "{said}");
+}
+
+/// The jet job (`corpus/toolpaths/jet_mm.ron`: a plasma torch cuts a hole
+/// and a profile) with its tool named for each jet process: Fusion's
+/// host takes the tool's kind (plasma cutter, laser cutter, water jet)
+/// from its name, and a post for one process refuses the others, as a
+/// machine's post does in Fusion. A post counts under its best outcome
+/// over the three.
+fn jet_jobs(dir: &Path) -> Vec<(&'static str, PathBuf)> {
+    let text = std::fs::read_to_string(support::corpus().join("toolpaths/jet_mm.ron")).expect("jet_mm.ron");
+    [("plasma", "Plasma torch"), ("laser", "Laser"), ("water jet", "Water jet")]
+        .into_iter()
+        .map(|(kind, name)| {
+            let path = dir.join(format!("jet_{}.ron", kind.replace(' ', "_")));
+            std::fs::write(&path, text.replace("\"Plasma torch\"", &format!("\"{name}\""))).expect("write a jet job");
+            (kind, path)
+        })
+        .collect()
+}
+
+/// Every corpus post over the jet job: the posts whose capabilities take
+/// jet operations post it (and verify reads the program, or says it does
+/// not read the dialect), or are refused with a diagnostic; none panics
+/// or leaves a file behind. The count by outcome is docs/fusion.md's jet
+/// table.
+#[test]
+fn corpus_fusion_posts_post_the_jet_job_or_say_why_not() {
+    let dir = shared();
+    if !dir.is_dir() {
+        support::referee_missing("corpus_fusion_posts", "../shared/corpus/fusion");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-jet-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let jobs = jet_jobs(&tmp);
+    let posts = posts(&dir);
+    let runs = each_post(&posts, &dir, &tmp, |post, name, out| {
+        let mut broken = Vec::new();
+        // The best outcome over the three processes: verified, then
+        // posted unverified, then posted with verify's findings, then the
+        // first process's refusal.
+        let rank = |r: &str| match r {
+            "posts and verifies" => 0,
+            UNREAD => 1,
+            r if r.starts_with("VF") => 2,
+            _ => 3,
+        };
+        let mut best: Option<String> = None;
+        for (kind, path) in &jobs {
+            let got = post_one(post, path, out, &format!("{name} ({kind})"), &mut broken);
+            let stop = got == REFUSES_JET || rank(&got) == 0;
+            if best.as_deref().is_none_or(|b| rank(&got) < rank(b)) {
+                best = Some(got);
+            }
+            if stop {
+                break;
+            }
+        }
+        (best.unwrap_or_default(), broken)
+    });
+    let _ = std::fs::remove_dir_all(&tmp);
+    let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut broken = Vec::new();
+    for (name, (result, mut wrong)) in runs {
+        broken.append(&mut wrong);
+        table.entry(result).or_default().push(name);
+    }
+    let mut summary = String::new();
+    for (what, names) in &table {
+        summary.push_str(&format!("{:>4}  {what}\n", names.len()));
+        if what != REFUSES_JET && what != "refuses milling (its capabilities)" {
+            for n in names {
+                summary.push_str(&format!("        {n}\n"));
+            }
+        }
+    }
+    println!("{summary}");
+    assert!(broken.is_empty(), "posts that panic or leave output behind:\n{}", broken.join("\n"));
+    let good = table.get("posts and verifies").map_or(0, Vec::len);
+    let posting = good + table.get(UNREAD).map_or(0, Vec::len);
+    assert!(
+        good >= JET_AT_LEAST,
+        "{good} corpus Fusion posts post and verify the jet job, fewer than {JET_AT_LEAST}:\n{summary}"
+    );
+    assert!(
+        posting >= JET_POSTING_AT_LEAST,
+        "{posting} corpus Fusion posts post the jet job, fewer than {JET_POSTING_AT_LEAST}:\n{summary}"
+    );
 }
