@@ -1,0 +1,306 @@
+//! Native CNC-Calc posts judged by Node.js: every Vectric post of the
+//! corpus (`corpus/posts/vectric/`), the real Vectric posts of
+//! `../shared/corpus/vectric/` and the posts below is converted with
+//! `postc convert --to cimco` (the CNC-Calc manual's entry points, docs/convert.md,
+//! "Native CNC-Calc posts"); each that converts runs under the Node.js
+//! CNC-Calc host (`tests/node_host/`) over every toolpath it applies to and
+//! must print, byte for byte, what `postc post` prints for the SOURCE post.
+//! A toolpath applies when it holds only what the CNC-Calc manual hands a post (one
+//! toolpath, no tool change, dwell, drilling or arc outside XY) in the
+//! post's units. The test prints the counts docs/convert.md records.
+//! Without Node.js the comparison is skipped, with a message, and fails
+//! under `CI=true`.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath, run_node};
+use crate::support::{compile_warned, corpus, diff, files, stem};
+use postc_backends::Target;
+use postc_ir::{Post, Units};
+
+/// Posts that exercise each rule a native post carries: FIRST_ sections
+/// after rapids and feed changes, plunge and retract sections, helix
+/// fallbacks (through an arc section that prints [Z], and cut into feed
+/// moves where none does), arcs cut into feed moves, block numbers,
+/// FEED_RATE_CHANGE, modal words, a CR LF line ending.
+const POSTS: &[(&str, &str)] = &[
+    (
+        "first_sections.pp",
+        r#"POST_NAME = "first sections (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+LINE_ENDING = "[13][10]"
+LINE_NUMBER_START = 10
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM = 100
+VAR LINE_NUMBER = [N|A|N|1.0]
+VAR FEED_RATE = [F|C|F|1.1]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A|I|1.4]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A|J|1.4]
+begin HEADER
+"%"
+"[N]G21 G90 G17"
+begin SPINDLE_ON
+"M3"
+begin TOOLCHANGE
+"M6"
+begin NEW_SEGMENT
+"(next)"
+begin RAPID_MOVE
+"[N]G0[X][Y][Z]"
+begin FIRST_FEED_MOVE
+"[N]G1[X][Y][Z][F]"
+begin FEED_MOVE
+"[N]G1[X][Y][Z]"
+begin PLUNGE_MOVE
+"[N]G1[Z][F] (plunge)"
+begin FIRST_CW_ARC_MOVE
+"[N]G2[X][Y][Z][I][J][F]"
+begin CW_ARC_MOVE
+"[N]G2[X][Y][Z][I][J]"
+begin FIRST_CCW_ARC_MOVE
+"[N]G3[X][Y][Z][I][J][F]"
+begin CCW_ARC_MOVE
+"[N]G3[X][Y][Z][I][J]"
+begin FOOTER
+"M5"
+"M30"
+"%"
+"#,
+    ),
+    (
+        "plain_sections.pp",
+        r#"POST_NAME = "plain sections (*.tap)"
+FILE_EXTENSION = "tap"
+UNITS = "MM"
+VAR FEED_RATE = [F|A|F|1.0]
+VAR X_POSITION = [X|A| X|1.4]
+VAR Y_POSITION = [Y|A| Y|1.4]
+VAR Z_POSITION = [Z|A| Z|1.4]
+VAR ARC_CENTRE_I_ABS_POSITION = [IA|A| I|1.3]
+VAR ARC_CENTRE_J_ABS_POSITION = [JA|A| J|1.3]
+VAR ARC_RADIUS = [Radius|A| R|1.3]
+begin HEADER
+"G90"
+begin INITIAL_RAPID_MOVE
+"G0 (first)[X][Y][Z]"
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+begin RETRACT_MOVE
+"G0 (up)[Z]"
+begin FEED_RATE_CHANGE
+"(feed)[F]"
+begin FEED_MOVE
+"G1[X][Y][Z]"
+begin FIRST_PLUNGE_MOVE
+"G1 (first plunge)[Z][F]"
+begin PLUNGE_MOVE
+"G1 (plunge)[Z]"
+begin CW_ARC_MOVE
+"G2[X][Y][IA][JA][Radius]"
+begin CCW_ARC_MOVE
+"G3[X][Y][IA][JA][Radius]"
+begin FOOTER
+"M30"
+"#,
+    ),
+    (
+        "no_arcs.pp",
+        r#"POST_NAME = "no arcs (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+VAR FEED_RATE = [F|C|F|1.0]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|+1.3]
+begin HEADER
+"G21"
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+begin FIRST_FEED_MOVE
+"G1[X][Y][Z][F]"
+begin FEED_MOVE
+"G1[X][Y][Z]"
+begin FOOTER
+"M2"
+"#,
+    ),
+    (
+        "helix.pp",
+        r#"POST_NAME = "helix (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+VAR FEED_RATE = [F|C|F|1.1]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A|I|1.3]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A|J|1.3]
+begin HEADER
+"G21"
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+begin FEED_MOVE
+"G1[X][Y][Z][F]"
+begin FIRST_CW_ARC_MOVE
+"G2[X][Y][I][J][F]"
+begin CW_ARC_MOVE
+"G2[X][Y][Z][I][J]"
+begin CCW_ARC_MOVE
+"G3[X][Y][I][J][F]"
+begin CCW_HELICAL_ARC_MOVE
+"G3 (helix)[X][Y][Z][I][J][F]"
+begin FOOTER
+"M30"
+"#,
+    ),
+];
+
+/// Which posts converted, and why the others did not.
+#[derive(Default)]
+struct Tally {
+    converted: usize,
+    warned: usize,
+    refused: BTreeMap<String, usize>,
+    compared: usize,
+}
+
+impl Tally {
+    fn show(&self, what: &str, total: usize) -> String {
+        let refused: Vec<String> = self.refused.iter().map(|(k, n)| format!("{n} {k}")).collect();
+        format!(
+            "{what}: {total} posts, {} converted ({} with warnings), {} programs identical under Node.js; refused: {}",
+            self.converted,
+            self.warned,
+            self.compared,
+            if refused.is_empty() { "none".into() } else { refused.join(", ") }
+        )
+    }
+}
+
+/// The toolpaths a native post is judged over: those holding only what
+/// the CNC-Calc manual hands a post, in the post's units.
+fn toolpaths(post: &Post) -> Vec<PathBuf> {
+    let units = post.info.units.unwrap_or(Units::Mm);
+    files(&corpus().join("toolpaths"), "ron")
+        .into_iter()
+        .filter(|t| {
+            let text = std::fs::read_to_string(t).unwrap_or_default();
+            let events: Vec<&str> = text.lines().filter(|l| !l.trim_start().starts_with("//")).collect();
+            let count = |name: &str| events.iter().filter(|l| l.trim_start().starts_with(name)).count();
+            let in_units = match units {
+                Units::Mm => text.contains("units: Mm") || text.contains("units:Mm"),
+                Units::Inch => text.contains("units: Inch") || text.contains("units:Inch"),
+            };
+            in_units
+                && count("ToolpathStart") <= 1
+                && count("Tool(") <= 1
+                && count("Dwell") == 0
+                && count("Drill") == 0
+                && !text.contains("plane:")
+                && count("Jet") == 0
+                && count("Power") == 0
+        })
+        .collect()
+}
+
+/// Converts and judges each post; returns the tally and the failures.
+fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
+    let mut tally = Tally::default();
+    for (n, path) in posts.iter().enumerate() {
+        let post = match compile_warned(path) {
+            Ok(p) => p,
+            Err(e) => {
+                *tally.refused.entry("do not compile".into()).or_default() += 1;
+                eprintln!("{e}");
+                continue;
+            }
+        };
+        let (js, warnings) = match postc_backends::convert_warned(&post, Target::Cimco) {
+            Ok(ok) => ok,
+            Err(reasons) => {
+                let mut codes: Vec<&str> = reasons.iter().map(|d| d.code).collect();
+                codes.sort_unstable();
+                codes.dedup();
+                *tally.refused.entry(codes.join("+")).or_default() += 1;
+                continue;
+            }
+        };
+        tally.converted += 1;
+        if !warnings.is_empty() {
+            tally.warned += 1;
+        }
+        let converted = dir.join(format!("{n}_{}.js", stem(path)));
+        std::fs::write(&converted, &js).expect("write the converted post");
+        for toolpath in toolpaths(&post) {
+            let pair = format!("{}__{}", path.display(), stem(&toolpath));
+            let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
+            if let Err(e) = export_jsonl(&toolpath, &jsonl) {
+                failures.push(format!("{pair}: cannot export the toolpath: {e}"));
+                continue;
+            }
+            let ours = match post_toolpath(&post, &toolpath) {
+                Ok(o) => o,
+                Err(e) => {
+                    failures.push(format!("{pair}: postc: {e}"));
+                    continue;
+                }
+            };
+            match run_node(&converted, &jsonl, &[]) {
+                Ok(theirs) if theirs == ours => tally.compared += 1,
+                Ok(theirs) => failures.push(format!(
+                    "{pair}: Node.js running the converted post (-) and postc posting the source (+) differ\n{}",
+                    diff(&theirs, &ours)
+                )),
+                Err(e) => failures.push(format!("{pair}: {e}")),
+            }
+        }
+    }
+    tally
+}
+
+fn real_posts() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
+    let mut real = Vec::new();
+    if let Ok(entries) = std::fs::read_dir(&dir) {
+        for entry in entries.flatten() {
+            if entry.path().is_dir() {
+                real.extend(files(&entry.path(), "pp"));
+            }
+        }
+    }
+    real.sort();
+    real
+}
+
+#[test]
+fn node_runs_native_posts_as_postc_posts_their_sources() {
+    if node_or_skip("convert_native").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut failures = Vec::new();
+    let mut own = Vec::new();
+    for (name, text) in POSTS {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).expect("write the post");
+        own.push(path);
+    }
+    let tests = judge(&own, dir.path(), &mut failures);
+    eprintln!("{}", tests.show("this test's posts", own.len()));
+    assert_eq!(tests.converted, POSTS.len(), "every post of this test converts: {}", failures.join("\n\n"));
+    assert!(tests.compared >= POSTS.len(), "only {} programs were compared", tests.compared);
+    let corpus_posts = files(&corpus().join("posts/vectric"), "pp");
+    let c = judge(&corpus_posts, dir.path(), &mut failures);
+    eprintln!("{}", c.show("corpus/posts/vectric", corpus_posts.len()));
+    let real = real_posts();
+    if !real.is_empty() {
+        let r = judge(&real, dir.path(), &mut failures);
+        eprintln!("{}", r.show("../shared/corpus/vectric", real.len()));
+    }
+    assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
+}
