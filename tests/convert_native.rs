@@ -15,7 +15,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath, run_node};
-use crate::support::{compile_warned, corpus, diff, files, stem};
+use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
 use postc_ir::{Post, Units};
 
@@ -160,6 +160,10 @@ begin FOOTER
     ),
 ];
 
+/// Diagnostics that mean a source was not read whole: `postc convert`
+/// stops on them.
+const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
+
 /// Which posts converted, and why the others did not.
 #[derive(Default)]
 struct Tally {
@@ -186,8 +190,9 @@ impl Tally {
 /// the CNC-Calc manual hands a post, in the post's units.
 fn toolpaths(post: &Post) -> Vec<PathBuf> {
     let units = post.info.units.unwrap_or(Units::Mm);
-    files(&corpus().join("toolpaths"), "ron")
-        .into_iter()
+    let mut all = files(&corpus().join("toolpaths"), "ron");
+    all.extend(files(&corpus().join("toolpaths/native"), "ron"));
+    all.into_iter()
         .filter(|t| {
             let text = std::fs::read_to_string(t).unwrap_or_default();
             let events: Vec<&str> = text.lines().filter(|l| !l.trim_start().starts_with("//")).collect();
@@ -212,6 +217,15 @@ fn toolpaths(post: &Post) -> Vec<PathBuf> {
 fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
     let mut tally = Tally::default();
     for (n, path) in posts.iter().enumerate() {
+        let mut sources = postc_report::source_map();
+        let compiled = postc_driver::compile_post(path, None, &mut sources);
+        // A source not read whole stops `convert` (docs/convert.md).
+        let unread: Vec<&str> =
+            compiled.diagnostics.iter().map(|d| d.code).filter(|c| NOT_READ_WHOLE.contains(c)).collect();
+        if !unread.is_empty() {
+            *tally.refused.entry(format!("{} (not read whole)", unread.join("+"))).or_default() += 1;
+            continue;
+        }
         let post = match compile_warned(path) {
             Ok(p) => p,
             Err(e) => {
@@ -303,4 +317,81 @@ fn node_runs_native_posts_as_postc_posts_their_sources() {
         eprintln!("{}", r.show("../shared/corpus/vectric", real.len()));
     }
     assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
+}
+
+/// The command line: a native post by default, with the warnings of what
+/// it leaves out at their lines; a refusal names the line and column and
+/// writes nothing; a section post only with `--postc-extension`.
+#[test]
+fn convert_writes_native_posts_and_section_posts_only_when_asked() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let (name, text) = POSTS[0];
+    let pp = dir.path().join(name);
+    std::fs::write(&pp, text).expect("write the post");
+    let js = dir.path().join("native.js");
+    let o = postc(&["convert", &pp.display().to_string(), "--to", "cimco", "-o", &js.display().to_string()]);
+    assert!(o.status.success(), "{}", said(&o));
+    let err = String::from_utf8_lossy(&o.stderr);
+    let line = text.lines().position(|l| l == "begin TOOLCHANGE").expect("a TOOLCHANGE section") + 1;
+    let at = format!("{name}:{line}:1");
+    assert!(err.contains("warning[CV008]") && err.contains("TOOLCHANGE is left out") && err.contains(&at), "{err}");
+    let native = std::fs::read_to_string(&js).expect("the converted post");
+    for entry in
+        ["function onOpen(", "function onLinear(vx, vy, vz, movement)", "function onCircular(", "function onClose("]
+    {
+        assert!(native.contains(entry), "{entry}\n{native}");
+    }
+    assert!(!native.contains("function HEADER(") && !native.contains("postcOptions"), "{native}");
+    let sections = dir.path().join("sections.js");
+    let o = postc(&[
+        "convert",
+        &pp.display().to_string(),
+        "--to",
+        "cimco",
+        "--postc-extension",
+        "-o",
+        &sections.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", said(&o));
+    assert!(std::fs::read_to_string(&sections).expect("the section post").contains("function HEADER("));
+    // A value CNC-Calc never hands: refused at its line and column, nothing written.
+    let refused = dir.path().join("refused.js");
+    let o =
+        postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "cimco", "-o", &refused.display().to_string()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("error[CV007]") && err.contains("`[T]` in HEADER") && err.contains("gcode_mm.pp:50:"),
+        "{err}"
+    );
+    assert!(!refused.exists(), "a refused conversion writes nothing");
+}
+
+/// A Vectric post whose POST_BASE file is missing stops `convert`, as an
+/// error, in every target, and nothing is written.
+#[test]
+fn a_missing_post_base_stops_convert_in_every_target() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post = dir.path().join("child.pp");
+    std::fs::write(&post, "POST_NAME = \"child (*.nc)\"\nPOST_BASE = \"missing_base.pp\"\nbegin FOOTER\n\"M30\"\n")
+        .expect("write the post");
+    for (target, extension) in
+        [("vectric", false), ("vcpost", false), ("cimco", false), ("cimco", true), ("ron", false)]
+    {
+        let out = dir.path().join(format!("out-{target}-{extension}"));
+        let mut args = vec!["convert".to_string(), post.display().to_string(), "--to".into(), target.into()];
+        if extension {
+            args.push("--postc-extension".into());
+        }
+        args.extend(["-o".to_string(), out.display().to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = postc(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{target}: {err}");
+        assert!(err.contains("error[PP019]") && err.contains("child.pp:2:13"), "{target}: {err}");
+        assert!(!out.exists(), "{target}: nothing is written");
+    }
+    // `post` and `check` still read the post without its base, with a warning.
+    let o = postc(&["check", &post.display().to_string()]);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("warning[PP019]"), "{}", said(&o));
 }

@@ -154,7 +154,10 @@ impl Printer<'_> {
             ("a lathe mapping", o.lathe != d.lathe),
             ("modal memory kept across toolpaths", !o.forget_modal_at_toolpath_start),
             ("tape splitting (TAPE_SPLITTING)", o.tape_splitting.is_some()),
-            ("a wrapped rotary axis (ROTARY_WRAP)", o.rotary_wrap.is_some()),
+            (
+                "a wrapped rotary axis (ROTARY_WRAP), whose angle comes from the job's wrap diameter, never handed to a CNC-Calc post,",
+                o.rotary_wrap.is_some(),
+            ),
             ("a smallest arc radius (MIN_ARC_RADIUS)", o.min_arc_radius.is_some()),
             ("a largest arc radius (MAX_ARC_RADIUS)", o.max_arc_radius.is_some()),
             ("inverse-time feeds (INVERSE_TIME_MODE)", o.inverse_time_feed),
