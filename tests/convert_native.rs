@@ -4,7 +4,8 @@
 //! `postc convert --to cimco` (the CNC-Calc manual's entry points, docs/convert.md,
 //! "Native CNC-Calc posts"); each that converts runs under the Node.js
 //! CNC-Calc host (`tests/node_host/`) over every toolpath it applies to and
-//! must print, byte for byte, what `postc post` prints for the SOURCE post.
+//! must print, byte for byte, what `postc post` prints for the SOURCE post
+//! (and so must postc's own CNC-Calc host running the converted post).
 //! A toolpath applies when it holds only what the CNC-Calc manual hands a post (one
 //! toolpath, no tool change, dwell, drilling or arc outside XY) in the
 //! post's units. The test prints the counts docs/convert.md records.
@@ -250,6 +251,14 @@ fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
         }
         let converted = dir.join(format!("{n}_{}.js", stem(path)));
         std::fs::write(&converted, &js).expect("write the converted post");
+        // postc's own CNC-Calc host runs the converted post too.
+        let again = match compile_warned(&converted) {
+            Ok(p) => Some(p),
+            Err(e) => {
+                failures.push(format!("{}: postc does not compile the converted post: {e}", path.display()));
+                None
+            }
+        };
         for toolpath in toolpaths(&post) {
             let pair = format!("{}__{}", path.display(), stem(&toolpath));
             let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
@@ -264,6 +273,16 @@ fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
                     continue;
                 }
             };
+            if let Some(again) = &again {
+                match post_toolpath(again, &toolpath) {
+                    Ok(o) if o == ours => {}
+                    Ok(o) => failures.push(format!(
+                        "{pair}: postc posting the converted post (-) and the source (+) differ\n{}",
+                        diff(&o, &ours)
+                    )),
+                    Err(e) => failures.push(format!("{pair}: postc posting the converted post: {e}")),
+                }
+            }
             match run_node(&converted, &jsonl, &[]) {
                 Ok(theirs) if theirs == ours => tally.compared += 1,
                 Ok(theirs) => failures.push(format!(

@@ -592,7 +592,7 @@ function arcSection(kind, f, section, cx, cy, ex, ey, ez) {{
     arcJ = cy - y;
     arcIA = cx;
     arcJA = cy;
-    arcRadius = Math.hypot(x - cx, y - cy);
+    arcRadius = distance(x - cx, y - cy);
     x = ex;
     y = ey;
     z = ez;
@@ -604,10 +604,10 @@ function arcSection(kind, f, section, cx, cy, ex, ey, ez) {{
 function linearize(cx, cy, ex, ey, ez, isCW, f) {{
     var TAU = 2 * Math.PI;
     var sx = x, sy = y, sz = z;
-    var r = Math.hypot(sx - cx, sy - cy);
+    var r = distance(sx - cx, sy - cy);
     var a0 = Math.atan2(sy - cy, sx - cx);
     var a1 = Math.atan2(ey - cy, ex - cx);
-    var closed = Math.hypot(ex - sx, ey - sy) <= 1e-9 * Math.max(r, 1);
+    var closed = distance(ex - sx, ey - sy) <= 1e-9 * Math.max(r, 1);
     var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
     if (turn <= 1e-12) {{
         turn = TAU;
@@ -631,6 +631,11 @@ function linearize(cx, cy, ex, ey, ez, isCW, f) {{
         }}
     }}
     return out;
+}}
+
+// The length of (dx, dy), in ECMAScript 5 (CNC-Calc's JavaScript has no Math.hypot).
+function distance(dx, dy) {{
+    return Math.sqrt(dx * dx + dy * dy);
 }}
 
 function remainder(a, b) {{
@@ -731,7 +736,7 @@ function formatNumber(f, value) {
             if (d[i] == "9") {
                 d[i] = "0";
             } else {
-                d[i] = String.fromCharCode(d[i].charCodeAt(0) + 1);
+                d[i] = String(Number(d[i]) + 1);
                 break;
             }
         }
