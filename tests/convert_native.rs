@@ -24,7 +24,8 @@ use postc_ir::{Post, Units};
 /// after rapids and feed changes, plunge and retract sections, helix
 /// fallbacks (through an arc section that prints [Z], and cut into feed
 /// moves where none does), arcs cut into feed moves, block numbers,
-/// FEED_RATE_CHANGE, modal words, a CR LF line ending.
+/// FEED_RATE_CHANGE, modal words, a CR LF line ending, and number formats
+/// (signs, zero and blank padding, a decimal comma, multipliers).
 const POSTS: &[(&str, &str)] = &[
     (
         "first_sections.pp",
@@ -155,6 +156,32 @@ begin CCW_ARC_MOVE
 "G3[X][Y][I][J][F]"
 begin CCW_HELICAL_ARC_MOVE
 "G3 (helix)[X][Y][Z][I][J][F]"
+begin FOOTER
+"M30"
+"#,
+    ),
+    (
+        "formats.pp",
+        r#"POST_NAME = "formats (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+VAR FEED_RATE = [F|C| F|#1.0|0.5]
+VAR X_POSITION = [X|C| X|+1.3]
+VAR Y_POSITION = [Y|C| Y|08.2]
+VAR Z_POSITION = [Z|C| Z|-9,3]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A| I|+010.4|2]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A| J|0.1]
+VAR ARC_RADIUS = [Radius|A| R|1.5]
+begin HEADER
+"(formats)"
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+begin FEED_MOVE
+"G1[X][Y][Z][F]|"
+begin CW_ARC_MOVE
+"G2[X][Y][I][J][Radius][F]"
+begin CCW_ARC_MOVE
+"G3[X][Y][I][J][Radius][F]"
 begin FOOTER
 "M30"
 "#,
