@@ -188,6 +188,15 @@ impl Printer<'_> {
                 );
                 continue;
             }
+            if matches!(section, Section::DrillHeader | Section::DrillPoint | Section::DrillFooter) {
+                self.refuse(
+                    codes::CV010.code,
+                    h.span,
+                    format!("{} is postc's drilling section; the converted post drills each hole with moves, as a Vectric post without it does", section.name()),
+                    "CNC-Calc hands a drilling operation to onDrillingHeader, onDrillingPoint and onDrillingFooter, whose lines the converted post makes from its move sections",
+                );
+                continue;
+            }
             let Some(&(_, call)) = CALLED.iter().find(|(s, _)| *s == section) else {
                 self.warnings.push(
                     Diagnostic::warning(
@@ -570,20 +579,81 @@ function feedTo(vx, vy, vz, plunge, f) {{
     {feeds}
 }}
 
-function onLinear(vx, vy, vz, movement) {{
+// A rapid to (vx, vy, vz): INITIAL_RAPID_MOVE first, RETRACT_MOVE straight up.
+function rapidTo(vx, vy, vz) {{
     var out = "";
+    var retract = vx == x && vy == y && vz > z;
+    x = vx;
+    y = vy;
+    z = vz;
+    {rapid}
+    firstRapid = false;
+    lastKind = "rapid";
+    afterRapid();
+    return out;
+}}
+
+function onLinear(vx, vy, vz, movement) {{
     if (movement == MOVEMENT_RAPID) {{
-        var retract = vx == x && vy == y && vz > z;
-        x = vx;
-        y = vy;
-        z = vz;
-        {rapid}
-        firstRapid = false;
-        lastKind = "rapid";
-        afterRapid();
-        return out;
+        return rapidTo(vx, vy, vz);
     }}
     return feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE, feedOf(movement));
+}}
+
+// The drilling operations the post offers. Vectric posts have no cycle
+// sections: each hole is drilled with moves, as Vectric drills it (rapid
+// to the retract plane and the safe distance, feed down, in pecks for
+// peck drilling and chip breaking, rapid back to the retract plane).
+var MillDrillingFields = [
+    {{name: "Drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: false, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
+    {{name: "Peck drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
+    {{name: "Chip breaking", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}}
+];
+var drilling = null;
+
+function onDrillingHeader(drillHeader) {{
+    drilling = drillHeader;
+    return "";
+}}
+
+function onDrillingPoint(px, py) {{
+    var h = drilling;
+    var clear = h.retractPlane;
+    var reference = h.safeDistanceIsAbsolute ? h.safeDistance : h.referencePlane + h.safeDistance;
+    var depth = h.endDepthIsAbsolute ? h.endDepth : h.referencePlane - h.endDepth;
+    var f = h.plungingFeedrate == 0 ? NaN : h.plungingFeedrate;
+    var pecking = h.name == "Peck drilling" || h.name == "Chip breaking";
+    var peck = pecking && h.firstDepth > 0 ? h.firstDepth : 0;
+    if (peck > 0 && (reference - depth) / peck > 1000) {{
+        peck = (reference - depth) / 1000;
+    }}
+    var out = "";
+    if (z < clear) {{
+        out += rapidTo(x, y, clear);
+    }}
+    out += rapidTo(px, py, clear);
+    if (reference < clear) {{
+        out += rapidTo(px, py, reference);
+    }}
+    if (peck > 0) {{
+        var at = reference;
+        while (at - depth > 1e-9) {{
+            at = Math.max(at - peck, depth);
+            out += feedTo(px, py, at, true, f);
+            if (at > depth) {{
+                out += rapidTo(px, py, h.name == "Peck drilling" ? reference : at + 0.5 * peck);
+                out += rapidTo(px, py, at);
+            }}
+        }}
+    }} else {{
+        out += feedTo(px, py, depth, true, f);
+    }}
+    return out + rapidTo(px, py, clear);
+}}
+
+function onDrillingFooter() {{
+    drilling = null;
+    return "";
 }}
 
 // An arc through its section: the arc words from the centre and the start.
@@ -670,15 +740,13 @@ fn never_called(s: Section) -> &'static str {
         }
         Section::SpindleOff | Section::Coolant => "the CNC-Calc manual has no spindle or coolant call",
         Section::CutterComp => "the converted post does not yet print onCompensation",
-        Section::DrillHeader | Section::DrillPoint | Section::DrillFooter => {
-            "the converted post does not yet print onDrillingHeader, onDrillingPoint and onDrillingFooter"
-        }
         _ => "the CNC-Calc manual has no call for it",
     }
 }
 
 /// The note under the conversion note: what the engine calls.
-const NATIVE_NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, onCircular and onClose;
+const NATIVE_NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, onCircular, the
+// onDrilling functions and onClose;
 // the Vectric rules of the source (which section prints each move) are
 // the state below.
 ";
