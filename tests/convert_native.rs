@@ -1,6 +1,7 @@
 //! Native CNC-Calc posts judged by Node.js: every Vectric post of the
 //! corpus (`corpus/posts/vectric/`), the real Vectric posts of
-//! `../shared/corpus/vectric/` and the posts below is converted with
+//! `../shared/corpus/vectric/` and the posts below (as Vectric posts and
+//! as VcPost section posts) is converted with
 //! `postc convert --to cimco` (the CNC-Calc manual's entry points, docs/convert.md,
 //! "Native CNC-Calc posts"); each that converts runs under the Node.js
 //! CNC-Calc host (`tests/node_host/`) over every toolpath it applies to and
@@ -277,8 +278,16 @@ fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
         }
         let converted = dir.join(format!("{n}_{}.js", stem(path)));
         std::fs::write(&converted, &js).expect("write the converted post");
-        // postc's own CNC-Calc host runs the converted post too.
+        // postc's own CNC-Calc host runs the converted post too, natively
+        // (no function left to a script).
         let again = match compile_warned(&converted) {
+            Ok(p)
+                if !p.scripts.is_empty()
+                    || p.functions.iter().any(|f| !matches!(f.body, postc_ir::Body::Native(_))) =>
+            {
+                failures.push(format!("{}: the converted post does not lower to native IR whole", path.display()));
+                Some(p)
+            }
             Ok(p) => Some(p),
             Err(e) => {
                 failures.push(format!("{}: postc does not compile the converted post: {e}", path.display()));
@@ -353,6 +362,18 @@ fn node_runs_native_posts_as_postc_posts_their_sources() {
     eprintln!("{}", tests.show("this test's posts", own.len()));
     assert_eq!(tests.converted, POSTS.len(), "every post of this test converts: {}", failures.join("\n\n"));
     assert!(tests.compared >= POSTS.len(), "only {} programs were compared", tests.compared);
+    // The same posts as VcPost section posts (`--to vcpost`), converted on.
+    let mut vcpost = Vec::new();
+    for path in &own {
+        let post = compile_warned(path).expect("the test's post compiles");
+        let text = postc_backends::convert(&post, Target::VcPost).expect("a section post converts to VcPost");
+        let to = path.with_extension("VcPost");
+        std::fs::write(&to, text).expect("write the VcPost post");
+        vcpost.push(to);
+    }
+    let v = judge(&vcpost, dir.path(), &mut failures);
+    eprintln!("{}", v.show("this test's posts as VcPost section posts", vcpost.len()));
+    assert_eq!(v.converted, POSTS.len(), "every VcPost section post converts: {}", failures.join("\n\n"));
     let corpus_posts = files(&corpus().join("posts/vectric"), "pp");
     let c = judge(&corpus_posts, dir.path(), &mut failures);
     eprintln!("{}", c.show("corpus/posts/vectric", corpus_posts.len()));

@@ -684,7 +684,7 @@ function linearize(cx, cy, ex, ey, ez, isCW, f) {{
     }}
     var sweep = isCW ? -turn : turn;
     var n = 1;
-    if (r > 0 && isFinite(r)) {{
+    if (r > 0 && r < Infinity) {{
         var ratio = Math.min(Math.max(chordTolerance / r, 0), 1);
         var step = 2 * Math.acos(1 - ratio);
         n = step <= 0 ? 1000000 : Math.min(Math.max(Math.ceil(Math.abs(sweep) / step), 1), 1000000);
