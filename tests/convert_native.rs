@@ -26,7 +26,8 @@ use postc_ir::{Post, Units};
 /// fallbacks (through an arc section that prints [Z], and cut into feed
 /// moves where none does), arcs cut into feed moves, block numbers,
 /// FEED_RATE_CHANGE, modal words, a CR LF line ending, and number formats
-/// (signs, zero and blank padding, a decimal comma, multipliers).
+/// (signs, zero and blank padding, a decimal comma, multipliers) and every
+/// arc word (start, mid point, sweep, K).
 const POSTS: &[(&str, &str)] = &[
     (
         "first_sections.pp",
@@ -183,6 +184,29 @@ begin CW_ARC_MOVE
 "G2[X][Y][I][J][Radius][F]"
 begin CCW_ARC_MOVE
 "G3[X][Y][I][J][Radius][F]"
+begin FOOTER
+"M30"
+"#,
+    ),
+    (
+        "arc_words.pp",
+        r#"POST_NAME = "arc words (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR FEED_RATE = [F|C|F|1.0]
+begin HEADER
+"(arc words)"
+begin RAPID_MOVE
+"G0[X][Y][Z]"
+begin FEED_MOVE
+"G1[X][Y][Z][F]"
+begin CW_ARC_MOVE
+"G2[X][Y][Z] S[ArcStartX],[ArcStartY] M[ArcMidX],[ArcMidY] D[ArcMidXI],[ArcMidYI] A[Angle] K[K] KA[KA] I[IA] J[JA][F]"
+begin CCW_ARC_MOVE
+"G3[X][Y][Z] S[ArcStartX],[ArcStartY] M[ArcMidX],[ArcMidY] D[ArcMidXI],[ArcMidYI] A[Angle] K[K] KA[KA] I[IA] J[JA][F]"
 begin FOOTER
 "M30"
 "#,

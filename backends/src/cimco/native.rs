@@ -94,6 +94,15 @@ fn handed(q: Quantity) -> Option<&'static str> {
         Quantity::J => "arcJ",
         Quantity::IA => "arcIA",
         Quantity::JA => "arcJA",
+        Quantity::K => "arcK",
+        Quantity::KA => "arcKA",
+        Quantity::ArcStartX => "arcStartX",
+        Quantity::ArcStartY => "arcStartY",
+        Quantity::ArcMidX => "arcMidX",
+        Quantity::ArcMidY => "arcMidY",
+        Quantity::ArcMidXI => "arcMidXI",
+        Quantity::ArcMidYI => "arcMidYI",
+        Quantity::Angle => "arcAngle",
         Quantity::Radius => "arcRadius",
         Quantity::Feed => "feed",
         Quantity::BlockNumber => "blockNumber",
@@ -226,15 +235,7 @@ impl Printer<'_> {
                             let var = &post.variables[v.index()];
                             let ValueSource::Quantity(q) = var.source else { continue };
                             let before = BEFORE_MOVES.contains(&section)
-                                && matches!(
-                                    q,
-                                    Quantity::Feed
-                                        | Quantity::I
-                                        | Quantity::J
-                                        | Quantity::IA
-                                        | Quantity::JA
-                                        | Quantity::Radius
-                                );
+                                && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
                             // A rapid prints the feed Vectric holds, the tool's
                             // before the first feed move: not handed.
                             let before = before
@@ -346,7 +347,8 @@ impl Printer<'_> {
 // memory starts afresh with the program, as each of its toolpaths does.
 var x = NaN, y = NaN, z = NaN;
 var feed = NaN;
-var arcI = NaN, arcJ = NaN, arcIA = NaN, arcJA = NaN, arcRadius = NaN;
+var arcI = NaN, arcJ = NaN, arcK = NaN, arcIA = NaN, arcJA = NaN, arcKA = NaN, arcRadius = NaN, arcAngle = NaN;
+var arcStartX = NaN, arcStartY = NaN, arcMidX = NaN, arcMidY = NaN, arcMidXI = NaN, arcMidYI = NaN;
 // FIRST_ sections print the first move of a run of one kind and again
 // when the feed changes: the kind and feed of the last move printed.
 var lastKind = "";
@@ -508,7 +510,7 @@ function afterRapid() {{
                 self.pick(helical.0, helical.1, &format!("(lastKind != \"{helix_kind}\" || lastFeed !== f)"))
             {
                 body.push_str(&format!(
-                    "if (helical) {{\n            return arcSection(\"{helix_kind}\", f, {s}, cx, cy, ex, ey, ez);\n        }}\n        "
+                    "if (helical) {{\n            return arcSection(\"{helix_kind}\", f, {s}, cx, cy, ex, ey, ez, isCW);\n        }}\n        "
                 ));
             }
             if let Some(s) = self.pick(flat.0, flat.1, &format!("(lastKind != \"{dir}\" || lastFeed !== f)")) {
@@ -527,7 +529,7 @@ function afterRapid() {{
                     _ => plain_z.to_string(),
                 };
                 body.push_str(&format!(
-                    "if (!helical || {helix_ok}) {{\n            return arcSection(\"{dir}\", f, {s}, cx, cy, ex, ey, ez);\n        }}\n        "
+                    "if (!helical || {helix_ok}) {{\n            return arcSection(\"{dir}\", f, {s}, cx, cy, ex, ey, ez, isCW);\n        }}\n        "
                 ));
             }
             body.push_str("return linearize(cx, cy, ex, ey, ez, isCW, f);");
@@ -656,13 +658,24 @@ function onDrillingFooter() {{
     return "";
 }}
 
-// An arc through its section: the arc words from the centre and the start.
-function arcSection(kind, f, section, cx, cy, ex, ey, ez) {{
+// An arc through its section: the arc words from the centre, the start
+// (the last end point) and the sweep.
+function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {{
+    var g = arcGeometry(cx, cy, ex, ey, isCW);
     arcI = cx - x;
     arcJ = cy - y;
+    arcK = 0;
     arcIA = cx;
     arcJA = cy;
-    arcRadius = distance(x - cx, y - cy);
+    arcKA = z;
+    arcRadius = g.r;
+    arcAngle = g.sweep;
+    arcStartX = x;
+    arcStartY = y;
+    arcMidX = cx + g.r * Math.cos(g.a0 + g.sweep * 0.5);
+    arcMidY = cy + g.r * Math.sin(g.a0 + g.sweep * 0.5);
+    arcMidXI = arcMidX - x;
+    arcMidYI = arcMidY - y;
     x = ex;
     y = ey;
     z = ez;
@@ -672,17 +685,9 @@ function arcSection(kind, f, section, cx, cy, ex, ey, ez) {{
 // An arc the post has no section for, cut into equal-angle chords within
 // the chord tolerance, each a feed move.
 function linearize(cx, cy, ex, ey, ez, isCW, f) {{
-    var TAU = 2 * Math.PI;
-    var sx = x, sy = y, sz = z;
-    var r = distance(sx - cx, sy - cy);
-    var a0 = Math.atan2(sy - cy, sx - cx);
-    var a1 = Math.atan2(ey - cy, ex - cx);
-    var closed = distance(ex - sx, ey - sy) <= 1e-9 * Math.max(r, 1);
-    var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
-    if (turn <= 1e-12) {{
-        turn = TAU;
-    }}
-    var sweep = isCW ? -turn : turn;
+    var g = arcGeometry(cx, cy, ex, ey, isCW);
+    var sz = z;
+    var r = g.r, a0 = g.a0, sweep = g.sweep;
     var n = 1;
     if (r > 0 && r < Infinity) {{
         var ratio = Math.min(Math.max(chordTolerance / r, 0), 1);
@@ -701,6 +706,22 @@ function linearize(cx, cy, ex, ey, ez, isCW, f) {{
         }}
     }}
     return out;
+}}
+
+// The arc from the last end point to (ex, ey) around (cx, cy): its
+// radius, start angle and signed sweep (counter-clockwise positive; a
+// closed arc is a full turn).
+function arcGeometry(cx, cy, ex, ey, isCW) {{
+    var TAU = 2 * Math.PI;
+    var r = distance(x - cx, y - cy);
+    var a0 = Math.atan2(y - cy, x - cx);
+    var a1 = Math.atan2(ey - cy, ex - cx);
+    var closed = distance(ex - x, ey - y) <= 1e-9 * Math.max(r, 1);
+    var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
+    if (turn <= 1e-12) {{
+        turn = TAU;
+    }}
+    return {{r: r, a0: a0, sweep: isCW ? -turn : turn}};
 }}
 
 // The length of (dx, dy), in ECMAScript 5 (CNC-Calc's JavaScript has no Math.hypot).
