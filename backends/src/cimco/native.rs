@@ -547,7 +547,8 @@ function afterRapid() {{
 // feed changed, then the section; the run's kind and feed are kept.
 function feedSection(kind, f, section) {{
     var out = "";
-    feed = f;
+    // A feed of zero is none: [F] prints nothing.
+    feed = f == 0 ? NaN : f;
     if (lastFeed !== f) {{
         {rate_change}
     }}
@@ -560,10 +561,9 @@ function feedSection(kind, f, section) {{
 }}
 
 // The feed getFeedrate gives for a movement, as a number (it returns the
-// word, "F" and the number); none when it is zero.
+// word, "F" and the number).
 function feedOf(movement) {{
-    var f = parseFloat(getFeedrate(movement).substring(1));
-    return f == 0 ? NaN : f;
+    return parseFloat(getFeedrate(movement).substring(1));
 }}
 
 // A straight feed move to (vx, vy, vz): a plunge when the engine says so,
@@ -623,7 +623,7 @@ function onDrillingPoint(px, py) {{
     var clear = h.retractPlane;
     var reference = h.safeDistanceIsAbsolute ? h.safeDistance : h.referencePlane + h.safeDistance;
     var depth = h.endDepthIsAbsolute ? h.endDepth : h.referencePlane - h.endDepth;
-    var f = h.plungingFeedrate == 0 ? NaN : h.plungingFeedrate;
+    var f = h.plungingFeedrate;
     var pecking = h.name == "Peck drilling" || h.name == "Chip breaking";
     var peck = pecking && h.firstDepth > 0 ? h.firstDepth : 0;
     if (peck > 0 && (reference - depth) / peck > 1000) {{
