@@ -485,3 +485,52 @@ fn a_missing_post_base_stops_convert_in_every_target() {
     let o = postc(&["check", &post.display().to_string()]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("warning[PP019]"), "{}", said(&o));
 }
+
+/// Numbers near every rounding edge (ties at the last decimal, values
+/// that round to a negative zero, tiny and large magnitudes, JavaScript's
+/// exponent forms) print through the converted posts' number formats
+/// under Node.js as the source posts print them.
+#[test]
+fn native_number_formats_print_as_vectric_formats_under_node() {
+    if node_or_skip("convert_native").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut ron = String::from(
+        "Job(units: Mm)\nTool(number: 1, name: \"T\", diameter: 6, spindle_speed: 1000, cut_feed: 1000, plunge_feed: 200)\nToolpathStart(name: \"edges\")\nRapid(x: 0, y: 0, z: 5)\n",
+    );
+    let mut values = Vec::new();
+    for i in 0..400i32 {
+        let k = f64::from(i);
+        values.push(k * 0.0005 - 0.1);
+        values.push(-(k * 1.0005e-3));
+        values.push(k * 1e-7);
+        values.push(123_456.0 + k * 0.00125);
+        values.push(2.675 + k * 0.005);
+        values.push(-0.00049 * k);
+        values.push(-999_999.0 + k * 0.0015);
+    }
+    for w in values.chunks(3) {
+        let (x, y, z) = (w[0], w.get(1).copied().unwrap_or(0.0), w.get(2).copied().unwrap_or(0.0));
+        ron.push_str(&format!("Feed(x: {x:?}, y: {y:?}, z: {z:?})\n"));
+    }
+    ron.push_str("ToolpathEnd\nEnd\n");
+    let toolpath = dir.path().join("edges.ron");
+    std::fs::write(&toolpath, ron).expect("write the toolpath");
+    let jsonl = dir.path().join("edges.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export the toolpath");
+    let mut compared = 0;
+    for (name, text) in POSTS.iter().filter(|(n, _)| ["formats.pp", "first_sections.pp"].contains(n)) {
+        let pp = dir.path().join(name);
+        std::fs::write(&pp, text).expect("write the post");
+        let post = compile_warned(&pp).expect("compiles");
+        let js = postc_backends::convert(&post, Target::Cimco).expect("converts");
+        let converted = pp.with_extension("js");
+        std::fs::write(&converted, js).expect("write the converted post");
+        let ours = post_toolpath(&post, &toolpath).expect("postc posts the source");
+        let theirs = run_node(&converted, &jsonl, &[]).expect("Node.js posts the converted post");
+        assert!(theirs == ours, "{name}: Node.js (-) and postc (+) differ\n{}", diff(&theirs, &ours));
+        compared += 1;
+    }
+    assert_eq!(compared, 2);
+}
