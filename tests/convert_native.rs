@@ -457,6 +457,21 @@ fn convert_writes_native_posts_and_section_posts_only_when_asked() {
     assert!(!refused.exists(), "a refused conversion writes nothing");
 }
 
+/// A feed printed finer than the tenth getFeedrate hands is warned of at
+/// its line; a coarser one (a multiplier to feeds per second) is not.
+#[test]
+fn feeds_finer_than_the_engine_hands_are_warned_of() {
+    for (format, warned) in [("1.2", true), ("1.1", false), ("1.2|0.0166667", false), ("1.0", false)] {
+        let text = format!(
+            "POST_NAME = \"feeds (*.nc)\"\nUNITS = \"MM\"\nVAR FEED_RATE = [F|C|F|{format}]\nbegin HEADER\n\"G21\"\nbegin FEED_MOVE\n\"G1[X][Y][F]\"\n"
+        );
+        let post = crate::support::compile_text("feeds.pp", &text);
+        let (_, warnings) = postc_backends::convert_warned(&post, Target::Cimco).expect("converts");
+        let found = warnings.iter().any(|d| d.code == "CV011");
+        assert_eq!(found, warned, "{format}: {warnings:?}");
+    }
+}
+
 /// A Vectric post whose POST_BASE file is missing stops `convert`, as an
 /// error, in every target, and nothing is written.
 #[test]

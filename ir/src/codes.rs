@@ -1500,6 +1500,11 @@ declare_codes! {
     /// lines that are not empty).
     CV010: Error, "a rule of the source the target engine gives the post no way to follow (which arcs plunge, empty lines)",
         fix = "Drop the construct from the source post, or convert with `--postc-extension`.";
+    /// The target engine hands a value the post prints with less precision than the post prints
+    /// it: CNC-Calc's getFeedrate gives the feed to a tenth (a feed per minute), and a post that
+    /// prints finer feeds prints the engine's tenth.
+    CV011: Warning, "the target engine hands a value with less precision than the converted post prints it (the feed, to a tenth)",
+        fix = "Print the feed to a tenth or coarser, or check that the machine's feeds are given to a tenth.";
     /// verify reads G-code programs; this one is HPGL, ShopBot, Heidenhain conversational, or
     /// text whose first blocks cannot be read. It is refused, and the message says which families
     /// verify reads.

@@ -18,6 +18,8 @@
 //! - a rule the engine gives the post no way to follow (helical plunge
 //!   sections: the engine does not say which arcs plunge; an empty line,
 //!   which the engine does not write) is `CV010`;
+//! - a feed printed finer than the tenth `getFeedrate` hands is warned of
+//!   (`CV011`);
 //! - output options the printed post does not carry are `CV004`, code is
 //!   `CV002`, a post driven by APT words is `CV001`.
 
@@ -241,6 +243,17 @@ impl Printer<'_> {
                             let before = before
                                 || (matches!(section, Section::RapidMove | Section::InitialRapidMove)
                                     && q == Quantity::Feed);
+                            if q == Quantity::Feed && feed_finer_than_handed(&post.formats[var.format.index()]) {
+                                let mut d = Diagnostic::warning(
+                                    codes::CV011.code,
+                                    format!("`[F]` in {} prints the feed finer than CNC-Calc hands it: to a tenth", section.name()),
+                                )
+                                .note("the converted post reads the feed from getFeedrate, which formats it to a tenth (docs/cimco.md)");
+                                if let Some(span) = *span {
+                                    d = d.at(span, "printed finer than a tenth");
+                                }
+                                self.warnings.push(d);
+                            }
                             if handed(q).is_none() || before {
                                 self.refuse(
                                     codes::CV007.code,
@@ -747,6 +760,13 @@ function onClose() {{
 "#
         ));
     }
+}
+
+/// Whether a feed format prints finer steps than the tenth getFeedrate
+/// hands (in the feed's units, before the multiplier).
+fn feed_finer_than_handed(f: &NumberFormat) -> bool {
+    let step = 10f64.powi(-i32::from(f.decimals)) / f.multiplier.abs();
+    f.multiplier != 0.0 && step < 0.1 - 1e-12
 }
 
 /// Why the engine never calls a section.
