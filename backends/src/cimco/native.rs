@@ -298,7 +298,15 @@ impl Printer<'_> {
         self.out.push_str(NATIVE_NOTE);
         self.out.push('\n');
         let le = &self.post.options.line_ending;
-        let text = String::from_utf8(le.clone()).unwrap_or_else(|_| "\n".into());
+        let Some(text) = std::str::from_utf8(le).ok().filter(|t| !t.is_empty()).map(str::to_string) else {
+            self.refuse(
+                codes::CV004.code,
+                self.post.info.span,
+                "a line ending (LINE_ENDING) that is not text".into(),
+                "the converted post sets `linebreak`, a JavaScript string",
+            );
+            return;
+        };
         self.out.push_str(&format!("var linebreak = {};\n\n", js_string(&text)));
     }
 
