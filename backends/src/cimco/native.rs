@@ -549,13 +549,26 @@ function afterRapid() {{
                     (true, false) => first_z.to_string(),
                     _ => plain_z.to_string(),
                 };
-                body.push_str(&format!(
-                    "if (!helical || {helix_ok}) {{\n            return arcSection(\"{dir}\", f, {s}, cx, cy, ex, ey, ez, isCW);\n        }}\n        "
-                ));
+                let call = format!("return arcSection(\"{dir}\", f, {s}, cx, cy, ex, ey, ez, isCW);");
+                match helix_ok.as_str() {
+                    // Every arc, flat or helical, prints through the section.
+                    "true" => {
+                        body.push_str(&call);
+                        arcs.push_str(&format!(
+                            "if ({}isCW) {{\n        {body}\n    }}\n    ",
+                            if cw { "" } else { "!" }
+                        ));
+                        continue;
+                    }
+                    "false" => body.push_str(&format!("if (!helical) {{\n            {call}\n        }}\n        ")),
+                    _ => body
+                        .push_str(&format!("if (!helical || {helix_ok}) {{\n            {call}\n        }}\n        ")),
+                }
             }
             body.push_str("return linearize(cx, cy, ex, ey, ez, isCW, f);");
             arcs.push_str(&format!("if ({}isCW) {{\n        {body}\n    }}\n    ", if cw { "" } else { "!" }));
         }
+        let arcs = arcs.trim_end();
         let footer = call(Section::Footer, self);
         self.out.push_str(&format!(
             r#"function onOpen(isClipboard) {{
