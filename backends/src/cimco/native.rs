@@ -236,13 +236,15 @@ impl Printer<'_> {
                         Piece::Var(v) => {
                             let var = &post.variables[v.index()];
                             let ValueSource::Quantity(q) = var.source else { continue };
-                            let before = BEFORE_MOVES.contains(&section)
+                            let before = handed(q).is_some()
+                                && BEFORE_MOVES.contains(&section)
                                 && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
                             // A rapid prints the feed Vectric holds, the tool's
                             // before the first feed move: not handed.
                             let before = before
-                                || (matches!(section, Section::RapidMove | Section::InitialRapidMove)
-                                    && q == Quantity::Feed);
+                                || handed(q).is_some()
+                                    && (matches!(section, Section::RapidMove | Section::InitialRapidMove)
+                                        && q == Quantity::Feed);
                             if q == Quantity::Feed && feed_finer_than_handed(&post.formats[var.format.index()]) {
                                 let mut d = Diagnostic::warning(
                                     codes::CV011.code,
@@ -262,7 +264,11 @@ impl Printer<'_> {
                                         "`[{}]` in {}: CNC-Calc never hands a post this value{}",
                                         q.label(),
                                         section.name(),
-                                        if before { " before the first move of its kind" } else { "" }
+                                        match (before, q) {
+                                            (false, _) => "",
+                                            (true, _) if BEFORE_MOVES.contains(&section) => " before the first move",
+                                            _ => " in a rapid: Vectric prints the tool's feed there before the first feed move",
+                                        }
                                     ),
                                     &format!("the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"),
                                 );
