@@ -92,7 +92,7 @@ fn writes_say_what_they_wrote_unless_quiet() {
     let o = postc(&["toolpath", "gen", "--pattern", "zigzag", "--moves", "100", "-o", &generated]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("100 zigzag moves"), "{}", said(&o));
     let js = dir.path().join("c.js").display().to_string();
-    let o = postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "cimco", "-o", &js]);
+    let o = postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "cimco", "--postc-extension", "-o", &js]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("a cimco post"), "{}", said(&o));
     for args in [
         vec!["-q", "post", "corpus/toolpaths/seed_job.ron", "-o", &out],

@@ -26,7 +26,9 @@ use postc_backends::Target;
 use postc_ir::{Dialect, Post, SourceMap};
 use postc_runtime::{Finished, Output, RunOptions};
 
-const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::Cimco, Target::Ron];
+// CIMCO as section posts (`--postc-extension`): the native CNC-Calc form
+// has its own matrix, under Node.js (tests/convert_native.rs).
+const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::CimcoSections, Target::Ron];
 
 struct Case {
     post: PathBuf,
@@ -152,7 +154,7 @@ fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
         Target::VcPost => "vcpost",
-        Target::Cimco => "cimco",
+        Target::Cimco | Target::CimcoSections => "cimco",
         Target::Ron => "ron",
     }
 }
@@ -161,7 +163,7 @@ fn target_dialect(t: Target) -> Dialect {
     match t {
         Target::Vectric => Dialect::Vectric,
         Target::VcPost => Dialect::VcPost,
-        Target::Cimco => Dialect::Cimco,
+        Target::Cimco | Target::CimcoSections => Dialect::Cimco,
         Target::Ron => Dialect::Ron,
     }
 }

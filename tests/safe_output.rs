@@ -105,7 +105,7 @@ fn outputs_get_the_umask_mode_or_keep_the_replaced_files_mode() {
         let expected = mode(&probe);
         let runs: &[&[&str]] = &[
             &["post", "job.pp", "job.ron", "-o", "new.nc", "--trace", "new.jsonl"],
-            &["convert", "job.pp", "--to", "cimco", "-o", "new.js"],
+            &["convert", "job.pp", "--to", "cimco", "--postc-extension", "-o", "new.js"],
             &["toolpath", "gen", "--moves", "10", "-o", "new.ron"],
         ];
         for args in runs {

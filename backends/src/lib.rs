@@ -33,9 +33,13 @@ pub enum Target {
     Vectric,
     /// A Vericut VcPost post.
     VcPost,
-    /// A CIMCO CNC-Calc JavaScript post: a CIMCO post with code as itself,
-    /// another post driven by the kind of move as a section post.
+    /// A CIMCO CNC-Calc JavaScript post that CNC-Calc runs: a CIMCO post
+    /// with code as itself, another post driven by the kind of move as a
+    /// native CNC-Calc post (the CNC-Calc manual's entry points).
     Cimco,
+    /// A CIMCO post, a post of another dialect as a *section post*:
+    /// postc's extension, which CNC-Calc does not run (`--postc-extension`).
+    CimcoSections,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,
 }
@@ -46,7 +50,7 @@ impl Target {
         match self {
             Target::Vectric => "pp",
             Target::VcPost => "VcPost",
-            Target::Cimco => "js",
+            Target::Cimco | Target::CimcoSections => "js",
             Target::Ron => "ron",
         }
     }
@@ -55,11 +59,18 @@ impl Target {
 /// Prints `post` as a post of `target`: the bytes of the post file, or
 /// every reason the target cannot hold it.
 pub fn convert(post: &Post, target: Target) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    convert_warned(post, target).map(|(text, _)| text)
+}
+
+/// [`convert`], with the warnings of the conversion: constructs the target
+/// leaves out, each at its place in the source.
+pub fn convert_warned(post: &Post, target: Target) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
     match target {
-        Target::Vectric => vectric::print(post),
-        Target::VcPost => vcpost::print(post),
+        Target::Vectric => vectric::print(post).map(|t| (t, Vec::new())),
+        Target::VcPost => vcpost::print(post).map(|t| (t, Vec::new())),
         Target::Cimco => cimco::print(post),
-        Target::Ron => ron::print(post).map(String::into_bytes),
+        Target::CimcoSections => cimco::print_extension(post).map(|t| (t, Vec::new())),
+        Target::Ron => ron::print(post).map(|t| (t.into_bytes(), Vec::new())),
     }
 }
 

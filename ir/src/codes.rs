@@ -1482,9 +1482,29 @@ declare_codes! {
     /// writes). The message names what differs.
     CV006: Error, "the printed post would compile to a different post: the post is not one its dialect's frontend makes (a RON post edited by hand?); the message names what differs",
         fix = "Convert to RON, or convert the post the RON was made from.";
+    /// A section the converted post prints prints a value the target engine never hands the post:
+    /// CNC-Calc (the CNC-Calc manual) hands the end point and movement of each move, the centre and direction
+    /// of each arc and the feed, and nothing of the job, the tool or the toolpath (`[T]`,
+    /// `[TOOLNAME]`, `[SAFEZ]`, the material, the home position).
+    CV007: Error, "a section the converted post prints prints a value the target engine never hands a post (the tool, the job, the toolpath)",
+        fix = "Drop the value from the section, or convert with `--postc-extension` (a section post, which only postc runs).";
+    /// A section the target engine never calls is left out of the converted post: CNC-Calc
+    /// (the CNC-Calc manual) calls nothing at a tool change, a toolpath start or a dwell.
+    CV008: Warning, "a section the target engine never calls is left out of the converted post",
+        fix = "Check that the program does without it, or convert with `--postc-extension`.";
     /// The IR cannot be written as RON. This is a bug in postc.
     CV009: Error, "the IR cannot be written as RON (a postc bug)",
         fix = "Report it to postc's authors with the post.";
+    /// A rule of the source the target engine gives the post no way to follow: a helical plunge
+    /// section (CNC-Calc does not say which arcs plunge), an empty line (CNC-Calc writes only
+    /// lines that are not empty).
+    CV010: Error, "a rule of the source the target engine gives the post no way to follow (which arcs plunge, empty lines)",
+        fix = "Drop the construct from the source post, or convert with `--postc-extension`.";
+    /// The target engine hands a value the post prints with less precision than the post prints
+    /// it: CNC-Calc's getFeedrate gives the feed to a tenth (a feed per minute), and a post that
+    /// prints finer feeds prints the engine's tenth.
+    CV011: Warning, "the target engine hands a value with less precision than the converted post prints it (the feed, to a tenth)",
+        fix = "Print the feed to a tenth or coarser, or check that the machine's feeds are given to a tenth.";
     /// verify reads G-code programs; this one is HPGL, ShopBot, Heidenhain conversational, or
     /// text whose first blocks cannot be read. It is refused, and the message says which families
     /// verify reads.

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use postc_backends::Target;
 use postc_ir::Diagnostic;
 
-use super::{DialectArg, Failed, fail, load_post, report};
+use super::{DialectArg, Failed, fail, report};
 
 /// The dialects `convert` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -38,21 +38,40 @@ pub struct Args {
     /// The source post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
+    /// With `--to cimco`: write a post of another dialect as a section post,
+    /// postc's extension of CNC-Calc that only postc runs, instead of a
+    /// CNC-Calc post (docs/cimco.md, "Section posts").
+    #[arg(long)]
+    postc_extension: bool,
 }
+
+/// Warnings that mean the source was not read whole: `convert` stops on
+/// them, as errors, and writes nothing (a converted post would silently
+/// lack what was not read).
+const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();
     let outputs: Vec<&Path> = args.output.iter().map(PathBuf::as_path).collect();
     super::outputs::check_paths(&[&args.post], &outputs).map_err(|d| fail(&mut sources, d))?;
-    let post = load_post(Some(&args.post), args.dialect, &mut sources)?;
+    let mut rules = postc_ir::codes::LevelRules::default();
+    for code in NOT_READ_WHOLE {
+        // Rank 2: above the file's and the command line's rules.
+        let _ = rules.add(code, postc_ir::codes::Level::Deny, 2);
+    }
+    let post = super::load_post_with(Some(&args.post), args.dialect, &mut sources, &rules)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
         TargetArg::Vcpost => Target::VcPost,
+        TargetArg::Cimco if args.postc_extension => Target::CimcoSections,
         TargetArg::Cimco => Target::Cimco,
         TargetArg::Ron => Target::Ron,
     };
-    let text = match postc_backends::convert(&post, target) {
-        Ok(text) => text,
+    let text = match postc_backends::convert_warned(&post, target) {
+        Ok((text, warnings)) => {
+            report::eprint(&mut sources, &warnings);
+            text
+        }
         Err(diagnostics) => {
             report::eprint(&mut sources, &diagnostics);
             eprintln!("postc: `{}` cannot be converted to {:?}; nothing was written", args.post.display(), args.to);

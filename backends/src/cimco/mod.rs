@@ -9,20 +9,34 @@
 //!   the IR ([`body`]). What it prints is compiled back with the CIMCO
 //!   frontend and must give the same post ([`check`]).
 //! - A post driven by the kind of each move whose handlers are output lines
-//!   (a Vectric post, a VcPost section post) prints as a *section post*,
-//!   postc's extension of CNC-Calc ([`sections`]).
+//!   (a Vectric post, a VcPost section post) prints as a native CNC-Calc
+//!   post ([`native`]): the CNC-Calc manual's entry points, the Vectric rules as
+//!   JavaScript state; or, asked for explicitly (`--postc-extension`), as
+//!   a *section post*, postc's extension of CNC-Calc ([`sections`]).
 //!
 //! Everything else is refused with a diagnostic per reason (`docs/convert.md`).
 
 pub(crate) mod body;
 mod check;
 mod code;
+mod native;
 mod sections;
 
 use postc_ir::{CommentTarget, Diagnostic, Dialect, Post, Span};
 
-/// Prints `post` as a CNC-Calc post, or says why it cannot be one.
-pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
+/// Prints `post` as a CNC-Calc post that CNC-Calc runs, with the
+/// conversion's warnings, or says why it cannot be one.
+pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
+    if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
+        code::print(post).map(|t| (t, Vec::new()))
+    } else {
+        native::print(post)
+    }
+}
+
+/// Prints `post` as a CNC-Calc post, a post of another dialect as a
+/// section post (postc's extension, which only postc runs).
+pub fn print_extension(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
     if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
         code::print(post)
     } else {

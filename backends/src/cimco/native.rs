@@ -1,0 +1,1090 @@
+//! Native CNC-Calc posts from posts driven by the kind of each move (a
+//! Vectric post): the post printed as JavaScript that CNC-Calc
+//! runs through its own entry points, `onOpen(isClipboard)`,
+//! `onLinear(vx, vy, vz, movement)`, `onCircular(cx, cy, cz, ex, ey, ez,
+//! isCW, movement)` and `onClose()`, with the Vectric rules (which section
+//! prints a move: `FIRST_` sections, plunge, retract and helix fallbacks,
+//! arcs cut into feed moves) carried as ordinary JavaScript state in the
+//! printed post (docs/convert.md, "Native CNC-Calc posts").
+//!
+//! What the engine cannot do is refused or converted with a warning, per
+//! construct, at the source's line and column:
+//!
+//! - a value the engine never hands the post (`[T]`, `[TOOLNAME]`,
+//!   `[SAFEZ]`, the material, the home position, ...) in a section the
+//!   post prints is `CV007`;
+//! - a section the engine never calls (`TOOLCHANGE`, `NEW_SEGMENT`,
+//!   `DWELL_MOVE`, ...) is left out with warning `CV008`;
+//! - a rule the engine gives the post no way to follow (helical plunge
+//!   sections: the engine does not say which arcs plunge; an empty line,
+//!   which the engine does not write) is `CV010`;
+//! - a feed printed finer than the tenth `getFeedrate` hands is warned of
+//!   (`CV011`);
+//! - output options the printed post does not carry are `CV004`, code is
+//!   `CV002`, a post driven by APT words is `CV001`.
+
+use postc_ir::codes;
+use postc_ir::post::{Dispatch, Section};
+use postc_ir::{
+    CommentTarget, Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle,
+    Post, Quantity, SignStyle, Span, Stmt, TextEncoding, Units, ValueSource, WidthOf,
+};
+
+/// A converted post and the warnings of its conversion.
+pub type Printed = (Vec<u8>, Vec<Diagnostic>);
+
+/// Prints `post` as a native CNC-Calc post, or says why it cannot be one.
+pub fn print(post: &Post) -> Result<Printed, Vec<Diagnostic>> {
+    let mut p = Printer { post, out: String::new(), errors: Vec::new(), warnings: Vec::new(), names: Vec::new() };
+    p.check_shape();
+    if !p.errors.is_empty() {
+        return Err(p.errors);
+    }
+    p.check_sections();
+    p.header();
+    p.variables();
+    p.state();
+    p.section_functions();
+    p.entry_points();
+    if p.errors.is_empty() { Ok((p.out.into_bytes(), p.warnings)) } else { Err(p.errors) }
+}
+
+/// The sections the entry points print, with the call that prints them.
+const CALLED: &[(Section, &str)] = &[
+    (Section::RevisionComment, "onOpen"),
+    (Section::Header, "onOpen"),
+    (Section::SpindleOn, "onOpen"),
+    (Section::InitialRapidMove, "onLinear"),
+    (Section::RapidMove, "onLinear"),
+    (Section::RetractMove, "onLinear"),
+    (Section::FirstFeedMove, "onLinear"),
+    (Section::FeedMove, "onLinear"),
+    (Section::FirstPlungeMove, "onLinear"),
+    (Section::PlungeMove, "onLinear"),
+    (Section::FeedRateChange, "onLinear"),
+    (Section::FirstCwArcMove, "onCircular"),
+    (Section::CwArcMove, "onCircular"),
+    (Section::FirstCcwArcMove, "onCircular"),
+    (Section::CcwArcMove, "onCircular"),
+    (Section::FirstCwHelicalArcMove, "onCircular"),
+    (Section::CwHelicalArcMove, "onCircular"),
+    (Section::FirstCcwHelicalArcMove, "onCircular"),
+    (Section::CcwHelicalArcMove, "onCircular"),
+    (Section::Footer, "onClose"),
+];
+
+/// Sections printed before the first move, where no position, feed or
+/// arc has been handed yet.
+const BEFORE_MOVES: &[Section] = &[Section::RevisionComment, Section::Header, Section::SpindleOn];
+
+/// Sections chosen only for arcs the toolpath marks as plunging, which
+/// the engine's `onCircular` does not say.
+const PLUNGE_ARCS: &[Section] = &[
+    Section::FirstCwHelicalArcPlungeMove,
+    Section::CwHelicalArcPlungeMove,
+    Section::FirstCcwHelicalArcPlungeMove,
+    Section::CcwHelicalArcPlungeMove,
+];
+
+/// What the printed post reads each quantity from, when the engine hands it.
+fn handed(q: Quantity) -> Option<&'static str> {
+    Some(match q {
+        Quantity::X => "x",
+        Quantity::Y => "y",
+        Quantity::Z => "z",
+        Quantity::I => "arcI",
+        Quantity::J => "arcJ",
+        Quantity::IA => "arcIA",
+        Quantity::JA => "arcJA",
+        Quantity::K => "arcK",
+        Quantity::KA => "arcKA",
+        Quantity::ArcStartX => "arcStartX",
+        Quantity::ArcStartY => "arcStartY",
+        Quantity::ArcMidX => "arcMidX",
+        Quantity::ArcMidY => "arcMidY",
+        Quantity::ArcMidXI => "arcMidXI",
+        Quantity::ArcMidYI => "arcMidYI",
+        Quantity::Angle => "arcAngle",
+        Quantity::Radius => "arcRadius",
+        Quantity::Feed => "feed",
+        Quantity::BlockNumber => "blockNumber",
+        _ => return None,
+    })
+}
+
+struct Printer<'p> {
+    post: &'p Post,
+    out: String,
+    errors: Vec<Diagnostic>,
+    warnings: Vec<Diagnostic>,
+    /// Each variable's JavaScript name.
+    names: Vec<String>,
+}
+
+impl Printer<'_> {
+    fn refuse(&mut self, code: &'static str, span: Option<Span>, message: String, why: &str) {
+        self.errors.push(super::refusal(code, span, message, why));
+    }
+
+    fn has(&self, s: Section) -> bool {
+        self.post.handlers.iter().any(|h| h.key == HandlerKey::Section(s))
+    }
+
+    fn check_shape(&mut self) {
+        let post = self.post;
+        if post.info.dispatch != Dispatch::Sections {
+            self.refuse(
+                codes::CV001.code,
+                None,
+                "this post is driven by APT words or application calls, which a CNC-Calc post has no form for".into(),
+                "a CNC-Calc post runs per kind of move",
+            );
+            return;
+        }
+        let code = post.handlers.iter().find(|h| {
+            !h.body.iter().all(|s| {
+                matches!(s, Stmt::Line { pieces, .. } if pieces.iter().all(|p| matches!(p, Piece::Text(_) | Piece::Var(_))))
+            })
+        });
+        if let Some(h) = code {
+            self.refuse(
+                codes::CV002.code,
+                h.span,
+                "this post's handlers are code, which a native CNC-Calc post made from sections has no form for".into(),
+                "only a post whose sections are output lines prints as a native CNC-Calc post (docs/convert.md)",
+            );
+        }
+        if !post.scripts.is_empty() {
+            self.refuse(codes::CV002.code, None, "this post has scripts".into(), "a converted post has none");
+        }
+        let o = &post.options;
+        let d = OutputOptions::default();
+        for (what, yes) in [
+            ("exact arcs", o.exact_arcs != d.exact_arcs),
+            ("a step budget", o.step_budget != d.step_budget),
+            ("a lathe mapping", o.lathe != d.lathe),
+            ("modal memory kept across toolpaths", !o.forget_modal_at_toolpath_start),
+            ("tape splitting (TAPE_SPLITTING)", o.tape_splitting.is_some()),
+            (
+                "a wrapped rotary axis (ROTARY_WRAP), whose angle comes from the job's wrap diameter, never handed to a CNC-Calc post,",
+                o.rotary_wrap.is_some(),
+            ),
+            ("a smallest arc radius (MIN_ARC_RADIUS)", o.min_arc_radius.is_some()),
+            ("a largest arc radius (MAX_ARC_RADIUS)", o.max_arc_radius.is_some()),
+            ("inverse-time feeds (INVERSE_TIME_MODE)", o.inverse_time_feed),
+        ] {
+            if yes {
+                self.refuse(
+                    codes::CV004.code,
+                    post.info.span,
+                    format!("the post sets {what}, which the converted post does not carry"),
+                    "a native CNC-Calc post carries the Vectric rules of moves, arcs and block numbers, and a line ending (docs/convert.md)",
+                );
+            }
+        }
+    }
+
+    /// Refuses what a section the engine calls prints but the engine
+    /// never hands, and warns of sections it never calls.
+    fn check_sections(&mut self) {
+        let post = self.post;
+        for h in &post.handlers {
+            let HandlerKey::Section(section) = h.key else { continue };
+            if PLUNGE_ARCS.contains(&section) {
+                self.refuse(
+                    codes::CV010.code,
+                    h.span,
+                    format!("{} prints arcs the toolpath marks as plunging, and CNC-Calc's onCircular does not say which arcs plunge", section.name()),
+                    "the CNC-Calc manual: onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) hands the centre, the end point and the direction",
+                );
+                continue;
+            }
+            if matches!(section, Section::DrillHeader | Section::DrillPoint | Section::DrillFooter) {
+                self.refuse(
+                    codes::CV010.code,
+                    h.span,
+                    format!("{} is postc's drilling section; the converted post drills each hole with moves, as a Vectric post without it does", section.name()),
+                    "CNC-Calc hands a drilling operation to onDrillingHeader, onDrillingPoint and onDrillingFooter, whose lines the converted post makes from its move sections",
+                );
+                continue;
+            }
+            let Some(&(_, call)) = CALLED.iter().find(|(s, _)| *s == section) else {
+                self.warnings.push(
+                    Diagnostic::warning(
+                        codes::CV008.code,
+                        format!("{} is left out: CNC-Calc calls no function where Vectric prints it", section.name()),
+                    )
+                    .note(never_called(section).to_string()),
+                );
+                if let (Some(span), Some(d)) = (h.span, self.warnings.pop()) {
+                    self.warnings.push(d.at(span, "left out"));
+                }
+                continue;
+            };
+            for s in &h.body {
+                let Stmt::Line { pieces, span } = s else { continue };
+                if pieces.is_empty() {
+                    self.refuse(
+                        codes::CV010.code,
+                        *span,
+                        "an empty line, which CNC-Calc does not write".into(),
+                        "the engine writes each line a function returns that is not empty (docs/cimco.md, \"Returned text\")",
+                    );
+                }
+                for p in pieces {
+                    match p {
+                        Piece::Var(v) => {
+                            let var = &post.variables[v.index()];
+                            let ValueSource::Quantity(q) = var.source else { continue };
+                            let before = handed(q).is_some()
+                                && BEFORE_MOVES.contains(&section)
+                                && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
+                            // A rapid prints the feed Vectric holds, the tool's
+                            // before the first feed move: not handed.
+                            let before = before
+                                || handed(q).is_some()
+                                    && (matches!(section, Section::RapidMove | Section::InitialRapidMove)
+                                        && q == Quantity::Feed);
+                            if q == Quantity::Feed && feed_finer_than_handed(&post.formats[var.format.index()]) {
+                                let mut d = Diagnostic::warning(
+                                    codes::CV011.code,
+                                    format!("`[F]` in {} prints the feed finer than CNC-Calc hands it: to a tenth", section.name()),
+                                )
+                                .note("the converted post reads the feed from getFeedrate, which formats it to a tenth (docs/cimco.md)");
+                                if let Some(span) = *span {
+                                    d = d.at(span, "printed finer than a tenth");
+                                }
+                                self.warnings.push(d);
+                            }
+                            if handed(q).is_none() || before {
+                                self.refuse(
+                                    codes::CV007.code,
+                                    *span,
+                                    format!(
+                                        "`[{}]` in {}: CNC-Calc never hands a post this value{}",
+                                        q.label(),
+                                        section.name(),
+                                        match (before, q) {
+                                            (false, _) => "",
+                                            (true, _) if BEFORE_MOVES.contains(&section) => " before the first move",
+                                            _ => " in a rapid: Vectric prints the tool's feed there before the first feed move",
+                                        }
+                                    ),
+                                    &format!("the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"),
+                                );
+                            }
+                        }
+                        Piece::Text(bytes) if self.decode(bytes).is_none_or(|t| t.contains(['\n', '\r'])) => {
+                            self.refuse(
+                                codes::CV002.code,
+                                *span,
+                                "output text that is not ASCII or UTF-8, or holds a line break".into(),
+                                "the engine writes the text of JavaScript strings and ends lines itself",
+                            );
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+    }
+
+    /// Output text as characters: any UTF-8 text, or ASCII of a
+    /// Windows-1252 post (the engine writes characters, not bytes).
+    fn decode(&self, bytes: &[u8]) -> Option<String> {
+        if self.post.info.text_encoding == TextEncoding::Windows1252 && !bytes.is_ascii() {
+            return None;
+        }
+        String::from_utf8(bytes.to_vec()).ok()
+    }
+
+    fn header(&mut self) {
+        self.out.push_str(&super::header(self.post));
+        self.out.push_str("//\n");
+        self.out.push_str(NATIVE_NOTE);
+        self.out.push('\n');
+        let le = &self.post.options.line_ending;
+        let Some(text) = std::str::from_utf8(le).ok().filter(|t| !t.is_empty()).map(str::to_string) else {
+            self.refuse(
+                codes::CV004.code,
+                self.post.info.span,
+                "a line ending (LINE_ENDING) that is not text".into(),
+                "the converted post sets `linebreak`, a JavaScript string",
+            );
+            return;
+        };
+        self.out.push_str(&format!("var linebreak = {};\n\n", js_string(&text)));
+    }
+
+    fn variables(&mut self) {
+        let post = self.post;
+        let mut taken: Vec<String> = Vec::new();
+        self.out.push_str(LIBRARY);
+        self.out.push('\n');
+        for (id, v) in post.variables.iter().enumerate() {
+            let label = match v.source {
+                ValueSource::Quantity(q) => q.label().to_string(),
+                _ => format!("v{id}"),
+            };
+            let wanted = if is_identifier(&v.name) { v.name.clone() } else { format!("v_{label}") };
+            let mut name = wanted.clone();
+            let mut n = 1;
+            while taken.contains(&name) || !is_identifier(&name) {
+                n += 1;
+                name = format!("{wanted}_{n}");
+            }
+            taken.push(name.clone());
+            let prefix = self.decode(&v.prefix).unwrap_or_default();
+            let format = post.formats.get(v.format.index()).cloned().unwrap_or_default();
+            self.out.push_str(&super::comment(post, &CommentTarget::Variable(postc_ir::VarId::new(id as u16))));
+            self.out.push_str(&format!(
+                "var {name} = createWord({}, {}, {}, {});\n",
+                js_string(&prefix),
+                v.modality == Modality::OnChange,
+                post.options.on_change_by_value,
+                format_object(&format)
+            ));
+            self.names.push(name);
+        }
+        self.out.push('\n');
+    }
+
+    fn state(&mut self) {
+        let o = &self.post.options;
+        let b = o.block_numbers;
+        // Arcs are cut into chords within the tolerance in the output's
+        // units (the runtime's: `arc_tolerance` is in mm).
+        let tolerance = match self.post.info.units {
+            Some(Units::Inch) => o.arc_tolerance * Units::Inch.factor_to(Units::Mm).recip(),
+            _ => o.arc_tolerance,
+        };
+        let feed_words: Vec<String> = if o.rapid_forgets_feed {
+            self.post
+                .variables
+                .iter()
+                .zip(&self.names)
+                .filter(|(v, _)| v.source == ValueSource::Quantity(Quantity::Feed))
+                .map(|(_, n)| format!("{n}.last = null;\n    {n}.lastValue = NaN;"))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        self.out.push_str(&format!(
+            r#"// The machine as the moves handed so far leave it. Vectric's modal
+// memory starts afresh with the program, as each of its toolpaths does.
+var x = NaN, y = NaN, z = NaN;
+var feed = NaN;
+var arcI = NaN, arcJ = NaN, arcK = NaN, arcIA = NaN, arcJA = NaN, arcKA = NaN, arcRadius = NaN, arcAngle = NaN;
+var arcStartX = NaN, arcStartY = NaN, arcMidX = NaN, arcMidY = NaN, arcMidXI = NaN, arcMidYI = NaN;
+// FIRST_ sections print the first move of a run of one kind and again
+// when the feed changes: the kind and feed of the last move printed.
+var lastKind = "";
+var lastFeed = NaN;
+var firstRapid = true;
+var blockNumber = {start};
+var chordTolerance = {tolerance};
+
+function nextBlock() {{
+    blockNumber += {increment};
+    if (blockNumber > {maximum}) {{
+        blockNumber = {start};
+    }}
+}}
+
+// After a rapid the feed words print again (the source's feed variables).
+function afterRapid() {{
+    {forget}
+}}
+
+"#,
+            start = number(b.start),
+            increment = number(b.increment),
+            maximum = number(b.maximum),
+            tolerance = number(tolerance),
+            forget = feed_words.join("\n    "),
+        ));
+    }
+
+    fn section_functions(&mut self) {
+        let post = self.post;
+        for &(section, _) in CALLED {
+            let Some(h) = post.handlers.iter().find(|h| h.key == HandlerKey::Section(section)) else { continue };
+            self.out.push_str(&super::comment(post, &CommentTarget::Handler(h.key.clone())));
+            self.out.push_str(&format!("function {}() {{\n    var out = \"\";\n", section_function(section)));
+            for s in &h.body {
+                let Stmt::Line { pieces, .. } = s else { continue };
+                let mut parts: Vec<String> = Vec::new();
+                let mut numbered = false;
+                for p in pieces {
+                    match p {
+                        Piece::Text(bytes) => parts.push(js_string(&self.decode(bytes).unwrap_or_default())),
+                        Piece::Var(v) => {
+                            let var = &post.variables[v.index()];
+                            let ValueSource::Quantity(q) = var.source else { continue };
+                            let Some(value) = handed(q) else { continue };
+                            numbered |= q == Quantity::BlockNumber;
+                            parts.push(format!("word({}, {value})", self.names[v.index()]));
+                        }
+                        _ => {}
+                    }
+                }
+                parts.push("\"\\n\"".into());
+                self.out.push_str(&format!("    out += {};\n", parts.join(" + ")));
+                if numbered {
+                    self.out.push_str("    nextBlock();\n");
+                }
+            }
+            self.out.push_str("    return out;\n}\n\n");
+        }
+    }
+
+    /// The JavaScript expression of the section Vectric prints: the
+    /// `FIRST_` one when `first` holds and it exists, else the plain one,
+    /// else the `FIRST_` one; `None` when the post has neither.
+    fn pick(&self, first: Section, plain: Section, cond: &str) -> Option<String> {
+        match (self.has(first), self.has(plain)) {
+            (true, true) => Some(format!("({cond} ? {} : {})", section_function(first), section_function(plain))),
+            (true, false) => Some(section_function(first)),
+            (false, true) => Some(section_function(plain)),
+            (false, false) => None,
+        }
+    }
+
+    /// Whether a section prints `[Z]`.
+    fn prints_z(&self, s: Section) -> bool {
+        self.post.handlers.iter().filter(|h| h.key == HandlerKey::Section(s)).any(|h| {
+            h.body.iter().any(|st| {
+                matches!(st, Stmt::Line { pieces, .. } if pieces.iter().any(|p| matches!(p, Piece::Var(v)
+                    if self.post.variables[v.index()].source == ValueSource::Quantity(Quantity::Z))))
+            })
+        })
+    }
+
+    fn entry_points(&mut self) {
+        let call = |s: Section, this: &Self| {
+            if this.has(s) { format!("out += {}();\n    ", section_function(s)) } else { String::new() }
+        };
+        // onOpen: REVISION_COMMENT, HEADER, SPINDLE_ON.
+        let open = format!(
+            "{}{}{}",
+            call(Section::RevisionComment, self),
+            call(Section::Header, self),
+            call(Section::SpindleOn, self)
+        );
+        let rate_change = call(Section::FeedRateChange, self);
+        // Rapids.
+        let mut rapid = String::new();
+        let plain_rapid = if self.has(Section::RapidMove) {
+            format!("{}()", section_function(Section::RapidMove))
+        } else {
+            "\"\"".into()
+        };
+        let retract_rapid = if self.has(Section::RetractMove) {
+            format!("(retract ? {}() : {plain_rapid})", section_function(Section::RetractMove))
+        } else {
+            plain_rapid
+        };
+        if self.has(Section::InitialRapidMove) {
+            rapid.push_str(&format!(
+                "out += firstRapid ? {}() : {retract_rapid};",
+                section_function(Section::InitialRapidMove)
+            ));
+        } else {
+            rapid.push_str(&format!("out += {retract_rapid};"));
+        }
+        // Feed moves.
+        let mut feeds = String::new();
+        if self.has(Section::FirstPlungeMove) {
+            feeds.push_str(&format!(
+                "if (kind == \"plunge\" && (lastKind != \"plunge\" || lastFeed !== f)) {{\n        return feedSection(\"plunge\", f, {});\n    }}\n    ",
+                section_function(Section::FirstPlungeMove)
+            ));
+        }
+        if self.has(Section::PlungeMove) {
+            feeds.push_str(&format!(
+                "if (kind == \"plunge\") {{\n        return feedSection(\"plunge\", f, {});\n    }}\n    ",
+                section_function(Section::PlungeMove)
+            ));
+        }
+        if self.has(Section::RetractMove) {
+            feeds.push_str(&format!(
+                "if (kind == \"retract\") {{\n        return feedSection(\"retract\", f, {});\n    }}\n    ",
+                section_function(Section::RetractMove)
+            ));
+        }
+        let feed_section = self
+            .pick(Section::FirstFeedMove, Section::FeedMove, "(lastKind != \"feed\" || lastFeed !== f)")
+            .unwrap_or_else(|| "null".into());
+        feeds.push_str(&format!("return feedSection(\"feed\", f, {feed_section});"));
+        // Arcs, each direction.
+        let mut arcs = String::new();
+        for (cw, flat, helical) in [
+            (
+                true,
+                (Section::FirstCwArcMove, Section::CwArcMove),
+                (Section::FirstCwHelicalArcMove, Section::CwHelicalArcMove),
+            ),
+            (
+                false,
+                (Section::FirstCcwArcMove, Section::CcwArcMove),
+                (Section::FirstCcwHelicalArcMove, Section::CcwHelicalArcMove),
+            ),
+        ] {
+            let dir = if cw { "cw" } else { "ccw" };
+            let mut body = String::new();
+            let helix_kind = format!("{dir} helix");
+            if let Some(s) =
+                self.pick(helical.0, helical.1, &format!("(lastKind != \"{helix_kind}\" || lastFeed !== f)"))
+            {
+                body.push_str(&format!(
+                    "if (helical) {{\n            return arcSection(\"{helix_kind}\", f, {s}, cx, cy, ex, ey, ez, isCW);\n        }}\n        "
+                ));
+            }
+            if let Some(s) = self.pick(flat.0, flat.1, &format!("(lastKind != \"{dir}\" || lastFeed !== f)")) {
+                // A helix prints through the arc section only when the
+                // section that would print it prints [Z].
+                let first_z = self.has(flat.0) && self.prints_z(flat.0);
+                let plain_z = self.has(flat.1) && self.prints_z(flat.1);
+                let helix_ok = match (self.has(flat.0), self.has(flat.1)) {
+                    (true, true) => match (first_z, plain_z) {
+                        (true, true) => "true".to_string(),
+                        (false, false) => "false".to_string(),
+                        (true, false) => format!("(lastKind != \"{dir}\" || lastFeed !== f)"),
+                        (false, true) => format!("!(lastKind != \"{dir}\" || lastFeed !== f)"),
+                    },
+                    (true, false) => first_z.to_string(),
+                    _ => plain_z.to_string(),
+                };
+                let call = format!("return arcSection(\"{dir}\", f, {s}, cx, cy, ex, ey, ez, isCW);");
+                match helix_ok.as_str() {
+                    // Every arc, flat or helical, prints through the section.
+                    "true" => {
+                        body.push_str(&call);
+                        arcs.push_str(&format!(
+                            "if ({}isCW) {{\n        {body}\n    }}\n    ",
+                            if cw { "" } else { "!" }
+                        ));
+                        continue;
+                    }
+                    "false" => body.push_str(&format!("if (!helical) {{\n            {call}\n        }}\n        ")),
+                    _ => body
+                        .push_str(&format!("if (!helical || {helix_ok}) {{\n            {call}\n        }}\n        ")),
+                }
+            }
+            body.push_str("return linearize(cx, cy, ex, ey, ez, isCW, f);");
+            arcs.push_str(&format!("if ({}isCW) {{\n        {body}\n    }}\n    ", if cw { "" } else { "!" }));
+        }
+        let arcs = arcs.trim_end();
+        let footer = call(Section::Footer, self);
+        self.out.push_str(&format!(
+            r#"function onOpen(isClipboard) {{
+    var out = "";
+    {open}firstRapid = true;
+    return out;
+}}
+
+// A feed (or plunge, or retract) section: FEED_RATE_CHANGE first when the
+// feed changed, then the section; the run's kind and feed are kept.
+function feedSection(kind, f, section) {{
+    var out = "";
+    // A feed of zero is none: [F] prints nothing.
+    feed = f == 0 ? NaN : f;
+    if (lastFeed !== f) {{
+        {rate_change}
+    }}
+    lastKind = kind;
+    lastFeed = f;
+    if (section != null) {{
+        out += section();
+    }}
+    return out;
+}}
+
+// The feed getFeedrate gives for a movement, as a number (it returns the
+// word, "F" and the number).
+function feedOf(movement) {{
+    return parseFloat(getFeedrate(movement).substring(1));
+}}
+
+// A straight feed move to (vx, vy, vz): a plunge when the engine says so,
+// a retract when it rises straight up, otherwise a feed.
+function feedTo(vx, vy, vz, plunge, f) {{
+    var kind = "feed";
+    if (plunge) {{
+        kind = "plunge";
+    }} else if (vx == x && vy == y && vz > z) {{
+        kind = "retract";
+    }}
+    x = vx;
+    y = vy;
+    z = vz;
+    {feeds}
+}}
+
+// A rapid to (vx, vy, vz): INITIAL_RAPID_MOVE first, RETRACT_MOVE straight up.
+function rapidTo(vx, vy, vz) {{
+    var out = "";
+    var retract = vx == x && vy == y && vz > z;
+    x = vx;
+    y = vy;
+    z = vz;
+    {rapid}
+    firstRapid = false;
+    lastKind = "rapid";
+    afterRapid();
+    return out;
+}}
+
+function onLinear(vx, vy, vz, movement) {{
+    if (movement == MOVEMENT_RAPID) {{
+        return rapidTo(vx, vy, vz);
+    }}
+    return feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE, feedOf(movement));
+}}
+
+// The drilling operations the post offers. Vectric posts have no cycle
+// sections: each hole is drilled with moves, as Vectric drills it (rapid
+// to the retract plane and the safe distance, feed down, in pecks for
+// peck drilling and chip breaking, rapid back to the retract plane).
+var MillDrillingFields = [
+    {{name: "Drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: false, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
+    {{name: "Peck drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
+    {{name: "Chip breaking", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}}
+];
+var drilling = null;
+
+function onDrillingHeader(drillHeader) {{
+    drilling = drillHeader;
+    return "";
+}}
+
+function onDrillingPoint(px, py) {{
+    var h = drilling;
+    var clear = h.retractPlane;
+    var reference = h.safeDistanceIsAbsolute ? h.safeDistance : h.referencePlane + h.safeDistance;
+    var depth = h.endDepthIsAbsolute ? h.endDepth : h.referencePlane - h.endDepth;
+    var f = h.plungingFeedrate;
+    var pecking = h.name == "Peck drilling" || h.name == "Chip breaking";
+    var peck = pecking && h.firstDepth > 0 ? h.firstDepth : 0;
+    if (peck > 0 && (reference - depth) / peck > 1000) {{
+        peck = (reference - depth) / 1000;
+    }}
+    var out = "";
+    if (z < clear) {{
+        out += rapidTo(x, y, clear);
+    }}
+    out += rapidTo(px, py, clear);
+    if (reference < clear) {{
+        out += rapidTo(px, py, reference);
+    }}
+    if (peck > 0) {{
+        var at = reference;
+        while (at - depth > 1e-9) {{
+            at = Math.max(at - peck, depth);
+            out += feedTo(px, py, at, true, f);
+            if (at > depth) {{
+                out += rapidTo(px, py, h.name == "Peck drilling" ? reference : at + 0.5 * peck);
+                out += rapidTo(px, py, at);
+            }}
+        }}
+    }} else {{
+        out += feedTo(px, py, depth, true, f);
+    }}
+    return out + rapidTo(px, py, clear);
+}}
+
+function onDrillingFooter() {{
+    drilling = null;
+    return "";
+}}
+
+// An arc through its section: the arc words from the centre, the start
+// (the last end point) and the sweep.
+function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {{
+    var g = arcGeometry(cx, cy, ex, ey, isCW);
+    arcI = cx - x;
+    arcJ = cy - y;
+    arcK = 0;
+    arcIA = cx;
+    arcJA = cy;
+    arcKA = z;
+    arcRadius = g.r;
+    arcAngle = g.sweep;
+    arcStartX = x;
+    arcStartY = y;
+    arcMidX = cx + g.r * Math.cos(g.a0 + g.sweep * 0.5);
+    arcMidY = cy + g.r * Math.sin(g.a0 + g.sweep * 0.5);
+    arcMidXI = arcMidX - x;
+    arcMidYI = arcMidY - y;
+    x = ex;
+    y = ey;
+    z = ez;
+    return feedSection(kind, f, section);
+}}
+
+// An arc the post has no section for, cut into equal-angle chords within
+// the chord tolerance, each a feed move.
+function linearize(cx, cy, ex, ey, ez, isCW, f) {{
+    var g = arcGeometry(cx, cy, ex, ey, isCW);
+    var sz = z;
+    var r = g.r, a0 = g.a0, sweep = g.sweep;
+    var n = 1;
+    if (r > 0 && r < Infinity) {{
+        var ratio = Math.min(Math.max(chordTolerance / r, 0), 1);
+        var step = 2 * Math.acos(1 - ratio);
+        n = step <= 0 ? 1000000 : Math.min(Math.max(Math.ceil(Math.abs(sweep) / step), 1), 1000000);
+    }}
+    n = Math.min(n, 10000);
+    var out = "";
+    for (var i = 1; i <= n; i++) {{
+        var t = i / n;
+        if (t >= 1) {{
+            out += feedTo(ex, ey, ez, false, f);
+        }} else {{
+            var a = a0 + sweep * t;
+            out += feedTo(cx + r * Math.cos(a), cy + r * Math.sin(a), sz + (ez - sz) * t, false, f);
+        }}
+    }}
+    return out;
+}}
+
+// The arc from the last end point to (ex, ey) around (cx, cy): its
+// radius, start angle and signed sweep (counter-clockwise positive; a
+// closed arc is a full turn).
+function arcGeometry(cx, cy, ex, ey, isCW) {{
+    var TAU = 2 * Math.PI;
+    var r = distance(x - cx, y - cy);
+    var a0 = Math.atan2(y - cy, x - cx);
+    var a1 = Math.atan2(ey - cy, ex - cx);
+    var closed = distance(ex - x, ey - y) <= 1e-9 * Math.max(r, 1);
+    var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
+    if (turn <= 1e-12) {{
+        turn = TAU;
+    }}
+    return {{r: r, a0: a0, sweep: isCW ? -turn : turn}};
+}}
+
+// The length of (dx, dy), in ECMAScript 5 (CNC-Calc's JavaScript has no Math.hypot).
+function distance(dx, dy) {{
+    return Math.sqrt(dx * dx + dy * dy);
+}}
+
+function remainder(a, b) {{
+    var r = a % b;
+    return r < 0 ? r + b : r;
+}}
+
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {{
+    var f = feedOf(movement);
+    var helical = Math.abs(ez - z) > 1e-9;
+    {arcs}
+}}
+
+function onClose() {{
+    var out = "";
+    {footer}return out;
+}}
+"#
+        ));
+    }
+}
+
+/// Whether a feed format prints finer steps than the tenth getFeedrate
+/// hands (in the feed's units, before the multiplier).
+fn feed_finer_than_handed(f: &NumberFormat) -> bool {
+    let step = 10f64.powi(-i32::from(f.decimals)) / f.multiplier.abs();
+    f.multiplier != 0.0 && step < 0.1 - 1e-12
+}
+
+/// Why the engine never calls a section.
+fn never_called(s: Section) -> &'static str {
+    match s {
+        Section::ToolChange | Section::NewSegment => {
+            "the CNC-Calc manual calls no function at a tool change or at the start of a toolpath: the converted post prints as its source for a job of one toolpath"
+        }
+        Section::DwellMove => "the CNC-Calc manual has no dwell call: dwells are not written",
+        Section::JetToolOn | Section::JetToolOff | Section::JetToolPower => {
+            "the CNC-Calc manual has no call for a laser, plasma or water jet"
+        }
+        Section::SpindleOff | Section::Coolant => "the CNC-Calc manual has no spindle or coolant call",
+        Section::CutterComp => "the converted post does not yet print onCompensation",
+        _ => "the CNC-Calc manual has no call for it",
+    }
+}
+
+/// The note under the conversion note: what the engine calls.
+const NATIVE_NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, onCircular, the
+// onDrilling functions and onClose;
+// the Vectric rules of the source (which section prints each move) are
+// the state below.
+";
+
+/// The number formats and modal words of Vectric variables, written out
+/// in the post (docs/convert.md, \"Native CNC-Calc posts\").
+const LIBRARY: &str = r#"// Vectric's number formats: the value times the multiplier, rounded half
+// away from zero on its shortest decimal form, padded to the width.
+// A modal word prints when its value differs from the one it printed
+// last (`byValue`, Vectric's rule) or when its text does.
+function createWord(prefix, modal, byValue, format) {
+    return {prefix: prefix, modal: modal, byValue: byValue, format: format, last: null, lastValue: NaN};
+}
+
+function repeatText(text, n) {
+    var s = "";
+    for (var i = 0; i < n; i++) {
+        s += text;
+    }
+    return s;
+}
+
+// The shortest decimal digits of a number that is not negative, without an exponent.
+function plainDigits(m) {
+    var s = String(m);
+    var e = s.indexOf("e");
+    if (e < 0) {
+        return s;
+    }
+    var mantissa = s.substring(0, e);
+    var exponent = parseInt(s.substring(e + 1), 10);
+    var dot = mantissa.indexOf(".");
+    var digits = dot < 0 ? mantissa : mantissa.substring(0, dot) + mantissa.substring(dot + 1);
+    var whole = (dot < 0 ? mantissa.length : dot) + exponent;
+    if (whole <= 0) {
+        return "0." + repeatText("0", -whole) + digits;
+    }
+    if (whole >= digits.length) {
+        return digits + repeatText("0", whole - digits.length);
+    }
+    return digits.substring(0, whole) + "." + digits.substring(whole);
+}
+
+function formatNumber(f, value) {
+    var v = value * f.multiplier;
+    var negative = v < 0;
+    var text = plainDigits(Math.abs(v));
+    var dot = text.indexOf(".");
+    var whole = dot < 0 ? text : text.substring(0, dot);
+    var frac = dot < 0 ? "" : text.substring(dot + 1);
+    var digits = "0" + whole + (frac + repeatText("0", f.decimals)).substring(0, f.decimals);
+    if (frac.length > f.decimals && frac.charAt(f.decimals) >= "5") {
+        var d = digits.split("");
+        for (var i = d.length - 1; i >= 0; i--) {
+            if (d[i] == "9") {
+                d[i] = "0";
+            } else {
+                d[i] = String(Number(d[i]) + 1);
+                break;
+            }
+        }
+        digits = d.join("");
+    }
+    var start = 0;
+    while (start < digits.length - f.decimals - 1 && digits.charAt(start) == "0") {
+        start++;
+    }
+    digits = digits.substring(start);
+    var integer = digits.substring(0, digits.length - f.decimals);
+    var fraction = digits.substring(digits.length - f.decimals);
+    if (f.trimZeros) {
+        while (fraction.length > 0 && fraction.charAt(fraction.length - 1) == "0") {
+            fraction = fraction.substring(0, fraction.length - 1);
+        }
+    }
+    var isZero = /^0*$/.test(integer + fraction);
+    var sign = negative && (!isZero || f.negativeZero) ? "-" : f.signAlways ? "+" : "";
+    if (!f.leadingZero && integer == "0" && fraction != "") {
+        integer = "";
+    }
+    var mark = fraction != "" || f.pointAlways ? f.mark : "";
+    var core = sign.length + integer.length + mark.length + fraction.length;
+    var intPad = f.integerWidth ? Math.max(f.width - integer.length, 0) : 0;
+    var outerPad = f.integerWidth ? 0 : Math.max(f.width - core, 0);
+    var padZeros = f.zeroPad && !f.left;
+    var s = f.prefix;
+    if (!f.left && !padZeros) {
+        s += repeatText(" ", outerPad);
+    }
+    s += sign;
+    if (padZeros) {
+        s += repeatText("0", outerPad);
+    }
+    s += repeatText(f.zeroPad ? "0" : " ", intPad);
+    s += integer + mark + fraction;
+    if (f.left) {
+        s += repeatText(" ", outerPad);
+    }
+    return s;
+}
+
+// A word: the prefix and the formatted value; nothing for a value the
+// engine has not handed, or for a modal word whose text is the one it
+// printed last.
+function word(w, value) {
+    if (value !== value) {
+        return "";
+    }
+    if (w.modal && w.byValue) {
+        if (value === w.lastValue) {
+            return "";
+        }
+        w.lastValue = value;
+        return w.prefix + formatNumber(w.format, value);
+    }
+    var text = w.prefix + formatNumber(w.format, value);
+    if (w.modal && text === w.last) {
+        return "";
+    }
+    w.last = text;
+    return text;
+}
+"#;
+
+/// A format as the object `formatNumber` reads.
+fn format_object(f: &NumberFormat) -> String {
+    format!(
+        "{{decimals: {}, width: {}, integerWidth: {}, zeroPad: {}, left: {}, signAlways: {}, pointAlways: {}, trimZeros: {}, leadingZero: {}, mark: {}, multiplier: {}, prefix: {}, negativeZero: {}}}",
+        f.decimals,
+        f.width,
+        f.width_of == WidthOf::IntegerDigits,
+        f.padding == Padding::Zero,
+        f.justify == Justify::Left,
+        f.sign == SignStyle::Always,
+        f.point == PointStyle::Always,
+        f.trim_zeros,
+        f.leading_zero,
+        js_string(&f.decimal_mark.to_string()),
+        number(f.multiplier),
+        js_string(&f.prefix),
+        f.negative_zero
+    )
+}
+
+/// The JavaScript function that prints a section's lines.
+fn section_function(s: Section) -> String {
+    format!("section{}", s.name())
+}
+
+fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_' || c == '$')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$')
+        && !RESERVED.contains(&name)
+}
+
+/// Words JavaScript reserves, and the names the printed post gives a meaning.
+const RESERVED: &[&str] = &[
+    "break",
+    "case",
+    "catch",
+    "class",
+    "const",
+    "continue",
+    "debugger",
+    "default",
+    "delete",
+    "do",
+    "else",
+    "export",
+    "extends",
+    "false",
+    "finally",
+    "for",
+    "function",
+    "if",
+    "import",
+    "in",
+    "instanceof",
+    "new",
+    "null",
+    "return",
+    "super",
+    "switch",
+    "this",
+    "throw",
+    "true",
+    "try",
+    "typeof",
+    "var",
+    "void",
+    "while",
+    "with",
+    "yield",
+    "let",
+    "static",
+    "enum",
+    "await",
+    "implements",
+    "package",
+    "protected",
+    "interface",
+    "private",
+    "public",
+    "undefined",
+    "NaN",
+    "Infinity",
+    "x",
+    "y",
+    "z",
+    "feed",
+    "arcI",
+    "arcJ",
+    "arcIA",
+    "arcJA",
+    "arcRadius",
+    "lastKind",
+    "lastFeed",
+    "firstRapid",
+    "blockNumber",
+    "chordTolerance",
+    "nextBlock",
+    "afterRapid",
+    "feedSection",
+    "feedOf",
+    "feedTo",
+    "arcSection",
+    "linearize",
+    "remainder",
+    "createWord",
+    "repeatText",
+    "plainDigits",
+    "formatNumber",
+    "word",
+    "linebreak",
+    "onOpen",
+    "onLinear",
+    "onCircular",
+    "onClose",
+    "getFeedrate",
+    "MOVEMENT_RAPID",
+    "MOVEMENT_PLUNGE",
+    "Math",
+    "String",
+    "parseFloat",
+    "parseInt",
+    "isFinite",
+];
+
+/// A number as JavaScript reads it back exactly.
+fn number(n: f64) -> String {
+    if n == 0.0 { "0".into() } else { format!("{n}") }
+}
+
+/// A JavaScript string literal.
+fn js_string(t: &str) -> String {
+    let mut s = String::with_capacity(t.len() + 2);
+    s.push('"');
+    for c in t.chars() {
+        match c {
+            '"' => s.push_str("\\\""),
+            '\\' => s.push_str("\\\\"),
+            '\n' => s.push_str("\\n"),
+            '\r' => s.push_str("\\r"),
+            '\t' => s.push_str("\\t"),
+            '\u{2028}' | '\u{2029}' => s.push_str(&format!("\\u{:04x}", c as u32)),
+            c if c.is_control() => s.push_str(&format!("\\u{:04x}", c as u32)),
+            c => s.push(c),
+        }
+    }
+    s.push('"');
+    s
+}
