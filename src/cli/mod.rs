@@ -71,7 +71,7 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Post a toolpath: POST TOOLPATH, or TOOLPATH alone with the embedded G-code post.
+    /// Post a toolpath: POST TOOLPATH, TOOLPATH alone with the embedded G-code post, or --post NAME TOOLPATH with a post of the library (`postc posts`).
     ///
     /// The G-code it writes is verified while it is posted, on a second thread, as `postc verify PROGRAM --toolpath TOOLPATH --post POST` would (generic controller, 0.01 mm): every move replayed and compared with the toolpath, feeds, spindle, units, arcs, block numbers. Findings are VF diagnostics: a warning is printed and the program written; an error means no program is written and the exit status is 1. Their severities change as any code's (`--warn VF033`, `--deny VF`, `--allow VF035`, `postc.toml`); `--no-verify` skips verification.
     ///

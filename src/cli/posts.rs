@@ -210,24 +210,36 @@ pub fn run(args: Args) -> Result<(), Failed> {
     if problems.is_empty() { Ok(()) } else { Err(Failed) }
 }
 
+/// One post as `--format json` gives it, in this order.
+#[derive(serde::Serialize)]
+struct Row<'a> {
+    name: String,
+    dialect: Option<&'static str>,
+    units: Option<&'static str>,
+    extension: Option<&'a str>,
+    path: String,
+    embedded: bool,
+    error: Option<&'a str>,
+}
+
 /// The listing as one JSON array.
 fn json(entries: &[Entry]) -> String {
-    let items: Vec<serde_json::Value> = entries
+    let rows: Vec<Row> = entries
         .iter()
         .map(|e| {
             let d = e.described.as_ref();
-            serde_json::json!({
-                "name": e.name(),
-                "dialect": d.map(|d| library::dialect_name(d.dialect)),
-                "units": d.map(|d| d.units.map(|u| library::units_name(Some(u)))),
-                "extension": d.map(|d| d.extension.clone()),
-                "path": e.path(),
-                "embedded": matches!(e.origin, Origin::Embedded(_)),
-                "error": e.error,
-            })
+            Row {
+                name: e.name(),
+                dialect: d.map(|d| library::dialect_name(d.dialect)),
+                units: d.map(|d| library::units_name(d.units)),
+                extension: d.map(|d| d.extension.as_str()),
+                path: e.path(),
+                embedded: matches!(e.origin, Origin::Embedded(_)),
+                error: e.error.as_deref(),
+            }
         })
         .collect();
-    let mut text = serde_json::to_string_pretty(&items).unwrap_or_else(|_| "[]".into());
+    let mut text = serde_json::to_string_pretty(&rows).unwrap_or_else(|_| "[]".into());
     text.push('\n');
     text
 }
