@@ -6,7 +6,8 @@
 //! included, each with its controller). LinuxCNC's `rs274` reads the
 //! programs of the LinuxCNC, grbl and Mach posts with every corpus
 //! toolpath's motion in `tests/rs274.rs`. Heidenhain conversational and
-//! HPGL are read by neither: their goldens are their check.
+//! HPGL are read by neither: their goldens, and a replay of their positions
+//! here, are their check.
 //!
 //! `postc posts` lists every embedded post, as a table and as JSON, and
 //! the posts of user folders (arguments, `[posts] dirs` of `postc.toml`,
@@ -132,6 +133,126 @@ fn embedded_gcode_verifies_against_its_toolpath() {
             }
         }
     }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The toolpath's move end points (rapid, feed, arc), in mm.
+fn toolpath_ends(toolpath: &Path) -> Vec<[f64; 3]> {
+    use postc_ir::event::Event;
+    let mut sources = postc_report::source_map();
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources).unwrap();
+    let (mut diags, mut factor, mut ends) = (Vec::new(), 1.0, Vec::new());
+    while let Some((event, _)) = source.next_event(&mut diags) {
+        match event {
+            Event::Job(job) => factor = job.units.factor_to(postc_ir::Units::Mm),
+            Event::Rapid(m) => ends.push([m.x * factor, m.y * factor, m.z * factor]),
+            Event::Feed(m) => ends.push([m.x * factor, m.y * factor, m.z * factor]),
+            Event::Arc(a) => ends.push([a.x * factor, a.y * factor, a.z * factor]),
+            _ => {}
+        }
+    }
+    ends
+}
+
+/// The number after `letter` in a Heidenhain block (`X+12.500`).
+fn word(block: &str, letter: char) -> Option<f64> {
+    block.split_whitespace().find_map(|w| w.strip_prefix(letter)?.parse().ok())
+}
+
+/// The positions a Heidenhain conversational program moves through (L
+/// and C blocks, in order), checking on the way that each C block ends on
+/// the circle of its CC centre through its start.
+fn heidenhain_positions(program: &str, failures: &mut Vec<String>, label: &str) -> Vec<[f64; 3]> {
+    let (mut at, mut centre, mut out) = ([f64::NAN; 3], [f64::NAN; 2], Vec::new());
+    for line in program.lines() {
+        let block = line.split_once(' ').map_or("", |(_, b)| b);
+        let axes = |at: &mut [f64; 3]| {
+            for (k, letter) in ['X', 'Y', 'Z'].into_iter().enumerate() {
+                if let Some(v) = word(block, letter) {
+                    at[k] = v;
+                }
+            }
+        };
+        if block.starts_with("CC ") {
+            centre = [word(block, 'X').unwrap(), word(block, 'Y').unwrap()];
+        } else if block.starts_with("C ") {
+            let r0 = (at[0] - centre[0]).hypot(at[1] - centre[1]);
+            axes(&mut at);
+            let r1 = (at[0] - centre[0]).hypot(at[1] - centre[1]);
+            if (r0 - r1).abs() > 0.002 {
+                failures.push(format!("{label}: `{line}` ends {r1:.4} from CC, starts {r0:.4} from it"));
+            }
+            out.push(at);
+        } else if block.starts_with("L ") && !block.contains("M91") {
+            axes(&mut at);
+            out.push(at);
+        }
+    }
+    out
+}
+
+/// The positions an HPGL program moves the pen through (PU, PD, the ends
+/// of AA arcs), in mm; NaN for Z, which HPGL does not have.
+fn hpgl_positions(program: &str) -> Vec<[f64; 3]> {
+    let (mut at, mut out) = ([f64::NAN; 3], Vec::new());
+    for command in program.split(';').map(str::trim) {
+        let numbers = |args: &str| args.split(',').filter_map(|a| a.trim().parse::<f64>().ok()).collect::<Vec<_>>();
+        let (name, args) = command.split_at(command.len().min(2));
+        match (name, numbers(args).as_slice()) {
+            ("PU" | "PD", [x, y]) => at = [x / 40.0, y / 40.0, f64::NAN],
+            ("AA", [cx, cy, sweep]) => {
+                let (cx, cy) = (cx / 40.0, cy / 40.0);
+                let (sin, cos) = sweep.to_radians().sin_cos();
+                let (dx, dy) = (at[0] - cx, at[1] - cy);
+                at = [cx + dx * cos - dy * sin, cy + dx * sin + dy * cos, f64::NAN];
+            }
+            _ => continue,
+        }
+        out.push(at);
+    }
+    out
+}
+
+/// Heidenhain conversational and HPGL are read by neither verify nor
+/// rs274: a replay of their positions here finds every toolpath move's end
+/// among them, in order (HPGL in X and Y only, to its 0.025 mm step), and
+/// every Heidenhain arc on its circle.
+#[test]
+fn heidenhain_and_hpgl_programs_go_where_the_toolpath_goes() {
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for (i, e) in EMBEDDED.iter().enumerate() {
+        let stem = embedded_stem(i);
+        if stem != "heidenhain" && stem != "hpgl" {
+            continue;
+        }
+        let post = compile(i);
+        for toolpath in TOOLPATHS {
+            let path = corpus().join("toolpaths").join(toolpath);
+            let label = format!("{} over {toolpath}", e.name);
+            let program = String::from_utf8(post_parts(&post, &path).unwrap().concat()).unwrap();
+            let (positions, tol) = if stem == "hpgl" {
+                (hpgl_positions(&program), 0.03)
+            } else {
+                (heidenhain_positions(&program, &mut failures, &label), 0.0015)
+            };
+            let close = |a: &[f64; 3], b: &[f64; 3]| a.iter().zip(b).all(|(p, q)| p.is_nan() || (p - q).abs() <= tol);
+            let mut from = 0;
+            for (n, end) in toolpath_ends(&path).iter().enumerate() {
+                match positions[from..].iter().position(|p| close(p, end)) {
+                    Some(k) => from += k + 1,
+                    None => {
+                        failures.push(format!(
+                            "{label}: move {n} to {end:?} is not among the program's positions after #{from}"
+                        ));
+                        break;
+                    }
+                }
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 2 * TOOLPATHS.len());
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
