@@ -345,6 +345,8 @@ fn user_folder(dir: &Path) -> PathBuf {
     std::fs::write(posts.join("shop.pp"), mine).unwrap();
     std::fs::write(posts.join("broken.pp"), "POST_NAME = \"Broken\"\nbegin RAPID_MOVE\n\"G0[X\"\n").unwrap();
     std::fs::write(posts.join("notes.txt"), "not a post").unwrap();
+    // A VcPost post with no `Postc.Name`: named by its header comment.
+    std::fs::copy(corpus().join("posts/vcpost/fanuc_mill.VcPost"), posts.join("fanuc_mill.VcPost")).unwrap();
     posts
 }
 
@@ -358,7 +360,20 @@ fn user_folders_are_listed_and_selected() {
     assert!(out.status.success(), "{}", said(&out));
     let listed: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let listed = listed.as_array().unwrap();
-    assert_eq!(listed.len(), EMBEDDED.len() + 2, "{listed:?}");
+    assert_eq!(listed.len(), EMBEDDED.len() + 3, "{listed:?}");
+    let vcpost = listed.iter().find(|p| p["dialect"] == "vcpost").unwrap();
+    assert_eq!(vcpost["name"], "Fanuc 0i/31i 3-axis milling post for postc (Vericut VcPost language)");
+    let out = postc_in(
+        dir.path(),
+        Some(posts.to_str().unwrap()),
+        &[
+            "post",
+            "--post",
+            "fanuc 0i/31i 3-axis milling post for postc (vericut vcpost language)",
+            toolpath.to_str().unwrap(),
+        ],
+    );
+    assert!(out.status.success(), "{}", said(&out));
     let broken = listed.iter().find(|p| p["path"].as_str().unwrap().ends_with("broken.pp")).unwrap();
     assert_eq!(broken["name"], "broken");
     assert!(broken["error"].as_str().unwrap().starts_with("PP"), "{broken}");

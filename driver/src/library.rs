@@ -17,8 +17,8 @@ use postc_ir::{Dialect, Post};
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Described {
     /// The post's own name (Vectric `POST_NAME`, CIMCO `PostInfo.title`,
-    /// Fusion `description`, VcPost `Postc.Name`); the file's stem when
-    /// the post names itself nowhere.
+    /// Fusion `description`, VcPost `Postc.Name` or its header); the
+    /// file's stem when the post names itself nowhere.
     pub name: String,
     pub dialect: Dialect,
     /// The units it writes; `None` when it writes the toolpath's own.
@@ -37,6 +37,38 @@ impl Described {
             extension: post.info.file_extension.trim_start_matches('.').to_string(),
         }
     }
+
+    /// A compiled post's description, given the file it was compiled from:
+    /// a VcPost post that sets no `Postc.Name` is named by its header, the
+    /// first line of the comments that open the file (VcPost has no name
+    /// statement of its own; Vericut names a post by its file).
+    pub fn of_file(post: &Post, path: &std::path::Path, text: &[u8]) -> Described {
+        let mut d = Described::of(post);
+        let stem = path.file_stem().map(|s| s.to_string_lossy());
+        if post.info.dialect == Dialect::VcPost
+            && stem.is_some_and(|s| s == post.info.name)
+            && let Some(header) = vcpost_header(&String::from_utf8_lossy(text))
+        {
+            d.name = header;
+        }
+        d
+    }
+}
+
+/// The first line of the comments that open a VcPost file, without its
+/// decoration (rules of `=`, `-`, `*`) and a final period; none when the
+/// file opens with code or its opening comments hold no word.
+fn vcpost_header(text: &str) -> Option<String> {
+    let lexed = postc_front_vcpost::lexer::lex(text, postc_ir::FileId::default());
+    let code_starts = lexed.tokens.iter().find(|(t, _)| !matches!(t, postc_front_vcpost::token::Token::Newline));
+    let code_starts = code_starts.map_or(usize::MAX, |(_, span)| span.start);
+    lexed
+        .comments
+        .iter()
+        .take_while(|c| c.whole_line && c.span.start < code_starts)
+        .map(|c| c.text.trim_matches(|ch: char| ch.is_whitespace() || matches!(ch, '=' | '-' | '*' | '\'')))
+        .find(|t| t.chars().any(char::is_alphanumeric))
+        .map(|t| t.strip_suffix('.').unwrap_or(t).trim_end().to_string())
 }
 
 /// The dialect as `--dialect` and `postc posts` name it.

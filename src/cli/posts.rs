@@ -79,7 +79,7 @@ fn describe(path: &Path, bytes: &[u8], dialect: Option<postc_ir::Dialect>) -> (O
     let mut sources = SourceMap::default();
     let compiled = postc_driver::compile_post_bytes(path, bytes, dialect, &mut sources);
     match compiled.post {
-        Some(post) if !compiled.has_errors() => (Some(Described::of(&post)), None),
+        Some(post) if !compiled.has_errors() => (Some(Described::of_file(&post, path, bytes)), None),
         _ => {
             let errors: Vec<&Diagnostic> = compiled.diagnostics.iter().filter(|d| d.is_error()).collect();
             let first = errors.first().map_or_else(
