@@ -256,6 +256,40 @@ fn heidenhain_and_hpgl_programs_go_where_the_toolpath_goes() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// The library's CIMCO posts (Fanuc, Haas) run under Node.js with the
+/// referee host of `tests/node_host/` (written from docs/cimco.md, sharing
+/// no code with postc) and print, byte for byte, what postc prints over the
+/// CIMCO corpus's milling toolpaths.
+#[test]
+fn node_prints_what_postc_prints_for_the_cimco_posts() {
+    use crate::support::cimco;
+    if cimco::node_or_skip("post_library").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let (mut failures, mut compared) = (Vec::new(), 0);
+    for (i, e) in EMBEDDED.iter().enumerate().filter(|(_, e)| e.name.ends_with(".js")) {
+        let post = compile(i);
+        let js = dir.path().join(format!("{}.js", embedded_stem(i)));
+        std::fs::write(&js, e.text).unwrap();
+        for toolpath in cimco::toolpaths(&post) {
+            let jsonl = dir.path().join(format!("{}.jsonl", stem(&toolpath)));
+            cimco::export_jsonl(&toolpath, &jsonl).unwrap();
+            let ours = cimco::post_toolpath(&post, &toolpath).unwrap();
+            let label = format!("{} over {}", e.name, stem(&toolpath));
+            match cimco::run_node(&js, &jsonl, &[]) {
+                Ok(theirs) if theirs == ours => compared += 1,
+                Ok(theirs) => {
+                    failures.push(format!("{label}: Node.js (-) and postc (+) differ\n{}", cimco::diff(&theirs, &ours)))
+                }
+                Err(err) => failures.push(format!("{label}: {err}")),
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    assert_eq!(compared, 6, "two posts over three toolpaths");
+}
+
 /// Runs `postc` in `dir` with `POSTC_POSTS` set as given (and no other).
 fn postc_in(dir: &Path, posts: Option<&str>, args: &[&str]) -> Output {
     let mut c = Command::new(env!("CARGO_BIN_EXE_postc"));
