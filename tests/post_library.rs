@@ -433,6 +433,26 @@ fn user_folders_are_listed_and_selected() {
     assert!(said(&out).contains("IO001") && said(&out).contains("LinuxCNC (mm)"), "{}", said(&out));
 }
 
+/// A folder of real posts lists whole and clean: the corpus's Vectric
+/// posts, one of which reads the post beside it (`POST_BASE`), and its
+/// CIMCO posts, each named by `PostInfo.title` or its file.
+#[test]
+fn the_corpus_folders_list_clean() {
+    let dir = tempfile::tempdir().unwrap();
+    for (folder, ext) in [("vectric", "pp"), ("cimco", "js"), ("vcpost", "VcPost")] {
+        let path = corpus().join("posts").join(folder);
+        let out = postc_in(dir.path(), None, &["posts", "--format", "json", path.to_str().unwrap()]);
+        assert!(out.status.success(), "{}", said(&out));
+        let listed: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let users: Vec<&serde_json::Value> =
+            listed.as_array().unwrap().iter().filter(|p| p["embedded"] == false).collect();
+        assert_eq!(users.len(), crate::support::files(&path, ext).len(), "{folder}");
+        for p in users {
+            assert!(p["error"].is_null() && p["dialect"].is_string(), "{p}");
+        }
+    }
+}
+
 #[test]
 fn two_posts_of_one_name_are_an_error_with_both_paths() {
     let dir = tempfile::tempdir().unwrap();

@@ -10,7 +10,7 @@
 use std::path::{Path, PathBuf};
 
 use postc_driver::library::{self, Described, Lookup};
-use postc_ir::{Diagnostic, SourceMap, codes};
+use postc_ir::{Diagnostic, codes};
 
 use super::report;
 use super::{Failed, fail};
@@ -74,10 +74,11 @@ impl Entry {
     }
 }
 
-/// Describes one post from its bytes.
-fn describe(path: &Path, bytes: &[u8], dialect: Option<postc_ir::Dialect>) -> (Option<Described>, Option<String>) {
-    let mut sources = SourceMap::default();
-    let compiled = postc_driver::compile_post_bytes(path, bytes, dialect, &mut sources);
+/// Describes one post from its bytes (a Vectric `POST_BASE` is read
+/// beside it, as `postc post` reads it).
+fn describe(path: &Path, bytes: &[u8]) -> (Option<Described>, Option<String>) {
+    let mut sources = postc_report::source_map();
+    let compiled = postc_driver::compile_post_bytes(path, bytes, None, &mut sources);
     match compiled.post {
         Some(post) if !compiled.has_errors() => (Some(Described::of_file(&post, path, bytes)), None),
         _ => {
@@ -140,7 +141,7 @@ fn folder_posts(dir: &Path) -> Result<Vec<Entry>, Diagnostic> {
             continue;
         }
         let (described, error) = match std::fs::read(&path) {
-            Ok(bytes) => describe(&path, &bytes, None),
+            Ok(bytes) => describe(&path, &bytes),
             Err(e) => (None, Some(format!("{}: cannot be read: {e}", codes::IO001.code))),
         };
         posts.push(Entry { origin: Origin::File(path), described, error });
@@ -155,7 +156,7 @@ pub fn library(extra: &[PathBuf]) -> Result<(Vec<Entry>, Vec<Diagnostic>), Diagn
         .iter()
         .enumerate()
         .map(|(i, e)| {
-            let (described, error) = describe(Path::new(e.name), e.text, None);
+            let (described, error) = describe(Path::new(e.name), e.text);
             Entry { origin: Origin::Embedded(i), described, error }
         })
         .collect();
