@@ -453,6 +453,27 @@ fn the_corpus_folders_list_clean() {
     }
 }
 
+/// Fusion posts are named by their `description` and write their
+/// `extension` (docs/fusion.md, choice 23): real posts of the shared corpus.
+#[test]
+fn fusion_posts_are_named_by_their_description() {
+    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/fusion/85vmh__LinuxCNCFusionPosts");
+    if !folder.is_dir() {
+        crate::support::referee_missing("fusion_posts_are_named_by_their_description", "../shared/corpus/fusion");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = postc_in(dir.path(), None, &["posts", "--format", "json", folder.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", said(&out));
+    let listed: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mill = listed.as_array().unwrap().iter().find(|p| p["path"].as_str().unwrap().ends_with("linuxcnc_mill.cps"));
+    let mill = mill.unwrap();
+    assert_eq!(mill["name"], "LinuxCNC - with optional 4th axis");
+    assert_eq!(mill["dialect"], "fusion");
+    assert_eq!(mill["extension"], "ngc");
+    assert_eq!(mill["units"], "toolpath's", "a Fusion post writes the toolpath's units");
+}
+
 #[test]
 fn two_posts_of_one_name_are_an_error_with_both_paths() {
     let dir = tempfile::tempdir().unwrap();

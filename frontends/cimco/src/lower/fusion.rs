@@ -81,12 +81,6 @@ pub(crate) fn lower(
     {
         post.info.file_extension = ext.clone();
     }
-    // The post's own name, as Fusion's post library shows it.
-    if let Some(super::consts::Const::Str(description)) = model.constant("description")
-        && !description.trim().is_empty()
-    {
-        post.info.name = description.trim().to_string();
-    }
     post.options.forget_modal_at_toolpath_start = false;
     // The host applies the post's `allowedCircularPlanes` itself.
     post.options.arcs_in_every_plane = true;
