@@ -3,8 +3,8 @@
 //!
 //! - [`cli`]: argument parsing and one module per subcommand (`post`,
 //!   `check`, `inspect`, `bench`, `toolpath gen`);
-//! - [`default_post`]: the G-code post embedded in the binary, used when
-//!   `postc post` is given only a toolpath.
+//! - [`library`]: the posts embedded in the binary: the G-code post
+//!   `postc post` uses when given only a toolpath, and the post library.
 
 pub mod cli;
-pub mod default_post;
+pub mod library;

@@ -170,8 +170,8 @@ impl Expected {
 }
 
 fn default_post(sources: &mut SourceMap) -> Post {
-    let name = Path::new(postc::default_post::NAME);
-    postc_driver::compile_post_bytes(name, postc::default_post::TEXT, None, sources).post.unwrap()
+    let name = Path::new(postc::library::DEFAULT.name);
+    postc_driver::compile_post_bytes(name, postc::library::DEFAULT.text, None, sources).post.unwrap()
 }
 
 /// Reads, posts and checks one file; returns what went wrong.

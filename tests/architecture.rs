@@ -62,7 +62,7 @@ fn the_binary_crate_holds_the_command_line() {
     let mut entries: Vec<String> =
         std::fs::read_dir(&src).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     entries.sort();
-    assert_eq!(entries, ["cli", "default_post.rs", "lib.rs", "main.rs"]);
+    assert_eq!(entries, ["cli", "lib.rs", "library.rs", "main.rs"]);
 }
 
 /// The Rust sources under a folder, with their text.

@@ -57,9 +57,15 @@ fn man_pages_render_for_every_subcommand() {
         .map(|e| e.file_name().to_string_lossy().into_owned())
         .collect();
     pages.sort();
-    for name in
-        ["postc.1", "postc-post.1", "postc-check.1", "postc-verify.1", "postc-toolpath-gen.1", "postc-completions.1"]
-    {
+    for name in [
+        "postc.1",
+        "postc-post.1",
+        "postc-posts.1",
+        "postc-check.1",
+        "postc-verify.1",
+        "postc-toolpath-gen.1",
+        "postc-completions.1",
+    ] {
         assert!(pages.iter().any(|p| p == name), "no {name} among {pages:?}");
     }
     if !have("man", "man_pages_render_for_every_subcommand") {

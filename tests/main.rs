@@ -36,6 +36,7 @@ mod lint_corpus;
 mod lsp;
 mod plot;
 mod post_budgets;
+mod post_library;
 mod postp_machines;
 mod postp_robustness;
 mod postp_words;

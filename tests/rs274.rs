@@ -1,6 +1,7 @@
 //! G-code output checked by a real interpreter: LinuxCNC's `rs274`.
 //!
-//! Every G-code post of the corpus posts every corpus toolpath; `rs274 -g -t
+//! Every G-code post of the corpus (and of the embedded library,
+//! `corpus/posts/library/`) posts every corpus toolpath; `rs274 -g -t
 //! corpus/tool.tbl` must read the program without an error, and the moves it
 //! reports (STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED) must contain every
 //! move of the toolpath, in order, at the toolpath's end points (and arc
@@ -181,6 +182,8 @@ fn gcode_posts_read_in_rs274_with_the_toolpaths_motion() {
     let mut checked = 0;
     let mut failures = Vec::new();
     let mut posts = support::files(&root().join("corpus/posts/vectric"), "pp");
+    // The embedded library's Vectric posts (docs/posts.md): LinuxCNC, grbl, Mach3/4.
+    posts.extend(support::files(&root().join("corpus/posts/library"), "pp"));
     posts.extend(
         REAL_WRAPPING_POSTS.iter().map(|rel| root().join("../shared/corpus/vectric").join(rel)).filter(|p| p.is_file()),
     );

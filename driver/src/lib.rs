@@ -16,6 +16,7 @@
 //! from its extension (`.apt`, `.cl`, `.cls`, `.ncl`, `.clt`, `cl.tap` for
 //! APT CL; `.ron`, `.jsonl` for the native stream) or its content.
 
+pub mod library;
 mod read_ahead;
 mod ron_locate;
 

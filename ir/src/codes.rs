@@ -1314,6 +1314,16 @@ declare_codes! {
     IO012: Error, "an output path is one of the command's inputs, or two outputs are the same file",
         example = "postc post job.pp job.ron -o job.ron",
         fix = "Write each output to a file of its own that the command does not read.";
+    /// `postc post --post NAME` found no post of that name among the embedded posts and the
+    /// user's post folders (`postc posts` lists them); the message names the nearest names, when
+    /// a typing mistake is likely.
+    IO013: Error, "no post in the library has the name `--post` gives",
+        example = "postc post --post \"Linuxcnc mm\" job.ron",
+        fix = "Give a name `postc posts` lists (case and blanks do not matter), or the post's path.";
+    /// `postc post --post NAME` found several posts of that name (an embedded one and a user's
+    /// copy, or two user folders); the message lists their paths.
+    IO014: Error, "several posts in the library have the name `--post` gives",
+        fix = "Give one of them a name of its own (POST_NAME, PostInfo.title, description), or post with the path.";
     /// A post written as IR in RON (as `postc convert --to ron` writes) does not read.
     IR001: Error, "a post written as IR in RON does not read",
         fix = "Correct the RON at the place the message gives.";

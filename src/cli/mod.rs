@@ -3,6 +3,8 @@
 //! ```text
 //! postc post    POST TOOLPATH [-o OUT] [--set NAME=VALUE]...   # stdout if no -o
 //! postc post    TOOLPATH                                      # embedded default post
+//! postc post    --post NAME TOOLPATH                          # a post of the library, by its name
+//! postc posts   [DIR...] [--format human|json]                # the post library: embedded and user posts
 //! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc explain CODE                                          # one diagnostic code's documentation
 //! postc check|post ... [--warn|--deny|--allow CODE|PREFIX|all]  # severity per code; also postc.toml
@@ -36,6 +38,7 @@ pub mod outputs;
 mod plot;
 mod post;
 mod postp;
+pub mod posts;
 mod probe;
 mod profile;
 pub mod report;
@@ -71,12 +74,16 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Post a toolpath: POST TOOLPATH, or TOOLPATH alone with the embedded G-code post.
+    /// Post a toolpath: POST TOOLPATH, TOOLPATH alone with the embedded G-code post, or --post NAME TOOLPATH with a post of the library (`postc posts`).
     ///
     /// The G-code it writes is verified while it is posted, on a second thread, as `postc verify PROGRAM --toolpath TOOLPATH --post POST` would (generic controller, 0.01 mm): every move replayed and compared with the toolpath, feeds, spindle, units, arcs, block numbers. Findings are VF diagnostics: a warning is printed and the program written; an error means no program is written and the exit status is 1. Their severities change as any code's (`--warn VF033`, `--deny VF`, `--allow VF035`, `postc.toml`); `--no-verify` skips verification.
     ///
     /// Not verified, with a VF044 note saying why: programs of families verify does not read (HPGL, ShopBot, Heidenhain conversational: by the post's or the output's extension or the program's first lines), programs from a call of a block or subroutine on (Sinumerik `CALL BLOCK`, LinuxCNC `o<name> call`), binary or non-G-code text output, lathe and rotary-wrapped posts, VcPost probe tables and composites event files. `--deny VF044` refuses to write a program that cannot be verified.
     Post(post::Args),
+    /// List the post library: the embedded posts and the posts of the user's folders (DIR..., `[posts] dirs` in postc.toml, POSTC_POSTS), with name, dialect, units, extension and path.
+    ///
+    /// `postc post --post NAME TOOLPATH` selects a post of this list by its name (case and blanks do not matter; the trailing `(*.ext)` of a Vectric name may be left out). docs/posts.md describes the library.
+    Posts(posts::Args),
     /// Convert a post to another dialect (Vectric .pp, VcPost, CIMCO, or the IR as RON); refused with reasons when the target cannot hold it.
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
@@ -151,6 +158,7 @@ pub fn main() -> ExitCode {
         Command::Post(args) => post::run(args),
         Command::Check(args) => check::run(args),
         Command::Explain(args) => explain::run(args),
+        Command::Posts(args) => posts::run(args),
         Command::Convert(args) => convert::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Bench(args) => bench::run(args),
@@ -192,16 +200,38 @@ pub(crate) fn load_post_with(
     sources: &mut SourceMap,
     rules: &LevelRules,
 ) -> Result<Post, Failed> {
+    match path {
+        Some(p) => {
+            let started = std::time::Instant::now();
+            let compiled = postc_driver::compile_post(p, dialect.map(Into::into), sources);
+            loaded(compiled, &p.display().to_string(), sources, rules, started)
+        }
+        None => load_embedded(crate::library::DEFAULT, sources, rules),
+    }
+}
+
+/// Compiles an embedded post (docs/posts.md), as [`load_post_with`] does a
+/// file; its extension gives its dialect.
+pub(crate) fn load_embedded(
+    post: crate::library::Embedded,
+    sources: &mut SourceMap,
+    rules: &LevelRules,
+) -> Result<Post, Failed> {
     let started = std::time::Instant::now();
-    let mut compiled = match path {
-        Some(p) => postc_driver::compile_post(p, dialect.map(Into::into), sources),
-        None => postc_driver::compile_post_bytes(
-            std::path::Path::new(crate::default_post::NAME),
-            crate::default_post::TEXT,
-            Some(Dialect::Vectric),
-            sources,
-        ),
-    };
+    let path = std::path::Path::new(post.name);
+    let compiled = postc_driver::compile_post_bytes(path, post.text, None, sources);
+    loaded(compiled, post.name, sources, rules, started)
+}
+
+/// A compiled post's diagnostics printed; the post, unless it has errors
+/// (under `-v`, what was compiled and how long it took since `started`).
+fn loaded(
+    mut compiled: postc_driver::Compiled,
+    name: &str,
+    sources: &mut SourceMap,
+    rules: &LevelRules,
+    started: std::time::Instant,
+) -> Result<Post, Failed> {
     rules.apply(&mut compiled.diagnostics);
     report::eprint(sources, &compiled.diagnostics);
     match compiled.post {
@@ -209,8 +239,7 @@ pub(crate) fn load_post_with(
             report::step(
                 started,
                 format_args!(
-                    "compiled `{}` ({:?} post `{}`: {} functions, {} handlers, {} variables)",
-                    path.map_or(crate::default_post::NAME.into(), |p| p.display().to_string()),
+                    "compiled `{name}` ({:?} post `{}`: {} functions, {} handlers, {} variables)",
                     post.info.dialect,
                     post.info.name,
                     post.functions.len(),
@@ -221,7 +250,6 @@ pub(crate) fn load_post_with(
             Ok(post)
         }
         _ => {
-            let name = path.map_or(crate::default_post::NAME.into(), |p| p.display().to_string());
             eprintln!("postc: `{name}` has errors; nothing was posted");
             Err(Failed)
         }

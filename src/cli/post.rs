@@ -17,9 +17,12 @@ use super::{DialectArg, Failed, fail, load_post_with, report};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// POST TOOLPATH, or just TOOLPATH to use the embedded G-code post.
+    /// POST TOOLPATH, or just TOOLPATH to use the embedded G-code post (or the post `--post` names).
     #[arg(required = true, num_args = 1..=2, value_name = "POST TOOLPATH")]
     files: Vec<PathBuf>,
+    /// Post with the library's post of this name (`postc posts` lists them): case and blanks do not matter, and a Vectric name's trailing `(*.ext)` may be left out.
+    #[arg(long = "post", value_name = "NAME")]
+    post_name: Option<String>,
     /// Write the program here (tape-split parts go beside it) instead of to standard output.
     #[arg(short, long, value_name = "OUT")]
     output: Option<PathBuf>,
@@ -93,12 +96,33 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let started = std::time::Instant::now();
     let mut sources = postc_report::source_map();
     args.levels.check(&mut sources)?;
+    let chosen = match &args.post_name {
+        None => None,
+        Some(_) if args.files.len() == 2 => {
+            return Err(fail(
+                &mut sources,
+                Diagnostic::error(
+                    codes::IO006,
+                    format!("`--post` names the post, and `{}` is given as a post too", args.files[0].display()),
+                )
+                .help(
+                    "give the post by name (`postc post --post NAME TOOLPATH`) or by path (`postc post POST TOOLPATH`)",
+                ),
+            ));
+        }
+        Some(name) => Some(super::posts::find(name).map_err(|d| fail(&mut sources, d))?),
+    };
+    let (embedded, chosen_file) = match chosen.map(|e| e.origin) {
+        Some(super::posts::Origin::Embedded(i)) => (Some(crate::library::EMBEDDED[i]), None),
+        Some(super::posts::Origin::File(p)) => (None, Some(p)),
+        None => (None, None),
+    };
     let (post_path, toolpath) = match args.files.as_slice() {
-        [toolpath] => (None, toolpath),
+        [toolpath] => (chosen_file.as_ref(), toolpath),
         [post, toolpath] => (Some(post), toolpath),
         _ => unreachable!("clap takes one or two files"),
     };
-    let inputs: Vec<&Path> = args.files.iter().map(PathBuf::as_path).collect();
+    let inputs: Vec<&Path> = args.files.iter().chain(&chosen_file).map(PathBuf::as_path).collect();
     let outputs: Vec<&Path> = args.output.iter().chain(&args.trace).map(PathBuf::as_path).collect();
     super::outputs::check_paths(&inputs, &outputs).map_err(|d| fail(&mut sources, d))?;
     if let Some(kind) = super::probe::job_kind(toolpath) {
@@ -132,7 +156,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             .help(format!("postc post {} {}", toolpath.display(), post.display())),
         ));
     }
-    if post_path.is_none() && !postc_driver::is_toolpath(toolpath, &postc_report::FsLoader) {
+    if post_path.is_none() && embedded.is_none() && !postc_driver::is_toolpath(toolpath, &postc_report::FsLoader) {
         return Err(fail(
             &mut sources,
             Diagnostic::error(codes::IO006, format!("`{}` is not a toolpath", toolpath.display()))
@@ -140,7 +164,10 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ));
     }
     let rules = args.levels.rules_for(Some(post_path.unwrap_or(toolpath))).map_err(|d| fail(&mut sources, d))?;
-    let post = load_post_with(post_path, args.dialect, &mut sources, &rules)?;
+    let post = match embedded {
+        Some(e) => super::load_embedded(e, &mut sources, &rules)?,
+        None => load_post_with(post_path, args.dialect, &mut sources, &rules)?,
+    };
     let mut options = RunOptions {
         exact_arcs: args.exact_arcs,
         script_host: postc_driver::script_host(&post),

@@ -1,2 +1,3 @@
+mod library;
 mod read_ahead;
 mod ron_locate;

@@ -86,6 +86,16 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     post.info.source = path.display().to_string();
     post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     post.info.file_extension = "nc".into();
+    // What the post says of itself: its name as Fusion's post library shows
+    // it (`description`) and its files' extension. The host gives both a
+    // default, so in the merged program neither is a constant: they are
+    // read from the post's own statements.
+    if let Some(description) = own_text(&program, "description").filter(|d| !d.trim().is_empty()) {
+        post.info.name = description.trim().to_string();
+    }
+    if let Some(extension) = own_text(&program, "extension").filter(|e| !e.trim().is_empty()) {
+        post.info.file_extension = extension.trim().trim_start_matches('.').to_string();
+    }
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
         let stubs = stubs(&host);
         let merged = merge(host, program);
@@ -118,6 +128,25 @@ fn stubs(host: &Program) -> HashSet<String> {
             _ => None,
         })
         .collect()
+}
+
+/// The text the post's last top-level statement of the form `NAME =
+/// "..."` (or `var NAME = "..."`) gives NAME.
+fn own_text(program: &Program, name: &str) -> Option<String> {
+    let text_of = |e: &crate::ast::Expr| match &e.kind {
+        ExprKind::String(t) => Some(t.clone()),
+        _ => None,
+    };
+    program.body.iter().rev().find_map(|s| match &s.kind {
+        StmtKind::Expr(e) => match &e.kind {
+            ExprKind::Assign { op: crate::ast::AssignOp::Assign, target, value } => {
+                matches!(&target.kind, ExprKind::Ident(n) if n == name).then(|| text_of(value)).flatten()
+            }
+            _ => None,
+        },
+        StmtKind::Var(ds) => ds.iter().rev().find(|d| d.name.name == name)?.init.as_ref().and_then(text_of),
+        _ => None,
+    })
 }
 
 /// The host's statements, less the functions the post declares, then the
