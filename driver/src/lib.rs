@@ -18,6 +18,7 @@
 
 mod read_ahead;
 mod ron_locate;
+pub mod settings;
 
 pub use read_ahead::ReadAhead;
 
@@ -123,6 +124,39 @@ pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
         },
         _ => std::borrow::Cow::Borrowed(post),
     }
+}
+
+/// What `postc check` says about a post file: its compiler's diagnostics
+/// and, when it compiles without errors, the lints' (`postc_lint`). The CLI
+/// and the Python package's `check` both call this.
+pub fn check_post(
+    path: &Path,
+    dialect: Option<Dialect>,
+    lint: &postc_lint::Options,
+    sources: &mut SourceMap,
+) -> Vec<Diagnostic> {
+    check_compiled(compile_post(path, dialect, sources), lint)
+}
+
+/// [`check_post`] of a post given as bytes (a post's text in memory).
+pub fn check_post_bytes(
+    path: &Path,
+    bytes: &[u8],
+    dialect: Option<Dialect>,
+    lint: &postc_lint::Options,
+    sources: &mut SourceMap,
+) -> Vec<Diagnostic> {
+    check_compiled(compile_post_bytes(path, bytes, dialect, sources), lint)
+}
+
+fn check_compiled(compiled: Compiled, lint: &postc_lint::Options) -> Vec<Diagnostic> {
+    let mut diagnostics = compiled.diagnostics;
+    if let Some(post) = &compiled.post
+        && !postc_ir::diagnostic::has_errors(&diagnostics)
+    {
+        diagnostics.extend(postc_lint::lint(post, lint));
+    }
+    diagnostics
 }
 
 /// Reads (through the source map's loader) and compiles a post file.
