@@ -126,39 +126,6 @@ pub fn for_calls(post: &Post) -> std::borrow::Cow<'_, Post> {
     }
 }
 
-/// What `postc check` says about a post file: its compiler's diagnostics
-/// and, when it compiles without errors, the lints' (`postc_lint`). The CLI
-/// and the Python package's `check` both call this.
-pub fn check_post(
-    path: &Path,
-    dialect: Option<Dialect>,
-    lint: &postc_lint::Options,
-    sources: &mut SourceMap,
-) -> Vec<Diagnostic> {
-    check_compiled(compile_post(path, dialect, sources), lint)
-}
-
-/// [`check_post`] of a post given as bytes (a post's text in memory).
-pub fn check_post_bytes(
-    path: &Path,
-    bytes: &[u8],
-    dialect: Option<Dialect>,
-    lint: &postc_lint::Options,
-    sources: &mut SourceMap,
-) -> Vec<Diagnostic> {
-    check_compiled(compile_post_bytes(path, bytes, dialect, sources), lint)
-}
-
-fn check_compiled(compiled: Compiled, lint: &postc_lint::Options) -> Vec<Diagnostic> {
-    let mut diagnostics = compiled.diagnostics;
-    if let Some(post) = &compiled.post
-        && !postc_ir::diagnostic::has_errors(&diagnostics)
-    {
-        diagnostics.extend(postc_lint::lint(post, lint));
-    }
-    diagnostics
-}
-
 /// Reads (through the source map's loader) and compiles a post file.
 pub fn compile_post(path: &Path, dialect: Option<Dialect>, sources: &mut SourceMap) -> Compiled {
     match sources.loader().read(path) {

@@ -1,13 +1,12 @@
 //! The settings of a run that its caller gives (the CLI's `--set` and
-//! `-o`, the Python package's `set=` and `out=`), and the clock they read
-//! "now" from: one meaning for every edge that posts.
+//! `-o`, the Python package's `set=` and `out=`): one meaning for every
+//! edge that posts.
 
 use std::path::Path;
-use std::time::{SystemTime, UNIX_EPOCH};
 
+use postc_ir::Diagnostic;
 use postc_ir::codes;
 use postc_ir::event::FileInfo;
-use postc_ir::{Diagnostic, Post};
 use postc_runtime::RunOptions;
 
 /// The names [`apply_sets`] knows.
@@ -51,22 +50,4 @@ pub fn file_info(path: &Path) -> FileInfo {
         dir: absolute.parent().map(|p| p.display().to_string()).unwrap_or_default(),
         extension: path.extension().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
     }
-}
-
-/// Now as a Unix time in seconds, or the time `SOURCE_DATE_EPOCH` names
-/// when it is set (the reproducible-builds convention): what `[DATE]` and
-/// `[TIME]` print when neither the job nor a setting gives them. The
-/// runtime never reads the clock; the edges (the CLI, the Python package)
-/// read it here.
-pub fn now() -> i64 {
-    std::env::var("SOURCE_DATE_EPOCH")
-        .ok()
-        .and_then(|s| s.trim().parse::<i64>().ok())
-        .unwrap_or_else(|| SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64))
-}
-
-/// The options of a run of `post` as an edge starts it: "now" from the
-/// clock ([`now`]) and the post's script host ([`crate::script_host`]).
-pub fn post_options(post: &Post) -> RunOptions {
-    RunOptions { now: Some(now()), ..crate::run_options(post) }
 }

@@ -207,7 +207,8 @@ fn post(
         }
     }
     let compiled = compile(py, &post_input, dialect, &mut sources)?;
-    let mut options = postc_driver::settings::post_options(&compiled);
+    let mut options =
+        postc_runtime::RunOptions { now: Some(postc_report::now()), ..postc_driver::run_options(&compiled) };
     options.exact_arcs = exact_arcs;
     if let Err(d) = postc_driver::settings::apply_sets(&sets(set)?, &mut options) {
         return Err(diagnostics::error(py, &mut sources, &[d], "set", "a setting postc does not take"));
@@ -294,10 +295,8 @@ fn check<'py>(
         Input::Path(path) if dialect.is_none() && postc_driver::is_toolpath(path, &postc_report::FsLoader) => {
             postc_driver::check_toolpath(path, &mut sources)
         }
-        Input::Path(path) => postc_driver::check_post(path, dialect, &lint, &mut sources),
-        Input::Text(name, bytes) => {
-            postc_driver::check_post_bytes(Path::new(name), bytes, dialect, &lint, &mut sources)
-        }
+        Input::Path(path) => postc_lint::check_post(path, dialect, &lint, &mut sources),
+        Input::Text(name, bytes) => postc_lint::check_post_bytes(Path::new(name), bytes, dialect, &lint, &mut sources),
     };
     diagnostics::list(py, &sources, &found, &name)
 }

@@ -74,7 +74,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             postc_driver::check_toolpath(file, &mut sources)
         } else {
             let options = postc_lint::Options { product: args.product.map(Into::into) };
-            postc_driver::check_post(file, args.dialect.map(Into::into), &options, &mut sources)
+            postc_lint::check_post(file, args.dialect.map(Into::into), &options, &mut sources)
         };
         let mut diagnostics = diagnostics;
         match args.levels.rules_for(Some(file)) {
