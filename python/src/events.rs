@@ -22,7 +22,7 @@ use pyo3::types::PyIterator;
 pub struct PyEvents<'py> {
     items: Bound<'py, PyIterator>,
     /// The source map's entry for the iterable; spans are item numbers.
-    file: FileId,
+    pub file: FileId,
     /// Items read so far.
     read: usize,
     checks: StreamChecks,
@@ -34,6 +34,22 @@ pub struct PyEvents<'py> {
 /// What a diagnostic about an item says of where it is.
 fn at_item(n: usize) -> String {
     format!("event {n} of the toolpath iterable (the first is 1)")
+}
+
+/// Labels in the iterable (whose spans are item numbers, not places in a
+/// text) become notes naming the item: `event N of the toolpath iterable`.
+pub fn locate(found: &mut [Diagnostic], file: FileId) {
+    for d in found {
+        let mut notes = Vec::new();
+        d.labels.retain(|l| {
+            if l.span.file != file {
+                return true;
+            }
+            notes.push(format!("{}: {}", at_item(l.span.start + 1), l.message));
+            false
+        });
+        d.notes.splice(0..0, notes);
+    }
 }
 
 impl<'py> PyEvents<'py> {
@@ -59,11 +75,7 @@ impl EventSource for PyEvents<'_> {
             match crate::moves::event(&item) {
                 Ok(event) => {
                     let next = Some((event, span));
-                    let before = diagnostics.len();
                     self.checks.check(next.as_ref(), span, diagnostics);
-                    for d in &mut diagnostics[before..] {
-                        d.notes.push(at_item(self.read));
-                    }
                     return next;
                 }
                 Err(why) => diagnostics.push(

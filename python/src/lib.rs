@@ -126,6 +126,14 @@ impl<'py> Toolpath<'py> {
         }
     }
 
+    /// Diagnostics with their labels in an iterable turned into notes
+    /// naming the item ([`events::locate`]).
+    fn locate(&self, found: &mut [Found]) {
+        if let Toolpath::Items(i) = self {
+            events::locate(found, i.file);
+        }
+    }
+
     /// The exception the iterable raised, if it did.
     fn raised(&mut self) -> Option<PyErr> {
         match self {
@@ -222,9 +230,10 @@ fn post(
     if let Some(raised) = toolpath_events.raised() {
         return Err(raised);
     }
-    let report = match run {
+    let mut report = match run {
         Ok(report) => report,
-        Err(found) => {
+        Err(mut found) => {
+            toolpath_events.locate(&mut found);
             return Err(diagnostics::error(
                 py,
                 &mut sources,
@@ -234,6 +243,7 @@ fn post(
             ));
         }
     };
+    toolpath_events.locate(&mut report.warnings);
     diagnostics::warn(py, &mut sources, &report.warnings)?;
     let Finished::Memory(parts) = report.output else {
         return Err(PostError::new_err("postc posted to memory but the program is not there"));
@@ -397,10 +407,11 @@ fn verify<'py>(
         Ok(t) => t,
         Err(d) => return Err(diagnostics::error(py, &mut sources, &[d], &toolpath_name, "nothing was verified")),
     };
-    let report = postc_verify::verify(&mut bytes.as_slice(), file, toolpath_events.source(), &settings);
+    let mut report = postc_verify::verify(&mut bytes.as_slice(), file, toolpath_events.source(), &settings);
     if let Some(raised) = toolpath_events.raised() {
         return Err(raised);
     }
+    toolpath_events.locate(&mut report.findings);
     diagnostics::list(py, &sources, &report.findings, &name)
 }
 

@@ -66,11 +66,15 @@ def test_bad_arguments_are_value_errors():
     assert [d.code for d in e.value.diagnostics] == ["IO007"]
 
 
-def test_a_refused_conversion(tmp_path):
-    text = POST.read_text().replace('begin HEADER', 'begin HEADER\n"[Z_CUT]"', 1)
-    # Whatever the backend refuses is a PostError with reasons; a post it
-    # converts gives text. Either way, no other exception.
-    try:
-        assert postc.convert(text, "vcpost", dialect="vectric")
-    except postc.PostError as e:
-        assert e.diagnostics
+def test_a_refused_conversion_carries_the_commands_reasons(cli):
+    """A CIMCO post with code is no Vectric post: refused with CV002 at the
+    line `postc convert` names."""
+    from conftest import REPO
+    js = REPO / "corpus" / "posts" / "cimco" / "fanuc_mill.js"
+    refused = cli("convert", js, "--to", "vectric", check=False)
+    assert refused.returncode == 1 and b"CV002" in refused.stderr
+    with pytest.raises(postc.PostError) as e:
+        postc.convert(js, "vectric")
+    d = e.value.diagnostics[0]
+    assert (d.code, d.severity, d.file, d.line) == ("CV002", "error", str(js), 63)
+    assert "cannot be converted" in str(e.value)
