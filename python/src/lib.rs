@@ -189,8 +189,24 @@ fn same_file(a: &Path, b: &Path) -> bool {
     matches!((std::fs::canonicalize(a), std::fs::canonicalize(b)), (Ok(a), Ok(b)) if a == b)
 }
 
-/// Posts a toolpath through a post and returns the program's text, or
-/// writes it to `out` (whole or not at all) and returns None.
+/// Posts `toolpath` through `post` and returns the program's text, or
+/// writes it to `out` (whole, or not at all; tape-split parts beside it)
+/// and returns None.
+///
+/// `post` is a path, or a post's text (a str with a line break, or bytes);
+/// its dialect comes from its extension or its content, and `dialect`
+/// ("vectric", "cimco", "vcpost", "fusion", "ir") overrides. `toolpath` is
+/// a path (.ron, .jsonl, APT CL) or any iterable of events as dicts,
+/// {"Feed": {"x": 10, "y": 5, "z": -1}}, or names, "End"
+/// (docs/toolpath-format.md). `set` gives job values as `--set` does: a
+/// dict ({"date": "2026-01-01"}) or "NAME=VALUE" strings. `exact_arcs`
+/// computes arc words from the printed end points.
+///
+/// Raises PostError (with `.diagnostics`) when the post has errors, the
+/// toolpath does not read or posting fails; an exception the iterable
+/// raises is raised again. Warnings go to Python's warnings module as
+/// PostWarning. The program is not verified while it is posted: call
+/// verify().
 #[pyfunction]
 #[pyo3(signature = (post, toolpath, *, out=None, set=None, dialect=None, exact_arcs=false))]
 fn post(
@@ -270,8 +286,11 @@ fn post(
     }
 }
 
-/// Lints a post (or checks a toolpath file) as `postc check` does: every
-/// diagnostic, errors included, as a list of `Diagnostic`.
+/// What `postc check` says about a post (or a toolpath file): every
+/// diagnostic, errors included, as a list of Diagnostic; an empty list for
+/// a clean post. `product` ("cut2d", "vcarve", "aspire", "cut3d",
+/// "photovcarve") warns about what that Vectric product's post processor
+/// does not support.
 #[pyfunction]
 #[pyo3(signature = (post, *, dialect=None, product=None))]
 fn check<'py>(
@@ -311,8 +330,9 @@ fn check<'py>(
     diagnostics::list(py, &sources, &found, &name)
 }
 
-/// Converts a post to another dialect (`vectric`, `vcpost`, `cimco`,
-/// `ron`) and returns its text; refused with the reasons as a `PostError`.
+/// The post as a post of another dialect, `to` = "vectric", "vcpost",
+/// "cimco" or "ron" (`postc convert`). Raises PostError with every reason
+/// when the target cannot hold the post.
 #[pyfunction]
 #[pyo3(signature = (post, to, *, dialect=None))]
 fn convert(py: Python<'_>, post: &Bound<'_, PyAny>, to: &str, dialect: Option<&str>) -> PyResult<String> {
@@ -343,10 +363,15 @@ fn convert(py: Python<'_>, post: &Bound<'_, PyAny>, to: &str, dialect: Option<&s
     }
 }
 
-/// Replays a G-code program and compares its motion with the toolpath it
-/// was posted from (a file or an iterable of events), as `postc verify`
-/// does; returns the findings (an empty list: the program makes the
-/// toolpath's moves). A program verify cannot read is a `PostError`.
+/// Replays a G-code program (a path, or its text) and compares its motion
+/// with the toolpath it was posted from (a path or an iterable of events),
+/// as `postc verify` does; returns the findings as Diagnostics (no error
+/// among them: the program makes the toolpath's moves). `post` tells
+/// verify the program's units, rounding and block numbering; `controller`
+/// ("linuxcnc", "fanuc", "haas", "grbl", "generic") its limits;
+/// `tolerance` is in mm. Raises PostError for a program verify does not
+/// read (HPGL, ShopBot, Heidenhain conversational, binary) or a toolpath
+/// that does not read.
 #[pyfunction]
 #[pyo3(signature = (program, toolpath, *, post=None, dialect=None, controller="generic", tolerance=0.01))]
 fn verify<'py>(
