@@ -61,6 +61,7 @@ def post(
     set: Optional[Union[Mapping[str, Any], Iterable[str]]] = None,
     dialect: Optional[Dialect] = None,
     exact_arcs: bool = False,
+    verify: bool = True,
 ) -> Optional[str]:
     """Posts ``toolpath`` through ``post`` and returns the program's text, or
     writes it to ``out`` (whole, or not at all; tape-split parts beside it)
@@ -75,8 +76,13 @@ def post(
     A program whose bytes are not UTF-8 is returned byte for character
     (Latin-1). Raises ``PostError`` when the post has errors, the toolpath
     does not read or posting fails; an exception the iterable raises is
-    raised again. Unlike the command, the program is not verified while it
-    is posted: call ``verify``.
+    raised again. Warnings go to Python's ``warnings`` as ``PostWarning``.
+
+    The program is verified as ``postc post`` verifies it (the generic
+    controller, 0.01 mm): an error refuses it (``PostError`` with the
+    findings; nothing is written), a program verify does not read (HPGL,
+    ShopBot, ...) is said with a VF044 note. ``verify=False`` skips it, as
+    ``--no-verify`` does.
     """
 
 def check(

@@ -12,6 +12,7 @@
 mod diagnostics;
 mod events;
 mod moves;
+mod verifying;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -205,10 +206,13 @@ fn same_file(a: &Path, b: &Path) -> bool {
 /// Raises PostError (with `.diagnostics`) when the post has errors, the
 /// toolpath does not read or posting fails; an exception the iterable
 /// raises is raised again. Warnings go to Python's warnings module as
-/// PostWarning. The program is not verified while it is posted: call
-/// verify().
+/// PostWarning. The program is verified as `postc post` verifies it (the
+/// generic controller, 0.01 mm): an error refuses it (PostError with the
+/// findings), a program verify does not read is said as a VF044 note;
+/// `verify=False` skips verification.
 #[pyfunction]
-#[pyo3(signature = (post, toolpath, *, out=None, set=None, dialect=None, exact_arcs=false))]
+#[pyo3(signature = (post, toolpath, *, out=None, set=None, dialect=None, exact_arcs=false, verify=true))]
+#[allow(clippy::too_many_arguments)]
 fn post(
     py: Python<'_>,
     post: &Bound<'_, PyAny>,
@@ -217,6 +221,7 @@ fn post(
     set: Option<&Bound<'_, PyAny>>,
     dialect: Option<&str>,
     exact_arcs: bool,
+    verify: bool,
 ) -> PyResult<Option<String>> {
     let mut sources = postc_report::source_map();
     let post_input = Input::of(post, "<post text>")?;
@@ -242,7 +247,13 @@ fn post(
         Ok(t) => t,
         Err(d) => return Err(diagnostics::error(py, &mut sources, &[d], &toolpath_name, "nothing was posted")),
     };
-    let run = postc_runtime::run(&compiled, toolpath_events.source(), Output::memory(), options);
+    let (run, records) = if verify {
+        let mut recording = verifying::Recording { inner: toolpath_events.source(), records: Vec::new() };
+        let run = postc_runtime::run(&compiled, &mut recording, Output::memory(), options);
+        (run, Some(recording.records))
+    } else {
+        (postc_runtime::run(&compiled, toolpath_events.source(), Output::memory(), options), None)
+    };
     if let Some(raised) = toolpath_events.raised() {
         return Err(raised);
     }
@@ -264,6 +275,28 @@ fn post(
     let Finished::Memory(parts) = report.output else {
         return Err(PostError::new_err("postc posted to memory but the program is not there"));
     };
+    if let Some(records) = records {
+        let program = parts.concat();
+        let name = out.as_ref().map_or_else(|| "<program>".to_string(), |p| p.display().to_string());
+        let ext =
+            out.as_deref().and_then(Path::extension).map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
+        match verifying::verify(&compiled, &program, &name, &ext, records, &mut sources) {
+            verifying::Verdict::Unverified(note) => diagnostics::warn(py, &mut sources, &[note])?,
+            verifying::Verdict::Findings(mut findings) => {
+                toolpath_events.locate(&mut findings);
+                if postc_ir::diagnostic::has_errors(&findings) {
+                    return Err(diagnostics::error(
+                        py,
+                        &mut sources,
+                        &findings,
+                        &name,
+                        "verifying the program found errors; the program was not written (post with verify=False to have it anyway)",
+                    ));
+                }
+                diagnostics::warn(py, &mut sources, &findings)?;
+            }
+        }
+    }
     match out {
         None => Ok(Some(text(parts.concat()))),
         Some(out) => {

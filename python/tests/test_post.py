@@ -40,27 +40,36 @@ def test_every_event_of_the_standard_job_reads_from_dicts(cli, tmp_path):
             continue
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            assert same_bytes(postc.post(post, read_jsonl(jsonl)), expected.stdout), post.name
+            assert same_bytes(postc.post(post, read_jsonl(jsonl), verify=False), expected.stdout), post.name
 
 
-def test_real_vectric_posts_post_the_python_pocket_as_the_command_does(cli, tmp_path):
+def test_real_vectric_posts_post_and_verify_the_python_pocket_as_the_command_does(cli, tmp_path):
+    """Every field post of the shared corpus: the program posted from the
+    generator is the command's, byte for byte, and verifying it (the
+    default) refuses it exactly when the command refuses it."""
     posts = field_posts()
     jsonl = write_jsonl(tmp_path / "pocket.jsonl", pocket())
-    compared = 0
+    compared = refused = 0
     for post in posts:
         expected = cli("post", "--no-verify", post, jsonl, check=False)
-        if expected.returncode != 0:
-            with pytest.raises(postc.PostError):
-                with warnings.catch_warnings():
-                    warnings.simplefilter("ignore")
-                    postc.post(post, pocket())
-            continue
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            program = postc.post(post, pocket())
-        assert same_bytes(program, expected.stdout), post
-        compared += 1
-    print(f"{compared} of {len(posts)} real Vectric posts posted the pocket as the command does")
+            if expected.returncode != 0:
+                with pytest.raises(postc.PostError):
+                    postc.post(post, pocket(), verify=False)
+                continue
+            program = postc.post(post, pocket(), verify=False)
+            assert same_bytes(program, expected.stdout), post
+            compared += 1
+            verified = cli("post", post, jsonl, check=False)
+            try:
+                postc.post(post, pocket())
+                assert verified.returncode == 0, f"{post}: the command refuses, Python does not"
+            except postc.PostError as e:
+                refused += 1
+                assert verified.returncode == 1, f"{post}: Python refuses, the command does not: {e}"
+    print(f"{compared} of {len(posts)} real Vectric posts posted the pocket as the command does; "
+          f"verifying refused {refused} of them, as the command does")
     if posts:
         assert compared >= len(posts) // 2, f"only {compared} of {len(posts)} real posts posted"
 

@@ -41,3 +41,33 @@ def test_a_program_of_another_family_is_refused(tmp_path):
     with pytest.raises(postc.PostError) as e:
         postc.verify(hpgl, pocket())
     assert [d.code for d in e.value.diagnostics] == ["VF001"]
+
+
+def test_post_verifies_what_it_posts_as_the_command_does(cli, tmp_path):
+    """A post whose X is printed twice too large: `postc post` refuses the
+    program, and so does postc.post, with the same findings."""
+    doubled = tmp_path / "doubled.pp"
+    doubled.write_text(POST.read_text().replace("VAR X_POSITION = [X|C|X|1.3]", "VAR X_POSITION = [X|C|X|1.3|2]"))
+    toolpath = write_jsonl(tmp_path / "pocket.jsonl", pocket())
+    refused = cli("post", doubled, toolpath, "-o", tmp_path / "cli.ngc", check=False)
+    assert refused.returncode == 1 and not (tmp_path / "cli.ngc").exists()
+    with pytest.raises(postc.PostError) as e:
+        postc.post(doubled, pocket(), out=tmp_path / "py.ngc")
+    assert not (tmp_path / "py.ngc").exists()
+    codes = sorted({d.code for d in e.value.diagnostics if d.severity == "error"})
+    assert codes and all(c.startswith("VF") for c in codes)
+    assert all(c.encode() in refused.stderr for c in codes)
+    assert "verifying the program found errors" in str(e.value)
+    # verify=False writes it as posted, as --no-verify does.
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "py").mkdir()
+    cli("post", "--no-verify", doubled, toolpath, "-o", tmp_path / "cli" / "job.ngc")
+    postc.post(doubled, pocket(), out=tmp_path / "py" / "job.ngc", verify=False)
+    assert (tmp_path / "py" / "job.ngc").read_bytes() == (tmp_path / "cli" / "job.ngc").read_bytes()
+
+
+def test_a_program_verify_does_not_read_is_posted_with_a_note():
+    hpgl = POST.parent / "hpgl_arcs.pp"
+    with pytest.warns(postc.PostWarning, match="VF044"):
+        program = postc.post(hpgl, pocket())
+    assert program
