@@ -132,3 +132,38 @@ def test_warnings_are_python_warnings():
     events = [e for e in pocket() if e != "End"]
     with pytest.warns(postc.PostWarning, match="TP005"):
         postc.post(POST, events)
+
+
+def test_the_fast_path_reads_what_serde_reads(cli, tmp_path):
+    """Every move of the standard job (arcs both ways, helices, intents,
+    rotary words) read by the fast path, and read by serde (a `"feed": None`
+    sends a move there): the same program."""
+    jsonl = tmp_path / "standard.jsonl"
+    cli("toolpath", "gen", "--pattern", "standard", "--moves", "300", "-o", jsonl)
+    events = read_jsonl(jsonl)
+    moves = [e for e in events if isinstance(e, dict) and set(e) & {"Rapid", "Feed", "Arc"}]
+    assert {next(iter(e)) for e in moves} == {"Rapid", "Feed", "Arc"}
+
+    def through_serde(e):
+        if isinstance(e, dict) and set(e) & {"Feed", "Arc"}:
+            (name, fields), = e.items()
+            if fields.get("feed") is None:
+                return {name: dict(fields, feed=None)}
+        if isinstance(e, dict) and "Rapid" in e:
+            return {"Rapid": dict(e["Rapid"], a=None)} if "a" not in e["Rapid"] else e
+        return e
+
+    for post in ("gcode_mm.pp", "gcode_arcs_inch.pp", "rotary_wrap_mm.pp"):
+        path = POST.parent / post
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            fast = postc.post(path, events, verify=False)
+            slow = postc.post(path, [through_serde(e) for e in events], verify=False)
+        assert fast == slow, post
+
+
+def test_check_product_as_the_command(cli):
+    import json
+    for product in ("cut2d", "aspire"):
+        expected = json.loads(cli("check", "--format", "json", "--product", product, POST, check=False).stdout)
+        assert [d.to_dict() for d in postc.check(POST, product=product)] == expected
