@@ -288,8 +288,8 @@ fn crate_folders() -> Vec<String> {
 /// The folders at the root are the architecture's layers
 /// (docs/architecture.md draws them): dialect frontends, toolpath readers,
 /// the driver, the runtime, script hosts, backends, lint, verify, the
-/// language server, report, the command line (`src/`), and beside them the
-/// fuzzer, benches, corpus, docs and tests.
+/// language server, report, the command line (`src/`), the Python package
+/// (`python/`), and beside them the fuzzer, benches, corpus, docs and tests.
 #[test]
 fn the_root_folders_are_the_layers() {
     assert_eq!(
@@ -307,6 +307,7 @@ fn the_root_folders_are_the_layers() {
             "lint",
             "lsp",
             "postp",
+            "python",
             "readers",
             "report",
             "runtime",
@@ -485,7 +486,10 @@ fn each_crate_links_one_integration_test_binary() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     for krate in std::iter::once(".".to_string()).chain(crate_folders()) {
         let dir = root.join(&krate);
-        if !dir.join("tests").is_dir() {
+        // python/tests holds the Python package's pytest files, no Rust.
+        let rust_tests = std::fs::read_dir(dir.join("tests"))
+            .is_ok_and(|entries| entries.flatten().any(|e| e.path().extension().is_some_and(|x| x == "rs")));
+        if !rust_tests {
             continue;
         }
         let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();

@@ -19,6 +19,7 @@
 pub mod library;
 mod read_ahead;
 mod ron_locate;
+pub mod settings;
 
 pub use read_ahead::ReadAhead;
 

@@ -1350,6 +1350,12 @@ declare_codes! {
     /// that stopped), and the program posted from it would end early.
     TP005: Warning, "the toolpath ends without an End event: it may be cut short",
         fix = "Post the whole toolpath; if it is whole, end it with `End`.";
+    /// An event a Python program gives the `postc` package (an item of the iterable passed as
+    /// the toolpath) is not an event of the native schema: a dict of one event name and its
+    /// fields (`{"Feed": {"x": 10, "y": 5, "z": -1}}`) or a unit event's name (`"End"`).
+    TP006: Error, "an event of a Python toolpath iterable is not a valid event",
+        example = "postc.post(\"job.pp\", [{\"Feed\": {\"x\": 10, \"y\": 5}}])",
+        fix = "Give each event as docs/toolpath-format.md writes it in JSON, as a dict (or a unit event's name as a string).";
     /// Every event may run at most a step budget of statements, so that a loop that never ends
     /// stops. The post ran past it; the message points at the loop.
     RT002: Error, "a post ran more than its step budget for one event (a loop that never ends); points at the loop",

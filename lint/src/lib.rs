@@ -9,8 +9,9 @@
 //!
 //! One rule per file under [`rules`], each with its code (`LN0xx`, listed in
 //! docs/diagnostics.md), a test of a post that fires it and of one that
-//! does not. [`lint`] runs every rule; `postc check` and the language
-//! server call it on every post that compiles.
+//! does not. [`lint`] runs every rule; `postc check` (through
+//! [`check_post`], shared with the Python package) and the language server
+//! call it on every post that compiles.
 //!
 //! Rules read the IR, not a dialect's syntax: what a rule needs to know
 //! about the output (which sections print a feed) it learns from the
@@ -21,10 +22,12 @@
 
 use postc_ir::{Diagnostic, Dispatch, Expr, HandlerKey, Piece, Post, Quantity, Section, Stmt, ValueSource};
 
+pub mod check;
 pub mod config;
 pub mod product;
 pub mod rules;
 
+pub use check::{check_post, check_post_bytes};
 pub use product::Product;
 
 /// What a lint run may be told besides the post.

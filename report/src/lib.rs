@@ -8,15 +8,19 @@
 //!   [`source_map`], a map that reads through it;
 //! - [`Render`]: diagnostics rendered for people (codespan-reporting, with
 //!   source snippets where the text is at hand) and as JSON
-//!   ([`JsonDiagnostic`], `check --format json`).
+//!   ([`JsonDiagnostic`], `check --format json`);
+//! - [`now`]: the clock, as every edge that posts reads it (the command
+//!   line, the Python package).
 //!
 //! gleam's split is the model: one project-wide diagnostic type in the
 //! compiler core, rendered only by the CLI.
 
+mod clock;
 pub mod display;
 mod fs;
 mod render;
 
+pub use clock::now;
 pub use fs::{FsLoader, source_map};
 pub use render::{JsonDiagnostic, Render};
 

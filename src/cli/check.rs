@@ -81,15 +81,8 @@ pub fn run(args: Args) -> Result<(), Failed> {
         } else if postc_driver::is_toolpath(file, &postc_report::FsLoader) {
             postc_driver::check_toolpath(file, &mut sources)
         } else {
-            let compiled = postc_driver::compile_post(file, args.dialect.map(Into::into), &mut sources);
-            let mut diagnostics = compiled.diagnostics;
-            if let Some(post) = &compiled.post
-                && !postc_ir::diagnostic::has_errors(&diagnostics)
-            {
-                let options = postc_lint::Options { product: args.product.map(Into::into) };
-                diagnostics.extend(postc_lint::lint(post, &options));
-            }
-            diagnostics
+            let options = postc_lint::Options { product: args.product.map(Into::into) };
+            postc_lint::check_post(file, args.dialect.map(Into::into), &options, &mut sources)
         };
         if let Some(bar) = spinner {
             bar.finish_and_clear();

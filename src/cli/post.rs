@@ -5,12 +5,12 @@
 use postc_ir::codes;
 use std::path::{Path, PathBuf};
 
+use postc_driver::settings::{apply_sets, file_info};
 use postc_ir::codes::{Level, LevelRules};
-use postc_ir::event::FileInfo;
 use postc_ir::{Diagnostic, Severity, SourceMap};
 use postc_runtime::output::Sink;
 use postc_runtime::{Finished, Output, RunOptions};
-use postc_verify::{Controller, Settings};
+use postc_verify::{Controller, FOREIGN_EXTENSIONS, Settings};
 
 use super::verifying::{Outcome, Verification};
 use super::{DialectArg, Failed, fail, load_post_with, report};
@@ -49,47 +49,6 @@ pub struct Args {
     /// Write which post statement wrote each output line, for which toolpath event, as JSON Lines (docs/trace.md); read it with `postc explain TRACE LINE`.
     #[arg(long, value_name = "TRACE.jsonl")]
     trace: Option<PathBuf>,
-}
-
-/// `--set` names and what they do.
-const SETTINGS: &str = "date, time, tolerance";
-
-/// Applies `--set NAME=VALUE` pairs to the run options.
-pub(crate) fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagnostic> {
-    for set in sets {
-        let Some((name, value)) = set.split_once('=') else {
-            return Err(Diagnostic::error(codes::IO007, format!("`--set {set}` needs the form NAME=VALUE"))
-                .help(format!("known names: {SETTINGS}")));
-        };
-        match name.trim().to_ascii_lowercase().as_str() {
-            "date" => options.date = Some(value.to_string()),
-            "time" => options.time = Some(value.to_string()),
-            "tolerance" | "arc_tolerance" => match value.trim().parse::<f64>() {
-                Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
-                _ => {
-                    return Err(Diagnostic::error(
-                        codes::IO007,
-                        format!("`--set {set}`: the tolerance must be a positive number of mm"),
-                    ));
-                }
-            },
-            other => {
-                return Err(Diagnostic::error(codes::IO007, format!("`--set {other}` is not a setting postc knows"))
-                    .help(format!("known names: {SETTINGS}")));
-            }
-        }
-    }
-    Ok(())
-}
-
-/// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.
-fn file_info(path: &Path) -> FileInfo {
-    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
-    FileInfo {
-        name: path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
-        dir: absolute.parent().map(|p| p.display().to_string()).unwrap_or_default(),
-        extension: path.extension().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
-    }
 }
 
 pub fn run(args: Args) -> Result<(), Failed> {
@@ -356,10 +315,6 @@ pub fn run(args: Args) -> Result<(), Failed> {
     }
     Ok(())
 }
-
-/// Output extensions of families verify does not read.
-pub(crate) const FOREIGN_EXTENSIONS: &[(&str, &str)] =
-    &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
 
 /// Why `post` cannot verify what the post writes, known before it runs
 /// (docs/verify.md, "While posting"): a family other than G-code by the

@@ -9,7 +9,6 @@ use std::path::{Path, PathBuf};
 use postc_ir::{Diagnostic, Post, SourceMap};
 use postc_verify::{Controller, Settings};
 
-use super::post::FOREIGN_EXTENSIONS;
 use super::report::{self, Format};
 use super::{DialectArg, Failed, fail, load_post};
 
@@ -212,45 +211,8 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
         Some(post) => Settings::from_post(post, job.controller, job.tolerance),
         None => Settings { controller: job.controller, tolerance: job.tolerance, ..Settings::default() },
     };
-    let refuse = |sources: &mut SourceMap, family: &str, why: &str| {
-        fail(
-            sources,
-            Diagnostic::error(codes::VF001, format!("`{name}` is {family}, not G-code: {why}")).help(format!(
-                "verify reads {}; HPGL, ShopBot and Heidenhain conversational programs are not verified",
-                postc_verify::FAMILIES
-            )),
-        )
-    };
-    if let Some(post) = job.post {
-        let ext = post.info.file_extension.to_ascii_lowercase();
-        if let Some((_, family)) = FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext) {
-            return Err(refuse(sources, family, &format!("the post writes `.{ext}` files")));
-        }
-        if post.options.lathe {
-            return Err(fail(
-                sources,
-                Diagnostic::error(
-                    codes::VF007,
-                    format!("`{}` is a lathe post; verify compares milling programs only", post.info.name),
-                )
-                .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
-            ));
-        }
-        if settings.rotary_wrap {
-            return Err(fail(
-                sources,
-                Diagnostic::error(
-                    codes::VF006,
-                    format!(
-                        "`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs",
-                        post.info.name
-                    ),
-                )
-                .help(
-                    "verify compares X Y Z motion; a wrapped program moves the rotary axis instead of the wrapped one",
-                ),
-            ));
-        }
+    if let Some(refused) = job.post.and_then(|post| postc_verify::post_refusal(&name, post)) {
+        return Err(fail(sources, refused));
     }
     let file = std::fs::File::open(job.program)
         .map_err(|e| fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))))?;
@@ -260,19 +222,9 @@ pub(crate) fn open(job: &Job, sources: &mut SourceMap) -> Result<Opened, Failed>
     if let Err(e) = reader.by_ref().take(4096).read_to_end(&mut head) {
         return Err(fail(sources, Diagnostic::error(codes::IO001, format!("cannot read `{name}`: {e}"))));
     }
-    if postc_verify::looks_binary(&head) {
-        return Err(fail(
-            sources,
-            Diagnostic::error(codes::VF002, format!("`{name}` is binary data, not a G-code program"))
-                .help("verify reads text programs as posts write them"),
-        ));
-    }
     let ext = job.program.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
-    if let Some((_, family)) = FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext) {
-        return Err(refuse(sources, family, &format!("its extension is `.{ext}`")));
-    }
-    if let Some(family) = postc_verify::foreign_family(&head) {
-        return Err(refuse(sources, family, "its first lines are in that language"));
+    if let Some(refused) = postc_verify::refusal(&name, None, &ext, &head) {
+        return Err(fail(sources, refused));
     }
     let file_id = if size <= LOAD_LIMIT {
         let mut bytes = head;

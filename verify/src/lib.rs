@@ -216,6 +216,75 @@ impl Settings {
 /// The program families verify knows, for the refusal message.
 pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style, with `#` parameters and [ ] expressions, and Siemens Sinumerik)";
 
+/// Output extensions of families verify does not read.
+pub const FOREIGN_EXTENSIONS: &[(&str, &str)] =
+    &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
+
+/// Why a program cannot be verified, known before it is replayed: the
+/// post (when given) writes another family, is a lathe post or wraps an
+/// axis onto a rotary axis; the program named `name` (extension `ext`,
+/// first bytes `head`) is binary or of another family. What `postc verify`
+/// and the Python package's `verify` refuse, with the same diagnostic.
+pub fn refusal(name: &str, post: Option<&Post>, ext: &str, head: &[u8]) -> Option<Diagnostic> {
+    use postc_ir::codes;
+    let refuse = |family: &str, why: &str| foreign_refusal(name, family, why);
+    let foreign = |ext: &str| {
+        let ext = ext.to_ascii_lowercase();
+        FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext).map(|(_, family)| *family)
+    };
+    if let Some(refused) = post.and_then(|post| post_refusal(name, post)) {
+        return Some(refused);
+    }
+    if looks_binary(head) {
+        return Some(
+            Diagnostic::error(codes::VF002, format!("`{name}` is binary data, not a G-code program"))
+                .help("verify reads text programs as posts write them"),
+        );
+    }
+    if let Some(family) = foreign(ext) {
+        return Some(refuse(family, &format!("its extension is `.{}`", ext.to_ascii_lowercase())));
+    }
+    foreign_family(head).map(|family| refuse(family, "its first lines are in that language"))
+}
+
+/// Why no program of `post` can be verified (the first part of
+/// [`refusal`], known before the program is read).
+pub fn post_refusal(name: &str, post: &Post) -> Option<Diagnostic> {
+    use postc_ir::codes;
+    let ext = post.info.file_extension.to_ascii_lowercase();
+    if let Some((_, family)) = FOREIGN_EXTENSIONS.iter().find(|(e, _)| *e == ext) {
+        return Some(foreign_refusal(name, family, &format!("the post writes `.{ext}` files")));
+    }
+    if post.options.lathe {
+        return Some(
+            Diagnostic::error(
+                codes::VF007,
+                format!("`{}` is a lathe post; verify compares milling programs only", post.info.name),
+            )
+            .help("a lathe program's X is a diameter and its plane is XZ; verify does not replay turning"),
+        );
+    }
+    if post.options.rotary_wrap.is_some() {
+        return Some(
+            Diagnostic::error(
+                codes::VF006,
+                format!(
+                    "`{}` wraps an axis onto a rotary axis; verify does not compare rotary-wrapped programs",
+                    post.info.name
+                ),
+            )
+            .help("verify compares X Y Z motion; a wrapped program moves the rotary axis instead of the wrapped one"),
+        );
+    }
+    None
+}
+
+/// VF001: `name` is a program of `family`, which verify does not read.
+fn foreign_refusal(name: &str, family: &str, why: &str) -> Diagnostic {
+    Diagnostic::error(postc_ir::codes::VF001, format!("`{name}` is {family}, not G-code: {why}"))
+        .help(format!("verify reads {FAMILIES}; HPGL, ShopBot and Heidenhain conversational programs are not verified"))
+}
+
 /// ShopBot commands that start a line with a comma after them.
 const SHOPBOT: &[&str] = &[
     "MS", "JS", "VS", "J2", "J3", "J4", "J5", "JX", "JY", "JZ", "JA", "JB", "M2", "M3", "M4", "M5", "MX", "MY", "MZ",

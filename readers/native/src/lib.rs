@@ -34,6 +34,14 @@ pub struct NativeReader<R> {
     offset: usize,
     done: bool,
     ron: ron::Options,
+    checks: StreamChecks,
+}
+
+/// What every native event stream checks, whatever gives the events (a
+/// file here, a Python iterable in the `postc` Python package): each
+/// event's ranges (TP004) and that the stream ends with `End` (TP005).
+#[derive(Default)]
+pub struct StreamChecks {
     ranges: RangeCheck,
     /// An `End` event was read.
     ended: bool,
@@ -70,9 +78,7 @@ impl<R: BufRead> NativeReader<R> {
             offset: 0,
             done: false,
             ron,
-            ranges: RangeCheck::new(),
-            ended: false,
-            finished: false,
+            checks: StreamChecks::default(),
         }
     }
 
@@ -100,20 +106,20 @@ impl<R: BufRead> NativeReader<R> {
     }
 }
 
-/// Events are checked against the ranges of `postc_ir::limits` (TP004:
-/// an event out of range is an error, so the toolpath is refused; the
-/// event is still given out, so that the stream keeps its order), and a
-/// stream that ends without its `End` event is said to be perhaps cut
-/// short (TP005).
-impl<R: BufRead> EventSource for NativeReader<R> {
-    fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
-        // The event is looked at where it was read and returned as it
-        // is: moving it out and back costs two copies an event.
-        let next = self.next_read(diagnostics);
-        let Some((event, span)) = &next else {
+impl StreamChecks {
+    /// Checks the next event of the stream (`None`: the stream ended at
+    /// `end`, where TP005 points).
+    ///
+    /// Events are checked against the ranges of `postc_ir::limits` (TP004:
+    /// an event out of range is an error, so the toolpath is refused; the
+    /// event is still given out, so that the stream keeps its order), and a
+    /// stream that ends without its `End` event is said to be perhaps cut
+    /// short (TP005).
+    #[inline(always)]
+    pub fn check(&mut self, next: Option<&(Event, Span)>, end: Span, diagnostics: &mut Vec<Diagnostic>) {
+        let Some((event, span)) = next else {
             if !self.ended && !self.finished {
                 self.finished = true;
-                let end = Span::new(self.file, self.offset, self.offset);
                 diagnostics.push(
                     Diagnostic::warning(
                         codes::TP005,
@@ -123,7 +129,7 @@ impl<R: BufRead> EventSource for NativeReader<R> {
                     .help("post the whole toolpath; if it is whole, end it with `End`"),
                 );
             }
-            return None;
+            return;
         };
         if let Verdict::Refuse(bad) = self.ranges.check(event) {
             diagnostics.push(
@@ -134,6 +140,17 @@ impl<R: BufRead> EventSource for NativeReader<R> {
             );
         }
         self.ended |= matches!(event, Event::End);
+    }
+}
+
+/// Events are checked as every native stream is ([`StreamChecks`]).
+impl<R: BufRead> EventSource for NativeReader<R> {
+    fn next_event(&mut self, diagnostics: &mut Vec<Diagnostic>) -> Option<(Event, Span)> {
+        // The event is looked at where it was read and returned as it
+        // is: moving it out and back costs two copies an event.
+        let next = self.next_read(diagnostics);
+        let end = Span::new(self.file, self.offset, self.offset);
+        self.checks.check(next.as_ref(), end, diagnostics);
         next
     }
 }

@@ -1,0 +1,53 @@
+//! The settings of a run that its caller gives (the CLI's `--set` and
+//! `-o`, the Python package's `set=` and `out=`): one meaning for every
+//! edge that posts.
+
+use std::path::Path;
+
+use postc_ir::Diagnostic;
+use postc_ir::codes;
+use postc_ir::event::FileInfo;
+use postc_runtime::RunOptions;
+
+/// The names [`apply_sets`] knows.
+pub const SETTINGS: &str = "date, time, tolerance";
+
+/// Applies `NAME=VALUE` settings (`--set`) to the run options: `date` and
+/// `time` (what `[DATE]` and `[TIME]` print), `tolerance` (mm, for
+/// linearized arcs).
+pub fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagnostic> {
+    for set in sets {
+        let Some((name, value)) = set.split_once('=') else {
+            return Err(Diagnostic::error(codes::IO007, format!("`--set {set}` needs the form NAME=VALUE"))
+                .help(format!("known names: {SETTINGS}")));
+        };
+        match name.trim().to_ascii_lowercase().as_str() {
+            "date" => options.date = Some(value.to_string()),
+            "time" => options.time = Some(value.to_string()),
+            "tolerance" | "arc_tolerance" => match value.trim().parse::<f64>() {
+                Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
+                _ => {
+                    return Err(Diagnostic::error(
+                        codes::IO007,
+                        format!("`--set {set}`: the tolerance must be a positive number of mm"),
+                    ));
+                }
+            },
+            other => {
+                return Err(Diagnostic::error(codes::IO007, format!("`--set {other}` is not a setting postc knows"))
+                    .help(format!("known names: {SETTINGS}")));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.
+pub fn file_info(path: &Path) -> FileInfo {
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    FileInfo {
+        name: path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+        dir: absolute.parent().map(|p| p.display().to_string()).unwrap_or_default(),
+        extension: path.extension().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+    }
+}
