@@ -466,7 +466,7 @@ minimumRevision = 45702;
 extension = {extension};
 capabilities = CAPABILITY_MILLING;
 tolerance = spatial(0.002, MM);
-allowedCircularPlanes = 1 << PLANE_XY;
+allowedCircularPlanes = (1 << PLANE_XY) | (1 << PLANE_ZX) | (1 << PLANE_YZ);
 allowHelicalMoves = true;
 minimumChordLength = 0;
 minimumCircularRadius = 0;
@@ -724,11 +724,64 @@ function onLinear(vx, vy, vz, f) {{
     feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE || (vx == x && vy == y && vz < z), f);
 }}
 
-// Fusion hands every arc in XY whole (the settings above): the post
-// prints it through its section or cuts it into chords as Vectric does.
+// Fusion hands every arc whole (the settings above): the post prints an
+// arc in XY through its section or cuts it into chords, and cuts arcs in
+// other planes into chords, as Vectric does.
 function onCircular(isCW, cx, cy, cz, ex, ey, ez, f) {{
+    if (getCircularPlane() != PLANE_XY) {{
+        planeChords(getCircularPlane() == PLANE_ZX ? [2, 0, 1] : [1, 2, 0], [cx, cy, cz], [ex, ey, ez], isCW, f);
+        return;
+    }}
     var helical = Math.abs(ez - z) > 1e-9;
     {arcs}
+}}
+
+// An arc in the plane of the axes (u, v) about w, from the last end point
+// to e around c, cut into equal-angle chords within the chord tolerance.
+function planeChords(axes, c, e, isCW, f) {{
+    var u = axes[0], v = axes[1], w = axes[2];
+    var s = [x, y, z];
+    var r = distance(s[u] - c[u], s[v] - c[v]);
+    var a0 = Math.atan2(s[v] - c[v], s[u] - c[u]);
+    var a1 = Math.atan2(e[v] - c[v], e[u] - c[u]);
+    var TAU = 2 * Math.PI;
+    var closed = distance(e[u] - s[u], e[v] - s[v]) <= 1e-9 * Math.max(r, 1);
+    var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
+    if (turn <= 1e-12) {{
+        turn = TAU;
+    }}
+    var sweep = isCW ? -turn : turn;
+    var n = 1;
+    if (r > 0 && r < Infinity) {{
+        var ratio = Math.min(Math.max(chordTolerance / r, 0), 1);
+        var step = 2 * Math.acos(1 - ratio);
+        n = step <= 0 ? 1000000 : Math.min(Math.max(Math.ceil(Math.abs(sweep) / step), 1), 1000000);
+    }}
+    n = Math.min(n, 10000);
+    for (var i = 1; i <= n; i++) {{
+        var t = i / n;
+        if (t >= 1) {{
+            feedTo(e[0], e[1], e[2], false, f);
+        }} else {{
+            var a = a0 + sweep * t;
+            var p = [0, 0, 0];
+            p[u] = c[u] + r * Math.cos(a);
+            p[v] = c[v] + r * Math.sin(a);
+            p[w] = s[w] + (e[w] - s[w]) * t;
+            feedTo(p[0], p[1], p[2], false, f);
+        }}
+    }}
+}}
+
+// Fusion expands each hole into moves (expandCyclePoint, the moves
+// Vectric makes of a hole); the tool's place over the first hole, where
+// the section starts, comes with no move, so the post moves there first.
+function onCyclePoint(px, py, pz) {{
+    var p = getCurrentPosition();
+    if (p.x !== x || p.y !== y || p.z !== z) {{
+        rapidTo(p.x, p.y, p.z);
+    }}
+    expandCyclePoint(px, py, pz);
 }}
 {dwell}
 function onClose() {{
@@ -1453,6 +1506,8 @@ const RESERVED: &[&str] = &[
     "stockLower",
     "stockUpper",
     "textWord",
+    "planeChords",
+    "onCyclePoint",
     "substitute",
     "substitutions",
     "onSection",
