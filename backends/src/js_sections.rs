@@ -301,6 +301,7 @@ impl Printer<'_> {
     /// never hands, and warns of sections it never calls.
     fn check_sections(&mut self) {
         let post = self.post;
+        self.check_plunging_chords();
         for h in &post.handlers {
             let HandlerKey::Section(section) = h.key else { continue };
             if PLUNGE_ARCS.contains(&section) {
@@ -799,6 +800,43 @@ function onClose() {{
             (true, false) => Some(section_function(first)),
             (false, true) => Some(section_function(plain)),
             (false, false) => None,
+        }
+    }
+
+    /// Refuses a post that cuts helices into chords and has plunge
+    /// sections (Fusion): Vectric prints the chords of an arc the toolpath
+    /// marks as plunging through the plunge sections, and Fusion's
+    /// `onCircular` does not say which arcs plunge. (CNC-Calc posts are
+    /// judged on jobs whose helices are not marked so: docs/convert.md.)
+    fn check_plunging_chords(&mut self) {
+        if self.host != Host::Fusion {
+            return;
+        }
+        let plunge = [Section::FirstPlungeMove, Section::PlungeMove]
+            .into_iter()
+            .find_map(|s| self.post.handlers.iter().find(|h| h.key == HandlerKey::Section(s)).map(|h| (s, h.span)));
+        let Some((plunge, span)) = plunge else { return };
+        let chords = [
+            (Section::FirstCwHelicalArcMove, Section::CwHelicalArcMove, Section::FirstCwArcMove, Section::CwArcMove),
+            (Section::FirstCcwHelicalArcMove, Section::CcwHelicalArcMove, Section::FirstCcwArcMove, Section::CcwArcMove),
+        ]
+        .into_iter()
+        .any(|(hf, hp, ff, fp)| {
+            let helical = self.has(hf) || self.has(hp);
+            let flat_z = [ff, fp].into_iter().filter(|s| self.has(*s)).all(|s| self.prints_z(s))
+                && (self.has(ff) || self.has(fp));
+            !helical && !flat_z
+        });
+        if chords {
+            self.refuse(
+                codes::CV010.code,
+                span,
+                format!(
+                    "{} prints the chords of a helix the toolpath marks as plunging, and Fusion's onCircular does not say which arcs plunge",
+                    plunge.name()
+                ),
+                "the post has no helical section and no arc section that prints [Z], so a helix is cut into feed moves; Vectric prints those of a plunging helix through the plunge sections",
+            );
         }
     }
 
