@@ -22,13 +22,15 @@ use postc_backends::Target;
 use postc_ir::{Post, Units};
 
 /// A post that prints what Fusion hands at each section: the tool, its
-/// name and diameter, the spindle speed, the toolpath's name, the stock,
-/// through TOOLCHANGE and NEW_SEGMENT, with a substitution in text words.
+/// name and diameter, the spindle speed (and its SPINDLE_SPEED_RANGE
+/// step), the toolpath's name, the stock, through TOOLCHANGE and
+/// NEW_SEGMENT, with a substitution in text words.
 const SECTIONS: &str = r#"POST_NAME = "sections (*.nc)"
 FILE_EXTENSION = "nc"
 UNITS = "MM"
 LINE_ENDING = "[13][10]"
 SUBSTITUTE = "([)]"
+SPINDLE_SPEED_RANGE = 1 15 4500 18000
 LINE_NUMBER_START = 10
 LINE_NUMBER_INCREMENT = 10
 LINE_NUMBER_MAXIMUM = 100
@@ -52,7 +54,7 @@ begin HEADER
 "([TOOLNAME] [TOOLPATH_NAME] [XLENGTH] [ZMIN])"
 "[N]G21 G90 G17 T[T] D[TDIA]"
 begin SPINDLE_ON
-"M3[S]"
+"M3[S] (step)"
 begin TOOLCHANGE
 "M5"
 "M6[T] ([TOOLNAME])"
@@ -183,12 +185,8 @@ fn toolpaths(post: &Post, all: &[(PathBuf, String)]) -> Vec<PathBuf> {
 /// Node.js running a `.cps` post over a JSON Lines toolpath.
 fn run_fusion_node(post: &Path, jsonl: &Path) -> Result<Vec<u8>, String> {
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
-    let out = Command::new("node")
-        .arg(script)
-        .arg(post)
-        .arg(jsonl)
-        .output()
-        .map_err(|e| format!("cannot run node: {e}"))?;
+    let out =
+        Command::new("node").arg(script).arg(post).arg(jsonl).output().map_err(|e| format!("cannot run node: {e}"))?;
     if !out.status.success() {
         return Err(format!("node failed:\n{}", String::from_utf8_lossy(&out.stderr)));
     }

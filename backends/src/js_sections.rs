@@ -59,8 +59,7 @@ impl Host {
 
 /// Prints `post` as a post `host` runs, or says why it cannot be one.
 pub fn print(post: &Post, host: Host) -> Result<Printed, Vec<Diagnostic>> {
-    let mut p =
-        Printer { post, host, out: String::new(), errors: Vec::new(), warnings: Vec::new(), names: Vec::new() };
+    let mut p = Printer { post, host, out: String::new(), errors: Vec::new(), warnings: Vec::new(), names: Vec::new() };
     p.check_shape();
     if !p.errors.is_empty() {
         return Err(p.errors);
@@ -152,7 +151,7 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
         let fusion = match q {
             Quantity::Tool => Some("toolNumber"),
             Quantity::ToolDiameter => Some("toolDiameter"),
-            Quantity::SpindleSpeed => Some("spindle"),
+            Quantity::SpindleSpeed => Some("spindleOutput(spindle)"),
             Quantity::ToolName => Some("toolName"),
             Quantity::ToolNotes => Some("toolNotes"),
             Quantity::ToolpathName => Some("toolpathName"),
@@ -278,10 +277,6 @@ impl Printer<'_> {
                 self.host == Host::Fusion && o.substitutions.iter().any(|s| !s.from.is_ascii() || !s.to.is_ascii()),
             ),
             (
-                "spindle speed steps (SPINDLE_SPEED_RANGE)",
-                self.host == Host::Fusion && o.spindle_speed_range.is_some(),
-            ),
-            (
                 "a line ending other than CR LF (LINE_ENDING), and postc's Fusion host ends every line with CR LF (setEOL is not run yet),",
                 self.host == Host::Fusion && o.line_ending != b"\r\n",
             ),
@@ -326,7 +321,11 @@ impl Printer<'_> {
                 self.warnings.push(
                     Diagnostic::warning(
                         codes::CV008.code,
-                        format!("{} is left out: {} calls no function where Vectric prints it", section.name(), self.host.engine()),
+                        format!(
+                            "{} is left out: {} calls no function where Vectric prints it",
+                            section.name(),
+                            self.host.engine()
+                        ),
                     )
                     .note(never_called(section, self.host).to_string()),
                 );
@@ -364,7 +363,8 @@ impl Printer<'_> {
                                         && q == Quantity::Feed);
                             if self.host == Host::Cimco
                                 && q == Quantity::Feed
-                                && feed_finer_than_handed(&post.formats[var.format.index()]) {
+                                && feed_finer_than_handed(&post.formats[var.format.index()])
+                            {
                                 let mut d = Diagnostic::warning(
                                     codes::CV011.code,
                                     format!("`[F]` in {} prints the feed finer than CNC-Calc hands it: to a tenth", section.name()),
@@ -386,13 +386,21 @@ impl Printer<'_> {
                                     _ => " in a rapid: Vectric prints the tool's feed there before the first feed move",
                                 };
                                 let why = match self.host {
-                                    Host::Cimco => format!("the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"),
-                                    Host::Fusion => format!("the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name and the stock, and no home position, safe Z or tool feed (docs/fusion.md)"),
+                                    Host::Cimco => format!(
+                                        "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
+                                    ),
+                                    Host::Fusion => format!(
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name and the stock, and no home position, safe Z or tool feed (docs/fusion.md)"
+                                    ),
                                 };
                                 self.refuse(
                                     codes::CV007.code,
                                     *span,
-                                    format!("`[{}]` in {}: {engine} never hands a post this value{when}", q.label(), section.name()),
+                                    format!(
+                                        "`[{}]` in {}: {engine} never hands a post this value{when}",
+                                        q.label(),
+                                        section.name()
+                                    ),
                                     &why,
                                 );
                             }
@@ -453,7 +461,8 @@ impl Printer<'_> {
         self.out.push_str("//\n");
         self.out.push_str(FUSION_NOTE);
         self.out.push('\n');
-        let name = if post.info.name.is_empty() { crate::source_name(post).to_string() } else { post.info.name.clone() };
+        let name =
+            if post.info.name.is_empty() { crate::source_name(post).to_string() } else { post.info.name.clone() };
         let mut extension = post.info.file_extension.clone();
         if extension.is_empty() {
             extension = "nc".into();
@@ -644,7 +653,10 @@ function afterRapid() {{
             if self.has(s) { format!("{}();\n        ", section_function(s)) } else { String::new() }
         };
         let spindle_on = if self.has(Section::SpindleOn) {
-            format!("if (spindle > 0) {{\n            {}();\n        }}\n        ", section_function(Section::SpindleOn))
+            format!(
+                "if (spindle > 0) {{\n            {}();\n        }}\n        ",
+                section_function(Section::SpindleOn)
+            )
         } else {
             String::new()
         };
@@ -672,7 +684,21 @@ function afterRapid() {{
         } else {
             String::new()
         };
-        let footer = if self.has(Section::Footer) { format!("{}();\n", section_function(Section::Footer)) } else { String::new() };
+        let footer = if self.has(Section::Footer) {
+            format!("{}();\n", section_function(Section::Footer))
+        } else {
+            String::new()
+        };
+        let steps = match self.post.options.spindle_speed_range {
+            Some(r) if r.rpm_max > r.rpm_min => format!(
+                "var t = Math.min(Math.max((rpm - {rmin}) / ({rmax} - {rmin}), 0), 1);\n    var v = {omin} + t * ({omax} - {omin});\n    return v < 0 ? -Math.floor(-v + 0.5) : Math.floor(v + 0.5);",
+                rmin = number(r.rpm_min),
+                rmax = number(r.rpm_max),
+                omin = number(r.out_min),
+                omax = number(r.out_max),
+            ),
+            _ => "return rpm;".into(),
+        };
         format!(
             r#"// The section's tool and operation as Fusion hands them, and the job's stock.
 var toolNumber = NaN;
@@ -714,6 +740,12 @@ function onSection() {{
     lastTool = toolNumber;
     {forget}lastKind = "";
     lastFeed = NaN;
+}}
+
+// The spindle speed as the post prints it: the rpm, or its step of
+// SPINDLE_SPEED_RANGE (rounded half away from zero).
+function spindleOutput(rpm) {{
+    {steps}
 }}
 {spindle_speed}
 function onRapid(vx, vy, vz) {{
@@ -818,7 +850,12 @@ function onClose() {{
         let Some((plunge, span)) = plunge else { return };
         let chords = [
             (Section::FirstCwHelicalArcMove, Section::CwHelicalArcMove, Section::FirstCwArcMove, Section::CwArcMove),
-            (Section::FirstCcwHelicalArcMove, Section::CcwHelicalArcMove, Section::FirstCcwArcMove, Section::CcwArcMove),
+            (
+                Section::FirstCcwHelicalArcMove,
+                Section::CcwHelicalArcMove,
+                Section::FirstCcwArcMove,
+                Section::CcwArcMove,
+            ),
         ]
         .into_iter()
         .any(|(hf, hp, ff, fp)| {
@@ -1545,6 +1582,7 @@ const RESERVED: &[&str] = &[
     "stockUpper",
     "textWord",
     "planeChords",
+    "spindleOutput",
     "onCyclePoint",
     "substitute",
     "substitutions",
