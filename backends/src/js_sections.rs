@@ -351,10 +351,8 @@ impl Printer<'_> {
                             let ValueSource::Quantity(q) = var.source else { continue };
                             let before = handed(q, self.host).is_some()
                                 && self.before_moves().contains(&section)
-                                && matches!(
-                                    handed(q, Host::Cimco),
-                                    Some(_) if !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber)
-                                );
+                                && handed(q, Host::Cimco).is_some()
+                                && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
                             // A rapid prints the feed Vectric holds, the tool's
                             // before the first feed move: not handed.
                             let before = before
@@ -1032,15 +1030,13 @@ function feedSection(kind, f, section) {{
 
 "#
         );
-        let feed_of = format!(
-            r#"// The feed getFeedrate gives for a movement, as a number (it returns the
+        let feed_of = r#"// The feed getFeedrate gives for a movement, as a number (it returns the
 // word, "F" and the number).
-function feedOf(movement) {{
+function feedOf(movement) {
     return parseFloat(getFeedrate(movement).substring(1));
-}}
+}
 
-"#
-        );
+"#;
         let moves = format!(
             r#"// A straight feed move to (vx, vy, vz): a plunge when the engine says so,
 // a retract when it rises straight up, otherwise a feed.
@@ -1073,31 +1069,30 @@ function rapidTo(vx, vy, vz) {{
 
 "#
         );
-        let linear_drilling = format!(
-            r#"function onLinear(vx, vy, vz, movement) {{
-    if (movement == MOVEMENT_RAPID) {{
+        let linear_drilling = r#"function onLinear(vx, vy, vz, movement) {
+    if (movement == MOVEMENT_RAPID) {
         return rapidTo(vx, vy, vz);
-    }}
+    }
     return feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE, feedOf(movement));
-}}
+}
 
 // The drilling operations the post offers. Vectric posts have no cycle
 // sections: each hole is drilled with moves, as Vectric drills it (rapid
 // to the retract plane and the safe distance, feed down, in pecks for
 // peck drilling and chip breaking, rapid back to the retract plane).
 var MillDrillingFields = [
-    {{name: "Drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: false, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
-    {{name: "Peck drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}},
-    {{name: "Chip breaking", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}}
+    {name: "Drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: false, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Peck drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false},
+    {name: "Chip breaking", isLonghand: true, plungingFeedrate: true, retractFeedrate: false, firstDepth: true, degressionType: false, degression: false, peckingRetract: false, minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false, pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
 var drilling = null;
 
-function onDrillingHeader(drillHeader) {{
+function onDrillingHeader(drillHeader) {
     drilling = drillHeader;
     return "";
-}}
+}
 
-function onDrillingPoint(px, py) {{
+function onDrillingPoint(px, py) {
     var h = drilling;
     var clear = h.retractPlane;
     var reference = h.safeDistanceIsAbsolute ? h.safeDistance : h.referencePlane + h.safeDistance;
@@ -1105,44 +1100,42 @@ function onDrillingPoint(px, py) {{
     var f = h.plungingFeedrate;
     var pecking = h.name == "Peck drilling" || h.name == "Chip breaking";
     var peck = pecking && h.firstDepth > 0 ? h.firstDepth : 0;
-    if (peck > 0 && (reference - depth) / peck > 1000) {{
+    if (peck > 0 && (reference - depth) / peck > 1000) {
         peck = (reference - depth) / 1000;
-    }}
+    }
     var out = "";
-    if (z < clear) {{
+    if (z < clear) {
         out += rapidTo(x, y, clear);
-    }}
+    }
     out += rapidTo(px, py, clear);
-    if (reference < clear) {{
+    if (reference < clear) {
         out += rapidTo(px, py, reference);
-    }}
-    if (peck > 0) {{
+    }
+    if (peck > 0) {
         var at = reference;
-        while (at - depth > 1e-9) {{
+        while (at - depth > 1e-9) {
             at = Math.max(at - peck, depth);
             out += feedTo(px, py, at, true, f);
-            if (at > depth) {{
+            if (at > depth) {
                 out += rapidTo(px, py, h.name == "Peck drilling" ? reference : at + 0.5 * peck);
                 out += rapidTo(px, py, at);
-            }}
-        }}
-    }} else {{
+            }
+        }
+    } else {
         out += feedTo(px, py, depth, true, f);
-    }}
+    }
     return out + rapidTo(px, py, clear);
-}}
+}
 
-function onDrillingFooter() {{
+function onDrillingFooter() {
     drilling = null;
     return "";
-}}
+}
 
-"#
-        );
-        let arc_library = format!(
-            r#"// An arc through its section: the arc words from the centre, the start
+"#;
+        let arc_library = r#"// An arc through its section: the arc words from the centre, the start
 // (the last end point) and the sweep.
-function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {{
+function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {
     var g = arcGeometry(cx, cy, ex, ey, isCW);
     arcI = cx - x;
     arcJ = cy - y;
@@ -1162,62 +1155,61 @@ function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {{
     y = ey;
     z = ez;
     return feedSection(kind, f, section);
-}}
+}
 
 // An arc the post has no section for, cut into equal-angle chords within
 // the chord tolerance, each a feed move.
-function chords(cx, cy, ex, ey, ez, isCW, f) {{
+function chords(cx, cy, ex, ey, ez, isCW, f) {
     var g = arcGeometry(cx, cy, ex, ey, isCW);
     var sz = z;
     var r = g.r, a0 = g.a0, sweep = g.sweep;
     var n = 1;
-    if (r > 0 && r < Infinity) {{
+    if (r > 0 && r < Infinity) {
         var ratio = Math.min(Math.max(chordTolerance / r, 0), 1);
         var step = 2 * Math.acos(1 - ratio);
         n = step <= 0 ? 1000000 : Math.min(Math.max(Math.ceil(Math.abs(sweep) / step), 1), 1000000);
-    }}
+    }
     n = Math.min(n, 10000);
     var out = "";
-    for (var i = 1; i <= n; i++) {{
+    for (var i = 1; i <= n; i++) {
         var t = i / n;
-        if (t >= 1) {{
+        if (t >= 1) {
             out += feedTo(ex, ey, ez, false, f);
-        }} else {{
+        } else {
             var a = a0 + sweep * t;
             out += feedTo(cx + r * Math.cos(a), cy + r * Math.sin(a), sz + (ez - sz) * t, false, f);
-        }}
-    }}
+        }
+    }
     return out;
-}}
+}
 
 // The arc from the last end point to (ex, ey) around (cx, cy): its
 // radius, start angle and signed sweep (counter-clockwise positive; a
 // closed arc is a full turn).
-function arcGeometry(cx, cy, ex, ey, isCW) {{
+function arcGeometry(cx, cy, ex, ey, isCW) {
     var TAU = 2 * Math.PI;
     var r = distance(x - cx, y - cy);
     var a0 = Math.atan2(y - cy, x - cx);
     var a1 = Math.atan2(ey - cy, ex - cx);
     var closed = distance(ex - x, ey - y) <= 1e-9 * Math.max(r, 1);
     var turn = closed ? TAU : remainder(isCW ? a0 - a1 : a1 - a0, TAU);
-    if (turn <= 1e-12) {{
+    if (turn <= 1e-12) {
         turn = TAU;
-    }}
-    return {{r: r, a0: a0, sweep: isCW ? -turn : turn}};
-}}
+    }
+    return {r: r, a0: a0, sweep: isCW ? -turn : turn};
+}
 
 // The length of (dx, dy), in ECMAScript 5 (CNC-Calc's JavaScript has no Math.hypot).
-function distance(dx, dy) {{
+function distance(dx, dy) {
     return Math.sqrt(dx * dx + dy * dy);
-}}
+}
 
-function remainder(a, b) {{
+function remainder(a, b) {
     var r = a % b;
     return r < 0 ? r + b : r;
-}}
+}
 
-"#
-        );
+"#;
         let circular_close = format!(
             r#"function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {{
     var f = feedOf(movement);
