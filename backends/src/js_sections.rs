@@ -41,7 +41,7 @@ pub type Printed = (Vec<u8>, Vec<Diagnostic>);
 /// The engine whose entry points call the printed post.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Host {
-    /// CIMCO CNC-Calc (seed 002's entry points).
+    /// CIMCO CNC-Calc (the CNC-Calc manual's entry points).
     Cimco,
     /// Autodesk Fusion (`.cps`; docs/fusion.md).
     Fusion,
