@@ -602,7 +602,12 @@ function afterRapid() {{
         for &(section, _) in self.called() {
             let Some(h) = post.handlers.iter().find(|h| h.key == HandlerKey::Section(section)) else { continue };
             self.out.push_str(&crate::cimco::comment(post, &CommentTarget::Handler(h.key.clone())));
-            self.out.push_str(&format!("function {}() {{\n    var out = \"\";\n", section_function(section)));
+            // A CNC-Calc section returns its lines; a Fusion one writes them.
+            let (open, close) = match self.host {
+                Host::Cimco => ("    var out = \"\";\n", "    return out;\n}\n\n"),
+                Host::Fusion => ("", "    return \"\";\n}\n\n"),
+            };
+            self.out.push_str(&format!("function {}() {{\n{open}", section_function(section)));
             for s in &h.body {
                 let Stmt::Line { pieces, .. } = s else { continue };
                 let mut parts: Vec<String> = Vec::new();
@@ -638,7 +643,7 @@ function afterRapid() {{
                     self.out.push_str("    nextBlock();\n");
                 }
             }
-            self.out.push_str("    return out;\n}\n\n");
+            self.out.push_str(close);
         }
     }
 
@@ -650,21 +655,34 @@ function afterRapid() {{
         let call = |s: Section| {
             if self.has(s) { format!("{}();\n        ", section_function(s)) } else { String::new() }
         };
-        let spindle_on = if self.has(Section::SpindleOn) {
-            format!(
-                "if (spindle > 0) {{\n            {}();\n        }}\n        ",
-                section_function(Section::SpindleOn)
+        // SPINDLE_ON after the head or a tool change, indented `pad`.
+        let spindle_on = |pad: &str| {
+            if self.has(Section::SpindleOn) {
+                format!("if (spindle > 0) {{\n{pad}    {}();\n{pad}}}\n{pad}", section_function(Section::SpindleOn))
+            } else {
+                String::new()
+            }
+        };
+        let head = format!("{}{}{}", call(Section::RevisionComment), call(Section::Header), spindle_on("        "));
+        let tool_change = match call(Section::ToolChange) {
+            t if t.is_empty() => spindle_on("            "),
+            t => format!("{t}    {}", spindle_on("            ")),
+        };
+        let new_segment = call(Section::NewSegment);
+        let new_segment = match new_segment.trim_end() {
+            "" => String::new(),
+            call => format!("\n        {call}"),
+        };
+        let (words, forget) = if self.post.options.forget_modal_at_toolpath_start {
+            (
+                format!(
+                    "\n// The words whose modal memory Vectric clears at each toolpath start.\nvar words = [{}];\n",
+                    self.names.join(", ")
+                ),
+                "for (var i = 0; i < words.length; i++) {\n        words[i].last = null;\n        words[i].lastValue = NaN;\n    }\n    ",
             )
         } else {
-            String::new()
-        };
-        let head = format!("{}{}{spindle_on}", call(Section::RevisionComment), call(Section::Header));
-        let tool_change = format!("{}{spindle_on}", call(Section::ToolChange));
-        let new_segment = call(Section::NewSegment);
-        let forget = if self.post.options.forget_modal_at_toolpath_start {
-            self.names.iter().map(|n| format!("{n}.last = null;\n    {n}.lastValue = NaN;\n    ")).collect::<String>()
-        } else {
-            String::new()
+            (String::new(), "")
         };
         let spindle_speed = if self.has(Section::SpindleOn) {
             format!(
@@ -709,7 +727,7 @@ var toolpathName = "";
 var lastTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
-
+{words}
 function onOpen() {{
     if (isWorkpieceDefined()) {{
         stockLower = getWorkpiece().lower;
@@ -732,8 +750,7 @@ function onSection() {{
     }} else {{
         if (toolNumber != lastTool) {{
             {tool_change}firstRapid = true;
-        }}
-        {new_segment}
+        }}{new_segment}
     }}
     lastTool = toolNumber;
     {forget}lastKind = "";
@@ -1575,6 +1592,7 @@ const RESERVED: &[&str] = &[
     "textWord",
     "planeChords",
     "spindleOutput",
+    "words",
     "onCyclePoint",
     "substitute",
     "substitutions",
