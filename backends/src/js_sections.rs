@@ -715,6 +715,12 @@ function afterRapid() {{
             ),
             _ => "return rpm;".into(),
         };
+        // The runtime's factors (`Units::factor_to`), as JavaScript computes them.
+        let scale = match self.post.info.units {
+            Some(Units::Mm) => "scale = unit == MM ? 1 : 25.4;",
+            Some(Units::Inch) => "scale = unit == MM ? 1 / 25.4 : 1;",
+            None => "scale = 1;",
+        };
         format!(
             r#"// The section's tool and operation as Fusion hands them, and the job's stock.
 var toolNumber = NaN;
@@ -728,10 +734,16 @@ var lastTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
 {words}
+// Fusion hands lengths and feeds in the document's units; the post
+// prints them in its source's UNITS, each multiplied by `scale`.
+var scale = 1;
+
 function onOpen() {{
+    {scale}
     if (isWorkpieceDefined()) {{
-        stockLower = getWorkpiece().lower;
-        stockUpper = getWorkpiece().upper;
+        var stock = getWorkpiece();
+        stockLower = {{x: stock.lower.x * scale, y: stock.lower.y * scale, z: stock.lower.z * scale}};
+        stockUpper = {{x: stock.upper.x * scale, y: stock.upper.y * scale, z: stock.upper.z * scale}};
     }}
 }}
 
@@ -740,7 +752,7 @@ function onOpen() {{
 // modal memory starts afresh.
 function onSection() {{
     toolNumber = tool.number;
-    toolDiameter = tool.diameter;
+    toolDiameter = tool.diameter * scale;
     toolName = tool.description;
     toolNotes = tool.comment;
     toolpathName = getParameter("operation-comment", "");
@@ -764,18 +776,28 @@ function spindleOutput(rpm) {{
 }}
 {spindle_speed}
 function onRapid(vx, vy, vz) {{
-    rapidTo(vx, vy, vz);
+    rapidTo(vx * scale, vy * scale, vz * scale);
 }}
 
 // A feed move; a move straight down is a plunge, as Vectric reads it.
 function onLinear(vx, vy, vz, f) {{
-    feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE || (vx == x && vy == y && vz < z), f);
+    vx *= scale;
+    vy *= scale;
+    vz *= scale;
+    feedTo(vx, vy, vz, movement == MOVEMENT_PLUNGE || (vx == x && vy == y && vz < z), f * scale);
 }}
 
 // Fusion hands every arc whole (the settings above): the post prints an
 // arc in XY through its section or cuts it into chords, and cuts arcs in
 // other planes into chords, as Vectric does.
 function onCircular(isCW, cx, cy, cz, ex, ey, ez, f) {{
+    cx *= scale;
+    cy *= scale;
+    cz *= scale;
+    ex *= scale;
+    ey *= scale;
+    ez *= scale;
+    f *= scale;
     if (getCircularPlane() != PLANE_XY) {{
         planeChords(getCircularPlane() == PLANE_ZX ? [2, 0, 1] : [1, 2, 0], [cx, cy, cz], [ex, ey, ez], isCW, f);
         return;
@@ -826,8 +848,8 @@ function planeChords(axes, c, e, isCW, f) {{
 // the section starts, comes with no move, so the post moves there first.
 function onCyclePoint(px, py, pz) {{
     var p = getCurrentPosition();
-    if (p.x !== x || p.y !== y || p.z !== z) {{
-        rapidTo(p.x, p.y, p.z);
+    if (p.x * scale !== x || p.y * scale !== y || p.z * scale !== z) {{
+        rapidTo(p.x * scale, p.y * scale, p.z * scale);
     }}
     expandCyclePoint(px, py, pz);
 }}
@@ -1592,6 +1614,8 @@ const RESERVED: &[&str] = &[
     "textWord",
     "planeChords",
     "spindleOutput",
+    "scale",
+    "stock",
     "words",
     "onCyclePoint",
     "substitute",
