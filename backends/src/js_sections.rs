@@ -353,6 +353,11 @@ impl Printer<'_> {
                                 && self.before_moves().contains(&section)
                                 && handed(q, Host::Cimco).is_some()
                                 && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
+                            // Before the first move Vectric's position is the
+                            // job's home, which neither engine hands.
+                            let at_home =
+                                BEFORE_MOVES.contains(&section) && matches!(q, Quantity::X | Quantity::Y | Quantity::Z);
+                            let before = before || at_home;
                             // A rapid prints the feed Vectric holds, the tool's
                             // before the first feed move: not handed.
                             let before = before
@@ -377,6 +382,9 @@ impl Printer<'_> {
                                 let engine = self.host.engine();
                                 let when = match (before, q) {
                                     (false, _) => "",
+                                    (true, _) if at_home => {
+                                        " before the first move, where Vectric prints the job's home position"
+                                    }
                                     (true, _) if self.before_moves().contains(&section) => match self.host {
                                         Host::Cimco => " before the first move",
                                         Host::Fusion => " where a section starts, before its first move",
