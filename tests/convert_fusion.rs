@@ -152,19 +152,50 @@ fn all_toolpaths(dir: &Path) -> Vec<(PathBuf, String)> {
     out
 }
 
-/// Toolpaths on which Fusion hands a converted post other moves than
-/// Vectric makes (docs/convert.md, "Fusion posts"): a drilling cycle that
-/// starts within a toolpath with the tool above its clearance plane, which
-/// Fusion's linking moves reach over the first hole at the tool's height
-/// and then straight down, where Vectric's rapid goes there at once.
-const FUSION_LINKS: &[&str] = &["one_drill_mm"];
+/// A number field of a RON event line (`z: 5` in `Rapid(x: 0, y: 0, z: 5)`).
+fn field(line: &str, name: &str) -> Option<f64> {
+    let squeezed = line.replace(' ', "");
+    let at = squeezed.find(&format!("{name}:"))? + name.len() + 1;
+    let rest = &squeezed[at..];
+    let end = rest.find([',', ')']).unwrap_or(rest.len());
+    rest[..end].parse().ok()
+}
+
+/// Whether Fusion hands a converted post other moves than Vectric makes
+/// for this toolpath (docs/convert.md, "Fusion posts"): a drilling cycle
+/// that starts within a toolpath with the tool above its clearance
+/// plane, which Fusion's linking moves reach over the first hole at the
+/// tool's height and then straight down, where Vectric's rapid goes there
+/// at once.
+fn fusion_links_differ(text: &str) -> bool {
+    let mut z: Option<f64> = None;
+    let mut clearance: Option<f64> = None;
+    for line in text.lines().map(str::trim_start) {
+        if line.starts_with("ToolpathStart") {
+            z = None;
+        } else if line.starts_with("Rapid(") || line.starts_with("Feed(") || line.starts_with("Arc(") {
+            z = field(line, "z").or(z);
+        } else if line.starts_with("DrillCycle(") {
+            clearance = field(line, "retract_plane");
+            if let (Some(z), Some(clear)) = (z, clearance)
+                && z > clear
+            {
+                return true;
+            }
+        } else if line.starts_with("DrillEnd") {
+            // A cycle leaves the tool at its clearance plane.
+            z = clearance.or(z);
+        }
+    }
+    false
+}
 
 /// The toolpaths a post applies to: no jet, no arc outside XY (in any
 /// units: the converted post prints lengths in its source's units, as
 /// Vectric's runtime converts them).
 fn toolpaths(all: &[(PathBuf, String)]) -> Vec<PathBuf> {
     all.iter()
-        .filter(|(path, _)| !FUSION_LINKS.contains(&stem(path).as_str()))
+        .filter(|(_, text)| !fusion_links_differ(text))
         .filter(|(_, text)| {
             let squeezed = text.replace(' ', "");
             !squeezed.contains("jet:true")
