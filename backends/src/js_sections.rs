@@ -943,7 +943,11 @@ function onClose() {{
             call(Section::Header, self),
             call(Section::SpindleOn, self)
         );
-        let rate_change = call(Section::FeedRateChange, self);
+        // FEED_RATE_CHANGE before a move whose feed changed, when the post has it.
+        let rate_change = match call(Section::FeedRateChange, self) {
+            c if c.is_empty() => String::new(),
+            c => format!("if (lastFeed !== f) {{\n        {}\n    }}\n    ", c.trim_end()),
+        };
         // Rapids.
         let mut rapid = String::new();
         let plain_rapid = if self.has(Section::RapidMove) {
@@ -1064,10 +1068,7 @@ function feedSection(kind, f, section) {{
     var out = "";
     // A feed of zero is none: [F] prints nothing.
     feed = f == 0 ? NaN : f;
-    if (lastFeed !== f) {{
-        {rate_change}
-    }}
-    lastKind = kind;
+    {rate_change}lastKind = kind;
     lastFeed = f;
     if (section != null) {{
         out += section();
