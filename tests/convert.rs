@@ -155,6 +155,7 @@ fn target_name(t: Target) -> &'static str {
         Target::Vectric => "vectric",
         Target::VcPost => "vcpost",
         Target::Cimco | Target::CimcoSections => "cimco",
+        Target::Fusion => "fusion",
         Target::Ron => "ron",
     }
 }
@@ -164,6 +165,7 @@ fn target_dialect(t: Target) -> Dialect {
         Target::Vectric => Dialect::Vectric,
         Target::VcPost => Dialect::VcPost,
         Target::Cimco | Target::CimcoSections => Dialect::Cimco,
+        Target::Fusion => Dialect::Fusion,
         Target::Ron => Dialect::Ron,
     }
 }

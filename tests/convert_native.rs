@@ -28,7 +28,7 @@ use postc_ir::{Post, Units};
 /// FEED_RATE_CHANGE, modal words, a CR LF line ending, and number formats
 /// (signs, zero and blank padding, a decimal comma, multipliers) and every
 /// arc word (start, mid point, sweep, K).
-const POSTS: &[(&str, &str)] = &[
+pub(crate) const POSTS: &[(&str, &str)] = &[
     (
         "first_sections.pp",
         r#"POST_NAME = "first sections (*.nc)"

@@ -21,6 +21,7 @@ mod cimco_node;
 mod cimco_runtime;
 mod cimco_styles;
 mod convert;
+mod convert_fusion;
 mod convert_native;
 mod corpus_goldens;
 mod diagnostic_codes;

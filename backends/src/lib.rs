@@ -2,14 +2,16 @@
 //!
 //! A backend prints a compiled post IR ([`postc_ir::Post`]) as the text of
 //! a post in one target: a Vectric `.pp` post ([`vectric`]), a Vericut
-//! VcPost post ([`vcpost`]), a CIMCO CNC-Calc post ([`cimco`]) or the IR
-//! itself as RON ([`ron`]). Backends read only the IR, never a dialect's
+//! VcPost post ([`vcpost`]), a CIMCO CNC-Calc post ([`cimco`]), an
+//! Autodesk Fusion `.cps` post ([`fusion`]) or the IR itself as RON
+//! ([`ron`]). The two JavaScript targets share the Vectric rules printed
+//! as JavaScript (`js_sections`). Backends read only the IR, never a dialect's
 //! syntax tree, so a post of any dialect converts to any target that can
 //! say what it does.
 //!
 //! A backend never writes a post that would post differently from its
 //! source. What a target cannot express is refused with a
-//! [`Diagnostic`] (codes `CV001`–`CV009`) that names the construct, points
+//! [`Diagnostic`] (codes `CV001`–`CV012`) that names the construct, points
 //! at it in the source post where the IR knows where it came from, and
 //! says why; nothing is written then. `tests/convert.rs` posts every
 //! converted corpus post over every corpus toolpath and requires the same
@@ -20,6 +22,8 @@
 //! dialect it was converted from.
 
 pub mod cimco;
+pub mod fusion;
+mod js_sections;
 pub mod ron;
 pub mod vcpost;
 pub mod vectric;
@@ -40,6 +44,9 @@ pub enum Target {
     /// A CIMCO post, a post of another dialect as a *section post*:
     /// postc's extension, which CNC-Calc does not run (`--postc-extension`).
     CimcoSections,
+    /// An Autodesk Fusion `.cps` post that Fusion's engine runs (Vectric
+    /// posts only, for now).
+    Fusion,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,
 }
@@ -51,6 +58,7 @@ impl Target {
             Target::Vectric => "pp",
             Target::VcPost => "VcPost",
             Target::Cimco | Target::CimcoSections => "js",
+            Target::Fusion => "cps",
             Target::Ron => "ron",
         }
     }
@@ -70,6 +78,7 @@ pub fn convert_warned(post: &Post, target: Target) -> Result<(Vec<u8>, Vec<Diagn
         Target::VcPost => vcpost::print(post).map(|t| (t, Vec::new())),
         Target::Cimco => cimco::print(post),
         Target::CimcoSections => cimco::print_extension(post).map(|t| (t, Vec::new())),
+        Target::Fusion => fusion::print(post),
         Target::Ron => ron::print(post).map(|t| (t.into_bytes(), Vec::new())),
     }
 }

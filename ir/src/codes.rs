@@ -1521,6 +1521,10 @@ declare_codes! {
     /// prints finer feeds prints the engine's tenth.
     CV011: Warning, "the target engine hands a value with less precision than the converted post prints it (the feed, to a tenth)",
         fix = "Print the feed to a tenth or coarser, or check that the machine's feeds are given to a tenth.";
+    /// The target has no converter for the post's dialect yet: `--to fusion` writes `.cps` posts
+    /// from Vectric posts only. Nothing is written.
+    CV012: Error, "the post's dialect does not convert to the target yet (`--to fusion` converts Vectric posts only)",
+        fix = "Convert the post to Vectric first (`postc convert POST --to vectric`), then to Fusion.";
     /// verify reads G-code programs; this one is HPGL, ShopBot, Heidenhain conversational, or
     /// text whose first blocks cannot be read. It is refused, and the message says which families
     /// verify reads.

@@ -21,6 +21,8 @@ pub enum TargetArg {
     Vcpost,
     /// A CIMCO CNC-Calc JavaScript post (a CIMCO post as itself; another post driven by the kind of move as a section post).
     Cimco,
+    /// An Autodesk Fusion .cps post that Fusion runs (from a Vectric post: onSection per toolpath, the Vectric rules as JavaScript).
+    Fusion,
     /// The post's IR as RON (postc post reads it back).
     Ron,
 }
@@ -65,6 +67,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         TargetArg::Vcpost => Target::VcPost,
         TargetArg::Cimco if args.postc_extension => Target::CimcoSections,
         TargetArg::Cimco => Target::Cimco,
+        TargetArg::Fusion => Target::Fusion,
         TargetArg::Ron => Target::Ron,
     };
     let text = match postc_backends::convert_warned(&post, target) {

@@ -10,7 +10,7 @@
 //!   frontend and must give the same post ([`check`]).
 //! - A post driven by the kind of each move whose handlers are output lines
 //!   (a Vectric post, a VcPost section post) prints as a native CNC-Calc
-//!   post ([`native`]): the CNC-Calc manual's entry points, the Vectric rules as
+//!   post (`crate::js_sections`): the CNC-Calc manual's entry points, the Vectric rules as
 //!   JavaScript state; or, asked for explicitly (`--postc-extension`), as
 //!   a *section post*, postc's extension of CNC-Calc ([`sections`]).
 //!
@@ -19,7 +19,6 @@
 pub(crate) mod body;
 mod check;
 mod code;
-mod native;
 mod sections;
 
 use postc_ir::{CommentTarget, Diagnostic, Dialect, Post, Span};
@@ -30,7 +29,7 @@ pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>>
     if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
         code::print(post).map(|t| (t, Vec::new()))
     } else {
-        native::print(post)
+        crate::js_sections::print(post, crate::js_sections::Host::Cimco)
     }
 }
 
@@ -45,7 +44,7 @@ pub fn print_extension(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
 }
 
 /// A refusal: what cannot be printed, where the source has it, and why.
-fn refusal(code: &'static str, span: Option<Span>, message: String, why: &str) -> Diagnostic {
+pub(crate) fn refusal(code: &'static str, span: Option<Span>, message: String, why: &str) -> Diagnostic {
     let mut d = Diagnostic::error(code, message);
     if !why.is_empty() {
         d = d.note(why.to_string());
@@ -58,13 +57,13 @@ fn refusal(code: &'static str, span: Option<Span>, message: String, why: &str) -
 
 /// The source's comment lines before `on`, as `//` lines (the CIMCO
 /// frontend reads them back: `postc_front_cimco::docs`).
-fn comment(post: &Post, on: &CommentTarget) -> String {
+pub(crate) fn comment(post: &Post, on: &CommentTarget) -> String {
     post.comment(on).iter().map(|l| format!("//{l}\n")).collect()
 }
 
 /// The conversion note, then the source's head (read back as the head, the
 /// note left out).
-fn header(post: &Post) -> String {
+pub(crate) fn header(post: &Post) -> String {
     format!(
         "// {}{} ({}).\n{}",
         postc_ir::post::CONVERSION_NOTE,

@@ -1,0 +1,422 @@
+//! Fusion posts judged by Node.js: every Vectric post of the corpus
+//! (`corpus/posts/vectric/`), the real Vectric posts of
+//! `../shared/corpus/vectric/` and the posts below is converted with
+//! `postc convert --to fusion` (docs/convert.md, "Fusion posts"); each
+//! that converts runs under the Node.js Fusion host
+//! (`tests/node_host/fusion.js`) over every toolpath it applies to and
+//! must print, byte for byte, what `postc post` prints for the SOURCE
+//! post; postc running the converted post must print the same bytes too.
+//! A toolpath applies when it holds no jet tool and no arc outside XY
+//! (the Node.js host does not cut those), in either unit; a
+//! toolpath with a jet toolpath is judged without it. The test prints the
+//! counts docs/convert.md records. Without Node.js the comparison is
+//! skipped, with a message, and fails under `CI=true`.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath};
+use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
+use postc_backends::Target;
+
+/// A post that prints what Fusion hands at each section: the tool, its
+/// name and diameter, the spindle speed (and its SPINDLE_SPEED_RANGE
+/// step), the toolpath's name, the stock, through TOOLCHANGE and
+/// NEW_SEGMENT, with a substitution in text words.
+const SECTIONS: &str = r#"POST_NAME = "sections (*.nc)"
+FILE_EXTENSION = "nc"
+UNITS = "MM"
+LINE_ENDING = "[13][10]"
+SUBSTITUTE = "([)]"
+SPINDLE_SPEED_RANGE = 1 15 4500 18000
+LINE_NUMBER_START = 10
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM = 100
+VAR LINE_NUMBER = [N|A|N|1.0]
+VAR SPINDLE_SPEED = [S|A|S|1.0]
+VAR TOOL_NUMBER = [T|A|T|1.0]
+VAR TOOL_DIAMETER = [TDIA|A||1.2]
+VAR TOOL_NAME = [TOOLNAME|A||1.0]
+VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
+VAR X_LENGTH = [XLENGTH|A||1.1]
+VAR Z_MIN = [ZMIN|A||1.1]
+VAR FEED_RATE = [F|C|F|1.1]
+VAR X_POSITION = [X|C|X|1.3]
+VAR Y_POSITION = [Y|C|Y|1.3]
+VAR Z_POSITION = [Z|C|Z|1.3]
+VAR ARC_CENTRE_I_INC_POSITION = [I|A|I|1.4]
+VAR ARC_CENTRE_J_INC_POSITION = [J|A|J|1.4]
+VAR DWELL_TIME = [DWELL|A|P|1.2]
+begin HEADER
+"%"
+"([TOOLNAME] [TOOLPATH_NAME] [XLENGTH] [ZMIN])"
+"[N]G21 G90 G17 T[T] D[TDIA]"
+begin SPINDLE_ON
+"M3[S] (step)"
+begin TOOLCHANGE
+"M5"
+"M6[T] ([TOOLNAME])"
+begin NEW_SEGMENT
+"(next [TOOLPATH_NAME])"
+begin RAPID_MOVE
+"[N]G0[X][Y][Z]"
+begin FIRST_FEED_MOVE
+"[N]G1[X][Y][Z][F]"
+begin FEED_MOVE
+"[N]G1[X][Y][Z]"
+begin PLUNGE_MOVE
+"[N]G1[Z][F] (plunge)"
+begin FIRST_CW_ARC_MOVE
+"[N]G2[X][Y][Z][I][J][F]"
+begin CW_ARC_MOVE
+"[N]G2[X][Y][Z][I][J]"
+begin FIRST_CCW_ARC_MOVE
+"[N]G3[X][Y][Z][I][J][F]"
+begin CCW_ARC_MOVE
+"[N]G3[X][Y][Z][I][J]"
+begin DWELL_MOVE
+"G4[DWELL]"
+begin FOOTER
+"M5"
+"M30"
+"%"
+"#;
+
+/// Diagnostics that mean a source was not read whole: `postc convert`
+/// stops on them.
+const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
+
+/// Which posts converted, and why the others did not.
+#[derive(Default)]
+struct Tally {
+    converted: usize,
+    warned: usize,
+    refused: BTreeMap<String, usize>,
+    compared: usize,
+    /// Posts every applicable program of which Node.js printed identically.
+    identical_posts: usize,
+}
+
+impl Tally {
+    fn show(&self, what: &str, total: usize) -> String {
+        let refused: Vec<String> = self.refused.iter().map(|(k, n)| format!("{n} {k}")).collect();
+        format!(
+            "{what}: {total} posts, {} converted ({} with warnings), {} posts with every program identical, {} programs identical under Node.js; refused: {}",
+            self.converted,
+            self.warned,
+            self.identical_posts,
+            self.compared,
+            if refused.is_empty() { "none".into() } else { refused.join(", ") }
+        )
+    }
+}
+
+/// A toolpath's text without the toolpaths of its jet tools (from a jet
+/// `Tool` to the next `Tool` or `End`), or `None` when it has none.
+fn without_jets(text: &str) -> Option<String> {
+    let mut out = String::new();
+    let mut skipping = false;
+    let mut dropped = false;
+    for line in text.lines() {
+        let t = line.trim_start();
+        if t.starts_with("Tool(") {
+            skipping = t.replace(' ', "").contains("jet:true");
+            dropped |= skipping;
+        } else if t.starts_with("End") && !t.starts_with("EndOf") {
+            skipping = false;
+        }
+        if !skipping {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    dropped.then_some(out)
+}
+
+/// The toolpaths the converted posts are judged over: the corpus's, the
+/// native ones, and those with a jet toolpath without it.
+fn all_toolpaths(dir: &Path) -> Vec<(PathBuf, String)> {
+    let mut all = files(&corpus().join("toolpaths"), "ron");
+    all.extend(files(&corpus().join("toolpaths/native"), "ron"));
+    let mut out = Vec::new();
+    for t in all {
+        let text = std::fs::read_to_string(&t).unwrap_or_default();
+        if let Some(rest) = without_jets(&text).filter(|r| r.contains("Tool(")) {
+            let to = dir.join(format!("{}_without_jets.ron", stem(&t)));
+            std::fs::write(&to, &rest).expect("write the toolpath");
+            out.push((to, rest));
+        }
+        out.push((t, text));
+    }
+    out
+}
+
+/// A number field of a RON event line (`z: 5` in `Rapid(x: 0, y: 0, z: 5)`).
+fn field(line: &str, name: &str) -> Option<f64> {
+    let squeezed = line.replace(' ', "");
+    let at = squeezed.find(&format!("{name}:"))? + name.len() + 1;
+    let rest = &squeezed[at..];
+    let end = rest.find([',', ')']).unwrap_or(rest.len());
+    rest[..end].parse().ok()
+}
+
+/// Whether Fusion hands a converted post other moves than Vectric makes
+/// for this toolpath (docs/convert.md, "Fusion posts"): a drilling cycle
+/// that starts within a toolpath with the tool above its clearance
+/// plane, which Fusion's linking moves reach over the first hole at the
+/// tool's height and then straight down, where Vectric's rapid goes there
+/// at once.
+fn fusion_links_differ(text: &str) -> bool {
+    let mut z: Option<f64> = None;
+    let mut clearance: Option<f64> = None;
+    for line in text.lines().map(str::trim_start) {
+        if line.starts_with("ToolpathStart") {
+            z = None;
+        } else if line.starts_with("Rapid(") || line.starts_with("Feed(") || line.starts_with("Arc(") {
+            z = field(line, "z").or(z);
+        } else if line.starts_with("DrillCycle(") {
+            clearance = field(line, "retract_plane");
+            if let (Some(z), Some(clear)) = (z, clearance)
+                && z > clear
+            {
+                return true;
+            }
+        } else if line.starts_with("DrillEnd") {
+            // A cycle leaves the tool at its clearance plane.
+            z = clearance.or(z);
+        }
+    }
+    false
+}
+
+/// The toolpaths a post applies to: no jet, no arc outside XY (in any
+/// units: the converted post prints lengths in its source's units, as
+/// Vectric's runtime converts them).
+fn toolpaths(all: &[(PathBuf, String)]) -> Vec<PathBuf> {
+    all.iter()
+        .filter(|(_, text)| !fusion_links_differ(text))
+        .filter(|(_, text)| {
+            let squeezed = text.replace(' ', "");
+            !squeezed.contains("jet:true")
+                && !squeezed.contains("JetOn")
+                && !squeezed.contains("Power(")
+                && !squeezed.contains("plane:Zx")
+                && !squeezed.contains("plane:Yz")
+        })
+        .map(|(p, _)| p.clone())
+        .collect()
+}
+
+/// Node.js running a `.cps` post over a JSON Lines toolpath.
+fn run_fusion_node(post: &Path, jsonl: &Path) -> Result<Vec<u8>, String> {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let out =
+        Command::new("node").arg(script).arg(post).arg(jsonl).output().map_err(|e| format!("cannot run node: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("node failed:\n{}", String::from_utf8_lossy(&out.stderr)));
+    }
+    Ok(out.stdout)
+}
+
+/// Converts and judges each post; returns the tally and the failures.
+fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mut Vec<String>) -> Tally {
+    let mut tally = Tally::default();
+    for (n, path) in posts.iter().enumerate() {
+        let mut sources = postc_report::source_map();
+        let compiled = postc_driver::compile_post(path, None, &mut sources);
+        let unread: Vec<&str> =
+            compiled.diagnostics.iter().map(|d| d.code).filter(|c| NOT_READ_WHOLE.contains(c)).collect();
+        if !unread.is_empty() {
+            *tally.refused.entry(format!("{} (not read whole)", unread.join("+"))).or_default() += 1;
+            continue;
+        }
+        let post = match compile_warned(path) {
+            Ok(p) => p,
+            Err(e) => {
+                *tally.refused.entry("do not compile".into()).or_default() += 1;
+                eprintln!("{e}");
+                continue;
+            }
+        };
+        let (cps, warnings) = match postc_backends::convert_warned(&post, Target::Fusion) {
+            Ok(ok) => ok,
+            Err(reasons) => {
+                let mut codes: Vec<&str> = reasons.iter().map(|d| d.code).collect();
+                codes.sort_unstable();
+                codes.dedup();
+                *tally.refused.entry(codes.join("+")).or_default() += 1;
+                continue;
+            }
+        };
+        tally.converted += 1;
+        if !warnings.is_empty() {
+            tally.warned += 1;
+        }
+        let converted = dir.join(format!("{n}_{}.cps", stem(path)));
+        std::fs::write(&converted, &cps).expect("write the converted post");
+        let again = match compile_warned(&converted) {
+            Ok(p) => Some(p),
+            Err(e) => {
+                failures.push(format!("{}: postc does not compile the converted post: {e}", path.display()));
+                None
+            }
+        };
+        let mut identical = true;
+        for toolpath in toolpaths(all) {
+            let pair = format!("{}__{}", path.display(), stem(&toolpath));
+            let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
+            if !jsonl.exists()
+                && let Err(e) = export_jsonl(&toolpath, &jsonl)
+            {
+                failures.push(format!("{pair}: cannot export the toolpath: {e}"));
+                continue;
+            }
+            let ours = match post_toolpath(&post, &toolpath) {
+                Ok(o) => o,
+                Err(e) => {
+                    failures.push(format!("{pair}: postc: {e}"));
+                    continue;
+                }
+            };
+            if let Some(again) = &again {
+                match post_toolpath(again, &toolpath) {
+                    Ok(o) if o == ours => {}
+                    Ok(o) => {
+                        identical = false;
+                        failures.push(format!(
+                            "{pair}: postc posting the converted post (-) and the source (+) differ\n{}",
+                            diff(&o, &ours)
+                        ));
+                    }
+                    Err(e) => failures.push(format!("{pair}: postc posting the converted post: {e}")),
+                }
+            }
+            match run_fusion_node(&converted, &jsonl) {
+                Ok(theirs) if theirs == ours => tally.compared += 1,
+                Ok(theirs) => {
+                    identical = false;
+                    failures.push(format!(
+                        "{pair}: Node.js running the converted post (-) and postc posting the source (+) differ\n{}",
+                        diff(&theirs, &ours)
+                    ));
+                }
+                Err(e) => {
+                    identical = false;
+                    failures.push(format!("{pair}: {e}"));
+                }
+            }
+        }
+        if identical {
+            tally.identical_posts += 1;
+        }
+    }
+    tally
+}
+
+fn real_posts() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
+    let mut real = Vec::new();
+    if let Ok(entries) = std::fs::read_dir(&dir) {
+        for entry in entries.flatten() {
+            if entry.path().is_dir() {
+                real.extend(files(&entry.path(), "pp"));
+            }
+        }
+    }
+    real.sort();
+    real
+}
+
+/// The posts of this test and of `convert_native` (those with CR LF line
+/// ends, Fusion's: the others are given CR LF).
+fn own_posts(dir: &Path) -> Vec<PathBuf> {
+    let mut own = Vec::new();
+    let mut texts = vec![("sections.pp".to_string(), SECTIONS.to_string())];
+    for (name, text) in crate::convert_native::POSTS {
+        let text = if text.contains("LINE_ENDING") {
+            text.to_string()
+        } else {
+            text.replacen('\n', "\nLINE_ENDING = \"[13][10]\"\n", 1)
+        };
+        texts.push((name.to_string(), text));
+    }
+    for (name, text) in texts {
+        let path = dir.join(name);
+        std::fs::write(&path, text).expect("write the post");
+        own.push(path);
+    }
+    own
+}
+
+#[test]
+fn node_runs_fusion_posts_as_postc_posts_their_sources() {
+    if node_or_skip("convert_fusion").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let all = all_toolpaths(dir.path());
+    let mut failures = Vec::new();
+    let own = own_posts(dir.path());
+    let tests = judge(&own, dir.path(), &all, &mut failures);
+    eprintln!("{}", tests.show("this test's posts", own.len()));
+    // plain_sections.pp cuts helices into chords and has plunge sections
+    // (CV010: Fusion does not say which arcs plunge).
+    assert_eq!(tests.converted, own.len() - 1, "every other post of this test converts: {}", failures.join("\n\n"));
+    assert_eq!(tests.refused.get("CV010"), Some(&1), "{:?}", tests.refused);
+    assert!(tests.compared >= 3 * tests.converted, "only {} programs were compared", tests.compared);
+    let corpus_posts = files(&corpus().join("posts/vectric"), "pp");
+    let c = judge(&corpus_posts, dir.path(), &all, &mut failures);
+    eprintln!("{}", c.show("corpus/posts/vectric", corpus_posts.len()));
+    let real = real_posts();
+    if !real.is_empty() {
+        let r = judge(&real, dir.path(), &all, &mut failures);
+        eprintln!("{}", r.show("../shared/corpus/vectric", real.len()));
+    }
+    assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
+}
+
+/// The command line: `--to fusion` writes a `.cps` post with Fusion's
+/// entry points; a value Fusion never hands is refused at its line and
+/// column and nothing is written; a post of another dialect is refused.
+#[test]
+fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let pp = dir.path().join("sections.pp");
+    std::fs::write(&pp, SECTIONS).expect("write the post");
+    let cps = dir.path().join("sections.cps");
+    let o = postc(&["convert", &pp.display().to_string(), "--to", "fusion", "-o", &cps.display().to_string()]);
+    assert!(o.status.success(), "{}", said(&o));
+    let text = std::fs::read_to_string(&cps).expect("the converted post");
+    for entry in [
+        "description = \"sections (*.nc)\";",
+        "extension = \"nc\";",
+        "capabilities = CAPABILITY_MILLING;",
+        "function onSection()",
+        "function onRapid(",
+        "function onLinear(",
+        "function onCircular(",
+        "function onDwell(",
+        "function onClose()",
+        "writeln(",
+    ] {
+        assert!(text.contains(entry), "{entry}\n{text}");
+    }
+    let refused = dir.path().join("refused.cps");
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vectric/gcode_arcs_inch.pp",
+        "--to",
+        "fusion",
+        "-o",
+        &refused.display().to_string(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[CV007]") && err.contains("`[XH]` in HEADER: Fusion never hands"), "{err}");
+    assert!(!refused.exists(), "a refused conversion writes nothing");
+    let o = postc(&["convert", "corpus/posts/cimco/fanuc_mill.js", "--to", "fusion"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[CV012]"), "{err}");
+}
