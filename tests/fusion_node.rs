@@ -194,6 +194,11 @@ line \`tick\` \${not} \x41\u0042 ${`nested ${`deep ${3}`}`} ${ {a: 1}.a } ${"}"}
 /// the TypeErrors of methods on no chain.
 const PROTOTYPES: &[(&str, &str, &str)] = &[
     (
+        "one var statement of a global assigned later and one never assigned",
+        "var seen = NaN, never = NaN, label = \"T\";",
+        r#"seen = 1; writeln(label + seen + never + (never == never));"#,
+    ),
+    (
         "constructors and inheritance",
         r#"function Shape(name) { this.name = name; this.sides = 0; }
 Shape.prototype.describe = function () { return this.name + " with " + this.sides + " sides"; };

@@ -745,8 +745,12 @@ fn init_statements(program: &Program, model: &Model, setup: &Setup) -> Vec<ast::
         match &s.kind {
             StmtKind::Function(_) | StmtKind::Empty => {}
             StmtKind::Var(ds) => {
+                // A constant's declarator is folded away; the others of the
+                // statement (`var a = NaN, b = NaN;` with only `a` ever
+                // assigned) still run.
                 if ds.iter().any(|d| d.init.is_some() && model.constant(&d.name.name).is_none()) {
-                    out.push(s.clone());
+                    let kept: Vec<_> = ds.iter().filter(|d| model.constant(&d.name.name).is_none()).cloned().collect();
+                    out.push(ast::Stmt::new(StmtKind::Var(kept), s.span));
                 }
             }
             StmtKind::Expr(e) => {
