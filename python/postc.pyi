@@ -98,11 +98,14 @@ def check(
 
 def convert(
     post: PathOrText,
-    to: Literal["vectric", "vcpost", "cimco", "ron"],
+    to: Literal["vectric", "vcpost", "cimco", "fusion", "ron"],
     *,
     dialect: Optional[Dialect] = None,
+    postc_extension: bool = False,
 ) -> str:
-    """The post as a post of another dialect (``postc convert``). Raises
+    """The post as a post of another dialect (``postc convert``).
+    ``postc_extension=True`` writes a post of another dialect as a CIMCO
+    section post, which only postc runs (``--postc-extension``). Raises
     ``PostError`` with every reason when the target cannot hold it."""
 
 def verify(

@@ -12,11 +12,11 @@
 //! counts docs/convert.md records. Without Node.js the comparison is
 //! skipped, with a message, and fails under `CI=true`.
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath};
+use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
 use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
 
@@ -83,34 +83,9 @@ begin FOOTER
 "%"
 "#;
 
-/// Diagnostics that mean a source was not read whole: `postc convert`
-/// stops on them.
-const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
-
-/// Which posts converted, and why the others did not.
-#[derive(Default)]
-struct Tally {
-    converted: usize,
-    warned: usize,
-    refused: BTreeMap<String, usize>,
-    compared: usize,
-    /// Posts every applicable program of which Node.js printed identically.
-    identical_posts: usize,
-}
-
-impl Tally {
-    fn show(&self, what: &str, total: usize) -> String {
-        let refused: Vec<String> = self.refused.iter().map(|(k, n)| format!("{n} {k}")).collect();
-        format!(
-            "{what}: {total} posts, {} converted ({} with warnings), {} posts with every program identical, {} programs identical under Node.js; refused: {}",
-            self.converted,
-            self.warned,
-            self.identical_posts,
-            self.compared,
-            if refused.is_empty() { "none".into() } else { refused.join(", ") }
-        )
-    }
-}
+/// Real Vectric posts that convert to `.cps` posts whose every program
+/// Node.js prints as postc posts the source (docs/convert.md).
+const REAL_FUSION_AT_LEAST: usize = 4;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
 /// `Tool` to the next `Tool` or `End`), or `None` when it has none.
@@ -223,38 +198,9 @@ fn run_fusion_node(post: &Path, jsonl: &Path) -> Result<Vec<u8>, String> {
 fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mut Vec<String>) -> Tally {
     let mut tally = Tally::default();
     for (n, path) in posts.iter().enumerate() {
-        let mut sources = postc_report::source_map();
-        let compiled = postc_driver::compile_post(path, None, &mut sources);
-        let unread: Vec<&str> =
-            compiled.diagnostics.iter().map(|d| d.code).filter(|c| NOT_READ_WHOLE.contains(c)).collect();
-        if !unread.is_empty() {
-            *tally.refused.entry(format!("{} (not read whole)", unread.join("+"))).or_default() += 1;
+        let Some((post, converted)) = convert_counted(path, n, Target::Fusion, "cps", dir, &mut tally) else {
             continue;
-        }
-        let post = match compile_warned(path) {
-            Ok(p) => p,
-            Err(e) => {
-                *tally.refused.entry("do not compile".into()).or_default() += 1;
-                eprintln!("{e}");
-                continue;
-            }
         };
-        let (cps, warnings) = match postc_backends::convert_warned(&post, Target::Fusion) {
-            Ok(ok) => ok,
-            Err(reasons) => {
-                let mut codes: Vec<&str> = reasons.iter().map(|d| d.code).collect();
-                codes.sort_unstable();
-                codes.dedup();
-                *tally.refused.entry(codes.join("+")).or_default() += 1;
-                continue;
-            }
-        };
-        tally.converted += 1;
-        if !warnings.is_empty() {
-            tally.warned += 1;
-        }
-        let converted = dir.join(format!("{n}_{}.cps", stem(path)));
-        std::fs::write(&converted, &cps).expect("write the converted post");
         let again = match compile_warned(&converted) {
             Ok(p) => Some(p),
             Err(e) => {
@@ -314,20 +260,6 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
     tally
 }
 
-fn real_posts() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
-    let mut real = Vec::new();
-    if let Ok(entries) = std::fs::read_dir(&dir) {
-        for entry in entries.flatten() {
-            if entry.path().is_dir() {
-                real.extend(files(&entry.path(), "pp"));
-            }
-        }
-    }
-    real.sort();
-    real
-}
-
 /// The posts of this test and of `convert_native` (those with CR LF line
 /// ends, Fusion's: the others are given CR LF).
 fn own_posts(dir: &Path) -> Vec<PathBuf> {
@@ -368,10 +300,11 @@ fn node_runs_fusion_posts_as_postc_posts_their_sources() {
     let corpus_posts = files(&corpus().join("posts/vectric"), "pp");
     let c = judge(&corpus_posts, dir.path(), &all, &mut failures);
     eprintln!("{}", c.show("corpus/posts/vectric", corpus_posts.len()));
-    let real = real_posts();
+    let real = real_vectric_posts("convert_fusion");
     if !real.is_empty() {
         let r = judge(&real, dir.path(), &all, &mut failures);
         eprintln!("{}", r.show("../shared/corpus/vectric", real.len()));
+        assert!(r.identical_posts >= REAL_FUSION_AT_LEAST, "{}", r.show("../shared/corpus/vectric", real.len()));
     }
     assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
 }

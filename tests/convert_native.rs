@@ -13,10 +13,10 @@
 //! Without Node.js the comparison is skipped, with a message, and fails
 //! under `CI=true`.
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath, run_node};
+use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
 use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
 use postc_ir::{Post, Units};
@@ -213,31 +213,9 @@ begin FOOTER
     ),
 ];
 
-/// Diagnostics that mean a source was not read whole: `postc convert`
-/// stops on them.
-const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
-
-/// Which posts converted, and why the others did not.
-#[derive(Default)]
-struct Tally {
-    converted: usize,
-    warned: usize,
-    refused: BTreeMap<String, usize>,
-    compared: usize,
-}
-
-impl Tally {
-    fn show(&self, what: &str, total: usize) -> String {
-        let refused: Vec<String> = self.refused.iter().map(|(k, n)| format!("{n} {k}")).collect();
-        format!(
-            "{what}: {total} posts, {} converted ({} with warnings), {} programs identical under Node.js; refused: {}",
-            self.converted,
-            self.warned,
-            self.compared,
-            if refused.is_empty() { "none".into() } else { refused.join(", ") }
-        )
-    }
-}
+/// Real Vectric posts that convert to native CNC-Calc posts whose every
+/// program Node.js prints as postc posts the source (docs/convert.md).
+const REAL_NATIVE_AT_LEAST: usize = 1;
 
 /// The toolpaths a native post is judged over: those holding only what
 /// the CNC-Calc manual hands a post, in the post's units.
@@ -269,39 +247,9 @@ fn toolpaths(post: &Post) -> Vec<PathBuf> {
 fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
     let mut tally = Tally::default();
     for (n, path) in posts.iter().enumerate() {
-        let mut sources = postc_report::source_map();
-        let compiled = postc_driver::compile_post(path, None, &mut sources);
         // A source not read whole stops `convert` (docs/convert.md).
-        let unread: Vec<&str> =
-            compiled.diagnostics.iter().map(|d| d.code).filter(|c| NOT_READ_WHOLE.contains(c)).collect();
-        if !unread.is_empty() {
-            *tally.refused.entry(format!("{} (not read whole)", unread.join("+"))).or_default() += 1;
-            continue;
-        }
-        let post = match compile_warned(path) {
-            Ok(p) => p,
-            Err(e) => {
-                *tally.refused.entry("do not compile".into()).or_default() += 1;
-                eprintln!("{e}");
-                continue;
-            }
-        };
-        let (js, warnings) = match postc_backends::convert_warned(&post, Target::Cimco) {
-            Ok(ok) => ok,
-            Err(reasons) => {
-                let mut codes: Vec<&str> = reasons.iter().map(|d| d.code).collect();
-                codes.sort_unstable();
-                codes.dedup();
-                *tally.refused.entry(codes.join("+")).or_default() += 1;
-                continue;
-            }
-        };
-        tally.converted += 1;
-        if !warnings.is_empty() {
-            tally.warned += 1;
-        }
-        let converted = dir.join(format!("{n}_{}.js", stem(path)));
-        std::fs::write(&converted, &js).expect("write the converted post");
+        let Some((post, converted)) = convert_counted(path, n, Target::Cimco, "js", dir, &mut tally) else { continue };
+        let failed_before = failures.len();
         // postc's own CNC-Calc host runs the converted post too, natively
         // (no function left to a script).
         let again = match compile_warned(&converted) {
@@ -351,22 +299,11 @@ fn judge(posts: &[PathBuf], dir: &Path, failures: &mut Vec<String>) -> Tally {
                 Err(e) => failures.push(format!("{pair}: {e}")),
             }
         }
-    }
-    tally
-}
-
-fn real_posts() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/vectric");
-    let mut real = Vec::new();
-    if let Ok(entries) = std::fs::read_dir(&dir) {
-        for entry in entries.flatten() {
-            if entry.path().is_dir() {
-                real.extend(files(&entry.path(), "pp"));
-            }
+        if failures.len() == failed_before {
+            tally.identical_posts += 1;
         }
     }
-    real.sort();
-    real
+    tally
 }
 
 #[test]
@@ -401,10 +338,11 @@ fn node_runs_native_posts_as_postc_posts_their_sources() {
     let corpus_posts = files(&corpus().join("posts/vectric"), "pp");
     let c = judge(&corpus_posts, dir.path(), &mut failures);
     eprintln!("{}", c.show("corpus/posts/vectric", corpus_posts.len()));
-    let real = real_posts();
+    let real = real_vectric_posts("convert_native");
     if !real.is_empty() {
         let r = judge(&real, dir.path(), &mut failures);
         eprintln!("{}", r.show("../shared/corpus/vectric", real.len()));
+        assert!(r.identical_posts >= REAL_NATIVE_AT_LEAST, "{}", r.show("../shared/corpus/vectric", real.len()));
     }
     assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
 }

@@ -1512,14 +1512,22 @@ fn section_function(s: Section) -> String {
 }
 
 fn is_identifier(name: &str) -> bool {
+    is_js_name(name, PRINTED_NAMES)
+}
+
+/// Whether `name` can name a variable of a printed post: a JavaScript
+/// identifier that is no word JavaScript reserves and none of `taken`, the
+/// names the printed post gives a meaning of its own.
+pub(crate) fn is_js_name(name: &str, taken: &[&str]) -> bool {
     let mut chars = name.chars();
     chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_' || c == '$')
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$')
-        && !RESERVED.contains(&name)
+        && !JS_RESERVED.contains(&name)
+        && !taken.contains(&name)
 }
 
-/// Words JavaScript reserves, and the names the printed post gives a meaning.
-const RESERVED: &[&str] = &[
+/// Words JavaScript reserves, and the global values a post cannot rename.
+const JS_RESERVED: &[&str] = &[
     "break",
     "case",
     "catch",
@@ -1569,6 +1577,10 @@ const RESERVED: &[&str] = &[
     "undefined",
     "NaN",
     "Infinity",
+];
+
+/// The names a post printed here gives a meaning of its own.
+const PRINTED_NAMES: &[&str] = &[
     "x",
     "y",
     "z",

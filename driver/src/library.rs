@@ -137,8 +137,8 @@ pub fn lookup<S: AsRef<str>>(wanted: &str, names: &[S]) -> Lookup {
         .iter()
         .enumerate()
         .filter_map(|(i, n)| {
-            let d = edit_distance(&wanted, n);
-            let d = without_pattern(n).map_or(d, |short| d.min(edit_distance(&wanted, short)));
+            let d = strsim::levenshtein(&wanted, n);
+            let d = without_pattern(n).map_or(d, |short| d.min(strsim::levenshtein(&wanted, short)));
             (d <= limit).then_some((d, i))
         })
         .collect();
@@ -153,20 +153,4 @@ pub fn lookup<S: AsRef<str>>(wanted: &str, names: &[S]) -> Lookup {
     }
     suggested.truncate(3);
     Lookup::NotFound(suggested)
-}
-
-/// Levenshtein distance, by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let old = row[j + 1];
-            row[j + 1] = (row[j + 1] + 1).min(row[j] + 1).min(prev + usize::from(ca != *cb));
-            prev = old;
-        }
-    }
-    row[b.len()]
 }

@@ -104,17 +104,5 @@ pub fn leading_name(s: &str) -> &str {
 
 /// Levenshtein distance of two ASCII-case-folded strings.
 pub fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<u8> = a.bytes().map(|b| b.to_ascii_uppercase()).collect();
-    let b: Vec<u8> = b.bytes().map(|b| b.to_ascii_uppercase()).collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for (i, &ca) in a.iter().enumerate() {
-        cur[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != cb);
-            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
+    strsim::levenshtein(&a.to_ascii_uppercase(), &b.to_ascii_uppercase())
 }

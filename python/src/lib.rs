@@ -364,20 +364,32 @@ fn check<'py>(
 }
 
 /// The post as a post of another dialect, `to` = "vectric", "vcpost",
-/// "cimco" or "ron" (`postc convert`). Raises PostError with every reason
-/// when the target cannot hold the post.
+/// "cimco", "fusion" or "ron" (`postc convert`); `postc_extension=True`
+/// writes a post of another dialect as a CIMCO section post
+/// (`--postc-extension`). Raises PostError with every reason when the
+/// target cannot hold the post.
 #[pyfunction]
-#[pyo3(signature = (post, to, *, dialect=None))]
-fn convert(py: Python<'_>, post: &Bound<'_, PyAny>, to: &str, dialect: Option<&str>) -> PyResult<String> {
+#[pyo3(signature = (post, to, *, dialect=None, postc_extension=false))]
+fn convert(
+    py: Python<'_>,
+    post: &Bound<'_, PyAny>,
+    to: &str,
+    dialect: Option<&str>,
+    postc_extension: bool,
+) -> PyResult<String> {
     let mut sources = postc_report::source_map();
     let input = Input::of(post, "<post text>")?;
     let target = match to.to_ascii_lowercase().as_str() {
         "vectric" | "pp" => postc_backends::Target::Vectric,
         "vcpost" => postc_backends::Target::VcPost,
+        "cimco" | "js" if postc_extension => postc_backends::Target::CimcoSections,
         "cimco" | "js" => postc_backends::Target::Cimco,
+        "fusion" | "cps" => postc_backends::Target::Fusion,
         "ron" | "ir" => postc_backends::Target::Ron,
         _ => {
-            return Err(PyValueError::new_err(format!("to={to:?}: postc converts to vectric, vcpost, cimco and ron")));
+            return Err(PyValueError::new_err(format!(
+                "to={to:?}: postc converts to vectric, vcpost, cimco, fusion and ron"
+            )));
         }
     };
     let compiled = compile(py, &input, self::dialect(dialect)?, &mut sources)?;

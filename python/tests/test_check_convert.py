@@ -49,10 +49,29 @@ def test_check_of_a_toolpath_file(cli):
     assert [d.to_dict() for d in postc.check(toolpath)] == expected
 
 
-@pytest.mark.parametrize("to", ["vectric", "cimco", "vcpost", "ron"])
+@pytest.mark.parametrize("to", ["vectric", "vcpost", "ron"])
 def test_convert_gives_what_the_command_gives(cli, to):
     expected = cli("convert", POST, "--to", to).stdout
     assert postc.convert(POST, to).encode() == expected
+
+
+def test_a_cimco_section_post_only_when_asked(cli):
+    expected = cli("convert", POST, "--to", "cimco", "--postc-extension").stdout
+    assert postc.convert(POST, "cimco", postc_extension=True).encode() == expected
+
+
+@pytest.mark.parametrize("to", ["cimco", "fusion"])
+def test_a_target_engine_that_cannot_hold_the_post_refuses_as_the_command_does(cli, to):
+    # gcode_mm.pp prints the job's file name in its header, which CNC-Calc
+    # never hands a post (CV007); it ends lines with LF, which postc's
+    # Fusion host does not write (CV004).
+    said = cli("convert", POST, "--to", to, check=False)
+    assert said.returncode == 1
+    with pytest.raises(postc.PostError) as refused:
+        postc.convert(POST, to)
+    codes = sorted({d.code for d in refused.value.diagnostics})
+    assert codes == sorted({line[6:11] for line in said.stderr.decode().splitlines() if line.startswith("error[")})
+    assert codes and codes[0].startswith("CV")
 
 
 def test_a_converted_post_posts_the_same(tmp_path):

@@ -21,6 +21,7 @@
 #![allow(dead_code)]
 
 pub mod cimco;
+pub mod converting;
 pub mod postp;
 pub mod prepared;
 pub mod rs274;

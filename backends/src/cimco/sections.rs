@@ -52,67 +52,11 @@ struct Printer<'p> {
     names: Vec<String>,
 }
 
-/// Words JavaScript reserves, and names a section post gives a meaning.
-const RESERVED: &[&str] = &[
-    "break",
-    "case",
-    "catch",
-    "class",
-    "const",
-    "continue",
-    "debugger",
-    "default",
-    "delete",
-    "do",
-    "else",
-    "export",
-    "extends",
-    "false",
-    "finally",
-    "for",
-    "function",
-    "if",
-    "import",
-    "in",
-    "instanceof",
-    "new",
-    "null",
-    "return",
-    "super",
-    "switch",
-    "this",
-    "throw",
-    "true",
-    "try",
-    "typeof",
-    "var",
-    "void",
-    "while",
-    "with",
-    "yield",
-    "let",
-    "static",
-    "enum",
-    "await",
-    "implements",
-    "package",
-    "protected",
-    "interface",
-    "private",
-    "public",
-    "undefined",
-    "NaN",
-    "Infinity",
-    "createVariable",
-    "createFormat",
-    "postcOptions",
-];
+/// The names a section post gives a meaning of its own.
+const SECTION_POST_NAMES: &[&str] = &["createVariable", "createFormat", "postcOptions"];
 
 fn is_identifier(name: &str) -> bool {
-    let mut chars = name.chars();
-    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_' || c == '$')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$')
-        && !RESERVED.contains(&name)
+    crate::js_sections::is_js_name(name, SECTION_POST_NAMES)
         && Section::from_name(name).is_none_or(|s| s.name() != name)
 }
 
