@@ -8,7 +8,7 @@
 //! postc check   FILE... [--format human|json] [--product P]     # posts (lints too) and toolpaths; exit 1 on any error
 //! postc explain CODE                                          # one diagnostic code's documentation
 //! postc check|post ... [--warn|--deny|--allow CODE|PREFIX|all]  # severity per code; also postc.toml
-//! postc convert POST --to vectric|vcpost|cimco|ron [-o OUT]   # a post as another dialect's
+//! postc convert POST --to vectric|vcpost|cimco|fusion|ron [-o OUT] [--postc-extension]  # a post as another dialect's
 //! postc inspect POST                                          # the IR, as RON
 //! postc bench   POST [TOOLPATH] [--moves N]                   # throughput
 //! postc toolpath gen --pattern NAME --moves N [-o OUT]        # synthetic toolpaths
@@ -55,7 +55,7 @@ use clap::{Parser, Subcommand};
 use postc_ir::codes::LevelRules;
 use postc_ir::{Diagnostic, Dialect, Post, SourceMap};
 
-/// postc: posts CNC toolpaths through Vectric, CIMCO and VcPost post processors.
+/// postc: posts CNC toolpaths through Vectric, CIMCO, VcPost and Fusion post processors.
 #[derive(Parser, Debug)]
 #[command(name = "postc", version, about, long_about = None)]
 pub struct Cli {
@@ -84,7 +84,7 @@ enum Command {
     ///
     /// `postc post --post NAME TOOLPATH` selects a post of this list by its name (case and blanks do not matter; the trailing `(*.ext)` of a Vectric name may be left out). docs/posts.md describes the library.
     Posts(posts::Args),
-    /// Convert a post to another dialect (Vectric .pp, VcPost, CIMCO, or the IR as RON); refused with reasons when the target cannot hold it.
+    /// Convert a post to another dialect (Vectric .pp, VcPost, CIMCO, Fusion .cps, or the IR as RON); refused with reasons when the target cannot hold it.
     Convert(convert::Args),
     /// Check posts and toolpaths; exit 1 if any has an error.
     Check(check::Args),
