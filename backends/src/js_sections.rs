@@ -1664,12 +1664,12 @@ const PRINTED_NAMES: &[&str] = &[
 ];
 
 /// A number as JavaScript reads it back exactly.
-fn number(n: f64) -> String {
+pub(crate) fn number(n: f64) -> String {
     if n == 0.0 { "0".into() } else { format!("{n}") }
 }
 
 /// A JavaScript string literal.
-fn js_string(t: &str) -> String {
+pub(crate) fn js_string(t: &str) -> String {
     let mut s = String::with_capacity(t.len() + 2);
     s.push('"');
     for c in t.chars() {

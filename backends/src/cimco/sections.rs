@@ -21,6 +21,7 @@
 //! Output text of a Windows-1252 post is written as characters, with
 //! `textEncoding: "windows-1252"`, so its bytes come back unchanged.
 
+use crate::js_sections::{js_string, number};
 use std::collections::HashSet;
 
 use postc_ir::codes;
@@ -361,29 +362,4 @@ fn format_keys(f: &NumberFormat) -> Vec<String> {
         k.push(format!("negativeZero: {}", f.negative_zero));
     }
     k
-}
-
-/// A number as JavaScript reads it back exactly.
-fn number(n: f64) -> String {
-    if n == 0.0 { "0".into() } else { format!("{n}") }
-}
-
-/// A JavaScript string literal.
-fn js_string(t: &str) -> String {
-    let mut s = String::with_capacity(t.len() + 2);
-    s.push('"');
-    for c in t.chars() {
-        match c {
-            '"' => s.push_str("\\\""),
-            '\\' => s.push_str("\\\\"),
-            '\n' => s.push_str("\\n"),
-            '\r' => s.push_str("\\r"),
-            '\t' => s.push_str("\\t"),
-            '\u{2028}' | '\u{2029}' => s.push_str(&format!("\\u{:04x}", c as u32)),
-            c if c.is_control() => s.push_str(&format!("\\u{:04x}", c as u32)),
-            c => s.push(c),
-        }
-    }
-    s.push('"');
-    s
 }
