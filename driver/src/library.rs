@@ -131,14 +131,19 @@ pub fn lookup<S: AsRef<str>>(wanted: &str, names: &[S]) -> Lookup {
         _ => return Lookup::Ambiguous(hits),
     }
     // A typing mistake: at most a third of the name's characters (at least
-    // two) edited, against the whole name or the name without its pattern.
+    // two) edited, against the whole name, the name without its pattern, or
+    // one word of three letters or more of it (`grbel` for `grbl (mm)`).
     let limit = (wanted.chars().count() / 3).max(2);
     let mut near: Vec<(usize, usize)> = normals
         .iter()
         .enumerate()
         .filter_map(|(i, n)| {
-            let d = strsim::levenshtein(&wanted, n);
-            let d = without_pattern(n).map_or(d, |short| d.min(strsim::levenshtein(&wanted, short)));
+            let words = n.split(' ').filter(|w| w.chars().count() >= 3);
+            let d = std::iter::once(n.as_str())
+                .chain(without_pattern(n))
+                .chain(words)
+                .map(|part| strsim::levenshtein(&wanted, part))
+                .min()?;
             (d <= limit).then_some((d, i))
         })
         .collect();

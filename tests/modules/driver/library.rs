@@ -22,6 +22,9 @@ fn a_near_miss_suggests_the_nearest_names_then_those_that_hold_it() {
     assert_eq!(lookup("LinuxCNC (nm)", NAMES), Lookup::NotFound(vec![0]));
     assert_eq!(lookup("Fanuc 0i/30i mil (mm)", NAMES), Lookup::NotFound(vec![3]));
     assert_eq!(lookup("grbl", NAMES), Lookup::NotFound(vec![1]));
+    // A word of the name mistyped.
+    assert_eq!(lookup("grbel", NAMES), Lookup::NotFound(vec![1]));
+    assert_eq!(lookup("hass", NAMES), Lookup::NotFound(vec![2]));
     assert_eq!(lookup("mill", NAMES), Lookup::NotFound(vec![2, 3]));
     assert_eq!(lookup("Heidenhain", NAMES), Lookup::NotFound(vec![]));
 }
