@@ -7,8 +7,7 @@
 //! 0.01 mm, the command's defaults. What it cannot read is said as VF044,
 //! as the command says it; the refusals are `postc_verify::refusal`'s.
 
-use postc_ir::codes;
-use postc_ir::{Diagnostic, Event, EventSource, Post, Severity, SourceMap, Span};
+use postc_ir::{Diagnostic, Event, EventSource, Post, SourceMap, Span};
 use postc_verify::expect::{Record, RecordSource};
 use postc_verify::{Controller, Settings};
 
@@ -63,25 +62,15 @@ pub fn verify(
     records: Vec<(Record, Span)>,
     sources: &mut SourceMap,
 ) -> Verdict {
-    let unverified = |why: String| {
-        Verdict::Unverified(
-            Diagnostic::new(Severity::Note, codes::VF044, format!("`{name}` was not verified: {why}"))
-                .help(format!("`postc post` verifies {}", postc_verify::FAMILIES)),
-        )
-    };
+    let unverified = |why: String| Verdict::Unverified(postc_verify::unverified(name, &why));
     if let Some(refused) = postc_verify::refusal(name, Some(post), ext, &program[..program.len().min(4096)]) {
         return unverified(refused.message);
     }
     let file = sources.add(name.to_string(), String::from_utf8_lossy(program).into_owned());
     let settings = Settings::from_post(post, Controller::Generic, 0.01);
     let report = postc_verify::verify_records(&mut &program[..], file, &mut Kept(records.into_iter()), &settings);
-    // Twenty blocks that do not read before any move: text output, not a
-    // G-code program verify reads (docs/verify.md).
-    if report.findings.iter().any(|d| d.code == codes::VF001.code) {
-        return unverified(format!(
-            "its first {} blocks do not read as G-code and none moves the tool",
-            postc_verify::NOT_GCODE
-        ));
+    if let Some(why) = postc_verify::not_gcode(&report) {
+        return unverified(why);
     }
     Verdict::Findings(report.findings)
 }

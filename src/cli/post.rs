@@ -287,10 +287,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         unverified.extend(checked.judge(outcome, &rules, &mut sources)?);
     }
     for why in unverified {
-        let mut note = vec![
-            Diagnostic::new(Severity::Note, codes::VF044, format!("`{name}` was not verified: {why}"))
-                .help(format!("`postc post` verifies {}", postc_verify::FAMILIES)),
-        ];
+        let mut note = vec![postc_verify::unverified(&name, &why)];
         rules.apply(&mut note);
         report::eprint(&mut sources, &note);
         if postc_ir::diagnostic::has_errors(&note) {
@@ -380,13 +377,8 @@ impl Checked<'_> {
             }
             Outcome::Verified { report, held } => (report, held),
         };
-        // Twenty blocks that do not read before any move: text output, not
-        // a G-code program verify reads (docs/verify.md).
-        if report.findings.iter().any(|d| d.code == codes::VF001.code) {
-            return Ok(Some(format!(
-                "its first {} blocks do not read as G-code and none moves the tool",
-                postc_verify::NOT_GCODE
-            )));
+        if let Some(why) = postc_verify::not_gcode(&report) {
+            return Ok(Some(why));
         }
         if let Some(bytes) = &held
             && !report.findings.is_empty()

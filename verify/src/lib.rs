@@ -216,6 +216,24 @@ impl Settings {
 /// The program families verify knows, for the refusal message.
 pub const FAMILIES: &str = "G-code (ISO, Fanuc, Haas, LinuxCNC and grbl style, with `#` parameters and [ ] expressions, and Siemens Sinumerik)";
 
+/// The note (VF044) that a program posted as `name` was not verified, and
+/// why: what `postc post` and the Python package's `post` say alike.
+pub fn unverified(name: &str, why: &str) -> Diagnostic {
+    Diagnostic::new(postc_ir::Severity::Note, postc_ir::codes::VF044, format!("`{name}` was not verified: {why}"))
+        .help(format!("`postc post` verifies {FAMILIES}"))
+}
+
+/// Why a replay that found VF001 (twenty blocks that do not read before
+/// any move) did not verify the program: text output, not a G-code
+/// program verify reads (docs/verify.md).
+pub fn not_gcode(report: &Report) -> Option<String> {
+    report
+        .findings
+        .iter()
+        .any(|d| d.code == postc_ir::codes::VF001.code)
+        .then(|| format!("its first {NOT_GCODE} blocks do not read as G-code and none moves the tool"))
+}
+
 /// Output extensions of families verify does not read.
 pub const FOREIGN_EXTENSIONS: &[(&str, &str)] =
     &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
