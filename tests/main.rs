@@ -23,6 +23,7 @@ mod cimco_styles;
 mod convert;
 mod convert_fusion;
 mod convert_native;
+mod convert_own_dialect;
 mod corpus_goldens;
 mod diagnostic_codes;
 mod diagnostic_levels;

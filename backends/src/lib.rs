@@ -94,6 +94,45 @@ pub(crate) fn dialect_name(d: Dialect) -> &'static str {
     }
 }
 
+/// A one-file post of `dialect` printed as its source file has it
+/// (`PostInfo::written`), after the conversion `note` line and in the
+/// file's own line ending: the bytes, when `compile` (the dialect's
+/// frontend) reads them back as `post` (compared without spans, the
+/// file's hash and the text itself); `None` otherwise, and the backend
+/// prints the post from the IR. `encode` gives the file's bytes (`None`:
+/// its encoding cannot hold the text).
+pub(crate) fn as_written(
+    post: &Post,
+    dialect: Dialect,
+    note: &str,
+    compile: impl Fn(&std::path::Path, &[u8], &mut postc_ir::SourceMap) -> (Post, Vec<Diagnostic>),
+    encode: impl Fn(&str) -> Option<Vec<u8>>,
+) -> Option<Vec<u8>> {
+    let written = post.info.written.as_str();
+    if written.is_empty() || post.info.dialect != dialect {
+        return None;
+    }
+    // A converted post's own note is not the source's.
+    let mut body = written;
+    while let Some(line) = body.split_inclusive('\n').next()
+        && postc_ir::post::is_conversion_note(line.trim_start_matches(['\u{feff}', '+', '\'', '/']))
+    {
+        body = &body[line.len()..];
+    }
+    let eol = if written.contains("\r\n") { "\r\n" } else { "\n" };
+    let bytes = encode(&format!("{note}{eol}{body}"))?;
+    let mut sources = postc_ir::SourceMap::new();
+    let (back, diagnostics) = compile(std::path::Path::new(&post.info.source), &bytes, &mut sources);
+    let normal = |p: &Post| {
+        let mut p = p.clone();
+        p.drop_spans();
+        p.info.written.clear();
+        p.info.revision.clear();
+        ::ron::to_string(&p).ok()
+    };
+    (!diagnostics.iter().any(Diagnostic::is_error) && normal(&back) == normal(post)).then_some(bytes)
+}
+
 /// The file name of the post's source, without its folder.
 pub(crate) fn source_name(post: &Post) -> &str {
     let s = post.info.source.as_str();

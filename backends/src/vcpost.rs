@@ -40,6 +40,18 @@ use postc_ir::{
 
 /// Prints `post` as a VcPost post, or says why it cannot be one.
 pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    // As written, when the IR keeps the file and it compiles back to `post`.
+    let note = format!(
+        "' {}{} ({}).",
+        postc_ir::post::CONVERSION_NOTE,
+        super::source_name(post),
+        super::dialect_name(post.info.dialect)
+    );
+    if let Some(bytes) =
+        super::as_written(post, postc_ir::Dialect::VcPost, &note, postc_front_vcpost::compile, |t| encode(post, t).ok())
+    {
+        return Ok(bytes);
+    }
     let mut p = Printer { post, out: String::new(), errors: Vec::new(), names: Names::default() };
     p.check_shape();
     if !p.errors.is_empty() {

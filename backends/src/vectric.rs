@@ -74,8 +74,13 @@ const SECTION_ORDER: &[Section] = &[
     Section::Footer,
 ];
 
-/// Prints `post` as a Vectric post, or says why it cannot be one.
+/// Prints `post` as a Vectric post, or says why it cannot be one: the
+/// file as written when the IR keeps it and it compiles back to `post`
+/// ([`as_written`]), from the IR otherwise.
 pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    if let Some(text) = as_written(post) {
+        return Ok(text);
+    }
     let mut p = Printer { post, out: Vec::new(), errors: Vec::new() };
     p.check_shape();
     if post.info.dispatch == Dispatch::AptWords {
@@ -95,6 +100,24 @@ struct Printer<'p> {
     post: &'p Post,
     out: Vec<u8>,
     errors: Vec<Diagnostic>,
+}
+
+/// The post's file as written, when it compiles back to `post`
+/// ([`crate::as_written`]). A file of Windows-1252 text that is not ASCII
+/// is printed from the IR, whose `[nn]` codes keep every byte.
+fn as_written(post: &Post) -> Option<Vec<u8>> {
+    if post.info.text_encoding != postc_ir::post::TextEncoding::Utf8 && !post.info.written.is_ascii() {
+        return None;
+    }
+    let note = format!(
+        "+ {}{} ({})",
+        postc_ir::post::CONVERSION_NOTE,
+        crate::source_name(post),
+        crate::dialect_name(post.info.dialect)
+    );
+    crate::as_written(post, postc_ir::Dialect::Vectric, &note, postc_front_vectric::compile, |t| {
+        Some(t.as_bytes().to_vec())
+    })
 }
 
 impl Printer<'_> {

@@ -162,6 +162,14 @@ pub struct PostInfo {
     /// post's function it passed through.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub host_file: Option<crate::diagnostic::FileId>,
+    /// A one-file post's file exactly as written (a Vectric post that
+    /// names no `POST_BASE`, a VcPost post): what the backend of its dialect prints when
+    /// it compiles back to this post, so that converting the post to its
+    /// own dialect keeps its layout, comments and line endings. It says
+    /// nothing the rest of the IR does not: a post is compared without it.
+    /// (A CIMCO post keeps its pieces per statement: [`SourceText::written`].)
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub written: String,
 }
 
 /// The encoding a post file was read in.
@@ -474,7 +482,7 @@ pub struct Function {
 }
 
 /// A piece of a post as written in its dialect (see [`Function::source`]).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct SourceText {
     /// The text, as written; empty where the IR holds what the text said
     /// (a constant, a format), which a backend prints from the IR there.
@@ -484,6 +492,23 @@ pub struct SourceText {
     /// stands among the post's globals.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub declares: Vec<String>,
+    /// The piece exactly as the source file has it, with the comments and
+    /// blank lines between it and the piece before: what the backend of
+    /// the source's dialect prints, when what it compiles to is what the
+    /// IR holds, so that converting a post to its own dialect keeps its
+    /// settings' spellings, its comments and its line endings. Empty where
+    /// the IR was not read from a file of that dialect. It says nothing the
+    /// IR does not: a post is compared without it.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub written: String,
+    /// Where [`Self::written`] starts in the source file (bytes): pieces
+    /// printed as written are printed in this order.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub written_at: usize,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 /// Why a function runs as a script rather than as native IR.
@@ -710,7 +735,7 @@ impl Post {
         impl crate::visit::VisitMut for Drop {
             fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
                 match stmt {
-                    Stmt::While { span, .. } | Stmt::Line { span, .. } => *span = None,
+                    Stmt::While { span, .. } | Stmt::Line { span, .. } | Stmt::Throw { span, .. } => *span = None,
                     _ => {}
                 }
                 crate::visit::walk_stmt_mut(self, stmt);

@@ -67,7 +67,32 @@ pub(super) fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
             "a RON post written by an older postc? Convert the JavaScript post to RON again",
         )]);
     }
-    let mut p = Printer { post, out: String::new(), errors: Vec::new() };
+    // As written where the IR keeps the source's text and that text still
+    // compiles to what the IR holds; from the IR otherwise.
+    if has_written(post)
+        && let Ok(text) = printed(post, texts, init, true)
+        && super::check::compiles_back(post, &text).is_ok()
+    {
+        return Ok(text.into_bytes());
+    }
+    let text = printed(post, texts, init, false)?;
+    super::check::compiles_back(post, &text)?;
+    Ok(text.into_bytes())
+}
+
+/// Whether the IR keeps any piece of the source as written
+/// ([`SourceText::written`]).
+fn has_written(post: &Post) -> bool {
+    post.functions.iter().flat_map(|f| &f.source).any(|s| !s.written.is_empty())
+}
+
+/// The post printed: `as_written`, each piece the IR keeps as the source
+/// has it (its comments, blank lines, spellings and line endings) and the
+/// rest from the IR; otherwise all from the IR.
+fn printed(post: &Post, texts: &[SourceText], init: usize, as_written: bool) -> Result<String, Vec<Diagnostic>> {
+    let crlf = as_written && post.functions.iter().flat_map(|f| &f.source).any(|s| s.written.contains("\r\n"));
+    let mut p =
+        Printer { post, out: String::new(), errors: Vec::new(), as_written, eol: if crlf { "\r\n" } else { "\n" } };
     p.options();
     if !p.errors.is_empty() {
         return Err(p.errors);
@@ -78,14 +103,18 @@ pub(super) fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
     if !p.errors.is_empty() {
         return Err(p.errors);
     }
-    super::check::compiles_back(post, &p.out)?;
-    Ok(p.out.into_bytes())
+    Ok(p.out)
 }
 
 struct Printer<'p> {
     post: &'p Post,
     out: String,
     errors: Vec<Diagnostic>,
+    /// Print the pieces the IR keeps as written ([`SourceText::written`]).
+    as_written: bool,
+    /// The line ending of what the printer writes itself: the source's,
+    /// when it prints pieces as written.
+    eol: &'static str,
 }
 
 /// An object literal: `{key: value, ...}`.
@@ -161,8 +190,21 @@ impl Printer<'_> {
     }
 
     fn header(&mut self) {
+        if self.as_written {
+            // The source's head is in its first piece, as written.
+            self.out.push_str(&super::note(self.post));
+            self.out.push_str(self.eol);
+            return;
+        }
         self.out.push_str(&super::header(self.post));
         self.out.push('\n');
+    }
+
+    /// Ends the line the output ends in, if it does not end in a line break.
+    fn end_line(&mut self) {
+        if !self.out.is_empty() && !self.out.ends_with('\n') {
+            self.out.push_str(self.eol);
+        }
     }
 
     /// The top-level statements in the source's order: as written, or,
@@ -172,14 +214,21 @@ impl Printer<'_> {
     fn top_level(&mut self, texts: &[SourceText]) {
         let post = self.post;
         let mut printed: HashSet<&str> = HashSet::new();
+        if self.as_written {
+            self.written(texts);
+        }
         for t in texts {
-            if t.text.is_empty() {
+            if self.as_written && !t.written.is_empty() {
+                printed.extend(t.declares.iter().map(String::as_str));
+            } else if t.text.is_empty() {
+                self.end_line();
                 for name in &t.declares {
                     if printed.insert(name) {
                         self.held(name);
                     }
                 }
             } else {
+                self.end_line();
                 printed.extend(t.declares.iter().map(String::as_str));
                 self.out.push_str(t.text.trim_end());
                 self.out.push('\n');
@@ -197,10 +246,24 @@ impl Printer<'_> {
         for g in &post.globals {
             let name = g.name.as_str();
             if !g.implicit && !name.contains('.') && printed.insert(name) {
+                self.end_line();
                 self.held(name);
             }
         }
-        self.out.push('\n');
+        if !self.as_written {
+            self.out.push('\n');
+        }
+    }
+
+    /// Every piece the IR keeps as written, top-level statements and
+    /// functions, in the source's order.
+    fn written(&mut self, texts: &[SourceText]) {
+        let functions = self.post.functions.iter().filter(|f| f.name != made::INIT).filter_map(|f| f.source.first());
+        let mut pieces: Vec<&SourceText> = texts.iter().chain(functions).filter(|t| !t.written.is_empty()).collect();
+        pieces.sort_by_key(|t| t.written_at);
+        for t in pieces {
+            self.out.push_str(&t.written);
+        }
     }
 
     /// The statement that made a global the IR holds: `globals = {...};`
@@ -358,6 +421,10 @@ impl Printer<'_> {
             if is_postc_feedrate(post, f) {
                 continue;
             }
+            if self.as_written && f.source.first().is_some_and(|s| !s.written.is_empty()) {
+                continue;
+            }
+            self.end_line();
             self.out.push_str(&super::comment(post, &CommentTarget::Function(FunctionId::new(i as u16))));
             if !f.source.is_empty() {
                 let text: Vec<&str> = f.source.iter().map(|s| s.text.trim_end()).collect();
@@ -389,8 +456,12 @@ impl Printer<'_> {
             }
         }
         // One line break ends the file.
-        while self.out.ends_with("\n\n") {
+        self.end_line();
+        while self.out.ends_with("\n\n") || self.out.ends_with("\n\r\n") {
             self.out.pop();
+            if self.out.ends_with('\r') {
+                self.out.pop();
+            }
         }
     }
 }

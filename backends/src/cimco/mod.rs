@@ -64,11 +64,15 @@ pub(crate) fn comment(post: &Post, on: &CommentTarget) -> String {
 /// The conversion note, then the source's head (read back as the head, the
 /// note left out).
 pub(crate) fn header(post: &Post) -> String {
+    format!("{}\n{}", note(post), comment(post, &CommentTarget::Post))
+}
+
+/// The conversion note's line, without its line break.
+pub(crate) fn note(post: &Post) -> String {
     format!(
-        "// {}{} ({}).\n{}",
+        "// {}{} ({}).",
         postc_ir::post::CONVERSION_NOTE,
         crate::source_name(post),
-        crate::dialect_name(post.info.dialect),
-        comment(post, &CommentTarget::Post)
+        crate::dialect_name(post.info.dialect)
     )
 }

@@ -54,11 +54,30 @@ pub fn before(text: &str, start: usize, floor: usize) -> Vec<String> {
     lines
 }
 
+/// Where the text starts after the conversion notes on its first lines
+/// (a converted post's), 0 when it has none.
+pub fn after_notes(text: &str) -> usize {
+    let mut skip = 0;
+    for line in text.split_inclusive('\n') {
+        match comment_text(line.trim_end_matches(['\n', '\r']).trim_start_matches('\u{feff}')) {
+            Some(t) if postc_ir::post::is_conversion_note(t) => skip += line.len(),
+            _ => break,
+        }
+    }
+    skip
+}
+
 /// The file's head: the first run of `//` lines at the top of the file,
 /// or a `/* ... */` block there (each line without the ` * ` that
 /// decorates it), when a blank line follows it; and the byte where it
 /// ends (0 when there is none).
 pub fn head(text: &str) -> (Vec<String>, usize) {
+    // A converted post's note line stands before the head it kept as written.
+    let skip = after_notes(text);
+    if skip > 0 {
+        let (lines, end) = head(&text[skip..]);
+        return (lines, if end > 0 { skip + end } else { 0 });
+    }
     let body = text.trim_start_matches('\u{feff}');
     let bom = text.len() - body.len();
     if let Some(inner) = body.strip_prefix("/*")

@@ -83,6 +83,8 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     let (program, mut diagnostics) = parse_all(text, file);
     let (mut post, lower_diagnostics) = lower::lower(&program, legacy);
     post.info.source = path.display().to_string();
+    // The file as written, for the VcPost backend (`PostInfo::written`).
+    post.info.written = text.to_string();
     if post.info.name.is_empty() {
         // The file's name, unless `Postc.Name` gave one.
         post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();

@@ -14,19 +14,22 @@ var sequenceNumberStart = 10;
 var sequenceNumberIncrement = 10;
 var useRadius = false;
 var absoluteArcCenter = true;
+
 var MillDrillingFields = [
     {name: "Longhand drilling", isLonghand: true, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: true, degressionType: false, degression: false, peckingRetract: false,
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
 var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
 var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
-var gMotion = createVariable({prefix: "G"}, createFormat({width: 2, zeropad: true}));
+var gMotion = createVariable({prefix: "G"}, createFormat({decimals: 0, width: 2, zeropad: true}));
+
 var compensation = "";
 var drill = null;
 

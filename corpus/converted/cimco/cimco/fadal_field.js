@@ -1,20 +1,22 @@
 // Converted by postc from fadal_field.js (CIMCO CNC-Calc JavaScript).
-// Fadal VMC milling post (Format 2, mm) for CIMCO CNC-Calc, written for the
-// postc corpus in the style posts found in the field are written in: a
-// variadic writeBlock() that reads `arguments` and numbers the blocks N1,
-// N2, ...; radius arcs (useRadius) broken at every quadrant boundary, as
-// posts for older controls do, by a helper that collects the pieces in an
-// array of objects and a for loop that writes them; object-literal tables
-// for the cycle and coolant codes; a do ... while loop that pads the
-// program number.
-//
-// Fadal conventions: the program number on the first block (N1 O0042);
-// E1 selects fixture offset 1; the tool length offset H goes with the
-// first Z move after the tool change (Fadal applies H with a Z word);
-// G2/G3 with R (the host never passes an arc of 180 degrees or more, and
-// the post breaks each at 0, 90, 180 and 270 degrees); canned cycles
-// G81/G82/G83/G73 with G98, R absolute, Q the peck, P the dwell in
-// seconds; G4 P seconds; the end cancels H and E and returns home; M2.
+/*
+ * Fadal VMC milling post (Format 2, mm) for CIMCO CNC-Calc, written for the
+ * postc corpus in the style posts found in the field are written in: a
+ * variadic writeBlock() that reads `arguments` and numbers the blocks N1,
+ * N2, ...; radius arcs (useRadius) broken at every quadrant boundary, as
+ * posts for older controls do, by a helper that collects the pieces in an
+ * array of objects and a for loop that writes them; object-literal tables
+ * for the cycle and coolant codes; a do ... while loop that pads the
+ * program number.
+ *
+ * Fadal conventions: the program number on the first block (N1 O0042);
+ * E1 selects fixture offset 1; the tool length offset H goes with the
+ * first Z move after the tool change (Fadal applies H with a Z word);
+ * G2/G3 with R (the host never passes an arc of 180 degrees or more, and
+ * the post breaks each at 0, 90, 180 and 270 degrees); canned cycles
+ * G81/G82/G83/G73 with G98, R absolute, Q the peck, P the dwell in
+ * seconds; G4 P seconds; the end cancels H and E and returns home; M2.
+ */
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -23,6 +25,7 @@ var absoluteArcCenter = false;
 var showSequenceNumbers = true;
 var sequenceNumberStart = 1;
 var sequenceNumberIncrement = 1;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -37,6 +40,7 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
 var feedFormat = createFormat({decimals: 1, forceDecimal: true});
 var secondsFormat = createFormat({decimals: 3});
@@ -44,12 +48,16 @@ var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
 var fOutput = createVariable({prefix: "F"}, feedFormat);
-var gMotion = createVariable({prefix: "G"}, createFormat({}));
+var gMotion = createVariable({prefix: "G"}, createFormat({decimals: 0}));
+
 var programNumber = 42;
 var coolantCodes = {flood: "M8", mist: "M7", off: "M9"};
 var cycleCodes = {"Drilling (G81)": "G81", "Peck drilling (G83)": "G83", "Chip breaking (G73)": "G73",
     "Peck drilling": "G83", "Chip breaking": "G73"};
+// Unit vectors at 0, 90, 180 and 270 degrees: the quadrant points are
+// exact, with no sine or cosine.
 var quadrants = [{c: 1, s: 0}, {c: 0, s: 1}, {c: -1, s: 0}, {c: 0, s: -1}];
+
 var sequenceNumber = sequenceNumberStart;
 var lengthOffset = "";
 var compensation = "";

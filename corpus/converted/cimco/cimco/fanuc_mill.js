@@ -9,6 +9,7 @@
 // is not output (a modal variable returning "") leaves no gap, and
 // writeBlock only puts the block number in front.
 
+// ------------------------------------------------------------------ Globals
 var decimalMark = ".";
 var linebreak = "\n";
 var variableDelimeter = " ";
@@ -18,6 +19,8 @@ var sequenceNumberStart = 10;
 var sequenceNumberIncrement = 10;
 var useRadius = false;
 var absoluteArcCenter = false;
+
+// -------------------------------------------------------- Drilling UI fields
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -32,23 +35,30 @@ var MillDrillingFields = [
      minimumDepth: true, firstFeedrateFactor: true, upperDwell: true, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
-var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
-var feedFormat = createFormat({});
-var toolFormat = createFormat({width: 2, zeropad: true});
-var rpmFormat = createFormat({});
+
+// ------------------------------------------------------ Formats and outputs
+var xyzFormat = createFormat({prefix: "", width: 0, zeropad: false, decimals: 3, scale: 1.0, forceDecimal: true, forceSign: false});
+var feedFormat = createFormat({decimals: 0});
+var toolFormat = createFormat({width: 2, zeropad: true, decimals: 0});
+var rpmFormat = createFormat({decimals: 0});
 var dwellFormat = createFormat({decimals: 3});
-var gMotion = createVariable({prefix: " G"}, createFormat({}));
-var xOutput = createVariable({prefix: " X"}, xyzFormat);
-var yOutput = createVariable({prefix: " Y"}, xyzFormat);
-var zOutput = createVariable({prefix: " Z"}, xyzFormat);
-var iOutput = createVariable({prefix: " I", force: true}, xyzFormat);
-var jOutput = createVariable({prefix: " J", force: true}, xyzFormat);
+
+var gMotion = createVariable({prefix: variableDelimeter + "G"}, createFormat({decimals: 0}));
+var xOutput = createVariable({prefix: variableDelimeter + "X", force: false}, xyzFormat);
+var yOutput = createVariable({prefix: variableDelimeter + "Y", force: false}, xyzFormat);
+var zOutput = createVariable({prefix: variableDelimeter + "Z", force: false}, xyzFormat);
+var iOutput = createVariable({prefix: variableDelimeter + "I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: variableDelimeter + "J", force: true}, xyzFormat);
+
+// -------------------------------------------------------------------- State
 var sequenceNumber = sequenceNumberStart;
 var clipboard = false;
 var toolNumber = 0;
 var pendingCompensation = "";
 var drill = null;
 var cycleStarted = false;
+
+// ------------------------------------------------------------------ Helpers
 
 // One NC line: the block number, then the words (each with its delimiter).
 function writeBlock(text) {

@@ -1,10 +1,12 @@
 // Converted by postc from haas_field.js (CIMCO CNC-Calc JavaScript).
-// Haas VF milling post (mm) for CIMCO CNC-Calc, written for the postc corpus in
-// the style posts found in the field are written in: a variadic
-// writeBlock() that reads `arguments`, words gathered in an array and
-// joined with blanks, object literals as look-up tables (coolant codes,
-// cycle codes), a do ... while loop, and helpers that call helpers. Block
-// numbers N10, N20, ...; the program number is padded to four digits.
+/*
+ * Haas VF milling post (mm) for CIMCO CNC-Calc, written for the postc corpus in
+ * the style posts found in the field are written in: a variadic
+ * writeBlock() that reads `arguments`, words gathered in an array and
+ * joined with blanks, object literals as look-up tables (coolant codes,
+ * cycle codes), a do ... while loop, and helpers that call helpers. Block
+ * numbers N10, N20, ...; the program number is padded to four digits.
+ */
 
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
@@ -16,19 +18,23 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var linebreak = "\n";
 var showSequenceNumbers = true;
 var sequenceNumber = 10;
 var sequenceNumberIncrement = 10;
 var programNumber = 42;
+
 var xyzFormat = createFormat({decimals: 4, forceDecimal: true});
 var feedFormat = createFormat({decimals: 1, forceDecimal: true});
-var rpmFormat = createFormat({});
+var rpmFormat = createFormat({decimals: 0});
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
 var fOutput = createVariable({prefix: "F"}, feedFormat);
-var gMotion = createVariable({prefix: "G"}, createFormat({}));
+var gMotion = createVariable({prefix: "G"}, createFormat({decimals: 0}));
+
+// Look-up tables, as object literals.
 var coolantCodes = {off: "M09", flood: "M08", mist: "M07"};
 var arcCodes = {1: "G02", 0: "G03"};
 var cycleCodes = {"Drilling (G81)": "G81", "Peck drilling (G83)": "G83"};

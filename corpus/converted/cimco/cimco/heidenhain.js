@@ -19,6 +19,7 @@ var sequenceNumberStart = 0;
 var sequenceNumberIncrement = 1;
 var useRadius = false;
 var absoluteArcCenter = true;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -33,6 +34,7 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3, forceDecimal: true, forceSign: true});
 var angleFormat = createFormat({decimals: 3, forceDecimal: true, forceSign: true});
 var qFormat = createFormat({decimals: 3, forceDecimal: true, forceSign: true});
@@ -41,6 +43,7 @@ var yOutput = createVariable({prefix: " Y"}, xyzFormat);
 var zOutput = createVariable({prefix: " Z"}, xyzFormat);
 var ccX = createVariable({prefix: " X", force: true}, xyzFormat);
 var ccY = createVariable({prefix: " Y", force: true}, xyzFormat);
+
 var block = sequenceNumberStart;
 var program = "CNCCALC";
 var compensation = "";

@@ -1,10 +1,12 @@
 // Converted by postc from iso_mill.js (CIMCO CNC-Calc JavaScript).
-// Generic ISO milling post for CIMCO CNC-Calc, written for the postc corpus
-// from the CNC-Calc Post Processor Manual (May 2014), in the newer style:
-// a `globals` object and `PostInfo`. Words are packed without blanks, block
-// numbers are off, and coordinates print at most three decimals with
-// trailing zeros dropped (X12.5, X40). Every drilling cycle is written out
-// as moves.
+/*
+ * Generic ISO milling post for CIMCO CNC-Calc, written for the postc corpus
+ * from the CNC-Calc Post Processor Manual (May 2014), in the newer style:
+ * a `globals` object and `PostInfo`. Words are packed without blanks, block
+ * numbers are off, and coordinates print at most three decimals with
+ * trailing zeros dropped (X12.5, X40). Every drilling cycle is written out
+ * as moves.
+ */
 
 globals = {
     decimalMark: ".",
@@ -17,6 +19,7 @@ globals = {
     useRadius: false,
     absoluteArcCenter: false
 };
+
 PostInfo = {
     title: "Generic ISO mill",
     summary: "G-code without blanks or block numbers; drilling as moves",
@@ -24,6 +27,7 @@ PostInfo = {
     version: "1.0",
     type: POST_TYPE_MILL
 };
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: true, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -34,8 +38,9 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3});
-var gFormat = createFormat({width: 2, zeropad: true});
+var gFormat = createFormat({width: 2, zeropad: true, decimals: 0});
 var gMotion = createVariable({prefix: "G"}, gFormat);
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
@@ -43,7 +48,6 @@ var zOutput = createVariable({prefix: "Z"}, xyzFormat);
 var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
 var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
 var drill;
-var compensation = "";
 
 function writeBlock(text) {
     if (text == "") {
@@ -76,6 +80,8 @@ function onDwell(seconds) {
 function onClose() {
     return writeBlock("M05") + writeBlock("M30") + writeBlock("%");
 }
+
+var compensation = "";
 
 function onCompensation(comp) {
     compensation = comp == COMPENSATION_LEFT ? "G41" : comp == COMPENSATION_RIGHT ? "G42" : "G40";

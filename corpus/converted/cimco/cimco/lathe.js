@@ -1,14 +1,16 @@
 // Converted by postc from lathe.js (CIMCO CNC-Calc JavaScript).
-// Fanuc-style lathe post for CIMCO CNC-Calc, written for the postc corpus
-// from the CNC-Calc Post Processor Manual (May 2014): the `globals` object
-// with diameter programming, PostInfo of type POST_TYPE_TURN, the turning
-// onLinear(vx, vz, movement) and onCircular(cx, cz, ex, ez, isCW,
-// movement), and TurnDrillingFields with onDrilling.
-//
-// X values arrive as radii; xDiameterProg doubles them through the X
-// format's scale. Arc centres are I (radius, as iDiameterProg is false) and
-// K, relative to the arc's start. Drilling on the spindle axis uses G83
-// (with Q for pecking) or the moves of a longhand cycle.
+/*
+ * Fanuc-style lathe post for CIMCO CNC-Calc, written for the postc corpus
+ * from the CNC-Calc Post Processor Manual (May 2014): the `globals` object
+ * with diameter programming, PostInfo of type POST_TYPE_TURN, the turning
+ * onLinear(vx, vz, movement) and onCircular(cx, cz, ex, ez, isCW,
+ * movement), and TurnDrillingFields with onDrilling.
+ *
+ * X values arrive as radii; xDiameterProg doubles them through the X
+ * format's scale. Arc centres are I (radius, as iDiameterProg is false) and
+ * K, relative to the arc's start. Drilling on the spindle axis uses G83
+ * (with Q for pecking) or the moves of a longhand cycle.
+ */
 
 globals = {
     decimalMark: ".",
@@ -23,6 +25,7 @@ globals = {
     xDiameterProg: true,
     iDiameterProg: false
 };
+
 PostInfo = {
     title: "Fanuc lathe",
     summary: "Diameter programming, G83 and longhand drilling on the axis",
@@ -30,6 +33,7 @@ PostInfo = {
     version: "1.0",
     type: POST_TYPE_TURN
 };
+
 TurnDrillingFields = [
     {name: "Centre drill", isLonghand: false, plungingFeedrate: true, retractFeedrate: false, usePecking: false,
      firstPeckDepth: false, subsequentPeckDepths: false, peckClearance: false, peckRetract: false,
@@ -41,13 +45,15 @@ TurnDrillingFields = [
      firstPeckDepth: true, subsequentPeckDepths: true, peckClearance: true, peckRetract: true,
      useUpperDwell: false, uselowerDwell: true, pitch: false}
 ];
-var xOutput = createVariable({prefix: " X"}, createFormat({decimals: 3, scale: 2, forceDecimal: true}));
+
+var xOutput = createVariable({prefix: " X"}, createFormat({decimals: 3, forceDecimal: true, scale: globals.xDiameterProg ? 2 : 1}));
 var zOutput = createVariable({prefix: " Z"}, createFormat({decimals: 3, forceDecimal: true}));
-var iOutput = createVariable({prefix: " I", force: true}, createFormat({decimals: 3, forceDecimal: true}));
+var iOutput = createVariable({prefix: " I", force: true}, createFormat({decimals: 3, forceDecimal: true, scale: globals.iDiameterProg ? 2 : 1}));
 var kOutput = createVariable({prefix: " K", force: true}, createFormat({decimals: 3, forceDecimal: true}));
-var gMotion = createVariable({prefix: " G"}, createFormat({}));
+var gMotion = createVariable({prefix: " G"}, createFormat({decimals: 0}));
 var zFormat = createFormat({decimals: 3, forceDecimal: true});
-var toolFormat = createFormat({width: 2, zeropad: true});
+var toolFormat = createFormat({decimals: 0, width: 2, zeropad: true});
+
 var sequence = globals.sequenceNumberStart;
 var compensation = "";
 

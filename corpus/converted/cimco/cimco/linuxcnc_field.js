@@ -1,23 +1,26 @@
 // Converted by postc from linuxcnc_field.js (CIMCO CNC-Calc JavaScript).
-// LinuxCNC milling post (mm, .ngc style) for CIMCO CNC-Calc, written for the
-// postc corpus in the style posts found in the field are written in: every
-// block is an array of words (push, length, indexing) handed to a variadic
-// writeBlock() with writeBlock.apply(null, words); writeBlock reads
-// `arguments`, drops empty words and joins the rest with blanks. Look-up
-// tables are object literals and arrays; comments are sanitised character
-// by character (LinuxCNC comments cannot nest parentheses); the longhand
-// peck cycle is a do ... while loop of G0/G1 pecks.
-//
-// The program is what LinuxCNC 2.x reads: % ... %, a safe-start block,
-// T M6 with G43 H, G64 path blending, G2/G3 with incremental I J (G91.1),
-// G98 canned cycles G81/G82/G83/G73 (P in seconds, Q the peck) with G80,
-// G4 P seconds, G41/G42/G40 taking the diameter from the tool table,
-// M2 at the end. No block numbers: LinuxCNC does not need them.
+/*
+ * LinuxCNC milling post (mm, .ngc style) for CIMCO CNC-Calc, written for the
+ * postc corpus in the style posts found in the field are written in: every
+ * block is an array of words (push, length, indexing) handed to a variadic
+ * writeBlock() with writeBlock.apply(null, words); writeBlock reads
+ * `arguments`, drops empty words and joins the rest with blanks. Look-up
+ * tables are object literals and arrays; comments are sanitised character
+ * by character (LinuxCNC comments cannot nest parentheses); the longhand
+ * peck cycle is a do ... while loop of G0/G1 pecks.
+ *
+ * The program is what LinuxCNC 2.x reads: % ... %, a safe-start block,
+ * T M6 with G43 H, G64 path blending, G2/G3 with incremental I J (G91.1),
+ * G98 canned cycles G81/G82/G83/G73 (P in seconds, Q the peck) with G80,
+ * G4 P seconds, G41/G42/G40 taking the diameter from the tool table,
+ * M2 at the end. No block numbers: LinuxCNC does not need them.
+ */
 
 var linebreak = "\n";
 var tolerance = 0.01;
 var useRadius = false;
 var absoluteArcCenter = false;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -40,13 +43,16 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 4, forceDecimal: true});
 var feedFormat = createFormat({decimals: 1});
 var secondsFormat = createFormat({decimals: 3});
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
-var gMotionModal = createVariable({prefix: "G"}, createFormat({}));
+var gMotionModal = createVariable({prefix: "G"}, createFormat({decimals: 0}));
+
+// Look-up tables.
 var safeStart = ["G17", "G21", "G40", "G49", "G54", "G80", "G90", "G91.1", "G94"];
 var compensationCodes = ["G40", "G41", "G42"];
 var coolantCodes = {flood: "M8", mist: "M7", off: "M9"};
@@ -54,6 +60,7 @@ var cycleCodes = {"Drilling (G81)": "G81", "Spot drilling (G82)": "G82", "Peck d
     "Chip breaking (G73)": "G73", "Drilling": "G81", "Peck drilling": "G83", "Chip breaking": "G73"};
 var commentCharacters = {"(": "[", ")": "]"};
 var peckClearance = 0.5;
+
 var pendingCompensation = "";
 var lastFeed = "";
 var currentTool = 0;

@@ -1,16 +1,18 @@
 // Converted by postc from mach3_field.js (CIMCO CNC-Calc JavaScript).
-// Mach3 Mill post (mm, .tap style) for CIMCO CNC-Calc, written for the postc
-// corpus in the style posts found in the field are written in: a variadic
-// writeBlock() that reads `arguments` and numbers the block, a header built
-// by a for ... in loop over an object literal of modal groups, switch
-// statements for the movement and the coolant, implicit globals (assigned
-// without `var`, as hobby-shop posts often do), and helpers calling helpers.
-//
-// The program is what Mach3 reads with its default settings: block numbers
-// N10, N20, ...; comments in parentheses; G91.1 (I and J relative to the
-// arc start, whatever the Mach3 "IJ mode" setting says); T M6 then G43 H;
-// G98 canned cycles G81/G82/G83 with G80; G4 P in seconds (Mach3's
-// default; machines set to milliseconds need P scaled by 1000); M30.
+/*
+ * Mach3 Mill post (mm, .tap style) for CIMCO CNC-Calc, written for the postc
+ * corpus in the style posts found in the field are written in: a variadic
+ * writeBlock() that reads `arguments` and numbers the block, a header built
+ * by a for ... in loop over an object literal of modal groups, switch
+ * statements for the movement and the coolant, implicit globals (assigned
+ * without `var`, as hobby-shop posts often do), and helpers calling helpers.
+ *
+ * The program is what Mach3 reads with its default settings: block numbers
+ * N10, N20, ...; comments in parentheses; G91.1 (I and J relative to the
+ * arc start, whatever the Mach3 "IJ mode" setting says); T M6 then G43 H;
+ * G98 canned cycles G81/G82/G83 with G80; G4 P in seconds (Mach3's
+ * default; machines set to milliseconds need P scaled by 1000); M30.
+ */
 
 var linebreak = "\n";
 var tolerance = 0.01;
@@ -19,6 +21,7 @@ var absoluteArcCenter = false;
 var showSequenceNumbers = true;
 var sequenceNumberStart = 10;
 var sequenceNumberIncrement = 10;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -29,12 +32,15 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 4});
 var feedFormat = createFormat({decimals: 1});
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
 var fOutput = createVariable({prefix: "F"}, feedFormat);
+
+// The safe-start block, one word per modal group, in this order.
 var modalGroups = {plane: "G17", units: "G21", distance: "G90", arcDistance: "G91.1", feedMode: "G94",
     compensation: "G40", lengthOffset: "G49", cycle: "G80"};
 

@@ -1,24 +1,27 @@
 // Converted by postc from okuma_field.js (CIMCO CNC-Calc JavaScript).
-// Okuma OSP-P milling post (mm) for CIMCO CNC-Calc, written for the postc
-// corpus in the style posts found in the field are written in: every block
-// is built by string concatenation and handed to a one-argument
-// writeBlock(); switch statements pick the motion and coolant codes;
-// implicit globals (assigned without `var`) carry the state; a do ... while
-// loop cuts long comments into the 32-character pieces the OSP screen
-// shows; object literals are the cycle and coolant tables.
-//
-// OSP conventions: the program name O1001; comments in parentheses; G15 H1
-// selects work coordinate system 1; a tool change is T M06 with the tool
-// length offset G56 H on the first Z move (Okuma's G56, not G43), and each
-// tool starts a numbered sequence N1, N2, ... (OSP restarts by sequence
-// name); fixed cycles G81/G82/G83 with R, Q and P (dwell in seconds) return
-// to the level G71 sets; dwell G04 F in seconds; G30 P1 sends the machine
-// to its zero point; M02 ends the program.
+/*
+ * Okuma OSP-P milling post (mm) for CIMCO CNC-Calc, written for the postc
+ * corpus in the style posts found in the field are written in: every block
+ * is built by string concatenation and handed to a one-argument
+ * writeBlock(); switch statements pick the motion and coolant codes;
+ * implicit globals (assigned without `var`) carry the state; a do ... while
+ * loop cuts long comments into the 32-character pieces the OSP screen
+ * shows; object literals are the cycle and coolant tables.
+ *
+ * OSP conventions: the program name O1001; comments in parentheses; G15 H1
+ * selects work coordinate system 1; a tool change is T M06 with the tool
+ * length offset G56 H on the first Z move (Okuma's G56, not G43), and each
+ * tool starts a numbered sequence N1, N2, ... (OSP restarts by sequence
+ * name); fixed cycles G81/G82/G83 with R, Q and P (dwell in seconds) return
+ * to the level G71 sets; dwell G04 F in seconds; G30 P1 sends the machine
+ * to its zero point; M02 ends the program.
+ */
 
 var linebreak = "\n";
 var tolerance = 0.01;
 var useRadius = false;
 var absoluteArcCenter = false;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -29,14 +32,16 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
-var feedFormat = createFormat({});
+var feedFormat = createFormat({decimals: 0});
 var dwellFormat = createFormat({decimals: 2, forceDecimal: true});
 var xOutput = createVariable({prefix: " X"}, xyzFormat);
 var yOutput = createVariable({prefix: " Y"}, xyzFormat);
 var zOutput = createVariable({prefix: " Z"}, xyzFormat);
 var fOutput = createVariable({prefix: " F"}, feedFormat);
-var gMotion = createVariable({prefix: " G"}, createFormat({width: 2, zeropad: true}));
+var gMotion = createVariable({prefix: " G"}, createFormat({decimals: 0, width: 2, zeropad: true}));
+
 var coolants = {flood: " M08", mist: " M07", off: " M09"};
 var cycles = {"Drilling (G81)": 81, "Peck drilling (G83)": 83};
 var commentWidth = 32;

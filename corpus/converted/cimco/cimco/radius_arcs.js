@@ -17,18 +17,21 @@ var sequenceNumberStart = 1;
 var sequenceNumberIncrement = 1;
 var useRadius = true;
 var absoluteArcCenter = false;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: false,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 4, forceDecimal: true});
 var xOutput = createVariable({prefix: " X"}, xyzFormat);
 var yOutput = createVariable({prefix: " Y"}, xyzFormat);
 var zOutput = createVariable({prefix: " Z"}, xyzFormat);
 var rOutput = createVariable({prefix: " R", force: true}, xyzFormat);
-var gMotion = createVariable({prefix: " G"}, createFormat({}));
+var gMotion = createVariable({prefix: " G"}, createFormat({decimals: 0}));
+
 var n = sequenceNumberStart;
 var compensation = "";
 var drill = null;

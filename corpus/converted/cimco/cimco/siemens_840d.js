@@ -16,6 +16,7 @@ var sequenceNumberStart = 10;
 var sequenceNumberIncrement = 10;
 var useRadius = false;
 var absoluteArcCenter = false;
+
 var MillDrillingFields = [
     {name: "Drilling (G81)", isLonghand: false, plungingFeedrate: true, retractFeedrate: false,
      firstDepth: false, degressionType: false, degression: false, peckingRetract: false,
@@ -30,15 +31,17 @@ var MillDrillingFields = [
      minimumDepth: false, firstFeedrateFactor: false, upperDwell: false, lowerDwell: true,
      pitch: false, tappingSpeed: false, retractSpeed: false}
 ];
+
 var xyzFormat = createFormat({decimals: 3, forceDecimal: true});
 var paramFormat = createFormat({decimals: 3});
-var gMotion = createVariable({prefix: " G"}, createFormat({}));
+var gMotion = createVariable({prefix: " G"}, createFormat({decimals: 0}));
 var xOutput = createVariable({prefix: " X"}, xyzFormat);
 var yOutput = createVariable({prefix: " Y"}, xyzFormat);
 var zOutput = createVariable({prefix: " Z"}, xyzFormat);
 var iOutput = createVariable({prefix: " I", force: true}, xyzFormat);
 var jOutput = createVariable({prefix: " J", force: true}, xyzFormat);
 var fOutput = createVariable({prefix: " F"}, createFormat({decimals: 1}));
+
 var sequence = sequenceNumberStart;
 var compensation = "";
 var drill = null;

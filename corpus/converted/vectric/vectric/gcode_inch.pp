@@ -10,17 +10,19 @@
 + not the toolpath says where home is (APT CL files often do not).
 +
 +================================================
-+ Parentheses end a G-code comment: print ( ) in names as { }.
 
 POST_NAME = "postc G-code (inch) (*.ngc)"
 FILE_EXTENSION = "ngc"
-UNITS = "INCHES"
-LASER_SUPPORT = "YES"
+UNITS = "INCH"
 LINE_ENDING = "[10]"
-LINE_NUMBER_START = 10
-LINE_NUMBER_INCREMENT = 10
-LINE_NUMBER_MAXIMUM = 99999
+LASER_SUPPORT = "YES"
+
++ Parentheses end a G-code comment: print ( ) in names as { }.
 SUBSTITUTE = "({)}"
+
+LINE_NUMBER_START     = 10
+LINE_NUMBER_INCREMENT = 10
+LINE_NUMBER_MAXIMUM   = 99999
 
 VAR LINE_NUMBER = [N|A|N|1.0]
 VAR SPINDLE_SPEED = [S|A|S|1.0]
@@ -37,13 +39,6 @@ VAR DWELL_TIME = [DWELL|A|P|1.2]
 VAR X_LENGTH = [XLENGTH|A||1.1]
 VAR Y_LENGTH = [YLENGTH|A||1.1]
 VAR Z_LENGTH = [ZLENGTH|A||1.1]
-VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
-VAR PRODUCT = [PRODUCT|A||1.0]
-VAR DATE = [DATE|A||1.0]
-VAR TIME = [TIME|A||1.0]
-VAR TOOLS_USED = [TOOLS_USED|A||1.0]
-VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
-VAR TOOL_NAME = [TOOLNAME|A||1.0]
 
 begin HEADER
 "( [TP_FILENAME] )"
@@ -106,4 +101,3 @@ begin FOOTER
 "M5"
 "G53 G0 Z0"
 "M30"
-

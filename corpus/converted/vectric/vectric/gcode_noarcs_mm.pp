@@ -16,16 +16,19 @@
 + - [TP], [TOOL_NOTES] and [TDIA] in the tool-change comments.
 +
 +================================================
-+ Parentheses end a Fanuc comment: print ( ) in names as [ ].
 
 POST_NAME = "G-Code no arcs, Fanuc style (mm) (*.nc)"
 FILE_EXTENSION = "nc"
 UNITS = "MM"
 LINE_ENDING = "[13][10]"
-LINE_NUMBER_START = 10
+
++ Parentheses end a Fanuc comment: print ( ) in names as [ ].
+SUBSTITUTE = "([91])[93]"
+
+LINE_NUMBER_START     = 10
 LINE_NUMBER_INCREMENT = 10
-LINE_NUMBER_MAXIMUM = 990
-SUBSTITUTE = "([91])]"
+LINE_NUMBER_MAXIMUM   = 990
+
 SPINDLE_SPEED_RANGE = 1 15 4500 18000
 
 VAR LINE_NUMBER = [N|A|N|1.0]
@@ -41,10 +44,6 @@ VAR X_HOME_POSITION = [XH|A|X|1.3]
 VAR Y_HOME_POSITION = [YH|A|Y|1.3]
 VAR Z_HOME_POSITION = [ZH|A|Z|1.3]
 VAR DWELL_TIME = [DWELL|A|P|1.0|1000]
-VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
-VAR TOOL_NAME = [TOOLNAME|A||1.0]
-VAR TOOL_NOTES = [TOOL_NOTES|A||1.0]
-VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
 
 begin HEADER
 "%"
@@ -73,11 +72,11 @@ begin NEW_SEGMENT
 begin RAPID_MOVE
 "[N] G0[X][Y][Z]"
 
-begin FEED_MOVE
-"[N] G1[X][Y][Z]"
-
 begin FEED_RATE_CHANGE
 "[N] [F]"
+
+begin FEED_MOVE
+"[N] G1[X][Y][Z]"
 
 begin DWELL_MOVE
 "[N] G4 [DWELL]"
@@ -88,4 +87,3 @@ begin FOOTER
 "[N] G90 G0[XH][YH]"
 "[N] M30"
 "%"
-

@@ -9,12 +9,12 @@
 +================================================
 
 POST_NAME = "Generic HPGL Arcs (*.plt)"
+
 FILE_EXTENSION = "plt"
+
 UNITS = "MM"
+
 LINE_ENDING = "[13][10]"
-LINE_NUMBER_START = 0
-LINE_NUMBER_INCREMENT = 10
-LINE_NUMBER_MAXIMUM = 999999
 
 VAR X_POSITION = [X|A||1.0|40]
 VAR Y_POSITION = [Y|A||1.0|40]
@@ -25,21 +25,26 @@ VAR X_HOME_POSITION = [XH|A||1.0|40]
 VAR Y_HOME_POSITION = [YH|A||1.0|40]
 
 begin HEADER
+
 "IN;PA;"
 
 begin RAPID_MOVE
+
 "PU[X],[Y];"
 
 begin FEED_MOVE
+
 "PD[X],[Y];"
 
 begin CW_ARC_MOVE
+
 "AA[IA],[JA],[Angle]"
 
 begin CCW_ARC_MOVE
+
 "AA[IA],[JA],[Angle]"
 
 begin FOOTER
+
 "PU[XH],[YH];"
 "SP0;"
-

@@ -15,16 +15,15 @@
 + - [A] (the wrapped angle) in a comment.
 +
 +================================================
-+ Names print in ( ) comments: parentheses in them print as braces.
 
 POST_NAME = "G-Code WrapY2A G93 (mm) (*.ngc)"
 FILE_EXTENSION = "ngc"
 UNITS = "MM"
 LINE_ENDING = "[10]"
-LINE_NUMBER_START = 0
-LINE_NUMBER_INCREMENT = 10
-LINE_NUMBER_MAXIMUM = 999999
+
++ Names print in ( ) comments: parentheses in them print as braces.
 SUBSTITUTE = "({)}"
+
 ROTARY_WRAP_Y = "-A"
 INVERSE_TIME_MODE = "YES"
 
@@ -38,9 +37,6 @@ VAR X_HOME_POSITION = [XH|A|X|1.3]
 VAR Z_HOME_POSITION = [ZH|A|Z|1.3]
 VAR WRAP_DIAMETER = [WRAP_DIA|A||1.3]
 VAR X_LENGTH = [XLENGTH|A||1.1]
-VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
-VAR TOOL_NUMBER = [T|A||1.0]
-VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
 
 begin HEADER
 "( [TP_FILENAME] )"
@@ -75,4 +71,3 @@ begin FOOTER
 "G0[XH] A0"
 "G94"
 "M30"
-

@@ -24,16 +24,15 @@
 + - SUBSTITUTE with a [nn] code: commas in names print as ;.
 +
 +================================================
-+ Commas separate OpenSBP arguments.
 
 POST_NAME = "ShopBot TC (inch) (*.sbp)"
 FILE_EXTENSION = "sbp"
 UNITS = "INCHES"
 LINE_ENDING = "[13][10]"
-LINE_NUMBER_START = 0
-LINE_NUMBER_INCREMENT = 10
-LINE_NUMBER_MAXIMUM = 999999
-SUBSTITUTE = ",;"
+RAPID_PLUNGE_TO_STARTZ = "NO"
+
++ Commas separate OpenSBP arguments.
+SUBSTITUTE = "[44];"
 
 VAR SPINDLE_SPEED = [S|A||1.0]
 VAR FEED_RATE = [F|A||1.3|0.0166667]
@@ -52,24 +51,6 @@ VAR Z_LENGTH = [ZLENGTH|A||1.4]
 VAR X_ORIGIN_POS = [X_ORIGIN_POS|A||1.4]
 VAR Y_ORIGIN_POS = [Y_ORIGIN_POS|A||1.4]
 VAR DWELL_TIME = [DWELL|A||1.2]
-VAR TOOLPATH_FILENAME = [TP_FILENAME|A||1.0]
-VAR PRODUCT = [PRODUCT|A||1.0]
-VAR DATE = [DATE|A||1.0]
-VAR TIME = [TIME|A||1.0]
-VAR X_MIN = [XMIN|A||1.3]
-VAR X_MAX = [XMAX|A||1.3]
-VAR Y_MIN = [YMIN|A||1.3]
-VAR Y_MAX = [YMAX|A||1.3]
-VAR Z_MIN = [ZMIN|A||1.3]
-VAR Z_MAX = [ZMAX|A||1.3]
-VAR XY_ORIGIN = [XY_ORIGIN|A||1.0]
-VAR FILE_NOTES = [FILE_NOTES|A||1.0]
-VAR TOOLPATHS_OUTPUT = [TOOLPATHS_OUTPUT|A||1.0]
-VAR Z_ORIGIN = [Z_ORIGIN|A||1.0]
-VAR TOOL_NUMBER = [T|A||1.0]
-VAR TOOL_NAME = [TOOLNAME|A||1.0]
-VAR PREVIOUS_TOOL_NUMBER = [TP|A||1.0]
-VAR TOOLPATH_NAME = [TOOLPATH_NAME|A||1.0]
 
 begin HEADER
 "'[TP_FILENAME]"
@@ -111,6 +92,9 @@ begin INITIAL_RAPID_MOVE
 begin RAPID_MOVE
 "J3,[X],[Y],[Z]"
 
+begin FEED_RATE_CHANGE
+"MS,[F],[FP]"
+
 begin FEED_MOVE
 "M3,[X],[Y],[Z]"
 
@@ -120,9 +104,6 @@ begin CW_ARC_MOVE
 begin CCW_ARC_MOVE
 "CG,,[X],[Y],[I],[J],T,-1"
 
-begin FEED_RATE_CHANGE
-"MS,[F],[FP]"
-
 begin DWELL_MOVE
 "PAUSE [DWELL]"
 
@@ -131,4 +112,3 @@ begin FOOTER
 "JZ,[ZH]"
 "J2,[XH],[YH]"
 "END"
-

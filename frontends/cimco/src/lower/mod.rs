@@ -39,6 +39,7 @@ mod warn;
 
 use crate::host_names as names;
 use postc_ir::codes;
+use std::collections::HashMap;
 use std::path::Path;
 
 use postc_ir::{
@@ -409,6 +410,7 @@ fn keep_source(
     functions: &mut [Function],
 ) {
     let slice = |span: Span| text.get(span.start..span.end).unwrap_or_default().to_string();
+    let written = written_items(program, text);
     for (function, &id) in functions.iter_mut().zip(&model.scopes.top_fns) {
         let info = &model.scopes.funcs[id];
         let Some(func) = info.func else { continue };
@@ -434,7 +436,14 @@ fn keep_source(
             || layout.reshaped.contains(&id)
             || !made.is_empty()
         {
-            function.source = vec![SourceText { text: slice(func.span), declares: made }];
+            function.source = vec![SourceText { text: slice(func.span), declares: made, ..SourceText::default() }];
+        }
+        if let Some((at, w)) = written.get(&func.span.start) {
+            if function.source.is_empty() {
+                function.source = vec![SourceText::default()];
+            }
+            function.source[0].written = w.clone();
+            function.source[0].written_at = *at;
         }
     }
     let mut top = Vec::new();
@@ -471,11 +480,37 @@ fn keep_source(
                 }
             }
         }
-        top.push(SourceText { text: if held { String::new() } else { slice(s.span) }, declares });
+        let (written_at, written) = written.get(&s.span.start).cloned().unwrap_or_default();
+        top.push(SourceText { text: if held { String::new() } else { slice(s.span) }, declares, written, written_at });
     }
     if let Some(init) = functions.iter_mut().find(|f| f.name == layout::INIT) {
         init.source = top;
     }
+}
+
+/// Each top-level statement's text exactly as the file has it, by where
+/// the statement starts (a function declaration: where `function` starts),
+/// with what stands between it and the statement before (the file's head,
+/// comments, blank lines and their line endings), and where that text
+/// starts ([`postc_ir::SourceText::written`]).
+fn written_items(program: &Program, text: &str) -> HashMap<usize, (usize, String)> {
+    let mut out = HashMap::new();
+    let mut from = crate::docs::after_notes(text);
+    for s in &program.body {
+        if matches!(s.kind, StmtKind::Empty) {
+            continue;
+        }
+        let start = match &s.kind {
+            StmtKind::Function(f) => f.span.start,
+            _ => s.span.start,
+        };
+        let end = s.span.end.max(start);
+        if let Some(piece) = text.get(from.min(end)..end) {
+            out.insert(start, (from, piece.to_string()));
+        }
+        from = end;
+    }
+    out
 }
 
 /// postc's glue: the function name, the post's entry point it bridges to,

@@ -226,6 +226,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
         revision: String::new(),
         span: model.global(GlobalName::PostName).map(|g| g.span),
         host_file: None,
+        written: String::new(),
     }
 }
 

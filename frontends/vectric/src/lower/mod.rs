@@ -36,6 +36,11 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     if chain.iter().any(|l| l.encoding == crate::decode::Encoding::Windows1252) {
         post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
     }
+    // The file as written, for the Vectric backend: only a post that is
+    // one file (a `POST_BASE` post is printed whole, from the IR).
+    if let [_] = chain.as_slice() {
+        post.info.written = sources.text(main).unwrap_or_default().to_string();
+    }
     diags.sort_by_key(|d| d.primary_span().map_or((main.0, 0), |s| (s.file.0, s.start)));
     (post, diags)
 }
