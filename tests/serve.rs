@@ -164,7 +164,17 @@ fn posts_the_editor_text_with_trace_findings_and_backplot() {
     assert_eq!(out["verify"]["errors"], 0, "{}", out["verify"]);
     assert!(out["diagnostics"].as_array().unwrap().is_empty(), "{}", out["diagnostics"]);
 
-    // An error is reported with its code and place; nothing is posted.
+    // Hover: the language server's text for a label.
+    let at = text.find("[X]").unwrap() + 1;
+    let (_, hover) = server.api("hover", &json!({ "path": post, "text": text, "offset": at }));
+    assert!(hover["markdown"].as_str().unwrap().contains("X_POSITION"), "{hover}");
+    // Conversion, as `postc convert --to vcpost` writes it.
+    let (_, converted) = server.api("convert", &json!({ "path": post, "text": text, "to": "vcpost" }));
+    let cli =
+        Command::new(env!("CARGO_BIN_EXE_postc")).arg("convert").arg(&post).args(["--to", "vcpost"]).output().unwrap();
+    assert_eq!(converted["text"].as_str().unwrap(), String::from_utf8_lossy(&cli.stdout));
+
+    // A misspelt section is reported with its code and place.
     let broken = text.replacen("begin HEADER", "begin HEADR", 1);
     let (_, out) = server.api("post", &json!({ "path": post, "text": broken, "toolpath": request["toolpath"] }));
     let d = &out["diagnostics"][0];

@@ -276,7 +276,7 @@ fn post(state: &State, req: PostRequest) -> Result<Value, Reply> {
     let mut source = open(&mut sources)?;
     let traced: Rc<RefCell<Vec<Traced>>> = Rc::default();
     let sink = Rc::clone(&traced);
-    let mut options = postc_runtime::RunOptions {
+    let options = postc_runtime::RunOptions {
         script_host: postc_driver::script_host(&post),
         trace: Some(Box::new(move |t: &postc_runtime::trace::TraceLine<'_>| {
             let mut all = sink.borrow_mut();
@@ -292,7 +292,6 @@ fn post(state: &State, req: PostRequest) -> Result<Value, Reply> {
         })),
         ..super::super::clock::run_options()
     };
-    options.progress = None;
     let report = match postc_runtime::run(&post, &mut source, Output::memory(), options) {
         Ok(r) => r,
         Err(diagnostics) => {
