@@ -23,19 +23,21 @@ mkdirSync(shots, { recursive: true });
 const executablePath = process.env.CHROMIUM || "/usr/bin/chromium";
 const browser = await chromium.launch({ executablePath, headless: true, args: ["--no-sandbox"] });
 const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
+// A loaded CI machine: generous waits (each is a wait, not a timing).
+page.setDefaultTimeout(60000);
 page.on("pageerror", (e) => { console.error(`page error: ${e.message}`); process.exitCode = 1; });
 const step = async (name) => {
   await page.screenshot({ path: join(shots, `${name}.png`) });
   console.log(`ok ${name}`);
 };
 const updates = () => page.evaluate(() => window.workbench.updates);
-const nextUpdate = async (before) => page.waitForFunction((n) => window.workbench.updates > n, before, { timeout: 20000 });
+const nextUpdate = async (before) => page.waitForFunction((n) => window.workbench.updates > n, before);
 const check = (ok, what) => { if (!ok) throw new Error(what); };
 
 try {
   await page.goto(url);
   // 1. The page opens the given post and posts it over the given toolpath.
-  await page.waitForSelector("#program .row", { timeout: 20000 });
+  await page.waitForSelector("#program .row");
   await step("01-open");
 
   // 2. A corpus toolpath from the picker, then the given one back.
@@ -58,7 +60,8 @@ try {
   // 3. An error: a misspelt section name, underlined with its code.
   check(await page.evaluate(() => window.workbench.find("RAPID_MOVE")), "the post has RAPID_MOVE");
   before = await updates();
-  await page.keyboard.type("RAPID_MOVX");
+  // One input event, so the page posts the whole word at once.
+  await page.keyboard.insertText("RAPID_MOVX");
   await nextUpdate(before);
   await page.waitForSelector(".cm-lintRange-warning, .cm-lintRange-error");
   const range = page.locator(".cm-lintRange-warning, .cm-lintRange-error").first();
@@ -86,7 +89,9 @@ try {
   const trace = await page.locator("#trace").innerText();
   check(/post line \d+/.test(trace) && /toolpath event \d+/.test(trace), `the trace bar: ${trace}`);
   check(/FEED|\[F\]|G1|\[X\]/.test(traced), `the highlighted post line writes the move: ${traced}`);
-  console.log(`NC line ${ncLine} <- post line "${traced.trim()}" (${trace})`);
+  const tpShown = await page.locator("#trace-toolpath").innerText();
+  check(/^toolpath line \d+: \S/.test(tpShown), `the toolpath line is shown: ${tpShown}`);
+  console.log(`NC line ${ncLine} <- post line "${traced.trim()}" (${trace}) <- ${tpShown}`);
   await step("05-trace");
 
   // 6. Convert to another dialect, in the second pane.

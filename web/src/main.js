@@ -121,6 +121,21 @@ function toolpathChoice() {
   return null;
 }
 
+// The chosen toolpath file's lines, to show the one an NC line came from.
+const toolpathText = { path: null, lines: null };
+async function loadToolpathText() {
+  const choice = toolpathChoice();
+  const path = choice && choice.kind === "file" ? choice.path : null;
+  if (path === toolpathText.path) return;
+  toolpathText.path = path;
+  toolpathText.lines = null;
+  if (!path) return;
+  try {
+    const opened = await api("open", { path });
+    if (toolpathText.path === path) toolpathText.lines = opened.text.split("\n");
+  } catch { /* too large to show, or unreadable: the trace names the line only */ }
+}
+
 let generation = 0;
 async function update() {
   if (!doc.path) return;
@@ -128,6 +143,7 @@ async function update() {
   const started = editStarted ?? performance.now();
   editStarted = null;
   const text = view.state.doc.toString();
+  loadToolpathText();
   let out;
   try {
     out = await api("post", { path: doc.path, text, encoding: doc.encoding, toolpath: toolpathChoice() });
@@ -241,6 +257,8 @@ function selectLine(n, scroll) {
   } else {
     view.dispatch({ effects: setTraced.of(null) });
   }
+  const shown = tpLine > 0 && toolpathText.lines ? toolpathText.lines[tpLine - 1] : undefined;
+  $("trace-toolpath").textContent = shown === undefined ? "" : `toolpath line ${tpLine}: ${shown.slice(0, 200)}`;
   const parts = [`NC line ${n}`];
   parts.push(postLine > 0 ? `written by post line ${postLine}` : "no post line");
   if (event >= 0) parts.push(`for toolpath event ${event}${tpLine > 0 ? ` (toolpath line ${tpLine})` : ""}`);

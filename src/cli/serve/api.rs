@@ -25,6 +25,8 @@ use super::{Reply, State};
 pub const MAX_PATTERN_MOVES: u64 = 2_000_000;
 /// Most NC lines whose trace is sent with a program.
 pub const TRACE_LINES: usize = 1_000_000;
+/// The largest file `/api/open` sends (a post, or a toolpath to show its lines).
+const OPEN_LIMIT: u64 = 16 << 20;
 /// Most files each corpus picker lists.
 const MAX_LISTED: usize = 2000;
 
@@ -609,9 +611,14 @@ struct PathRequest {
     path: PathBuf,
 }
 
-/// `/api/open`: a post's text, its dialect and how it is stored.
+/// `/api/open`: a file's text (a post, or a toolpath the page shows the
+/// lines of), its dialect and how it is stored.
 fn open(state: &State, req: PathRequest) -> Result<Value, Reply> {
     let path = state.roots.confine(&req.path, Access::Read).map_err(forbidden)?;
+    if std::fs::metadata(&path).is_ok_and(|m| m.len() > OPEN_LIMIT) {
+        let why = format!("`{}` is over {} MiB: too large to show", req.path.display(), OPEN_LIMIT >> 20);
+        return Err(Reply::error(422, why));
+    }
     let bytes =
         std::fs::read(&path).map_err(|e| Reply::error(404, format!("cannot read `{}`: {e}", req.path.display())))?;
     let (text, how) = decode(&bytes);
