@@ -187,6 +187,26 @@ fn posts_the_editor_text_with_trace_findings_and_backplot() {
 }
 
 #[test]
+fn posts_a_dropped_toolpath() {
+    let (_dir, post) = workspace("vectric/gcode_mm.pp");
+    let server = Server::start(&[&post]);
+    let job = std::fs::read_to_string(seed_job()).unwrap();
+    // Only the name is kept, in the workbench's own folder.
+    let (status, kept) = server.api("drop", &json!({ "name": "../../elsewhere/dropped.ron", "text": job }));
+    assert_eq!(status, 200, "{kept}");
+    let path = kept["path"].as_str().unwrap();
+    assert!(path.ends_with("/dropped.ron") && !path.contains(".."), "{path}");
+    let text = std::fs::read_to_string(&post).unwrap();
+    let (status, out) =
+        server.api("post", &json!({ "path": post, "text": text, "toolpath": { "kind": "file", "path": path } }));
+    assert_eq!(status, 200, "{out}");
+    assert_eq!(out["verify"]["errors"], 0, "{out}");
+    assert!(out["program"].as_str().unwrap().contains("G2"), "{out}");
+    // What is not a toolpath is refused.
+    assert_eq!(server.api("drop", &json!({ "name": "notes.txt", "text": "hello" })).0, 422);
+}
+
+#[test]
 fn refuses_other_origins_and_hosts() {
     let server = Server::start(&[]);
     let (status, body) = server.api_with("toolpaths", &json!({}), "Origin: http://evil.example\r\n");

@@ -68,7 +68,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         {
             return Err(fail(
                 &mut sources,
-                Diagnostic::error(codes::IO001, format!("the {what} {}", super::missing(p).trim_start_matches('`'))),
+                Diagnostic::error(codes::IO001, format!("the {what}: {}", super::missing(p))),
             ));
         }
     }
@@ -86,7 +86,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     })?;
     let port = server.server_addr().to_ip().map_or(args.port, |a| a.port());
     let mut hosts = vec![format!("{}:{port}", host_name(args.bind))];
-    if args.bind.is_loopback() {
+    if args.bind.is_loopback() || args.bind.is_unspecified() {
         hosts.push(format!("localhost:{port}"));
     } else {
         eprintln!(
