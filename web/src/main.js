@@ -192,11 +192,11 @@ function showDiagnostics(list) {
   const diagnostics = list.map((d) => {
     const from = clamp(d.from);
     const to = Math.max(from, clamp(d.to));
-    const message = [`${d.code}: ${d.message}${d.label ? ` (${d.label})` : ""}`]
+    const message = [`${d.code ? `${d.code}: ` : ""}${d.message}${d.label ? ` (${d.label})` : ""}`]
       .concat(d.at ? [`in ${d.at}`] : [], d.help ? [`help: ${d.help}`] : [], (d.notes || []).map((n) => `note: ${n}`))
       .join("\n");
     return {
-      from, to, severity: d.severity === "note" ? "info" : d.severity, source: d.code, message,
+      from, to, severity: d.severity === "note" ? "info" : d.severity, source: d.code || "postc", message,
       actions: (d.fixes || []).map((f) => ({
         name: f.title,
         apply(v) { v.dispatch({ changes: { from: f.from, to: f.to, insert: f.insert } }); },

@@ -230,10 +230,11 @@ fn check(state: &State, req: PostText) -> Result<Value, Reply> {
     Ok(json!({ "diagnostics": diagnostics }))
 }
 
+/// What the page shows when postc panicked on the post: as the language
+/// server says it, without a code (it is no diagnostic of the post's).
 fn crashed() -> Value {
     json!({
         "severity": "error",
-        "code": "postc",
         "message": "postc failed while checking this post (a postc bug: please report it with the post)",
         "from": 0,
         "to": 0,
