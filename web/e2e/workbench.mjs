@@ -132,12 +132,14 @@ try {
   })}`);
 
   // 8. Save: an edit written back to the file.
+  before = await updates();
   await page.evaluate(() => {
     const v = window.workbench.view;
     v.dispatch({ changes: { from: 0, insert: "+ saved by the workbench test\n" } });
   });
+  await nextUpdate(before);
   await page.click("#save");
-  await page.waitForFunction(() => document.querySelector("#status").textContent.startsWith("saved"));
+  await page.waitForFunction(() => document.querySelector("#save-status").textContent.startsWith("saved"));
   await step("07-saved");
 } catch (e) {
   console.error(`failed: ${e.stack || e}`);

@@ -108,6 +108,7 @@ workbench.view = view;
 
 function edited() {
   if (editStarted === null) editStarted = performance.now();
+  $("save-status").textContent = "";
   clearTimeout(pending);
   pending = setTimeout(update, DEBOUNCE_MS);
   $("save").disabled = false;
@@ -143,10 +144,11 @@ async function update() {
   const started = editStarted ?? performance.now();
   editStarted = null;
   const text = view.state.doc.toString();
-  loadToolpathText();
+  const loading = loadToolpathText();
   let out;
   try {
     out = await api("post", { path: doc.path, text, encoding: doc.encoding, toolpath: toolpathChoice() });
+    await loading;
   } catch (e) {
     status(`error: ${e.message}`);
     return;
@@ -352,9 +354,9 @@ document.addEventListener("drop", async (e) => {
 $("save").addEventListener("click", async () => {
   try {
     const saved = await api("save", { path: doc.path, text: view.state.doc.toString() });
-    status(`saved ${saved.path} (${saved.bytes} bytes)`);
+    $("save-status").textContent = `saved ${saved.path} (${saved.bytes} bytes)`;
     $("save").disabled = true;
-  } catch (e) { status(`not saved: ${e.message}`); }
+  } catch (e) { $("save-status").textContent = `not saved: ${e.message}`; }
 });
 
 // Convert, in the second pane.
