@@ -48,6 +48,7 @@ mod robustness;
 mod rs274;
 mod safe_output;
 mod safe_programs;
+mod serve;
 mod toolpath_limits;
 mod trace;
 mod units;

@@ -288,26 +288,9 @@ pub fn path_of(uri: &str) -> PathBuf {
 fn diagnose(uri: &Uri, doc: &Document, loader: &Arc<dyn SourceLoader>) -> Vec<Diagnostic> {
     let path = path_of(uri.as_str());
     let mut sources = SourceMap::with_loader(Arc::clone(loader));
-    // A frontend bug must not take the editor's server down with it: the
-    // panic becomes one diagnostic at the top of the document.
-    let compiled = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        let mut compiled = postc_driver::compile_post_bytes(&path, doc.text.as_bytes(), doc.dialect, &mut sources);
-        // The lints, as `postc check` runs them, on a post that compiles.
-        if let Some(post) = &compiled.post
-            && !postc_ir::diagnostic::has_errors(&compiled.diagnostics)
-        {
-            compiled.diagnostics.extend(postc_lint::lint(post, &postc_lint::Options::default()));
-        }
-        // The severities the project's postc.toml chooses, as on the command line.
-        match postc_lint::config::rules_for(&**loader, &path) {
-            Ok(rules) => rules.apply(&mut compiled.diagnostics),
-            Err(d) => compiled.diagnostics.push(d),
-        }
-        compiled
-    }));
-    match compiled {
-        Ok(compiled) => convert(&path, &doc.text, &sources, &compiled.diagnostics),
-        Err(_) => vec![Diagnostic {
+    match compile_checked(&path, doc.text.as_bytes(), doc.dialect, &mut sources) {
+        Some(compiled) => convert(&path, &doc.text, &sources, &compiled.diagnostics),
+        None => vec![Diagnostic {
             range: Range::default(),
             severity: Some(DiagnosticSeverity::ERROR),
             source: Some("postc".into()),
@@ -315,6 +298,36 @@ fn diagnose(uri: &Uri, doc: &Document, loader: &Arc<dyn SourceLoader>) -> Vec<Di
             ..Diagnostic::default()
         }],
     }
+}
+
+/// A post's text compiled as its dialect, as an editor shows it: the
+/// frontend's diagnostics, the lints `postc check` runs on a post that
+/// compiles, and the severities of the project's postc.toml (read through
+/// the source map's loader). What the language server and the workbench
+/// (`postc serve`) both show. `None` when postc panicked on the text (a
+/// frontend bug must not take the editor's server down with it).
+pub fn compile_checked(
+    path: &Path,
+    bytes: &[u8],
+    dialect: Option<Dialect>,
+    sources: &mut SourceMap,
+) -> Option<postc_driver::Compiled> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let mut compiled = postc_driver::compile_post_bytes(path, bytes, dialect, sources);
+        // The lints, as `postc check` runs them, on a post that compiles.
+        if let Some(post) = &compiled.post
+            && !postc_ir::diagnostic::has_errors(&compiled.diagnostics)
+        {
+            compiled.diagnostics.extend(postc_lint::lint(post, &postc_lint::Options::default()));
+        }
+        // The severities the project's postc.toml chooses, as on the command line.
+        match postc_lint::config::rules_for(sources.loader(), path) {
+            Ok(rules) => rules.apply(&mut compiled.diagnostics),
+            Err(d) => compiled.diagnostics.push(d),
+        }
+        compiled
+    }))
+    .ok()
 }
 
 /// Converts postc diagnostics into LSP ones for the document at `path`.

@@ -50,7 +50,7 @@ pub struct Args {
 /// Warnings that mean the source was not read whole: `convert` stops on
 /// them, as errors, and writes nothing (a converted post would silently
 /// lack what was not read).
-const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
+pub(super) const NOT_READ_WHOLE: &[&str] = &["PP019", "PP030"];
 
 pub fn run(args: Args) -> Result<(), Failed> {
     let mut sources = postc_report::source_map();

@@ -15,6 +15,7 @@
 //! postc probe-table POST                                      # empty probe-cycle table of a VcPost post
 //! postc postp   DIR [--options FILE]                          # APT compatibility: DIR/cl.tap, MACHIN picks the controller
 //! postc lsp                                                   # language server on stdio (docs/editors.md)
+//! postc serve   [POST] [TOOLPATH] [--port N] [--bind ADDR]      # the post workbench in a browser (docs/workbench.md)
 //! postc verify  PROGRAM --toolpath TOOLPATH [--post POST] [--controller C] [--tolerance MM] [--format human|json]
 //! postc plot    PROGRAM --toolpath TOOLPATH -o plot.svg|plot.png [--post POST] [--controller C] [--tolerance MM]
 //! postc explain TRACE.jsonl LINE [--output NC]                # why an NC line exists (`post --trace`)
@@ -42,6 +43,7 @@ pub mod posts;
 mod probe;
 mod profile;
 pub mod report;
+mod serve;
 pub mod sink;
 mod toolpath;
 mod trace;
@@ -102,6 +104,10 @@ enum Command {
     Verify(verify::Args),
     /// Run the language server (LSP on stdio) for editors: diagnostics, hover, definition, completion, quick fixes.
     Lsp(lsp::Args),
+    /// Start the post workbench, a web page served on 127.0.0.1 (docs/workbench.md): edit a post with its diagnostics, see the program it writes over a toolpath, the trace of each NC line, verify's findings and the backplot; convert and save.
+    ///
+    /// Prints the URL to open on standard output and serves until interrupted. It reads only files in the folders of POST and TOOLPATH and in the corpus folder, and saves only in the folders of POST and TOOLPATH; requests from other origins are refused.
+    Serve(serve::Args),
     /// Draw a program over its toolpath, top (XY) and front (XZ), with verify's findings marked: SVG, or PNG.
     Plot(plot::Args),
     /// Toolpath utilities.
@@ -167,6 +173,7 @@ pub fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args),
         Command::Lsp(args) => lsp::run(args),
         Command::Plot(args) => plot::run(args),
+        Command::Serve(args) => serve::run(args),
         Command::Toolpath { command } => toolpath::run(command),
         Command::Completions(args) => manual::completions(args),
         Command::Man(args) => manual::man(args),
