@@ -436,10 +436,17 @@ impl Engine<'_> {
     }
 
     /// The values of a list of expressions, in order.
+    /// The list is spare storage ([`Self::spare`]): a call gives it back.
     fn eval_list(&mut self, list: &[Expr], frame: &mut Vec<Value>) -> Result<Vec<Value>> {
-        let mut values = Vec::with_capacity(list.len());
+        let mut values = self.spare();
         for e in list {
-            values.push(self.eval(e, frame)?);
+            match self.eval(e, frame) {
+                Ok(v) => values.push(v),
+                Err(err) => {
+                    self.give_back(values);
+                    return Err(err);
+                }
+            }
         }
         Ok(values)
     }
@@ -841,7 +848,7 @@ impl Engine<'_> {
                 pick => self.eval(pick, frame)?,
             },
             Expr::Call(f, args) => {
-                let mut values = self.spare_frames.pop().unwrap_or_default();
+                let mut values = self.spare();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
@@ -859,7 +866,7 @@ impl Engine<'_> {
                 result?
             }
             Expr::Builtin(b, args) => {
-                let mut values = self.spare_frames.pop().unwrap_or_default();
+                let mut values = self.spare();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
@@ -936,9 +943,17 @@ impl Engine<'_> {
         })
     }
 
+    /// An empty list for arguments or a frame, from the spares: a call's
+    /// argument list, frame and a method's snapshot reuse storage instead
+    /// of allocating ([`Self::give_back`] returns it).
+    #[inline]
+    pub(crate) fn spare(&mut self) -> Vec<Value> {
+        self.spare_frames.pop().unwrap_or_default()
+    }
+
     /// Returns an argument list or frame to the spares, emptied.
     #[inline]
-    fn give_back(&mut self, mut frame: Vec<Value>) {
+    pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
         frame.clear();
         // Bounded by the deepest nesting of calls; more is never needed.
         if self.spare_frames.len() < 64 {
