@@ -598,7 +598,7 @@ impl Engine<'_> {
                 let list = if texts.is_empty() { &list[..] } else { &texts[..] };
                 for (i, item) in list.iter().enumerate() {
                     if i > 0 {
-                        s.push_str(sep.as_str());
+                        sep.push_to(&mut s);
                     }
                     if !matches!(item, Value::Null | Value::Undefined) {
                         item.append_to(&mut s);
@@ -734,8 +734,11 @@ impl Engine<'_> {
 /// The built-in methods of a text.
 fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
     let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
-    let chars: Vec<char> = t.chars().collect();
-    let len = chars.len();
+    // ASCII text is indexed by its bytes, one character each, with no
+    // list of characters made (`f.substring(1)` of a feed word).
+    let bytes = t.ascii_bytes().filter(|_| matches!(name, "substring" | "substr" | "slice" | "charAt" | "charCodeAt"));
+    let chars: Vec<char> = if bytes.is_some() { Vec::new() } else { t.chars().collect() };
+    let len = bytes.map_or(chars.len(), <[u8]>::len);
     let int = |v: Value, default: f64| match v {
         Value::Undefined => default,
         v => {
@@ -743,8 +746,13 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
             if x.is_nan() { 0.0 } else { x.trunc() }
         }
     };
-    let slice =
-        |a: usize, b: usize| Value::text(&chars[a.min(len)..b.min(len).max(a.min(len))].iter().collect::<String>());
+    let slice = |a: usize, b: usize| {
+        let (a, b) = (a.min(len), b.min(len).max(a.min(len)));
+        match bytes {
+            Some(bytes) => Value::Text(Text::from_bytes(&bytes[a..b])),
+            None => Value::text(&chars[a..b].iter().collect::<String>()),
+        }
+    };
     let rel = |x: f64| if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) };
     Ok(match name {
         "substring" => {
@@ -768,7 +776,10 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
         "charCodeAt" => {
             let i = int(arg(0), 0.0);
             if i >= 0.0 && (i as usize) < len {
-                Value::Num(f64::from(chars[i as usize] as u32))
+                Value::Num(match bytes {
+                    Some(bytes) => f64::from(bytes[i as usize]),
+                    None => f64::from(chars[i as usize] as u32),
+                })
             } else {
                 Value::Num(f64::NAN)
             }
