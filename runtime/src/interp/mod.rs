@@ -1360,7 +1360,13 @@ impl Engine<'_> {
     /// its prototypes'), when it gives a value that is not an object, else
     /// its `toString`'s; other values (and objects without them) are
     /// themselves.
+    #[inline]
     fn primitive(&mut self, v: Value) -> Result<Value> {
+        // Only an object asks its methods: any other value is itself,
+        // decided where the operator is.
+        if !matches!(v, Value::Object(_)) {
+            return Ok(v);
+        }
         self.primitive_by(v, [&b"valueOf"[..], &b"toString"[..]])
     }
 
