@@ -772,10 +772,13 @@ impl Engine<'_> {
             Expr::FormatVar { var, value, span } => self.format_var(*var, value, *span, frame)?,
             Expr::Format { format, value, span } => {
                 let n = self.eval(value, frame)?.num();
-                let mut buf = Vec::new();
+                // The engine's reused buffer, as a variable's word is made.
+                let mut buf = std::mem::take(&mut self.scratch);
+                buf.clear();
                 self.writers[format.index()].write(n, &mut buf);
+                let word = self.scratch_text(buf);
                 self.finite(*span)?;
-                Value::Text(Text::from_bytes(&buf))
+                word
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
