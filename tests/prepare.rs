@@ -157,3 +157,35 @@ fn a_run_of_words_is_one_statement_and_a_word_not_text_runs_as_written() {
     );
     assert_eq!(program, "N10 X1 Y0\nN20 X2 Y3\nN30 7 U\n");
 }
+
+/// An object literal a global holds for the whole run, read only as
+/// `g.k`, written as `g.k = v` (`+=` included) and called as `g.m()`,
+/// keeps its properties in globals and its methods become functions
+/// (`prepare/fields.rs`); an object that is passed as a value keeps its
+/// properties.
+#[test]
+fn an_object_a_global_holds_becomes_globals_unless_it_is_seen_whole() {
+    let js = |extra: &str| {
+        format!(
+            r#"
+            var state = {{seq: 10, last: null, block: function (t) {{ this.seq += 10; return "N" + this.seq + " " + t + "\n"; }}}};
+            function word(t) {{ if (t == state.last) {{ return ""; }} state.last = t; return t; }}
+            function seq(o) {{ return o.seq; }}
+            function onLinear(x, y, z, m) {{ {extra} return state.block(word("X" + x)); }}
+            "#
+        )
+    };
+    let post = support::compile_text("t.js", &js(""));
+    let code = postc_runtime::prepare::prepare(&post);
+    let onlinear = function(&post, "onLinear").index();
+    let native = |code: &postc_runtime::exec::Code, i: usize| match &code.functions[i].body {
+        postc_runtime::exec::Body::Native(b) => b.clone(),
+        postc_runtime::exec::Body::Script(_) => panic!("native"),
+    };
+    let member = |e: &XExpr| matches!(e, XExpr::Member(..) | XExpr::Invoke { .. });
+    assert!(!any_expr(&native(&code, onlinear), &member), "the object's uses are globals and calls");
+    assert!(!any_expr(&native(&code, function(&post, "word").index()), &member), "state.last is a global");
+    let post = support::compile_text("t.js", &js("var s = seq(state);"));
+    let code = postc_runtime::prepare::prepare(&post);
+    assert!(any_expr(&native(&code, onlinear), &member), "an object passed as a value stays one");
+}

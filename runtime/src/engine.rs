@@ -566,9 +566,12 @@ impl<'p> Engine<'p> {
         match v {
             Value::Text(s) => s.append_to_bytes(&mut self.out.buf),
             other => {
-                let mut s = String::new();
+                // A number's text, made in the engine's reused buffer.
+                let mut s = std::mem::take(&mut self.chain_text);
+                s.clear();
                 other.append_to(&mut s);
                 self.out.buf.extend_from_slice(s.as_bytes());
+                self.chain_text = s;
             }
         }
     }

@@ -638,7 +638,7 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
         E::Member(o, k) => Expr::Member(boxed(o), boxed(k)),
         E::Invoke { object, method, args, span } => Expr::Invoke {
             object: boxed(object),
-            method: Text::new(crate::value::Text::new(method)),
+            method: Text::new(crate::value::Text::shared(method)),
             args: list(args),
             span: *span,
         },

@@ -210,6 +210,13 @@ impl Text {
         &self.0
     }
 
+    /// The text of `s`, always shared: a name read as `str` at every use
+    /// (a method's), which text kept in place would check is UTF-8 each
+    /// time.
+    pub fn shared(s: &str) -> Text {
+        Text(Repr::Shared(Rc::from(s)))
+    }
+
     /// The text of `s`.
     pub fn new(s: &str) -> Text {
         match Text::inline(s.as_bytes()) {
@@ -265,6 +272,17 @@ impl Text {
         match &self.0 {
             Repr::Inline(len, bytes) => Some(&bytes[..*len as usize]),
             Repr::Shared(s) => s.is_ascii().then_some(s.as_bytes()),
+        }
+    }
+
+    /// Appends the text to `out`. Text kept in place is ASCII, pushed
+    /// byte by byte as characters rather than viewed as `str` (a view
+    /// checks it is UTF-8 each time).
+    #[inline]
+    pub fn push_to(&self, out: &mut String) {
+        match &self.0 {
+            Repr::Inline(len, bytes) => out.extend(bytes[..*len as usize].iter().map(|&b| char::from(b))),
+            Repr::Shared(s) => out.push_str(s),
         }
     }
 
@@ -422,7 +440,7 @@ impl Value {
             // As JavaScript writes it: `Infinity`, `1e+21`, `1e-7`.
             Value::Num(n) => crate::js::push_number(out, *n),
             Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
-            Value::Text(s) => out.push_str(s.as_str()),
+            Value::Text(s) => s.push_to(out),
             Value::Null => {}
             Value::Undefined => out.push_str("undefined"),
             Value::Array(_) if depth > MAX_NESTED_TEXT => {}

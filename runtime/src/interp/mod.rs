@@ -436,10 +436,17 @@ impl Engine<'_> {
     }
 
     /// The values of a list of expressions, in order.
+    /// The list is spare storage ([`Self::spare`]): a call gives it back.
     fn eval_list(&mut self, list: &[Expr], frame: &mut Vec<Value>) -> Result<Vec<Value>> {
-        let mut values = Vec::with_capacity(list.len());
+        let mut values = self.spare();
         for e in list {
-            values.push(self.eval(e, frame)?);
+            match self.eval(e, frame) {
+                Ok(v) => values.push(v),
+                Err(err) => {
+                    self.give_back(values);
+                    return Err(err);
+                }
+            }
         }
         Ok(values)
     }
@@ -765,10 +772,13 @@ impl Engine<'_> {
             Expr::FormatVar { var, value, span } => self.format_var(*var, value, *span, frame)?,
             Expr::Format { format, value, span } => {
                 let n = self.eval(value, frame)?.num();
-                let mut buf = Vec::new();
+                // The engine's reused buffer, as a variable's word is made.
+                let mut buf = std::mem::take(&mut self.scratch);
+                buf.clear();
                 self.writers[format.index()].write(n, &mut buf);
+                let word = self.scratch_text(buf);
                 self.finite(*span)?;
-                Value::Text(Text::from_bytes(&buf))
+                word
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -841,7 +851,7 @@ impl Engine<'_> {
                 pick => self.eval(pick, frame)?,
             },
             Expr::Call(f, args) => {
-                let mut values = self.spare_frames.pop().unwrap_or_default();
+                let mut values = self.spare();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
@@ -859,7 +869,7 @@ impl Engine<'_> {
                 result?
             }
             Expr::Builtin(b, args) => {
-                let mut values = self.spare_frames.pop().unwrap_or_default();
+                let mut values = self.spare();
                 for a in args {
                     values.push(self.eval(a, frame)?);
                 }
@@ -936,9 +946,17 @@ impl Engine<'_> {
         })
     }
 
+    /// An empty list for arguments or a frame, from the spares: a call's
+    /// argument list, frame and a method's snapshot reuse storage instead
+    /// of allocating ([`Self::give_back`] returns it).
+    #[inline]
+    pub(crate) fn spare(&mut self) -> Vec<Value> {
+        self.spare_frames.pop().unwrap_or_default()
+    }
+
     /// Returns an argument list or frame to the spares, emptied.
     #[inline]
-    fn give_back(&mut self, mut frame: Vec<Value>) {
+    pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
         frame.clear();
         // Bounded by the deepest nesting of calls; more is never needed.
         if self.spare_frames.len() < 64 {
@@ -1345,7 +1363,13 @@ impl Engine<'_> {
     /// its prototypes'), when it gives a value that is not an object, else
     /// its `toString`'s; other values (and objects without them) are
     /// themselves.
+    #[inline]
     fn primitive(&mut self, v: Value) -> Result<Value> {
+        // Only an object asks its methods: any other value is itself,
+        // decided where the operator is.
+        if !matches!(v, Value::Object(_)) {
+            return Ok(v);
+        }
         self.primitive_by(v, [&b"valueOf"[..], &b"toString"[..]])
     }
 

@@ -330,9 +330,11 @@ impl Engine<'_> {
             Callee::Method(kind, name) => return self.run_method(*kind, name, this, args),
         };
         if !closure.captures.is_empty() {
-            let mut all = closure.captures.clone();
+            // The captures, then the arguments, in spare storage.
+            let mut all = self.spare();
+            all.extend(closure.captures.iter().cloned());
             all.append(&mut args);
-            args = all;
+            self.give_back(std::mem::replace(&mut args, all));
         }
         self.this_stack.push(this);
         let result = self.call(function, args);
@@ -458,7 +460,14 @@ impl Engine<'_> {
     /// method called on a value, or held as a value and called with
     /// `call` or `apply`). A TypeError when `this` is not of that kind
     /// (texts take any value but null and undefined, as their text).
-    fn run_method(&mut self, kind: ProtoKind, name: &str, this: Value, args: Vec<Value>) -> Result<Value> {
+    fn run_method(&mut self, kind: ProtoKind, name: &str, this: Value, mut args: Vec<Value>) -> Result<Value> {
+        let result = self.run_method_with(kind, name, this, &mut args);
+        self.give_back(args);
+        result
+    }
+
+    /// [`Self::run_method`] with its arguments, which it may take.
+    fn run_method_with(&mut self, kind: ProtoKind, name: &str, this: Value, args: &mut Vec<Value>) -> Result<Value> {
         let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
         let wrong =
             |this: &Value| type_error(format!("{}.prototype.{name} called on {}", kind.constructor(), describe(this)));
@@ -466,8 +475,8 @@ impl Engine<'_> {
             (ProtoKind::Object, _) => self.object_method(name, this, args),
             (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
-            (ProtoKind::String, Value::Text(t)) => text_method(t, name, &args),
-            (ProtoKind::String, other) => text_method(&other.to_text(), name, &args),
+            (ProtoKind::String, Value::Text(t)) => text_method(t, name, args),
+            (ProtoKind::String, other) => text_method(&other.to_text(), name, args),
             (ProtoKind::Number, Value::Num(n)) => match name {
                 "toFixed" => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
                 "toString" => match arg(0) {
@@ -482,7 +491,12 @@ impl Engine<'_> {
                 _ => Ok(this.clone()),
             },
             (ProtoKind::Function, Value::Func(_)) => match name {
-                "call" => self.call_value(&this, arg(0), args.into_iter().skip(1).collect()),
+                "call" => {
+                    let this_arg = arg(0);
+                    let mut rest = self.spare();
+                    rest.extend(args.drain(..).skip(1));
+                    self.call_value(&this, this_arg, rest)
+                }
                 "apply" => {
                     let list = match arg(1) {
                         Value::Array(items) => items.borrow().clone(),
@@ -504,8 +518,8 @@ impl Engine<'_> {
     }
 
     /// The built-in methods of `Object.prototype`, on any `this`.
-    fn object_method(&mut self, name: &str, this: Value, args: Vec<Value>) -> Result<Value> {
-        let arg = args.into_iter().next().unwrap_or(Value::Undefined);
+    fn object_method(&mut self, name: &str, this: Value, args: &mut [Value]) -> Result<Value> {
+        let arg = args.first_mut().map(std::mem::take).unwrap_or(Value::Undefined);
         Ok(match name {
             "hasOwnProperty" => match &this {
                 Value::Null | Value::Undefined => {
@@ -527,7 +541,7 @@ impl Engine<'_> {
         &mut self,
         items: &std::rc::Rc<std::cell::RefCell<Vec<Value>>>,
         name: &str,
-        args: Vec<Value>,
+        args: &mut Vec<Value>,
     ) -> Result<Value> {
         let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
         let len = items.borrow().len();
@@ -546,7 +560,7 @@ impl Engine<'_> {
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
                 }
-                items.extend(args);
+                items.extend(args.drain(..));
                 Value::Num(items.len() as f64)
             }
             "pop" => items.borrow_mut().pop().unwrap_or(Value::Undefined),
@@ -559,7 +573,7 @@ impl Engine<'_> {
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
                 }
-                items.splice(0..0, args);
+                items.splice(0..0, args.drain(..));
                 Value::Num(items.len() as f64)
             }
             "join" => {
@@ -567,7 +581,10 @@ impl Engine<'_> {
                     Value::Undefined => Text::new(","),
                     v => key_text(&v),
                 };
-                let mut s = String::new();
+                // Built in the engine's reused buffer: only the result is
+                // allocated, and a short one not at all.
+                let mut s = std::mem::take(&mut self.chain_text);
+                s.clear();
                 // An object's text is its `toString`'s (post code, which
                 // may change the array: the items are read first).
                 let mut texts = Vec::new();
@@ -581,7 +598,7 @@ impl Engine<'_> {
                 let list = if texts.is_empty() { &list[..] } else { &texts[..] };
                 for (i, item) in list.iter().enumerate() {
                     if i > 0 {
-                        s.push_str(sep.as_str());
+                        sep.push_to(&mut s);
                     }
                     if !matches!(item, Value::Null | Value::Undefined) {
                         item.append_to(&mut s);
@@ -590,7 +607,9 @@ impl Engine<'_> {
                         return Err(Box::new(crate::interp::text_budget_error(s.len())));
                     }
                 }
-                Value::Text(Text::from(s))
+                let joined = Value::Text(Text::new(&s));
+                self.chain_text = s;
+                joined
             }
             "indexOf" => {
                 let target = arg(0);
@@ -604,7 +623,7 @@ impl Engine<'_> {
             }
             "concat" => {
                 let mut all = items.borrow().clone();
-                for a in args {
+                for a in args.drain(..) {
                     match a {
                         Value::Array(more) => all.extend(more.borrow().iter().cloned()),
                         other => all.push(other),
@@ -631,21 +650,40 @@ impl Engine<'_> {
             }
             "forEach" | "map" | "filter" | "some" | "every" => {
                 let f = arg(0);
-                let snapshot = items.borrow().clone();
-                let mut out = Vec::new();
-                for (i, item) in snapshot.into_iter().enumerate() {
-                    let r = self.call_value(
-                        &f,
-                        Value::Undefined,
-                        vec![item.clone(), Value::Num(i as f64), Value::Array(items.clone())],
-                    )?;
+                // The items as they were when the method was called, and
+                // each call's arguments, in spare storage.
+                let mut snapshot = self.spare();
+                snapshot.extend(items.borrow().iter().cloned());
+                let mut out = if matches!(name, "map" | "filter") { Vec::with_capacity(len) } else { Vec::new() };
+                let mut decided = None;
+                for (i, item) in snapshot.drain(..).enumerate() {
+                    let mut call_args = self.spare();
+                    call_args.extend([item.clone(), Value::Num(i as f64), Value::Array(items.clone())]);
+                    let r = match self.call_value(&f, Value::Undefined, call_args) {
+                        Ok(r) => r,
+                        Err(e) => {
+                            decided = Some(Err(e));
+                            break;
+                        }
+                    };
                     match name {
                         "map" => out.push(r),
                         "filter" if r.truthy() => out.push(item),
-                        "some" if r.truthy() => return Ok(Value::Bool(true)),
-                        "every" if !r.truthy() => return Ok(Value::Bool(false)),
+                        "some" if r.truthy() => {
+                            decided = Some(Ok(Value::Bool(true)));
+                            break;
+                        }
+                        "every" if !r.truthy() => {
+                            decided = Some(Ok(Value::Bool(false)));
+                            break;
+                        }
                         _ => {}
                     }
+                }
+                snapshot.clear();
+                self.give_back(snapshot);
+                if let Some(decided) = decided {
+                    return decided;
                 }
                 match name {
                     "map" | "filter" => Value::array(out),
@@ -696,8 +734,11 @@ impl Engine<'_> {
 /// The built-in methods of a text.
 fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
     let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
-    let chars: Vec<char> = t.chars().collect();
-    let len = chars.len();
+    // ASCII text is indexed by its bytes, one character each, with no
+    // list of characters made (`f.substring(1)` of a feed word).
+    let bytes = t.ascii_bytes().filter(|_| matches!(name, "substring" | "substr" | "slice" | "charAt" | "charCodeAt"));
+    let chars: Vec<char> = if bytes.is_some() { Vec::new() } else { t.chars().collect() };
+    let len = bytes.map_or(chars.len(), <[u8]>::len);
     let int = |v: Value, default: f64| match v {
         Value::Undefined => default,
         v => {
@@ -705,8 +746,13 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
             if x.is_nan() { 0.0 } else { x.trunc() }
         }
     };
-    let slice =
-        |a: usize, b: usize| Value::text(&chars[a.min(len)..b.min(len).max(a.min(len))].iter().collect::<String>());
+    let slice = |a: usize, b: usize| {
+        let (a, b) = (a.min(len), b.min(len).max(a.min(len)));
+        match bytes {
+            Some(bytes) => Value::Text(Text::from_bytes(&bytes[a..b])),
+            None => Value::text(&chars[a..b].iter().collect::<String>()),
+        }
+    };
     let rel = |x: f64| if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) };
     Ok(match name {
         "substring" => {
@@ -730,7 +776,10 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
         "charCodeAt" => {
             let i = int(arg(0), 0.0);
             if i >= 0.0 && (i as usize) < len {
-                Value::Num(f64::from(chars[i as usize] as u32))
+                Value::Num(match bytes {
+                    Some(bytes) => f64::from(bytes[i as usize]),
+                    None => f64::from(chars[i as usize] as u32),
+                })
             } else {
                 Value::Num(f64::NAN)
             }

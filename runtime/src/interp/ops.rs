@@ -184,10 +184,33 @@ pub(super) fn js_number(v: &Value) -> f64 {
 }
 
 fn concat(a: &Value, b: &Value) -> Value {
-    let mut s = String::new();
-    a.append_to(&mut s);
-    b.append_to(&mut s);
-    Value::Text(Text::from(s))
+    // Two texts whose sum is short: joined in place, no allocation.
+    if let (Value::Text(x), Value::Text(y)) = (a, b) {
+        let (x, y) = (x.as_bytes(), y.as_bytes());
+        let n = x.len() + y.len();
+        if n <= crate::value::INLINE_TEXT {
+            let mut buf = [0u8; crate::value::INLINE_TEXT];
+            buf[..x.len()].copy_from_slice(x);
+            buf[x.len()..n].copy_from_slice(y);
+            return Value::Text(Text::from_bytes(&buf[..n]));
+        }
+    }
+    // Longer text is built in a buffer this thread reuses, so only the
+    // result is allocated.
+    thread_local! {
+        static JOINED: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+    }
+    JOINED.with_borrow_mut(|s| {
+        s.clear();
+        a.append_to(s);
+        b.append_to(s);
+        let joined = Value::Text(Text::new(s));
+        if s.capacity() > 1 << 16 {
+            // A rare long text: its buffer is not kept.
+            *s = String::new();
+        }
+        joined
+    })
 }
 
 /// Rounds half away from zero to `decimals` places.

@@ -4,8 +4,10 @@
 //! functions that return text). Here the runtime chooses how to run it
 //! fast, for any dialect, without changing a byte of what it writes:
 //!
-//! 1. every function and handler in the runtime's form ([`crate::exec`]),
-//!    constants folded ([`fold`]);
+//! 1. every function and handler in the runtime's form ([`crate::exec`]);
+//!    an object a global holds for the whole run, never seen as a whole,
+//!    becomes globals of its own and its methods plain functions
+//!    ([`fields`]); constants folded ([`fold`]);
 //! 2. the fast path ([`emit`]): a handler that writes what a native
 //!    function returns builds that text straight in the output instead;
 //!    marks are tidied;
@@ -31,6 +33,7 @@
 //! is: the engine runs its lines on a faster path still.
 
 pub(crate) mod emit;
+mod fields;
 mod fold;
 pub(crate) mod fresh;
 pub(crate) mod fuse;
@@ -46,14 +49,18 @@ use crate::exec::{self, Code, Expr, Stmt};
 /// Prepares a post's code to run.
 pub fn prepare(post: &Post) -> Code {
     let mut functions: Vec<exec::Function> = post.functions.iter().map(exec::function).collect();
+    let mut handlers: Vec<Vec<Stmt>> = post.handlers.iter().map(|h| exec::stmts(&h.body)).collect();
+    let mut init = exec::stmts(&post.init);
+    let mut globals: Vec<Expr> = post.globals.iter().map(|g| exec::expr(&g.initial)).collect();
+    let names: Vec<&str> = post.globals.iter().map(|g| g.name.as_str()).collect();
+    fields::replace(&names, &mut functions, &mut handlers, &mut init, &mut globals);
     for f in &mut functions {
         if let exec::Body::Native(body) = &mut f.body {
             *body = fold::stmts(std::mem::take(body));
         }
     }
     let objects = object_functions(&mut functions);
-    let handlers: Vec<Vec<Stmt>> =
-        post.handlers.iter().map(|h| handler(&functions, &objects, exec::stmts(&h.body))).collect();
+    let handlers: Vec<Vec<Stmt>> = handlers.into_iter().map(|h| handler(&functions, &objects, h)).collect();
     let handler_slots = handlers.iter().filter_map(|b| emit::max_slot(b)).map(|k| k.index() + 1).max().unwrap_or(0);
     for (f, objects) in functions.iter_mut().zip(&objects) {
         if let exec::Body::Native(body) = &mut f.body
@@ -63,13 +70,7 @@ pub fn prepare(post: &Post) -> Code {
             fuse::expressions(body);
         }
     }
-    Code {
-        handlers,
-        handler_slots,
-        init: exec::stmts(&post.init),
-        globals: post.globals.iter().map(|g| exec::expr(&g.initial)).collect(),
-        functions,
-    }
+    Code { handlers, handler_slots, init, globals, functions }
 }
 
 /// Which functions use JavaScript's objects ([`exec::uses_objects`]), or

@@ -11,10 +11,18 @@ use crate::engine::Engine;
 impl SectionDispatch {
     /// Ends the current tape-split part with the footer when a split is
     /// due; the next part starts (with the header) at its first block.
+    #[inline]
     pub(super) fn split_if_pending(&mut self, eng: &mut Engine) -> Result<()> {
         if !self.split_pending {
             return Ok(());
         }
+        self.split_now(eng)
+    }
+
+    /// [`Self::split_if_pending`] when a split is due (rare: kept out of
+    /// the per-move path).
+    #[cold]
+    fn split_now(&mut self, eng: &mut Engine) -> Result<()> {
         self.split_pending = false;
         eng.run_section(Section::Footer)?;
         eng.out.new_part();
