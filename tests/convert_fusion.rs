@@ -19,6 +19,9 @@ use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath};
 use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
 use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
+use postc_ir::event::Event;
+use postc_ir::{EventSource, Post};
+use postc_runtime::{Finished, Output, RunOptions};
 
 /// A post that prints what Fusion hands at each section: the tool, its
 /// name and diameter, the spindle speed (and its SPINDLE_SPEED_RANGE
@@ -85,7 +88,7 @@ begin FOOTER
 
 /// Real Vectric posts that convert to `.cps` posts whose every program
 /// Node.js prints as postc posts the source (docs/convert.md).
-const REAL_FUSION_AT_LEAST: usize = 4;
+const REAL_FUSION_AT_LEAST: usize = 45;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
 /// `Tool` to the next `Tool` or `End`), or `None` when it has none.
@@ -183,15 +186,57 @@ fn toolpaths(all: &[(PathBuf, String)]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Node.js running a `.cps` post over a JSON Lines toolpath.
-fn run_fusion_node(post: &Path, jsonl: &Path) -> Result<Vec<u8>, String> {
+/// Node.js running a `.cps` post over a JSON Lines toolpath, with post
+/// properties set.
+fn run_fusion_node(post: &Path, jsonl: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
-    let out =
-        Command::new("node").arg(script).arg(post).arg(jsonl).output().map_err(|e| format!("cannot run node: {e}"))?;
+    let mut command = Command::new("node");
+    command.arg(script).arg(post).arg(jsonl);
+    for (name, value) in properties {
+        command.arg("--property").arg(format!("{name}={value}"));
+    }
+    let out = command.output().map_err(|e| format!("cannot run node: {e}"))?;
     if !out.status.success() {
         return Err(format!("node failed:\n{}", String::from_utf8_lossy(&out.stderr)));
     }
     Ok(out.stdout)
+}
+
+/// The post properties a user sets for a converted post that reads the
+/// job's home position from them (docs/convert.md, "Fusion posts"): the
+/// toolpath's home, in the source's units (the program's), for each home
+/// property the converted post declares.
+fn home_properties(source: &Post, converted: &str, toolpath: &Path) -> Vec<(String, String)> {
+    let mut sources = postc_report::source_map();
+    let Ok(mut events) = postc_driver::open_toolpath(toolpath, &mut sources) else { return Vec::new() };
+    let mut diags = Vec::new();
+    let Some((Event::Job(job), _)) = events.next_event(&mut diags) else { return Vec::new() };
+    let Some(home) = job.home else { return Vec::new() };
+    let factor = source.output_units().map_or(1.0, |u| job.units.factor_to(u));
+    [("homePositionX", home.x), ("homePositionY", home.y), ("homePositionZ", home.z)]
+        .into_iter()
+        .filter(|(name, _)| converted.contains(&format!("  {name}: {{")))
+        .map(|(name, v)| (name.to_string(), format!("{}", v * factor)))
+        .collect()
+}
+
+/// postc posting a post over a toolpath with post properties set (`--set
+/// property.NAME=VALUE`).
+fn post_with_properties(post: &Post, toolpath: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
+    let mut sources = postc_report::source_map();
+    let mut source = postc_driver::open_toolpath(toolpath, &mut sources)
+        .map_err(|d| format!("cannot open {}: {} {}", toolpath.display(), d.code, d.message))?;
+    let options = RunOptions { properties: properties.to_vec(), ..postc_driver::run_options(post) };
+    match postc_runtime::run(post, &mut source, Output::memory(), options) {
+        Ok(report) => match report.output {
+            Finished::Memory(parts) => Ok(parts.concat()),
+            _ => Err("a memory run did not finish in memory".into()),
+        },
+        Err(diagnostics) => {
+            let list: Vec<String> = diagnostics.iter().map(|d| format!("  {} {}", d.code, d.message)).collect();
+            Err(format!("posting failed:\n{}", list.join("\n")))
+        }
+    }
 }
 
 /// Converts and judges each post; returns the tally and the failures.
@@ -208,8 +253,10 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
                 None
             }
         };
+        let text = std::fs::read_to_string(&converted).unwrap_or_default();
         let mut identical = true;
         for toolpath in toolpaths(all) {
+            let properties = home_properties(&post, &text, &toolpath);
             let pair = format!("{}__{}", path.display(), stem(&toolpath));
             let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
             if !jsonl.exists()
@@ -226,7 +273,7 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
                 }
             };
             if let Some(again) = &again {
-                match post_toolpath(again, &toolpath) {
+                match post_with_properties(again, &toolpath, &properties) {
                     Ok(o) if o == ours => {}
                     Ok(o) => {
                         identical = false;
@@ -238,7 +285,7 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
                     Err(e) => failures.push(format!("{pair}: postc posting the converted post: {e}")),
                 }
             }
-            match run_fusion_node(&converted, &jsonl) {
+            match run_fusion_node(&converted, &jsonl, &properties) {
                 Ok(theirs) if theirs == ours => tally.compared += 1,
                 Ok(theirs) => {
                     identical = false;
@@ -260,11 +307,15 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
     tally
 }
 
-/// The posts of this test and of `convert_native` (those with CR LF line
-/// ends, Fusion's: the others are given CR LF).
+/// The posts of this test (the sections post with CR LF and with LF line
+/// ends) and of `convert_native` (those with CR LF line ends, Fusion's:
+/// the others are given CR LF).
 fn own_posts(dir: &Path) -> Vec<PathBuf> {
     let mut own = Vec::new();
-    let mut texts = vec![("sections.pp".to_string(), SECTIONS.to_string())];
+    // The sections post again with LF line ends (the converted post's
+    // `setEOL`).
+    let lf = SECTIONS.replace("LINE_ENDING = \"[13][10]\"", "LINE_ENDING = \"[10]\"");
+    let mut texts = vec![("sections.pp".to_string(), SECTIONS.to_string()), ("sections_lf.pp".to_string(), lf)];
     for (name, text) in crate::convert_native::POSTS {
         let text = if text.contains("LINE_ENDING") {
             text.to_string()
@@ -312,6 +363,9 @@ fn node_runs_fusion_posts_as_postc_posts_their_sources() {
 /// The command line: `--to fusion` writes a `.cps` post with Fusion's
 /// entry points; a value Fusion never hands is refused at its line and
 /// column and nothing is written; a post of another dialect is refused.
+/// The home position is the converted post's properties, which `postc
+/// post --set property.NAME=VALUE` sets; a property the post does not
+/// have is refused.
 #[test]
 fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let dir = tempfile::tempdir().expect("a temporary folder");
@@ -336,18 +390,50 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
         assert!(text.contains(entry), "{entry}\n{text}");
     }
     let refused = dir.path().join("refused.cps");
+    let o =
+        postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "fusion", "-o", &refused.display().to_string()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[CV007]") && err.contains("`[TP_FILENAME]` in HEADER: Fusion never hands"), "{err}");
+    assert!(!refused.exists(), "a refused conversion writes nothing");
+    // The home position: properties the user sets.
+    let homed = dir.path().join("homed.cps");
     let o = postc(&[
         "convert",
         "corpus/posts/vectric/gcode_arcs_inch.pp",
         "--to",
         "fusion",
         "-o",
-        &refused.display().to_string(),
+        &homed.display().to_string(),
     ]);
+    assert!(o.status.success(), "{}", said(&o));
+    let text = std::fs::read_to_string(&homed).expect("the converted post");
+    assert!(text.contains("  homePositionZ: {") && text.contains("getProperty(\"homePositionZ\")"), "{text}");
+    let job = "corpus/toolpaths/native/one_toolpath_inch.ron";
+    let program = dir.path().join("homed.nc");
+    let o = postc(&[
+        "post",
+        &homed.display().to_string(),
+        job,
+        "-o",
+        &program.display().to_string(),
+        // verify reads a `.cps` program in millimetres until it says G20,
+        // and this post moves home first.
+        "--no-verify",
+        "--set",
+        "property.homePositionX=1.5",
+        "--set",
+        "property.homePositionY=2",
+        "--set",
+        "property.homePositionZ=3.25",
+    ]);
+    assert!(o.status.success(), "{}", said(&o));
+    let nc = std::fs::read_to_string(&program).expect("the program");
+    assert!(nc.contains("G0Z3.2500\r\n") && nc.contains("G0X1.5000Y2.0000"), "{nc}");
+    let o = postc(&["post", &homed.display().to_string(), job, "--set", "property.homeX=1"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("error[CV007]") && err.contains("`[XH]` in HEADER: Fusion never hands"), "{err}");
-    assert!(!refused.exists(), "a refused conversion writes nothing");
+    assert!(err.contains("The post has no property \"homeX\""), "{err}");
     let o = postc(&["convert", "corpus/posts/cimco/fanuc_mill.js", "--to", "fusion"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");

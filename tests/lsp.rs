@@ -255,7 +255,7 @@ fn an_editor_session() {
     let _ = c.open(
         cps,
         "javascript",
-        "function onOpen() {\n  var p = getParameter(\"job-description\");\n  setEOL(\"\\n\");\n}\n",
+        "function onOpen() {\n  var p = getParameter(\"job-description\");\n  include(\"common.cps\");\n}\n",
     );
     let hover = c.at("textDocument/hover", cps, 1, 12);
     let text = hover["contents"]["value"].as_str().unwrap();

@@ -16,8 +16,11 @@
 //! construct, at the source's line and column:
 //!
 //! - a value the engine never hands the post (for CNC-Calc `[T]`,
-//!   `[TOOLNAME]`, the material; for both `[SAFEZ]`, the home position,
-//!   ...) in a section the post prints is `CV007`;
+//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position; for both
+//!   file names, the date and time, jet power, ...) in a section the post
+//!   prints is `CV007` (Fusion hands the tool's feeds and clearance
+//!   height as operation parameters, and the home position is the
+//!   converted post's properties, which the user sets);
 //! - a section the engine never calls (CNC-Calc: `TOOLCHANGE`,
 //!   `NEW_SEGMENT`, `DWELL_MOVE`, ...) is left out with warning `CV008`;
 //! - a rule the engine gives the post no way to follow (helical plunge
@@ -165,6 +168,16 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
             Quantity::XLength => Some("(stockUpper.x - stockLower.x)"),
             Quantity::YLength => Some("(stockUpper.y - stockLower.y)"),
             Quantity::ZLength => Some("(stockUpper.z - stockLower.z)"),
+            // The operation's tool feeds and clearance height
+            // (`getParameter`), kept at `onSection`.
+            Quantity::CutFeed => Some("toolFeedCut"),
+            Quantity::PlungeFeed => Some("toolFeedPlunge"),
+            Quantity::SafeZ => Some("safeZ"),
+            // The home position: the post's properties, which the user
+            // sets in Fusion's post dialog (docs/convert.md).
+            Quantity::HomeX => Some("homeX"),
+            Quantity::HomeY => Some("homeY"),
+            Quantity::HomeZ => Some("homeZ"),
             _ => None,
         };
         if fusion.is_some() {
@@ -266,7 +279,7 @@ impl Printer<'_> {
             ("modal memory kept across toolpaths", !o.forget_modal_at_toolpath_start),
             ("tape splitting (TAPE_SPLITTING)", o.tape_splitting.is_some()),
             (
-                "a wrapped rotary axis (ROTARY_WRAP), whose angle comes from the job's wrap diameter, never handed to the converted post,",
+                "a wrapped rotary axis (ROTARY_WRAP), whose angle comes from the job's wrap diameter, never handed to the converted post",
                 o.rotary_wrap.is_some(),
             ),
             ("a smallest arc radius (MIN_ARC_RADIUS)", o.min_arc_radius.is_some()),
@@ -277,8 +290,8 @@ impl Printer<'_> {
                 self.host == Host::Fusion && o.substitutions.iter().any(|s| !s.from.is_ascii() || !s.to.is_ascii()),
             ),
             (
-                "a line ending other than CR LF (LINE_ENDING), and postc's Fusion host ends every line with CR LF (setEOL is not run yet),",
-                self.host == Host::Fusion && o.line_ending != b"\r\n",
+                "a line ending (LINE_ENDING) that is not text, which setEOL cannot be given",
+                self.host == Host::Fusion && std::str::from_utf8(&o.line_ending).is_err(),
             ),
         ] {
             if yes {
@@ -349,9 +362,14 @@ impl Printer<'_> {
                         Piece::Var(v) => {
                             let var = &post.variables[v.index()];
                             let ValueSource::Quantity(q) = var.source else { continue };
+                            // Before a section's first feed move Vectric's feed is the
+                            // tool's cut feed, which Fusion hands (the operation's
+                            // `tool_feedCutting`) and CNC-Calc does not.
+                            let tool_feed = self.host == Host::Fusion && q == Quantity::Feed;
                             let before = handed(q, self.host).is_some()
                                 && self.before_moves().contains(&section)
                                 && handed(q, Host::Cimco).is_some()
+                                && !tool_feed
                                 && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
                             // Before the first move Vectric's position is the
                             // job's home, which neither engine hands.
@@ -362,6 +380,7 @@ impl Printer<'_> {
                             // before the first feed move: not handed.
                             let before = before
                                 || handed(q, self.host).is_some()
+                                    && !tool_feed
                                     && (matches!(section, Section::RapidMove | Section::InitialRapidMove)
                                         && q == Quantity::Feed);
                             if self.host == Host::Cimco
@@ -396,7 +415,7 @@ impl Printer<'_> {
                                         "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
                                     ),
                                     Host::Fusion => format!(
-                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name and the stock, and no home position, safe Z or tool feed (docs/fusion.md)"
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, and the stock, and the user sets the home position in the post's properties; it hands no file names, date, time, origin, tool list, notes or jet power (docs/convert.md, \"Fusion posts\")"
                                     ),
                                 };
                                 self.refuse(
@@ -494,6 +513,51 @@ maximumCircularSweep = 2 * Math.PI;
             description = js_string(&name),
             extension = js_string(&extension),
         ));
+        // Lines end with the source's LINE_ENDING: Fusion's own is CR LF.
+        let le = &post.options.line_ending;
+        if le.as_slice() != b"\r\n"
+            && let Ok(text) = std::str::from_utf8(le)
+        {
+            self.out.push_str(&format!(
+                "// Each line ends with the source's LINE_ENDING.\nsetEOL({});\n\n",
+                js_string(text)
+            ));
+        }
+        // The home position, which Fusion hands no post: the user sets it
+        // in the post dialog, as for Autodesk's posts' home positions.
+        let homes: Vec<String> = HOME_PROPERTIES
+            .iter()
+            .filter(|(q, ..)| self.prints(*q))
+            .map(|(q, name, axis)| {
+                format!(
+                    "  {name}: {{\n    title: {},\n    description: {},\n    group: \"homePositions\",\n    type: \"number\",\n    value: 0,\n    scope: \"post\"\n  }}",
+                    js_string(&format!("Home position {axis}")),
+                    js_string(&format!(
+                        "The {axis} of the machine's home position, in the program's units ({}): what [{}] prints.",
+                        post.info.units.map_or("the document's", |u| u.name()),
+                        q.label()
+                    )),
+                )
+            })
+            .collect();
+        if !homes.is_empty() {
+            self.out.push_str(&format!(
+                "// The job's home position, which Fusion does not hand a post: set it in\n// the post dialog.\nproperties = {{\n{}\n}};\n\n",
+                homes.join(",\n")
+            ));
+        }
+    }
+
+    /// Whether a section the engine calls prints a quantity.
+    fn prints(&self, q: Quantity) -> bool {
+        let post = self.post;
+        post.handlers.iter().any(|h| {
+            matches!(h.key, HandlerKey::Section(s) if self.called().iter().any(|(c, _)| *c == s))
+                && h.body.iter().any(|st| {
+                    matches!(st, Stmt::Line { pieces, .. } if pieces.iter().any(|p| matches!(p, Piece::Var(v)
+                        if post.variables[v.index()].source == ValueSource::Quantity(q))))
+                })
+        })
     }
 
     fn variables(&mut self) {
@@ -723,6 +787,12 @@ function afterRapid() {{
             ),
             _ => "return rpm;".into(),
         };
+        // The home position from the post's properties, in the program's units.
+        let homes: String = HOME_PROPERTIES
+            .iter()
+            .filter(|(q, ..)| self.prints(*q))
+            .map(|(_, name, axis)| format!("home{axis} = getProperty(\"{name}\");\n    "))
+            .collect();
         // The runtime's factors (`Units::factor_to`), as JavaScript computes them.
         let scale = match self.post.info.units {
             Some(Units::Mm) => "scale = unit == MM ? 1 : 25.4;",
@@ -741,6 +811,12 @@ var toolpathName = "";
 var lastTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
+// The operation's tool feeds and clearance height, and the home position
+// the user set in the post's properties.
+var toolFeedCut = NaN;
+var toolFeedPlunge = NaN;
+var safeZ = NaN;
+var homeX = NaN, homeY = NaN, homeZ = NaN;
 {words}
 // Fusion hands lengths and feeds in the document's units; the post
 // prints them in its source's UNITS, each multiplied by `scale`.
@@ -748,7 +824,7 @@ var scale = 1;
 
 function onOpen() {{
     {scale}
-    if (isWorkpieceDefined()) {{
+    {homes}if (isWorkpieceDefined()) {{
         var stock = getWorkpiece();
         stockLower = {{x: stock.lower.x * scale, y: stock.lower.y * scale, z: stock.lower.z * scale}};
         stockUpper = {{x: stock.upper.x * scale, y: stock.upper.y * scale, z: stock.upper.z * scale}};
@@ -764,7 +840,15 @@ function onSection() {{
     toolName = tool.description;
     toolNotes = tool.comment;
     toolpathName = getParameter("operation-comment", "");
+    toolFeedCut = hasParameter("operation:tool_feedCutting") ? getParameter("operation:tool_feedCutting") * scale : NaN;
+    toolFeedPlunge = hasParameter("operation:tool_feedPlunge") ? getParameter("operation:tool_feedPlunge") * scale : NaN;
+    safeZ = hasParameter("operation:clearanceHeight_value") ? getParameter("operation:clearanceHeight_value") * scale : NaN;
     spindle = spindleSpeed;
+    // A new tool's feed is its cut feed until a feed move gives another,
+    // as Vectric's is.
+    if (toolNumber != lastTool) {{
+        feed = toolFeedCut;
+    }}
     if (isFirstSection()) {{
         {head}firstRapid = true;
     }} else {{
@@ -1326,6 +1410,15 @@ const NATIVE_NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, 
 // the state below.
 ";
 
+/// The home position's quantities, the post properties a converted
+/// `.cps` post reads them from (the names of Autodesk's posts' home
+/// positions), and their axes.
+const HOME_PROPERTIES: &[(Quantity, &str, &str)] = &[
+    (Quantity::HomeX, "homePositionX", "X"),
+    (Quantity::HomeY, "homePositionY", "Y"),
+    (Quantity::HomeZ, "homePositionZ", "Z"),
+];
+
 /// The note under the conversion note of a `.cps` post.
 const FUSION_NOTE: &str = "// An Autodesk Fusion post: Fusion calls onOpen, onSection (each toolpath),
 // onRapid, onLinear, onCircular, onDwell and onClose, and expands
@@ -1633,6 +1726,17 @@ const PRINTED_NAMES: &[&str] = &[
     "stockLower",
     "stockUpper",
     "textWord",
+    "toolFeedCut",
+    "toolFeedPlunge",
+    "safeZ",
+    "homeX",
+    "homeY",
+    "homeZ",
+    "properties",
+    "getProperty",
+    "getParameter",
+    "hasParameter",
+    "setEOL",
     "planeChords",
     "spindleOutput",
     "scale",

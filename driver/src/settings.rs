@@ -10,17 +10,22 @@ use postc_ir::event::FileInfo;
 use postc_runtime::RunOptions;
 
 /// The names [`apply_sets`] knows.
-pub const SETTINGS: &str = "date, time, tolerance";
+pub const SETTINGS: &str = "date, time, tolerance, property.NAME";
 
 /// Applies `NAME=VALUE` settings (`--set`) to the run options: `date` and
 /// `time` (what `[DATE]` and `[TIME]` print), `tolerance` (mm, for
-/// linearized arcs).
+/// linearized arcs), `property.NAME` (a post property, as the user sets
+/// it in Fusion's post dialog: docs/fusion.md, choice 25).
 pub fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagnostic> {
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
             return Err(Diagnostic::error(codes::IO007, format!("`--set {set}` needs the form NAME=VALUE"))
                 .help(format!("known names: {SETTINGS}")));
         };
+        if let Some(property) = name.trim().strip_prefix("property.").filter(|p| !p.is_empty()) {
+            options.properties.push((property.to_string(), value.to_string()));
+            continue;
+        }
         match name.trim().to_ascii_lowercase().as_str() {
             "date" => options.date = Some(value.to_string()),
             "time" => options.time = Some(value.to_string()),

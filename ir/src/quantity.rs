@@ -197,6 +197,10 @@ quantities! {
     /// that read ahead ([`crate::post::OutputOptions::reads_ahead`]); an
     /// empty text when the toolpath source cannot read ahead.
     JobOutline = "JOB_OUTLINE", Text;
+    /// Text: the post properties the user set for this run (`--set
+    /// property.NAME=VALUE`), as a JSON object of texts by name; `{}` when
+    /// none was set. A Fusion post's host applies them before `onOpen`.
+    PostProperties = "POST_PROPERTIES", Text;
 }
 
 impl Quantity {

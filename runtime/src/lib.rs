@@ -101,6 +101,10 @@ pub struct RunOptions {
     pub trace: Option<trace::TraceSink>,
     /// Told of every handler run and function call (`bench --profile`).
     pub profile: Option<Box<dyn profile::CallObserver>>,
+    /// Post properties the user sets (`--set property.NAME=VALUE`), by
+    /// name, in order: a Fusion post's `properties`, as Fusion's post
+    /// dialog and `post --property` set them (`POST_PROPERTIES`).
+    pub properties: Vec<(String, String)>,
     /// Run the post's code as its IR says it, with none of
     /// [`prepare`]'s passes (folding, inlining, fused words, ...): what the
     /// differential tests compare the prepared run with.
@@ -144,6 +148,10 @@ pub fn run<S: EventSource + ?Sized>(
         machine.file_dir = f.dir;
         machine.file_ext = f.extension;
     }
+    machine.properties = serde_json::Value::Object(
+        options.properties.iter().map(|(k, v)| (k.clone(), serde_json::Value::String(v.clone()))).collect(),
+    )
+    .to_string();
     if post.options.reads_ahead
         && let Some(outline) = source.outline()
     {

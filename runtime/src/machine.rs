@@ -115,6 +115,8 @@ pub struct MachineState {
     pub revision: String,
     /// `JOB_OUTLINE`: the job's outline as JSON, for posts that read ahead.
     pub outline: String,
+    /// `POST_PROPERTIES`: the post properties the user set, as JSON.
+    pub properties: String,
     /// `RECORD_ID` and `NEXT_RECORD_MOTION`: where the event being posted
     /// is in the toolpath, and whether a move follows it (posts that read
     /// ahead).
@@ -164,6 +166,7 @@ impl MachineState {
             wrap,
             revision: String::new(),
             outline: String::new(),
+            properties: "{}".into(),
             record_id: 0.0,
             next_record_motion: false,
         }
@@ -366,6 +369,7 @@ impl MachineState {
             Quantity::CommentText => &self.comment,
             Quantity::Revision => &self.revision,
             Quantity::JobOutline => &self.outline,
+            Quantity::PostProperties => &self.properties,
             _ => "",
         }
     }

@@ -7,7 +7,10 @@
 // engine against V8 on real posts, and the event order against a second
 // reading of the documentation.
 //
-//   node fusion.js POST.cps TOOLPATH.jsonl
+//   node fusion.js POST.cps TOOLPATH.jsonl [--property NAME=VALUE]...
+//
+// `--property` sets a post property, as Fusion's post dialog and Autodesk's
+// `post --property` do (postc: `--set property.NAME=VALUE`).
 "use strict";
 
 var fs = require("fs");
@@ -19,8 +22,9 @@ var HOST = path.join(__dirname, "..", "..", "frontends", "cimco", "src", "fusion
 function Referee(postSource, postName) {
     var out = [];
     var context = vm.createContext({});
-    context.__postc_writeln = function (text) {
-        out.push(String(text) + context.EOL);
+    // A line and the host's line ending (`EOL`, which `setEOL` changes).
+    context.__postc_writeln = function (text, eol) {
+        out.push(String(text) + String(eol));
     };
     vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
     vm.runInContext(postSource, context, { filename: postName });
@@ -45,6 +49,7 @@ function Referee(postSource, postName) {
     this.lastTool = null;
     this.spindle = 0;
     this.coolant = 0;
+    this.held = [];
 }
 
 // The coolant kinds as the host numbers them (COOLANT_OFF ... COOLANT_AIR).
@@ -64,7 +69,13 @@ Referee.prototype.spindleTool = function () {
 
 Referee.prototype.toolpathArgs = function () {
     var t = this.tool;
-    return [t.number, t.diameter, t.name, this.toolpathName, !!t.jet, this.spindle, t.notes, this.coolant, t.lengthOffset];
+    // The tool's feeds (0 is none, as the toolpath format writes a value it
+    // does not know) and the job's safe Z (its home Z when it has none).
+    var given = function (v) { return v ? v : NaN; };
+    var home = this.job.home;
+    var safeZ = this.job.safe_z != null ? this.job.safe_z : home ? home.z : NaN;
+    return [t.number, t.diameter, t.name, this.toolpathName, !!t.jet, this.spindle, t.notes, this.coolant, t.lengthOffset,
+        given(t.cut_feed), given(t.plunge_feed), safeZ];
 };
 
 Referee.prototype.beginToolpath = function () {
@@ -79,12 +90,16 @@ Referee.prototype.beginToolpath = function () {
             "__fusion_open",
             [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""]
                 .concat(stock)
-                .concat([JSON.stringify(this.outline || [])])
+                .concat([JSON.stringify(this.outline || []), JSON.stringify(this.properties || {})])
         );
         this.spindleOn = this.spindleTool();
         if (this.spindleOn) {
             this.call("__fusion_spindle", [this.spindle]);
         }
+        for (var h = 0; h < this.held.length; h++) {
+            this.call("__fusion_insert", [this.held[h]]);
+        }
+        this.held = [];
     } else {
         if (this.toolChanged) {
             this.call("__fusion_tool_change", []);
@@ -223,6 +238,14 @@ Referee.prototype.event = function (e) {
         case "Comment":
             if (this.started) {
                 this.call("__fusion_comment", [d.text]);
+            }
+            break;
+        case "Insert":
+            // Text inserted before the program starts waits for its head.
+            if (this.started) {
+                this.call("__fusion_insert", [d.text]);
+            } else {
+                this.held.push(d.text);
             }
             break;
         case "DrillCycle": {
@@ -367,10 +390,22 @@ function main(argv) {
     var post = argv[2];
     var toolpath = argv[3];
     if (!post || !toolpath) {
-        process.stderr.write("usage: node fusion.js POST.cps TOOLPATH.jsonl\n");
+        process.stderr.write("usage: node fusion.js POST.cps TOOLPATH.jsonl [--property NAME=VALUE]...\n");
         return 2;
     }
+    var properties = {};
+    for (var a = 4; a < argv.length; a++) {
+        var set = a + 1 < argv.length ? argv[a + 1] : "";
+        var eq = set.indexOf("=");
+        if (argv[a] !== "--property" || eq <= 0) {
+            process.stderr.write("usage: node fusion.js POST.cps TOOLPATH.jsonl [--property NAME=VALUE]...\n");
+            return 2;
+        }
+        properties[set.substring(0, eq)] = set.substring(eq + 1);
+        a++;
+    }
     var referee = new Referee(fs.readFileSync(post, "utf8"), post);
+    referee.properties = properties;
     var events = fs
         .readFileSync(toolpath, "utf8")
         .split("\n")

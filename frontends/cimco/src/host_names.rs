@@ -99,8 +99,8 @@ pub const CALL: &str = "__call";
 /// `new F(args)`.
 pub const NEW: &str = "__new";
 /// The output primitive of a host written in JavaScript (Fusion's):
-/// `__postc_writeln(text)` writes the text as it is, then the post's line
-/// ending, as one block.
+/// `__postc_writeln(text, eol)` writes the text as it is, then the line
+/// ending `eol` (the host's `EOL`, which `setEOL` changes), as one block.
 pub const WRITE_LINE: &str = "__postc_writeln";
 /// A CNC-Calc global function by name ([`FUNCTIONS`]).
 pub const HOST: &str = "__host";

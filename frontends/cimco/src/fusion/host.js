@@ -717,7 +717,9 @@ function setWordSeparator(separator) { __wordSeparator = separator; }
 function getWordSeparator() { return __wordSeparator; }
 function setCodePage(name) {}
 function getCodePage() { return 1252; }
-function setEOL(eol) { __unsupported("setEOL"); }
+// The end-of-line marker every later line ends with (docs/fusion.md,
+// choice 5).
+function setEOL(eol) { EOL = String(eol); }
 var __redirect = undefined;
 // Text `write` gave that no line ending has closed yet.
 var __partial = "";
@@ -725,7 +727,7 @@ function writeln(text) {
   if (__redirect !== undefined) {
     __redirect.text += text + EOL;
   } else {
-    __postc_writeln(__partial + text);
+    __postc_writeln(__partial + text, EOL);
     __partial = "";
   }
 }
@@ -1742,7 +1744,7 @@ function onError(message) {}
 
 // ---- The engine: postc's events as Fusion's calls ----
 var __outputPath = "";
-function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1, outline, record, nextMotion) {
+function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, z1, outline, given, record, nextMotion) {
   __at(record, nextMotion);
   if (typeof outline == "string" && outline != "") {
     __outline = __JSON_parse(outline);
@@ -1787,15 +1789,45 @@ function __fusion_open(mm, name, comment, date, time, path, x0, y0, z0, x1, y1, 
       __parameters["stock-upper-" + axes[a]] = stock[a + 3];
     }
   }
+  __setProperties(given);
   onOpen();
   for (var p in __parameters) {
     onParameter(p, __parameters[p]);
   }
 }
 
+// The post properties the user set (Fusion's post dialog, `post
+// --property`), a JSON object of texts by name: each replaces the value
+// of the post's property of that name, read as the property's type, before
+// `onOpen` (docs/fusion.md, choice 25). A name the post has no property
+// for stops the post.
+function __setProperties(given) {
+  if (typeof given != "string" || given == "") { return; }
+  var values = __JSON_parse(given);
+  for (var name in values) {
+    var p = properties[name];
+    if (p === undefined) {
+      error("The post has no property \"" + name + "\" to set.");
+    }
+    var text = values[name];
+    var described = p !== null && typeof p == "object";
+    var type = described ? p.type : typeof p;
+    var value = text;
+    if (type == "boolean") {
+      value = text == "true" || text == "yes" || text == "1";
+    } else if (type == "number" || type == "integer" || type == "spatial" || type == "angle") {
+      value = Number(text);
+      if (text.trim() == "" || !isFinite(value)) {
+        error("The post property \"" + name + "\" takes a number, not \"" + text + "\".");
+      }
+    }
+    setProperty(name, value);
+  }
+}
+
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, record, nextMotion) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion) {
   __at(record, nextMotion);
   __toolChanging = false;
   __spindle = jet ? 0 : speed;
@@ -1820,6 +1852,7 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
   t.coolant = coolant;
   if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
   __describeSection(s, name, jet);
+  __operationParameters(s, cutFeed, plungeFeed, safeZ);
   __sections.push(s);
   __fusion_end_section();
   __section = s;
@@ -1850,6 +1883,20 @@ function __describeSection(s, name, jet) {
   s.parameters["operation:tool_number"] = t.number;
   s.parameters["operation:tool_diameter"] = t.diameter;
   s.parameters["operation:tool_clockwise"] = 1;
+}
+
+// The operation's tool feeds and clearance height, as Fusion's engine
+// hands an operation's parameters (docs/fusion.md, choice 24): the
+// toolpath tool's cut and plunge feeds, and the job's safe Z as the
+// absolute clearance height. A value the toolpath does not give is no
+// parameter.
+function __operationParameters(s, cutFeed, plungeFeed, safeZ) {
+  if (typeof cutFeed == "number" && isFinite(cutFeed)) { s.parameters["operation:tool_feedCutting"] = cutFeed; }
+  if (typeof plungeFeed == "number" && isFinite(plungeFeed)) { s.parameters["operation:tool_feedPlunge"] = plungeFeed; }
+  if (typeof safeZ == "number" && isFinite(safeZ)) {
+    s.parameters["operation:clearanceHeight_value"] = safeZ;
+    s.parameters["operation:clearanceHeight_absolute"] = 1;
+  }
 }
 
 // Section `i` of the outline, made once: its tool, where it starts, the
@@ -2217,6 +2264,18 @@ function __fusion_power(on, record, nextMotion) {
 function __fusion_comment(text, record, nextMotion) {
   __at(record, nextMotion);
   onComment(text);
+}
+
+// Text the toolpath inserts as it is (an APT INSERT): each line of it that
+// is not empty, ended with `EOL` (the runtime's rule for inserted text).
+function __fusion_insert(text, record, nextMotion) {
+  __at(record, nextMotion);
+  var lines = String(text).split("\n");
+  for (var i = 0; i < lines.length; ++i) {
+    var line = lines[i];
+    if (line.length > 0 && line.charAt(line.length - 1) == "\r") { line = line.substring(0, line.length - 1); }
+    if (line != "") { __postc_writeln(line, EOL); }
+  }
 }
 
 function __fusion_close(record, nextMotion) {

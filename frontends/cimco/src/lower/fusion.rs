@@ -6,15 +6,16 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
 //! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
 //! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane)` |
 //! | `DWELL_MOVE`, `COMMENT` | `__fusion_dwell(seconds)`, `__fusion_comment(text)` |
+//! | `INSERT` | `__fusion_insert(text)`: the toolpath's text as it is, each line ended with the host's `EOL` |
 //! | `COOLANT`, `CUTTER_COMP` | `__fusion_coolant(kind)`, `__fusion_compensation(side)` |
 //! | `DRILL_HEADER` | `__fusion_cycle(kind, clearance, R plane, top, bottom, feed, peck, dwell, pitch)` |
 //! | `DRILL_POINT`, `DRILL_FOOTER` | `__fusion_cycle_point(x, y)`, `__fusion_cycle_end()` |
@@ -86,8 +87,10 @@ pub(crate) fn lower(
     post.options.arcs_in_every_plane = true;
     // `getSection(i)`, the tool table and the next tool know the whole job.
     post.options.reads_ahead = true;
-    // The host's `EOL` (docs/fusion.md, choice 5).
-    post.options.line_ending = b"\r\n".to_vec();
+    // Each line ends with the host's `EOL`, which `setEOL` changes
+    // (docs/fusion.md, choice 5): the host writes it, so the post's own
+    // line ending is empty.
+    post.options.line_ending = Vec::new();
     post.handlers = handlers(&layout);
     post.init = vec![Stmt::Eval(Expr::Call(init_fn, vec![]))];
     post.functions = functions;
@@ -161,6 +164,9 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::ToolNotes),
                 q(Quantity::CoolantKind),
                 q(Quantity::LengthOffset),
+                q(Quantity::CutFeed),
+                q(Quantity::PlungeFeed),
+                q(Quantity::SafeZ),
             ],
         )
     };
@@ -188,6 +194,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
             q(Quantity::YMax),
             q(Quantity::ZMax),
             q(Quantity::JobOutline),
+            q(Quantity::PostProperties),
         ],
     ));
     let linear = |plunge: bool| {
@@ -235,6 +242,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::JetToolOff, call("__fusion_power", vec![Expr::Bool(false)]));
     add(Section::DwellMove, call("__fusion_dwell", vec![q(Quantity::DwellTime)]));
     add(Section::Comment, call("__fusion_comment", vec![q(Quantity::CommentText)]));
+    add(Section::Insert, call("__fusion_insert", vec![q(Quantity::CommentText)]));
     add(Section::Coolant, call("__fusion_coolant", vec![q(Quantity::CoolantKind)]));
     add(Section::CutterComp, call("__fusion_compensation", vec![q(Quantity::CompSide)]));
     add(

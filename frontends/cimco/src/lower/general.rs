@@ -1322,9 +1322,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         let a = self.args(args, pre)?;
                         if g == names::WRITE_LINE {
                             // The output primitive of a host written in JavaScript:
-                            // one block, the text as it is, then the line ending.
-                            let text = a.into_iter().next().unwrap_or(Ir::Text(String::new()));
-                            pre.push(IrStmt::Line { pieces: vec![postc_ir::Piece::Expr(text)], span: Some(at) });
+                            // one block, the text as it is, then the host's line
+                            // ending (the post's own is empty).
+                            let pieces = a.into_iter().map(postc_ir::Piece::Expr).collect();
+                            pre.push(IrStmt::Line { pieces, span: Some(at) });
                             return Ok(Ir::Undefined);
                         }
                         self.host_call(&g, a, at)
