@@ -206,6 +206,33 @@ fn posts_a_dropped_toolpath() {
     assert_eq!(server.api("drop", &json!({ "name": "notes.txt", "text": "hello" })).0, 422);
 }
 
+/// Interrupted, the workbench leaves no folder of dropped files behind
+/// (docs/outputs.md: temporary files and folders are removed on SIGINT).
+#[cfg(unix)]
+#[test]
+fn an_interrupt_removes_the_folder_of_dropped_files() {
+    let tmp = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_postc"))
+        .current_dir(root())
+        .args(["serve", "--port", "0"])
+        .env("TMPDIR", tmp.path())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).unwrap();
+    assert!(line.starts_with("postc serve: http://"), "{line:?}");
+    let made: Vec<_> = std::fs::read_dir(tmp.path()).unwrap().flatten().map(|e| e.file_name()).collect();
+    assert_eq!(made.len(), 1, "the folder of dropped files: {made:?}");
+    let killed = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    assert!(killed.success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130), "{status:?}");
+    let left: Vec<_> = std::fs::read_dir(tmp.path()).unwrap().flatten().map(|e| e.file_name()).collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
 #[test]
 fn refuses_other_origins_and_hosts() {
     let server = Server::start(&[]);

@@ -11,8 +11,9 @@
 //! - an output gets the mode of the file it replaces, or the mode a new
 //!   file gets under the user's umask (read from the temporary file
 //!   itself, which is created with `0o666` and so gets `0o666 & !umask`);
-//! - on SIGINT, SIGTERM or SIGHUP the temporary files are removed and
-//!   postc exits with 128 + the signal's number (130, 143, 129).
+//! - on SIGINT, SIGTERM or SIGHUP the temporary files and folders
+//!   ([`TempDir`]) are removed and postc exits with 128 + the signal's
+//!   number (130, 143, 129).
 
 use std::cell::RefCell;
 use std::fs::{File, Permissions};
@@ -28,6 +29,43 @@ static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
     PENDING.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Temporary folders that exist now, removed (with what they hold) if a
+/// signal ends the process.
+static PENDING_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn pending_dirs() -> MutexGuard<'static, Vec<PathBuf>> {
+    PENDING_DIRS.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// A temporary folder (`postc serve` keeps dropped files in one): removed
+/// with its files when dropped, or when a signal ends postc.
+pub struct TempDir(Option<tempfile::TempDir>);
+
+impl TempDir {
+    /// A new folder in the system's temporary folder, named `prefix...`.
+    pub fn new(prefix: &str) -> io::Result<TempDir> {
+        on_signal_remove_pending();
+        let mut list = pending_dirs();
+        let dir = tempfile::Builder::new().prefix(prefix).tempdir()?;
+        list.push(dir.path().to_path_buf());
+        Ok(TempDir(Some(dir)))
+    }
+
+    pub fn path(&self) -> &Path {
+        self.0.as_ref().map_or(Path::new(""), |d| d.path())
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        if let Some(dir) = self.0.take() {
+            let mut list = pending_dirs();
+            unregister(&mut list, dir.path());
+            drop(dir);
+        }
+    }
 }
 
 /// Creates a temporary file with `create` and adds it to the pending list,
@@ -60,6 +98,9 @@ fn on_signal_remove_pending() {
             if let Some(signal) = signals.forever().next() {
                 for path in pending().drain(..) {
                     let _ = std::fs::remove_file(path);
+                }
+                for path in pending_dirs().drain(..) {
+                    let _ = std::fs::remove_dir_all(path);
                 }
                 std::process::exit(128 + signal);
             }

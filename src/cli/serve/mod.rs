@@ -73,7 +73,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
     }
     let corpus = args.corpus.clone().or_else(default_corpus);
-    let dropped = tempfile::Builder::new().prefix("postc-serve-").tempdir().map_err(|e| {
+    let dropped = super::outputs::TempDir::new("postc-serve-").map_err(|e| {
         fail(&mut sources, Diagnostic::error(codes::IO003, format!("cannot make a folder for dropped files: {e}")))
     })?;
     let roots = Roots::new(args.post.as_deref(), args.toolpath.as_deref(), corpus.as_deref(), dropped.path());
