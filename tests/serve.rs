@@ -23,11 +23,17 @@ struct Server {
 
 impl Server {
     fn start(args: &[&Path]) -> Server {
+        Server::start_in(args, &std::env::temp_dir())
+    }
+
+    /// With `tmp` as the system's temporary folder (`TMPDIR`).
+    fn start_in(args: &[&Path], tmp: &Path) -> Server {
         let mut child = Command::new(env!("CARGO_BIN_EXE_postc"))
             .current_dir(root())
             .arg("serve")
             .args(args)
             .args(["--port", "0"])
+            .env("TMPDIR", tmp)
             .stdout(Stdio::piped())
             .stderr(Stdio::inherit())
             .spawn()
@@ -212,22 +218,12 @@ fn posts_a_dropped_toolpath() {
 #[test]
 fn an_interrupt_removes_the_folder_of_dropped_files() {
     let tmp = tempfile::tempdir().unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_postc"))
-        .current_dir(root())
-        .args(["serve", "--port", "0"])
-        .env("TMPDIR", tmp.path())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut line = String::new();
-    BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).unwrap();
-    assert!(line.starts_with("postc serve: http://"), "{line:?}");
+    let mut server = Server::start_in(&[], tmp.path());
     let made: Vec<_> = std::fs::read_dir(tmp.path()).unwrap().flatten().map(|e| e.file_name()).collect();
     assert_eq!(made.len(), 1, "the folder of dropped files: {made:?}");
-    let killed = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    let killed = Command::new("kill").args(["-INT", &server.child.id().to_string()]).status().unwrap();
     assert!(killed.success());
-    let status = child.wait().unwrap();
+    let status = server.child.wait().unwrap();
     assert_eq!(status.code(), Some(130), "{status:?}");
     let left: Vec<_> = std::fs::read_dir(tmp.path()).unwrap().flatten().map(|e| e.file_name()).collect();
     assert!(left.is_empty(), "left behind: {left:?}");
