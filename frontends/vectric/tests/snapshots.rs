@@ -66,7 +66,9 @@ fn listing(post: &Post) -> String {
 fn snapshot(path: &Path) -> (String, bool) {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let mut sources = postc_report::source_map();
-    let (post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
+    let (mut post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
+    // The file as written (`PostInfo::written`) is the fixture itself.
+    post.info.written.clear();
     let ron = ron::ser::to_string_pretty(&post, ron::ser::PrettyConfig::default()).expect("the IR serializes to RON");
     let mut out = format!(
         "# {}\n\n## handlers\n\n{}\n## post (RON)\n\n{ron}\n\n## diagnostics\n\n",
