@@ -621,7 +621,7 @@ fn comments_survive_conversion() {
     // ... and from the IR alone (a RON post) each comment goes where the
     // IR says it stands. (Vectric posts printed from the IR end their
     // lines with CR LF.)
-    post.info.written.clear();
+    post.drop_written();
     let vectric = String::from_utf8(postc_backends::convert(&post, Target::Vectric).expect("converts"))
         .expect("text")
         .replace("\r\n", "\n");

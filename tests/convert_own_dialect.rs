@@ -150,10 +150,7 @@ fn programs(name: &str, text: &str, toolpaths: &[PathBuf]) -> Vec<Result<Vec<Vec
 /// (`written`), converted back.
 fn printed_from_the_ir(path: &Path) -> String {
     let mut post = support::compile_file(path);
-    for t in post.functions.iter_mut().flat_map(|f| &mut f.source) {
-        t.written.clear();
-        t.written_at = 0;
-    }
+    post.drop_written();
     let bytes = postc_backends::convert(&post, Target::Cimco).unwrap_or_else(|e| panic!("{}: {e:?}", path.display()));
     String::from_utf8(bytes).expect("a post is text")
 }

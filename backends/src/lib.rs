@@ -126,7 +126,7 @@ pub(crate) fn as_written(
     let normal = |p: &Post| {
         let mut p = p.clone();
         p.drop_spans();
-        p.info.written.clear();
+        p.drop_written();
         p.info.revision.clear();
         ::ron::to_string(&p).ok()
     };

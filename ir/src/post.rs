@@ -726,6 +726,17 @@ impl Post {
         &self.functions[id.index()]
     }
 
+    /// Forgets the source's text kept as written ([`PostInfo::written`],
+    /// [`SourceText::written`]): a post read from RON alone, or one
+    /// compared with another by what it means.
+    pub fn drop_written(&mut self) {
+        self.info.written.clear();
+        for t in self.functions.iter_mut().flat_map(|f| &mut f.source) {
+            t.written.clear();
+            t.written_at = 0;
+        }
+    }
+
     /// Forgets every span: of the post's name, handlers, functions, scripts, variables,
     /// formats, output lines and loops, and the `Origin` statements. A post whose spans point into
     /// files it does not come with (a RON conversion) drops them, so that

@@ -55,10 +55,7 @@ fn normal(post: &Post) -> Post {
         s.source.clear();
     }
     // How the source spelled it says nothing the IR does not.
-    for t in p.functions.iter_mut().flat_map(|f| &mut f.source) {
-        t.written.clear();
-        t.written_at = 0;
-    }
+    p.drop_written();
     for (f, names) in p.functions.iter_mut().zip(names) {
         if matches!(f.body, Body::Native(_)) {
             f.locals = names.into_iter().skip(f.params.len()).collect();

@@ -68,7 +68,7 @@ fn snapshot(path: &Path) -> (String, bool) {
     let mut sources = postc_report::source_map();
     let (mut post, diagnostics) = postc_front_vectric::compile(path, &bytes, &mut sources);
     // The file as written (`PostInfo::written`) is the fixture itself.
-    post.info.written.clear();
+    post.drop_written();
     let ron = ron::ser::to_string_pretty(&post, ron::ser::PrettyConfig::default()).expect("the IR serializes to RON");
     let mut out = format!(
         "# {}\n\n## handlers\n\n{}\n## post (RON)\n\n{ron}\n\n## diagnostics\n\n",
