@@ -115,8 +115,9 @@ pub fn run(args: Args) -> Result<(), Failed> {
 
 /// Applies the certain fixes to a post file, rewriting it whole (a
 /// temporary file renamed over it) when there is any; the number applied.
-/// A file that is not UTF-8 (Windows-1252) is read byte for character and
-/// written back the same way, so its other bytes do not change.
+/// The file is read and written back as it is stored (`super::stored`:
+/// UTF-8 or a byte per character, a BOM, CR LF), so its other bytes do
+/// not change.
 fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Diagnostic> {
     let io = |e: std::io::Error| Diagnostic::error(codes::IO003, format!("cannot fix `{}`: {e}", file.display()));
     let bytes = std::fs::read(file).map_err(io)?;
@@ -127,16 +128,14 @@ fn fix(file: &std::path::Path, dialect: Option<DialectArg>) -> Result<usize, Dia
             None => return Ok(0),
         },
     };
-    let (text, utf8) = match String::from_utf8(bytes) {
-        Ok(t) => (t, true),
-        Err(e) => (e.into_bytes().iter().map(|&b| char::from(b)).collect(), false),
-    };
+    let (text, how) = super::stored::decode(&bytes);
     let fixes = postc_lsp::analysis::fixes(dialect, &text, 0, text.len());
     if fixes.is_empty() {
         return Ok(0);
     }
     let fixed = postc_lsp::analysis::apply(&text, &fixes);
-    let out: Vec<u8> = if utf8 { fixed.into_bytes() } else { fixed.chars().map(|c| c as u32 as u8).collect() };
+    let out = super::stored::encode(&fixed, how)
+        .map_err(|e| Diagnostic::error(codes::IO003, format!("cannot fix `{}`: {e}", file.display())))?;
     // The fixed post replaces the file (keeping its mode), through a
     // temporary file beside it (docs/outputs.md).
     super::outputs::write_whole(file, &out, &[], None)?;

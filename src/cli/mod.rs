@@ -45,6 +45,7 @@ mod profile;
 pub mod report;
 mod serve;
 pub mod sink;
+mod stored;
 mod toolpath;
 mod trace;
 pub(crate) mod verify;

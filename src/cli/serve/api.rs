@@ -14,6 +14,8 @@ use std::rc::Rc;
 use postc_ir::{Diagnostic, Dialect, EventSource, Severity, SourceMap, Span};
 use postc_reader_synthetic::{PATTERNS, Synthetic};
 use postc_runtime::{Finished, Output};
+
+use crate::cli::stored;
 use postc_verify::{Controller, Settings};
 use serde::Deserialize;
 use serde_json::{Value, json};
@@ -555,58 +557,6 @@ fn posts(state: &State) -> Value {
     json!({ "start": state.post.as_ref().map(|p| p.display().to_string()), "corpus": corpus })
 }
 
-/// How a file's text is stored, to write it back the same way.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Stored {
-    utf8: bool,
-    bom: bool,
-    crlf: bool,
-}
-
-const BOM: &[u8] = b"\xEF\xBB\xBF";
-
-/// A file's text as the editor shows it (lines end with `\n`), and how it is stored.
-fn decode(bytes: &[u8]) -> (String, Stored) {
-    let (bom, body) = match bytes.strip_prefix(BOM) {
-        Some(rest) => (true, rest),
-        None => (false, bytes),
-    };
-    let crlf = body.windows(2).any(|w| w == b"\r\n");
-    let (text, utf8) = match std::str::from_utf8(body) {
-        Ok(t) => (t.to_string(), true),
-        // Byte for character, as `postc check --fix` reads such a file.
-        Err(_) => (body.iter().map(|&b| char::from(b)).collect(), false),
-    };
-    let text = if crlf { text.replace("\r\n", "\n") } else { text };
-    (text, Stored { utf8, bom, crlf })
-}
-
-/// The editor's text stored as `how`; a character the file's encoding
-/// cannot hold is an error naming its line.
-fn encode(text: &str, how: Stored) -> Result<Vec<u8>, String> {
-    let text = if how.crlf { text.replace("\r\n", "\n").replace('\n', "\r\n") } else { text.to_string() };
-    let mut out = Vec::with_capacity(text.len() + 3);
-    if how.bom {
-        out.extend_from_slice(BOM);
-    }
-    if how.utf8 {
-        out.extend_from_slice(text.as_bytes());
-        return Ok(out);
-    }
-    for (i, c) in text.char_indices() {
-        match u8::try_from(u32::from(c)) {
-            Ok(b) => out.push(b),
-            Err(_) => {
-                let line = text[..i].matches('\n').count() + 1;
-                return Err(format!(
-                    "line {line}: `{c}` cannot be written in this file's encoding (one byte per character); nothing was saved"
-                ));
-            }
-        }
-    }
-    Ok(out)
-}
-
 #[derive(Deserialize)]
 struct PathRequest {
     path: PathBuf,
@@ -622,7 +572,7 @@ fn open(state: &State, req: PathRequest) -> Result<Value, Reply> {
     }
     let bytes =
         std::fs::read(&path).map_err(|e| Reply::error(404, format!("cannot read `{}`: {e}", req.path.display())))?;
-    let (text, how) = decode(&bytes);
+    let (text, how) = stored::decode(&bytes);
     let dialect = postc_driver::post_dialect(&path, &bytes).map(postc_driver::library::dialect_name);
     Ok(json!({
         "path": req.path.display().to_string(),
@@ -646,10 +596,10 @@ struct SaveRequest {
 fn save(state: &State, req: SaveRequest) -> Result<Value, Reply> {
     let path = state.roots.confine(&req.path, Access::Write).map_err(forbidden)?;
     let how = match std::fs::read(&path) {
-        Ok(bytes) => decode(&bytes).1,
-        Err(_) => Stored { utf8: true, bom: false, crlf: false },
+        Ok(bytes) => stored::decode(&bytes).1,
+        Err(_) => stored::Stored { utf8: true, bom: false, crlf: false },
     };
-    let bytes = encode(&req.text, how).map_err(|e| Reply::error(422, e))?;
+    let bytes = stored::encode(&req.text, how).map_err(|e| Reply::error(422, e))?;
     super::super::outputs::write_whole(&path, &bytes, &[], None).map_err(|d| Reply::error(500, d.message))?;
     Ok(json!({ "path": req.path.display().to_string(), "bytes": bytes.len() }))
 }
