@@ -354,41 +354,43 @@ function Vector(x, y, z) {
   this.x = x;
   this.y = y;
   this.z = z;
-  this.getX = function () { return this.x; };
-  this.getY = function () { return this.y; };
-  this.getZ = function () { return this.z; };
-  this.setX = function (v) { this.x = v; };
-  this.setY = function (v) { this.y = v; };
-  this.setZ = function (v) { this.z = v; };
-  this.getCoordinate = function (i) { return i == 0 ? this.x : (i == 1 ? this.y : this.z); };
-  this.setCoordinate = function (i, v) { if (i == 0) { this.x = v; } else if (i == 1) { this.y = v; } else { this.z = v; } };
-  this.getLength = function () { return Math.sqrt(this.x * this.x + this.y * this.y + this.z * this.z); };
-  this.getLength2 = function () { return this.x * this.x + this.y * this.y + this.z * this.z; };
-  this.length = this.getLength();
-  this.isZero = function () { return this.x == 0 && this.y == 0 && this.z == 0; };
-  this.isNonZero = function () { return !this.isZero(); };
-  this.getNegated = function () { return new Vector(-this.x, -this.y, -this.z); };
-  this.negate = function () { this.x = -this.x; this.y = -this.y; this.z = -this.z; };
-  this.getAbsolute = function () { return new Vector(Math.abs(this.x), Math.abs(this.y), Math.abs(this.z)); };
-  this.getNormalized = function () {
-    var l = this.getLength();
-    return l == 0 ? new Vector(0, 0, 0) : new Vector(this.x / l, this.y / l, this.z / l);
-  };
-  this.normalize = function () { var n = this.getNormalized(); this.x = n.x; this.y = n.y; this.z = n.z; };
-  this.add = function (a, b, c) {
-    if (b === undefined) { this.x += a.x; this.y += a.y; this.z += a.z; } else { this.x += a; this.y += b; this.z += c; }
-  };
-  this.subtract = function (a, b, c) {
-    if (b === undefined) { this.x -= a.x; this.y -= a.y; this.z -= a.z; } else { this.x -= a; this.y -= b; this.z -= c; }
-  };
-  this.multiply = function (f) { this.x *= f; this.y *= f; this.z *= f; };
-  this.divide = function (f) { this.x /= f; this.y /= f; this.z /= f; };
-  this.getXYAngle = function () { return Math.atan2(this.y, this.x); };
-  this.getZAngle = function () { return Math.acos(clamp(-1, this.z / (this.getLength() || 1), 1)); };
-  this.getMinimum = function () { return Math.min(this.x, this.y, this.z); };
-  this.getMaximum = function () { return Math.max(this.x, this.y, this.z); };
-  this.toString = function () { return "(" + this.x + ", " + this.y + ", " + this.z + ")"; };
+  this.length = Math.sqrt(x * x + y * y + z * z);
 }
+// The methods are the prototype's, as the host's own vectors have them,
+// so that `new Vector` makes no functions.
+Vector.prototype.getX = function () { return this.x; };
+Vector.prototype.getY = function () { return this.y; };
+Vector.prototype.getZ = function () { return this.z; };
+Vector.prototype.setX = function (v) { this.x = v; };
+Vector.prototype.setY = function (v) { this.y = v; };
+Vector.prototype.setZ = function (v) { this.z = v; };
+Vector.prototype.getCoordinate = function (i) { return i == 0 ? this.x : (i == 1 ? this.y : this.z); };
+Vector.prototype.setCoordinate = function (i, v) { if (i == 0) { this.x = v; } else if (i == 1) { this.y = v; } else { this.z = v; } };
+Vector.prototype.getLength = function () { return Math.sqrt(this.x * this.x + this.y * this.y + this.z * this.z); };
+Vector.prototype.getLength2 = function () { return this.x * this.x + this.y * this.y + this.z * this.z; };
+Vector.prototype.isZero = function () { return this.x == 0 && this.y == 0 && this.z == 0; };
+Vector.prototype.isNonZero = function () { return !this.isZero(); };
+Vector.prototype.getNegated = function () { return new Vector(-this.x, -this.y, -this.z); };
+Vector.prototype.negate = function () { this.x = -this.x; this.y = -this.y; this.z = -this.z; };
+Vector.prototype.getAbsolute = function () { return new Vector(Math.abs(this.x), Math.abs(this.y), Math.abs(this.z)); };
+Vector.prototype.getNormalized = function () {
+  var l = this.getLength();
+  return l == 0 ? new Vector(0, 0, 0) : new Vector(this.x / l, this.y / l, this.z / l);
+};
+Vector.prototype.normalize = function () { var n = this.getNormalized(); this.x = n.x; this.y = n.y; this.z = n.z; };
+Vector.prototype.add = function (a, b, c) {
+  if (b === undefined) { this.x += a.x; this.y += a.y; this.z += a.z; } else { this.x += a; this.y += b; this.z += c; }
+};
+Vector.prototype.subtract = function (a, b, c) {
+  if (b === undefined) { this.x -= a.x; this.y -= a.y; this.z -= a.z; } else { this.x -= a; this.y -= b; this.z -= c; }
+};
+Vector.prototype.multiply = function (f) { this.x *= f; this.y *= f; this.z *= f; };
+Vector.prototype.divide = function (f) { this.x /= f; this.y /= f; this.z /= f; };
+Vector.prototype.getXYAngle = function () { return Math.atan2(this.y, this.x); };
+Vector.prototype.getZAngle = function () { return Math.acos(clamp(-1, this.z / (this.getLength() || 1), 1)); };
+Vector.prototype.getMinimum = function () { return Math.min(this.x, this.y, this.z); };
+Vector.prototype.getMaximum = function () { return Math.max(this.x, this.y, this.z); };
+Vector.prototype.toString = function () { return "(" + this.x + ", " + this.y + ", " + this.z + ")"; };
 function __vector(v) { return new Vector(v.x, v.y, v.z); }
 function __Vector_sum(a, b) { return new Vector(a.x + b.x, a.y + b.y, a.z + b.z); };
 function __Vector_diff(a, b) { return new Vector(a.x - b.x, a.y - b.y, a.z - b.z); };
