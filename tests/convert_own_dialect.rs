@@ -96,6 +96,85 @@ fn a_post_converted_to_its_own_dialect_changes_the_lines_docs_convert_md_lists()
     }
 }
 
+/// Fusion posts of `../shared/corpus/fusion/` that convert to Fusion with
+/// only the note added, at least (212 posts; the others do not compile:
+/// JavaScript postc does not read, or host API it does not run).
+const FUSION_AS_WRITTEN_AT_LEAST: usize = 201;
+
+/// Every Fusion post of the corpus that postc compiles converts to `.cps`
+/// as its file is written, with the conversion note as its one changed
+/// line (a byte order mark stays first), and converting the result again
+/// gives the same text (every tenth post, for the test's time: each
+/// conversion compiles the post twice).
+#[test]
+fn fusion_corpus_posts_convert_to_fusion_with_only_the_note_added() {
+    let dir = crate::fusion_corpus::shared();
+    if !dir.is_dir() {
+        support::referee_missing("convert_own_dialect", "../shared/corpus/fusion");
+        return;
+    }
+    let posts = crate::fusion_corpus::posts(&dir);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
+    // Compiling a large post recurses deeply in a debug build: the workers
+    // have big stacks.
+    let results: Vec<Result<bool, String>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|_| {
+                let (posts, next) = (&posts, &next);
+                std::thread::Builder::new()
+                    .stack_size(256 << 20)
+                    .spawn_scoped(scope, move || {
+                        let mut done = Vec::new();
+                        loop {
+                            let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                            let Some(path) = posts.get(i) else { break };
+                            // Every tenth is converted a second time too.
+                            done.push(fusion_as_written(path, i % 10 == 0));
+                        }
+                        done
+                    })
+                    .expect("spawn a worker")
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    });
+    let failures: Vec<String> = results.iter().filter_map(|r| r.as_ref().err().cloned()).collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    let as_written = results.iter().filter(|r| matches!(r, Ok(true))).count();
+    assert!(
+        as_written >= FUSION_AS_WRITTEN_AT_LEAST,
+        "{as_written} Fusion corpus posts convert as written, fewer than {FUSION_AS_WRITTEN_AT_LEAST}"
+    );
+}
+
+/// A Fusion post converted to Fusion: `Ok(true)` as written, with the
+/// note its one changed line (and, `again`, the same text when converted
+/// again); `Ok(false)` when postc does not compile the post.
+fn fusion_as_written(path: &Path, again: bool) -> Result<bool, String> {
+    let Ok(post) = support::compile_warned(path) else { return Ok(false) };
+    let source = std::fs::read(path).expect("a corpus post");
+    let printed = postc_backends::convert(&post, Target::Fusion).map_err(|e| format!("{}: {e:?}", path.display()))?;
+    let (source, printed) = (String::from_utf8_lossy(&source), String::from_utf8_lossy(&printed));
+    let changed = changed_lines(&source, &printed);
+    let bom_first = !source.starts_with('\u{feff}') || printed.starts_with('\u{feff}');
+    if changed != 1 || !bom_first {
+        return Err(format!("{}: {changed} lines changed", path.display()));
+    }
+    if !again {
+        return Ok(true);
+    }
+    // Read back under the source's path, where the files it includes are.
+    let mut sources = postc_report::source_map();
+    let (again, _) = postc_front_cimco::fusion::compile(path, printed.as_bytes(), &mut sources);
+    let twice =
+        postc_backends::convert(&again, Target::Fusion).map_err(|e| format!("{}: again: {e:?}", path.display()))?;
+    if String::from_utf8_lossy(&twice) != printed {
+        return Err(format!("{}: converting the converted post again changes it", path.display()));
+    }
+    Ok(true)
+}
+
 /// `var name = 10;`, `var name = true;` at the top level: the setting's
 /// line, its name and its changed value.
 fn settings(source: &str) -> Vec<(String, String, String)> {

@@ -3,20 +3,36 @@
 //!
 //! A Vectric post (driven by the kind of each move, its sections output
 //! lines) prints through [`crate::js_sections`] with Fusion's entry
-//! points. Posts of the other dialects are refused (`CV012`) until their
-//! forms are written.
+//! points. A Fusion post prints as its file was written, after the
+//! conversion note, when the Fusion frontend reads that text back as the
+//! same post ([`crate::as_written`]). Posts of the other dialects are
+//! refused (`CV012`) until their forms are written.
 
 use postc_ir::{Diagnostic, Dialect, Post, codes};
 
 /// Prints `post` as a `.cps` post, with the conversion's warnings, or says
 /// why it cannot be one.
 pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
+    if post.info.dialect == Dialect::Fusion {
+        let note = format!("// {}{} (Autodesk Fusion)", postc_ir::post::CONVERSION_NOTE, crate::source_name(post));
+        return match crate::as_written(post, Dialect::Fusion, &note, postc_front_cimco::fusion::compile, |t| {
+            Some(t.as_bytes().to_vec())
+        }) {
+            Some(bytes) => Ok((bytes, Vec::new())),
+            None => Err(vec![crate::cimco::refusal(
+                codes::CV012.code,
+                post.info.span,
+                "this Fusion post is not kept as its file was written (a RON post, or a file that is not UTF-8), and a Fusion post prints only as written".into(),
+                "docs/convert.md, \"Fusion posts\"",
+            )]),
+        };
+    }
     if post.info.dialect != Dialect::Vectric {
         return Err(vec![crate::cimco::refusal(
             codes::CV012.code,
             post.info.span,
             format!(
-                "a {} post does not convert to Fusion yet: only Vectric posts do",
+                "a {} post does not convert to Fusion yet: only Vectric and Fusion posts do",
                 crate::dialect_name(post.info.dialect)
             ),
             "docs/convert.md, \"Fusion posts\"",

@@ -112,15 +112,19 @@ pub(crate) fn as_written(
     if written.is_empty() || post.info.dialect != dialect {
         return None;
     }
-    // A converted post's own note is not the source's.
-    let mut body = written;
+    // A byte order mark stays first; a converted post's own note is not
+    // the source's.
+    let (bom, mut body) = match written.strip_prefix('\u{feff}') {
+        Some(rest) => ("\u{feff}", rest),
+        None => ("", written),
+    };
     while let Some(line) = body.split_inclusive('\n').next()
-        && postc_ir::post::is_conversion_note(line.trim_start_matches(['\u{feff}', '+', '\'', '/']))
+        && postc_ir::post::is_conversion_note(line.trim_start_matches(['+', '\'', '/']))
     {
         body = &body[line.len()..];
     }
     let eol = if written.contains("\r\n") { "\r\n" } else { "\n" };
-    let bytes = encode(&format!("{note}{eol}{body}"))?;
+    let bytes = encode(&format!("{bom}{note}{eol}{body}"))?;
     let mut sources = postc_ir::SourceMap::new();
     let (back, diagnostics) = compile(std::path::Path::new(&post.info.source), &bytes, &mut sources);
     let normal = |p: &Post| {
@@ -128,9 +132,36 @@ pub(crate) fn as_written(
         p.drop_spans();
         p.drop_written();
         p.info.revision.clear();
-        ::ron::to_string(&p).ok()
+        ::ron::to_string(&p).ok().map(|t| without_offsets(&t))
     };
     (!diagnostics.iter().any(Diagnostic::is_error) && normal(&back) == normal(post)).then_some(bytes)
+}
+
+/// A JavaScript frontend names the temporaries of a destructuring pattern
+/// and of a pattern parameter by the pattern's offset in the file
+/// (`__postc_d1234`, `__postc_p1234`): a line added before it moves the
+/// offset as it moves the spans, which the comparison of [`as_written`]
+/// leaves out alike.
+fn without_offsets(ron: &str) -> String {
+    const TEMP: &str = "__postc_";
+    let mut out = String::with_capacity(ron.len());
+    let mut rest = ron;
+    while let Some(i) = rest.find(TEMP) {
+        let after = &rest[i + TEMP.len()..];
+        let offset = after.strip_prefix(['d', 'p']).filter(|a| a.starts_with(|c: char| c.is_ascii_digit()));
+        match offset {
+            Some(digits) => {
+                out.push_str(&rest[..i + TEMP.len() + 1]);
+                rest = digits.trim_start_matches(|c: char| c.is_ascii_digit());
+            }
+            None => {
+                out.push_str(&rest[..i + TEMP.len()]);
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
 }
 
 /// The file name of the post's source, without its folder.

@@ -71,6 +71,9 @@ pub fn support(name: &str) -> Support {
 /// Compiles a Fusion post: the IR and every diagnostic, sorted by position.
 pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec<Diagnostic>) {
     let text = String::from_utf8_lossy(bytes).into_owned();
+    // The file as written, for a conversion to its own dialect; a file that
+    // is not UTF-8 is read with replacement characters, which are not it.
+    let written = std::str::from_utf8(bytes).map_or_else(|_| String::new(), str::to_string);
     let file = sources.add(path.display().to_string(), text);
     let host_file = sources.add(HOST_NAME.to_string(), HOST.to_string());
     let text = sources.text(file).unwrap_or_default();
@@ -86,6 +89,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     post.info.source = path.display().to_string();
     post.info.name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     post.info.file_extension = "nc".into();
+    post.info.written = written;
     // What the post says of itself: its name as Fusion's post library shows
     // it (`description`) and its files' extension. The host gives both a
     // default, so in the merged program neither is a constant: they are
