@@ -87,6 +87,10 @@ const OWN: &[&str] = &[
     "vbMin",
     "vbMax",
     "vbChr",
+    "vbFormat",
+    "vbTrunc",
+    "aptTake",
+    "aptFeedTo",
     "onOpen",
     "onLinear",
     "onCircular",
@@ -771,6 +775,7 @@ impl Printer<'_> {
                     Builtin::Str => format!("vbText({})", arg(0)),
                     Builtin::Val => format!("vbVal({})", arg(0)),
                     Builtin::Chr => format!("vbChr({})", arg(0)),
+                    Builtin::FormatPicture if a.len() == 2 => format!("vbFormat({}, {})", arg(0), arg(1)),
                     other => {
                         self.cannot(&format!("the built-in {other:?}"));
                         String::new()
@@ -932,7 +937,7 @@ const NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, onCircu
 ";
 
 /// BASIC's values and built-ins as the runtime computes them.
-const BASIC: &str = r#"// BASIC's values as the source's engine computes them.
+const BASIC: &str = r##"// BASIC's values as the source's engine computes them.
 function vbNum(a) {
     if (typeof a == "number") {
         return a;
@@ -1048,6 +1053,35 @@ function vbVal(a) {
     return /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)$/.test(m) ? Number(m) : 0;
 }
 
+// Format(value, "000.0##"): zeros are digits always written, # digits
+// written when they are not trailing zeros.
+function vbFormat(a, picture) {
+    var v = vbNum(a);
+    var pic = vbText(picture);
+    var dot = pic.indexOf(".");
+    var intPic = dot < 0 ? pic : pic.substring(0, dot);
+    var fracPic = dot < 0 ? "" : pic.substring(dot + 1);
+    var fixed = fracPic.split("0").length - 1;
+    var optional = fracPic.split("#").length - 1;
+    var decimals = fixed + optional;
+    var rounded = vbRound(v, decimals);
+    var text = Math.abs(rounded).toFixed(decimals);
+    if (optional > 0) {
+        while (text.charAt(text.length - 1) == "0" && text.length - text.indexOf(".") - 1 > fixed) {
+            text = text.substring(0, text.length - 1);
+        }
+        if (text.charAt(text.length - 1) == ".") {
+            text = text.substring(0, text.length - 1);
+        }
+    }
+    var minInt = intPic.split("0").length - 1;
+    var intLen = text.indexOf(".") < 0 ? text.length : text.indexOf(".");
+    if (intLen < minInt) {
+        text = repeatText("0", minInt - intLen) + text;
+    }
+    return rounded < 0 ? "-" + text : text;
+}
+
 function vbChr(a) {
     return String.fromCharCode(vbNum(a));
 }
@@ -1093,4 +1127,4 @@ function aptEnd(text) {
         }
     }
 }
-"#;
+"##;
