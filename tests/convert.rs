@@ -380,7 +380,8 @@ fn postp_controllers_convert() {
         let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
         let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
         let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
-        let refusals = postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no section form");
+        let refusals =
+            postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no section form");
         assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
         // CNC-Calc runs APT-word Subs through an adapter, but hands no part
         // name for PARTNO (tests/convert_apt_cimco.rs).

@@ -865,6 +865,10 @@ impl Printer<'_> {
             }
             Expr::Unary(UnaryOp::Neg, a) => format!("-{}", self.atom(a, f)),
             Expr::Unary(UnaryOp::Not, a) => format!("Not {}", self.atom(a, f)),
+            Expr::Unary(op, _) => {
+                self.cannot(&format!("the operator {op:?}"), None);
+                String::new()
+            }
             Expr::Binary(BinaryOp::Concat, ..) => {
                 // `&` is associative on text: a chain prints flat, and text
                 // with control characters joins it as `"a" & Chr(10)`.
@@ -1001,6 +1005,15 @@ fn expr_name(e: &Expr) -> &'static str {
         Expr::Number(_) => "a number that is not finite",
         Expr::Quantity(_) => "a value the runtime gives by name (a Vectric label)",
         Expr::FormatVar { .. } | Expr::Format { .. } => "formatting a value through a CIMCO variable or format",
+        Expr::Undefined => "`undefined`",
+        Expr::Array(_) => "an array",
+        Expr::Object(_) => "an object",
+        Expr::Member(..) => "a property or an element of an object or array",
+        Expr::Invoke { .. } | Expr::CallValue(..) => "a method call",
+        Expr::Output(_) => "an output variable or format as a value",
+        Expr::Closure { .. } => "a function as a value",
+        Expr::Host { .. } => "a host object's function",
+        Expr::This | Expr::Arguments => "`this` or `arguments`",
         _ => "an expression",
     }
 }
