@@ -5,8 +5,9 @@
 //! converts runs under the Node.js CNC-Calc host (`tests/node_host/`) over
 //! a job of moves only, what CNC-Calc hands a post, and must print byte
 //! for byte what `postc post` prints for the SOURCE post (and so must
-//! postc's own CNC-Calc host running the converted post). Each that is
-//! refused names the constructs that stop it. The test prints the table
+//! postc's own CNC-Calc host running the converted post, the converted
+//! post converted to CNC-Calc again, and the source converted through
+//! RON). Each that is refused names the constructs that stop it. The test prints the table
 //! docs/convert.md records. Without Node.js the comparison is skipped,
 //! with a message, and fails under `CI=true`.
 
@@ -180,6 +181,31 @@ fn judge(name: &str, post: &Post, dir: &Path, node: bool, failures: &mut Vec<Str
         Err(e) => {
             same = false;
             failures.push(format!("{name}: postc's CNC-Calc host fails: {e}"));
+        }
+    }
+    // Round trips post like the source: the CNC-Calc post converted to
+    // CNC-Calc again (printed as written), and the source through RON.
+    let again = postc_backends::convert(&js, Target::Cimco).map_err(|d| format!("{:?}", d[0].message));
+    let ron = postc_backends::convert(post, Target::Ron).map_err(|d| format!("{:?}", d[0].message));
+    let through_ron = ron.and_then(|r| {
+        let back = compile_text(&format!("{name}.ron"), &String::from_utf8_lossy(&r));
+        postc_backends::convert(&back, Target::Cimco).map_err(|d| format!("{:?}", d[0].message))
+    });
+    for (how, printed) in [("CNC-Calc -> CNC-Calc", again), ("RON -> CNC-Calc", through_ron)] {
+        let program = printed.and_then(|t| {
+            let p = compile_text(&format!("{name}.js"), &String::from_utf8_lossy(&t));
+            post_toolpath(&p, &toolpath)
+        });
+        match program {
+            Ok(got) if got == want => {}
+            Ok(got) => {
+                same = false;
+                failures.push(format!("{name}: the round trip {how} prints another program\n{}", diff(&want, &got)));
+            }
+            Err(e) => {
+                same = false;
+                failures.push(format!("{name}: the round trip {how} fails: {e}"));
+            }
         }
     }
     if node {
