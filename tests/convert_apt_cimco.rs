@@ -137,7 +137,7 @@ Sub LOADTL
   Out "T" & T & " M6"
 End Sub
 Sub FINI
-  Out "<N> M30 (" & Moves & " MOVES, " & Left(UCase("done and dusted"), 4) & Mid("abcdef", 2, 3) & Len("xyz") & ")"
+  Out "<N> M30 (" & Moves & " MOVES, N" & N & " " & Left(UCase("done and dusted"), 4) & Mid("abcdef", 2, 3) & Len("xyz") & ")"
   Out "%"
 End Sub
 "#;

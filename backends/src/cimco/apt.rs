@@ -692,6 +692,8 @@ impl Printer<'_> {
             Expr::Bool(b) => b.to_string(),
             Expr::Null => "null".into(),
             Expr::Local(k) => self.local(k.index(), f),
+            // `N` read as a value: the number the next `<N>` prints.
+            Expr::Quantity(Quantity::BlockNumber) => "aptBlock.next".into(),
             Expr::Global(g) => self.globals.get(g.index()).cloned().unwrap_or_default(),
             Expr::Var(v) => match self.registers.get(v.index()).cloned().flatten() {
                 Some(n) => format!("{n}.value"),
