@@ -363,7 +363,8 @@ GOTO/20,0,-31\nCOOLNT/OFF\nSPINDL/OFF\nFINI\n";
 
 /// The eight `postp` controllers: each controller post, compiled with its
 /// options for a CL file, converts to RON and to VcPost (and is refused by
-/// Vectric: it runs one Sub per APT word), and posting the CL file through
+/// Vectric: it runs one Sub per APT word; and by CNC-Calc: its PARTNO
+/// prints the part name), and posting the CL file through
 /// the converted posts writes the same program as through the source.
 #[test]
 fn postp_controllers_convert() {
@@ -379,10 +380,16 @@ fn postp_controllers_convert() {
         let head = postc_postp::head(cl, Some(controller), &mut sources).expect("the demo CL file's head");
         let options = postc_postp::load_options(controller, None, &mut sources).expect("the controller's options");
         let source = postc_postp::compile(&head, &options, &mut sources).expect("the controller's post");
-        for target in [Target::Vectric, Target::Cimco] {
-            let refusals = postc_backends::convert(&source, target).expect_err("APT-word posts have no section form");
-            assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
-        }
+        let refusals =
+            postc_backends::convert(&source, Target::Vectric).expect_err("APT-word posts have no section form");
+        assert!(refusals.iter().any(|d| d.code == "CV001"), "{controller:?}: {refusals:?}");
+        // CNC-Calc runs APT-word Subs through an adapter, but hands no part
+        // name for PARTNO (tests/convert_apt_cimco.rs).
+        let refusals = postc_backends::convert(&source, Target::Cimco).expect_err("PARTNO reads the part name");
+        assert!(
+            refusals.iter().all(|d| d.code == "CV007" && d.message.contains("PARTNO")),
+            "{controller:?}: {refusals:?}"
+        );
         let ron = postc_backends::convert(&source, Target::Ron).expect("every post converts to RON");
         let pin = corpus().join("converted/ron/postp").join(format!("{}.ron", controller.name()));
         if let Err(e) = check_golden(&pin, &ron) {
@@ -563,6 +570,42 @@ fn a_handwritten_vcpost_section_post_posts_as_its_vectric_twin() {
     let (_, diags) = compile_bytes(Path::new("wrong.VcPost"), wrong.as_bytes(), None);
     assert!(diags.iter().any(|d| d.starts_with("VC021")), "{diags:?}");
     assert!(diags.iter().any(|d| d.starts_with("VC020")), "{diags:?}");
+}
+
+/// `Postc.ModalMemory = "Program"` keeps what `Modal` registers printed
+/// across toolpaths (CNC-Calc's rule), `"Toolpath"` (the default) forgets
+/// it as each toolpath starts (Vectric's); the VcPost backend prints the
+/// statement, so a post that keeps its memory converts and posts the same.
+#[test]
+fn vcpost_modal_memory_for_the_whole_program() {
+    let body = "X.Modal = True\nZ.Modal = True\nSub RAPID_MOVE\n  Out \"G0<X><Z>\"\nEnd Sub\n\
+        Sub FEED_MOVE\n  Out \"G1<X><Z>\"\nEnd Sub\n";
+    let program = |text: &str| {
+        let (Some(p), diags) = compile_bytes(Path::new("modal.VcPost"), text.as_bytes(), None) else {
+            panic!("compiles: {text}")
+        };
+        assert!(diags.is_empty(), "{diags:?}");
+        p
+    };
+    let kept = program(&format!("Postc.ModalMemory = \"Program\"\n{body}"));
+    let forgot = program(&format!("Postc.ModalMemory = \"Toolpath\"\n{body}"));
+    assert!(!kept.options.forget_modal_at_toolpath_start);
+    assert!(forgot.options.forget_modal_at_toolpath_start);
+    let toolpath = corpus().join("toolpaths/standard.ron");
+    let (k, _) = post(&kept, &toolpath);
+    let (f, _) = post(&forgot, &toolpath);
+    let (k, f) = (k.expect("posts").concat(), f.expect("posts").concat());
+    assert!(k.len() < f.len(), "the whole program's memory prints fewer words");
+    // Printed from the IR (not as written), the statement comes back.
+    let mut from_ir = kept.clone();
+    from_ir.drop_written();
+    let text = postc_backends::convert(&from_ir, Target::VcPost).expect("converts");
+    let text = String::from_utf8(text).expect("UTF-8");
+    assert!(text.contains("Postc.ModalMemory = \"Program\""), "{text}");
+    let back = program(&text);
+    assert_eq!(post(&back, &toolpath).0.expect("posts").concat(), k);
+    let (_, diags) = compile_bytes(Path::new("bad.VcPost"), b"Postc.ModalMemory = \"Job\"\n", None);
+    assert!(diags.iter().any(|d| d.starts_with("VC021")), "{diags:?}");
 }
 
 /// A CIMCO section post written by hand (postc's extension, docs/cimco.md)
@@ -884,10 +927,7 @@ fn regular_expressions_are_refused_by_dialects_without_them() {
     let js = "var linebreak = \"\\n\";\nfunction clean(t) {\n    var r = t.replace(/[()]/g, \"\");\n    return r;\n}\nfunction onLinear(x, y, z, m) { return clean(\"(G1)\") + linebreak; }\n";
     let compiled = postc_driver::compile_post_bytes(Path::new("regex.js"), js.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
-    let mut post = compiled.post.expect("a post");
-    // Past what VcPost refuses first (CNC-Calc's modal memory kept across
-    // toolpaths), to the code.
-    post.options.forget_modal_at_toolpath_start = true;
+    let post = compiled.post.expect("a post");
     for target in [Target::Vectric, Target::VcPost] {
         let d = match postc_backends::convert(&post, target) {
             Ok(_) => panic!("{target:?} converted a post with a regular expression"),

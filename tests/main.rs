@@ -21,6 +21,7 @@ mod cimco_node;
 mod cimco_runtime;
 mod cimco_styles;
 mod convert;
+mod convert_apt_cimco;
 mod convert_fusion;
 mod convert_native;
 mod convert_own_dialect;

@@ -1461,7 +1461,7 @@ function textWord(w, value) {
 
 /// The number formats and modal words of Vectric variables, written out
 /// in the post (docs/convert.md, \"Native CNC-Calc posts\").
-const LIBRARY: &str = r#"// Vectric's number formats: the value times the multiplier, rounded half
+pub(crate) const LIBRARY: &str = r#"// Vectric's number formats: the value times the multiplier, rounded half
 // away from zero on its shortest decimal form, padded to the width.
 // A modal word prints when its value differs from the one it printed
 // last (`byValue`, Vectric's rule) or when its text does.
@@ -1580,7 +1580,7 @@ function word(w, value) {
 "#;
 
 /// A format as the object `formatNumber` reads.
-fn format_object(f: &NumberFormat) -> String {
+pub(crate) fn format_object(f: &NumberFormat) -> String {
     format!(
         "{{decimals: {}, width: {}, integerWidth: {}, zeroPad: {}, left: {}, signAlways: {}, pointAlways: {}, trimZeros: {}, leadingZero: {}, mark: {}, multiplier: {}, prefix: {}, negativeZero: {}}}",
         f.decimals,

@@ -17,7 +17,7 @@
 //!   conversions, `Continue`, null) is `CV002`;
 //! - a register format the register properties cannot set is `CV003`;
 //! - an output option no VcPost statement sets (a lathe, a chord
-//!   tolerance, modal memory kept across toolpaths) is `CV004`;
+//!   tolerance) is `CV004`;
 //! - a runtime value no register can print (outside a section post, or a
 //!   second variable of one label) is `CV005`.
 //!
@@ -52,7 +52,7 @@ pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
     {
         return Ok(bytes);
     }
-    let mut p = Printer { post, out: String::new(), errors: Vec::new(), names: Names::default() };
+    let mut p = Printer { post, out: String::new(), errors: Vec::new(), names: Names::default(), within: None };
     p.check_shape();
     if !p.errors.is_empty() {
         return Err(p.errors);
@@ -135,6 +135,9 @@ struct Printer<'p> {
     out: String,
     errors: Vec<Diagnostic>,
     names: Names,
+    /// The Sub, Function or section being printed, and where it is in the
+    /// source: a construct without a place of its own is refused there.
+    within: Option<(String, Option<Span>)>,
 }
 
 impl Printer<'_> {
@@ -194,10 +197,6 @@ impl Printer<'_> {
             ("exact arcs", o.exact_arcs != d.exact_arcs),
             ("a step budget", o.step_budget != d.step_budget),
             ("a lathe mapping", o.lathe != d.lathe),
-            (
-                "modal memory kept across toolpaths",
-                o.forget_modal_at_toolpath_start != d.forget_modal_at_toolpath_start,
-            ),
         ];
         for (what, yes) in differs {
             if yes {
@@ -365,6 +364,9 @@ impl Printer<'_> {
             if value {
                 lines.push(format!("Postc.{name} = True"));
             }
+        }
+        if !o.forget_modal_at_toolpath_start {
+            lines.push("Postc.ModalMemory = \"Program\"".into());
         }
         if let Some(d) = &info.direct_output {
             lines.push(format!("Postc.DirectOutput = {}", text_literal(d)));
@@ -543,7 +545,7 @@ impl Printer<'_> {
                 other => {
                     self.refuse(
                         codes::CV002.code,
-                        None,
+                        g.span,
                         format!("global `{}` starts as {other:?}", g.name),
                         "VcPost variables start as a number, a text or a Boolean",
                     );
@@ -587,7 +589,9 @@ impl Printer<'_> {
             self.comment(&CommentTarget::Handler(h.key.clone()));
             self.line(0, &format!("Sub {}", section.name()));
             let body = h.body.clone();
+            self.within = Some((format!("the {} section", section.name()), h.span));
             self.block(&body, None, 1);
+            self.within = None;
             self.line(0, "End Sub");
             self.line(0, "");
         }
@@ -681,7 +685,9 @@ impl Printer<'_> {
                 }
             }
             let body = body.to_vec();
+            self.within = Some((format!("`{}`", f.name), f.span));
             self.block(&body, Some(i), 1);
+            self.within = None;
             self.line(0, &format!("End {word}"));
             self.line(0, "");
         }
@@ -760,16 +766,17 @@ impl Printer<'_> {
         f.and_then(|i| self.post.functions.get(i)).map(|func| self.kind(func))
     }
 
+    /// Refuses one construct, once per Sub (or section) it stands in, at
+    /// its place in the source, else at the Sub's.
     fn cannot(&mut self, what: &str, span: Option<Span>) {
-        if self.errors.iter().any(|e| e.message.contains(what)) {
+        let (message, span) = match &self.within {
+            Some((name, at)) => (format!("{name} uses {what}, which VcPost has no form for"), span.or(*at)),
+            None => (format!("the post uses {what}, which VcPost has no form for"), span),
+        };
+        if self.errors.iter().any(|e| e.message == message) {
             return;
         }
-        self.refuse(
-            codes::CV002.code,
-            span,
-            format!("the post uses {what}, which VcPost has no form for"),
-            "VcPost has BASIC's statements and operators only",
-        );
+        self.refuse(codes::CV002.code, span, message, "VcPost has BASIC's statements and operators only");
     }
 
     fn place(&mut self, place: Place, f: Option<usize>) -> String {
@@ -858,6 +865,10 @@ impl Printer<'_> {
             }
             Expr::Unary(UnaryOp::Neg, a) => format!("-{}", self.atom(a, f)),
             Expr::Unary(UnaryOp::Not, a) => format!("Not {}", self.atom(a, f)),
+            Expr::Unary(op, _) => {
+                self.cannot(&format!("the operator {op:?}"), None);
+                String::new()
+            }
             Expr::Binary(BinaryOp::Concat, ..) => {
                 // `&` is associative on text: a chain prints flat, and text
                 // with control characters joins it as `"a" & Chr(10)`.
@@ -994,6 +1005,15 @@ fn expr_name(e: &Expr) -> &'static str {
         Expr::Number(_) => "a number that is not finite",
         Expr::Quantity(_) => "a value the runtime gives by name (a Vectric label)",
         Expr::FormatVar { .. } | Expr::Format { .. } => "formatting a value through a CIMCO variable or format",
+        Expr::Undefined => "`undefined`",
+        Expr::Array(_) => "an array",
+        Expr::Object(_) => "an object",
+        Expr::Member(..) => "a property or an element of an object or array",
+        Expr::Invoke { .. } | Expr::CallValue(..) => "a method call",
+        Expr::Output(_) => "an output variable or format as a value",
+        Expr::Closure { .. } => "a function as a value",
+        Expr::Host { .. } => "a host object's function",
+        Expr::This | Expr::Arguments => "`this` or `arguments`",
         _ => "an expression",
     }
 }

@@ -16,6 +16,7 @@
 //!
 //! Everything else is refused with a diagnostic per reason (`docs/convert.md`).
 
+mod apt;
 pub(crate) mod body;
 mod check;
 mod code;
@@ -28,6 +29,8 @@ use postc_ir::{CommentTarget, Diagnostic, Dialect, Post, Span};
 pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
     if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
         code::print(post).map(|t| (t, Vec::new()))
+    } else if post.info.dispatch == postc_ir::post::Dispatch::AptWords {
+        apt::print(post)
     } else {
         crate::js_sections::print(post, crate::js_sections::Host::Cimco)
     }

@@ -18,6 +18,7 @@
 //! | `TapeSplitLines`, `TapeSplitTolerance`, `TapeSplitName`, `TapeSplitStart`, `TapeSplitIndexFirst` | number, number, text, number, `True`/`False` | `TAPE_SPLITTING = MAX TOL "FORMAT" START "INDEX_ON_FIRST"` (splitting is on once `TapeSplitLines` is set) |
 //! | `Revision` | text | none: what `[REVISION]` prints, the hash of the Vectric post it was converted from (docs/vectric.md) |
 //! | `OnChangeByValue`, `RapidForgetsFeed` | `True`/`False` | none: what VCarve's engine does (docs/vectric.md): a `Modal` register prints when its value changes, not its text; the feed prints again on the first feed move after a rapid |
+//! | `ModalMemory` | `"Toolpath"` or `"Program"` | none: how long a `Modal` register remembers what it printed, until each toolpath starts (Vectric's rule, the default) or for the whole program (CNC-Calc's) |
 
 use postc_ir::post::{RotaryWrap, SpindleSpeedRange, Substitution, TapeSplitting, WrappedAxis};
 use postc_ir::{Diagnostic, OutputOptions, PostInfo, Units};
@@ -52,6 +53,7 @@ pub const PROPERTIES: &[&str] = &[
     "TapeSplitIndexFirst",
     "OnChangeByValue",
     "RapidForgetsFeed",
+    "ModalMemory",
     "Revision",
 ];
 
@@ -191,6 +193,15 @@ impl Lowerer<'_> {
                 info.direct_output = Some(t);
                 Ok(())
             }
+            ("ModalMemory", Some(Value::Text(t))) if t.eq_ignore_ascii_case("toolpath") => {
+                options.forget_modal_at_toolpath_start = true;
+                Ok(())
+            }
+            ("ModalMemory", Some(Value::Text(t))) if t.eq_ignore_ascii_case("program") => {
+                options.forget_modal_at_toolpath_start = false;
+                Ok(())
+            }
+            ("ModalMemory", _) => Err(bad("\"Toolpath\" or \"Program\"")),
             ("Revision", Some(Value::Text(t))) => {
                 info.revision = t;
                 Ok(())
