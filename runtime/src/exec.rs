@@ -531,6 +531,10 @@ pub struct Function {
     /// Parameters plus locals.
     pub slots: u16,
     pub body: Body,
+    /// The post's function this one runs for: itself, or the function a
+    /// specialised copy was made from (`prepare/factories.rs`), whose name
+    /// and span diagnostics, `--trace` and `--profile` report.
+    pub origin: FunctionId,
 }
 
 impl Function {
@@ -672,8 +676,9 @@ fn reads_this(f: &postc_ir::Function) -> bool {
 }
 
 /// The runtime form of a post function.
-pub fn function(f: &postc_ir::Function) -> Function {
+pub fn function(id: FunctionId, f: &postc_ir::Function) -> Function {
     Function {
+        origin: id,
         params: f.params.len(),
         uses_arguments: f.uses_arguments,
         uses_this: reads_this(f),

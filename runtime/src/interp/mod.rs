@@ -1174,9 +1174,10 @@ impl Engine<'_> {
     /// Calls a post function with arguments.
     pub fn call(&mut self, f: FunctionId, args: Vec<Value>) -> Result<Value> {
         let (post, code) = (self.post, self.code);
-        let (Some(function), Some(runnable)) = (post.functions.get(f.index()), code.functions.get(f.index())) else {
-            return Ok(Value::Null);
-        };
+        let Some(runnable) = code.functions.get(f.index()) else { return Ok(Value::Null) };
+        // A specialised copy reports as the function it was made from.
+        let f = runnable.origin;
+        let Some(function) = post.functions.get(f.index()) else { return Ok(Value::Null) };
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             self.depth -= 1;
