@@ -1211,7 +1211,22 @@ impl Engine<'_> {
                 // Calls nest up to MAX_DEPTH whatever the thread's stack
                 // (a debug build's frames are large, a host's thread may be
                 // small): the stack grows on the heap when it runs low.
-                let result = match stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)) {
+                // A function that only returns an expression that calls
+                // nothing (`return word !== ""`, a callback) is that
+                // expression: its one step counted as `exec` counts it,
+                // with no statement loop and no stack to grow.
+                let ran = match &runnable.returns {
+                    Some(e) => {
+                        self.steps += 1;
+                        if self.steps > self.post.options.step_budget {
+                            Err(Box::new(self.budget_error(None)))
+                        } else {
+                            self.eval(e, &mut frame).map(Flow::Return)
+                        }
+                    }
+                    None => stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)),
+                };
+                let result = match ran {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) if runnable.starts_undefined => Ok(Value::Undefined),
                     Ok(_) => Ok(Value::Null),

@@ -272,6 +272,7 @@ fn specialised(function: &exec::Function, caps: &[Capture]) -> Option<exec::Func
         slots: function.slots - k as u16,
         body: exec::Body::Native(body),
         origin: function.origin,
+        returns: None,
     })
 }
 

@@ -77,6 +77,12 @@ pub fn prepare(post: &Post) -> Code {
             fuse::expressions(body);
         }
     }
+    for f in &mut functions {
+        f.returns = match &f.body {
+            exec::Body::Native(body) => exec::returned(body),
+            exec::Body::Script(_) => None,
+        };
+    }
     Code { handlers, handler_slots, init, globals, functions }
 }
 
