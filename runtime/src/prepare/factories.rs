@@ -76,11 +76,16 @@ enum Capture {
 /// Specialises the factory calls of the one-time code that meet the
 /// preconditions (module documentation), adding a function for each
 /// closure they make and a global for each cell.
-pub fn specialise(functions: &mut Vec<exec::Function>, init: &mut Vec<Stmt>, globals: &mut Vec<Expr>) {
+pub fn specialise(
+    functions: &mut Vec<exec::Function>,
+    handlers: &mut [Vec<Stmt>],
+    init: &mut Vec<Stmt>,
+    globals: &mut Vec<Expr>,
+) {
     if functions.iter().any(|f| matches!(f.body, exec::Body::Script(_))) {
         return;
     }
-    let once = init_function(functions, init);
+    let once = init_function(functions, handlers, init);
     let mut body = match once {
         Some(f) => match &mut functions[f.index()].body {
             exec::Body::Native(b) => std::mem::take(b),
@@ -114,7 +119,11 @@ pub fn specialise(functions: &mut Vec<exec::Function>, init: &mut Vec<Stmt>, glo
 /// The function the one-time code calls once with no arguments, and that
 /// nothing else calls, when its top-level statements are the post's
 /// (the CIMCO front end's `__postc_init`).
-fn init_function(functions: &mut [exec::Function], init: &mut [Stmt]) -> Option<FunctionId> {
+fn init_function(
+    functions: &mut [exec::Function],
+    handlers: &mut [Vec<Stmt>],
+    init: &mut [Stmt],
+) -> Option<FunctionId> {
     let mut calls = vec![0usize; functions.len()];
     {
         let mut count = |e: &mut Expr| {
@@ -124,8 +133,7 @@ fn init_function(functions: &mut [exec::Function], init: &mut [Stmt]) -> Option<
                 *n += 1;
             }
         };
-        let mut none: Vec<Vec<Stmt>> = Vec::new();
-        each_expr(functions, &mut none, init, &mut count);
+        each_expr(functions, handlers, init, &mut count);
     }
     init.iter().find_map(|s| match s {
         Stmt::Eval(Expr::Call(f, args))
@@ -381,7 +389,7 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
     }
     // The literals assigned before any code runs.
     let mut direct: HashMap<(GlobalId, String), FunctionId> = HashMap::new();
-    let once = init_function(functions, init);
+    let once = init_function(functions, handlers, init);
     let top: Vec<Stmt> = match once {
         Some(f) => match &functions[f.index()].body {
             exec::Body::Native(b) => b.clone(),
@@ -390,6 +398,11 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
         None => init.to_vec(),
     };
     for mut s in top {
+        // Nothing may have run before the object is the global's, its
+        // own literal's values included.
+        if runs_code_stmt(&mut s) {
+            break;
+        }
         if let Stmt::Assign(Place::Global(g), Expr::Object(props)) = &s
             && assigned.get(g).copied() == Some(1)
         {
@@ -402,9 +415,6 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
                     direct.insert((*g, k.to_string()), *function);
                 }
             }
-        }
-        if runs_code_stmt(&mut s) {
-            break;
         }
     }
     if direct.is_empty() {

@@ -58,7 +58,7 @@ pub fn prepare(post: &Post) -> Code {
     let mut init = exec::stmts(&post.init);
     let mut globals: Vec<Expr> = post.globals.iter().map(|g| exec::expr(&g.initial)).collect();
     let names: Vec<&str> = post.globals.iter().map(|g| g.name.as_str()).collect();
-    factories::specialise(&mut functions, &mut init, &mut globals);
+    factories::specialise(&mut functions, &mut handlers, &mut init, &mut globals);
     fields::replace(&names, &mut functions, &mut handlers, &mut init, &mut globals);
     factories::direct_calls(&mut functions, &mut handlers, &mut init);
     for f in &mut functions {
