@@ -189,3 +189,87 @@ fn an_object_a_global_holds_becomes_globals_unless_it_is_seen_whole() {
     let code = postc_runtime::prepare::prepare(&post);
     assert!(any_expr(&native(&code, onlinear), &member), "an object passed as a value stays one");
 }
+
+/// The program a JavaScript post writes for feeds to the given (x, y).
+fn program_of(post: &Post, feeds: &[(f64, f64)]) -> String {
+    use postc_ir::event::{Event, FeedMove, VecSource};
+    let mut events = vec![Event::Job(Box::default())];
+    events.extend(feeds.iter().map(|&(x, y)| Event::Feed(FeedMove { x, y, ..FeedMove::default() })));
+    events.push(Event::End);
+    let mut source = VecSource::new(events, postc_ir::FileId(0));
+    let report =
+        postc_runtime::run(post, &mut source, postc_runtime::Output::memory(), postc_driver::run_options(post))
+            .expect("posts");
+    let postc_runtime::Finished::Memory(parts) = report.output else { unreachable!("memory output") };
+    String::from_utf8_lossy(&parts.concat()).into_owned()
+}
+
+/// A factory the one-time code calls with constants (`modal("X", f)`,
+/// returning an object of closures over its state) has its closures made
+/// into functions of their own, their state in globals, and the methods
+/// of the object its global holds are called directly, even when the
+/// object is also kept in an array and its method called from there
+/// (`prepare/factories.rs`). A factory given a value known only when it
+/// runs keeps its closures; a post that sets a property named as a method
+/// keeps the method call. The program is the same in every case.
+#[test]
+fn a_factory_called_with_constants_is_specialised_unless_its_preconditions_fail() {
+    let js = |arg: &str, extra: &str| {
+        format!(
+            r#"
+            var f = createFormat({{decimals: 3}});
+            function modal(prefix, format) {{
+                var last = null;
+                return {{
+                    word: function (v) {{ var t = prefix + format.format(v); if (t == last) {{ return ""; }} last = t; return t; }},
+                    reset: function () {{ last = null; }}
+                }};
+            }}
+            function letter() {{ return "X"; }}
+            var xWord = modal({arg}, f);
+            var all = [xWord];
+            function onLinear(x, y, z, m) {{ {extra} if (y > 2) {{ all[0].reset(); }} return xWord.word(x) + "\n"; }}
+            "#
+        )
+    };
+    let feeds = [(1.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 3.0)];
+    let word_invoked = |post: &Post| {
+        let code = postc_runtime::prepare::prepare(post);
+        let postc_runtime::exec::Body::Native(body) = &code.functions[function(post, "onLinear").index()].body else {
+            panic!("native")
+        };
+        any_expr(body, &|e| matches!(e, XExpr::Invoke { method, .. } if &**method == "word"))
+    };
+    let specialised = support::compile_text("t.js", &js("\"X\"", ""));
+    assert!(!word_invoked(&specialised), "xWord.word(x) is a call of a function of its own");
+    let program = program_of(&specialised, &feeds);
+    let lines: Vec<&str> = program.lines().collect();
+    assert_eq!(lines.len(), 3, "X1, nothing, X2, X2 again after reset: {program:?}");
+    assert!(lines[0].starts_with('X') && lines[1] == lines[2], "{program:?}");
+    let computed = support::compile_text("t.js", &js("letter()", ""));
+    assert!(word_invoked(&computed), "an argument known only when it runs keeps the closures");
+    assert_eq!(program_of(&computed, &feeds), program);
+    let replaced = support::compile_text("t.js", &js("\"X\"", "if (y > 5) { xWord.word = null; }"));
+    assert!(word_invoked(&replaced), "a property `word` set anywhere keeps the method call");
+    assert_eq!(program_of(&replaced, &feeds), program);
+}
+
+/// A function that only returns an expression calling nothing is run as
+/// that expression (`exec::Function::returns`); one that calls a
+/// function, or reads `this`, runs its statements.
+#[test]
+fn a_function_that_only_returns_a_plain_expression_is_that_expression() {
+    let js = r#"
+        function isWord(w) { return w !== ""; }
+        function calls(w) { return isWord(w); }
+        function self() { return this; }
+        function onLinear(x, y, z, m) { return [String(x), ""].filter(isWord).join(" ") + (calls("a") ? "\n" : ""); }
+    "#;
+    let post = support::compile_text("t.js", js);
+    let code = postc_runtime::prepare::prepare(&post);
+    let returns = |name: &str| code.functions[function(&post, name).index()].returns.is_some();
+    assert!(returns("isWord"));
+    assert!(!returns("calls"), "a call runs post code");
+    assert!(!returns("self"), "`this` depends on the call");
+    assert_eq!(program_of(&post, &[(1.0, 0.0), (2.0, 0.0)]), "1\n2\n");
+}

@@ -531,6 +531,15 @@ pub struct Function {
     /// Parameters plus locals.
     pub slots: u16,
     pub body: Body,
+    /// The expression the function's body only returns, when it runs no
+    /// post code (no call, method, constructor or host function) and
+    /// reads no `this` nor `arguments`: a call evaluates it, with the one
+    /// step its `return` costs ([`returned`]).
+    pub returns: Option<Expr>,
+    /// The post's function this one runs for: itself, or the function a
+    /// specialised copy was made from (`prepare/factories.rs`), whose name
+    /// and span diagnostics, `--trace` and `--profile` report.
+    pub origin: FunctionId,
 }
 
 impl Function {
@@ -672,8 +681,10 @@ fn reads_this(f: &postc_ir::Function) -> bool {
 }
 
 /// The runtime form of a post function.
-pub fn function(f: &postc_ir::Function) -> Function {
+pub fn function(id: FunctionId, f: &postc_ir::Function) -> Function {
     Function {
+        origin: id,
+        returns: None,
         params: f.params.len(),
         uses_arguments: f.uses_arguments,
         uses_this: reads_this(f),
@@ -683,5 +694,32 @@ pub fn function(f: &postc_ir::Function) -> Function {
             postc_ir::Body::Native(b) => Body::Native(stmts(b)),
             postc_ir::Body::Script(id) => Body::Script(*id),
         },
+    }
+}
+
+/// The expression a function body only returns, when evaluating it runs
+/// no post code and reads no `this` nor `arguments` ([`Function::returns`]).
+pub fn returned(body: &[Stmt]) -> Option<Expr> {
+    fn plain(e: &Expr) -> bool {
+        if matches!(
+            e,
+            Expr::Call(..)
+                | Expr::CallValue(..)
+                | Expr::Invoke { .. }
+                | Expr::Host { .. }
+                | Expr::Builtin(Builtin::Construct | Builtin::JsString, _)
+                | Expr::This
+                | Expr::Arguments
+        ) {
+            return false;
+        }
+        let mut ok = true;
+        let mut e = e.clone();
+        e.for_each_operand_mut(|a| ok &= plain(a));
+        ok
+    }
+    match body {
+        [Stmt::Return(Some(e))] if plain(e) => Some(e.clone()),
+        _ => None,
     }
 }

@@ -1174,9 +1174,10 @@ impl Engine<'_> {
     /// Calls a post function with arguments.
     pub fn call(&mut self, f: FunctionId, args: Vec<Value>) -> Result<Value> {
         let (post, code) = (self.post, self.code);
-        let (Some(function), Some(runnable)) = (post.functions.get(f.index()), code.functions.get(f.index())) else {
-            return Ok(Value::Null);
-        };
+        let Some(runnable) = code.functions.get(f.index()) else { return Ok(Value::Null) };
+        // A specialised copy reports as the function it was made from.
+        let f = runnable.origin;
+        let Some(function) = post.functions.get(f.index()) else { return Ok(Value::Null) };
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             self.depth -= 1;
@@ -1210,34 +1211,26 @@ impl Engine<'_> {
                 // Calls nest up to MAX_DEPTH whatever the thread's stack
                 // (a debug build's frames are large, a host's thread may be
                 // small): the stack grows on the heap when it runs low.
-                let result = match stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)) {
+                // A function that only returns an expression that calls
+                // nothing (`return word !== ""`, a callback) is that
+                // expression: its one step counted as `exec` counts it,
+                // with no statement loop and no stack to grow.
+                let ran = match &runnable.returns {
+                    Some(e) => {
+                        self.steps += 1;
+                        if self.steps > self.post.options.step_budget {
+                            Err(Box::new(self.budget_error(None)))
+                        } else {
+                            self.eval(e, &mut frame).map(Flow::Return)
+                        }
+                    }
+                    None => stacker::maybe_grow(STACK_RED_ZONE, STACK_GROWTH, || self.exec(body, &mut frame)),
+                };
+                let result = match ran {
                     Ok(Flow::Return(v)) => Ok(v),
                     Ok(_) if runnable.starts_undefined => Ok(Value::Undefined),
                     Ok(_) => Ok(Value::Null),
-                    // An error with no place of its own is placed in the
-                    // innermost function it stopped.
-                    Err(e) if e.primary_span().is_none() && function.span.is_some() => {
-                        let span = function.span.unwrap_or_default();
-                        let name = function.name.clone();
-                        Err(Box::new(e.at(span, format!("in function `{name}`"))))
-                    }
-                    // An error in the host's API (code compiled with the
-                    // post) is also placed at the first function of the
-                    // post it passes through.
-                    Err(e)
-                        if function.span.is_some_and(|f| {
-                            post.info.host_file.is_some_and(|h| {
-                                f.file != h
-                                    && e.primary_span().is_some_and(|p| p.file == h)
-                                    && !e.labels.iter().any(|l| l.span.file == f.file)
-                            })
-                        }) =>
-                    {
-                        let f = function.span.unwrap_or_default();
-                        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
-                        Err(Box::new(e.also(start, format!("in the post's function `{}`", function.name))))
-                    }
-                    Err(e) => Err(e),
+                    Err(e) => Err(placed(post, function, e)),
                 };
                 self.give_back(frame);
                 if runnable.uses_arguments {
@@ -1266,6 +1259,57 @@ impl Engine<'_> {
             }
             (result, _) => result,
         }
+    }
+
+    /// The function of a callback an array method may run as
+    /// [`Self::run_callback`] (`list.filter(isWord)`): a post function
+    /// that captures nothing, takes no `arguments` and only returns a
+    /// plain expression ([`crate::exec::Function::returns`]), while calls
+    /// are neither traced nor profiled; `None` otherwise (then the method
+    /// calls it as any function value).
+    pub(crate) fn callback_function(&self, f: &Value) -> Option<FunctionId> {
+        let Value::Func(closure) = f else { return None };
+        let crate::value::Callee::Post(id) = closure.callee else { return None };
+        let runnable = self.code.functions.get(id.index())?;
+        let plain = closure.captures.is_empty()
+            && runnable.returns.is_some()
+            && !runnable.uses_arguments
+            && self.trace.is_none()
+            && self.profile.is_none();
+        plain.then_some(id)
+    }
+
+    /// Runs a function [`Self::callback_function`] gave, as [`Self::call`]
+    /// would (the same frame, step, depth limit and placed errors), with
+    /// no call made: its expression evaluated in a frame of the arguments.
+    pub(crate) fn run_callback(&mut self, id: FunctionId, args: [Value; 3]) -> Result<Value> {
+        let (post, code) = (self.post, self.code);
+        let runnable = &code.functions[id.index()];
+        let (Some(e), Some(function)) = (&runnable.returns, post.functions.get(runnable.origin.index())) else {
+            return Ok(Value::Null);
+        };
+        if self.depth + 1 > MAX_DEPTH {
+            let mut values = self.spare();
+            values.extend(args);
+            return self.call(id, values);
+        }
+        let mut frame = self.spare();
+        frame.extend(args);
+        let fill = if runnable.starts_undefined {
+            frame.truncate(runnable.params);
+            Value::Undefined
+        } else {
+            Value::Null
+        };
+        frame.resize((runnable.slots as usize).max(frame.len()), fill);
+        self.steps += 1;
+        let result = if self.steps > self.post.options.step_budget {
+            Err(Box::new(self.budget_error(None)))
+        } else {
+            self.eval(e, &mut frame)
+        };
+        self.give_back(frame);
+        result.map_err(|e| placed(post, function, e))
     }
 
     /// A mark stored by [`Stmt::Mark`], within the output buffer.
@@ -1431,6 +1475,28 @@ impl Engine<'_> {
             }
         })
     }
+}
+
+/// An error a post function stopped with, placed: one with no place of
+/// its own in the function; one in the host's API (code compiled with
+/// the post) also at the first function of the post it passes through.
+fn placed(post: &postc_ir::Post, function: &postc_ir::Function, e: Box<Diagnostic>) -> Box<Diagnostic> {
+    if e.primary_span().is_none()
+        && let Some(span) = function.span
+    {
+        return Box::new(e.at(span, format!("in function `{}`", function.name)));
+    }
+    if let Some(f) = function.span
+        && post.info.host_file.is_some_and(|h| {
+            f.file != h
+                && e.primary_span().is_some_and(|p| p.file == h)
+                && !e.labels.iter().any(|l| l.span.file == f.file)
+        })
+    {
+        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
+        return Box::new(e.also(start, format!("in the post's function `{}`", function.name)));
+    }
+    e
 }
 
 /// The quantity of `+q`, a number the runtime knows read as a JavaScript

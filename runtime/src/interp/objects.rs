@@ -656,10 +656,20 @@ impl Engine<'_> {
                 snapshot.extend(items.borrow().iter().cloned());
                 let mut out = if matches!(name, "map" | "filter") { Vec::with_capacity(len) } else { Vec::new() };
                 let mut decided = None;
+                // A callback that only returns a plain expression runs with
+                // no call made (`Engine::run_callback`).
+                let callback = self.callback_function(&f);
                 for (i, item) in snapshot.drain(..).enumerate() {
-                    let mut call_args = self.spare();
-                    call_args.extend([item.clone(), Value::Num(i as f64), Value::Array(items.clone())]);
-                    let r = match self.call_value(&f, Value::Undefined, call_args) {
+                    let args = [item.clone(), Value::Num(i as f64), Value::Array(items.clone())];
+                    let called = match callback {
+                        Some(id) => self.run_callback(id, args),
+                        None => {
+                            let mut call_args = self.spare();
+                            call_args.extend(args);
+                            self.call_value(&f, Value::Undefined, call_args)
+                        }
+                    };
+                    let r = match called {
                         Ok(r) => r,
                         Err(e) => {
                             decided = Some(Err(e));

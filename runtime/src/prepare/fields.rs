@@ -367,15 +367,16 @@ fn runs_code(e: &mut Expr) -> bool {
     found
 }
 
-fn runs_code_stmt(s: &mut Stmt) -> bool {
+pub(super) fn runs_code_stmt(s: &mut Stmt) -> bool {
     let mut found = false;
     s.for_each_expr_mut(|e| found |= runs_code(e));
     s.for_each_body_mut(|b| found |= b.iter_mut().any(runs_code_stmt));
     found
 }
 
-/// Calls `f` on every expression of the post's code, at every depth.
-fn each_expr(
+/// Calls `f` on every expression of the post's code, at every depth
+/// (on an expression before the expressions it is made of).
+pub(super) fn each_expr(
     functions: &mut [exec::Function],
     handlers: &mut [Vec<Stmt>],
     init: &mut [Stmt],

@@ -8,7 +8,7 @@
 use crate::exec::{Expr, Piece, Stmt, Text};
 use crate::interp::ops::{binary, unary};
 use crate::value::Value;
-use postc_ir::BinaryOp;
+use postc_ir::{BinaryOp, OutputRef, UnaryOp};
 
 /// The value of a literal.
 fn constant(e: &Expr) -> Option<Value> {
@@ -74,6 +74,22 @@ pub fn expr(e: Expr) -> Expr {
         }
         Expr::FormatVar { var, value, span } => Expr::FormatVar { var, value: Box::new(expr(*value)), span },
         Expr::Format { format, value, span } => Expr::Format { format, value: Box::new(expr(*value)), span },
+        // `f.format(v)` of a format or an output variable the code names
+        // as a constant (a factory's capture once specialised): what the
+        // method does, as the expression of a named format's or variable's
+        // `format` (the format reads its value as JavaScript's `Number`).
+        Expr::Invoke { object, method, mut args, span }
+            if matches!(*object, Expr::Output(_)) && &*method == "format" && args.len() == 1 =>
+        {
+            let value = Box::new(expr(args.remove(0)));
+            match *object {
+                Expr::Output(OutputRef::Format(format)) => {
+                    Expr::Format { format, value: Box::new(Expr::Unary(UnaryOp::Plus, value)), span }
+                }
+                Expr::Output(OutputRef::Variable(var)) => Expr::FormatVar { var, value, span },
+                object => Expr::Invoke { object: Box::new(object), method, args: vec![*value], span },
+            }
+        }
         Expr::Call(f, args) => Expr::Call(f, args.into_iter().map(expr).collect()),
         Expr::Builtin(b, args) => Expr::Builtin(b, args.into_iter().map(expr).collect()),
         other => other,

@@ -5,9 +5,13 @@
 //! fast, for any dialect, without changing a byte of what it writes:
 //!
 //! 1. every function and handler in the runtime's form ([`crate::exec`]);
-//!    an object a global holds for the whole run, never seen as a whole,
-//!    becomes globals of its own and its methods plain functions
-//!    ([`fields`]); constants folded ([`fold`]);
+//!    a factory called by the one-time code with constants has its
+//!    closures made into functions of their own, their state in globals
+//!    ([`factories`]); an object a global holds for the whole run, never
+//!    seen as a whole, becomes globals of its own and its methods plain
+//!    functions ([`fields`]); a method of an object a global holds for the
+//!    whole run that nothing can replace is called directly
+//!    ([`factories`]); constants folded ([`fold`]);
 //! 2. the fast path ([`emit`]): a handler that writes what a native
 //!    function returns builds that text straight in the output instead;
 //!    marks are tidied;
@@ -33,6 +37,7 @@
 //! is: the engine runs its lines on a faster path still.
 
 pub(crate) mod emit;
+mod factories;
 mod fields;
 mod fold;
 pub(crate) mod fresh;
@@ -48,12 +53,14 @@ use crate::exec::{self, Code, Expr, Stmt};
 
 /// Prepares a post's code to run.
 pub fn prepare(post: &Post) -> Code {
-    let mut functions: Vec<exec::Function> = post.functions.iter().map(exec::function).collect();
+    let mut functions: Vec<exec::Function> = functions_of(post);
     let mut handlers: Vec<Vec<Stmt>> = post.handlers.iter().map(|h| exec::stmts(&h.body)).collect();
     let mut init = exec::stmts(&post.init);
     let mut globals: Vec<Expr> = post.globals.iter().map(|g| exec::expr(&g.initial)).collect();
     let names: Vec<&str> = post.globals.iter().map(|g| g.name.as_str()).collect();
+    factories::specialise(&mut functions, &mut handlers, &mut init, &mut globals);
     fields::replace(&names, &mut functions, &mut handlers, &mut init, &mut globals);
+    factories::direct_calls(&mut functions, &mut handlers, &mut init);
     for f in &mut functions {
         if let exec::Body::Native(body) = &mut f.body {
             *body = fold::stmts(std::mem::take(body));
@@ -69,6 +76,12 @@ pub fn prepare(post: &Post) -> Code {
             *body = locals::tidy(std::mem::take(body));
             fuse::expressions(body);
         }
+    }
+    for f in &mut functions {
+        f.returns = match &f.body {
+            exec::Body::Native(body) => exec::returned(body),
+            exec::Body::Script(_) => None,
+        };
     }
     Code { handlers, handler_slots, init, globals, functions }
 }
@@ -168,8 +181,15 @@ pub fn unprepared(post: &Post) -> Code {
         handler_slots,
         init: exec::stmts(&post.init),
         globals: post.globals.iter().map(|g| exec::expr(&g.initial)).collect(),
-        functions: post.functions.iter().map(exec::function).collect(),
+        functions: functions_of(post),
     }
+}
+
+/// The post's functions in the runtime's form, each its own origin.
+fn functions_of(post: &Post) -> Vec<exec::Function> {
+    (0..post.functions.len())
+        .filter_map(|i| Some(exec::function(postc_ir::FunctionId::from_usize(i)?, &post.functions[i])))
+        .collect()
 }
 
 /// Statements as one, so that their locals share a frame (the engine

@@ -22,6 +22,8 @@ fn motion() -> Function {
             Stmt::Return(Some(local(0))),
         ]),
         starts_undefined: false,
+        returns: None,
+        origin: FunctionId::new(0),
         uses_arguments: false,
         uses_this: false,
     }
@@ -70,6 +72,8 @@ fn a_function_that_loops_is_called_and_a_recursive_one_spliced_once() {
             Stmt::Return(Some(Expr::Number(1.0))),
         ]),
         starts_undefined: false,
+        returns: None,
+        origin: FunctionId::new(0),
         uses_arguments: false,
         uses_this: false,
     };
@@ -78,6 +82,8 @@ fn a_function_that_loops_is_called_and_a_recursive_one_spliced_once() {
         slots: 0,
         body: Body::Native(vec![Stmt::While { cond: Expr::Bool(false), body: vec![], span: None, step: vec![] }]),
         starts_undefined: false,
+        returns: None,
+        origin: FunctionId::new(1),
         uses_arguments: false,
         uses_this: false,
     };
@@ -102,6 +108,8 @@ fn falling_off_the_end_returns_null_and_locals_start_null() {
         slots: 1,
         body: Body::Native(vec![Stmt::Eval(local(0))]),
         starts_undefined: false,
+        returns: None,
+        origin: FunctionId::new(0),
         uses_arguments: false,
         uses_this: false,
     };
