@@ -30,6 +30,12 @@ const AT_LEAST: usize = 56;
 /// at, and are refused now; docs/fusion.md.)
 const POSTING_AT_LEAST: usize = 80;
 
+/// Of the 156 milling-kind posts (SOURCES.md's kinds, [`kinds`]), those
+/// that post all four jobs and verify, and those that post them, verified
+/// or in a dialect verify does not read.
+const MILLING_AT_LEAST: usize = 0;
+const MILLING_POSTING_AT_LEAST: usize = 0;
+
 /// The outcome of a post whose programs all post but whose dialect verify
 /// does not read (VF044, a note): it posts, unverified.
 const UNREAD: &str = "posts, but verify does not read its dialect (VF044)";
@@ -63,6 +69,74 @@ pub fn posts(dir: &Path) -> Vec<PathBuf> {
     }
     out.sort();
     out
+}
+
+/// The kind of each corpus post (milling, turning, mill-turn, jet,
+/// mill+jet, other), by its path relative to [`shared`], read from the
+/// table of `SOURCES.md`. The file states the kinds' counts ("Kinds in
+/// this part: milling 156, ...") and that they are "a heuristic from
+/// capabilities / names", but names no kind per post; this rule gives
+/// each post one and reproduces every stated count, which the caller
+/// checks against [`stated_kinds`] (docs/fusion.md, "Kinds"):
+///
+/// - by `capabilities`: milling and turning a mill-turn post, milling and
+///   jet a mill+jet post, jet alone a jet post, turning alone a turning
+///   post, setup sheet or intermediate an "other", milling a milling post;
+/// - a post that sets no `capabilities` (a 2014-era library post, which
+///   Fusion takes as milling) by its `description`: `turning` a turning
+///   post; a sheet, dumper, redirect, XML, APT or CSV exporter an "other";
+///   a laser, plasma or jet a jet post; otherwise milling.
+pub fn kinds(dir: &Path) -> BTreeMap<String, &'static str> {
+    let text = std::fs::read_to_string(dir.join("SOURCES.md")).expect("the corpus's SOURCES.md");
+    let mut out = BTreeMap::new();
+    for row in text.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| local path")) {
+        // `\|` is a bar inside a cell (`CAPABILITY_MILLING \| CAPABILITY_JET`).
+        let row = row.replace("\\|", "+");
+        let cells: Vec<&str> = row.trim().trim_matches('|').split('|').map(str::trim).collect();
+        let [path, .., description, _vendor, capabilities] = cells.as_slice() else { continue };
+        let has = |c: &str| capabilities.contains(c);
+        let words = description.to_ascii_lowercase();
+        let said =
+            |w: &[&str]| words.split(|c: char| !c.is_ascii_alphanumeric()).any(|t| w.iter().any(|w| t.starts_with(w)));
+        let (milling, turning, jet) = (has("CAPABILITY_MILLING"), has("CAPABILITY_TURNING"), has("CAPABILITY_JET"));
+        let kind = if milling && turning {
+            "mill-turn"
+        } else if milling && jet {
+            "mill+jet"
+        } else if jet {
+            "jet"
+        } else if turning {
+            "turning"
+        } else if has("CAPABILITY_SETUP_SHEET") || has("CAPABILITY_INTERMEDIATE") {
+            "other"
+        } else if milling {
+            "milling"
+        } else if said(&["turning"]) {
+            "turning"
+        } else if said(&["sheet", "dump", "redirect", "xml", "apt", "csv"]) {
+            "other"
+        } else if said(&["laser", "plasma", "jet", "waterjet"]) {
+            "jet"
+        } else {
+            "milling"
+        };
+        out.insert(path.to_string(), kind);
+    }
+    out
+}
+
+/// The counts of each kind `SOURCES.md` states ("Kinds in this part:
+/// milling 156, jet 16, ...").
+pub fn stated_kinds(dir: &Path) -> BTreeMap<String, usize> {
+    let text = std::fs::read_to_string(dir.join("SOURCES.md")).expect("the corpus's SOURCES.md");
+    let line = text.lines().find_map(|l| l.strip_prefix("Kinds in this part:")).expect("the stated kinds");
+    line.split(['.', ','])
+        .filter_map(|part| {
+            let (kind, n) = part.trim().rsplit_once(' ')?;
+            (!kind.ends_with(':')).then_some(())?;
+            Some((kind.to_string(), n.parse().ok()?))
+        })
+        .collect()
 }
 
 /// The standard job without its jet toolpath: the events from the jet
@@ -203,29 +277,50 @@ fn corpus_fusion_posts_post_the_milling_jobs_or_say_why_not() {
         }
         (result, broken)
     });
-    let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let _ = std::fs::remove_dir_all(&tmp);
+    // The kinds of SOURCES.md: the bar counts the milling posts.
+    let kinds = kinds(&dir);
+    let mut counted: BTreeMap<String, usize> = BTreeMap::new();
+    for kind in kinds.values() {
+        *counted.entry(kind.to_string()).or_default() += 1;
+    }
+    assert_eq!(counted, stated_kinds(&dir), "the kinds read from SOURCES.md are not the counts it states");
+    let mut table: BTreeMap<String, (Vec<String>, Vec<String>)> = BTreeMap::new();
     let mut broken = Vec::new();
     for (name, (result, mut wrong)) in runs {
         broken.append(&mut wrong);
-        table.entry(result).or_default().push(name);
+        let entry = table.entry(result).or_default();
+        let kind = kinds.get(&name.replace(std::path::MAIN_SEPARATOR, "/")).copied();
+        assert!(kind.is_some(), "{name} is not in SOURCES.md");
+        if kind == Some("milling") {
+            entry.1.push(name.clone());
+        }
+        entry.0.push(name);
     }
-    let _ = std::fs::remove_dir_all(&tmp);
-    let mut summary = String::new();
-    for (what, names) in &table {
-        summary.push_str(&format!("{:>4}  {what}\n", names.len()));
+    // All posts, then the milling-kind ones; the milling posts of each
+    // outcome but the good ones named.
+    let mut summary = String::from(" all  milling\n");
+    for (what, (all, milling)) in &table {
+        summary.push_str(&format!("{:>4}  {:>4}  {what}\n", all.len(), milling.len()));
+        if what != "posts and verifies" && !what.starts_with("refuses milling") {
+            for n in milling {
+                summary.push_str(&format!("              {n}\n"));
+            }
+        }
     }
     println!("{summary}");
     assert!(broken.is_empty(), "posts that panic or leave output behind:\n{}", broken.join("\n"));
-    let good = table.get("posts and verifies").map_or(0, Vec::len);
-    assert!(
-        good >= AT_LEAST,
-        "{good} corpus Fusion posts post and verify the four jobs, fewer than {AT_LEAST}:\n{summary}"
-    );
-    let posting = good + table.get(UNREAD).map_or(0, Vec::len);
-    assert!(
-        posting >= POSTING_AT_LEAST,
-        "{posting} corpus Fusion posts post the four jobs, fewer than {POSTING_AT_LEAST}:\n{summary}"
-    );
+    let count = |what: &str| table.get(what).map_or((0, 0), |(a, m)| (a.len(), m.len()));
+    let (good, milling_good) = count("posts and verifies");
+    let (unread, milling_unread) = count(UNREAD);
+    for (n, floor, what) in [
+        (good, AT_LEAST, "corpus Fusion posts post and verify"),
+        (good + unread, POSTING_AT_LEAST, "corpus Fusion posts post"),
+        (milling_good, MILLING_AT_LEAST, "milling-kind corpus Fusion posts post and verify"),
+        (milling_good + milling_unread, MILLING_POSTING_AT_LEAST, "milling-kind corpus Fusion posts post"),
+    ] {
+        assert!(n >= floor, "{n} {what} the four jobs, fewer than {floor}:\n{summary}");
+    }
 }
 
 /// A Fusion post's IR nests deeply (the host's and the post's JavaScript):
