@@ -1657,7 +1657,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             }
         }
         let (r, depth) = (self.cycle_r, self.cycle_z);
-        if foreign {
+        if foreign || (self.stop_comparing && !(r.is_finite() && depth.is_finite())) {
+            // The note was given at the cycle's first block (the cycle's
+            // later blocks, as Andronic's `G79 X40 Z-7`, are in its form too).
+            if !foreign {
+                return;
+            }
             // Another controller's cycle words (Andronic's `G83 Z8 B4 K3 ... E120`):
             // verify does not know what they mean, and says so.
             let d = self.finding(
