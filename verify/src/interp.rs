@@ -841,7 +841,26 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                             }
                         }
                         _ => {
-                            if block.has(letter) {
+                            let cycle = block.g[..block.gs].iter().any(|g| matches!(tenths(g.0), 730 | 810..=890));
+                            if block.has(letter) && letter == b'R' && cycle {
+                                // A cycle with two R planes (OSAI's `G82 R2. R5. Z4.`): a
+                                // control's own form, which verify does not read.
+                                if !self.stop_comparing {
+                                    let d = self.finding(
+                                        Severity::Note,
+                                        codes::VF044.code,
+                                        "this drilling cycle has two R words, a controller's own cycle form that verify does not read: the moves from here on are not compared",
+                                        start,
+                                        end,
+                                        None,
+                                    );
+                                    Self::help(
+                                        d,
+                                        "the program is verified up to this line; the rest is read for its syntax only",
+                                    );
+                                    self.stop_comparing = true;
+                                }
+                            } else if block.has(letter) {
                                 let d = self.finding(
                                     Severity::Error,
                                     codes::VF004.code,
@@ -1205,6 +1224,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                         self.motion_before_cycle = self.motion.filter(|m| *m == 0 || *m == 10);
                     }
                     self.motion = Some(tenths);
+                }
+                // Fagor's deep drilling cycle (8055 manual, "G69: complex deep
+                // hole drilling"), in Fagor's form `G69 X Y Z I B ...` (Z the
+                // reference plane, I the depth, B the peck): drilled as G83.
+                // Fanuc's G69 (rotation off) takes no Z and I.
+                690 if b.has(b'Z') && b.has(b'I') && !b.has(b'R') => {
+                    if !self.motion.is_some_and(|m| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760)) {
+                        self.cycle_initial_z = self.pos[2];
+                        self.motion_before_cycle = self.motion.filter(|m| *m == 0 || *m == 10);
+                    }
+                    self.motion = Some(830);
                 }
                 800 => {
                     // The G0/G1 of before the cycle is kept only when G80 ends a cycle.
