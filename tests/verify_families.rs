@@ -410,6 +410,13 @@ fn program_marks_and_statements_of_other_controls_are_read() {
     let found = verify(&sub, MILL);
     assert!(errors(&found).is_empty(), "{found:#?}");
     assert!(found.iter().any(|f| f.code == "VF044" && f.line == line_of(&sub, "M98")), "{found:#?}");
+    // Andronic's `G282 A1`: machine coordinates until `G282 A-1`; a rapid to
+    // machine Z0 there is no rapid into the material.
+    let andronic = OTHER_CONTROLS_MILL.replace("T1 M6", "G282 A1\nG0 Z0.\nG282 A-1\nT1 M6");
+    let found = verify(&andronic, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    let without = OTHER_CONTROLS_MILL.replace("G0 X10. Y10. Z5.", "G0 X10. Y10. Z-5.");
+    assert!(!errors(&verify(&without, MILL)).is_empty());
 }
 
 /// DRILL's holes in Fagor's cycle form (`G8x X Y Z I`: Z the reference

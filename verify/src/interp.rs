@@ -259,6 +259,9 @@ struct Run<'a, O: Observer + ?Sized> {
     /// a move with Z unknown after it is at a height verify does not know
     /// (G53, G28), not a move of a program that never writes Z.
     z_written: bool,
+    /// Andronic's `G282 A1` is in force: positions are machine
+    /// coordinates until `G282 A-1`.
+    machine_frame: bool,
 }
 
 pub fn run<O: Observer + ?Sized>(
@@ -341,6 +344,7 @@ pub fn replay<O: Observer + ?Sized>(
         ended: false,
         boxford_header: false,
         z_written: false,
+        machine_frame: false,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -1275,6 +1279,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 300 | 310 if self.heidenhain => dwell = true,
                 280 | 300 | 382..=385 => home = true,
                 530 | 1530 => machine = true,
+                // Andronic: `G282 A1` machine coordinates, `G282 A-1` the part's
+                // (Autodesk's `andronic.cps`: "machine coordinate system", "part
+                // coordinate system"), modal.
+                2820 if b.has(b'A') => {
+                    self.machine_frame = b.get(b'A').is_some_and(|a| a.value > 0.0);
+                }
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
                 // Sinumerik: G500 and G505-G599 settable frames, G60/G601/G602
                 // exact stop, G642 smoothing, G450/G451 corners.
@@ -1378,6 +1388,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         let any_axis = b.any(b"XYZ");
         self.z_written |= b.has(b'Z');
+        machine |= self.machine_frame;
         if home {
             // G28/G30 (through the given point to a home position) and G38.x
             // probes end where verify cannot know.
