@@ -370,3 +370,68 @@ fn heidenhain_iso_programs_are_read_and_compared() {
     let found = verify(&other, DRILL);
     assert!(errors(&found).iter().any(|f| f.code == "VF011" || f.code == "VF004"), "{found:#?}");
 }
+
+/// MILL as other controllers' programs write it, each with what marks
+/// its family: Okuma's program name on the line after `%`, Hurco's `E`
+/// after M2, OSAI's `DWT=` dwell, a Boxford file's `[GM HEADER]`, and
+/// KinetiC-NC's `O1234:` subprogram label after the end.
+const OTHER_CONTROLS_MILL: &str = "%
+1001
+G21 G90 G17
+T1 M6
+S16000 M3
+G0 X10. Y10. Z5.
+G1 Z-2. F300.
+DWT=0.5
+X30. F1000.
+G3 X40. Y20. I0. J10.
+G1 Y40.
+G0 Z5.
+M5
+M2
+E
+";
+
+#[test]
+fn program_marks_and_statements_of_other_controls_are_read() {
+    let found = verify(OTHER_CONTROLS_MILL, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    let boxford =
+        format!("[GM HEADER]\ntype=mill\nunits=mm\nT1=32= T=1 P=1 D=6\n[PROGRAM]\n{}", &OTHER_CONTROLS_MILL[7..]);
+    let found = verify(&boxford, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    // The program name only right after `%`, before any move; `E` only after the program's end.
+    let late = OTHER_CONTROLS_MILL.replace("DWT=0.5", "2002");
+    assert!(errors(&verify(&late, MILL)).iter().any(|f| f.code == "VF004" && f.line == line_of(&late, "2002")));
+    let early = OTHER_CONTROLS_MILL.replace("DWT=0.5", "E");
+    assert!(errors(&verify(&early, MILL)).iter().any(|f| f.code == "VF004"));
+    // A subprogram after the end: its label reads, and M98 stops the comparison with a note.
+    let sub = OTHER_CONTROLS_MILL.replace("T1 M6", "T1 M6\nM98 P1234").replace("E\n", "O1234:\nG53 G0 Z0.\nM99\n");
+    let found = verify(&sub, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    assert!(found.iter().any(|f| f.code == "VF044" && f.line == line_of(&sub, "M98")), "{found:#?}");
+    // Andronic's `G282 A1`: machine coordinates until `G282 A-1`; a rapid to
+    // machine Z0 there is no rapid into the material.
+    let andronic = OTHER_CONTROLS_MILL.replace("T1 M6", "G282 A1\nG0 Z0.\nG282 A-1\nT1 M6");
+    let found = verify(&andronic, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    let without = OTHER_CONTROLS_MILL.replace("G0 X10. Y10. Z5.", "G0 X10. Y10. Z-5.");
+    assert!(!errors(&verify(&without, MILL)).is_empty());
+}
+
+/// DRILL's holes in Fagor's cycle form (`G8x X Y Z I`: Z the reference
+/// plane, I the depth), and in a controller's own form verify does not
+/// read (Andronic's `G83 Z8 B4 K3 ... E120`), which is a note.
+#[test]
+fn fagor_cycles_are_read_and_other_cycle_forms_are_named() {
+    let fagor = "G21 G90 G17\nT4 M6\nS6000 M3\nG0 X20. Y20. Z5.\nG98 G83 X20. Y20. Z1. I-7. K0 F120.\nX40.\nG80\nM30\n";
+    let found = verify(fagor, DRILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    // Too deep is still caught.
+    let deep = fagor.replace("I-7.", "I-8.");
+    assert!(!errors(&verify(&deep, DRILL)).is_empty());
+    let andronic = "G21 G90 G17\nT4 M6\nS6000 M3\nG0 X20. Y20. Z5.\nG83 Z8 Y0 B4 K3 I0 J0 X0.5 E120\nG80\nM30\n";
+    let found = verify(andronic, DRILL);
+    assert!(found.iter().any(|f| f.code == "VF044" && f.line == 5), "{found:#?}");
+    assert!(errors(&found).is_empty(), "{found:#?}");
+}

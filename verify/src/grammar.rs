@@ -3,7 +3,8 @@
 //!
 //! ```text
 //! line    = blank ( "/" )? blank ( item blank )* END
-//! item    = word | "(" [^)]* ")" | ";" anything | "%" anything
+//! item    = label | word | "(" [^)]* ")" | ";" anything | "%" anything
+//! label   = "O" blank number ":"                 O1234: (a subprogram)
 //! word    = letter blank number                 G1, x-1.5, F 1200., N0010
 //! number  = sign? ( digits ( "." digits? )? | "." digits )
 //! blank   = ( " " | "\t" | "\r" )*
@@ -362,7 +363,14 @@ pub fn line<'s>() -> impl Parser<'s, &'s [u8], (), Extra> + Clone {
         .try_map_with(|(value, decimals), e| push(e, ItemKind::Word(b'O'), value, decimals));
     let semicolon = just(b';').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Comment, 0.0, 0));
     let percent = just(b'%').then(any().repeated()).try_map_with(|_, e| push(e, ItemKind::Percent, 0.0, 0));
-    let item = choice((word, paren, semicolon, percent, colon));
+    // `O1234:`: a subprogram's label (KinetiC-NC), the number of the
+    // subprogram `M98 P1234` calls, read as its `O` word.
+    let label = one_of(b"Oo")
+        .ignore_then(blank)
+        .ignore_then(number())
+        .then_ignore(just(b':'))
+        .try_map_with(|(value, decimals), e| push(e, ItemKind::Word(b'O'), value, decimals));
+    let item = choice((label, word, paren, semicolon, percent, colon));
     let delete = just(b'/').try_map_with(|_, e| push(e, ItemKind::Delete, 0.0, 0));
     blank.then(delete.or_not()).then(blank).then(item.then(blank).repeated()).then(end()).ignored()
 }

@@ -249,6 +249,19 @@ struct Run<'a, O: Observer + ?Sized> {
     /// The Heidenhain ISO cycle defined: its G code and parameters P01..P03
     /// (set-up clearance and depth, signed toward the work, mm).
     defined: Option<(u32, [f64; 3])>,
+    /// The line of the last `%` (0: none yet).
+    percent_line: u64,
+    /// A program end (M2, M30) was read.
+    ended: bool,
+    /// In the header of a Boxford file (`[GM HEADER]` up to `[PROGRAM]`).
+    boxford_header: bool,
+    /// The program has written a Z word (in work or machine coordinates):
+    /// a move with Z unknown after it is at a height verify does not know
+    /// (G53, G28), not a move of a program that never writes Z.
+    z_written: bool,
+    /// Andronic's `G282 A1` is in force: positions are machine
+    /// coordinates until `G282 A-1`.
+    machine_frame: bool,
 }
 
 pub fn run<O: Observer + ?Sized>(
@@ -327,6 +340,11 @@ pub fn replay<O: Observer + ?Sized>(
         heidenhain: false,
         centre: [f64::NAN; 3],
         defined: None,
+        percent_line: 0,
+        ended: false,
+        boxford_header: false,
+        z_written: false,
+        machine_frame: false,
     };
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
@@ -351,6 +369,7 @@ pub fn replay<O: Observer + ?Sized>(
         let mut used = 0;
         while run.fast
             && !run.stopped
+            && !run.boxford_header
             && let Some(i) = words_line(&avail[used..], &mut block, run.settings.controller.word_digits())
         {
             run.words(&avail[used..used + i], i + 1, &block);
@@ -622,6 +641,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         if self.stopped {
             return;
         }
+        // A Boxford file: a header of `key=value` lines from `[GM HEADER]`
+        // (its first line) up to `[PROGRAM]`, then the program.
+        if self.stats.lines == 1 && line.trim_ascii() == b"[GM HEADER]" {
+            self.boxford_header = true;
+        }
+        if self.boxford_header {
+            if line.trim_ascii() == b"[PROGRAM]" {
+                self.boxford_header = false;
+            }
+            return;
+        }
         // A plain line (words, blanks, simple comments) holds no NUL byte.
         let plain = grammar::parse_plain(line, items);
         if !plain && line.contains(&0) {
@@ -714,6 +744,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         if parsed.is_err() && self.params.line(text, &mut items.0, &mut self.extras).is_ok() {
             parsed = Ok(());
             extended = true;
+        }
+        if parsed.is_err() && self.marker(text) {
+            return;
         }
         if let Err(at) = parsed {
             let (message, help) = match text.get(at) {
@@ -812,7 +845,26 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                             }
                         }
                         _ => {
-                            if block.has(letter) {
+                            let cycle = block.g[..block.gs].iter().any(|g| matches!(tenths(g.0), 730 | 810..=890));
+                            if block.has(letter) && letter == b'R' && cycle {
+                                // A cycle with two R planes (OSAI's `G82 R2. R5. Z4.`): a
+                                // control's own form, which verify does not read.
+                                if !self.stop_comparing {
+                                    let d = self.finding(
+                                        Severity::Note,
+                                        codes::VF044.code,
+                                        "this drilling cycle has two R words, a controller's own cycle form that verify does not read: the moves from here on are not compared",
+                                        start,
+                                        end,
+                                        None,
+                                    );
+                                    Self::help(
+                                        d,
+                                        "the program is verified up to this line; the rest is read for its syntax only",
+                                    );
+                                    self.stop_comparing = true;
+                                }
+                            } else if block.has(letter) {
                                 let d = self.finding(
                                     Severity::Error,
                                     codes::VF004.code,
@@ -908,9 +960,26 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
     }
 
+    /// Lines that are no block but mark the program, as two families
+    /// write them: Okuma OSP's program name (a bare name of letters and
+    /// digits on the line after the opening `%`, before any move: Okuma's
+    /// posts write `%`, then the name, which must not start with the
+    /// reserved `O`), and Hurco's `E`, the end of the program file, on a
+    /// line of its own after the program's M2 or M30.
+    fn marker(&self, text: &[u8]) -> bool {
+        let t = text.trim_ascii();
+        let name = self.percent_line > 0
+            && self.stats.lines == self.percent_line + 1
+            && self.stats.motions == 0
+            && (1..=16).contains(&t.len())
+            && t.iter().all(u8::is_ascii_alphanumeric);
+        name || (t == b"E" && self.ended)
+    }
+
     /// A `%` line: `%1001 G71`, the start (and end) of a Heidenhain ISO
     /// program, says the family and its units.
     fn percent(&mut self, text: &[u8]) {
+        self.percent_line = self.stats.lines;
         let name = text[1..].iter().take_while(|b| b.is_ascii_alphanumeric() || **b == b'_').count();
         let rest = std::str::from_utf8(&text[1 + name..]).unwrap_or("").trim().to_ascii_uppercase();
         let inch = match rest.split_whitespace().next() {
@@ -1160,6 +1229,17 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     }
                     self.motion = Some(tenths);
                 }
+                // Fagor's deep drilling cycle (8055 manual, "G69: complex deep
+                // hole drilling"), in Fagor's form `G69 X Y Z I B ...` (Z the
+                // reference plane, I the depth, B the peck): drilled as G83.
+                // Fanuc's G69 (rotation off) takes no Z and I.
+                690 if b.has(b'Z') && b.has(b'I') && !b.has(b'R') => {
+                    if !self.motion.is_some_and(|m| (810..=890).contains(&m) || matches!(m, 730 | 740 | 760)) {
+                        self.cycle_initial_z = self.pos[2];
+                        self.motion_before_cycle = self.motion.filter(|m| *m == 0 || *m == 10);
+                    }
+                    self.motion = Some(830);
+                }
                 800 => {
                     // The G0/G1 of before the cycle is kept only when G80 ends a cycle.
                     if self.motion.is_none_or(|m| m < 730) {
@@ -1199,6 +1279,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 300 | 310 if self.heidenhain => dwell = true,
                 280 | 300 | 382..=385 => home = true,
                 530 | 1530 => machine = true,
+                // Andronic: `G282 A1` machine coordinates, `G282 A-1` the part's
+                // (Autodesk's `andronic.cps`: "machine coordinate system", "part
+                // coordinate system"), modal.
+                2820 if b.has(b'A') => {
+                    self.machine_frame = b.get(b'A').is_some_and(|a| a.value > 0.0);
+                }
                 400 | 410 | 420 | 430 | 431 | 490 | 540..=599 | 610 | 611 | 640 | 150 | 500 | 510 | 641 => {}
                 // Sinumerik: G500 and G505-G599 settable frames, G60/G601/G602
                 // exact stop, G642 smoothing, G450/G451 corners.
@@ -1269,9 +1355,24 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 }
                 50 | 1070 | 630 | 650 => self.spindle = false,
                 60 => self.tool_change(start, end),
+                // `M98 P1234`: a subprogram call, whose moves run where the
+                // subprogram is, not where the call is written.
+                980 if b.has(b'P') && !self.stop_comparing => {
+                    let d = self.finding(
+                        Severity::Note,
+                        codes::VF044.code,
+                        "verify does not follow `M98` (a call of a subprogram, whose moves run in another order than they are written): the moves from here on are not compared",
+                        start as usize,
+                        end as usize,
+                        None,
+                    );
+                    Self::help(d, "the program is verified up to this line; the rest is read for its syntax only");
+                    self.stop_comparing = true;
+                }
                 20 | 300 => {
                     // The end of the program (or of a tape part): what follows
                     // is read as the next part, from the modes a program starts in.
+                    self.ended = true;
                     self.spindle = false;
                     self.motion = None;
                     self.absolute = true;
@@ -1286,6 +1387,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             return; // G4, G10 and G92 read the block's axis words as their own arguments
         }
         let any_axis = b.any(b"XYZ");
+        self.z_written |= b.has(b'Z');
+        machine |= self.machine_frame;
         if home {
             // G28/G30 (through the given point to a home position) and G38.x
             // probes end where verify cannot know.
@@ -1572,15 +1675,49 @@ impl<O: Observer + ?Sized> Run<'_, O> {
 
     /// A canned drilling cycle, expanded into its moves.
     fn cycle(&mut self, b: &Block, code: u32, target: [f64; 3], span: Span) {
-        if let Some(r) = b.get(b'R') {
-            let r = r.value * self.unit;
-            self.cycle_r = if self.absolute { r } else { self.cycle_initial_z + r };
-        }
-        if let Some(z) = b.get(b'Z') {
-            let z = z.value * self.unit;
-            self.cycle_z = if self.absolute { z } else { self.cycle_r + z };
+        // Fagor's form (8055 and 8070 manuals, "Canned cycles"): `G8x X Y Z I
+        // K`, with Z the reference plane, I the depth (K the dwell, in
+        // hundredths of a second); it has no R word, which every Fanuc
+        // family cycle that takes I (G76, G87: a shift) has.
+        let foreign = !b.has(b'R') && !self.cycle_r.is_finite() && b.any(b"BE");
+        if !b.has(b'R')
+            && !foreign
+            && let (Some(z), Some(i)) = (b.get(b'Z'), b.get(b'I'))
+        {
+            let (z, i) = (z.value * self.unit, i.value * self.unit);
+            self.cycle_r = if self.absolute { z } else { self.cycle_initial_z + z };
+            self.cycle_z = if self.absolute { i } else { self.cycle_r + i };
+        } else {
+            if let Some(r) = b.get(b'R') {
+                let r = r.value * self.unit;
+                self.cycle_r = if self.absolute { r } else { self.cycle_initial_z + r };
+            }
+            if let Some(z) = b.get(b'Z') {
+                let z = z.value * self.unit;
+                self.cycle_z = if self.absolute { z } else { self.cycle_r + z };
+            }
         }
         let (r, depth) = (self.cycle_r, self.cycle_z);
+        if foreign || (self.stop_comparing && !(r.is_finite() && depth.is_finite())) {
+            // The note was given at the cycle's first block (the cycle's
+            // later blocks, as Andronic's `G79 X40 Z-7`, are in its form too).
+            if !foreign {
+                return;
+            }
+            // Another controller's cycle words (Andronic's `G83 Z8 B4 K3 ... E120`):
+            // verify does not know what they mean, and says so.
+            let d = self.finding(
+                Severity::Note,
+                codes::VF044.code,
+                "this drilling cycle is in a controller's own form (no R plane, and B or E words no RS274 cycle takes), which verify does not read: the moves from here on are not compared",
+                0,
+                self.line_len,
+                None,
+            );
+            Self::help(d, "the program is verified up to this line; the rest is read for its syntax only");
+            self.stop_comparing = true;
+            return;
+        }
         if !r.is_finite() || !depth.is_finite() {
             self.finding(
                 Severity::Error,
@@ -1632,6 +1769,11 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             self.cut_state(&p);
         }
         if self.settings.rotary_wrap || self.stop_comparing || !(p.end[0].is_finite() && p.end[1].is_finite()) {
+            return;
+        }
+        // A move at the height G53 or G28 left unknown (the machine's
+        // home, above the work): the post's own, not compared.
+        if self.z_written && !p.end[2].is_finite() {
             return;
         }
         self.compare(&p);

@@ -235,8 +235,16 @@ pub fn not_gcode(report: &Report) -> Option<String> {
 }
 
 /// Output extensions of families verify does not read.
-pub const FOREIGN_EXTENSIONS: &[(&str, &str)] =
-    &[("plt", "HPGL"), ("hpgl", "HPGL"), ("hpg", "HPGL"), ("sbp", "ShopBot"), ("h", "Heidenhain conversational")];
+/// `.ppg` is Tekna's part program (its `DL` tool length word and `G4=`
+/// dwell are no RS274 words).
+pub const FOREIGN_EXTENSIONS: &[(&str, &str)] = &[
+    ("plt", "HPGL"),
+    ("hpgl", "HPGL"),
+    ("hpg", "HPGL"),
+    ("sbp", "ShopBot"),
+    ("h", "Heidenhain conversational"),
+    ("ppg", "Tekna"),
+];
 
 /// Why a program cannot be verified, known before it is replayed: the
 /// post (when given) writes another family, is a lathe post or wraps an
@@ -300,7 +308,7 @@ pub fn post_refusal(name: &str, post: &Post) -> Option<Diagnostic> {
 /// VF001: `name` is a program of `family`, which verify does not read.
 fn foreign_refusal(name: &str, family: &str, why: &str) -> Diagnostic {
     Diagnostic::error(postc_ir::codes::VF001, format!("`{name}` is {family}, not G-code: {why}"))
-        .help(format!("verify reads {FAMILIES}; HPGL, ShopBot and Heidenhain conversational programs are not verified"))
+        .help(format!("verify reads {FAMILIES}; programs of other families (HPGL, ShopBot, Heidenhain conversational, Kawasaki AS, Selca, Acramatic, Bridgeport DNC tape, Tekna, CSV sheets) are not verified"))
 }
 
 /// ShopBot commands that start a line with a comma after them.
@@ -310,11 +318,53 @@ const SHOPBOT: &[&str] = &[
     "ZY", "ZZ", "ZT", "SR", "SF", "VA", "VR",
 ];
 
-/// Output families verify does not read, told apart by a program's first bytes.
+/// Output families verify does not read, told apart by a program's first
+/// bytes (docs/verify.md, "Families verify does not read", gives the
+/// evidence of each):
+///
+/// - Heidenhain conversational: `BEGIN PGM`;
+/// - HPGL: `IN;`, `PU;`, `SP1;` ...;
+/// - ShopBot: two-letter commands with comma-separated arguments, `&` variables, `SA`;
+/// - Kawasaki AS (robot language): `.PROGRAM name()`, `PRINT "text"`,
+///   `LMOVE`/`JMOVE`/`LAPPRO` motion statements, `.END`;
+/// - Selca: `[` starts a remark (a block `[ text`, never a Fanuc `[`
+///   expression, which no block starts with);
+/// - Acramatic: the program's name statement `(PGM, NAME="...")`;
+/// - Bridgeport DNC tape: the DC1 (XON) byte alone on the first line, the
+///   character that starts the control's tape reader, then blocks ended
+///   by `;` with `'` comments;
+/// - CSV sheets: the first line a header of at least four fields split by
+///   `,` or `;`, and no line a block (setup and tool sheets).
 pub fn foreign_family(head: &[u8]) -> Option<&'static str> {
     let text = String::from_utf8_lossy(&head[..head.len().min(4096)]);
-    for line in text.lines().map(str::trim).filter(|l| !l.is_empty()).take(40) {
+    let lines = || text.lines().map(str::trim).filter(|l| !l.is_empty()).take(40);
+    if let Some(first) = lines().next() {
+        if first == "\u{11}" && lines().nth(1).is_some_and(|l| l.ends_with(';')) {
+            return Some("Bridgeport DNC tape");
+        }
+        let fields = |l: &str, sep: char| l.split(sep).count();
+        let sheet = |sep: char| {
+            fields(first, sep) >= 4
+                && lines().all(|l| fields(l, sep) >= 2 && !l.starts_with(['(', '%', 'N', 'G', 'O', ';']))
+        };
+        if sheet(',') || sheet(';') {
+            return Some("a CSV sheet");
+        }
+    }
+    for line in lines() {
         let upper = line.to_ascii_uppercase();
+        if upper.starts_with(".PROGRAM ")
+            || upper.starts_with("PRINT \"")
+            || ["LMOVE ", "JMOVE ", "LAPPRO ", "JAPPRO "].iter().any(|m| upper.starts_with(m))
+        {
+            return Some("Kawasaki AS (robot language)");
+        }
+        if upper.starts_with("[ ") {
+            return Some("Selca");
+        }
+        if upper.contains("(PGM, NAME=") || upper.contains("(PGM,NAME=") {
+            return Some("Acramatic");
+        }
         if upper.starts_with("BEGIN PGM") || upper.split_whitespace().nth(1) == Some("BEGIN") && upper.contains(" PGM ")
         {
             return Some("Heidenhain conversational");

@@ -487,6 +487,13 @@ impl Reader {
             }
             return Ok(false);
         }
+        // `DWT=1.5`: OSAI's dwell, in seconds (Autodesk's `osai.cps` writes
+        // it for `onDwell` and a cycle's dwell); no motion.
+        if name == b"DWT" && c.assigns() {
+            c.at += 1;
+            self.expr(c)?;
+            return Ok(false);
+        }
         let upper = std::str::from_utf8(name).unwrap_or("");
         if QUIET.contains(&upper) {
             if c.peek() == Some(b'(') || c.peek() == Some(b'[') {

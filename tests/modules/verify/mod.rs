@@ -39,5 +39,14 @@ pub mod family_tests {
         // Sinumerik is read (docs/verify.md): not a foreign family.
         assert_eq!(foreign_family(b"N10 G17 G90 G71\nN20 MCALL CYCLE81(10, 0, 2, -3, )\n"), None);
         assert_eq!(foreign_family(b"N430 G0 SUPA Z0\n"), None);
+        assert_eq!(foreign_family(b"\nPRINT \"1001\"\n;date\n"), Some("Kawasaki AS (robot language)"));
+        assert_eq!(foreign_family(b".PROGRAM job()\nLMOVE p1\n.END\n"), Some("Kawasaki AS (robot language)"));
+        assert_eq!(foreign_family(b"[ 1001\nG90\nG0 X1\n"), Some("Selca"));
+        assert_eq!(foreign_family(b": (PGM, NAME=\"1001\")\n: G90\n"), Some("Acramatic"));
+        assert_eq!(foreign_family(b"\x11\n:1001;\n'job';\nN10G90;\n"), Some("Bridgeport DNC tape"));
+        assert_eq!(foreign_family(b"Tool;Diameter;Length;Comment\n1;6;30;end mill\n"), Some("a CSV sheet"));
+        // A Boxford header and Fanuc's `[` expressions are not Selca's remarks.
+        assert_eq!(foreign_family(b"[GM HEADER]\ntype=mill\n[PROGRAM]\nG0 X1\n"), None);
+        assert_eq!(foreign_family(b"#1=[2+3]\nG0 X[#1]\n"), None);
     }
 }
