@@ -27,6 +27,8 @@ function Referee(postSource, postName) {
         out.push(String(text) + String(eol));
     };
     vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
+    // The post's own file, as postc sets it when it reads the post.
+    context.__configurationPath = String(postName);
     vm.runInContext(postSource, context, { filename: postName });
     // A static method the host writes as `__Class_method` (postc calls it
     // for `Class.method(...)`).

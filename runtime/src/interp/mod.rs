@@ -891,6 +891,12 @@ impl Engine<'_> {
                     Builtin::Undeclared => {
                         let name = values.first().map(Value::to_text).unwrap_or_else(|| crate::value::Text::new(""));
                         self.give_back(values);
+                        // A name the post never declares is a property of
+                        // the global object when the post set one
+                        // (`this._ = ...`), as JavaScript resolves it.
+                        if let Some(v) = self.global_property(&name) {
+                            return Ok(v);
+                        }
                         return Err(objects::reference_error(&name));
                     }
                     Builtin::JsString if matches!(values.first(), Some(Value::Object(_))) => {

@@ -389,6 +389,12 @@ impl Engine<'_> {
         }
     }
 
+    /// The property `name` set on the global object (`this.name = v`),
+    /// if the post set one.
+    pub(crate) fn global_property(&self, name: &Text) -> Option<Value> {
+        self.global_object.get()?.object.borrow().get(name.as_bytes()).cloned()
+    }
+
     /// `this[key] = v` on the global object: sets a property the post does
     /// not declare. Setting one of the post's own names this way is
     /// refused (RT039): `prepare` reads a global the post never assigns by

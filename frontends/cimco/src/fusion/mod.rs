@@ -78,8 +78,11 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     // Fusion's engine reads `let` and `const` (CNC-Calc's does not); postc
     // reads them as `var` (docs/fusion.md, "Language").
     diagnostics.retain(|d| d.code != codes::JS018.code);
-    let (host, host_diagnostics) = crate::parse_as(HOST, host_file, crate::Syntax::Fusion);
+    let (mut host, host_diagnostics) = crate::parse_as(HOST, host_file, crate::Syntax::Fusion);
     diagnostics.extend(host_diagnostics);
+    // `getConfigurationPath()` is the post's own file, as postc was given
+    // it (docs/fusion.md, choice 28).
+    set_host_text(&mut host, CONFIGURATION_PATH, &path.display().to_string());
     let mut post = Post::default();
     post.info.dialect = Dialect::Fusion;
     post.info.host_file = Some(host_file);
@@ -103,6 +106,22 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     }
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     (post, diagnostics)
+}
+
+/// The host's variable that holds the post's own path.
+pub const CONFIGURATION_PATH: &str = "__configurationPath";
+
+/// Gives the host's top-level `var NAME = "..."` the text `value`.
+fn set_host_text(host: &mut Program, name: &str, value: &str) {
+    for s in &mut host.body {
+        if let StmtKind::Var(ds) = &mut s.kind {
+            for d in ds.iter_mut().filter(|d| d.name.name == name) {
+                if let Some(init) = &mut d.init {
+                    init.kind = ExprKind::String(value.to_string());
+                }
+            }
+        }
+    }
 }
 
 /// The host's functions that only stop the post (`__unsupported(...)`):
@@ -149,7 +168,7 @@ fn own_text(program: &Program, name: &str) -> Option<String> {
     })
 }
 
-/// The host's statements, less the functions the post declares, then the
+/// The host's statements, less the functions (and variables) of names the post declares functions of, then the
 /// post's.
 fn merge(host: Program, post: Program) -> Program {
     let declared: HashSet<&str> = post
@@ -160,12 +179,19 @@ fn merge(host: Program, post: Program) -> Program {
             _ => None,
         })
         .collect();
+    // A host variable of a name the post declares a function of (`var end`
+    // and the post's `function end()`) is that function, as a function
+    // declaration replaces a global of its name in JavaScript.
     let mut body: Vec<_> = host
         .body
         .into_iter()
-        .filter(|s| match &s.kind {
-            StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())),
-            _ => true,
+        .filter_map(|mut s| match &mut s.kind {
+            StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())).then_some(s),
+            StmtKind::Var(ds) => {
+                ds.retain(|d| !declared.contains(d.name.name.as_str()));
+                (!ds.is_empty()).then_some(s)
+            }
+            _ => Some(s),
         })
         .collect();
     body.extend(post.body);
