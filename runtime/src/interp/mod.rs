@@ -904,6 +904,27 @@ impl Engine<'_> {
                         self.give_back(values);
                         return self.text_of(v);
                     }
+                    Builtin::NewRegExp => {
+                        let mut values = values.into_iter();
+                        let (pattern, flags) =
+                            (values.next().unwrap_or(Value::Undefined), values.next().unwrap_or(Value::Undefined));
+                        let (source, own_flags) = match &pattern {
+                            Value::Regex(r) => (r.0.source().to_string(), r.0.flags().to_string()),
+                            Value::Undefined => ("(?:)".to_string(), String::new()),
+                            other => (other.to_text().to_string(), String::new()),
+                        };
+                        let flags = match flags {
+                            Value::Undefined => own_flags,
+                            f => f.to_text().to_string(),
+                        };
+                        return match crate::regex::Regex::new(&source, &flags) {
+                            Ok(re) => Ok(Value::Regex(std::rc::Rc::new(crate::regex::RegExp(std::rc::Rc::new(re))))),
+                            Err(why) => Err(Box::new(Diagnostic::error(
+                                "JS108",
+                                format!("postc cannot run this regular expression: {why}"),
+                            ))),
+                        };
+                    }
                     Builtin::Construct => {
                         let mut values = values.into_iter();
                         let callee = values.next().unwrap_or(Value::Undefined);

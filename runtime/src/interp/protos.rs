@@ -121,6 +121,7 @@ pub(crate) fn has_method(kind: ProtoKind, name: &[u8]) -> bool {
                 | b"split"
                 | b"replace"
                 | b"search"
+                | b"match"
                 | b"concat"
                 | b"toString"
                 | b"valueOf"

@@ -1157,6 +1157,23 @@ function getPlatform() { return ""; }
 function getMaterialName() { return ""; }
 function getGlobalZRange() { return currentSection.getGlobalZRange(); }
 function isProbeOperation() { return false; }
+// Newer engines than the declarations write the job's notes and an
+// operation's (`writeSetupNotes()`, `writeSectionNotes()`: the global
+// parameter `job-notes` and the section's `notes`) as comments through the
+// post's `writeComment`, a line each, trimmed, blank lines left out.
+// postc's toolpaths give neither parameter (the job's notes are
+// `programComment`, choice 9): nothing is written (docs/fusion.md,
+// choice 29).
+function __writeNotes(text) {
+  if (text === undefined || text === null) { return; }
+  var lines = String(text).split("\n");
+  for (var i = 0; i < lines.length; ++i) {
+    var comment = lines[i].trim();
+    if (comment != "") { writeComment(comment); }
+  }
+}
+function writeSetupNotes() { __writeNotes(getGlobalParameter("job-notes")); }
+function writeSectionNotes() { __writeNotes(getParameter("notes")); }
 // The cycle kinds of a section (newer engines than the declarations give
 // them; Autodesk's reference: "isDrillingCycle(section, checkBoringCycles)",
 // both arguments optional, the current section when none is given). A

@@ -179,6 +179,24 @@ fn merge(host: Program, post: Program) -> Program {
             _ => None,
         })
         .collect();
+    // A host function the post's top-level code assigns
+    // (`setWriteInvocations = true;`) is a global variable that starts as
+    // that function, as a function declaration is a global JavaScript may
+    // assign.
+    let assigned: HashSet<&str> = post
+        .body
+        .iter()
+        .filter_map(|s| match &s.kind {
+            StmtKind::Expr(e) => match &e.kind {
+                ExprKind::Assign { target, .. } => match &target.kind {
+                    ExprKind::Ident(n) if !declared.contains(n.as_str()) => Some(n.as_str()),
+                    _ => None,
+                },
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
     // A host variable of a name the post declares a function of (`var end`
     // and the post's `function end()`) is that function, as a function
     // declaration replaces a global of its name in JavaScript.
@@ -186,6 +204,13 @@ fn merge(host: Program, post: Program) -> Program {
         .body
         .into_iter()
         .filter_map(|mut s| match &mut s.kind {
+            StmtKind::Function(f) if f.name.as_ref().is_some_and(|n| assigned.contains(n.name.as_str())) => {
+                let mut f = f.clone();
+                let name = f.name.take().expect("a named function");
+                let value = crate::ast::Expr::new(ExprKind::Function(Box::new(f)), s.span);
+                let var = crate::ast::VarDeclarator { span: name.span, name, init: Some(value) };
+                Some(crate::ast::Stmt::new(StmtKind::Var(vec![var]), s.span))
+            }
             StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())).then_some(s),
             StmtKind::Var(ds) => {
                 ds.retain(|d| !declared.contains(d.name.name.as_str()));

@@ -1179,7 +1179,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     [Expr { kind: ExprKind::String(p), .. }, Expr { kind: ExprKind::String(f), .. }] => {
                         Ir::Regex { pattern: p.clone(), flags: f.clone(), span: Some(at) }
                     }
-                    _ => return Err(why(at, "makes a `new RegExp` of a pattern known only when the post runs")),
+                    // A pattern made when the post runs: compiled then.
+                    _ => {
+                        let a = self.args(args, pre)?;
+                        Ir::Builtin(Builtin::NewRegExp, a.into_iter().take(2).collect())
+                    }
                 },
                 ExprKind::Ident(n) if self.is_host(n) => {
                     return Err(why(at, format!("makes a `new {n}`, which the host does not provide")));
