@@ -517,8 +517,14 @@ impl Engine<'_> {
             (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
             // A function as the replacement: called with each match, its
-            // groups, its index and the text, as JavaScript does.
-            (ProtoKind::String, Value::Text(t)) if name == "replace" && matches!(args.get(1), Some(Value::Func(_))) => {
+            // groups, its index and the text, as JavaScript does. A Fusion
+            // post only: it has no script tier, and CIMCO's Rhai tier
+            // refuses it (RT038), so CIMCO posts are refused in both.
+            (ProtoKind::String, Value::Text(t))
+                if name == "replace"
+                    && matches!(args.get(1), Some(Value::Func(_)))
+                    && self.post.info.dialect == postc_ir::Dialect::Fusion =>
+            {
                 let (pattern, with) = (arg(0), arg(1));
                 self.replace_by_function(t, &pattern, &with)
             }
