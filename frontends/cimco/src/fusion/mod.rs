@@ -8,7 +8,10 @@
 //! post's entry points. [`compile`] reads it as a second source file,
 //! puts its statements before the post's and lowers the two as one
 //! program; a function the post declares replaces the host's of that
-//! name, as a post's declaration shadows a global in Fusion.
+//! name, as a post's declaration shadows a global in Fusion. A file the
+//! post includes at its top level (`include("common.js")`) is read
+//! through the source map's loader and its statements take the call's
+//! place.
 
 pub mod api;
 
