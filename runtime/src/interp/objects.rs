@@ -517,13 +517,12 @@ impl Engine<'_> {
             (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
             // A function as the replacement: called with each match, its
-            // groups, its index and the text, as JavaScript does. A Fusion
-            // post only: it has no script tier, and CIMCO's Rhai tier
-            // refuses it (RT038), so CIMCO posts are refused in both.
+            // groups, its index and the text, as JavaScript does, when the
+            // post's options allow it (a post with no script tier).
             (ProtoKind::String, Value::Text(t))
                 if name == "replace"
                     && matches!(args.get(1), Some(Value::Func(_)))
-                    && self.post.info.dialect == postc_ir::Dialect::Fusion =>
+                    && self.post.options.function_replacements =>
             {
                 let (pattern, with) = (arg(0), arg(1));
                 self.replace_by_function(t, &pattern, &with)
