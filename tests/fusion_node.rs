@@ -383,6 +383,16 @@ var isMilling = "mine";
   writeSetupNotes();
   writeSectionNotes();"#,
     ),
+    (
+        "Number.toPrecision",
+        "",
+        r#"var xs = [200, 0, -0, 2.5, 0.5, 9.99, 123.456, 0.000001234, 0.0000001234, 1e21, 99.95, -1.005, 1 / 3, 15, 1234567];
+  var out = [];
+  for (var i = 0; i < xs.length; ++i) {
+    out.push(xs[i].toPrecision(1) + "/" + xs[i].toPrecision(2) + "/" + xs[i].toPrecision(4) + "/" + xs[i].toPrecision());
+  }
+  writeln(out.join(" "));"#,
+    ),
     ("include", r#"include("included.js");"#, r#"writeln(included() + " " + includedValue);"#),
 ];
 

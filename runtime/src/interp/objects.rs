@@ -531,6 +531,10 @@ impl Engine<'_> {
             (ProtoKind::String, other) => text_method(&other.to_text(), name, args),
             (ProtoKind::Number, Value::Num(n)) => match name {
                 "toFixed" => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
+                "toPrecision" => match arg(0) {
+                    Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
+                    p => js::to_precision(*n, js_number(&p)).map(|s| Value::text(&s)).map_err(type_error),
+                },
                 "toString" => match arg(0) {
                     Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
                     r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
