@@ -406,6 +406,13 @@ pub enum Builtin {
     InstanceOf,
     /// JavaScript `Array.isArray(value)`.
     IsArray,
+    /// JavaScript `new RegExp(pattern, flags)` of a pattern made when the
+    /// post runs (a literal pattern is an [`Expr::Regex`], compiled once):
+    /// compiled at each evaluation; a pattern postc does not read stops
+    /// the post there (JS108). Operands: the pattern (a text, or a regular
+    /// expression whose source is taken) and the flags (`undefined` for
+    /// none, or the regular expression's own).
+    NewRegExp,
     /// A name the post never defines, read or called: JavaScript's
     /// `ReferenceError` when it runs (`try` catches it). The operand is the
     /// name, as text.

@@ -845,6 +845,13 @@ declare_codes! {
     JS110: Warning, "a Fusion post calls host API postc does not run yet",
         example = "function onClose() { if (false) { redirectToFile(\"setup.txt\"); } }",
         fix = "Nothing to do if the job never reaches the call; otherwise report it to postc's authors with the post.";
+    /// A Fusion post calls `include("name")` at its top level, and the file `name` beside the post
+    /// cannot be read (it is not there, or it is not readable), or includes nest more than 8 files
+    /// deep. Fusion's engine runs the included file where the call is: without it the post is
+    /// incomplete, so it is refused.
+    JS111: Error, "a Fusion post includes a file that cannot be read",
+        example = "include(\"missing-common.js\");\nfunction onOpen() {}",
+        fix = "Put the included file beside the post, under the name the post gives it.";
     /// The line does not read as VcPost: a word or symbol stands where the language allows none.
     /// The help, when there is one, says what was expected.
     VC001: Error, "a line VcPost cannot read (unexpected word or symbol)",

@@ -246,6 +246,13 @@ pub struct OutputOptions {
     /// RON only when set.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub reads_ahead: bool,
+    /// `text.replace(pattern, function)` calls the function for each
+    /// match: a post with no script tier (Fusion) sets it; without it the
+    /// interpreter refuses a function replacement (RT038), as CIMCO's
+    /// script tier does, so the two tiers of a CIMCO post agree. Written
+    /// to RON only when set.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub function_replacements: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
@@ -300,6 +307,7 @@ impl Default for OutputOptions {
             exact_arcs: false,
             arcs_in_every_plane: false,
             reads_ahead: false,
+            function_replacements: false,
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,

@@ -413,6 +413,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                         | Builtin::HasProperty
                         | Builtin::JsString
                         | Builtin::Construct
+                        | Builtin::NewRegExp
                         | Builtin::Prototype
                         | Builtin::CreateObject
                         | Builtin::InstanceOf,

@@ -308,6 +308,58 @@ pub fn to_uint32(x: f64) -> u32 {
 /// JavaScript's `x.toFixed(digits)`: rounds the exact binary value, exact
 /// halves away from zero, a sign for every number below zero; 1e21 and
 /// above print as `String(x)`.
+/// JavaScript's `x.toPrecision(p)`: `p` significant digits (1 to 100,
+/// else `Err` with JavaScript's RangeError), rounded from the exact value
+/// of the double, a tie to the larger; exponential notation (`2.0e+2`)
+/// when the exponent is under -6 or not under `p`, else fixed.
+pub fn to_precision(x: f64, p: f64) -> Result<String, String> {
+    if !x.is_finite() {
+        return Ok(number_to_string(x));
+    }
+    if !(1.0..=100.0).contains(&p.trunc()) {
+        return Err("RangeError: toPrecision() argument must be between 1 and 100".into());
+    }
+    let p = p.trunc() as usize;
+    let sign = if x < 0.0 { "-" } else { "" };
+    if x == 0.0 {
+        return Ok(if p > 1 { format!("0.{}", "0".repeat(p - 1)) } else { "0".into() });
+    }
+    let exact = format!("{:.1100}", x.abs());
+    let (int_part, frac) = exact.split_once('.').unwrap_or((&exact, ""));
+    let all: Vec<u8> = int_part.bytes().chain(frac.bytes()).collect();
+    let first = all.iter().position(|&c| c != b'0').unwrap_or(0);
+    let mut e = int_part.len() as i64 - first as i64 - 1;
+    let mut sig: Vec<u8> = all[first..].iter().copied().chain(std::iter::repeat(b'0')).take(p).collect();
+    if all.get(first + p).is_some_and(|&c| c >= b'5') {
+        let mut i = p;
+        loop {
+            if i == 0 {
+                sig.insert(0, b'1');
+                sig.truncate(p);
+                e += 1;
+                break;
+            }
+            i -= 1;
+            if sig[i] == b'9' {
+                sig[i] = b'0';
+            } else {
+                sig[i] += 1;
+                break;
+            }
+        }
+    }
+    let sig = String::from_utf8(sig).unwrap_or_default();
+    Ok(if e < -6 || e >= p as i64 {
+        let mantissa = if p > 1 { format!("{}.{}", &sig[..1], &sig[1..]) } else { sig };
+        format!("{sign}{mantissa}e{}{}", if e >= 0 { "+" } else { "-" }, e.abs())
+    } else if e >= 0 {
+        let point = e as usize + 1;
+        if p > point { format!("{sign}{}.{}", &sig[..point], &sig[point..]) } else { format!("{sign}{sig}") }
+    } else {
+        format!("{sign}0.{}{sig}", "0".repeat((-e - 1) as usize))
+    })
+}
+
 pub fn to_fixed(x: f64, digits: f64) -> String {
     let d = if digits.is_finite() { digits.trunc().clamp(0.0, 100.0) as usize } else { 0 };
     if x.is_nan() {

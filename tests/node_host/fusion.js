@@ -27,6 +27,15 @@ function Referee(postSource, postName) {
         out.push(String(text) + String(eol));
     };
     vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
+    // The post's own file, as postc sets it when it reads the post.
+    context.__configurationPath = String(postName);
+    // `include("name")`: the file beside the post, run where the call is
+    // (postc splices it in at the top level; docs/fusion.md, choice 30).
+    var folder = path.dirname(String(postName));
+    context.include = function (name) {
+        var file = path.join(folder, String(name));
+        vm.runInContext(fs.readFileSync(file, "utf8"), context, { filename: file });
+    };
     vm.runInContext(postSource, context, { filename: postName });
     // A static method the host writes as `__Class_method` (postc calls it
     // for `Class.method(...)`).

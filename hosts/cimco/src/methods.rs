@@ -121,6 +121,32 @@ pub(super) fn string_method(s: &str, name: &str, args: &Array, at: Position) -> 
                 None => text(regex::replace_text(s, &to_string(&a(0)), &with)),
             }
         }
+        // As the interpreter's `match` (postc_runtime's `text_method`).
+        "match" => {
+            let made;
+            let re = match a(0).try_cast::<JsRegex>() {
+                Some(r) => {
+                    made = r.0.0.clone();
+                    &made
+                }
+                None => {
+                    let pattern = if a(0).is_unit() { "(?:)".to_string() } else { to_string(&a(0)) };
+                    made = std::rc::Rc::new(
+                        regex::Regex::new(&pattern, "").map_err(|e| fail(format!("SyntaxError: {e}")))?,
+                    );
+                    &made
+                }
+            };
+            let found = regex::matches(re, s).map_err(|e| unsupported(e, at))?;
+            if found.is_empty() {
+                Dynamic::from(values::JsNull)
+            } else if re.global() {
+                Dynamic::from(JsArr::new(found.iter().map(|m| text(&s[m.start..m.end])).collect()))
+            } else {
+                let groups = found.into_iter().next().map(|m| m.groups).unwrap_or_default();
+                Dynamic::from(JsArr::new(groups.into_iter().map(|g| g.map_or(Dynamic::UNIT, text)).collect()))
+            }
+        }
         "search" => match a(0).try_cast::<JsRegex>() {
             Some(r) => num(regex::search(&r.0.0, s).map_err(|e| unsupported(e, at))?),
             None => num(regex::search_text(s, &to_string(&a(0))).map_err(|e| fail(format!("SyntaxError: {e}")))?),

@@ -296,6 +296,10 @@ fn method(ctx: &NativeCallContext, state: &Shared, o: Dynamic, name: &str, args:
         let n = to_number(&o);
         return match name {
             "toFixed" => Ok(text(js::to_fixed(n, to_number(&arg(&args, 0)).max(0.0)))),
+            "toPrecision" => match arg(&args, 0) {
+                p if p.is_unit() => Ok(text(js::number_to_string(n))),
+                p => js::to_precision(n, to_number(&p)).map(text).map_err(fail),
+            },
             "toString" => match arg(&args, 0) {
                 r if r.is_unit() => Ok(text(js::number_to_string(n))),
                 r => radix_string(n, to_number(&r)).map(text),

@@ -891,12 +891,39 @@ impl Engine<'_> {
                     Builtin::Undeclared => {
                         let name = values.first().map(Value::to_text).unwrap_or_else(|| crate::value::Text::new(""));
                         self.give_back(values);
+                        // A name the post never declares is a property of
+                        // the global object when the post set one
+                        // (`this._ = ...`), as JavaScript resolves it.
+                        if let Some(v) = self.global_property(&name) {
+                            return Ok(v);
+                        }
                         return Err(objects::reference_error(&name));
                     }
                     Builtin::JsString if matches!(values.first(), Some(Value::Object(_))) => {
                         let v = values.first().cloned().unwrap_or(Value::Undefined);
                         self.give_back(values);
                         return self.text_of(v);
+                    }
+                    Builtin::NewRegExp => {
+                        let mut values = values.into_iter();
+                        let (pattern, flags) =
+                            (values.next().unwrap_or(Value::Undefined), values.next().unwrap_or(Value::Undefined));
+                        let (source, own_flags) = match &pattern {
+                            Value::Regex(r) => (r.0.source().to_string(), r.0.flags().to_string()),
+                            Value::Undefined => ("(?:)".to_string(), String::new()),
+                            other => (other.to_text().to_string(), String::new()),
+                        };
+                        let flags = match flags {
+                            Value::Undefined => own_flags,
+                            f => f.to_text().to_string(),
+                        };
+                        return match crate::regex::Regex::new(&source, &flags) {
+                            Ok(re) => Ok(Value::Regex(std::rc::Rc::new(crate::regex::RegExp(std::rc::Rc::new(re))))),
+                            Err(why) => Err(Box::new(Diagnostic::error(
+                                "JS108",
+                                format!("postc cannot run this regular expression: {why}"),
+                            ))),
+                        };
                     }
                     Builtin::Construct => {
                         let mut values = values.into_iter();

@@ -389,6 +389,12 @@ impl Engine<'_> {
         }
     }
 
+    /// The property `name` set on the global object (`this.name = v`),
+    /// if the post set one.
+    pub(crate) fn global_property(&self, name: &Text) -> Option<Value> {
+        self.global_object.get()?.object.borrow().get(name.as_bytes()).cloned()
+    }
+
     /// `this[key] = v` on the global object: sets a property the post does
     /// not declare. Setting one of the post's own names this way is
     /// refused (RT039): `prepare` reads a global the post never assigns by
@@ -456,6 +462,41 @@ impl Engine<'_> {
         }
     }
 
+    /// `text.replace(pattern, f)`: each match (every one under the `g`
+    /// flag, else the first; a text pattern its first occurrence) replaced
+    /// by what `f(match, group 1, ..., index, text)` returns, as text.
+    fn replace_by_function(&mut self, t: &Text, pattern: &Value, f: &Value) -> Result<Value> {
+        let found = match pattern {
+            Value::Regex(r) => regex::matches(&r.0, t).map_err(unsupported)?,
+            other => {
+                let needle = other.to_text();
+                t.find(needle.as_str())
+                    .map(|start| regex::Match {
+                        start,
+                        end: start + needle.len(),
+                        groups: vec![Some(needle.to_string())],
+                    })
+                    .into_iter()
+                    .collect()
+            }
+        };
+        let mut out = String::with_capacity(t.len());
+        let mut last = 0;
+        for m in found {
+            out.push_str(&t[last..m.start]);
+            let mut args: Vec<Value> =
+                m.groups.iter().map(|g| g.as_deref().map_or(Value::Undefined, Value::text)).collect();
+            args.push(Value::Num(m.index(t)));
+            args.push(Value::Text(t.clone()));
+            let got = self.call_value(f, Value::Undefined, args)?;
+            let got = self.text_of(got)?;
+            got.append_to(&mut out);
+            last = m.end;
+        }
+        out.push_str(&t[last.min(t.len())..]);
+        Ok(Value::Text(Text::from(out)))
+    }
+
     /// Runs the built-in method `name` of values of `kind` on `this` (a
     /// method called on a value, or held as a value and called with
     /// `call` or `apply`). A TypeError when `this` is not of that kind
@@ -475,10 +516,25 @@ impl Engine<'_> {
             (ProtoKind::Object, _) => self.object_method(name, this, args),
             (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
+            // A function as the replacement: called with each match, its
+            // groups, its index and the text, as JavaScript does, when the
+            // post's options allow it (a post with no script tier).
+            (ProtoKind::String, Value::Text(t))
+                if name == "replace"
+                    && matches!(args.get(1), Some(Value::Func(_)))
+                    && self.post.options.function_replacements =>
+            {
+                let (pattern, with) = (arg(0), arg(1));
+                self.replace_by_function(t, &pattern, &with)
+            }
             (ProtoKind::String, Value::Text(t)) => text_method(t, name, args),
             (ProtoKind::String, other) => text_method(&other.to_text(), name, args),
             (ProtoKind::Number, Value::Num(n)) => match name {
                 "toFixed" => Ok(Value::text(&js::to_fixed(*n, js_number(&arg(0)).max(0.0)))),
+                "toPrecision" => match arg(0) {
+                    Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
+                    p => js::to_precision(*n, js_number(&p)).map(|s| Value::text(&s)).map_err(type_error),
+                },
                 "toString" => match arg(0) {
                     Value::Undefined => Ok(Value::text(&js::number_to_string(*n))),
                     r => js::radix_string(*n, js_number(&r)).map(|s| Value::text(&s)).map_err(type_error),
@@ -878,6 +934,29 @@ fn text_method(t: &Text, name: &str, args: &[Value]) -> Result<Value> {
                 pattern => regex::replace_text(t, &pattern.to_text(), &with),
             };
             Value::Text(Text::from(out))
+        }
+        "match" => {
+            // A text pattern is made a regular expression, as JavaScript
+            // does; the `g` flag gives every match's text, else the first
+            // match and its groups (`undefined` for a group that took no
+            // part). postc's arrays hold no `index` or `input`.
+            let re = match arg(0) {
+                Value::Regex(r) => r.0.clone(),
+                Value::Undefined => std::rc::Rc::new(regex::Regex::new("(?:)", "").map_err(type_error)?),
+                pattern => std::rc::Rc::new(
+                    regex::Regex::new(&pattern.to_text(), "")
+                        .map_err(|e| type_error(format!("the pattern of `match` does not read: {e}")))?,
+                ),
+            };
+            let found = regex::matches(&re, t).map_err(unsupported)?;
+            if found.is_empty() {
+                Value::Null
+            } else if re.global() {
+                Value::array(found.iter().map(|m| Value::text(&t[m.start..m.end])).collect())
+            } else {
+                let groups = found.into_iter().next().map(|m| m.groups).unwrap_or_default();
+                Value::array(groups.into_iter().map(|g| g.map_or(Value::Undefined, |g| Value::text(&g))).collect())
+            }
         }
         "search" => Value::Num(match arg(0) {
             Value::Regex(r) => regex::search(&r.0, t).map_err(unsupported)?,

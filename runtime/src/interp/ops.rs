@@ -323,9 +323,12 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         }
         // Only the interpreter constructs (it calls the function) and makes
         // objects with prototypes; they are never constants.
-        Builtin::Construct | Builtin::Undeclared | Builtin::Prototype | Builtin::CreateObject | Builtin::InstanceOf => {
-            Value::Undefined
-        }
+        Builtin::Construct
+        | Builtin::Undeclared
+        | Builtin::Prototype
+        | Builtin::CreateObject
+        | Builtin::InstanceOf
+        | Builtin::NewRegExp => Value::Undefined,
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }

@@ -121,11 +121,12 @@ pub(crate) fn has_method(kind: ProtoKind, name: &[u8]) -> bool {
                 | b"split"
                 | b"replace"
                 | b"search"
+                | b"match"
                 | b"concat"
                 | b"toString"
                 | b"valueOf"
         ),
-        ProtoKind::Number => matches!(name, b"toFixed" | b"toString" | b"valueOf"),
+        ProtoKind::Number => matches!(name, b"toFixed" | b"toPrecision" | b"toString" | b"valueOf"),
         ProtoKind::Boolean => matches!(name, b"toString" | b"valueOf"),
         ProtoKind::Function => matches!(name, b"call" | b"apply" | b"toString"),
         ProtoKind::RegExp => matches!(name, b"test" | b"toString"),

@@ -32,7 +32,7 @@
 
 pub mod text;
 
-pub use text::{replace, replace_text, search, search_text, split};
+pub use text::{Match, matches, replace, replace_text, search, search_text, split};
 
 /// The code of a use of a regular expression that depends on the
 /// `lastIndex` postc's regular expressions do not keep (`exec`,

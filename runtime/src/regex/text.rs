@@ -59,6 +59,45 @@ pub fn replace(re: &Regex, text: &str, replacement: &str) -> Result<String, Stri
     Ok(out)
 }
 
+/// One match of a pattern: where it is (bytes) and its groups' texts
+/// (`None` for a group that took no part), the match itself first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Match {
+    pub start: usize,
+    pub end: usize,
+    pub groups: Vec<Option<String>>,
+}
+
+impl Match {
+    /// The UTF-16 index of the match in `text`, as JavaScript counts it.
+    pub fn index(&self, text: &str) -> f64 {
+        utf16_len(&text[..self.start])
+    }
+}
+
+/// The matches `replace` and `match` see: every one under the `g` flag
+/// (an empty match moves on by one character), else the first; `Err` as
+/// for [`replace`].
+pub fn matches(re: &Regex, text: &str) -> Result<Vec<Match>, String> {
+    re.check(text)?;
+    let mut out = Vec::new();
+    let mut pos = 0;
+    while pos <= text.len() {
+        let Some(caps) = re.captures_at(text, pos) else { break };
+        let whole = caps.get(0).expect("group 0 is the match");
+        out.push(Match {
+            start: whole.start(),
+            end: whole.end(),
+            groups: caps.iter().map(|g| g.map(|m| m.as_str().to_string())).collect(),
+        });
+        pos = if whole.is_empty() { next_after(text, whole.end()) } else { whole.end() };
+        if !re.global() {
+            break;
+        }
+    }
+    Ok(out)
+}
+
 /// `text.replace(pattern, replacement)` with a text pattern: its first
 /// occurrence, the replacement read as for a pattern without groups.
 pub fn replace_text(text: &str, pattern: &str, replacement: &str) -> String {

@@ -826,13 +826,27 @@ function debug(message) {}
 function validate(condition, message) { if (!condition) { error(message); } }
 
 // ---- Properties ----
+// A property is named by its name or given as its object
+// (`getProperty(properties.method)`, as newer declarations type it:
+// `getProperty(property: ScriptObject, defaultValue)`): the name of the
+// post's property that is that object.
+function __propertyName(property) {
+  if (property !== null && typeof property == "object") {
+    for (var k in properties) {
+      if (properties[k] === property) { return k; }
+    }
+  }
+  return property;
+}
 function getProperty(name, otherwise) {
+  name = __propertyName(name);
   var p = properties[name];
   if (p === undefined) { return otherwise; }
   if (p !== null && typeof p == "object" && p.value !== undefined) { return p.value; }
   return p;
 }
 function setProperty(name, value) {
+  name = __propertyName(name);
   var p = properties[name];
   if (p !== null && typeof p == "object" && p.value !== undefined) { p.value = value; } else { properties[name] = value; }
 }
@@ -1145,6 +1159,42 @@ function getPlatform() { return ""; }
 function getMaterialName() { return ""; }
 function getGlobalZRange() { return currentSection.getGlobalZRange(); }
 function isProbeOperation() { return false; }
+// Newer engines than the declarations write the job's notes and an
+// operation's (`writeSetupNotes()`, `writeSectionNotes()`: the global
+// parameter `job-notes` and the section's `notes`) as comments through the
+// post's `writeComment`, a line each, trimmed, blank lines left out.
+// postc's toolpaths give neither parameter (the job's notes are
+// `programComment`, choice 9): nothing is written (docs/fusion.md,
+// choice 29).
+function __writeNotes(text) {
+  if (text === undefined || text === null) { return; }
+  var lines = String(text).split("\n");
+  for (var i = 0; i < lines.length; ++i) {
+    var comment = lines[i].trim();
+    if (comment != "") { writeComment(comment); }
+  }
+}
+function writeSetupNotes() { __writeNotes(getGlobalParameter("job-notes")); }
+function writeSectionNotes() { __writeNotes(getParameter("notes")); }
+// The cycle kinds of a section (newer engines than the declarations give
+// them; Autodesk's reference: "isDrillingCycle(section, checkBoringCycles)",
+// both arguments optional, the current section when none is given). A
+// drilling cycle is a section of the `drill` strategy that is no milling
+// cycle; a milling cycle is one with a cycle diameter (circular and thread
+// milling), or, when boring cycles count, a shift: postc's cycles
+// (docs/fusion.md, "The call order") have neither, so none is one.
+function __cycleSection(args) {
+  return (args.length > 0 && typeof args[0] == "object" && args[0] !== null) ? args[0] : currentSection;
+}
+function isDrillingCycle() {
+  var s = __cycleSection(arguments);
+  return s !== undefined && s.strategy == "drill";
+}
+function isMillingCycle() { return false; }
+function isTappingCycle() {
+  var s = __cycleSection(arguments);
+  return s !== undefined && s.strategy == "drill" && String(s.getFirstCycle()).indexOf("tapping") >= 0;
+}
 function isInspectionOperation() { return false; }
 function isDepositionOperation() { return false; }
 function isMilling() { return currentSection === undefined || currentSection.type == TYPE_MILLING; }
@@ -1362,6 +1412,9 @@ function Template(text) {
 
 // Files beside the program: a post that opens one stops when it does.
 function TextFile(path, write, encoding) { __unsupported("TextFile"); }
+// Sending the program over the network (a post that uploads it to its
+// machine): the same.
+function XMLHttpRequest() { __unsupported("XMLHttpRequest"); }
 
 // `new Table(values, {initial, force}, message)`: `lookup(id)` is the
 // value for `id` (counted from `initial`), or an error with `message`.
@@ -1401,6 +1454,17 @@ function __FileSystem_makeFolder(path) { __unsupported("FileSystem.makeFolder");
 function __FileSystem_getTemporaryFolder() { __unsupported("FileSystem.getTemporaryFolder"); }
 function __FileSystem_getTemporaryFile(prefix) { __unsupported("FileSystem.getTemporaryFile"); }
 function FileSystem() {}
+// `Math.random()`: the same numbers at every run, so that a program is
+// reproducible (docs/fusion.md, choice 27): the Park-Miller generator
+// (x' = 16807 x mod (2^31 - 1), every step exact in doubles) from 1.
+var __randomState = 1;
+function __Math_random() {
+  __randomState = (__randomState * 16807) % 2147483647;
+  return __randomState / 2147483647;
+}
+// `Array.isArray` as a value (`var isArray = Array.isArray || ...`); a call
+// `Array.isArray(v)` is JavaScript's own.
+function __Array_isArray(v) { return Object.prototype.toString.call(v) == "[object Array]"; }
 function isSpeedFeedSynchronizationActive() { return false; }
 function getGlobalPosition(p) { return __vector(p); }
 function getFirstTool() { return getNumberOfSections() > 0 ? getSection(0).tool : undefined; }
@@ -1429,7 +1493,11 @@ function setCurrentPositionY(v) { __position.y = v; }
 function setCurrentPositionZ(v) { __position.z = v; }
 function isWellKnownCommand(command) { return command >= 0 && command <= COMMAND_PROBE_OFF; }
 function getQuadrant(angle) { return Math.floor((angle % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI) / (Math.PI / 2)); }
-function getConfigurationPath() { __unsupported("getConfigurationPath"); }
+// The post's own file, as postc was given it (postc sets it when it reads
+// the post; docs/fusion.md, choice 28), and its folder.
+var __configurationPath = "";
+function getConfigurationPath() { return __configurationPath; }
+function getConfigurationFolder() { return __FileSystem_getFolderPath(__configurationPath); }
 function loadText(path, encoding) { __unsupported("loadText"); }
 function include(path) { __unsupported("include"); }
 function execute(path, args, hide, workingFolder) { __unsupported("execute"); }
@@ -1645,7 +1713,10 @@ function Record(id, motion) {
 function getCurrentRecordId() { return __recordId; }
 function getNextRecord() { return new Record(__recordId + 1, __nextMotion != 0); }
 function getRecord(id) { __unsupported("getRecord"); }
-function createToolRenderer() { __unsupported("createToolRenderer"); }
+// postc draws no pictures of tools: there is no renderer (null), which the
+// posts that draw them test for (`if (toolRenderer)`) (docs/fusion.md,
+// choice 26).
+function createToolRenderer() { return null; }
 function redirectToFile(path) { __unsupported("redirectToFile"); }
 function getOutputPath() { return __outputPath; }
 function getIntermediatePath() { __unsupported("getIntermediatePath"); }

@@ -8,7 +8,10 @@
 //! post's entry points. [`compile`] reads it as a second source file,
 //! puts its statements before the post's and lowers the two as one
 //! program; a function the post declares replaces the host's of that
-//! name, as a post's declaration shadows a global in Fusion.
+//! name, as a post's declaration shadows a global in Fusion. A file the
+//! post includes at its top level (`include("common.js")`) is read
+//! through the source map's loader and its statements take the call's
+//! place.
 
 pub mod api;
 
@@ -76,13 +79,20 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     let written = std::str::from_utf8(bytes).map_or_else(|_| String::new(), str::to_string);
     let file = sources.add(path.display().to_string(), text);
     let host_file = sources.add(HOST_NAME.to_string(), HOST.to_string());
-    let text = sources.text(file).unwrap_or_default();
-    let (program, mut diagnostics) = crate::parse_as(text, file, crate::Syntax::Fusion);
+    let text = sources.text(file).unwrap_or_default().to_string();
+    let (mut program, mut diagnostics) = crate::parse_as(&text, file, crate::Syntax::Fusion);
+    // `include("file")` at the top level: the file's statements in its
+    // place (docs/fusion.md, choice 30).
+    let folder = path.parent().unwrap_or(Path::new("")).to_path_buf();
+    program.body = included(std::mem::take(&mut program.body), &folder, sources, &mut diagnostics, 0);
     // Fusion's engine reads `let` and `const` (CNC-Calc's does not); postc
     // reads them as `var` (docs/fusion.md, "Language").
     diagnostics.retain(|d| d.code != codes::JS018.code);
-    let (host, host_diagnostics) = crate::parse_as(HOST, host_file, crate::Syntax::Fusion);
+    let (mut host, host_diagnostics) = crate::parse_as(HOST, host_file, crate::Syntax::Fusion);
     diagnostics.extend(host_diagnostics);
+    // `getConfigurationPath()` is the post's own file, as postc was given
+    // it (docs/fusion.md, choice 28).
+    set_host_text(&mut host, CONFIGURATION_PATH, &path.display().to_string());
     let mut post = Post::default();
     post.info.dialect = Dialect::Fusion;
     post.info.host_file = Some(host_file);
@@ -107,6 +117,90 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     }
     diagnostics.sort_by_key(|d| d.primary_span().map(|s| (s.start, s.end)));
     (post, diagnostics)
+}
+
+/// How deep `include`s may nest (an included file that includes
+/// another, ...): past it, or in a loop, an include is refused.
+const INCLUDE_DEPTH: usize = 8;
+
+/// The statements with each top-level `include("name")` replaced by the
+/// statements of the file `name` beside the post, as Fusion's engine runs
+/// the included file where the call is (its functions and variables are
+/// the post's globals). A file that cannot be read is an error at the call
+/// (JS111) naming it; an `include` of a name made when the post runs is
+/// left to the host, which stops there.
+fn included(
+    body: Vec<crate::ast::Stmt>,
+    folder: &Path,
+    sources: &mut SourceMap,
+    diagnostics: &mut Vec<Diagnostic>,
+    depth: usize,
+) -> Vec<crate::ast::Stmt> {
+    let mut out = Vec::with_capacity(body.len());
+    for s in body {
+        let name = match &s.kind {
+            StmtKind::Expr(e) => match &e.kind {
+                ExprKind::Call { callee, args } if matches!(&callee.kind, ExprKind::Ident(n) if n == "include") => {
+                    match args.as_slice() {
+                        [crate::ast::Expr { kind: ExprKind::String(name), .. }] => Some(name.clone()),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some(name) = name else {
+            out.push(s);
+            continue;
+        };
+        let path = folder.join(&name);
+        if depth >= INCLUDE_DEPTH {
+            diagnostics.push(
+                Diagnostic::error(
+                    codes::JS111,
+                    format!("the post includes `{name}` more than {INCLUDE_DEPTH} files deep"),
+                )
+                .at(s.span, "this include")
+                .note("an included file that includes itself, directly or through others, never ends"),
+            );
+            continue;
+        }
+        match sources.loader().read(&path) {
+            Ok(bytes) => {
+                let text = String::from_utf8_lossy(&bytes).into_owned();
+                let id = sources.add(path.display().to_string(), text);
+                let text = sources.text(id).unwrap_or_default().to_string();
+                let (program, found) = crate::parse_as(&text, id, crate::Syntax::Fusion);
+                diagnostics.extend(found.into_iter().filter(|d| d.code != codes::JS018.code));
+                let inner = path.parent().unwrap_or(folder).to_path_buf();
+                out.extend(included(program.body, &inner, sources, diagnostics, depth + 1));
+            }
+            Err(e) => diagnostics.push(
+                Diagnostic::error(codes::JS111, format!("the post includes `{name}`, which cannot be read: {e}"))
+                    .at(s.span, "this include")
+                    .note(format!("Fusion reads it from the post's folder: `{}`", path.display()))
+                    .note("no program is written"),
+            ),
+        }
+    }
+    out
+}
+
+/// The host's variable that holds the post's own path.
+pub const CONFIGURATION_PATH: &str = "__configurationPath";
+
+/// Gives the host's top-level `var NAME = "..."` the text `value`.
+fn set_host_text(host: &mut Program, name: &str, value: &str) {
+    for s in &mut host.body {
+        if let StmtKind::Var(ds) = &mut s.kind {
+            for d in ds.iter_mut().filter(|d| d.name.name == name) {
+                if let Some(init) = &mut d.init {
+                    init.kind = ExprKind::String(value.to_string());
+                }
+            }
+        }
+    }
 }
 
 /// The host's functions that only stop the post (`__unsupported(...)`):
@@ -153,7 +247,7 @@ fn own_text(program: &Program, name: &str) -> Option<String> {
     })
 }
 
-/// The host's statements, less the functions the post declares, then the
+/// The host's statements, less the functions (and variables) of names the post declares functions of, then the
 /// post's.
 fn merge(host: Program, post: Program) -> Program {
     let declared: HashSet<&str> = post
@@ -164,12 +258,52 @@ fn merge(host: Program, post: Program) -> Program {
             _ => None,
         })
         .collect();
+    // A host function the post's top-level code assigns
+    // (`setWriteInvocations = true;`, `var isMilling = false;`) is a global variable that starts as
+    // that function, as a function declaration is a global JavaScript may
+    // assign.
+    let assigned: HashSet<&str> = post
+        .body
+        .iter()
+        .filter_map(|s| match &s.kind {
+            StmtKind::Expr(e) => match &e.kind {
+                ExprKind::Assign { target, .. } => match &target.kind {
+                    ExprKind::Ident(n) if !declared.contains(n.as_str()) => Some(vec![n.as_str()]),
+                    _ => None,
+                },
+                _ => None,
+            },
+            // `var isMilling = false;` assigns the host's `isMilling` too.
+            StmtKind::Var(ds) => Some(
+                ds.iter()
+                    .filter(|d| d.init.is_some() && !declared.contains(d.name.name.as_str()))
+                    .map(|d| d.name.name.as_str())
+                    .collect(),
+            ),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    // A host variable of a name the post declares a function of (`var end`
+    // and the post's `function end()`) is that function, as a function
+    // declaration replaces a global of its name in JavaScript.
     let mut body: Vec<_> = host
         .body
         .into_iter()
-        .filter(|s| match &s.kind {
-            StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())),
-            _ => true,
+        .filter_map(|mut s| match &mut s.kind {
+            StmtKind::Function(f) if f.name.as_ref().is_some_and(|n| assigned.contains(n.name.as_str())) => {
+                let mut f = f.clone();
+                let name = f.name.take().expect("a named function");
+                let value = crate::ast::Expr::new(ExprKind::Function(Box::new(f)), s.span);
+                let var = crate::ast::VarDeclarator { span: name.span, name, init: Some(value) };
+                Some(crate::ast::Stmt::new(StmtKind::Var(vec![var]), s.span))
+            }
+            StmtKind::Function(f) => f.name.as_ref().is_none_or(|n| !declared.contains(n.name.as_str())).then_some(s),
+            StmtKind::Var(ds) => {
+                ds.retain(|d| !declared.contains(d.name.name.as_str()));
+                (!ds.is_empty()).then_some(s)
+            }
+            _ => Some(s),
         })
         .collect();
     body.extend(post.body);

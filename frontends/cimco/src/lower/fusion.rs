@@ -87,6 +87,9 @@ pub(crate) fn lower(
     post.options.arcs_in_every_plane = true;
     // `getSection(i)`, the tool table and the next tool know the whole job.
     post.options.reads_ahead = true;
+    // A Fusion post has no script tier: its interpreter runs what CIMCO's
+    // Rhai tier refuses (docs/fusion.md, "Language").
+    post.options.function_replacements = true;
     // Each line ends with the host's `EOL`, which `setEOL` changes
     // (docs/fusion.md, choice 5): the host writes it, so the post's own
     // line ending is empty.

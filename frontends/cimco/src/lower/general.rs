@@ -1138,6 +1138,15 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 {
                     return Err(why(at, format!("reads `{o}.{}` of an output variable or format", property.name)));
                 }
+                // A static method of a class the host defines, or adds to
+                // JavaScript's, read as a value (`Array.isArray || ...`): its
+                // top-level function `__Array_isArray`, as a call does.
+                if let ExprKind::Ident(o) = &object.kind
+                    && (matches!(self.model().scopes.resolve(o, self.at), Symbol::TopFn(_)) || self.is_host(o))
+                    && let Some(&i) = self.model().scopes.top_fn_names.get(&format!("__{o}_{}", property.name))
+                {
+                    return Ok(Ir::Closure { function: self.shared.layout.top_fn[i], captures: vec![] });
+                }
                 let o = self.expr(object, pre)?;
                 Ir::Member(Box::new(o), Box::new(Ir::Text(property.name.clone())))
             }
@@ -1170,7 +1179,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     [Expr { kind: ExprKind::String(p), .. }, Expr { kind: ExprKind::String(f), .. }] => {
                         Ir::Regex { pattern: p.clone(), flags: f.clone(), span: Some(at) }
                     }
-                    _ => return Err(why(at, "makes a `new RegExp` of a pattern known only when the post runs")),
+                    // A pattern made when the post runs: compiled then.
+                    _ => {
+                        let a = self.args(args, pre)?;
+                        Ir::Builtin(Builtin::NewRegExp, a.into_iter().take(2).collect())
+                    }
                 },
                 ExprKind::Ident(n) if self.is_host(n) => {
                     return Err(why(at, format!("makes a `new {n}`, which the host does not provide")));
@@ -1380,6 +1393,12 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn method(&mut self, object: &Expr, name: &str, args: &[Expr], at: Span, pre: &mut Vec<IrStmt>) -> R<Ir> {
         if let ExprKind::Ident(o) = &object.kind {
             if o == "Math" && self.is_host("Math") {
+                // A function of `Math` the host writes in JavaScript
+                // (`Math.random`, docs/fusion.md choice 27).
+                if let Some(&i) = self.model().scopes.top_fn_names.get(&format!("__Math_{name}")) {
+                    let f = self.shared.layout.top_fn[i];
+                    return Ok(Ir::Call(f, self.args(args, pre)?));
+                }
                 let a = self.args(args, pre)?;
                 return math(name, a, at);
             }
