@@ -114,31 +114,10 @@ fn fusion_corpus_posts_convert_to_fusion_with_only_the_note_added() {
         return;
     }
     let posts = crate::fusion_corpus::posts(&dir);
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
-    // Compiling a large post recurses deeply in a debug build: the workers
-    // have big stacks.
-    let results: Vec<Result<bool, String>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers)
-            .map(|_| {
-                let (posts, next) = (&posts, &next);
-                std::thread::Builder::new()
-                    .stack_size(256 << 20)
-                    .spawn_scoped(scope, move || {
-                        let mut done = Vec::new();
-                        loop {
-                            let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                            let Some(path) = posts.get(i) else { break };
-                            // Every tenth is converted a second time too.
-                            done.push(fusion_as_written(path, i % 10 == 0));
-                        }
-                        done
-                    })
-                    .expect("spawn a worker")
-            })
-            .collect();
-        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
-    });
+    let numbered: Vec<(usize, &PathBuf)> = posts.iter().enumerate().collect();
+    // Every tenth is converted a second time too.
+    let results: Vec<Result<bool, String>> =
+        support::in_workers(&numbered, |(i, path)| vec![fusion_as_written(path, i % 10 == 0)]);
     let failures: Vec<String> = results.iter().filter_map(|r| r.as_ref().err().cloned()).collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     let as_written = results.iter().filter(|r| matches!(r, Ok(true))).count();

@@ -51,46 +51,23 @@ fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs(
     support::cimco::export_jsonl(&drill, &drill_jsonl).expect("export the drilling job");
     let jobs = [("milling", job, jsonl), ("drilling", drill, drill_jsonl)];
     let posts = posts(&dir);
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
-    // Each worker takes the next post; compiling a large post recurses
-    // deeply in a debug build, so the workers have big stacks.
-    let results: Vec<Result<(), String>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers)
-            .map(|_| {
-                let (posts, next, jobs, script, dir) = (&posts, &next, &jobs, &script, &dir);
-                std::thread::Builder::new()
-                    .stack_size(256 << 20)
-                    .spawn_scoped(scope, move || {
-                        let mut done = Vec::new();
-                        loop {
-                            let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                            let Some(post) = posts.get(i) else { break };
-                            let name = post.strip_prefix(dir).unwrap_or(post).display().to_string();
-                            // JS110 warns of host API the job may never reach.
-                            let Ok(compiled) = support::compile_warned(post) else { continue };
-                            for (what, job, jsonl) in jobs {
-                                let Ok(ours) = support::cimco::post_toolpath(&compiled, job) else { continue };
-                                let node =
-                                    Command::new("node").arg(script).arg(post).arg(jsonl).output().expect("run node");
-                                done.push(if !node.status.success() {
-                                    Err(format!(
-                                        "{name} ({what}): Node.js stops: {}",
-                                        String::from_utf8_lossy(&node.stderr)
-                                    ))
-                                } else if node.stdout != ours {
-                                    Err(format!("{name} ({what}):\n{}", support::diff(&node.stdout, &ours)))
-                                } else {
-                                    Ok(())
-                                });
-                            }
-                        }
-                        done
-                    })
-                    .expect("a thread")
-            })
-            .collect();
-        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    let results: Vec<Result<(), String>> = support::in_workers(&posts, |post| {
+        let name = post.strip_prefix(&dir).unwrap_or(post).display().to_string();
+        // JS110 warns of host API the job may never reach.
+        let Ok(compiled) = support::compile_warned(post) else { return Vec::new() };
+        let mut done = Vec::new();
+        for (what, job, jsonl) in &jobs {
+            let Ok(ours) = support::cimco::post_toolpath(&compiled, job) else { continue };
+            let node = Command::new("node").arg(&script).arg(post).arg(jsonl).output().expect("run node");
+            done.push(if !node.status.success() {
+                Err(format!("{name} ({what}): Node.js stops: {}", String::from_utf8_lossy(&node.stderr)))
+            } else if node.stdout != ours {
+                Err(format!("{name} ({what}):\n{}", support::diff(&node.stdout, &ours)))
+            } else {
+                Ok(())
+            });
+        }
+        done
     });
     let same = results.iter().filter(|r| r.is_ok()).count();
     let differ: Vec<String> = results.into_iter().filter_map(Result::err).collect();

@@ -305,3 +305,29 @@ pub fn diff(expected: &[u8], actual: &[u8]) -> String {
     }
     out
 }
+
+/// `each` over every item, on a few worker threads with big stacks
+/// (compiling a large post recurses deeply in a debug build): what each
+/// item gives, in no particular order.
+pub fn in_workers<T: Sync, R: Send>(items: &[T], each: impl Fn(&T) -> Vec<R> + Sync) -> Vec<R> {
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|_| {
+                let (next, each) = (&next, &each);
+                std::thread::Builder::new()
+                    .stack_size(256 << 20)
+                    .spawn_scoped(scope, move || {
+                        let mut done = Vec::new();
+                        while let Some(item) = items.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed)) {
+                            done.extend(each(item));
+                        }
+                        done
+                    })
+                    .expect("a worker thread")
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().expect("a worker")).collect()
+    })
+}

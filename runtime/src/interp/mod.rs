@@ -1227,14 +1227,7 @@ impl Engine<'_> {
                 if runnable.uses_arguments {
                     self.arguments.push(Value::array(frame.clone()));
                 }
-                let fill = if runnable.starts_undefined {
-                    // Arguments past the parameters are only in `arguments`.
-                    frame.truncate(runnable.params);
-                    Value::Undefined
-                } else {
-                    Value::Null
-                };
-                frame.resize((runnable.slots as usize).max(frame.len()), fill);
+                fill_frame(runnable, &mut frame);
                 // Calls nest up to MAX_DEPTH whatever the thread's stack
                 // (a debug build's frames are large, a host's thread may be
                 // small): the stack grows on the heap when it runs low.
@@ -1322,13 +1315,7 @@ impl Engine<'_> {
         }
         let mut frame = self.spare();
         frame.extend(args);
-        let fill = if runnable.starts_undefined {
-            frame.truncate(runnable.params);
-            Value::Undefined
-        } else {
-            Value::Null
-        };
-        frame.resize((runnable.slots as usize).max(frame.len()), fill);
+        fill_frame(runnable, &mut frame);
         self.steps += 1;
         let result = if self.steps > self.post.options.step_budget {
             Err(Box::new(self.budget_error(None)))
@@ -1637,4 +1624,18 @@ fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut 
         Expr::Text(t) => t.value(),
         _ => tmp,
     }
+}
+
+/// A call's frame from its arguments: the parameters, then the function's
+/// other slots, `undefined` where JavaScript starts them so (arguments
+/// past the parameters are only in `arguments` then), `null` otherwise.
+#[inline]
+fn fill_frame(runnable: &crate::exec::Function, frame: &mut Vec<Value>) {
+    let fill = if runnable.starts_undefined {
+        frame.truncate(runnable.params);
+        Value::Undefined
+    } else {
+        Value::Null
+    };
+    frame.resize((runnable.slots as usize).max(frame.len()), fill);
 }

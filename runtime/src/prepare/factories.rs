@@ -61,7 +61,7 @@ use std::collections::{HashMap, HashSet};
 
 use postc_ir::{FunctionId, GlobalId, LocalId, Place};
 
-use super::fields::{each_expr, runs_code_stmt};
+use super::fields::{each_expr, each_stmt, runs_code_stmt};
 use crate::exec::{self, Expr, Stmt};
 
 /// What a closure of the factory's object captures, by position.
@@ -371,7 +371,7 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
     let mut assigned: HashMap<GlobalId, usize> = HashMap::new();
     let mut set_keys: HashSet<String> = HashSet::new();
     let mut any_key = false;
-    each_stmt(functions, handlers, init, &mut |s| match s {
+    each_stmt(functions, handlers, init, &mut |s| match &*s {
         Stmt::Assign(Place::Global(g), _) => *assigned.entry(*g).or_default() += 1,
         Stmt::SetMember { key, .. } => match key {
             Expr::Text(t) => {
@@ -440,28 +440,4 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
         };
     };
     each_expr(functions, handlers, init, &mut rewrite);
-}
-
-/// Calls `f` on every statement of the post's code, at every depth.
-fn each_stmt(
-    functions: &mut [exec::Function],
-    handlers: &mut [Vec<Stmt>],
-    init: &mut [Stmt],
-    f: &mut dyn FnMut(&Stmt),
-) {
-    fn stmts(body: &mut [Stmt], f: &mut dyn FnMut(&Stmt)) {
-        for s in body {
-            f(s);
-            s.for_each_body_mut(|b| stmts(b, f));
-        }
-    }
-    for function in functions {
-        if let exec::Body::Native(body) = &mut function.body {
-            stmts(body, f);
-        }
-    }
-    for h in handlers {
-        stmts(h, f);
-    }
-    stmts(init, f);
 }

@@ -374,21 +374,17 @@ pub(super) fn runs_code_stmt(s: &mut Stmt) -> bool {
     found
 }
 
-/// Calls `f` on every expression of the post's code, at every depth
-/// (on an expression before the expressions it is made of).
-pub(super) fn each_expr(
+/// Calls `f` on every statement of the post's code, at every depth (on a
+/// statement before the statements of its bodies).
+pub(super) fn each_stmt(
     functions: &mut [exec::Function],
     handlers: &mut [Vec<Stmt>],
     init: &mut [Stmt],
-    f: &mut dyn FnMut(&mut Expr),
+    f: &mut dyn FnMut(&mut Stmt),
 ) {
-    fn expr(e: &mut Expr, f: &mut dyn FnMut(&mut Expr)) {
-        f(e);
-        e.for_each_operand_mut(|a| expr(a, f));
-    }
-    fn stmts(body: &mut [Stmt], f: &mut dyn FnMut(&mut Expr)) {
+    fn stmts(body: &mut [Stmt], f: &mut dyn FnMut(&mut Stmt)) {
         for s in body {
-            s.for_each_expr_mut(|e| expr(e, f));
+            f(s);
             s.for_each_body_mut(|b| stmts(b, f));
         }
     }
@@ -401,6 +397,21 @@ pub(super) fn each_expr(
         stmts(h, f);
     }
     stmts(init, f);
+}
+
+/// Calls `f` on every expression of the post's code, at every depth
+/// (on an expression before the expressions it is made of).
+pub(super) fn each_expr(
+    functions: &mut [exec::Function],
+    handlers: &mut [Vec<Stmt>],
+    init: &mut [Stmt],
+    f: &mut dyn FnMut(&mut Expr),
+) {
+    fn expr(e: &mut Expr, f: &mut dyn FnMut(&mut Expr)) {
+        f(e);
+        e.for_each_operand_mut(|a| expr(a, f));
+    }
+    each_stmt(functions, handlers, init, &mut |s| s.for_each_expr_mut(|e| expr(e, f)));
 }
 
 /// The text of a constant key.
