@@ -153,8 +153,14 @@ impl Printer<'_> {
                 post.section(s).is_some_and(|h| matches!(&f.body, postc_ir::Body::Native(b) if *b == h.body))
             })
         };
-        let code: Vec<&postc_ir::Function> = post.functions.iter().filter(|f| !is_section_copy(f)).collect();
-        if !code.is_empty() || !post.globals.is_empty() || !post.init.is_empty() {
+        // A Fusion post's own functions, not its host's.
+        let own = |f: &&postc_ir::Function| {
+            post.info.host_file.is_none() || f.span.is_some_and(|s| Some(s.file) != post.info.host_file)
+        };
+        let code: Vec<&postc_ir::Function> =
+            post.functions.iter().filter(|f| !is_section_copy(f)).filter(own).collect();
+        let host_code = post.functions.len() > code.len() && post.info.host_file.is_some();
+        if !code.is_empty() || host_code || !post.globals.is_empty() || !post.init.is_empty() {
             let span = code.iter().find_map(|f| f.span);
             self.refuse(
                 codes::CV002.code,
