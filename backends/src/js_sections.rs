@@ -1609,14 +1609,16 @@ fn is_identifier(name: &str) -> bool {
 }
 
 /// Whether `name` can name a variable of a printed post: a JavaScript
-/// identifier that is no word JavaScript reserves and none of `taken`, the
-/// names the printed post gives a meaning of its own.
+/// identifier that is no word JavaScript reserves, no function of
+/// [`LIBRARY`] (which every printed post carries) and none of `taken`, the
+/// other names the printed post gives a meaning of its own.
 pub(crate) fn is_js_name(name: &str, taken: &[&str]) -> bool {
     let mut chars = name.chars();
     chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_' || c == '$')
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$')
         && !JS_RESERVED.contains(&name)
         && !taken.contains(&name)
+        && !LIBRARY.lines().any(|l| l.strip_prefix("function ").and_then(|r| r.split('(').next()) == Some(name))
 }
 
 /// Words JavaScript reserves, and the global values a post cannot rename.
@@ -1697,11 +1699,6 @@ const PRINTED_NAMES: &[&str] = &[
     "chords",
     "linearize",
     "remainder",
-    "createWord",
-    "repeatText",
-    "plainDigits",
-    "formatNumber",
-    "word",
     "linebreak",
     "onOpen",
     "onLinear",
