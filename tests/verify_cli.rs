@@ -149,13 +149,16 @@ fn post_verifies_by_default_and_writes_nothing_when_verify_finds_an_error() {
     assert!(text(&o).contains("the program was not written"), "{}", text(&o));
     assert!(text(&o).contains("--no-verify"), "{}", text(&o));
     assert_eq!(std::fs::read(&out).unwrap(), b"before", "the file there before is left as it was");
-    // The findings name the program's lines.
-    assert!(text(&o).contains("holes.nc:"), "{}", text(&o));
-    // To standard output: nothing at all.
+    // The findings name the program's lines and show them, read back from
+    // the staged file (the verify thread keeps none of the program).
+    assert!(text(&o).contains("holes.nc:7:1"), "{}", text(&o));
+    assert!(text(&o).contains("N50 G98 G81 X20.000 Y15.000 Z2.000 R-3.000"), "{}", text(&o));
+    // To standard output: nothing at all; the lines shown from what is held back.
     let o = postc(&["post", post, DRILL]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     assert!(o.stdout.is_empty());
-    assert!(text(&o).contains("<standard output>:"), "{}", text(&o));
+    assert!(text(&o).contains("<standard output>:7:1"), "{}", text(&o));
+    assert!(text(&o).contains("N50 G98 G81 X20.000 Y15.000 Z2.000 R-3.000"), "{}", text(&o));
 }
 
 #[test]

@@ -29,6 +29,14 @@ pub trait Sink {
     /// what is held) and say what was produced. `tape` is the post's tape
     /// splitting, which names the parts.
     fn finish(self: Box<Self>, tape: Option<&TapeSplitting>) -> io::Result<Finished>;
+
+    /// The program written so far, its parts joined, when it is at most
+    /// `limit` bytes long and the sink can read it back (verification's
+    /// findings show their lines from it).
+    fn written(&self, limit: usize) -> Option<Vec<u8>> {
+        let _ = limit;
+        None
+    }
 }
 
 /// Parts kept in memory.
@@ -58,6 +66,10 @@ impl Sink for MemorySink {
 
     fn finish(self: Box<Self>, _tape: Option<&TapeSplitting>) -> io::Result<Finished> {
         Ok(Finished::Memory(self.parts))
+    }
+
+    fn written(&self, limit: usize) -> Option<Vec<u8>> {
+        (self.parts.iter().map(Vec::len).sum::<usize>() <= limit).then(|| self.parts.concat())
     }
 }
 

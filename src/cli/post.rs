@@ -250,6 +250,12 @@ pub fn run(args: Args) -> Result<(), Failed> {
     if let Some((v, file)) = verification {
         let finish = v.finish();
         written.push(file);
+        // The program's lines, to show with verify's findings: read back
+        // from the sink before it is staged.
+        let held = match (&finish.outcome, &finish.program) {
+            (Outcome::Verified { report }, Some(p)) if !report.findings.is_empty() => p.written(super::verifying::HOLD),
+            _ => None,
+        };
         // A program for files is staged now (committed below, or dropped);
         // standard output waits for the verdict.
         report.output = match (finish.program, args.output.is_some()) {
@@ -259,7 +265,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
                 Finished::Streamed
             }
         };
-        verdict = Some((finish.outcome, finish.bytes, finish.part_lines, file));
+        verdict = Some((finish.outcome, held, finish.bytes, finish.part_lines, file));
     }
     let trace = match recorder {
         Some(recorder) => {
@@ -271,7 +277,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         }
         None => None,
     };
-    if let Some((outcome, bytes, part_lines, file)) = verdict {
+    if let Some((outcome, held, bytes, part_lines, file)) = verdict {
         let outputs = match &report.output {
             Finished::Files(files) => files.iter().map(|f| f.display().to_string()).collect(),
             _ => vec!["-".to_string()],
@@ -284,7 +290,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
             summary: args.verify,
             trace: trace.as_deref().map(|t| (t, outputs.as_slice(), part_lines.as_slice())),
         };
-        unverified.extend(checked.judge(outcome, &rules, &mut sources)?);
+        unverified.extend(checked.judge(outcome, held, &rules, &mut sources)?);
     }
     for why in unverified {
         let mut note = vec![postc_verify::unverified(&name, &why)];
@@ -359,8 +365,14 @@ impl Checked<'_> {
     /// Prints the findings, with the severities the rules give them; fails
     /// when an error remains (the program is then not written). Returns
     /// why the program was not verified, when verify could not read it.
-    fn judge(&self, outcome: Outcome, rules: &LevelRules, sources: &mut SourceMap) -> Result<Option<String>, Failed> {
-        let (report, held) = match outcome {
+    fn judge(
+        &self,
+        outcome: Outcome,
+        held: Option<Vec<u8>>,
+        rules: &LevelRules,
+        sources: &mut SourceMap,
+    ) -> Result<Option<String>, Failed> {
+        let report = match outcome {
             Outcome::Foreign(family) => {
                 return Ok(Some(format!("its first lines are {family}, which verify does not read")));
             }
@@ -375,7 +387,7 @@ impl Checked<'_> {
                 self.apply(rules, &mut stalled, None);
                 return self.verdict(&stalled, sources);
             }
-            Outcome::Verified { report, held } => (report, held),
+            Outcome::Verified { report } => report,
         };
         if let Some(why) = postc_verify::not_gcode(&report) {
             return Ok(Some(why));

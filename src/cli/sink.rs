@@ -73,6 +73,18 @@ impl Sink for FileSink {
         }
         Ok(Finished::Files(names))
     }
+
+    fn written(&self, limit: usize) -> Option<Vec<u8>> {
+        let mut all = Vec::new();
+        for part in &self.parts {
+            let path = part.path().ok()?;
+            if all.len() as u64 + std::fs::metadata(path).ok()?.len() > limit as u64 {
+                return None;
+            }
+            all.extend(std::fs::read(path).ok()?);
+        }
+        (all.len() <= limit).then_some(all)
+    }
 }
 
 /// Standard output, held back until the run ends or 64 MiB accumulate.
@@ -106,5 +118,9 @@ impl Sink for StdoutSink {
         out.write_all(&self.held)?;
         out.flush()?;
         Ok(Finished::Streamed)
+    }
+
+    fn written(&self, limit: usize) -> Option<Vec<u8>> {
+        (!self.streaming && self.held.len() <= limit).then(|| self.held.clone())
     }
 }

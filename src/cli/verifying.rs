@@ -18,7 +18,10 @@
 //!
 //! The program sink's own `finish` is held back ([`Verification::finish`]
 //! hands the sink over): the caller names and commits the files, or writes
-//! standard output, only once verification has passed.
+//! standard output, only once verification has passed. The verify thread
+//! keeps none of the program: when verify finds something, the caller reads
+//! the lines to show back from the sink ([`Sink::written`]), so a verified
+//! run takes no more memory, and no more fresh pages, than one that is not.
 
 use std::cell::RefCell;
 use std::collections::VecDeque;
@@ -39,7 +42,7 @@ use postc_verify::{Report, Settings};
 const BATCH: usize = 1024;
 /// Messages in flight at most.
 const IN_FLIGHT: usize = 32;
-/// Programs up to this size are kept to show their lines with findings.
+/// Programs up to this size are read back to show their lines with findings.
 pub const HOLD: usize = 16 << 20;
 /// Batches of events kept at most while the verify thread waits for
 /// program bytes: past them the post has written nothing for this many
@@ -72,9 +75,8 @@ pub enum Outcome {
     /// [`STALL`] batches of events, after this many bytes of program:
     /// verification stopped there.
     Stalled { bytes: u64, events: usize },
-    /// The verification's report, and the program's bytes when it is at
-    /// most [`HOLD`] long and verify found something (to show its lines).
-    Verified { report: Report, held: Option<Vec<u8>> },
+    /// The verification's report.
+    Verified { report: Report },
 }
 
 /// The posting thread's end of the channel, shared by the two tees.
@@ -260,6 +262,10 @@ impl Sink for TeeSink {
         tee.parked = self.inner.take();
         Ok(Finished::Streamed)
     }
+
+    fn written(&self, limit: usize) -> Option<Vec<u8>> {
+        self.inner.as_ref()?.written(limit)
+    }
 }
 
 /// The toolpath's events, each also sent to the verify thread as its
@@ -330,10 +336,6 @@ struct Program {
     at: usize,
     /// Bytes received so far.
     read: u64,
-    /// While the program is at most [`HOLD`] long: the chunks read before
-    /// `chunk` (kept as they came, not copied), so that they and `chunk`
-    /// are the program so far.
-    held: Option<Vec<Vec<u8>>>,
 }
 
 impl Program {
@@ -355,17 +357,7 @@ impl Program {
             }
         };
         self.read += chunk.len() as u64;
-        if self.read > HOLD as u64 {
-            self.held = None;
-        }
         Some(chunk)
-    }
-
-    /// The program so far, when it is held.
-    fn held(&mut self) -> Option<Vec<u8>> {
-        let mut held = self.held.take()?;
-        held.push(std::mem::take(&mut self.chunk));
-        Some(held.concat())
     }
 
     /// The next `n` bytes of the program (fewer at its end), not consumed.
@@ -394,12 +386,7 @@ impl BufRead for Program {
         while self.at >= self.chunk.len() {
             let Some(chunk) = self.next_chunk() else { return Ok(&[]) };
             let read = std::mem::replace(&mut self.chunk, chunk);
-            match &mut self.held {
-                Some(held) => held.push(read),
-                None => {
-                    let _ = self.demux.borrow().give_back.bytes.try_send(read);
-                }
-            }
+            let _ = self.demux.borrow().give_back.bytes.try_send(read);
             self.at = 0;
         }
         Ok(&self.chunk[self.at..])
@@ -448,7 +435,7 @@ fn verify_thread(
         ended: false,
         stalled: false,
     }));
-    let mut program = Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, read: 0, held: Some(Vec::new()) };
+    let mut program = Program { demux: Rc::clone(&demux), chunk: Vec::new(), at: 0, read: 0 };
     let head = program.peek(4096);
     let family = match postc_verify::looks_binary(head) {
         true => Some("binary data"),
@@ -470,6 +457,5 @@ fn verify_thread(
     if demux.borrow().stalled {
         return Outcome::Stalled { bytes: program.read, events: STALL * BATCH };
     }
-    let held = if report.findings.is_empty() { None } else { program.held() };
-    Outcome::Verified { report, held }
+    Outcome::Verified { report }
 }
