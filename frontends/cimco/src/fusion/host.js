@@ -1770,7 +1770,13 @@ function Date() {
   this.getYear = function () { return __dateParts().year - 1900; };
   this.getMonth = function () { return __dateParts().month; };
   this.getDate = function () { return __dateParts().day; };
-  this.getDay = function () { return 0; };
+  // The day of the week, 0 for Sunday (Sakamoto's method).
+  this.getDay = function () {
+    var p = __dateParts();
+    var y = p.month < 2 ? p.year - 1 : p.year;
+    var t = [0, 3, 2, 5, 0, 3, 5, 1, 4, 6, 2, 4];
+    return (((y + Math.floor(y / 4) - Math.floor(y / 100) + Math.floor(y / 400) + t[p.month] + p.day) % 7) + 7) % 7;
+  };
   this.getHours = function () { return __dateParts().hours; };
   this.getMinutes = function () { return __dateParts().minutes; };
   this.getSeconds = function () { return __dateParts().seconds; };
