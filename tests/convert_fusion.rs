@@ -88,7 +88,7 @@ begin FOOTER
 
 /// Real Vectric posts that convert to `.cps` posts whose every program
 /// Node.js prints as postc posts the source (docs/convert.md).
-const REAL_FUSION_AT_LEAST: usize = 45;
+const REAL_FUSION_AT_LEAST: usize = 72;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
 /// `Tool` to the next `Tool` or `End`), or `None` when it has none. The
@@ -386,7 +386,7 @@ fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
 /// Node.js running a `.cps` post over a JSON Lines toolpath, with post
 /// properties set.
 fn run_fusion_node(post: &Path, jsonl: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion_convert.js");
     let mut command = Command::new("node");
     command.arg(script).arg(post).arg(jsonl);
     for (name, value) in properties {
@@ -587,11 +587,17 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
         assert!(text.contains(entry), "{entry}\n{text}");
     }
     let refused = dir.path().join("refused.cps");
-    let o =
-        postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "fusion", "-o", &refused.display().to_string()]);
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vectric/shopbot_inch.pp",
+        "--to",
+        "fusion",
+        "-o",
+        &refused.display().to_string(),
+    ]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("error[CV007]") && err.contains("`[PRODUCT]` in HEADER: Fusion never hands"), "{err}");
+    assert!(err.contains("error[CV007]") && err.contains("`[X_ORIGIN_POS]` in HEADER: Fusion never hands"), "{err}");
     assert!(!refused.exists(), "a refused conversion writes nothing");
     // The home position: properties the user sets.
     let homed = dir.path().join("homed.cps");

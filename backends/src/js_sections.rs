@@ -178,6 +178,8 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
             Quantity::HomeX => Some("homeX"),
             Quantity::HomeY => Some("homeY"),
             Quantity::HomeZ => Some("homeZ"),
+            // The last section's tool when this section's differs.
+            Quantity::PreviousTool => Some("previousTool"),
             // The job's texts, each made in `onOpen` from what Fusion
             // hands ([`JOB_TEXTS`]).
             q => JOB_TEXTS.iter().find(|(t, ..)| *t == q).map(|(_, name, _)| *name),
@@ -417,7 +419,7 @@ impl Printer<'_> {
                                         "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
                                     ),
                                     Host::Fusion => format!(
-                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no toolpath notes, product name, origin offsets or jet power (docs/convert.md, \"Fusion posts\")"
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no toolpath notes, origin offsets or jet power (docs/convert.md, \"Fusion posts\")"
                                     ),
                                 };
                                 self.refuse(
@@ -686,6 +688,10 @@ function afterRapid() {{
                 let Stmt::Line { pieces, .. } = s else { continue };
                 let mut parts: Vec<String> = Vec::new();
                 let mut numbered = false;
+                // The values the line prints, and whether it prints the
+                // position of a move (which every move has).
+                let mut values: Vec<&str> = Vec::new();
+                let mut position = false;
                 for p in pieces {
                     match p {
                         Piece::Text(bytes) => parts.push(js_string(&self.decode(bytes).unwrap_or_default())),
@@ -694,11 +700,33 @@ function afterRapid() {{
                             let ValueSource::Quantity(q) = var.source else { continue };
                             let Some(value) = handed(q, self.host) else { continue };
                             numbered |= q == Quantity::BlockNumber;
+                            // In a move section X, Y and Z are the move's
+                            // position (the runtime's `is_move_section`).
+                            let moves =
+                                (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(&section);
+                            if matches!(q, Quantity::X | Quantity::Y | Quantity::Z) && moves {
+                                position = true;
+                            } else if q != Quantity::BlockNumber {
+                                values.push(value);
+                            }
                             let word = if q.is_text() { "textWord" } else { "word" };
                             parts.push(format!("{word}({}, {value})", self.names[v.index()]));
                         }
                         _ => {}
                     }
+                }
+                // A line every value of which the job does not give (no
+                // number, an empty text) is left out, its block number
+                // unused, as Vectric's runtime leaves it out
+                // (docs/vectric.md, decision 51).
+                if self.host == Host::Fusion && !position && !values.is_empty() {
+                    self.out.push_str(&format!(
+                        "    var line = {};\n    if (!allMissing([{}])) {{\n        writeln(line);\n{}    }}\n",
+                        parts.join(" + "),
+                        values.join(", "),
+                        if numbered { "        nextBlock();\n" } else { "" }
+                    ));
+                    continue;
                 }
                 match self.host {
                     Host::Cimco => {
@@ -848,6 +876,7 @@ var toolName = "";
 var toolNotes = "";
 var toolpathName = "";
 var lastTool = NaN;
+var previousTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
 // The operation's tool feeds and clearance height, and the home position
@@ -875,6 +904,10 @@ function onOpen() {{
 // modal memory starts afresh.
 function onSection() {{
     toolNumber = tool.number;
+    // The tool before a new one ([TP]): none until a second tool comes.
+    if (toolNumber != lastTool && lastTool === lastTool) {{
+        previousTool = lastTool;
+    }}
     toolDiameter = tool.diameter * scale;
     toolName = tool.description;
     toolNotes = tool.comment;
@@ -1466,7 +1499,8 @@ const HOME_PROPERTIES: &[(Quantity, &str, &str)] = &[
 /// folder come from `getOutputPath()`; the tools and toolpaths from the
 /// sections Fusion hands in advance (`getToolTable()`, as Autodesk's posts
 /// list their tools at `onOpen`, and each section's `operation-comment`);
-/// the file notes are the program comment; the origin texts say where the
+/// the file notes are the program comment; the product is the global
+/// parameter `generated-by`; the origin texts say where the
 /// stock lies about the work origin (`getWorkpiece()`).
 const JOB_TEXTS: &[(Quantity, &str, &str)] = &[
     (
@@ -1489,6 +1523,7 @@ const JOB_TEXTS: &[(Quantity, &str, &str)] = &[
         "var operations = [];\n    for (var s = 0; s < getNumberOfSections(); s++) {\n        operations.push(getSection(s).getParameter(\"operation-comment\", \"\"));\n    }\n    toolpathsOutput = operations.join(\", \");",
     ),
     (Quantity::FileNotes, "fileNotes", "fileNotes = programComment;"),
+    (Quantity::Product, "product", "product = getGlobalParameter(\"generated-by\", \"\");"),
     (Quantity::XyOriginText, "xyOrigin", "xyOrigin = isWorkpieceDefined() ? xyOriginOf(getWorkpiece()) : \"\";"),
     (
         Quantity::ZOriginText,
@@ -1572,6 +1607,18 @@ const TEXT_WORD: &str = r#"function substitute(text) {
         }
     }
     return out;
+}
+
+// Whether a line's every value is one the job does not give: no number,
+// an empty text.
+function allMissing(values) {
+    for (var i = 0; i < values.length; i++) {
+        var v = values[i];
+        if (typeof v == "number" ? v === v : String(v) !== "") {
+            return false;
+        }
+    }
+    return true;
 }
 
 function textWord(w, value) {

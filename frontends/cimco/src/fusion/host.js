@@ -1795,6 +1795,19 @@ function Date() {
   };
 }
 
+// ---- The program that made the job (Fusion's `generated-by`) ----
+// Fusion hands every post the CAM product and its version as the global
+// parameter `generated-by`, with the others after `onOpen` ("Inventor HSM
+// Ultimate 6.2.0.15626" in Autodesk's debug trace of fanuc.cps): the
+// job's product, else postc, what a Vectric post's `[PRODUCT]` prints
+// (docs/fusion.md, choice 9). postc's runtime calls this before
+// `__fusion_open`.
+function __fusion_job(product) {
+  if (typeof product == "string") {
+    __parameters["generated-by"] = product;
+  }
+}
+
 // ---- Entry points a post may leave out ----
 function onOpen() {}
 function onClose() {}
