@@ -16,11 +16,12 @@
 //! construct, at the source's line and column:
 //!
 //! - a value the engine never hands the post (for CNC-Calc `[T]`,
-//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position; for both
-//!   file names, the date and time, jet power, ...) in a section the post
-//!   prints is `CV007` (Fusion hands the tool's feeds and clearance
-//!   height as operation parameters, and the home position is the
-//!   converted post's properties, which the user sets);
+//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position, file
+//!   names, the date and time; for both jet power, toolpath notes, ...)
+//!   in a section the post prints is `CV007` (Fusion hands the tool's
+//!   feeds and clearance height as operation parameters, the home
+//!   position is the converted post's properties, which the user sets,
+//!   and the job's texts are made from what it hands: [`JOB_TEXTS`]);
 //! - a section the engine never calls (CNC-Calc: `TOOLCHANGE`,
 //!   `NEW_SEGMENT`, `DWELL_MOVE`, ...) is left out with warning `CV008`;
 //! - a rule the engine gives the post no way to follow (helical plunge
