@@ -324,36 +324,42 @@ fn prints(post: &Post, quantities: &[Quantity]) -> bool {
 /// Whether the job's origin texts say where its material lies about the
 /// origin, as a Fusion stock does in its work coordinates: "Bottom Left"
 /// where the material's least X and Y are 0, "Centre" where it is
-/// centred on 0, ...; Z zero the material's top (`MaterialSurface`) or
-/// its bottom (`Table`). A job without an origin or material has none to
-/// disagree with.
+/// centred on 0, ..., an empty text where 0 is no corner and not the
+/// centre; Z zero the material's top (`MaterialSurface`) or its bottom
+/// (`Table`). A job without an origin says Vectric's defaults (an empty
+/// XY text, the material surface); one without material says them too
+/// (a Fusion document without stock places no origin).
 fn origin_agrees(toolpath: &Path) -> bool {
     let mut sources = postc_report::source_map();
     let Ok(mut events) = postc_driver::open_toolpath(toolpath, &mut sources) else { return false };
     let mut diags = Vec::new();
     let Some((Event::Job(job), _)) = events.next_event(&mut diags) else { return true };
-    let no_origin = job.origin.is_none();
-    let (Some(origin), Some(m)) = (job.origin, job.material) else { return no_origin };
+    let (said_xy, said_z) = match job.origin {
+        Some(o) => (o.xy, o.z),
+        None => (String::new(), ZOrigin::MaterialSurface),
+    };
+    let Some(m) = job.material else { return said_xy.is_empty() && said_z == ZOrigin::MaterialSurface };
     let zero = |v: f64| v.abs() <= 1e-9;
-    let side = |lower: f64, upper: f64, low: &str, high: &str| {
+    let side = |lower: f64, upper: f64, low: &'static str, high: &'static str| {
         if zero(lower) {
-            low.to_string()
+            low
         } else if zero(upper) {
-            high.to_string()
+            high
         } else if zero(lower + upper) {
-            "centre".to_string()
+            "centre"
         } else {
-            String::new()
+            ""
         }
     };
     let x = side(m.min.x, m.max.x, "Left", "Right");
     let y = side(m.min.y, m.max.y, "Bottom", "Top");
-    let xy = if x == "centre" && y == "centre" { "Centre".to_string() } else { format!("{y} {x}") };
-    let z = match origin.z {
-        ZOrigin::MaterialSurface => zero(m.max.z) || !zero(m.min.z),
-        ZOrigin::Table => zero(m.min.z) && !zero(m.max.z),
+    let xy = match (x, y) {
+        ("centre", "centre") => "Centre".to_string(),
+        ("" | "centre", _) | (_, "" | "centre") => String::new(),
+        _ => format!("{y} {x}"),
     };
-    origin.xy == xy && z
+    let table = zero(m.min.z) && !zero(m.max.z);
+    said_xy == xy && (said_z == ZOrigin::Table) == table
 }
 
 /// The toolpaths a post applies to: no jet, no arc outside XY (in any
