@@ -1511,8 +1511,8 @@ const JOB_TEXTS: &[(Quantity, &str, &str)] = &[
     ),
     (Quantity::FileDir, "fileDir", "fileDir = FileSystem.getFolderPath(getOutputPath());"),
     (Quantity::PathName, "fileDir", "fileDir = FileSystem.getFolderPath(getOutputPath());"),
-    (Quantity::Date, "jobDate", "jobDate = vectricDate(new Date());"),
-    (Quantity::Time, "jobTime", "jobTime = vectricTime(new Date());"),
+    (Quantity::Date, "jobDate", "jobDate = vectricDate(jobClock());"),
+    (Quantity::Time, "jobTime", "jobTime = vectricTime(jobClock());"),
     (
         Quantity::ToolsUsed,
         "toolsUsed",
@@ -1538,7 +1538,17 @@ const JOB_TEXTS: &[(Quantity, &str, &str)] = &[
 /// What the converted post's `onOpen` uses to make the job's texts: the
 /// long date VCarve writes and the time as HH:MM (`runtime/src/clock.rs`),
 /// and where the stock lies about the work origin.
-const JOB_TEXT_FUNCTIONS: &str = r#"// A date as Vectric prints one: "Tuesday, November 15, 2011".
+const JOB_TEXT_FUNCTIONS: &str = r#"// The instant the program is made, read once, so that [DATE] and [TIME]
+// are of one instant.
+var jobNow = null;
+function jobClock() {
+    if (jobNow === null) {
+        jobNow = new Date();
+    }
+    return jobNow;
+}
+
+// A date as Vectric prints one: "Tuesday, November 15, 2011".
 function vectricDate(d) {
     var days = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
     var months = ["January", "February", "March", "April", "May", "June", "July", "August", "September",
