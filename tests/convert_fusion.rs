@@ -19,8 +19,8 @@ use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath};
 use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
 use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
-use postc_ir::event::Event;
-use postc_ir::{EventSource, Post};
+use postc_ir::event::{Event, ZOrigin};
+use postc_ir::{EventSource, Piece, Post, Quantity, Stmt, ValueSource};
 use postc_runtime::{Finished, Output, RunOptions};
 
 /// A post that prints what Fusion hands at each section: the tool, its
@@ -88,44 +88,187 @@ begin FOOTER
 
 /// Real Vectric posts that convert to `.cps` posts whose every program
 /// Node.js prints as postc posts the source (docs/convert.md).
-const REAL_FUSION_AT_LEAST: usize = 45;
+const REAL_FUSION_AT_LEAST: usize = 72;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
-/// `Tool` to the next `Tool` or `End`), or `None` when it has none.
+/// `Tool` to the next `Tool` or `End`), or `None` when it has none. The
+/// job's lists of tools and toolpaths (`[TOOLS_USED]`,
+/// `[TOOLPATHS_OUTPUT]`) no longer name what was left out.
 fn without_jets(text: &str) -> Option<String> {
     let mut out = String::new();
     let mut skipping = false;
-    let mut dropped = false;
+    let mut dropped_tools = Vec::new();
+    let mut dropped_paths = Vec::new();
     for line in text.lines() {
         let t = line.trim_start();
         if t.starts_with("Tool(") {
             skipping = t.replace(' ', "").contains("jet:true");
-            dropped |= skipping;
+            if skipping {
+                dropped_tools.extend(text_field(t, "name"));
+            }
         } else if t.starts_with("End") && !t.starts_with("EndOf") {
             skipping = false;
+        } else if skipping && t.starts_with("ToolpathStart(") {
+            dropped_paths.extend(text_field(t, "name"));
         }
         if !skipping {
             out.push_str(line);
             out.push('\n');
         }
     }
-    dropped.then_some(out)
+    if dropped_tools.is_empty() {
+        return None;
+    }
+    let kept_tools: Vec<String> = out
+        .lines()
+        .map(str::trim_start)
+        .filter(|t| t.starts_with("Tool("))
+        .filter_map(|t| text_field(t, "name"))
+        .collect();
+    dropped_tools.retain(|n| !kept_tools.contains(n));
+    let out = out
+        .lines()
+        .map(|line| {
+            if line.trim_start().starts_with("Job(") {
+                let line = drop_names(line, "tools", &dropped_tools);
+                drop_names(&line, "toolpaths", &dropped_paths)
+            } else {
+                line.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    Some(out + "\n")
+}
+
+/// The byte range of the RON string that starts at `at` (a `"`), its
+/// text unescaped.
+fn ron_string(line: &str, at: usize) -> Option<(usize, String)> {
+    let mut text = String::new();
+    let mut chars = line[at + 1..].char_indices();
+    while let Some((i, c)) = chars.next() {
+        match c {
+            '\\' => text.extend(chars.next().map(|(_, c)| c)),
+            '"' => return Some((at + 1 + i + 1, text)),
+            c => text.push(c),
+        }
+    }
+    None
+}
+
+/// Where the value of field `name` starts in a RON event line.
+fn field_value(line: &str, name: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(i) = line[from..].find(name).map(|i| i + from) {
+        let before = line[..i].trim_end().chars().last();
+        let rest = line[i + name.len()..].trim_start();
+        if matches!(before, Some('(' | ',')) && rest.starts_with(':') {
+            let after_colon = line.len() - rest.len() + 1;
+            return Some(after_colon + (line[after_colon..].len() - line[after_colon..].trim_start().len()));
+        }
+        from = i + name.len();
+    }
+    None
+}
+
+/// A text field of a RON event line (`name: "Pocket"`).
+fn text_field(line: &str, name: &str) -> Option<String> {
+    let at = field_value(line, name)?;
+    line[at..].starts_with('"').then(|| ron_string(line, at).map(|(_, t)| t)).flatten()
+}
+
+/// A RON line with the texts `names` left out of its list field `field`.
+fn drop_names(line: &str, field: &str, names: &[String]) -> String {
+    let Some(at) = field_value(line, field).filter(|&at| line[at..].starts_with('[')) else {
+        return line.to_string();
+    };
+    let mut kept = Vec::new();
+    let mut i = at + 1;
+    loop {
+        let rest = &line[i..];
+        let skip = rest.len() - rest.trim_start_matches([' ', ',']).len();
+        i += skip;
+        if line[i..].starts_with(']') {
+            break;
+        }
+        let Some((end, text)) = ron_string(line, i) else { return line.to_string() };
+        if !names.contains(&text) {
+            kept.push(line[i..end].to_string());
+        }
+        i = end;
+    }
+    format!("{}[{}]{}", &line[..at], kept.join(", "), &line[i + 1..])
+}
+
+/// A RON line without its text field `name` (and the comma after it).
+fn drop_field(line: &str, name: &str) -> String {
+    let Some(at) = field_value(line, name).filter(|&at| line[at..].starts_with('"')) else {
+        return line.to_string();
+    };
+    let Some((end, _)) = ron_string(line, at) else { return line.to_string() };
+    let start = line[..at].rfind(name).unwrap_or(at);
+    let rest = line[end..].trim_start();
+    let rest = rest.strip_prefix(',').map_or(rest, str::trim_start);
+    format!("{}{}", &line[..start], rest)
+}
+
+/// A toolpath's text whose job gives no date and no time, or `None` when
+/// it gives neither: posted at the same instant by postc and Node.js (the
+/// converted post prints Fusion's clock, `new Date()`, where a Vectric
+/// post prints a date the job writes as it is written).
+fn without_date(text: &str) -> Option<String> {
+    let mut changed = false;
+    let out: Vec<String> = text
+        .lines()
+        .map(|line| {
+            if line.trim_start().starts_with("Job(") {
+                let plain = drop_field(&drop_field(line, "date"), "time");
+                changed |= plain != line;
+                plain
+            } else {
+                line.to_string()
+            }
+        })
+        .collect();
+    changed.then(|| out.join("\n") + "\n")
+}
+
+/// A toolpath the converted posts are judged over.
+struct Job {
+    path: PathBuf,
+    text: String,
+    /// Made from a toolpath whose job writes its date or time.
+    dateless: bool,
+    /// The job writes a date or a time.
+    dated: bool,
 }
 
 /// The toolpaths the converted posts are judged over: the corpus's, the
-/// native ones, and those with a jet toolpath without it.
-fn all_toolpaths(dir: &Path) -> Vec<(PathBuf, String)> {
+/// native ones, those with a jet toolpath without it, and each whose job
+/// writes a date or time without them.
+fn all_toolpaths(dir: &Path) -> Vec<Job> {
     let mut all = files(&corpus().join("toolpaths"), "ron");
     all.extend(files(&corpus().join("toolpaths/native"), "ron"));
-    let mut out = Vec::new();
+    let mut texts = Vec::new();
     for t in all {
         let text = std::fs::read_to_string(&t).unwrap_or_default();
         if let Some(rest) = without_jets(&text).filter(|r| r.contains("Tool(")) {
             let to = dir.join(format!("{}_without_jets.ron", stem(&t)));
             std::fs::write(&to, &rest).expect("write the toolpath");
-            out.push((to, rest));
+            texts.push((to, rest));
         }
-        out.push((t, text));
+        texts.push((t, text));
+    }
+    let mut out = Vec::new();
+    for (path, text) in texts {
+        if let Some(plain) = without_date(&text) {
+            let to = dir.join(format!("{}_without_date.ron", stem(&path)));
+            std::fs::write(&to, &plain).expect("write the toolpath");
+            out.push(Job { path: to, text: plain, dateless: true, dated: false });
+            out.push(Job { path, text, dateless: false, dated: true });
+        } else {
+            out.push(Job { path, text, dateless: false, dated: false });
+        }
     }
     out
 }
@@ -168,28 +311,88 @@ fn fusion_links_differ(text: &str) -> bool {
     false
 }
 
+/// Whether a section of the post prints one of these quantities.
+fn prints(post: &Post, quantities: &[Quantity]) -> bool {
+    post.handlers.iter().any(|h| {
+        h.body.iter().any(|s| {
+            matches!(s, Stmt::Line { pieces, .. } if pieces.iter().any(|p| matches!(p, Piece::Var(v)
+                if matches!(post.variables[v.index()].source, ValueSource::Quantity(q) if quantities.contains(&q)))))
+        })
+    })
+}
+
+/// Whether the job's origin texts say where its material lies about the
+/// origin, as a Fusion stock does in its work coordinates: "Bottom Left"
+/// where the material's least X and Y are 0, "Centre" where it is
+/// centred on 0, ..., an empty text where 0 is no corner and not the
+/// centre; Z zero the material's top (`MaterialSurface`) or its bottom
+/// (`Table`). A job without an origin says Vectric's defaults (an empty
+/// XY text, the material surface); one without material says them too
+/// (a Fusion document without stock places no origin).
+fn origin_agrees(toolpath: &Path) -> bool {
+    let mut sources = postc_report::source_map();
+    let Ok(mut events) = postc_driver::open_toolpath(toolpath, &mut sources) else { return false };
+    let mut diags = Vec::new();
+    let Some((Event::Job(job), _)) = events.next_event(&mut diags) else { return true };
+    let (said_xy, said_z) = match job.origin {
+        Some(o) => (o.xy, o.z),
+        None => (String::new(), ZOrigin::MaterialSurface),
+    };
+    let Some(m) = job.material else { return said_xy.is_empty() && said_z == ZOrigin::MaterialSurface };
+    let zero = |v: f64| v.abs() <= 1e-9;
+    let side = |lower: f64, upper: f64, low: &'static str, high: &'static str| {
+        if zero(lower) {
+            low
+        } else if zero(upper) {
+            high
+        } else if zero(lower + upper) {
+            "centre"
+        } else {
+            ""
+        }
+    };
+    let x = side(m.min.x, m.max.x, "Left", "Right");
+    let y = side(m.min.y, m.max.y, "Bottom", "Top");
+    let xy = match (x, y) {
+        ("centre", "centre") => "Centre".to_string(),
+        ("" | "centre", _) | (_, "" | "centre") => String::new(),
+        _ => format!("{y} {x}"),
+    };
+    let table = zero(m.min.z) && !zero(m.max.z);
+    said_xy == xy && (said_z == ZOrigin::Table) == table
+}
+
 /// The toolpaths a post applies to: no jet, no arc outside XY (in any
 /// units: the converted post prints lengths in its source's units, as
-/// Vectric's runtime converts them).
-fn toolpaths(all: &[(PathBuf, String)]) -> Vec<PathBuf> {
+/// Vectric's runtime converts them). A post that prints `[DATE]` or
+/// `[TIME]` is judged over the toolpaths whose job writes no date and no
+/// time (copies of those that do, without them: the converted post
+/// prints Fusion's clock, and a date a job writes is not an instant); one
+/// that prints the origin texts over those whose origin texts say where
+/// their material lies.
+fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
+    let clock = prints(post, &[Quantity::Date, Quantity::Time]);
+    let origin = prints(post, &[Quantity::XyOriginText, Quantity::ZOriginText]);
     all.iter()
-        .filter(|(_, text)| !fusion_links_differ(text))
-        .filter(|(_, text)| {
-            let squeezed = text.replace(' ', "");
+        .filter(|j| if clock { !j.dated } else { !j.dateless })
+        .filter(|j| !fusion_links_differ(&j.text))
+        .filter(|j| {
+            let squeezed = j.text.replace(' ', "");
             !squeezed.contains("jet:true")
                 && !squeezed.contains("JetOn")
                 && !squeezed.contains("Power(")
                 && !squeezed.contains("plane:Zx")
                 && !squeezed.contains("plane:Yz")
         })
-        .map(|(p, _)| p.clone())
+        .filter(|j| !origin || origin_agrees(&j.path))
+        .map(|j| j.path.clone())
         .collect()
 }
 
 /// Node.js running a `.cps` post over a JSON Lines toolpath, with post
 /// properties set.
 fn run_fusion_node(post: &Path, jsonl: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion_convert.js");
     let mut command = Command::new("node");
     command.arg(script).arg(post).arg(jsonl);
     for (name, value) in properties {
@@ -240,7 +443,7 @@ fn post_with_properties(post: &Post, toolpath: &Path, properties: &[(String, Str
 }
 
 /// Converts and judges each post; returns the tally and the failures.
-fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mut Vec<String>) -> Tally {
+fn judge(posts: &[PathBuf], dir: &Path, all: &[Job], failures: &mut Vec<String>) -> Tally {
     let mut tally = Tally::default();
     for (n, path) in posts.iter().enumerate() {
         let Some((post, converted)) = convert_counted(path, n, Target::Fusion, "cps", dir, &mut tally) else {
@@ -255,7 +458,7 @@ fn judge(posts: &[PathBuf], dir: &Path, all: &[(PathBuf, String)], failures: &mu
         };
         let text = std::fs::read_to_string(&converted).unwrap_or_default();
         let mut identical = true;
-        for toolpath in toolpaths(all) {
+        for toolpath in toolpaths(all, &post) {
             let properties = home_properties(&post, &text, &toolpath);
             let pair = format!("{}__{}", path.display(), stem(&toolpath));
             let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
@@ -390,11 +593,17 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
         assert!(text.contains(entry), "{entry}\n{text}");
     }
     let refused = dir.path().join("refused.cps");
-    let o =
-        postc(&["convert", "corpus/posts/vectric/gcode_mm.pp", "--to", "fusion", "-o", &refused.display().to_string()]);
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vectric/shopbot_inch.pp",
+        "--to",
+        "fusion",
+        "-o",
+        &refused.display().to_string(),
+    ]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("error[CV007]") && err.contains("`[TP_FILENAME]` in HEADER: Fusion never hands"), "{err}");
+    assert!(err.contains("error[CV007]") && err.contains("`[X_ORIGIN_POS]` in HEADER: Fusion never hands"), "{err}");
     assert!(!refused.exists(), "a refused conversion writes nothing");
     // The home position: properties the user sets.
     let homed = dir.path().join("homed.cps");

@@ -16,11 +16,12 @@
 //! construct, at the source's line and column:
 //!
 //! - a value the engine never hands the post (for CNC-Calc `[T]`,
-//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position; for both
-//!   file names, the date and time, jet power, ...) in a section the post
-//!   prints is `CV007` (Fusion hands the tool's feeds and clearance
-//!   height as operation parameters, and the home position is the
-//!   converted post's properties, which the user sets);
+//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position, file
+//!   names, the date and time; for both jet power, toolpath notes, ...)
+//!   in a section the post prints is `CV007` (Fusion hands the tool's
+//!   feeds and clearance height as operation parameters, the home
+//!   position is the converted post's properties, which the user sets,
+//!   and the job's texts are made from what it hands: [`JOB_TEXTS`]);
 //! - a section the engine never calls (CNC-Calc: `TOOLCHANGE`,
 //!   `NEW_SEGMENT`, `DWELL_MOVE`, ...) is left out with warning `CV008`;
 //! - a rule the engine gives the post no way to follow (helical plunge
@@ -178,7 +179,11 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
             Quantity::HomeX => Some("homeX"),
             Quantity::HomeY => Some("homeY"),
             Quantity::HomeZ => Some("homeZ"),
-            _ => None,
+            // The last section's tool when this section's differs.
+            Quantity::PreviousTool => Some("previousTool"),
+            // The job's texts, each made in `onOpen` from what Fusion
+            // hands ([`JOB_TEXTS`]).
+            q => JOB_TEXTS.iter().find(|(t, ..)| *t == q).map(|(_, name, _)| *name),
         };
         if fusion.is_some() {
             return fusion;
@@ -415,7 +420,7 @@ impl Printer<'_> {
                                         "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
                                     ),
                                     Host::Fusion => format!(
-                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, and the stock, and the user sets the home position in the post's properties; it hands no file names, date, time, origin, tool list, notes or jet power (docs/convert.md, \"Fusion posts\")"
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no toolpath notes, origin offsets or jet power (docs/convert.md, \"Fusion posts\")"
                                     ),
                                 };
                                 self.refuse(
@@ -684,6 +689,10 @@ function afterRapid() {{
                 let Stmt::Line { pieces, .. } = s else { continue };
                 let mut parts: Vec<String> = Vec::new();
                 let mut numbered = false;
+                // The values the line prints, and whether it prints the
+                // position of a move (which every move has).
+                let mut values: Vec<&str> = Vec::new();
+                let mut position = false;
                 for p in pieces {
                     match p {
                         Piece::Text(bytes) => parts.push(js_string(&self.decode(bytes).unwrap_or_default())),
@@ -692,11 +701,33 @@ function afterRapid() {{
                             let ValueSource::Quantity(q) = var.source else { continue };
                             let Some(value) = handed(q, self.host) else { continue };
                             numbered |= q == Quantity::BlockNumber;
+                            // In a move section X, Y and Z are the move's
+                            // position (the runtime's `is_move_section`).
+                            let moves =
+                                (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(&section);
+                            if matches!(q, Quantity::X | Quantity::Y | Quantity::Z) && moves {
+                                position = true;
+                            } else if q != Quantity::BlockNumber {
+                                values.push(value);
+                            }
                             let word = if q.is_text() { "textWord" } else { "word" };
                             parts.push(format!("{word}({}, {value})", self.names[v.index()]));
                         }
                         _ => {}
                     }
+                }
+                // A line every value of which the job does not give (no
+                // number, an empty text) is left out, its block number
+                // unused, as Vectric's runtime leaves it out
+                // (docs/vectric.md, decision 51).
+                if self.host == Host::Fusion && !position && !values.is_empty() {
+                    self.out.push_str(&format!(
+                        "    var line = {};\n    if (!allMissing([{}])) {{\n        writeln(line);\n{}    }}\n",
+                        parts.join(" + "),
+                        values.join(", "),
+                        if numbered { "        nextBlock();\n" } else { "" }
+                    ));
+                    continue;
                 }
                 match self.host {
                     Host::Cimco => {
@@ -793,6 +824,43 @@ function afterRapid() {{
             .filter(|(q, ..)| self.prints(*q))
             .map(|(_, name, axis)| format!("home{axis} = getProperty(\"{name}\");\n    "))
             .collect();
+        // The job's texts the post prints, made in `onOpen`.
+        let mut text_vars = String::new();
+        let mut text_set = String::new();
+        let mut made: Vec<&str> = Vec::new();
+        for &(q, name, code) in JOB_TEXTS.iter().filter(|(q, ..)| self.prints(*q)) {
+            if made.contains(&name) {
+                continue;
+            }
+            made.push(name);
+            text_vars.push_str(&format!("var {name} = \"\";\n"));
+            let code = match q {
+                // The program's units: the source's UNITS, else the document's.
+                Quantity::UnitsText => match self.post.info.units {
+                    Some(u) => format!("{name} = {};", js_string(u.name())),
+                    None => format!(
+                        "{name} = unit == MM ? {} : {};",
+                        js_string(Units::Mm.name()),
+                        js_string(Units::Inch.name())
+                    ),
+                },
+                // The source post's revision, a text of the post itself.
+                Quantity::Revision => format!("{name} = {};", js_string(&self.post.info.revision)),
+                _ => code.to_string(),
+            };
+            text_set.push_str(&format!("{code}\n    "));
+        }
+        let text_functions = if [Quantity::Date, Quantity::Time, Quantity::XyOriginText, Quantity::ZOriginText]
+            .into_iter()
+            .any(|q| self.prints(q))
+        {
+            format!("\n{JOB_TEXT_FUNCTIONS}")
+        } else {
+            String::new()
+        };
+        if !text_vars.is_empty() {
+            text_vars.insert_str(0, "// The job's texts, made from what Fusion hands at onOpen.\n");
+        }
         // The runtime's factors (`Units::factor_to`), as JavaScript computes them.
         let scale = match self.post.info.units {
             Some(Units::Mm) => "scale = unit == MM ? 1 : 25.4;",
@@ -809,6 +877,7 @@ var toolName = "";
 var toolNotes = "";
 var toolpathName = "";
 var lastTool = NaN;
+var previousTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
 // The operation's tool feeds and clearance height, and the home position
@@ -817,14 +886,14 @@ var toolFeedCut = NaN;
 var toolFeedPlunge = NaN;
 var safeZ = NaN;
 var homeX = NaN, homeY = NaN, homeZ = NaN;
-{words}
+{text_vars}{words}
 // Fusion hands lengths and feeds in the document's units; the post
 // prints them in its source's UNITS, each multiplied by `scale`.
 var scale = 1;
-
+{text_functions}
 function onOpen() {{
     {scale}
-    {homes}if (isWorkpieceDefined()) {{
+    {homes}{text_set}if (isWorkpieceDefined()) {{
         var stock = getWorkpiece();
         stockLower = {{x: stock.lower.x * scale, y: stock.lower.y * scale, z: stock.lower.z * scale}};
         stockUpper = {{x: stock.upper.x * scale, y: stock.upper.y * scale, z: stock.upper.z * scale}};
@@ -836,6 +905,10 @@ function onOpen() {{
 // modal memory starts afresh.
 function onSection() {{
     toolNumber = tool.number;
+    // The tool before a new one ([TP]): none until a second tool comes.
+    if (toolNumber != lastTool && lastTool === lastTool) {{
+        previousTool = lastTool;
+    }}
     toolDiameter = tool.diameter * scale;
     toolName = tool.description;
     toolNotes = tool.comment;
@@ -1419,6 +1492,104 @@ const HOME_PROPERTIES: &[(Quantity, &str, &str)] = &[
     (Quantity::HomeZ, "homePositionZ", "Z"),
 ];
 
+/// The job's texts a converted `.cps` post makes in `onOpen` from what
+/// Fusion hands it (docs/convert.md, "Fusion posts"): the quantity, the
+/// post's variable and the JavaScript that sets it. `[DATE]` and `[TIME]`
+/// are Fusion's clock (`new Date()`) in the forms Vectric's runtime
+/// prints an instant in (`runtime/src/clock.rs`); the file's name and
+/// folder come from `getOutputPath()`; the tools and toolpaths from the
+/// sections Fusion hands in advance (`getToolTable()`, as Autodesk's posts
+/// list their tools at `onOpen`, and each section's `operation-comment`);
+/// the file notes are the program comment; the product is the global
+/// parameter `generated-by`; the origin texts say where the
+/// stock lies about the work origin (`getWorkpiece()`).
+const JOB_TEXTS: &[(Quantity, &str, &str)] = &[
+    (
+        Quantity::FileName,
+        "fileName",
+        "var outputName = FileSystem.getFilename(getOutputPath());\n    var dot = outputName.lastIndexOf(\".\");\n    fileName = dot >= 0 ? outputName.substring(0, dot) : outputName;",
+    ),
+    (Quantity::FileDir, "fileDir", "fileDir = FileSystem.getFolderPath(getOutputPath());"),
+    (Quantity::PathName, "fileDir", "fileDir = FileSystem.getFolderPath(getOutputPath());"),
+    (Quantity::Date, "jobDate", "jobDate = vectricDate(jobClock());"),
+    (Quantity::Time, "jobTime", "jobTime = vectricTime(jobClock());"),
+    (
+        Quantity::ToolsUsed,
+        "toolsUsed",
+        "var tools = getToolTable();\n    var toolNames = [];\n    for (var t = 0; t < tools.getNumberOfTools(); t++) {\n        toolNames.push(tools.getTool(t).description);\n    }\n    toolsUsed = toolNames.join(\", \");",
+    ),
+    (
+        Quantity::ToolpathsOutput,
+        "toolpathsOutput",
+        "var operations = [];\n    for (var s = 0; s < getNumberOfSections(); s++) {\n        operations.push(getSection(s).getParameter(\"operation-comment\", \"\"));\n    }\n    toolpathsOutput = operations.join(\", \");",
+    ),
+    (Quantity::FileNotes, "fileNotes", "fileNotes = programComment;"),
+    (Quantity::Product, "product", "product = getGlobalParameter(\"generated-by\", \"\");"),
+    (Quantity::XyOriginText, "xyOrigin", "xyOrigin = isWorkpieceDefined() ? xyOriginOf(getWorkpiece()) : \"\";"),
+    (
+        Quantity::ZOriginText,
+        "zOrigin",
+        "zOrigin = isWorkpieceDefined() && !nearZero(getWorkpiece().upper.z, getWorkpiece()) && nearZero(getWorkpiece().lower.z, getWorkpiece()) ? \"Table Surface\" : \"Material Surface\";",
+    ),
+    (Quantity::UnitsText, "unitsText", ""),
+    (Quantity::Revision, "revisionText", ""),
+];
+
+/// What the converted post's `onOpen` uses to make the job's texts: the
+/// long date VCarve writes and the time as HH:MM (`runtime/src/clock.rs`),
+/// and where the stock lies about the work origin.
+const JOB_TEXT_FUNCTIONS: &str = r#"// The instant the program is made, read once, so that [DATE] and [TIME]
+// are of one instant.
+var jobNow = null;
+function jobClock() {
+    if (jobNow === null) {
+        jobNow = new Date();
+    }
+    return jobNow;
+}
+
+// A date as Vectric prints one: "Tuesday, November 15, 2011".
+function vectricDate(d) {
+    var days = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
+    var months = ["January", "February", "March", "April", "May", "June", "July", "August", "September",
+        "October", "November", "December"];
+    return days[d.getDay()] + ", " + months[d.getMonth()] + " " + d.getDate() + ", " + d.getFullYear();
+}
+
+// A time as Vectric prints one: HH:MM.
+function vectricTime(d) {
+    var two = function (n) { return n < 10 ? "0" + n : "" + n; };
+    return two(d.getHours()) + ":" + two(d.getMinutes());
+}
+
+// Whether a coordinate of the stock is at the work origin's.
+function nearZero(v, stock) {
+    var size = Math.max(Math.abs(stock.lower.x), Math.abs(stock.upper.x), Math.abs(stock.lower.y),
+        Math.abs(stock.upper.y), Math.abs(stock.lower.z), Math.abs(stock.upper.z), 1);
+    return Math.abs(v) <= 1e-9 * size;
+}
+
+// Vectric's XY datum ("Bottom Left", ..., "Centre") where the work origin
+// is on the stock; "" where it is none of them.
+function xyOriginOf(stock) {
+    var side = function (lower, upper, low, high) {
+        if (nearZero(lower, stock)) {
+            return low;
+        }
+        if (nearZero(upper, stock)) {
+            return high;
+        }
+        return nearZero(lower + upper, stock) ? "centre" : "";
+    };
+    var x = side(stock.lower.x, stock.upper.x, "Left", "Right");
+    var y = side(stock.lower.y, stock.upper.y, "Bottom", "Top");
+    if (x == "centre" && y == "centre") {
+        return "Centre";
+    }
+    return x == "" || y == "" || x == "centre" || y == "centre" ? "" : y + " " + x;
+}
+"#;
+
 /// The note under the conversion note of a `.cps` post.
 const FUSION_NOTE: &str = "// An Autodesk Fusion post: Fusion calls onOpen, onSection (each toolpath),
 // onRapid, onLinear, onCircular, onDwell and onClose, and expands
@@ -1447,6 +1618,18 @@ const TEXT_WORD: &str = r#"function substitute(text) {
         }
     }
     return out;
+}
+
+// Whether a line's every value is one the job does not give: no number,
+// an empty text.
+function allMissing(values) {
+    for (var i = 0; i < values.length; i++) {
+        var v = values[i];
+        if (typeof v == "number" ? v === v : String(v) !== "") {
+            return false;
+        }
+    }
+    return true;
 }
 
 function textWord(w, value) {

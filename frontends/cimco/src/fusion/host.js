@@ -1770,7 +1770,13 @@ function Date() {
   this.getYear = function () { return __dateParts().year - 1900; };
   this.getMonth = function () { return __dateParts().month; };
   this.getDate = function () { return __dateParts().day; };
-  this.getDay = function () { return 0; };
+  // The day of the week, 0 for Sunday (Sakamoto's method).
+  this.getDay = function () {
+    var p = __dateParts();
+    var y = p.month < 2 ? p.year - 1 : p.year;
+    var t = [0, 3, 2, 5, 0, 3, 5, 1, 4, 6, 2, 4];
+    return (((y + Math.floor(y / 4) - Math.floor(y / 100) + Math.floor(y / 400) + t[p.month] + p.day) % 7) + 7) % 7;
+  };
   this.getHours = function () { return __dateParts().hours; };
   this.getMinutes = function () { return __dateParts().minutes; };
   this.getSeconds = function () { return __dateParts().seconds; };
@@ -1787,6 +1793,19 @@ function Date() {
     return p.year + "-" + two(p.month + 1) + "-" + two(p.day) + "T" + two(p.hours) + ":" + two(p.minutes) + ":" +
       two(p.seconds) + ".000Z";
   };
+}
+
+// ---- The program that made the job (Fusion's `generated-by`) ----
+// Fusion hands every post the CAM product and its version as the global
+// parameter `generated-by`, with the others after `onOpen` ("Inventor HSM
+// Ultimate 6.2.0.15626" in Autodesk's debug trace of fanuc.cps): the
+// job's product, else postc, what a Vectric post's `[PRODUCT]` prints
+// (docs/fusion.md, choice 9). postc's runtime calls this before
+// `__fusion_open`.
+function __fusion_job(product) {
+  if (typeof product == "string") {
+    __parameters["generated-by"] = product;
+  }
 }
 
 // ---- Entry points a post may leave out ----

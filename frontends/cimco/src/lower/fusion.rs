@@ -6,7 +6,7 @@
 //!
 //! | section | calls |
 //! |---|---|
-//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
+//! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, `__fusion_job(product)`, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
 //! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
@@ -181,6 +181,8 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     // The first section exists before `onOpen`, so that `getSection(0)` and
     // the tool table answer there.
     let mut header = toolpath();
+    // The job's product: Fusion's `generated-by` parameter.
+    header.extend(call("__fusion_job", vec![q(Quantity::Product)]));
     header.extend(call(
         "__fusion_open",
         vec![
