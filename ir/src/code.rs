@@ -417,4 +417,21 @@ pub enum Builtin {
     /// `ReferenceError` when it runs (`try` catches it). The operand is the
     /// name, as text.
     Undeclared,
+    /// A number format of a host written in JavaScript (Fusion's
+    /// `createFormat`), as its `__postc_formatNumber(spec, value)`: the
+    /// text of the value under the specifiers of the `spec` object
+    /// (`scale`, `offset`, `cyclicLimit`, `cyclicSign`, `decimals`,
+    /// `trim`, `trimLeadZero`, `forceDecimal`, `zeropad`, `width`,
+    /// `forceSign`, `decimalSymbol`, `prefix`, `suffix`), with
+    /// JavaScript's arithmetic and number text; `undefined` when the
+    /// scaled value is not a finite number (the host then raises its
+    /// error at the post's call).
+    FormatNumber,
+    /// The words of a block of a host written in JavaScript (Fusion's
+    /// `formatWords`), as its `__postc_words(list, separator, start)`:
+    /// the items of the list from `start` (0 when absent), arrays and
+    /// objects with a `length` walked into, `undefined`, `null` and empty
+    /// texts left out, the rest as JavaScript's `String` writes them,
+    /// joined by the separator.
+    Words,
 }

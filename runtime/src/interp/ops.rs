@@ -328,7 +328,9 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         | Builtin::Prototype
         | Builtin::CreateObject
         | Builtin::InstanceOf
-        | Builtin::NewRegExp => Value::Undefined,
+        | Builtin::NewRegExp
+        | Builtin::FormatNumber
+        | Builtin::Words => Value::Undefined,
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }
