@@ -434,4 +434,19 @@ pub enum Builtin {
     /// texts left out, the rest as JavaScript's `String` writes them,
     /// joined by the separator.
     Words,
+    /// What the `format(value)` method of an output variable or modal of
+    /// a host written in JavaScript (Fusion's `createVariable`,
+    /// `createModal`) prints, as its `__postc_formatOutput(output, value,
+    /// hostFormat, modal)`: the value through the output's format when
+    /// that is one of the host's (its `format` is the function
+    /// `hostFormat` is), compared with the last text; `undefined`, having
+    /// changed nothing, where the host's JavaScript does more (another
+    /// format, an `onchange` to call, ...), which then runs.
+    FormatOutput,
+    /// A post property's value, of a host written in JavaScript (Fusion's
+    /// `getProperty(name, otherwise)` of a name), as its
+    /// `__postc_property(properties, name, otherwise)`: `properties[name]`,
+    /// `otherwise` when that is `undefined`, its `value` when it is an
+    /// object whose `value` is not `undefined`.
+    Property,
 }

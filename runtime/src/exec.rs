@@ -416,6 +416,8 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                         | Builtin::NewRegExp
                         | Builtin::FormatNumber
                         | Builtin::Words
+                        | Builtin::FormatOutput
+                        | Builtin::Property
                         | Builtin::Prototype
                         | Builtin::CreateObject
                         | Builtin::InstanceOf,

@@ -101,6 +101,15 @@ function Referee(postSource, postName) {
     // (runtime/src/interp/host_text.rs), in plain JavaScript.
     context.__postc_formatNumber = formatNumber;
     context.__postc_words = words;
+    // postc's native path of an output's `format`: here the host's
+    // JavaScript after it always runs.
+    context.__postc_formatOutput = function () { return undefined; };
+    context.__postc_property = function (properties, name, otherwise) {
+        var p = properties[name];
+        if (p === undefined) { return otherwise; }
+        if (p !== null && typeof p == "object" && p.value !== undefined) { return p.value; }
+        return p;
+    };
     vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
     // The post's own file, as postc sets it when it reads the post.
     context.__configurationPath = String(postName);

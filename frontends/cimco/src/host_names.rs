@@ -108,6 +108,13 @@ pub const FORMAT_NUMBER: &str = "__postc_formatNumber";
 /// The words of a block of a host written in JavaScript:
 /// `__postc_words(list, separator, start)` (`Builtin::Words`).
 pub const WORDS: &str = "__postc_words";
+/// An output variable's or modal's `format` of a host written in
+/// JavaScript: `__postc_formatOutput(output, value, hostFormat, modal)`
+/// (`Builtin::FormatOutput`).
+pub const FORMAT_OUTPUT: &str = "__postc_formatOutput";
+/// A post property's value of a host written in JavaScript:
+/// `__postc_property(properties, name, otherwise)` (`Builtin::Property`).
+pub const PROPERTY: &str = "__postc_property";
 /// A CNC-Calc global function by name ([`FUNCTIONS`]).
 pub const HOST: &str = "__host";
 

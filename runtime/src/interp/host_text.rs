@@ -65,7 +65,7 @@ fn js_len(s: &str) -> usize {
     if s.is_ascii() { s.len() } else { s.encode_utf16().count() }
 }
 
-/// The specifiers a format reads, by name.
+/// The specifiers a format reads, by name ([`field`] numbers them).
 const FIELDS: [&[u8]; 14] = [
     b"scale",
     b"offset",
@@ -131,12 +131,50 @@ pub(crate) fn format_number(spec: &Value, value: &Value, out: &mut String) -> Re
     let o = o.borrow();
     let mut f: [Option<&Value>; FIELDS.len()] = [None; FIELDS.len()];
     for (k, v) in o.keys.iter().zip(&o.values) {
-        let k = k.as_bytes();
-        if let Some(i) = FIELDS.iter().position(|name| *name == k) {
+        if let Some(i) = field(k.as_bytes()) {
             f[i] = Some(v);
         }
     }
+    format_spec(&f, value, out)
+}
 
+/// The index in [`FIELDS`] of a specifier's name.
+fn field(name: &[u8]) -> Option<usize> {
+    Some(match name {
+        b"scale" => SCALE,
+        b"offset" => OFFSET,
+        b"cyclicLimit" => CYCLIC_LIMIT,
+        b"cyclicSign" => CYCLIC_SIGN,
+        b"decimals" => DECIMALS,
+        b"trim" => TRIM,
+        b"trimLeadZero" => TRIM_LEAD_ZERO,
+        b"forceDecimal" => FORCE_DECIMAL,
+        b"zeropad" => ZEROPAD,
+        b"width" => WIDTH,
+        b"forceSign" => FORCE_SIGN,
+        b"decimalSymbol" => DECIMAL_SYMBOL,
+        b"prefix" => PREFIX,
+        b"suffix" => SUFFIX,
+        _ => return None,
+    })
+}
+
+/// `Math.pow(10, decimals)`: exact for the whole numbers of decimals a
+/// format has (every power of ten to 10^22 is a double).
+fn power_of_ten(decimals: f64) -> f64 {
+    const EXACT: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
+        1e20, 1e21, 1e22,
+    ];
+    if decimals >= 0.0 && decimals <= 22.0 && decimals == decimals.trunc() {
+        EXACT[decimals as usize]
+    } else {
+        crate::js::math_pow(10.0, decimals)
+    }
+}
+
+/// [`format_number`] of the specifiers read.
+fn format_spec(f: &[Option<&Value>; FIELDS.len()], value: &Value, out: &mut String) -> Result<Value> {
     let mut v = number(Some(value)) * number(f[SCALE]) + number(f[OFFSET]);
     if f[CYCLIC_LIMIT].is_some_and(|l| !matches!(l, Value::Undefined)) {
         let limit = number(f[CYCLIC_LIMIT]);
@@ -151,7 +189,7 @@ pub(crate) fn format_number(spec: &Value, value: &Value, out: &mut String) -> Re
         return Ok(Value::Undefined);
     }
     let decimals = number(f[DECIMALS]);
-    let units = (v.abs() * crate::js::math_pow(10.0, decimals) + 0.5).floor();
+    let units = (v.abs() * power_of_ten(decimals) + 0.5).floor();
     let negative = v < 0.0 && units != 0.0;
     // `String(units)`, as `js::push_number` writes a number.
     let (mut whole_digits, mut ryu) = (itoa::Buffer::new(), ryu_js::Buffer::new());
@@ -311,5 +349,111 @@ fn word(w: &Value, sep: usize, first: &mut bool, depth: u32, protos: &Protos, ou
             }
             Ok(())
         }
+    }
+}
+
+/// The own property `name` of an object.
+fn own<'o>(o: &'o crate::value::Object, name: &[u8]) -> Option<&'o Value> {
+    o.get(name)
+}
+
+/// `__postc_formatOutput(output, value, hostFormat, modal)`: what the
+/// `format(value)` method of the host's output variable (`modal` false:
+/// `createVariable`, `createOutputVariable`) or modal (`modal` true:
+/// `createModal`) prints, when its format is one of the host's (its
+/// `format` method is the function `hostFormat` is, and its specifiers its
+/// `spec`):
+///
+/// ```js
+/// if (!this.enabled) { return ""; }                  // a variable only
+/// var text = this.formatter.format(value);           // a modal: a text value as it is
+/// var changed = text !== this.last;
+/// if (!changed && !this.force) { return ""; }
+/// this.last = text;
+/// this.current = value;
+/// return this.prefix + text;                          // a modal: + this.suffix
+/// ```
+///
+/// `undefined` (before changing anything) where the host's JavaScript
+/// does more than this: another format, a value the format cannot write,
+/// an `onchange` to call, `CONTROL_NONZERO`, a property the output lacks.
+pub(crate) fn format_output(args: &[Value], out: &mut String) -> Result<Value> {
+    let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
+    let (Value::Object(output), Value::Func(reference)) = (arg(0), arg(2)) else { return Ok(Value::Undefined) };
+    let modal = arg(3).truthy();
+    let value = arg(1);
+    let text = {
+        let o = output.borrow();
+        if !modal {
+            match own(&o, b"enabled") {
+                Some(enabled) if !enabled.truthy() => return Ok(Value::text("")),
+                Some(_) => {}
+                None => return Ok(Value::Undefined),
+            }
+            if own(&o, b"nonzero").is_none_or(Value::truthy) {
+                return Ok(Value::Undefined);
+            }
+        }
+        match (value, own(&o, b"formatter")) {
+            (Value::Text(t), _) if modal => Value::Text(t.clone()),
+            (Value::Num(_), Some(Value::Object(format))) => {
+                let format = format.borrow();
+                let host = matches!(own(&format, b"format"), Some(Value::Func(f)) if f.callee == reference.callee);
+                match own(&format, b"spec") {
+                    Some(spec) if host => format_number(spec, value, out)?,
+                    _ => return Ok(Value::Undefined),
+                }
+            }
+            _ => return Ok(Value::Undefined),
+        }
+    };
+    let Value::Text(text) = text else { return Ok(Value::Undefined) };
+    let mut o = output.borrow_mut();
+    let changed = !matches!(own(&o, b"last"), Some(Value::Text(last)) if *last == text);
+    if !changed && !own(&o, b"force").is_some_and(Value::truthy) {
+        return Ok(Value::text(""));
+    }
+    if changed && !matches!(own(&o, b"onchange"), Some(Value::Undefined)) {
+        return Ok(Value::Undefined);
+    }
+    let (Some(_), Some(_), Some(prefix)) = (own(&o, b"last"), own(&o, b"current"), own(&o, b"prefix")) else {
+        return Ok(Value::Undefined);
+    };
+    out.clear();
+    push_string(out, Some(prefix));
+    text.push_to(out);
+    if modal {
+        match own(&o, b"suffix") {
+            Some(suffix) => push_string(out, Some(suffix)),
+            None => return Ok(Value::Undefined),
+        }
+    }
+    let printed = Value::Text(Text::new(out));
+    o.set(Text::new("last"), Value::Text(text));
+    o.set(Text::new("current"), value.clone());
+    Ok(printed)
+}
+
+/// `__postc_property(properties, name, otherwise)`, as the host's
+/// JavaScript reads a property by name:
+///
+/// ```js
+/// var p = properties[name];
+/// if (p === undefined) { return otherwise; }
+/// if (p !== null && typeof p == "object" && p.value !== undefined) { return p.value; }
+/// return p;
+/// ```
+pub(crate) fn property(args: &[Value], protos: &Protos) -> Result<Value> {
+    let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
+    let p = objects::member(arg(0), arg(1), protos)?;
+    match &p {
+        Value::Undefined => Ok(arg(2).clone()),
+        Value::Object(_) | Value::Array(_) | Value::Regex(_) | Value::Output(_) => {
+            match objects::member(&p, &Value::text("value"), protos)? {
+                Value::Undefined => Ok(p),
+                value => Ok(value),
+            }
+        }
+        _ => Ok(p),
     }
 }

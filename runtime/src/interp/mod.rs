@@ -907,13 +907,20 @@ impl Engine<'_> {
                     }
                     // The primitives of a host written in JavaScript, built
                     // in the scratch text of `+` chains.
-                    Builtin::FormatNumber | Builtin::Words => {
+                    Builtin::Property => {
+                        let v = host_text::property(&values, &self.protos);
+                        self.give_back(values);
+                        return v;
+                    }
+                    Builtin::FormatNumber | Builtin::Words | Builtin::FormatOutput => {
                         let mut buf = std::mem::take(&mut self.chain_text);
-                        let v = if *b == Builtin::Words {
-                            host_text::words(&values, &self.protos, &mut buf)
-                        } else {
-                            let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
-                            host_text::format_number(arg(0), arg(1), &mut buf)
+                        let v = match b {
+                            Builtin::Words => host_text::words(&values, &self.protos, &mut buf),
+                            Builtin::FormatOutput => host_text::format_output(&values, &mut buf),
+                            _ => {
+                                let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
+                                host_text::format_number(arg(0), arg(1), &mut buf)
+                            }
                         };
                         self.chain_text = buf;
                         self.give_back(values);

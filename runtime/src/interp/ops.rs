@@ -330,7 +330,9 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         | Builtin::InstanceOf
         | Builtin::NewRegExp
         | Builtin::FormatNumber
-        | Builtin::Words => Value::Undefined,
+        | Builtin::Words
+        | Builtin::FormatOutput
+        | Builtin::Property => Value::Undefined,
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }

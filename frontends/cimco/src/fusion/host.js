@@ -482,12 +482,8 @@ function __Matrix_getOrientationFromDirection(v) { return new Matrix(); };
 // `__postc_formatNumber(spec, value)` is native in postc (runtime
 // `interp/host_text.rs`); it gives `undefined` for a value that is not
 // a finite number, which is an error at the post's call.
-function __formatNumber(spec, value) {
-  var text = __postc_formatNumber(spec, value);
-  if (text === undefined) {
-    error(localize("Cannot format a value that is not a finite number") + ": " + value);
-  }
-  return text;
+function __notFinite(value) {
+  error(localize("Cannot format a value that is not a finite number") + ": " + value);
 }
 
 function __spec(s) {
@@ -515,7 +511,11 @@ function __spec(s) {
 function FormatNumber(specifiers) {
   var spec = __spec(specifiers);
   this.spec = spec;
-  this.format = function (value) { return __formatNumber(spec, value); };
+  this.format = function (value) {
+    var text = __postc_formatNumber(spec, value);
+    if (text === undefined) { __notFinite(value); }
+    return text;
+  };
   this.getResultingValue = function (value) {
     var f = Math.pow(10, spec.decimals);
     var v = value * spec.scale + spec.offset;
@@ -555,6 +555,11 @@ function FormatNumber(specifiers) {
   this.remap = function (value) { return value; };
 }
 function createFormat(specifiers) { return new FormatNumber(specifiers); }
+// The function every format's `format` is: an output whose format's is
+// this one prints through postc's native `__postc_formatOutput` (runtime
+// `interp/host_text.rs`), which gives `undefined` where the JavaScript
+// below it has more to do.
+var __formatMethod = new FormatNumber().format;
 
 function __prefixed(s, name) { return (s === undefined || s[name] === undefined) ? "" : s[name]; }
 
@@ -570,6 +575,8 @@ function Variable(specifiers, format) {
   this.current = undefined;
   this.enabled = true;
   this.format = function (value) {
+    var printed = __postc_formatOutput(this, value, __formatMethod, false);
+    if (printed !== undefined) { return printed; }
     if (!this.enabled) { return ""; }
     var text = this.formatter.format(value);
     // The first value a variable prints is a change too (docs/fusion.md).
@@ -612,6 +619,8 @@ function Modal(specifiers, format) {
   this.last = undefined;
   this.current = undefined;
   this.format = function (value) {
+    var printed = __postc_formatOutput(this, value, __formatMethod, true);
+    if (printed !== undefined) { return printed; }
     var text = (typeof value == "number" && this.formatter !== undefined) ? this.formatter.format(value) : String(value);
     var changed = text !== this.last;
     if (!changed && !this.force) { return ""; }
@@ -782,7 +791,10 @@ function __propertyName(property) {
   }
   return property;
 }
+// A property by name is postc's native `__postc_property` (runtime
+// `interp/host_text.rs`): the three lines below.
 function getProperty(name, otherwise) {
+  if (typeof name == "string") { return __postc_property(properties, name, otherwise); }
   name = __propertyName(name);
   var p = properties[name];
   if (p === undefined) { return otherwise; }
@@ -2033,7 +2045,11 @@ function __fusion_spindle(speed, record, nextMotion) {
 }
 
 function __fusion_moved(x, y, z) {
-  __position = new Vector(x, y, z);
+  // Set in place: the host's position is never handed out (every reader
+  // copies it), so no vector is made per move.
+  __position.x = x;
+  __position.y = y;
+  __position.z = z;
   if (currentSection !== undefined) { currentSection.zRange.expandTo(z); }
 }
 

@@ -1349,6 +1349,12 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         if g == names::WORDS {
                             return Ok(Ir::Builtin(Builtin::Words, a));
                         }
+                        if g == names::FORMAT_OUTPUT {
+                            return Ok(Ir::Builtin(Builtin::FormatOutput, a));
+                        }
+                        if g == names::PROPERTY {
+                            return Ok(Ir::Builtin(Builtin::Property, a));
+                        }
                         self.host_call(&g, a, at)
                     }
                     _ => {
