@@ -166,7 +166,7 @@ fn power_of_ten(decimals: f64) -> f64 {
         1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
         1e20, 1e21, 1e22,
     ];
-    if decimals >= 0.0 && decimals <= 22.0 && decimals == decimals.trunc() {
+    if (0.0..=22.0).contains(&decimals) && decimals == decimals.trunc() {
         EXACT[decimals as usize]
     } else {
         crate::js::math_pow(10.0, decimals)
