@@ -372,6 +372,85 @@ var isMilling = "mine";
   writeln(out.join(" "));"#,
     ),
     ("include", r#"include("included.js");"#, r#"writeln(included() + " " + includedValue);"#),
+    // The host's formats, outputs and words, which postc runs natively
+    // (runtime interp/host_text.rs), against the referee's JavaScript.
+    (
+        "formats",
+        r#"var specs = [{decimals: 3}, {decimals: 3, forceDecimal: true}, {decimals: 0}, {decimals: 0, forceDecimal: true},
+  {decimals: 4, trim: false}, {decimals: 3, zeropad: true, width: 8}, {decimals: 2, width: 8},
+  {decimals: 3, forceSign: true}, {decimals: 3, trimLeadZero: true}, {decimals: 3, trimLeadZero: true, trim: false},
+  {decimals: 3, separator: ","}, {decimals: 3, decimalSymbol: "\u00b7"}, {decimals: 3, prefix: "X", suffix: "!"},
+  {decimals: 3, scale: 25.4}, {decimals: 3, offset: -10}, {decimals: 2, cyclicLimit: 360, cyclicSign: 1},
+  {decimals: 2, cyclicLimit: 360, cyclicSign: -1}, {decimals: 2, cyclicLimit: 360, cyclicSign: 0},
+  {decimals: 0, zeropad: true, width: 4}, {decimals: 3, zeropad: true, width: 8, forceSign: true},
+  {decimals: 3, zeropad: true, width: 8, forceDecimal: true}, {decimals: 3, zeropad: true, width: 8, trim: false},
+  {decimals: 20}, {decimals: 17}, {decimals: 15}, {decimals: -1}, {decimals: 3, width: 3.5},
+  {decimals: 3, zeropad: true, width: 6.5}, {decimals: 2, width: 12, forceSign: true}, {decimals: 1, scale: -1},
+  {decimals: 3, zeropad: true, width: 2}, {decimals: 4, trimLeadZero: true, forceSign: true, zeropad: true, width: 7},
+  {decimals: 1, cyclicLimit: 0}, {decimals: 6, scale: 1000}, {decimals: 3, separator: "", forceDecimal: true}];
+var values = [0, 0.5, -0.5, 1.5, 2.5, -0.0004, 0.0005, -0.0005, 0.00049999, 1e21, -1e21, 1e22,
+  123456789012345678901234, 1.23456789e-7, -0, 9007199254740993, 1e300, 0.1 + 0.2, 1.005, 2.675,
+  359.999, -359.999, 720, -720.5, 360, -360, "12.5", " 7 ", true, false, null, 99999.9999, 0.125, -0.125,
+  1234567.891, 4.35, 1e-7, 5e-324, 1.7976931348623157e308, 4503599627370495.5];"#,
+        r#"for (var i = 0; i < specs.length; ++i) {
+    var f = createFormat(specs[i]);
+    var line = i + ":";
+    for (var j = 0; j < values.length; ++j) {
+      try { line += " [" + f.format(values[j]) + "]"; } catch (e) { line += " <" + e.message + ">"; }
+    }
+    writeln(line);
+  }
+  var bad = [NaN, Infinity, -Infinity, undefined, "abc", {}];
+  for (var k = 0; k < bad.length; ++k) {
+    try { writeln("ok " + createFormat({decimals: 3}).format(bad[k])); } catch (e) { writeln("caught " + e.message); }
+  }"#,
+    ),
+    (
+        "outputs",
+        r#"var f = createFormat({decimals: 3, forceDecimal: true});
+var xOut = createVariable({prefix: "X"}, f);
+var yOut = createOutputVariable({prefix: "Y", control: CONTROL_FORCE}, f);
+var zOut = createOutputVariable({prefix: "Z", control: CONTROL_NONZERO}, f);
+var changes = 0;
+var aOut = createVariable({prefix: "A", onchange: function () { ++changes; }}, f);
+var gModal = createModal({prefix: "G", suffix: ";"}, createFormat({decimals: 0, width: 2, zeropad: true}));
+var mModal = createModal({}, f);
+var own = createVariable({prefix: "O"}, {format: function (v) { return "<" + v + ">"; }, areDifferent: function () { return true; }});"#,
+        r#"var seq = [1, 1, 1.0004, 2, -0, 0, 0.0001, 2, "3", NaN];
+  for (var i = 0; i < seq.length; ++i) {
+    var texts = [];
+    var outs = [xOut, yOut, zOut, aOut, gModal, mModal, own];
+    for (var o = 0; o < outs.length; ++o) {
+      try { texts.push(outs[o].format(seq[i])); } catch (e) { texts.push("!" + e.message); }
+    }
+    writeln(i + ": " + texts.join("|") + " changes " + changes);
+  }
+  xOut.disable(); writeln("[" + xOut.format(5) + "]"); xOut.enable(); xOut.reset(); writeln("[" + xOut.format(2) + "]");
+  gModal.reset(); writeln(gModal.format("G17") + gModal.format("G17") + gModal.format(0));
+  xOut.setFormat(createFormat({decimals: 1})); writeln(xOut.format(2.25) + " " + xOut.getCurrent());"#,
+    ),
+    (
+        "words",
+        "",
+        r#"var v = createVariable({prefix: "X"}, createFormat({decimals: 3, forceDecimal: true}));
+  writeWords("G1", "", undefined, null, ["X1", ["Y2", ""], []], 5, 0, true, false, v.format(1), v.format(1));
+  writeWords();
+  writeWords("", [""], [[]]);
+  writeln("[" + formatWords("A", ["B", "C"], "", 3.25) + "]");
+  writeln("[" + formatWords() + "]");
+  writeWords2("N10", "", "");
+  writeWords2("N10", "G0");
+  writeWords2(["A", "B"], "C");
+  writeWords2("", "C", ["D"]);
+  writeWords2(undefined, "E");
+  setWordSeparator("");
+  writeWords("A", "B", ["C"]);
+  setWordSeparator(", ");
+  writeWords("A", "B", ["C"]);
+  writeWords2("N1", "B");
+  setWordSeparator(" ");
+  writeWords("end");"#,
+    ),
 ];
 
 #[test]

@@ -417,4 +417,36 @@ pub enum Builtin {
     /// `ReferenceError` when it runs (`try` catches it). The operand is the
     /// name, as text.
     Undeclared,
+    /// A number format of a host written in JavaScript (Fusion's
+    /// `createFormat`), as its `__postc_formatNumber(spec, value)`: the
+    /// text of the value under the specifiers of the `spec` object
+    /// (`scale`, `offset`, `cyclicLimit`, `cyclicSign`, `decimals`,
+    /// `trim`, `trimLeadZero`, `forceDecimal`, `zeropad`, `width`,
+    /// `forceSign`, `decimalSymbol`, `prefix`, `suffix`), with
+    /// JavaScript's arithmetic and number text; `undefined` when the
+    /// scaled value is not a finite number (the host then raises its
+    /// error at the post's call).
+    FormatNumber,
+    /// The words of a block of a host written in JavaScript (Fusion's
+    /// `formatWords`), as its `__postc_words(list, separator, start)`:
+    /// the items of the list from `start` (0 when absent), arrays and
+    /// objects with a `length` walked into, `undefined`, `null` and empty
+    /// texts left out, the rest as JavaScript's `String` writes them,
+    /// joined by the separator.
+    Words,
+    /// What the `format(value)` method of an output variable or modal of
+    /// a host written in JavaScript (Fusion's `createVariable`,
+    /// `createModal`) prints, as its `__postc_formatOutput(output, value,
+    /// hostFormat, modal)`: the value through the output's format when
+    /// that is one of the host's (its `format` is the function
+    /// `hostFormat` is), compared with the last text; `undefined`, having
+    /// changed nothing, where the host's JavaScript does more (another
+    /// format, an `onchange` to call, ...), which then runs.
+    FormatOutput,
+    /// A post property's value, of a host written in JavaScript (Fusion's
+    /// `getProperty(name, otherwise)` of a name), as its
+    /// `__postc_property(properties, name, otherwise)`: `properties[name]`,
+    /// `otherwise` when that is `undefined`, its `value` when it is an
+    /// object whose `value` is not `undefined`.
+    Property,
 }

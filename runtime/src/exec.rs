@@ -414,6 +414,10 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                         | Builtin::JsString
                         | Builtin::Construct
                         | Builtin::NewRegExp
+                        | Builtin::FormatNumber
+                        | Builtin::Words
+                        | Builtin::FormatOutput
+                        | Builtin::Property
                         | Builtin::Prototype
                         | Builtin::CreateObject
                         | Builtin::InstanceOf,

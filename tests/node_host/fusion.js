@@ -19,12 +19,96 @@ var vm = require("vm");
 
 var HOST = path.join(__dirname, "..", "..", "frontends", "cimco", "src", "fusion", "host.js");
 
+// `__postc_formatNumber(spec, value)`: the text of `value` under a
+// format's specifiers, `undefined` when the scaled value is not finite.
+function formatNumber(spec, value) {
+  var v = value * spec.scale + spec.offset;
+  if (spec.cyclicLimit !== undefined && spec.cyclicLimit > 0) {
+    v = v % spec.cyclicLimit;
+    if (v < 0 && spec.cyclicSign >= 0) { v += spec.cyclicLimit; }
+  }
+  if (!(v - v == 0)) {
+    return undefined;
+  }
+  var factor = Math.pow(10, spec.decimals);
+  var units = Math.floor(Math.abs(v) * factor + 0.5);
+  var negative = v < 0 && units != 0;
+  var digits = String(units);
+  while (digits.length <= spec.decimals) { digits = "0" + digits; }
+  var whole = digits.substring(0, digits.length - spec.decimals);
+  var fraction = digits.substring(digits.length - spec.decimals);
+  if (spec.trim) {
+    var n = fraction.length;
+    while (n > 0 && fraction.charAt(n - 1) == "0") { --n; }
+    fraction = fraction.substring(0, n);
+  }
+  if (spec.trimLeadZero && whole == "0" && fraction.length > 0) { whole = ""; }
+  var text;
+  if (fraction.length > 0) {
+    text = whole + spec.decimalSymbol + fraction;
+  } else {
+    text = spec.forceDecimal ? whole + spec.decimalSymbol : whole;
+  }
+  if (spec.zeropad && spec.width > 0) {
+    var sign = (negative || spec.forceSign) ? 1 : 0;
+    var wholeLength = whole.length;
+    var pad = spec.width - sign - text.length;
+    if (fraction.length > 0 || spec.forceDecimal) {
+      pad = spec.width - sign - wholeLength;
+    }
+    while (pad > 0) { text = "0" + text; --pad; }
+  }
+  if (negative) {
+    text = "-" + text;
+  } else if (spec.forceSign) {
+    text = "+" + text;
+  }
+  if (!spec.zeropad && spec.width > 0) {
+    while (text.length < spec.width) { text = " " + text; }
+  }
+  return spec.prefix + text + spec.suffix;
+}
+
+// `__postc_words(list, separator, start)`: the words of a block (texts
+// and arrays of texts, an `arguments` object too, the empty ones left
+// out) from `start`, joined by the separator.
+function words(list, separator, start) {
+  var into = [];
+  function gather(items, from) {
+    for (var i = from; i < items.length; ++i) {
+      var w = items[i];
+      if (w === undefined || w === null) { continue; }
+      if (typeof w == "object") {
+        gather(w, 0);
+      } else {
+        var t = String(w);
+        if (t != "") { into.push(t); }
+      }
+    }
+  }
+  gather(list, start);
+  return into.join(separator);
+}
+
 function Referee(postSource, postName) {
     var out = [];
     var context = vm.createContext({});
     // A line and the host's line ending (`EOL`, which `setEOL` changes).
     context.__postc_writeln = function (text, eol) {
         out.push(String(text) + String(eol));
+    };
+    // The host's text primitives, which postc runs natively
+    // (runtime/src/interp/host_text.rs), in plain JavaScript.
+    context.__postc_formatNumber = formatNumber;
+    context.__postc_words = words;
+    // postc's native path of an output's `format`: here the host's
+    // JavaScript after it always runs.
+    context.__postc_formatOutput = function () { return undefined; };
+    context.__postc_property = function (properties, name, otherwise) {
+        var p = properties[name];
+        if (p === undefined) { return otherwise; }
+        if (p !== null && typeof p == "object" && p.value !== undefined) { return p.value; }
+        return p;
     };
     vm.runInContext(fs.readFileSync(HOST, "utf8"), context, { filename: HOST });
     // The post's own file, as postc sets it when it reads the post.

@@ -102,6 +102,19 @@ pub const NEW: &str = "__new";
 /// `__postc_writeln(text, eol)` writes the text as it is, then the line
 /// ending `eol` (the host's `EOL`, which `setEOL` changes), as one block.
 pub const WRITE_LINE: &str = "__postc_writeln";
+/// The number format of a host written in JavaScript:
+/// `__postc_formatNumber(spec, value)` (`Builtin::FormatNumber`).
+pub const FORMAT_NUMBER: &str = "__postc_formatNumber";
+/// The words of a block of a host written in JavaScript:
+/// `__postc_words(list, separator, start)` (`Builtin::Words`).
+pub const WORDS: &str = "__postc_words";
+/// An output variable's or modal's `format` of a host written in
+/// JavaScript: `__postc_formatOutput(output, value, hostFormat, modal)`
+/// (`Builtin::FormatOutput`).
+pub const FORMAT_OUTPUT: &str = "__postc_formatOutput";
+/// A post property's value of a host written in JavaScript:
+/// `__postc_property(properties, name, otherwise)` (`Builtin::Property`).
+pub const PROPERTY: &str = "__postc_property";
 /// A CNC-Calc global function by name ([`FUNCTIONS`]).
 pub const HOST: &str = "__host";
 

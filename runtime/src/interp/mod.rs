@@ -9,6 +9,7 @@ use postc_ir::{
     BinaryOp, Builtin, Diagnostic, FunctionId, GlobalId, LocalId, Place, Quantity, Span, UnaryOp, ValueSource, VarId,
 };
 
+pub(crate) mod host_text;
 pub(crate) mod objects;
 pub(crate) mod ops;
 pub(crate) mod protos;
@@ -903,6 +904,29 @@ impl Engine<'_> {
                         let v = values.first().cloned().unwrap_or(Value::Undefined);
                         self.give_back(values);
                         return self.text_of(v);
+                    }
+                    // The primitives of a host written in JavaScript, built
+                    // in the scratch text of `+` chains.
+                    Builtin::Property => {
+                        let v = host_text::property(&values, &self.protos);
+                        self.give_back(values);
+                        return v;
+                    }
+                    Builtin::FormatNumber | Builtin::Words | Builtin::FormatOutput => {
+                        let mut buf = std::mem::take(&mut self.chain_text);
+                        let v = match b {
+                            Builtin::Words => host_text::words(&values, &self.protos, &mut buf),
+                            Builtin::FormatOutput => host_text::format_output(&values, &mut buf),
+                            _ => {
+                                let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
+                                host_text::format_number(arg(0), arg(1), &mut buf)
+                            }
+                        };
+                        self.chain_text = buf;
+                        self.give_back(values);
+                        let v = v?;
+                        self.check_text(&v)?;
+                        return Ok(v);
                     }
                     Builtin::NewRegExp => {
                         let mut values = values.into_iter();

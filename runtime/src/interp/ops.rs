@@ -328,7 +328,11 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         | Builtin::Prototype
         | Builtin::CreateObject
         | Builtin::InstanceOf
-        | Builtin::NewRegExp => Value::Undefined,
+        | Builtin::NewRegExp
+        | Builtin::FormatNumber
+        | Builtin::Words
+        | Builtin::FormatOutput
+        | Builtin::Property => Value::Undefined,
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }

@@ -478,53 +478,12 @@ function __Matrix_getOrientationFromDirection(v) { return new Matrix(); };
 // rounded half away from zero to `decimals`, trailing zeros trimmed
 // (`trim`), the point kept only with `forceDecimal`, the integer part
 // zero-padded to `width` (`zeropad`), `+` for positive values with
-// `forceSign`, the lead zero dropped with `trimLeadZero`.
-function __formatNumber(spec, value) {
-  var v = value * spec.scale + spec.offset;
-  if (spec.cyclicLimit !== undefined && spec.cyclicLimit > 0) {
-    v = v % spec.cyclicLimit;
-    if (v < 0 && spec.cyclicSign >= 0) { v += spec.cyclicLimit; }
-  }
-  if (!(v - v == 0)) {
-    error(localize("Cannot format a value that is not a finite number") + ": " + value);
-  }
-  var factor = Math.pow(10, spec.decimals);
-  var units = Math.floor(Math.abs(v) * factor + 0.5);
-  var negative = v < 0 && units != 0;
-  var digits = String(units);
-  while (digits.length <= spec.decimals) { digits = "0" + digits; }
-  var whole = digits.substring(0, digits.length - spec.decimals);
-  var fraction = digits.substring(digits.length - spec.decimals);
-  if (spec.trim) {
-    var n = fraction.length;
-    while (n > 0 && fraction.charAt(n - 1) == "0") { --n; }
-    fraction = fraction.substring(0, n);
-  }
-  if (spec.trimLeadZero && whole == "0" && fraction.length > 0) { whole = ""; }
-  var text;
-  if (fraction.length > 0) {
-    text = whole + spec.decimalSymbol + fraction;
-  } else {
-    text = spec.forceDecimal ? whole + spec.decimalSymbol : whole;
-  }
-  if (spec.zeropad && spec.width > 0) {
-    var sign = (negative || spec.forceSign) ? 1 : 0;
-    var wholeLength = whole.length;
-    var pad = spec.width - sign - text.length;
-    if (fraction.length > 0 || spec.forceDecimal) {
-      pad = spec.width - sign - wholeLength;
-    }
-    while (pad > 0) { text = "0" + text; --pad; }
-  }
-  if (negative) {
-    text = "-" + text;
-  } else if (spec.forceSign) {
-    text = "+" + text;
-  }
-  if (!spec.zeropad && spec.width > 0) {
-    while (text.length < spec.width) { text = " " + text; }
-  }
-  return spec.prefix + text + spec.suffix;
+// `forceSign`, the lead zero dropped with `trimLeadZero`. The primitive
+// `__postc_formatNumber(spec, value)` is native in postc (runtime
+// `interp/host_text.rs`); it gives `undefined` for a value that is not
+// a finite number, which is an error at the post's call.
+function __notFinite(value) {
+  error(localize("Cannot format a value that is not a finite number") + ": " + value);
 }
 
 function __spec(s) {
@@ -552,7 +511,11 @@ function __spec(s) {
 function FormatNumber(specifiers) {
   var spec = __spec(specifiers);
   this.spec = spec;
-  this.format = function (value) { return __formatNumber(spec, value); };
+  this.format = function (value) {
+    var text = __postc_formatNumber(spec, value);
+    if (text === undefined) { __notFinite(value); }
+    return text;
+  };
   this.getResultingValue = function (value) {
     var f = Math.pow(10, spec.decimals);
     var v = value * spec.scale + spec.offset;
@@ -592,6 +555,11 @@ function FormatNumber(specifiers) {
   this.remap = function (value) { return value; };
 }
 function createFormat(specifiers) { return new FormatNumber(specifiers); }
+// The function every format's `format` is: an output whose format's is
+// this one prints through postc's native `__postc_formatOutput` (runtime
+// `interp/host_text.rs`), which gives `undefined` where the JavaScript
+// below it has more to do.
+var __formatMethod = new FormatNumber().format;
 
 function __prefixed(s, name) { return (s === undefined || s[name] === undefined) ? "" : s[name]; }
 
@@ -607,6 +575,8 @@ function Variable(specifiers, format) {
   this.current = undefined;
   this.enabled = true;
   this.format = function (value) {
+    var printed = __postc_formatOutput(this, value, __formatMethod, false);
+    if (printed !== undefined) { return printed; }
     if (!this.enabled) { return ""; }
     var text = this.formatter.format(value);
     // The first value a variable prints is a change too (docs/fusion.md).
@@ -649,6 +619,8 @@ function Modal(specifiers, format) {
   this.last = undefined;
   this.current = undefined;
   this.format = function (value) {
+    var printed = __postc_formatOutput(this, value, __formatMethod, true);
+    if (printed !== undefined) { return printed; }
     var text = (typeof value == "number" && this.formatter !== undefined) ? this.formatter.format(value) : String(value);
     var changed = text !== this.last;
     if (!changed && !this.force) { return ""; }
@@ -746,40 +718,21 @@ function closeRedirection() { __redirect = undefined; }
 function isRedirecting() { return __redirect !== undefined; }
 
 // The words of a block: texts and arrays of texts (an `arguments`
-// object too), the empty ones left out.
-function __words(list, into) {
-  for (var i = 0; i < list.length; ++i) {
-    var w = list[i];
-    if (w === undefined || w === null) { continue; }
-    if (typeof w == "object") {
-      __words(w, into);
-    } else {
-      var t = String(w);
-      if (t != "") { into.push(t); }
-    }
-  }
-}
+// object too), the empty ones left out, joined by the word separator.
+// The primitive `__postc_words(list, separator, start)` (the words of
+// the list from `start`, joined) is native in postc (runtime
+// `interp/host_text.rs`).
 function formatWords() {
-  var words = [];
-  __words(arguments, words);
-  return words.join(__wordSeparator);
+  return __postc_words(arguments, __wordSeparator, 0);
 }
 function writeWords() {
-  var words = [];
-  __words(arguments, words);
-  if (words.length > 0) { writeln(words.join(__wordSeparator)); }
+  var text = __postc_words(arguments, __wordSeparator, 0);
+  if (text != "") { writeln(text); }
 }
 // The first word only when a word follows it.
 function writeWords2(first) {
-  var words = [];
-  var rest = [];
-  for (var i = 1; i < arguments.length; ++i) { rest.push(arguments[i]); }
-  __words(rest, words);
-  if (words.length > 0) {
-    var all = [];
-    __words([first], all);
-    writeln(all.concat(words).join(__wordSeparator));
-  }
+  var text = __postc_words(arguments, __wordSeparator, 1);
+  if (text != "") { writeln(__postc_words([first, text], __wordSeparator, 0)); }
 }
 function subst(text) {
   var result = String(text);
@@ -838,7 +791,10 @@ function __propertyName(property) {
   }
   return property;
 }
+// A property by name is postc's native `__postc_property` (runtime
+// `interp/host_text.rs`): the three lines below.
 function getProperty(name, otherwise) {
+  if (typeof name == "string") { return __postc_property(properties, name, otherwise); }
   name = __propertyName(name);
   var p = properties[name];
   if (p === undefined) { return otherwise; }
@@ -2108,7 +2064,11 @@ function __fusion_spindle(speed, record, nextMotion) {
 }
 
 function __fusion_moved(x, y, z) {
-  __position = new Vector(x, y, z);
+  // Set in place: the host's position is never handed out (every reader
+  // copies it), so no vector is made per move.
+  __position.x = x;
+  __position.y = y;
+  __position.z = z;
   if (currentSection !== undefined) { currentSection.zRange.expandTo(z); }
 }
 

@@ -1341,6 +1341,20 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                             pre.push(IrStmt::Line { pieces, span: Some(at) });
                             return Ok(Ir::Undefined);
                         }
+                        // The host's text primitives, native (runtime
+                        // `interp::host_text`).
+                        if g == names::FORMAT_NUMBER {
+                            return Ok(Ir::Builtin(Builtin::FormatNumber, a));
+                        }
+                        if g == names::WORDS {
+                            return Ok(Ir::Builtin(Builtin::Words, a));
+                        }
+                        if g == names::FORMAT_OUTPUT {
+                            return Ok(Ir::Builtin(Builtin::FormatOutput, a));
+                        }
+                        if g == names::PROPERTY {
+                            return Ok(Ir::Builtin(Builtin::Property, a));
+                        }
                         self.host_call(&g, a, at)
                     }
                     _ => {
