@@ -392,7 +392,7 @@ fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
 /// Node.js running a `.cps` post over a JSON Lines toolpath, with post
 /// properties set.
 fn run_fusion_node(post: &Path, jsonl: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion_convert.js");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
     let mut command = Command::new("node");
     command.arg(script).arg(post).arg(jsonl);
     for (name, value) in properties {

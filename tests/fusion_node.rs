@@ -21,7 +21,7 @@ fn milling_job_for_node() -> (tempfile::TempDir, PathBuf, PathBuf, PathBuf) {
     let jsonl = folder.path().join("standard_milling.jsonl");
     support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
     // fusion.js with the job's product (Fusion's `generated-by`).
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion_convert.js");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
     (folder, job, jsonl, script)
 }
 

@@ -179,6 +179,8 @@ Referee.prototype.beginToolpath = function () {
         this.call("__fusion_toolpath", this.toolpathArgs());
         var m = j.material;
         var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
+        // The CAM product, Fusion's `generated-by` (host.js `__fusion_job`).
+        this.call("__fusion_job", [typeof j.product === "string" ? j.product : "postc"]);
         this.call(
             "__fusion_open",
             [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""]
