@@ -937,6 +937,11 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                         name_at(text, start as usize)),
                     "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
                 ),
+                Note::Macro => (
+                    format!("verify does not replay `{}` ({word}); the moves after it are compared as written",
+                        name_at(text, start as usize)),
+                    "what the command or the machine's macro does is in the firmware and its configuration, not in the program: its own moves are not compared",
+                ),
                 Note::Call => {
                     let d = self.finding(
                         Severity::Note,
