@@ -65,6 +65,19 @@ const OWN: &[(&str, &str, &[&str])] = &[
     ("AntonTroskin__posts/A_haas.cps", "", &["VF033"]),
     // `hFormat` has no `H` prefix: `G43 Z5. 1`.
     ("Lawmate__Posts/hurco_Lorro_v4.cps", "", &["VF004"]),
+    // A Marlin post with no spindle command at all (`onRapid` and
+    // `onLinear` only), and one whose default mode is FDM (`marlinMode: 0`),
+    // which writes `M3` only in its CNC mode (`marlinMode === 1`).
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/marlin_magic_speed.cps", "", &["VF035"]),
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/marlin_mode_minimal.cps", "", &["VF035"]),
+    // A post that writes nothing: its own `function writeln(line) { }`.
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/diagnostic_post.cps", "", &["VF011"]),
+    // A measurement-results writer: it writes only for inspection
+    // operations (`if (isInspectionOperation())`) and defines no move.
+    ("cpsdev__DATRON-post-development/result_generator_inspect_surface.cps", "", &["VF011"]),
+    // `onRapid` turns a rapid from above Z0 to below it into `G1` at its
+    // property `rLab_negZRapidPlungeRate: 5`: the drilling job's pecks.
+    ("Gavatastic__260-VMC-post-processor/260VMC.cps", "drilling", &["VF033"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify
