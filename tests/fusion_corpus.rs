@@ -78,6 +78,10 @@ const OWN: &[(&str, &str, &[&str])] = &[
     // `onRapid` turns a rapid from above Z0 to below it into `G1` at its
     // property `rLab_negZRapidPlungeRate: 5`: the drilling job's pecks.
     ("Gavatastic__260-VMC-post-processor/260VMC.cps", "drilling", &["VF033"]),
+    // `onCycleEnd` leaves the cycle with no `G80` ("make it output G0 next
+    // move, and don't use G80") and never resets `gCycleModal`: the next
+    // cycle's first hole prints without its `G82`, a rapid into the hole.
+    ("jfbell__CAMPosts/MotusCNC_5-Axis_G43.4.cps", "drilling", &["VF012"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify
