@@ -478,4 +478,10 @@ fn klipper_extended_commands_are_named_not_replayed() {
         let found = verify(&wrong, MILL);
         assert!(errors(&found).iter().any(|f| f.code == "VF004"), "{bad}: {found:#?}");
     }
+    // A program of another family whose lines read as named commands
+    // (SCM's `XL2P X=49.992 Y=40.28`) and never move the tool is still no
+    // G-code program (VF001).
+    let foreign = format!("{}{}", "XG0 X=10 Y=10 Z=5\n".repeat(3), "XL2P X=30 Y=10 Z=-2\n".repeat(20));
+    let found = verify(&foreign, MILL);
+    assert!(errors(&found).iter().any(|f| f.code == "VF001"), "{found:#?}");
 }
