@@ -26,17 +26,17 @@ use crate::support;
 /// Posts that post all four jobs and whose every program verify reads and
 /// passes today, but for findings docs/fusion.md lists as the post's own
 /// ([`OWN`]).
-const AT_LEAST: usize = 87;
+const AT_LEAST: usize = 95;
 
 /// Posts that post all four jobs today, verified (as [`AT_LEAST`] counts
 /// them) or in a dialect verify does not read.
-const POSTING_AT_LEAST: usize = 126;
+const POSTING_AT_LEAST: usize = 134;
 
 /// Of the 156 milling-kind posts (SOURCES.md's kinds, [`kinds`]), those
 /// that post all four jobs and verify, and those that post them, verified
 /// or in a dialect verify does not read.
-const MILLING_AT_LEAST: usize = 85;
-const MILLING_POSTING_AT_LEAST: usize = 120;
+const MILLING_AT_LEAST: usize = 93;
+const MILLING_POSTING_AT_LEAST: usize = 128;
 
 /// The outcome of a post whose programs pass verify but for findings
 /// docs/fusion.md lists as that post's own property ([`OWN`]): it counts
@@ -65,6 +65,23 @@ const OWN: &[(&str, &str, &[&str])] = &[
     ("AntonTroskin__posts/A_haas.cps", "", &["VF033"]),
     // `hFormat` has no `H` prefix: `G43 Z5. 1`.
     ("Lawmate__Posts/hurco_Lorro_v4.cps", "", &["VF004"]),
+    // A Marlin post with no spindle command at all (`onRapid` and
+    // `onLinear` only), and one whose default mode is FDM (`marlinMode: 0`),
+    // which writes `M3` only in its CNC mode (`marlinMode === 1`).
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/marlin_magic_speed.cps", "", &["VF035"]),
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/marlin_mode_minimal.cps", "", &["VF035"]),
+    // A post that writes nothing: its own `function writeln(line) { }`.
+    ("rflulling__Marlin_CNC-Laser_CPS_for_Fusion360/diagnostic_post.cps", "", &["VF011"]),
+    // A measurement-results writer: it writes only for inspection
+    // operations (`if (isInspectionOperation())`) and defines no move.
+    ("cpsdev__DATRON-post-development/result_generator_inspect_surface.cps", "", &["VF011"]),
+    // `onRapid` turns a rapid from above Z0 to below it into `G1` at its
+    // property `rLab_negZRapidPlungeRate: 5`: the drilling job's pecks.
+    ("Gavatastic__260-VMC-post-processor/260VMC.cps", "drilling", &["VF033"]),
+    // `onCycleEnd` leaves the cycle with no `G80` ("make it output G0 next
+    // move, and don't use G80") and never resets `gCycleModal`: the next
+    // cycle's first hole prints without its `G82`, a rapid into the hole.
+    ("jfbell__CAMPosts/MotusCNC_5-Axis_G43.4.cps", "drilling", &["VF012"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify

@@ -435,3 +435,53 @@ fn fagor_cycles_are_read_and_other_cycle_forms_are_named() {
     assert!(found.iter().any(|f| f.code == "VF044" && f.line == 5), "{found:#?}");
     assert!(errors(&found).is_empty(), "{found:#?}");
 }
+
+/// MILL as a Klipper post writes it (`MPCNC.cps`, "MPCNC Milling -
+/// Klipper"): extended commands, a name and `NAME=VALUE` parameters
+/// (Klipper's G-Codes reference: `SET_SERVO SERVO=myservo ANGLE=5.3`),
+/// which run the firmware's command or a macro of the machine's
+/// configuration.
+const KLIPPER: &str = "G90
+G21
+START_PRINT X=-3,5 Y=-3,5 Z=-3,5 ; the macro
+M3 S16000
+G0 X10 Y10 Z5
+G1 Z-2 F300
+G1 X30 F1000
+G3 X40 Y20 I0 J10
+G1 Y40
+G0 Z5
+END_PRINT
+";
+
+#[test]
+fn klipper_extended_commands_are_named_not_replayed() {
+    let found = verify(KLIPPER, MILL);
+    assert!(errors(&found).is_empty(), "{found:#?}");
+    for (line, name) in [(3, "START_PRINT"), (11, "END_PRINT")] {
+        assert!(
+            found.iter().any(|f| f.code == "VF005"
+                && f.severity == Severity::Warning
+                && f.line == line
+                && f.message.contains(name)
+                && f.message.contains("Klipper")),
+            "{found:#?}"
+        );
+    }
+    // The moves after a command are still compared.
+    let wrong = KLIPPER.replace("G1 X30 F1000", "G1 X31 F1000");
+    assert!(!errors(&verify(&wrong, MILL)).is_empty());
+    // A name after other words, or one followed by words that are not
+    // `NAME=VALUE` parameters, is no Klipper command: still an error.
+    for bad in ["G1 X30 F1000 START_PRINT", "START_PRINT X-3"] {
+        let wrong = KLIPPER.replace("START_PRINT X=-3,5 Y=-3,5 Z=-3,5 ; the macro", bad);
+        let found = verify(&wrong, MILL);
+        assert!(errors(&found).iter().any(|f| f.code == "VF004"), "{bad}: {found:#?}");
+    }
+    // A program of another family whose lines read as named commands
+    // (SCM's `XL2P X=49.992 Y=40.28`) and never move the tool is still no
+    // G-code program (VF001).
+    let foreign = format!("{}{}", "XG0 X=10 Y=10 Z=5\n".repeat(3), "XL2P X=30 Y=10 Z=-2\n".repeat(20));
+    let found = verify(&foreign, MILL);
+    assert!(errors(&found).iter().any(|f| f.code == "VF001"), "{found:#?}");
+}

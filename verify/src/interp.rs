@@ -219,6 +219,9 @@ struct Run<'a, O: Observer + ?Sized> {
     feed_reported: (f64, f64),
     stop_comparing: bool,
     syntax_errors: u32,
+    /// Lines read as named commands (Klipper's extended G-code), which
+    /// count with the syntax errors toward VF001 until the tool moves.
+    named_commands: u32,
     /// The tolerance ([`Run::tol`]) for the `units_key` it was computed at.
     tol: (f64, (f64, Option<u8>)),
     /// Lines of words only are read by [`words_line`] (the tests turn it
@@ -329,6 +332,7 @@ pub fn replay<O: Observer + ?Sized>(
         feed_reported: (f64::NAN, f64::NAN),
         stop_comparing: false,
         syntax_errors: 0,
+        named_commands: 0,
         tol: (f64::NAN, (f64::NAN, None)),
         fast,
         params: params::Reader::default(),
@@ -779,19 +783,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             let d = self.finding(Severity::Error, codes::VF004.code, message, at, at + 1, None);
             Self::help(d, help);
             self.syntax_errors += 1;
-            if self.syntax_errors >= NOT_GCODE && self.stats.motions == 0 {
-                let d = self.finding(
-                    Severity::Error,
-                    codes::VF001.code,
-                    format!("{NOT_GCODE} blocks could not be read and none moved the tool: this is not a G-code program; verify stops here"),
-                    0,
-                    self.line_len,
-                    None,
-                );
-                Self::help(d, format!("verify reads {}", crate::FAMILIES));
-                self.stopped = true;
-                self.stop_comparing = true;
-            }
+            self.not_gcode();
             return;
         }
         self.block_length(text);
@@ -917,6 +909,26 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
     }
 
+    /// VF001, and the end of the replay, when [`NOT_GCODE`] blocks have
+    /// not read as G-code (or were named commands, Klipper's form, which
+    /// a program of another family's `NAME X=1` lines also reads as) and
+    /// none has moved the tool.
+    fn not_gcode(&mut self) {
+        if self.syntax_errors + self.named_commands >= NOT_GCODE && self.stats.motions == 0 && !self.stopped {
+            let d = self.finding(
+                Severity::Error,
+                codes::VF001.code,
+                format!("{NOT_GCODE} blocks could not be read as G-code (or were named commands) and none moved the tool: this is not a G-code program; verify stops here"),
+                0,
+                self.line_len,
+                None,
+            );
+            Self::help(d, format!("verify reads {}", crate::FAMILIES));
+            self.stopped = true;
+            self.stop_comparing = true;
+        }
+    }
+
     /// The statements of a line read by [`params`], before its block runs:
     /// what verify does not replay is a warning that names it; `SUPA` and
     /// the end of a modal call take effect.
@@ -927,6 +939,13 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         }
         for i in 0..self.extras.notes.len() {
             let (note, start, end, word) = self.extras.notes[i];
+            if note == Note::Macro {
+                self.named_commands += 1;
+                self.not_gcode();
+                if self.stopped {
+                    continue;
+                }
+            }
             let (message, help) = match note {
                 Note::Flow => (
                     format!("verify reads the program line by line and does not follow `{word}` (a jump, loop, condition or subroutine)"),
@@ -936,6 +955,11 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     format!("verify does not replay `{}` ({word}); the moves after it are compared as written",
                         name_at(text, start as usize)),
                     "a frame that shifts, rotates or scales the coordinates makes the moves after it differ from the toolpath",
+                ),
+                Note::Macro => (
+                    format!("verify does not replay `{}` ({word}); the moves after it are compared as written",
+                        name_at(text, start as usize)),
+                    "what the command or the machine's macro does is in the firmware and its configuration, not in the program: its own moves are not compared",
                 ),
                 Note::Call => {
                     let d = self.finding(

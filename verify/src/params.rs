@@ -55,6 +55,11 @@ pub enum Note {
     /// An assignment to a parameter whose value is not known (an
     /// expression of parameters the program never set).
     UnknownValue,
+    /// A command of Klipper's extended G-code (`SET_SERVO SERVO=a
+    /// ANGLE=5.3`, `START_PRINT X=-3,5`): a name and `NAME=VALUE`
+    /// parameters, which runs the firmware's command or a macro of the
+    /// machine's configuration that verify does not know.
+    Macro,
 }
 
 /// A Sinumerik drilling cycle call: `CYCLE81(RTP, RFP, SDIS, DP, DPR, ...)`.
@@ -264,6 +269,25 @@ const NOT_REPLAYED: &[&str] = &[
     "TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "TRAORI", "TRAFOOF", "TRANSMIT",
     "TRACYL", "RND", "RNDM", "CHF", "CHR", "AP", "RP", "AR", "CIP", "CT", "OFFN",
 ];
+
+/// Whether `rest` (after a command name) is Klipper's parameters: blank,
+/// or `NAME=VALUE` pairs apart by blanks (a name of letters, digits and
+/// `_`; a value of anything but blanks and `;`), then perhaps a `;`
+/// comment.
+fn klipper_parameters(rest: &[u8]) -> bool {
+    let text = rest.split(|b| *b == b';').next().unwrap_or(rest);
+    if text.first().is_some_and(|b| !matches!(b, b' ' | b'\t' | b'\r')) {
+        return false;
+    }
+    text.split(|b| matches!(b, b' ' | b'\t' | b'\r')).filter(|t| !t.is_empty()).all(|t| {
+        let Some(eq) = t.iter().position(|b| *b == b'=') else { return false };
+        let (name, value) = (&t[..eq], &t[eq + 1..]);
+        name.first().is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_')
+            && name.iter().all(|b| b.is_ascii_alphanumeric() || *b == b'_')
+            && !value.is_empty()
+            && !value.contains(&b'=')
+    })
+}
 
 /// Functions of one argument, by name.
 fn function(name: &[u8]) -> Option<fn(f64) -> f64> {
@@ -551,6 +575,16 @@ impl Reader {
             FLOW.iter().find(|w| upper.strip_prefix(**w).is_some_and(|d| d.bytes().all(|b| b.is_ascii_digit())))
         {
             note(extras, Note::Flow, w, c.text.len());
+            c.at = c.text.len();
+            return Ok(true);
+        }
+        // Klipper's extended G-code: a command name first on the line and
+        // `NAME=VALUE` parameters after it, or none (Klipper's G-Codes
+        // reference: "they start with a command name and may be followed
+        // by one or more parameters", `SET_SERVO SERVO=myservo ANGLE=5.3`).
+        let first = items.iter().all(|i| matches!(i.kind, ItemKind::Delete | ItemKind::Word(b'N')));
+        if first && !NOT_REPLAYED.contains(&upper) && klipper_parameters(&c.text[c.at..]) {
+            note(extras, Note::Macro, "a command of Klipper's extended G-code, or a macro it runs", c.text.len());
             c.at = c.text.len();
             return Ok(true);
         }

@@ -1001,6 +1001,15 @@ function __Section(id, theTool, name) {
   this.getDynamicWCSPlane = function () { return new Matrix(); };
   this.getDynamicWCSOrigin = function () { return new Vector(0, 0, 0); };
   this.isZOriented = function () { return true; };
+  // postc's sections cut along Z: never along X or Y.
+  this.isXOriented = function () { return false; };
+  this.isYOriented = function () { return false; };
+  // Whether the section's first and last positions are known: its first
+  // from the job's outline or once it has started, its last once it has
+  // ended.
+  this.hasWellDefinedPosition = function () {
+    return this.initialPosition !== undefined && this.finalPosition !== undefined;
+  };
   this.getPolarMode = function () { return 0; };
   this.getJetMode = function () { return this.jetMode; };
   this.getUnit = function () { return unit; };
@@ -1208,15 +1217,11 @@ function MachineConfiguration() {
   this.setSafeRetractDistance = function (v) {};
   this.getSafeRetractDistance = function () { return 0; };
   this.setSafeRetractAndHomePositionsAvailable = function (v) {};
-  this.setHomePositionZ = function (v) {};
-  this.getHomePositionZ = function () { return 0; };
-  this.hasHomePositionZ = function () { return false; };
   this.setToolLength = function (v) {};
   this.getToolLength = function () { return 0; };
   this.setCenterPositionX = function (v) {};
   this.setCenterPositionY = function (v) {};
   this.setCenterPositionZ = function (v) {};
-  this.setRetractPlane = function (v) {};
   this.setModel = function (v) { this.model = v; };
   // Settings a post gives the machine for Fusion's simulation and retracts:
   // kept, and given back by their getters.
@@ -1252,14 +1257,6 @@ function MachineConfiguration() {
   this.setVirtualTooltip = function (v) {};
   this.setMultiAxisFeedrate = function () {};
   this.setSingularity = function () {};
-  this.setHomePositionX = function (v) {};
-  this.setHomePositionY = function (v) {};
-  this.setRetractPlane = function (v) {};
-  this.getRetractPlane = function () { return 0; };
-  this.hasHomePositionX = function () { return false; };
-  this.hasHomePositionY = function () { return false; };
-  this.getHomePositionX = function () { return 0; };
-  this.getHomePositionY = function () { return 0; };
   this.getMaximumSpindleSpeed = function () { return 0; };
   this.setMaximumSpindleSpeed = function (v) {};
   this.getSpindleAxis = function () { return new Vector(0, 0, 1); };
@@ -1275,6 +1272,20 @@ function MachineConfiguration() {
   this.enableMachineRewinds = function () {};
   this.isReceived = function () { return false; };
   this.getModelUnit = function () { return unit; };
+  // The home position and the retract plane a post gives the machine
+  // (`setHomePositionX(v)`, `setRetractPlane(v)`): kept and given back;
+  // `hasHomePositionX()` says whether the post gave one. Unset, they are 0.
+  this.home = {};
+  this.retractPlane = 0;
+  this.setRetractPlane = function (v) { this.retractPlane = v; };
+  this.getRetractPlane = function () { return this.retractPlane; };
+  for (var h = 0; h < 3; ++h) {
+    (function (machine, axis) {
+      machine["setHomePosition" + axis] = function (v) { machine.home[axis] = v; };
+      machine["getHomePosition" + axis] = function () { return machine.home[axis] === undefined ? 0 : machine.home[axis]; };
+      machine["hasHomePosition" + axis] = function () { return machine.home[axis] !== undefined; };
+    })(this, ["X", "Y", "Z"][h]);
+  }
 }
 machineConfiguration = new MachineConfiguration();
 function createAxis(specifiers) {
@@ -1646,6 +1657,10 @@ function ModalGroup(specifiers, groups, format) {
 }
 function createModalGroup(specifiers, groups, format) { return new ModalGroup(specifiers, groups, format); }
 
+// ---- The setup's fixture ----
+// postc's toolpaths name no fixture: its box is empty, at the origin, as
+// `getWorkpiece()` is for a job without material (docs/fusion.md, choice 32).
+function getFixture() { return { lower: new Vector(0, 0, 0), upper: new Vector(0, 0, 0) }; }
 // ---- What postc does not run yet: an error when the post calls it ----
 function __unsupported(name) {
   error("postc does not run `" + name + "` of Fusion's host yet (docs/fusion.md)");
@@ -1677,7 +1692,6 @@ function redirectToFile(path) { __unsupported("redirectToFile"); }
 function getOutputPath() { return __outputPath; }
 function getIntermediatePath() { __unsupported("getIntermediatePath"); }
 function findFile(path) { __unsupported("findFile"); }
-function getFixture() { __unsupported("getFixture"); }
 function setExitCode(code) { __unsupported("setExitCode"); }
 function isProbingCycle() { return false; }
 function isPolarModeActive() { return false; }
