@@ -164,10 +164,10 @@ pub struct Engine<'p> {
     /// The text `parseFloat(text.substring(k))` reads, reused.
     pub(crate) float_text: Vec<u8>,
     pub(crate) empty_text: crate::value::Text,
-    /// The post is JavaScript (CIMCO or Fusion): `+` and a block's pieces
-    /// write null as `null`, as JavaScript's ToString does
-    /// ([`crate::interp::ops::add_js`]); the other dialects' null is a
-    /// value that prints nothing.
+    /// The post's text is JavaScript's (`OutputOptions::js_text`): `+`
+    /// and a block's pieces write null as `null`, as JavaScript's ToString
+    /// does ([`crate::interp::ops::add_js`]); otherwise null is a value
+    /// that prints nothing.
     pub(crate) js: bool,
 }
 
@@ -223,7 +223,7 @@ impl<'p> Engine<'p> {
             scratch: Vec::with_capacity(64),
             float_text: Vec::with_capacity(64),
             empty_text: crate::value::Text::new(""),
-            js: matches!(post.info.dialect, postc_ir::Dialect::Cimco | postc_ir::Dialect::Fusion),
+            js: post.options.js_text,
         }
     }
 

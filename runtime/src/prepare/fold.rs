@@ -58,8 +58,8 @@ pub fn expr(e: Expr) -> Expr {
                 }
                 (BinaryOp::And | BinaryOp::Or, None, _) => Expr::Binary(op, Box::new(a), Box::new(b)),
                 // Null joined to text is `null` in JavaScript and nothing
-                // in the other dialects: left for the engine, which knows
-                // the post's dialect.
+                // in the other dialects: left for the engine, which reads
+                // the post's `js_text`.
                 (BinaryOp::Add, Some(x), Some(y))
                     if matches!((&x, &y), (Value::Null, Value::Text(_)) | (Value::Text(_), Value::Null)) =>
                 {
