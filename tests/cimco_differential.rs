@@ -35,8 +35,8 @@ use crate::support::{lines, show};
 pub const EXCLUSIONS: &[(&str, &str)] = &[
     (
         "null",
-        "native code has one null (docs/cimco.md, *Known gaps*): `null` joins text as \"\" (JavaScript: \"null\"), \
-     reads as NaN in arithmetic and comparisons (JavaScript: 0), and `null` stored and read back may come out as \
+        "native code has one null (docs/cimco.md, *Known gaps*): `null` \
+     reads as NaN in arithmetic and comparisons (JavaScript: 0, but for `+`), and `null` stored and read back may come out as \
      `undefined`; the runtime's `Value::Null` is also VcPost's empty value, so a JavaScript null is a new value kind",
     ),
     (

@@ -141,6 +141,103 @@ function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n(" + es2015(
     assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
 }
 
+/// JavaScript's `+` of every kind of value with every other (null,
+/// `undefined`, booleans, text, numbers, arrays, objects): null joins text
+/// as `null`, an array as its items joined, an object as `[object
+/// Object]`, `[] + []` is "" and `1 + null` is 1; in a handler built in
+/// the output (`"x" + p`), a chain of `+` and a function's value. The post
+/// runs as postc's shaped lowering runs it and, with a constructor that
+/// keeps it off that, as the general form does: both as Node.js prints.
+#[test]
+fn plus_of_every_kind_prints_as_node_prints() {
+    if node_or_skip("cimco_node").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let shaped = r#"var vals = [null, undefined, true, false, "a", 1, [1, 2], {k: 1}, [], [null], 0];
+var count = 0;
+function show(a, b) { return a + b; }
+function onOpen(isClipboard) { return "(" + ("a" + null) + "|" + (null + "a") + "|" + ([] + []) + "|" + (1 + null) + ")\n"; }
+function onLinear(x, y, z, movement) {
+    count++;
+    if (count != 2) { return ""; }
+    var out = [];
+    for (var i = 0; i < vals.length; i++) {
+        for (var j = 0; j < vals.length; j++) {
+            out.push(show(vals[i], vals[j]));
+        }
+    }
+    var p = null, q;
+    var s = "x" + p + "|" + q + "|" + (p + "y") + "|" + (q + "y") + "|" + ("z" + (x > 1e9 ? 1 : null));
+    return "(" + out.join(" ") + ")\n(" + s + ")\n";
+}
+function nothing() { return null; }
+function onRapid(x, y, z) { return nothing(); }
+function onClose() { var p = null; return "(" + p + ")\n"; }
+"#;
+    let general =
+        shaped.replace("var count = 0;", "var count = 0;\nfunction Obj() { this.v = 1; }\nvar made = new Obj();");
+    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export");
+    for (name, text) in [("plus.js", shaped.to_string()), ("plus_general.js", general)] {
+        let post_path = dir.path().join(name);
+        std::fs::write(&post_path, text).expect("write the post");
+        let post = compile(&post_path).expect("compiles");
+        let ours = post_toolpath(&post, &toolpath).expect("postc posts");
+        let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
+        assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours), "{name}");
+    }
+}
+
+/// Arrays a call makes and drops are made again from the engine's spares
+/// (`Engine::new_array`): an array something still holds (a global, an
+/// array in an array, a closure's `arguments`, an object's property) keeps
+/// its items and its identity, and a new array is never one of them.
+#[test]
+fn arrays_made_again_keep_what_is_still_held_as_node_does() {
+    if node_or_skip("cimco_node").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post_path = dir.path().join("arrays.js");
+    std::fs::write(
+        &post_path,
+        r#"var kept = [];
+var held = {list: null};
+var lastArgs = null;
+function words(a, b) { var w = [a, b]; var inner = [w, [a]]; return inner; }
+function note() { lastArgs = arguments; return arguments.length; }
+function pick(list) { var f = list.filter(function (v) { return v !== ""; }); return f.concat([f.length]).slice(0); }
+function onLinear(x, y, z, movement) {
+    var made = words("X" + x, "Y" + y);
+    var first = made[0];
+    if (kept.length < 3) { kept.push(first); }
+    held.list = pick(["A", "", "B" + z]);
+    note(x, y, [z]);
+    var fresh = [x];
+    var again = [x];
+    return "(" + first.join(" ") + "|" + made[1].join(",") + "|" + held.list.join(",") + "|" + lastArgs.length + "|" +
+        lastArgs[2].join("") + "|" + (fresh === again) + "|" + (kept[0] === first) + "|" + kept.length + ")\n";
+}
+function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) { return ""; }
+function onClose() {
+    var out = [];
+    for (var i = 0; i < kept.length; i++) { out.push(kept[i].join("/")); }
+    return "(" + out.join(";") + "|" + held.list.join(",") + "|" + lastArgs[0] + ")\n";
+}
+"#,
+    )
+    .expect("write the post");
+    let post = compile(&post_path).expect("compiles");
+    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.path().join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export");
+    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
+    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
+    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+}
+
 /// A CNC-Calc post with JavaScript's prototypes (a constructor, another
 /// inheriting from it through `Object.create`, a super call, a method added
 /// to `String.prototype`, `for ... in` over inherited methods): the shaped

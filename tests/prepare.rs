@@ -273,3 +273,50 @@ fn a_function_that_only_returns_a_plain_expression_is_that_expression() {
     assert!(!returns("self"), "`this` depends on the call");
     assert_eq!(program_of(&post, &[(1.0, 0.0), (2.0, 0.0)]), "1\n2\n");
 }
+
+/// A function given a function expression that it only calls and tests
+/// (`motionBlock(code, words, function () {...}, null)`) runs as a copy
+/// that calls the expression's function directly, with its captures as
+/// arguments, and null as the constant it is (`prepare/callbacks.rs`). A
+/// function that keeps the function it is given, or reads `arguments`,
+/// is called as written, making the closure. The program is the same in
+/// every case.
+#[test]
+fn a_function_expression_passed_to_a_function_that_calls_it_is_called_directly_unless_it_escapes() {
+    let js = |extra: &str, args: &str| {
+        format!(
+            r#"
+            var kept = null;
+            function block(code, words, after) {{
+                {extra}
+                var all = [code].concat(words);
+                return (after ? all.concat(after()) : all).join(" ") + "\n";
+            }}
+            function feed(m, then) {{ return then(m > 1 ? "F" + m : ""); }}
+            function same(t) {{ return t; }}
+            function onLinear(x, y, z, m) {{
+                {args}
+                return block("G1", ["X" + x], function () {{ return [feed(y, same)]; }}) + block("G0", ["Y" + y], null);
+            }}
+            "#
+        )
+    };
+    let feeds = [(1.0, 0.0), (2.0, 3.0)];
+    let closure_made = |post: &Post| {
+        let code = postc_runtime::prepare::prepare(post);
+        let postc_runtime::exec::Body::Native(body) = &code.functions[function(post, "onLinear").index()].body else {
+            panic!("native")
+        };
+        any_expr(body, &|e| matches!(e, XExpr::Closure { .. }))
+    };
+    let direct = support::compile_text("t.js", &js("", ""));
+    assert!(!closure_made(&direct), "the function expression is called directly");
+    let program = program_of(&direct, &feeds);
+    assert!(program.contains("G1 X2 F3") && program.contains("G0 Y3"), "{program:?}");
+    let escapes = support::compile_text("t.js", &js("kept = after;", ""));
+    assert!(closure_made(&escapes), "a function kept by the callee stays a closure");
+    assert_eq!(program_of(&escapes, &feeds), program);
+    let counted = support::compile_text("t.js", &js("var n = arguments.length;", ""));
+    assert!(closure_made(&counted), "a callee reading `arguments` is called as written");
+    assert_eq!(program_of(&counted, &feeds), program);
+}

@@ -253,6 +253,13 @@ pub struct OutputOptions {
     /// to RON only when set.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub function_replacements: bool,
+    /// Text is made as JavaScript's ToString makes it: `+` joins null as
+    /// `null` (and arrays, objects and booleans as JavaScript writes them),
+    /// where a post without it joins null as nothing (VcPost's empty
+    /// value). The JavaScript front end sets it for CIMCO and Fusion
+    /// posts. Written to RON only when set.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub js_text: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
@@ -308,6 +315,7 @@ impl Default for OutputOptions {
             arcs_in_every_plane: false,
             reads_ahead: false,
             function_replacements: false,
+            js_text: false,
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,

@@ -143,6 +143,11 @@ pub struct Engine<'p> {
     /// capacity: a call or built-in takes one and gives it back, so that
     /// calls cost no allocation per event once the run is warm.
     pub(crate) spare_frames: Vec<Vec<Value>>,
+    /// Arrays no value refers to any more, emptied, kept with their
+    /// storage: an array a call made and dropped (`[x, y, z]`, a
+    /// `filter`'s result) is made again from them with no allocation
+    /// ([`Engine::new_array`]).
+    pub(crate) spare_arrays: Vec<std::rc::Rc<std::cell::RefCell<Vec<Value>>>>,
     /// The text of a chain of `+` being built (`text + " " + word`), kept
     /// with its capacity: a chain allocates only its result.
     pub(crate) chain_text: String,
@@ -159,6 +164,11 @@ pub struct Engine<'p> {
     /// The text `parseFloat(text.substring(k))` reads, reused.
     pub(crate) float_text: Vec<u8>,
     pub(crate) empty_text: crate::value::Text,
+    /// The post's text is JavaScript's (`OutputOptions::js_text`): `+`
+    /// and a block's pieces write null as `null`, as JavaScript's ToString
+    /// does ([`crate::interp::ops::add_js`]); otherwise null is a value
+    /// that prints nothing.
+    pub(crate) js: bool,
 }
 
 impl<'p> Engine<'p> {
@@ -205,6 +215,7 @@ impl<'p> Engine<'p> {
             script_host: None,
             handler_frame: vec![Value::Null; code.handler_slots],
             spare_frames: Vec::new(),
+            spare_arrays: Vec::new(),
             chain_text: String::new(),
             modal_epoch: 0,
             trace: None,
@@ -212,6 +223,7 @@ impl<'p> Engine<'p> {
             scratch: Vec::with_capacity(64),
             float_text: Vec::with_capacity(64),
             empty_text: crate::value::Text::new(""),
+            js: post.options.js_text,
         }
     }
 
@@ -565,6 +577,7 @@ impl<'p> Engine<'p> {
     pub(crate) fn write_value_text(&mut self, v: &Value) {
         match v {
             Value::Text(s) => s.append_to_bytes(&mut self.out.buf),
+            Value::Null if self.js => self.out.buf.extend_from_slice(b"null"),
             other => {
                 // A number's text, made in the engine's reused buffer.
                 let mut s = std::mem::take(&mut self.chain_text);

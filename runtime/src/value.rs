@@ -461,6 +461,16 @@ impl Value {
         }
     }
 
+    /// [`Value::append_to`] as JavaScript's ToString writes a primitive
+    /// operand of `+`: null as `null` (an array's items, and null in the
+    /// other dialects, write nothing).
+    pub fn append_js(&self, out: &mut String) {
+        match self {
+            Value::Null => out.push_str("null"),
+            other => other.append_to(out),
+        }
+    }
+
     pub fn to_text(&self) -> Text {
         match self {
             Value::Text(s) => s.clone(),

@@ -58,6 +58,8 @@ pub fn lower(program: &Program, text: &str, post: &mut Post, diags: &mut Vec<Dia
     post.info.dispatch = Dispatch::Sections;
     post.info.file_extension.clear();
     post.options.forget_modal_at_toolpath_start = true;
+    // Text is JavaScript's: `"a" + null` is "anull".
+    post.options.js_text = true;
     let mut l = Lowerer { post, diags, names: Vec::new() };
     for s in &program.body {
         match &s.kind {

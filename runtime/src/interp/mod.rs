@@ -64,6 +64,11 @@ pub fn non_finite_error(value: f64, span: Option<Span>) -> Box<Diagnostic> {
     })
 }
 
+/// At most this many emptied arrays are kept to be made again, each of at
+/// most this many items' storage.
+const SPARE_ARRAYS: usize = 64;
+const SPARE_ARRAY_ITEMS: usize = 256;
+
 /// Calls nest at most this deep.
 const MAX_DEPTH: usize = 200;
 
@@ -120,7 +125,17 @@ impl Engine<'_> {
                         _ => self.eval(e, frame)?,
                     };
                     match frame.get_mut(i.index()) {
-                        Some(slot) => *slot = v,
+                        Some(slot) => {
+                            // An array only this local held (`words =
+                            // words.concat(...)`) is kept to be made again.
+                            if let Value::Array(a) = slot
+                                && std::rc::Rc::strong_count(a) == 1
+                                && std::rc::Rc::weak_count(a) == 0
+                            {
+                                self.keep_array(slot);
+                            }
+                            *slot = v;
+                        }
                         None => self.assign(Place::Local(*i), v, frame),
                     }
                 }
@@ -702,11 +717,8 @@ impl Engine<'_> {
                 self.call_host(name, args)?
             }
             Expr::Array(items) => {
-                let mut values = Vec::with_capacity(items.len());
-                for item in items {
-                    values.push(self.eval(item, frame)?);
-                }
-                Value::array(values)
+                let values = self.eval_list(items, frame)?;
+                self.new_array(values)
             }
             Expr::Object(props) => {
                 let mut values = Vec::with_capacity(props.len());
@@ -726,9 +738,22 @@ impl Engine<'_> {
                 }
             },
             Expr::Member(o, k) => {
-                let o = self.eval(o, frame)?;
+                let mut o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
-                if self.is_global_object(&o) { self.global_member(&k)? } else { objects::member(&o, &k, &self.protos)? }
+                let v = if self.is_global_object(&o) {
+                    self.global_member(&k)?
+                } else {
+                    objects::member(&o, &k, &self.protos)?
+                };
+                // An array made only to be read (`list.filter(f).length`)
+                // is kept to be made again.
+                if let Value::Array(a) = &o
+                    && std::rc::Rc::strong_count(a) == 1
+                    && std::rc::Rc::weak_count(a) == 0
+                {
+                    self.keep_array(&mut o);
+                }
+                v
             }
             Expr::Invoke { object, method, args, span } => {
                 let o = self.eval(object, frame)?;
@@ -802,14 +827,14 @@ impl Engine<'_> {
                     let y = leaf(b, frame, &self.globals, &mut tb);
                     let objects = matches!(op, BinaryOp::Add | BinaryOp::Concat)
                         && (matches!(x, Value::Object(_)) || matches!(y, Value::Object(_)));
-                    (if objects { Value::Null } else { binary(*op, x, y) }, objects)
+                    (if objects { Value::Null } else { self.operate(*op, x, y) }, objects)
                 };
                 let v = if objects {
                     let x = self.eval(a, frame)?;
                     let x = self.primitive(x)?;
                     let y = self.eval(b, frame)?;
                     let y = self.primitive(y)?;
-                    binary(*op, &x, &y)
+                    self.operate(*op, &x, &y)
                 } else {
                     v
                 };
@@ -842,7 +867,7 @@ impl Engine<'_> {
                     a = self.primitive(a)?;
                     b = self.primitive(b)?;
                 }
-                let v = binary(*op, &a, &b);
+                let v = self.operate(*op, &a, &b);
                 self.check_text(&v)?;
                 v
             }
@@ -1002,17 +1027,64 @@ impl Engine<'_> {
     /// of allocating ([`Self::give_back`] returns it).
     #[inline]
     pub(crate) fn spare(&mut self) -> Vec<Value> {
-        self.spare_frames.pop().unwrap_or_default()
+        // A new one holds a frame's usual few values without growing.
+        self.spare_frames.pop().unwrap_or_else(|| Vec::with_capacity(8))
     }
 
-    /// Returns an argument list or frame to the spares, emptied.
+    /// Returns an argument list or frame to the spares, emptied. An array
+    /// it held that nothing else refers to is kept to be made again
+    /// ([`Self::new_array`]).
     #[inline]
     pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
+        for v in &mut frame {
+            if let Value::Array(a) = v
+                && std::rc::Rc::strong_count(a) == 1
+                && std::rc::Rc::weak_count(a) == 0
+            {
+                self.keep_array(v);
+            }
+        }
         frame.clear();
         // Bounded by the deepest nesting of calls; more is never needed.
         if self.spare_frames.len() < 64 {
             self.spare_frames.push(frame);
         }
+    }
+
+    /// Keeps the array `v` holds, which nothing else refers to, emptied,
+    /// for [`Self::new_array`]; `v` is left undefined.
+    #[cold]
+    fn keep_array(&mut self, v: &mut Value) {
+        let Value::Array(a) = std::mem::take(v) else { return };
+        if self.spare_arrays.len() < SPARE_ARRAYS && a.borrow().capacity() <= SPARE_ARRAY_ITEMS {
+            // Its items may hold arrays of their own: those go as it
+            // empties (nothing else refers to it, so nothing borrows it).
+            a.borrow_mut().clear();
+            self.spare_arrays.push(a);
+        }
+    }
+
+    /// A new array of `values` (given back to the spares): one kept by
+    /// [`Self::keep_array`] when there is one, so that an array made and
+    /// dropped in every call allocates nothing once the run is warm. Its
+    /// identity is new: nothing referred to the kept array.
+    pub(crate) fn new_array(&mut self, mut values: Vec<Value>) -> Value {
+        let a = match self.spare_arrays.pop() {
+            Some(a) => {
+                let mut items = std::mem::take(&mut *a.borrow_mut());
+                if items.capacity() >= values.len() {
+                    items.append(&mut values);
+                    self.give_back(values);
+                } else {
+                    std::mem::swap(&mut items, &mut values);
+                    self.give_back(values);
+                }
+                *a.borrow_mut() = items;
+                a
+            }
+            None => std::rc::Rc::new(std::cell::RefCell::new(values)),
+        };
+        Value::Array(a)
     }
 
     /// Text a post built: past [`MAX_TEXT_BYTES`] the run stops (RT031);
@@ -1249,7 +1321,10 @@ impl Engine<'_> {
             Body::Native(body) => {
                 let mut frame = args;
                 if runnable.uses_arguments {
-                    self.arguments.push(Value::array(frame.clone()));
+                    let mut list = self.spare();
+                    list.extend_from_slice(&frame);
+                    let arguments = self.new_array(list);
+                    self.arguments.push(arguments);
                 }
                 fill_frame(runnable, &mut frame);
                 // Calls nest up to MAX_DEPTH whatever the thread's stack
@@ -1277,8 +1352,11 @@ impl Engine<'_> {
                     Err(e) => Err(placed(post, function, e)),
                 };
                 self.give_back(frame);
-                if runnable.uses_arguments {
-                    self.arguments.pop();
+                if runnable.uses_arguments
+                    && let Some(mut arguments) = self.arguments.pop()
+                    && matches!(&arguments, Value::Array(a) if std::rc::Rc::strong_count(a) == 1 && std::rc::Rc::weak_count(a) == 0)
+                {
+                    self.keep_array(&mut arguments);
                 }
                 result
             }
@@ -1483,6 +1561,13 @@ impl Engine<'_> {
         Ok(v)
     }
 
+    /// A binary operator of two values: JavaScript's `+` in a JavaScript
+    /// post ([`ops::add_js`]), else [`binary`].
+    #[inline]
+    fn operate(&self, op: BinaryOp, a: &Value, b: &Value) -> Value {
+        if self.js && op == BinaryOp::Add { ops::add_js(a, b) } else { binary(op, a, b) }
+    }
+
     /// Evaluates a left-nested chain of `+`/`&` as [`binary`] would, one
     /// operator at a time from the left: `None` when the value so far is
     /// text, which is then in `buf`; the value itself while it is not
@@ -1497,15 +1582,23 @@ impl Engine<'_> {
         };
         let right = self.eval(r, frame)?;
         let right = self.primitive(right)?;
+        // JavaScript's `+` writes null as `null` ([`ops::add_js`]).
+        let js = self.js && *op == BinaryOp::Add;
+        let append = |v: &Value, buf: &mut String| if js { v.append_js(buf) } else { v.append_to(buf) };
         Ok(match left {
             None => {
-                right.append_to(buf);
+                append(&right, buf);
                 None
             }
             Some(left) => {
-                if *op == BinaryOp::Concat || matches!(left, Value::Text(_)) || matches!(right, Value::Text(_)) {
-                    left.append_to(buf);
-                    right.append_to(buf);
+                let text = if js {
+                    ops::joins_as_text(&left) || ops::joins_as_text(&right)
+                } else {
+                    *op == BinaryOp::Concat || matches!(left, Value::Text(_)) || matches!(right, Value::Text(_))
+                };
+                if text {
+                    append(&left, buf);
+                    append(&right, buf);
                     None
                 } else {
                     Some(binary(*op, &left, &right))

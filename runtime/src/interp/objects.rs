@@ -675,10 +675,15 @@ impl Engine<'_> {
             }
             "slice" => {
                 let (a, b) = (at(arg(0), 0), at(arg(1), len));
-                Value::array(if a < b { items.borrow()[a..b].to_vec() } else { Vec::new() })
+                let mut part = self.spare();
+                if a < b {
+                    part.extend_from_slice(&items.borrow()[a..b]);
+                }
+                self.new_array(part)
             }
             "concat" => {
-                let mut all = items.borrow().clone();
+                let mut all = self.spare();
+                all.extend_from_slice(&items.borrow());
                 for a in args.drain(..) {
                     match a {
                         Value::Array(more) => all.extend(more.borrow().iter().cloned()),
@@ -686,9 +691,10 @@ impl Engine<'_> {
                     }
                 }
                 if all.len() > MAX_ITEMS {
+                    self.give_back(all);
                     return Err(too_many());
                 }
-                Value::array(all)
+                self.new_array(all)
             }
             "reverse" => {
                 items.borrow_mut().reverse();
@@ -710,7 +716,7 @@ impl Engine<'_> {
                 // each call's arguments, in spare storage.
                 let mut snapshot = self.spare();
                 snapshot.extend(items.borrow().iter().cloned());
-                let mut out = if matches!(name, "map" | "filter") { Vec::with_capacity(len) } else { Vec::new() };
+                let mut out = self.spare();
                 let mut decided = None;
                 // A callback that only returns a plain expression runs with
                 // no call made (`Engine::run_callback`).
@@ -749,10 +755,14 @@ impl Engine<'_> {
                 snapshot.clear();
                 self.give_back(snapshot);
                 if let Some(decided) = decided {
+                    self.give_back(out);
                     return decided;
                 }
+                if matches!(name, "map" | "filter") {
+                    return Ok(self.new_array(out));
+                }
+                self.give_back(out);
                 match name {
-                    "map" | "filter" => Value::array(out),
                     "some" => Value::Bool(false),
                     "every" => Value::Bool(true),
                     _ => Value::Undefined,

@@ -35,6 +35,37 @@ pub(crate) fn type_name(a: &Value) -> &'static str {
     }
 }
 
+/// JavaScript's `+` of two values the interpreter has made primitive
+/// (an object's `valueOf`/`toString` asked first): text when either is
+/// text or would be (an array joins, a function and a regular expression
+/// are their source), with null as `null`, `undefined` as `undefined` and
+/// booleans as `true`/`false`; else the sum of their numbers (null 0,
+/// `undefined` NaN, booleans 0 and 1). The other dialects' `+`
+/// ([`binary`]) writes null as nothing.
+#[doc(hidden)]
+pub fn add_js(a: &Value, b: &Value) -> Value {
+    if joins_as_text(a) || joins_as_text(b) {
+        if let (Value::Text(_), Value::Text(_)) = (a, b) {
+            return concat(a, b);
+        }
+        return joined(|s| {
+            a.append_js(s);
+            b.append_js(s);
+        });
+    }
+    Value::Num(a.num() + b.num())
+}
+
+/// Whether `+` with this value makes text (JavaScript): text, and the
+/// values whose primitive is text.
+#[inline]
+pub(crate) fn joins_as_text(v: &Value) -> bool {
+    matches!(
+        v,
+        Value::Text(_) | Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Regex(_) | Value::Output(_)
+    )
+}
+
 /// A binary operator applied to two values. (The interpreter evaluates
 /// `And` and `Or` itself: they short-circuit and give an operand.)
 #[doc(hidden)]
@@ -195,15 +226,21 @@ fn concat(a: &Value, b: &Value) -> Value {
             return Value::Text(Text::from_bytes(&buf[..n]));
         }
     }
-    // Longer text is built in a buffer this thread reuses, so only the
-    // result is allocated.
+    joined(|s| {
+        a.append_to(s);
+        b.append_to(s);
+    })
+}
+
+/// The text `write` builds, in a buffer this thread reuses, so only the
+/// result is allocated.
+fn joined(write: impl FnOnce(&mut String)) -> Value {
     thread_local! {
         static JOINED: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
     }
     JOINED.with_borrow_mut(|s| {
         s.clear();
-        a.append_to(s);
-        b.append_to(s);
+        write(s);
         let joined = Value::Text(Text::new(s));
         if s.capacity() > 1 << 16 {
             // A rare long text: its buffer is not kept.

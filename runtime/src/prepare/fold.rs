@@ -57,6 +57,14 @@ pub fn expr(e: Expr) -> Expr {
                     }
                 }
                 (BinaryOp::And | BinaryOp::Or, None, _) => Expr::Binary(op, Box::new(a), Box::new(b)),
+                // Null joined to text is `null` in JavaScript and nothing
+                // in the other dialects: left for the engine, which reads
+                // the post's `js_text`.
+                (BinaryOp::Add, Some(x), Some(y))
+                    if matches!((&x, &y), (Value::Null, Value::Text(_)) | (Value::Text(_), Value::Null)) =>
+                {
+                    Expr::Binary(op, Box::new(a), Box::new(b))
+                }
                 (_, Some(x), Some(y)) => match literal(binary(op, &x, &y)) {
                     Some(folded) => folded,
                     None => Expr::Binary(op, Box::new(a), Box::new(b)),

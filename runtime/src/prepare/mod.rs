@@ -11,7 +11,9 @@
 //!    seen as a whole, becomes globals of its own and its methods plain
 //!    functions ([`fields`]); a method of an object a global holds for the
 //!    whole run that nothing can replace is called directly
-//!    ([`factories`]); constants folded ([`fold`]);
+//!    ([`factories`]); a function given a function expression it calls
+//!    runs as a copy that calls it directly ([`callbacks`]); constants
+//!    folded ([`fold`]);
 //! 2. the fast path ([`emit`]): a handler that writes what a native
 //!    function returns builds that text straight in the output instead;
 //!    marks are tidied;
@@ -36,6 +38,7 @@
 //! A handler of output lines only (every Vectric section) is kept as it
 //! is: the engine runs its lines on a faster path still.
 
+mod callbacks;
 pub(crate) mod emit;
 mod factories;
 mod fields;
@@ -61,6 +64,7 @@ pub fn prepare(post: &Post) -> Code {
     factories::specialise(&mut functions, &mut handlers, &mut init, &mut globals);
     fields::replace(&names, &mut functions, &mut handlers, &mut init, &mut globals);
     factories::direct_calls(&mut functions, &mut handlers, &mut init);
+    callbacks::specialise(&mut functions, &mut handlers, &mut init);
     for f in &mut functions {
         if let exec::Body::Native(body) = &mut f.body {
             *body = fold::stmts(std::mem::take(body));

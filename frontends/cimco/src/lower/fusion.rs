@@ -90,6 +90,8 @@ pub(crate) fn lower(
     // A Fusion post has no script tier: its interpreter runs what CIMCO's
     // Rhai tier refuses (docs/fusion.md, "Language").
     post.options.function_replacements = true;
+    // Text is JavaScript's: `"a" + null` is "anull".
+    post.options.js_text = true;
     // Each line ends with the host's `EOL`, which `setEOL` changes
     // (docs/fusion.md, choice 5): the host writes it, so the post's own
     // line ending is empty.

@@ -94,6 +94,8 @@ fn lower(program: &Program, text: &str, whole: Span, post: &mut Post, diags: &mu
     // changed since the last time it was used" -- a toolpath start does not
     // make it forget (a post that wants that calls `reset()`).
     post.options.forget_modal_at_toolpath_start = false;
+    // Text is JavaScript's: `"a" + null` is "anull".
+    post.options.js_text = true;
     let feed = feed_variables(&model, &setup, post);
 
     // postc's functions after the post's own.

@@ -407,7 +407,18 @@ impl<'f> Emitter<'f> {
             return None;
         }
         let mut out = vec![Stmt::Truncate(fr.base)];
-        out.extend(self.text(e, fr, fr.depth + 1)?);
+        let mut text = self.text(e, fr, fr.depth + 1)?;
+        // A value returned whole is written as a handler's value is: null
+        // and `undefined` as nothing (in JavaScript, an operand of `+`
+        // writes null as `null`).
+        if let [Stmt::Emit(pieces)] = text.as_mut_slice()
+            && let [piece @ Piece::Expr(_)] = pieces.as_mut_slice()
+            && !matches!(piece, Piece::Expr(Expr::FormatVar { .. } | Expr::Format { .. } | Expr::Var(_)))
+            && let Piece::Expr(x) = std::mem::replace(piece, Piece::Text(Vec::new()))
+        {
+            *piece = Piece::Joined(x);
+        }
+        out.extend(text);
         Some(out)
     }
 
