@@ -133,12 +133,7 @@ function onClose() { return "(" + chain(2) + " " + chain(0.5) + ")\n(" + es2015(
     )
     .expect("write the post");
     let post = compile(&post_path).expect("compiles");
-    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
-    let jsonl = dir.path().join("mill.jsonl");
-    export_jsonl(&toolpath, &jsonl).expect("export");
-    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
-    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
-    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+    assert_posts_as_node(dir.path(), &post_path, &post);
 }
 
 /// JavaScript's `+` of every kind of value with every other (null,
@@ -230,12 +225,7 @@ function onClose() {
     )
     .expect("write the post");
     let post = compile(&post_path).expect("compiles");
-    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
-    let jsonl = dir.path().join("mill.jsonl");
-    export_jsonl(&toolpath, &jsonl).expect("export");
-    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
-    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
-    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+    assert_posts_as_node(dir.path(), &post_path, &post);
 }
 
 /// A CNC-Calc post with JavaScript's prototypes (a constructor, another
@@ -272,12 +262,7 @@ function onClose() { counter.next(); return "(" + counter.label() + " " + Object
     .expect("write the post");
     let post = compile(&post_path).expect("compiles");
     assert!(post.scripts.is_empty(), "the general form runs the post, with no script");
-    let toolpath = corpus().join("toolpaths/cimco/mill.ron");
-    let jsonl = dir.path().join("mill.jsonl");
-    export_jsonl(&toolpath, &jsonl).expect("export");
-    let ours = post_toolpath(&post, &toolpath).expect("postc posts");
-    let theirs = run_node(&post_path, &jsonl, &[]).expect("Node posts");
-    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
+    assert_posts_as_node(dir.path(), &post_path, &post);
 }
 
 /// A post that runs every text method with a regular expression, and
@@ -364,4 +349,16 @@ fn node_runs_regular_expressions_as_postc_does() {
         assert_eq!(String::from_utf8_lossy(&postc), String::from_utf8_lossy(&node), "{name}");
         assert_eq!(postc, node, "{name}");
     }
+}
+
+/// Posts `toolpaths/cimco/mill.ron` through `post` (compiled from
+/// `post_path`) and through Node.js running `post_path`, and requires the
+/// same text.
+fn assert_posts_as_node(dir: &Path, post_path: &Path, post: &Post) {
+    let toolpath = support::corpus().join("toolpaths/cimco/mill.ron");
+    let jsonl = dir.join("mill.jsonl");
+    export_jsonl(&toolpath, &jsonl).expect("export");
+    let ours = post_toolpath(post, &toolpath).expect("postc posts");
+    let theirs = run_node(post_path, &jsonl, &[]).expect("Node posts");
+    assert_eq!(String::from_utf8_lossy(&theirs), String::from_utf8_lossy(&ours));
 }

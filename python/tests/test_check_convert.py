@@ -62,13 +62,14 @@ def test_a_cimco_section_post_only_when_asked(cli):
 
 @pytest.mark.parametrize("to", ["cimco", "fusion"])
 def test_a_target_engine_that_cannot_hold_the_post_refuses_as_the_command_does(cli, to):
-    # gcode_mm.pp prints the job's file name in its header, which CNC-Calc
-    # never hands a post (CV007); it ends lines with LF, which postc's
-    # Fusion host does not write (CV004).
-    said = cli("convert", POST, "--to", to, check=False)
+    # rotary_wrap_mm.pp wraps Y onto a rotary axis, whose angle needs the
+    # job's wrap diameter, which neither CNC-Calc nor Fusion hands a post
+    # (CV004).
+    wrap = str(REPO / "corpus/posts/vectric/rotary_wrap_mm.pp")
+    said = cli("convert", wrap, "--to", to, check=False)
     assert said.returncode == 1
     with pytest.raises(postc.PostError) as refused:
-        postc.convert(POST, to)
+        postc.convert(wrap, to)
     codes = sorted({d.code for d in refused.value.diagnostics})
     assert codes == sorted({line[6:11] for line in said.stderr.decode().splitlines() if line.startswith("error[")})
     assert codes and codes[0].startswith("CV")
