@@ -28,6 +28,8 @@ use std::time::{Duration, Instant};
 pub enum Kind {
     Vectric,
     Cimco,
+    /// An Autodesk Fusion `.cps` post (the shared corpus's real posts).
+    Fusion,
     VcPost,
     Ron,
     Jsonl,
@@ -39,9 +41,10 @@ pub enum Kind {
 }
 
 impl Kind {
-    pub const ALL: [Kind; 10] = [
+    pub const ALL: [Kind; 11] = [
         Kind::Vectric,
         Kind::Cimco,
+        Kind::Fusion,
         Kind::VcPost,
         Kind::Ron,
         Kind::Jsonl,
@@ -56,6 +59,7 @@ impl Kind {
         match self {
             Kind::Vectric => "vectric",
             Kind::Cimco => "cimco",
+            Kind::Fusion => "fusion",
             Kind::VcPost => "vcpost",
             Kind::Ron => "ron",
             Kind::Jsonl => "jsonl",
@@ -136,6 +140,9 @@ pub fn seeds(root: &Path) -> Vec<Seed> {
     }
     for p in files(&corpus.join("posts/cimco"), &[".js"]) {
         add(Kind::Cimco, &p, "post.js".into(), beside());
+    }
+    for p in files(&shared.join("fusion"), &[".cps"]) {
+        add(Kind::Fusion, &p, "post.cps".into(), beside());
     }
     for p in files(&corpus.join("posts/vcpost"), &[".vcpost"])
         .iter()
@@ -396,6 +403,12 @@ fn runs_for(seed: &Seed) -> Vec<Run> {
             run(&["check", "--format", "json", &f], &[], true),
             run(&["post", &f, "standard.ron", "-o", "out.nc"], &["out"], false),
             run(&["convert", &f, "--to", "ron", "-o", "out.ron"], &["out.ron"], false),
+        ],
+        // A Fusion post converts to its own dialect only (docs/convert.md).
+        Kind::Fusion => vec![
+            run(&["check", "--format", "json", &f], &[], true),
+            run(&["post", &f, "standard.ron", "-o", "out.nc"], &["out"], false),
+            run(&["convert", &f, "--to", "fusion", "-o", "out.cps"], &["out.cps"], false),
         ],
         Kind::Ron | Kind::Jsonl | Kind::Apt => vec![
             run(&["check", "--format", "json", &f], &[], true),

@@ -41,12 +41,22 @@ struct Args {
     /// Parallel workers (each runs its own mutants, seeded from --seed).
     #[arg(long, default_value_t = 2)]
     jobs: u64,
+    /// Mutate only inputs of these kinds (`vectric`, `cimco`, `fusion`,
+    /// `vcpost`, `ron`, `jsonl`, `apt`, `probe-table`, `composites`,
+    /// `postp`, `lsp`); every kind when not given.
+    #[arg(long = "kind")]
+    kinds: Vec<String>,
 }
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
     let mut seeds = postc_fuzz::seeds(&args.root);
     seeds.extend(postc_fuzz::jsonl_seed(&args.postc));
+    if let Some(unknown) = args.kinds.iter().find(|k| !postc_fuzz::Kind::ALL.iter().any(|kind| kind.name() == *k)) {
+        eprintln!("postc-fuzz: no input kind is called `{unknown}`");
+        return std::process::ExitCode::from(2);
+    }
+    seeds.retain(|s| args.kinds.is_empty() || args.kinds.iter().any(|k| k == s.kind.name()));
     if seeds.is_empty() {
         eprintln!("postc-fuzz: no corpus under {}", args.root.display());
         return std::process::ExitCode::from(2);
