@@ -10,7 +10,7 @@
 //! span, and each diagnostic of the reader delivered by the same
 //! `next_event` call that would have delivered it reading in line (a batch
 //! keeps diagnostics and events in the order the reader produced them).
-//! Memory stays bounded (a few batches in flight), emptied batches go back
+//! Memory stays bounded (at most [`IN_FLIGHT`] batches in flight), emptied batches go back
 //! to the reader so a move allocates nothing, a consumer that stops early
 //! stops the reader (its next hand-over fails), and a reader that panics
 //! panics the consumer at the point the stream would have ended, never a
@@ -25,8 +25,16 @@ use postc_ir::{Diagnostic, Event, EventSource, Span};
 /// Events handed over at a time.
 #[doc(hidden)]
 pub const BATCH: usize = 1024;
-/// Batches read ahead of the consumer at most.
-const IN_FLIGHT: usize = 4;
+/// Batches read ahead of the consumer at most (65,536 events).
+///
+/// The reader is the slowest thread of a simple post's job, so the job
+/// takes as long as it does. While `postc post` also verifies, three
+/// threads share two cores and the scheduler takes the reader's core for
+/// the posting or verify thread at times: a deep queue lets the reader
+/// run on when it gets a core back, where with four batches it stopped
+/// as soon as the post fell 4,096 events behind (docs/performance.md,
+/// "Verifying while posting").
+const IN_FLIGHT: usize = 64;
 
 /// One thing the reader produced, in its order.
 enum Item {
