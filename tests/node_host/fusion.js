@@ -183,7 +183,7 @@ Referee.prototype.beginToolpath = function () {
         this.call("__fusion_job", [typeof j.product === "string" ? j.product : "postc"]);
         this.call(
             "__fusion_open",
-            [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || "", j.time || "", file.dir || ""]
+            [(j.units || "Mm") === "Mm", file.name || "", j.notes || "", j.date || NOW[0], j.time || NOW[1], file.dir || ""]
                 .concat(stock)
                 .concat([JSON.stringify(this.outline || []), JSON.stringify(this.properties || {})])
         );
@@ -234,16 +234,39 @@ Referee.prototype.feedMove = function (m) {
     this.call("__fusion_linear", [m.x, m.y, m.z, this.feedOf(m, slow), intent === "Plunge"]);
 };
 
+// The date and time of a job that gives none: now, as the caller's clock
+// says (docs/vectric.md: the long date VCarve writes and HH:MM, in UTC).
+// The tests post with no clock, which is the Unix epoch.
+var NOW = (function (seconds) {
+    var d = new Date(seconds * 1000);
+    var days = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
+    var months = ["January", "February", "March", "April", "May", "June", "July", "August", "September",
+        "October", "November", "December"];
+    var two = function (n) { return (n < 10 ? "0" : "") + n; };
+    return [days[d.getUTCDay()] + ", " + months[d.getUTCMonth()] + " " + d.getUTCDate() + ", " + d.getUTCFullYear(),
+        two(d.getUTCHours()) + ":" + two(d.getUTCMinutes())];
+})(0);
+
+// An arc's plane: its number in Fusion's API (PLANE_XY 0, PLANE_ZX 1,
+// PLANE_YZ 2) and its axes (u, v, normal w) as G17, G18 and G19 take
+// them, right-handed: XY (x, y, z), ZX (z, x, y), YZ (y, z, x).
+var PLANES = {Xy: [0, [0, 1, 2]], Zx: [1, [2, 0, 1]], Yz: [2, [1, 2, 0]]};
+
 Referee.prototype.arc = function (a) {
-    if ((a.plane || "Xy") !== "Xy") {
-        throw new Error("the referee does not linearize arcs outside XY");
+    var plane = PLANES[a.plane || "Xy"];
+    if (!plane) {
+        throw new Error("the referee does not know the arc plane " + a.plane);
     }
+    var u = plane[1][0], v = plane[1][1], w = plane[1][2];
     var s = this.pos;
-    var cx = a.cx, cy = a.cy, cz = s[2];
-    var r = Math.hypot(s[0] - cx, s[1] - cy);
-    var a0 = Math.atan2(s[1] - cy, s[0] - cx);
-    var a1 = Math.atan2(a.y - cy, a.x - cx);
-    var closed = Math.hypot(a.x - s[0], a.y - s[1]) <= 1e-9 * Math.max(r, 1);
+    var e = [a.x, a.y, a.z];
+    // The centre lies at the start along the plane's normal (a helix's axis).
+    var c = [a.cx, a.cy, a.cz];
+    c[w] = s[w];
+    var r = Math.hypot(s[u] - c[u], s[v] - c[v]);
+    var a0 = Math.atan2(s[v] - c[v], s[u] - c[u]);
+    var a1 = Math.atan2(e[v] - c[v], e[u] - c[u]);
+    var closed = Math.hypot(e[u] - s[u], e[v] - s[v]) <= 1e-9 * Math.max(r, 1);
     var TAU = 2 * Math.PI;
     var cw = a.dir === "Cw";
     var turn = closed ? TAU : (((cw ? a0 - a1 : a1 - a0) % TAU) + TAU) % TAU;
@@ -252,8 +275,8 @@ Referee.prototype.arc = function (a) {
     }
     var intent = a.intent || "Cut";
     var slow = intent === "Plunge" || intent === "Retract";
-    this.pos = [a.x, a.y, a.z];
-    this.call("__fusion_circular", [cw, cx, cy, cz, a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r, 0]);
+    this.pos = e;
+    this.call("__fusion_circular", [cw, c[0], c[1], c[2], a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r, plane[0]]);
 };
 
 Referee.prototype.event = function (e) {
