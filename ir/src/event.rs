@@ -220,6 +220,13 @@ pub struct Tool {
     pub jet: bool,
     /// Jet power, when `jet`.
     pub power: Option<f64>,
+    /// A lathe's turning tool (an insert in a holder: the part turns on
+    /// the spindle, the tool holds still). Its toolpaths are turning
+    /// toolpaths: X is the radius, Z runs along the spindle, Y is zero and
+    /// arcs lie in the ZX plane; `diameter` is twice the insert's nose
+    /// radius. Left out when false.
+    #[serde(skip_serializing_if = "is_default")]
+    pub turning: bool,
     /// Length (height) offset register, when it is not the tool number.
     pub length_offset: Option<u32>,
     /// Diameter offset register, when it is not the tool number.

@@ -200,6 +200,15 @@ struct Run<'a, O: Observer + ?Sized> {
     inverse_time: bool,
     /// G95: F is a feed per spindle revolution.
     per_rev: bool,
+    /// G96: S is a surface speed, the spindle's rpm changes with the
+    /// diameter (G97 ends it).
+    css: bool,
+    /// The toolpath's first tool is a lathe's turning tool: the program is
+    /// read as a lathe program (docs/verify.md, "Lathe programs").
+    lathe: bool,
+    /// G7: X words are diameters (G8: radii). A lathe program starts in
+    /// G7.
+    diameter: bool,
     /// The last S word, revolutions a minute.
     speed: f64,
     spindle: bool,
@@ -315,6 +324,9 @@ pub fn replay<O: Observer + ?Sized>(
         feed_step: 0.0,
         inverse_time: false,
         per_rev: false,
+        css: false,
+        lathe: false,
+        diameter: false,
         speed: f64::NAN,
         spindle: false,
         pos: [f64::NAN; 3],
@@ -353,6 +365,13 @@ pub fn replay<O: Observer + ?Sized>(
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
     run.path.start();
+    // A lathe program: X is a diameter and arcs turn in the ZX plane
+    // until the program says otherwise (G8; G17, G19).
+    if run.path.lathe == Some(true) {
+        run.lathe = true;
+        run.diameter = true;
+        run.plane = Plane::Zx;
+    }
     let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
     let mut buf: Vec<u8> = Vec::with_capacity(256);
     loop {
@@ -1272,6 +1291,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     self.motion = None;
                 }
                 40 => dwell = true,
+                // LinuxCNC's lathe modes: X a diameter (G7) or a radius (G8).
+                70 => self.diameter = true,
+                80 => self.diameter = false,
+                // Constant surface speed on (G96) and off (G97).
+                960 => self.css = true,
+                970 => self.css = false,
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
                 190 => self.plane = Plane::Yz,
@@ -1329,6 +1354,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 950 => {
                     self.inverse_time = false;
                     self.per_rev = true;
+                }
+                // A lathe's G98 and G99 are feeds per minute and per
+                // revolution (Fanuc's and Haas' lathe G codes).
+                980 | 990 if self.lathe => {
+                    self.inverse_time = false;
+                    self.per_rev = tenths == 990;
                 }
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
@@ -1402,6 +1433,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     self.absolute = true;
                     self.inverse_time = false;
                     self.per_rev = false;
+                    self.css = false;
+                    self.diameter = self.lathe;
                 }
                 _ => {}
             }
@@ -1484,9 +1517,18 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             Self::help(d, "a controller uses whatever units were last active; state them in the header");
         }
         let mut target = self.pos;
+        // A lathe's tool stays on the spindle's centre plane: Y is 0 until
+        // the program moves a Y axis.
+        if self.lathe && target[1].is_nan() {
+            target[1] = 0.0;
+        }
         for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
             if let Some(w) = b.get(*l) {
-                let v = w.value * self.unit;
+                let mut v = w.value * self.unit;
+                // In diameter mode the X word is twice the radius the tool goes to.
+                if i == 0 && self.diameter {
+                    v /= 2.0;
+                }
                 target[i] = if self.absolute { v } else { self.pos[i] + v };
             }
         }
@@ -2154,25 +2196,33 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
             return;
         }
-        // Under G95 the feed a minute is F times the spindle speed.
-        let per_minute = if self.per_rev { self.speed.abs() } else { 1.0 };
-        if !per_minute.is_finite() {
+        // A feed per revolution is compared with the toolpath's when both
+        // are per revolution; otherwise per minute, through the spindle's
+        // rpm, which constant surface speed (G96) leaves unknown.
+        let rpm = if self.css { f64::NAN } else { self.speed.abs() };
+        let (got, want, step) = match (self.per_rev, e.per_rev) {
+            (true, true) | (false, false) => (self.feed, e.feed, self.feed_step),
+            (true, false) => (self.feed * rpm, e.feed, self.feed_step * rpm),
+            (false, true) => (self.feed, e.feed * rpm, self.feed_step),
+        };
+        if !got.is_finite() || !want.is_finite() {
             return;
         }
-        let (got, want) = (self.feed * per_minute, e.feed);
-        let step = self.feed_step * per_minute;
         if (got - want).abs() > (0.005 * want).max(0.5 * step + 1e-6) && self.feed_reported != (got, want) {
             self.feed_reported = (got, want);
             let per_unit = match (self.per_rev, self.unit > 1.0) {
+                (true, true) if e.per_rev => "in/rev (G95)",
+                (true, false) if e.per_rev => "mm/rev (G95)",
                 (true, true) => "in/rev times the spindle's S (G95)",
                 (true, false) => "mm/rev times the spindle's S (G95)",
                 (false, true) => "in/min (G94)",
                 (false, false) => "mm/min (G94)",
             };
+            let (per, digits) = if self.per_rev && e.per_rev { ("mm/rev", 3) } else { ("mm/min", 1) };
             self.motion_finding(
                 Severity::Error,
                 codes::VF033.code,
-                format!("this cut runs at {:.1} mm/min; the toolpath's feed is {want:.1} mm/min", got),
+                format!("this cut runs at {got:.digits$} {per}; the toolpath's feed is {want:.digits$} {per}"),
                 p,
                 Some(e),
                 Some(format!(
