@@ -16,7 +16,9 @@
 //! job it does not post) and holds the number that post and verify all
 //! four at or above [`AT_LEAST`], and the number that post all four at or
 //! above [`POSTING_AT_LEAST`]. A second test posts the jet job
-//! (`corpus/toolpaths/jet_mm.ron`) through every post the same way.
+//! (`corpus/toolpaths/jet_mm.ron`) through every post the same way, and a
+//! third the turning job (`corpus/toolpaths/turning_mm.ron`) through the
+//! turning and mill-turn posts.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -79,6 +81,10 @@ const OWN: &[(&str, &str, &[&str])] = &[
     // move, and don't use G80") and never resets `gCycleModal`: the next
     // cycle's first hole prints without its `G82`, a rapid into the hole.
     ("jfbell__CAMPosts/MotusCNC_5-Axis_G43.4.cps", "drilling", &["VF012"]),
+    // `var kOutput = createReferenceVariable({prefix:"K"}, xFormat);`: an
+    // arc's K is printed with X's diameter format (`scale:2`), twice the
+    // centre's offset along Z.
+    ("nmnarz__MACHINE-POSTS/DMG_MORI_NLX_4000B-750_180818.cps", "turning", &["VF013", "VF020"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify
@@ -87,6 +93,16 @@ const UNREAD: &str = "posts, but verify does not read its dialect (VF044)";
 
 /// The outcome of a post whose capabilities take no jet operation.
 const REFUSES_JET: &str = "refuses jet operations (its capabilities)";
+
+/// The outcome of a post whose capabilities take no turning operation.
+const REFUSES_TURNING: &str = "refuses turning operations (its capabilities)";
+
+/// Of the turning and mill-turn posts ([`kinds`]), those that post the
+/// turning job and whose program verify reads and passes (but for
+/// findings listed as the post's own), and those that post it, verified
+/// or in a dialect verify does not read.
+const TURNING_AT_LEAST: usize = 9;
+const TURNING_POSTING_AT_LEAST: usize = 9;
 
 /// Posts that post the jet job (with one of the three jet tools) today,
 /// and of those the ones whose program verify reads and passes.
@@ -219,6 +235,9 @@ fn outcome(said: &str, status: Option<i32>) -> String {
     }
     if first.contains("does not support jet operations") {
         return REFUSES_JET.into();
+    }
+    if first.contains("does not support turning operations") {
+        return REFUSES_TURNING.into();
     }
     code.to_string()
 }
@@ -562,5 +581,81 @@ fn corpus_fusion_posts_post_the_jet_job_or_say_why_not() {
     assert!(
         posting >= JET_POSTING_AT_LEAST,
         "{posting} corpus Fusion posts post the jet job, fewer than {JET_POSTING_AT_LEAST}:\n{summary}"
+    );
+}
+
+/// The turning job (`corpus/toolpaths/turning_mm.ron`: face, rough and
+/// finish a stepped shaft, cut a groove; feeds per revolution, constant
+/// surface speed) through the corpus's turning and mill-turn posts (by
+/// [`kinds`]): each posts it and verify reads and passes the program (but
+/// for findings docs/fusion.md lists as the post's own, [`OWN`]), or says
+/// it does not read the dialect, or the post is refused with a diagnostic;
+/// none panics or leaves a file behind. The count by outcome is
+/// docs/fusion.md's turning table.
+#[test]
+fn corpus_fusion_turning_posts_post_the_turning_job_or_say_why_not() {
+    let dir = shared();
+    if !dir.is_dir() {
+        support::referee_missing("corpus_fusion_posts", "../shared/corpus/fusion");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-turning-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let job = support::corpus().join("toolpaths/turning_mm.ron");
+    let kinds = kinds(&dir);
+    let turning: Vec<PathBuf> = posts(&dir)
+        .into_iter()
+        .filter(|p| {
+            let name = p.strip_prefix(&dir).unwrap_or(p).display().to_string().replace(std::path::MAIN_SEPARATOR, "/");
+            matches!(kinds.get(&name).copied(), Some("turning" | "mill-turn"))
+        })
+        .collect();
+    let stated = stated_kinds(&dir);
+    assert_eq!(
+        turning.len(),
+        stated.get("turning").copied().unwrap_or(0) + stated.get("mill-turn").copied().unwrap_or(0),
+        "the turning and mill-turn posts are not the counts SOURCES.md states"
+    );
+    let runs = each_post(&turning, &dir, &tmp, |post, name, out| {
+        let mut broken = Vec::new();
+        let what = format!("{name} (turning)");
+        let mut got = post_one(post, &job, out, &what, &mut broken);
+        if let Some((.., codes)) = OWN.iter().find(|(p, j, codes)| {
+            name.replace(std::path::MAIN_SEPARATOR, "/") == *p && *j == "turning" && codes.contains(&got.as_str())
+        }) {
+            got = post_warning(post, &job, out, codes, &what, &mut broken);
+            if got == "posts and verifies" {
+                got = OWN_FINDINGS.to_string();
+            }
+        }
+        (got, broken)
+    });
+    let _ = std::fs::remove_dir_all(&tmp);
+    let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut broken = Vec::new();
+    for (name, (result, mut wrong)) in runs {
+        broken.append(&mut wrong);
+        table.entry(result).or_default().push(name);
+    }
+    let mut summary = String::new();
+    for (what, names) in &mut table {
+        names.sort();
+        summary.push_str(&format!("{:>4}  {what}\n", names.len()));
+        for n in names.iter() {
+            summary.push_str(&format!("        {n}\n"));
+        }
+    }
+    println!("{summary}");
+    assert!(broken.is_empty(), "posts that panic or leave output behind:\n{}", broken.join("\n"));
+    let count = |what: &str| table.get(what).map_or(0, Vec::len);
+    let good = count("posts and verifies") + count(OWN_FINDINGS);
+    let posting = good + count(UNREAD);
+    assert!(
+        good >= TURNING_AT_LEAST,
+        "{good} corpus Fusion turning posts post and verify the turning job, fewer than {TURNING_AT_LEAST}:\n{summary}"
+    );
+    assert!(
+        posting >= TURNING_POSTING_AT_LEAST,
+        "{posting} corpus Fusion turning posts post the turning job, fewer than {TURNING_POSTING_AT_LEAST}:\n{summary}"
     );
 }

@@ -1261,6 +1261,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         let mut home = false;
         let mut machine = self.extended && self.supa;
         let mut dwell = false;
+        // A lathe's `G50 S` (Fanuc G code system A) or `G92 S` (systems B
+        // and C), with no axis word, clamps the spindle's speed: its S is
+        // no speed to run at.
+        let clamp = self.lathe && !b.any(b"XYZ") && b.has(b'S');
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
             match tenths {
@@ -1363,6 +1367,7 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 }
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
+                920 if clamp => {}
                 920..=923 => {
                     let d = self.finding(
                         Severity::Warning,
@@ -1397,7 +1402,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             self.feed = f.value * self.unit / self.settings.feed_multiplier;
             self.feed_step = 1.0 / grammar::pow10(u32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
-        if let Some(s) = b.get(b'S') {
+        if let Some(s) = b.get(b'S')
+            && !clamp
+        {
             self.speed = s.value;
         }
         for &(code, start, end) in &b.m[..b.ms] {
