@@ -17,7 +17,7 @@
 //! four at or above [`AT_LEAST`], and the number that post all four at or
 //! above [`POSTING_AT_LEAST`]. A second test posts the jet job
 //! (`corpus/toolpaths/jet_mm.ron`) through every post the same way, and a
-//! third the turning job (`corpus/toolpaths/turning_mm.ron`) through the
+//! third the turning job (`corpus/toolpaths/turning/turning_mm.ron`) through the
 //! turning and mill-turn posts.
 
 use std::collections::BTreeMap;
@@ -584,7 +584,7 @@ fn corpus_fusion_posts_post_the_jet_job_or_say_why_not() {
     );
 }
 
-/// The turning job (`corpus/toolpaths/turning_mm.ron`: face, rough and
+/// The turning job (`corpus/toolpaths/turning/turning_mm.ron`: face, rough and
 /// finish a stepped shaft, cut a groove; feeds per revolution, constant
 /// surface speed) through the corpus's turning and mill-turn posts (by
 /// [`kinds`]): each posts it and verify reads and passes the program (but
@@ -601,7 +601,7 @@ fn corpus_fusion_turning_posts_post_the_turning_job_or_say_why_not() {
     }
     let tmp = std::env::temp_dir().join(format!("postc-fusion-turning-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).expect("temporary folder");
-    let job = support::corpus().join("toolpaths/turning_mm.ron");
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
     let kinds = kinds(&dir);
     let turning: Vec<PathBuf> = posts(&dir)
         .into_iter()
