@@ -659,3 +659,64 @@ fn corpus_fusion_turning_posts_post_the_turning_job_or_say_why_not() {
         "{posting} corpus Fusion turning posts post the turning job, fewer than {TURNING_POSTING_AT_LEAST}:\n{summary}"
     );
 }
+
+/// LinuxCNC's own interpreter is the referee of verify's lathe reading
+/// (docs/verify.md, "Lathe programs"): the program `linuxcnc_lathe.cps`
+/// writes for the turning job (`G7` diameters, `G18`, `G95`, `G96`) read
+/// by `rs274` makes every cut of the toolpath, in order, at the toolpath's
+/// radii and Z, its arcs around the toolpath's centres and turning its
+/// way; and `postc post` verified the same program.
+#[test]
+fn rs274_reads_the_linuxcnc_lathe_program_of_the_turning_job_as_the_toolpath() {
+    use postc_ir::EventSource;
+    use postc_ir::event::{ArcDir, Event};
+    use support::rs274::Kind;
+    let post = shared().join("85vmh__LinuxCNCFusionPosts/linuxcnc_lathe.cps");
+    if !post.is_file() {
+        support::referee_missing("fusion_corpus", "../shared/corpus/fusion");
+        return;
+    }
+    let Some(rs274) = support::rs274::find() else { return };
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let out = dir.path().join("turning.ngc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    assert!(run.status.success(), "{}", support::said(&run));
+    let program = std::fs::read_to_string(&out).expect("the program");
+    let moves = support::rs274::run(&rs274, &program).unwrap_or_else(|e| panic!("rs274 refuses the program: {e}"));
+    // The toolpath's cuts: end (x radius, z), and for arcs the centre and
+    // the turn as rs274 reports it in the XZ plane (+1 counter-clockwise).
+    let mut sources = postc_report::source_map();
+    let mut events = postc_driver::open_toolpath(&job, &mut sources).expect("the turning job opens");
+    let mut cuts = Vec::new();
+    let mut diagnostics = Vec::new();
+    while let Some((event, _)) = events.next_event(&mut diagnostics) {
+        match event {
+            Event::Feed(f) => cuts.push(([f.x, f.y, f.z], None)),
+            Event::Arc(a) => {
+                cuts.push(([a.x, a.y, a.z], Some(([a.cz, a.cx], if a.dir == ArcDir::Ccw { 1 } else { -1 }))))
+            }
+            _ => {}
+        }
+    }
+    assert!(diagnostics.is_empty() && cuts.len() > 20, "{diagnostics:?}");
+    let near = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(a, b)| (a - b).abs() < 1e-3);
+    let mut at = 0;
+    for (end, arc) in &cuts {
+        let found = moves[at..].iter().position(|m| {
+            let cut = match (&m.kind, arc) {
+                (Kind::Feed, None) => true,
+                (Kind::Arc { centre, rotation }, Some((c, r))) => {
+                    (centre[0] - c[0]).abs() < 1e-3 && (centre[1] - c[1]).abs() < 1e-3 && rotation == r
+                }
+                _ => false,
+            };
+            cut && near(m.end_mm(), *end)
+        });
+        let Some(i) = found else {
+            panic!("rs274 does not make the toolpath's cut to {end:?} ({arc:?}) after its move {at}:\n{program}")
+        };
+        at += i + 1;
+    }
+}
