@@ -85,6 +85,12 @@ const OWN: &[(&str, &str, &[&str])] = &[
     // arc's K is printed with X's diameter format (`scale:2`), twice the
     // centre's offset along Z.
     ("nmnarz__MACHINE-POSTS/DMG_MORI_NLX_4000B-750_180818.cps", "turning", &["VF013", "VF020"]),
+    // `sOutput.format(tool.surfaceSpeed * ((unit == MM) ? 1 : 1/12.0))`:
+    // the tool's surface speed (millimetres a minute) printed as metres a
+    // minute unconverted, `G96 S200000` for 200 m/min.
+    ("skidsolo__Lathe-Post-Processors-2-Axis/haas_turning.cps", "turning", &["VF036"]),
+    ("skidsolo__Lathe-Post-Processors-2-Axis/fanuc_turning.cps", "turning", &["VF036"]),
+    ("nmnarz__Sauer-Machine-Posts/fanuc_turning_G71_beta.cps", "turning", &["VF036"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify

@@ -34,6 +34,9 @@ pub struct Expected {
     /// Whether `feed` is per spindle revolution (mm/rev: the toolpath's
     /// `feed_per_rev`) rather than per minute.
     pub per_rev: bool,
+    /// The constant surface speed the spindle runs at (m/min); NaN when
+    /// it runs at a fixed rpm.
+    pub surface: f64,
     /// The spindle runs only because the tool has a speed: nothing in the
     /// toolpath switches it on, and the post, an APT-word one, starts it
     /// only from the toolpath's spindle records.
@@ -67,7 +70,11 @@ pub enum Record {
     Toolpath {
         per_rev: bool,
     },
-    SpindleOn,
+    /// The spindle starts; `surface`: at constant surface speed (metres
+    /// or feet a minute, the toolpath's units), NaN at a fixed rpm.
+    SpindleOn {
+        surface: f64,
+    },
     SpindleOff,
     JetOn,
     JetOff,
@@ -148,7 +155,9 @@ impl Record {
                 turning: t.turning,
             },
             Event::ToolpathStart(t) => Record::Toolpath { per_rev: t.feed_per_rev },
-            Event::SpindleOn(_) => Record::SpindleOn,
+            Event::SpindleOn(s) => {
+                Record::SpindleOn { surface: if s.css { s.speed.unwrap_or(f64::NAN) } else { f64::NAN } }
+            }
             Event::SpindleOff => Record::SpindleOff,
             Event::JetOn => Record::JetOn,
             Event::JetOff => Record::JetOff,
@@ -218,6 +227,8 @@ pub struct ExpectedPath<'a> {
     turning_tool: bool,
     /// The current toolpath's feeds are per revolution.
     per_rev: bool,
+    /// The constant surface speed, m/min; NaN at a fixed rpm.
+    surface: f64,
     /// Whether the toolpath's first tool is a lathe's turning tool, once
     /// its Tool record is read: the program is then a lathe program
     /// (docs/verify.md, "Lathe programs").
@@ -270,6 +281,7 @@ impl<'a> ExpectedPath<'a> {
             jet_tool: false,
             turning_tool: false,
             per_rev: false,
+            surface: f64::NAN,
             lathe: None,
             spindle: false,
             implied: false,
@@ -381,7 +393,7 @@ impl<'a> ExpectedPath<'a> {
         }
         self.count += 1;
         let (powered, jet, implied) = (self.powered(), self.jet_tool, self.implied && !self.spindle && !self.jet_tool);
-        let per_rev = self.per_rev;
+        let (per_rev, surface) = (self.per_rev, self.surface);
         self.window.push_back(Expected {
             kind,
             start,
@@ -394,6 +406,7 @@ impl<'a> ExpectedPath<'a> {
             powered,
             jet,
             per_rev,
+            surface,
             implied,
             span,
         });
@@ -422,6 +435,7 @@ impl<'a> ExpectedPath<'a> {
                 self.jet_tool = jet;
                 self.turning_tool = turning;
                 self.lathe.get_or_insert(turning);
+                self.surface = f64::NAN;
                 // The runtime starts a spindle tool's spindle after the header and
                 // each tool change, when the toolpath gives it a speed (section
                 // posts; an APT-word post is told by the toolpath's own records).
@@ -431,7 +445,11 @@ impl<'a> ExpectedPath<'a> {
                 self.jet = false;
             }
             &Record::Toolpath { per_rev } => self.per_rev = per_rev,
-            Record::SpindleOn => self.spindle = true,
+            &Record::SpindleOn { surface } => {
+                self.spindle = true;
+                // Feet a minute in an inch job.
+                self.surface = if f > 1.0 { surface * 0.3048 } else { surface };
+            }
             Record::SpindleOff => {
                 self.spindle = false;
                 self.implied = false;

@@ -226,6 +226,8 @@ struct Run<'a, O: Observer + ?Sized> {
     no_feed_reported: bool,
     spindle_reported: bool,
     feed_reported: (f64, f64),
+    /// The last surface speed difference reported (VF036), as `feed_reported`.
+    surface_reported: (f64, f64),
     stop_comparing: bool,
     syntax_errors: u32,
     /// Lines read as named commands (Klipper's extended G-code), which
@@ -342,6 +344,7 @@ pub fn replay<O: Observer + ?Sized>(
         no_feed_reported: false,
         spindle_reported: false,
         feed_reported: (f64::NAN, f64::NAN),
+        surface_reported: (f64::NAN, f64::NAN),
         stop_comparing: false,
         syntax_errors: 0,
         named_commands: 0,
@@ -1264,7 +1267,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         // A lathe's `G50 S` (Fanuc G code system A) or `G92 S` (systems B
         // and C), with no axis word, clamps the spindle's speed: its S is
         // no speed to run at.
-        let clamp = self.lathe && !b.any(b"XYZ") && b.has(b'S');
+        let clamp = self.lathe
+            && !b.any(b"XYZ")
+            && b.has(b'S')
+            && b.g[..b.gs].iter().any(|&(code, ..)| matches!(tenths(code), 500 | 920));
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
             match tenths {
@@ -2199,6 +2205,23 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 ),
             };
             self.motion_finding(severity, codes::VF035.code, message, p, Some(e), Some(help.into()));
+        }
+        // Constant surface speed: the S of G96 is metres (G21) or feet
+        // (G20) a minute.
+        if self.css && e.surface.is_finite() && self.speed.is_finite() {
+            let got = self.speed.abs() * if self.unit > 1.0 { 0.3048 } else { 1.0 };
+            let want = e.surface;
+            if (got - want).abs() > 0.005 * want + 1e-6 && self.surface_reported != (got, want) {
+                self.surface_reported = (got, want);
+                self.motion_finding(
+                    Severity::Error,
+                    codes::VF036.code,
+                    format!("this cut runs at a surface speed of {got:.1} m/min (G96); the toolpath's is {want:.1} m/min"),
+                    p,
+                    Some(e),
+                    Some("the S of G96 is metres a minute under G21, feet under G20; check how the post converts the tool's surface speed".into()),
+                );
+            }
         }
         if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
             return;
