@@ -1679,7 +1679,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             return; // the start is unknown (after G28/G53): nothing to replay
         }
         let tol = self.tol();
-        let (centre, r) = if let Some(rw) = b.get(b'R') {
+        // A lathe program's arc with B and no I J K R: B is the radius, the
+        // Sinumerik 810/820 T's word for it (R words are its parameters).
+        let radius = b.get(b'R').or_else(|| if self.lathe && !b.any(b"IJK") { b.get(b'B') } else { None });
+        let (centre, r) = if let Some(rw) = radius {
             let r = rw.value * self.unit;
             let closed = (target[u] - start[u]).hypot(target[v] - start[v]) <= 1e-9;
             if closed {
