@@ -726,3 +726,43 @@ fn rs274_reads_the_linuxcnc_lathe_program_of_the_turning_job_as_the_toolpath() {
         at += i + 1;
     }
 }
+
+/// Verify's lathe reading finds what a wrong lathe program does: the
+/// program `linuxcnc_lathe.cps` writes for the turning job verifies, and
+/// each fault seeded into it is found with its code: radius mode (`G8`
+/// for `G7`: every X half as far out, VF010), a surface speed ten times
+/// the toolpath's (VF036), a rough feed per revolution doubled (VF033),
+/// an arc turned the other way (VF013).
+#[test]
+fn verify_finds_faults_seeded_into_a_lathe_program() {
+    let post = shared().join("85vmh__LinuxCNCFusionPosts/linuxcnc_lathe.cps");
+    if !post.is_file() {
+        support::referee_missing("fusion_corpus", "../shared/corpus/fusion");
+        return;
+    }
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let out = dir.path().join("turning.ngc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    assert!(run.status.success(), "{}", support::said(&run));
+    let program = std::fs::read_to_string(&out).expect("the program");
+    let verify = |text: &str| {
+        let path = dir.path().join("seeded.ngc");
+        std::fs::write(&path, text).expect("write the program");
+        let run = support::postc(&["verify", &s(&path), "--toolpath", &s(&job), "--post", &s(&post)]);
+        (run.status.success(), support::said(&run))
+    };
+    let (ok, said) = verify(&program);
+    assert!(ok, "{said}");
+    for (fault, from, to, code) in [
+        ("radius mode", " G7", " G8", "VF010"),
+        ("ten times the surface speed", "G96 D3000 S200 ", "G96 D3000 S2000 ", "VF036"),
+        ("the rough feed doubled", "G1 Z-41.5 F0.25", "G1 Z-41.5 F0.5", "VF033"),
+        ("an arc turned the other way", "G3 X20. Z-2.", "G2 X20. Z-2.", "VF013"),
+    ] {
+        assert!(program.contains(from), "{fault}: `{from}` is not in the program:\n{program}");
+        let (ok, said) = verify(&program.replacen(from, to, 1));
+        assert!(!ok && said.contains(&format!("error[{code}]")), "{fault}: no {code}:\n{said}");
+    }
+}
