@@ -16,7 +16,9 @@
 //! job it does not post) and holds the number that post and verify all
 //! four at or above [`AT_LEAST`], and the number that post all four at or
 //! above [`POSTING_AT_LEAST`]. A second test posts the jet job
-//! (`corpus/toolpaths/jet_mm.ron`) through every post the same way.
+//! (`corpus/toolpaths/jet_mm.ron`) through every post the same way, and a
+//! third the turning job (`corpus/toolpaths/turning/turning_mm.ron`) through the
+//! turning and mill-turn posts.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -79,6 +81,16 @@ const OWN: &[(&str, &str, &[&str])] = &[
     // move, and don't use G80") and never resets `gCycleModal`: the next
     // cycle's first hole prints without its `G82`, a rapid into the hole.
     ("jfbell__CAMPosts/MotusCNC_5-Axis_G43.4.cps", "drilling", &["VF012"]),
+    // `var kOutput = createReferenceVariable({prefix:"K"}, xFormat);`: an
+    // arc's K is printed with X's diameter format (`scale:2`), twice the
+    // centre's offset along Z.
+    ("nmnarz__MACHINE-POSTS/DMG_MORI_NLX_4000B-750_180818.cps", "turning", &["VF013", "VF020"]),
+    // `sOutput.format(tool.surfaceSpeed * ((unit == MM) ? 1 : 1/12.0))`:
+    // the tool's surface speed (millimetres a minute) printed as metres a
+    // minute unconverted, `G96 S200000` for 200 m/min.
+    ("skidsolo__Lathe-Post-Processors-2-Axis/haas_turning.cps", "turning", &["VF036"]),
+    ("skidsolo__Lathe-Post-Processors-2-Axis/fanuc_turning.cps", "turning", &["VF036"]),
+    ("nmnarz__Sauer-Machine-Posts/fanuc_turning_G71_beta.cps", "turning", &["VF036"]),
 ];
 
 /// The outcome of a post whose programs all post but whose dialect verify
@@ -87,6 +99,16 @@ const UNREAD: &str = "posts, but verify does not read its dialect (VF044)";
 
 /// The outcome of a post whose capabilities take no jet operation.
 const REFUSES_JET: &str = "refuses jet operations (its capabilities)";
+
+/// The outcome of a post whose capabilities take no turning operation.
+const REFUSES_TURNING: &str = "refuses turning operations (its capabilities)";
+
+/// Of the turning and mill-turn posts ([`kinds`]), those that post the
+/// turning job and whose program verify reads and passes (but for
+/// findings listed as the post's own), and those that post it, verified
+/// or in a dialect verify does not read.
+const TURNING_AT_LEAST: usize = 10;
+const TURNING_POSTING_AT_LEAST: usize = 10;
 
 /// Posts that post the jet job (with one of the three jet tools) today,
 /// and of those the ones whose program verify reads and passes.
@@ -219,6 +241,9 @@ fn outcome(said: &str, status: Option<i32>) -> String {
     }
     if first.contains("does not support jet operations") {
         return REFUSES_JET.into();
+    }
+    if first.contains("does not support turning operations") {
+        return REFUSES_TURNING.into();
     }
     code.to_string()
 }
@@ -563,4 +588,181 @@ fn corpus_fusion_posts_post_the_jet_job_or_say_why_not() {
         posting >= JET_POSTING_AT_LEAST,
         "{posting} corpus Fusion posts post the jet job, fewer than {JET_POSTING_AT_LEAST}:\n{summary}"
     );
+}
+
+/// The turning job (`corpus/toolpaths/turning/turning_mm.ron`: face, rough and
+/// finish a stepped shaft, cut a groove; feeds per revolution, constant
+/// surface speed) through the corpus's turning and mill-turn posts (by
+/// [`kinds`]): each posts it and verify reads and passes the program (but
+/// for findings docs/fusion.md lists as the post's own, [`OWN`]), or says
+/// it does not read the dialect, or the post is refused with a diagnostic;
+/// none panics or leaves a file behind. The count by outcome is
+/// docs/fusion.md's turning table.
+#[test]
+fn corpus_fusion_turning_posts_post_the_turning_job_or_say_why_not() {
+    let dir = shared();
+    if !dir.is_dir() {
+        support::referee_missing("corpus_fusion_posts", "../shared/corpus/fusion");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("postc-fusion-turning-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("temporary folder");
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
+    let kinds = kinds(&dir);
+    let turning: Vec<PathBuf> = posts(&dir)
+        .into_iter()
+        .filter(|p| {
+            let name = p.strip_prefix(&dir).unwrap_or(p).display().to_string().replace(std::path::MAIN_SEPARATOR, "/");
+            matches!(kinds.get(&name).copied(), Some("turning" | "mill-turn"))
+        })
+        .collect();
+    let stated = stated_kinds(&dir);
+    assert_eq!(
+        turning.len(),
+        stated.get("turning").copied().unwrap_or(0) + stated.get("mill-turn").copied().unwrap_or(0),
+        "the turning and mill-turn posts are not the counts SOURCES.md states"
+    );
+    let runs = each_post(&turning, &dir, &tmp, |post, name, out| {
+        let mut broken = Vec::new();
+        let what = format!("{name} (turning)");
+        let mut got = post_one(post, &job, out, &what, &mut broken);
+        if let Some((.., codes)) = OWN.iter().find(|(p, j, codes)| {
+            name.replace(std::path::MAIN_SEPARATOR, "/") == *p && *j == "turning" && codes.contains(&got.as_str())
+        }) {
+            got = post_warning(post, &job, out, codes, &what, &mut broken);
+            if got == "posts and verifies" {
+                got = OWN_FINDINGS.to_string();
+            }
+        }
+        (got, broken)
+    });
+    let _ = std::fs::remove_dir_all(&tmp);
+    let mut table: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut broken = Vec::new();
+    for (name, (result, mut wrong)) in runs {
+        broken.append(&mut wrong);
+        table.entry(result).or_default().push(name);
+    }
+    let mut summary = String::new();
+    for (what, names) in &mut table {
+        names.sort();
+        summary.push_str(&format!("{:>4}  {what}\n", names.len()));
+        for n in names.iter() {
+            summary.push_str(&format!("        {n}\n"));
+        }
+    }
+    println!("{summary}");
+    assert!(broken.is_empty(), "posts that panic or leave output behind:\n{}", broken.join("\n"));
+    let count = |what: &str| table.get(what).map_or(0, Vec::len);
+    let good = count("posts and verifies") + count(OWN_FINDINGS);
+    let posting = good + count(UNREAD);
+    assert!(
+        good >= TURNING_AT_LEAST,
+        "{good} corpus Fusion turning posts post and verify the turning job, fewer than {TURNING_AT_LEAST}:\n{summary}"
+    );
+    assert!(
+        posting >= TURNING_POSTING_AT_LEAST,
+        "{posting} corpus Fusion turning posts post the turning job, fewer than {TURNING_POSTING_AT_LEAST}:\n{summary}"
+    );
+}
+
+/// LinuxCNC's own interpreter is the referee of verify's lathe reading
+/// (docs/verify.md, "Lathe programs"): the program `linuxcnc_lathe.cps`
+/// writes for the turning job (`G7` diameters, `G18`, `G95`, `G96`) read
+/// by `rs274` makes every cut of the toolpath, in order, at the toolpath's
+/// radii and Z, its arcs around the toolpath's centres and turning its
+/// way; and `postc post` verified the same program.
+#[test]
+fn rs274_reads_the_linuxcnc_lathe_program_of_the_turning_job_as_the_toolpath() {
+    use postc_ir::EventSource;
+    use postc_ir::event::{ArcDir, Event};
+    use support::rs274::Kind;
+    let post = shared().join("85vmh__LinuxCNCFusionPosts/linuxcnc_lathe.cps");
+    if !post.is_file() {
+        support::referee_missing("fusion_corpus", "../shared/corpus/fusion");
+        return;
+    }
+    let Some(rs274) = support::rs274::find() else { return };
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let out = dir.path().join("turning.ngc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    assert!(run.status.success(), "{}", support::said(&run));
+    let program = std::fs::read_to_string(&out).expect("the program");
+    let moves = support::rs274::run(&rs274, &program).unwrap_or_else(|e| panic!("rs274 refuses the program: {e}"));
+    // The toolpath's cuts: end (x radius, z), and for arcs the centre and
+    // the turn as rs274 reports it in the XZ plane (+1 counter-clockwise).
+    let mut sources = postc_report::source_map();
+    let mut events = postc_driver::open_toolpath(&job, &mut sources).expect("the turning job opens");
+    let mut cuts = Vec::new();
+    let mut diagnostics = Vec::new();
+    while let Some((event, _)) = events.next_event(&mut diagnostics) {
+        match event {
+            Event::Feed(f) => cuts.push(([f.x, f.y, f.z], None)),
+            Event::Arc(a) => {
+                cuts.push(([a.x, a.y, a.z], Some(([a.cz, a.cx], if a.dir == ArcDir::Ccw { 1 } else { -1 }))))
+            }
+            _ => {}
+        }
+    }
+    assert!(diagnostics.is_empty() && cuts.len() > 20, "{diagnostics:?}");
+    let near = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(a, b)| (a - b).abs() < 1e-3);
+    let mut at = 0;
+    for (end, arc) in &cuts {
+        let found = moves[at..].iter().position(|m| {
+            let cut = match (&m.kind, arc) {
+                (Kind::Feed, None) => true,
+                (Kind::Arc { centre, rotation }, Some((c, r))) => {
+                    (centre[0] - c[0]).abs() < 1e-3 && (centre[1] - c[1]).abs() < 1e-3 && rotation == r
+                }
+                _ => false,
+            };
+            cut && near(m.end_mm(), *end)
+        });
+        let Some(i) = found else {
+            panic!("rs274 does not make the toolpath's cut to {end:?} ({arc:?}) after its move {at}:\n{program}")
+        };
+        at += i + 1;
+    }
+}
+
+/// Verify's lathe reading finds what a wrong lathe program does: the
+/// program `linuxcnc_lathe.cps` writes for the turning job verifies, and
+/// each fault seeded into it is found with its code: radius mode (`G8`
+/// for `G7`: every X half as far out, VF010), a surface speed ten times
+/// the toolpath's (VF036), a rough feed per revolution doubled (VF033),
+/// an arc turned the other way (VF013).
+#[test]
+fn verify_finds_faults_seeded_into_a_lathe_program() {
+    let post = shared().join("85vmh__LinuxCNCFusionPosts/linuxcnc_lathe.cps");
+    if !post.is_file() {
+        support::referee_missing("fusion_corpus", "../shared/corpus/fusion");
+        return;
+    }
+    let job = support::corpus().join("toolpaths/turning/turning_mm.ron");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let out = dir.path().join("turning.ngc");
+    let s = |p: &Path| p.to_str().expect("a UTF-8 path").to_string();
+    let run = support::postc(&["post", "-q", &s(&post), &s(&job), "-o", &s(&out)]);
+    assert!(run.status.success(), "{}", support::said(&run));
+    let program = std::fs::read_to_string(&out).expect("the program");
+    let verify = |text: &str| {
+        let path = dir.path().join("seeded.ngc");
+        std::fs::write(&path, text).expect("write the program");
+        let run = support::postc(&["verify", &s(&path), "--toolpath", &s(&job), "--post", &s(&post)]);
+        (run.status.success(), support::said(&run))
+    };
+    let (ok, said) = verify(&program);
+    assert!(ok, "{said}");
+    for (fault, from, to, code) in [
+        ("radius mode", " G7", " G8", "VF010"),
+        ("ten times the surface speed", "G96 D3000 S200 ", "G96 D3000 S2000 ", "VF036"),
+        ("the rough feed doubled", "G1 Z-41.5 F0.25", "G1 Z-41.5 F0.5", "VF033"),
+        ("an arc turned the other way", "G3 X20. Z-2.", "G2 X20. Z-2.", "VF013"),
+    ] {
+        assert!(program.contains(from), "{fault}: `{from}` is not in the program:\n{program}");
+        let (ok, said) = verify(&program.replacen(from, to, 1));
+        assert!(!ok && said.contains(&format!("error[{code}]")), "{fault}: no {code}:\n{said}");
+    }
 }

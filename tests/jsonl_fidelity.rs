@@ -21,7 +21,7 @@ use crate::support::{compile, corpus, files, post_parts, stem};
 fn corpus_toolpaths() -> Vec<PathBuf> {
     let root = corpus().join("toolpaths");
     let mut out = files(&root, "ron");
-    for sub in ["cimco", "vcpost"] {
+    for sub in ["cimco", "vcpost", "turning"] {
         out.extend(files(&root.join(sub), "ron"));
     }
     out

@@ -1633,6 +1633,10 @@ declare_codes! {
     /// switches the spindle on (such a post starts it only from SPINDL records).
     VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning when the post cannot switch it on: a jet through a post with no jet section, a spindle through a post that never prints M3/M4, an APT-word post never told to start it)",
         fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section; give an APT-word post's toolpath a spindle-on event.";
+    /// A cut at constant surface speed (G96) whose S differs from the toolpath's surface speed
+    /// (after unit conversion: metres a minute under G21, feet under G20).
+    VF036: Error, "a cut's constant surface speed (the S of G96) differs from the toolpath's",
+        fix = "Check how the post converts the tool's surface speed into its S word (metres or feet a minute).";
     /// A rapid move the toolpath does not make goes below the toolpath's lowest rapid height,
     /// into the material.
     VF037: Error, "a rapid move the toolpath does not make goes below the toolpath's lowest rapid height into the material",

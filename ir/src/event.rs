@@ -202,7 +202,7 @@ pub struct FileInfo {
 }
 
 /// A cutting tool.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 #[serde(deny_unknown_fields)]
 pub struct Tool {
@@ -220,6 +220,13 @@ pub struct Tool {
     pub jet: bool,
     /// Jet power, when `jet`.
     pub power: Option<f64>,
+    /// A lathe's turning tool (an insert in a holder: the part turns on
+    /// the spindle, the tool holds still). Its toolpaths are turning
+    /// toolpaths: X is the radius, Z runs along the spindle, Y is zero and
+    /// arcs lie in the ZX plane; `diameter` is twice the insert's nose
+    /// radius. Left out when false.
+    #[serde(skip_serializing_if = "is_default")]
+    pub turning: bool,
     /// Length (height) offset register, when it is not the tool number.
     pub length_offset: Option<u32>,
     /// Diameter offset register, when it is not the tool number.
@@ -229,6 +236,30 @@ pub struct Tool {
     /// (APT `CUTTER`, `TLDATA`) and in native toolpaths that do not say.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load: Option<Box<ToolLoad>>,
+}
+
+/// Printed as it is written: `turning` only when the tool is a turning
+/// tool, so a milling tool prints as it did before the field.
+impl std::fmt::Debug for Tool {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Tool");
+        d.field("number", &self.number)
+            .field("name", &self.name)
+            .field("notes", &self.notes)
+            .field("diameter", &self.diameter)
+            .field("spindle_speed", &self.spindle_speed)
+            .field("cut_feed", &self.cut_feed)
+            .field("plunge_feed", &self.plunge_feed)
+            .field("jet", &self.jet)
+            .field("power", &self.power);
+        if self.turning {
+            d.field("turning", &self.turning);
+        }
+        d.field("length_offset", &self.length_offset)
+            .field("diameter_offset", &self.diameter_offset)
+            .field("load", &self.load)
+            .finish()
+    }
 }
 
 /// A tool load as written: the offset registers it names, equal to the

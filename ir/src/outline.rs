@@ -80,7 +80,8 @@ impl JobOutline {
                     None
                 }
                 Event::SpindleOn(s) => {
-                    if let (true, Some(speed)) = (fresh, s.speed) {
+                    // A constant surface speed is no rpm of the tool's.
+                    if let (true, Some(speed), false) = (fresh, s.speed, s.css) {
                         tool.spindle_speed = speed;
                     }
                     None

@@ -97,6 +97,16 @@ quantities! {
     /// 1 when the current tool is a jet tool (laser, plasma, waterjet), else 0
     /// (postc's; Fusion posts read it as the section's type).
     JetTool = "JET_TOOL", Plain;
+    /// 1 when the current tool is a lathe's turning tool
+    /// ([`crate::event::Tool::turning`]), else 0 (postc's; Fusion posts
+    /// read it as the section's type).
+    TurningTool = "TURNING_TOOL", Plain;
+    /// 1 while the spindle runs at constant surface speed (the last
+    /// SpindleOn said `css`: `S` is then metres or feet a minute), else 0.
+    SpindleCss = "SPINDLE_CSS", Plain;
+    /// The highest spindle speed (rpm) under constant surface speed; no
+    /// value when the SpindleOn gave none.
+    SpindleMaxRpm = "SPINDLE_MAX_RPM", Plain;
     /// The cutter compensation side of the last CutterComp event: 0 off,
     /// 1 left, 2 right.
     CompSide = "COMP_SIDE", Plain;

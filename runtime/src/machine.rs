@@ -79,6 +79,11 @@ pub struct MachineState {
     pub move_from: [f64; 3],
     pub move_length: Option<f64>,
     pub spindle_speed: f64,
+    /// Whether the spindle runs at constant surface speed (the last
+    /// SpindleOn's `css`: `spindle_speed` is then m/min or ft/min), and its
+    /// highest speed in rpm then; both reset when a tool is loaded.
+    pub spindle_css: bool,
+    pub spindle_max_rpm: Option<f64>,
     /// Jet power: the jet tool's own, or the last Power event's since the
     /// tool was loaded; `None` while no power is set (a spindle tool prints
     /// nothing, a jet tool 0).
@@ -145,6 +150,8 @@ impl MachineState {
             move_from: [0.0; 3],
             move_length: None,
             spindle_speed: 0.0,
+            spindle_css: false,
+            spindle_max_rpm: None,
             power: None,
             dwell: NO_VALUE,
             drill: None,
@@ -208,6 +215,8 @@ impl MachineState {
             self.previous_tool = Some(self.tool.number);
         }
         self.spindle_speed = tool.spindle_speed;
+        self.spindle_css = false;
+        self.spindle_max_rpm = None;
         // Power belongs to jet tools: a spindle tool has none, and a new
         // jet tool has its own or none until a Power event. The same jet
         // tool given again keeps the power it was set to.
@@ -258,6 +267,9 @@ impl MachineState {
             Quantity::SpindleSpeed => self.spindle_output(),
             Quantity::Power => self.jet_power(),
             Quantity::JetTool => f64::from(u8::from(self.has_tool && self.tool.jet)),
+            Quantity::TurningTool => f64::from(u8::from(self.has_tool && self.tool.turning)),
+            Quantity::SpindleCss => f64::from(u8::from(self.spindle_css)),
+            Quantity::SpindleMaxRpm => self.spindle_max_rpm.unwrap_or(NO_VALUE),
             Quantity::ArcPlane => match self.arc.plane {
                 Plane::Xy => 0.0,
                 Plane::Zx => 1.0,

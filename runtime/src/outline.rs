@@ -3,7 +3,8 @@
 //! object per section, lengths in the post's units.
 //!
 //! `[{"tool": 1, "diameter": 6, "name": "6 mm end mill", "notes": "",
-//! "lengthOffset": 1, "speed": 18000, "jet": false, "coolant": 1,
+//! "lengthOffset": 1, "speed": 18000, "jet": false, "turning": false,
+//! "coolant": 1,
 //! "toolpath": "Pocket", "x": 10, "y": 10, "z": 5, "zMin": -3, "zMax": 5,
 //! "cycle": -1, "dwell": false, "cycles": 0, "points": 0}, ...]`: `cycle`
 //! is the `DRILL_KIND` number of the cycle that starts the section, -1
@@ -31,6 +32,7 @@ pub fn to_json(outline: &JobOutline, factor: f64) -> String {
                 "lengthOffset": t.length_offset.unwrap_or(t.number),
                 "speed": t.spindle_speed,
                 "jet": t.jet,
+                "turning": t.turning,
                 "coolant": coolant_kind(s.coolant),
                 "toolpath": s.toolpath,
                 "x": s.first[0] * factor,

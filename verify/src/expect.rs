@@ -31,6 +31,12 @@ pub struct Expected {
     pub powered: bool,
     /// Whether a jet tool (laser, plasma, waterjet) makes the move.
     pub jet: bool,
+    /// Whether `feed` is per spindle revolution (mm/rev: the toolpath's
+    /// `feed_per_rev`) rather than per minute.
+    pub per_rev: bool,
+    /// The constant surface speed the spindle runs at (m/min); NaN when
+    /// it runs at a fixed rpm.
+    pub surface: f64,
     /// The spindle runs only because the tool has a speed: nothing in the
     /// toolpath switches it on, and the post, an APT-word one, starts it
     /// only from the toolpath's spindle records.
@@ -57,8 +63,18 @@ pub enum Record {
         plunge_feed: f64,
         spindle_speed: f64,
         jet: bool,
+        /// A lathe's turning tool: X is the radius, Z along the spindle.
+        turning: bool,
     },
-    SpindleOn,
+    /// A toolpath starts; its feeds are per revolution when `per_rev`.
+    Toolpath {
+        per_rev: bool,
+    },
+    /// The spindle starts; `surface`: at constant surface speed (metres
+    /// or feet a minute, the toolpath's units), NaN at a fixed rpm.
+    SpindleOn {
+        surface: f64,
+    },
     SpindleOff,
     JetOn,
     JetOff,
@@ -136,8 +152,12 @@ impl Record {
                 plunge_feed: t.plunge_feed,
                 spindle_speed: t.spindle_speed,
                 jet: t.jet,
+                turning: t.turning,
             },
-            Event::SpindleOn(_) => Record::SpindleOn,
+            Event::ToolpathStart(t) => Record::Toolpath { per_rev: t.feed_per_rev },
+            Event::SpindleOn(s) => {
+                Record::SpindleOn { surface: if s.css { s.speed.unwrap_or(f64::NAN) } else { f64::NAN } }
+            }
             Event::SpindleOff => Record::SpindleOff,
             Event::JetOn => Record::JetOn,
             Event::JetOff => Record::JetOff,
@@ -204,6 +224,15 @@ pub struct ExpectedPath<'a> {
     cut_feed: f64,
     plunge_feed: f64,
     jet_tool: bool,
+    turning_tool: bool,
+    /// The current toolpath's feeds are per revolution.
+    per_rev: bool,
+    /// The constant surface speed, m/min; NaN at a fixed rpm.
+    surface: f64,
+    /// Whether the toolpath's first tool is a lathe's turning tool, once
+    /// its Tool record is read: the program is then a lathe program
+    /// (docs/verify.md, "Lathe programs").
+    pub lathe: Option<bool>,
     spindle: bool,
     /// The tool has a speed, but the toolpath has not switched the spindle
     /// on (APT-word posts only, [`ExpectedPath::apt_words`]).
@@ -250,6 +279,10 @@ impl<'a> ExpectedPath<'a> {
             cut_feed: f64::NAN,
             plunge_feed: f64::NAN,
             jet_tool: false,
+            turning_tool: false,
+            per_rev: false,
+            surface: f64::NAN,
+            lathe: None,
             spindle: false,
             implied: false,
             jet: false,
@@ -360,6 +393,7 @@ impl<'a> ExpectedPath<'a> {
         }
         self.count += 1;
         let (powered, jet, implied) = (self.powered(), self.jet_tool, self.implied && !self.spindle && !self.jet_tool);
+        let (per_rev, surface) = (self.per_rev, self.surface);
         self.window.push_back(Expected {
             kind,
             start,
@@ -371,6 +405,8 @@ impl<'a> ExpectedPath<'a> {
             feed,
             powered,
             jet,
+            per_rev,
+            surface,
             implied,
             span,
         });
@@ -393,10 +429,13 @@ impl<'a> ExpectedPath<'a> {
                 self.job.material = job.material.map(|(min, max)| (min.map(|v| v * f), max.map(|v| v * f)));
                 self.job.safe_z = job.safe_z.map(|z| z * f);
             }
-            &Record::Tool { cut_feed, plunge_feed, spindle_speed, jet } => {
+            &Record::Tool { cut_feed, plunge_feed, spindle_speed, jet, turning } => {
                 self.cut_feed = cut_feed * f;
                 self.plunge_feed = plunge_feed * f;
                 self.jet_tool = jet;
+                self.turning_tool = turning;
+                self.lathe.get_or_insert(turning);
+                self.surface = f64::NAN;
                 // The runtime starts a spindle tool's spindle after the header and
                 // each tool change, when the toolpath gives it a speed (section
                 // posts; an APT-word post is told by the toolpath's own records).
@@ -405,7 +444,12 @@ impl<'a> ExpectedPath<'a> {
                 self.implied = speed && self.apt_words;
                 self.jet = false;
             }
-            Record::SpindleOn => self.spindle = true,
+            &Record::Toolpath { per_rev } => self.per_rev = per_rev,
+            &Record::SpindleOn { surface } => {
+                self.spindle = true;
+                // Feet a minute in an inch job.
+                self.surface = if f > 1.0 { surface * 0.3048 } else { surface };
+            }
             Record::SpindleOff => {
                 self.spindle = false;
                 self.implied = false;
@@ -420,8 +464,10 @@ impl<'a> ExpectedPath<'a> {
                 self.job.rotary |= rotary;
                 let mut intent = intent;
                 let end = end.map(|v| v * f);
+                // A turning tool's Z runs along the spindle, where it cuts.
                 if intent == Intent::Cut
                     && !self.apt_words
+                    && !self.turning_tool
                     && (self.pos[0] - end[0]).abs() < 1e-9
                     && (self.pos[1] - end[1]).abs() < 1e-9
                 {

@@ -200,6 +200,15 @@ struct Run<'a, O: Observer + ?Sized> {
     inverse_time: bool,
     /// G95: F is a feed per spindle revolution.
     per_rev: bool,
+    /// G96: S is a surface speed, the spindle's rpm changes with the
+    /// diameter (G97 ends it).
+    css: bool,
+    /// The toolpath's first tool is a lathe's turning tool: the program is
+    /// read as a lathe program (docs/verify.md, "Lathe programs").
+    lathe: bool,
+    /// G7: X words are diameters (G8: radii). A lathe program starts in
+    /// G7.
+    diameter: bool,
     /// The last S word, revolutions a minute.
     speed: f64,
     spindle: bool,
@@ -217,6 +226,8 @@ struct Run<'a, O: Observer + ?Sized> {
     no_feed_reported: bool,
     spindle_reported: bool,
     feed_reported: (f64, f64),
+    /// The last surface speed difference reported (VF036), as `feed_reported`.
+    surface_reported: (f64, f64),
     stop_comparing: bool,
     syntax_errors: u32,
     /// Lines read as named commands (Klipper's extended G-code), which
@@ -315,6 +326,9 @@ pub fn replay<O: Observer + ?Sized>(
         feed_step: 0.0,
         inverse_time: false,
         per_rev: false,
+        css: false,
+        lathe: false,
+        diameter: false,
         speed: f64::NAN,
         spindle: false,
         pos: [f64::NAN; 3],
@@ -330,6 +344,7 @@ pub fn replay<O: Observer + ?Sized>(
         no_feed_reported: false,
         spindle_reported: false,
         feed_reported: (f64::NAN, f64::NAN),
+        surface_reported: (f64::NAN, f64::NAN),
         stop_comparing: false,
         syntax_errors: 0,
         named_commands: 0,
@@ -353,6 +368,13 @@ pub fn replay<O: Observer + ?Sized>(
     let mut block = Block::default();
     run.path.apt_words = settings.apt_words;
     run.path.start();
+    // A lathe program: X is a diameter and arcs turn in the ZX plane
+    // until the program says otherwise (G8; G17, G19).
+    if run.path.lathe == Some(true) {
+        run.lathe = true;
+        run.diameter = true;
+        run.plane = Plane::Zx;
+    }
     let mut items: Items = chumsky::inspector::TruncateState(Vec::with_capacity(32));
     let mut buf: Vec<u8> = Vec::with_capacity(256);
     loop {
@@ -1242,6 +1264,13 @@ impl<O: Observer + ?Sized> Run<'_, O> {
         let mut home = false;
         let mut machine = self.extended && self.supa;
         let mut dwell = false;
+        // A lathe's `G50 S` (Fanuc G code system A) or `G92 S` (systems B
+        // and C), with no axis word, clamps the spindle's speed: its S is
+        // no speed to run at.
+        let clamp = self.lathe
+            && !b.any(b"XYZ")
+            && b.has(b'S')
+            && b.g[..b.gs].iter().any(|&(code, ..)| matches!(tenths(code), 500 | 920));
         for &(code, start, end) in &b.g[..b.gs] {
             let tenths = tenths(code);
             match tenths {
@@ -1272,6 +1301,12 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     self.motion = None;
                 }
                 40 => dwell = true,
+                // LinuxCNC's lathe modes: X a diameter (G7) or a radius (G8).
+                70 => self.diameter = true,
+                80 => self.diameter = false,
+                // Constant surface speed on (G96) and off (G97).
+                960 => self.css = true,
+                970 => self.css = false,
                 170 => self.plane = Plane::Xy,
                 180 => self.plane = Plane::Zx,
                 190 => self.plane = Plane::Yz,
@@ -1330,8 +1365,15 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     self.inverse_time = false;
                     self.per_rev = true;
                 }
+                // A lathe's G98 and G99 are feeds per minute and per
+                // revolution (Fanuc's and Haas' lathe G codes).
+                980 | 990 if self.lathe => {
+                    self.inverse_time = false;
+                    self.per_rev = tenths == 990;
+                }
                 980 => self.retract_to_r = false,
                 990 => self.retract_to_r = true,
+                920 if clamp => {}
                 920..=923 => {
                     let d = self.finding(
                         Severity::Warning,
@@ -1366,7 +1408,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             self.feed = f.value * self.unit / self.settings.feed_multiplier;
             self.feed_step = 1.0 / grammar::pow10(u32::from(f.decimals)) * self.unit / self.settings.feed_multiplier;
         }
-        if let Some(s) = b.get(b'S') {
+        if let Some(s) = b.get(b'S')
+            && !clamp
+        {
             self.speed = s.value;
         }
         for &(code, start, end) in &b.m[..b.ms] {
@@ -1402,6 +1446,8 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                     self.absolute = true;
                     self.inverse_time = false;
                     self.per_rev = false;
+                    self.css = false;
+                    self.diameter = self.lathe;
                 }
                 _ => {}
             }
@@ -1484,9 +1530,18 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             Self::help(d, "a controller uses whatever units were last active; state them in the header");
         }
         let mut target = self.pos;
+        // A lathe's tool stays on the spindle's centre plane: Y is 0 until
+        // the program moves a Y axis.
+        if self.lathe && target[1].is_nan() {
+            target[1] = 0.0;
+        }
         for (i, l) in [b'X', b'Y', b'Z'].iter().enumerate() {
             if let Some(w) = b.get(*l) {
-                let v = w.value * self.unit;
+                let mut v = w.value * self.unit;
+                // In diameter mode the X word is twice the radius the tool goes to.
+                if i == 0 && self.diameter {
+                    v /= 2.0;
+                }
                 target[i] = if self.absolute { v } else { self.pos[i] + v };
             }
         }
@@ -1624,7 +1679,10 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             return; // the start is unknown (after G28/G53): nothing to replay
         }
         let tol = self.tol();
-        let (centre, r) = if let Some(rw) = b.get(b'R') {
+        // A lathe program's arc with B and no I J K R: B is the radius, the
+        // Sinumerik 810/820 T's word for it (R words are its parameters).
+        let radius = b.get(b'R').or_else(|| if self.lathe && !b.any(b"IJK") { b.get(b'B') } else { None });
+        let (centre, r) = if let Some(rw) = radius {
             let r = rw.value * self.unit;
             let closed = (target[u] - start[u]).hypot(target[v] - start[v]) <= 1e-9;
             if closed {
@@ -2151,28 +2209,53 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             };
             self.motion_finding(severity, codes::VF035.code, message, p, Some(e), Some(help.into()));
         }
+        // Constant surface speed: the S of G96 is metres (G21) or feet
+        // (G20) a minute.
+        if self.css && e.surface.is_finite() && self.speed.is_finite() {
+            let got = self.speed.abs() * if self.unit > 1.0 { 0.3048 } else { 1.0 };
+            let want = e.surface;
+            if (got - want).abs() > 0.005 * want + 1e-6 && self.surface_reported != (got, want) {
+                self.surface_reported = (got, want);
+                self.motion_finding(
+                    Severity::Error,
+                    codes::VF036.code,
+                    format!("this cut runs at a surface speed of {got:.1} m/min (G96); the toolpath's is {want:.1} m/min"),
+                    p,
+                    Some(e),
+                    Some("the S of G96 is metres a minute under G21, feet under G20; check how the post converts the tool's surface speed".into()),
+                );
+            }
+        }
         if self.inverse_time || !self.feed.is_finite() || !e.feed.is_finite() {
             return;
         }
-        // Under G95 the feed a minute is F times the spindle speed.
-        let per_minute = if self.per_rev { self.speed.abs() } else { 1.0 };
-        if !per_minute.is_finite() {
+        // A feed per revolution is compared with the toolpath's when both
+        // are per revolution; otherwise per minute, through the spindle's
+        // rpm, which constant surface speed (G96) leaves unknown.
+        let rpm = if self.css { f64::NAN } else { self.speed.abs() };
+        let (got, want, step) = match (self.per_rev, e.per_rev) {
+            (true, true) | (false, false) => (self.feed, e.feed, self.feed_step),
+            (true, false) => (self.feed * rpm, e.feed, self.feed_step * rpm),
+            (false, true) => (self.feed, e.feed * rpm, self.feed_step),
+        };
+        if !got.is_finite() || !want.is_finite() {
             return;
         }
-        let (got, want) = (self.feed * per_minute, e.feed);
-        let step = self.feed_step * per_minute;
         if (got - want).abs() > (0.005 * want).max(0.5 * step + 1e-6) && self.feed_reported != (got, want) {
             self.feed_reported = (got, want);
             let per_unit = match (self.per_rev, self.unit > 1.0) {
+                (true, true) if e.per_rev => "in/rev (G95)",
+                (true, false) if e.per_rev => "mm/rev (G95)",
                 (true, true) => "in/rev times the spindle's S (G95)",
                 (true, false) => "mm/rev times the spindle's S (G95)",
                 (false, true) => "in/min (G94)",
                 (false, false) => "mm/min (G94)",
             };
+            let (per, digits) = if self.per_rev && e.per_rev { ("mm/rev", 3) } else { ("mm/min", 1) };
             self.motion_finding(
                 Severity::Error,
                 codes::VF033.code,
-                format!("this cut runs at {:.1} mm/min; the toolpath's feed is {want:.1} mm/min", got),
+                format!("this cut runs at {got:.digits$} {per}; the toolpath's feed is {want:.digits$} {per}"),
                 p,
                 Some(e),
                 Some(format!(

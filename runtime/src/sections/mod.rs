@@ -198,8 +198,10 @@ impl SectionDispatch {
             }
             Event::SpindleOn(s) => {
                 let speed = s.speed.unwrap_or(eng.machine.spindle_speed);
-                let changed = speed != eng.machine.spindle_speed;
+                let changed = speed != eng.machine.spindle_speed || s.css != eng.machine.spindle_css;
                 eng.machine.spindle_speed = speed;
+                eng.machine.spindle_css = s.css;
+                eng.machine.spindle_max_rpm = s.max_rpm.filter(|_| s.css);
                 // SPINDLE_ON prints when the spindle starts, or runs on at a new speed.
                 if self.started && (!self.spindle_on || changed) && !eng.machine.tool.jet {
                     self.spindle_on = eng.run_section(Section::SpindleOn)?;
@@ -419,9 +421,12 @@ impl SectionDispatch {
     fn feed_to(&mut self, eng: &mut Engine, target: [f64; 3], intent: Intent, feed: Option<f64>) -> Result<()> {
         self.ensure_started(eng)?;
         let pos = eng.machine.pos;
+        // A move straight along Z is a plunge or retract of a milling tool;
+        // a turning tool's Z runs along the spindle, where it cuts.
+        let along_z = !eng.machine.tool.turning && same_xy(pos, target);
         let intent = match intent {
-            Intent::Cut if same_xy(pos, target) && target[2] < pos[2] => Intent::Plunge,
-            Intent::Cut if same_xy(pos, target) && target[2] > pos[2] => Intent::Retract,
+            Intent::Cut if along_z && target[2] < pos[2] => Intent::Plunge,
+            Intent::Cut if along_z && target[2] > pos[2] => Intent::Retract,
             other => other,
         };
         let feed = Self::feed_for(eng, intent, feed);

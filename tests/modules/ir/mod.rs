@@ -1,4 +1,5 @@
 mod limits;
+mod outline;
 mod source;
 mod units;
 mod validate;

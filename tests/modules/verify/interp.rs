@@ -39,7 +39,10 @@ fn replayed(program: &str, settings: &Settings, fast: bool) -> String {
             })),
             span,
         ),
-        (Record::Tool { cut_feed: 1500.0, plunge_feed: 500.0, spindle_speed: 18000.0, jet: false }, span),
+        (
+            Record::Tool { cut_feed: 1500.0, plunge_feed: 500.0, spindle_speed: 18000.0, jet: false, turning: false },
+            span,
+        ),
         (Record::Rapid { end: moves[0], rotary: false }, span),
     ];
     for end in &moves[1..] {

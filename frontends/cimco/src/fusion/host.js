@@ -859,7 +859,25 @@ function Tool(number, diameter, name) {
   this.liveTool = false;
   this.jetTool = false;
   this.isJetTool = function () { return this.jetTool; };
-  this.isTurningTool = function () { return false; };
+  // A lathe's turning tool (the toolpath's `turning` tool; docs/fusion.md,
+  // "Turning"): its insert's nose radius is half the toolpath's diameter;
+  // the other insert sizes the toolpath does not give are 0, as a
+  // milling tool's unknown sizes are (choice 12).
+  this.turningTool = false;
+  this.isTurningTool = function () { return this.turningTool; };
+  this.spindleMode = SPINDLE_CONSTANT_SPINDLE_SPEED;
+  this.noseRadius = 0;
+  this.inscribedCircleDiameter = 0;
+  this.edgeLength = 0;
+  this.reliefAngle = 0;
+  this.thickness = 0;
+  this.grooveWidth = 0;
+  this.crossSection = "";
+  this.tolerance = "";
+  this.pitch = 0;
+  this.hand = "";
+  this.clamping = "";
+  this.boringBarOrientation = 0;
   this.isDrill = function () { return this.type == TOOL_DRILL; };
   this.isLiveTool = function () { return this.liveTool; };
   this.getNumber = function () { return this.number; };
@@ -875,7 +893,7 @@ function Tool(number, diameter, name) {
   this.getDescription = function () { return this.description; };
   this.getComment = function () { return this.comment; };
   this.getType = function () { return this.type; };
-  this.getSpindleMode = function () { return SPINDLE_CONSTANT_SPINDLE_SPEED; };
+  this.getSpindleMode = function () { return this.spindleMode; };
   this.getManualToolChange = function () { return this.manualToolChange; };
   this.getBreakControl = function () { return this.breakControl; };
   this.getLengthOffset = function () { return this.lengthOffset; };
@@ -1014,6 +1032,10 @@ function __Section(id, theTool, name) {
   this.getJetMode = function () { return this.jetMode; };
   this.getUnit = function () { return unit; };
   this.getSpindle = function () { return this.spindle; };
+  this.getFeedMode = function () { return this.feedMode; };
+  this.getToolOrientation = function () { return this.toolOrientation; };
+  this.getTailstock = function () { return this.tailstock; };
+  this.getPartCatcher = function () { return this.partCatcher; };
   this.isConnectionSection = function () { return false; };
   this.checkGroup = function (groups) { return false; };
   this.getProperty = function (name, otherwise) { return getProperty(name, otherwise); };
@@ -1889,10 +1911,17 @@ function __setProperties(given) {
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion, turning, feedPerRev, css, maxRpm) {
   __at(record, nextMotion);
   __toolChanging = false;
-  __spindle = jet ? 0 : speed;
+  // Under constant surface speed the runtime's speed is the surface
+  // speed: the tool's rpm stays the last one given.
+  if (css) {
+    __surface = speed;
+    __maxRpm = maxRpm;
+  } else {
+    __spindle = jet ? 0 : speed;
+  }
   // A toolpath that never moved is no section of Fusion's: the next
   // takes its place (an APT file's INSERT before its first LOAD/TOOL).
   if (__section !== undefined && __section.pending) {
@@ -1913,7 +1942,9 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
   t.comment = notes;
   t.coolant = coolant;
   if (typeof lengthOffset == "number" && isFinite(lengthOffset)) { t.lengthOffset = lengthOffset; }
-  __describeSection(s, name, jet);
+  __describeSection(s, name, jet, turning);
+  s.feedMode = feedPerRev ? FEED_PER_REVOLUTION : FEED_PER_MINUTE;
+  __surfaceSpeed(t, css);
   __operationParameters(s, cutFeed, plungeFeed, safeZ);
   __sections.push(s);
   __fusion_end_section();
@@ -1922,8 +1953,9 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
 }
 
 // A tool's kind from its name (postc's toolpaths give none, or only
-// "jet"), and the section's type and parameters from its tool.
-function __describeSection(s, name, jet) {
+// "jet" or "turning"), and the section's type and parameters from its
+// tool.
+function __describeSection(s, name, jet, turning) {
   var t = s.tool;
   var named = String(name).toLowerCase();
   var kinds = [["ball", TOOL_MILLING_END_BALL], ["bull", TOOL_MILLING_END_BULLNOSE], ["chamfer", TOOL_MILLING_CHAMFER],
@@ -1939,6 +1971,14 @@ function __describeSection(s, name, jet) {
     t.jetTool = true;
     t.type = named.indexOf("plasma") >= 0 ? TOOL_PLASMA_CUTTER : (named.indexOf("water") >= 0 ? TOOL_WATER_JET : TOOL_LASER_CUTTER);
     s.type = TYPE_JET;
+  }
+  // A lathe's tool: its kind by name as well (docs/fusion.md, "Turning").
+  if (turning) {
+    t.turningTool = true;
+    t.type = named.indexOf("groov") >= 0 || named.indexOf("part") >= 0 ? TOOL_TURNING_GROOVING :
+      (named.indexOf("thread") >= 0 ? TOOL_TURNING_THREADING : (named.indexOf("boring") >= 0 ? TOOL_TURNING_BORING : TOOL_TURNING_GENERAL));
+    t.noseRadius = t.diameter / 2;
+    s.type = TYPE_TURNING;
   }
   s.parameters["operation-comment"] = s.name;
   s.parameters["operation:tool_type"] = getToolTypeName(t.type);
@@ -1972,7 +2012,7 @@ function __outlineSection(i) {
   t.coolant = o.coolant;
   t.lengthOffset = o.lengthOffset;
   var s = new __Section(i, t, o.toolpath);
-  __describeSection(s, o.name, o.jet);
+  __describeSection(s, o.name, o.jet, o.turning);
   s.initialPosition = new Vector(o.x, o.y, o.z);
   s.zRange = new Range(o.zMin, o.zMax);
   s.plannedCycles = o.cycles;
@@ -2010,6 +2050,9 @@ function __fusion_begin(x, y, z) {
   }
   if (!every && s.type == TYPE_JET && (capabilities & CAPABILITY_JET) == 0) {
     error(localize("The post does not support jet operations (its capabilities)."));
+  }
+  if (!every && s.type == TYPE_TURNING && (capabilities & CAPABILITY_TURNING) == 0) {
+    error(localize("The post does not support turning operations (its capabilities)."));
   }
   s.initialPosition = new Vector(x, y, z);
   if (s.zRange === undefined) { s.zRange = new Range(z, z); }
@@ -2056,6 +2099,27 @@ function __fusion_coolant(coolant, record, nextMotion) {
   }
 }
 
+// Constant surface speed (a lathe's G96): the last surface speed the
+// toolpath gave, in metres (feet) a minute, and the highest rpm then.
+var __surface = 0;
+var __maxRpm = 0;
+
+// The tool's spindle mode: under constant surface speed its
+// `surfaceSpeed` is Fusion's, millimetres (inches) a minute, as posts
+// divide it by 1000 (12) to print it, and its `maximumSpindleSpeed` the
+// toolpath's highest rpm (0 when none is given).
+function __surfaceSpeed(t, css) {
+  if (css) {
+    t.spindleMode = SPINDLE_CONSTANT_SURFACE_SPEED;
+    t.surfaceSpeed = __surface * (unit == MM ? 1000 : 12);
+    t.maximumSpindleSpeed = typeof __maxRpm == "number" && isFinite(__maxRpm) ? __maxRpm : 0;
+  } else {
+    t.spindleMode = SPINDLE_CONSTANT_SPINDLE_SPEED;
+    t.surfaceSpeed = 0;
+    t.maximumSpindleSpeed = 0;
+  }
+}
+
 // A tool change: its spindle speed belongs to the section that follows.
 var __toolChanging = false;
 function __fusion_tool_change(record, nextMotion) {
@@ -2063,13 +2127,22 @@ function __fusion_tool_change(record, nextMotion) {
   __toolChanging = true;
 }
 
-function __fusion_spindle(speed, record, nextMotion) {
+function __fusion_spindle(speed, record, nextMotion, css, maxRpm) {
   __at(record, nextMotion);
+  // Constant surface speed: the speed is metres (feet) a minute, the
+  // tool's rpm stays (docs/fusion.md, "Turning").
+  if (css) {
+    __surface = speed;
+    __maxRpm = maxRpm;
+    if (!__toolChanging && __section !== undefined) { __surfaceSpeed(__section.tool, true); }
+    return;
+  }
   __spindle = speed;
   if (__toolChanging) {
     return;
   }
   if (__section !== undefined && __section.pending) {
+    __surfaceSpeed(__section.tool, false);
     __section.tool.spindleRPM = speed;
   } else if (currentSection !== undefined && speed != spindleSpeed) {
     spindleSpeed = speed;

@@ -8,9 +8,9 @@
 //! |---|---|
 //! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, `__fusion_job(product)`, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z, ..., turning tool, feed per revolution, constant surface speed, its highest rpm)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
-//! | `SPINDLE_ON` | `__fusion_spindle(speed)` |
+//! | `SPINDLE_ON` | `__fusion_spindle(speed, ..., constant surface speed, its highest rpm)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
 //! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane)` |
@@ -21,8 +21,9 @@
 //! | `DRILL_POINT`, `DRILL_FOOTER` | `__fusion_cycle_point(x, y)`, `__fusion_cycle_end()` |
 //! | `FOOTER` | `__fusion_close()` |
 //!
-//! Each call also passes `RECORD_ID` and `NEXT_RECORD_MOTION` last: where
-//! the event is in the toolpath and whether a move follows it.
+//! Each call also passes `RECORD_ID` and `NEXT_RECORD_MOTION` (the `...`
+//! above, last when nothing follows): where the event is in the toolpath
+//! and whether a move follows it.
 //!
 //! A post that has a construct or host call the general form cannot
 //! hold is refused with JS109 at that construct: a Fusion post has no
@@ -149,15 +150,20 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     let q = Expr::Quantity;
     // Every engine function also gets where the event is in the toolpath
     // and whether a move follows it (`getCurrentRecordId`, `getNextRecord`).
-    let call = |name: &str, mut args: Vec<Expr>| -> Vec<Stmt> {
+    // Arguments after those two are the turning job's (docs/fusion.md,
+    // "Turning"), last so that a caller that does not give them (the
+    // Node.js referee) gives `undefined`, read as false.
+    let call_with = |name: &str, mut args: Vec<Expr>, after: Vec<Expr>| -> Vec<Stmt> {
         args.extend([q(Quantity::RecordId), q(Quantity::NextRecordMotion)]);
+        args.extend(after);
         match layout.function(name) {
             Some(f) => vec![Stmt::Eval(Expr::Call(f, args))],
             None => Vec::new(),
         }
     };
+    let call = |name: &str, args: Vec<Expr>| call_with(name, args, Vec::new());
     let toolpath = || {
-        call(
+        call_with(
             "__fusion_toolpath",
             vec![
                 q(Quantity::Tool),
@@ -172,6 +178,12 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::CutFeed),
                 q(Quantity::PlungeFeed),
                 q(Quantity::SafeZ),
+            ],
+            vec![
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::TurningTool)), Box::new(Expr::Number(0.0))),
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::FeedPerRev)), Box::new(Expr::Number(0.0))),
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCss)), Box::new(Expr::Number(0.0))),
+                q(Quantity::SpindleMaxRpm),
             ],
         )
     };
@@ -237,7 +249,17 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::Header, header);
     add(Section::ToolChange, call("__fusion_tool_change", vec![]));
     add(Section::NewSegment, toolpath());
-    add(Section::SpindleOn, call("__fusion_spindle", vec![q(Quantity::SpindleSpeed)]));
+    add(
+        Section::SpindleOn,
+        call_with(
+            "__fusion_spindle",
+            vec![q(Quantity::SpindleSpeed)],
+            vec![
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCss)), Box::new(Expr::Number(0.0))),
+                q(Quantity::SpindleMaxRpm),
+            ],
+        ),
+    );
     add(Section::RapidMove, call("__fusion_rapid", vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z)]));
     add(Section::FeedMove, linear(false));
     add(Section::PlungeMove, linear(true));

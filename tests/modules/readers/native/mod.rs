@@ -154,6 +154,32 @@ fn written_feed_coolant_placement_and_tool_load() {
     assert!(bare.starts_with("{\"Coolant\":\"Flood\"}\n") && !bare.contains("load"), "{bare}");
 }
 
+/// A lathe's turning tool (`turning: true`) reads in both syntaxes and
+/// writes back the same; a tool that does not say is not one, and writes
+/// as it always did, without the field.
+#[test]
+fn a_turning_tool_reads_and_an_old_tool_writes_as_before() {
+    use postc_ir::event::Tool;
+    let ron = "Tool(number: 2, diameter: 0.8, turning: true)\nTool(number: 3)\n";
+    let json = "{\"Tool\":{\"number\":2,\"diameter\":0.8,\"turning\":true}}\n{\"Tool\":{\"number\":3}}\n";
+    let expected = vec![
+        Event::Tool(Tool { number: 2, diameter: 0.8, turning: true, ..Tool::default() }),
+        Event::Tool(Tool { number: 3, ..Tool::default() }),
+    ];
+    for (text, syntax) in [(ron, Syntax::Ron), (json, Syntax::JsonLines)] {
+        let (events, diags) = read(text, Some(syntax));
+        assert!(diags.is_empty(), "{text}: {diags:?}");
+        assert_eq!(events, expected, "{text}");
+        let mut again = String::new();
+        for e in &events {
+            write_event(e, syntax, &mut again);
+        }
+        assert_eq!(again.matches("turning").count(), 1, "{again}");
+        let (back, diags) = read(&again, Some(syntax));
+        assert!(diags.is_empty() && back == expected, "{again}: {diags:?}");
+    }
+}
+
 /// A JSON number is read as the double nearest to
 /// its decimal text, as RON and Rust read it, not the next one.
 #[test]
