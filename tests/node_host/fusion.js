@@ -141,6 +141,9 @@ function Referee(postSource, postName) {
     this.toolChanged = false;
     this.lastTool = null;
     this.spindle = 0;
+    this.css = false;
+    this.maxRpm = null;
+    this.feedPerRev = false;
     this.coolant = 0;
     this.held = [];
 }
@@ -151,9 +154,22 @@ var COMP_SIDES = { Off: 0, Left: 1, Right: 2 };
 
 // Each engine function also gets where the event is in the toolpath and
 // whether a move follows it (FeedRate records not counted), as postc's
-// runtime passes them.
-Referee.prototype.call = function (name, args) {
-    this.ctx[name].apply(null, args.concat([this.record, this.nextMotion]));
+// runtime passes them; a turning job's arguments come after those
+// (docs/fusion.md, "Turning").
+Referee.prototype.call = function (name, args, after) {
+    this.ctx[name].apply(null, args.concat([this.record, this.nextMotion]).concat(after || []));
+};
+
+// The spindle's constant surface speed and its highest rpm (NaN when it
+// runs at a fixed rpm or gives no limit).
+Referee.prototype.cssArgs = function () {
+    return [this.css, this.css && this.maxRpm != null ? this.maxRpm : NaN];
+};
+
+// A toolpath's turning arguments: a turning tool, feeds per revolution,
+// and the spindle's surface speed.
+Referee.prototype.turningArgs = function () {
+    return [!!this.tool.turning, !!this.feedPerRev].concat(this.cssArgs());
 };
 
 Referee.prototype.spindleTool = function () {
@@ -176,7 +192,7 @@ Referee.prototype.beginToolpath = function () {
         this.started = true;
         var j = this.job;
         var file = j.file || {};
-        this.call("__fusion_toolpath", this.toolpathArgs());
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs());
         var m = j.material;
         var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
         // The CAM product, Fusion's `generated-by` (host.js `__fusion_job`).
@@ -189,7 +205,7 @@ Referee.prototype.beginToolpath = function () {
         );
         this.spindleOn = this.spindleTool();
         if (this.spindleOn) {
-            this.call("__fusion_spindle", [this.spindle]);
+            this.call("__fusion_spindle", [this.spindle], this.cssArgs());
         }
         for (var h = 0; h < this.held.length; h++) {
             this.call("__fusion_insert", [this.held[h]]);
@@ -200,10 +216,10 @@ Referee.prototype.beginToolpath = function () {
             this.call("__fusion_tool_change", []);
             this.spindleOn = this.spindleTool();
             if (this.spindleOn) {
-                this.call("__fusion_spindle", [this.spindle]);
+                this.call("__fusion_spindle", [this.spindle], this.cssArgs());
             }
         }
-        this.call("__fusion_toolpath", this.toolpathArgs());
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs());
     }
     this.toolChanged = false;
     this.lastTool = this.tool.number;
@@ -222,7 +238,9 @@ Referee.prototype.feedOf = function (m, slow) {
 Referee.prototype.feedMove = function (m) {
     var from = this.pos;
     var intent = m.intent || "Cut";
-    if (intent === "Cut" && from[0] === m.x && from[1] === m.y) {
+    // A move straight along Z is a milling tool's plunge or retract; a
+    // turning tool's Z runs along the spindle, where it cuts.
+    if (intent === "Cut" && !this.tool.turning && from[0] === m.x && from[1] === m.y) {
         if (m.z < from[2]) {
             intent = "Plunge";
         } else if (m.z > from[2]) {
@@ -295,11 +313,16 @@ Referee.prototype.event = function (e) {
                 number: d.number || 0, name: d.name || "", diameter: d.diameter || 0, jet: !!d.jet,
                 cut_feed: d.cut_feed || 0, plunge_feed: d.plunge_feed || 0, notes: d.notes || "",
                 lengthOffset: d.length_offset != null ? d.length_offset : d.number || 0,
+                turning: !!d.turning,
             };
             this.spindle = d.spindle_speed || 0;
+            // A new tool's spindle runs at its rpm until a SpindleOn says otherwise.
+            this.css = false;
+            this.maxRpm = null;
             break;
         case "ToolpathStart":
             this.toolpathName = d.name || "";
+            this.feedPerRev = !!d.feed_per_rev;
             this.beginToolpath();
             break;
         case "Rapid":
@@ -321,11 +344,14 @@ Referee.prototype.event = function (e) {
             break;
         case "SpindleOn": {
             var speed = d.speed != null ? d.speed : this.spindle;
-            var changed = speed !== this.spindle;
+            var css = !!d.css;
+            var changed = speed !== this.spindle || css !== this.css;
             this.spindle = speed;
+            this.css = css;
+            this.maxRpm = css && d.max_rpm != null ? d.max_rpm : null;
             if (this.started && (!this.spindleOn || changed) && !this.tool.jet) {
                 this.spindleOn = true;
-                this.call("__fusion_spindle", [speed]);
+                this.call("__fusion_spindle", [speed], this.cssArgs());
             }
             break;
         }
@@ -441,7 +467,8 @@ function outlineOf(events) {
                     fresh = true;
                 }
                 tool = { number: d.number || 0, name: d.name || "", notes: d.notes || "", diameter: d.diameter || 0,
-                    jet: !!d.jet, lengthOffset: d.length_offset != null ? d.length_offset : d.number || 0 };
+                    jet: !!d.jet, turning: !!d.turning,
+                    lengthOffset: d.length_offset != null ? d.length_offset : d.number || 0 };
                 speed = d.spindle_speed || 0;
                 break;
             case "ToolpathStart":
@@ -450,7 +477,8 @@ function outlineOf(events) {
                 toolpath = d.name || "";
                 break;
             case "SpindleOn":
-                if (fresh && d.speed != null) {
+                // A constant surface speed is no rpm of the tool's.
+                if (fresh && d.speed != null && !d.css) {
                     speed = d.speed;
                 }
                 break;
@@ -488,7 +516,8 @@ function outlineOf(events) {
             var starts = kind === "DrillPoint";
             open = {
                 tool: tool.number || 0, diameter: tool.diameter || 0, name: tool.name || "", notes: tool.notes || "",
-                lengthOffset: tool.lengthOffset || 0, speed: speed, jet: !!tool.jet, coolant: coolant,
+                lengthOffset: tool.lengthOffset || 0, speed: speed, jet: !!tool.jet, turning: !!tool.turning,
+                coolant: coolant,
                 toolpath: toolpath, x: reached[0], y: reached[1], z: reached[2], zMin: reached[3], zMax: reached[4],
                 cycle: starts ? KINDS[cycle.kind || "Drill"] : -1, dwell: starts && cycle.dwell > 0,
                 cycles: starts ? 1 : 0, points: 0,
