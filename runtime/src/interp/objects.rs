@@ -116,6 +116,10 @@ pub(crate) fn member(value: &Value, key: &Value, protos: &Protos) -> Result<Valu
                 _ => inherited(find_in(&o, k.as_bytes(), protos, false), &k),
             }
         }
+        // `list.length`, the commonest read of an array, told first.
+        Value::Array(items) if matches!(key, Value::Text(k) if k.as_bytes() == b"length") => {
+            Value::Num(items.borrow().len() as f64)
+        }
         Value::Array(items) => {
             let items = items.borrow();
             match index(key) {
@@ -744,7 +748,7 @@ impl Engine<'_> {
                     "filter" => Each::Filter,
                     "some" => Each::Some,
                     "every" => Each::Every,
-                    _ => Each::ForEach,
+                    _ => Each::Visit,
                 };
                 // A callback that only returns a plain expression runs with
                 // no call made, in one frame for the whole walk
@@ -1084,10 +1088,10 @@ pub(crate) fn uncaught(value: &Value, span: Option<Span>) -> Box<Diagnostic> {
     })
 }
 
-/// Which array method walks its items with a callback.
+/// Which array method walks its items with a callback (`Visit`: forEach).
 #[derive(Clone, Copy)]
 enum Each {
-    ForEach,
+    Visit,
     Map,
     Filter,
     Some,
