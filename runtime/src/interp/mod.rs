@@ -737,6 +737,23 @@ impl Engine<'_> {
                     }));
                 }
             },
+            // `list.length`, `drill.depth`, `axes[k]` of a local or a
+            // global: read where the object is, no reference taken.
+            Expr::Member(o, k) if is_plain_leaf(o) && is_plain_leaf(k) => {
+                let read = {
+                    let (mut to, mut tk) = (Value::Null, Value::Null);
+                    let object = plain_leaf(o, frame, &self.globals, &mut to);
+                    let key = plain_leaf(k, frame, &self.globals, &mut tk);
+                    if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) }
+                };
+                match read {
+                    Some(v) => v?,
+                    None => {
+                        let k = self.eval(k, frame)?;
+                        self.global_member(&k)?
+                    }
+                }
+            }
             Expr::Member(o, k) => {
                 let mut o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
@@ -758,11 +775,15 @@ impl Engine<'_> {
             Expr::Invoke { object, method, args, span } => {
                 let o = self.eval(object, frame)?;
                 let args = self.eval_list(args, frame)?;
+                let empty;
                 let name = match method.value() {
-                    Value::Text(t) => t.clone(),
-                    _ => crate::value::Text::new(""),
+                    Value::Text(t) => t,
+                    _ => {
+                        empty = crate::value::Text::new("");
+                        &empty
+                    }
                 };
-                self.invoke(o, &name, args, *span)?
+                self.invoke(o, name, args, *span)?
             }
             // A function that captures nothing is one value however often
             // it is made: a top-level function is one object in
@@ -805,6 +826,11 @@ impl Engine<'_> {
                 let word = self.scratch_text(buf);
                 self.finite(*span)?;
                 word
+            }
+            // `+k`, `-x` of a local: the operand read in place.
+            Expr::Unary(op, a) if is_plain_leaf(a) => {
+                let mut tmp = Value::Null;
+                unary(*op, plain_leaf(a, frame, &self.globals, &mut tmp))
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -1036,15 +1062,15 @@ impl Engine<'_> {
     /// ([`Self::new_array`]).
     #[inline]
     pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
-        for v in &mut frame {
-            if let Value::Array(a) = v
+        // One pass: each value dropped, or its array kept.
+        for mut v in frame.drain(..) {
+            if let Value::Array(a) = &v
                 && std::rc::Rc::strong_count(a) == 1
                 && std::rc::Rc::weak_count(a) == 0
             {
-                self.keep_array(v);
+                self.keep_array(&mut v);
             }
         }
-        frame.clear();
         // Bounded by the deepest nesting of calls; more is never needed.
         if self.spare_frames.len() < 64 {
             self.spare_frames.push(frame);
@@ -1384,7 +1410,7 @@ impl Engine<'_> {
     }
 
     /// The function of a callback an array method may run as
-    /// [`Self::run_callback`] (`list.filter(isWord)`): a post function
+    /// [`Self::run_callback_in`] (`list.filter(isWord)`): a post function
     /// that captures nothing, takes no `arguments` and only returns a
     /// plain expression ([`crate::exec::Function::returns`]), while calls
     /// are neither traced nor profiled; `None` otherwise (then the method
@@ -1401,10 +1427,19 @@ impl Engine<'_> {
         plain.then_some(id)
     }
 
-    /// Runs a function [`Self::callback_function`] gave, as [`Self::call`]
-    /// would (the same frame, step, depth limit and placed errors), with
-    /// no call made: its expression evaluated in a frame of the arguments.
-    pub(crate) fn run_callback(&mut self, id: FunctionId, args: [Value; 3]) -> Result<Value> {
+    /// Runs a function [`Self::callback_function`] gave for one item of an
+    /// array method's walk (`list.filter(f)`), as [`Self::call`] would (the
+    /// same step, depth limit and placed errors), with no call made: its
+    /// expression evaluated in `frame`, emptied and filled again for each
+    /// item, and only the arguments its parameters read are made (an item
+    /// and its index; the array only for a third parameter).
+    pub(crate) fn run_callback_in(
+        &mut self,
+        id: FunctionId,
+        args: [&Value; 2],
+        items: &std::rc::Rc<std::cell::RefCell<Vec<Value>>>,
+        frame: &mut Vec<Value>,
+    ) -> Result<Value> {
         let (post, code) = (self.post, self.code);
         let runnable = &code.functions[id.index()];
         let (Some(e), Some(function)) = (&runnable.returns, post.functions.get(runnable.origin.index())) else {
@@ -1412,19 +1447,24 @@ impl Engine<'_> {
         };
         if self.depth + 1 > MAX_DEPTH {
             let mut values = self.spare();
-            values.extend(args);
+            values.extend([args[0].clone(), args[1].clone(), Value::Array(items.clone())]);
             return self.call(id, values);
         }
-        let mut frame = self.spare();
-        frame.extend(args);
-        fill_frame(runnable, &mut frame);
+        // Arguments past the parameters are dropped by `fill_frame` when
+        // the function starts its slots undefined: those are not made.
+        let wanted = if runnable.starts_undefined { runnable.params } else { 3 };
+        frame.clear();
+        frame.extend(args.into_iter().take(wanted).cloned());
+        if wanted > 2 {
+            frame.push(Value::Array(items.clone()));
+        }
+        fill_frame(runnable, frame);
         self.steps += 1;
         let result = if self.steps > self.post.options.step_budget {
             Err(Box::new(self.budget_error(None)))
         } else {
-            self.eval(e, &mut frame)
+            self.eval(e, frame)
         };
-        self.give_back(frame);
         result.map_err(|e| placed(post, function, e))
     }
 
@@ -1716,8 +1756,20 @@ fn parse_float_from(bytes: &[u8], from: usize) -> f64 {
     crate::js::parse_float(rest)
 }
 
-/// A local, a global or a number: read in place by [`leaf`].
+/// A local, a global, a number or a text, or a unary operator of one
+/// (`+k`, `-x`, `!done`): read in place by [`leaf`]. A unary operator
+/// runs no post code ([`unary`] is pure), so reading one in place does
+/// what evaluating it does.
 fn is_leaf(e: &Expr) -> bool {
+    match e {
+        Expr::Unary(_, a) => is_plain_leaf(a),
+        e => is_plain_leaf(e),
+    }
+}
+
+/// A local, a global, a number or a text.
+#[inline(always)]
+fn is_plain_leaf(e: &Expr) -> bool {
     matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_) | Expr::Text(_))
 }
 
@@ -1734,6 +1786,27 @@ fn leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut 
             Some(v) => v,
             None => tmp,
         },
+        Expr::Number(n) => {
+            *tmp = Value::Num(*n);
+            tmp
+        }
+        Expr::Text(t) => t.value(),
+        // `+k`: the operator of the operand read in place, kept in `tmp`.
+        Expr::Unary(op, a) => {
+            let mut inner = Value::Null;
+            *tmp = unary(*op, plain_leaf(a, frame, globals, &mut inner));
+            tmp
+        }
+        _ => tmp,
+    }
+}
+
+/// [`leaf`] of a local, a global, a number or a text.
+#[inline(always)]
+fn plain_leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'v mut Value) -> &'v Value {
+    match e {
+        Expr::Local(i) => frame.get(i.index()).unwrap_or(tmp),
+        Expr::Global(i) => globals.get(i.index()).unwrap_or(tmp),
         Expr::Number(n) => {
             *tmp = Value::Num(*n);
             tmp

@@ -116,6 +116,10 @@ pub(crate) fn member(value: &Value, key: &Value, protos: &Protos) -> Result<Valu
                 _ => inherited(find_in(&o, k.as_bytes(), protos, false), &k),
             }
         }
+        // `list.length`, the commonest read of an array, told first.
+        Value::Array(items) if matches!(key, Value::Text(k) if k.as_bytes() == b"length") => {
+            Value::Num(items.borrow().len() as f64)
+        }
         Value::Array(items) => {
             let items = items.borrow();
             match index(key) {
@@ -427,6 +431,26 @@ impl Engine<'_> {
         args: Vec<Value>,
         span: Option<Span>,
     ) -> Result<Value> {
+        // A built-in method of an array or a text (`words.push(w)`,
+        // `f.substring(1)`), which nothing a post adds to a prototype
+        // replaces (`find_builtin` answers built-ins first): run with no
+        // search. A text's `replace` may call post code: found below.
+        match &object {
+            Value::Array(items) if protos::has_method(ProtoKind::Array, method.as_bytes()) => {
+                let mut args = args;
+                let result = self.array_method(items, method, &mut args);
+                self.give_back(args);
+                return result.map_err(|e| at(e, span));
+            }
+            Value::Text(t)
+                if method.as_bytes() != b"replace" && protos::has_method(ProtoKind::String, method.as_bytes()) =>
+            {
+                let result = text_method(t, method, &args);
+                self.give_back(args);
+                return result.map_err(|e| at(e, span));
+            }
+            _ => {}
+        }
         if self.is_global_object(&object) {
             let f = self.global_member(&Value::Text(method.clone()))?;
             return self.call_value(&f, object, args).map_err(|e| at(e, span));
@@ -718,16 +742,25 @@ impl Engine<'_> {
                 snapshot.extend(items.borrow().iter().cloned());
                 let mut out = self.spare();
                 let mut decided = None;
+                // Which of the five, told once for the whole walk.
+                let each = match name {
+                    "map" => Each::Map,
+                    "filter" => Each::Filter,
+                    "some" => Each::Some,
+                    "every" => Each::Every,
+                    _ => Each::Visit,
+                };
                 // A callback that only returns a plain expression runs with
-                // no call made (`Engine::run_callback`).
+                // no call made, in one frame for the whole walk
+                // (`Engine::run_callback_in`).
                 let callback = self.callback_function(&f);
+                let mut frame = self.spare();
                 for (i, item) in snapshot.drain(..).enumerate() {
-                    let args = [item.clone(), Value::Num(i as f64), Value::Array(items.clone())];
                     let called = match callback {
-                        Some(id) => self.run_callback(id, args),
+                        Some(id) => self.run_callback_in(id, [&item, &Value::Num(i as f64)], items, &mut frame),
                         None => {
                             let mut call_args = self.spare();
-                            call_args.extend(args);
+                            call_args.extend([item.clone(), Value::Num(i as f64), Value::Array(items.clone())]);
                             self.call_value(&f, Value::Undefined, call_args)
                         }
                     };
@@ -738,20 +771,21 @@ impl Engine<'_> {
                             break;
                         }
                     };
-                    match name {
-                        "map" => out.push(r),
-                        "filter" if r.truthy() => out.push(item),
-                        "some" if r.truthy() => {
+                    match each {
+                        Each::Map => out.push(r),
+                        Each::Filter if r.truthy() => out.push(item),
+                        Each::Some if r.truthy() => {
                             decided = Some(Ok(Value::Bool(true)));
                             break;
                         }
-                        "every" if !r.truthy() => {
+                        Each::Every if !r.truthy() => {
                             decided = Some(Ok(Value::Bool(false)));
                             break;
                         }
                         _ => {}
                     }
                 }
+                self.give_back(frame);
                 snapshot.clear();
                 self.give_back(snapshot);
                 if let Some(decided) = decided {
@@ -1052,4 +1086,14 @@ pub(crate) fn uncaught(value: &Value, span: Option<Span>) -> Box<Diagnostic> {
         Some(s) => d.at(s, "thrown here"),
         None => d,
     })
+}
+
+/// Which array method walks its items with a callback (`Visit`: forEach).
+#[derive(Clone, Copy)]
+enum Each {
+    Visit,
+    Map,
+    Filter,
+    Some,
+    Every,
 }
