@@ -26,3 +26,25 @@ fn a_short_fixed_seed_pass_finds_nothing() {
     assert!(found.is_empty(), "{} findings:\n{}", found.len(), found.join("\n"));
     assert_eq!(tally.mutants, 150);
 }
+
+/// A saved finding says what was found, in its `replay.sh`: a run given
+/// no time at all is a hang.
+#[test]
+fn a_saved_finding_says_what_was_found() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let postc = PathBuf::from(env!("CARGO_BIN_EXE_postc"));
+    let seeds: Vec<_> =
+        postc_fuzz::seeds(&root).into_iter().filter(|s| s.kind == postc_fuzz::Kind::Vectric).take(1).collect();
+    let saved = tempfile::tempdir().expect("a temporary folder");
+    let settings = postc_fuzz::Settings {
+        postc,
+        timeout: Duration::from_nanos(1),
+        memory: 1 << 30,
+        save: Some(saved.path().to_path_buf()),
+    };
+    let tally = postc_fuzz::fuzz(&settings, &seeds, 1, 7, |_| {});
+    assert!(!tally.findings.is_empty(), "a run with no time is a hang");
+    let replay = std::fs::read_to_string(saved.path().join("finding-0000/replay.sh")).expect("replay.sh is saved");
+    assert!(replay.contains("# found: Hang, a vectric mutant of "), "{replay}");
+    assert!(replay.contains("postc "), "{replay}");
+}

@@ -642,15 +642,20 @@ pub fn run_mutant(settings: &Settings, tally: &mut Tally, seed: &Seed, mutant: &
                 run.args.join(" "),
                 if seed.kind == Kind::Lsp { format!(" < {input_name}") } else { String::new() }
             );
-            let saved =
-                settings.save.as_ref().and_then(|root| save(root, tally.findings.len(), dir.path(), &inputs, &command));
+            let what = format!("{problem:?}, a {} mutant of {}", seed.kind.name(), seed.origin.display());
+            let saved = settings
+                .save
+                .as_ref()
+                .and_then(|root| save(root, tally.findings.len(), dir.path(), &inputs, &command, &what));
             tally.findings.push(Finding { problem, kind: seed.kind, origin: seed.origin.clone(), command, saved });
         }
     }
 }
 
-/// Copies a finding's inputs and a `replay.sh` into `root/finding-N`.
-fn save(root: &Path, n: usize, dir: &Path, inputs: &[String], command: &str) -> Option<PathBuf> {
+/// Copies a finding's inputs and a `replay.sh` into `root/finding-N`;
+/// `what` (the problem, the kind and the corpus file mutated) is its
+/// first comment.
+fn save(root: &Path, n: usize, dir: &Path, inputs: &[String], command: &str, what: &str) -> Option<PathBuf> {
     let to = root.join(format!("finding-{n:04}"));
     std::fs::create_dir_all(&to).ok()?;
     for i in inputs {
@@ -658,7 +663,10 @@ fn save(root: &Path, n: usize, dir: &Path, inputs: &[String], command: &str) -> 
     }
     std::fs::write(
         to.join("replay.sh"),
-        format!("#!/bin/sh\n# run in this folder\ncd \"$(dirname \"$0\")\" && {command}\n"),
+        format!(
+            "#!/bin/sh\n# found: {}\n# run in this folder\ncd \"$(dirname \"$0\")\" && {command}\n",
+            what.replace('\n', " ")
+        ),
     )
     .ok()?;
     Some(to)
