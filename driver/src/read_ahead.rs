@@ -31,9 +31,9 @@ pub const BATCH: usize = 1024;
 /// takes as long as it does. While `postc post` also verifies, three
 /// threads share two cores and the scheduler takes the reader's core for
 /// the posting or verify thread at times: a deep queue lets the reader
-/// run on when it gets a core back, where with four batches it stopped
-/// as soon as the post fell 4,096 events behind (docs/performance.md,
-/// "Verifying while posting").
+/// run on when it gets a core back instead of stopping as soon as the
+/// post falls a few batches behind (docs/performance.md, "Verifying
+/// while posting", measures the depths).
 const IN_FLIGHT: usize = 64;
 
 /// One thing the reader produced, in its order.
