@@ -48,3 +48,13 @@ fn a_saved_finding_says_what_was_found() {
     assert!(replay.contains("# found: Hang, a vectric mutant of "), "{replay}");
     assert!(replay.contains("postc "), "{replay}");
 }
+
+/// A run's processor time is read from `/proc/PID/stat` after the command
+/// name, which may hold blanks and parentheses: 1/100 s ticks of user and
+/// system time.
+#[test]
+fn processor_time_is_read_after_the_command_name() {
+    let stat = "4242 (postc (x) y) R 1 4242 4242 0 -1 4194304 120 0 0 0 731 69 0 0 20 0 1 0 100 1000 50";
+    assert_eq!(postc_fuzz::processor_time_of(stat), Some(Duration::from_millis(8000)));
+    assert_eq!(postc_fuzz::processor_time_of("4242 (postc) R 1"), None);
+}

@@ -365,6 +365,8 @@ pub struct Finding {
 #[derive(Clone, Debug)]
 pub struct Settings {
     pub postc: PathBuf,
+    /// Processor time a run may use before it is a hang (and
+    /// [`WALL_FACTOR`] times it on the clock).
     pub timeout: Duration,
     /// Peak resident memory allowed, in bytes.
     pub memory: u64,
@@ -428,6 +430,31 @@ fn peak_rss(pid: u32) -> Option<u64> {
     Some(kb * 1024)
 }
 
+/// Processor time (user and system) a running process has used (Linux:
+/// `/proc/PID/stat`, whose times are in the kernel's fixed user tick of
+/// 1/100 s).
+fn processor_time(pid: u32) -> Option<Duration> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    processor_time_of(&stat)
+}
+
+/// [`processor_time`] from the text of a `/proc/PID/stat`: fields 14 and
+/// 15 (utime, stime), counted after the command name, which is in
+/// parentheses and may hold blanks.
+#[doc(hidden)]
+pub fn processor_time_of(stat: &str) -> Option<Duration> {
+    let after = &stat[stat.rfind(')')? + 1..];
+    let mut fields = after.split_whitespace().skip(11);
+    let (user, system): (u64, u64) = (fields.next()?.parse().ok()?, fields.next()?.parse().ok()?);
+    Some(Duration::from_millis((user + system) * 10))
+}
+
+/// How many times the time limit a run may take on the clock while it has
+/// not used the limit's processor time (a machine whose cores are busy
+/// with other work runs it slowly): past that it is a hang too, blocked
+/// rather than busy.
+const WALL_FACTOR: u32 = 6;
+
 /// What a finished process left.
 struct Ended {
     code: Option<i32>,
@@ -476,7 +503,13 @@ fn execute(settings: &Settings, dir: &Path, args: &[String], input: &[u8]) -> st
         if let Some(p) = peak_rss(pid) {
             peak = peak.max(p);
         }
-        if started.elapsed() > settings.timeout {
+        // A hang is a run that has used the limit's processor time, or
+        // stays past several times the limit on the clock: a run a busy
+        // machine slows is not one.
+        let elapsed = started.elapsed();
+        if elapsed > settings.timeout
+            && (processor_time(pid).is_none_or(|t| t > settings.timeout) || elapsed > settings.timeout * WALL_FACTOR)
+        {
             hung = true;
             let _ = child.kill();
             break child.wait()?;

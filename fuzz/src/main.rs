@@ -29,7 +29,8 @@ struct Args {
     /// The random seed: the same seed makes the same mutants.
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// Seconds one command may run before it counts as a hang.
+    /// Seconds of processor time one command may use before it counts as
+    /// a hang (or six times as many on the clock, busy or not).
     #[arg(long, default_value_t = 10)]
     timeout: u64,
     /// Peak resident memory one command may use, in MiB.
