@@ -58,3 +58,24 @@ fn processor_time_is_read_after_the_command_name() {
     assert_eq!(postc_fuzz::processor_time_of(stat), Some(Duration::from_millis(8000)));
     assert_eq!(postc_fuzz::processor_time_of("4242 (postc) R 1"), None);
 }
+
+/// `check --format json` keeps every diagnostic (issue 25, floods): a post
+/// with 50,000 characters JavaScript does not allow prints one item for
+/// each, over 8 MiB of valid JSON, which the fuzzer reads whole (it read
+/// 8 MiB, and took a cut array for JSON that was not: seed 20261202).
+#[test]
+fn a_flood_of_json_diagnostics_is_valid_json_the_fuzzer_reads_whole() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post = dir.path().join("flood.js");
+    std::fs::write(&post, format!("function onOpen() {{\n{}\n}}\n", "\u{a4} ".repeat(50_000))).expect("write");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_postc"))
+        .args(["check", "--format", "json"])
+        .arg(&post)
+        .output()
+        .expect("run postc");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.len() > 8 << 20, "{} bytes", o.stdout.len());
+    let items: Vec<serde_json::Value> = serde_json::from_slice(&o.stdout).expect("a JSON array");
+    assert!(items.len() >= 50_000, "{} items", items.len());
+    assert!(postc_fuzz::json_problem(&o.stdout).is_none());
+}

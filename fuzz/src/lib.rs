@@ -462,9 +462,16 @@ struct Ended {
     hung: bool,
     peak: u64,
     stdout: Vec<u8>,
+    /// Standard output was longer than [`READ_LIMIT`]: `stdout` is its start.
+    stdout_cut: bool,
     stderr: Vec<u8>,
     took: Duration,
 }
+
+/// The most of a run's standard output and error read back. `check
+/// --format json` keeps every diagnostic: a mutant with 50,000 bad
+/// characters prints 11 MB of valid JSON.
+const READ_LIMIT: u64 = 64 << 20;
 
 /// Runs `postc args` in `dir`, stdin from `input`, under the limits.
 fn execute(settings: &Settings, dir: &Path, args: &[String], input: &[u8]) -> std::io::Result<Ended> {
@@ -520,15 +527,18 @@ fn execute(settings: &Settings, dir: &Path, args: &[String], input: &[u8]) -> st
     let read = |p: &Path| {
         let mut b = Vec::new();
         if let Ok(mut f) = std::fs::File::open(p) {
-            let _ = Read::by_ref(&mut f).take(8 << 20).read_to_end(&mut b);
+            let _ = Read::by_ref(&mut f).take(READ_LIMIT + 1).read_to_end(&mut b);
         }
-        b
+        let cut = b.len() as u64 > READ_LIMIT;
+        b.truncate(READ_LIMIT as usize);
+        (b, cut)
     };
     #[cfg(unix)]
     let signalled = std::os::unix::process::ExitStatusExt::signal(&status).is_some();
     #[cfg(not(unix))]
     let signalled = false;
-    Ok(Ended { code: status.code(), signalled, hung, peak, stdout: read(&out_path), stderr: read(&err_path), took })
+    let (stdout, stdout_cut) = read(&out_path);
+    Ok(Ended { code: status.code(), signalled, hung, peak, stdout, stdout_cut, stderr: read(&err_path).0, took })
 }
 
 /// Every `error`/`warning` header of human output has a code.
@@ -661,7 +671,9 @@ pub fn run_mutant(settings: &Settings, tally: &mut Tally, seed: &Seed, mutant: &
         if let Some(line) = uncoded(&ended.stderr) {
             problems.push(Problem::NoCode(line));
         }
+        // (JSON cut short by the read limit is not judged.)
         if run.json
+            && !ended.stdout_cut
             && let Some(p) = json_problem(&ended.stdout)
         {
             problems.push(p);
