@@ -370,7 +370,8 @@ var props = {first: {value: 3}};
 properties = props;
 setWriteInvocations = true;
 var isMilling = "mine";
-(function (global) { global._underscore = {v: 7}; })(this);"#,
+(function (global) { global._underscore = {v: 7}; })(this);
+function writeComment(text) { writeln("(" + text + ")"); }"#,
         r#"writeln([Math.random(), Math.random(), Math.random()].join(" "));
   writeln(isArray([1]) + " " + isArray("a") + " " + FileSystem.getFilename(getConfigurationPath()) + " " +
     (getConfigurationFolder() != "") + " " + isDrillingCycle() + isMillingCycle() + isTappingCycle() + " " +

@@ -87,7 +87,13 @@ fn rebuild(trace: &str) -> String {
                         num(&params["operation:tool_feedPlunge"]),
                     ));
                 }
-                events.push(format!("ToolpathStart(name:{})", text(&params["operation-comment"])));
+                // The operation's notes, handed before the sections of operations that have them.
+                let notes = params.remove("notes").unwrap_or_else(|| serde_json::Value::String(String::new()));
+                events.push(format!(
+                    "ToolpathStart(name:{},notes:{})",
+                    text(&params["operation-comment"]),
+                    text(&notes)
+                ));
                 let wanted = params["operation:tool_coolant"].as_str().unwrap_or("disabled").to_string();
                 if wanted != coolant {
                     let kind = match wanted.as_str() {

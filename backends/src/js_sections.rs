@@ -17,23 +17,25 @@
 //!
 //! - a value the engine never hands the post (for CNC-Calc `[T]`,
 //!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position, file
-//!   names, the date and time; for both jet power, toolpath notes, ...)
-//!   in a section the post prints is `CV007` (Fusion hands the tool's
-//!   feeds and clearance height as operation parameters, the home
-//!   position is the converted post's properties, which the user sets,
-//!   and the job's texts are made from what it hands: [`JOB_TEXTS`]);
+//!   names, the date and time; for both the origin offsets, ...) in a
+//!   section the post prints is `CV007` (Fusion hands the tool's feeds,
+//!   clearance height and notes as operation parameters, the home
+//!   position and wrap diameter are the converted post's properties,
+//!   which the user sets, jet power is no value in a milling post, and
+//!   the job's texts are made from what it hands: [`JOB_TEXTS`]);
 //! - a section the engine never calls (CNC-Calc: `TOOLCHANGE`,
 //!   `NEW_SEGMENT`, `DWELL_MOVE`, ...) is left out with warning `CV008`;
-//! - a rule the engine gives the post no way to follow (helical plunge
-//!   sections: the engine does not say which arcs plunge; in CNC-Calc an
-//!   empty line, which the engine does not write) is `CV010`;
+//! - a rule the engine gives the post no way to follow (CNC-Calc's
+//!   helical plunge sections: its engine does not say which arcs plunge,
+//!   where Fusion's `movement` does; an empty line, which CNC-Calc does
+//!   not write) is `CV010`;
 //! - a feed printed finer than the tenth CNC-Calc's `getFeedrate` hands is
 //!   warned of (`CV011`);
 //! - output options the printed post does not carry are `CV004`, code is
 //!   `CV002`, a post driven by APT words is `CV001`.
 
 use postc_ir::codes;
-use postc_ir::post::{Dispatch, Section};
+use postc_ir::post::{Dispatch, Section, WrappedAxis};
 use postc_ir::{
     CommentTarget, Diagnostic, HandlerKey, Justify, Modality, NumberFormat, OutputOptions, Padding, Piece, PointStyle,
     Post, Quantity, SignStyle, Span, Stmt, TextEncoding, Units, ValueSource, WidthOf,
@@ -124,6 +126,10 @@ const FUSION_CALLED: &[(Section, &str)] = &[
     (Section::CwHelicalArcMove, "onCircular"),
     (Section::FirstCcwHelicalArcMove, "onCircular"),
     (Section::CcwHelicalArcMove, "onCircular"),
+    (Section::FirstCwHelicalArcPlungeMove, "onCircular"),
+    (Section::CwHelicalArcPlungeMove, "onCircular"),
+    (Section::FirstCcwHelicalArcPlungeMove, "onCircular"),
+    (Section::CcwHelicalArcPlungeMove, "onCircular"),
     (Section::DwellMove, "onDwell"),
     (Section::Footer, "onClose"),
 ];
@@ -132,13 +138,17 @@ const FUSION_CALLED: &[(Section, &str)] = &[
 /// arc has been handed yet.
 const BEFORE_MOVES: &[Section] = &[Section::RevisionComment, Section::Header, Section::SpindleOn];
 
+/// The converted post's property for the job's wrap diameter.
+const WRAP_PROPERTY: &str = "wrapDiameter";
+
 /// Sections Fusion prints at the start of a section (its `onSection`),
 /// where the section's feed and arcs have not been handed yet.
 const SECTION_START: &[Section] =
     &[Section::RevisionComment, Section::Header, Section::SpindleOn, Section::ToolChange, Section::NewSegment];
 
 /// Sections chosen only for arcs the toolpath marks as plunging, which
-/// the engine's `onCircular` does not say.
+/// CNC-Calc's `onCircular` does not say (Fusion's `movement` does:
+/// `MOVEMENT_RAMP_HELIX`).
 const PLUNGE_ARCS: &[Section] = &[
     Section::FirstCwHelicalArcPlungeMove,
     Section::CwHelicalArcPlungeMove,
@@ -159,6 +169,12 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
             Quantity::ToolName => Some("toolName"),
             Quantity::ToolNotes => Some("toolNotes"),
             Quantity::ToolpathName => Some("toolpathName"),
+            // The operation's notes, its `notes` parameter.
+            Quantity::ToolpathNotes => Some("toolpathNotes"),
+            // A milling section has no jet power: Vectric prints nothing
+            // for `[P]` while a spindle tool is loaded (docs/vectric.md,
+            // decision 46), and the converted post is a milling post.
+            Quantity::Power => Some("NaN"),
             Quantity::DwellTime => Some("dwellTime"),
             Quantity::XMin => Some("stockLower.x"),
             Quantity::YMin => Some("stockLower.y"),
@@ -285,7 +301,7 @@ impl Printer<'_> {
             ("tape splitting (TAPE_SPLITTING)", o.tape_splitting.is_some()),
             (
                 "a wrapped rotary axis (ROTARY_WRAP), whose angle comes from the job's wrap diameter, never handed to the converted post",
-                o.rotary_wrap.is_some(),
+                self.host == Host::Cimco && o.rotary_wrap.is_some(),
             ),
             ("a smallest arc radius (MIN_ARC_RADIUS)", o.min_arc_radius.is_some()),
             ("a largest arc radius (MAX_ARC_RADIUS)", o.max_arc_radius.is_some()),
@@ -314,10 +330,9 @@ impl Printer<'_> {
     /// never hands, and warns of sections it never calls.
     fn check_sections(&mut self) {
         let post = self.post;
-        self.check_plunging_chords();
         for h in &post.handlers {
             let HandlerKey::Section(section) = h.key else { continue };
-            if PLUNGE_ARCS.contains(&section) {
+            if PLUNGE_ARCS.contains(&section) && self.host == Host::Cimco {
                 self.refuse(
                     codes::CV010.code,
                     h.span,
@@ -378,8 +393,12 @@ impl Printer<'_> {
                                 && !matches!(q, Quantity::X | Quantity::Y | Quantity::Z | Quantity::BlockNumber);
                             // Before the first move Vectric's position is the
                             // job's home, which neither engine hands.
-                            let at_home =
-                                BEFORE_MOVES.contains(&section) && matches!(q, Quantity::X | Quantity::Y | Quantity::Z);
+                            // (Under ROTARY_WRAP `[A]` is a position too.)
+                            let at_home = BEFORE_MOVES.contains(&section)
+                                && (matches!(q, Quantity::X | Quantity::Y | Quantity::Z)
+                                    || q == Quantity::A
+                                        && self.host == Host::Fusion
+                                        && post.options.rotary_wrap.is_some());
                             let before = before || at_home;
                             // A rapid prints the feed Vectric holds, the tool's
                             // before the first feed move: not handed.
@@ -402,7 +421,7 @@ impl Printer<'_> {
                                 }
                                 self.warnings.push(d);
                             }
-                            if handed(q, self.host).is_none() || before {
+                            if self.printed(q).is_none() || before {
                                 let engine = self.host.engine();
                                 let when = match (before, q) {
                                     (false, _) => "",
@@ -420,7 +439,7 @@ impl Printer<'_> {
                                         "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
                                     ),
                                     Host::Fusion => format!(
-                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no toolpath notes, origin offsets or jet power (docs/convert.md, \"Fusion posts\")"
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, notes, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no origin offsets (docs/convert.md, \"Fusion posts\")"
                                     ),
                                 };
                                 self.refuse(
@@ -545,12 +564,56 @@ maximumCircularSweep = 2 * Math.PI;
                 )
             })
             .collect();
-        if !homes.is_empty() {
-            self.out.push_str(&format!(
-                "// The job's home position, which Fusion does not hand a post: set it in\n// the post dialog.\nproperties = {{\n{}\n}};\n\n",
-                homes.join(",\n")
+        let mut properties = homes;
+        if self.wrap_diameter_property() {
+            properties.push(format!(
+                "  {WRAP_PROPERTY}: {{\n    title: \"Wrap diameter\",\n    description: {},\n    group: \"rotary\",\n    type: \"number\",\n    value: 0,\n    scope: \"post\"\n  }}",
+                js_string(&format!(
+                    "The diameter of the cylinder the toolpath is wrapped around, in the program's units ({}): {}",
+                    post.info.units.map_or("the document's", |u| u.name()),
+                    match post.options.rotary_wrap {
+                        Some(w) => format!(
+                            "{} prints the angle that unrolls its distance on it, and is printed as a length while this is 0.",
+                            if w.axis == WrappedAxis::X { "X" } else { "Y" }
+                        ),
+                        None => "what [WRAP_DIA] prints.".into(),
+                    }
+                )),
             ));
         }
+        if !properties.is_empty() {
+            self.out.push_str(&format!(
+                "// The job's home position and wrap diameter, which Fusion does not hand a\n// post: set them in the post dialog.\nproperties = {{\n{}\n}};\n\n",
+                properties.join(",\n")
+            ));
+        }
+    }
+
+    /// Whether the converted post declares the wrap diameter property: a
+    /// post that wraps an axis, or prints `[WRAP_DIA]` (Fusion).
+    fn wrap_diameter_property(&self) -> bool {
+        self.host == Host::Fusion && (self.post.options.rotary_wrap.is_some() || self.prints(Quantity::WrapDiameter))
+    }
+
+    /// What the printed post prints for a quantity: what the engine hands
+    /// ([`handed`]), under ROTARY_WRAP (Fusion) the wrapped axis and `[A]`
+    /// as the angle that unrolls the distance (`wrapAngle`).
+    fn printed(&self, q: Quantity) -> Option<String> {
+        if self.host == Host::Fusion {
+            if let Some(w) = self.post.options.rotary_wrap {
+                let axis = if w.axis == WrappedAxis::X { "x" } else { "y" };
+                if q == Quantity::A {
+                    return Some(format!("wrapAngle({axis})"));
+                }
+                if w.wraps(q) {
+                    return handed(q, self.host).map(|v| format!("wrapAngle({v})"));
+                }
+            }
+            if q == Quantity::WrapDiameter && self.wrap_diameter_property() {
+                return Some("wrapDiameter".into());
+            }
+        }
+        handed(q, self.host).map(str::to_string)
     }
 
     /// Whether a section the engine calls prints a quantity.
@@ -603,7 +666,12 @@ maximumCircularSweep = 2 * Math.PI;
                 name = format!("{wanted}_{n}");
             }
             taken.push(name.clone());
-            let prefix = self.decode(&v.prefix).unwrap_or_default();
+            // Under ROTARY_WRAP the wrapped axis prints with the rotary letter.
+            let prefix = match (self.host, post.options.rotary_wrap) {
+                (Host::Fusion, Some(w)) => self.decode(&w.prefix(v)),
+                _ => self.decode(&v.prefix),
+            }
+            .unwrap_or_default();
             let format = post.formats.get(v.format.index()).cloned().unwrap_or_default();
             self.out.push_str(&crate::cimco::comment(post, &CommentTarget::Variable(postc_ir::VarId::new(id as u16))));
             self.out.push_str(&format!(
@@ -691,7 +759,7 @@ function afterRapid() {{
                 let mut numbered = false;
                 // The values the line prints, and whether it prints the
                 // position of a move (which every move has).
-                let mut values: Vec<&str> = Vec::new();
+                let mut values: Vec<String> = Vec::new();
                 let mut position = false;
                 for p in pieces {
                     match p {
@@ -699,16 +767,17 @@ function afterRapid() {{
                         Piece::Var(v) => {
                             let var = &post.variables[v.index()];
                             let ValueSource::Quantity(q) = var.source else { continue };
-                            let Some(value) = handed(q, self.host) else { continue };
+                            let Some(value) = self.printed(q) else { continue };
                             numbered |= q == Quantity::BlockNumber;
                             // In a move section X, Y and Z are the move's
                             // position (the runtime's `is_move_section`).
                             let moves =
                                 (Section::InitialRapidMove..=Section::CcwHelicalArcPlungeMove).contains(&section);
-                            if matches!(q, Quantity::X | Quantity::Y | Quantity::Z) && moves {
+                            let wrapped_a = q == Quantity::A && post.options.rotary_wrap.is_some();
+                            if (matches!(q, Quantity::X | Quantity::Y | Quantity::Z) || wrapped_a) && moves {
                                 position = true;
                             } else if q != Quantity::BlockNumber {
-                                values.push(value);
+                                values.push(value.clone());
                             }
                             let word = if q.is_text() { "textWord" } else { "word" };
                             parts.push(format!("{word}({}, {value})", self.names[v.index()]));
@@ -824,6 +893,25 @@ function afterRapid() {{
             .filter(|(q, ..)| self.prints(*q))
             .map(|(_, name, axis)| format!("home{axis} = getProperty(\"{name}\");\n    "))
             .collect();
+        // The wrap diameter the user set (0: none), and the angle that
+        // unrolls a distance on it, as the runtime computes it
+        // (`MachineState::wrap_angle`).
+        let mut homes = homes;
+        let mut wrap = String::new();
+        if self.wrap_diameter_property() {
+            homes.push_str(&format!(
+                "wrapDiameter = getProperty(\"{WRAP_PROPERTY}\") > 0 ? getProperty(\"{WRAP_PROPERTY}\") : NaN;\n    "
+            ));
+            wrap.push_str(
+                "// The wrap diameter the user set in the post dialog (none while 0).\nvar wrapDiameter = NaN;\n",
+            );
+        }
+        if let Some(w) = self.post.options.rotary_wrap {
+            wrap.push_str(&format!(
+                "\n// ROTARY_WRAP: the degrees of rotation that unroll a distance on the wrap\n// cylinder; the distance itself while no wrap diameter is set.\nfunction wrapAngle(distance) {{\n    if (!(wrapDiameter > 0)) {{\n        return distance;\n    }}\n    var angle = distance / (Math.PI * wrapDiameter) * 360;\n    return {};\n}}\n",
+                if w.reversed { "-angle" } else { "angle" }
+            ));
+        }
         // The job's texts the post prints, made in `onOpen`.
         let mut text_vars = String::new();
         let mut text_set = String::new();
@@ -876,6 +964,7 @@ var dwellTime = NaN;
 var toolName = "";
 var toolNotes = "";
 var toolpathName = "";
+var toolpathNotes = "";
 var lastTool = NaN;
 var previousTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
@@ -886,7 +975,7 @@ var toolFeedCut = NaN;
 var toolFeedPlunge = NaN;
 var safeZ = NaN;
 var homeX = NaN, homeY = NaN, homeZ = NaN;
-{text_vars}{words}
+{wrap}{text_vars}{words}
 // Fusion hands lengths and feeds in the document's units; the post
 // prints them in its source's UNITS, each multiplied by `scale`.
 var scale = 1;
@@ -913,6 +1002,7 @@ function onSection() {{
     toolName = tool.description;
     toolNotes = tool.comment;
     toolpathName = getParameter("operation-comment", "");
+    toolpathNotes = getParameter("notes", "");
     toolFeedCut = hasParameter("operation:tool_feedCutting") ? getParameter("operation:tool_feedCutting") * scale : NaN;
     toolFeedPlunge = hasParameter("operation:tool_feedPlunge") ? getParameter("operation:tool_feedPlunge") * scale : NaN;
     safeZ = hasParameter("operation:clearanceHeight_value") ? getParameter("operation:clearanceHeight_value") * scale : NaN;
@@ -963,8 +1053,10 @@ function onCircular(isCW, cx, cy, cz, ex, ey, ez, f) {{
     ey *= scale;
     ez *= scale;
     f *= scale;
+    // A helix the toolpath marks as plunging: Fusion's helical ramp.
+    var plunging = movement == MOVEMENT_RAMP_HELIX;
     if (getCircularPlane() != PLANE_XY) {{
-        planeChords(getCircularPlane() == PLANE_ZX ? [2, 0, 1] : [1, 2, 0], [cx, cy, cz], [ex, ey, ez], isCW, f);
+        planeChords(getCircularPlane() == PLANE_ZX ? [2, 0, 1] : [1, 2, 0], [cx, cy, cz], [ex, ey, ez], isCW, f, plunging);
         return;
     }}
     var helical = Math.abs(ez - z) > 1e-9;
@@ -972,8 +1064,9 @@ function onCircular(isCW, cx, cy, cz, ex, ey, ez, f) {{
 }}
 
 // An arc in the plane of the axes (u, v) about w, from the last end point
-// to e around c, cut into equal-angle chords within the chord tolerance.
-function planeChords(axes, c, e, isCW, f) {{
+// to e around c, cut into equal-angle chords within the chord tolerance;
+// plunge moves when the arc plunges.
+function planeChords(axes, c, e, isCW, f, plunge) {{
     var u = axes[0], v = axes[1], w = axes[2];
     var s = [x, y, z];
     var r = distance(s[u] - c[u], s[v] - c[v]);
@@ -996,14 +1089,14 @@ function planeChords(axes, c, e, isCW, f) {{
     for (var i = 1; i <= n; i++) {{
         var t = i / n;
         if (t >= 1) {{
-            feedTo(e[0], e[1], e[2], false, f);
+            feedTo(e[0], e[1], e[2], plunge, f);
         }} else {{
             var a = a0 + sweep * t;
             var p = [0, 0, 0];
             p[u] = c[u] + r * Math.cos(a);
             p[v] = c[v] + r * Math.sin(a);
             p[w] = s[w] + (e[w] - s[w]) * t;
-            feedTo(p[0], p[1], p[2], false, f);
+            feedTo(p[0], p[1], p[2], plunge, f);
         }}
     }}
 }}
@@ -1034,48 +1127,6 @@ function onClose() {{
             (true, false) => Some(section_function(first)),
             (false, true) => Some(section_function(plain)),
             (false, false) => None,
-        }
-    }
-
-    /// Refuses a post that cuts helices into chords and has plunge
-    /// sections (Fusion): Vectric prints the chords of an arc the toolpath
-    /// marks as plunging through the plunge sections, and Fusion's
-    /// `onCircular` does not say which arcs plunge. (CNC-Calc posts are
-    /// judged on jobs whose helices are not marked so: docs/convert.md.)
-    fn check_plunging_chords(&mut self) {
-        if self.host != Host::Fusion {
-            return;
-        }
-        let plunge = [Section::FirstPlungeMove, Section::PlungeMove]
-            .into_iter()
-            .find_map(|s| self.post.handlers.iter().find(|h| h.key == HandlerKey::Section(s)).map(|h| (s, h.span)));
-        let Some((plunge, span)) = plunge else { return };
-        let chords = [
-            (Section::FirstCwHelicalArcMove, Section::CwHelicalArcMove, Section::FirstCwArcMove, Section::CwArcMove),
-            (
-                Section::FirstCcwHelicalArcMove,
-                Section::CcwHelicalArcMove,
-                Section::FirstCcwArcMove,
-                Section::CcwArcMove,
-            ),
-        ]
-        .into_iter()
-        .any(|(hf, hp, ff, fp)| {
-            let helical = self.has(hf) || self.has(hp);
-            let flat_z = [ff, fp].into_iter().filter(|s| self.has(*s)).all(|s| self.prints_z(s))
-                && (self.has(ff) || self.has(fp));
-            !helical && !flat_z
-        });
-        if chords {
-            self.refuse(
-                codes::CV010.code,
-                span,
-                format!(
-                    "{} prints the chords of a helix the toolpath marks as plunging, and Fusion's onCircular does not say which arcs plunge",
-                    plunge.name()
-                ),
-                "the post has no helical section and no arc section that prints [Z], so a helix is cut into feed moves; Vectric prints those of a plunging helix through the plunge sections",
-            );
         }
     }
 
@@ -1165,6 +1216,21 @@ function onClose() {{
         ] {
             let dir = if cw { "cw" } else { "ccw" };
             let mut body = String::new();
+            // A helix the toolpath marks as plunging (Fusion's helical ramp)
+            // prints through the helical plunge sections where the post has them.
+            let plunge_kind = format!("{dir} plunge helix");
+            let (plunge_first, plunge_plain) = if cw {
+                (Section::FirstCwHelicalArcPlungeMove, Section::CwHelicalArcPlungeMove)
+            } else {
+                (Section::FirstCcwHelicalArcPlungeMove, Section::CcwHelicalArcPlungeMove)
+            };
+            if let Some(s) =
+                self.pick(plunge_first, plunge_plain, &format!("(lastKind != \"{plunge_kind}\" || lastFeed !== f)"))
+            {
+                body.push_str(&format!(
+                    "if (helical && plunging) {{\n            return arcSection(\"{plunge_kind}\", f, {s}, cx, cy, ex, ey, ez, isCW);\n        }}\n        "
+                ));
+            }
             let helix_kind = format!("{dir} helix");
             if let Some(s) =
                 self.pick(helical.0, helical.1, &format!("(lastKind != \"{helix_kind}\" || lastFeed !== f)"))
@@ -1204,10 +1270,17 @@ function onClose() {{
                         .push_str(&format!("if (!helical || {helix_ok}) {{\n            {call}\n        }}\n        ")),
                 }
             }
-            body.push_str("return chords(cx, cy, ex, ey, ez, isCW, f);");
+            body.push_str("return chords(cx, cy, ex, ey, ez, isCW, f, plunging);");
             arcs.push_str(&format!("if ({}isCW) {{\n        {body}\n    }}\n    ", if cw { "" } else { "!" }));
         }
-        let arcs = arcs.trim_end();
+        // Under ROTARY_WRAP (Fusion) every arc is cut into feed moves: one of
+        // its axes turns the rotary axis, which a G2/G3 cannot (docs/vectric.md,
+        // decision 42).
+        let arcs = if self.host == Host::Fusion && self.post.options.rotary_wrap.is_some() {
+            "return chords(cx, cy, ex, ey, ez, isCW, f, plunging);"
+        } else {
+            arcs.trim_end()
+        };
         let footer = call(Section::Footer, self);
         let open = format!(
             r#"function onOpen(isClipboard) {{
@@ -1363,8 +1436,8 @@ function arcSection(kind, f, section, cx, cy, ex, ey, ez, isCW) {
 }
 
 // An arc the post has no section for, cut into equal-angle chords within
-// the chord tolerance, each a feed move.
-function chords(cx, cy, ex, ey, ez, isCW, f) {
+// the chord tolerance, each a feed move (a plunge move when the arc plunges).
+function chords(cx, cy, ex, ey, ez, isCW, f, plunge) {
     var g = arcGeometry(cx, cy, ex, ey, isCW);
     var sz = z;
     var r = g.r, a0 = g.a0, sweep = g.sweep;
@@ -1379,10 +1452,10 @@ function chords(cx, cy, ex, ey, ez, isCW, f) {
     for (var i = 1; i <= n; i++) {
         var t = i / n;
         if (t >= 1) {
-            out += feedTo(ex, ey, ez, false, f);
+            out += feedTo(ex, ey, ez, plunge, f);
         } else {
             var a = a0 + sweep * t;
-            out += feedTo(cx + r * Math.cos(a), cy + r * Math.sin(a), sz + (ez - sz) * t, false, f);
+            out += feedTo(cx + r * Math.cos(a), cy + r * Math.sin(a), sz + (ez - sz) * t, plunge, f);
         }
     }
     return out;
@@ -1418,6 +1491,8 @@ function remainder(a, b) {
         let circular_close = format!(
             r#"function onCircular(cx, cy, cz, ex, ey, ez, isCW, movement) {{
     var f = feedOf(movement);
+    // CNC-Calc does not say which arcs plunge.
+    var plunging = false;
     var helical = Math.abs(ez - z) > 1e-9;
     {arcs}
 }}
@@ -1890,6 +1965,8 @@ const PRINTED_NAMES: &[&str] = &[
     "getFeedrate",
     "MOVEMENT_RAPID",
     "MOVEMENT_PLUNGE",
+    "MOVEMENT_RAMP_HELIX",
+    "plunging",
     "Math",
     "String",
     "parseFloat",
@@ -1902,6 +1979,7 @@ const PRINTED_NAMES: &[&str] = &[
     "toolName",
     "toolNotes",
     "toolpathName",
+    "toolpathNotes",
     "lastTool",
     "stockLower",
     "stockUpper",
@@ -1912,6 +1990,8 @@ const PRINTED_NAMES: &[&str] = &[
     "homeX",
     "homeY",
     "homeZ",
+    "wrapDiameter",
+    "wrapAngle",
     "properties",
     "getProperty",
     "getParameter",

@@ -16,8 +16,9 @@ pub struct SectionOutline {
     /// The tool that cuts it, its spindle speed the last one set before
     /// the section's first move.
     pub tool: Tool,
-    /// The toolpath's name.
+    /// The toolpath's name and notes.
     pub toolpath: String,
+    pub toolpath_notes: String,
     /// The coolant in force at the first move.
     pub coolant: Coolant,
     /// Where the first move goes; for a section that starts with a
@@ -48,6 +49,7 @@ impl JobOutline {
         let mut out = JobOutline::default();
         let mut tool = Tool::default();
         let mut toolpath = String::new();
+        let mut toolpath_notes = String::new();
         let mut coolant = Coolant::Off;
         let mut cycle: Option<crate::event::DrillCycle> = None;
         // The section being read, once it has moved.
@@ -77,6 +79,7 @@ impl JobOutline {
                     close(&mut open, &mut out);
                     fresh = true;
                     toolpath.clone_from(&t.name);
+                    toolpath_notes.clone_from(&t.notes);
                     None
                 }
                 Event::SpindleOn(s) => {
@@ -120,6 +123,7 @@ impl JobOutline {
                 open = Some(SectionOutline {
                     tool: tool.clone(),
                     toolpath: toolpath.clone(),
+                    toolpath_notes: toolpath_notes.clone(),
                     coolant,
                     first: at,
                     z_min: low,

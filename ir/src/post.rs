@@ -132,6 +132,11 @@ pub struct PostInfo {
     pub file_extension: String,
     /// Units it writes; `None` writes the toolpath's own units.
     pub units: Option<Units>,
+    /// The post reads the units it is handed and writes for them (a Fusion
+    /// post that reads `unit`): without [`PostInfo::units`] it is handed
+    /// the toolpath's units, whatever units words its text holds.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub reads_units: bool,
     /// How the runtime turns events into handler calls.
     pub dispatch: Dispatch,
     /// The post supports jet (laser) toolpaths.
@@ -382,6 +387,34 @@ pub struct RotaryWrap {
     pub letter: Option<char>,
     /// Rotation runs the other way (`"-A"`).
     pub reversed: bool,
+}
+
+impl RotaryWrap {
+    /// Whether `q` is a value of the wrapped axis: its position or its
+    /// home position, which print as angles.
+    pub fn wraps(&self, q: Quantity) -> bool {
+        match self.axis {
+            WrappedAxis::X => matches!(q, Quantity::X | Quantity::HomeX),
+            WrappedAxis::Y => matches!(q, Quantity::Y | Quantity::HomeY),
+        }
+    }
+
+    /// A variable's prefix as printed: the wrapped axis's letter in the
+    /// prefix of its position and its home position (`[X]`, `[XH]`)
+    /// becomes the rotary letter. VCarve writes the home of a post with
+    /// `ROTARY_WRAP_Y = "A"` as `G0X0.000A0.000` (docs/vectric.md).
+    pub fn prefix(&self, var: &Variable) -> Vec<u8> {
+        let mut prefix = var.prefix.clone();
+        let (Some(letter), ValueSource::Quantity(q)) = (self.letter, var.source) else { return prefix };
+        if !self.wraps(q) {
+            return prefix;
+        }
+        let axis = if self.axis == WrappedAxis::X { b'X' } else { b'Y' };
+        if let Some(p) = prefix.iter().position(|b| b.eq_ignore_ascii_case(&axis)) {
+            prefix[p] = letter as u8;
+        }
+        prefix
+    }
 }
 
 /// Which linear axis a rotary wrap maps.

@@ -126,9 +126,13 @@ impl Post {
         scan.0
     }
 
-    /// The units the post writes: the ones it states, else the one system
-    /// whose units word its text holds, else `None` (the toolpath's own).
+    /// The units the post writes: the ones it states, else (unless it
+    /// reads the units it is handed: [`PostInfo::reads_units`]) the one
+    /// system whose units word its text holds, else `None` (the
+    /// toolpath's own).
+    ///
+    /// [`PostInfo::reads_units`]: crate::post::PostInfo::reads_units
     pub fn output_units(&self) -> Option<Units> {
-        self.info.units.or_else(|| self.written_units().only())
+        self.info.units.or_else(|| if self.info.reads_units { None } else { self.written_units().only() })
     }
 }

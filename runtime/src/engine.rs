@@ -9,7 +9,7 @@
 //! statement language (assignments, conditionals, loops, calls) is
 //! interpreted by the `interp` module on the same engine.
 
-use postc_ir::post::{Substitution, WrappedAxis};
+use postc_ir::post::Substitution;
 use postc_ir::{
     Diagnostic, FormatId, HandlerKey, Modality, Piece as IrPiece, Post, Quantity, Section, Span, Stmt as IrStmt,
     ValueSource, VarId, Variable,
@@ -182,7 +182,11 @@ impl<'p> Engine<'p> {
                 sections[s as usize] = Some(i as u16);
             }
         }
-        let prefixes = post.variables.iter().map(|v| wrapped_prefix(post, v)).collect();
+        let prefixes = post
+            .variables
+            .iter()
+            .map(|v| post.options.rotary_wrap.map_or_else(|| v.prefix.clone(), |w| w.prefix(v)))
+            .collect();
         let prepared = post
             .handlers
             .iter()
@@ -663,25 +667,6 @@ impl<'p> Engine<'p> {
             self.warnings.push(d);
         }
     }
-}
-
-/// The prefix of a variable as printed: under rotary wrap, the wrapped
-/// axis's letter in the prefix of its position and its home position
-/// (`[X]`, `[XH]`) becomes the rotary letter: VCarve writes the home of a
-/// post with `ROTARY_WRAP_Y = "A"` as `G0X0.000A0.000` (docs/vectric.md).
-fn wrapped_prefix(post: &Post, var: &postc_ir::Variable) -> Vec<u8> {
-    let mut prefix = var.prefix.clone();
-    let Some(wrap) = post.options.rotary_wrap else { return prefix };
-    let Some(letter) = wrap.letter else { return prefix };
-    let axis = match (var.source, wrap.axis) {
-        (ValueSource::Quantity(Quantity::X | Quantity::HomeX), WrappedAxis::X) => b'X',
-        (ValueSource::Quantity(Quantity::Y | Quantity::HomeY), WrappedAxis::Y) => b'Y',
-        _ => return prefix,
-    };
-    if let Some(p) = prefix.iter().position(|b| b.eq_ignore_ascii_case(&axis)) {
-        prefix[p] = letter as u8;
-    }
-    prefix
 }
 
 /// Copies text, replacing substituted characters.

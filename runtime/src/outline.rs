@@ -5,7 +5,7 @@
 //! `[{"tool": 1, "diameter": 6, "name": "6 mm end mill", "notes": "",
 //! "lengthOffset": 1, "speed": 18000, "jet": false, "turning": false,
 //! "coolant": 1,
-//! "toolpath": "Pocket", "x": 10, "y": 10, "z": 5, "zMin": -3, "zMax": 5,
+//! "toolpath": "Pocket", "toolpathNotes": "", "x": 10, "y": 10, "z": 5, "zMin": -3, "zMax": 5,
 //! "cycle": -1, "dwell": false, "cycles": 0, "points": 0}, ...]`: `cycle`
 //! is the `DRILL_KIND` number of the cycle that starts the section, -1
 //! when none; `coolant` the `COOLANT_KIND` number; a length that is not a
@@ -35,6 +35,7 @@ pub fn to_json(outline: &JobOutline, factor: f64) -> String {
                 "turning": t.turning,
                 "coolant": coolant_kind(s.coolant),
                 "toolpath": s.toolpath,
+                "toolpathNotes": s.toolpath_notes,
                 "x": s.first[0] * factor,
                 "y": s.first[1] * factor,
                 "z": s.first[2] * factor,

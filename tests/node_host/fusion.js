@@ -192,7 +192,7 @@ Referee.prototype.beginToolpath = function () {
         this.started = true;
         var j = this.job;
         var file = j.file || {};
-        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs());
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes]));
         var m = j.material;
         var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
         // The CAM product, Fusion's `generated-by` (host.js `__fusion_job`).
@@ -219,7 +219,7 @@ Referee.prototype.beginToolpath = function () {
                 this.call("__fusion_spindle", [this.spindle], this.cssArgs());
             }
         }
-        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs());
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes]));
     }
     this.toolChanged = false;
     this.lastTool = this.tool.number;
@@ -294,7 +294,9 @@ Referee.prototype.arc = function (a) {
     var intent = a.intent || "Cut";
     var slow = intent === "Plunge" || intent === "Retract";
     this.pos = e;
-    this.call("__fusion_circular", [cw, c[0], c[1], c[2], a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r, plane[0]]);
+    // A helix marked as plunging is Fusion's helical ramp.
+    var ramp = intent === "Plunge" && Math.abs(e[w] - s[w]) > 1e-9;
+    this.call("__fusion_circular", [cw, c[0], c[1], c[2], a.x, a.y, a.z, this.feedOf(a, slow), cw ? -turn : turn, r, plane[0]], [ramp]);
 };
 
 Referee.prototype.event = function (e) {
@@ -322,6 +324,7 @@ Referee.prototype.event = function (e) {
             break;
         case "ToolpathStart":
             this.toolpathName = d.name || "";
+            this.toolpathNotes = d.notes || "";
             this.feedPerRev = !!d.feed_per_rev;
             this.beginToolpath();
             break;
@@ -446,6 +449,7 @@ function outlineOf(events) {
     var tool = {};
     var speed = 0;
     var toolpath = "";
+    var toolpathNotes = "";
     var coolant = 0;
     var cycle = null;
     var open = null;
@@ -475,6 +479,7 @@ function outlineOf(events) {
                 close();
                 fresh = true;
                 toolpath = d.name || "";
+                toolpathNotes = d.notes || "";
                 break;
             case "SpindleOn":
                 // A constant surface speed is no rpm of the tool's.
@@ -518,7 +523,7 @@ function outlineOf(events) {
                 tool: tool.number || 0, diameter: tool.diameter || 0, name: tool.name || "", notes: tool.notes || "",
                 lengthOffset: tool.lengthOffset || 0, speed: speed, jet: !!tool.jet, turning: !!tool.turning,
                 coolant: coolant,
-                toolpath: toolpath, x: reached[0], y: reached[1], z: reached[2], zMin: reached[3], zMax: reached[4],
+                toolpath: toolpath, toolpathNotes: toolpathNotes, x: reached[0], y: reached[1], z: reached[2], zMin: reached[3], zMax: reached[4],
                 cycle: starts ? KINDS[cycle.kind || "Drill"] : -1, dwell: starts && cycle.dwell > 0,
                 cycles: starts ? 1 : 0, points: 0,
             };

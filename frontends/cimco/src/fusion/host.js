@@ -1154,7 +1154,7 @@ function isProbeOperation() { return false; }
 // `programComment`, choice 9): nothing is written (docs/fusion.md,
 // choice 29).
 function __writeNotes(text) {
-  if (text === undefined || text === null) { return; }
+  if (text === undefined || text === null || typeof writeComment != "function") { return; }
   var lines = String(text).split("\n");
   for (var i = 0; i < lines.length; ++i) {
     var comment = lines[i].trim();
@@ -1911,7 +1911,7 @@ function __setProperties(given) {
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion, turning, feedPerRev, css, maxRpm) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion, turning, feedPerRev, css, maxRpm, toolpathNotes) {
   __at(record, nextMotion);
   __toolChanging = false;
   // Under constant surface speed the runtime's speed is the surface
@@ -1946,6 +1946,7 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
   s.feedMode = feedPerRev ? FEED_PER_REVOLUTION : FEED_PER_MINUTE;
   __surfaceSpeed(t, css);
   __operationParameters(s, cutFeed, plungeFeed, safeZ);
+  __operationNotes(s, toolpathNotes);
   __sections.push(s);
   __fusion_end_section();
   __section = s;
@@ -2001,6 +2002,14 @@ function __operationParameters(s, cutFeed, plungeFeed, safeZ) {
   }
 }
 
+// The operation's notes, its parameter `notes` (Fusion hands it before
+// the section's `onSection` when the operation has notes, as the debug
+// trace of ../shared/fusion-real shows): the toolpath's notes; no
+// parameter when it has none.
+function __operationNotes(s, notes) {
+  if (typeof notes == "string" && notes != "") { s.parameters["notes"] = notes; }
+}
+
 // Section `i` of the outline, made once: its tool, where it starts, the
 // Z it spans, the cycle it starts with.
 function __outlineSection(i) {
@@ -2013,6 +2022,7 @@ function __outlineSection(i) {
   t.lengthOffset = o.lengthOffset;
   var s = new __Section(i, t, o.toolpath);
   __describeSection(s, o.name, o.jet, o.turning);
+  __operationNotes(s, o.toolpathNotes);
   s.initialPosition = new Vector(o.x, o.y, o.z);
   s.zRange = new Range(o.zMin, o.zMax);
   s.plannedCycles = o.cycles;
@@ -2182,10 +2192,12 @@ function __fusion_linear(x, y, z, feed, plunge, record, nextMotion) {
 // `minimumCircularRadius` .. `maximumCircularRadius`,
 // `minimumCircularSweep`, `minimumChordLength`; split into equal parts
 // when its sweep is over `maximumCircularSweep`; else one `onCircular`.
-function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, record, nextMotion) {
+// An arc; `plunge`: a helix the toolpath marks as plunging, Fusion's
+// helical ramp (`MOVEMENT_RAMP_HELIX`).
+function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, record, nextMotion, plunge) {
   __at(record, nextMotion);
   __fusion_begin(x, y, z);
-  movement = MOVEMENT_CUTTING;
+  movement = plunge === true ? MOVEMENT_RAMP_HELIX : MOVEMENT_CUTTING;
   feedrate = feed;
   var start = __vector(__position);
   var w = __planeAxes(plane)[2];

@@ -110,6 +110,9 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     if let Some(extension) = own_text(&program, "extension").filter(|e| !e.trim().is_empty()) {
         post.info.file_extension = extension.trim().trim_start_matches('.').to_string();
     }
+    // A post that reads `unit` writes for the units it is handed
+    // (docs/fusion.md, choice 4).
+    post.info.reads_units = reads_unit(&program);
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
         let stubs = stubs(&host);
         let merged = merge(host, program);
@@ -245,6 +248,29 @@ fn own_text(program: &Program, name: &str) -> Option<String> {
         StmtKind::Var(ds) => ds.iter().rev().find(|d| d.name.name == name)?.init.as_ref().and_then(text_of),
         _ => None,
     })
+}
+
+/// Whether the post's own code (its file and the files it includes, not
+/// the host's) names `unit`, the units Fusion hands it.
+fn reads_unit(program: &Program) -> bool {
+    use crate::lower::scope::{Visit, walk_stmts};
+    struct Names(bool);
+    impl<'a> Visit<'a> for Names {
+        fn expr(&mut self, e: &'a crate::ast::Expr) -> bool {
+            match &e.kind {
+                ExprKind::Ident(n) if n == "unit" => self.0 = true,
+                ExprKind::Function(f) => walk_stmts(&f.body, self),
+                _ => {}
+            }
+            !self.0
+        }
+        fn function_decl(&mut self, f: &'a crate::ast::Function) {
+            walk_stmts(&f.body, self);
+        }
+    }
+    let mut names = Names(false);
+    walk_stmts(&program.body, &mut names);
+    names.0
 }
 
 /// The host's statements, less the functions (and variables) of names the post declares functions of, then the

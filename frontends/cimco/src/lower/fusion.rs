@@ -8,12 +8,12 @@
 //! |---|---|
 //! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, `__fusion_job(product)`, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z, ..., turning tool, feed per revolution, constant surface speed, its highest rpm)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z, ..., turning tool, feed per revolution, constant surface speed, its highest rpm, toolpath notes)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
 //! | `SPINDLE_ON` | `__fusion_spindle(speed, ..., constant surface speed, its highest rpm)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
-//! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane)` |
+//! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, ..., plunge)`: `plunge` for the helical plunge sections |
 //! | `DWELL_MOVE`, `COMMENT` | `__fusion_dwell(seconds)`, `__fusion_comment(text)` |
 //! | `INSERT` | `__fusion_insert(text)`: the toolpath's text as it is, each line ended with the host's `EOL` |
 //! | `COOLANT`, `CUTTER_COMP` | `__fusion_coolant(kind)`, `__fusion_compensation(side)` |
@@ -184,6 +184,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::FeedPerRev)), Box::new(Expr::Number(0.0))),
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCss)), Box::new(Expr::Number(0.0))),
                 q(Quantity::SpindleMaxRpm),
+                q(Quantity::ToolpathNotes),
             ],
         )
     };
@@ -222,8 +223,10 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
             vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z), q(Quantity::Feed), Expr::Bool(plunge)],
         )
     };
-    let arc = |cw: bool| {
-        call(
+    // A helix the toolpath marks as plunging (the helical plunge sections)
+    // is Fusion's helical ramp.
+    let arc = |cw: bool, plunge: bool| {
+        call_with(
             "__fusion_circular",
             vec![
                 Expr::Bool(cw),
@@ -238,6 +241,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 q(Quantity::Radius),
                 q(Quantity::ArcPlane),
             ],
+            vec![Expr::Bool(plunge)],
         )
     };
     let mut hs = Vec::new();
@@ -263,10 +267,12 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
     add(Section::RapidMove, call("__fusion_rapid", vec![q(Quantity::X), q(Quantity::Y), q(Quantity::Z)]));
     add(Section::FeedMove, linear(false));
     add(Section::PlungeMove, linear(true));
-    add(Section::CwArcMove, arc(true));
-    add(Section::CcwArcMove, arc(false));
-    add(Section::CwHelicalArcMove, arc(true));
-    add(Section::CcwHelicalArcMove, arc(false));
+    add(Section::CwArcMove, arc(true, false));
+    add(Section::CcwArcMove, arc(false, false));
+    add(Section::CwHelicalArcMove, arc(true, false));
+    add(Section::CcwHelicalArcMove, arc(false, false));
+    add(Section::CwHelicalArcPlungeMove, arc(true, true));
+    add(Section::CcwHelicalArcPlungeMove, arc(false, true));
     add(Section::JetToolOn, call("__fusion_power", vec![Expr::Bool(true)]));
     add(Section::JetToolOff, call("__fusion_power", vec![Expr::Bool(false)]));
     add(Section::DwellMove, call("__fusion_dwell", vec![q(Quantity::DwellTime)]));

@@ -33,7 +33,7 @@ mod layout;
 mod model;
 mod native;
 mod rhai;
-mod scope;
+pub(crate) mod scope;
 mod setup;
 mod warn;
 

@@ -215,6 +215,7 @@ fn info(model: &Model, source: &str) -> PostInfo {
             Some(GlobalValue::Units(u)) => Some(*u),
             _ => None,
         },
+        reads_units: false,
         dispatch: Dispatch::Sections,
         laser_support: flag(model, GlobalName::LaserSupport),
         direct_output: text(model, GlobalName::DirectOutput),
