@@ -59,7 +59,7 @@ fn processor_time_is_read_after_the_command_name() {
     assert_eq!(postc_fuzz::processor_time_of("4242 (postc) R 1"), None);
 }
 
-/// `check --format json` keeps every diagnostic (issue 25, floods): a post
+/// `check --format json` keeps every diagnostic (floods of diagnostics): a post
 /// with 50,000 characters JavaScript does not allow prints one item for
 /// each, over 8 MiB of valid JSON, which the fuzzer reads whole (it read
 /// 8 MiB, and took a cut array for JSON that was not: seed 20261202).
