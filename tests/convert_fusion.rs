@@ -88,7 +88,7 @@ begin FOOTER
 
 /// Real Vectric posts that convert to `.cps` posts whose every program
 /// Node.js prints as postc posts the source (docs/convert.md).
-const REAL_FUSION_AT_LEAST: usize = 107;
+const REAL_FUSION_AT_LEAST: usize = 109;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
 /// `Tool` to the next `Tool` or `End`), or `None` when it has none. The

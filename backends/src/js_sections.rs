@@ -469,11 +469,13 @@ impl Printer<'_> {
         }
     }
 
-    /// Output text as characters: any UTF-8 text, or ASCII of a
-    /// Windows-1252 post (the engine writes characters, not bytes).
+    /// Output text as characters: any UTF-8 text, and the text of a
+    /// Windows-1252 post, which a Fusion post writes in that code page
+    /// (`setCodePage("ansi")`) and CNC-Calc's engine only as ASCII.
     fn decode(&self, bytes: &[u8]) -> Option<String> {
         if self.post.info.text_encoding == TextEncoding::Windows1252 && !bytes.is_ascii() {
-            return None;
+            return (self.host == Host::Fusion)
+                .then(|| encoding_rs::WINDOWS_1252.decode_without_bom_handling(bytes).0.into_owned());
         }
         String::from_utf8(bytes.to_vec()).ok()
     }
@@ -537,6 +539,13 @@ maximumCircularSweep = 2 * Math.PI;
             description = js_string(&name),
             extension = js_string(&extension),
         ));
+        // A Windows-1252 post's text is written in that code page, as
+        // Vectric writes the post's own bytes.
+        if post.info.text_encoding == TextEncoding::Windows1252 {
+            self.out.push_str(
+                "// The source's text is Windows-1252: the program is written in it.\nsetCodePage(\"ansi\");\n\n",
+            );
+        }
         // Lines end with the source's LINE_ENDING: Fusion's own is CR LF.
         let le = &post.options.line_ending;
         if le.as_slice() != b"\r\n"

@@ -159,6 +159,12 @@ pub fn run<S: EventSource + ?Sized>(
         machine.outline = outline::to_json(&outline, factor);
     }
     let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };
+    let mut out = out;
+    // A JavaScript post's text is UTF-8; one that asks for Windows-1252
+    // (`setCodePage("ansi")`) is written in it.
+    if post.options.js_text && post.info.text_encoding == postc_ir::post::TextEncoding::Windows1252 {
+        out.write_windows_1252();
+    }
     let mut engine = Engine::new(post, &code, machine, out);
     engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
     engine.profile = options.profile.take();

@@ -100,11 +100,21 @@ pub struct Output {
     blocks: u64,
     bytes: u64,
     error: Option<io::Error>,
+    /// Text is written as Windows-1252 ([`Output::write_windows_1252`]).
+    windows_1252: bool,
 }
 
 impl Output {
     pub fn new(sink: Box<dyn Sink>) -> Output {
-        Output { buf: Vec::with_capacity(FLUSH_AT * 2), sink, blocks_in_part: 0, blocks: 0, bytes: 0, error: None }
+        Output {
+            buf: Vec::with_capacity(FLUSH_AT * 2),
+            sink,
+            blocks_in_part: 0,
+            blocks: 0,
+            bytes: 0,
+            error: None,
+            windows_1252: false,
+        }
     }
 
     /// Parts in memory.
@@ -142,10 +152,30 @@ impl Output {
         }
     }
 
+    /// Writes the text of the lines, UTF-8 as a post's JavaScript makes
+    /// it, as Windows-1252 from now on: a Fusion post's
+    /// `setCodePage("ansi")` (docs/fusion.md, choice 38). A character
+    /// Windows-1252 does not have is written `?`.
+    pub fn write_windows_1252(&mut self) {
+        self.windows_1252 = true;
+    }
+
     /// Hands buffered bytes to the sink.
     pub fn flush(&mut self) {
         if self.buf.is_empty() {
             return;
+        }
+        // Whole lines only reach here, so no character is cut in two.
+        if self.windows_1252 && !self.buf.is_ascii() {
+            let text = String::from_utf8_lossy(&self.buf).into_owned();
+            self.buf.clear();
+            let mut one = [0u8; 4];
+            for c in text.chars() {
+                match encoding_rs::WINDOWS_1252.encode(c.encode_utf8(&mut one)) {
+                    (b, _, false) if b.len() == 1 => self.buf.push(b[0]),
+                    _ => self.buf.push(b'?'),
+                }
+            }
         }
         self.bytes += self.buf.len() as u64;
         let result = self.sink.write(&self.buf);

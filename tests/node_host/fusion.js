@@ -156,6 +156,27 @@ var COMP_SIDES = { Off: 0, Left: 1, Right: 2 };
 // whether a move follows it (FeedRate records not counted), as postc's
 // runtime passes them; a turning job's arguments come after those
 // (docs/fusion.md, "Turning").
+// The program's bytes: UTF-8, or Windows-1252 once the post has called
+// `setCodePage("ansi")` (Fusion's code page; a character Windows-1252 does
+// not have is "?").
+var CP1252 = {0x20AC: 0x80, 0x81: 0x81, 0x201A: 0x82, 0x0192: 0x83, 0x201E: 0x84, 0x2026: 0x85, 0x2020: 0x86,
+    0x2021: 0x87, 0x02C6: 0x88, 0x2030: 0x89, 0x0160: 0x8A, 0x2039: 0x8B, 0x0152: 0x8C, 0x8D: 0x8D, 0x017D: 0x8E,
+    0x8F: 0x8F, 0x90: 0x90, 0x2018: 0x91, 0x2019: 0x92, 0x201C: 0x93, 0x201D: 0x94, 0x2022: 0x95, 0x2013: 0x96,
+    0x2014: 0x97, 0x02DC: 0x98, 0x2122: 0x99, 0x0161: 0x9A, 0x203A: 0x9B, 0x0153: 0x9C, 0x9D: 0x9D, 0x017E: 0x9E,
+    0x0178: 0x9F};
+Referee.prototype.bytes = function () {
+    var text = this.out.join("");
+    if (this.ctx.__codePage !== "ansi") {
+        return Buffer.from(text, "utf8");
+    }
+    var bytes = [];
+    for (var ch of text) {
+        var c = ch.codePointAt(0);
+        bytes.push(c < 0x80 || (c >= 0xA0 && c <= 0xFF) ? c : (CP1252[c] !== undefined ? CP1252[c] : 0x3F));
+    }
+    return Buffer.from(bytes);
+};
+
 Referee.prototype.call = function (name, args, after) {
     this.ctx[name].apply(null, args.concat([this.record, this.nextMotion]).concat(after || []));
 };
@@ -581,11 +602,11 @@ function main(argv) {
         referee.nextMotion = 0;
         referee.finish();
     } catch (e) {
-        process.stdout.write(Buffer.from(referee.out.join(""), "utf8"));
+        process.stdout.write(referee.bytes());
         process.stderr.write("error: " + (e && e.message ? e.message : String(e)) + "\n");
         return 1;
     }
-    process.stdout.write(Buffer.from(referee.out.join(""), "utf8"));
+    process.stdout.write(referee.bytes());
     return 0;
 }
 

@@ -689,8 +689,12 @@ function createIncrementalVariable(specifiers, format) { return new IncrementalV
 var __wordSeparator = " ";
 function setWordSeparator(separator) { __wordSeparator = separator; }
 function getWordSeparator() { return __wordSeparator; }
-function setCodePage(name) {}
-function getCodePage() { return 1252; }
+// The code page the program is written in (docs/fusion.md, choice 38):
+// postc writes Windows-1252 for a post whose every `setCodePage` names
+// "ansi", UTF-8 otherwise.
+var __codePage = "";
+function setCodePage(name) { __codePage = String(name).toLowerCase(); }
+function getCodePage() { return __codePage == "utf-8" ? 65001 : (__codePage == "ascii" ? 20127 : 1252); }
 // The end-of-line marker every later line ends with (docs/fusion.md,
 // choice 5).
 function setEOL(eol) { EOL = String(eol); }

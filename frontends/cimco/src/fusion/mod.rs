@@ -113,6 +113,11 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     // A post that reads `unit` writes for the units it is handed
     // (docs/fusion.md, choice 4).
     post.info.reads_units = reads_unit(&program);
+    // `setCodePage("ansi")`: the program is written in Windows-1252
+    // (docs/fusion.md, choice 38).
+    if code_pages(&program).is_some_and(|pages| pages.iter().all(|p| p.eq_ignore_ascii_case("ansi"))) {
+        post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
+    }
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
         let stubs = stubs(&host);
         let merged = merge(host, program);
@@ -248,6 +253,37 @@ fn own_text(program: &Program, name: &str) -> Option<String> {
         StmtKind::Var(ds) => ds.iter().rev().find(|d| d.name.name == name)?.init.as_ref().and_then(text_of),
         _ => None,
     })
+}
+
+/// The code pages the post's own code gives `setCodePage`, when it calls
+/// it and every call names one as text; `None` otherwise.
+fn code_pages(program: &Program) -> Option<Vec<String>> {
+    use crate::lower::scope::{Visit, walk_stmts};
+    struct Calls(Vec<String>, bool);
+    impl<'a> Visit<'a> for Calls {
+        fn expr(&mut self, e: &'a crate::ast::Expr) -> bool {
+            match &e.kind {
+                ExprKind::Call { callee, args } if matches!(&callee.kind, ExprKind::Ident(n) if n == "setCodePage") => {
+                    match args.as_slice() {
+                        [a] => match &a.kind {
+                            ExprKind::String(t) => self.0.push(t.clone()),
+                            _ => self.1 = true,
+                        },
+                        _ => self.1 = true,
+                    }
+                }
+                ExprKind::Function(f) => walk_stmts(&f.body, self),
+                _ => {}
+            }
+            true
+        }
+        fn function_decl(&mut self, f: &'a crate::ast::Function) {
+            walk_stmts(&f.body, self);
+        }
+    }
+    let mut calls = Calls(Vec::new(), false);
+    walk_stmts(&program.body, &mut calls);
+    (!calls.1 && !calls.0.is_empty()).then_some(calls.0)
 }
 
 /// Whether the post's own code (its file and the files it includes, not
