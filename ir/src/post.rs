@@ -265,6 +265,11 @@ pub struct OutputOptions {
     /// posts. Written to RON only when set.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub js_text: bool,
+    /// The post makes its text as UTF-8 and asks for its program in
+    /// Windows-1252 (a Fusion post's `setCodePage("ansi")`): the output
+    /// is transcoded, a character Windows-1252 lacks written `?`.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub windows_1252_output: bool,
     /// Maximum number of interpreter steps per handler call before a
     /// runaway loop is stopped.
     pub step_budget: u64,
@@ -321,6 +326,7 @@ impl Default for OutputOptions {
             reads_ahead: false,
             function_replacements: false,
             js_text: false,
+            windows_1252_output: false,
             step_budget: 10_000_000,
             lathe: false,
             forget_modal_at_toolpath_start: true,

@@ -160,12 +160,7 @@ pub fn run<S: EventSource + ?Sized>(
     }
     let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };
     let mut out = out;
-    // A Fusion post's text is UTF-8; one that asks for Windows-1252
-    // (`setCodePage("ansi")`) is written in it. (A post of another dialect
-    // in Windows-1252 holds that code page's bytes already.)
-    if post.info.dialect == postc_ir::Dialect::Fusion
-        && post.info.text_encoding == postc_ir::post::TextEncoding::Windows1252
-    {
+    if post.options.windows_1252_output {
         out.write_windows_1252();
     }
     let mut engine = Engine::new(post, &code, machine, out);

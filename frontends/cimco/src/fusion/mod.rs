@@ -117,6 +117,7 @@ pub fn compile(path: &Path, bytes: &[u8], sources: &mut SourceMap) -> (Post, Vec
     // (docs/fusion.md, choice 38).
     if code_pages(&program).is_some_and(|pages| pages.iter().all(|p| p.eq_ignore_ascii_case("ansi"))) {
         post.info.text_encoding = postc_ir::post::TextEncoding::Windows1252;
+        post.options.windows_1252_output = true;
     }
     if !postc_ir::diagnostic::has_errors(&diagnostics) {
         let stubs = stubs(&host);
