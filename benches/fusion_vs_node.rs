@@ -28,25 +28,6 @@ fn postc() -> Command {
     Command::new(env!("CARGO_BIN_EXE_postc"))
 }
 
-/// The `.cps` files under `dir`, sorted.
-fn posts(dir: &Path) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&d) else { continue };
-        for e in entries.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "cps") {
-                found.push(p);
-            }
-        }
-    }
-    found.sort();
-    found
-}
-
 fn generate(moves: u64, target: &Path) {
     let o = postc()
         .args(["toolpath", "gen", "--pattern", "mixed", "--moves", &moves.to_string(), "-o"])
@@ -112,7 +93,7 @@ fn main() {
     println!("Fusion posts, postc against Node.js {version}: {moves}-move mixed milling job, best of {runs}");
     let (mut refused, mut differ) = (0, Vec::new());
     let mut rows = Vec::new();
-    for post in posts(&corpus) {
+    for post in postc_fuzz::files(&corpus, &[".cps"]) {
         let name = post.strip_prefix(&corpus).unwrap_or(&post).display().to_string();
         let stem = post.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
         if only.as_ref().is_some_and(|o| !o.contains(&stem)) {

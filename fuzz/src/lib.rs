@@ -96,7 +96,8 @@ fn read_small(path: &Path) -> Option<Vec<u8>> {
 
 /// Files under `dir` (recursively) whose name ends with one of `exts`
 /// (case-insensitive), sorted.
-fn files(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
+#[doc(hidden)]
+pub fn files(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
