@@ -259,22 +259,38 @@ fn own_text(program: &Program, name: &str) -> Option<String> {
 /// The code pages the post's own code gives `setCodePage`, when it calls
 /// it and every call names one as text; `None` otherwise.
 fn code_pages(program: &Program) -> Option<Vec<String>> {
+    let (mut pages, mut other) = (Vec::new(), false);
+    each_expr(program, |e| {
+        if let ExprKind::Call { callee, args } = &e.kind
+            && matches!(&callee.kind, ExprKind::Ident(n) if n == "setCodePage")
+        {
+            match args.as_slice() {
+                [a] if let ExprKind::String(t) = &a.kind => pages.push(t.clone()),
+                _ => other = true,
+            }
+        }
+    });
+    (!other && !pages.is_empty()).then_some(pages)
+}
+
+/// Whether the post's own code (its file and the files it includes, not
+/// the host's) names `unit`, the units Fusion hands it.
+fn reads_unit(program: &Program) -> bool {
+    let mut reads = false;
+    each_expr(program, |e| reads |= matches!(&e.kind, ExprKind::Ident(n) if n == "unit"));
+    reads
+}
+
+/// Calls `f` on every expression of the program, in its functions and
+/// function expressions too.
+fn each_expr(program: &Program, f: impl FnMut(&crate::ast::Expr)) {
     use crate::lower::scope::{Visit, walk_stmts};
-    struct Calls(Vec<String>, bool);
-    impl<'a> Visit<'a> for Calls {
+    struct Each<F>(F);
+    impl<'a, F: FnMut(&crate::ast::Expr)> Visit<'a> for Each<F> {
         fn expr(&mut self, e: &'a crate::ast::Expr) -> bool {
-            match &e.kind {
-                ExprKind::Call { callee, args } if matches!(&callee.kind, ExprKind::Ident(n) if n == "setCodePage") => {
-                    match args.as_slice() {
-                        [a] => match &a.kind {
-                            ExprKind::String(t) => self.0.push(t.clone()),
-                            _ => self.1 = true,
-                        },
-                        _ => self.1 = true,
-                    }
-                }
-                ExprKind::Function(f) => walk_stmts(&f.body, self),
-                _ => {}
+            (self.0)(e);
+            if let ExprKind::Function(f) = &e.kind {
+                walk_stmts(&f.body, self);
             }
             true
         }
@@ -282,32 +298,7 @@ fn code_pages(program: &Program) -> Option<Vec<String>> {
             walk_stmts(&f.body, self);
         }
     }
-    let mut calls = Calls(Vec::new(), false);
-    walk_stmts(&program.body, &mut calls);
-    (!calls.1 && !calls.0.is_empty()).then_some(calls.0)
-}
-
-/// Whether the post's own code (its file and the files it includes, not
-/// the host's) names `unit`, the units Fusion hands it.
-fn reads_unit(program: &Program) -> bool {
-    use crate::lower::scope::{Visit, walk_stmts};
-    struct Names(bool);
-    impl<'a> Visit<'a> for Names {
-        fn expr(&mut self, e: &'a crate::ast::Expr) -> bool {
-            match &e.kind {
-                ExprKind::Ident(n) if n == "unit" => self.0 = true,
-                ExprKind::Function(f) => walk_stmts(&f.body, self),
-                _ => {}
-            }
-            !self.0
-        }
-        fn function_decl(&mut self, f: &'a crate::ast::Function) {
-            walk_stmts(&f.body, self);
-        }
-    }
-    let mut names = Names(false);
-    walk_stmts(&program.body, &mut names);
-    names.0
+    walk_stmts(&program.body, &mut Each(f));
 }
 
 /// The host's statements, less the functions (and variables) of names the post declares functions of, then the
