@@ -88,7 +88,7 @@ begin FOOTER
 
 /// Real Vectric posts that convert to `.cps` posts whose every program
 /// Node.js prints as postc posts the source (docs/convert.md).
-const REAL_FUSION_AT_LEAST: usize = 109;
+const REAL_FUSION_AT_LEAST: usize = 110;
 
 /// A toolpath's text without the toolpaths of its jet tools (from a jet
 /// `Tool` to the next `Tool` or `End`), or `None` when it has none. The
@@ -421,6 +421,8 @@ fn dialog_properties(source: &Post, converted: &str, toolpath: &Path) -> Vec<(St
         ("homePositionY", home.map(|h| h[1])),
         ("homePositionZ", home.map(|h| h[2])),
         ("wrapDiameter", job.wrap_diameter),
+        ("originOffsetX", job.origin.as_ref().map(|o| o.x)),
+        ("originOffsetY", job.origin.as_ref().map(|o| o.y)),
     ]
     .into_iter()
     .filter(|(name, _)| converted.contains(&format!("  {name}: {{")))
@@ -599,7 +601,7 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let refused = dir.path().join("refused.cps");
     let o = postc(&[
         "convert",
-        "corpus/posts/vectric/shopbot_inch.pp",
+        "corpus/posts/vectric/text_output_mm.pp",
         "--to",
         "fusion",
         "-o",
@@ -607,8 +609,37 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     ]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("error[CV007]") && err.contains("`[X_ORIGIN_POS]` in HEADER: Fusion never hands"), "{err}");
+    assert!(err.contains("error[CV007]") && err.contains("`[FI]` in FEED_MOVE: Fusion never hands"), "{err}");
     assert!(!refused.exists(), "a refused conversion writes nothing");
+    // The origin offsets: properties the user sets, as the home position.
+    let shopbot = dir.path().join("shopbot.cps");
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vectric/shopbot_inch.pp",
+        "--to",
+        "fusion",
+        "-o",
+        &shopbot.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", said(&o));
+    let text = std::fs::read_to_string(&shopbot).expect("the converted post");
+    assert!(text.contains("  originOffsetX: {") && text.contains("getProperty(\"originOffsetY\")"), "{text}");
+    let program = dir.path().join("shopbot.sbp");
+    let o = postc(&[
+        "post",
+        &shopbot.display().to_string(),
+        "corpus/toolpaths/native/one_toolpath_inch.ron",
+        "-o",
+        &program.display().to_string(),
+        "--no-verify",
+        "--set",
+        "property.originOffsetX=1.25",
+        "--set",
+        "property.originOffsetY=-0.5",
+    ]);
+    assert!(o.status.success(), "{}", said(&o));
+    let sbp = std::fs::read_to_string(&program).expect("the program");
+    assert!(sbp.contains(" at 1.25"), "{sbp}");
     // The home position: properties the user sets.
     let homed = dir.path().join("homed.cps");
     let o = postc(&[

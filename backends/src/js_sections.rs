@@ -16,11 +16,12 @@
 //! construct, at the source's line and column:
 //!
 //! - a value the engine never hands the post (for CNC-Calc `[T]`,
-//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position, file
-//!   names, the date and time; for both the origin offsets, ...) in a
-//!   section the post prints is `CV007` (Fusion hands the tool's feeds,
-//!   clearance height and notes as operation parameters, the home
-//!   position and wrap diameter are the converted post's properties,
+//!   `[TOOLNAME]`, the material, `[SAFEZ]`, the home position, the
+//!   origin offsets, file names, the date and time; for Fusion `[FI]`
+//!   and an `[A]` no axis wraps, ...) in a section the post prints is
+//!   `CV007` (Fusion hands the tool's feeds, clearance height and notes
+//!   as operation parameters, the home position, the origin offsets and
+//!   the wrap diameter are the converted post's properties,
 //!   which the user sets, jet power is no value in a milling post, and
 //!   the job's texts are made from what it hands: [`JOB_TEXTS`]);
 //! - a section the engine never calls (CNC-Calc: `TOOLCHANGE`,
@@ -195,6 +196,10 @@ fn handed(q: Quantity, host: Host) -> Option<&'static str> {
             Quantity::HomeX => Some("homeX"),
             Quantity::HomeY => Some("homeY"),
             Quantity::HomeZ => Some("homeZ"),
+            // The origin's offset from the material's datum corner: the
+            // post's properties too.
+            Quantity::XOrigin => Some("originX"),
+            Quantity::YOrigin => Some("originY"),
             // The last section's tool when this section's differs.
             Quantity::PreviousTool => Some("previousTool"),
             // The job's texts, each made in `onOpen` from what Fusion
@@ -439,7 +444,7 @@ impl Printer<'_> {
                                         "the section prints in {call}; the CNC-Calc manual hands the post the end point and movement of each move, the centre and direction of each arc and the feed (getFeedrate), and nothing of the job, the tool or the toolpath"
                                     ),
                                     Host::Fusion => format!(
-                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, notes, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position in the post's properties; it hands no origin offsets (docs/convert.md, \"Fusion posts\")"
+                                        "the section prints in {call}; Fusion hands the post each move's end point and feed, each arc's centre and direction, the section's tool (number, name, diameter, spindle speed), its operation's name, notes, tool feeds and clearance height, the stock (and so where the work origin is on it), the output file, the program comment, the CAM product, the sections to come and the clock, and the user sets the home position, the origin offsets and the wrap diameter in the post's properties (docs/convert.md, \"Fusion posts\")"
                                     ),
                                 };
                                 self.refuse(
@@ -556,17 +561,18 @@ maximumCircularSweep = 2 * Math.PI;
                 js_string(text)
             ));
         }
-        // The home position, which Fusion hands no post: the user sets it
-        // in the post dialog, as for Autodesk's posts' home positions.
-        let homes: Vec<String> = HOME_PROPERTIES
+        // The home position and the origin offsets, which Fusion hands no
+        // post: the user sets them in the post dialog, as for Autodesk's
+        // posts' home positions.
+        let homes: Vec<String> = DIALOG_PROPERTIES
             .iter()
             .filter(|(q, ..)| self.prints(*q))
-            .map(|(q, name, axis)| {
+            .map(|(q, name, _, group, title, what)| {
                 format!(
-                    "  {name}: {{\n    title: {},\n    description: {},\n    group: \"homePositions\",\n    type: \"number\",\n    value: 0,\n    scope: \"post\"\n  }}",
-                    js_string(&format!("Home position {axis}")),
+                    "  {name}: {{\n    title: {},\n    description: {},\n    group: \"{group}\",\n    type: \"number\",\n    value: 0,\n    scope: \"post\"\n  }}",
+                    js_string(title),
                     js_string(&format!(
-                        "The {axis} of the machine's home position, in the program's units ({}): what [{}] prints.",
+                        "{what}, in the program's units ({}): what [{}] prints.",
                         post.info.units.map_or("the document's", |u| u.name()),
                         q.label()
                     )),
@@ -592,7 +598,7 @@ maximumCircularSweep = 2 * Math.PI;
         }
         if !properties.is_empty() {
             self.out.push_str(&format!(
-                "// The job's home position and wrap diameter, which Fusion does not hand a\n// post: set them in the post dialog.\nproperties = {{\n{}\n}};\n\n",
+                "// The job's values Fusion does not hand a post (home position, origin\n// offsets, wrap diameter): set them in the post dialog.\nproperties = {{\n{}\n}};\n\n",
                 properties.join(",\n")
             ));
         }
@@ -896,11 +902,12 @@ function afterRapid() {{
             ),
             _ => "return rpm;".into(),
         };
-        // The home position from the post's properties, in the program's units.
-        let homes: String = HOME_PROPERTIES
+        // The home position and the origin offsets from the post's
+        // properties, in the program's units.
+        let homes: String = DIALOG_PROPERTIES
             .iter()
             .filter(|(q, ..)| self.prints(*q))
-            .map(|(_, name, axis)| format!("home{axis} = getProperty(\"{name}\");\n    "))
+            .map(|(_, name, var, ..)| format!("{var} = getProperty(\"{name}\");\n    "))
             .collect();
         // The wrap diameter the user set (0: none), and the angle that
         // unrolls a distance on it, as the runtime computes it
@@ -979,11 +986,12 @@ var previousTool = NaN;
 var stockLower = {{x: NaN, y: NaN, z: NaN}};
 var stockUpper = {{x: NaN, y: NaN, z: NaN}};
 // The operation's tool feeds and clearance height, and the home position
-// the user set in the post's properties.
+// and origin offsets the user set in the post's properties.
 var toolFeedCut = NaN;
 var toolFeedPlunge = NaN;
 var safeZ = NaN;
 var homeX = NaN, homeY = NaN, homeZ = NaN;
+var originX = NaN, originY = NaN;
 {wrap}{text_vars}{words}
 // Fusion hands lengths and feeds in the document's units; the post
 // prints them in its source's UNITS, each multiplied by `scale`.
@@ -1567,13 +1575,52 @@ const NATIVE_NOTE: &str = "// A CNC-Calc post: CNC-Calc calls onOpen, onLinear, 
 // the state below.
 ";
 
-/// The home position's quantities, the post properties a converted
-/// `.cps` post reads them from (the names of Autodesk's posts' home
-/// positions), and their axes.
-const HOME_PROPERTIES: &[(Quantity, &str, &str)] = &[
-    (Quantity::HomeX, "homePositionX", "X"),
-    (Quantity::HomeY, "homePositionY", "Y"),
-    (Quantity::HomeZ, "homePositionZ", "Z"),
+/// The job's values Fusion hands no post, which the user sets in the post
+/// dialog of a converted `.cps` post: the quantity, the post property it
+/// is read from (the home position's are the names of Autodesk's posts'
+/// home positions), the post's variable, the property's group and title,
+/// and what it is (docs/convert.md, "Fusion posts").
+const DIALOG_PROPERTIES: &[(Quantity, &str, &str, &str, &str, &str)] = &[
+    (
+        Quantity::HomeX,
+        "homePositionX",
+        "homeX",
+        "homePositions",
+        "Home position X",
+        "The X of the machine's home position",
+    ),
+    (
+        Quantity::HomeY,
+        "homePositionY",
+        "homeY",
+        "homePositions",
+        "Home position Y",
+        "The Y of the machine's home position",
+    ),
+    (
+        Quantity::HomeZ,
+        "homePositionZ",
+        "homeZ",
+        "homePositions",
+        "Home position Z",
+        "The Z of the machine's home position",
+    ),
+    (
+        Quantity::XOrigin,
+        "originOffsetX",
+        "originX",
+        "origin",
+        "Origin offset X",
+        "The X offset of the work origin from the material's datum corner",
+    ),
+    (
+        Quantity::YOrigin,
+        "originOffsetY",
+        "originY",
+        "origin",
+        "Origin offset Y",
+        "The Y offset of the work origin from the material's datum corner",
+    ),
 ];
 
 /// The job's texts a converted `.cps` post makes in `onOpen` from what
@@ -1999,6 +2046,8 @@ const PRINTED_NAMES: &[&str] = &[
     "homeX",
     "homeY",
     "homeZ",
+    "originX",
+    "originY",
     "wrapDiameter",
     "wrapAngle",
     "properties",
