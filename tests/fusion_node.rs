@@ -530,6 +530,57 @@ fn a_method_on_no_prototype_chain_stops_the_post_at_its_call() {
     assert!(said.contains("missing.cps:8:"), "not at the call's line:\n{said}");
 }
 
+/// JavaScript's errors in a post's own code: Node.js throws each, and
+/// postc stops at the expression that raised it, line and column, with the
+/// function it is in, writing nothing.
+#[test]
+fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let cases = [
+        (
+            "a.y",
+            "writeln(a.y);",
+            "Cannot read properties of undefined",
+            "cannot read property 'y' of undefined",
+            "6:11",
+        ),
+        ("a.y = 3", "a.y = 3;", "Cannot set properties of undefined", "cannot set property 'y' of undefined", "6:3"),
+        (
+            "a[k]",
+            "writeln(a[\"k\"]);",
+            "Cannot read properties of undefined",
+            "cannot read property 'k' of undefined",
+            "6:11",
+        ),
+        (
+            "an undeclared name",
+            "writeln(nothingHere + 1);",
+            "nothingHere is not defined",
+            "nothingHere is not defined",
+            "6:11",
+        ),
+    ];
+    for (i, (what, line, node_says, postc_says, at)) in cases.into_iter().enumerate() {
+        let post = folder.path().join(format!("raises{i}.cps"));
+        std::fs::write(
+            &post,
+            format!(
+                "description = \"raises\";\ncapabilities = CAPABILITY_MILLING;\n\
+                 function helper() {{\n  var a;\n  writeln(\"x\");\n  {line}\n}}\n\
+                 function onOpen() {{\n  helper();\n}}\nfunction onClose() {{}}\n"
+            ),
+        )
+        .expect("write the post");
+        let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+        let stderr = String::from_utf8_lossy(&node.stderr);
+        assert!(!node.status.success() && stderr.contains(node_says), "{what}: Node.js: {stderr}");
+        let said = postc_stops(&post, &job);
+        assert!(said.contains("error[RT037]") && said.contains(postc_says), "{what}: {said}");
+        assert!(said.contains(&format!("raises{i}.cps:{at}")), "{what}: not at {at}:\n{said}");
+        assert!(said.contains("in function `helper`"), "{what}: the function it is in:\n{said}");
+    }
+}
+
 /// Posts `post` over `job` with `postc post -o`: the run must fail with
 /// exit 1 and write no program. What postc said.
 fn postc_stops(post: &Path, job: &Path) -> String {

@@ -1008,7 +1008,7 @@ fn expr_name(e: &Expr) -> &'static str {
         Expr::Undefined => "`undefined`",
         Expr::Array(_) => "an array",
         Expr::Object(_) => "an object",
-        Expr::Member(..) => "a property or an element of an object or array",
+        Expr::Member { .. } => "a property or an element of an object or array",
         Expr::Invoke { .. } | Expr::CallValue(..) => "a method call",
         Expr::Output(_) => "an output variable or format as a value",
         Expr::Closure { .. } => "a function as a value",

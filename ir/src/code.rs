@@ -20,6 +20,26 @@ use crate::id::{FormatId, FunctionId, GlobalId, LocalId, ScriptId, VarId};
 use crate::quantity::Quantity;
 
 /// One statement.
+/// Where in the post a member, an assignment to one or a name stands: the
+/// place of the error it may raise when it runs. It takes no part in
+/// equality: two expressions that differ only in where they stand compute
+/// the same, and a pass that compares expressions takes them as one.
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Site(pub Option<Span>);
+
+impl PartialEq for Site {
+    fn eq(&self, _: &Site) -> bool {
+        true
+    }
+}
+
+impl Site {
+    pub fn is_none(&self) -> bool {
+        self.0.is_none()
+    }
+}
+
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Stmt {
     /// Write one block: the pieces, then the line ending. Vectric output
@@ -65,8 +85,15 @@ pub enum Stmt {
     Forget(VarId),
     /// `object[key] = value`: sets a property of an object, an element of
     /// an array (growing it, as JavaScript does), or nothing for other
-    /// values.
-    SetMember { object: Expr, key: Expr, value: Expr },
+    /// values; a TypeError for `undefined` and `null`, reported at `span`
+    /// (the assignment in the post).
+    SetMember {
+        object: Expr,
+        key: Expr,
+        value: Expr,
+        #[serde(default, skip_serializing_if = "Site::is_none")]
+        span: Site,
+    },
     /// `throw value`: leaves every function up to the innermost `try`;
     /// with none, the post stops with an error at `span`.
     Throw {
@@ -185,8 +212,23 @@ pub enum Expr {
     /// does not have is looked for along its prototype chain (an object
     /// made by `new F()` reads the methods of `F.prototype`; every value
     /// reads the built-in methods of its kind as function values);
-    /// `undefined` when there is none.
-    Member(Box<Expr>, Box<Expr>),
+    /// `undefined` when there is none. A TypeError for a property of
+    /// `undefined` or `null`, reported at `span` (the member in the post).
+    Member {
+        object: Box<Expr>,
+        key: Box<Expr>,
+        #[serde(default, skip_serializing_if = "Site::is_none")]
+        span: Site,
+    },
+    /// A name the post never defines, read or called: JavaScript's
+    /// `ReferenceError` when it runs (`try` catches it), reported at
+    /// `span` (the name in the post); a property of the global object
+    /// when the post set one (`this._ = ...`).
+    Undeclared {
+        name: String,
+        #[serde(default, skip_serializing_if = "Site::is_none")]
+        span: Site,
+    },
     /// `object.method(args)`: the function the object holds under that
     /// name, its own or its prototype chain's, called with `this` the
     /// object; or a built-in method of an array, a text, a number, a
@@ -413,10 +455,6 @@ pub enum Builtin {
     /// expression whose source is taken) and the flags (`undefined` for
     /// none, or the regular expression's own).
     NewRegExp,
-    /// A name the post never defines, read or called: JavaScript's
-    /// `ReferenceError` when it runs (`try` catches it). The operand is the
-    /// name, as text.
-    Undeclared,
     /// A number format of a host written in JavaScript (Fusion's
     /// `createFormat`), as its `__postc_formatNumber(spec, value)`: the
     /// text of the value under the specifiers of the `spec` object

@@ -1457,8 +1457,11 @@ declare_codes! {
     RT036: Error, "the post threw an error no `try` caught (points at the `throw`)",
         fix = "Read the message: the post stops on purpose (an unknown cycle, a missing tool); give the toolpath what it needs, or correct the post.";
     /// A JavaScript type error in the post's code: a property of `undefined` or `null`, a call of
-    /// what is not a function, a method a value does not have. A `try` catches it; uncaught, the
-    /// post stops at the function that ran into it.
+    /// what is not a function, a method a value does not have, a name the post never defines
+    /// (`ReferenceError`). A `try` catches it; uncaught, the post stops, and the message points at
+    /// the expression that raised it (the property read or set, the method call, the name), line
+    /// and column, with the function it is in; a call of a local that holds no function points at
+    /// the function.
     RT037: Error, "a JavaScript type error: a property of undefined, a call of what is not a function, a method a value lacks",
         fix = "Correct the post where the message says: check the value before using it.";
     /// postc's regular expressions keep no `lastIndex`, so what reads or moves it is refused

@@ -113,7 +113,7 @@ pub mod validate;
 pub mod visit;
 
 pub use calls::{CallSource, CallValue, MissingSub, SubCall, SubParam, SubSignature, SubTip};
-pub use code::{BinaryOp, Builtin, Expr, OutputRef, Piece, Place, Stmt, UnaryOp};
+pub use code::{BinaryOp, Builtin, Expr, OutputRef, Piece, Place, Site, Stmt, UnaryOp};
 pub use diagnostic::{Diagnostic, FileId, Label, Severity, SourceMap, Span};
 pub use event::{Event, EventSource};
 pub use format::{Justify, NumberFormat, Padding, PointStyle, Rounding, SignStyle, WidthOf};

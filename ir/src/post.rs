@@ -793,7 +793,7 @@ impl Post {
     }
 
     /// Forgets every span: of the post's name, handlers, functions, scripts, variables,
-    /// formats, output lines and loops, and the `Origin` statements. A post whose spans point into
+    /// formats, output lines, loops, members and names, and the `Origin` statements. A post whose spans point into
     /// files it does not come with (a RON conversion) drops them, so that
     /// no diagnostic points into the wrong file.
     pub fn drop_spans(&mut self) {
@@ -802,6 +802,7 @@ impl Post {
             fn visit_stmt_mut(&mut self, stmt: &mut Stmt) {
                 match stmt {
                     Stmt::While { span, .. } | Stmt::Line { span, .. } | Stmt::Throw { span, .. } => *span = None,
+                    Stmt::SetMember { span, .. } => span.0 = None,
                     _ => {}
                 }
                 crate::visit::walk_stmt_mut(self, stmt);
@@ -813,6 +814,9 @@ impl Post {
                 | crate::code::Expr::Regex { span, .. } = expr
                 {
                     *span = None;
+                }
+                if let crate::code::Expr::Member { span, .. } | crate::code::Expr::Undeclared { span, .. } = expr {
+                    span.0 = None;
                 }
                 crate::visit::walk_expr_mut(self, expr);
             }

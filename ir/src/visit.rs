@@ -59,7 +59,7 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
             body.iter().for_each(|s| v.visit_stmt(s));
             step.iter().for_each(|s| v.visit_stmt(s));
         }
-        Stmt::SetMember { object, key, value } => {
+        Stmt::SetMember { object, key, value, .. } => {
             v.visit_expr(object);
             v.visit_expr(key);
             v.visit_expr(value);
@@ -99,7 +99,7 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
             captures.iter().for_each(|a| v.visit_expr(a))
         }
         Expr::Object(props) => props.iter().for_each(|(_, a)| v.visit_expr(a)),
-        Expr::Member(object, key) => {
+        Expr::Member { object, key, .. } => {
             v.visit_expr(object);
             v.visit_expr(key);
         }
@@ -110,6 +110,7 @@ pub fn walk_expr<V: Visit + ?Sized>(v: &mut V, expr: &Expr) {
         Expr::Number(_)
         | Expr::Text(_)
         | Expr::Regex { .. }
+        | Expr::Undeclared { .. }
         | Expr::Bool(_)
         | Expr::Null
         | Expr::Undefined
@@ -177,7 +178,7 @@ pub fn walk_stmt_mut<V: VisitMut + ?Sized>(v: &mut V, stmt: &mut Stmt) {
             body.iter_mut().for_each(|s| v.visit_stmt_mut(s));
             step.iter_mut().for_each(|s| v.visit_stmt_mut(s));
         }
-        Stmt::SetMember { object, key, value } => {
+        Stmt::SetMember { object, key, value, .. } => {
             v.visit_expr_mut(object);
             v.visit_expr_mut(key);
             v.visit_expr_mut(value);
@@ -213,7 +214,7 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
             captures.iter_mut().for_each(|a| v.visit_expr_mut(a))
         }
         Expr::Object(props) => props.iter_mut().for_each(|(_, a)| v.visit_expr_mut(a)),
-        Expr::Member(object, key) => {
+        Expr::Member { object, key, .. } => {
             v.visit_expr_mut(object);
             v.visit_expr_mut(key);
         }
@@ -224,6 +225,7 @@ pub fn walk_expr_mut<V: VisitMut + ?Sized>(v: &mut V, expr: &mut Expr) {
         Expr::Number(_)
         | Expr::Text(_)
         | Expr::Regex { .. }
+        | Expr::Undeclared { .. }
         | Expr::Bool(_)
         | Expr::Null
         | Expr::Undefined

@@ -16,7 +16,9 @@
 //! Nothing outside the runtime sees these types: a post on disk, a backend
 //! and a lint read the IR only.
 
-use postc_ir::{BinaryOp, Builtin, FunctionId, GlobalId, LocalId, Place, Quantity, ScriptId, Span, UnaryOp, VarId};
+use postc_ir::{
+    BinaryOp, Builtin, FunctionId, GlobalId, LocalId, Place, Quantity, ScriptId, Site, Span, UnaryOp, VarId,
+};
 
 use crate::value::Value;
 
@@ -45,6 +47,7 @@ pub enum Stmt {
         object: Expr,
         key: Expr,
         value: Expr,
+        span: Site,
     },
     Throw {
         value: Expr,
@@ -200,7 +203,13 @@ pub enum Expr {
         literal: RegexLiteral,
         span: Option<Span>,
     },
-    Member(Box<Expr>, Box<Expr>),
+    /// `object[key]`, and the member in the post.
+    Member(Box<Expr>, Box<Expr>, Site),
+    /// A name the post never defines ([`postc_ir::Expr::Undeclared`]).
+    Undeclared {
+        name: crate::value::Text,
+        span: Site,
+    },
     Output(postc_ir::OutputRef),
     Invoke {
         object: Box<Expr>,
@@ -258,7 +267,7 @@ impl Expr {
             | Expr::Closure { captures: args, .. }
             | Expr::Host { args, .. } => args.iter_mut().for_each(f),
             Expr::Object(props) => props.iter_mut().for_each(|(_, v)| f(v)),
-            Expr::Member(a, b) => {
+            Expr::Member(a, b, _) => {
                 f(a);
                 f(b);
             }
@@ -266,7 +275,12 @@ impl Expr {
                 f(object);
                 args.iter_mut().for_each(f);
             }
-            Expr::This | Expr::Undefined | Expr::Arguments | Expr::Output(_) | Expr::Regex { .. } => {}
+            Expr::This
+            | Expr::Undefined
+            | Expr::Arguments
+            | Expr::Output(_)
+            | Expr::Regex { .. }
+            | Expr::Undeclared { .. } => {}
             Expr::LocalEmpty { .. }
             | Expr::LocalIsText { .. }
             | Expr::Number(_)
@@ -329,7 +343,7 @@ impl Stmt {
             Stmt::Write(e) | Stmt::Assign(_, e) | Stmt::Eval(e) | Stmt::Return(Some(e)) => f(e),
             Stmt::If { branches, .. } => branches.iter_mut().for_each(|(c, _)| f(c)),
             Stmt::While { cond, .. } => f(cond),
-            Stmt::SetMember { object, key, value } => {
+            Stmt::SetMember { object, key, value, .. } => {
                 f(object);
                 f(key);
                 f(value);
@@ -425,6 +439,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                 )
                 | Expr::Object(_)
                 | Expr::Regex { .. }
+                | Expr::Undeclared { .. }
                 | Expr::Member(..)
                 | Expr::Invoke { .. }
                 | Expr::Closure { .. }
@@ -596,8 +611,8 @@ pub fn stmt(s: &postc_ir::Stmt) -> Stmt {
         S::While { cond, body, span, step } => {
             Stmt::While { cond: expr(cond), body: stmts(body), span: *span, step: stmts(step) }
         }
-        S::SetMember { object, key, value } => {
-            Stmt::SetMember { object: expr(object), key: expr(key), value: expr(value) }
+        S::SetMember { object, key, value, span } => {
+            Stmt::SetMember { object: expr(object), key: expr(key), value: expr(value), span: *span }
         }
         S::Throw { value, span } => Stmt::Throw { value: expr(value), span: *span },
         S::Try { body, catch, finally } => {
@@ -649,7 +664,8 @@ pub fn expr(e: &postc_ir::Expr) -> Expr {
             Expr::Object(props.iter().map(|(k, v)| (Text::new(crate::value::Text::new(k)), expr(v))).collect())
         }
         E::Regex { pattern, flags, span } => Expr::Regex { literal: RegexLiteral::new(pattern, flags), span: *span },
-        E::Member(o, k) => Expr::Member(boxed(o), boxed(k)),
+        E::Member { object, key, span } => Expr::Member(boxed(object), boxed(key), *span),
+        E::Undeclared { name, span } => Expr::Undeclared { name: crate::value::Text::new(name), span: *span },
         E::Invoke { object, method, args, span } => Expr::Invoke {
             object: boxed(object),
             method: Text::new(crate::value::Text::shared(method)),

@@ -24,7 +24,7 @@ fn add(a: Expr, b: Expr) -> Expr {
     Expr::Binary(BinaryOp::Add, Box::new(a), Box::new(b))
 }
 fn member(o: Expr, k: Expr) -> Expr {
-    Expr::Member(Box::new(o), Box::new(k))
+    Expr::Member { object: Box::new(o), key: Box::new(k), span: postc_ir::Site(None) }
 }
 fn invoke(o: Expr, m: &str, args: Vec<Expr>) -> Expr {
     Expr::Invoke { object: Box::new(o), method: m.into(), args, span: None }
@@ -76,7 +76,7 @@ fn arrays_join_push_index_and_length() {
     let body = vec![
         set(0, Expr::Array(vec![text("G1"), num(2.0)])),
         Stmt::Eval(invoke(local(0), "push", vec![add(text("X"), num(3.0))])),
-        Stmt::SetMember { object: local(0), key: num(4.0), value: text("F") },
+        Stmt::SetMember { object: local(0), key: num(4.0), value: text("F"), span: postc_ir::Site(None) },
         Stmt::Return(Some(add(
             add(
                 add(add(invoke(local(0), "join", vec![text(" ")]), text("|")), member(local(0), text("length"))),
@@ -98,8 +98,8 @@ fn objects_keep_their_order_and_walk_with_for_in() {
     let k = 4;
     let body = vec![
         set(0, Expr::Object(vec![("x".into(), num(1.0)), ("y".into(), num(2.0))])),
-        Stmt::SetMember { object: local(0), key: text("z"), value: num(3.0) },
-        Stmt::SetMember { object: local(0), key: text("x"), value: num(9.0) },
+        Stmt::SetMember { object: local(0), key: text("z"), value: num(3.0), span: postc_ir::Site(None) },
+        Stmt::SetMember { object: local(0), key: text("x"), value: num(9.0), span: postc_ir::Site(None) },
         set(1, text("")),
         set(keys, Expr::Builtin(Builtin::Keys, vec![local(0)])),
         set(i, num(0.0)),
@@ -160,6 +160,7 @@ fn methods_see_this_and_closures_their_captures() {
                 object: Expr::This,
                 key: text("n"),
                 value: add(member(Expr::This, text("n")), num(10.0)),
+                span: postc_ir::Site(None),
             },
             Stmt::Return(Some(add(text("N"), member(Expr::This, text("n"))))),
         ],
@@ -283,11 +284,21 @@ fn closure(f: u16) -> Expr {
 fn with_constructor(body: Vec<Stmt>) -> Post {
     let mut main = vec![
         set(0, closure(1)),
-        Stmt::SetMember { object: member(local(0), text("prototype")), key: text("get"), value: closure(2) },
+        Stmt::SetMember {
+            object: member(local(0), text("prototype")),
+            key: text("get"),
+            value: closure(2),
+            span: postc_ir::Site(None),
+        },
         set(1, Expr::Builtin(Builtin::Construct, vec![local(0), num(5.0)])),
     ];
     main.extend(body);
-    let ctor = function("F", 1, 1, vec![Stmt::SetMember { object: Expr::This, key: text("n"), value: local(0) }]);
+    let ctor = function(
+        "F",
+        1,
+        1,
+        vec![Stmt::SetMember { object: Expr::This, key: text("n"), value: local(0), span: postc_ir::Site(None) }],
+    );
     let get = function("get", 0, 0, vec![Stmt::Return(Some(member(Expr::This, text("n"))))]);
     post(vec![function("f", 0, 3, main), ctor, get])
 }

@@ -274,7 +274,7 @@ impl Printer<'_> {
                 let test = Some(self.expr(cond)?);
                 stmt(StmtKind::For { init: None, test, update, body: Box::new(block(self.stmts(body)?)) })
             }
-            Stmt::SetMember { object, key, value } => {
+            Stmt::SetMember { object, key, value, .. } => {
                 let target = member_or_index(self.expr(object)?, self.expr(key)?);
                 let assign = ExprKind::Assign {
                     op: AssignOp::Assign,
@@ -428,6 +428,9 @@ impl Printer<'_> {
             Expr::Regex { pattern, flags, .. } => {
                 js(ExprKind::Regex { pattern: pattern.clone(), flags: flags.clone() })
             }
+            // A name the post never defines: the name, which JavaScript
+            // reads as the runtime does (a ReferenceError when it runs).
+            Expr::Undeclared { name, .. } => js(ExprKind::Ident(name.clone())),
             Expr::Object(props) => {
                 let mut out = Vec::with_capacity(props.len());
                 for (k, v) in props {
@@ -440,7 +443,7 @@ impl Printer<'_> {
                 }
                 js(ExprKind::Object(out))
             }
-            Expr::Member(o, k) => member_or_index(self.expr(o)?, self.expr(k)?),
+            Expr::Member { object: o, key: k, .. } => member_or_index(self.expr(o)?, self.expr(k)?),
             Expr::Invoke { object, method: m, args, .. } => {
                 let args = self.exprs(args)?;
                 method(self.expr(object)?, m, args)

@@ -179,14 +179,14 @@ impl Engine<'_> {
                         self.exec(step, frame).map_err(|e| Self::in_loop(e, *span))?;
                     }
                 },
-                Stmt::SetMember { object, key, value } => {
+                Stmt::SetMember { object, key, value, span } => {
                     let o = self.eval(object, frame)?;
                     let k = self.eval(key, frame)?;
                     let v = self.eval(value, frame)?;
                     if self.is_global_object(&o) {
                         self.set_global_member(&k, v)?;
                     } else {
-                        objects::set_member(&o, &k, v)?;
+                        objects::set_member(&o, &k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
                 }
                 Stmt::Throw { value, span } => {
@@ -739,7 +739,14 @@ impl Engine<'_> {
             },
             // `list.length`, `drill.depth`, `axes[k]` of a local or a
             // global: read where the object is, no reference taken.
-            Expr::Member(o, k) if is_plain_leaf(o) && is_plain_leaf(k) => {
+            // A name the post never declares is a property of the global
+            // object when the post set one (`this._ = ...`), as JavaScript
+            // resolves it.
+            Expr::Undeclared { name, span } => match self.global_property(name) {
+                Some(v) => v,
+                None => return Err(at(objects::reference_error(name), span.0, "not defined")),
+            },
+            Expr::Member(o, k, span) if is_plain_leaf(o) && is_plain_leaf(k) => {
                 let read = {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
                     let object = plain_leaf(o, frame, &self.globals, &mut to);
@@ -747,20 +754,20 @@ impl Engine<'_> {
                     if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) }
                 };
                 match read {
-                    Some(v) => v?,
+                    Some(v) => v.map_err(|e| at(e, span.0, "this property"))?,
                     None => {
                         let k = self.eval(k, frame)?;
                         self.global_member(&k)?
                     }
                 }
             }
-            Expr::Member(o, k) => {
+            Expr::Member(o, k, span) => {
                 let mut o = self.eval(o, frame)?;
                 let k = self.eval(k, frame)?;
                 let v = if self.is_global_object(&o) {
                     self.global_member(&k)?
                 } else {
-                    objects::member(&o, &k, &self.protos)?
+                    objects::member(&o, &k, &self.protos).map_err(|e| at(e, span.0, "this property"))?
                 };
                 // An array made only to be read (`list.filter(f).length`)
                 // is kept to be made again.
@@ -939,17 +946,6 @@ impl Engine<'_> {
                         let keys = objects::keys(value, chain.then_some(&self.protos));
                         self.give_back(values);
                         return Ok(keys);
-                    }
-                    Builtin::Undeclared => {
-                        let name = values.first().map(Value::to_text).unwrap_or_else(|| crate::value::Text::new(""));
-                        self.give_back(values);
-                        // A name the post never declares is a property of
-                        // the global object when the post set one
-                        // (`this._ = ...`), as JavaScript resolves it.
-                        if let Some(v) = self.global_property(&name) {
-                            return Ok(v);
-                        }
-                        return Err(objects::reference_error(&name));
                     }
                     Builtin::JsString if matches!(values.first(), Some(Value::Object(_))) => {
                         let v = values.first().cloned().unwrap_or(Value::Undefined);
@@ -1648,6 +1644,16 @@ impl Engine<'_> {
     }
 }
 
+/// An error at the post text that made it (`span`), when it has no place
+/// of its own yet: the innermost place is the one to show.
+#[cold]
+fn at(e: Box<Diagnostic>, span: Option<Span>, label: &str) -> Box<Diagnostic> {
+    match span {
+        Some(span) if e.primary_span().is_none() => Box::new(e.at(span, label)),
+        _ => e,
+    }
+}
+
 /// An error a post function stopped with, placed: one with no place of
 /// its own in the function; one in the host's API (code compiled with
 /// the post) also at the first function of the post it passes through.
@@ -1656,6 +1662,15 @@ fn placed(post: &postc_ir::Post, function: &postc_ir::Function, e: Box<Diagnosti
         && let Some(span) = function.span
     {
         return Box::new(e.at(span, format!("in function `{}`", function.name)));
+    }
+    // An error placed in this function's own text: the function it is in,
+    // once, for the reader who has the post open.
+    if let Some(f) = function.span
+        && e.labels.len() == 1
+        && e.primary_span().is_some_and(|p| p.file == f.file && f.start <= p.start && p.end <= f.end)
+    {
+        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
+        return Box::new(e.also(start, format!("in function `{}`", function.name)));
     }
     if let Some(f) = function.span
         && post.info.host_file.is_some_and(|h| {

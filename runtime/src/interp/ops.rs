@@ -361,7 +361,6 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         // Only the interpreter constructs (it calls the function) and makes
         // objects with prototypes; they are never constants.
         Builtin::Construct
-        | Builtin::Undeclared
         | Builtin::Prototype
         | Builtin::CreateObject
         | Builtin::InstanceOf

@@ -186,7 +186,7 @@ fn made(
                 sets.push((*c, value(&items[0])?));
                 cells.push(*c);
             }
-            Stmt::SetMember { object: Expr::Local(c), key: Expr::Number(k), value: v }
+            Stmt::SetMember { object: Expr::Local(c), key: Expr::Number(k), value: v, .. }
                 if *k == 0.0 && cells.contains(c) =>
             {
                 sets.push((*c, value(v)?));
@@ -315,7 +315,7 @@ impl Specialiser<'_> {
     }
 
     fn expr(&mut self, e: &mut Expr) {
-        if let Expr::Member(o, key) = e
+        if let Expr::Member(o, key, _) = e
             && matches!(**key, Expr::Number(n) if n == 0.0)
             && let Some(g) = self.cell(o)
         {
@@ -340,7 +340,7 @@ impl Specialiser<'_> {
 
     fn stmts(&mut self, body: &mut [Stmt]) {
         for s in body {
-            if let Stmt::SetMember { object, key: Expr::Number(n), value } = s
+            if let Stmt::SetMember { object, key: Expr::Number(n), value, .. } = s
                 && *n == 0.0
                 && let Some(g) = self.cell(object)
             {
@@ -423,7 +423,7 @@ pub fn direct_calls(functions: &mut [exec::Function], handlers: &mut [Vec<Stmt>]
     let mut rewrite = |e: &mut Expr| {
         let (object, method) = match e {
             Expr::Invoke { object, method, .. } => (&**object, &**method),
-            Expr::Member(object, key) => match &**key {
+            Expr::Member(object, key, _) => match &**key {
                 Expr::Text(t) => (&**object, &**t),
                 _ => return,
             },

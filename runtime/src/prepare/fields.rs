@@ -479,7 +479,7 @@ impl Checker<'_> {
 
     fn expr(&mut self, e: &mut Expr) {
         match e {
-            Expr::Member(o, k) if self.access(o, key(k), false).is_some() => {
+            Expr::Member(o, k, _) if self.access(o, key(k), false).is_some() => {
                 if key(k).is_none() {
                     self.expr(k);
                 }
@@ -504,7 +504,7 @@ impl Checker<'_> {
     fn stmts(&mut self, body: &mut [Stmt]) {
         for s in body {
             match s {
-                Stmt::SetMember { object, key: k, value } => {
+                Stmt::SetMember { object, key: k, value, .. } => {
                     if self.access(object, key(k), false).is_none() {
                         self.expr(object);
                         self.expr(k);
@@ -567,7 +567,7 @@ impl Rewriter<'_> {
     fn expr(&self, e: &mut Expr) {
         e.for_each_operand_mut(|a| self.expr(a));
         let replaced = match e {
-            Expr::Member(o, k) => self.field(o, k).map(Expr::Global),
+            Expr::Member(o, k, _) => self.field(o, k).map(Expr::Global),
             Expr::Invoke { object, method, args, .. } => {
                 self.object(object).and_then(|c| c.method(method)).map(|f| Expr::Call(f, std::mem::take(args)))
             }

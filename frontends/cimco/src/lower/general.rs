@@ -46,8 +46,8 @@
 use std::collections::{HashMap, HashSet};
 
 use postc_ir::{
-    BinaryOp as IrBin, Body, Builtin, Expr as Ir, Function as IrFunction, FunctionId, LocalId, OutputRef, Place, Span,
-    Stmt as IrStmt, UnaryOp as IrUn,
+    BinaryOp as IrBin, Body, Builtin, Expr as Ir, Function as IrFunction, FunctionId, LocalId, OutputRef, Place, Site,
+    Span, Stmt as IrStmt, UnaryOp as IrUn,
 };
 
 use crate::ast::*;
@@ -116,7 +116,7 @@ impl<'c, 'a> Shared<'c, 'a> {
         if crate::fusion::api::is_declared(name) {
             return Err(why(at, format!("uses `{name}` of Fusion's host, which postc does not provide yet")));
         }
-        Ok(Ir::Builtin(Builtin::Undeclared, vec![Ir::Text(name.to_string())]))
+        Ok(Ir::Undeclared { name: name.to_string(), span: Site(Some(at)) })
     }
 
     /// The IR function of nested function `id` (added on first mention)
@@ -656,12 +656,12 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 out.push(IrStmt::Assign(Place::Local(i), Ir::Number(0.0)));
                 let target = Expr::new(ExprKind::Ident(name.name.clone()), name.span);
                 let t = self.name_target(&target)?;
-                let mut b = vec![set(t, Ir::Member(Box::new(Ir::Local(keys)), Box::new(Ir::Local(i))))];
+                let mut b = vec![set(t, member(Ir::Local(keys), Ir::Local(i), None))];
                 self.jumps.push(Jump::Loop);
                 let inner = self.nested_stmt(body);
                 self.jumps.pop();
                 b.extend(inner?);
-                let len = Ir::Member(Box::new(Ir::Local(keys)), Box::new(Ir::Text("length".into())));
+                let len = member(Ir::Local(keys), Ir::Text("length".into()), None);
                 out.push(IrStmt::While {
                     cond: Ir::Binary(IrBin::JsLt, Box::new(Ir::Local(i)), Box::new(len)),
                     body: b,
@@ -864,7 +864,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             && self.in_cell(name)
             && let Some(l) = self.local_of(name, target.span)?
         {
-            return Ok(Target::Member(Ir::Local(l), Ir::Number(0.0)));
+            return Ok(Target::Member(Ir::Local(l), Box::new(Ir::Number(0.0)), None));
         }
         Ok(Target::Place(self.simple_place(target)?))
     }
@@ -922,14 +922,14 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 }
                 let o = self.expr(object, pre)?;
                 let o = self.keep(o, pre);
-                Ok(Target::Member(o, Ir::Text(property.name.clone())))
+                Ok(Target::Member(o, Box::new(Ir::Text(property.name.clone())), Some(target.span)))
             }
             ExprKind::Index { object, index } => {
                 let o = self.expr(object, pre)?;
                 let o = self.keep(o, pre);
                 let k = self.expr(index, pre)?;
                 let k = self.keep(k, pre);
-                Ok(Target::Member(o, k))
+                Ok(Target::Member(o, Box::new(k), Some(target.span)))
             }
             _ => self.name_target(target),
         }
@@ -942,9 +942,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 pre.push(IrStmt::Assign(*p, v));
                 place_value(p)
             }
-            Target::Member(o, k) => {
-                pre.push(IrStmt::SetMember { object: o.clone(), key: k.clone(), value: v });
-                Ir::Member(Box::new(o.clone()), Box::new(k.clone()))
+            Target::Member(o, k, span) => {
+                pre.push(IrStmt::SetMember { object: o.clone(), key: (**k).clone(), value: v, span: Site(*span) });
+                member(o.clone(), (**k).clone(), *span)
             }
         }
     }
@@ -952,7 +952,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn read(&self, t: &Target) -> Ir {
         match t {
             Target::Place(p) => place_value(p),
-            Target::Member(o, k) => Ir::Member(Box::new(o.clone()), Box::new(k.clone())),
+            Target::Member(o, k, span) => member(o.clone(), (**k).clone(), *span),
         }
     }
 
@@ -1148,13 +1148,13 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     return Ok(Ir::Closure { function: self.shared.layout.top_fn[i], captures: vec![] });
                 }
                 let o = self.expr(object, pre)?;
-                Ir::Member(Box::new(o), Box::new(Ir::Text(property.name.clone())))
+                member(o, Ir::Text(property.name.clone()), Some(at))
             }
             ExprKind::Index { object, index } => {
                 let v = self.operands(&[object, index], pre)?;
                 let mut v = v.into_iter();
                 let (o, k) = (v.next().unwrap_or(Ir::Undefined), v.next().unwrap_or(Ir::Undefined));
-                Ir::Member(Box::new(o), Box::new(k))
+                member(o, k, Some(at))
             }
             ExprKind::Call { callee, args } => self.call(callee, args, at, pre)?,
             ExprKind::New { callee, args } => match &callee.kind {
@@ -1230,7 +1230,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     let v = self.operands(&[left, right], pre)?;
                     let mut v = v.into_iter();
                     let (a, f) = (v.next().unwrap_or(Ir::Undefined), v.next().unwrap_or(Ir::Undefined));
-                    let proto = Ir::Member(Box::new(f), Box::new(Ir::Text("prototype".into())));
+                    let proto = member(f, Ir::Text("prototype".into()), None);
                     Ir::Builtin(Builtin::InstanceOf, vec![a, proto])
                 }
             },
@@ -1495,10 +1495,16 @@ fn array_of(a: Vec<Ir>, at: Span) -> R<Ir> {
     }
 }
 
-/// Where an assignment stores.
+/// Where an assignment stores: a place, or an object, a key and the
+/// assignment's target in the post.
 enum Target {
     Place(Place),
-    Member(Ir, Ir),
+    Member(Ir, Box<Ir>, Option<Span>),
+}
+
+/// `object[key]`, `span` the member in the post.
+fn member(object: Ir, key: Ir, span: Option<Span>) -> Ir {
+    Ir::Member { object: Box::new(object), key: Box::new(key), span: Site(span) }
 }
 
 /// Whether `e` or an expression inside it (not inside a nested function)
@@ -1521,13 +1527,13 @@ fn any_expr(e: &Expr, found: fn(&ExprKind) -> bool) -> bool {
 fn set(t: Target, value: Ir) -> IrStmt {
     match t {
         Target::Place(p) => IrStmt::Assign(p, value),
-        Target::Member(object, key) => IrStmt::SetMember { object, key, value },
+        Target::Member(object, key, span) => IrStmt::SetMember { object, key: *key, value, span: Site(span) },
     }
 }
 
 /// Item 0 of a cell.
 fn cell_item(cell: Ir) -> Ir {
-    Ir::Member(Box::new(cell), Box::new(Ir::Number(0.0)))
+    member(cell, Ir::Number(0.0), None)
 }
 
 fn place_value(p: &Place) -> Ir {
