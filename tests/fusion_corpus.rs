@@ -498,8 +498,9 @@ fn check_names_host_api_postc_does_not_run_yet() {
     ]);
     let said = support::said(&run);
     assert!(!run.status.success() && said.contains("`redirectToFile`") && !out.exists(), "{said}");
-    // The error is in the host's JavaScript; it is also placed in the post.
-    assert!(said.contains("stub.cps:9:1") && said.contains("in the post's function `onClose`"), "{said}");
+    // The error is in the host's JavaScript; it is also placed at the
+    // post's statement that called it.
+    assert!(said.contains("stub.cps:10:3") && said.contains("the post's statement that led there"), "{said}");
 }
 
 /// The jet job (`corpus/toolpaths/jet_mm.ron`: a plasma torch cuts a hole

@@ -581,6 +581,29 @@ fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
     }
 }
 
+/// An error the host raises for the post (`error(message)`, a host method
+/// given what it cannot take) points at the post's statement that led
+/// there, line and column, as well as at the host's line.
+#[test]
+fn an_error_raised_in_the_host_points_at_the_posts_statement() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("stops.cps");
+    std::fs::write(
+        &post,
+        "description = \"stops\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function check(n) {\n  if (n > 2) {\n    error(\"too many: \" + n);\n  }\n}\n\
+         function onOpen() {\n  check(1);\n  check(3);\n}\nfunction onClose() {}\n",
+    )
+    .expect("write the post");
+    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    let stderr = String::from_utf8_lossy(&node.stderr);
+    assert!(!node.status.success() && stderr.contains("too many: 3"), "Node.js: {stderr}");
+    let said = postc_stops(&post, &job);
+    assert!(said.contains("error[RT036]") && said.contains("too many: 3"), "{said}");
+    assert!(said.contains("stops.cps:5:5"), "not at the post's `error(...)`:\n{said}");
+    assert!(said.contains("the post's statement that led there"), "{said}");
+}
+
 /// Posts `post` over `job` with `postc post -o`: the run must fail with
 /// exit 1 and write no program. What postc said.
 fn postc_stops(post: &Path, job: &Path) -> String {

@@ -108,11 +108,15 @@ pub enum Stmt {
     /// caught.
     Try { body: Vec<Stmt>, catch: Option<(LocalId, Vec<Stmt>)>, finally: Vec<Stmt> },
     /// Where the text a handler writes next comes from: a CIMCO entry
-    /// point's `return` statement, placed before it. It does nothing when
-    /// the post runs; `--trace` reports the blocks the handler writes after
-    /// it at this span (the latest one the handler passed), so that a line
-    /// names the statement that returned it even when the function was
-    /// inlined into the handler.
+    /// point's `return` statement, placed before it; a statement of a
+    /// Fusion post's own text that calls a function, placed before it. It
+    /// does nothing when the post runs; `--trace` reports the blocks the
+    /// handler writes after it at this span (the latest one the handler
+    /// passed, so that a line names the statement that returned it even
+    /// when the function was inlined into the handler; under a host's API
+    /// compiled with the post, the latest of the innermost post function
+    /// still running), and an error the host's code raises under it is
+    /// also placed there.
     Origin(Span),
 }
 

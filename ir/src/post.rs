@@ -846,7 +846,17 @@ impl Post {
                         branches.iter_mut().for_each(|(_, b)| drop_origins(b));
                         drop_origins(otherwise);
                     }
-                    Stmt::While { body, .. } => drop_origins(body),
+                    Stmt::While { body, step, .. } => {
+                        drop_origins(body);
+                        drop_origins(step);
+                    }
+                    Stmt::Try { body, catch, finally } => {
+                        drop_origins(body);
+                        if let Some((_, c)) = catch {
+                            drop_origins(c);
+                        }
+                        drop_origins(finally);
+                    }
                     _ => {}
                 }
             }

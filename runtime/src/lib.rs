@@ -164,7 +164,7 @@ pub fn run<S: EventSource + ?Sized>(
         out.write_windows_1252();
     }
     let mut engine = Engine::new(post, &code, machine, out);
-    engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink)));
+    engine.trace = options.trace.take().map(|sink| Box::new(trace::Tracer::new(sink, post.info.host_file)));
     engine.profile = options.profile.take();
     let mut dispatch: Box<dyn Dispatcher> = match post.info.dispatch {
         Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),

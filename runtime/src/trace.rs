@@ -11,7 +11,7 @@
 //! innermost function's. A run without a
 //! tracer pays one branch per statement.
 
-use postc_ir::{FunctionId, HandlerKey, Span};
+use postc_ir::{FileId, FunctionId, HandlerKey, Span};
 
 /// One output line and where it came from.
 #[derive(Clone, Debug, PartialEq)]
@@ -48,15 +48,23 @@ pub struct Tracer {
     pub(crate) handler: Option<(HandlerKey, Option<Span>)>,
     pub(crate) event: Option<u64>,
     pub(crate) event_span: Option<Span>,
-    /// The latest [`postc_ir::Stmt::Origin`] the running handler passed.
+    /// The latest [`postc_ir::Stmt::Origin`] the running handler passed;
+    /// with a host's API compiled with the post, the latest of the
+    /// innermost post function still running (its callees' are dropped
+    /// when they return, [`Tracer::enter`], [`Tracer::leave`]).
     pub(crate) origin: Option<Span>,
+    /// The caller's origin for each function in `calls`.
+    origins: Vec<Option<Span>>,
+    /// The host's API compiled with the post (Fusion's): a line its code
+    /// writes is the post statement's that called it.
+    host_file: Option<FileId>,
     /// Blocks handed to the sink so far.
     traced: u64,
     part: usize,
 }
 
 impl Tracer {
-    pub fn new(sink: TraceSink) -> Tracer {
+    pub fn new(sink: TraceSink, host_file: Option<FileId>) -> Tracer {
         Tracer {
             sink,
             calls: Vec::new(),
@@ -64,8 +72,28 @@ impl Tracer {
             event: None,
             event_span: None,
             origin: None,
+            origins: Vec::new(),
+            host_file,
             traced: 0,
             part: 0,
+        }
+    }
+
+    /// A post function is called.
+    pub(crate) fn enter(&mut self, f: FunctionId, span: Option<Span>) {
+        self.calls.push((f, span));
+        self.origins.push(self.origin);
+    }
+
+    /// The innermost post function returns: under a host's API compiled
+    /// with the post, the statement that called it is the current one
+    /// again (a CNC-Calc entry point's `return` stays the origin of the
+    /// text the engine writes after it returns).
+    pub(crate) fn leave(&mut self) {
+        self.calls.pop();
+        let caller = self.origins.pop().flatten();
+        if self.host_file.is_some() {
+            self.origin = caller;
         }
     }
 
@@ -76,7 +104,11 @@ impl Tracer {
         if new == 0 {
             return;
         }
+        // A line the host's code wrote (Fusion's `writeln`) is the post
+        // statement's that called it.
+        let in_host = |s: &Span| Some(s.file) == self.host_file;
         let span = span
+            .filter(|s| !in_host(s) || self.origin.is_none_or(|o| in_host(&o)))
             .or(self.origin)
             .or_else(|| self.calls.last().and_then(|c| c.1))
             .or(self.handler.as_ref().and_then(|h| h.1));

@@ -100,9 +100,40 @@ impl Engine<'_> {
         }
     }
 
-    /// Runs statements with a frame of locals.
+    /// Runs statements with a frame of locals. An error raised in the
+    /// host's API under one of them gets, once, the place of the post's
+    /// statement that led there: the [`Stmt::Origin`] before it.
     #[doc(hidden)]
     pub fn exec(&mut self, stmts: &[Stmt], frame: &mut Vec<Value>) -> Result<Flow> {
+        let mut rest = stmts.iter();
+        match self.exec_from(stmts, &mut rest, frame) {
+            Err(e) => Err(self.at_origin(e, &stmts[..stmts.len() - rest.len()])),
+            flow => flow,
+        }
+    }
+
+    /// The origin of the last statement of `ran`, for an error raised in
+    /// the host's API: the latest [`Stmt::Origin`] among them, in the
+    /// post's own text.
+    #[cold]
+    fn at_origin(&self, e: Box<Diagnostic>, ran: &[Stmt]) -> Box<Diagnostic> {
+        let Some(host) = self.post.info.host_file else { return e };
+        if !e.primary_span().is_some_and(|p| p.file == host) || e.labels.iter().any(|l| l.span.file != host) {
+            return e;
+        }
+        match ran.iter().rev().find_map(|s| if let Stmt::Origin(span) = s { Some(*span) } else { None }) {
+            Some(span) if span.file != host => Box::new(e.also(span, "the post's statement that led there")),
+            _ => e,
+        }
+    }
+
+    #[inline(always)]
+    fn exec_from<'s>(
+        &mut self,
+        stmts: &'s [Stmt],
+        rest: &mut std::slice::Iter<'s, Stmt>,
+        frame: &mut Vec<Value>,
+    ) -> Result<Flow> {
         // Every statement costs one step. The steps of a block are counted
         // when it is entered, and those of the statements a jump skips are
         // given back when it leaves: a block run to its end costs what it
@@ -114,7 +145,6 @@ impl Engine<'_> {
             return Err(Box::new(self.budget_error(None)));
         }
         let tracing = self.trace.is_some();
-        let mut rest = stmts.iter();
         while let Some(stmt) = rest.next() {
             match stmt {
                 Stmt::Assign(Place::Local(i), e) => {
@@ -790,7 +820,7 @@ impl Engine<'_> {
                         &empty
                     }
                 };
-                self.invoke(o, name, args, *span)?
+                self.invoke(o, name, args, *span).map_err(|e| called_from(&self.post, e, *span))?
             }
             // A function that captures nothing is one value however often
             // it is made: a top-level function is one object in
@@ -1334,7 +1364,7 @@ impl Engine<'_> {
             }));
         }
         if let Some(t) = self.trace.as_deref_mut() {
-            t.calls.push((f, function.span));
+            t.enter(f, function.span);
         }
         if let Some(p) = self.profile.as_deref_mut() {
             p.enter(crate::profile::Frame::Function(f));
@@ -1391,7 +1421,7 @@ impl Engine<'_> {
             // Blocks a script wrote belong to the function that ran it.
             self.trace_after(None);
             if let Some(t) = self.trace.as_deref_mut() {
-                t.calls.pop();
+                t.leave();
             }
         }
         self.depth -= 1;
@@ -1650,6 +1680,23 @@ impl Engine<'_> {
 fn at(e: Box<Diagnostic>, span: Option<Span>, label: &str) -> Box<Diagnostic> {
     match span {
         Some(span) if e.primary_span().is_none() => Box::new(e.at(span, label)),
+        _ => e,
+    }
+}
+
+/// An error raised in the host's API (code compiled with the post) that a
+/// method call in the post's own text led to: that call, once, as where
+/// the post went wrong.
+#[cold]
+fn called_from(post: &postc_ir::Post, e: Box<Diagnostic>, span: Option<Span>) -> Box<Diagnostic> {
+    match (span, post.info.host_file) {
+        (Some(span), Some(host))
+            if span.file != host
+                && e.primary_span().is_some_and(|p| p.file == host)
+                && !e.labels.iter().any(|l| l.span.file != host) =>
+        {
+            Box::new(e.also(span, "the post's call that led there"))
+        }
         _ => e,
     }
 }

@@ -412,11 +412,24 @@ function isSameDirection(a, b) {
   return l > 0 && Math.abs(Vector.dot(a, b) / l - 1) < 1e-9;
 }
 
-// A 3x3 matrix: rows as vectors.
+// A 3x3 matrix: rows as vectors. The declarations' constructors: none
+// (the identity), a scale (the identity times it), three vectors, an
+// array of three, and an axis and an angle (the rotation by the angle
+// about the axis, right-handed, as `Matrix.getXRotation` turns about X).
 function Matrix(a, b, c) {
   var rows;
   if (a === undefined) {
     rows = [new Vector(1, 0, 0), new Vector(0, 1, 0), new Vector(0, 0, 1)];
+  } else if (typeof a == "number" && b === undefined) {
+    rows = [new Vector(a, 0, 0), new Vector(0, a, 0), new Vector(0, 0, a)];
+  } else if (typeof b == "number") {
+    var k = __vector(a).getNormalized();
+    var cos = Math.cos(b), sin = Math.sin(b), t = 1 - cos;
+    rows = [
+      new Vector(cos + k.x * k.x * t, k.x * k.y * t - k.z * sin, k.x * k.z * t + k.y * sin),
+      new Vector(k.y * k.x * t + k.z * sin, cos + k.y * k.y * t, k.y * k.z * t - k.x * sin),
+      new Vector(k.z * k.x * t - k.y * sin, k.z * k.y * t + k.x * sin, cos + k.z * k.z * t)
+    ];
   } else if (b === undefined) {
     rows = [__vector(a[0]), __vector(a[1]), __vector(a[2])];
   } else {

@@ -589,6 +589,13 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         if self.shared.setup.done.contains(&s.span.start) {
             return Ok(());
         }
+        // A statement of a Fusion post's own text that calls a function
+        // (the host's API, most of them) is marked with its place: an
+        // error raised in the host under it points back at it, and
+        // `--trace` gives it as where the lines it writes come from.
+        if self.shared.fusion && Some(s.span.file) == self.shared.post_file && calls(s) {
+            out.push(IrStmt::Origin(s.span));
+        }
         match &s.kind {
             StmtKind::Var(ds) => self.declare(ds, out)?,
             StmtKind::Function(_) => {}
@@ -1505,6 +1512,17 @@ enum Target {
 /// `object[key]`, `span` the member in the post.
 fn member(object: Ir, key: Ir, span: Option<Span>) -> Ir {
     Ir::Member { object: Box::new(object), key: Box::new(key), span: Site(span) }
+}
+
+/// Whether a simple statement (an expression, a declaration, a `return`,
+/// a `throw`) calls a function or makes an object with `new`.
+fn calls(s: &Stmt) -> bool {
+    let call = |e: &Expr| any_expr(e, |k| matches!(k, ExprKind::Call { .. } | ExprKind::New { .. }));
+    match &s.kind {
+        StmtKind::Expr(e) | StmtKind::Return(Some(e)) | StmtKind::Throw(e) => call(e),
+        StmtKind::Var(ds) => ds.iter().any(|d| d.init.as_ref().is_some_and(call)),
+        _ => false,
+    }
 }
 
 /// Whether `e` or an expression inside it (not inside a nested function)
