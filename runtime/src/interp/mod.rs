@@ -820,7 +820,7 @@ impl Engine<'_> {
                         &empty
                     }
                 };
-                self.invoke(o, name, args, *span).map_err(|e| called_from(&self.post, e, *span))?
+                self.invoke(o, name, args, *span).map_err(|e| called_from(self.post, e, *span))?
             }
             // A function that captures nothing is one value however often
             // it is made: a top-level function is one object in
