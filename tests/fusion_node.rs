@@ -531,7 +531,8 @@ fn a_method_on_no_prototype_chain_stops_the_post_at_its_call() {
 }
 
 /// JavaScript's errors in a post's own code: Node.js throws each, and
-/// postc stops at the expression that raised it, line and column, with the
+/// postc stops at the expression that raised it (at the statement, for a
+/// call of a value that is no function), line and column, with the
 /// function it is in, writing nothing.
 #[test]
 fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
@@ -552,6 +553,7 @@ fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
             "cannot read property 'k' of undefined",
             "6:11",
         ),
+        ("a local that holds no function", "a(3);", "a is not a function", "undefined is not a function", "6:3"),
         (
             "an undeclared name",
             "writeln(nothingHere + 1);",

@@ -1460,8 +1460,8 @@ declare_codes! {
     /// what is not a function, a method a value does not have, a name the post never defines
     /// (`ReferenceError`). A `try` catches it; uncaught, the post stops, and the message points at
     /// the expression that raised it (the property read or set, the method call, the name), line
-    /// and column, with the function it is in; a call of a local that holds no function points at
-    /// the function.
+    /// and column, with the function it is in; a call of a value that is no function points at
+    /// its statement (in a Fusion post; at the function in a CIMCO post).
     RT037: Error, "a JavaScript type error: a property of undefined, a call of what is not a function, a method a value lacks",
         fix = "Correct the post where the message says: check the value before using it.";
     /// postc's regular expressions keep no `lastIndex`, so what reads or moves it is refused

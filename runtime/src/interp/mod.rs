@@ -112,16 +112,23 @@ impl Engine<'_> {
         }
     }
 
-    /// The origin of the last statement of `ran`, for an error raised in
-    /// the host's API: the latest [`Stmt::Origin`] among them, in the
-    /// post's own text.
+    /// The origin of the last statement of `ran` (the latest
+    /// [`Stmt::Origin`] among them, in the post's own text) for an error
+    /// raised in the host's API under it, or for one with no place of its
+    /// own (a call of a value that is no function).
     #[cold]
     fn at_origin(&self, e: Box<Diagnostic>, ran: &[Stmt]) -> Box<Diagnostic> {
         let Some(host) = self.post.info.host_file else { return e };
-        if !e.primary_span().is_some_and(|p| p.file == host) || e.labels.iter().any(|l| l.span.file != host) {
+        let placed = match e.primary_span() {
+            None => false,
+            Some(p) if p.file == host => e.labels.iter().any(|l| l.span.file != host),
+            Some(_) => true,
+        };
+        if placed {
             return e;
         }
         match ran.iter().rev().find_map(|s| if let Stmt::Origin(span) = s { Some(*span) } else { None }) {
+            Some(span) if span.file != host && e.primary_span().is_none() => Box::new(e.at(span, "in this statement")),
             Some(span) if span.file != host => Box::new(e.also(span, "the post's statement that led there")),
             _ => e,
         }
