@@ -841,24 +841,7 @@ impl Post {
         fn drop_origins(stmts: &mut Vec<Stmt>) {
             stmts.retain(|s| !matches!(s, Stmt::Origin(_)));
             for s in stmts {
-                match s {
-                    Stmt::If { branches, otherwise } => {
-                        branches.iter_mut().for_each(|(_, b)| drop_origins(b));
-                        drop_origins(otherwise);
-                    }
-                    Stmt::While { body, step, .. } => {
-                        drop_origins(body);
-                        drop_origins(step);
-                    }
-                    Stmt::Try { body, catch, finally } => {
-                        drop_origins(body);
-                        if let Some((_, c)) = catch {
-                            drop_origins(c);
-                        }
-                        drop_origins(finally);
-                    }
-                    _ => {}
-                }
+                crate::visit::for_each_body_mut(s, drop_origins);
             }
         }
         drop_origins(&mut self.init);

@@ -76,6 +76,29 @@ pub fn walk_stmt<V: Visit + ?Sized>(v: &mut V, stmt: &Stmt) {
     }
 }
 
+/// Calls `f` on each statement list nested in `stmt` (a branch, a loop's
+/// body and update, a `try`'s blocks).
+pub fn for_each_body_mut(stmt: &mut Stmt, mut f: impl FnMut(&mut Vec<Stmt>)) {
+    match stmt {
+        Stmt::If { branches, otherwise } => {
+            branches.iter_mut().for_each(|(_, b)| f(b));
+            f(otherwise);
+        }
+        Stmt::While { body, step, .. } => {
+            f(body);
+            f(step);
+        }
+        Stmt::Try { body, catch, finally } => {
+            f(body);
+            if let Some((_, handler)) = catch {
+                f(handler);
+            }
+            f(finally);
+        }
+        _ => {}
+    }
+}
+
 pub fn walk_piece<V: Visit + ?Sized>(v: &mut V, piece: &Piece) {
     if let Piece::Expr(e) = piece {
         v.visit_expr(e);
