@@ -606,6 +606,32 @@ fn an_error_raised_in_the_host_points_at_the_posts_statement() {
     assert!(said.contains("the post's statement that led there"), "{said}");
 }
 
+/// The machine angles of the top are 0 on any machine; asked for those of
+/// another direction on a machine with rotary axes, which postc's host
+/// does not model (docs/fusion.md, choice 39), the post stops with the
+/// function named at its call, under Node.js's host as under postc.
+#[test]
+fn machine_angles_of_a_tilted_direction_stop_the_post_with_the_function_named() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("tilted.cps");
+    std::fs::write(
+        &post,
+        "description = \"tilted\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function onOpen() {\n  var c = createAxis({coordinate: 2, table: true, axis: [0, 0, 1], cyclic: true});\n\
+         machineConfiguration = new MachineConfiguration(c);\n\
+         var top = machineConfiguration.getABC(new Matrix());\n  writeln(\"C\" + top.z);\n\
+         var tilted = machineConfiguration.getABC(new Matrix(new Vector(0, 1, 0), 0.5));\n}\n\
+         function onClose() {}\n",
+    )
+    .expect("write the post");
+    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    let stderr = String::from_utf8_lossy(&node.stderr);
+    assert!(!node.status.success() && stderr.contains("MachineConfiguration.getABC"), "Node.js: {stderr}");
+    let said = postc_stops(&post, &job);
+    assert!(said.contains("error[RT036]") && said.contains("`MachineConfiguration.getABC`"), "{said}");
+    assert!(said.contains("tilted.cps:8:14"), "not at the post's call:\n{said}");
+}
+
 /// Posts `post` over `job` with `postc post -o`: the run must fail with
 /// exit 1 and write no program. What postc said.
 fn postc_stops(post: &Path, job: &Path) -> String {

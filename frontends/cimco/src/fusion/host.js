@@ -1232,8 +1232,11 @@ function __Axis() {
   this.getTCP = function () { return false; };
 }
 
-// A machine with no rotary axis: what `new MachineConfiguration()` gives.
+// A machine as postc's host has it: its rotary axes (`new
+// MachineConfiguration(b, c)`) are kept but not modelled, so it answers as
+// a machine without them (docs/fusion.md, choice 39).
 function MachineConfiguration() {
+  this.rotary = arguments.length > 0 && arguments[0] !== undefined && arguments[0] !== null;
   this.vendor = "";
   this.model = "";
   this.description = "";
@@ -1277,7 +1280,10 @@ function MachineConfiguration() {
   this.isABCSupported = function (abc) { return true; };
   this.getTableABC = function (abc) { return new Vector(0, 0, 0); };
   this.getOptimizedPosition = function (p, abc, tcp, options, verbose) { return __vector(p); };
-  this.getABCByDirectionBoth = function (d) { return [new Vector(0, 0, 0), new Vector(0, 0, 0)]; };
+  this.getABCByDirectionBoth = function (d) {
+    __topOnly(this, d, "getABCByDirectionBoth");
+    return [new Vector(0, 0, 0), new Vector(0, 0, 0)];
+  };
   this.getRetractPosition = function () { return new Vector(0, 0, 0); };
   this.getMultiAxisFeedrateMode = function () { return FEED_FPM; };
   this.getMultiAxisFeedrateOutputTolerance = function () { return 0; };
@@ -1305,7 +1311,10 @@ function MachineConfiguration() {
   this.getABCByPreference = function () { return new Vector(0, 0, 0); };
   this.getDirection = function (abc) { return new Vector(0, 0, 1); };
   this.getOrientation = function (abc) { return new Matrix(); };
-  this.getABC = function (m) { return new Vector(0, 0, 0); };
+  this.getABC = function (m) {
+    __topOnly(this, m === undefined ? new Vector(0, 0, 1) : m.getForward(), "getABC");
+    return new Vector(0, 0, 0);
+  };
   this.getPreferredABC = function (abc) { return abc; };
   this.isSupported = function (m) { return true; };
   this.enableMachineRewinds = function () {};
@@ -1329,6 +1338,15 @@ function MachineConfiguration() {
 machineConfiguration = new MachineConfiguration();
 function createAxis(specifiers) {
   return { isEnabled: function () { return true; }, getCoordinate: function () { return 0; } };
+}
+// The machine angles of the top are 0 on any machine; those of another
+// direction on a machine with rotary axes need its kinematics, which
+// postc does not model: the post stops with the function named.
+function __topOnly(machine, d, name) {
+  if (machine.rotary && !(Math.abs(d.x) < 1e-9 && Math.abs(d.y) < 1e-9 && d.z > 0)) {
+    error("postc does not model a machine's rotary kinematics yet: `MachineConfiguration." + name +
+      "` of a direction other than the top's (docs/fusion.md, choice 39)");
+  }
 }
 
 // ---- Circular moves (the current `onCircular` call) ----
