@@ -513,19 +513,18 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
 #[test]
 fn a_method_on_no_prototype_chain_stops_the_post_at_its_call() {
     let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
-    let post = folder.path().join("missing.cps");
-    std::fs::write(
-        &post,
+    let said = both_stop(
+        folder.path(),
+        "missing.cps",
         "description = \"missing\";\ncapabilities = CAPABILITY_MILLING;\n\
          function Tool(n) { this.n = n; }\nTool.prototype.get = function () { return this.n; };\n\
          function onOpen() {\n  var t = new Tool(1);\n  writeln(\"T\" + t.get());\n  writeln(t.put(2));\n}\n\
          function onClose() {}\n",
-    )
-    .expect("write the post");
-    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-    let stderr = String::from_utf8_lossy(&node.stderr);
-    assert!(!node.status.success() && stderr.contains("t.put is not a function"), "Node.js: {stderr}");
-    let said = postc_stops(&post, &job);
+        &job,
+        &jsonl,
+        &script,
+        "t.put is not a function",
+    );
     assert!(said.contains("error[RT037]: TypeError: the object has no method 'put'"), "{said}");
     assert!(said.contains("missing.cps:8:"), "not at the call's line:\n{said}");
 }
@@ -563,20 +562,12 @@ fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
         ),
     ];
     for (i, (what, line, node_says, postc_says, at)) in cases.into_iter().enumerate() {
-        let post = folder.path().join(format!("raises{i}.cps"));
-        std::fs::write(
-            &post,
-            format!(
-                "description = \"raises\";\ncapabilities = CAPABILITY_MILLING;\n\
-                 function helper() {{\n  var a;\n  writeln(\"x\");\n  {line}\n}}\n\
-                 function onOpen() {{\n  helper();\n}}\nfunction onClose() {{}}\n"
-            ),
-        )
-        .expect("write the post");
-        let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-        let stderr = String::from_utf8_lossy(&node.stderr);
-        assert!(!node.status.success() && stderr.contains(node_says), "{what}: Node.js: {stderr}");
-        let said = postc_stops(&post, &job);
+        let text = format!(
+            "description = \"raises\";\ncapabilities = CAPABILITY_MILLING;\n\
+             function helper() {{\n  var a;\n  writeln(\"x\");\n  {line}\n}}\n\
+             function onOpen() {{\n  helper();\n}}\nfunction onClose() {{}}\n"
+        );
+        let said = both_stop(folder.path(), &format!("raises{i}.cps"), &text, &job, &jsonl, &script, node_says);
         assert!(said.contains("error[RT037]") && said.contains(postc_says), "{what}: {said}");
         assert!(said.contains(&format!("raises{i}.cps:{at}")), "{what}: not at {at}:\n{said}");
         assert!(said.contains("in function `helper`"), "{what}: the function it is in:\n{said}");
@@ -589,18 +580,17 @@ fn a_javascript_error_stops_the_post_at_the_expression_that_raised_it() {
 #[test]
 fn an_error_raised_in_the_host_points_at_the_posts_statement() {
     let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
-    let post = folder.path().join("stops.cps");
-    std::fs::write(
-        &post,
+    let said = both_stop(
+        folder.path(),
+        "stops.cps",
         "description = \"stops\";\ncapabilities = CAPABILITY_MILLING;\n\
          function check(n) {\n  if (n > 2) {\n    error(\"too many: \" + n);\n  }\n}\n\
          function onOpen() {\n  check(1);\n  check(3);\n}\nfunction onClose() {}\n",
-    )
-    .expect("write the post");
-    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-    let stderr = String::from_utf8_lossy(&node.stderr);
-    assert!(!node.status.success() && stderr.contains("too many: 3"), "Node.js: {stderr}");
-    let said = postc_stops(&post, &job);
+        &job,
+        &jsonl,
+        &script,
+        "too many: 3",
+    );
     assert!(said.contains("error[RT036]") && said.contains("too many: 3"), "{said}");
     assert!(said.contains("stops.cps:5:5"), "not at the post's `error(...)`:\n{said}");
     assert!(said.contains("the post's statement that led there"), "{said}");
@@ -613,23 +603,42 @@ fn an_error_raised_in_the_host_points_at_the_posts_statement() {
 #[test]
 fn machine_angles_of_a_tilted_direction_stop_the_post_with_the_function_named() {
     let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
-    let post = folder.path().join("tilted.cps");
-    std::fs::write(
-        &post,
+    let said = both_stop(
+        folder.path(),
+        "tilted.cps",
         "description = \"tilted\";\ncapabilities = CAPABILITY_MILLING;\n\
          function onOpen() {\n  var c = createAxis({coordinate: 2, table: true, axis: [0, 0, 1], cyclic: true});\n\
          machineConfiguration = new MachineConfiguration(c);\n\
          var top = machineConfiguration.getABC(new Matrix());\n  writeln(\"C\" + top.z);\n\
          var tilted = machineConfiguration.getABC(new Matrix(new Vector(0, 1, 0), 0.5));\n}\n\
          function onClose() {}\n",
-    )
-    .expect("write the post");
-    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-    let stderr = String::from_utf8_lossy(&node.stderr);
-    assert!(!node.status.success() && stderr.contains("MachineConfiguration.getABC"), "Node.js: {stderr}");
-    let said = postc_stops(&post, &job);
+        &job,
+        &jsonl,
+        &script,
+        "MachineConfiguration.getABC",
+    );
     assert!(said.contains("error[RT036]") && said.contains("`MachineConfiguration.getABC`"), "{said}");
     assert!(said.contains("tilted.cps:8:14"), "not at the post's call:\n{said}");
+}
+
+/// Writes `text` as the post `name` in `folder` and runs it under Node.js,
+/// which must stop saying `node_says`, and under postc, which must stop
+/// too ([`postc_stops`]): what postc said.
+fn both_stop(
+    folder: &Path,
+    name: &str,
+    text: &str,
+    job: &Path,
+    jsonl: &Path,
+    script: &Path,
+    node_says: &str,
+) -> String {
+    let post = folder.join(name);
+    std::fs::write(&post, text).expect("write the post");
+    let node = Command::new("node").arg(script).arg(&post).arg(jsonl).output().expect("run node");
+    let stderr = String::from_utf8_lossy(&node.stderr);
+    assert!(!node.status.success() && stderr.contains(node_says), "{name}: Node.js: {stderr}");
+    postc_stops(&post, job)
 }
 
 /// Posts `post` over `job` with `postc post -o`: the run must fail with
