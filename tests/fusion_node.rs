@@ -618,7 +618,7 @@ fn machine_angles_of_a_tilted_direction_stop_the_post_with_the_function_named() 
         "MachineConfiguration.getABC",
     );
     assert!(said.contains("error[RT036]") && said.contains("`MachineConfiguration.getABC`"), "{said}");
-    assert!(said.contains("tilted.cps:8:14"), "not at the post's call:\n{said}");
+    assert!(said.contains("tilted.cps:8:1"), "not at the post's statement:\n{said}");
 }
 
 /// Writes `text` as the post `name` in `folder` and runs it under Node.js,

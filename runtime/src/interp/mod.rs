@@ -119,12 +119,7 @@ impl Engine<'_> {
     #[cold]
     fn at_origin(&self, e: Box<Diagnostic>, ran: &[Stmt]) -> Box<Diagnostic> {
         let Some(host) = self.post.info.host_file else { return e };
-        let placed = match e.primary_span() {
-            None => false,
-            Some(p) if p.file == host => e.labels.iter().any(|l| l.span.file != host),
-            Some(_) => true,
-        };
-        if placed {
+        if e.primary_span().is_some() && !in_host_only(&e, host) {
             return e;
         }
         match ran.iter().rev().find_map(|s| if let Stmt::Origin(span) = s { Some(*span) } else { None }) {
@@ -827,7 +822,7 @@ impl Engine<'_> {
                         &empty
                     }
                 };
-                self.invoke(o, name, args, *span).map_err(|e| called_from(self.post, e, *span))?
+                self.invoke(o, name, args, *span)?
             }
             // A function that captures nothing is one value however often
             // it is made: a top-level function is one object in
@@ -1691,21 +1686,16 @@ fn at(e: Box<Diagnostic>, span: Option<Span>, label: &str) -> Box<Diagnostic> {
     }
 }
 
-/// An error raised in the host's API (code compiled with the post) that a
-/// method call in the post's own text led to: that call, once, as where
-/// the post went wrong.
-#[cold]
-fn called_from(post: &postc_ir::Post, e: Box<Diagnostic>, span: Option<Span>) -> Box<Diagnostic> {
-    match (span, post.info.host_file) {
-        (Some(span), Some(host))
-            if span.file != host
-                && e.primary_span().is_some_and(|p| p.file == host)
-                && !e.labels.iter().any(|l| l.span.file != host) =>
-        {
-            Box::new(e.also(span, "the post's call that led there"))
-        }
-        _ => e,
-    }
+/// Whether an error is placed in the host's API only (`host`, the code
+/// compiled with the post) and nowhere in the post's own text.
+fn in_host_only(e: &Diagnostic, host: postc_ir::FileId) -> bool {
+    e.primary_span().is_some_and(|p| p.file == host) && e.labels.iter().all(|l| l.span.file == host)
+}
+
+/// The first bytes of a function's text (`function`), where a label names
+/// the function an error is in.
+fn header(f: Span) -> Span {
+    Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end))
 }
 
 /// An error a post function stopped with, placed: one with no place of
@@ -1723,18 +1713,12 @@ fn placed(post: &postc_ir::Post, function: &postc_ir::Function, e: Box<Diagnosti
         && e.labels.len() == 1
         && e.primary_span().is_some_and(|p| p.file == f.file && f.start <= p.start && p.end <= f.end)
     {
-        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
-        return Box::new(e.also(start, format!("in function `{}`", function.name)));
+        return Box::new(e.also(header(f), format!("in function `{}`", function.name)));
     }
     if let Some(f) = function.span
-        && post.info.host_file.is_some_and(|h| {
-            f.file != h
-                && e.primary_span().is_some_and(|p| p.file == h)
-                && !e.labels.iter().any(|l| l.span.file == f.file)
-        })
+        && post.info.host_file.is_some_and(|h| f.file != h && in_host_only(&e, h))
     {
-        let start = Span::new(f.file, f.start, f.start.saturating_add(8).min(f.end));
-        return Box::new(e.also(start, format!("in the post's function `{}`", function.name)));
+        return Box::new(e.also(header(f), format!("in the post's function `{}`", function.name)));
     }
     e
 }
