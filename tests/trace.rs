@@ -285,3 +285,45 @@ fn cimco_lines_name_the_return_that_wrote_them() {
     }
     assert!(rapid > 0 && feed > 0, "{program}");
 }
+
+/// A Fusion post's lines are written by the host's `writeln`: each is
+/// traced to the post statement that called it, in the innermost post
+/// function still running (`writeln(formatComment(text))` in the post's
+/// `writeComment`, not the `return` of `formatComment` that ran last, nor
+/// the host's own line).
+#[test]
+fn fusion_lines_name_the_post_statement_that_wrote_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("helpers.cps");
+    std::fs::write(
+        &post,
+        "description = \"helpers\";\ncapabilities = CAPABILITY_MILLING;\n\
+         var xOutput = createVariable({prefix: \"X\"}, createFormat({decimals: 3}));\n\
+         function formatComment(text) {\n  return \"(\" + text + \")\";\n}\n\
+         function writeComment(text) {\n  writeln(formatComment(text));\n}\n\
+         function onOpen() {\n  writeComment(\"start\");\n}\n\
+         function onLinear(x, y, z, feed) {\n  writeln(\"G1 \" + xOutput.format(x));\n}\n\
+         function onRapid(x, y, z) {\n  writeln(\"G0 \" + xOutput.format(x));\n}\n\
+         function onClose() {\n  writeComment(\"end\");\n}\n",
+    )
+    .unwrap();
+    let (dialect, parts, records) =
+        traced(&post, &corpus().join("toolpaths/native/one_toolpath_mm.ron")).expect("posts");
+    assert_eq!(dialect, Dialect::Fusion);
+    let program = String::from_utf8_lossy(&parts[0]).into_owned();
+    let (mut comments, mut moves) = (0, 0);
+    for (line, (_, _, text, _)) in program.lines().zip(&records) {
+        let text = text.as_deref().unwrap_or("");
+        if line.starts_with('(') {
+            comments += 1;
+            assert_eq!(text, "writeln(formatComment(text));", "{line}");
+        } else if line.starts_with("G1") {
+            moves += 1;
+            assert_eq!(text, "writeln(\"G1 \" + xOutput.format(x));", "{line}");
+        } else if line.starts_with("G0") {
+            moves += 1;
+            assert_eq!(text, "writeln(\"G0 \" + xOutput.format(x));", "{line}");
+        }
+    }
+    assert!(comments == 2 && moves > 0, "{program}");
+}
