@@ -30,6 +30,15 @@ pub trait Sink {
     /// splitting, which names the parts.
     fn finish(self: Box<Self>, tape: Option<&TapeSplitting>) -> io::Result<Finished>;
 
+    /// Puts what was written so far on stable storage, where the sink has
+    /// any (the program's temporary files), without making it visible: a
+    /// caller waiting for something else meanwhile (verification of the
+    /// program) does the disk's work then, and the sync of the commit
+    /// finds nothing left to write.
+    fn settle(&self) -> io::Result<()> {
+        Ok(())
+    }
+
     /// The program written so far, its parts joined, when it is at most
     /// `limit` bytes long and the sink can read it back (verification's
     /// findings show their lines from it).

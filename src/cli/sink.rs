@@ -74,6 +74,10 @@ impl Sink for FileSink {
         Ok(Finished::Files(names))
     }
 
+    fn settle(&self) -> io::Result<()> {
+        self.parts.iter().try_for_each(|part| part.file()?.sync_all())
+    }
+
     fn written(&self, limit: usize) -> Option<Vec<u8>> {
         let mut all = Vec::new();
         for part in &self.parts {

@@ -203,6 +203,12 @@ impl Verification {
             tee.tx = None;
             (tee.parked.take(), tee.bytes, std::mem::take(&mut tee.part_lines))
         };
+        // While the verify thread reads what is left in the channel, the
+        // program's file goes to disk; a failure to sync shows at the
+        // commit, which syncs again.
+        if let Some(program) = &program {
+            let _ = program.settle();
+        }
         let outcome = match self.thread.take().map(JoinHandle::join) {
             Some(Ok(outcome)) => outcome,
             Some(Err(panic)) => std::panic::resume_unwind(panic),
