@@ -105,7 +105,7 @@ def convert(
 ) -> str:
     """The post as a post of another dialect (``postc convert``).
     ``postc_extension=True`` writes a post of another dialect as a CIMCO
-    section post, which only postc runs (``--postc-extension``). Raises
+    or VcPost section post, which only postc runs (``--postc-extension``). Raises
     ``PostError`` with every reason when the target cannot hold it."""
 
 def verify(

@@ -30,7 +30,7 @@ use postc_runtime::{Finished, Output, RunOptions};
 
 // CIMCO as section posts (`--postc-extension`): the native CNC-Calc form
 // has its own matrix, under Node.js (tests/convert_native.rs).
-const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPost, Target::CimcoSections, Target::Ron];
+const TARGETS: [Target; 4] = [Target::Vectric, Target::VcPostSections, Target::CimcoSections, Target::Ron];
 
 struct Case {
     post: PathBuf,
@@ -155,7 +155,7 @@ fn with_revision(program: Program, from: &Post, to: &Post) -> Program {
 fn target_name(t: Target) -> &'static str {
     match t {
         Target::Vectric => "vectric",
-        Target::VcPost => "vcpost",
+        Target::VcPost | Target::VcPostSections => "vcpost",
         Target::Cimco | Target::CimcoSections => "cimco",
         Target::Fusion => "fusion",
         Target::Ron => "ron",
@@ -165,7 +165,7 @@ fn target_name(t: Target) -> &'static str {
 fn target_dialect(t: Target) -> Dialect {
     match t {
         Target::Vectric => Dialect::Vectric,
-        Target::VcPost => Dialect::VcPost,
+        Target::VcPost | Target::VcPostSections => Dialect::VcPost,
         Target::Cimco | Target::CimcoSections => Dialect::Cimco,
         Target::Fusion => Dialect::Fusion,
         Target::Ron => Dialect::Ron,
@@ -676,7 +676,8 @@ fn comments_survive_conversion() {
         vectric.starts_with("+ Converted by postc from c.pp (Vectric)\n") && head < var && var < section,
         "{vectric}"
     );
-    let vcpost = String::from_utf8(postc_backends::convert(&post, Target::VcPost).expect("converts")).expect("text");
+    let vcpost =
+        String::from_utf8(postc_backends::convert(&post, Target::VcPostSections).expect("converts")).expect("text");
     assert!(vcpost.contains("' Router post, mm.\n' Second line.\n"), "{vcpost}");
     assert!(vcpost.contains("' # Init looks like a keyword.\n' inside\nSub HEADER"), "{vcpost}");
     // Read back, each converts to the same text again.
@@ -928,14 +929,14 @@ fn regular_expressions_are_refused_by_dialects_without_them() {
     let compiled = postc_driver::compile_post_bytes(Path::new("regex.js"), js.as_bytes(), None, &mut sources);
     assert!(!compiled.has_errors(), "{:?}", compiled.diagnostics);
     let post = compiled.post.expect("a post");
-    for target in [Target::Vectric, Target::VcPost] {
+    for target in [Target::Vectric, Target::VcPostSections] {
         let d = match postc_backends::convert(&post, target) {
             Ok(_) => panic!("{target:?} converted a post with a regular expression"),
             Err(d) => d,
         };
         // Vectric refuses every post with code; VcPost names the literal.
         assert!(d.iter().any(|d| d.code == "CV002"), "{target:?}: {d:?}");
-        if target == Target::VcPost {
+        if target == Target::VcPostSections {
             let d =
                 d.iter().find(|d| d.message.contains("a regular expression")).unwrap_or_else(|| panic!("named: {d:?}"));
             let span = d.primary_span().expect("a span");

@@ -323,11 +323,11 @@ fn node_runs_native_posts_as_postc_posts_their_sources() {
     eprintln!("{}", tests.show("this test's posts", own.len()));
     assert_eq!(tests.converted, POSTS.len(), "every post of this test converts: {}", failures.join("\n\n"));
     assert!(tests.compared >= POSTS.len(), "only {} programs were compared", tests.compared);
-    // The same posts as VcPost section posts (`--to vcpost`), converted on.
+    // The same posts as VcPost section posts (`--to vcpost --postc-extension`), converted on.
     let mut vcpost = Vec::new();
     for path in &own {
         let post = compile_warned(path).expect("the test's post compiles");
-        let text = postc_backends::convert(&post, Target::VcPost).expect("a section post converts to VcPost");
+        let text = postc_backends::convert(&post, Target::VcPostSections).expect("a section post converts to VcPost");
         let to = path.with_extension("VcPost");
         std::fs::write(&to, text).expect("write the VcPost post");
         vcpost.push(to);
@@ -419,7 +419,7 @@ fn a_missing_post_base_stops_convert_in_every_target() {
     std::fs::write(&post, "POST_NAME = \"child (*.nc)\"\nPOST_BASE = \"missing_base.pp\"\nbegin FOOTER\n\"M30\"\n")
         .expect("write the post");
     for (target, extension) in
-        [("vectric", false), ("vcpost", false), ("cimco", false), ("cimco", true), ("ron", false)]
+        [("vectric", false), ("vcpost", false), ("vcpost", true), ("cimco", false), ("cimco", true), ("ron", false)]
     {
         let out = dir.path().join(format!("out-{target}-{extension}"));
         let mut args = vec!["convert".to_string(), post.display().to_string(), "--to".into(), target.into()];
@@ -486,4 +486,25 @@ fn native_number_formats_print_as_vectric_formats_under_node() {
         compared += 1;
     }
     assert_eq!(compared, 2);
+}
+
+/// Vericut runs no section post: `--to vcpost` refuses a Vectric post
+/// (CV001, at its first section, naming the flag) and writes nothing;
+/// `--postc-extension` writes the section post, which says what it is.
+#[test]
+fn a_vectric_post_is_a_vcpost_section_post_only_when_asked() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let post = corpus().join("posts/vectric/gcode_mm.pp");
+    let out = dir.path().join("gcode_mm.VcPost");
+    let (post_arg, out_arg) = (post.display().to_string(), out.display().to_string());
+    let o = postc(&["convert", &post_arg, "--to", "vcpost", "-o", &out_arg]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[CV001]") && err.contains("gcode_mm.pp:42:1"), "{err}");
+    assert!(err.contains("--postc-extension"), "the refusal names the flag: {err}");
+    assert!(!out.exists(), "nothing is written");
+    let o = postc(&["convert", &post_arg, "--to", "vcpost", "--postc-extension", "-o", &out_arg]);
+    assert!(o.status.success(), "{}", said(&o));
+    let text = std::fs::read_to_string(&out).expect("the section post");
+    assert!(text.contains("Sub FEED_MOVE"), "{text}");
 }

@@ -174,10 +174,10 @@ fn posts_the_editor_text_with_trace_findings_and_backplot() {
     let at = text.find("[X]").unwrap() + 1;
     let (_, hover) = server.api("hover", &json!({ "path": post, "text": text, "offset": at }));
     assert!(hover["markdown"].as_str().unwrap().contains("X_POSITION"), "{hover}");
-    // Conversion, as `postc convert --to vcpost` writes it.
-    let (_, converted) = server.api("convert", &json!({ "path": post, "text": text, "to": "vcpost" }));
+    // Conversion, as `postc convert --to fusion` writes it.
+    let (_, converted) = server.api("convert", &json!({ "path": post, "text": text, "to": "fusion" }));
     let cli =
-        Command::new(env!("CARGO_BIN_EXE_postc")).arg("convert").arg(&post).args(["--to", "vcpost"]).output().unwrap();
+        Command::new(env!("CARGO_BIN_EXE_postc")).arg("convert").arg(&post).args(["--to", "fusion"]).output().unwrap();
     assert_eq!(converted["text"].as_str().unwrap(), String::from_utf8_lossy(&cli.stdout));
 
     // A misspelt section is reported with its code and place.

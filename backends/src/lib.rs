@@ -35,8 +35,15 @@ use postc_ir::{Diagnostic, Dialect, Post};
 pub enum Target {
     /// A Vectric `.pp` post.
     Vectric,
-    /// A Vericut VcPost post.
+    /// A Vericut VcPost post that Vericut runs: a VcPost post as itself, a
+    /// post driven by APT words as a milling post. A post of another
+    /// dialect driven by the kind of each move is refused (postc prints
+    /// no VcPost milling post from one yet).
     VcPost,
+    /// A VcPost post; a post of another dialect driven by the kind of each
+    /// move as a *section post*: postc's extension, which Vericut does not
+    /// run (`--postc-extension`).
+    VcPostSections,
     /// A CIMCO CNC-Calc JavaScript post that CNC-Calc runs: a CIMCO post
     /// with code as itself, another post driven by the kind of move as a
     /// native CNC-Calc post (the CNC-Calc manual's entry points).
@@ -56,7 +63,7 @@ impl Target {
     pub fn extension(self) -> &'static str {
         match self {
             Target::Vectric => "pp",
-            Target::VcPost => "VcPost",
+            Target::VcPost | Target::VcPostSections => "VcPost",
             Target::Cimco | Target::CimcoSections => "js",
             Target::Fusion => "cps",
             Target::Ron => "ron",
@@ -76,6 +83,7 @@ pub fn convert_warned(post: &Post, target: Target) -> Result<(Vec<u8>, Vec<Diagn
     match target {
         Target::Vectric => vectric::print(post).map(|t| (t, Vec::new())),
         Target::VcPost => vcpost::print(post).map(|t| (t, Vec::new())),
+        Target::VcPostSections => vcpost::print_extension(post).map(|t| (t, Vec::new())),
         Target::Cimco => cimco::print(post),
         Target::CimcoSections => cimco::print_extension(post).map(|t| (t, Vec::new())),
         Target::Fusion => fusion::print(post),

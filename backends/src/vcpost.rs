@@ -38,8 +38,33 @@ use postc_ir::{
     Padding, Piece, Place, PointStyle, Post, SignStyle, Span, Stmt, TextEncoding, UnaryOp, ValueSource, WidthOf,
 };
 
-/// Prints `post` as a VcPost post, or says why it cannot be one.
+/// Prints `post` as a VcPost post that Vericut runs, or says why it cannot
+/// be one: a post of another dialect driven by the kind of each move is
+/// refused (`CV001`), as postc prints no VcPost milling post from one;
+/// [`print_extension`] prints it as a section post.
 pub fn print(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
+    if post.info.dispatch == Dispatch::Sections && post.info.dialect != postc_ir::Dialect::VcPost {
+        let mut d = Diagnostic::error(
+            codes::CV001.code,
+            format!(
+                "this {} post prints a section for each kind of move, and postc does not yet print such a post as a VcPost milling post (one Sub per APT word)",
+                super::dialect_name(post.info.dialect)
+            ),
+        )
+        .note("Vericut runs VcPost posts one Sub per APT record; a section post is postc's extension, which Vericut does not run")
+        .help("`--postc-extension` writes it as a VcPost section post, which only postc runs");
+        if let Some(span) = post.handlers.iter().find_map(|h| h.span) {
+            d = d.at(span, "a section of the post");
+        }
+        return Err(vec![d]);
+    }
+    print_extension(post)
+}
+
+/// Prints `post` as a VcPost post, a post of another dialect driven by the
+/// kind of each move as a *section post* (postc's extension, which only
+/// postc runs), or says why it cannot be one.
+pub fn print_extension(post: &Post) -> Result<Vec<u8>, Vec<Diagnostic>> {
     // As written, when the IR keeps the file and it compiles back to `post`.
     let note = format!(
         "' {}{} ({}).",

@@ -1483,9 +1483,11 @@ declare_codes! {
         example = "var counter = 1;\nfunction bump() { this.counter = 2; }",
         fix = "Assign the global by its name: `counter = 2`.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
-    /// for (coolant, drilling cycles, comments, ...), or a post driven by APT words.
-    CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), or a post driven by APT words",
-        fix = "Convert to RON (`--to ron`), which holds every post, or drop the handler from the source post.";
+    /// for (coolant, drilling cycles, comments, ...), a post driven by APT words, or (VcPost) a post
+    /// of another dialect driven by the kind of each move, which postc prints as a VcPost
+    /// milling post not yet and as a section post only with `--postc-extension`.
+    CV001: Error, "the target dialect has no place for a handler of the post: an event it has no section for (coolant, drill cycles, comments, ...), a post driven by APT words, or a post driven by the kind of each move where postc prints no form of it the target's engine runs",
+        fix = "Convert to RON (`--to ron`), which holds every post, or drop the handler from the source post; `--postc-extension` writes a section post, which only postc runs.";
     /// The post has code (functions, globals, statements other than output lines) and the
     /// target's sections hold only lines.
     CV002: Error, "the post has code (functions, globals, statements other than output lines) and the target's sections hold only lines",

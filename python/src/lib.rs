@@ -365,7 +365,7 @@ fn check<'py>(
 
 /// The post as a post of another dialect, `to` = "vectric", "vcpost",
 /// "cimco", "fusion" or "ron" (`postc convert`); `postc_extension=True`
-/// writes a post of another dialect as a CIMCO section post
+/// writes a post of another dialect as a CIMCO or VcPost section post
 /// (`--postc-extension`). Raises PostError with every reason when the
 /// target cannot hold the post.
 #[pyfunction]
@@ -381,6 +381,7 @@ fn convert(
     let input = Input::of(post, "<post text>")?;
     let target = match to.to_ascii_lowercase().as_str() {
         "vectric" | "pp" => postc_backends::Target::Vectric,
+        "vcpost" if postc_extension => postc_backends::Target::VcPostSections,
         "vcpost" => postc_backends::Target::VcPost,
         "cimco" | "js" if postc_extension => postc_backends::Target::CimcoSections,
         "cimco" | "js" => postc_backends::Target::Cimco,

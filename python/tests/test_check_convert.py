@@ -49,15 +49,24 @@ def test_check_of_a_toolpath_file(cli):
     assert [d.to_dict() for d in postc.check(toolpath)] == expected
 
 
-@pytest.mark.parametrize("to", ["vectric", "vcpost", "ron"])
+@pytest.mark.parametrize("to", ["vectric", "fusion", "ron"])
 def test_convert_gives_what_the_command_gives(cli, to):
     expected = cli("convert", POST, "--to", to).stdout
     assert postc.convert(POST, to).encode() == expected
 
 
-def test_a_cimco_section_post_only_when_asked(cli):
-    expected = cli("convert", POST, "--to", "cimco", "--postc-extension").stdout
-    assert postc.convert(POST, "cimco", postc_extension=True).encode() == expected
+@pytest.mark.parametrize("to", ["cimco", "vcpost"])
+def test_a_section_post_only_when_asked(cli, to):
+    expected = cli("convert", POST, "--to", to, "--postc-extension").stdout
+    assert postc.convert(POST, to, postc_extension=True).encode() == expected
+
+
+def test_a_vectric_post_is_no_vcpost_milling_post_yet(cli):
+    said = cli("convert", POST, "--to", "vcpost", check=False)
+    assert said.returncode == 1 and b"error[CV001]" in said.stderr
+    with pytest.raises(postc.PostError) as refused:
+        postc.convert(POST, "vcpost")
+    assert [d.code for d in refused.value.diagnostics] == ["CV001"]
 
 
 @pytest.mark.parametrize("to", ["cimco", "fusion"])

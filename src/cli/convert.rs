@@ -40,9 +40,11 @@ pub struct Args {
     /// The source post's dialect, when its extension does not say.
     #[arg(long, value_enum)]
     dialect: Option<DialectArg>,
-    /// With `--to cimco`: write a post of another dialect as a section post,
-    /// postc's extension of CNC-Calc that only postc runs, instead of a
-    /// CNC-Calc post (docs/cimco.md, "Section posts").
+    /// With `--to cimco` or `--to vcpost`: write a post of another dialect
+    /// driven by the kind of each move (a Vectric post) as a section post,
+    /// postc's extension that only postc runs, instead of a post the
+    /// vendor's engine runs (docs/cimco.md and docs/vcpost.md, "Section
+    /// posts").
     #[arg(long)]
     postc_extension: bool,
 }
@@ -64,6 +66,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
     let post = super::load_post_with(Some(&args.post), args.dialect, &mut sources, &rules)?;
     let target = match args.to {
         TargetArg::Vectric => Target::Vectric,
+        TargetArg::Vcpost if args.postc_extension => Target::VcPostSections,
         TargetArg::Vcpost => Target::VcPost,
         TargetArg::Cimco if args.postc_extension => Target::CimcoSections,
         TargetArg::Cimco => Target::Cimco,

@@ -95,12 +95,12 @@ try {
   await step("05-trace");
 
   // 6. Convert to another dialect, in the second pane.
-  await page.selectOption("#target", "vcpost");
+  await page.selectOption("#target", "fusion");
   await page.click("#convert");
   await page.waitForFunction(() => document.querySelector("#convert-info").textContent !== "");
   const convertedText = await page.evaluate(() => window.workbench.converted.state.doc.toString());
   const info = await page.locator("#convert-info").innerText();
-  check(info === "as .VcPost" && /^Sub /m.test(convertedText), `converted: ${info} ${convertedText.slice(0, 200)}`);
+  check(info === "as .cps" && /^function onSection\(/m.test(convertedText), `converted: ${info} ${convertedText.slice(0, 200)}`);
   await step("06-converted");
 
   // 7. Latency: an edit re-posts the job and updates the page.
