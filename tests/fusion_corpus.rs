@@ -107,8 +107,8 @@ const REFUSES_TURNING: &str = "refuses turning operations (its capabilities)";
 /// turning job and whose program verify reads and passes (but for
 /// findings listed as the post's own), and those that post it, verified
 /// or in a dialect verify does not read.
-const TURNING_AT_LEAST: usize = 10;
-const TURNING_POSTING_AT_LEAST: usize = 10;
+const TURNING_AT_LEAST: usize = 11;
+const TURNING_POSTING_AT_LEAST: usize = 11;
 
 /// Posts that post the jet job (with one of the three jet tools) today,
 /// and of those the ones whose program verify reads and passes.

@@ -439,6 +439,10 @@ function Matrix(a, b, c) {
   this.forward = new Vector(rows[0].z, rows[1].z, rows[2].z);
   this.right = new Vector(rows[0].x, rows[1].x, rows[2].x);
   this.up = new Vector(rows[0].y, rows[1].y, rows[2].y);
+  // The ZYX Euler angles in radians: the matrix is the rotation about X by
+  // `x`, then about Y by `y`, then about Z by `z` (`Matrix.getXYZRotation`).
+  this.eulerZYX_R = new Vector(Math.atan2(rows[2].y, rows[2].z), -Math.asin(clamp(-1, rows[2].x, 1)), Math.atan2(rows[1].x, rows[0].x));
+  this.getEulerZYX = function () { return __vector(this.eulerZYX_R); };
   this.getElement = function (row, column) { return this.rows[row].getCoordinate(column); };
   this.setElement = function (row, column, value) { this.rows[row].setCoordinate(column, value); };
   this.getRow = function (row) { return __vector(this.rows[row]); };
@@ -481,6 +485,11 @@ function __Matrix_getYRotation(a) {
 };
 function __Matrix_getZRotation(a) {
   return new Matrix(new Vector(Math.cos(a), -Math.sin(a), 0), new Vector(Math.sin(a), Math.cos(a), 0), new Vector(0, 0, 1));
+};
+// The rotation of the XYZ Euler angles `abc`: about X by `abc.x` first,
+// then about Y, then about Z.
+function __Matrix_getXYZRotation(abc) {
+  return __Matrix_getZRotation(abc.z).multiply(__Matrix_getYRotation(abc.y)).multiply(__Matrix_getXRotation(abc.x));
 };
 function __Matrix_getAxisRotation(axis, a) { return new Matrix(); };
 function __Matrix_getOrientationFromDirection(v) { return new Matrix(); };
@@ -1230,23 +1239,50 @@ function __Axis() {
   this.remapToRange = function (v) { return v; };
   this.getMaximumFeed = function () { return 0; };
   this.getTCP = function () { return false; };
+  this.isTCPEnabled = function () { return false; };
+  __axisCommon(this);
+}
+
+// What every axis answers alike (Autodesk's declarations of `Axis`).
+function __axisCommon(axis) {
+  axis.getName = function () { return ["A", "B", "C"][axis.getCoordinate()] || ""; };
+  axis.getActuator = function () { return 0; };
+  axis.isLinear = function () { return false; };
+  axis.isRotational = function () { return axis.isEnabled(); };
+  axis.getDisplacement = function () { return 0; };
+  axis.isSupported = function (value) { var r = axis.getRange(); return value >= r.getMinimum() && value <= r.getMaximum(); };
+  axis.reduce = function (value) { return value; };
+  axis.remapToRange2 = function (angle, current) { return axis.remapToRange(angle); };
+  axis.clampToResolution = function (value) { return value; };
+  axis.getResolutionError = function (value) { return 0; };
 }
 
 // A machine as postc's host has it: its rotary axes (`new
-// MachineConfiguration(b, c)`) are kept but not modelled, so it answers as
-// a machine without them (docs/fusion.md, choice 39).
+// MachineConfiguration(b, c)`, each made by `createAxis`) are what the
+// post said they are, and the machine is a multi-axis one; their
+// kinematics are not modelled: the machine angles of the top are 0, and
+// those of another direction stop the post (docs/fusion.md, choice 39).
 function MachineConfiguration() {
-  this.rotary = arguments.length > 0 && arguments[0] !== undefined && arguments[0] !== null;
+  this.axes = [];
+  for (var a = 0; a < arguments.length; ++a) {
+    if (arguments[a] instanceof __RotaryAxis) { this.axes.push(arguments[a]); }
+  }
+  this.rotary = this.axes.length > 0;
   this.vendor = "";
   this.model = "";
   this.description = "";
-  this.isMultiAxisConfiguration = function () { return false; };
-  this.isMachineCoordinate = function (i) { return false; };
-  this.getNumberOfAxes = function () { return 3; };
-  this.getAxisU = function () { return new __Axis(); };
-  this.getAxisV = function () { return new __Axis(); };
-  this.getAxisW = function () { return new __Axis(); };
-  this.getAxisByCoordinate = function (coordinate) { return new __Axis(); };
+  this.isMultiAxisConfiguration = function () { return this.rotary; };
+  this.isMachineCoordinate = function (i) { return this.getAxisByCoordinate(i).isEnabled(); };
+  this.getNumberOfAxes = function () { return 3 + this.axes.length; };
+  this.getAxisU = function () { return this.axes.length > 0 ? this.axes[0] : new __Axis(); };
+  this.getAxisV = function () { return this.axes.length > 1 ? this.axes[1] : new __Axis(); };
+  this.getAxisW = function () { return this.axes.length > 2 ? this.axes[2] : new __Axis(); };
+  this.getAxisByCoordinate = function (coordinate) {
+    for (var i = 0; i < this.axes.length; ++i) {
+      if (this.axes[i].getCoordinate() == coordinate) { return this.axes[i]; }
+    }
+    return new __Axis();
+  };
   this.getAxisX = function () { return new __Axis(); };
   this.getAxisY = function () { return new __Axis(); };
   this.getAxisZ = function () { return new __Axis(); };
@@ -1291,8 +1327,14 @@ function MachineConfiguration() {
   this.getMultiAxisFeedrateInverseTimeUnits = function () { return INVERSE_MINUTES; };
   this.getMultiAxisFeedrateDPMType = function () { return DPM_STANDARD; };
   this.getMultiAxisFeedrateBpwRatio = function () { return 1; };
-  this.isHeadConfiguration = function () { return false; };
-  this.isTableConfiguration = function () { return false; };
+  this.isHeadConfiguration = function () {
+    for (var i = 0; i < this.axes.length; ++i) { if (!this.axes[i].isHead()) { return false; } }
+    return this.rotary;
+  };
+  this.isTableConfiguration = function () {
+    for (var i = 0; i < this.axes.length; ++i) { if (!this.axes[i].isTable()) { return false; } }
+    return this.rotary;
+  };
   this.getVendor = function () { return this.vendor; };
   this.getModel = function () { return this.model; };
   this.getDescription = function () { return this.description; };
@@ -1316,6 +1358,11 @@ function MachineConfiguration() {
     return new Vector(0, 0, 0);
   };
   this.getPreferredABC = function (abc) { return abc; };
+  // The angles as the machine reaches them, within its axes' ranges: the
+  // angles a post has from `getABC` (0 on every axis for the top, the only
+  // direction postc computes), which every axis reaches.
+  this.remapABC = function (abc) { return __vector(abc); };
+  this.remapToABC = function (abc, current) { return __vector(abc); };
   this.isSupported = function (m) { return true; };
   this.enableMachineRewinds = function () {};
   this.isReceived = function () { return false; };
@@ -1336,8 +1383,42 @@ function MachineConfiguration() {
   }
 }
 machineConfiguration = new MachineConfiguration();
-function createAxis(specifiers) {
-  return { isEnabled: function () { return true; }, getCoordinate: function () { return 0; } };
+function createAxis(specifiers) { return new __RotaryAxis(specifiers); }
+// A rotary axis as `createAxis` specifies it (Autodesk's declarations:
+// `coordinate` 0, 1, 2 for A, B, C; `table`, default true; `axis`, the
+// direction it turns about; `offset`; `range` in degrees; `cyclic`;
+// `preference`; `resolution`; `tcp`): what the post gave, in the
+// declarations' units (angles in radians).
+function __RotaryAxis(specifiers) {
+  var s = specifiers || {};
+  var vector = function (v, d) { return v === undefined ? d : (v instanceof Vector ? __vector(v) : new Vector(v[0], v[1], v[2])); };
+  var coordinate = s.coordinate === undefined ? -1 : s.coordinate;
+  var table = s.table === undefined ? true : !!s.table;
+  var axis = vector(s.axis, new Vector(0, 0, 0));
+  var offset = vector(s.offset, new Vector(0, 0, 0));
+  var range = s.range === undefined ? null : new Range(s.range[0] * Math.PI / 180, s.range[1] * Math.PI / 180);
+  var cyclic = !!s.cyclic;
+  var preference = s.preference === undefined ? 0 : s.preference;
+  var resolution = s.resolution === undefined ? 0 : s.resolution;
+  var tcp = s.tcp === undefined ? true : !!s.tcp;
+  this.isEnabled = function () { return true; };
+  this.getAxis = function () { return __vector(axis); };
+  this.getEffectiveAxis = function () { return __vector(axis); };
+  this.getCoordinate = function () { return coordinate; };
+  this.getOffset = function () { return __vector(offset); };
+  this.getRange = function () { return range === null ? new Range(-1e9, 1e9) : range; };
+  this.getPreference = function () { return preference; };
+  this.getResolution = function () { return resolution; };
+  this.isCyclic = function () { return cyclic; };
+  this.isHead = function () { return !table; };
+  this.isTable = function () { return table; };
+  this.isAggregate = function () { return false; };
+  this.clamp = function (v) { return range === null ? v : Math.min(Math.max(v, range.getMinimum()), range.getMaximum()); };
+  this.remapToRange = function (v) { return v; };
+  this.getMaximumFeed = function () { return 0; };
+  this.getTCP = function () { return tcp; };
+  this.isTCPEnabled = function () { return tcp; };
+  __axisCommon(this);
 }
 // The machine angles of the top are 0 on any machine; those of another
 // direction on a machine with rotary axes need its kinematics, which
