@@ -1327,14 +1327,9 @@ function MachineConfiguration() {
   this.getMultiAxisFeedrateInverseTimeUnits = function () { return INVERSE_MINUTES; };
   this.getMultiAxisFeedrateDPMType = function () { return DPM_STANDARD; };
   this.getMultiAxisFeedrateBpwRatio = function () { return 1; };
-  this.isHeadConfiguration = function () {
-    for (var i = 0; i < this.axes.length; ++i) { if (!this.axes[i].isHead()) { return false; } }
-    return this.rotary;
-  };
-  this.isTableConfiguration = function () {
-    for (var i = 0; i < this.axes.length; ++i) { if (!this.axes[i].isTable()) { return false; } }
-    return this.rotary;
-  };
+  // Whether the machine has rotary axes and every one is a head (a table).
+  this.isHeadConfiguration = function () { return this.rotary && this.axes.every(function (a) { return a.isHead(); }); };
+  this.isTableConfiguration = function () { return this.rotary && this.axes.every(function (a) { return a.isTable(); }); };
   this.getVendor = function () { return this.vendor; };
   this.getModel = function () { return this.model; };
   this.getDescription = function () { return this.description; };
@@ -1358,9 +1353,9 @@ function MachineConfiguration() {
     return new Vector(0, 0, 0);
   };
   this.getPreferredABC = function (abc) { return abc; };
-  // The angles as the machine reaches them, within its axes' ranges: the
-  // angles a post has from `getABC` (0 on every axis for the top, the only
-  // direction postc computes), which every axis reaches.
+  // The angles as the machine reaches them: given back as they are (postc
+  // computes the top's, 0 on every axis, and does not check them against
+  // the axes' ranges; docs/fusion.md, choice 39).
   this.remapABC = function (abc) { return __vector(abc); };
   this.remapToABC = function (abc, current) { return __vector(abc); };
   this.isSupported = function (m) { return true; };
@@ -1413,7 +1408,7 @@ function __RotaryAxis(specifiers) {
   this.isHead = function () { return !table; };
   this.isTable = function () { return table; };
   this.isAggregate = function () { return false; };
-  this.clamp = function (v) { return range === null ? v : Math.min(Math.max(v, range.getMinimum()), range.getMaximum()); };
+  this.clamp = function (v) { return range === null ? v : clamp(range.getMinimum(), v, range.getMaximum()); };
   this.remapToRange = function (v) { return v; };
   this.getMaximumFeed = function () { return 0; };
   this.getTCP = function () { return tcp; };
