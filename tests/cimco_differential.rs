@@ -605,7 +605,7 @@ fn generated_posts_print_as_node_prints() {
     let list = dir.path().join("posts.txt");
     std::fs::write(&list, paths.iter().map(|p| format!("{}\n", p.display())).collect::<String>()).expect("list");
     let batch = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/batch.js");
-    let node = std::process::Command::new("node").arg(&batch).arg(&list).arg(&jsonl).spawn().expect("start node");
+    let node = node_command().arg(&batch).arg(&list).arg(&jsonl).spawn().expect("start node");
 
     // postc's runs, on as many threads as there are cores, while Node.js
     // runs the batch.

@@ -13,11 +13,10 @@
 //! skipped, with a message, and fails under `CI=true`.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
-use crate::support::cimco::{export_jsonl, node_or_skip, post_toolpath};
+use crate::support::cimco::{export_jsonl, node_command, node_or_skip, post_toolpath};
 use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
-use crate::support::{compile_warned, corpus, diff, files, postc, said, stem};
+use crate::support::{self, compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
 use postc_ir::event::{Event, ZOrigin};
 use postc_ir::{EventSource, Piece, Post, Quantity, Stmt, ValueSource};
@@ -393,7 +392,7 @@ fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
 /// properties set.
 fn run_fusion_node(post: &Path, jsonl: &Path, properties: &[(String, String)]) -> Result<Vec<u8>, String> {
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
-    let mut command = Command::new("node");
+    let mut command = node_command();
     command.arg(script).arg(post).arg(jsonl);
     for (name, value) in properties {
         command.arg("--property").arg(format!("{name}={value}"));
@@ -449,72 +448,101 @@ fn post_with_properties(post: &Post, toolpath: &Path, properties: &[(String, Str
     }
 }
 
-/// Converts and judges each post; returns the tally and the failures.
+/// Converts and judges each post, on worker threads; returns the tally
+/// and the failures.
 fn judge(posts: &[PathBuf], dir: &Path, all: &[Job], failures: &mut Vec<String>) -> Tally {
-    let mut tally = Tally::default();
-    for (n, path) in posts.iter().enumerate() {
-        let Some((post, converted)) = convert_counted(path, n, Target::Fusion, "cps", dir, &mut tally) else {
-            continue;
-        };
-        let again = match compile_warned(&converted) {
-            Ok(p) => Some(p),
-            Err(e) => {
-                failures.push(format!("{}: postc does not compile the converted post: {e}", path.display()));
-                None
-            }
-        };
-        let text = std::fs::read_to_string(&converted).unwrap_or_default();
-        let mut identical = true;
-        for toolpath in toolpaths(all, &post) {
-            let properties = dialog_properties(&post, &text, &toolpath);
-            let pair = format!("{}__{}", path.display(), stem(&toolpath));
-            let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
-            if !jsonl.exists()
-                && let Err(e) = export_jsonl(&toolpath, &jsonl)
-            {
-                failures.push(format!("{pair}: cannot export the toolpath: {e}"));
-                continue;
-            }
-            let ours = match post_toolpath(&post, &toolpath) {
-                Ok(o) => o,
-                Err(e) => {
-                    failures.push(format!("{pair}: postc: {e}"));
-                    continue;
-                }
-            };
-            if let Some(again) = &again {
-                match post_with_properties(again, &toolpath, &properties) {
-                    Ok(o) if o == ours => {}
-                    Ok(o) => {
-                        identical = false;
-                        failures.push(format!(
-                            "{pair}: postc posting the converted post (-) and the source (+) differ\n{}",
-                            diff(&o, &ours)
-                        ));
-                    }
-                    Err(e) => failures.push(format!("{pair}: postc posting the converted post: {e}")),
-                }
-            }
-            match run_fusion_node(&converted, &jsonl, &properties) {
-                Ok(theirs) if theirs == ours => tally.compared += 1,
-                Ok(theirs) => {
-                    identical = false;
-                    failures.push(format!(
-                        "{pair}: Node.js running the converted post (-) and postc posting the source (+) differ\n{}",
-                        diff(&theirs, &ours)
-                    ));
-                }
-                Err(e) => {
-                    identical = false;
-                    failures.push(format!("{pair}: {e}"));
-                }
-            }
-        }
-        if identical {
-            tally.identical_posts += 1;
+    // The toolpaths as JSON Lines for Node.js, each written once, before
+    // the workers read them.
+    let mut unexported = std::collections::BTreeMap::new();
+    for job in all {
+        let jsonl = dir.join(format!("{}.jsonl", stem(&job.path)));
+        if !jsonl.exists()
+            && let Err(e) = export_jsonl(&job.path, &jsonl)
+        {
+            unexported.insert(job.path.clone(), e);
         }
     }
+    let numbered: Vec<(usize, &PathBuf)> = posts.iter().enumerate().collect();
+    let judged = support::in_workers(&numbered, |&(n, path)| vec![judge_one(n, path, dir, all, &unexported)]);
+    let mut tally = Tally::default();
+    for (one, mut failed) in judged {
+        tally.add(one);
+        failures.append(&mut failed);
+    }
+    failures.sort();
     tally
+}
+
+/// Converts the `n`th post and judges it over every toolpath that applies:
+/// its tally and its failures.
+fn judge_one(
+    n: usize,
+    path: &Path,
+    dir: &Path,
+    all: &[Job],
+    unexported: &std::collections::BTreeMap<PathBuf, String>,
+) -> (Tally, Vec<String>) {
+    let mut tally = Tally::default();
+    let mut failures = Vec::new();
+    let Some((post, converted)) = convert_counted(path, n, Target::Fusion, "cps", dir, &mut tally) else {
+        return (tally, failures);
+    };
+    let again = match compile_warned(&converted) {
+        Ok(p) => Some(p),
+        Err(e) => {
+            failures.push(format!("{}: postc does not compile the converted post: {e}", path.display()));
+            None
+        }
+    };
+    let text = std::fs::read_to_string(&converted).unwrap_or_default();
+    let mut identical = true;
+    for toolpath in toolpaths(all, &post) {
+        let properties = dialog_properties(&post, &text, &toolpath);
+        let pair = format!("{}__{}", path.display(), stem(&toolpath));
+        if let Some(e) = unexported.get(&toolpath) {
+            failures.push(format!("{pair}: cannot export the toolpath: {e}"));
+            continue;
+        }
+        let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
+        let ours = match post_toolpath(&post, &toolpath) {
+            Ok(o) => o,
+            Err(e) => {
+                failures.push(format!("{pair}: postc: {e}"));
+                continue;
+            }
+        };
+        if let Some(again) = &again {
+            match post_with_properties(again, &toolpath, &properties) {
+                Ok(o) if o == ours => {}
+                Ok(o) => {
+                    identical = false;
+                    failures.push(format!(
+                        "{pair}: postc posting the converted post (-) and the source (+) differ\n{}",
+                        diff(&o, &ours)
+                    ));
+                }
+                Err(e) => failures.push(format!("{pair}: postc posting the converted post: {e}")),
+            }
+        }
+        match run_fusion_node(&converted, &jsonl, &properties) {
+            Ok(theirs) if theirs == ours => tally.compared += 1,
+            Ok(theirs) => {
+                identical = false;
+                failures.push(format!(
+                    "{pair}: Node.js running the converted post (-) and postc posting the source (+) differ\n{}",
+                    diff(&theirs, &ours)
+                ));
+            }
+            Err(e) => {
+                identical = false;
+                failures.push(format!("{pair}: {e}"));
+            }
+        }
+    }
+    if identical {
+        tally.identical_posts += 1;
+    }
+    (tally, failures)
 }
 
 /// The posts of this test (the sections post with CR LF and with LF line

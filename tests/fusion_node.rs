@@ -9,7 +9,6 @@
 //! reading of the documentation.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use crate::fusion_corpus::{posts, shared};
 use crate::support;
@@ -70,7 +69,7 @@ fn node_and_postc_print_the_same_program_for_every_corpus_fusion_post_that_runs(
         let mut done = Vec::new();
         for (what, job, jsonl) in &jobs {
             let Ok(ours) = support::cimco::post_toolpath(&compiled, job) else { continue };
-            let node = Command::new("node").arg(&script).arg(post).arg(jsonl).output().expect("run node");
+            let node = support::cimco::node_command().arg(&script).arg(post).arg(jsonl).output().expect("run node");
             done.push((
                 *what,
                 if !node.status.success() {
@@ -499,7 +498,7 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
         std::fs::write(&post, &text).expect("write the post");
         let compiled = support::compile_file(&post);
         let ours = support::cimco::post_toolpath(&compiled, &job).unwrap_or_else(|e| panic!("{what}: {e}"));
-        let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+        let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
         assert!(node.status.success(), "{what}: Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
         if node.stdout != ours {
             differ.push(format!("{what}:\n{}", support::diff(&node.stdout, &ours)));
@@ -665,7 +664,7 @@ fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
         "plain false false\nmulti true 5 falsetruetrue\nkind false false\nB 1 true -1 -1.571 0.785 1\n\
          C true true false\ntop 0 0 0\nR 1 1 1 1.571 0 1.571\n",
     );
-    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
     assert!(node.status.success(), "Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
     assert_eq!(String::from_utf8_lossy(&node.stdout), text, "Node.js first");
 }
@@ -684,7 +683,7 @@ fn both_stop(
 ) -> String {
     let post = folder.join(name);
     std::fs::write(&post, text).expect("write the post");
-    let node = Command::new("node").arg(script).arg(&post).arg(jsonl).output().expect("run node");
+    let node = support::cimco::node_command().arg(script).arg(&post).arg(jsonl).output().expect("run node");
     let stderr = String::from_utf8_lossy(&node.stderr);
     assert!(!node.status.success() && stderr.contains(node_says), "{name}: Node.js: {stderr}");
     postc_stops(&post, job)
@@ -751,7 +750,7 @@ fn records_number_the_events_and_say_whether_a_move_follows() {
     let compiled = support::compile_file(&post);
     let ours = support::cimco::post_toolpath(&compiled, &job).expect("postc posts the job");
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
-    let node = Command::new("node").arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
+    let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
     assert!(node.status.success(), "Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
     assert_eq!(String::from_utf8_lossy(&node.stdout), String::from_utf8_lossy(&ours));
     // The zero-length feed that only changes the feed is followed by a move.

@@ -347,7 +347,7 @@ fn saves_in_the_files_encoding_and_line_endings() {
 /// Node.js, Chromium and web/node_modules for the browser tests: their
 /// paths, or None when one is missing (a failure under `CI=true`).
 fn browser_tools(test: &str) -> Option<(PathBuf, PathBuf)> {
-    let node = Command::new("node").arg("--version").output().is_ok_and(|o| o.status.success());
+    let node = crate::support::cimco::node_command().arg("--version").output().is_ok_and(|o| o.status.success());
     if !node {
         super::support::referee_missing(test, "node");
         return None;
@@ -383,7 +383,7 @@ fn browser_workbench_end_to_end() {
     std::fs::write(&post, padding + source.as_str()).unwrap();
     let server = Server::start(&[&post, &seed_job()]);
     let shots = target_dir().join("workbench");
-    let out = Command::new("node")
+    let out = crate::support::cimco::node_command()
         .arg(web.join("e2e/workbench.mjs"))
         .arg(server.url())
         .arg(&shots)
@@ -405,6 +405,6 @@ fn browser_workbench_end_to_end() {
 #[test]
 fn web_dist_is_what_web_src_builds() {
     let Some((_, web)) = browser_tools("web_dist_is_what_web_src_builds") else { return };
-    let out = Command::new("node").arg(web.join("check.mjs")).output().unwrap();
+    let out = crate::support::cimco::node_command().arg(web.join("check.mjs")).output().unwrap();
     assert!(out.status.success(), "{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
 }

@@ -29,6 +29,17 @@ pub struct Tally {
 }
 
 impl Tally {
+    /// Adds the counts of `other` to these.
+    pub fn add(&mut self, other: Tally) {
+        self.converted += other.converted;
+        self.warned += other.warned;
+        self.compared += other.compared;
+        self.identical_posts += other.identical_posts;
+        for (reason, n) in other.refused {
+            *self.refused.entry(reason).or_default() += n;
+        }
+    }
+
     /// One line: the counts, and the refusals by reason.
     pub fn show(&self, what: &str, total: usize) -> String {
         let refused: Vec<String> = self.refused.iter().map(|(k, n)| format!("{n} {k}")).collect();
