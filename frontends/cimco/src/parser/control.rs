@@ -4,6 +4,7 @@
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
+use super::SyntaxError;
 use super::{Extra, Problem, TokenInput, kw, name, punct, span, unsupported, word};
 use crate::ast::{Expr, ForInit, Stmt, StmtKind, SwitchCase, VarDeclarator};
 use crate::diagnostics::{self as d, Construct};
@@ -118,7 +119,7 @@ where
             for (at, case) in cases {
                 if case.test.is_none() {
                     if seen_default {
-                        emitter.emit(Rich::custom(
+                        emitter.emit(SyntaxError::custom(
                             at,
                             Problem::Custom(
                                 d::DUPLICATE_DEFAULT,

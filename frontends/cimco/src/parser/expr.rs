@@ -7,6 +7,7 @@
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
+use super::SyntaxError;
 use super::literals::{arguments, array, function_body, function_parts, object, parameter_list};
 use super::operators::{binary, conditional_and_assignment};
 use super::patterns::{Element, Pattern};
@@ -188,7 +189,7 @@ fn template_literal<'t, 's: 't, I: TokenInput<'t, 's>>(
                 exprs.push(expr);
                 match middle {
                     Some(raw) => quasis.push(cooked(raw)),
-                    None if k < last => emitter.emit(Rich::custom(
+                    None if k < last => emitter.emit(SyntaxError::custom(
                         at,
                         Problem::Custom(
                             d::SYNTAX_ERROR,
@@ -347,7 +348,7 @@ fn postfix<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, chain: Boxed<'t, 's,
 pub(super) fn check_target<'t, 's>(target: &Expr, emitter: &mut chumsky::input::Emitter<super::Error<'t, 's>>) {
     if !target.is_assignable() {
         let at = SimpleSpan::from(target.span.start..target.span.end);
-        emitter.emit(Rich::custom(
+        emitter.emit(SyntaxError::custom(
             at,
             Problem::Custom(
                 d::INVALID_ASSIGNMENT,
@@ -394,7 +395,7 @@ fn unary<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId, operand: Boxed<'t, 's,
                 Prefix::Unary(op) => Expr::new(ExprKind::Unary { op, operand: Box::new(operand) }, whole),
                 Prefix::Update(op) => {
                     if !operand.is_assignable() {
-                        e.emit(Rich::custom(
+                        e.emit(SyntaxError::custom(
                             SimpleSpan::from(operand.span.start..operand.span.end),
                             Problem::Custom(
                                 d::INVALID_ASSIGNMENT,

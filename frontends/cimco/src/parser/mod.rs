@@ -2,10 +2,10 @@
 //!
 //! The grammar is written with chumsky over the lexer's tokens: statements
 //! in [`stmt`], [`control`] and [`mod@unsupported`]; expressions in
-//! [`expr`], [`literals`] and [`operators`]; [`report`] words the errors.
-//! This module owns what they share: the error and state types, token
-//! matchers, automatic semicolon insertion, the nesting guard, and the
-//! recovery skippers.
+//! [`expr`], [`literals`] and [`operators`]; [`mod@error`] is the error
+//! type and [`report`] words the errors. This module owns what they
+//! share: the state type, token matchers, automatic semicolon insertion,
+//! the nesting guard, and the recovery skippers.
 //!
 //! Recovery: a statement that does not parse is reported and skipped up to
 //! its `;`, the next line break, a `case`/`default`, or the `}` that closes
@@ -19,6 +19,7 @@
 //! nodes. Either way one diagnostic is reported, never a stack overflow.
 
 mod control;
+mod error;
 mod expr;
 mod literals;
 mod operators;
@@ -29,7 +30,6 @@ mod unsupported;
 
 use std::collections::HashMap;
 
-use chumsky::error::{Rich, RichReason};
 use chumsky::extra;
 use chumsky::input::{Checkpoint, InputRef};
 use chumsky::input::{Input as _, ValueInput};
@@ -37,6 +37,7 @@ use chumsky::inspector::Inspector;
 use chumsky::prelude::*;
 use postc_ir::{Diagnostic, FileId, Span};
 
+pub(crate) use self::error::{Expected, ExpectedSet, Reason, SyntaxError};
 use crate::Syntax;
 use crate::ast::{Expr, MAX_TREE_DEPTH, Program, Stmt};
 use crate::diagnostics::Construct;
@@ -58,7 +59,8 @@ pub(crate) enum Problem {
     NoRecovery,
 }
 
-pub(crate) type Error<'t, 's> = Rich<'t, Token<'s>, SimpleSpan, Problem>;
+/// The grammar's error; `'t`, the tokens' borrow, is not kept.
+pub(crate) type Error<'t, 's> = SyntaxError<'s>;
 pub(crate) type Extra<'t, 's> = extra::Full<Error<'t, 's>, ParseState, ()>;
 
 /// The input the grammar reads: tokens with byte spans.
@@ -147,9 +149,9 @@ pub(crate) fn match_brackets(tokens: &Tokens<'_>) -> Brackets {
 /// What parsing a token list gives: the tree, chumsky's errors raw (the
 /// caller turns them into diagnostics), where nesting first went too deep,
 /// and how many token reads it took.
-pub(crate) struct Parsed<'t, 's> {
+pub(crate) struct Parsed<'s> {
     pub program: Option<Program>,
-    pub errors: Vec<Error<'t, 's>>,
+    pub errors: Vec<SyntaxError<'s>>,
     pub too_deep: Option<SimpleSpan>,
     pub reads: u64,
 }
@@ -161,7 +163,7 @@ pub(crate) fn parse_tokens<'t, 's: 't>(
     file: FileId,
     closers: HashMap<usize, usize>,
     syntax: Syntax,
-) -> Parsed<'t, 's> {
+) -> Parsed<'s> {
     let input = tokens.as_slice().map(SimpleSpan::from(text_len..text_len), |(t, s)| (t, s));
     let mut state = ParseState { closers, syntax, ..ParseState::default() };
     let (program, errors) = stmt::program(file).parse_with_state(input, &mut state).into_output_errors();
@@ -223,7 +225,7 @@ pub(crate) fn name<'t, 's: 't, I: TokenInput<'t, 's>>(
 
 /// Emits an unsupported-construct error at `at`.
 pub(crate) fn unsupported<'t, 's>(construct: Construct, at: SimpleSpan) -> Error<'t, 's> {
-    Rich::custom(at, Problem::Unsupported(construct))
+    SyntaxError::custom(at, Problem::Unsupported(construct))
 }
 
 /// Runs `parser` one level deeper, or fails with [`Problem::TooDeep`] past
@@ -243,7 +245,7 @@ where
             let at = inp.span_since(&before);
             inp.rewind(here);
             inp.state().too_deep.get_or_insert(at);
-            return Err(Rich::custom(at, Problem::TooDeep));
+            return Err(SyntaxError::custom(at, Problem::TooDeep));
         }
         inp.state().depth += 1;
         Ok(())
@@ -310,7 +312,7 @@ fn closer_of<'t, 's: 't, I: TokenInput<'t, 's>>(
     inp.state().closers.get(&first_span.start).copied().ok_or_else(|| {
         let message = format!("this `{}` is never closed", open.as_str());
         let help = Some("add the missing closing bracket");
-        Rich::custom(first_span, Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help))
+        SyntaxError::custom(first_span, Problem::Custom(crate::diagnostics::UNCLOSED, message, "opened here", help))
     })
 }
 
@@ -370,7 +372,7 @@ pub(crate) fn skip_statement<'t, 's: 't, I: TokenInput<'t, 's>>(
         }
         if first {
             let at = inp.span_since(&start);
-            return Err(Rich::custom(at, Problem::NoRecovery));
+            return Err(SyntaxError::custom(at, Problem::NoRecovery));
         }
         let s = inp.span_since(&start);
         Ok(Stmt::error(span(file, s)))
@@ -380,7 +382,7 @@ pub(crate) fn skip_statement<'t, 's: 't, I: TokenInput<'t, 's>>(
 /// Whether an error is not reported on its own: the guard's (reported
 /// once, separately) and the skippers'.
 pub(crate) fn is_internal(e: &Error<'_, '_>) -> bool {
-    matches!(e.reason(), RichReason::Custom(Problem::TooDeep | Problem::NoRecovery))
+    matches!(e.reason(), Reason::Custom(Problem::TooDeep | Problem::NoRecovery))
 }
 
 /// Turns a grammar problem into a diagnostic.

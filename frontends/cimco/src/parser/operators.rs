@@ -7,6 +7,7 @@ use chumsky::pratt::{infix, left, right};
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
+use super::SyntaxError;
 use super::patterns;
 use super::{Extra, Problem, TokenInput, cap_expr, kw, punct, span, unsupported};
 use crate::ast::{AssignOp, BinaryOp, Expr, ExprKind, LogicalOp, Stmt};
@@ -184,7 +185,7 @@ where
             // function can take.
             Some(Tail::Arrow(_)) if e.state().fusion() => {
                 let params = SimpleSpan::from(target.span.start..target.span.end);
-                emitter.emit(Rich::custom(
+                emitter.emit(SyntaxError::custom(
                     params,
                     Problem::Custom(
                         d::SYNTAX_ERROR,
@@ -211,7 +212,7 @@ where
                     let whole = span(file, e.span());
                     match patterns::from_expr(&target) {
                         Ok(pattern) => return patterns::assignment(&pattern, value, whole, e.state()),
-                        Err(bad) => emitter.emit(Rich::custom(
+                        Err(bad) => emitter.emit(SyntaxError::custom(
                             SimpleSpan::from(bad.start..bad.end),
                             Problem::Custom(
                                 d::INVALID_ASSIGNMENT,

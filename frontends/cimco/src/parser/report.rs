@@ -3,11 +3,13 @@
 //! statements on one line, the end of the file inside an unclosed
 //! bracket (pointing at the bracket), and the grammar's own problems.
 
-use chumsky::error::{RichPattern, RichReason};
 use chumsky::span::SimpleSpan;
 use postc_ir::{Diagnostic, FileId};
 
-use super::{Brackets, Error, TERMINATOR, is_internal, problem_diagnostic, span, too_deep_diagnostic};
+use super::{
+    Brackets, Error, Expected, ExpectedSet, Reason, TERMINATOR, is_internal, problem_diagnostic, span,
+    too_deep_diagnostic,
+};
 use crate::Syntax;
 use crate::diagnostics as d;
 use crate::token::{Keyword, Punct, Token, TokenKind};
@@ -32,10 +34,10 @@ pub(crate) fn diagnostics(
 fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets, syntax: Syntax) -> Diagnostic {
     let at = span(file, *e.span());
     match e.reason() {
-        RichReason::Custom(problem) => problem_diagnostic(problem, at, syntax),
-        RichReason::ExpectedFound { expected, found } => {
+        Reason::Custom(problem) => problem_diagnostic(problem, at, syntax),
+        Reason::ExpectedFound { expected, found } => {
             let expected = describe_expected(expected);
-            match found.as_deref() {
+            match found.as_ref() {
                 None => {
                     let mut diag = Diagnostic::error(
                         d::UNEXPECTED_END,
@@ -71,7 +73,7 @@ fn one(e: &Error<'_, '_>, file: FileId, brackets: &Brackets, syntax: Syntax) -> 
 }
 
 fn expects_terminator(e: &Error<'_, '_>) -> bool {
-    e.expected().any(|p| matches!(p, RichPattern::Label(l) if l == TERMINATOR))
+    e.expected().any(|p| matches!(p, Expected::Label(l) if *l == TERMINATOR))
 }
 
 /// Tokens that begin a statement, so that "missing `;`" is the likely
@@ -148,14 +150,13 @@ fn continues_expression(t: &Token<'_>) -> bool {
 }
 
 /// "`)`, `,` or an operator".
-fn describe_expected(expected: &[RichPattern<'_, Token<'_>>]) -> String {
+fn describe_expected(expected: &ExpectedSet<'_>) -> String {
     let mut items: Vec<String> = Vec::new();
     let mut operators = 0;
-    let after_expression = expected.iter().any(|p| matches!(p, RichPattern::Token(t) if is_operator(t)));
-    for p in expected {
+    let after_expression = expected.iter().any(|p| matches!(p, Expected::Token(t) if is_operator(t)));
+    for p in expected.iter() {
         let item = match p {
-            RichPattern::Token(t) => {
-                let t: &Token<'_> = t;
+            Expected::Token(t) => {
                 if !suggestible(t) {
                     continue;
                 }
@@ -165,9 +166,9 @@ fn describe_expected(expected: &[RichPattern<'_, Token<'_>>]) -> String {
                 }
                 t.to_string()
             }
-            RichPattern::Label(l) => l.to_string(),
-            RichPattern::EndOfInput => "the end of the file".to_string(),
-            _ => continue,
+            Expected::Label(l) => l.to_string(),
+            Expected::EndOfInput => "the end of the file".to_string(),
+            Expected::Any | Expected::SomethingElse => continue,
         };
         if !items.contains(&item) {
             items.push(item);

@@ -9,6 +9,7 @@
 use chumsky::prelude::*;
 use postc_ir::FileId;
 
+use super::SyntaxError;
 use super::control::{for_statement, switch_statement};
 use super::expr::{expression, sequence};
 use super::literals::function_parts;
@@ -29,7 +30,7 @@ type Boxed<'t, 's, I, O> = chumsky::Boxed<'t, 't, I, O, Extra<'t, 's>>;
 pub(super) fn program<'t, 's: 't, I: TokenInput<'t, 's>>(file: FileId) -> impl Parser<'t, I, Program, Extra<'t, 's>> {
     let stmt = recursive(move |stmt| statement(file, guarded(stmt)));
     let stray = punct(Punct::RBrace).validate(move |_, e, emitter| {
-        emitter.emit(Rich::custom(
+        emitter.emit(SyntaxError::custom(
             e.span(),
             Problem::Custom(
                 d::UNMATCHED_CLOSER,
@@ -62,7 +63,7 @@ where
         .then(punct(Punct::RBrace).to(true).or(end().to(false)))
         .validate(|((open, body), closed), e, emitter| {
             if !closed {
-                emitter.emit(Rich::custom(
+                emitter.emit(SyntaxError::custom(
                     open,
                     Problem::Custom(
                         d::UNCLOSED,
@@ -108,7 +109,7 @@ where
             Some(init) if e.state().fusion() => patterns::declarators(&el.pattern, init, whole),
             init => {
                 if e.state().fusion() {
-                    emitter.emit(Rich::custom(
+                    emitter.emit(SyntaxError::custom(
                         simple,
                         Problem::Custom(
                             d::SYNTAX_ERROR,
@@ -169,7 +170,7 @@ where
     );
     let function = function_parts(file, stmt.clone(), assign.clone()).validate(move |f, e, emitter| {
         if f.name.is_none() {
-            emitter.emit(Rich::custom(
+            emitter.emit(SyntaxError::custom(
                 e.span(),
                 Problem::Custom(
                     d::SYNTAX_ERROR,
@@ -223,7 +224,7 @@ where
         .then(kw(Keyword::Finally).ignore_then(body.clone()).or_not())
         .validate(move |(((block, _), handler), finalizer), e, emitter| {
             if handler.is_none() && finalizer.is_none() {
-                emitter.emit(Rich::custom(
+                emitter.emit(SyntaxError::custom(
                     e.span(),
                     Problem::Custom(
                         d::TRY_WITHOUT_HANDLER,
