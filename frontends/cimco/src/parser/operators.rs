@@ -48,9 +48,12 @@ pub(super) fn binary<'t, 's: 't, I: TokenInput<'t, 's>>(unary: Boxed<'t, 's, I, 
         };
         cap_expr(node, e.state(), at)
     };
-    let p = |p: Punct, op: Op| punct(p).to(op);
+    // One parser a level: a failure adds the level's operators to the
+    // expected set at once, in the order listed.
     let ops = |list: Vec<(Punct, Op)>| {
-        choice(list.into_iter().map(|(t, op)| p(t, op).boxed()).collect::<Vec<_>>())
+        let tokens: Vec<Token<'s>> = list.iter().map(|&(p, _)| Token::punct(p)).collect();
+        one_of(tokens)
+            .map(move |t: Token<'s>| list.iter().find(|&&(p, _)| t.is_punct(p)).map_or(list[0].1, |&(_, op)| op))
             .map_with(|op, e| (op, e.span()))
             .boxed()
     };
