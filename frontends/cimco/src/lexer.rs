@@ -519,7 +519,12 @@ impl<'src> Lexer<'src> {
     /// The longest punctuator at the current position.
     fn punct(&self) -> Option<Punct> {
         let rest = self.rest();
-        let found = Punct::ALL.iter().copied().find(|p| rest.starts_with(p.as_str()))?;
+        let first = *rest.as_bytes().first()?;
+        // The first byte rules out most before their text is compared.
+        let found = Punct::ALL
+            .iter()
+            .copied()
+            .find(|p| p.as_str().as_bytes().first() == Some(&first) && rest.starts_with(p.as_str()))?;
         // `a?.5:b` is a conditional, not optional chaining.
         if found == Punct::QuestionDot && rest[2..].starts_with(|c: char| c.is_ascii_digit()) {
             return Some(Punct::Question);
