@@ -182,6 +182,20 @@ impl<'s> SyntaxError<'s> {
         };
         set.into_iter().flatten()
     }
+
+    /// Makes the error "expected `expected`, found `found`", as `Rich`
+    /// replaces and labels (its set's allocation kept when it has one).
+    fn reset(&mut self, expected: impl IntoIterator<Item = Expected<'s>>, found: Option<Token<'s>>) {
+        let mut set = match &mut *self.reason {
+            Reason::ExpectedFound { expected, .. } => std::mem::take(expected),
+            Reason::Custom(_) => ExpectedSet::default(),
+        };
+        set.clear();
+        for e in expected {
+            set.push(e);
+        }
+        *self.reason = Reason::ExpectedFound { expected: set, found };
+    }
 }
 
 fn found<'s>(found: Option<MaybeRef<'_, Token<'s>>>) -> Option<Token<'s>> {
@@ -249,34 +263,15 @@ where
         span: SimpleSpan,
     ) -> Self {
         self.span = span;
-        match &mut *self.reason {
-            Reason::ExpectedFound { expected, found: old } => {
-                expected.clear();
-                for e in new_expected.into_iter().filter_map(IntoExpected::into_expected) {
-                    expected.push(e);
-                }
-                *old = found(new_found);
-            }
-            Reason::Custom(_) => {
-                let expected = ExpectedSet::collect(new_expected.into_iter().map(IntoExpected::into_expected));
-                *self.reason = Reason::ExpectedFound { expected, found: found(new_found) };
-            }
-        }
+        self.reset(new_expected.into_iter().filter_map(IntoExpected::into_expected), found(new_found));
         self
     }
 
     fn label_with(&mut self, label: L) {
-        match &mut *self.reason {
-            Reason::ExpectedFound { expected, .. } => {
-                expected.clear();
-                if let Some(e) = label.into_expected() {
-                    expected.push(e);
-                }
-            }
-            Reason::Custom(_) => {
-                let expected = ExpectedSet::collect([label.into_expected()]);
-                *self.reason = Reason::ExpectedFound { expected, found: None };
-            }
-        }
+        let found = match &*self.reason {
+            Reason::ExpectedFound { found, .. } => *found,
+            Reason::Custom(_) => None,
+        };
+        self.reset(label.into_expected(), found);
     }
 }
