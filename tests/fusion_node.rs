@@ -498,10 +498,9 @@ fn modern_javascript_in_fusion_posts_prints_what_node_prints() {
         std::fs::write(&post, &text).expect("write the post");
         let compiled = support::compile_file(&post);
         let ours = support::cimco::post_toolpath(&compiled, &job).unwrap_or_else(|e| panic!("{what}: {e}"));
-        let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-        assert!(node.status.success(), "{what}: Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
-        if node.stdout != ours {
-            differ.push(format!("{what}:\n{}", support::diff(&node.stdout, &ours)));
+        let node = node_prints(&script, &post, &jsonl, what);
+        if node != ours {
+            differ.push(format!("{what}:\n{}", support::diff(&node, &ours)));
         }
     }
     assert!(differ.is_empty(), "Node.js first, postc second:\n{}", differ.join("\n"));
@@ -664,9 +663,16 @@ fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
         "plain false false\nmulti true 5 falsetruetrue\nkind false false\nB 1 true -1 -1.571 0.785 1\n\
          C true true false\ntop 0 0 0\nR 1 1 1 1.571 0 1.571\n",
     );
-    let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-    assert!(node.status.success(), "Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
-    assert_eq!(String::from_utf8_lossy(&node.stdout), text, "Node.js first");
+    let node = node_prints(&script, &post, &jsonl, "axes.cps");
+    assert_eq!(String::from_utf8_lossy(&node), text, "Node.js first");
+}
+
+/// What Node.js prints running `post` over `jsonl` with the host
+/// `script`; Node.js stopping fails the test, naming `what`.
+fn node_prints(script: &Path, post: &Path, jsonl: &Path, what: &str) -> Vec<u8> {
+    let node = support::cimco::node_command().arg(script).arg(post).arg(jsonl).output().expect("run node");
+    assert!(node.status.success(), "{what}: Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
+    node.stdout
 }
 
 /// Writes `text` as the post `name` in `folder` and runs it under Node.js,
@@ -750,9 +756,8 @@ fn records_number_the_events_and_say_whether_a_move_follows() {
     let compiled = support::compile_file(&post);
     let ours = support::cimco::post_toolpath(&compiled, &job).expect("postc posts the job");
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/node_host/fusion.js");
-    let node = support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).output().expect("run node");
-    assert!(node.status.success(), "Node.js stops: {}", String::from_utf8_lossy(&node.stderr));
-    assert_eq!(String::from_utf8_lossy(&node.stdout), String::from_utf8_lossy(&ours));
+    let node = node_prints(&script, &post, &jsonl, "records.cps");
+    assert_eq!(String::from_utf8_lossy(&node), String::from_utf8_lossy(&ours));
     // The zero-length feed that only changes the feed is followed by a move.
     assert!(String::from_utf8_lossy(&ours).contains("linear 500 5 true"), "{}", String::from_utf8_lossy(&ours));
 }
