@@ -667,6 +667,83 @@ fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
     assert_eq!(String::from_utf8_lossy(&node), text, "Node.js first");
 }
 
+/// A matrix changed in place reads as the matrix it now is: `forward`,
+/// `right`, `up` and `eulerZYX_R` after `setElement`, `setColumn`,
+/// `setForward`, `transpose`, `negate`, `add` and `subtract`; `multiply`
+/// by a number scales it; `isZero` of the zero matrix is true. The values
+/// are the declarations' meaning, written out here; Node.js with the same
+/// host prints the same bytes.
+#[test]
+fn a_matrix_changed_in_place_reads_as_the_matrix_it_is() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("matrix.cps");
+    std::fs::write(
+        &post,
+        "description = \"matrix\";\ncapabilities = CAPABILITY_MILLING;\n\
+         var f = createFormat({decimals: 3});\n\
+         function v(a) { return f.format(a.x) + \",\" + f.format(a.y) + \",\" + f.format(a.z); }\n\
+         function onOpen() {\n\
+           var m = new Matrix();\n\
+           m.setElement(0, 2, 1);\n\
+           writeln(\"forward \" + v(m.forward) + \" \" + v(m.getForward()));\n\
+           var r = Matrix.getZRotation(Math.PI / 2);\n\
+           writeln(\"euler \" + v(r.eulerZYX_R));\n\
+           r.setElement(0, 0, 1); r.setElement(0, 1, 0); r.setElement(1, 0, 0); r.setElement(1, 1, 1);\n\
+           writeln(\"euler \" + v(r.eulerZYX_R) + \" \" + r.isIdentity());\n\
+           var c = new Matrix();\n\
+           c.setForward(new Vector(0, 1, 0));\n\
+           writeln(\"column \" + v(c.forward) + \" \" + v(c.up) + \" \" + v(c.getRow(1)));\n\
+           c.transpose();\n\
+           writeln(\"transposed \" + v(c.getRow(2)) + \" \" + v(c.forward));\n\
+           var n = new Matrix();\n\
+           n.negate();\n\
+           writeln(\"negated \" + v(n.right) + \" \" + v(new Matrix().getNegated().up));\n\
+           n.add(new Matrix(3));\n\
+           writeln(\"sum \" + v(n.right));\n\
+           n.subtract(new Matrix(2));\n\
+           writeln(\"difference \" + v(n.right) + \" \" + n.isZero() + \" \" + new Matrix(0).isZero());\n\
+           writeln(\"scaled \" + v(new Matrix().multiply(2).forward));\n\
+           writeln(\"angles \" + v(new Matrix().getEuler2(EULER_ZXZ_R)) + \" \" + v(new Matrix().getTurnAndTilt(0, 1)));\n\
+         }\n\
+         function onSection() {}\nfunction onRapid(x, y, z) {}\nfunction onLinear(x, y, z, feed) {}\n\
+         function onClose() {}\n",
+    )
+    .expect("write the post");
+    let ours = support::cimco::post_toolpath(&support::compile_file(&post), &job).expect("posts");
+    let text = String::from_utf8(ours.clone()).expect("text");
+    assert_eq!(
+        text.replace("\r\n", "\n"),
+        "forward 1,0,1 1,0,1\neuler 0,0,1.571\neuler 0,0,0 true\ncolumn 0,1,0 0,1,0 0,1,1\n\
+         transposed 0,1,0 0,0,0\nnegated -1,0,0 0,-1,0\nsum 2,0,0\ndifference 0,0,0 true true\n\
+         scaled 0,0,2\nangles 0,0,0 0,0,0\n",
+    );
+    let node = node_prints(&script, &post, &jsonl, "matrix.cps");
+    assert_eq!(String::from_utf8_lossy(&node), text, "Node.js first");
+}
+
+/// A rotation's angles in one of Fusion's conventions are known to postc
+/// for the identity only (docs/fusion.md, choice 39): of another matrix,
+/// the post stops with the function named at its call, under Node.js's
+/// host as under postc, and writes nothing.
+#[test]
+fn euler_angles_of_a_rotation_stop_the_post_with_the_function_named() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let said = both_stop(
+        folder.path(),
+        "euler.cps",
+        "description = \"euler\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function onOpen() {\n  var top = new Matrix().getEuler2(EULER_XYZ_S);\n  writeln(\"A\" + top.x);\n\
+         var tilted = Matrix.getXRotation(0.5).getEuler2(EULER_XYZ_S);\n}\n\
+         function onClose() {}\n",
+        &job,
+        &jsonl,
+        &script,
+        "Matrix.getEuler2",
+    );
+    assert!(said.contains("error[RT036]") && said.contains("`Matrix.getEuler2`"), "{said}");
+    assert!(said.contains("euler.cps:6:1"), "not at the post's statement:\n{said}");
+}
+
 /// What Node.js prints running `post` over `jsonl` with the host
 /// `script`; Node.js stopping fails the test, naming `what`.
 fn node_prints(script: &Path, post: &Path, jsonl: &Path, what: &str) -> Vec<u8> {

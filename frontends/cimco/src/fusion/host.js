@@ -436,22 +436,50 @@ function Matrix(a, b, c) {
     rows = [__vector(a), __vector(b), __vector(c)];
   }
   this.rows = rows;
-  this.forward = new Vector(rows[0].z, rows[1].z, rows[2].z);
-  this.right = new Vector(rows[0].x, rows[1].x, rows[2].x);
-  this.up = new Vector(rows[0].y, rows[1].y, rows[2].y);
-  // The ZYX Euler angles in radians: the matrix is the rotation about X by
-  // `x`, then about Y by `y`, then about Z by `z` (`Matrix.getXYZRotation`).
-  this.eulerZYX_R = new Vector(Math.atan2(rows[2].y, rows[2].z), -Math.asin(clamp(-1, rows[2].x, 1)), Math.atan2(rows[1].x, rows[0].x));
+  __derive(this);
   this.getEulerZYX = function () { return __vector(this.eulerZYX_R); };
   this.getElement = function (row, column) { return this.rows[row].getCoordinate(column); };
-  this.setElement = function (row, column, value) { this.rows[row].setCoordinate(column, value); };
+  // Each change of an element keeps the properties read from them
+  // (`forward`, `right`, `up`, `eulerZYX_R`) those of the matrix as it is.
+  this.setElement = function (row, column, value) {
+    this.rows[row].setCoordinate(column, value);
+    __derive(this);
+  };
   this.getRow = function (row) { return __vector(this.rows[row]); };
+  this.setRow = function (row, value) {
+    this.rows[row] = __vector(value);
+    __derive(this);
+  };
   this.getColumn = function (column) {
     return new Vector(this.rows[0].getCoordinate(column), this.rows[1].getCoordinate(column), this.rows[2].getCoordinate(column));
+  };
+  this.setColumn = function (column, value) {
+    for (var i = 0; i < 3; ++i) { this.rows[i].setCoordinate(column, value.getCoordinate(i)); }
+    __derive(this);
   };
   this.getForward = function () { return this.getColumn(2); };
   this.getRight = function () { return this.getColumn(0); };
   this.getUp = function () { return this.getColumn(1); };
+  this.setForward = function (v) { this.setColumn(2, v); };
+  this.setRight = function (v) { this.setColumn(0, v); };
+  this.setUp = function (v) { this.setColumn(1, v); };
+  this.transpose = function () {
+    this.rows = this.getTransposed().rows;
+    __derive(this);
+  };
+  this.negate = function () {
+    for (var i = 0; i < 3; ++i) { this.rows[i] = this.rows[i].getNegated(); }
+    __derive(this);
+  };
+  this.getNegated = function () { return new Matrix(this.rows[0].getNegated(), this.rows[1].getNegated(), this.rows[2].getNegated()); };
+  this.add = function (m) {
+    for (var i = 0; i < 3; ++i) { this.rows[i] = Vector.sum(this.rows[i], m.rows[i]); }
+    __derive(this);
+  };
+  this.subtract = function (m) {
+    for (var i = 0; i < 3; ++i) { this.rows[i] = Vector.diff(this.rows[i], m.rows[i]); }
+    __derive(this);
+  };
   this.isIdentity = function () {
     for (var i = 0; i < 3; ++i) {
       for (var j = 0; j < 3; ++j) {
@@ -460,9 +488,17 @@ function Matrix(a, b, c) {
     }
     return true;
   };
-  this.isZero = function () { return false; };
+  this.isZero = function () {
+    for (var i = 0; i < 3; ++i) {
+      if (!this.rows[i].isZero()) { return false; }
+    }
+    return true;
+  };
   this.getTransposed = function () { return new Matrix(this.getColumn(0), this.getColumn(1), this.getColumn(2)); };
   this.multiply = function (v) {
+    if (typeof v == "number") {
+      return new Matrix(Vector.product(this.rows[0], v), Vector.product(this.rows[1], v), Vector.product(this.rows[2], v));
+    }
     if (v.rows !== undefined) {
       var t = v.getTransposed();
       var r = [];
@@ -473,8 +509,35 @@ function Matrix(a, b, c) {
     }
     return new Vector(Vector.dot(this.rows[0], v), Vector.dot(this.rows[1], v), Vector.dot(this.rows[2], v));
   };
-  this.getEuler2 = function (convention) { return new Vector(0, 0, 0); };
-  this.getTurnAndTilt = function (a, b) { return new Vector(0, 0, 0); };
+  // A rotation's angles in a convention: 0 for the identity (the work
+  // plane of every section postc posts), in every convention; another
+  // matrix stops the post with the function named (docs/fusion.md,
+  // choice 39).
+  this.getEuler = function (convention) { return __identityAngles(this, "getEuler"); };
+  this.getEuler2 = function (convention) { return __identityAngles(this, "getEuler2"); };
+  this.getEulerZXZ = function () { return __identityAngles(this, "getEulerZXZ"); };
+  this.getEulerZYZ = function () { return __identityAngles(this, "getEulerZYZ"); };
+  this.getEulerXYZ = function () { return __identityAngles(this, "getEulerXYZ"); };
+  this.getTurnAndTilt = function (primary, secondary) { return __identityAngles(this, "getTurnAndTilt"); };
+  this.getTiltAndTilt = function (primary, secondary) { return __identityAngles(this, "getTiltAndTilt"); };
+}
+// The properties read from a matrix's elements: its columns (`right`,
+// `up`, `forward`) and its ZYX Euler angles in radians, the matrix being
+// the rotation about X by `x`, then about Y by `y`, then about Z by `z`
+// (`Matrix.getXYZRotation`).
+function __derive(m) {
+  var rows = m.rows;
+  m.forward = new Vector(rows[0].z, rows[1].z, rows[2].z);
+  m.right = new Vector(rows[0].x, rows[1].x, rows[2].x);
+  m.up = new Vector(rows[0].y, rows[1].y, rows[2].y);
+  m.eulerZYX_R = new Vector(Math.atan2(rows[2].y, rows[2].z), -Math.asin(clamp(-1, rows[2].x, 1)), Math.atan2(rows[1].x, rows[0].x));
+}
+function __identityAngles(m, name) {
+  if (!m.isIdentity()) {
+    error("postc does not compute a rotation's angles in Fusion's conventions yet: `Matrix." + name +
+      "` of a matrix other than the identity (docs/fusion.md, choice 39)");
+  }
+  return new Vector(0, 0, 0);
 }
 function __Matrix_getIdentity() { return new Matrix(); };
 function __Matrix_getXRotation(a) {
