@@ -138,23 +138,26 @@ pub(crate) fn format_number(spec: &Value, value: &Value, out: &mut String) -> Re
     format_spec(&f, value, out)
 }
 
-/// The index in [`FIELDS`] of a specifier's name.
+/// The index in [`FIELDS`] of a specifier's name: the one candidate its
+/// length and first byte leave, compared with that name's literal (every
+/// key of every format is looked up on every call; a comparison with a
+/// literal is a few word compares, with a name of [`FIELDS`] a call).
 fn field(name: &[u8]) -> Option<usize> {
-    Some(match name {
-        b"scale" => SCALE,
-        b"offset" => OFFSET,
-        b"cyclicLimit" => CYCLIC_LIMIT,
-        b"cyclicSign" => CYCLIC_SIGN,
-        b"decimals" => DECIMALS,
-        b"trim" => TRIM,
-        b"trimLeadZero" => TRIM_LEAD_ZERO,
-        b"forceDecimal" => FORCE_DECIMAL,
-        b"zeropad" => ZEROPAD,
-        b"width" => WIDTH,
-        b"forceSign" => FORCE_SIGN,
-        b"decimalSymbol" => DECIMAL_SYMBOL,
-        b"prefix" => PREFIX,
-        b"suffix" => SUFFIX,
+    Some(match (name.len(), *name.first()?) {
+        (5, b's') if name == b"scale" => SCALE,
+        (6, b'o') if name == b"offset" => OFFSET,
+        (11, b'c') if name == b"cyclicLimit" => CYCLIC_LIMIT,
+        (10, b'c') if name == b"cyclicSign" => CYCLIC_SIGN,
+        (8, b'd') if name == b"decimals" => DECIMALS,
+        (4, b't') if name == b"trim" => TRIM,
+        (12, b't') if name == b"trimLeadZero" => TRIM_LEAD_ZERO,
+        (12, b'f') if name == b"forceDecimal" => FORCE_DECIMAL,
+        (7, b'z') if name == b"zeropad" => ZEROPAD,
+        (5, b'w') if name == b"width" => WIDTH,
+        (9, b'f') if name == b"forceSign" => FORCE_SIGN,
+        (13, b'd') if name == b"decimalSymbol" => DECIMAL_SYMBOL,
+        (6, b'p') if name == b"prefix" => PREFIX,
+        (6, b's') if name == b"suffix" => SUFFIX,
         _ => return None,
     })
 }
