@@ -338,3 +338,29 @@ function onLinear(x, y, z, m) { return ""; }
     let scripted = format!("{js}function keepsScripts(t) {{ return isFinite(t); }}\n");
     check(&scripted, ONE_MOVE, expected);
 }
+
+/// JavaScript's value semantics are one definition (`postc_ir::js`) for
+/// the values known when the post is compiled and those it computes when
+/// it runs: texts order by their UTF-16 units (U+E000 sorts after 😀,
+/// whose first unit is a surrogate, U+D83D, though its UTF-8 bytes sort
+/// before), text reads as a number as `Number()` reads it (`"0x10"`,
+/// `"Infinity"`) and a number prints as `String()` prints it (`1e+21`,
+/// `1e-7`), whether the globals are constants the compiler folds or
+/// values `onOpen` makes.
+#[test]
+fn values_known_when_compiling_are_the_values_javascript_computes() {
+    let js = "var linebreak = \"\\n\";\n\
+var privateUse = \"\u{E000}\";\n\
+var emoji = \"\u{1F600}\";\n\
+var hex = \"0x10\" * 1;\n\
+var inf = \"Infinity\" * 1;\n\
+var big = \"\" + 1e21;\n\
+var small = \"\" + 1e-7;\n\
+var known = (privateUse < emoji) + \" \" + hex + \" \" + inf + \" \" + big + \" \" + small;\n\
+function made(a, b) {\n\
+    return (a < b) + \" \" + [b, a, \"z\"].sort().join(\",\") + \" \" + (\"0x10\" * a.length) + \" \" + (\"\" + 1e21 * a.length);\n\
+}\n\
+function onOpen() { return known + linebreak + made(privateUse, emoji) + linebreak; }\n\
+function onLinear(x, y, z, m) { return \"\"; }\n";
+    check(js, ONE_MOVE, "false 16 Infinity 1e+21 1e-7\nfalse z,\u{1F600},\u{E000} 16 1e+21\n");
+}

@@ -7,6 +7,13 @@
 //! [`Value`]s that are numbers, text or booleans. What a dialect cannot say
 //! here runs as a [`crate::post::Script`].
 //!
+//! The JavaScript dialects' values follow JavaScript's own semantics,
+//! defined once in [`crate::js`] (ToNumber, ToString, the order of texts,
+//! 32-bit conversions): the frontend's compile-time values and the
+//! runtime's interpreter, constant folder and script host read them there,
+//! so a value folded when the post is compiled is the value it computes
+//! when it runs.
+//!
 //! The IR says what a post means, not how it runs fast: a CIMCO handler is
 //! `Write(onLinear(x, y, z, movement))` and `onLinear` returns its text.
 //! The runtime prepares its own fast form (postc-runtime's `prepare`:

@@ -103,6 +103,7 @@ pub mod diagnostic;
 pub mod event;
 pub mod format;
 pub mod id;
+pub mod js;
 pub mod limits;
 pub mod outline;
 pub mod post;

@@ -52,7 +52,7 @@ pub mod engine;
 pub mod exec;
 pub mod geometry;
 mod interp;
-pub mod js;
+pub use postc_ir::js;
 pub mod lathe;
 pub mod machine;
 pub mod number;

@@ -340,9 +340,13 @@ impl PartialOrd for Text {
 }
 
 impl Ord for Text {
-    /// UTF-8 bytes compare as their characters do.
+    /// JavaScript's order of texts ([`crate::js::compare_text`]): text kept
+    /// in place is ASCII, whose bytes compare as its UTF-16 units do.
     fn cmp(&self, other: &Text) -> std::cmp::Ordering {
-        self.as_bytes().cmp(other.as_bytes())
+        match (&self.0, &other.0) {
+            (Repr::Shared(a), Repr::Shared(b)) => crate::js::compare_text(a, b),
+            _ => self.as_bytes().cmp(other.as_bytes()),
+        }
     }
 }
 

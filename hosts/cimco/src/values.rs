@@ -365,7 +365,7 @@ pub fn compare(a: &Dynamic, b: &Dynamic) -> Option<std::cmp::Ordering> {
     };
     let (a, b) = (prim(a), prim(b));
     if let (Some(x), Some(y)) = (a.clone().try_cast::<ImmutableString>(), b.clone().try_cast::<ImmutableString>()) {
-        return Some(x.as_str().cmp(y.as_str()));
+        return Some(js::compare_text(x.as_str(), y.as_str()));
     }
     to_number(&a).partial_cmp(&to_number(&b))
 }

@@ -1,7 +1,12 @@
 //! Values known when the post is compiled: the globals that are never
 //! assigned after their first value (`useRadius`, `linebreak`, the
 //! properties of `globals`), and the arguments of `createFormat` and
-//! `createVariable` calls. JavaScript's rules for the operators apply.
+//! `createVariable` calls. JavaScript's rules for the operators apply,
+//! with its conversions and order of texts from `postc_ir::js`, which the
+//! runtime's interpreter uses too: a value known here is the value the
+//! post computes when it runs.
+
+use postc_ir::js;
 
 use crate::ast::*;
 
@@ -27,35 +32,22 @@ impl Const {
         }
     }
 
-    /// ToNumber, when it is certain here: text is read only when it is
-    /// blank or a plain decimal number (`" 12 "`, `"-1.5e3"`), where
-    /// Rust's parse and JavaScript's `Number()` agree. Other text
-    /// (`"0x10"`, `"Infinity"`, `"inf"`, which Rust reads as infinity) is
-    /// `None`: the runtime reads it, as JavaScript does.
+    /// ToNumber (`Number(v)`).
     pub fn num(&self) -> Option<f64> {
         Some(match self {
             Const::Num(n) => *n,
             Const::Bool(b) => f64::from(u8::from(*b)),
-            Const::Str(s) => {
-                let t = s.trim();
-                if t.is_empty() {
-                    0.0
-                } else if plain_decimal(t) {
-                    t.parse().ok()?
-                } else {
-                    return None;
-                }
-            }
+            Const::Str(s) => js::text_to_number(s),
             Const::Null => 0.0,
             Const::Undefined => f64::NAN,
         })
     }
 
-    /// ToString, when JavaScript's text of the value is certain.
+    /// ToString (`String(v)`).
     pub fn text(&self) -> Option<String> {
         Some(match self {
             Const::Str(s) => s.clone(),
-            Const::Num(n) => number_text(*n)?,
+            Const::Num(n) => js::number_to_string(*n),
             Const::Bool(b) => b.to_string(),
             Const::Null => "null".into(),
             Const::Undefined => "undefined".into(),
@@ -63,49 +55,9 @@ impl Const {
     }
 }
 
-/// Text that is a decimal number and nothing else: a sign, digits with
-/// at most one point (a digit on one side), an exponent.
-fn plain_decimal(t: &str) -> bool {
-    let b = t.strip_prefix(['+', '-']).unwrap_or(t).as_bytes();
-    let mantissa = b.iter().position(|c| *c == b'e' || *c == b'E').unwrap_or(b.len());
-    let (m, e) = b.split_at(mantissa);
-    let digits = m.iter().filter(|c| c.is_ascii_digit()).count();
-    let points = m.iter().filter(|c| **c == b'.').count();
-    let exponent_ok = match e {
-        [] => true,
-        [_, rest @ ..] => {
-            let rest = rest.strip_prefix(b"+").or_else(|| rest.strip_prefix(b"-")).unwrap_or(rest);
-            !rest.is_empty() && rest.iter().all(u8::is_ascii_digit)
-        }
-    };
-    digits > 0 && points <= 1 && digits + points == m.len() && exponent_ok
-}
-
-/// A number as JavaScript prints it (Number::toString), for the range
-/// where it has no exponent form: the shortest digits that read back as
-/// the same double (Rust finds the same digits), and a whole number past
-/// 2^53 as those digits padded with zeros (`2 ** 60` is
-/// `1152921504606847000`, not its exact value).
-pub fn number_text(n: f64) -> Option<String> {
-    if n == 0.0 {
-        return Some("0".into());
-    }
-    if !n.is_finite() || n.abs() >= 1e21 || n.abs() < 1e-6 {
-        return None;
-    }
-    if n == n.trunc() {
-        if n.abs() < 9_007_199_254_740_992.0 {
-            return Some(format!("{}", n as i64));
-        }
-        // Shortest digits and exponent: `1.152921504606847e18`.
-        let e = format!("{:e}", n.abs());
-        let (mantissa, exp) = e.split_once('e')?;
-        let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
-        let exp: usize = exp.parse().ok()?;
-        let sign = if n < 0.0 { "-" } else { "" };
-        return Some(format!("{sign}{digits:0<width$}", width = exp + 1));
-    }
-    Some(format!("{n}"))
+/// A number as JavaScript prints it (`String(n)`).
+pub fn number_text(n: f64) -> String {
+    js::number_to_string(n)
 }
 
 /// Evaluates an expression made of literals, known names and operators.
@@ -137,7 +89,7 @@ pub fn const_eval(
                 UnaryOp::Neg => Const::Num(-v.num()?),
                 UnaryOp::Plus => Const::Num(v.num()?),
                 UnaryOp::Not => Const::Bool(!v.truthy()),
-                UnaryOp::BitNot => Const::Num(f64::from(!to_int32(v.num()?))),
+                UnaryOp::BitNot => Const::Num(f64::from(!js::to_int32(v.num()?))),
                 UnaryOp::Typeof => Const::Str(
                     match v {
                         Const::Num(_) => "number",
@@ -169,13 +121,6 @@ pub fn const_eval(
     })
 }
 
-fn to_int32(x: f64) -> i32 {
-    if !x.is_finite() {
-        return 0;
-    }
-    x.trunc().rem_euclid(4_294_967_296.0) as u32 as i32
-}
-
 /// A binary operator over known values.
 pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
     use BinaryOp::*;
@@ -192,7 +137,7 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
         Rem => num(|x, y| x % y),
         Lt | Le | Gt | Ge => {
             let ord = match (a, b) {
-                (Const::Str(x), Const::Str(y)) => x.partial_cmp(y),
+                (Const::Str(x), Const::Str(y)) => Some(js::compare_text(x, y)),
                 _ => a.num()?.partial_cmp(&b.num()?),
             };
             let r = match op {
@@ -208,7 +153,7 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
         Eq => Some(Const::Bool(loose_eq(a, b)?)),
         Ne => Some(Const::Bool(!loose_eq(a, b)?)),
         BitAnd | BitOr | BitXor | Shl | Shr | UShr => {
-            let (x, y) = (to_int32(a.num()?), to_int32(b.num()?));
+            let (x, y) = (js::to_int32(a.num()?), js::to_int32(b.num()?));
             let s = (y as u32) & 31;
             Some(Const::Num(match op {
                 BitAnd => f64::from(x & y),

@@ -1333,7 +1333,7 @@ fn map_plain(a: Agg, f: &dyn Fn(Ir) -> Ir) -> Agg {
 /// The property key a constant names (JavaScript's `ToString`).
 fn const_key(i: &Ir) -> Option<String> {
     Some(match i {
-        Ir::Number(n) => super::super::consts::number_text(*n)?,
+        Ir::Number(n) => super::super::consts::number_text(*n),
         Ir::Text(s) => s.clone(),
         Ir::Bool(b) => b.to_string(),
         Ir::Null => "null".into(),

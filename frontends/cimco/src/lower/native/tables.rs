@@ -200,7 +200,7 @@ pub(super) fn lookup(i: Ir, entries: &[(String, Ir)], missing: &Ir) -> Option<Ir
 /// The property key a constant names (JavaScript's `ToString`).
 fn const_key(i: &Ir) -> Option<String> {
     Some(match i {
-        Ir::Number(n) => consts::number_text(*n)?,
+        Ir::Number(n) => consts::number_text(*n),
         Ir::Text(s) => s.clone(),
         Ir::Bool(b) => b.to_string(),
         Ir::Null => "null".into(),
@@ -212,7 +212,7 @@ fn const_key(i: &Ir) -> Option<String> {
 /// A key that is a number as JavaScript prints it ("1", "2.5", "-3").
 fn numeric_key(k: &str) -> Option<f64> {
     let n: f64 = k.parse().ok()?;
-    (n.is_finite() && consts::number_text(n).as_deref() == Some(k)).then_some(n)
+    (n.is_finite() && consts::number_text(n) == k).then_some(n)
 }
 
 /// Cheap and free of effects: may be evaluated once per entry.

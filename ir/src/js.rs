@@ -1,10 +1,31 @@
-//! JavaScript value semantics shared by the native interpreter and the
-//! Rhai host: number to text, text to number, `parseInt`, `parseFloat`,
-//! `toFixed`, `Math.round` and 32-bit integer conversions.
+//! JavaScript value semantics, defined once for every part of postc that
+//! evaluates JavaScript: the frontend's compile-time constants
+//! (`postc-front-cimco`'s `lower/consts.rs`), the runtime's interpreter
+//! and constant folder, and the Rhai script host. Number to text, text to
+//! number, the order of texts, `parseInt`, `parseFloat`, `toFixed`,
+//! `Math.round` and 32-bit integer conversions.
 //!
 //! These follow ECMAScript 5 closely enough for post processors: numbers
 //! print with the shortest digits that read back as the same double,
 //! switching to exponent form at 1e21 and below 1e-6 as JavaScript does.
+
+/// Powers of ten a double holds exactly.
+const POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
+    1e21, 1e22,
+];
+
+/// The order JavaScript gives two texts (`<`, `>`, `sort()` without a
+/// comparator): by UTF-16 code units. UTF-8's byte order is the same for
+/// every character up to U+FFFF, but puts U+E000..U+FFFF before the
+/// characters past U+FFFF, which UTF-16 writes as surrogates (U+D800..):
+/// texts that hold both are compared unit by unit.
+pub fn compare_text(a: &str, b: &str) -> std::cmp::Ordering {
+    if a.is_ascii() || b.is_ascii() {
+        return a.as_bytes().cmp(b.as_bytes());
+    }
+    a.encode_utf16().cmp(b.encode_utf16())
+}
 
 /// The text JavaScript gives a number (`String(n)`, `"" + n`).
 pub fn number_to_string(n: f64) -> String {
@@ -145,7 +166,7 @@ fn short_decimal(b: &[u8]) -> Option<f64> {
             _ => return None,
         }
     }
-    (digits > 0).then(|| m as f64 / crate::number::POW10[fraction])
+    (digits > 0).then(|| m as f64 / POW10[fraction])
 }
 
 /// JavaScript's `parseInt(text, radix)`; a radix of 0 means 10, or 16
