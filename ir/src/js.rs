@@ -613,3 +613,85 @@ pub fn prototype_has(kind: ProtoKind, name: &str) -> bool {
     };
     own.contains(&name) || OBJECT.contains(&name)
 }
+
+/// A JavaScript primitive value, borrowed from the value it stands for:
+/// what the operators below read. Each engine's values (the frontend's
+/// compile-time constants, the runtime's values once objects are made
+/// primitives) give theirs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Primitive<'a> {
+    Number(f64),
+    Text(&'a str),
+    Bool(bool),
+    Null,
+    Undefined,
+}
+
+impl Primitive<'_> {
+    /// ToNumber (`Number(v)`).
+    pub fn to_number(self) -> f64 {
+        match self {
+            Primitive::Number(n) => n,
+            Primitive::Text(t) => text_to_number(t),
+            Primitive::Bool(b) => f64::from(u8::from(b)),
+            Primitive::Null => 0.0,
+            Primitive::Undefined => f64::NAN,
+        }
+    }
+
+    /// ToBoolean (`!!v`).
+    pub fn truthy(self) -> bool {
+        match self {
+            Primitive::Number(n) => n != 0.0 && !n.is_nan(),
+            Primitive::Text(t) => !t.is_empty(),
+            Primitive::Bool(b) => b,
+            Primitive::Null | Primitive::Undefined => false,
+        }
+    }
+
+    /// Appends ToString (`String(v)`).
+    pub fn push_text(self, out: &mut String) {
+        match self {
+            Primitive::Number(n) => push_number(out, n),
+            Primitive::Text(t) => out.push_str(t),
+            Primitive::Bool(b) => out.push_str(if b { "true" } else { "false" }),
+            Primitive::Null => out.push_str("null"),
+            Primitive::Undefined => out.push_str("undefined"),
+        }
+    }
+}
+
+/// `a === b` (IsStrictlyEqual) of two primitives.
+pub fn strict_equals(a: Primitive<'_>, b: Primitive<'_>) -> bool {
+    use Primitive::*;
+    match (a, b) {
+        (Number(x), Number(y)) => x == y,
+        (Text(x), Text(y)) => x == y,
+        (Bool(x), Bool(y)) => x == y,
+        (Null, Null) | (Undefined, Undefined) => true,
+        _ => false,
+    }
+}
+
+/// `a == b` (IsLooselyEqual) of two primitives: null and undefined equal
+/// each other only, two texts compare as texts, anything else as numbers.
+pub fn loose_equals(a: Primitive<'_>, b: Primitive<'_>) -> bool {
+    use Primitive::*;
+    match (a, b) {
+        (Null | Undefined, Null | Undefined) => true,
+        (Null | Undefined, _) | (_, Null | Undefined) => false,
+        (Text(x), Text(y)) => x == y,
+        _ => a.to_number() == b.to_number(),
+    }
+}
+
+/// The order of two primitives for `<`, `<=`, `>`, `>=` (IsLessThan):
+/// two texts by their UTF-16 units ([`compare_text`]), anything else as
+/// numbers; `None` when a number is NaN, which makes every one of the
+/// four false.
+pub fn order(a: Primitive<'_>, b: Primitive<'_>) -> Option<std::cmp::Ordering> {
+    match (a, b) {
+        (Primitive::Text(x), Primitive::Text(y)) => Some(compare_text(x, y)),
+        _ => a.to_number().partial_cmp(&b.to_number()),
+    }
+}

@@ -413,6 +413,21 @@ impl Value {
         }
     }
 
+    /// The primitive the value is, for [`crate::js`]'s operators; `None`
+    /// for an array, object, function or regular expression, which the
+    /// operators make primitive first.
+    pub fn primitive(&self) -> Option<crate::js::Primitive<'_>> {
+        use crate::js::Primitive;
+        Some(match self {
+            Value::Num(n) => Primitive::Number(*n),
+            Value::Text(t) => Primitive::Text(t.as_str()),
+            Value::Bool(b) => Primitive::Bool(*b),
+            Value::Null => Primitive::Null,
+            Value::Undefined => Primitive::Undefined,
+            _ => return None,
+        })
+    }
+
     /// Truthiness: non-zero numbers, non-empty text, true, and every
     /// array, object, function and regular expression.
     pub fn truthy(&self) -> bool {

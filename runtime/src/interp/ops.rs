@@ -167,26 +167,21 @@ pub fn compare(op: BinaryOp, a: &Value, b: &Value) -> Option<bool> {
     })
 }
 
-/// JavaScript `==` over the interpreter's values (null stands for both
-/// `null` and `undefined`).
+/// JavaScript `==` over the interpreter's values: two texts or two
+/// numbers at once, two objects by identity, an object against a
+/// primitive by its text (ToPrimitive), two primitives as
+/// [`js::loose_equals`] says.
 #[inline]
 fn js_loose_eq(a: &Value, b: &Value) -> bool {
-    let absent = |v: &Value| matches!(v, Value::Null | Value::Undefined);
     match (a, b) {
-        _ if absent(a) || absent(b) => absent(a) && absent(b),
         (Value::Text(x), Value::Text(y)) => x == y,
-        (
-            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_),
-            Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_),
-        ) => a == b,
-        // An object against a primitive compares its text (ToPrimitive).
-        (Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_), _) => {
-            js_loose_eq(&Value::Text(a.to_text()), b)
-        }
-        (_, Value::Array(_) | Value::Object(_) | Value::Func(_) | Value::Output(_) | Value::Regex(_)) => {
-            js_loose_eq(a, &Value::Text(b.to_text()))
-        }
-        _ => js_number(a) == js_number(b),
+        (Value::Num(x), Value::Num(y)) => x == y,
+        _ => match (a.primitive(), b.primitive()) {
+            (Some(x), Some(y)) => js::loose_equals(x, y),
+            (None, None) => a == b,
+            (None, Some(_)) => js_loose_eq(&Value::Text(a.to_text()), b),
+            (Some(_), None) => js_loose_eq(a, &Value::Text(b.to_text())),
+        },
     }
 }
 

@@ -90,3 +90,43 @@ fn an_error_text_gives_the_name_and_message_of_its_object() {
     assert_eq!(error_parts("TypeError: cannot read property 'x' of undefined").map(|p| p.0), Some("TypeError"));
     assert_eq!(error_parts("the post stopped"), None);
 }
+
+/// Texts order by their UTF-16 units, as JavaScript's `<` and `sort()`
+/// order them: a character past U+FFFF (two surrogate units from U+D800)
+/// comes before U+E000..U+FFFF, though its UTF-8 bytes come after.
+#[test]
+fn texts_order_by_utf16_units() {
+    use std::cmp::Ordering::*;
+    assert_eq!(compare_text("a", "b"), Less);
+    assert_eq!(compare_text("ab", "a"), Greater);
+    assert_eq!(compare_text("\u{E000}", "\u{1F600}"), Greater);
+    assert_eq!(compare_text("\u{D7FF}", "\u{1F600}"), Less);
+    assert_eq!(compare_text("é", "z"), Greater);
+    assert_eq!(compare_text("\u{1F600}", "\u{1F600}"), Equal);
+}
+
+/// The primitive operators: `==` converts to numbers unless both are
+/// texts, null and undefined equal each other only; `===` never
+/// converts; `<` and friends compare texts as texts and NaN with nothing.
+#[test]
+fn primitive_operators_are_javascripts() {
+    use Primitive::*;
+    assert!(loose_equals(Text("0x10"), Number(16.0)));
+    assert!(loose_equals(Bool(true), Text("1")));
+    assert!(loose_equals(Null, Undefined));
+    assert!(!loose_equals(Null, Number(0.0)));
+    assert!(!loose_equals(Text("1.0"), Text("1")));
+    assert!(!strict_equals(Text("1"), Number(1.0)));
+    assert!(!strict_equals(Null, Undefined));
+    assert!(!loose_equals(Number(f64::NAN), Number(f64::NAN)));
+    assert_eq!(order(Text("10"), Text("9")), Some(std::cmp::Ordering::Less));
+    assert_eq!(order(Text("10"), Number(9.0)), Some(std::cmp::Ordering::Greater));
+    assert_eq!(order(Undefined, Number(0.0)), None);
+    assert_eq!(order(Null, Number(0.0)), Some(std::cmp::Ordering::Equal));
+    assert!(Text(" ").truthy() && !Text("").truthy() && !Number(f64::NAN).truthy());
+    let mut out = String::new();
+    for p in [Number(1e21), Bool(false), Null, Undefined, Text("x")] {
+        p.push_text(&mut out);
+    }
+    assert_eq!(out, "1e+21falsenullundefinedx");
+}

@@ -23,35 +23,32 @@ pub enum Const {
 }
 
 impl Const {
-    pub fn truthy(&self) -> bool {
+    /// The primitive this value is, for `postc_ir::js`'s operators.
+    pub fn primitive(&self) -> js::Primitive<'_> {
         match self {
-            Const::Num(n) => *n != 0.0 && !n.is_nan(),
-            Const::Str(s) => !s.is_empty(),
-            Const::Bool(b) => *b,
-            Const::Null | Const::Undefined => false,
+            Const::Num(n) => js::Primitive::Number(*n),
+            Const::Str(s) => js::Primitive::Text(s),
+            Const::Bool(b) => js::Primitive::Bool(*b),
+            Const::Null => js::Primitive::Null,
+            Const::Undefined => js::Primitive::Undefined,
         }
+    }
+
+    /// ToBoolean.
+    pub fn truthy(&self) -> bool {
+        self.primitive().truthy()
     }
 
     /// ToNumber (`Number(v)`).
     pub fn num(&self) -> Option<f64> {
-        Some(match self {
-            Const::Num(n) => *n,
-            Const::Bool(b) => f64::from(u8::from(*b)),
-            Const::Str(s) => js::text_to_number(s),
-            Const::Null => 0.0,
-            Const::Undefined => f64::NAN,
-        })
+        Some(self.primitive().to_number())
     }
 
     /// ToString (`String(v)`).
     pub fn text(&self) -> Option<String> {
-        Some(match self {
-            Const::Str(s) => s.clone(),
-            Const::Num(n) => js::number_to_string(*n),
-            Const::Bool(b) => b.to_string(),
-            Const::Null => "null".into(),
-            Const::Undefined => "undefined".into(),
-        })
+        let mut out = String::new();
+        self.primitive().push_text(&mut out);
+        Some(out)
     }
 }
 
@@ -124,10 +121,16 @@ pub fn const_eval(
 /// A binary operator over known values.
 pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
     use BinaryOp::*;
-    let num = |f: fn(f64, f64) -> f64| Some(Const::Num(f(a.num()?, b.num()?)));
+    let (x, y) = (a.primitive(), b.primitive());
+    let num = |f: fn(f64, f64) -> f64| Some(Const::Num(f(x.to_number(), y.to_number())));
     match op {
         Add => match (a, b) {
-            (Const::Str(_), _) | (_, Const::Str(_)) => Some(Const::Str(format!("{}{}", a.text()?, b.text()?))),
+            (Const::Str(_), _) | (_, Const::Str(_)) => {
+                let mut text = String::new();
+                x.push_text(&mut text);
+                y.push_text(&mut text);
+                Some(Const::Str(text))
+            }
             _ => num(|x, y| x + y),
         },
         In | Instanceof => None,
@@ -136,52 +139,30 @@ pub fn binary(op: BinaryOp, a: &Const, b: &Const) -> Option<Const> {
         Div => num(|x, y| x / y),
         Rem => num(|x, y| x % y),
         Lt | Le | Gt | Ge => {
-            let ord = match (a, b) {
-                (Const::Str(x), Const::Str(y)) => Some(js::compare_text(x, y)),
-                _ => a.num()?.partial_cmp(&b.num()?),
-            };
-            let r = match op {
-                Lt => ord == Some(std::cmp::Ordering::Less),
-                Le => matches!(ord, Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)),
-                Gt => ord == Some(std::cmp::Ordering::Greater),
-                _ => matches!(ord, Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)),
-            };
-            Some(Const::Bool(r))
+            use std::cmp::Ordering::{Equal, Greater, Less};
+            let ord = js::order(x, y);
+            Some(Const::Bool(match op {
+                Lt => ord == Some(Less),
+                Le => matches!(ord, Some(Less | Equal)),
+                Gt => ord == Some(Greater),
+                _ => matches!(ord, Some(Greater | Equal)),
+            }))
         }
-        StrictEq => Some(Const::Bool(strict_eq(a, b))),
-        StrictNe => Some(Const::Bool(!strict_eq(a, b))),
-        Eq => Some(Const::Bool(loose_eq(a, b)?)),
-        Ne => Some(Const::Bool(!loose_eq(a, b)?)),
+        StrictEq => Some(Const::Bool(js::strict_equals(x, y))),
+        StrictNe => Some(Const::Bool(!js::strict_equals(x, y))),
+        Eq => Some(Const::Bool(js::loose_equals(x, y))),
+        Ne => Some(Const::Bool(!js::loose_equals(x, y))),
         BitAnd | BitOr | BitXor | Shl | Shr | UShr => {
-            let (x, y) = (js::to_int32(a.num()?), js::to_int32(b.num()?));
-            let s = (y as u32) & 31;
+            let (i, j) = (js::to_int32(x.to_number()), js::to_int32(y.to_number()));
+            let s = (j as u32) & 31;
             Some(Const::Num(match op {
-                BitAnd => f64::from(x & y),
-                BitOr => f64::from(x | y),
-                BitXor => f64::from(x ^ y),
-                Shl => f64::from(x.wrapping_shl(s)),
-                Shr => f64::from(x >> s),
-                _ => f64::from((x as u32) >> s),
+                BitAnd => f64::from(i & j),
+                BitOr => f64::from(i | j),
+                BitXor => f64::from(i ^ j),
+                Shl => f64::from(i.wrapping_shl(s)),
+                Shr => f64::from(i >> s),
+                _ => f64::from(js::to_uint32(x.to_number()) >> s),
             }))
         }
     }
-}
-
-fn strict_eq(a: &Const, b: &Const) -> bool {
-    match (a, b) {
-        (Const::Num(x), Const::Num(y)) => x == y,
-        (Const::Str(x), Const::Str(y)) => x == y,
-        (Const::Bool(x), Const::Bool(y)) => x == y,
-        (Const::Null, Const::Null) | (Const::Undefined, Const::Undefined) => true,
-        _ => false,
-    }
-}
-
-fn loose_eq(a: &Const, b: &Const) -> Option<bool> {
-    Some(match (a, b) {
-        (Const::Null | Const::Undefined, Const::Null | Const::Undefined) => true,
-        (Const::Null | Const::Undefined, _) | (_, Const::Null | Const::Undefined) => false,
-        (Const::Str(x), Const::Str(y)) => x == y,
-        _ => a.num()? == b.num()?,
-    })
 }
