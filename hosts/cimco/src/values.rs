@@ -244,19 +244,8 @@ fn push_string(out: &mut String, v: &Dynamic, depth: usize) {
 
 /// Truthiness.
 pub fn truthy(v: &Dynamic) -> bool {
-    if let Some(b) = v.clone().try_cast::<bool>() {
-        return b;
-    }
-    if let Some(n) = v.clone().try_cast::<f64>() {
-        return n != 0.0 && !n.is_nan();
-    }
-    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
-        return !s.is_empty();
-    }
-    if let Some(i) = v.clone().try_cast::<i64>() {
-        return i != 0;
-    }
-    !(v.is_unit() || is_null(v))
+    // Every object is true.
+    with_primitive(v, |p| p.is_none_or(js::Primitive::truthy))
 }
 
 /// `typeof`.
@@ -323,23 +312,45 @@ pub fn strict_eq(a: &Dynamic, b: &Dynamic) -> bool {
     same_object(a, b)
 }
 
-/// `==`.
-pub fn loose_eq(a: &Dynamic, b: &Dynamic) -> bool {
-    let nullish = |v: &Dynamic| v.is_unit() || is_null(v);
-    if nullish(a) || nullish(b) {
-        return nullish(a) && nullish(b);
+/// The primitive a value is, for [`js`]'s operators, handed to `f`;
+/// `None` for an object, an array, a function or a regular expression.
+fn with_primitive<R>(v: &Dynamic, f: impl FnOnce(Option<js::Primitive<'_>>) -> R) -> R {
+    use js::Primitive;
+    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
+        return f(Some(Primitive::Text(s.as_str())));
     }
-    if is_primitive(a) && is_primitive(b) {
-        if a.is::<ImmutableString>() && b.is::<ImmutableString>() {
-            return strict_eq(a, b);
-        }
-        return to_number(a) == to_number(b);
+    let p = if let Some(n) = v.clone().try_cast::<f64>() {
+        Some(Primitive::Number(n))
+    } else if let Some(i) = v.clone().try_cast::<i64>() {
+        Some(Primitive::Number(i as f64))
+    } else if let Some(b) = v.clone().try_cast::<bool>() {
+        Some(Primitive::Bool(b))
+    } else if v.is_unit() {
+        Some(Primitive::Undefined)
+    } else if is_null(v) {
+        Some(Primitive::Null)
+    } else {
+        None
+    };
+    f(p)
+}
+
+/// `==`: two primitives as [`js::loose_equals`] says, two objects by
+/// identity, an object against a primitive by its text.
+pub fn loose_eq(a: &Dynamic, b: &Dynamic) -> bool {
+    let primitives = with_primitive(a, |x| with_primitive(b, |y| x.zip(y).map(|(x, y)| js::loose_equals(x, y))));
+    if let Some(equal) = primitives {
+        return equal;
     }
     if !is_primitive(a) && !is_primitive(b) {
         return same_object(a, b);
     }
-    // An object against a primitive compares its text.
+    // An object against null or undefined is unequal; against another
+    // primitive it compares its text.
     let (obj, prim) = if is_primitive(a) { (b, a) } else { (a, b) };
+    if prim.is_unit() || is_null(prim) {
+        return false;
+    }
     let text = Dynamic::from(ImmutableString::from(to_string(obj)));
     loose_eq(&text, prim)
 }
