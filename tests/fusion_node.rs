@@ -628,9 +628,10 @@ fn machine_angles_of_a_tilted_direction_stop_the_post_with_the_function_named() 
 #[test]
 fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
     let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
-    let post = folder.path().join("axes.cps");
-    std::fs::write(
-        &post,
+    // Rz(90°)·Ry(0)·Rx(90°): X to Y, Y to Z, Z to X.
+    both_print(
+        folder.path(),
+        "axes.cps",
         "description = \"axes\";\ncapabilities = CAPABILITY_MILLING;\n\
          var f = createFormat({decimals: 3});\n\
          function onOpen() {\n\
@@ -653,18 +654,12 @@ fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
          }\n\
          function onSection() {}\nfunction onRapid(x, y, z) {}\nfunction onLinear(x, y, z, feed) {}\n\
          function onClose() {}\n",
-    )
-    .expect("write the post");
-    let ours = support::cimco::post_toolpath(&support::compile_file(&post), &job).expect("posts");
-    let text = String::from_utf8(ours.clone()).expect("text");
-    // Rz(90°)·Ry(0)·Rx(90°): X to Y, Y to Z, Z to X.
-    assert_eq!(
-        text.replace("\r\n", "\n"),
+        &job,
+        &jsonl,
+        &script,
         "plain false false\nmulti true 5 falsetruetrue\nkind false false\nB 1 true -1 -1.571 0.785 1\n\
          C true true false\ntop 0 0 0\nR 1 1 1 1.571 0 1.571\n",
     );
-    let node = node_prints(&script, &post, &jsonl, "axes.cps");
-    assert_eq!(String::from_utf8_lossy(&node), text, "Node.js first");
 }
 
 /// A matrix changed in place reads as the matrix it now is: `forward`,
@@ -676,9 +671,9 @@ fn a_machine_made_with_rotary_axes_is_a_multi_axis_machine() {
 #[test]
 fn a_matrix_changed_in_place_reads_as_the_matrix_it_is() {
     let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
-    let post = folder.path().join("matrix.cps");
-    std::fs::write(
-        &post,
+    both_print(
+        folder.path(),
+        "matrix.cps",
         "description = \"matrix\";\ncapabilities = CAPABILITY_MILLING;\n\
          var f = createFormat({decimals: 3});\n\
          function v(a) { return f.format(a.x) + \",\" + f.format(a.y) + \",\" + f.format(a.z); }\n\
@@ -707,18 +702,13 @@ fn a_matrix_changed_in_place_reads_as_the_matrix_it_is() {
          }\n\
          function onSection() {}\nfunction onRapid(x, y, z) {}\nfunction onLinear(x, y, z, feed) {}\n\
          function onClose() {}\n",
-    )
-    .expect("write the post");
-    let ours = support::cimco::post_toolpath(&support::compile_file(&post), &job).expect("posts");
-    let text = String::from_utf8(ours.clone()).expect("text");
-    assert_eq!(
-        text.replace("\r\n", "\n"),
+        &job,
+        &jsonl,
+        &script,
         "forward 1,0,1 1,0,1\neuler 0,0,1.571\neuler 0,0,0 true\ncolumn 0,1,0 0,1,0 0,1,1\n\
          transposed 0,1,0 0,0,0\nnegated -1,0,0 0,-1,0\nsum 2,0,0\ndifference 0,0,0 true true\n\
          scaled 0,0,2\nangles 0,0,0 0,0,0\n",
     );
-    let node = node_prints(&script, &post, &jsonl, "matrix.cps");
-    assert_eq!(String::from_utf8_lossy(&node), text, "Node.js first");
 }
 
 /// A rotation's angles in one of Fusion's conventions are known to postc
@@ -742,6 +732,19 @@ fn euler_angles_of_a_rotation_stop_the_post_with_the_function_named() {
     );
     assert!(said.contains("error[RT036]") && said.contains("`Matrix.getEuler2`"), "{said}");
     assert!(said.contains("euler.cps:6:1"), "not at the post's statement:\n{said}");
+}
+
+/// Writes `text` as the post `name` in `folder` and runs it with postc
+/// over `job` and with Node.js's host `script` over `jsonl`: both must
+/// print `expected` (line ends read as `\n`).
+fn both_print(folder: &Path, name: &str, text: &str, job: &Path, jsonl: &Path, script: &Path, expected: &str) {
+    let post = folder.join(name);
+    std::fs::write(&post, text).expect("write the post");
+    let ours = support::cimco::post_toolpath(&support::compile_file(&post), job).expect("posts");
+    let ours = String::from_utf8(ours).expect("text");
+    assert_eq!(ours.replace("\r\n", "\n"), expected, "postc");
+    let node = node_prints(script, &post, jsonl, name);
+    assert_eq!(String::from_utf8_lossy(&node), ours, "Node.js first");
 }
 
 /// What Node.js prints running `post` over `jsonl` with the host
