@@ -364,3 +364,21 @@ function onOpen() { return known + linebreak + made(privateUse, emoji) + linebre
 function onLinear(x, y, z, m) { return \"\"; }\n";
     check(js, ONE_MOVE, "false 16 Infinity 1e+21 1e-7\nfalse z,\u{1F600},\u{E000} 16 1e+21\n");
 }
+
+/// `null` is 0 to arithmetic and comparisons and equals only `null` and
+/// `undefined`, as JavaScript's `Number(null)` and `==` read it, in a
+/// function that runs natively.
+#[test]
+fn null_reads_as_zero_in_arithmetic_and_comparisons() {
+    let js = r#"
+var linebreak = "\n";
+var nothing = null;
+function f(n) {
+    return (n + 1) + " " + (n * 2) + " " + (n < 1) + " " + (n >= 0) + " " + (n == 0) + " " + Math.max(n, -1)
+        + " " + (-n) + " " + (n - 1) + " " + (n == undefined);
+}
+function onOpen() { return f(nothing) + linebreak; }
+function onLinear(x, y, z, m) { return ""; }
+"#;
+    check(js, ONE_MOVE, "1 0 true true false 0 0 -1 true\n");
+}

@@ -198,14 +198,14 @@ pub(super) fn strict_eq(a: &Value, b: &Value) -> bool {
     }
 }
 
-/// A value as JavaScript's `Number()` reads it.
+/// A value as JavaScript's `Number()` reads it: a primitive as
+/// [`js::Primitive::to_number`] does (null 0, undefined NaN), an array as
+/// its text.
 pub(super) fn js_number(v: &Value) -> f64 {
     match v {
-        Value::Text(s) => js::text_to_number(s),
-        // The native tier's null stood for undefined too: NaN, as Number(undefined).
-        Value::Null | Value::Undefined => f64::NAN,
+        Value::Num(n) => *n,
         Value::Array(_) => js::text_to_number(&v.to_text()),
-        other => other.num(),
+        other => other.primitive().map_or(f64::NAN, js::Primitive::to_number),
     }
 }
 
