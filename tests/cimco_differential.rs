@@ -32,20 +32,12 @@ use crate::support::{lines, show};
 /// Constructs the generator leaves out because postc and Node.js
 /// disagree on them and the fix is not local; each says what diverges
 /// and where. The generator consults [`excluded`].
-pub const EXCLUSIONS: &[(&str, &str)] = &[
-    (
-        "null",
-        "native code has one null (docs/cimco.md, *Known gaps*): `null` \
-     reads as NaN in arithmetic and comparisons (JavaScript: 0, but for `+`), and `null` stored and read back may come out as \
-     `undefined`; the runtime's `Value::Null` is also VcPost's empty value, so a JavaScript null is a new value kind",
-    ),
-    (
-        "Math.pow",
-        "V8 computes `Math.pow` with its own port of fdlibm, which differs from Rust's `powf` (the C library's `pow`) \
+pub const EXCLUSIONS: &[(&str, &str)] = &[(
+    "Math.pow",
+    "V8 computes `Math.pow` with its own port of fdlibm, which differs from Rust's `powf` (the C library's `pow`) \
          in the last digit for some operands: `Math.pow(1000, -7) * 0.1` is 1.0000000000000002e-22 in Node.js and \
-         9.999999999999999e-23 in postc (runtime/src/js.rs, `math_pow`)",
-    ),
-];
+         9.999999999999999e-23 in postc (ir/src/js.rs, `math_pow`)",
+)];
 
 fn excluded(name: &str) -> bool {
     EXCLUSIONS.iter().any(|(n, _)| *n == name)

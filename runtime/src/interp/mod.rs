@@ -979,6 +979,13 @@ impl Engine<'_> {
                         self.give_back(values);
                         return Ok(keys);
                     }
+                    // `String(null)` in a JavaScript post is `"null"`; the
+                    // number-to-text built-in is also VcPost's `Str`, whose
+                    // empty value is nothing.
+                    Builtin::Str if self.js && matches!(values.first(), Some(Value::Null)) => {
+                        self.give_back(values);
+                        return Ok(Value::text("null"));
+                    }
                     Builtin::JsString if matches!(values.first(), Some(Value::Object(_))) => {
                         let v = values.first().cloned().unwrap_or(Value::Undefined);
                         self.give_back(values);

@@ -27,10 +27,8 @@ pub(crate) fn type_name(a: &Value) -> &'static str {
         Value::Num(_) => "number",
         Value::Text(_) => "string",
         Value::Bool(_) => "boolean",
-        // The native tier's null stands for undefined too (its lowering
-        // reads `undefined` as null): `typeof` says what undefined is.
-        Value::Null | Value::Undefined => "undefined",
-        Value::Array(_) | Value::Object(_) | Value::Output(_) | Value::Regex(_) => "object",
+        Value::Undefined => "undefined",
+        Value::Null | Value::Array(_) | Value::Object(_) | Value::Output(_) | Value::Regex(_) => "object",
         Value::Func(_) => "function",
     }
 }
