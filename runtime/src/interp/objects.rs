@@ -736,10 +736,19 @@ impl Engine<'_> {
             }
             "forEach" | "map" | "filter" | "some" | "every" => {
                 let f = arg(0);
-                // The items as they were when the method was called, and
-                // each call's arguments, in spare storage.
+                // A callback that only returns a plain expression runs with
+                // no call made, in one frame for the whole walk
+                // (`Engine::run_callback_in`). It runs no post code, so the
+                // array stays as it is while it runs: its items are read
+                // where they are, one at a time. Any other callback walks
+                // the items as they were when the method was called, a
+                // snapshot in spare storage.
+                let callback = self.callback_function(&f);
                 let mut snapshot = self.spare();
-                snapshot.extend(items.borrow().iter().cloned());
+                if callback.is_none() {
+                    snapshot.extend(items.borrow().iter().cloned());
+                }
+                let count = if callback.is_some() { len } else { snapshot.len() };
                 let mut out = self.spare();
                 let mut decided = None;
                 // Which of the five, told once for the whole walk.
@@ -750,12 +759,12 @@ impl Engine<'_> {
                     "every" => Each::Every,
                     _ => Each::Visit,
                 };
-                // A callback that only returns a plain expression runs with
-                // no call made, in one frame for the whole walk
-                // (`Engine::run_callback_in`).
-                let callback = self.callback_function(&f);
                 let mut frame = self.spare();
-                for (i, item) in snapshot.drain(..).enumerate() {
+                for i in 0..count {
+                    let item = match callback {
+                        Some(_) => items.borrow().get(i).cloned().unwrap_or(Value::Undefined),
+                        None => std::mem::take(&mut snapshot[i]),
+                    };
                     let called = match callback {
                         Some(id) => self.run_callback_in(id, [&item, &Value::Num(i as f64)], items, &mut frame),
                         None => {
@@ -786,7 +795,6 @@ impl Engine<'_> {
                     }
                 }
                 self.give_back(frame);
-                snapshot.clear();
                 self.give_back(snapshot);
                 if let Some(decided) = decided {
                     self.give_back(out);
