@@ -302,7 +302,10 @@ impl Engine<'_> {
     /// `f.format(x)`, `v.format(x)`, `v.reset()` and `v.getLast()` do when
     /// the post names them directly.
     fn output_method(&mut self, output: OutputRef, name: &str, args: Vec<Value>, span: Option<Span>) -> Result<Value> {
-        let arg = args.into_iter().next().unwrap_or(Value::Undefined);
+        // The first argument taken, and the list kept as a spare.
+        let mut args = args;
+        let arg = args.first_mut().map_or(Value::Undefined, std::mem::take);
+        self.give_back(args);
         let word = match (output, name) {
             (OutputRef::Format(f), "format") => {
                 // The engine's reused buffer, as a named format's word is made.
@@ -338,7 +341,11 @@ impl Engine<'_> {
             let mut all = self.spare();
             all.extend(closure.captures.iter().cloned());
             all.append(&mut args);
-            self.give_back(std::mem::replace(&mut args, all));
+            // The arguments' list is empty now: kept as a spare as it is.
+            let emptied = std::mem::replace(&mut args, all);
+            if self.spare_frames.len() < 64 {
+                self.spare_frames.push(emptied);
+            }
         }
         self.this_stack.push(this);
         let result = self.call(function, args);
@@ -661,10 +668,6 @@ impl Engine<'_> {
                     Value::Undefined => Text::new(","),
                     v => key_text(&v),
                 };
-                // Built in the engine's reused buffer: only the result is
-                // allocated, and a short one not at all.
-                let mut s = std::mem::take(&mut self.chain_text);
-                s.clear();
                 // An object's text is its `toString`'s (post code, which
                 // may change the array: the items are read first).
                 let mut texts = Vec::new();
@@ -674,21 +677,39 @@ impl Engine<'_> {
                         texts.push(if let Value::Object(_) = v { self.text_of(v)? } else { v });
                     }
                 }
+                // Built as bytes in the engine's reused buffer: a text is
+                // copied as it is (its bytes are UTF-8 already, and a
+                // short one is copied whole), so the result is checked
+                // once, not each part; only the result is allocated, and
+                // a short one not at all.
+                let mut s = std::mem::take(&mut self.scratch);
+                s.clear();
+                // Another value's text (a number) is written in the text
+                // buffer of `+` chains first.
+                let mut other_text = std::mem::take(&mut self.chain_text);
                 let list = items.borrow();
                 let list = if texts.is_empty() { &list[..] } else { &texts[..] };
                 for (i, item) in list.iter().enumerate() {
                     if i > 0 {
-                        sep.push_to(&mut s);
+                        sep.append_to_bytes(&mut s);
                     }
-                    if !matches!(item, Value::Null | Value::Undefined) {
-                        item.append_to(&mut s);
+                    match item {
+                        Value::Null | Value::Undefined => {}
+                        Value::Text(t) => t.append_to_bytes(&mut s),
+                        other => {
+                            other_text.clear();
+                            other.append_to(&mut other_text);
+                            s.extend_from_slice(other_text.as_bytes());
+                        }
                     }
                     if s.len() > crate::interp::MAX_TEXT_BYTES {
-                        return Err(Box::new(crate::interp::text_budget_error(s.len())));
+                        let len = s.len();
+                        (self.scratch, self.chain_text) = (s, other_text);
+                        return Err(Box::new(crate::interp::text_budget_error(len)));
                     }
                 }
-                let joined = Value::Text(Text::new(&s));
-                self.chain_text = s;
+                let joined = Value::Text(Text::from_bytes(&s));
+                (self.scratch, self.chain_text) = (s, other_text);
                 joined
             }
             "indexOf" => {
@@ -780,18 +801,34 @@ impl Engine<'_> {
                             break;
                         }
                     };
+                    // What the walk does not keep is let go with no drop
+                    // call when it owns nothing (`Value::let_go`).
+                    let truthy = r.truthy();
                     match each {
-                        Each::Map => out.push(r),
-                        Each::Filter if r.truthy() => out.push(item),
-                        Each::Some if r.truthy() => {
+                        Each::Map => {
+                            out.push(r);
+                            item.let_go();
+                        }
+                        Each::Filter => {
+                            r.let_go();
+                            if truthy {
+                                out.push(item);
+                            } else {
+                                item.let_go();
+                            }
+                        }
+                        Each::Some if truthy => {
                             decided = Some(Ok(Value::Bool(true)));
                             break;
                         }
-                        Each::Every if !r.truthy() => {
+                        Each::Every if !truthy => {
                             decided = Some(Ok(Value::Bool(false)));
                             break;
                         }
-                        _ => {}
+                        _ => {
+                            r.let_go();
+                            item.let_go();
+                        }
                     }
                 }
                 self.give_back(frame);
