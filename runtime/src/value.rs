@@ -249,6 +249,21 @@ impl Text {
         }
     }
 
+    /// `x` then `y` as one text kept in place, when both are kept in place
+    /// and their sum fits: both are ASCII, so their sum is, with no check.
+    #[inline]
+    pub fn joined_inline(x: &Text, y: &Text) -> Option<Text> {
+        let (Repr::Inline(xl, xb), Repr::Inline(yl, yb)) = (&x.0, &y.0) else { return None };
+        let (xl, yl) = (*xl as usize, *yl as usize);
+        let n = xl + yl;
+        if n > INLINE_TEXT {
+            return None;
+        }
+        let mut bytes = *xb;
+        bytes[xl..n].copy_from_slice(&yb[..yl]);
+        Some(Text(Repr::Inline(n as u8, bytes)))
+    }
+
     fn inline(b: &[u8]) -> Option<Text> {
         if b.len() > INLINE_TEXT || !b.is_ascii() {
             return None;

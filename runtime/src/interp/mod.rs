@@ -226,6 +226,8 @@ impl Engine<'_> {
                     } else {
                         objects::set_member(o, k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
+                    to.let_go();
+                    tk.let_go();
                 }
                 Stmt::SetMember { object, key, value, span } => {
                     let o = self.eval(object, frame)?;
@@ -717,6 +719,7 @@ impl Engine<'_> {
             {
                 let mut tmp = Value::Null;
                 let kind = ops::type_name(leaf(operand, frame, &self.globals, &mut tmp));
+                tmp.let_go();
                 let Value::Text(name) = name.value() else { return Ok(*op == BinaryOp::StrictNe) };
                 Ok((name.as_bytes() == kind.as_bytes()) == (*op == BinaryOp::StrictEq))
             }
@@ -724,10 +727,11 @@ impl Engine<'_> {
                 let (mut ta, mut tb) = (Value::Null, Value::Null);
                 let x = leaf(a, frame, &self.globals, &mut ta);
                 let y = leaf(b, frame, &self.globals, &mut tb);
-                match compare(*op, x, y) {
-                    Some(r) => Ok(r),
-                    None => Ok(binary(*op, x, y).truthy()),
-                }
+                let r = compare(*op, x, y).unwrap_or_else(|| binary(*op, x, y).truthy());
+                // The places of numbers read in place own nothing.
+                ta.let_go();
+                tb.let_go();
+                Ok(r)
             }
             // A comparison of anything else (`kept.length == 0`): no
             // value made for the answer.
@@ -802,7 +806,11 @@ impl Engine<'_> {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
                     let object = plain_leaf(o, frame, &self.globals, &mut to);
                     let key = plain_leaf(k, frame, &self.globals, &mut tk);
-                    if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) }
+                    let read =
+                        if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) };
+                    to.let_go();
+                    tk.let_go();
+                    read
                 };
                 match read {
                     Some(v) => v.map_err(|e| at(e, span.0, "this property"))?,
@@ -888,7 +896,9 @@ impl Engine<'_> {
             // `+k`, `-x` of a local: the operand read in place.
             Expr::Unary(op, a) if is_plain_leaf(a) => {
                 let mut tmp = Value::Null;
-                unary(*op, plain_leaf(a, frame, &self.globals, &mut tmp))
+                let v = unary(*op, plain_leaf(a, frame, &self.globals, &mut tmp));
+                tmp.let_go();
+                v
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -911,7 +921,10 @@ impl Engine<'_> {
                     let y = leaf(b, frame, &self.globals, &mut tb);
                     let objects = matches!(op, BinaryOp::Add | BinaryOp::Concat)
                         && (matches!(x, Value::Object(_)) || matches!(y, Value::Object(_)));
-                    (if objects { Value::Null } else { self.operate(*op, x, y) }, objects)
+                    let v = if objects { Value::Null } else { self.operate(*op, x, y) };
+                    ta.let_go();
+                    tb.let_go();
+                    (v, objects)
                 };
                 let v = if objects {
                     let x = self.eval(a, frame)?;
@@ -1704,6 +1717,7 @@ impl Engine<'_> {
             other.let_go();
             v
         };
+        tmp.let_go();
         self.check_text(&v)?;
         Ok(v)
     }
@@ -1720,6 +1734,7 @@ impl Engine<'_> {
             let leaf_value = leaf(if left { b } else { a }, frame, &self.globals, &mut tmp);
             let r = if left { decide(&other, leaf_value) } else { decide(leaf_value, &other) };
             other.let_go();
+            tmp.let_go();
             return Ok(r);
         }
         let x = self.eval(a, frame)?;

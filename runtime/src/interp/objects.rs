@@ -443,9 +443,9 @@ impl Engine<'_> {
         // replaces (`find_builtin` answers built-ins first): run with no
         // search. A text's `replace` may call post code: found below.
         match &object {
-            Value::Array(items) if protos::has_method(ProtoKind::Array, method.as_bytes()) => {
+            Value::Array(items) if let Some(m) = ArrayMethod::of(method.as_bytes()) => {
                 let mut args = args;
-                let result = self.array_method(items, method, &mut args);
+                let result = self.array_method(items, m, &mut args);
                 self.give_back(args);
                 return result.map_err(|e| at(e, span));
             }
@@ -545,7 +545,10 @@ impl Engine<'_> {
             |this: &Value| type_error(format!("{}.prototype.{name} called on {}", kind.constructor(), describe(this)));
         match (kind, &this) {
             (ProtoKind::Object, _) => self.object_method(name, this, args),
-            (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
+            (ProtoKind::Array, Value::Array(items)) => match ArrayMethod::of(name.as_bytes()) {
+                Some(m) => self.array_method(items, m, args),
+                None => Err(type_error(format!("an array has no method '{name}'"))),
+            },
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
             // A function as the replacement: called with each match, its
             // groups, its index and the text, as JavaScript does, when the
@@ -627,7 +630,7 @@ impl Engine<'_> {
     fn array_method(
         &mut self,
         items: &std::rc::Rc<std::cell::RefCell<Vec<Value>>>,
-        name: &str,
+        method: ArrayMethod,
         args: &mut Vec<Value>,
     ) -> Result<Value> {
         let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
@@ -641,8 +644,8 @@ impl Engine<'_> {
                 if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) }
             }
         };
-        Ok(match name {
-            "push" => {
+        Ok(match method {
+            ArrayMethod::Push => {
                 let mut items = items.borrow_mut();
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
@@ -650,12 +653,12 @@ impl Engine<'_> {
                 items.extend(args.drain(..));
                 Value::Num(items.len() as f64)
             }
-            "pop" => items.borrow_mut().pop().unwrap_or(Value::Undefined),
-            "shift" => {
+            ArrayMethod::Pop => items.borrow_mut().pop().unwrap_or(Value::Undefined),
+            ArrayMethod::Shift => {
                 let mut items = items.borrow_mut();
                 if items.is_empty() { Value::Undefined } else { items.remove(0) }
             }
-            "unshift" => {
+            ArrayMethod::Unshift => {
                 let mut items = items.borrow_mut();
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
@@ -663,7 +666,7 @@ impl Engine<'_> {
                 items.splice(0..0, args.drain(..));
                 Value::Num(items.len() as f64)
             }
-            "join" => {
+            ArrayMethod::Join => {
                 let sep = match arg(0) {
                     Value::Undefined => Text::new(","),
                     v => key_text(&v),
@@ -712,13 +715,13 @@ impl Engine<'_> {
                 (self.scratch, self.chain_text) = (s, other_text);
                 joined
             }
-            "indexOf" => {
+            ArrayMethod::IndexOf => {
                 let target = arg(0);
                 let from = at(arg(1), 0);
                 let found = items.borrow().iter().skip(from).position(|v| super::ops::strict_eq(v, &target));
                 Value::Num(found.map_or(-1.0, |i| (i + from) as f64))
             }
-            "slice" => {
+            ArrayMethod::Slice => {
                 let (a, b) = (at(arg(0), 0), at(arg(1), len));
                 let mut part = self.spare();
                 if a < b {
@@ -726,7 +729,7 @@ impl Engine<'_> {
                 }
                 self.new_array(part)
             }
-            "concat" => {
+            ArrayMethod::Concat => {
                 let mut all = self.spare();
                 all.extend_from_slice(&items.borrow());
                 for a in args.drain(..) {
@@ -741,11 +744,11 @@ impl Engine<'_> {
                 }
                 self.new_array(all)
             }
-            "reverse" => {
+            ArrayMethod::Reverse => {
                 items.borrow_mut().reverse();
                 Value::Array(items.clone())
             }
-            "splice" => {
+            ArrayMethod::Splice => {
                 let start = at(arg(0), 0);
                 let count = match args.get(1) {
                     None => len - start,
@@ -755,7 +758,7 @@ impl Engine<'_> {
                 let removed: Vec<Value> = items.borrow_mut().splice(start..start + count, added).collect();
                 Value::array(removed)
             }
-            "forEach" | "map" | "filter" | "some" | "every" => {
+            ArrayMethod::ForEach | ArrayMethod::Map | ArrayMethod::Filter | ArrayMethod::Some | ArrayMethod::Every => {
                 let f = arg(0);
                 // A callback that only returns a plain expression runs with
                 // no call made, in one frame for the whole walk
@@ -773,11 +776,11 @@ impl Engine<'_> {
                 let mut out = self.spare();
                 let mut decided = None;
                 // Which of the five, told once for the whole walk.
-                let each = match name {
-                    "map" => Each::Map,
-                    "filter" => Each::Filter,
-                    "some" => Each::Some,
-                    "every" => Each::Every,
+                let each = match method {
+                    ArrayMethod::Map => Each::Map,
+                    ArrayMethod::Filter => Each::Filter,
+                    ArrayMethod::Some => Each::Some,
+                    ArrayMethod::Every => Each::Every,
                     _ => Each::Visit,
                 };
                 let mut frame = self.spare();
@@ -837,17 +840,17 @@ impl Engine<'_> {
                     self.give_back(out);
                     return decided;
                 }
-                if matches!(name, "map" | "filter") {
+                if matches!(method, ArrayMethod::Map | ArrayMethod::Filter) {
                     return Ok(self.new_array(out));
                 }
                 self.give_back(out);
-                match name {
-                    "some" => Value::Bool(false),
-                    "every" => Value::Bool(true),
+                match method {
+                    ArrayMethod::Some => Value::Bool(false),
+                    ArrayMethod::Every => Value::Bool(true),
                     _ => Value::Undefined,
                 }
             }
-            "sort" => {
+            ArrayMethod::Sort => {
                 let f = arg(0);
                 let mut list = items.borrow().clone();
                 // Insertion sort with the post's comparison (stable, as
@@ -880,8 +883,7 @@ impl Engine<'_> {
                 *items.borrow_mut() = list;
                 Value::Array(items.clone())
             }
-            "toString" => Value::Text(Value::Array(items.clone()).to_text()),
-            other => return Err(type_error(format!("an array has no method '{other}'"))),
+            ArrayMethod::ToString => Value::Text(Value::Array(items.clone()).to_text()),
         })
     }
 }
@@ -1131,6 +1133,56 @@ pub(crate) fn uncaught(value: &Value, span: Option<Span>) -> Box<Diagnostic> {
         Some(s) => d.at(s, "thrown here"),
         None => d,
     })
+}
+
+/// The built-in methods of arrays, told from their names once: a call
+/// (`words.push(w)`) is told by `invoke` and run by `array_method` with no
+/// second look at the name.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ArrayMethod {
+    Push,
+    Pop,
+    Shift,
+    Unshift,
+    Join,
+    IndexOf,
+    Slice,
+    Concat,
+    Reverse,
+    Splice,
+    ForEach,
+    Map,
+    Filter,
+    Some,
+    Every,
+    Sort,
+    ToString,
+}
+
+impl ArrayMethod {
+    /// The built-in array method of this name, if there is one.
+    pub(crate) fn of(name: &[u8]) -> Option<ArrayMethod> {
+        Some(match name {
+            b"push" => ArrayMethod::Push,
+            b"pop" => ArrayMethod::Pop,
+            b"shift" => ArrayMethod::Shift,
+            b"unshift" => ArrayMethod::Unshift,
+            b"join" => ArrayMethod::Join,
+            b"indexOf" => ArrayMethod::IndexOf,
+            b"slice" => ArrayMethod::Slice,
+            b"concat" => ArrayMethod::Concat,
+            b"reverse" => ArrayMethod::Reverse,
+            b"splice" => ArrayMethod::Splice,
+            b"forEach" => ArrayMethod::ForEach,
+            b"map" => ArrayMethod::Map,
+            b"filter" => ArrayMethod::Filter,
+            b"some" => ArrayMethod::Some,
+            b"every" => ArrayMethod::Every,
+            b"sort" => ArrayMethod::Sort,
+            b"toString" => ArrayMethod::ToString,
+            _ => return None,
+        })
+    }
 }
 
 /// Which array method walks its items with a callback (`Visit`: forEach).
