@@ -348,6 +348,13 @@ impl Engine<'_> {
             return Ok(());
         }
         let v = self.eval(e, frame)?;
+        // A global's store, the commonest here, made where it is.
+        if let Place::Global(g) = place
+            && let Some(slot) = self.globals.get_mut(g.index())
+        {
+            std::mem::replace(slot, v).let_go();
+            return Ok(());
+        }
         self.assign(place, v, frame);
         Ok(())
     }
@@ -1157,22 +1164,20 @@ impl Engine<'_> {
         }
     }
 
-    /// A new array of `values` (given back to the spares): one kept by
-    /// [`Self::keep_array`] when there is one, so that an array made and
+    /// A new array holding `values`: one kept by [`Self::keep_array`]
+    /// when there is one (its emptied list then kept as a spare for
+    /// arguments and frames), so that an array made and
     /// dropped in every call allocates nothing once the run is warm. Its
     /// identity is new: nothing referred to the kept array.
-    pub(crate) fn new_array(&mut self, mut values: Vec<Value>) -> Value {
+    pub(crate) fn new_array(&mut self, values: Vec<Value>) -> Value {
         let a = match self.spare_arrays.pop() {
             Some(a) => {
-                let mut items = std::mem::take(&mut *a.borrow_mut());
-                if items.capacity() >= values.len() {
-                    items.append(&mut values);
-                    self.give_back(values);
-                } else {
-                    std::mem::swap(&mut items, &mut values);
-                    self.give_back(values);
+                // The values' list becomes the array's; the kept array's
+                // emptied list is kept as a spare in its place (no copy).
+                let emptied = std::mem::replace(&mut *a.borrow_mut(), values);
+                if self.spare_frames.len() < 64 {
+                    self.spare_frames.push(emptied);
                 }
-                *a.borrow_mut() = items;
                 a
             }
             None => std::rc::Rc::new(std::cell::RefCell::new(values)),
@@ -1524,7 +1529,13 @@ impl Engine<'_> {
         while let Some(v) = frame.pop() {
             v.let_go();
         }
-        frame.extend(args.into_iter().take(wanted).cloned());
+        // Pushed one by one: most callbacks read the item alone.
+        if wanted > 0 {
+            frame.push(args[0].clone());
+        }
+        if wanted > 1 {
+            frame.push(args[1].clone());
+        }
         if wanted > 2 {
             frame.push(Value::Array(items.clone()));
         }
