@@ -813,8 +813,11 @@ impl Engine<'_> {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
                     let object = plain_leaf(o, frame, &self.globals, &mut to);
                     let key = plain_leaf(k, frame, &self.globals, &mut tk);
-                    let read =
-                        if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) };
+                    let read = if self.is_global_object(object) {
+                        None
+                    } else {
+                        Some(objects::member(object, key, &self.protos))
+                    };
                     to.let_go();
                     tk.let_go();
                     read
@@ -1128,16 +1131,14 @@ impl Engine<'_> {
     /// ([`Self::new_array`]).
     #[inline]
     pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
-        // One pass from the end: each value dropped, or its array kept. A
-        // value that owns nothing (a number, short text: the commonest
-        // items) is forgotten where it is, with no call to drop it.
+        // One pass from the end: each value let go where it is, with no
+        // call to drop it (`Value::let_go`), or its array kept.
         while let Some(v) = frame.pop() {
             match v {
-                v if v.owns_nothing() => v.let_go(),
                 Value::Array(a) if std::rc::Rc::strong_count(&a) == 1 && std::rc::Rc::weak_count(&a) == 0 => {
                     self.keep_array(&mut Value::Array(a));
                 }
-                other => drop(other),
+                other => other.let_go(),
             }
         }
         // Bounded by the deepest nesting of calls; more is never needed.
@@ -2011,17 +2012,18 @@ fn plain_leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'
 /// past the parameters are only in `arguments` then), `null` otherwise.
 #[inline(always)]
 fn fill_frame(runnable: &crate::exec::Function, frame: &mut Vec<Value>) {
-    // Made in place, room reserved once: the fill owns nothing, so no
-    // clone of it is made, nor a value of it dropped.
+    // Pushed in place, room reserved once: the fill owns nothing, so no
+    // clone of it is made, nor a value of it dropped (a frame's few slots
+    // cost less pushed than through a general `extend`).
     let slots = runnable.slots as usize;
-    if runnable.starts_undefined {
-        if frame.len() > runnable.params {
-            frame.truncate(runnable.params);
+    if runnable.starts_undefined && frame.len() > runnable.params {
+        frame.truncate(runnable.params);
+    }
+    if frame.len() < slots {
+        frame.reserve(slots - frame.len());
+        let fill = || if runnable.starts_undefined { Value::Undefined } else { Value::Null };
+        while frame.len() < slots {
+            frame.push(fill());
         }
-        if frame.len() < slots {
-            frame.extend((frame.len()..slots).map(|_| Value::Undefined));
-        }
-    } else if frame.len() < slots {
-        frame.extend((frame.len()..slots).map(|_| Value::Null));
     }
 }

@@ -339,7 +339,10 @@ impl Engine<'_> {
         if !closure.captures.is_empty() {
             // The captures, then the arguments, in spare storage.
             let mut all = self.spare();
-            all.extend(closure.captures.iter().cloned());
+            all.reserve(closure.captures.len() + args.len());
+            for v in &closure.captures {
+                all.push(v.clone());
+            }
             all.append(&mut args);
             // The arguments' list is empty now: kept as a spare as it is.
             let emptied = std::mem::replace(&mut args, all);
@@ -804,8 +807,8 @@ impl Engine<'_> {
                             break;
                         }
                     };
-                    // What the walk does not keep is let go with no drop
-                    // call when it owns nothing (`Value::let_go`).
+                    // What the walk does not keep is let go where it is,
+                    // with no drop call (`Value::let_go`).
                     let truthy = r.truthy();
                     match each {
                         Each::Map => {
