@@ -790,7 +790,7 @@ impl Engine<'_> {
                 for i in 0..count {
                     let item = match callback {
                         Some(_) => items.borrow().get(i).cloned().unwrap_or(Value::Undefined),
-                        None => std::mem::take(&mut snapshot[i]),
+                        None => snapshot.get_mut(i).map_or(Value::Undefined, std::mem::take),
                     };
                     let called = match callback {
                         Some(id) => self.run_callback_in(id, [&item, &Value::Num(i as f64)], items, &mut frame),
