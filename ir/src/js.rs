@@ -258,7 +258,8 @@ pub enum Key<'a> {
 /// properties the array does not have.
 pub fn array_index(key: Key<'_>) -> Option<u32> {
     match key {
-        Key::Number(n) => (n >= 0.0 && n.fract() == 0.0 && n < 4_294_967_295.0).then_some(n as u32),
+        // Whole when it survives the cast (checked with no call to `trunc`).
+        Key::Number(n) => ((0.0..4_294_967_295.0).contains(&n) && f64::from(n as u32) == n).then_some(n as u32),
         Key::Text(t) => {
             let b = t.as_bytes();
             let canonical = !b.is_empty() && b.iter().all(u8::is_ascii_digit) && (b.len() == 1 || b[0] != b'0');

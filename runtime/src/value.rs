@@ -249,6 +249,21 @@ impl Text {
         }
     }
 
+    /// `x` then `y` as one text kept in place, when both are kept in place
+    /// and their sum fits: both are ASCII, so their sum is, with no check.
+    #[inline]
+    pub fn joined_inline(x: &Text, y: &Text) -> Option<Text> {
+        let (Repr::Inline(xl, xb), Repr::Inline(yl, yb)) = (&x.0, &y.0) else { return None };
+        let (xl, yl) = (*xl as usize, *yl as usize);
+        let n = xl + yl;
+        if n > INLINE_TEXT {
+            return None;
+        }
+        let mut bytes = *xb;
+        bytes[xl..n].copy_from_slice(&yb[..yl]);
+        Some(Text(Repr::Inline(n as u8, bytes)))
+    }
+
     fn inline(b: &[u8]) -> Option<Text> {
         if b.len() > INLINE_TEXT || !b.is_ascii() {
             return None;
@@ -426,6 +441,29 @@ impl Value {
             Value::Undefined => Primitive::Undefined,
             _ => return None,
         })
+    }
+
+    /// Lets the value go where it is, with no call to drop it: nothing to
+    /// do when it owns nothing (a number, a boolean, null, undefined, a
+    /// format, short text kept in place), else the one reference it holds
+    /// given up in place. For the interpreter's
+    /// hottest places, where most values let go are numbers, short words
+    /// and arrays or objects still held elsewhere.
+    #[inline(always)]
+    pub fn let_go(self) {
+        match self {
+            Value::Text(Text(Repr::Shared(s))) => drop(s),
+            Value::Array(a) => drop(a),
+            Value::Object(o) => drop(o),
+            Value::Func(f) => drop(f),
+            Value::Regex(r) => drop(r),
+            Value::Null
+            | Value::Undefined
+            | Value::Num(_)
+            | Value::Bool(_)
+            | Value::Output(_)
+            | Value::Text(Text(Repr::Inline(..))) => {}
+        }
     }
 
     /// Truthiness: non-zero numbers, non-empty text, true, and every

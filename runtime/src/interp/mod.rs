@@ -166,7 +166,7 @@ impl Engine<'_> {
                             {
                                 self.keep_array(slot);
                             }
-                            *slot = v;
+                            std::mem::replace(slot, v).let_go();
                         }
                         None => self.assign(Place::Local(*i), v, frame),
                     }
@@ -211,6 +211,24 @@ impl Engine<'_> {
                         self.exec(step, frame).map_err(|e| Self::in_loop(e, *span))?;
                     }
                 },
+                // `box[0] = v`, `list[i] = v` of a local: the value is
+                // evaluated first and the object and key read in place
+                // (no expression assigns a local of its frame, so they read
+                // as they did before it).
+                Stmt::SetMember { object, key, value, span } if is_frame_leaf(object) && is_frame_leaf(key) => {
+                    let v = self.eval(value, frame)?;
+                    let (mut to, mut tk) = (Value::Null, Value::Null);
+                    let o = plain_leaf(object, frame, &self.globals, &mut to);
+                    let k = plain_leaf(key, frame, &self.globals, &mut tk);
+                    if self.is_global_object(o) {
+                        let k = k.clone();
+                        self.set_global_member(&k, v)?;
+                    } else {
+                        objects::set_member(o, k, v).map_err(|e| at(e, span.0, "this assignment"))?;
+                    }
+                    to.let_go();
+                    tk.let_go();
+                }
                 Stmt::SetMember { object, key, value, span } => {
                     let o = self.eval(object, frame)?;
                     let k = self.eval(key, frame)?;
@@ -330,6 +348,13 @@ impl Engine<'_> {
             return Ok(());
         }
         let v = self.eval(e, frame)?;
+        // A global's store, the commonest here, made where it is.
+        if let Place::Global(g) = place
+            && let Some(slot) = self.globals.get_mut(g.index())
+        {
+            std::mem::replace(slot, v).let_go();
+            return Ok(());
+        }
         self.assign(place, v, frame);
         Ok(())
     }
@@ -602,7 +627,7 @@ impl Engine<'_> {
         if self.globals.len() <= i {
             self.globals.resize(i + 1, Value::Null);
         }
-        self.globals[i] = v;
+        std::mem::replace(&mut self.globals[i], v).let_go();
     }
 
     /// Sets a variable's value, keeping the old one as its previous value.
@@ -701,6 +726,7 @@ impl Engine<'_> {
             {
                 let mut tmp = Value::Null;
                 let kind = ops::type_name(leaf(operand, frame, &self.globals, &mut tmp));
+                tmp.let_go();
                 let Value::Text(name) = name.value() else { return Ok(*op == BinaryOp::StrictNe) };
                 Ok((name.as_bytes() == kind.as_bytes()) == (*op == BinaryOp::StrictEq))
             }
@@ -708,11 +734,15 @@ impl Engine<'_> {
                 let (mut ta, mut tb) = (Value::Null, Value::Null);
                 let x = leaf(a, frame, &self.globals, &mut ta);
                 let y = leaf(b, frame, &self.globals, &mut tb);
-                match compare(*op, x, y) {
-                    Some(r) => Ok(r),
-                    None => Ok(binary(*op, x, y).truthy()),
-                }
+                let r = compare(*op, x, y).unwrap_or_else(|| binary(*op, x, y).truthy());
+                // The places of numbers read in place own nothing.
+                ta.let_go();
+                tb.let_go();
+                Ok(r)
             }
+            // A comparison of anything else (`kept.length == 0`): no
+            // value made for the answer.
+            Expr::Binary(op, a, b) if is_comparison(*op) => self.test_compare(*op, a, b, frame),
             _ => Ok(self.eval(e, frame)?.truthy()),
         }
     }
@@ -783,7 +813,14 @@ impl Engine<'_> {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
                     let object = plain_leaf(o, frame, &self.globals, &mut to);
                     let key = plain_leaf(k, frame, &self.globals, &mut tk);
-                    if self.is_global_object(object) { None } else { Some(objects::member(object, key, &self.protos)) }
+                    let read = if self.is_global_object(object) {
+                        None
+                    } else {
+                        Some(objects::member(object, key, &self.protos))
+                    };
+                    to.let_go();
+                    tk.let_go();
+                    read
                 };
                 match read {
                     Some(v) => v.map_err(|e| at(e, span.0, "this property"))?,
@@ -869,7 +906,9 @@ impl Engine<'_> {
             // `+k`, `-x` of a local: the operand read in place.
             Expr::Unary(op, a) if is_plain_leaf(a) => {
                 let mut tmp = Value::Null;
-                unary(*op, plain_leaf(a, frame, &self.globals, &mut tmp))
+                let v = unary(*op, plain_leaf(a, frame, &self.globals, &mut tmp));
+                tmp.let_go();
+                v
             }
             Expr::Unary(op, a) => {
                 let a = self.eval(a, frame)?;
@@ -892,7 +931,10 @@ impl Engine<'_> {
                     let y = leaf(b, frame, &self.globals, &mut tb);
                     let objects = matches!(op, BinaryOp::Add | BinaryOp::Concat)
                         && (matches!(x, Value::Object(_)) || matches!(y, Value::Object(_)));
-                    (if objects { Value::Null } else { self.operate(*op, x, y) }, objects)
+                    let v = if objects { Value::Null } else { self.operate(*op, x, y) };
+                    ta.let_go();
+                    tb.let_go();
+                    (v, objects)
                 };
                 let v = if objects {
                     let x = self.eval(a, frame)?;
@@ -925,14 +967,13 @@ impl Engine<'_> {
                 self.check_text(&v)?;
                 v
             }
+            // One operand a leaf: read in place, after the other is
+            // evaluated ([`Self::binary_one_leaf`]).
+            Expr::Binary(op, a, b) if is_leaf(b) || is_frame_leaf(a) => self.binary_one_leaf(*op, a, b, frame)?,
             Expr::Binary(op, a, b) => {
-                let mut a = self.eval(a, frame)?;
-                let mut b = self.eval(b, frame)?;
-                if matches!(op, BinaryOp::Add | BinaryOp::Concat) {
-                    a = self.primitive(a)?;
-                    b = self.primitive(b)?;
-                }
-                let v = self.operate(*op, &a, &b);
+                let a = self.eval(a, frame)?;
+                let b = self.eval(b, frame)?;
+                let v = self.operate_values(*op, a, b)?;
                 self.check_text(&v)?;
                 v
             }
@@ -1097,13 +1138,14 @@ impl Engine<'_> {
     /// ([`Self::new_array`]).
     #[inline]
     pub(crate) fn give_back(&mut self, mut frame: Vec<Value>) {
-        // One pass: each value dropped, or its array kept.
-        for mut v in frame.drain(..) {
-            if let Value::Array(a) = &v
-                && std::rc::Rc::strong_count(a) == 1
-                && std::rc::Rc::weak_count(a) == 0
-            {
-                self.keep_array(&mut v);
+        // One pass from the end: each value let go where it is, with no
+        // call to drop it (`Value::let_go`), or its array kept.
+        while let Some(v) = frame.pop() {
+            match v {
+                Value::Array(a) if std::rc::Rc::strong_count(&a) == 1 && std::rc::Rc::weak_count(&a) == 0 => {
+                    self.keep_array(&mut Value::Array(a));
+                }
+                other => other.let_go(),
             }
         }
         // Bounded by the deepest nesting of calls; more is never needed.
@@ -1120,27 +1162,30 @@ impl Engine<'_> {
         if self.spare_arrays.len() < SPARE_ARRAYS && a.borrow().capacity() <= SPARE_ARRAY_ITEMS {
             // Its items may hold arrays of their own: those go as it
             // empties (nothing else refers to it, so nothing borrows it).
-            a.borrow_mut().clear();
+            {
+                let mut items = a.borrow_mut();
+                while let Some(v) = items.pop() {
+                    v.let_go();
+                }
+            }
             self.spare_arrays.push(a);
         }
     }
 
-    /// A new array of `values` (given back to the spares): one kept by
-    /// [`Self::keep_array`] when there is one, so that an array made and
+    /// A new array holding `values`: one kept by [`Self::keep_array`]
+    /// when there is one (its emptied list then kept as a spare for
+    /// arguments and frames), so that an array made and
     /// dropped in every call allocates nothing once the run is warm. Its
     /// identity is new: nothing referred to the kept array.
-    pub(crate) fn new_array(&mut self, mut values: Vec<Value>) -> Value {
+    pub(crate) fn new_array(&mut self, values: Vec<Value>) -> Value {
         let a = match self.spare_arrays.pop() {
             Some(a) => {
-                let mut items = std::mem::take(&mut *a.borrow_mut());
-                if items.capacity() >= values.len() {
-                    items.append(&mut values);
-                    self.give_back(values);
-                } else {
-                    std::mem::swap(&mut items, &mut values);
-                    self.give_back(values);
+                // The values' list becomes the array's; the kept array's
+                // emptied list is kept as a spare in its place (no copy).
+                let emptied = std::mem::replace(&mut *a.borrow_mut(), values);
+                if self.spare_frames.len() < 64 {
+                    self.spare_frames.push(emptied);
                 }
-                *a.borrow_mut() = items;
                 a
             }
             None => std::rc::Rc::new(std::cell::RefCell::new(values)),
@@ -1488,8 +1533,17 @@ impl Engine<'_> {
         // Arguments past the parameters are dropped by `fill_frame` when
         // the function starts its slots undefined: those are not made.
         let wanted = if runnable.starts_undefined { runnable.params } else { 3 };
-        frame.clear();
-        frame.extend(args.into_iter().take(wanted).cloned());
+        // The last item's values, let go as a spent frame's are.
+        while let Some(v) = frame.pop() {
+            v.let_go();
+        }
+        // Pushed one by one: most callbacks read the item alone.
+        if wanted > 0 {
+            frame.push(args[0].clone());
+        }
+        if wanted > 1 {
+            frame.push(args[1].clone());
+        }
         if wanted > 2 {
             frame.push(Value::Array(items.clone()));
         }
@@ -1641,6 +1695,73 @@ impl Engine<'_> {
     #[inline]
     fn operate(&self, op: BinaryOp, a: &Value, b: &Value) -> Value {
         if self.js && op == BinaryOp::Add { ops::add_js(a, b) } else { binary(op, a, b) }
+    }
+
+    /// A binary operator of two values evaluated in their order: `+` of
+    /// an object first asks its methods for a primitive ([`Self::primitive`],
+    /// left then right); any other operands are used as they are.
+    #[inline]
+    fn operate_values(&mut self, op: BinaryOp, a: Value, b: Value) -> Result<Value> {
+        if matches!(op, BinaryOp::Add | BinaryOp::Concat)
+            && (matches!(a, Value::Object(_)) || matches!(b, Value::Object(_)))
+        {
+            let a = self.primitive(a)?;
+            let b = self.primitive(b)?;
+            return Ok(self.operate(op, &a, &b));
+        }
+        Ok(self.operate(op, &a, &b))
+    }
+
+    /// `a op b` where one operand is a leaf that is read in place instead
+    /// of copied: a right-hand leaf ([`is_leaf`]) after the left operand is
+    /// evaluated, as it is read then anyway; a left-hand one only when it
+    /// lives in the frame ([`is_frame_leaf`]), which no expression
+    /// assigns (a local closures share is held in an array), so that it
+    /// reads the same after the right operand is evaluated. `+` of an
+    /// object takes the values themselves ([`Self::operate_values`]).
+    #[inline(never)]
+    fn binary_one_leaf(&mut self, op: BinaryOp, a: &Expr, b: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
+        let (left, other) = if is_leaf(b) { (true, self.eval(a, frame)?) } else { (false, self.eval(b, frame)?) };
+        let mut tmp = Value::Null;
+        let leaf_value = leaf(if left { b } else { a }, frame, &self.globals, &mut tmp);
+        let (x, y) = if left { (&other, leaf_value) } else { (leaf_value, &other) };
+        let v = if matches!(op, BinaryOp::Add | BinaryOp::Concat)
+            && (matches!(x, Value::Object(_)) || matches!(y, Value::Object(_)))
+        {
+            let (x, y) = (x.clone(), y.clone());
+            other.let_go();
+            self.operate_values(op, x, y)?
+        } else {
+            let v = self.operate(op, x, y);
+            other.let_go();
+            v
+        };
+        tmp.let_go();
+        self.check_text(&v)?;
+        Ok(v)
+    }
+
+    /// `a op b` of a comparison as a condition: the operands evaluated in
+    /// their order (a leaf read in place as [`Self::binary_one_leaf`]
+    /// reads it), compared with no value made for the answer.
+    #[inline(never)]
+    fn test_compare(&mut self, op: BinaryOp, a: &Expr, b: &Expr, frame: &mut Vec<Value>) -> Result<bool> {
+        let decide = |x: &Value, y: &Value| compare(op, x, y).unwrap_or_else(|| binary(op, x, y).truthy());
+        if is_leaf(b) || is_frame_leaf(a) {
+            let (left, other) = if is_leaf(b) { (true, self.eval(a, frame)?) } else { (false, self.eval(b, frame)?) };
+            let mut tmp = Value::Null;
+            let leaf_value = leaf(if left { b } else { a }, frame, &self.globals, &mut tmp);
+            let r = if left { decide(&other, leaf_value) } else { decide(leaf_value, &other) };
+            other.let_go();
+            tmp.let_go();
+            return Ok(r);
+        }
+        let x = self.eval(a, frame)?;
+        let y = self.eval(b, frame)?;
+        let r = decide(&x, &y);
+        x.let_go();
+        y.let_go();
+        Ok(r)
     }
 
     /// Evaluates a left-nested chain of `+`/`&` as [`binary`] would, one
@@ -1833,6 +1954,23 @@ fn is_plain_leaf(e: &Expr) -> bool {
     matches!(e, Expr::Local(_) | Expr::Global(_) | Expr::Number(_) | Expr::Text(_))
 }
 
+/// A local, a number or a text: a leaf no expression's evaluation can
+/// change (an expression assigns no local of its frame; a local that
+/// closures share is an array the local holds), unlike a global, which a
+/// call may assign.
+#[inline(always)]
+fn is_frame_leaf(e: &Expr) -> bool {
+    matches!(e, Expr::Local(_) | Expr::Number(_) | Expr::Text(_))
+}
+
+/// An operator whose value is a boolean that [`compare`] or [`binary`]
+/// gives, with no post code run.
+#[inline(always)]
+fn is_comparison(op: BinaryOp) -> bool {
+    use BinaryOp::*;
+    matches!(op, Eq | Ne | Lt | Le | Gt | Ge | JsEq | JsNe | JsLt | JsLe | JsGt | JsGe | StrictEq | StrictNe)
+}
+
 /// The value of a leaf expression, borrowed where it lives (`tmp` holds a
 /// number, or null for a slot that does not exist).
 #[inline(always)]
@@ -1879,13 +2017,20 @@ fn plain_leaf<'v>(e: &'v Expr, frame: &'v [Value], globals: &'v [Value], tmp: &'
 /// A call's frame from its arguments: the parameters, then the function's
 /// other slots, `undefined` where JavaScript starts them so (arguments
 /// past the parameters are only in `arguments` then), `null` otherwise.
-#[inline]
+#[inline(always)]
 fn fill_frame(runnable: &crate::exec::Function, frame: &mut Vec<Value>) {
-    let fill = if runnable.starts_undefined {
+    // Pushed in place, room reserved once: the fill owns nothing, so no
+    // clone of it is made, nor a value of it dropped (a frame's few slots
+    // cost less pushed than through a general `extend`).
+    let slots = runnable.slots as usize;
+    if runnable.starts_undefined && frame.len() > runnable.params {
         frame.truncate(runnable.params);
-        Value::Undefined
-    } else {
-        Value::Null
-    };
-    frame.resize((runnable.slots as usize).max(frame.len()), fill);
+    }
+    if frame.len() < slots {
+        frame.reserve(slots - frame.len());
+        let fill = || if runnable.starts_undefined { Value::Undefined } else { Value::Null };
+        while frame.len() < slots {
+            frame.push(fill());
+        }
+    }
 }

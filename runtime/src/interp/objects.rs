@@ -302,7 +302,10 @@ impl Engine<'_> {
     /// `f.format(x)`, `v.format(x)`, `v.reset()` and `v.getLast()` do when
     /// the post names them directly.
     fn output_method(&mut self, output: OutputRef, name: &str, args: Vec<Value>, span: Option<Span>) -> Result<Value> {
-        let arg = args.into_iter().next().unwrap_or(Value::Undefined);
+        // The first argument taken, and the list kept as a spare.
+        let mut args = args;
+        let arg = args.first_mut().map_or(Value::Undefined, std::mem::take);
+        self.give_back(args);
         let word = match (output, name) {
             (OutputRef::Format(f), "format") => {
                 // The engine's reused buffer, as a named format's word is made.
@@ -336,9 +339,16 @@ impl Engine<'_> {
         if !closure.captures.is_empty() {
             // The captures, then the arguments, in spare storage.
             let mut all = self.spare();
-            all.extend(closure.captures.iter().cloned());
+            all.reserve(closure.captures.len() + args.len());
+            for v in &closure.captures {
+                all.push(v.clone());
+            }
             all.append(&mut args);
-            self.give_back(std::mem::replace(&mut args, all));
+            // The arguments' list is empty now: kept as a spare as it is.
+            let emptied = std::mem::replace(&mut args, all);
+            if self.spare_frames.len() < 64 {
+                self.spare_frames.push(emptied);
+            }
         }
         self.this_stack.push(this);
         let result = self.call(function, args);
@@ -436,9 +446,9 @@ impl Engine<'_> {
         // replaces (`find_builtin` answers built-ins first): run with no
         // search. A text's `replace` may call post code: found below.
         match &object {
-            Value::Array(items) if protos::has_method(ProtoKind::Array, method.as_bytes()) => {
+            Value::Array(items) if let Some(m) = ArrayMethod::of(method.as_bytes()) => {
                 let mut args = args;
-                let result = self.array_method(items, method, &mut args);
+                let result = self.array_method(items, m, &mut args);
                 self.give_back(args);
                 return result.map_err(|e| at(e, span));
             }
@@ -538,7 +548,10 @@ impl Engine<'_> {
             |this: &Value| type_error(format!("{}.prototype.{name} called on {}", kind.constructor(), describe(this)));
         match (kind, &this) {
             (ProtoKind::Object, _) => self.object_method(name, this, args),
-            (ProtoKind::Array, Value::Array(items)) => self.array_method(items, name, args),
+            (ProtoKind::Array, Value::Array(items)) => match ArrayMethod::of(name.as_bytes()) {
+                Some(m) => self.array_method(items, m, args),
+                None => Err(type_error(format!("an array has no method '{name}'"))),
+            },
             (ProtoKind::String, Value::Null | Value::Undefined) => Err(wrong(&this)),
             // A function as the replacement: called with each match, its
             // groups, its index and the text, as JavaScript does, when the
@@ -620,7 +633,7 @@ impl Engine<'_> {
     fn array_method(
         &mut self,
         items: &std::rc::Rc<std::cell::RefCell<Vec<Value>>>,
-        name: &str,
+        method: ArrayMethod,
         args: &mut Vec<Value>,
     ) -> Result<Value> {
         let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Undefined);
@@ -634,8 +647,8 @@ impl Engine<'_> {
                 if x < 0.0 { (len as f64 + x).max(0.0) as usize } else { (x as usize).min(len) }
             }
         };
-        Ok(match name {
-            "push" => {
+        Ok(match method {
+            ArrayMethod::Push => {
                 let mut items = items.borrow_mut();
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
@@ -643,12 +656,12 @@ impl Engine<'_> {
                 items.extend(args.drain(..));
                 Value::Num(items.len() as f64)
             }
-            "pop" => items.borrow_mut().pop().unwrap_or(Value::Undefined),
-            "shift" => {
+            ArrayMethod::Pop => items.borrow_mut().pop().unwrap_or(Value::Undefined),
+            ArrayMethod::Shift => {
                 let mut items = items.borrow_mut();
                 if items.is_empty() { Value::Undefined } else { items.remove(0) }
             }
-            "unshift" => {
+            ArrayMethod::Unshift => {
                 let mut items = items.borrow_mut();
                 if items.len() + args.len() > MAX_ITEMS {
                     return Err(too_many());
@@ -656,15 +669,11 @@ impl Engine<'_> {
                 items.splice(0..0, args.drain(..));
                 Value::Num(items.len() as f64)
             }
-            "join" => {
+            ArrayMethod::Join => {
                 let sep = match arg(0) {
                     Value::Undefined => Text::new(","),
                     v => key_text(&v),
                 };
-                // Built in the engine's reused buffer: only the result is
-                // allocated, and a short one not at all.
-                let mut s = std::mem::take(&mut self.chain_text);
-                s.clear();
                 // An object's text is its `toString`'s (post code, which
                 // may change the array: the items are read first).
                 let mut texts = Vec::new();
@@ -674,30 +683,48 @@ impl Engine<'_> {
                         texts.push(if let Value::Object(_) = v { self.text_of(v)? } else { v });
                     }
                 }
+                // Built as bytes in the engine's reused buffer: a text is
+                // copied as it is (its bytes are UTF-8 already, and a
+                // short one is copied whole), so the result is checked
+                // once, not each part; only the result is allocated, and
+                // a short one not at all.
+                let mut s = std::mem::take(&mut self.scratch);
+                s.clear();
+                // Another value's text (a number) is written in the text
+                // buffer of `+` chains first.
+                let mut other_text = std::mem::take(&mut self.chain_text);
                 let list = items.borrow();
                 let list = if texts.is_empty() { &list[..] } else { &texts[..] };
                 for (i, item) in list.iter().enumerate() {
                     if i > 0 {
-                        sep.push_to(&mut s);
+                        sep.append_to_bytes(&mut s);
                     }
-                    if !matches!(item, Value::Null | Value::Undefined) {
-                        item.append_to(&mut s);
+                    match item {
+                        Value::Null | Value::Undefined => {}
+                        Value::Text(t) => t.append_to_bytes(&mut s),
+                        other => {
+                            other_text.clear();
+                            other.append_to(&mut other_text);
+                            s.extend_from_slice(other_text.as_bytes());
+                        }
                     }
                     if s.len() > crate::interp::MAX_TEXT_BYTES {
-                        return Err(Box::new(crate::interp::text_budget_error(s.len())));
+                        let len = s.len();
+                        (self.scratch, self.chain_text) = (s, other_text);
+                        return Err(Box::new(crate::interp::text_budget_error(len)));
                     }
                 }
-                let joined = Value::Text(Text::new(&s));
-                self.chain_text = s;
+                let joined = Value::Text(Text::from_bytes(&s));
+                (self.scratch, self.chain_text) = (s, other_text);
                 joined
             }
-            "indexOf" => {
+            ArrayMethod::IndexOf => {
                 let target = arg(0);
                 let from = at(arg(1), 0);
                 let found = items.borrow().iter().skip(from).position(|v| super::ops::strict_eq(v, &target));
                 Value::Num(found.map_or(-1.0, |i| (i + from) as f64))
             }
-            "slice" => {
+            ArrayMethod::Slice => {
                 let (a, b) = (at(arg(0), 0), at(arg(1), len));
                 let mut part = self.spare();
                 if a < b {
@@ -705,7 +732,7 @@ impl Engine<'_> {
                 }
                 self.new_array(part)
             }
-            "concat" => {
+            ArrayMethod::Concat => {
                 let mut all = self.spare();
                 all.extend_from_slice(&items.borrow());
                 for a in args.drain(..) {
@@ -720,11 +747,11 @@ impl Engine<'_> {
                 }
                 self.new_array(all)
             }
-            "reverse" => {
+            ArrayMethod::Reverse => {
                 items.borrow_mut().reverse();
                 Value::Array(items.clone())
             }
-            "splice" => {
+            ArrayMethod::Splice => {
                 let start = at(arg(0), 0);
                 let count = match args.get(1) {
                     None => len - start,
@@ -734,28 +761,37 @@ impl Engine<'_> {
                 let removed: Vec<Value> = items.borrow_mut().splice(start..start + count, added).collect();
                 Value::array(removed)
             }
-            "forEach" | "map" | "filter" | "some" | "every" => {
+            ArrayMethod::ForEach | ArrayMethod::Map | ArrayMethod::Filter | ArrayMethod::Some | ArrayMethod::Every => {
                 let f = arg(0);
-                // The items as they were when the method was called, and
-                // each call's arguments, in spare storage.
+                // A callback that only returns a plain expression runs with
+                // no call made, in one frame for the whole walk
+                // (`Engine::run_callback_in`). It runs no post code, so the
+                // array stays as it is while it runs: its items are read
+                // where they are, one at a time. Any other callback walks
+                // the items as they were when the method was called, a
+                // snapshot in spare storage.
+                let callback = self.callback_function(&f);
                 let mut snapshot = self.spare();
-                snapshot.extend(items.borrow().iter().cloned());
+                if callback.is_none() {
+                    snapshot.extend(items.borrow().iter().cloned());
+                }
+                let count = if callback.is_some() { len } else { snapshot.len() };
                 let mut out = self.spare();
                 let mut decided = None;
                 // Which of the five, told once for the whole walk.
-                let each = match name {
-                    "map" => Each::Map,
-                    "filter" => Each::Filter,
-                    "some" => Each::Some,
-                    "every" => Each::Every,
+                let each = match method {
+                    ArrayMethod::Map => Each::Map,
+                    ArrayMethod::Filter => Each::Filter,
+                    ArrayMethod::Some => Each::Some,
+                    ArrayMethod::Every => Each::Every,
                     _ => Each::Visit,
                 };
-                // A callback that only returns a plain expression runs with
-                // no call made, in one frame for the whole walk
-                // (`Engine::run_callback_in`).
-                let callback = self.callback_function(&f);
                 let mut frame = self.spare();
-                for (i, item) in snapshot.drain(..).enumerate() {
+                for i in 0..count {
+                    let item = match callback {
+                        Some(_) => items.borrow().get(i).cloned().unwrap_or(Value::Undefined),
+                        None => snapshot.get_mut(i).map_or(Value::Undefined, std::mem::take),
+                    };
                     let called = match callback {
                         Some(id) => self.run_callback_in(id, [&item, &Value::Num(i as f64)], items, &mut frame),
                         None => {
@@ -771,38 +807,53 @@ impl Engine<'_> {
                             break;
                         }
                     };
+                    // What the walk does not keep is let go where it is,
+                    // with no drop call (`Value::let_go`).
+                    let truthy = r.truthy();
                     match each {
-                        Each::Map => out.push(r),
-                        Each::Filter if r.truthy() => out.push(item),
-                        Each::Some if r.truthy() => {
+                        Each::Map => {
+                            out.push(r);
+                            item.let_go();
+                        }
+                        Each::Filter => {
+                            r.let_go();
+                            if truthy {
+                                out.push(item);
+                            } else {
+                                item.let_go();
+                            }
+                        }
+                        Each::Some if truthy => {
                             decided = Some(Ok(Value::Bool(true)));
                             break;
                         }
-                        Each::Every if !r.truthy() => {
+                        Each::Every if !truthy => {
                             decided = Some(Ok(Value::Bool(false)));
                             break;
                         }
-                        _ => {}
+                        _ => {
+                            r.let_go();
+                            item.let_go();
+                        }
                     }
                 }
                 self.give_back(frame);
-                snapshot.clear();
                 self.give_back(snapshot);
                 if let Some(decided) = decided {
                     self.give_back(out);
                     return decided;
                 }
-                if matches!(name, "map" | "filter") {
+                if matches!(method, ArrayMethod::Map | ArrayMethod::Filter) {
                     return Ok(self.new_array(out));
                 }
                 self.give_back(out);
-                match name {
-                    "some" => Value::Bool(false),
-                    "every" => Value::Bool(true),
+                match method {
+                    ArrayMethod::Some => Value::Bool(false),
+                    ArrayMethod::Every => Value::Bool(true),
                     _ => Value::Undefined,
                 }
             }
-            "sort" => {
+            ArrayMethod::Sort => {
                 let f = arg(0);
                 let mut list = items.borrow().clone();
                 // Insertion sort with the post's comparison (stable, as
@@ -835,8 +886,7 @@ impl Engine<'_> {
                 *items.borrow_mut() = list;
                 Value::Array(items.clone())
             }
-            "toString" => Value::Text(Value::Array(items.clone()).to_text()),
-            other => return Err(type_error(format!("an array has no method '{other}'"))),
+            ArrayMethod::ToString => Value::Text(Value::Array(items.clone()).to_text()),
         })
     }
 }
@@ -1086,6 +1136,56 @@ pub(crate) fn uncaught(value: &Value, span: Option<Span>) -> Box<Diagnostic> {
         Some(s) => d.at(s, "thrown here"),
         None => d,
     })
+}
+
+/// The built-in methods of arrays, told from their names once: a call
+/// (`words.push(w)`) is told by `invoke` and run by `array_method` with no
+/// second look at the name.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ArrayMethod {
+    Push,
+    Pop,
+    Shift,
+    Unshift,
+    Join,
+    IndexOf,
+    Slice,
+    Concat,
+    Reverse,
+    Splice,
+    ForEach,
+    Map,
+    Filter,
+    Some,
+    Every,
+    Sort,
+    ToString,
+}
+
+impl ArrayMethod {
+    /// The built-in array method of this name, if there is one.
+    pub(crate) fn of(name: &[u8]) -> Option<ArrayMethod> {
+        Some(match name {
+            b"push" => ArrayMethod::Push,
+            b"pop" => ArrayMethod::Pop,
+            b"shift" => ArrayMethod::Shift,
+            b"unshift" => ArrayMethod::Unshift,
+            b"join" => ArrayMethod::Join,
+            b"indexOf" => ArrayMethod::IndexOf,
+            b"slice" => ArrayMethod::Slice,
+            b"concat" => ArrayMethod::Concat,
+            b"reverse" => ArrayMethod::Reverse,
+            b"splice" => ArrayMethod::Splice,
+            b"forEach" => ArrayMethod::ForEach,
+            b"map" => ArrayMethod::Map,
+            b"filter" => ArrayMethod::Filter,
+            b"some" => ArrayMethod::Some,
+            b"every" => ArrayMethod::Every,
+            b"sort" => ArrayMethod::Sort,
+            b"toString" => ArrayMethod::ToString,
+            _ => return None,
+        })
+    }
 }
 
 /// Which array method walks its items with a callback (`Visit`: forEach).

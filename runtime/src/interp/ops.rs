@@ -210,6 +210,9 @@ pub(super) fn js_number(v: &Value) -> f64 {
 fn concat(a: &Value, b: &Value) -> Value {
     // Two texts whose sum is short: joined in place, no allocation.
     if let (Value::Text(x), Value::Text(y)) = (a, b) {
+        if let Some(t) = Text::joined_inline(x, y) {
+            return Value::Text(t);
+        }
         let (x, y) = (x.as_bytes(), y.as_bytes());
         let n = x.len() + y.len();
         if n <= crate::value::INLINE_TEXT {

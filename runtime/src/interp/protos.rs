@@ -74,26 +74,7 @@ impl Found {
 pub(crate) fn has_method(kind: ProtoKind, name: &[u8]) -> bool {
     match kind {
         ProtoKind::Object => matches!(name, b"hasOwnProperty" | b"isPrototypeOf" | b"toString" | b"valueOf"),
-        ProtoKind::Array => matches!(
-            name,
-            b"push"
-                | b"pop"
-                | b"shift"
-                | b"unshift"
-                | b"join"
-                | b"indexOf"
-                | b"slice"
-                | b"concat"
-                | b"reverse"
-                | b"splice"
-                | b"forEach"
-                | b"map"
-                | b"filter"
-                | b"some"
-                | b"every"
-                | b"sort"
-                | b"toString"
-        ),
+        ProtoKind::Array => super::objects::ArrayMethod::of(name).is_some(),
         ProtoKind::String => matches!(
             name,
             b"substring"
