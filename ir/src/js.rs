@@ -9,8 +9,9 @@
 //! print with the shortest digits that read back as the same double,
 //! switching to exponent form at 1e21 and below 1e-6 as JavaScript does.
 
-/// Powers of ten a double holds exactly.
-const POW10: [f64; 23] = [
+/// Powers of ten a double holds exactly (the runtime's number writer
+/// scales by them too).
+pub const POW10: [f64; 23] = [
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
     1e21, 1e22,
 ];

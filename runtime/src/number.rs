@@ -56,10 +56,7 @@ pub fn report_non_finite(value: f64) {
 }
 
 /// Powers of ten that are exact doubles.
-pub(crate) const POW10: [f64; 23] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
-    1e21, 1e22,
-];
+pub(crate) use postc_ir::js::POW10;
 
 /// Scaled magnitudes below this round on the fast path.
 const FAST_LIMIT: f64 = 1e14;

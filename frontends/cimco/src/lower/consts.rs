@@ -40,21 +40,16 @@ impl Const {
     }
 
     /// ToNumber (`Number(v)`).
-    pub fn num(&self) -> Option<f64> {
-        Some(self.primitive().to_number())
+    pub fn num(&self) -> f64 {
+        self.primitive().to_number()
     }
 
     /// ToString (`String(v)`).
-    pub fn text(&self) -> Option<String> {
+    pub fn text(&self) -> String {
         let mut out = String::new();
         self.primitive().push_text(&mut out);
-        Some(out)
+        out
     }
-}
-
-/// A number as JavaScript prints it (`String(n)`).
-pub fn number_text(n: f64) -> String {
-    js::number_to_string(n)
 }
 
 /// Evaluates an expression made of literals, known names and operators.
@@ -83,10 +78,10 @@ pub fn const_eval(
         ExprKind::Unary { op, operand } => {
             let v = ev(operand)?;
             match op {
-                UnaryOp::Neg => Const::Num(-v.num()?),
-                UnaryOp::Plus => Const::Num(v.num()?),
+                UnaryOp::Neg => Const::Num(-v.num()),
+                UnaryOp::Plus => Const::Num(v.num()),
                 UnaryOp::Not => Const::Bool(!v.truthy()),
-                UnaryOp::BitNot => Const::Num(f64::from(!js::to_int32(v.num()?))),
+                UnaryOp::BitNot => Const::Num(f64::from(!js::to_int32(v.num()))),
                 UnaryOp::Typeof => Const::Str(
                     match v {
                         Const::Num(_) => "number",

@@ -837,7 +837,7 @@ fn init_statements(program: &Program, model: &Model, setup: &Setup) -> Vec<ast::
 fn settings(model: &Model, post: &mut Post, diags: &mut Vec<Diagnostic>) {
     let text = |name: &str| match model.constant(name) {
         Some(Const::Str(s)) => Some(s.clone()),
-        Some(Const::Num(n)) => Some(consts::number_text(*n)),
+        Some(Const::Num(n)) => Some(postc_ir::js::number_to_string(*n)),
         _ => None,
     };
     if let Some(Const::Str(lb)) = model.setting("linebreak")

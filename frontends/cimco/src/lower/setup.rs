@@ -166,7 +166,7 @@ impl Setup {
                     _ => return None,
                 };
                 let get = |k: &str| vprops.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone());
-                let prefix = get("prefix").and_then(|p| p.text()).unwrap_or_default();
+                let prefix = get("prefix").map(|p| p.text()).unwrap_or_default();
                 let force = get("force").is_some_and(|f| f.truthy());
                 self.variables.push(Variable {
                     name: name.to_string(),
@@ -247,7 +247,7 @@ fn number_format(
     diags: &mut Vec<Diagnostic>,
 ) -> NumberFormat {
     let get = |k: &str| props.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone());
-    let mut decimals = get("decimals").and_then(|d| d.num()).unwrap_or(0.0);
+    let mut decimals = get("decimals").map(|d| d.num()).unwrap_or(0.0);
     if !decimals.is_finite() || decimals < 0.0 {
         decimals = 0.0;
     }
@@ -258,10 +258,10 @@ fn number_format(
         );
         decimals = 15.0;
     }
-    let width = get("width").and_then(|w| w.num()).unwrap_or(0.0);
+    let width = get("width").map(|w| w.num()).unwrap_or(0.0);
     let width = if width.is_finite() { width.clamp(0.0, 64.0) as u8 } else { 0 };
     let force_decimal = get("forceDecimal").is_some_and(|f| f.truthy());
-    let scale = get("scale").and_then(|s| s.num()).unwrap_or(1.0);
+    let scale = get("scale").map(|s| s.num()).unwrap_or(1.0);
     NumberFormat {
         decimals: decimals as u8,
         width,
@@ -274,7 +274,7 @@ fn number_format(
         leading_zero: true,
         decimal_mark: mark,
         multiplier: if scale.is_finite() { scale } else { 1.0 },
-        prefix: get("prefix").and_then(|p| p.text()).unwrap_or_default(),
+        prefix: get("prefix").map(|p| p.text()).unwrap_or_default(),
         // A post is JavaScript: numbers round as its engine rounds them.
         rounding: postc_ir::Rounding::Binary,
         negative_zero: false,

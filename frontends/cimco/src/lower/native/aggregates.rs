@@ -47,7 +47,7 @@ use crate::ast::*;
 
 use super::super::layout::Layout;
 use super::super::scope::{FnId, Symbol, Visit, walk_stmts};
-use super::tables::{lookup, repeatable};
+use super::tables::{const_key, lookup, repeatable};
 use super::{Native, R, why};
 
 /// The name of an array made by a literal, until a local holds it.
@@ -1328,18 +1328,6 @@ fn map_plain(a: Agg, f: &dyn Fn(Ir) -> Ir) -> Agg {
         Agg::Object(fields) => Agg::Object(fields.into_iter().map(|(k, x)| (k, map_plain(x, f))).collect()),
         other => other,
     }
-}
-
-/// The property key a constant names (JavaScript's `ToString`).
-fn const_key(i: &Ir) -> Option<String> {
-    Some(match i {
-        Ir::Number(n) => super::super::consts::number_text(*n),
-        Ir::Text(s) => s.clone(),
-        Ir::Bool(b) => b.to_string(),
-        Ir::Null => "null".into(),
-        Ir::Undefined => "undefined".into(),
-        _ => return None,
-    })
 }
 
 /// The array position a key names ("0", "12"; not "01" or "-1").

@@ -14,7 +14,6 @@ use postc_ir::{BinaryOp as IrBin, Expr as Ir, Stmt as IrStmt, UnaryOp as IrUn};
 
 use crate::ast::*;
 
-use super::super::consts;
 use super::super::layout;
 use super::super::model::tables::{Entry, Table};
 use super::super::scope::Symbol;
@@ -198,9 +197,9 @@ pub(super) fn lookup(i: Ir, entries: &[(String, Ir)], missing: &Ir) -> Option<Ir
 }
 
 /// The property key a constant names (JavaScript's `ToString`).
-fn const_key(i: &Ir) -> Option<String> {
+pub(super) fn const_key(i: &Ir) -> Option<String> {
     Some(match i {
-        Ir::Number(n) => consts::number_text(*n),
+        Ir::Number(n) => postc_ir::js::number_to_string(*n),
         Ir::Text(s) => s.clone(),
         Ir::Bool(b) => b.to_string(),
         Ir::Null => "null".into(),
@@ -212,7 +211,7 @@ fn const_key(i: &Ir) -> Option<String> {
 /// A key that is a number as JavaScript prints it ("1", "2.5", "-3").
 fn numeric_key(k: &str) -> Option<f64> {
     let n: f64 = k.parse().ok()?;
-    (n.is_finite() && consts::number_text(n) == k).then_some(n)
+    (n.is_finite() && postc_ir::js::number_to_string(n) == k).then_some(n)
 }
 
 /// Cheap and free of effects: may be evaluated once per entry.
