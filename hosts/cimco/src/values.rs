@@ -170,28 +170,10 @@ pub fn to_value(v: &Dynamic) -> Option<Value> {
 
 /// ToNumber.
 pub fn to_number(v: &Dynamic) -> f64 {
-    if let Some(n) = v.clone().try_cast::<f64>() {
-        return n;
-    }
-    if v.is_unit() {
-        return f64::NAN;
-    }
-    if is_null(v) {
-        return 0.0;
-    }
-    if let Some(b) = v.clone().try_cast::<bool>() {
-        return f64::from(u8::from(b));
-    }
-    if let Some(i) = v.clone().try_cast::<i64>() {
-        return i as f64;
-    }
-    if let Some(s) = v.clone().try_cast::<ImmutableString>() {
-        return js::text_to_number(&s);
-    }
     if v.is::<JsArr>() {
         return js::text_to_number(&to_string(v));
     }
-    f64::NAN
+    with_primitive(v, |p| p.map_or(f64::NAN, js::Primitive::to_number))
 }
 
 /// ToString.
@@ -294,22 +276,17 @@ fn same_object(a: &Dynamic, b: &Dynamic) -> bool {
     false
 }
 
-/// `===`.
+/// `===`: two primitives as [`js::strict_equals`] says, two objects by
+/// identity.
 pub fn strict_eq(a: &Dynamic, b: &Dynamic) -> bool {
-    let num = |v: &Dynamic| v.clone().try_cast::<f64>().or_else(|| v.clone().try_cast::<i64>().map(|i| i as f64));
-    if let (Some(x), Some(y)) = (num(a), num(b)) {
-        return x == y;
-    }
-    if let (Some(x), Some(y)) = (a.clone().try_cast::<ImmutableString>(), b.clone().try_cast::<ImmutableString>()) {
-        return x == y;
-    }
-    if let (Some(x), Some(y)) = (a.clone().try_cast::<bool>(), b.clone().try_cast::<bool>()) {
-        return x == y;
-    }
-    if a.is_unit() && b.is_unit() || is_null(a) && is_null(b) {
-        return true;
-    }
-    same_object(a, b)
+    let primitives = with_primitive(a, |x| {
+        with_primitive(b, |y| match (x, y) {
+            (Some(x), Some(y)) => Some(js::strict_equals(x, y)),
+            (None, None) => None,
+            _ => Some(false),
+        })
+    });
+    primitives.unwrap_or_else(|| same_object(a, b))
 }
 
 /// The primitive a value is, for [`js`]'s operators, handed to `f`;
