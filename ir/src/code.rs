@@ -383,7 +383,9 @@ pub enum Builtin {
     Mid,
     Upper,
     Lower,
-    /// Number to text (shortest form).
+    /// Number to text (shortest form); other values as text, `null` as
+    /// nothing (VcPost's empty value) or, in a post whose text is
+    /// JavaScript's (`OutputOptions::js_text`), as `null`, as `+` reads it.
     Str,
     /// JavaScript's ToString (`String(v)`, a template literal's
     /// substitution): `null` is `"null"`, `undefined` `"undefined"`, an
