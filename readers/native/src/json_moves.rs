@@ -113,36 +113,62 @@ impl<'a> Cursor<'a> {
     }
 
     /// A JSON number (`-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`),
-    /// finite.
+    /// finite, as the double nearest to its text.
+    ///
+    /// A number of at most 19 digits, no exponent, whose digits read as a
+    /// whole number up to 2^53 and with at most 22 decimals (every
+    /// coordinate a CAM system writes) is that whole number divided by a
+    /// power of ten: both are doubles exactly, and one IEEE division
+    /// rounds correctly (Clinger's fast path). Any other goes to
+    /// fast-float2, which rounds as `str::parse` does.
     fn number(&mut self) -> Option<f64> {
+        /// Powers of ten that are doubles exactly.
+        const EXACT: [f64; 23] = [
+            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18,
+            1e19, 1e20, 1e21, 1e22,
+        ];
         let start = self.i;
-        let digits = |c: &mut Self| {
+        // The digits from `i` on, added to `whole` (wrapping: the count
+        // says when it may have).
+        let digits = |c: &mut Self, whole: &mut u64| {
             let from = c.i;
-            while c.b.get(c.i).is_some_and(u8::is_ascii_digit) {
+            while let Some(&b) = c.b.get(c.i)
+                && b.is_ascii_digit()
+            {
+                *whole = whole.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
                 c.i += 1;
             }
             c.i - from
         };
-        if self.b.get(self.i) == Some(&b'-') {
+        let negative = self.b.get(self.i) == Some(&b'-');
+        if negative {
             self.i += 1;
         }
         let first = *self.b.get(self.i)?;
-        let whole = digits(self);
+        let mut mantissa = 0u64;
+        let whole = digits(self, &mut mantissa);
         if whole == 0 || (first == b'0' && whole > 1) {
             return None;
         }
+        let mut decimals = 0;
         if self.b.get(self.i) == Some(&b'.') {
             self.i += 1;
-            if digits(self) == 0 {
+            decimals = digits(self, &mut mantissa);
+            if decimals == 0 {
                 return None;
             }
         }
-        if matches!(self.b.get(self.i), Some(b'e' | b'E')) {
+        if !matches!(self.b.get(self.i), Some(b'e' | b'E')) {
+            if whole + decimals <= 19 && mantissa <= 1 << 53 && decimals < EXACT.len() {
+                let x = mantissa as f64 / EXACT[decimals];
+                return Some(if negative { -x } else { x });
+            }
+        } else {
             self.i += 1;
             if matches!(self.b.get(self.i), Some(b'+' | b'-')) {
                 self.i += 1;
             }
-            if digits(self) == 0 {
+            if digits(self, &mut 0) == 0 {
                 return None;
             }
         }

@@ -69,6 +69,12 @@ fn number_text() -> impl proptest::strategy::Strategy<Value = String> {
         2 => any::<i64>().prop_map(|x| x.to_string()),
         1 => any::<u64>().prop_map(|x| x.to_string()),
         3 => "-?(0|[1-9][0-9]{0,25})(\\.[0-9]{1,25})?([eE][+-]?[0-9]{1,3})?",
+        // Coordinates as CAM systems write them, and at the edges of exact
+        // reading: 19 digits, 2^53 and past it, 22 and 23 decimals.
+        4 => "-?(0|[1-9][0-9]{0,5})(\\.[0-9]{1,6})?",
+        2 => "-?(0|[1-9][0-9]{0,18})(\\.[0-9]{1,22})?",
+        1 => "-?0\\.[0-9]{20,24}",
+        1 => prop_oneof![Just("9007199254740992".to_string()), Just("9007199254740993".to_string()), Just("900719925474099.3".to_string()), Just("0.9007199254740993".to_string())],
         1 => Just("-0".to_string()),
         1 => Just("null".to_string()),
         1 => "[-+.0-9eE]{1,8}",
