@@ -747,6 +747,34 @@ fn both_print(folder: &Path, name: &str, text: &str, job: &Path, jsonl: &Path, s
     assert_eq!(String::from_utf8_lossy(&node), ours, "Node.js first");
 }
 
+/// The job's unit is known before a post's top level runs, as Fusion's
+/// engine knows the document's: 183 corpus posts make their formats there
+/// from `unit` (`decimals: (unit == MM ? 3 : 4)`) and many give settings
+/// with `spatial(..., MM)`. An inch job printed three decimals and took
+/// `spatial(0.25, MM)` for 0.25 inch before.
+#[test]
+fn a_post_top_level_reads_the_unit_of_the_job() {
+    let Some((folder, _, _, script)) = node_and_milling_job() else { return };
+    let job = support::corpus().join("toolpaths/native/one_toolpath_inch.ron");
+    let jsonl = folder.path().join("inch.jsonl");
+    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
+    both_print(
+        folder.path(),
+        "units.cps",
+        "description = \"units\";\ncapabilities = CAPABILITY_MILLING;\n\
+         var xyzFormat = createFormat({decimals: (unit == MM ? 3 : 4), forceDecimal: true});\n\
+         var chord = spatial(0.25, MM);\n\
+         var opened = false;\n\
+         function onOpen() { writeln((unit == IN ? \"inch \" : \"mm \") + xyzFormat.format(chord) + \" \" + xyzFormat.format(spatial(1, IN))); }\n\
+         function onLinear(x, y, z, feed) { if (!opened) { opened = true; writeln(\"X\" + xyzFormat.format(x)); } }\n\
+         function onClose() {}\n",
+        &job,
+        &jsonl,
+        &script,
+        "inch 0.0098 1.\nX1.\n",
+    );
+}
+
 /// What Node.js prints running `post` over `jsonl` with the host
 /// `script`; Node.js stopping fails the test, naming `what`.
 fn node_prints(script: &Path, post: &Path, jsonl: &Path, what: &str) -> Vec<u8> {

@@ -158,6 +158,19 @@ pub fn run<S: EventSource + ?Sized>(
         let factor = output_units.map_or(1.0, |u| outline.units.factor_to(u));
         machine.outline = outline::to_json(&outline, factor);
     }
+    let mut diagnostics = Vec::new();
+    // A post that reads ahead holds the next event in hand, the first one
+    // before its one-time code runs: its job's units are known there, as
+    // Fusion's engine knows the document's before a post's top level
+    // (`createFormat({decimals: (unit == MM ? 3 : 4)})`) runs.
+    let reads_ahead = post.options.reads_ahead;
+    let mut ahead: Option<(postc_ir::Event, postc_ir::diagnostic::Span)> = None;
+    if reads_ahead {
+        ahead = next_posted(source, &mut diagnostics);
+        if let Some((postc_ir::Event::Job(job), _)) = &ahead {
+            machine.output_units = output_units.unwrap_or(job.units);
+        }
+    }
     let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };
     let mut out = out;
     if post.options.windows_1252_output {
@@ -170,7 +183,6 @@ pub fn run<S: EventSource + ?Sized>(
         Dispatch::Sections => Box::new(sections::SectionDispatch::new(&engine, options.exact_arcs)),
         Dispatch::AptWords => Box::new(apt_words::AptDispatch::new(&engine)),
     };
-    let mut diagnostics = Vec::new();
     let mut events = 0u64;
     let fail = |mut diagnostics: Vec<Diagnostic>, engine: Engine| {
         diagnostics.extend(engine.warnings);
@@ -195,8 +207,6 @@ pub fn run<S: EventSource + ?Sized>(
     let observe = engine.script_host.is_some();
     // A post that reads ahead knows the event after the one it posts
     // (`NEXT_RECORD_MOTION`): the loop holds one event in hand.
-    let reads_ahead = post.options.reads_ahead;
-    let mut ahead: Option<(postc_ir::Event, postc_ir::diagnostic::Span)> = None;
     loop {
         // Posts that do not read ahead take each event as it is read.
         let read = if reads_ahead {

@@ -90,9 +90,11 @@ function words(list, separator, start) {
   return into.join(separator);
 }
 
-function Referee(postSource, postName) {
+function Referee(postSource, postName, mm) {
     var out = [];
     var context = vm.createContext({});
+    // The job's unit, known before the post's top level runs.
+    context.__postc_jobUnitIsMm = function () { return mm; };
     // A line and the host's line ending (`EOL`, which `setEOL` changes).
     context.__postc_writeln = function (text, eol) {
         out.push(String(text) + String(eol));
@@ -577,14 +579,15 @@ function main(argv) {
         properties[set.substring(0, eq)] = set.substring(eq + 1);
         a++;
     }
-    var referee = new Referee(fs.readFileSync(post, "utf8"), post);
-    referee.properties = properties;
     var events = fs
         .readFileSync(toolpath, "utf8")
         .split("\n")
         .map(function (line) { return line.trim(); })
         .filter(function (line) { return line !== ""; })
         .map(function (line) { return JSON.parse(line); });
+    var job = events.length > 0 && events[0].Job ? events[0].Job : {};
+    var referee = new Referee(fs.readFileSync(post, "utf8"), post, (job.units || "Mm") === "Mm");
+    referee.properties = properties;
     referee.outline = outlineOf(events);
     var posted = events.filter(function (e) { return Object.keys(e)[0] !== "FeedRate"; });
     var isMove = function (e) {

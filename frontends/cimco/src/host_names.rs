@@ -115,6 +115,10 @@ pub const FORMAT_OUTPUT: &str = "__postc_formatOutput";
 /// A post property's value of a host written in JavaScript:
 /// `__postc_property(properties, name, otherwise)` (`Builtin::Property`).
 pub const PROPERTY: &str = "__postc_property";
+/// Whether the job is in millimetres, for a host written in JavaScript:
+/// `__postc_jobUnitIsMm()`, which the host's top level reads before the
+/// post's own runs (the `UNITS` quantity is `"Mm"`).
+pub const JOB_UNIT_IS_MM: &str = "__postc_jobUnitIsMm";
 /// A CNC-Calc global function by name ([`FUNCTIONS`]).
 pub const HOST: &str = "__host";
 

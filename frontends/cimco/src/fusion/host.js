@@ -299,8 +299,10 @@ var preventPost = false;
 var abortOnDeprecation = false;
 
 // ---- What the engine hands the post ----
-var unit = MM;
-var outputUnit = MM;
+// The job's unit is known before the post's own top level runs, as
+// Fusion's engine knows the document's (docs/fusion.md, choice 4).
+var unit = __postc_jobUnitIsMm() ? MM : IN;
+var outputUnit = unit;
 var programName = "1001";
 var programComment = "";
 var tool = undefined;

@@ -1362,6 +1362,13 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         if g == names::PROPERTY {
                             return Ok(Ir::Builtin(Builtin::Property, a));
                         }
+                        if g == names::JOB_UNIT_IS_MM {
+                            return Ok(Ir::Binary(
+                                postc_ir::BinaryOp::Eq,
+                                Box::new(Ir::Quantity(postc_ir::Quantity::UnitsText)),
+                                Box::new(Ir::Text(postc_ir::Units::Mm.name().into())),
+                            ));
+                        }
                         self.host_call(&g, a, at)
                     }
                     _ => {
