@@ -139,6 +139,30 @@ fn a_cimco_post_that_writes_g21_writes_millimetres() {
     }
 }
 
+/// `siemens_840d.js` writes ` G17 G90 G94 G71 G40` and `absolute_centre.js`
+/// `G90G17G71G90.1`: `G71`, the millimetre word of Siemens and Heidenhain
+/// ISO, is their statement (they write no `G21` or `G20`). Over an inch
+/// job they wrote the inch numbers under `G71` before, which verify
+/// refused (VF030); now they write millimetres and verify finds nothing.
+#[test]
+fn cimco_posts_that_write_g71_write_millimetres() {
+    let dir = tempfile::tempdir().unwrap();
+    let inch = dir.path().join("inch.ron");
+    std::fs::write(&inch, INCH_JOB).unwrap();
+    for name in ["siemens_840d.js", "absolute_centre.js"] {
+        let path = root().join("corpus/posts/cimco").join(name);
+        let cimco = compile(&path, &std::fs::read_to_string(&path).unwrap());
+        assert_eq!((cimco.info.units, cimco.output_units()), (None, Some(Units::Mm)), "{name}");
+        let program = post(&cimco, &inch);
+        // X5 inches is X127 millimetres.
+        assert!(program.contains("X127"), "{name}: {program}");
+        let settings = postc_verify::Settings::from_post(&cimco, postc_verify::Controller::Generic, 0.01);
+        let found = crate::support::verifying::verify(program.as_bytes(), &inch, &settings);
+        let errors = crate::support::verifying::errors(&found);
+        assert!(errors.is_empty(), "{name}: {errors:?}\n{program}");
+    }
+}
+
 /// Vectric: `UNITS` decides; a post without it that writes `G21` writes
 /// millimetres; an inch post writes a millimetre toolpath in inches.
 #[test]

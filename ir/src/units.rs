@@ -4,8 +4,8 @@
 //! A post's output units are what it states (Vectric `UNITS`, VcPost
 //! `Postc.Units`, a CIMCO section post's `postcOptions.units`, a RON post's
 //! `info.units`); a post that states none and writes a units word of one
-//! system only in its text (`G21` and no `G20`, or the reverse) writes that
-//! system ([`Post::output_units`], docs/units.md). The runtime converts the
+//! system only in its text (`G21` and no `G20`, or the reverse; `G71` or
+//! `G70` in a post that writes neither) writes that system ([`Post::output_units`], docs/units.md). The runtime converts the
 //! toolpath's lengths and feeds into them before the post sees an event.
 
 use serde::{Deserialize, Serialize};
@@ -55,22 +55,45 @@ impl Units {
 }
 
 /// The units words a post's text holds: `G21` (millimetres) and `G20`
-/// (inches), as G words (not after a letter, not followed by a digit or a
-/// point), in its literal output text, its text constants (globals, code)
-/// and its scripts' source.
+/// (inches), and `G71` and `G70`, the same words of Siemens, Heidenhain
+/// ISO, OSAI and Fagor controls, as G words (not after a letter, not
+/// followed by a digit or a point), in its literal output text, its text
+/// constants (globals, code) and its scripts' source.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WrittenUnits {
+    /// `G21`.
     pub mm: bool,
+    /// `G20`.
     pub inch: bool,
+    /// `G71`.
+    pub mm_iso: bool,
+    /// `G70`.
+    pub inch_iso: bool,
 }
 
 impl WrittenUnits {
-    /// The one system the post writes, if it writes words of one only.
+    /// The one system the post writes, if it writes words of one only:
+    /// by `G21` and `G20`, and, in a post that writes neither, by `G71`
+    /// and `G70` (Fanuc and LinuxCNC lathes write `G70` and `G71` as
+    /// turning cycles, beside `G20` or `G21`).
     pub fn only(self) -> Option<Units> {
-        match (self.mm, self.inch) {
+        let (mm, inch) = if self.mm || self.inch { (self.mm, self.inch) } else { (self.mm_iso, self.inch_iso) };
+        match (mm, inch) {
             (true, false) => Some(Units::Mm),
             (false, true) => Some(Units::Inch),
             _ => None,
+        }
+    }
+
+    /// The word that says `units` in the family of words the post writes
+    /// (`G21` or `G71` for millimetres).
+    pub fn word(self, units: Units) -> &'static str {
+        let iso = !(self.mm || self.inch) && (self.mm_iso || self.inch_iso);
+        match (units, iso) {
+            (Units::Mm, false) => "G21",
+            (Units::Inch, false) => "G20",
+            (Units::Mm, true) => "G71",
+            (Units::Inch, true) => "G70",
         }
     }
 
@@ -87,6 +110,8 @@ impl WrittenUnits {
             let unit = match rest {
                 [b'2', b'1', ..] => &mut self.mm,
                 [b'2', b'0', ..] => &mut self.inch,
+                [b'7', b'1', ..] => &mut self.mm_iso,
+                [b'7', b'0', ..] => &mut self.inch_iso,
                 _ => continue,
             };
             if !rest.get(2).is_some_and(|c| c.is_ascii_digit() || *c == b'.') {

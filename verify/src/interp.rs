@@ -2326,7 +2326,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                         p,
                         Some(&e),
                         Some(
-                            "the post's units and the program's G20/G21 must agree; verify stops comparing motion here"
+                            "the post's units and the program's G20/G21 must agree: a post that states no units writes the \
+                             system of the one units word its text holds (`G21`, `G20`, or `G71`, `G70`), and is handed \
+                             the toolpath's units when it holds none (docs/units.md); verify stops comparing motion here"
                                 .into(),
                         ),
                     );

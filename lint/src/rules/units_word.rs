@@ -15,10 +15,12 @@ pub const RULE: Rule = Rule { code: codes::LN017.code, name: "units-word-contrad
 fn check(cx: &Context, _: &Options, out: &mut Vec<Diagnostic>) {
     let post = cx.post;
     let Some(stated) = post.info.units else { return };
-    let Some(written) = post.written_units().only().filter(|w| *w != stated) else { return };
-    let (word, said, wrote) = match stated {
-        Units::Inch => ("G21", "inches", "millimetres"),
-        Units::Mm => ("G20", "millimetres", "inches"),
+    let words = post.written_units();
+    let Some(written) = words.only().filter(|w| *w != stated) else { return };
+    let word = words.word(written);
+    let (said, wrote) = match stated {
+        Units::Inch => ("inches", "millimetres"),
+        Units::Mm => ("millimetres", "inches"),
     };
     let mut d = Diagnostic::warning(
         RULE.code,
