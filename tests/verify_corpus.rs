@@ -284,3 +284,34 @@ fn the_field_style_goldens_verify_over_their_toolpaths() {
     assert!(failures.is_empty(), "{} findings:\n{}", failures.len(), failures.join("\n"));
     assert!(goldens.len() >= 18, "only {} field-style goldens", goldens.len());
 }
+
+/// A CL file's drilling cycle whose first hole is under the tool when the
+/// cycle starts (`../shared/corpus/apt/MichaHofft__CreoPost/bohren_1.ncl.8`,
+/// Creo: a rapid over the hole, `CYCLE/DEEP`, two holes): every CIMCO post
+/// of the corpus drills both holes, so verify finds no move off the
+/// toolpath and none missing (VF010, VF011). `siemens_840d.js` drilled only
+/// the second: Sinumerik's `MCALL CYCLE81(...)` drills after each block that
+/// moves, and the first hole's block printed no X or Y (the modal words had
+/// not changed), so it was empty and never written.
+#[test]
+fn cimco_posts_drill_the_first_hole_of_a_cycle_under_the_tool() {
+    let toolpath = root().join("../shared/corpus/apt/MichaHofft__CreoPost/bohren_1.ncl.8");
+    if !toolpath.is_file() {
+        support::referee_missing("verify_corpus", "../shared/corpus/apt");
+        return;
+    }
+    let mut missed = Vec::new();
+    for path in files(&root().join("corpus/posts/cimco"), &["js"], false) {
+        let post = support::compile_file(&path);
+        if post.options.lathe {
+            continue;
+        }
+        let program = post_program(&post, &toolpath).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        for (code, line, message) in verify(&post, Controller::Generic, &program, &toolpath) {
+            if code == "VF010" || code == "VF011" {
+                missed.push(format!("{}: {code} line {line}: {message}", path.display()));
+            }
+        }
+    }
+    assert!(missed.is_empty(), "{}", missed.join("\n"));
+}

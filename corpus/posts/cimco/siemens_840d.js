@@ -152,6 +152,10 @@ function onDrillingPoint(x, y) {
         out += writeBlock(gMotion.format(0) + zOutput.format(drill.retractPlane));
         out += writeBlock(fOutput.format(drill.plungingFeedrate));
         out += writeBlock(cycleCall());
+        // MCALL drills after each block that moves, not where the tool is:
+        // the first hole's X and Y print even when the tool is over it.
+        xOutput.reset();
+        yOutput.reset();
     }
     return out + writeBlock(xOutput.format(x) + yOutput.format(y));
 }
