@@ -1214,6 +1214,12 @@ declare_codes! {
     CL024: Warning, "the CL file ends without FINI: it may be cut short",
         example = "GOTO/1,2,3",
         fix = "Post the whole CL file; if it is whole, add FINI at its end.";
+    /// A cutting move (GOTO, an arc, a drilled hole) comes before any FEDRAT: the CL file gives
+    /// it no feed rate, so the program has none for it (a G-code program cuts with no F, which
+    /// verify refuses, VF034) or the post's own default. Said once, at the first such move.
+    CL025: Warning, "a cutting move before any feed rate (FEDRAT)",
+        example = "GOTO/1,2,3",
+        fix = "Export the toolpath with its feeds, or add FEDRAT before the first cutting move.";
     /// `postc postp DIR` posts the CL file `DIR/cl.tap`, as the original `postp` did; there is
     /// none.
     PX001: Error, "no `DIR/cl.tap`",

@@ -1874,7 +1874,11 @@ impl<O: Observer + ?Sized> Run<'_, O> {
                 "a cutting move before any feed rate (F) is set",
                 p,
                 None,
-                Some("the post must print F on the first cutting move (Vectric: FIRST_FEED_MOVE with [F])".into()),
+                Some(
+                    "the post must print F on the first cutting move (Vectric: FIRST_FEED_MOVE with [F]); a toolpath \
+                     that gives no feed rate before it (a CL file with no FEDRAT: CL025) has none to print"
+                        .into(),
+                ),
             );
         }
     }

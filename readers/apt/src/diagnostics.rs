@@ -29,6 +29,7 @@ pub(crate) const IO: &str = codes::CL021.code;
 pub(crate) const NO_INDIRV: &str = codes::CL022.code;
 pub(crate) const OUT_OF_RANGE: &str = codes::CL023.code;
 pub(crate) const NO_FINI: &str = codes::CL024.code;
+pub(crate) const NO_FEED: &str = codes::CL025.code;
 
 pub(crate) fn binary(span: Span, what: &str) -> Diagnostic {
     Diagnostic::error(BINARY, format!("this is a binary file ({what}), not a text CL file"))
@@ -165,6 +166,15 @@ pub(crate) fn feed_per_rev(span: Span) -> Diagnostic {
         "a feed per revolution is used before any spindle speed is known; it is passed on as a feed per minute",
     )
     .at(span, "feed per revolution")
+}
+
+pub(crate) fn no_feed(span: Span) -> Diagnostic {
+    Diagnostic::warning(
+        NO_FEED,
+        "this cutting move comes before any FEDRAT: the CL file gives it no feed rate, so the program has none for it",
+    )
+    .at(span, "cuts with no feed rate")
+    .help("export the toolpath with its feeds, or add FEDRAT before the first cutting move")
 }
 
 pub(crate) fn long_line(span: Span) -> Diagnostic {

@@ -59,8 +59,15 @@ fn not_a_number(word: &[u8]) -> bool {
 
 impl Core {
     /// The current feed rate, per minute in the job's units.
+    /// A cutting move before any FEDRAT has none (CL025, said once).
     fn feed_now(&mut self, span: Span, diags: &mut Vec<Diagnostic>) -> Option<f64> {
-        let feed = self.feed?;
+        let Some(feed) = self.feed else {
+            if !self.warned_no_feed {
+                self.warned_no_feed = true;
+                diags.push(diag::no_feed(span));
+            }
+            return None;
+        };
         let rpm = self.spindle.speed.filter(|s| *s > 0.0 && !self.spindle.css);
         if feed.per_rev && rpm.is_none() && !self.warned_per_rev {
             self.warned_per_rev = true;

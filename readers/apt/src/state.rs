@@ -79,6 +79,8 @@ pub(crate) struct Core {
     pub window_speed: Option<f64>,
     pub warned_nurbs: bool,
     pub warned_per_rev: bool,
+    /// CL025 was said.
+    pub warned_no_feed: bool,
     /// FINI was read.
     pub ended: bool,
     /// The last record read closed a toolpath (END-OF-PATH, OPFEATEND):
@@ -124,6 +126,7 @@ impl Core {
             window_speed: None,
             warned_nurbs: false,
             warned_per_rev: false,
+            warned_no_feed: false,
             ended: false,
             closed_at_end: false,
         }

@@ -149,15 +149,16 @@ fn part_programs_give_one_error() {
         assert_eq!(read.codes(), ["CL002"], "{name}");
     }
     // An assignment found while reading (the head check only sees `NAME=WORD/`).
-    let read = crate::common::read_text("GOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
+    let read = crate::common::read_text("FEDRAT/100\nGOTO/1,2,3\nP(1) = 4\nGOTO/4,5,6\n");
     assert_eq!(read.codes(), ["CL002"]);
     // An `=` inside a record's arguments is a syntax error, not a part program.
-    let read = crate::common::read_text("GOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\nFINI\n");
+    let read = crate::common::read_text("FEDRAT/100\nGOTO/1,2,3\nOPERATION/NAME=ROUGH\nGOTO/4,5,6\nFINI\n");
     assert_eq!(read.codes(), ["CL003"]);
     assert_eq!(read.count("Feed"), 2);
     // CATIA's drive arc without its tool-position word still reads.
-    let read =
-        crate::common::read_text("GOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\nFINI\n");
+    let read = crate::common::read_text(
+        "FEDRAT/100\nGOTO/10,0,0\nINDIRV/0,1,0\nGOFWD/(CIRCLE/0,0,0,10),ON,(LINE/0,0,0,0,10,0)\nFINI\n",
+    );
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Arc"), 1);
 }
@@ -178,7 +179,7 @@ fn binary_files_give_one_error() {
 
 #[test]
 fn a_line_longer_than_a_mebibyte_is_skipped() {
-    let mut text = b"RAPID\nGOTO/0,0,0\nPPRINT ".to_vec();
+    let mut text = b"FEDRAT/100\nRAPID\nGOTO/0,0,0\nPPRINT ".to_vec();
     text.extend(std::iter::repeat_n(b'x', 3 << 20));
     text.extend_from_slice(b"\nGOTO/1,0,0\nFINI\n");
     let read = crate::common::read_bytes("long.cl", &text);
@@ -188,7 +189,7 @@ fn a_line_longer_than_a_mebibyte_is_skipped() {
 
 #[test]
 fn a_record_continued_past_a_mebibyte_is_skipped() {
-    let mut text = b"RAPID\nGOTO/0,0,0\nGOTO/1,$\n".to_vec();
+    let mut text = b"FEDRAT/100\nRAPID\nGOTO/0,0,0\nGOTO/1,$\n".to_vec();
     for _ in 0..200_000 {
         text.extend_from_slice(b"1.5,2.5,3.5,$\n");
     }
@@ -200,7 +201,7 @@ fn a_record_continued_past_a_mebibyte_is_skipped() {
 
 #[test]
 fn a_utf8_byte_order_mark_is_skipped() {
-    let read = crate::common::read_bytes("bom.cl", b"\xEF\xBB\xBFGOTO/1,2,3\nFINI\n");
+    let read = crate::common::read_bytes("bom.cl", b"\xEF\xBB\xBFFEDRAT/100\nGOTO/1,2,3\nFINI\n");
     assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
     assert_eq!(read.count("Feed"), 1);
 }
@@ -219,7 +220,7 @@ fn values_out_of_range_are_refused_at_their_record() {
         read.diagnostics[0].message.starts_with("Feed x is 1e308: a coordinate or length must be within ±1000000 mm")
     );
     assert_eq!(read.count("Feed"), 2, "the events keep their order; the error refuses the toolpath");
-    let read = crate::common::read_text("UNITS/INCHES\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
+    let read = crate::common::read_text("UNITS/INCHES\nFEDRAT/10\nGOTO/0,0,0\nGOTO/40000,0,0\nGOTO/39000,0,0\nFINI\n");
     assert_eq!(read.codes(), ["CL023"], "40,000 inches is over 1 km; 39,000 is not");
     let read = crate::common::read_text(
         "UNITS/MM\nFEDRAT/5e7,MMPM\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nSPINDL/RPM,2e6\nFINI\n",
@@ -246,13 +247,28 @@ fn values_out_of_range_are_refused_at_their_record() {
 #[test]
 fn a_file_without_fini_may_be_cut_short() {
     // Cut inside the last number of a GOTO: the record still reads.
-    let read = crate::common::read_text("UNITS/MM\nGOTO/0,0,0\nGOTO/7.0000000000, -2.9062500000, 3.24");
+    let read = crate::common::read_text("UNITS/MM\nFEDRAT/100\nGOTO/0,0,0\nGOTO/7.0000000000, -2.9062500000, 3.24");
     assert_eq!(read.codes(), ["CL024"]);
     let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
-    assert_eq!(json.line, Some(3));
-    assert!(crate::common::read_text("UNITS/MM\nGOTO/0,0,0\nFINI\n").diagnostics.is_empty());
-    let nx = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\n$$ end\n";
+    assert_eq!(json.line, Some(4));
+    assert!(crate::common::read_text("UNITS/MM\nFEDRAT/100\nGOTO/0,0,0\nFINI\n").diagnostics.is_empty());
+    let nx = "TOOL PATH/A,TOOL,T1\nFEDRAT/100\nGOTO/0,0,0\nEND-OF-PATH\n$$ end\n";
     assert!(crate::common::read_text(nx).diagnostics.is_empty());
-    let cut = "TOOL PATH/A,TOOL,T1\nGOTO/0,0,0\nEND-OF-PATH\nTOOL PATH/B,TOOL,T1\nGOTO/1,0,0\n";
+    let cut = "TOOL PATH/A,TOOL,T1\nFEDRAT/100\nGOTO/0,0,0\nEND-OF-PATH\nTOOL PATH/B,TOOL,T1\nGOTO/1,0,0\n";
     assert_eq!(crate::common::read_text(cut).codes(), ["CL024"]);
+}
+
+/// A cutting move before any FEDRAT has no feed rate (CL025), said once at
+/// the first: NCL's `pmill_test1_4.as` of the corpus cuts its whole path
+/// with none, and the program posted from it cut with no F (VF034, blamed
+/// on the post); rapids need none.
+#[test]
+fn a_cutting_move_before_any_feed_rate_is_reported_once() {
+    let read = crate::common::read_text(
+        "UNITS/MM\nRAPID\nGOTO/0,0,5\nGOTO/0,0,-1\nGOTO/5,0,-1\nFEDRAT/100\nGOTO/9,0,-1\nFINI\n",
+    );
+    assert_eq!(read.codes(), ["CL025"]);
+    let json = postc_report::Render::to_json(&read.sources, &read.diagnostics[0], "test.cl");
+    assert_eq!(json.line, Some(4));
+    assert!(crate::common::read_text("UNITS/MM\nRAPID\nGOTO/0,0,5\nFINI\n").diagnostics.is_empty());
 }
