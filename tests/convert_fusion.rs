@@ -706,6 +706,15 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("The post has no property \"homeX\""), "{err}");
+    // A property given without `property.` is named as typed, with the
+    // form that sets it.
+    let o = postc(&["post", &homed.display().to_string(), job, "--set", "homePositionX=1"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("`--set homePositionX` is not a setting") && err.contains("`--set property.homePositionX=1`"),
+        "{err}"
+    );
     let o = postc(&["convert", "corpus/posts/cimco/fanuc_mill.js", "--to", "fusion"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");

@@ -38,9 +38,12 @@ pub fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagn
                     ));
                 }
             },
-            other => {
-                return Err(Diagnostic::error(codes::IO007, format!("`--set {other}` is not a setting postc knows"))
-                    .help(format!("known names: {SETTINGS}")));
+            _ => {
+                let name = name.trim();
+                return Err(Diagnostic::error(codes::IO007, format!("`--set {name}` is not a setting postc knows"))
+                    .help(format!(
+                        "known names: {SETTINGS}; a post's property is set as `--set property.{name}={value}`"
+                    )));
             }
         }
     }
