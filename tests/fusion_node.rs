@@ -775,6 +775,62 @@ fn a_post_top_level_reads_the_unit_of_the_job() {
     );
 }
 
+/// A post property is set only to a value its type takes: an `enum` to
+/// one of its `values`, a boolean to true or false; anything else stops the
+/// post naming what it takes, in postc and under Node.js alike (Kinetic-NC's
+/// `useRadius`, an enum, set to `true` printed arcs with no centre).
+#[test]
+fn a_property_is_set_only_to_a_value_its_type_takes() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    let post = folder.path().join("props.cps");
+    std::fs::write(
+        &post,
+        "description = \"props\";\ncapabilities = CAPABILITY_MILLING;\n\
+         properties = {\n\
+           arcs: {title: \"Arcs\", type: \"enum\", values: [{title: \"Radius\", id: \"radius\"}, {title: \"Centre\", id: \"centre\"}], value: \"centre\"},\n\
+           flag: {title: \"Flag\", type: \"boolean\", value: false}\n\
+         };\n\
+         function onOpen() { writeln(getProperty(\"arcs\") + \" \" + getProperty(\"flag\")); }\n\
+         function onClose() {}\n",
+    )
+    .expect("write the post");
+    let out = folder.path().join("props.nc");
+    let post_with = |set: &str| {
+        support::postc(&[
+            "post",
+            &post.display().to_string(),
+            &job.display().to_string(),
+            "-o",
+            &out.display().to_string(),
+            "--set",
+            &format!("property.{set}"),
+            // The program is the property's value, no G-code.
+            "--no-verify",
+        ])
+    };
+    let node_with = |set: &str| {
+        support::cimco::node_command().arg(&script).arg(&post).arg(&jsonl).arg("--property").arg(set).output()
+    };
+    for (set, says) in
+        [("arcs=true", "is one of radius, centre, not \"true\""), ("flag=maybe", "is true or false, not \"maybe\"")]
+    {
+        let node = node_with(set).expect("run node");
+        let node_err = String::from_utf8_lossy(&node.stderr);
+        assert!(!node.status.success() && node_err.contains(says), "{set}: Node.js: {node_err}");
+        let ours = post_with(set);
+        let err = String::from_utf8_lossy(&ours.stderr);
+        assert_eq!(ours.status.code(), Some(1), "{set}: {err}");
+        assert!(err.contains(says), "{set}: {err}");
+        assert!(!out.exists(), "{set}: no program is written");
+    }
+    let ours = post_with("arcs=radius");
+    assert!(ours.status.success(), "{}", String::from_utf8_lossy(&ours.stderr));
+    let node = node_with("arcs=radius").expect("run node");
+    let printed = std::fs::read(&out).expect("the program");
+    assert_eq!(String::from_utf8_lossy(&printed).lines().next(), Some("radius false"));
+    assert_eq!(node.stdout, printed, "Node.js and postc");
+}
+
 /// What Node.js prints running `post` over `jsonl` with the host
 /// `script`; Node.js stopping fails the test, naming `what`.
 fn node_prints(script: &Path, post: &Path, jsonl: &Path, what: &str) -> Vec<u8> {

@@ -2074,7 +2074,28 @@ function __setProperties(given) {
     var type = described ? p.type : typeof p;
     var value = text;
     if (type == "boolean") {
-      value = text == "true" || text == "yes" || text == "1";
+      var yes = text == "true" || text == "yes" || text == "1";
+      if (!yes && text != "false" && text != "no" && text != "0") {
+        error("The post property \"" + name + "\" is true or false, not \"" + text + "\".");
+      }
+      value = yes;
+    } else if (type == "enum" && described && p.values instanceof Array && p.values.length > 0) {
+      // One of the choices of the post dialog: an entry's `id` (or the
+      // entry, when the post lists plain values), as the post lists it.
+      var ids = [];
+      var found = false;
+      for (var c = 0; c < p.values.length; ++c) {
+        var entry = p.values[c];
+        var id = (entry !== null && typeof entry == "object") ? entry.id : entry;
+        ids.push(String(id));
+        if (!found && String(id) == text) {
+          found = true;
+          value = id;
+        }
+      }
+      if (!found) {
+        error("The post property \"" + name + "\" is one of " + ids.join(", ") + ", not \"" + text + "\".");
+      }
     } else if (type == "number" || type == "integer" || type == "spatial" || type == "angle") {
       value = Number(text);
       if (text.trim() == "" || !isFinite(value)) {
