@@ -168,7 +168,7 @@ pub fn run<S: EventSource + ?Sized>(
     if reads_ahead {
         ahead = next_posted(source, &mut diagnostics);
         if let Some((postc_ir::Event::Job(job), _)) = &ahead {
-            machine.output_units = output_units.unwrap_or(job.units);
+            machine.output_units = conversion.units_for(job);
         }
     }
     let code = if options.unprepared { prepare::unprepared(post) } else { prepare::prepare(post) };

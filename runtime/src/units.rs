@@ -39,13 +39,19 @@ impl Conversion {
         self.output
     }
 
+    /// The units the events of `job` come out in: the post's, else the
+    /// job's own.
+    pub fn units_for(&self, job: &postc_ir::event::Job) -> Units {
+        self.post.unwrap_or(job.units)
+    }
+
     /// Converts `event` in place.
     #[inline]
     pub fn convert(&mut self, event: &mut Event) {
         if let Event::Job(job) = event {
             if !self.fixed {
                 self.fixed = true;
-                self.output = self.post.unwrap_or(job.units);
+                self.output = self.units_for(job);
                 self.factor = job.units.factor_to(self.output);
             }
             let f = job.units.factor_to(self.output);
