@@ -823,12 +823,14 @@ fn a_property_is_set_only_to_a_value_its_type_takes() {
         assert!(err.contains(says), "{set}: {err}");
         assert!(!out.exists(), "{set}: no program is written");
     }
-    let ours = post_with("arcs=radius");
-    assert!(ours.status.success(), "{}", String::from_utf8_lossy(&ours.stderr));
-    let node = node_with("arcs=radius").expect("run node");
-    let printed = std::fs::read(&out).expect("the program");
-    assert_eq!(String::from_utf8_lossy(&printed).lines().next(), Some("radius false"));
-    assert_eq!(node.stdout, printed, "Node.js and postc");
+    for (set, prints) in [("arcs=radius", "radius false"), ("flag=True", "centre true")] {
+        let ours = post_with(set);
+        assert!(ours.status.success(), "{}", String::from_utf8_lossy(&ours.stderr));
+        let node = node_with(set).expect("run node");
+        let printed = std::fs::read(&out).expect("the program");
+        assert_eq!(String::from_utf8_lossy(&printed).lines().next(), Some(prints), "{set}");
+        assert_eq!(node.stdout, printed, "{set}: Node.js and postc");
+    }
 }
 
 /// What Node.js prints running `post` over `jsonl` with the host

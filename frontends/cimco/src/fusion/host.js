@@ -2074,8 +2074,10 @@ function __setProperties(given) {
     var type = described ? p.type : typeof p;
     var value = text;
     if (type == "boolean") {
-      var yes = text == "true" || text == "yes" || text == "1";
-      if (!yes && text != "false" && text != "no" && text != "0") {
+      // In any case: Python's `set={"property.x": True}` gives "True".
+      var said = text.toLowerCase();
+      var yes = said == "true" || said == "yes" || said == "1";
+      if (!yes && said != "false" && said != "no" && said != "0") {
         error("The post property \"" + name + "\" is true or false, not \"" + text + "\".");
       }
       value = yes;
