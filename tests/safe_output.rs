@@ -370,3 +370,29 @@ fn date_and_time_follow_the_reproducibility_rule() {
     // --set wins over the job and over SOURCE_DATE_EPOCH.
     assert!(made_line(d, &["--set", "date=2027-05-06"], Some("1767323096")).ends_with("on 2027-05-06 00:00 )"));
 }
+
+/// A post that stops while it handles an event says which record of the
+/// toolpath it stopped at, beside the post's own line: a Fusion post's
+/// "Spindle speed out of range." over a CL file that gives no SPINDL left
+/// the user to find the record.
+#[test]
+fn a_post_that_stops_names_the_toolpath_record_it_stopped_at() {
+    let dir = tempfile::tempdir().unwrap();
+    let post = dir.path().join("stops.js");
+    std::fs::write(
+        &post,
+        "function onLinear(x, y, z, movement) {\n    if (z < 0) { throw new Error(\"too deep\"); }\n    return \"\";\n}\n",
+    )
+    .unwrap();
+    let toolpath = dir.path().join("job.ron");
+    std::fs::write(
+        &toolpath,
+        "Job(units: Mm)\nTool(number: 1, diameter: 6)\nToolpathStart(name: \"Pocket\")\nRapid(x: 0, y: 0, z: 5)\nFeed(x: 0, y: 0, z: -1, feed: 100)\nEnd\n",
+    )
+    .unwrap();
+    let out = postc().arg("post").arg(&post).arg(&toolpath).arg("-o").arg(dir.path().join("job.nc")).output().unwrap();
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("too deep") && err.contains("stops.js:2:"), "{err}");
+    assert!(err.contains("job.ron:5:1") && err.contains("while posting this toolpath record"), "{err}");
+}

@@ -243,7 +243,7 @@ pub fn run<S: EventSource + ?Sized>(
             host.observe(&event);
         }
         if let Err(d) = dispatch.event(&mut engine, &event) {
-            diagnostics.push(*d);
+            diagnostics.push(at_event(*d, span));
             return fail(diagnostics, engine);
         }
         events += 1;
@@ -278,6 +278,19 @@ pub fn run<S: EventSource + ?Sized>(
 
 /// The next event a post sees: what a FEDRAT record said is for toolpath
 /// readers (postp's transform); posts see the feed on the moves.
+/// An error of the post while it handles an event, with the event's
+/// record in the toolpath when it names no place there: which record the
+/// post stopped at (a Fusion post's "Spindle speed out of range." at the
+/// CL file's tool change that gave no SPINDL).
+#[cold]
+fn at_event(d: Diagnostic, span: postc_ir::diagnostic::Span) -> Diagnostic {
+    if span.end > span.start && !d.labels.iter().any(|l| l.span.file == span.file) {
+        d.also(span, "while posting this toolpath record")
+    } else {
+        d
+    }
+}
+
 fn next_posted<S: EventSource + ?Sized>(
     source: &mut S,
     diagnostics: &mut Vec<Diagnostic>,
