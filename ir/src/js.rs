@@ -353,23 +353,9 @@ pub fn to_precision(x: f64, p: f64) -> Result<String, String> {
     let first = all.iter().position(|&c| c != b'0').unwrap_or(0);
     let mut e = int_part.len() as i64 - first as i64 - 1;
     let mut sig: Vec<u8> = all[first..].iter().copied().chain(std::iter::repeat(b'0')).take(p).collect();
-    if all.get(first + p).is_some_and(|&c| c >= b'5') {
-        let mut i = p;
-        loop {
-            if i == 0 {
-                sig.insert(0, b'1');
-                sig.truncate(p);
-                e += 1;
-                break;
-            }
-            i -= 1;
-            if sig[i] == b'9' {
-                sig[i] = b'0';
-            } else {
-                sig[i] += 1;
-                break;
-            }
-        }
+    if all.get(first + p).is_some_and(|&c| c >= b'5') && round_up(&mut sig) {
+        sig.truncate(p);
+        e += 1;
     }
     let sig = String::from_utf8(sig).unwrap_or_default();
     Ok(if e < -6 || e >= p as i64 {
@@ -381,6 +367,21 @@ pub fn to_precision(x: f64, p: f64) -> Result<String, String> {
     } else {
         format!("{sign}0.{}{sig}", "0".repeat((-e - 1) as usize))
     })
+}
+
+/// Adds one to the last of the decimal `digits`, carrying: whether the
+/// carry ran past the first digit and a `1` now leads (`999` -> `1000`).
+fn round_up(digits: &mut Vec<u8>) -> bool {
+    for d in digits.iter_mut().rev() {
+        if *d == b'9' {
+            *d = b'0';
+        } else {
+            *d += 1;
+            return false;
+        }
+    }
+    digits.insert(0, b'1');
+    true
 }
 
 pub fn to_fixed(x: f64, digits: f64) -> String {
@@ -397,20 +398,7 @@ pub fn to_fixed(x: f64, digits: f64) -> String {
     let mut digits: Vec<u8> = int_part.bytes().chain(frac.bytes().take(d)).collect();
     let rest = &frac.as_bytes()[d.min(frac.len())..];
     if rest.first().is_some_and(|&c| c >= b'5') {
-        let mut i = digits.len();
-        loop {
-            if i == 0 {
-                digits.insert(0, b'1');
-                break;
-            }
-            i -= 1;
-            if digits[i] == b'9' {
-                digits[i] = b'0';
-            } else {
-                digits[i] += 1;
-                break;
-            }
-        }
+        round_up(&mut digits);
     }
     let int_len = digits.len() - d;
     let mut s = String::new();

@@ -58,6 +58,11 @@ fn to_fixed_rounds_the_binary_value() {
     assert_eq!(to_fixed(-0.0001, 2.0), "-0.00");
     assert_eq!(to_fixed(-0.0, 2.0), "0.00");
     assert_eq!(to_fixed(0.125, 2.0), "0.13");
+    // A carry past the first digit, as Node.js prints it.
+    assert_eq!(to_fixed(9.999, 2.0), "10.00");
+    assert_eq!(to_fixed(999.96, 1.0), "1000.0");
+    assert_eq!(to_precision(99.99, 2.0).as_deref(), Ok("1.0e+2"));
+    assert_eq!(to_precision(0.0999, 2.0).as_deref(), Ok("0.10"));
 }
 
 #[test]
