@@ -48,16 +48,24 @@ impl Compiled {
     }
 }
 
+/// The dialect a post's extension names (`.pp`, `.js`, `.cps`, `.vcpost`,
+/// `.ron`, in any case); `None` for any other extension.
+pub fn dialect_of_extension(path: &Path) -> Option<Dialect> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    Some(match ext.as_deref()? {
+        "pp" => Dialect::Vectric,
+        "js" => Dialect::Cimco,
+        "cps" => Dialect::Fusion,
+        "vcpost" => Dialect::VcPost,
+        "ron" => Dialect::Ron,
+        _ => return None,
+    })
+}
+
 /// The dialect a post is written in, from its extension or its content.
 pub fn post_dialect(path: &Path, bytes: &[u8]) -> Option<Dialect> {
-    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    match ext.as_deref() {
-        Some("pp") => return Some(Dialect::Vectric),
-        Some("js") => return Some(Dialect::Cimco),
-        Some("cps") => return Some(Dialect::Fusion),
-        Some("vcpost") => return Some(Dialect::VcPost),
-        Some("ron") => return Some(Dialect::Ron),
-        _ => {}
+    if let Some(dialect) = dialect_of_extension(path) {
+        return Some(dialect);
     }
     let text = String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 16)]);
     let lower = text.to_ascii_lowercase();
@@ -354,10 +362,10 @@ pub fn toolpath_format(path: &Path, head: &[u8]) -> Option<ToolpathFormat> {
 /// file's head is read through `loader`.
 pub fn is_toolpath(path: &Path, loader: &dyn SourceLoader) -> bool {
     let head = read_head(loader, path);
-    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-        Some("pp" | "js" | "vcpost") => false,
-        Some("ron") => !looks_like_ir_post(&head),
-        _ => toolpath_format(path, &head).is_some(),
+    match dialect_of_extension(path) {
+        Some(Dialect::Ron) => !looks_like_ir_post(&head),
+        Some(_) => false,
+        None => toolpath_format(path, &head).is_some(),
     }
 }
 

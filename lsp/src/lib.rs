@@ -244,15 +244,7 @@ fn overlaps(a: Range, b: Range) -> bool {
 #[doc(hidden)]
 pub fn dialect_of(uri: &str) -> Option<Dialect> {
     let path = uri.split(['?', '#']).next().unwrap_or(uri);
-    let ext = path.rsplit_once('.').map(|(_, e)| e)?;
-    match ext.to_ascii_lowercase().as_str() {
-        "pp" => Some(Dialect::Vectric),
-        "js" => Some(Dialect::Cimco),
-        "vcpost" => Some(Dialect::VcPost),
-        "cps" => Some(Dialect::Fusion),
-        "ron" => Some(Dialect::Ron),
-        _ => None,
-    }
+    postc_driver::dialect_of_extension(std::path::Path::new(path))
 }
 
 /// The file path of a `file:` URI (percent-decoded); another scheme gives

@@ -133,10 +133,7 @@ fn folder_posts(dir: &Path) -> Result<Vec<Entry>, Diagnostic> {
     files.sort();
     let mut posts = Vec::new();
     for path in files {
-        let known = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| ["pp", "js", "vcpost", "cps", "ron"].iter().any(|k| k.eq_ignore_ascii_case(e)));
+        let known = postc_driver::dialect_of_extension(&path).is_some();
         if !known || postc_driver::is_toolpath(&path, &postc_report::FsLoader) {
             continue;
         }

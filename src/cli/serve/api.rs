@@ -549,10 +549,7 @@ fn toolpaths(state: &State) -> Value {
 
 /// `/api/posts`: what the post picker offers.
 fn posts(state: &State) -> Value {
-    let is_post = |p: &Path| {
-        let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-        matches!(ext.as_deref(), Some("pp" | "js" | "cps" | "vcpost"))
-    };
+    let is_post = |p: &Path| postc_driver::dialect_of_extension(p).is_some_and(|d| d != Dialect::Ron);
     let corpus = state.roots.corpus.as_ref().map_or_else(Vec::new, |c| listed(&c.join("posts"), &is_post));
     json!({ "start": state.post.as_ref().map(|p| p.display().to_string()), "corpus": corpus })
 }

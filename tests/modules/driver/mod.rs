@@ -1,3 +1,4 @@
+mod kinds;
 mod library;
 mod read_ahead;
 mod ron_locate;
