@@ -783,6 +783,14 @@ declare_codes! {
     JS043: Error, "empty slots in an array literal (`[1, , 2]`)",
         example = "var a = [1, , 2];",
         fix = "Write `undefined` in the empty slot.";
+    /// E4X (ECMAScript for XML) let old JavaScript engines read and write XML as values:
+    /// `xml..c` (every `c` below), `e.@ss::Type` (an attribute in a namespace), `default xml
+    /// namespace = "..."`. Some setup-sheet posts of the HSMWorks years write spreadsheets with it.
+    /// It is not part of ES5 and no engine of today runs it, so postc refuses the post at the
+    /// construct.
+    JS044: Error, "E4X, ECMAScript for XML (`xml..name`, `node.@attribute`)",
+        example = "var rows = xml..Row;",
+        fix = "Build the XML as text with `+` and write it with `writeln`.";
     /// postc turns a CIMCO post's functions into a script for its script engine; this part of the
     /// post could not be translated. The post is valid JavaScript: this is a gap in postc.
     JS100: Error, "the post could not be turned into a script (a construct the Rhai translation lacks); report it",

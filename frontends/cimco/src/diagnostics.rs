@@ -9,6 +9,8 @@ use postc_ir::codes;
 use postc_ir::{Diagnostic, FileId, Span};
 
 pub const UNEXPECTED_CHARACTER: &str = codes::JS001.code;
+/// E4X (ECMAScript for XML), which the lexer meets as `.@`.
+pub const E4X: &str = codes::JS044.code;
 pub const UNTERMINATED_TEXT: &str = codes::JS002.code;
 pub const BAD_ESCAPE: &str = codes::JS003.code;
 pub const UNTERMINATED_COMMENT: &str = codes::JS004.code;
@@ -63,6 +65,7 @@ pub enum Construct {
     LegacyOctal,
     TrailingComma,
     ArrayHole,
+    E4x,
 }
 
 impl Construct {
@@ -95,6 +98,7 @@ impl Construct {
             BinaryOctal | BigInt | LegacyOctal => codes::JS041.code,
             TrailingComma => codes::JS042.code,
             ArrayHole => codes::JS043.code,
+            E4x => codes::JS044.code,
         }
     }
 
@@ -135,6 +139,7 @@ impl Construct {
             LegacyOctal => "numbers with a leading zero (`010`, an octal number in old JavaScript)",
             TrailingComma => "a comma after the last argument or parameter",
             ArrayHole => "empty slots in an array (`[1, , 2]`)",
+            E4x => "E4X, ECMAScript for XML (`xml..name`, `node.@attribute`, `default xml namespace`)",
         }
     }
 
@@ -173,6 +178,9 @@ impl Construct {
             LegacyOctal => "remove the leading zero, or write the number in hexadecimal",
             TrailingComma => "remove the comma",
             ArrayHole => "write `undefined` in the empty slot",
+            E4x => {
+                "build the XML as text with `+`; E4X was an extension of old JavaScript engines, removed from them and never part of ES5"
+            }
         }
     }
 
@@ -186,6 +194,9 @@ impl Construct {
         let verb = if self.is_plural() { "are" } else { "is" };
         let message = match (syntax, self) {
             (Syntax::Cimco, _) => format!("{} {verb} not part of the JavaScript that CNC-Calc posts use", self.name()),
+            (Syntax::Fusion, Construct::E4x) => {
+                format!("postc does not read {}: no engine of today runs it", self.name())
+            }
             (Syntax::Fusion, _) => format!("postc does not read {} in Fusion posts yet", self.name()),
         };
         Diagnostic::error(self.code(), message).at(span, "not supported by postc").help(self.help())

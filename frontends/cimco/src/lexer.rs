@@ -121,6 +121,8 @@ impl<'src> Lexer<'src> {
                 self.substitutions.pop();
                 self.pos += 1;
                 self.template_part(start, false);
+            } else if c == '@' && self.text[..start].ends_with('.') {
+                self.e4x_attribute(start);
             } else if let Some(p) = self.punct() {
                 if let Some(open) = self.substitutions.last_mut() {
                     match p {
@@ -146,6 +148,26 @@ impl<'src> Lexer<'src> {
                 self.error(d::UNEXPECTED_CHARACTER, start, self.pos, message, "unexpected character");
             }
         }
+    }
+
+    /// E4X's attribute after a `.` (`node.@name`, `node.@ss::Type`):
+    /// refused as E4X, and read on as the property `name` so that the
+    /// rest of the statement is checked.
+    fn e4x_attribute(&mut self, start: usize) {
+        self.pos += 1;
+        let name = self.pos;
+        while self.peek().is_some_and(|c| c == '_' || c == '$' || c == ':' || c.is_ascii_alphanumeric()) {
+            self.pos += 1;
+        }
+        self.error(
+            d::E4X,
+            start,
+            self.pos,
+            "`.@` reads an attribute in E4X (ECMAScript for XML), which is not JavaScript postc reads",
+            "E4X attribute",
+        );
+        let property = &self.text[name..self.pos];
+        self.push(TokenKind::Ident(if property.is_empty() { "_" } else { property }), start);
     }
 
     /// Skips blanks and comments, noting line breaks.

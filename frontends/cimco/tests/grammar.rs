@@ -125,6 +125,11 @@ fn unsupported_constructs_are_named() {
         ("x = 0b1", "JS041"),
         ("f(a,)", "JS042"),
         ("x = [1,,2]", "JS043"),
+        ("var cells = xml..c", "JS044"),
+        ("var data = xml..ss::Data", "JS044"),
+        ("e.@ss::Type = \"Number\"", "JS044"),
+        ("if (c.@t == \"s\") {}", "JS044"),
+        ("default xml namespace = \"urn:schemas-microsoft-com:office:spreadsheet\"", "JS044"),
     ];
     for (text, code) in cases {
         assert_eq!(codes(text), [*code], "{text}");

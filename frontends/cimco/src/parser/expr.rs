@@ -280,6 +280,16 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
         .delimited_by(punct(Punct::LBracket), punct(Punct::RBracket))
         .recover_with(via_parser(balanced(Punct::LBracket).map(move |at| Expr::error(span(file, at)))));
     let member = punct(Punct::Dot).ignore_then(property).map(Suffix::Member);
+    // E4X's descendants (`xml..Row`, `xml..ss::Row`), named and read on as a member.
+    let descendants = punct(Punct::Dot)
+        .ignore_then(punct(Punct::Dot))
+        .map_with(|_, e| e.span())
+        .then_ignore(property.then(punct(Punct::Colon)).then(punct(Punct::Colon)).or_not())
+        .then(property)
+        .validate(|(at, property), _, emitter| {
+            emitter.emit(unsupported(Construct::E4x, at));
+            Suffix::Member(property)
+        });
     let optional = punct(Punct::QuestionDot)
         .map_with(|_, e| e.span())
         .then(choice((
@@ -294,6 +304,7 @@ fn call_chain<'t, 's: 't, I: TokenInput<'t, 's>>(
     let member_suffix = choice((member.clone(), index.clone().map(Suffix::Index))).boxed();
     let suffix = choice((
         member,
+        descendants.boxed(),
         optional.boxed(),
         index.map(Suffix::Index),
         arguments(file, assign.clone()).map(Suffix::Call),

@@ -1,6 +1,6 @@
 //! Statements outside the subset, parsed far enough to name them in a
 //! diagnostic: labels, `with`, `debugger`, `class`, `import`, `export`,
-//! `async function`.
+//! `async function`, E4X's `default xml namespace`.
 
 use chumsky::prelude::*;
 use postc_ir::FileId;
@@ -13,7 +13,8 @@ use crate::token::{Keyword, Punct, Token};
 type Boxed<'t, 's, I, O> = chumsky::Boxed<'t, 't, I, O, Extra<'t, 's>>;
 
 /// Statements outside the subset, parsed far enough to name them: labels,
-/// `with`, `debugger`, `class`, `import`, `export`, `async function`.
+/// `with`, `debugger`, `class`, `import`, `export`, `async function`,
+/// E4X's `default xml namespace`.
 pub(super) fn unsupported_statements<'t, 's: 't, I, S>(
     file: FileId,
     stmt: S,
@@ -55,6 +56,13 @@ where
             inner
         },
     );
+    // E4X's `default xml namespace = "...";`.
+    let xml_namespace = keyword_at(Keyword::Default)
+        .then_ignore(word("xml"))
+        .then_ignore(word("namespace"))
+        .then_ignore(any().filter(|t: &Token<'s>| !t.newline_before && !t.is_punct(Punct::Semi)).repeated())
+        .then_ignore(terminator())
+        .validate(move |s, e, emitter| error(Construct::E4x, s, e.span(), emitter));
     let async_function = word("async")
         .map_with(|_, e| e.span())
         .then_ignore(same_line().then(kw(Keyword::Function).rewind()))
@@ -71,6 +79,7 @@ where
         import.boxed(),
         export.boxed(),
         async_function.boxed(),
+        xml_namespace.boxed(),
     ))
     .boxed()
 }
