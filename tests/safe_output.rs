@@ -396,3 +396,75 @@ fn a_post_that_stops_names_the_toolpath_record_it_stopped_at() {
     assert!(err.contains("too deep") && err.contains("stops.js:2:"), "{err}");
     assert!(err.contains("job.ron:5:1") && err.contains("while posting this toolpath record"), "{err}");
 }
+
+/// `-o` naming a pipe (a FIFO a sender reads from) writes the program
+/// into the pipe and leaves the pipe a pipe; it was replaced by a regular
+/// file holding the program, which the reader never saw.
+#[cfg(unix)]
+#[test]
+fn a_program_written_to_a_pipe_goes_through_it_and_the_pipe_stays() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = job_dir();
+    let fifo = dir.path().join("sender.fifo");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let (sent, got) = std::sync::mpsc::channel();
+    let reading = fifo.clone();
+    std::thread::spawn(move || {
+        let _ = sent.send(std::fs::read(&reading));
+    });
+    let out =
+        postc().current_dir(dir.path()).args(["post", "job.pp", "job.ron", "-o", "sender.fifo"]).output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(std::fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo(), "the pipe was replaced by a file");
+    let read = got.recv_timeout(std::time::Duration::from_secs(20)).expect("nothing was written into the pipe");
+    std::fs::create_dir(dir.path().join("plain")).unwrap();
+    let plain = postc()
+        .current_dir(dir.path())
+        .args(["post", "job.pp", "job.ron", "-o", "plain/sender.fifo"])
+        .output()
+        .unwrap();
+    assert!(plain.status.success(), "{}", stderr(&plain));
+    assert_eq!(read.unwrap(), std::fs::read(dir.path().join("plain/sender.fifo")).unwrap());
+    assert_eq!(names(dir.path()), ["job.pp", "job.ron", "plain", "sender.fifo"]);
+}
+
+/// A device that cannot take the program (`/dev/full`: no space left)
+/// fails the command with the reason, and the device stays a device.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_device_that_cannot_take_the_program_fails_the_command() {
+    use std::os::unix::fs::FileTypeExt;
+    let full = Path::new("/dev/full");
+    let is_device = |p: &Path| std::fs::symlink_metadata(p).is_ok_and(|m| m.file_type().is_char_device());
+    assert!(is_device(full), "this machine has no /dev/full");
+    let dir = job_dir();
+    let out = postc().current_dir(dir.path()).args(["post", "job.pp", "job.ron", "-o", "/dev/full"]).output().unwrap();
+    assert!(is_device(full), "/dev/full was replaced by a file");
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("IO003") && stderr(&out).contains("No space left"), "{}", stderr(&out));
+    let out = postc().current_dir(dir.path()).args(["post", "job.pp", "job.ron", "-o", "/dev/null"]).output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(is_device(Path::new("/dev/null")), "/dev/null was replaced by a file");
+}
+
+/// `-o` naming a symbolic link writes the file the link names (a
+/// machine's program folder linked into a project) and keeps the link;
+/// a link to a file not there yet makes that file.
+#[cfg(unix)]
+#[test]
+fn a_program_written_through_a_link_lands_where_the_link_points() {
+    let dir = job_dir();
+    std::fs::create_dir(dir.path().join("machine")).unwrap();
+    std::fs::write(dir.path().join("machine/prog.nc"), "old\n").unwrap();
+    std::os::unix::fs::symlink("machine/prog.nc", dir.path().join("prog.nc")).unwrap();
+    std::os::unix::fs::symlink("machine/next.nc", dir.path().join("next.nc")).unwrap();
+    for name in ["prog.nc", "next.nc"] {
+        let out = postc().current_dir(dir.path()).args(["post", "job.pp", "job.ron", "-o", name]).output().unwrap();
+        assert!(out.status.success(), "{}", stderr(&out));
+        let link = dir.path().join(name);
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "{name}: the link was replaced");
+        let written = std::fs::read_to_string(dir.path().join("machine").join(name)).unwrap();
+        assert!(written.starts_with("(") && written.contains("G1"), "{name}: {written}");
+    }
+    assert_eq!(names(&dir.path().join("machine")), ["next.nc", "prog.nc"]);
+}
