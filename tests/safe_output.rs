@@ -468,3 +468,36 @@ fn a_program_written_through_a_link_lands_where_the_link_points() {
     }
     assert_eq!(names(&dir.path().join("machine")), ["next.nc", "prog.nc"]);
 }
+
+/// `--set tolerance=MM` cuts arcs at that tolerance and verify judges the
+/// chords by it: at 0.05 mm verify refused every chord of
+/// `gcode_noarcs_mm.pp` (VF014 against its own 0.01 mm). A tolerance no
+/// program can print, or one that is no longer the arc's shape, is refused.
+#[test]
+fn a_set_tolerance_is_the_one_the_chords_are_judged_by() {
+    let dir = job_dir();
+    std::fs::copy(corpus("posts/vectric/gcode_noarcs_mm.pp"), dir.path().join("noarcs.pp")).unwrap();
+    let post = |tolerance: &str, out: &str| {
+        let set = format!("tolerance={tolerance}");
+        postc()
+            .current_dir(dir.path())
+            .args(["post", "noarcs.pp", "job.ron", "--set", &set, "-o", out])
+            .output()
+            .unwrap()
+    };
+    let lines = |out: &str| std::fs::read_to_string(dir.path().join(out)).unwrap().lines().count();
+    let fine = post("0.001", "fine.nc");
+    assert!(fine.status.success(), "{}", stderr(&fine));
+    for coarse in ["0.05", "1"] {
+        let out = post(coarse, "coarse.nc");
+        assert!(out.status.success(), "tolerance {coarse}: {}", stderr(&out));
+        assert!(!stderr(&out).contains("VF014"), "{}", stderr(&out));
+        assert!(lines("coarse.nc") < lines("fine.nc"));
+    }
+    for refused in ["0", "-1", "0.00001", "1.5", "inf", "NaN", "abc"] {
+        let out = post(refused, "refused.nc");
+        assert_eq!(out.status.code(), Some(1), "{refused}");
+        assert!(stderr(&out).contains("IO007") && stderr(&out).contains("0.0001 to 1"), "{refused}: {}", stderr(&out));
+    }
+    assert!(!dir.path().join("refused.nc").exists());
+}

@@ -30,12 +30,13 @@ pub fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagn
             "date" => options.date = Some(value.to_string()),
             "time" => options.time = Some(value.to_string()),
             "tolerance" | "arc_tolerance" => match value.trim().parse::<f64>() {
-                Ok(t) if t > 0.0 => options.arc_tolerance = Some(t),
+                Ok(t) if (MIN_TOLERANCE..=MAX_TOLERANCE).contains(&t) => options.arc_tolerance = Some(t),
                 _ => {
                     return Err(Diagnostic::error(
                         codes::IO007,
-                        format!("`--set {set}`: the tolerance must be a positive number of mm"),
-                    ));
+                        format!("`--set {set}`: the tolerance must be a number of mm from {MIN_TOLERANCE} to {MAX_TOLERANCE}"),
+                    )
+                    .help("the chord tolerance of arcs a post cuts into straight moves; CAM systems use 0.001 to 0.1 mm"));
                 }
             },
             _ => {
@@ -48,6 +49,24 @@ pub fn apply_sets(sets: &[String], options: &mut RunOptions) -> Result<(), Diagn
         }
     }
     Ok(())
+}
+
+/// The smallest and the largest `--set tolerance`, mm: chords finer than
+/// a tenth of a micrometre are finer than any program prints (its words
+/// repeat, and the blocks that would carry a feed print nothing), and a
+/// chord a millimetre from its arc is no longer the arc's shape
+/// (docs/vectric.md, decision 35).
+pub const MIN_TOLERANCE: f64 = 0.0001;
+pub const MAX_TOLERANCE: f64 = 1.0;
+
+/// The post as a run with `options` posts it: the chord tolerance set
+/// with `--set tolerance` is the post's, so that the runtime cuts arcs at
+/// it and verifying the program judges the chords by it.
+pub fn post_for_run(mut post: postc_ir::Post, options: &RunOptions) -> postc_ir::Post {
+    if let Some(tolerance) = options.arc_tolerance {
+        post.options.arc_tolerance = tolerance;
+    }
+    post
 }
 
 /// The output file as `[TP_FILENAME]`, `[TP_DIR]` and `[TP_EXT]` print it.

@@ -26,7 +26,7 @@ pub struct Args {
     /// Write the program here (tape-split parts go beside it) instead of to standard output.
     #[arg(short, long, value_name = "OUT")]
     output: Option<PathBuf>,
-    /// Set a job value: date, time (what [DATE] and [TIME] print), tolerance (mm, for linearized arcs), property.NAME (a Fusion post's property, as its post dialog sets it).
+    /// Set a job value: date, time (what [DATE] and [TIME] print), tolerance (mm, 0.0001 to 1, for linearized arcs), property.NAME (a Fusion post's property, as its post dialog sets it).
     #[arg(long = "set", value_name = "NAME=VALUE")]
     sets: Vec<String>,
     /// Compute arc words from the printed start and end points, so the radius agrees at both ends.
@@ -133,6 +133,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ..super::clock::run_options()
     };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
+    let post = postc_driver::settings::post_for_run(post, &options);
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));
     }
