@@ -149,6 +149,37 @@ fn events_the_post_cannot_write_are_warnings_at_the_toolpath_line() {
     assert!(!text(&out.stderr).contains("RT035"), "{}", text(&out.stderr));
 }
 
+/// A spindle stop the post has no section for, followed by moves (a CL
+/// file's `SPINDL/OFF` before it moves on), is a warning at the record:
+/// the spindle runs on. One before a tool change, a restart or the end is
+/// not (the tool change and the footer stop the spindle themselves).
+#[test]
+fn a_spindle_stop_the_post_cannot_write_is_a_warning_when_moves_follow() {
+    let dir = tempfile::tempdir().unwrap();
+    let cl = |name: &str, tail: &str| {
+        let path = dir.path().join(name);
+        let head = "PARTNO/STOP\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,1000,CLW\nFEDRAT/500\nGOTO/0,0,10\nGOTO/0,0,0\n";
+        std::fs::write(&path, format!("{head}{tail}FINI\n")).unwrap();
+        path
+    };
+    let moves_on = cl("moves_on.apt", "SPINDL/OFF\nGOTO/10,0,0\n");
+    let out = postc(&[&moves_on, Path::new("-o"), &dir.path().join("moves_on.nc")]);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(stderr.contains("warning[RT035]") && stderr.contains("the spindle to stop"), "{stderr}");
+    assert!(stderr.contains("moves_on.apt:8:1"), "the warning names the CL record: {stderr}");
+    for (name, tail) in [
+        ("tool_change.apt", "SPINDL/OFF\nLOADTL/2\nSPINDL/RPM,800,CLW\nGOTO/10,0,0\n"),
+        ("restart.apt", "SPINDL/OFF\nSPINDL/RPM,800,CLW\nGOTO/10,0,0\n"),
+        ("end.apt", "GOTO/10,0,0\nSPINDL/OFF\n"),
+    ] {
+        let path = cl(name, tail);
+        let out = postc(&[&path, Path::new("-o"), &dir.path().join("x.nc")]);
+        assert!(out.status.success(), "{name}: {}", text(&out.stderr));
+        assert!(!text(&out.stderr).contains("RT035"), "{name}: {}", text(&out.stderr));
+    }
+}
+
 #[test]
 fn formatting_nan_writes_no_file() {
     let dir = tempfile::tempdir().unwrap();

@@ -1461,10 +1461,11 @@ declare_codes! {
     RT034: Warning, "a post line prints an address letter with no number after it (the job gives no value for it)",
         fix = "Print the letter as the variable's prefix (`[T|A|T|1.0]`) so that it goes with the value, or give the job the value.";
     /// The toolpath changes how the tool cuts (cutter compensation, coolant, a new spindle
-    /// speed) and the post has no handler to write it: the program runs on as before, which
-    /// is not what the toolpath asked. Events that change nothing on the part (a spindle stop
-    /// before the post's own, a toolpath's end) are not reported.
-    RT035: Warning, "the toolpath changes how the tool cuts (compensation, coolant, spindle speed) and the post cannot write it",
+    /// speed, a spindle stop followed by moves) and the post has no handler to write it: the
+    /// program runs on as before, which is not what the toolpath asked. Events that change
+    /// nothing on the part (a spindle stop before a tool change, a restart or the end, whose
+    /// sections stop the spindle themselves; a toolpath's end) are not reported.
+    RT035: Warning, "the toolpath changes how the tool cuts (compensation, coolant, spindle speed, a spindle stop) and the post cannot write it",
         fix = "Add the handler to the post, or post with a post that has it.";
     /// The post threw a value (`throw`) that no `try` caught: it stops there, as a JavaScript
     /// engine stops; the message is what it threw.

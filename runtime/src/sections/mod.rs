@@ -76,6 +76,10 @@ pub struct SectionDispatch {
     family: Family,
     last_feed: Option<f64>,
     spindle_on: bool,
+    /// A spindle stop the post had no section to write, at its event:
+    /// warned of when a move follows it before a tool change, a restart
+    /// or the end (which stop or start the spindle themselves).
+    unwritten_stop: Option<postc_ir::Span>,
     /// Tape splitting: the current part ends before the next block.
     split_pending: bool,
     /// Inserts, comments, coolant and compensation that came before the
@@ -104,6 +108,7 @@ impl SectionDispatch {
             family: Family::None,
             last_feed: None,
             spindle_on: false,
+            unwritten_stop: None,
             split_pending: false,
             held: Vec::new(),
             held_bytes: 0,
@@ -123,6 +128,22 @@ impl SectionDispatch {
     /// Handles one event.
     pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
         check_finite(eng, event)?;
+        if self.unwritten_stop.is_some() {
+            match event {
+                Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::DrillCycle(_) | Event::Dwell(_) => {
+                    let at = self.unwritten_stop.take();
+                    unwritten_at(
+                        eng,
+                        at,
+                        "the spindle to stop",
+                        "the spindle runs on through the moves that follow",
+                        Section::SpindleOff,
+                    );
+                }
+                Event::Tool(_) | Event::SpindleOn(_) | Event::End => self.unwritten_stop = None,
+                _ => {}
+            }
+        }
         match event {
             // Text, coolant and compensation before the first tool or move
             // wait for the header, which must print the first tool (an APT
@@ -216,8 +237,8 @@ impl SectionDispatch {
                 }
             }
             Event::SpindleOff => {
-                if self.started {
-                    eng.run_section(Section::SpindleOff)?;
+                if self.started && !eng.run_section(Section::SpindleOff)? {
+                    self.unwritten_stop = Some(eng.event_span);
                 }
                 self.spindle_on = false;
             }
@@ -491,14 +512,22 @@ impl SectionDispatch {
 /// Warns, once for each kind, that an event which changes how the tool
 /// cuts reached a post with no handler (`section`) to write it.
 fn unwritten(eng: &mut Engine, what: &str, consequence: &str, section: Section) {
+    unwritten_at(eng, Some(eng.event_span), what, consequence, section);
+}
+
+/// [`unwritten`] of the event at `at`.
+fn unwritten_at(eng: &mut Engine, at: Option<postc_ir::Span>, what: &str, consequence: &str, section: Section) {
+    let mut warning = Diagnostic::warning(
+        "RT035",
+        format!("the toolpath asks for {what} here, and the post has no way to write it: {consequence}"),
+    );
+    if let Some(at) = at {
+        warning = warning.at(at, "this event (the first of its kind) is not written");
+    }
     eng.warn_once(
-        Diagnostic::warning(
-            "RT035",
-            format!("the toolpath asks for {what} here, and the post has no way to write it: {consequence}"),
-        )
-        .at(eng.event_span, "this event (the first of its kind) is not written")
-        .note(format!("the post has no {} handler", section.name()))
-        .help("post with a post that writes it, or set it at the machine by hand"),
+        warning
+            .note(format!("the post has no {} handler", section.name()))
+            .help("post with a post that writes it, or set it at the machine by hand"),
     );
 }
 
