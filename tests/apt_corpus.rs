@@ -175,6 +175,9 @@ fn default_post(sources: &mut SourceMap) -> Post {
 }
 
 /// Reads, posts and checks one file; returns what went wrong.
+/// What [`check_file`] says of a file whose moves tilt the tool.
+const TILTED: &str = "a move tilts the tool";
+
 fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     let mut sources = postc_report::source_map();
     let diags = postc_driver::check_toolpath(path, &mut sources);
@@ -199,7 +202,14 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
     let tolerance = post.options.arc_tolerance;
     let mut expected = Expected { motions: 0, cycle: None, pos: [0.0; 3], factor: 1.0, tolerance };
     let (mut arcs, mut linear) = (0, 0);
+    // A move that tilts the tool (RT040 for a post that writes X, Y and Z).
+    let mut tilts = false;
     while let Some((event, _)) = reader.next_event(&mut d) {
+        if let Event::Rapid(postc_ir::event::Move { tool_axis: Some([_, _, k]), .. })
+        | Event::Feed(postc_ir::event::FeedMove { tool_axis: Some([_, _, k]), .. }) = &event
+        {
+            tilts |= 1.0 - k > 1e-6;
+        }
         match &event {
             Event::Arc(_) => arcs += 1,
             Event::Rapid(_) | Event::Feed(_) | Event::DrillPoint(_) => linear += 1,
@@ -233,8 +243,14 @@ fn check_file(path: &Path, rs274: Option<&Path>) -> Result<String, String> {
             Finished::Memory(parts) => String::from_utf8_lossy(&parts.concat()).into_owned(),
             _ => unreachable!(),
         },
+        Err(d) if tilts && d.iter().find(|d| d.is_error()).is_some_and(|d| d.code == "RT040") => {
+            return Ok(format!("{TILTED}: refused with RT040"));
+        }
         Err(d) => return Err(format!("posting failed: {d:?}")),
     };
+    if tilts {
+        return Err("a move tilts the tool, and the default post wrote a program".into());
+    }
     let Some(rs274) = rs274 else {
         return Ok(format!("{arcs} arcs, {linear} straight moves (rs274 not on PATH)"));
     };
@@ -268,14 +284,20 @@ fn every_corpus_cl_file_reads_posts_and_reads_back_in_rs274() {
         println!("rs274 not found on PATH: the programs are posted but not read back");
     }
     let mut failures = Vec::new();
+    let mut tilted = 0;
     for f in &files {
         match check_file(f, rs274.as_deref()) {
-            Ok(summary) => println!("{}: {summary}", f.display()),
+            Ok(summary) => {
+                tilted += usize::from(summary.starts_with(TILTED));
+                println!("{}: {summary}", f.display());
+            }
             Err(e) => failures.push(format!("{}: {e}", f.display())),
         }
     }
     assert!(files.len() >= 31, "the corpus has {} files", files.len());
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+    // Multi-axis operations and setups from below or the side (docs/apt.md).
+    assert_eq!(tilted, 10, "CL files whose moves tilt the tool");
 }
 
 #[test]

@@ -70,9 +70,9 @@ fn the_default_post_writes_a_correct_program_for_a_job_with_no_tool() {
 
 #[test]
 fn the_header_waits_for_the_first_tool_of_a_cl_file() {
-    // boss.apt writes an INSERT before its LOAD/TOOL: the header still
-    // loads tool 1 and starts the spindle at the CL file's speed.
-    let boss = shared("apt/aamorim1913__AptPostProcessor/boss.apt");
+    // Dem-target1.apt writes an INSERT before its LOAD/TOOL: the header
+    // still loads tool 14 and starts the spindle at the CL file's speed.
+    let boss = shared("apt/aamorim1913__AptPostProcessor/Dem-target1.apt");
     if !boss.is_file() {
         assert!(std::env::var_os("CI").is_none(), "../shared is missing under CI");
         return;
@@ -83,7 +83,7 @@ fn the_header_waits_for_the_first_tool_of_a_cl_file() {
     // The Carvera's own M6 macro raises Z, a property of the machine the
     // user states by lowering the finding.
     let warn = [Path::new("--warn"), Path::new("VF038")];
-    for (post, tool, spindle) in [(None, "T1 M6", "S12000 M3"), (Some(carvera.as_path()), "T1M6", "S12000M3")] {
+    for (post, tool, spindle) in [(None, "T14 M6", "S12000 M3"), (Some(carvera.as_path()), "T14M6", "S12000M3")] {
         let out = match post {
             Some(p) => postc(&[p, &boss, warn[0], warn[1]]),
             None => postc(&[&boss]),
@@ -147,6 +147,37 @@ fn events_the_post_cannot_write_are_warnings_at_the_toolpath_line() {
     let fanuc = root().join("corpus/posts/cimco/fanuc_mill.js");
     let out = postc(&[&fanuc, &toolpath]);
     assert!(!text(&out.stderr).contains("RT035"), "{}", text(&out.stderr));
+}
+
+/// A CL file's move that tilts the tool (boss.apt's second setup machines
+/// from the side: `GOTO/120.,24.9625,-30.35,1.,0,0`, the tool along +X)
+/// is refused at its record by a post that writes X, Y and Z: posted, the
+/// upright tool went sideways into the part at Z-30.35.
+#[test]
+fn a_move_that_tilts_the_tool_is_refused_by_a_three_axis_post() {
+    let dir = tempfile::tempdir().unwrap();
+    let cl = dir.path().join("tilted.apt");
+    std::fs::write(
+        &cl,
+        "PARTNO/TILT\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,1000,CLW\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/0,0,0,0,0,1\nGOTO/10,0,0,0.5,0,0.8660254\nFINI\n",
+    )
+    .unwrap();
+    let out_file = dir.path().join("tilted.nc");
+    for post in [None, Some(root().join("corpus/posts/cimco/fanuc_mill.js"))] {
+        let out = match &post {
+            Some(p) => postc(&[p, &cl, Path::new("-o"), &out_file]),
+            None => postc(&[&cl, Path::new("-o"), &out_file]),
+        };
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{post:?}: {stderr}");
+        assert!(stderr.contains("error[RT040]") && stderr.contains("30.0 degrees"), "{stderr}");
+        assert!(stderr.contains("tilted.apt:8:1"), "the error names the CL record: {stderr}");
+        assert!(!out_file.exists());
+    }
+    // Upright to within a CL file's rounding is upright.
+    std::fs::write(&cl, "PARTNO/UP\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,1000,CLW\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/0,0,0,0.0000001,0,0.9999999999\nFINI\n").unwrap();
+    let out = postc(&[&cl, Path::new("-o"), &out_file]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
 }
 
 /// A spindle stop the post has no section for, followed by moves (a CL

@@ -1497,6 +1497,13 @@ declare_codes! {
     RT039: Error, "the post sets one of its own globals, functions or output variables through the global object (`this.name = ...` outside a method), which postc does not run",
         example = "var counter = 1;\nfunction bump() { this.counter = 2; }",
         fix = "Assign the global by its name: `counter = 2`.";
+    /// A move of the toolpath tilts the tool (a CL file's `GOTO/x,y,z,i,j,k` with a tool axis
+    /// that is not +Z, from a multi-axis operation), and the post is driven by the kind of each
+    /// move (Vectric, CIMCO, Fusion): it writes X, Y and Z, so the machine would hold the tool
+    /// upright at the point the tilted tool's tip should reach, and cut another shape.
+    RT040: Error, "a move tilts the tool away from Z, and the post writes X, Y and Z only",
+        example = "GOTO/10,0,0,0.5,0,0.8660254",
+        fix = "Post the toolpath with a post for a machine with rotary axes, or program the operation for three axes in the CAM system.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), a post driven by APT words, or (VcPost) a post
     /// of another dialect driven by the kind of each move, which postc prints as a VcPost

@@ -128,6 +128,7 @@ impl SectionDispatch {
     /// Handles one event.
     pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
         check_finite(eng, event)?;
+        check_upright(eng, event)?;
         if self.unwritten_stop.is_some() {
             match event {
                 Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::DrillCycle(_) | Event::Dwell(_) => {
@@ -539,6 +540,37 @@ const MAX_CHORDS: u32 = 10_000;
 
 /// Refuses events whose numbers are not finite: a NaN or infinite
 /// coordinate would otherwise print as 0.
+/// How far a move's tool axis may lean from +Z and still be upright: the
+/// noise of a CL file's unit vector (1e-6 of k is 0.08 degrees).
+const UPRIGHT: f64 = 1e-6;
+
+/// Refuses a move whose tool axis leans away from +Z (a CL file's
+/// `GOTO/x,y,z,i,j,k` of a multi-axis operation): a post driven by the
+/// kind of each move writes X, Y and Z only, so the machine would hold
+/// the tool upright at the tilted tool's tip point and cut another shape.
+fn check_upright(eng: &Engine, event: &Event) -> Result<()> {
+    let axis = match event {
+        Event::Rapid(m) => m.tool_axis,
+        Event::Feed(m) => m.tool_axis,
+        _ => None,
+    };
+    let Some([i, j, k]) = axis else { return Ok(()) };
+    if 1.0 - k <= UPRIGHT {
+        return Ok(());
+    }
+    let degrees = k.clamp(-1.0, 1.0).acos().to_degrees();
+    Err(Box::new(
+        Diagnostic::error(
+            "RT040",
+            format!(
+                "this move tilts the tool {degrees:.1} degrees from Z (tool axis {i:.4}, {j:.4}, {k:.4}), and the post is handed X, Y and Z only: the machine would hold the tool upright and cut another shape"
+            ),
+        )
+        .at(eng.event_span, "a multi-axis move")
+        .help("post a multi-axis toolpath with a post driven by APT words, which is handed the tool axis as I J K, or have the CAM system write this operation for three axes"),
+    ))
+}
+
 fn check_finite(eng: &Engine, event: &Event) -> Result<()> {
     let numbers: &[f64] = match event {
         Event::Rapid(m) => &[m.x, m.y, m.z],
