@@ -180,6 +180,40 @@ fn a_move_that_tilts_the_tool_is_refused_by_a_three_axis_post() {
     assert!(out.status.success(), "{}", text(&out.stderr));
 }
 
+/// A move that turns a rotary axis (`"a": 90` of a native move) through a
+/// post that writes no A axis is refused at its line: posted, the part
+/// stayed where it was and the rest of the move was cut as if it had
+/// turned. A post that prints `[A]` takes it.
+#[test]
+fn a_move_that_turns_an_axis_the_post_does_not_write_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("turns.jsonl");
+    std::fs::write(
+        &job,
+        concat!(
+            "{\"Tool\":{\"number\":1,\"spindle_speed\":10000.0,\"cut_feed\":1000.0,\"plunge_feed\":300.0}}\n",
+            "{\"Rapid\":{\"x\":0.0,\"y\":0.0,\"z\":5.0}}\n",
+            "{\"Feed\":{\"x\":0.0,\"y\":0.0,\"z\":-1.0}}\n",
+            "{\"Feed\":{\"x\":10.0,\"y\":0.0,\"z\":-1.0,\"a\":0.0}}\n",
+            "{\"Feed\":{\"x\":20.0,\"y\":0.0,\"z\":-1.0,\"a\":90.0}}\n",
+            "{\"End\":null}\n"
+        ),
+    )
+    .unwrap();
+    let out_file = dir.path().join("turns.nc");
+    for post in [root().join("corpus/posts/vectric/gcode_mm.pp"), root().join("corpus/posts/cimco/fanuc_mill.js")] {
+        let out = postc(&[&post, &job, Path::new("-o"), &out_file]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{}: {stderr}", post.display());
+        assert!(stderr.contains("error[RT041]") && stderr.contains("A axis to 90 degrees"), "{stderr}");
+        assert!(stderr.contains("turns.jsonl:5:1"), "the error names the toolpath line: {stderr}");
+        assert!(!out_file.exists());
+    }
+    let writes_a = root().join("corpus/posts/vectric/text_output_mm.pp");
+    let out = postc(&[&writes_a, &job, Path::new("-o"), &out_file, Path::new("--no-verify")]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+}
+
 /// A spindle stop the post has no section for, followed by moves (a CL
 /// file's `SPINDL/OFF` before it moves on), is a warning at the record:
 /// the spindle runs on. One before a tool change, a restart or the end is

@@ -1504,6 +1504,12 @@ declare_codes! {
     RT040: Error, "a move tilts the tool away from Z, and the post writes X, Y and Z only",
         example = "GOTO/10,0,0,0.5,0,0.8660254",
         fix = "Post the toolpath with a post for a machine with rotary axes, or program the operation for three axes in the CAM system.";
+    /// A move of the toolpath turns a rotary axis (`"a": 90` on a native move, an A, B or C
+    /// position away from 0) and the post reads no such axis: the program would leave the part
+    /// where it was and cut the rest of the move as if it had turned.
+    RT041: Error, "a move turns a rotary axis the post does not write",
+        example = "{\"Feed\":{\"x\":10.0,\"y\":0.0,\"z\":-1.0,\"a\":90.0}}",
+        fix = "Post the toolpath with a post that writes the axis (a 4th-axis post), or program the operation without it.";
     /// The target dialect has no place for one of the post's handlers: an event it has no section
     /// for (coolant, drilling cycles, comments, ...), a post driven by APT words, or (VcPost) a post
     /// of another dialect driven by the kind of each move, which postc prints as a VcPost

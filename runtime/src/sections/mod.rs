@@ -76,6 +76,9 @@ pub struct SectionDispatch {
     family: Family,
     last_feed: Option<f64>,
     spindle_on: bool,
+    /// Which rotary axes (A, B, C) the post reads: a move that turns one
+    /// it does not read is refused ([`check_rotary`]).
+    rotary_read: [bool; 3],
     /// A spindle stop the post had no section to write, at its event:
     /// warned of when a move follows it before a tool change, a restart
     /// or the end (which stop or start the spindle themselves).
@@ -109,6 +112,7 @@ impl SectionDispatch {
             last_feed: None,
             spindle_on: false,
             unwritten_stop: None,
+            rotary_read: rotary_read(&eng.post),
             split_pending: false,
             held: Vec::new(),
             held_bytes: 0,
@@ -129,6 +133,7 @@ impl SectionDispatch {
     pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
         check_finite(eng, event)?;
         check_upright(eng, event)?;
+        check_rotary(eng, event, self.rotary_read)?;
         if self.unwritten_stop.is_some() {
             match event {
                 Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::DrillCycle(_) | Event::Dwell(_) => {
@@ -569,6 +574,61 @@ fn check_upright(eng: &Engine, event: &Event) -> Result<()> {
         .at(eng.event_span, "a multi-axis move")
         .help("post a multi-axis toolpath with a post driven by APT words, which is handed the tool axis as I J K, or have the CAM system write this operation for three axes"),
     ))
+}
+
+/// Which of the rotary axes A, B and C a post reads anywhere: a variable
+/// of the quantity, or the quantity in its code.
+fn rotary_read(post: &postc_ir::Post) -> [bool; 3] {
+    const ROTARY: [Quantity; 3] = [Quantity::A, Quantity::B, Quantity::C];
+    struct Reads([bool; 3]);
+    impl postc_ir::visit::Visit for Reads {
+        fn visit_expr(&mut self, expr: &postc_ir::Expr) {
+            if let postc_ir::Expr::Quantity(q) = expr
+                && let Some(i) = ROTARY.iter().position(|r| r == q)
+            {
+                self.0[i] = true;
+            }
+            postc_ir::visit::walk_expr(self, expr);
+        }
+    }
+    let mut reads = Reads([false; 3]);
+    postc_ir::visit::walk_post(&mut reads, post);
+    for v in &post.variables {
+        if let postc_ir::ValueSource::Quantity(q) = v.source
+            && let Some(i) = ROTARY.iter().position(|r| *r == q)
+        {
+            reads.0[i] = true;
+        }
+    }
+    reads.0
+}
+
+/// Refuses a move that turns a rotary axis (A, B or C away from 0) the
+/// post never reads: the program would cut with the part where it was.
+fn check_rotary(eng: &Engine, event: &Event, read: [bool; 3]) -> Result<()> {
+    let turns = match event {
+        Event::Rapid(m) => [m.a, m.b, m.c],
+        Event::Feed(m) => [m.a, m.b, m.c],
+        _ => return Ok(()),
+    };
+    for (i, (value, read)) in turns.into_iter().zip(read).enumerate() {
+        let Some(degrees) = value.filter(|v| v.abs() > 1e-9) else { continue };
+        if read {
+            continue;
+        }
+        let axis = ['A', 'B', 'C'][i];
+        return Err(Box::new(
+            Diagnostic::error(
+                "RT041",
+                format!(
+                    "this move turns the {axis} axis to {degrees} degrees, and the post writes no {axis} axis: the program would cut with the part where it was"
+                ),
+            )
+            .at(eng.event_span, "a move of a rotary axis")
+            .help(format!("post the toolpath with a post that writes the {axis} axis, or have the CAM system write it for three axes")),
+        ));
+    }
+    Ok(())
 }
 
 fn check_finite(eng: &Engine, event: &Event) -> Result<()> {
