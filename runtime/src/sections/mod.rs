@@ -112,7 +112,7 @@ impl SectionDispatch {
             last_feed: None,
             spindle_on: false,
             unwritten_stop: None,
-            rotary_read: rotary_read(&eng.post),
+            rotary_read: rotary_read(eng.post),
             split_pending: false,
             held: Vec::new(),
             held_bytes: 0,
