@@ -214,6 +214,26 @@ fn a_move_that_turns_an_axis_the_post_does_not_write_is_refused() {
     assert!(out.status.success(), "{}", text(&out.stderr));
 }
 
+/// A CL file that starts the spindle at 0 rpm (`SPINDL/RPM,0,CLW`) posts
+/// `S0 M3` and cuts with a spindle that turns nothing: verify refuses it
+/// (it passed, since M3 was read as the spindle running).
+#[test]
+fn a_cut_with_the_spindle_at_zero_rpm_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let cl = dir.path().join("s0.apt");
+    std::fs::write(
+        &cl,
+        "PARTNO/S0\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,0,CLW\nFEDRAT/300\nGOTO/0,0,10\nGOTO/0,0,0\nGOTO/10,0,0\nFINI\n",
+    )
+    .unwrap();
+    let out_file = dir.path().join("s0.nc");
+    let out = postc(&[&cl, Path::new("-o"), &out_file]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[VF035]") && stderr.contains("0 rpm"), "{stderr}");
+    assert!(!out_file.exists());
+}
+
 /// A spindle stop the post has no section for, followed by moves (a CL
 /// file's `SPINDL/OFF` before it moves on), is a warning at the record:
 /// the spindle runs on. One before a tool change, a restart or the end is

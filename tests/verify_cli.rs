@@ -301,7 +301,15 @@ fn a_post_that_writes_nothing_for_its_moves_stops_verification() {
 
 /// Every post of the project's corpus posts every toolpath its goldens
 /// are made from with `postc post` as a user runs it, verification on:
-/// none is refused.
+/// none is refused but the programs [`REFUSED`] lists with their reason.
+/// Programs verify refuses, each for a fault of the program: the guide's
+/// 25-line "G-Code Arcs (inch)" post prints the spindle speed only in its
+/// header, which a job that starts with a laser (`tools_inch.ron`) prints
+/// as `S0 M3`: the end mill of the next toolpath then cuts at 0 rpm
+/// (VF035); the post has no TOOLCHANGE section to start it at 14000.
+const REFUSED: &[(&str, &str, &str)] =
+    &[("corpus/posts/vectric/gcode_arcs_inch.pp", "corpus/toolpaths/tools_inch.ron", "error[VF035]")];
+
 #[test]
 fn every_corpus_post_still_posts_its_toolpaths_with_verification() {
     let dir = tempfile::tempdir().unwrap();
@@ -342,7 +350,8 @@ fn every_corpus_post_still_posts_its_toolpaths_with_verification() {
             }
             // The program is written: as `out.nc`, or as its tape-split parts.
             let written = std::fs::read_dir(&run).unwrap().count();
-            if !o.status.success() || written == 0 {
+            let refused = REFUSED.iter().any(|(p, t, code)| p == post && t == toolpath && text(&o).contains(code));
+            if (!o.status.success() || written == 0) && !refused {
                 failures.push(format!("{post} over {toolpath}:\n{}", text(&o)));
             }
             warned += usize::from(text(&o).contains("warning[VF"));

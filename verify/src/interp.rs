@@ -2213,6 +2213,19 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             };
             self.motion_finding(severity, codes::VF035.code, message, p, Some(e), Some(help.into()));
         }
+        // M3 or M4 with S0 turns nothing (a jet's S is its power, and 0 may
+        // be meant; under G96 S is a surface speed).
+        if e.powered && !e.jet && self.spindle && !self.css && self.speed == 0.0 && !self.spindle_reported {
+            self.spindle_reported = true;
+            self.motion_finding(
+                Severity::Error,
+                codes::VF035.code,
+                "a cut with the spindle at 0 rpm: the last S is S0, so M3/M4 turn nothing".to_string(),
+                p,
+                Some(e),
+                Some("the spindle must run at a speed before the first cut; a toolpath that asks for 0 rpm (SPINDL/RPM,0) cannot be cut".into()),
+            );
+        }
         // Constant surface speed: the S of G96 is metres (G21) or feet
         // (G20) a minute.
         if self.css && e.surface.is_finite() && self.speed.is_finite() {
