@@ -14,7 +14,6 @@ mod events;
 mod moves;
 mod verifying;
 
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use postc_ir::codes;
@@ -169,22 +168,6 @@ fn text(bytes: Vec<u8>) -> String {
     }
 }
 
-/// Writes a file whole or not at all: a temporary file beside it, renamed
-/// over it (created as `open` creates files, so with the user's umask).
-fn write_whole(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temp = dir.join(format!(".{name}.postc-{}.tmp", std::process::id()));
-    let written = std::fs::File::create(&temp).and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()));
-    match written.and_then(|()| std::fs::rename(&temp, path)) {
-        Ok(()) => Ok(()),
-        Err(e) => {
-            let _ = std::fs::remove_file(&temp);
-            Err(e)
-        }
-    }
-}
-
 /// Whether two paths name the same file (links followed).
 fn same_file(a: &Path, b: &Path) -> bool {
     matches!((std::fs::canonicalize(a), std::fs::canonicalize(b)), (Ok(a), Ok(b)) if a == b)
@@ -304,7 +287,7 @@ fn post(
             let tape = compiled.options.tape_splitting.as_ref();
             let names = postc_runtime::output::part_names(&out, parts.len(), tape);
             for (name, bytes) in names.iter().zip(&parts) {
-                write_whole(name, bytes).map_err(|e| {
+                postc_driver::settings::write_whole(name, bytes).map_err(|e| {
                     let d = Found::error(codes::IO003, format!("cannot write `{}`: {e}", name.display()));
                     diagnostics::error(
                         py,

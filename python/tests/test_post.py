@@ -98,6 +98,28 @@ def test_out_writes_the_program_whole_as_the_command_writes_it(cli, tmp_path):
     assert [p.name for p in (tmp_path / "py").iterdir()] == ["pocket.ngc"]
 
 
+def test_out_through_a_link_writes_where_it_points_and_a_pipe_stays_a_pipe(tmp_path):
+    # A link to a machine's program folder gets the program and stays a
+    # link; a named pipe a sender reads gets the program and stays a pipe.
+    import os, stat, threading
+    (tmp_path / "machine").mkdir()
+    (tmp_path / "machine" / "O1001.ngc").write_text("old\n")
+    link = tmp_path / "O1001.ngc"
+    link.symlink_to(tmp_path / "machine" / "O1001.ngc")
+    assert postc.post(POST, pocket(), out=link) is None
+    assert link.is_symlink()
+    assert "G1" in (tmp_path / "machine" / "O1001.ngc").read_text()
+    fifo = tmp_path / "sender.fifo"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()), daemon=True)
+    reader.start()
+    assert postc.post(POST, pocket(), out=fifo) is None
+    reader.join(20)
+    assert stat.S_ISFIFO(os.lstat(fifo).st_mode)
+    assert got and b"G1" in got[0]
+
+
 def test_out_may_not_be_an_input(tmp_path):
     toolpath = write_jsonl(tmp_path / "t.jsonl", pocket())
     before = toolpath.read_bytes()

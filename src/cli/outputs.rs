@@ -12,7 +12,7 @@
 //!   file gets under the user's umask (read from the temporary file
 //!   itself, which is created with `0o666` and so gets `0o666 & !umask`);
 //! - an output named by a symbolic link is written to the file the link
-//!   names, and the link stays ([`Target`]);
+//!   names, and the link stays ([`OutputTarget`]);
 //! - an output that is not a file but a device or a pipe (`/dev/null`, a
 //!   FIFO a controller's sender reads) is never replaced: the program is
 //!   kept in a temporary file of the system's temporary folder and copied
@@ -29,6 +29,7 @@ use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use std::sync::{Mutex, MutexGuard};
 
+use postc_driver::settings::OutputTarget;
 use postc_ir::{Diagnostic, SourceMap, codes};
 
 /// Temporary files that exist now, removed if a signal ends the process.
@@ -127,49 +128,14 @@ pub struct Temp {
     new_mode: Option<Permissions>,
 }
 
-/// Where an output goes: the path it names, after symbolic links.
-#[derive(Debug, PartialEq, Eq)]
-pub enum Target {
-    /// A file (or no file yet): replaced by renaming a temporary file
-    /// beside it onto it.
-    File(PathBuf),
-    /// A device, a pipe or a socket: written into, never replaced.
-    Stream(PathBuf),
-}
-
-impl Target {
-    /// The output `path` names: the file its symbolic links lead to (a
-    /// link to a file not there yet leads to the new file's place).
-    pub fn of(path: &Path) -> Target {
-        let mut at = path.to_path_buf();
-        // As many links as the system follows in one path (Linux: 40).
-        for _ in 0..40 {
-            match std::fs::symlink_metadata(&at) {
-                Ok(m) if m.file_type().is_symlink() => match std::fs::read_link(&at) {
-                    Ok(next) => {
-                        at = match at.parent() {
-                            Some(dir) if next.is_relative() => dir.join(next),
-                            _ => next,
-                        };
-                    }
-                    Err(_) => break,
-                },
-                Ok(m) if !m.is_file() && !m.is_dir() => return Target::Stream(at),
-                _ => break,
-            }
-        }
-        Target::File(at)
-    }
-}
-
 impl Temp {
     /// A temporary file to become `target`: in the folder of the file it
     /// replaces, or in the system's temporary folder for a device or a
-    /// pipe ([`Target`]).
+    /// pipe ([`OutputTarget`]).
     pub fn beside(target: &Path) -> io::Result<Temp> {
-        let target = match Target::of(target) {
-            Target::File(path) => path,
-            Target::Stream(_) => return Temp::scratch(),
+        let target = match OutputTarget::of(target) {
+            OutputTarget::File(path) => path,
+            OutputTarget::Stream(_) => return Temp::scratch(),
         };
         let dir = match target.parent() {
             Some(p) if !p.as_os_str().is_empty() => p,
@@ -218,9 +184,9 @@ impl Temp {
     /// into a device or a pipe; the caller holds the pending list.
     fn persist(mut self, target: &Path, list: &mut Vec<PathBuf>) -> io::Result<()> {
         let Some(file) = self.file.take() else { return Err(io::Error::other("the temporary file is gone")) };
-        let target = match Target::of(target) {
-            Target::File(path) => path,
-            Target::Stream(path) => {
+        let target = match OutputTarget::of(target) {
+            OutputTarget::File(path) => path,
+            OutputTarget::Stream(path) => {
                 let path_of_temp = file.path().to_path_buf();
                 let copied = file.reopen().and_then(|mut from| {
                     let mut to = std::fs::OpenOptions::new().write(true).open(&path)?;
