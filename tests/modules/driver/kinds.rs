@@ -36,3 +36,13 @@ fn each_post_extension_names_one_dialect() {
     assert_eq!(of("a.apt"), None);
     assert_eq!(of("cps"), None);
 }
+
+/// A folder given as the toolpath is said to be one.
+#[test]
+fn a_folder_is_no_toolpath() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut sources = postc_report::source_map();
+    let Err(d) = postc_driver::open_toolpath(dir.path(), &mut sources) else { panic!("a folder opened as a toolpath") };
+    assert_eq!(d.code, "IO001");
+    assert!(d.message.contains("is a folder"), "{}", d.message);
+}
