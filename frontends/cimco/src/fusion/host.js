@@ -1627,6 +1627,14 @@ function __Math_random() {
   __randomState = (__randomState * 16807) % 2147483647;
   return __randomState / 2147483647;
 }
+// `String.concat(s, ...)`: SpiderMonkey's generic of
+// `String.prototype.concat` (its "String generics"), which Fusion's engine
+// runs (docs/fusion.md, choice 40).
+function __String_concat(s) {
+  var text = String(s);
+  for (var i = 1; i < arguments.length; ++i) { text += String(arguments[i]); }
+  return text;
+}
 // `Array.isArray` as a value (`var isArray = Array.isArray || ...`); a call
 // `Array.isArray(v)` is JavaScript's own.
 function __Array_isArray(v) { return Object.prototype.toString.call(v) == "[object Array]"; }
