@@ -149,6 +149,22 @@ fn events_the_post_cannot_write_are_warnings_at_the_toolpath_line() {
     assert!(!text(&out.stderr).contains("RT035"), "{}", text(&out.stderr));
 }
 
+/// Posts `toolpath` (through `post`, or the embedded default post) to
+/// `out` and asserts that it is refused: exit 1, the `error[CODE]` with
+/// `what` in its message, naming `at` (FILE:LINE:COLUMN of the toolpath
+/// record or of the program line), and no file written.
+fn assert_refused(post: Option<&Path>, toolpath: &Path, out: &Path, code: &str, what: &str, at: &str) {
+    let o = match post {
+        Some(p) => postc(&[p, toolpath, Path::new("-o"), out]),
+        None => postc(&[toolpath, Path::new("-o"), out]),
+    };
+    let stderr = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{post:?}: {stderr}");
+    assert!(stderr.contains(&format!("error[{code}]")) && stderr.contains(what), "{stderr}");
+    assert!(stderr.contains(at), "the error names {at}: {stderr}");
+    assert!(!out.exists());
+}
+
 /// A CL file's move that tilts the tool (boss.apt's second setup machines
 /// from the side: `GOTO/120.,24.9625,-30.35,1.,0,0`, the tool along +X)
 /// is refused at its record by a post that writes X, Y and Z: posted, the
@@ -164,15 +180,7 @@ fn a_move_that_tilts_the_tool_is_refused_by_a_three_axis_post() {
     .unwrap();
     let out_file = dir.path().join("tilted.nc");
     for post in [None, Some(root().join("corpus/posts/cimco/fanuc_mill.js"))] {
-        let out = match &post {
-            Some(p) => postc(&[p, &cl, Path::new("-o"), &out_file]),
-            None => postc(&[&cl, Path::new("-o"), &out_file]),
-        };
-        let stderr = text(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{post:?}: {stderr}");
-        assert!(stderr.contains("error[RT040]") && stderr.contains("30.0 degrees"), "{stderr}");
-        assert!(stderr.contains("tilted.apt:8:1"), "the error names the CL record: {stderr}");
-        assert!(!out_file.exists());
+        assert_refused(post.as_deref(), &cl, &out_file, "RT040", "30.0 degrees", "tilted.apt:8:1");
     }
     // Upright to within a CL file's rounding is upright.
     std::fs::write(&cl, "PARTNO/UP\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,1000,CLW\nFEDRAT/500\nGOTO/0,0,10,0,0,1\nGOTO/0,0,0,0.0000001,0,0.9999999999\nFINI\n").unwrap();
@@ -202,12 +210,7 @@ fn a_move_that_turns_an_axis_the_post_does_not_write_is_refused() {
     .unwrap();
     let out_file = dir.path().join("turns.nc");
     for post in [root().join("corpus/posts/vectric/gcode_mm.pp"), root().join("corpus/posts/cimco/fanuc_mill.js")] {
-        let out = postc(&[&post, &job, Path::new("-o"), &out_file]);
-        let stderr = text(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{}: {stderr}", post.display());
-        assert!(stderr.contains("error[RT041]") && stderr.contains("A axis to 90 degrees"), "{stderr}");
-        assert!(stderr.contains("turns.jsonl:5:1"), "the error names the toolpath line: {stderr}");
-        assert!(!out_file.exists());
+        assert_refused(Some(&post), &job, &out_file, "RT041", "A axis to 90 degrees", "turns.jsonl:5:1");
     }
     let writes_a = root().join("corpus/posts/vectric/text_output_mm.pp");
     let out = postc(&[&writes_a, &job, Path::new("-o"), &out_file, Path::new("--no-verify")]);
@@ -226,12 +229,7 @@ fn a_cut_with_the_spindle_at_zero_rpm_is_refused() {
         "PARTNO/S0\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,0,CLW\nFEDRAT/300\nGOTO/0,0,10\nGOTO/0,0,0\nGOTO/10,0,0\nFINI\n",
     )
     .unwrap();
-    let out_file = dir.path().join("s0.nc");
-    let out = postc(&[&cl, Path::new("-o"), &out_file]);
-    let stderr = text(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(stderr.contains("error[VF035]") && stderr.contains("0 rpm"), "{stderr}");
-    assert!(!out_file.exists());
+    assert_refused(None, &cl, &dir.path().join("s0.nc"), "VF035", "0 rpm", "s0.nc:8:1");
 }
 
 /// A spindle stop the post has no section for, followed by moves (a CL
