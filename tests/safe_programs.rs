@@ -232,6 +232,21 @@ fn a_cut_with_the_spindle_at_zero_rpm_is_refused() {
     assert_refused(None, &cl, &dir.path().join("s0.nc"), "VF035", "0 rpm", "s0.nc:8:1");
 }
 
+/// A CL file that changes its units after it moved (`UNITS/INCHES` then
+/// `GOTO/1,0,0`) is refused: the change was ignored with a warning, and
+/// the inch after it posted as a millimetre.
+#[test]
+fn a_cl_file_that_changes_units_after_it_moved_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let cl = dir.path().join("units.apt");
+    std::fs::write(
+        &cl,
+        "PARTNO/UNITS\nUNITS/MM\nLOADTL/1\nSPINDL/RPM,1000,CLW\nFEDRAT/500\nGOTO/0,0,10\nGOTO/0,0,0\nUNITS/INCHES\nGOTO/1,0,0\nFINI\n",
+    )
+    .unwrap();
+    assert_refused(None, &cl, &dir.path().join("units.nc"), "CL014", "UNITS after the first move", "units.apt:8:1");
+}
+
 /// A spindle stop the post has no section for, followed by moves (a CL
 /// file's `SPINDL/OFF` before it moves on), is a warning at the record:
 /// the spindle runs on. One before a tool change, a restart or the end is

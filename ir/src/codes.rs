@@ -1175,10 +1175,12 @@ declare_codes! {
     CL013: Warning, "drilling cycle not ended by CYCLE/OFF",
         example = "CYCLE/DRILL,5,IPM,100\nGOTO/0,0,0\nFINI",
         fix = "Add CYCLE/OFF after the cycle's holes.";
-    /// The units of a toolpath cannot change once it moves; a UNITS record after the first move
-    /// that would change them is ignored.
-    CL014: Warning, "UNITS after the first move; ignored",
-        fix = "Put UNITS before the first move.";
+    /// The units of a toolpath cannot change once it moves: a UNITS record after the first move
+    /// that would change them means the lengths after it are in other units than the moves
+    /// before, which postc does not mix, so the toolpath is refused (ignoring the record posted
+    /// inches as millimetres).
+    CL014: Error, "UNITS after the first move changes the units of the lengths after it",
+        fix = "Write the whole file in one unit, with UNITS before the first move.";
     /// END-OF-PATH closes a TOOL PATH record; one without a TOOL PATH before it is ignored.
     CL015: Warning, "END-OF-PATH without TOOL PATH",
         fix = "None needed; check the CAM system's output if paths are missing.";

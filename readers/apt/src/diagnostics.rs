@@ -120,8 +120,12 @@ pub(crate) fn open_cycle(span: Span, closed_by: Option<Span>) -> Diagnostic {
 }
 
 pub(crate) fn late_units(span: Span) -> Diagnostic {
-    Diagnostic::warning(LATE_UNITS, "UNITS after the first move is ignored: the units of a toolpath cannot change")
-        .at(span, "ignored")
+    Diagnostic::error(
+        LATE_UNITS,
+        "UNITS after the first move changes the units of the lengths after it, and postc reads a toolpath in one unit",
+    )
+    .at(span, "the units change here")
+    .help("write the whole file in one unit, with UNITS before the first move")
 }
 
 pub(crate) fn stray_end_of_path(span: Span) -> Diagnostic {
