@@ -3,8 +3,9 @@
 //! toolpath it applies to, and verify finds nothing out of tolerance in what
 //! it wrote. The exceptions are listed in [`EXCEPTIONS`], each a documented,
 //! deliberate property of its post (`docs/verify.md`, "Corpus exceptions");
-//! the project's own posts have none: no error finding at all, so `postc
-//! post`, which verifies by default, writes every program they post.
+//! the project's own posts have none but [`OWN_EXCEPTIONS`] (the guide's
+//! own listing over a job it cannot post), so `postc post`, which
+//! verifies by default, writes every other program they post.
 //!
 //! Programs are posted in memory and verified from memory; tape-split
 //! programs are verified with their parts joined.
@@ -27,6 +28,12 @@ fn root() -> PathBuf {
 /// finding code; why): findings that are deliberate properties of the post.
 /// `docs/verify.md` ("Corpus exceptions") gives the evidence for each.
 const EXCEPTIONS: &[(&str, &str, &str, &str)] = &[
+    (
+        "*",
+        "tools_inch.ron",
+        "VF035",
+        "the post prints the spindle speed only once, at the start, and the job's first tool is a laser: `S0 M3`, then the end mill cuts at 0 rpm with no tool change printed",
+    ),
     ("Grbl_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Grbl_mm_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
     ("Shapeoko_inch_TC.pp", "*", "VF004", "the dwell prints `G04 1.50` with no P word"),
@@ -122,6 +129,13 @@ const EXCEPTIONS: &[(&str, &str, &str, &str)] = &[
         "prints absolute arc centres (IA/JA) as I J without G90.1",
     ),
 ];
+
+/// The one finding a project post has: the guide's 25-line "G-Code Arcs
+/// (inch)" listing prints the spindle speed only in its header, so over
+/// `tools_inch.ron` (a laser first) the end mill cuts at `S0`; the post
+/// is the guide's and stays as the guide prints it (`verify_cli`'s
+/// `REFUSED`).
+const OWN_EXCEPTIONS: &[(&str, &str, &str)] = &[("gcode_arcs_inch.pp", "tools_inch.ron", "VF035")];
 
 fn is_excepted(post: &str, toolpath: &str, code: &str) -> bool {
     EXCEPTIONS.iter().any(|(p, t, c, _)| {
@@ -241,8 +255,13 @@ fn every_gcode_post_of_the_corpus_verifies_over_every_corpus_toolpath() {
                 break;
             }
             pairs += 1;
-            let (allowed, other): (Vec<_>, Vec<_>) =
-                errors.into_iter().partition(|(code, _, _)| !own && is_excepted(&name, &tp, code));
+            let (allowed, other): (Vec<_>, Vec<_>) = errors.into_iter().partition(|(code, _, _)| {
+                if own {
+                    OWN_EXCEPTIONS.contains(&(name.as_str(), tp.as_str(), *code))
+                } else {
+                    is_excepted(&name, &tp, code)
+                }
+            });
             if !allowed.is_empty() {
                 excepted += 1;
             }

@@ -400,7 +400,7 @@ pub fn open_toolpath(path: &Path, sources: &mut SourceMap) -> Result<Box<dyn Eve
     let events = match toolpath_format(path, &read_head(sources.loader(), path)) {
         Some(ToolpathFormat::Native) => ReadAhead::start(native::open(path, sources)?),
         Some(ToolpathFormat::Apt) => ReadAhead::start(postc_reader_apt::open(path, sources)?),
-        None if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) => {
+        None if !sources.loader().is_file(path) && sources.loader().read_dir(path).is_ok() => {
             return Err(Diagnostic::error(
                 codes::IO001,
                 format!("toolpath `{}` is a folder, not a file", path.display()),

@@ -1666,7 +1666,7 @@ declare_codes! {
     /// no SPINDLE_ON section and no M3 or M4 in any line (a post for a spindle switched on by
     /// hand); or an APT-word post (VcPost) over a toolpath that gives the tool a speed but never
     /// switches the spindle on (such a post starts it only from SPINDL records). A spindle
-    /// switched on at S0 (the last S before the cut is 0, outside G96 and jets) is off.
+    /// switched on by `S0 M3` and given no speed since (outside G96 and jets) is off.
     VF035: Error | Warning, "a cut with the spindle (or jet) off (a warning when the post cannot switch it on: a jet through a post with no jet section, a spindle through a post that never prints M3/M4, an APT-word post never told to start it)",
         fix = "Start the spindle in the header or tool change (M3/M4 with S); post jet toolpaths with a post that has a JET_TOOL_ON section; give an APT-word post's toolpath a spindle-on event.";
     /// A cut at constant surface speed (G96) whose S differs from the toolpath's surface speed

@@ -287,7 +287,7 @@ fn post(
             let tape = compiled.options.tape_splitting.as_ref();
             let names = postc_runtime::output::part_names(&out, parts.len(), tape);
             for (name, bytes) in names.iter().zip(&parts) {
-                postc_driver::settings::write_whole(name, bytes).map_err(|e| {
+                postc_report::output::write_whole(name, bytes).map_err(|e| {
                     let d = Found::error(codes::IO003, format!("cannot write `{}`: {e}", name.display()));
                     diagnostics::error(
                         py,

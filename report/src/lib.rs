@@ -10,7 +10,9 @@
 //!   source snippets where the text is at hand) and as JSON
 //!   ([`JsonDiagnostic`], `check --format json`);
 //! - [`now`]: the clock, as every edge that posts reads it (the command
-//!   line, the Python package).
+//!   line, the Python package);
+//! - [`output`]: where an output goes (links followed, devices and pipes
+//!   written into), for the same edges.
 //!
 //! gleam's split is the model: one project-wide diagnostic type in the
 //! compiler core, rendered only by the CLI.
@@ -18,6 +20,7 @@
 mod clock;
 pub mod display;
 mod fs;
+pub mod output;
 mod render;
 
 pub use clock::now;

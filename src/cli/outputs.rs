@@ -29,8 +29,8 @@ use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use std::sync::{Mutex, MutexGuard};
 
-use postc_driver::settings::OutputTarget;
 use postc_ir::{Diagnostic, SourceMap, codes};
+use postc_report::output::OutputTarget;
 
 /// Temporary files that exist now, removed if a signal ends the process.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());

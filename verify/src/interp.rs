@@ -225,6 +225,9 @@ struct Run<'a, O: Observer + ?Sized> {
     progress: f64,
     no_feed_reported: bool,
     spindle_reported: bool,
+    /// The spindle was switched on by `M3` with `S0` in the same block
+    /// (`S0 M3`), and no S since gave it a speed.
+    started_at_zero: bool,
     feed_reported: (f64, f64),
     /// The last surface speed difference reported (VF036), as `feed_reported`.
     surface_reported: (f64, f64),
@@ -343,6 +346,7 @@ pub fn replay<O: Observer + ?Sized>(
         progress: 0.0,
         no_feed_reported: false,
         spindle_reported: false,
+        started_at_zero: false,
         feed_reported: (f64::NAN, f64::NAN),
         surface_reported: (f64::NAN, f64::NAN),
         stop_comparing: false,
@@ -1412,6 +1416,9 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             && !clamp
         {
             self.speed = s.value;
+            // `S0 M3`: switched on at no speed (M4 S0 is a laser's dynamic
+            // power, M84 S0 or M300 S440 are no speed at all).
+            self.started_at_zero = s.value == 0.0 && b.m[..b.ms].iter().any(|&(code, _, _)| tenths(code) == 30);
         }
         for &(code, start, end) in &b.m[..b.ms] {
             match tenths(code) {
@@ -2213,14 +2220,14 @@ impl<O: Observer + ?Sized> Run<'_, O> {
             };
             self.motion_finding(severity, codes::VF035.code, message, p, Some(e), Some(help.into()));
         }
-        // M3 or M4 with S0 turns nothing (a jet's S is its power, and 0 may
-        // be meant; under G96 S is a surface speed).
-        if e.powered && !e.jet && self.spindle && !self.css && self.speed == 0.0 && !self.spindle_reported {
+        // `S0 M3` turns nothing (a jet's S is its power, and 0 may be
+        // meant; under G96 S is a surface speed).
+        if e.powered && !e.jet && self.spindle && !self.css && self.started_at_zero && !self.spindle_reported {
             self.spindle_reported = true;
             self.motion_finding(
                 Severity::Error,
                 codes::VF035.code,
-                "a cut with the spindle at 0 rpm: the last S is S0, so M3/M4 turn nothing".to_string(),
+                "a cut with the spindle at 0 rpm: it was switched on with `S0 M3` and given no speed since".to_string(),
                 p,
                 Some(e),
                 Some("the spindle must run at a speed before the first cut; a toolpath that asks for 0 rpm (SPINDL/RPM,0) cannot be cut".into()),
