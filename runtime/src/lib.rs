@@ -276,8 +276,6 @@ pub fn run<S: EventSource + ?Sized>(
     }
 }
 
-/// The next event a post sees: what a FEDRAT record said is for toolpath
-/// readers (postp's transform); posts see the feed on the moves.
 /// An error of the post while it handles an event, with the event's
 /// record in the toolpath when it names no place there: which record the
 /// post stopped at (a Fusion post's "Spindle speed out of range." at the
@@ -291,6 +289,8 @@ fn at_event(d: Diagnostic, span: postc_ir::diagnostic::Span) -> Diagnostic {
     }
 }
 
+/// The next event a post sees: what a FEDRAT record said is for toolpath
+/// readers (postp's transform); posts see the feed on the moves.
 fn next_posted<S: EventSource + ?Sized>(
     source: &mut S,
     diagnostics: &mut Vec<Diagnostic>,

@@ -77,7 +77,7 @@ pub struct SectionDispatch {
     last_feed: Option<f64>,
     spindle_on: bool,
     /// Which rotary axes (A, B, C) the post reads: a move that turns one
-    /// it does not read is refused ([`check_rotary`]).
+    /// it does not read is refused ([`check_axes`]).
     rotary_read: [bool; 3],
     /// A spindle stop the post had no section to write, at its event:
     /// warned of when a move follows it before a tool change, a restart
@@ -132,12 +132,11 @@ impl SectionDispatch {
     /// Handles one event.
     pub fn event(&mut self, eng: &mut Engine, event: &Event) -> Result<()> {
         check_finite(eng, event)?;
-        check_upright(eng, event)?;
-        check_rotary(eng, event, self.rotary_read)?;
-        if self.unwritten_stop.is_some() {
+        check_axes(eng, event, self.rotary_read)?;
+        if let Some(at) = self.unwritten_stop {
             match event {
                 Event::Rapid(_) | Event::Feed(_) | Event::Arc(_) | Event::DrillCycle(_) | Event::Dwell(_) => {
-                    let at = self.unwritten_stop.take();
+                    self.unwritten_stop = None;
                     unwritten_at(
                         eng,
                         at,
@@ -518,22 +517,19 @@ impl SectionDispatch {
 /// Warns, once for each kind, that an event which changes how the tool
 /// cuts reached a post with no handler (`section`) to write it.
 fn unwritten(eng: &mut Engine, what: &str, consequence: &str, section: Section) {
-    unwritten_at(eng, Some(eng.event_span), what, consequence, section);
+    unwritten_at(eng, eng.event_span, what, consequence, section);
 }
 
 /// [`unwritten`] of the event at `at`.
-fn unwritten_at(eng: &mut Engine, at: Option<postc_ir::Span>, what: &str, consequence: &str, section: Section) {
-    let mut warning = Diagnostic::warning(
-        "RT035",
-        format!("the toolpath asks for {what} here, and the post has no way to write it: {consequence}"),
-    );
-    if let Some(at) = at {
-        warning = warning.at(at, "this event (the first of its kind) is not written");
-    }
+fn unwritten_at(eng: &mut Engine, at: postc_ir::Span, what: &str, consequence: &str, section: Section) {
     eng.warn_once(
-        warning
-            .note(format!("the post has no {} handler", section.name()))
-            .help("post with a post that writes it, or set it at the machine by hand"),
+        Diagnostic::warning(
+            "RT035",
+            format!("the toolpath asks for {what} here, and the post has no way to write it: {consequence}"),
+        )
+        .at(at, "this event (the first of its kind) is not written")
+        .note(format!("the post has no {} handler", section.name()))
+        .help("post with a post that writes it, or set it at the machine by hand"),
     );
 }
 
@@ -543,37 +539,56 @@ const MAX_PECKS: u32 = 1_000;
 /// Linearized arcs are cut into at most this many chords.
 const MAX_CHORDS: u32 = 10_000;
 
-/// Refuses events whose numbers are not finite: a NaN or infinite
-/// coordinate would otherwise print as 0.
 /// How far a move's tool axis may lean from +Z and still be upright: the
 /// noise of a CL file's unit vector (1e-6 of k is 0.08 degrees).
 const UPRIGHT: f64 = 1e-6;
 
-/// Refuses a move whose tool axis leans away from +Z (a CL file's
-/// `GOTO/x,y,z,i,j,k` of a multi-axis operation): a post driven by the
-/// kind of each move writes X, Y and Z only, so the machine would hold
-/// the tool upright at the tilted tool's tip point and cut another shape.
-fn check_upright(eng: &Engine, event: &Event) -> Result<()> {
-    let axis = match event {
-        Event::Rapid(m) => m.tool_axis,
-        Event::Feed(m) => m.tool_axis,
-        _ => None,
+/// Refuses a move the post cannot write as it is: one whose tool axis
+/// leans away from +Z (a CL file's `GOTO/x,y,z,i,j,k` of a multi-axis
+/// operation; a post driven by the kind of each move writes X, Y and Z
+/// only, so the machine would hold the tool upright at the tilted tool's
+/// tip point), and one that turns a rotary axis (A, B or C away from 0)
+/// the post never reads (the program would cut with the part where it
+/// was).
+fn check_axes(eng: &Engine, event: &Event, read: [bool; 3]) -> Result<()> {
+    let (tool_axis, turns) = match event {
+        Event::Rapid(m) => (m.tool_axis, [m.a, m.b, m.c]),
+        Event::Feed(m) => (m.tool_axis, [m.a, m.b, m.c]),
+        _ => return Ok(()),
     };
-    let Some([i, j, k]) = axis else { return Ok(()) };
-    if 1.0 - k <= UPRIGHT {
-        return Ok(());
+    if let Some([i, j, k]) = tool_axis
+        && 1.0 - k > UPRIGHT
+    {
+        let degrees = k.clamp(-1.0, 1.0).acos().to_degrees();
+        return Err(Box::new(
+            Diagnostic::error(
+                "RT040",
+                format!(
+                    "this move tilts the tool {degrees:.1} degrees from Z (tool axis {i:.4}, {j:.4}, {k:.4}), and the post is handed X, Y and Z only: the machine would hold the tool upright and cut another shape"
+                ),
+            )
+            .at(eng.event_span, "a multi-axis move")
+            .help("post a multi-axis toolpath with a post driven by APT words, which is handed the tool axis as I J K, or have the CAM system write this operation for three axes"),
+        ));
     }
-    let degrees = k.clamp(-1.0, 1.0).acos().to_degrees();
-    Err(Box::new(
-        Diagnostic::error(
-            "RT040",
-            format!(
-                "this move tilts the tool {degrees:.1} degrees from Z (tool axis {i:.4}, {j:.4}, {k:.4}), and the post is handed X, Y and Z only: the machine would hold the tool upright and cut another shape"
-            ),
-        )
-        .at(eng.event_span, "a multi-axis move")
-        .help("post a multi-axis toolpath with a post driven by APT words, which is handed the tool axis as I J K, or have the CAM system write this operation for three axes"),
-    ))
+    for (i, (value, read)) in turns.into_iter().zip(read).enumerate() {
+        let Some(degrees) = value.filter(|v| v.abs() > 1e-9) else { continue };
+        if read {
+            continue;
+        }
+        let axis = ['A', 'B', 'C'][i];
+        return Err(Box::new(
+            Diagnostic::error(
+                "RT041",
+                format!(
+                    "this move turns the {axis} axis to {degrees} degrees, and the post writes no {axis} axis: the program would cut with the part where it was"
+                ),
+            )
+            .at(eng.event_span, "a move of a rotary axis")
+            .help(format!("post the toolpath with a post that writes the {axis} axis, or have the CAM system write it for three axes")),
+        ));
+    }
+    Ok(())
 }
 
 /// Which of the rotary axes A, B and C a post reads anywhere: a variable
@@ -603,34 +618,8 @@ fn rotary_read(post: &postc_ir::Post) -> [bool; 3] {
     reads.0
 }
 
-/// Refuses a move that turns a rotary axis (A, B or C away from 0) the
-/// post never reads: the program would cut with the part where it was.
-fn check_rotary(eng: &Engine, event: &Event, read: [bool; 3]) -> Result<()> {
-    let turns = match event {
-        Event::Rapid(m) => [m.a, m.b, m.c],
-        Event::Feed(m) => [m.a, m.b, m.c],
-        _ => return Ok(()),
-    };
-    for (i, (value, read)) in turns.into_iter().zip(read).enumerate() {
-        let Some(degrees) = value.filter(|v| v.abs() > 1e-9) else { continue };
-        if read {
-            continue;
-        }
-        let axis = ['A', 'B', 'C'][i];
-        return Err(Box::new(
-            Diagnostic::error(
-                "RT041",
-                format!(
-                    "this move turns the {axis} axis to {degrees} degrees, and the post writes no {axis} axis: the program would cut with the part where it was"
-                ),
-            )
-            .at(eng.event_span, "a move of a rotary axis")
-            .help(format!("post the toolpath with a post that writes the {axis} axis, or have the CAM system write it for three axes")),
-        ));
-    }
-    Ok(())
-}
-
+/// Refuses events whose numbers are not finite: a NaN or infinite
+/// coordinate would otherwise print as 0.
 fn check_finite(eng: &Engine, event: &Event) -> Result<()> {
     let numbers: &[f64] = match event {
         Event::Rapid(m) => &[m.x, m.y, m.z],
