@@ -60,10 +60,12 @@ pub const MIN_TOLERANCE: f64 = 0.0001;
 pub const MAX_TOLERANCE: f64 = 1.0;
 
 /// The post as a run with `options` posts it: the chord tolerance set
-/// with `--set tolerance` is the post's, so that the runtime cuts arcs at
-/// it and verifying the program judges the chords by it.
-pub fn post_for_run(mut post: postc_ir::Post, options: &RunOptions) -> postc_ir::Post {
-    if let Some(tolerance) = options.arc_tolerance {
+/// with `--set tolerance` moves from the options into the post, so that
+/// the runtime cuts arcs at it and verifying the program (which reads the
+/// post) judges the chords by it, and the runtime copies no post to
+/// apply it again.
+pub fn post_for_run(mut post: postc_ir::Post, options: &mut RunOptions) -> postc_ir::Post {
+    if let Some(tolerance) = options.arc_tolerance.take() {
         post.options.arc_tolerance = tolerance;
     }
     post

@@ -225,7 +225,7 @@ fn post(
     if let Err(d) = postc_driver::settings::apply_sets(&sets(set)?, &mut options) {
         return Err(diagnostics::error(py, &mut sources, &[d], "set", "a setting postc does not take"));
     }
-    let compiled = postc_driver::settings::post_for_run(compiled, &options);
+    let compiled = postc_driver::settings::post_for_run(compiled, &mut options);
     options.file = out.as_deref().map(postc_driver::settings::file_info);
     let mut toolpath_events = match Toolpath::open(toolpath, &mut sources)? {
         Ok(t) => t,

@@ -133,7 +133,7 @@ pub fn run(args: Args) -> Result<(), Failed> {
         ..super::clock::run_options()
     };
     apply_sets(&args.sets, &mut options).map_err(|d| fail(&mut sources, d))?;
-    let post = postc_driver::settings::post_for_run(post, &options);
+    let post = postc_driver::settings::post_for_run(post, &mut options);
     if let Some(out) = &args.output {
         options.file = Some(file_info(out));
     }
