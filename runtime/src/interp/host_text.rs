@@ -196,17 +196,27 @@ fn format_spec(f: &[Option<&Value>; FIELDS.len()], value: &Value, out: &mut Stri
     let negative = v < 0.0 && units != 0.0;
     // `String(units)`, as `js::push_number` writes a number.
     let (mut whole_digits, mut ryu) = (itoa::Buffer::new(), ryu_js::Buffer::new());
-    let digits: &[u8] = if units == units.trunc() && units.abs() < 9_007_199_254_740_992.0 {
-        whole_digits.format(units as i64).as_bytes()
+    let digits: &str = if units == units.trunc() && units.abs() < 9_007_199_254_740_992.0 {
+        whole_digits.format(units as i64)
     } else {
-        ryu.format(units).as_bytes()
+        ryu.format(units)
     };
     // `while (digits.length <= decimals) digits = "0" + digits`: `zeros`
     // zeros, then the digits.
     let zeros =
         if (digits.len() as f64) <= decimals { repeats(decimals.floor() - digits.len() as f64 + 1.0) } else { 0 };
     let len = zeros + digits.len();
-    let at = |i: usize| if i < zeros { b'0' } else { digits[i - zeros] };
+    let at = |i: usize| if i < zeros { b'0' } else { digits.as_bytes()[i - zeros] };
+    // Characters `from..to` of the zeros then the digits, appended whole
+    // (the digits are ASCII: any index is a character's).
+    let push = |out: &mut String, from: usize, to: usize| {
+        for _ in from..to.min(zeros) {
+            out.push('0');
+        }
+        if to > zeros {
+            out.push_str(&digits[from.max(zeros) - zeros..to - zeros]);
+        }
+    };
     // `whole = digits.substring(0, len - decimals)`, `fraction` the rest.
     let split = clamp_index(len as f64 - decimals, len);
     let mut end = len;
@@ -222,12 +232,12 @@ fn format_spec(f: &[Option<&Value>; FIELDS.len()], value: &Value, out: &mut Stri
     out.clear();
     push_string(out, f[PREFIX]);
     let start = out.len();
-    out.extend((whole_start..split).map(|i| char::from(at(i))));
+    push(out, whole_start, split);
     if has_fraction || truthy(f[FORCE_DECIMAL]) {
         push_string(out, f[DECIMAL_SYMBOL]);
     }
     if has_fraction {
-        out.extend((split..end).map(|i| char::from(at(i))));
+        push(out, split, end);
     }
     let width = number(f[WIDTH]);
     let forced_sign = truthy(f[FORCE_SIGN]);

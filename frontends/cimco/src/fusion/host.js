@@ -1500,8 +1500,12 @@ function getCircularChordLength() { return Vector.diff(__circular.end, __circula
 // The axes of a circular plane: the first two span it (an arc turns
 // from the first towards the second counter-clockwise, as G2/G3 under
 // G17, G18 and G19), the third is its normal.
+// One array a plane, made once: the host only reads them.
+var __AXES_ZX = ["z", "x", "y"];
+var __AXES_YZ = ["y", "z", "x"];
+var __AXES_XY = ["x", "y", "z"];
 function __planeAxes(plane) {
-  return plane == PLANE_ZX ? ["z", "x", "y"] : (plane == PLANE_YZ ? ["y", "z", "x"] : ["x", "y", "z"]);
+  return plane == PLANE_ZX ? __AXES_ZX : (plane == PLANE_YZ ? __AXES_YZ : __AXES_XY);
 }
 // A vector of the plane's coordinates (u, v, w).
 function __fromPlane(plane, u, v, w) {
@@ -2423,7 +2427,7 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, 
   __circular = c;
   var helical = isHelical();
   var planeAllowed = allowedCircularPlanes === undefined || (allowedCircularPlanes & (1 << plane)) != 0;
-  var chord = Vector.diff(c.end, start).getLength();
+  var chord = Math.sqrt((x - start.x) * (x - start.x) + (y - start.y) * (y - start.y) + (z - start.z) * (z - start.z));
   var full = c.sweep > Math.PI && chord < 1e-9;
   if (!planeAllowed || (helical && !allowHelicalMoves) || radius < minimumCircularRadius ||
       radius > maximumCircularRadius || c.sweep < minimumCircularSweep || (!full && chord < minimumChordLength)) {
@@ -2431,6 +2435,13 @@ function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, 
     return;
   }
   var parts = Math.max(1, Math.ceil(c.sweep / maximumCircularSweep - 1e-9));
+  if (parts == 1) {
+    // The arc in one part is `c` itself: its centre at the start along
+    // the normal, from the current position to its end.
+    onCircular(clockwise, c.center.x, c.center.y, c.center.z, x, y, z, feed);
+    __fusion_moved(x, y, z);
+    return;
+  }
   for (var i = 1; i <= parts; ++i) {
     var p = i == parts ? c.end : getPositionU(i / parts);
     var center = __vector(c.center);
