@@ -151,6 +151,10 @@ pub struct Engine<'p> {
     /// The text of a chain of `+` being built (`text + " " + word`), kept
     /// with its capacity: a chain allocates only its result.
     pub(crate) chain_text: String,
+    /// Where the host's output variables and formats keep the properties
+    /// `Builtin::FormatOutput` reads (one inline cache a property name:
+    /// the host makes them all in one order).
+    pub(crate) output_hints: crate::interp::host_text::OutputHints,
     /// Counts the clearings of modal memory ([`Engine::clear_modal`]).
     pub(crate) modal_epoch: u64,
     /// Provenance of each block, when the run is traced.
@@ -221,6 +225,7 @@ impl<'p> Engine<'p> {
             spare_frames: Vec::new(),
             spare_arrays: Vec::new(),
             chain_text: String::new(),
+            output_hints: Default::default(),
             modal_epoch: 0,
             trace: None,
             profile: None,

@@ -240,7 +240,7 @@ pub enum Expr {
 impl Expr {
     /// A text literal.
     pub fn text(s: &str) -> Expr {
-        Expr::Text(Text(Value::text(s)))
+        Expr::Text(Text(Value::text(s), std::cell::Cell::new(0)))
     }
 
     /// Calls `f` on each expression this one is made of (operands,
@@ -470,19 +470,47 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
 
 /// A text literal: the text value it reads as (shared, never copied), and
 /// the text itself through `Deref`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Text(Value);
+///
+/// A literal that names a property (`o.name`, `o.name(...)`, `o.name =
+/// v`) is also that site's *inline cache*: the index among an object's
+/// keys where the name was found last ([`crate::value::Object::find_hinted`]).
+/// Objects a constructor or a literal makes have their keys in one order,
+/// so a site that reads the same property of such objects finds it at
+/// the remembered index with one comparison instead of a scan. The cache
+/// is a hint, checked at every use: it changes how fast a property is
+/// found, never which.
+#[derive(Clone)]
+pub struct Text(Value, std::cell::Cell<u32>);
+
+impl PartialEq for Text {
+    /// The same text (the cache is no part of the literal's meaning).
+    fn eq(&self, other: &Text) -> bool {
+        self.0 == other.0
+    }
+}
+
+impl std::fmt::Debug for Text {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
 
 impl Text {
     /// A literal of the text.
     pub fn new(text: crate::value::Text) -> Text {
-        Text(Value::Text(text))
+        Text(Value::Text(text), std::cell::Cell::new(0))
     }
 
     /// The value the literal reads as.
     #[inline]
     pub fn value(&self) -> &Value {
         &self.0
+    }
+
+    /// The site's inline cache ([`Text`]).
+    #[inline]
+    pub fn hint(&self) -> &std::cell::Cell<u32> {
+        &self.1
     }
 
     /// Whether the literal is `""`, from its length (not through `str`,

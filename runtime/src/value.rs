@@ -130,8 +130,36 @@ impl Object {
         self.keys.iter().position(|k| k.as_bytes() == key)
     }
 
+    /// [`Self::find`], first trying the index `hint` holds (a site's
+    /// inline cache, `crate::exec::Text`), which it sets to where the key
+    /// is found.
+    #[inline]
+    pub fn find_hinted(&self, key: &[u8], hint: &std::cell::Cell<u32>) -> Option<usize> {
+        let h = hint.get() as usize;
+        if self.keys.get(h).is_some_and(|k| k.as_bytes() == key) {
+            return Some(h);
+        }
+        let i = self.find(key)?;
+        hint.set(u32::try_from(i).unwrap_or(0));
+        Some(i)
+    }
+
     pub fn get(&self, key: &[u8]) -> Option<&Value> {
         self.find(key).map(|i| &self.values[i])
+    }
+
+    /// [`Self::set`] through a site's inline cache ([`Self::find_hinted`]);
+    /// a property added last leaves its index there.
+    #[inline]
+    pub fn set_hinted(&mut self, key: &Text, value: Value, hint: &std::cell::Cell<u32>) {
+        match self.find_hinted(key.as_bytes(), hint) {
+            Some(i) => self.values[i] = value,
+            None => {
+                hint.set(u32::try_from(self.keys.len()).unwrap_or(0));
+                self.keys.push(key.clone());
+                self.values.push(value);
+            }
+        }
     }
 
     /// Sets a property, adding it last when it is new.

@@ -365,11 +365,6 @@ fn word(w: &Value, sep: usize, first: &mut bool, depth: u32, protos: &Protos, ou
     }
 }
 
-/// The own property `name` of an object.
-fn own<'o>(o: &'o crate::value::Object, name: &[u8]) -> Option<&'o Value> {
-    o.get(name)
-}
-
 /// `__postc_formatOutput(output, value, hostFormat, modal)`: what the
 /// `format(value)` method of the host's output variable (`modal` false:
 /// `createVariable`, `createOutputVariable`) or modal (`modal` true:
@@ -390,7 +385,7 @@ fn own<'o>(o: &'o crate::value::Object, name: &[u8]) -> Option<&'o Value> {
 /// `undefined` (before changing anything) where the host's JavaScript
 /// does more than this: another format, a value the format cannot write,
 /// an `onchange` to call, `CONTROL_NONZERO`, a property the output lacks.
-pub(crate) fn format_output(args: &[Value], out: &mut String) -> Result<Value> {
+pub(crate) fn format_output(args: &[Value], hints: &OutputHints, out: &mut String) -> Result<Value> {
     let arg = |i: usize| args.get(i).unwrap_or(&Value::Undefined);
     let (Value::Object(output), Value::Func(reference)) = (arg(0), arg(2)) else { return Ok(Value::Undefined) };
     let modal = arg(3).truthy();
@@ -398,21 +393,22 @@ pub(crate) fn format_output(args: &[Value], out: &mut String) -> Result<Value> {
     let text = {
         let o = output.borrow();
         if !modal {
-            match own(&o, b"enabled") {
+            match hints.get(&o, Out::Enabled) {
                 Some(enabled) if !enabled.truthy() => return Ok(Value::text("")),
                 Some(_) => {}
                 None => return Ok(Value::Undefined),
             }
-            if own(&o, b"nonzero").is_none_or(Value::truthy) {
+            if hints.get(&o, Out::Nonzero).is_none_or(Value::truthy) {
                 return Ok(Value::Undefined);
             }
         }
-        match (value, own(&o, b"formatter")) {
+        match (value, hints.get(&o, Out::Formatter)) {
             (Value::Text(t), _) if modal => Value::Text(t.clone()),
             (Value::Num(_), Some(Value::Object(format))) => {
                 let format = format.borrow();
-                let host = matches!(own(&format, b"format"), Some(Value::Func(f)) if f.callee == reference.callee);
-                match own(&format, b"spec") {
+                let host =
+                    matches!(hints.get(&format, Out::Format), Some(Value::Func(f)) if f.callee == reference.callee);
+                match hints.get(&format, Out::Spec) {
                     Some(spec) if host => format_number(spec, value, out)?,
                     _ => return Ok(Value::Undefined),
                 }
@@ -422,29 +418,93 @@ pub(crate) fn format_output(args: &[Value], out: &mut String) -> Result<Value> {
     };
     let Value::Text(text) = text else { return Ok(Value::Undefined) };
     let mut o = output.borrow_mut();
-    let changed = !matches!(own(&o, b"last"), Some(Value::Text(last)) if *last == text);
-    if !changed && !own(&o, b"force").is_some_and(Value::truthy) {
+    let changed = !matches!(hints.get(&o, Out::Last), Some(Value::Text(last)) if *last == text);
+    if !changed && !hints.get(&o, Out::Force).is_some_and(Value::truthy) {
         return Ok(Value::text(""));
     }
-    if changed && !matches!(own(&o, b"onchange"), Some(Value::Undefined)) {
+    if changed && !matches!(hints.get(&o, Out::Onchange), Some(Value::Undefined)) {
         return Ok(Value::Undefined);
     }
-    let (Some(_), Some(_), Some(prefix)) = (own(&o, b"last"), own(&o, b"current"), own(&o, b"prefix")) else {
+    let (Some(_), Some(_), Some(prefix)) =
+        (hints.get(&o, Out::Last), hints.get(&o, Out::Current), hints.get(&o, Out::Prefix))
+    else {
         return Ok(Value::Undefined);
     };
     out.clear();
     push_string(out, Some(prefix));
     text.push_to(out);
     if modal {
-        match own(&o, b"suffix") {
+        match hints.get(&o, Out::Suffix) {
             Some(suffix) => push_string(out, Some(suffix)),
             None => return Ok(Value::Undefined),
         }
     }
     let printed = Value::Text(Text::new(out));
-    o.set(Text::new("last"), Value::Text(text));
-    o.set(Text::new("current"), value.clone());
+    hints.set(&mut o, Out::Last, Value::Text(text));
+    hints.set(&mut o, Out::Current, value.clone());
     Ok(printed)
+}
+
+/// The inline caches of [`format_output`]: for each property it reads,
+/// the index where it was found last ([`crate::value::Object::find_hinted`]).
+#[derive(Default)]
+pub(crate) struct OutputHints([std::cell::Cell<u32>; Out::COUNT]);
+
+/// The properties [`format_output`] reads, of output variables and
+/// formats, each with its inline cache in [`OutputHints`].
+#[derive(Clone, Copy)]
+enum Out {
+    Enabled,
+    Nonzero,
+    Formatter,
+    Format,
+    Spec,
+    Last,
+    Force,
+    Onchange,
+    Current,
+    Prefix,
+    Suffix,
+}
+
+impl Out {
+    const COUNT: usize = 11;
+
+    /// The property's name, by its place in [`Out`].
+    const NAMES: [&'static str; Out::COUNT] = [
+        "enabled",
+        "nonzero",
+        "formatter",
+        "format",
+        "spec",
+        "last",
+        "force",
+        "onchange",
+        "current",
+        "prefix",
+        "suffix",
+    ];
+
+    #[inline(always)]
+    fn name(self) -> &'static str {
+        Out::NAMES[self as usize]
+    }
+}
+
+impl OutputHints {
+    /// The own property `p` of `o`.
+    #[inline(always)]
+    fn get<'o>(&self, o: &'o crate::value::Object, p: Out) -> Option<&'o Value> {
+        o.find_hinted(p.name().as_bytes(), &self.0[p as usize]).map(|i| &o.values[i])
+    }
+
+    /// Sets the own property `p` of `o`.
+    fn set(&self, o: &mut crate::value::Object, p: Out, v: Value) {
+        match o.find_hinted(p.name().as_bytes(), &self.0[p as usize]) {
+            Some(i) => o.values[i] = v,
+            None => o.set(Text::new(p.name()), v),
+        }
+    }
 }
 
 /// `__postc_property(properties, name, otherwise)`, as the host's

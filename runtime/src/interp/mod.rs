@@ -223,6 +223,10 @@ impl Engine<'_> {
                     if self.is_global_object(o) {
                         let k = k.clone();
                         self.set_global_member(&k, v)?;
+                    } else if let (Expr::Text(name), Value::Object(target), Value::Text(k)) = (key, o, k) {
+                        // `o.name = v` of an object: the property found
+                        // through the site's inline cache.
+                        target.borrow_mut().set_hinted(k, v, name.hint());
                     } else {
                         objects::set_member(o, k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
@@ -235,6 +239,10 @@ impl Engine<'_> {
                     let v = self.eval(value, frame)?;
                     if self.is_global_object(&o) {
                         self.set_global_member(&k, v)?;
+                    } else if let (Expr::Text(name), Value::Object(target), Value::Text(k)) = (key, &o, &k) {
+                        // `o.name = v` of an object: the property found
+                        // through the site's inline cache.
+                        target.borrow_mut().set_hinted(k, v, name.hint());
                     } else {
                         objects::set_member(&o, &k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
@@ -808,6 +816,20 @@ impl Engine<'_> {
                 Some(v) => v,
                 None => return Err(at(objects::reference_error(name), span.0, "not defined")),
             },
+            // `o.name` of an object's own property, found through the
+            // site's inline cache.
+            Expr::Member(o, k, _)
+                if is_plain_leaf(o)
+                    && let Expr::Text(name) = &**k
+                    && let Some(v) = {
+                        let mut tmp = Value::Null;
+                        let v = self.own_hinted(plain_leaf(o, frame, &self.globals, &mut tmp), name);
+                        tmp.let_go();
+                        v
+                    } =>
+            {
+                v
+            }
             Expr::Member(o, k, span) if is_plain_leaf(o) && is_plain_leaf(k) => {
                 let read = {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
@@ -830,10 +852,14 @@ impl Engine<'_> {
                     }
                 }
             }
-            Expr::Member(o, k, span) => {
-                let mut o = self.eval(o, frame)?;
-                let k = self.eval(k, frame)?;
-                let v = if self.is_global_object(&o) {
+            Expr::Member(object, key, span) => {
+                let mut o = self.eval(object, frame)?;
+                let k = self.eval(key, frame)?;
+                let v = if let Expr::Text(name) = &**key
+                    && let Some(v) = self.own_hinted(&o, name)
+                {
+                    v
+                } else if self.is_global_object(&o) {
                     self.global_member(&k)?
                 } else {
                     objects::member(&o, &k, &self.protos).map_err(|e| at(e, span.0, "this property"))?
@@ -859,7 +885,7 @@ impl Engine<'_> {
                         &empty
                     }
                 };
-                self.invoke(o, name, args, *span)?
+                self.invoke(o, name, method.hint(), args, *span)?
             }
             // A function that captures nothing is one value however often
             // it is made: a top-level function is one object in
@@ -1043,7 +1069,7 @@ impl Engine<'_> {
                         let mut buf = std::mem::take(&mut self.chain_text);
                         let v = match b {
                             Builtin::Words => host_text::words(&values, &self.protos, &mut buf),
-                            Builtin::FormatOutput => host_text::format_output(&values, &mut buf),
+                            Builtin::FormatOutput => host_text::format_output(&values, &self.output_hints, &mut buf),
                             _ => {
                                 let arg = |i: usize| values.get(i).unwrap_or(&Value::Undefined);
                                 host_text::format_number(arg(0), arg(1), &mut buf)
@@ -1122,6 +1148,23 @@ impl Engine<'_> {
                 v
             }
         })
+    }
+
+    /// The own property `name` of `value`, found through the literal's
+    /// inline cache ([`crate::exec::Text`]); `None` for any other value,
+    /// the global object, a built-in prototype, or an object without the
+    /// property (the general read answers those).
+    #[inline]
+    fn own_hinted(&self, value: &Value, name: &crate::exec::Text) -> Option<Value> {
+        let (Value::Object(object), Value::Text(key)) = (value, name.value()) else { return None };
+        if self.is_global_object(value) {
+            return None;
+        }
+        let object = object.borrow();
+        match object.builtin {
+            None => object.find_hinted(key.as_bytes(), name.hint()).map(|i| object.values[i].clone()),
+            Some(_) => None,
+        }
     }
 
     /// An empty list for arguments or a frame, from the spares: a call's

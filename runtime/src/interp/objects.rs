@@ -438,6 +438,7 @@ impl Engine<'_> {
         &mut self,
         object: Value,
         method: &Text,
+        hint: &std::cell::Cell<u32>,
         args: Vec<Value>,
         span: Option<Span>,
     ) -> Result<Value> {
@@ -468,9 +469,10 @@ impl Engine<'_> {
         let found = match &object {
             Value::Object(o) => {
                 let o = o.borrow();
-                match o.get(method.as_bytes()) {
-                    // An own method, the commonest call: no walk.
-                    Some(f) if o.builtin.is_none() => Some(Found::Value(f.clone())),
+                // An own method, the commonest call: no walk, and found
+                // through the site's inline cache (`crate::exec::Text`).
+                match o.find_hinted(method.as_bytes(), hint) {
+                    Some(i) if o.builtin.is_none() => Some(Found::Value(o.values[i].clone())),
                     _ => find_in(&o, method.as_bytes(), &self.protos, false),
                 }
             }
