@@ -340,3 +340,40 @@ fn formatting_a_value_that_is_not_a_number_stops_at_its_line() {
         assert_eq!(at, Some(line), "{d:?}\n{js}");
     }
 }
+
+/// One site reading, storing and calling a property by name over objects
+/// whose keys are in different orders, or missing it: each gets its own
+/// property, as Node.js prints (the site's inline cache is only a hint).
+#[test]
+fn a_property_site_reads_objects_of_any_key_order() {
+    let out = post_output(
+        r#"
+        function nameOf(o) { return o.name; }
+        function setName(o, v) { o.name = v; return o; }
+        function callIt(o) { return o.say(); }
+        function onOpen() {
+            var a = {name: "a", x: 1};
+            var b = {x: 2, y: 3, name: "b"};
+            var c = {y: 4};
+            var d = {z: 0, name: "d0"};
+            var out = [];
+            var list = [a, b, c, b, a, d, c];
+            for (var i = 0; i < list.length; i++) { out.push(String(nameOf(list[i]))); }
+            setName(c, "c");
+            setName(a, "a2");
+            setName(b, "b2");
+            setName({w: 1}, "w");
+            for (var j = 0; j < list.length; j++) { out.push(nameOf(list[j])); }
+            var p = {say: function () { return "p"; }, k: 1};
+            var q = {k: 2, j: 3, say: function () { return "q" + this.k; }};
+            var r = {k: 5};
+            r.say = function () { return "r" + this.k; };
+            var calls = [p, q, r, q, p];
+            for (var m = 0; m < calls.length; m++) { out.push(callIt(calls[m])); }
+            return out.join(" ") + "\n";
+        }
+        function onLinear(x, y, z, m) { return ""; }
+        "#,
+    );
+    assert_eq!(out, "a b undefined b a d0 undefined a2 b2 c b2 a2 d0 c p q2 r5 q2 p\n");
+}
