@@ -2258,7 +2258,8 @@ function __fusion_end_section() {
 }
 
 // The section's first move: Fusion calls `onSection` with the section's
-// initial position known.
+// initial position known. The moves call it only while the section waits
+// for its first move, so that the others cost no call.
 function __fusion_begin(x, y, z) {
   var s = __section;
   if (s === undefined || !s.pending) { return; }
@@ -2382,7 +2383,7 @@ function __fusion_moved(x, y, z) {
 
 function __fusion_rapid(x, y, z, record, nextMotion) {
   __at(record, nextMotion);
-  __fusion_begin(x, y, z);
+  if (__section !== undefined && __section.pending) { __fusion_begin(x, y, z); }
   movement = MOVEMENT_RAPID;
   onRapid(x, y, z);
   __fusion_moved(x, y, z);
@@ -2390,7 +2391,7 @@ function __fusion_rapid(x, y, z, record, nextMotion) {
 
 function __fusion_linear(x, y, z, feed, plunge, record, nextMotion) {
   __at(record, nextMotion);
-  __fusion_begin(x, y, z);
+  if (__section !== undefined && __section.pending) { __fusion_begin(x, y, z); }
   movement = plunge ? MOVEMENT_PLUNGE : MOVEMENT_CUTTING;
   feedrate = feed;
   onLinear(x, y, z, feed);
@@ -2407,7 +2408,7 @@ function __fusion_linear(x, y, z, feed, plunge, record, nextMotion) {
 // helical ramp (`MOVEMENT_RAMP_HELIX`).
 function __fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, record, nextMotion, plunge) {
   __at(record, nextMotion);
-  __fusion_begin(x, y, z);
+  if (__section !== undefined && __section.pending) { __fusion_begin(x, y, z); }
   movement = plunge === true ? MOVEMENT_RAMP_HELIX : MOVEMENT_CUTTING;
   feedrate = feed;
   var start = __vector(__position);
