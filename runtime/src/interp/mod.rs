@@ -223,12 +223,8 @@ impl Engine<'_> {
                     if self.is_global_object(o) {
                         let k = k.clone();
                         self.set_global_member(&k, v)?;
-                    } else if let (Expr::Text(name), Value::Object(target), Value::Text(k)) = (key, o, k) {
-                        // `o.name = v` of an object: the property found
-                        // through the site's inline cache.
-                        target.borrow_mut().set_hinted(k, v, name.hint());
                     } else {
-                        objects::set_member(o, k, v).map_err(|e| at(e, span.0, "this assignment"))?;
+                        store_member(o, key, k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
                     to.let_go();
                     tk.let_go();
@@ -239,12 +235,8 @@ impl Engine<'_> {
                     let v = self.eval(value, frame)?;
                     if self.is_global_object(&o) {
                         self.set_global_member(&k, v)?;
-                    } else if let (Expr::Text(name), Value::Object(target), Value::Text(k)) = (key, &o, &k) {
-                        // `o.name = v` of an object: the property found
-                        // through the site's inline cache.
-                        target.borrow_mut().set_hinted(k, v, name.hint());
                     } else {
-                        objects::set_member(&o, &k, v).map_err(|e| at(e, span.0, "this assignment"))?;
+                        store_member(&o, key, &k, v).map_err(|e| at(e, span.0, "this assignment"))?;
                     }
                 }
                 Stmt::Throw { value, span } => {
@@ -816,20 +808,6 @@ impl Engine<'_> {
                 Some(v) => v,
                 None => return Err(at(objects::reference_error(name), span.0, "not defined")),
             },
-            // `o.name` of an object's own property, found through the
-            // site's inline cache.
-            Expr::Member(o, k, _)
-                if is_plain_leaf(o)
-                    && let Expr::Text(name) = &**k
-                    && let Some(v) = {
-                        let mut tmp = Value::Null;
-                        let v = self.own_hinted(plain_leaf(o, frame, &self.globals, &mut tmp), name);
-                        tmp.let_go();
-                        v
-                    } =>
-            {
-                v
-            }
             Expr::Member(o, k, span) if is_plain_leaf(o) && is_plain_leaf(k) => {
                 let read = {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
@@ -837,6 +815,12 @@ impl Engine<'_> {
                     let key = plain_leaf(k, frame, &self.globals, &mut tk);
                     let read = if self.is_global_object(object) {
                         None
+                    } else if let Expr::Text(name) = &**k
+                        && let Some(v) = self.own_hinted(object, name)
+                    {
+                        // `o.name` of an object's own property, found
+                        // through the site's inline cache.
+                        Some(Ok(v))
                     } else {
                         Some(objects::member(object, key, &self.protos))
                     };
@@ -1844,6 +1828,19 @@ impl Engine<'_> {
                 }
             }
         })
+    }
+}
+
+/// `o[k] = v` of a value that is not the global object: `o.name = v` of
+/// an object finds the property through the site's inline cache
+/// ([`crate::exec::Text`]); any other store is [`objects::set_member`]'s.
+fn store_member(o: &Value, key: &Expr, k: &Value, v: Value) -> Result<()> {
+    match (key, o, k) {
+        (Expr::Text(name), Value::Object(target), Value::Text(k)) => {
+            target.borrow_mut().set_hinted(k, v, name.hint());
+            Ok(())
+        }
+        _ => objects::set_member(o, k, v),
     }
 }
 
