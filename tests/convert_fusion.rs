@@ -19,7 +19,7 @@ use crate::support::converting::{Tally, convert_counted, real_vectric_posts};
 use crate::support::{self, compile_warned, corpus, diff, files, postc, said, stem};
 use postc_backends::Target;
 use postc_ir::event::{Event, ZOrigin};
-use postc_ir::{EventSource, Piece, Post, Quantity, Stmt, ValueSource};
+use postc_ir::{Dialect, EventSource, Piece, Post, Quantity, Stmt, ValueSource};
 use postc_runtime::{Finished, Output, RunOptions};
 
 /// A post that prints what Fusion hands at each section: the tool, its
@@ -506,6 +506,15 @@ fn judge_one(
         let jsonl = dir.join(format!("{}.jsonl", stem(&toolpath)));
         let ours = match post_toolpath(&post, &toolpath) {
             Ok(o) => o,
+            // A CNC-Calc post stops on a toolpath it does not take (a
+            // cycle it has no code for): the converted post must stop too.
+            Err(e) if post.info.dialect == Dialect::Cimco => {
+                if run_fusion_node(&converted, &jsonl, &properties).is_ok() {
+                    failures
+                        .push(format!("{pair}: postc refuses the source ({e}) but Node.js runs the converted post"));
+                }
+                continue;
+            }
             Err(e) => {
                 failures.push(format!("{pair}: postc: {e}"));
                 continue;
@@ -597,12 +606,104 @@ fn node_runs_fusion_posts_as_postc_posts_their_sources() {
     assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
 }
 
+/// The CIMCO toolpaths a CNC-Calc post converted to Fusion is judged over
+/// besides the corpus's: `cimco/mill.ron`, and `cimco/drill.ron` without
+/// its cycles' names (Fusion hands a cycle's type, not a CNC-Calc name:
+/// CV013, docs/convert.md, "CIMCO posts as Fusion posts").
+fn cimco_toolpaths(dir: &Path) -> Vec<Job> {
+    let cimco = corpus().join("toolpaths/cimco");
+    let mill = cimco.join("mill.ron");
+    let mut out = vec![Job {
+        text: std::fs::read_to_string(&mill).unwrap_or_default(),
+        path: mill,
+        dateless: false,
+        dated: false,
+    }];
+    let drill = std::fs::read_to_string(cimco.join("drill.ron")).unwrap_or_default();
+    let unnamed: String = drill
+        .lines()
+        .map(|l| match (l.find(", name: \""), l.starts_with("DrillCycle(")) {
+            (Some(at), true) => {
+                let end = l[at + 9..].find('"').map_or(l.len(), |e| at + 9 + e + 1);
+                format!("{}{}\n", &l[..at], &l[end..])
+            }
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    assert!(!unnamed.contains("name: \"Drilling"), "the names are gone: {unnamed}");
+    let path = dir.join("drill_unnamed.ron");
+    std::fs::write(&path, &unnamed).expect("write the toolpath");
+    out.push(Job { path, text: unnamed, dateless: false, dated: false });
+    out
+}
+
+/// Whether Fusion hands a converted CNC-Calc post a move CNC-Calc does
+/// not: a drilling cycle within a toolpath that starts with the tool
+/// elsewhere than over its first hole at the clearance plane, where
+/// Fusion's linking moves take it (docs/convert.md, "CIMCO posts as
+/// Fusion posts").
+fn links_before_cycles(text: &str) -> bool {
+    let mut at: Option<[Option<f64>; 3]> = None;
+    let mut lines = text.lines().map(str::trim_start);
+    while let Some(line) = lines.next() {
+        if line.starts_with("ToolpathStart") {
+            at = None;
+        } else if line.starts_with("Rapid(") || line.starts_with("Feed(") || line.starts_with("Arc(") {
+            let was = at.unwrap_or([None; 3]);
+            at = Some([field(line, "x").or(was[0]), field(line, "y").or(was[1]), field(line, "z").or(was[2])]);
+        } else if line.starts_with("DrillCycle(") {
+            let clearance = field(line, "retract_plane");
+            let holes: Vec<&str> = lines
+                .clone()
+                .take_while(|l| !l.starts_with("DrillEnd"))
+                .filter(|l| l.starts_with("DrillPoint("))
+                .collect();
+            let over = |p: &&str| [field(p, "x"), field(p, "y"), clearance];
+            if let (Some(now), Some(first)) = (at, holes.first().map(over))
+                && now != first
+            {
+                return true;
+            }
+            // The cycle leaves the tool over its last hole at the clearance plane.
+            at = holes.last().map(over).or(at);
+        }
+    }
+    false
+}
+
+/// CIMCO posts converted to Fusion (`cnc_calc.js`: the CNC-Calc post as
+/// written, in a scope of its own, called by Fusion's entry points in
+/// CNC-Calc's order), judged as the Vectric ones are: Node.js with the
+/// Fusion host running the converted post, and postc running it, print
+/// what postc prints posting the CIMCO source, over every toolpath that
+/// applies. The lathe post is refused (CV004).
+#[test]
+fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
+    if node_or_skip("convert_fusion").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut all = all_toolpaths(dir.path());
+    all.extend(cimco_toolpaths(dir.path()));
+    all.retain(|j| !links_before_cycles(&j.text));
+    let mut failures = Vec::new();
+    let mut posts = files(&corpus().join("posts/cimco"), "js");
+    posts.extend(files(&corpus().join("posts/cimco-styles"), "js"));
+    let tally = judge(&posts, dir.path(), &all, &mut failures);
+    eprintln!("{}", tally.show("corpus/posts/cimco and cimco-styles", posts.len()));
+    assert_eq!(tally.converted, posts.len() - 1, "every milling post converts: {}", tally.show("CIMCO", posts.len()));
+    assert_eq!(tally.refused.get("CV004"), Some(&1), "the lathe post is refused: {}", tally.show("CIMCO", posts.len()));
+    assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
+    assert_eq!(tally.identical_posts, tally.converted, "{}", tally.show("CIMCO", posts.len()));
+    assert!(tally.compared >= 5 * tally.converted, "only {} programs were compared", tally.compared);
+}
+
 /// The command line: `--to fusion` writes a `.cps` post with Fusion's
 /// entry points; a value Fusion never hands is refused at its line and
 /// column and nothing is written; a post of another dialect is refused.
 /// The home position is the converted post's properties, which `postc
 /// post --set property.NAME=VALUE` sets; a property the post does not
-/// have is refused.
+/// have is refused, naming those it has.
 #[test]
 fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let dir = tempfile::tempdir().expect("a temporary folder");
@@ -706,6 +807,8 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("The post has no property \"homeX\""), "{err}");
+    // ... with the names it has, so that a mistyped one is found.
+    assert!(err.contains("its properties are homePositionX, homePositionY, homePositionZ"), "{err}");
     // A property given without `property.` is named as typed, with the
     // form that sets it.
     let o = postc(&["post", &homed.display().to_string(), job, "--set", "homePositionX=1"]);
@@ -715,7 +818,7 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
         err.contains("`--set homePositionX` is not a setting") && err.contains("`--set property.homePositionX=1`"),
         "{err}"
     );
-    let o = postc(&["convert", "corpus/posts/cimco/fanuc_mill.js", "--to", "fusion"]);
+    let o = postc(&["convert", "corpus/posts/vcpost/fanuc_mill.VcPost", "--to", "fusion"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("error[CV012]"), "{err}");

@@ -775,6 +775,35 @@ fn a_post_top_level_reads_the_unit_of_the_job() {
     );
 }
 
+/// Functions declared in a function (a post's module, as a CIMCO post
+/// converted to Fusion is): each names its siblings, one sets a `var` of
+/// the function around it that has no value, one reads `arguments`; postc
+/// prints what Node.js prints.
+#[test]
+fn functions_declared_in_a_function_call_each_other_as_node_runs_them() {
+    let Some((folder, job, jsonl, script)) = node_and_milling_job() else { return };
+    both_print(
+        folder.path(),
+        "module.cps",
+        "description = \"module\";\ncapabilities = CAPABILITY_MILLING;\n\
+         var api = (function () {\n\
+           var count;\n\
+           var prefix = \"N\";\n\
+           function next() { count = (count || 0) + 1; return prefix + count; }\n\
+           function line() { var words = []; for (var i = 0; i < arguments.length; i++) { words.push(arguments[i]); } return next() + \" \" + words.join(\" \"); }\n\
+           function both(a, b) { return line(a, b); }\n\
+           return {both: both, line: line};\n\
+         })();\n\
+         function onOpen() { writeln(api.both(\"G90\", \"G21\")); writeln(api.line(\"G0\", \"X1\", \"Y2\")); }\n\
+         function onLinear(x, y, z, feed) {}\n\
+         function onClose() { writeln(api.line(\"M30\")); }\n",
+        &job,
+        &jsonl,
+        &script,
+        "N1 G90 G21\nN2 G0 X1 Y2\nN3 M30\n",
+    );
+}
+
 /// A post property is set only to a value its type takes: an `enum` to
 /// one of its `values`, a boolean to true or false; anything else stops the
 /// post naming what it takes, in postc and under Node.js alike (Kinetic-NC's

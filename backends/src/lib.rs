@@ -11,7 +11,7 @@
 //!
 //! A backend never writes a post that would post differently from its
 //! source. What a target cannot express is refused with a
-//! [`Diagnostic`] (codes `CV001`–`CV012`) that names the construct, points
+//! [`Diagnostic`] (codes `CV001`–`CV013`) that names the construct, points
 //! at it in the source post where the IR knows where it came from, and
 //! says why; nothing is written then. `tests/convert.rs` posts every
 //! converted corpus post over every corpus toolpath and requires the same
@@ -51,8 +51,8 @@ pub enum Target {
     /// A CIMCO post, a post of another dialect as a *section post*:
     /// postc's extension, which CNC-Calc does not run (`--postc-extension`).
     CimcoSections,
-    /// An Autodesk Fusion `.cps` post that Fusion's engine runs (Vectric
-    /// posts only, for now).
+    /// An Autodesk Fusion `.cps` post that Fusion's engine runs (from
+    /// Vectric and CIMCO posts, and a Fusion post as written).
     Fusion,
     /// The IR as RON (loads back with `postc post converted.ron ...`).
     Ron,

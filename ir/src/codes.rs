@@ -1564,11 +1564,17 @@ declare_codes! {
     CV011: Warning, "the target engine hands a value with less precision than the converted post prints it (the feed, to a tenth)",
         fix = "Print the feed to a tenth or coarser, or check that the machine's feeds are given to a tenth.";
     /// The target has no converter for the post's dialect yet: `--to fusion` writes `.cps` posts
-    /// from Vectric posts, and a Fusion post as its file is written; a Fusion post the IR does
-    /// not keep as written (a RON post, a file that is not UTF-8) is refused too. Nothing is
-    /// written.
-    CV012: Error, "the post's dialect does not convert to the target yet (`--to fusion` converts Vectric posts, and Fusion posts as written)",
+    /// from Vectric and CIMCO posts, and a Fusion post as its file is written; a Fusion post the
+    /// IR does not keep as written (a RON post, a file that is not UTF-8) is refused too. Nothing
+    /// is written.
+    CV012: Error, "the post's dialect does not convert to the target yet (`--to fusion` converts Vectric and CIMCO posts, and Fusion posts as written)",
         fix = "Convert the post to Vectric first (`postc convert POST --to vectric`), then to Fusion.";
+    /// The target engine hands the converted post a value other than the one postc hands the
+    /// source: a drilling cycle's name, which CNC-Calc hands (`drillHeader.name`, "Drilling
+    /// (G81)") and Fusion does not (it hands the cycle's type: the converted post is given the
+    /// type's CNC-Calc name, "Drilling", "Peck drilling", ...).
+    CV013: Warning, "the target engine hands the converted post a value other than postc hands the source (a drilling cycle's name)",
+        fix = "Check that the post reads the cycle's kind the way the converted post is given it (docs/convert.md).";
     /// verify reads G-code programs; this one is HPGL, ShopBot, Heidenhain conversational, or
     /// text whose first blocks cannot be read. It is refused, and the message says which families
     /// verify reads.

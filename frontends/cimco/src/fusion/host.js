@@ -2079,7 +2079,10 @@ function __setProperties(given) {
   for (var name in values) {
     var p = properties[name];
     if (p === undefined) {
-      error("The post has no property \"" + name + "\" to set.");
+      var known = [];
+      for (var k in properties) { known.push(k); }
+      error("The post has no property \"" + name + "\" to set; " +
+        (known.length > 0 ? "its properties are " + known.join(", ") + "." : "it has no properties."));
     }
     var text = values[name];
     var described = p !== null && typeof p == "object";
@@ -2090,7 +2093,7 @@ function __setProperties(given) {
       var said = text.toLowerCase();
       var yes = said == "true" || said == "yes" || said == "1";
       if (!yes && said != "false" && said != "no" && said != "0") {
-        error("The post property \"" + name + "\" is true or false, not \"" + text + "\".");
+        error("The post property \"" + name + "\" is true or false, not \"" + text + "\" (true, yes or 1; false, no or 0).");
       }
       value = yes;
     } else if (type == "enum" && described && p.values instanceof Array && p.values.length > 0) {

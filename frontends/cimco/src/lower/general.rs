@@ -172,13 +172,13 @@ impl<'c, 'a> Shared<'c, 'a> {
             let (fid, captures) = self.nested[&id].clone();
             let info = &self.model.scopes.funcs[id];
             let func = info.func.ok_or_else(|| why(Span::default(), "a function without a body"))?;
-            // `arguments` is what the caller passed: a closure's captures
-            // come first in its frame, and an arrow function's `arguments`
-            // is the function's around it.
-            if info.uses_arguments && (!captures.is_empty() || func.arrow) {
-                let what = if func.arrow { "an arrow function" } else { "a nested function that captures locals" };
-                return Err(why(func.span, format!("reads `arguments` in {what}")));
+            // `arguments` is what the caller passed: an arrow function's
+            // is the function's around it; a closure's captures come
+            // first in its frame, so its `arguments` is the rest.
+            if info.uses_arguments && func.arrow {
+                return Err(why(func.span, "reads `arguments` in an arrow function"));
             }
+            let captured = captures.len();
             let mut params: Vec<String> = captures
                 .iter()
                 .map(|&(f, s)| match s {
@@ -189,7 +189,21 @@ impl<'c, 'a> Shared<'c, 'a> {
             params.extend(info.params.iter().cloned());
             let locals = info.locals.iter().skip(info.params.len()).cloned().collect();
             let mut g = General::new(self, id, captures);
-            let mut stmts = g.cells_made();
+            let mut stmts = Vec::new();
+            if info.uses_arguments && captured > 0 {
+                let copy = g.temp();
+                g.arguments = Some(copy);
+                stmts.push(IrStmt::Assign(
+                    Place::Local(copy),
+                    Ir::Invoke {
+                        object: Box::new(Ir::Arguments),
+                        method: "slice".into(),
+                        args: vec![Ir::Number(captured as f64)],
+                        span: None,
+                    },
+                ));
+            }
+            stmts.extend(g.cells_made());
             stmts.extend(g.body(&func.body)?);
             let slots = g.slots;
             out.push((
@@ -241,12 +255,17 @@ fn uses_this(f: &Function) -> bool {
 
 /// The locals of enclosing functions that nested function `id` (or a
 /// function nested in it) reads or writes, each once, in order of first use.
+/// A function declared in an enclosing function and named here is made
+/// here as a value ([`General::closure`]), so what it captures from
+/// functions around `id` is captured too, transitively.
 fn captures(model: &Model, id: FnId) -> Vec<(FnId, usize)> {
     struct Free<'m, 'a> {
         model: &'m Model<'a>,
         at: FnId,
         root: FnId,
         found: Vec<(FnId, usize)>,
+        /// The enclosing functions' declarations walked for their captures.
+        walked: Vec<FnId>,
     }
     impl<'a> super::scope::Visit<'a> for Free<'_, '_> {
         fn expr(&mut self, e: &'a Expr) -> bool {
@@ -275,10 +294,29 @@ fn captures(model: &Model, id: FnId) -> Vec<(FnId, usize)> {
                 && slot != usize::MAX
                 && func != self.at
                 && self.encloses(func)
-                && !self.found.contains(&(func, slot))
             {
-                self.found.push((func, slot));
+                if !self.found.contains(&(func, slot)) {
+                    self.found.push((func, slot));
+                }
+                self.declared(func, name);
             }
+        }
+        /// A function `func` declares under `name`: what it captures from
+        /// functions around the root, captured as well.
+        fn declared(&mut self, func: FnId, name: &str) {
+            let info = &self.model.scopes.funcs[func];
+            let Some(decl) = info.nested.iter().find(|f| f.name.as_ref().is_some_and(|n| n.name == name)) else {
+                return;
+            };
+            let Some(id) = self.model.scopes.id_of(decl) else { return };
+            if id == self.root || self.walked.contains(&id) {
+                return;
+            }
+            self.walked.push(id);
+            let outer = self.at;
+            self.at = id;
+            super::scope::walk_stmts(&decl.body, self);
+            self.at = outer;
         }
         /// Whether `func` is a function around the root (not the root or
         /// one nested in it).
@@ -301,13 +339,15 @@ fn captures(model: &Model, id: FnId) -> Vec<(FnId, usize)> {
         }
     }
     let Some(func) = model.scopes.funcs[id].func else { return Vec::new() };
-    let mut v = Free { model, at: id, root: id, found: Vec::new() };
+    let mut v = Free { model, at: id, root: id, found: Vec::new(), walked: Vec::new() };
     super::scope::walk_stmts(&func.body, &mut v);
     v.found
 }
 
 /// The captured locals that need a cell: given a value more than once
-/// (a parameter counts as given once), counting what closures assign.
+/// (a parameter counts as given once), counting what closures assign, or
+/// given one by a function nested in the one that has it (a `var x;`
+/// that a closure sets).
 fn cells(model: &Model) -> HashSet<(FnId, usize)> {
     let mut given: HashMap<(FnId, usize), usize> = HashMap::new();
     let mut captured = HashSet::new();
@@ -316,7 +356,9 @@ fn cells(model: &Model) -> HashSet<(FnId, usize)> {
             *given.entry((id, slot)).or_default() += 1;
         }
         for local in assignments(model, id) {
-            *given.entry(local).or_default() += 1;
+            // Set from a nested function: a cell whatever the count.
+            let n = if local.0 == id { 1 } else { 2 };
+            *given.entry(local).or_default() += n;
         }
         if info.parent.is_some() {
             captured.extend(captures(model, id));
@@ -391,13 +433,18 @@ struct General<'s, 'c, 'a> {
     slots: u16,
     entry: bool,
     jumps: Vec<Jump>,
+    /// Where `arguments` lives when it is not the frame's: in a nested
+    /// function that captures locals, the frame starts with the captured
+    /// values, so `arguments` is a copy of the frame past them, made as
+    /// the function starts.
+    arguments: Option<LocalId>,
 }
 
 impl<'s, 'c, 'a> General<'s, 'c, 'a> {
     fn new(shared: &'s mut Shared<'c, 'a>, at: FnId, captures: Vec<(FnId, usize)>) -> Self {
         let locals = shared.model.scopes.funcs[at].locals.len();
         let slots = (captures.len() + locals) as u16;
-        General { shared, at, captures, slots, entry: false, jumps: Vec::new() }
+        General { shared, at, captures, slots, entry: false, jumps: Vec::new(), arguments: None }
     }
 
     fn model(&self) -> &'c Model<'a> {
@@ -538,7 +585,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             return self.closure(id, at);
         }
         match self.model().scopes.resolve(name, self.at) {
-            Symbol::Local { slot: usize::MAX, .. } => Ok(Ir::Arguments),
+            Symbol::Local { slot: usize::MAX, .. } => Ok(self.arguments.map_or(Ir::Arguments, Ir::Local)),
             Symbol::Local { .. } => {
                 let l = Ir::Local(self.local_of(name, at)?.expect("a local"));
                 Ok(if self.in_cell(name) { cell_item(l) } else { l })

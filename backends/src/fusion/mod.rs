@@ -3,10 +3,14 @@
 //!
 //! A Vectric post (driven by the kind of each move, its sections output
 //! lines) prints through [`crate::js_sections`] with Fusion's entry
-//! points. A Fusion post prints as its file was written, after the
-//! conversion note, when the Fusion frontend reads that text back as the
-//! same post ([`crate::as_written`]). Posts of the other dialects are
-//! refused (`CV012`) until their forms are written.
+//! points. A CIMCO post with code prints as written inside a scope of its
+//! own, called by Fusion's entry points in CNC-Calc's order ([`cimco`]).
+//! A Fusion post prints as its file was written, after the conversion
+//! note, when the Fusion frontend reads that text back as the same post
+//! ([`crate::as_written`]). Posts of the other dialects are refused
+//! (`CV012`) until their forms are written.
+
+mod cimco;
 
 use postc_ir::{Diagnostic, Dialect, Post, codes};
 
@@ -27,12 +31,15 @@ pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>>
             )]),
         };
     }
+    if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
+        return cimco::print(post);
+    }
     if post.info.dialect != Dialect::Vectric {
         return Err(vec![crate::cimco::refusal(
             codes::CV012.code,
             post.info.span,
             format!(
-                "a {} post does not convert to Fusion yet: only Vectric and Fusion posts do",
+                "a {} post does not convert to Fusion yet: only Vectric, CIMCO and Fusion posts do",
                 crate::dialect_name(post.info.dialect)
             ),
             "docs/convert.md, \"Fusion posts\"",
