@@ -676,7 +676,8 @@ fn links_before_cycles(text: &str) -> bool {
 /// CNC-Calc's order), judged as the Vectric ones are: Node.js with the
 /// Fusion host running the converted post, and postc running it, print
 /// what postc prints posting the CIMCO source, over every toolpath that
-/// applies. The lathe post is refused (CV004).
+/// applies; each post's RON (its IR) converts and posts the same. The
+/// lathe post is refused (CV004).
 #[test]
 fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
     if node_or_skip("convert_fusion").is_none() {
@@ -689,10 +690,21 @@ fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
     let mut failures = Vec::new();
     let mut posts = files(&corpus().join("posts/cimco"), "js");
     posts.extend(files(&corpus().join("posts/cimco-styles"), "js"));
+    // Each as its IR in RON too, which converts as the JavaScript does.
+    let rons: Vec<PathBuf> = posts
+        .iter()
+        .map(|p| {
+            let ron = postc_backends::convert(&support::compile_file(p), Target::Ron).expect("RON holds every post");
+            let to = dir.path().join(format!("{}.ron", stem(p)));
+            std::fs::write(&to, ron).expect("write the RON post");
+            to
+        })
+        .collect();
+    posts.extend(rons);
     let tally = judge(&posts, dir.path(), &all, &mut failures);
-    eprintln!("{}", tally.show("corpus/posts/cimco and cimco-styles", posts.len()));
-    assert_eq!(tally.converted, posts.len() - 1, "every milling post converts: {}", tally.show("CIMCO", posts.len()));
-    assert_eq!(tally.refused.get("CV004"), Some(&1), "the lathe post is refused: {}", tally.show("CIMCO", posts.len()));
+    eprintln!("{}", tally.show("corpus/posts/cimco and cimco-styles, as JavaScript and as RON", posts.len()));
+    assert_eq!(tally.converted, posts.len() - 2, "every milling post converts: {}", tally.show("CIMCO", posts.len()));
+    assert_eq!(tally.refused.get("CV004"), Some(&2), "the lathe post is refused: {}", tally.show("CIMCO", posts.len()));
     assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
     assert_eq!(tally.identical_posts, tally.converted, "{}", tally.show("CIMCO", posts.len()));
     assert!(tally.compared >= 5 * tally.converted, "only {} programs were compared", tally.compared);

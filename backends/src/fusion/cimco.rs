@@ -46,7 +46,7 @@ const TEMPLATE: &str = include_str!("cnc_calc.js");
 /// Prints `post`, a CIMCO post with code, as a `.cps` post, with the
 /// conversion's warnings, or says why it cannot be one.
 pub(super) fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
-    let function = |name: &str| post.functions.iter().find(|f| f.name == name && f.span.is_some());
+    let function = |name: &str| post.functions.iter().find(|f| f.name == name);
     let mut errors = Vec::new();
     if post.options.lathe {
         errors.push(refusal(
