@@ -361,8 +361,8 @@ fn origin_agrees(toolpath: &Path) -> bool {
     said_xy == xy && (said_z == ZOrigin::Table) == table
 }
 
-/// The toolpaths a post applies to: no jet, no arc outside XY (in any
-/// units: the converted post prints lengths in its source's units, as
+/// The toolpaths a post applies to: no jet, no arc outside XY but for a
+/// CIMCO post (in any units: the converted post prints lengths in its source's units, as
 /// Vectric's runtime converts them). A post that prints `[DATE]` or
 /// `[TIME]` is judged over the toolpaths whose job writes no date and no
 /// time (copies of those that do, without them: the converted post
@@ -370,6 +370,9 @@ fn origin_agrees(toolpath: &Path) -> bool {
 /// that prints the origin texts over those whose origin texts say where
 /// their material lies.
 fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
+    // A CNC-Calc post converted to Fusion cuts arcs outside XY as postc's
+    // runtime does (`cncChords`).
+    let every_plane = post.info.dialect == Dialect::Cimco;
     let clock = prints(post, &[Quantity::Date, Quantity::Time]);
     let origin = prints(post, &[Quantity::XyOriginText, Quantity::ZOriginText]);
     all.iter()
@@ -380,8 +383,7 @@ fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
             !squeezed.contains("jet:true")
                 && !squeezed.contains("JetOn")
                 && !squeezed.contains("Power(")
-                && !squeezed.contains("plane:Zx")
-                && !squeezed.contains("plane:Yz")
+                && (every_plane || !squeezed.contains("plane:Zx") && !squeezed.contains("plane:Yz"))
         })
         .filter(|j| !origin || origin_agrees(&j.path))
         .map(|j| j.path.clone())

@@ -105,7 +105,14 @@ pub(super) fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagn
     } else {
         format!("    // The CNC-Calc entry points the post does not define.\n    var {};\n", undefined.join(", "))
     };
+    // Arcs outside XY are cut into chords within the runtime's tolerance,
+    // in the post's units (`arc_tolerance` is in mm).
+    let tolerance = match post.output_units() {
+        Some(Units::Inch) => post.options.arc_tolerance * Units::Inch.factor_to(Units::Mm).recip(),
+        _ => post.options.arc_tolerance,
+    };
     let text = TEMPLATE
+        .replace("{{TOLERANCE}}", &crate::js_sections::number(tolerance))
         .replace("{{UNDEFINED}}", &undefined)
         .replace("{{DESCRIPTION}}", &js_string(&name))
         .replace("{{EXTENSION}}", &js_string(extension))

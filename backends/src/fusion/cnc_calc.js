@@ -17,10 +17,10 @@ minimumRevision = 45702;
 extension = {{EXTENSION}};
 capabilities = CAPABILITY_MILLING;
 tolerance = spatial(0.002, MM);
-// CNC-Calc hands arcs in XY whole (the post splits none but those
-// useRadius asks for, below); Fusion cuts arcs in other planes into
-// moves.
-allowedCircularPlanes = 1 << PLANE_XY;
+// Fusion hands every arc whole: the post gets an arc in XY (split only
+// as useRadius asks, below) and one in another plane as chords, as
+// CNC-Calc does.
+allowedCircularPlanes = (1 << PLANE_XY) | (1 << PLANE_ZX) | (1 << PLANE_YZ);
 allowHelicalMoves = true;
 minimumChordLength = 0;
 minimumCircularRadius = 0;
@@ -312,14 +312,56 @@ function onRapid(x, y, z) {
 // A feed move; one straight down, or one Fusion says plunges, is a
 // plunge (MOVEMENT_PLUNGE).
 function onLinear(x, y, z, feed) {
-    x *= cncScale;
-    y *= cncScale;
-    z *= cncScale;
+    cncFeedTo(x * cncScale, y * cncScale, z * cncScale, feed * cncScale);
+}
+
+// A feed move in the post's units.
+function cncFeedTo(x, y, z, feed) {
     var down = x === cncPosition[0] && y === cncPosition[1] && z < cncPosition[2];
     var plunge = movement == MOVEMENT_PLUNGE || down;
-    cncCalc.setFeed(feed * cncScale);
+    cncCalc.setFeed(feed);
     cncPosition = [x, y, z];
     cncCall("onLinear", [x, y, z, plunge ? 2 : 1]);
+}
+
+// An arc in the plane of the axes (u, v) about w, from the last position
+// to e around c, as postc's runtime cuts it (runtime/src/geometry.rs):
+// equal-angle chords within `tolerance` ({{TOLERANCE}} in the post's
+// units), at most 10,000.
+function cncChords(axes, c, e, clockwise, feed) {
+    var u = axes[0], v = axes[1], w = axes[2];
+    var s = cncPosition;
+    var su = s[u] - c[u], sv = s[v] - c[v];
+    var r = Math.sqrt(su * su + sv * sv);
+    var a0 = Math.atan2(sv, su);
+    var a1 = Math.atan2(e[v] - c[v], e[u] - c[u]);
+    var TAU = 2 * Math.PI;
+    var du = e[u] - s[u], dv = e[v] - s[v];
+    var closed = Math.sqrt(du * du + dv * dv) <= 1e-9 * Math.max(r, 1);
+    var turn = closed ? TAU : ((clockwise ? a0 - a1 : a1 - a0) % TAU + TAU) % TAU;
+    if (turn <= 1e-12) {
+        turn = TAU;
+    }
+    var sweep = clockwise ? -turn : turn;
+    var n = 1;
+    if (r > 0 && r < Infinity) {
+        var step = 2 * Math.acos(1 - Math.min(Math.max({{TOLERANCE}} / r, 0), 1));
+        n = step <= 0 ? 1000000 : Math.min(Math.max(Math.ceil(Math.abs(sweep) / step), 1), 1000000);
+    }
+    n = Math.min(n, 10000);
+    for (var i = 1; i <= n; i++) {
+        var t = i / n;
+        if (t >= 1) {
+            cncFeedTo(e[0], e[1], e[2], feed);
+        } else {
+            var a = a0 + sweep * t;
+            var p = [0, 0, 0];
+            p[u] = c[u] + r * Math.cos(a);
+            p[v] = c[v] + r * Math.sin(a);
+            p[w] = s[w] + (e[w] - s[w]) * t;
+            cncFeedTo(p[0], p[1], p[2], feed);
+        }
+    }
 }
 
 // An arc in XY: whole, or under `useRadius` in n = floor(|sweep| / pi +
@@ -328,10 +370,16 @@ function onLinear(x, y, z, feed) {
 function onCircular(clockwise, cx, cy, cz, x, y, z, feed) {
     cx *= cncScale;
     cy *= cncScale;
+    cz *= cncScale;
     x *= cncScale;
     y *= cncScale;
     z *= cncScale;
-    cncCalc.setFeed(feed * cncScale);
+    feed *= cncScale;
+    if (getCircularPlane() != PLANE_XY) {
+        cncChords(getCircularPlane() == PLANE_ZX ? [2, 0, 1] : [1, 2, 0], [cx, cy, cz], [x, y, z], clockwise, feed);
+        return;
+    }
+    cncCalc.setFeed(feed);
     var s = cncPosition;
     var r = Math.sqrt((s[0] - cx) * (s[0] - cx) + (s[1] - cy) * (s[1] - cy));
     var a0 = Math.atan2(s[1] - cy, s[0] - cx);
