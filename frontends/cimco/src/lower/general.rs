@@ -171,7 +171,7 @@ impl<'c, 'a> Shared<'c, 'a> {
         while let Some(id) = self.pending.pop() {
             let (fid, captures) = self.nested[&id].clone();
             let info = &self.model.scopes.funcs[id];
-            let func = info.func.ok_or_else(|| why(Span::default(), "a function without a body"))?;
+            let func = info.func.ok_or_else(|| why(Span::default(), "has a function without a body"))?;
             // `arguments` is what the caller passed: an arrow function's
             // is the function's around it; a closure's captures come
             // first in its frame, so its `arguments` is the rest.
@@ -502,7 +502,10 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             Symbol::Local { func, slot } if func == self.at => Ok(Some(self.own(slot))),
             Symbol::Local { func, slot } => match self.captures.iter().position(|&c| c == (func, slot)) {
                 Some(p) => Ok(Some(LocalId::new(p as u16))),
-                None => Err(why(at, format!("`{name}`, a local of a function around this one"))),
+                None => Err(why(
+                    at,
+                    format!("reads `{name}`, a local of a function around this one, which this function is not given"),
+                )),
             },
             _ => Ok(None),
         }
@@ -763,7 +766,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                     Some(h) => {
                         let slot = self
                             .local_of(&h.param.name, h.param.span)?
-                            .ok_or_else(|| why(h.param.span, "a `catch` name that is not a local"))?;
+                            .ok_or_else(|| why(h.param.span, "has a `catch` name that is not a local"))?;
                         Some((slot, self.body(&h.body)?))
                     }
                     None => None,
@@ -774,7 +777,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 };
                 out.push(IrStmt::Try { body, catch, finally });
             }
-            StmtKind::Error => return Err(why(s.span, "a statement that does not parse")),
+            StmtKind::Error => return Err(why(s.span, "has a statement that does not parse")),
         }
         Ok(())
     }
@@ -946,7 +949,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
             }
             ExprKind::Member { .. } => match self.model().flattened_name(target) {
                 Some(flat) => self.global_place(&flat, at),
-                None => Err(why(at, "a property as a simple place")),
+                None => Err(why(at, "assigns a property as a simple place")),
             },
             _ => Err(why(at, "assigns something that is not a name")),
         }
@@ -1153,7 +1156,11 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 Ir::Object(props.iter().map(|p| p.key.name.clone()).zip(vals).collect())
             }
             ExprKind::Function(f) => {
-                let id = self.model().scopes.id_of(f).ok_or_else(|| why(at, "a function expression"))?;
+                let id = self
+                    .model()
+                    .scopes
+                    .id_of(f)
+                    .ok_or_else(|| why(at, "has a function expression postc cannot place"))?;
                 self.closure(id, at)?
             }
             ExprKind::Member { object, property } => {
@@ -1171,7 +1178,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 {
                     return names::math_constant(&property.name)
                         .map(Ir::Number)
-                        .ok_or_else(|| why(at, format!("`Math.{}`", property.name)));
+                        .ok_or_else(|| why(at, format!("reads `Math.{}`, which postc does not have", property.name)));
                 }
                 if let ExprKind::Ident(o) = &object.kind
                     && o == "Number"
@@ -1352,7 +1359,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                 }
                 self.expr(last, pre)?
             }
-            ExprKind::Error => return Err(why(at, "an expression that does not parse")),
+            ExprKind::Error => return Err(why(at, "has an expression that does not parse")),
         })
     }
 
@@ -1641,7 +1648,8 @@ fn math(name: &str, a: Vec<Ir>, at: Span) -> R<Ir> {
         ("max", true) => return Ok(Ir::Number(f64::NEG_INFINITY)),
         _ => {}
     }
-    let (b, arity) = builtins::math(name).ok_or_else(|| why(at, format!("`Math.{name}`")))?;
+    let (b, arity) =
+        builtins::math(name).ok_or_else(|| why(at, format!("calls `Math.{name}`, which postc does not run")))?;
     let arity = arity.unwrap_or(a.len());
     let mut a: Vec<Ir> = a.into_iter().map(to_number).collect();
     a.resize(arity.max(a.len()), Ir::Number(f64::NAN));
