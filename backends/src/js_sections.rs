@@ -523,27 +523,8 @@ impl Printer<'_> {
         if extension.is_empty() {
             extension = "nc".into();
         }
-        self.out.push_str(&format!(
-            r#"description = {description};
-vendor = "Vectric";
-legal = "";
-certificationLevel = 2;
-minimumRevision = 45702;
-extension = {extension};
-capabilities = CAPABILITY_MILLING;
-tolerance = spatial(0.002, MM);
-allowedCircularPlanes = (1 << PLANE_XY) | (1 << PLANE_ZX) | (1 << PLANE_YZ);
-allowHelicalMoves = true;
-minimumChordLength = 0;
-minimumCircularRadius = 0;
-maximumCircularRadius = 1e300;
-minimumCircularSweep = 0;
-maximumCircularSweep = 2 * Math.PI;
-
-"#,
-            description = js_string(&name),
-            extension = js_string(&extension),
-        ));
+        self.out.push_str(&fusion_settings(&name, "Vectric", &extension));
+        self.out.push('\n');
         // A Windows-1252 post's text is written in that code page, as
         // Vectric writes the post's own bytes.
         if post.info.text_encoding == TextEncoding::Windows1252 {
@@ -1720,6 +1701,34 @@ function xyOriginOf(stock) {
     return x == "" || y == "" || x == "centre" || y == "centre" ? "" : y + " " + x;
 }
 "#;
+
+/// The settings of a `.cps` post converted from another dialect: what it
+/// is, a milling post, and Fusion asked for every arc whole (every plane,
+/// helices, no smallest radius, chord or sweep, a full turn the largest
+/// sweep), so that the post itself cuts an arc as its source's engine does.
+pub(crate) fn fusion_settings(description: &str, vendor: &str, extension: &str) -> String {
+    format!(
+        r#"description = {description};
+vendor = {vendor};
+legal = "";
+certificationLevel = 2;
+minimumRevision = 45702;
+extension = {extension};
+capabilities = CAPABILITY_MILLING;
+tolerance = spatial(0.002, MM);
+allowedCircularPlanes = (1 << PLANE_XY) | (1 << PLANE_ZX) | (1 << PLANE_YZ);
+allowHelicalMoves = true;
+minimumChordLength = 0;
+minimumCircularRadius = 0;
+maximumCircularRadius = 1e300;
+minimumCircularSweep = 0;
+maximumCircularSweep = 2 * Math.PI;
+"#,
+        description = js_string(description),
+        vendor = js_string(vendor),
+        extension = js_string(extension),
+    )
+}
 
 /// The note under the conversion note of a `.cps` post.
 const FUSION_NOTE: &str = "// An Autodesk Fusion post: Fusion calls onOpen, onSection (each toolpath),

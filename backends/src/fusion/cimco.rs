@@ -19,7 +19,6 @@
 use postc_ir::{Diagnostic, Post, Units, codes};
 
 use crate::cimco::refusal;
-use crate::js_sections::js_string;
 
 /// The CNC-Calc entry points the Fusion entry points call (docs/cimco.md,
 /// "Call order"); `cnc_calc.js` reads each through `cncCalc.entry`.
@@ -112,10 +111,9 @@ pub(super) fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagn
         _ => post.options.arc_tolerance,
     };
     let text = TEMPLATE
+        .replace("{{SETTINGS}}", &crate::js_sections::fusion_settings(&name, "CIMCO", extension))
         .replace("{{TOLERANCE}}", &crate::js_sections::number(tolerance))
         .replace("{{UNDEFINED}}", &undefined)
-        .replace("{{DESCRIPTION}}", &js_string(&name))
-        .replace("{{EXTENSION}}", &js_string(extension))
         .replace("{{UNITS}}", units)
         .replace("{{SCALE}}", scale)
         .replace("{{SOURCE}}", body.trim_end());

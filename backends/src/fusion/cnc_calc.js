@@ -9,25 +9,10 @@
 // onComment, onToolpathEnd and onClose (docs/convert.md, "CIMCO posts as
 // Fusion posts").
 
-description = {{DESCRIPTION}};
-vendor = "CIMCO";
-legal = "";
-certificationLevel = 2;
-minimumRevision = 45702;
-extension = {{EXTENSION}};
-capabilities = CAPABILITY_MILLING;
-tolerance = spatial(0.002, MM);
 // Fusion hands every arc whole: the post gets an arc in XY (split only
 // as useRadius asks, below) and one in another plane as chords, as
 // CNC-Calc does.
-allowedCircularPlanes = (1 << PLANE_XY) | (1 << PLANE_ZX) | (1 << PLANE_YZ);
-allowHelicalMoves = true;
-minimumChordLength = 0;
-minimumCircularRadius = 0;
-maximumCircularRadius = 1e300;
-minimumCircularSweep = 0;
-maximumCircularSweep = 2 * Math.PI;
-
+{{SETTINGS}}
 // The CNC-Calc post and its host.
 var cncCalc = (function () {
     // The settings a CNC-Calc post may give without `var`: the post's own
