@@ -253,6 +253,13 @@ fn uses_this(f: &Function) -> bool {
     v.0
 }
 
+/// The function `func` declares under `name` (`function name() {...}` in
+/// its body), if it declares one.
+fn declared_in(model: &Model, func: FnId, name: &str) -> Option<FnId> {
+    let decl = model.scopes.funcs[func].nested.iter().find(|f| f.name.as_ref().is_some_and(|n| n.name == name))?;
+    model.scopes.id_of(decl)
+}
+
 /// The locals of enclosing functions that nested function `id` (or a
 /// function nested in it) reads or writes, each once, in order of first use.
 /// A function declared in an enclosing function and named here is made
@@ -304,11 +311,8 @@ fn captures(model: &Model, id: FnId) -> Vec<(FnId, usize)> {
         /// A function `func` declares under `name`: what it captures from
         /// functions around the root, captured as well.
         fn declared(&mut self, func: FnId, name: &str) {
-            let info = &self.model.scopes.funcs[func];
-            let Some(decl) = info.nested.iter().find(|f| f.name.as_ref().is_some_and(|n| n.name == name)) else {
-                return;
-            };
-            let Some(id) = self.model.scopes.id_of(decl) else { return };
+            let Some(id) = declared_in(self.model, func, name) else { return };
+            let Some(decl) = self.model.scopes.funcs[id].func else { return };
             if id == self.root || self.walked.contains(&id) {
                 return;
             }
@@ -518,9 +522,7 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
         if slot == usize::MAX {
             return None;
         }
-        let info = &self.model().scopes.funcs[func];
-        let decl = info.nested.iter().find(|f| f.name.as_ref().is_some_and(|n| n.name == name))?;
-        self.model().scopes.id_of(decl)
+        declared_in(self.model(), func, name)
     }
 
     /// A nested function as a value: its captures read now.
