@@ -371,8 +371,8 @@ fn origin_agrees(toolpath: &Path) -> bool {
 /// their material lies.
 fn toolpaths(all: &[Job], post: &Post) -> Vec<PathBuf> {
     // A CNC-Calc post converted to Fusion cuts arcs outside XY as postc's
-    // runtime does (`cncChords`).
-    let every_plane = post.info.dialect == Dialect::Cimco;
+    // runtime does (`cncChords`); an APT-word post has CIRCLE's `Plane`.
+    let every_plane = post.info.dialect == Dialect::Cimco || post.info.dispatch == postc_ir::post::Dispatch::AptWords;
     let clock = prints(post, &[Quantity::Date, Quantity::Time]);
     let origin = prints(post, &[Quantity::XyOriginText, Quantity::ZOriginText]);
     all.iter()
@@ -712,6 +712,185 @@ fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
     assert!(tally.compared >= 5 * tally.converted, "only {} programs were compared", tally.compared);
 }
 
+/// A job of every record a converted APT-word post makes from Fusion's
+/// calls, each as Fusion hands it: spindle and coolant at each tool, a
+/// comment before a section's first move, cutter compensation on and
+/// off, an arc, a dwell, coolant off within a section, and drilling
+/// cycles of each kind, each starting its own toolpath over its first
+/// hole with the hole's top the surface (Fusion's `cycle.stock`).
+const APT_RECORDS_JOB: &str = r#"Job(units: Mm, material: (min: (x: 0, y: 0, z: -20), max: (x: 100, y: 60, z: 0)), home: (x: 0, y: 0, z: 50), safe_z: 5, file: (name: "apt_records", dir: "/jobs", extension: "nc"), notes: "APT records", product: "postc test")
+Tool(number: 3, name: "10 mm End Mill", notes: "", diameter: 10, spindle_speed: 8000, cut_feed: 900, plunge_feed: 300)
+ToolpathStart(name: "Profile", notes: "")
+SpindleOn(speed: 8000)
+Coolant(Flood)
+Comment(text: "Check (part) datum")
+Rapid(x: 0, y: 0, z: 25)
+Rapid(x: 10, y: 0, z: 5)
+Feed(x: 10, y: 0, z: -2, intent: Plunge)
+CutterComp(side: Left)
+Feed(x: 30, y: 0, z: -2)
+Arc(dir: Ccw, x: 40, y: 10, z: -2, cx: 30, cy: 10, cz: -2)
+Feed(x: 40, y: 30, z: -2, feed: 600)
+CutterComp(side: Off)
+Feed(x: 50, y: 30, z: -2)
+Dwell(seconds: 1.5)
+Comment(text: "Profile done")
+Rapid(x: 50, y: 30, z: 25)
+ToolpathEnd
+Tool(number: 5, name: "6.8 mm Drill", notes: "", diameter: 6.8, spindle_speed: 2400, cut_feed: 250, plunge_feed: 120)
+ToolpathStart(name: "Spot", notes: "")
+SpindleOn(speed: 2400)
+Coolant(Mist)
+DrillCycle(kind: Drill, retract_plane: 10, reference_plane: 2, surface: 0, depth: -8, feed: 120, dwell: 0.5)
+DrillPoint(x: 10, y: 40)
+DrillPoint(x: 20, y: 40)
+DrillEnd
+ToolpathEnd
+ToolpathStart(name: "Peck", notes: "")
+DrillCycle(kind: Deep, retract_plane: 10, reference_plane: 2, surface: 0, depth: -18, feed: 100, peck: 4)
+DrillPoint(x: 30, y: 40)
+DrillPoint(x: 40, y: 50)
+DrillEnd
+ToolpathEnd
+ToolpathStart(name: "Chip break", notes: "")
+DrillCycle(kind: ChipBreak, retract_plane: 10, reference_plane: 2, surface: 0, depth: -12, feed: 100, peck: 2)
+DrillPoint(x: 50, y: 40)
+DrillEnd
+ToolpathEnd
+ToolpathStart(name: "Bore", notes: "")
+DrillCycle(kind: Bore, retract_plane: 10, reference_plane: 2, surface: 0, depth: -15, feed: 80)
+DrillPoint(x: 70, y: 40)
+DrillPoint(x: 80, y: 40)
+DrillEnd
+Coolant(Off)
+ToolpathEnd
+End
+"#;
+
+/// Each job as the APT records of a Fusion job have it (docs/convert.md,
+/// "VcPost posts as Fusion posts"): a `SpindleOn` at the tool's speed
+/// after the `ToolpathStart` of each toolpath that follows a tool change,
+/// where the toolpath has none (the runtime calls an APT-word post's
+/// SPINDL only at spindle records; Fusion hands every section its speed,
+/// and the converted post makes the SPINDL record of each loaded tool),
+/// and the centre of an arc in XY at its start's Z where the toolpath
+/// gives none (Fusion's arcs have it there). Jobs whose sections Fusion
+/// hands otherwise are left out ([`sections_differ_from_records`],
+/// [`links_before_cycles`]).
+fn with_spindle_records(all: Vec<Job>, dir: &Path) -> Vec<Job> {
+    all.into_iter()
+        .filter(|job| !sections_differ_from_records(&job.text) && !links_before_cycles(&job.text))
+        .map(|job| {
+            if job.text.contains("SpindleOn") || job.text.contains("SpindleOff") {
+                return job;
+            }
+            let mut text = String::new();
+            let mut speed: Option<f64> = None;
+            let mut z: Option<f64> = None;
+            for line in job.text.lines() {
+                let t = line.trim_start();
+                let squeezed = t.replace(' ', "");
+                // An arc in XY with no centre Z has it at its start, as
+                // Fusion's arcs and APT's CIRCLE records have it.
+                let xy = !squeezed.contains("plane:Zx") && !squeezed.contains("plane:Yz");
+                match (t.strip_prefix("Arc(").and_then(|a| a.trim_end().strip_suffix(')')), z) {
+                    (Some(fields), Some(start)) if xy && !squeezed.contains("cz:") => {
+                        text.push_str(&format!("Arc({fields}, cz: {start})\n"));
+                    }
+                    _ => {
+                        text.push_str(line);
+                        text.push('\n');
+                    }
+                }
+                if t.starts_with("Rapid(") || t.starts_with("Feed(") || t.starts_with("Arc(") {
+                    z = field(t, "z").or(z);
+                }
+                if t.starts_with("Tool(") {
+                    speed = field(t, "spindle_speed").filter(|s| *s > 0.0);
+                } else if t.starts_with("ToolpathStart")
+                    && let Some(s) = speed.take()
+                {
+                    text.push_str(&format!("SpindleOn(speed: {s})\n"));
+                }
+            }
+            let path = dir.join(format!("{}_spindle.ron", stem(&job.path)));
+            std::fs::write(&path, &text).expect("write the toolpath");
+            Job { path, text, ..job }
+        })
+        .collect()
+}
+
+/// Whether postc's Fusion host, which the section rules drive, hands a
+/// job otherwise than its APT records say (docs/convert.md, "VcPost posts
+/// as Fusion posts"): a `Tool` of the tool already loaded (a LOADTL record
+/// that Fusion, whose sections only change tools, never makes), or a feed
+/// straight down that the toolpath does not mark as a plunge (the section
+/// rules feed it at the plunge feed; the APT records at the cutting feed).
+fn sections_differ_from_records(text: &str) -> bool {
+    let mut tool: Option<f64> = None;
+    let mut at: [Option<f64>; 3] = [None; 3];
+    for line in text.lines().map(str::trim_start) {
+        if line.starts_with("Tool(") {
+            let number = field(line, "number");
+            if number.is_some() && number == tool {
+                return true;
+            }
+            tool = number;
+        } else if line.starts_with("Rapid(") || line.starts_with("Feed(") || line.starts_with("Arc(") {
+            let to = [field(line, "x").or(at[0]), field(line, "y").or(at[1]), field(line, "z").or(at[2])];
+            let down = to[0] == at[0] && to[1] == at[1] && matches!((to[2], at[2]), (Some(a), Some(b)) if a < b);
+            let squeezed = line.replace(' ', "");
+            if line.starts_with("Feed(") && down && !squeezed.contains("intent:Plunge") {
+                return true;
+            }
+            at = to;
+        }
+    }
+    false
+}
+
+/// VcPost milling posts (one Sub per APT word) and the `postp`
+/// controllers as VcPost text, and each as its IR in RON, converted to
+/// Fusion: the probing and composites posts are refused (CV001); every
+/// other converts, and Node.js running it prints what postc prints for
+/// the source over every job, each with its spindle records.
+#[test]
+fn node_runs_vcpost_posts_converted_to_fusion_as_postc_posts_their_sources() {
+    if node_or_skip("convert_fusion").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut all = with_spindle_records(all_toolpaths(dir.path()), dir.path());
+    let records = dir.path().join("apt_records.ron");
+    std::fs::write(&records, APT_RECORDS_JOB).expect("write the job");
+    all.push(Job { path: records, text: APT_RECORDS_JOB.to_string(), dateless: false, dated: false });
+    let mut failures = Vec::new();
+    let mut posts = files(&corpus().join("posts/vcpost"), "VcPost");
+    posts.extend(files(&corpus().join("posts/postp"), "VcPost"));
+    let rons: Vec<PathBuf> = posts
+        .iter()
+        .map(|p| {
+            let ron = postc_backends::convert(&support::compile_file(p), Target::Ron).expect("RON holds every post");
+            let to = dir.path().join(format!("{}.ron", stem(p)));
+            std::fs::write(&to, ron).expect("write the RON post");
+            to
+        })
+        .collect();
+    posts.extend(rons);
+    let tally = judge(&posts, dir.path(), &all, &mut failures);
+    eprintln!("{}", tally.show("corpus/posts/vcpost and postp, as VcPost and as RON", posts.len()));
+    assert_eq!(
+        tally.refused.get("CV001"),
+        Some(&8),
+        "the probing and composites posts: {}",
+        tally.show("VcPost", posts.len())
+    );
+    assert_eq!(tally.converted, posts.len() - 8, "{}", tally.show("VcPost", posts.len()));
+    assert!(failures.is_empty(), "{} failures:\n\n{}", failures.len(), failures.join("\n\n"));
+    assert_eq!(tally.identical_posts, tally.converted, "{}", tally.show("VcPost", posts.len()));
+    assert!(tally.compared >= 5 * tally.converted, "only {} programs were compared", tally.compared);
+}
+
 /// The command line: `--to fusion` writes a `.cps` post with Fusion's
 /// entry points; a value Fusion never hands is refused at its line and
 /// column and nothing is written; a post of another dialect is refused.
@@ -832,8 +1011,45 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
         err.contains("`--set homePositionX` is not a setting") && err.contains("`--set property.homePositionX=1`"),
         "{err}"
     );
-    let o = postc(&["convert", "corpus/posts/vcpost/fanuc_mill.VcPost", "--to", "fusion"]);
+    // A VcPost section post (postc's extension) has no Fusion form yet.
+    let o = postc(&["convert", "corpus/converted/vcpost/vectric/gcode_mm.VcPost", "--to", "fusion"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("error[CV012]"), "{err}");
+    assert!(err.contains("error[CV012]") && err.contains("driven by sections"), "{err}");
+    // A VcPost milling post converts: its Subs in a scope of their own,
+    // called through the APT records by Fusion's entry points; the Subs
+    // of records Fusion never makes are left out with a warning.
+    let fanuc = dir.path().join("fanuc_mill.cps");
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vcpost/fanuc_mill.VcPost",
+        "--to",
+        "fusion",
+        "-o",
+        &fanuc.display().to_string(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        err.contains("warning[CV008]") && err.contains("`Sub INSERT` is left out: Fusion calls no function"),
+        "{err}"
+    );
+    let text = std::fs::read_to_string(&fanuc).expect("the converted post");
+    for entry in ["var vcPost = (function () {", "function GOTO() {", "function onSection() {", "vcPost.loadtl("] {
+        assert!(text.contains(entry), "{entry}\n{text}");
+    }
+    // A probing post is refused at each table row, and nothing is written.
+    let probe = dir.path().join("probe.cps");
+    let o = postc(&[
+        "convert",
+        "corpus/posts/vcpost/renishaw_probe.VcPost",
+        "--to",
+        "fusion",
+        "-o",
+        &probe.display().to_string(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[CV001]") && err.contains("which Fusion has no call for"), "{err}");
+    assert!(!probe.exists(), "a refused conversion writes nothing");
 }

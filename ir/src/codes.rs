@@ -1563,11 +1563,11 @@ declare_codes! {
     /// prints finer feeds prints the engine's tenth.
     CV011: Warning, "the target engine hands a value with less precision than the converted post prints it (the feed, to a tenth)",
         fix = "Print the feed to a tenth or coarser, or check that the machine's feeds are given to a tenth.";
-    /// The target has no converter for the post's dialect yet: `--to fusion` writes `.cps` posts
-    /// from Vectric and CIMCO posts, and a Fusion post as its file is written; a Fusion post the
-    /// IR does not keep as written (a RON post, a file that is not UTF-8) is refused too. Nothing
-    /// is written.
-    CV012: Error, "the post's dialect does not convert to the target yet (`--to fusion` converts Vectric and CIMCO posts, and Fusion posts as written)",
+    /// The target has no converter for the post's form yet: `--to fusion` writes `.cps` posts
+    /// from Vectric posts, CIMCO posts and VcPost posts driven by APT words, and a Fusion post as
+    /// its file is written; a VcPost section post, and a Fusion post the IR does not keep as
+    /// written (a RON post, a file that is not UTF-8), are refused. Nothing is written.
+    CV012: Error, "the post's form does not convert to the target yet (`--to fusion` converts Vectric posts, CIMCO posts, VcPost posts driven by APT words, and Fusion posts as written)",
         fix = "Convert the post to Vectric first (`postc convert POST --to vectric`), then to Fusion.";
     /// The target engine hands the converted post a value other than the one postc hands the
     /// source: a drilling cycle's name, which CNC-Calc hands (`drillHeader.name`, "Drilling

@@ -21,7 +21,7 @@ pub enum TargetArg {
     Vcpost,
     /// A CIMCO CNC-Calc JavaScript post (a CIMCO post as itself; another post driven by the kind of move as a section post).
     Cimco,
-    /// An Autodesk Fusion .cps post that Fusion runs (from a Vectric post: onSection per toolpath, the Vectric rules as JavaScript; from a CIMCO post: the CNC-Calc post as written, called in CNC-Calc's order; a Fusion post as it is written).
+    /// An Autodesk Fusion .cps post that Fusion runs (from a Vectric post: onSection per toolpath, the Vectric rules as JavaScript; from a CIMCO post: the CNC-Calc post as written, called in CNC-Calc's order; from a VcPost milling post: its Subs, called through the APT records of Fusion's calls; a Fusion post as it is written).
     Fusion,
     /// The post's IR as RON (postc post reads it back).
     Ron,

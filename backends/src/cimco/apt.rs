@@ -29,6 +29,14 @@
 //! engine writes no empty line) are `CV010`; BASIC code the printer has
 //! no JavaScript for is `CV002`; posts driven by application calls (probe
 //! tables, composites) and by sections are `CV001`.
+//!
+//! The same Subs print for Fusion ([`Host::Fusion`], `crate::fusion`'s
+//! APT-word form) as the body of a function whose value is an object of
+//! one adapter function per APT record the runtime makes (PARTNO, LOADTL,
+//! TOOLPATH, SPINDL, COOLNT, CUTCOM, RAPID, GOTO, FEDRAT, CIRCLE, DELAY,
+//! PPRINT, CYCLE, FINI): Fusion hands the values CNC-Calc does not, so
+//! nothing is refused for them, and an empty `Out` line is Fusion's
+//! empty line.
 
 use std::collections::{BTreeSet, HashMap};
 
@@ -45,6 +53,40 @@ use super::refusal;
 
 /// The APT words whose Subs CNC-Calc's entry points reach.
 const CALLED: &[&str] = &["PARTNO", "RAPID", "GOTO", "FEDRAT", "CIRCLE", "FINI"];
+
+/// The APT words whose Subs Fusion's entry points reach
+/// (`crate::fusion`'s APT-word form).
+const FUSION_CALLED: &[&str] = &[
+    "PARTNO", "LOADTL", "TOOLPATH", "SPINDL", "COOLNT", "CUTCOM", "RAPID", "GOTO", "FEDRAT", "CIRCLE", "DELAY",
+    "PPRINT", "CYCLE", "FINI",
+];
+
+/// The engine whose entry points the printed post's adapter answers.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Host {
+    /// CNC-Calc: the post is the whole program, its entry points the CNC-Calc manual's.
+    CncCalc,
+    /// Autodesk Fusion: the Subs and the adapter are the body of a function
+    /// whose value is the adapter's object of record calls
+    /// (`crate::fusion`'s APT-word form calls them from Fusion's entry points).
+    Fusion,
+}
+
+impl Host {
+    fn called(self) -> &'static [&'static str] {
+        match self {
+            Host::CncCalc => CALLED,
+            Host::Fusion => FUSION_CALLED,
+        }
+    }
+
+    fn engine(self) -> &'static str {
+        match self {
+            Host::CncCalc => "CNC-Calc",
+            Host::Fusion => "Fusion",
+        }
+    }
+}
 
 /// The names the printed post gives a meaning of its own.
 const OWN: &[&str] = &[
@@ -96,13 +138,48 @@ const OWN: &[&str] = &[
     "String",
     "Number",
     "parseFloat",
+    // The Fusion form's adapter (`fusion_adapter`).
+    "aptCX",
+    "aptCY",
+    "aptCZ",
+    "aptCcw",
+    "aptD",
+    "aptDepth",
+    "aptF",
+    "aptFeedTo",
+    "aptG",
+    "aptH",
+    "aptMetric",
+    "aptMinor",
+    "aptName",
+    "aptP",
+    "aptPlane",
+    "aptQ",
+    "aptR",
+    "aptS",
+    "aptSeconds",
+    "aptT",
+    "aptTake",
+    "aptText",
+    "aptToX",
+    "aptToY",
+    "aptToZ",
+    "aptTop",
+    "vcPost",
 ];
 
 /// Prints an APT-word post as a CNC-Calc post, with the conversion's
 /// warnings, or every reason it cannot be one.
 pub(crate) fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
+    print_for(post, Host::CncCalc)
+}
+
+/// Prints an APT-word post for `host`: for CNC-Calc the whole post, for
+/// Fusion the body of the function that makes the adapter's object.
+pub(crate) fn print_for(post: &Post, host: Host) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>> {
     let mut p = Printer {
         post,
+        host,
         out: String::new(),
         errors: Vec::new(),
         warnings: Vec::new(),
@@ -118,17 +195,23 @@ pub(crate) fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagn
         return Err(p.errors);
     }
     p.name_everything();
-    p.check_values();
+    if host == Host::CncCalc {
+        p.check_values();
+    }
     p.header();
     p.registers();
     p.globals();
     p.functions();
-    p.adapter();
+    match host {
+        Host::CncCalc => p.adapter(),
+        Host::Fusion => p.fusion_adapter(),
+    }
     if p.errors.is_empty() { Ok((p.out.into_bytes(), p.warnings)) } else { Err(p.errors) }
 }
 
 struct Printer<'p> {
     post: &'p Post,
+    host: Host,
     out: String,
     errors: Vec<Diagnostic>,
     warnings: Vec<Diagnostic>,
@@ -154,7 +237,7 @@ impl Printer<'_> {
 
     /// Code the printer has no JavaScript for, at the statement's place.
     fn cannot(&mut self, what: &str) {
-        let message = format!("{} uses {what}, which the CNC-Calc post cannot say", self.within);
+        let message = format!("{} uses {what}, which the {} post cannot say", self.within, self.host.engine());
         self.refuse(codes::CV002.code, self.at, message, "the converted post has BASIC's statements and operators");
     }
 
@@ -164,7 +247,7 @@ impl Printer<'_> {
             self.refuse(
                 codes::CV001.code,
                 None,
-                "this post is driven by sections, which this form of CNC-Calc post is not".into(),
+                format!("this post is driven by sections, which this form of {} post is not", self.host.engine()),
                 "",
             );
             return;
@@ -177,8 +260,12 @@ impl Printer<'_> {
                 self.refuse(
                     codes::CV001.code,
                     span,
-                    format!("`{}` is a #{k} row of a probe-cycle table, which CNC-Calc has no call for", sig.name),
-                    "CNC-Calc calls a post per move of an operation, not per row of a table",
+                    format!(
+                        "`{}` is a #{k} row of a probe-cycle table, which {} has no call for",
+                        sig.name,
+                        self.host.engine()
+                    ),
+                    "the engine calls a post per move of an operation, not per row of a table",
                 );
             }
         }
@@ -190,8 +277,8 @@ impl Printer<'_> {
                 self.refuse(
                     codes::CV001.code,
                     h.span,
-                    format!("`{word}` is a composites routine, which CNC-Calc has no call for"),
-                    "CNC-Calc calls a post per move of an operation, not per tow-placement routine",
+                    format!("`{word}` is a composites routine, which {} has no call for", self.host.engine()),
+                    "the engine calls a post per move of an operation, not per tow-placement routine",
                 );
             }
         }
@@ -219,7 +306,7 @@ impl Printer<'_> {
                 self.refuse(
                     codes::CV004.code,
                     None,
-                    format!("the post sets {what}, which the CNC-Calc post does not carry"),
+                    format!("the post sets {what}, which the {} post does not carry", self.host.engine()),
                     "",
                 );
             }
@@ -240,16 +327,24 @@ impl Printer<'_> {
         }
         for h in &post.handlers {
             let HandlerKey::Word(word) = &h.key else { continue };
-            if !CALLED.contains(&word.as_str()) {
+            if !self.host.called().contains(&word.as_str()) {
+                let note = match self.host {
+                    Host::CncCalc => {
+                        "the CNC-Calc manual's entry points are onOpen, onLinear, onCircular, the drilling functions and onClose: the converted post prints as its source for a job of moves"
+                    }
+                    Host::Fusion => {
+                        "Fusion's entry points make PARTNO, LOADTL, TOOLPATH, SPINDL, COOLNT, CUTCOM, RAPID, GOTO, FEDRAT, CIRCLE, DELAY, PPRINT, CYCLE and FINI records (docs/convert.md, \"VcPost posts as Fusion posts\")"
+                    }
+                };
                 self.warnings.push(
                     Diagnostic::warning(
                         codes::CV008.code,
-                        format!("`Sub {word}` is left out: CNC-Calc calls no function for {word} records"),
+                        format!(
+                            "`Sub {word}` is left out: {} calls no function for {word} records",
+                            self.host.engine()
+                        ),
                     )
-                    .note(
-                        "the CNC-Calc manual's entry points are onOpen, onLinear, onCircular, the drilling functions and onClose: the converted post prints as its source for a job of moves"
-                            .to_string(),
-                    ),
+                    .note(note.to_string()),
                 );
                 if let Some(span) = h.span.or_else(|| self.handler_function(h).and_then(|f| post.functions[f].span)) {
                     let w = self.warnings.pop().expect("pushed");
@@ -465,8 +560,10 @@ impl Printer<'_> {
 
     fn header(&mut self) {
         let post = self.post;
-        self.out.push_str(&super::header(post));
-        self.out.push_str(NOTE);
+        if self.host == Host::CncCalc {
+            self.out.push_str(&super::header(post));
+            self.out.push_str(NOTE);
+        }
         let linebreak = String::from_utf8_lossy(&post.options.line_ending).into_owned();
         self.line(0, &format!("var linebreak = {};", js_string(&linebreak)));
         self.out.push('\n');
@@ -569,7 +666,7 @@ impl Printer<'_> {
                 if span.is_some() {
                     self.at = *span;
                 }
-                if pieces.iter().all(|p| matches!(p, Piece::Text(t) if t.is_empty())) {
+                if self.host == Host::CncCalc && pieces.iter().all(|p| matches!(p, Piece::Text(t) if t.is_empty())) {
                     self.refuse(
                         codes::CV010.code,
                         self.at,
@@ -921,6 +1018,190 @@ function aptTake() {{
     aptOut = "";
     return text;
 }}
+"#
+        ));
+    }
+}
+
+impl Printer<'_> {
+    /// The adapter of the Fusion form: one function per APT record the
+    /// runtime makes (`runtime/src/apt_words.rs`), each setting what its
+    /// record sets, in the runtime's order, calling the record's Sub and
+    /// returning the lines the Subs wrote; the object of them is the value
+    /// of the function the printed code is the body of.
+    fn fusion_adapter(&mut self) {
+        let post = self.post;
+        let mut subs: HashMap<&str, String> = HashMap::new();
+        for h in &post.handlers {
+            if let HandlerKey::Word(w) = &h.key
+                && let Some(f) = self.handler_function(h)
+                && let Some(c) = FUSION_CALLED.iter().find(|c| **c == w.as_str())
+            {
+                subs.insert(c, self.functions[f].clone());
+            }
+        }
+        let call = |word: &str| subs.get(word).map(|f| format!("{f}();")).unwrap_or_default();
+        let set = |name: &str, value: &str| match self.slot(name) {
+            Some(s) => format!("{s}{value});"),
+            None => String::new(),
+        };
+        // Every record sets `Word`, `Minor` and `Text`, then calls its Sub.
+        let record = |word: &str, minor: &str, text: &str| {
+            [set("WORD", &js_string(word)), set("MINOR", minor), set("TEXT", text), call(word)]
+        };
+        let body = |parts: Vec<String>| {
+            let lines: Vec<String> = parts.into_iter().filter(|s| !s.is_empty()).collect();
+            lines.iter().map(|l| format!("        {l}\n")).collect::<String>()
+        };
+        let with = |mut sets: Vec<String>, word: &str, minor: &str, text: &str| {
+            sets.extend(record(word, minor, text));
+            body(sets)
+        };
+        let xyz = |x: &str, y: &str, z: &str, g: &str| vec![set("X", x), set("Y", y), set("Z", z), set("G", g)];
+        let open = with(vec![set("METRIC", "aptMetric")], "PARTNO", "\"\"", "aptName");
+        let loadtl = with(vec![set("T", "aptT"), set("H", "aptH"), set("D", "aptD")], "LOADTL", "\"\"", "aptName");
+        let toolpath = with(Vec::new(), "TOOLPATH", "\"\"", "aptName");
+        let spindle_on = with(vec![set("S", "aptS")], "SPINDL", "aptCcw ? \"CCLW\" : \"CLW\"", "\"\"");
+        let spindle_off = with(Vec::new(), "SPINDL", "\"OFF\"", "\"\"");
+        let coolant = with(Vec::new(), "COOLNT", "aptMinor", "\"\"");
+        let cutcom = with(vec![set("D", "aptD")], "CUTCOM", "aptMinor", "\"\"");
+        let rapid = {
+            let mut parts = vec![set("G", "0")];
+            parts.extend(record("RAPID", "\"\"", "\"\""));
+            parts.extend(xyz("aptToX", "aptToY", "aptToZ", "0"));
+            parts.extend(record("GOTO", "\"\"", "\"\""));
+            body(parts)
+        };
+        let feed = with(Vec::new(), "FEDRAT", "\"\"", "\"\"");
+        let goto = with(xyz("aptToX", "aptToY", "aptToZ", "1"), "GOTO", "\"\"", "\"\"");
+        let circle = with(
+            vec![
+                set("X", "aptToX"),
+                set("Y", "aptToY"),
+                set("Z", "aptToZ"),
+                set("G", "aptG"),
+                set("PLANE", "aptPlane"),
+                set("I", "aptCX - aptX"),
+                set("J", "aptCY - aptY"),
+                set("K", "aptCZ - aptZ"),
+                set("CX", "aptCX"),
+                set("CY", "aptCY"),
+                set("CZ", "aptCZ"),
+                set("R", "aptR"),
+            ],
+            "CIRCLE",
+            "\"\"",
+            "\"\"",
+        );
+        let delay = with(vec![set("R", "aptSeconds")], "DELAY", "\"\"", "\"\"");
+        let pprint = with(Vec::new(), "PPRINT", "\"\"", "aptText");
+        let cycle = with(
+            vec![
+                set("X", "aptToX"),
+                set("Y", "aptToY"),
+                set("Z", "aptDepth"),
+                set("R", "aptR"),
+                set("Q", "aptQ"),
+                set("P", "aptP"),
+                set("F", "aptF"),
+            ],
+            "CYCLE",
+            "aptMinor",
+            "\"\"",
+        );
+        let cycle_off = with(Vec::new(), "CYCLE", "\"OFF\"", "\"\"");
+        let fini = with(Vec::new(), "FINI", "\"\"", "\"\"");
+        let feed_f = set("F", "aptF");
+        self.out.push_str(&format!(
+            r#"// The adapter: each APT record of the source's engine, setting what the
+// record sets and calling its Sub; each gives the lines the Subs wrote.
+var aptOut = "";
+var aptX = 0;
+var aptY = 0;
+var aptZ = 0;
+var aptFeed = null;
+
+function aptTake() {{
+    var text = aptOut;
+    aptOut = "";
+    return text;
+}}
+
+// The feed of a move: FEDRAT when it changed.
+function aptFeedTo(aptF) {{
+    {feed_f}
+    if (aptFeed !== aptF) {{
+        aptFeed = aptF;
+{feed}    }}
+}}
+
+return {{
+    open: function (aptName, aptMetric) {{
+{open}        return aptTake();
+    }},
+    loadtl: function (aptT, aptH, aptD, aptName) {{
+{loadtl}        return aptTake();
+    }},
+    toolpath: function (aptName) {{
+{toolpath}        return aptTake();
+    }},
+    spindleOn: function (aptS, aptCcw) {{
+{spindle_on}        return aptTake();
+    }},
+    spindleOff: function () {{
+{spindle_off}        return aptTake();
+    }},
+    coolant: function (aptMinor) {{
+{coolant}        return aptTake();
+    }},
+    cutcom: function (aptMinor, aptD) {{
+{cutcom}        return aptTake();
+    }},
+    rapid: function (aptToX, aptToY, aptToZ) {{
+{rapid}        aptX = aptToX;
+        aptY = aptToY;
+        aptZ = aptToZ;
+        return aptTake();
+    }},
+    linear: function (aptToX, aptToY, aptToZ, aptF) {{
+        aptFeedTo(aptF);
+{goto}        aptX = aptToX;
+        aptY = aptToY;
+        aptZ = aptToZ;
+        return aptTake();
+    }},
+    circle: function (aptToX, aptToY, aptToZ, aptCX, aptCY, aptCZ, aptG, aptPlane, aptR, aptF) {{
+        aptFeedTo(aptF);
+{circle}        aptX = aptToX;
+        aptY = aptToY;
+        aptZ = aptToZ;
+        return aptTake();
+    }},
+    delay: function (aptSeconds) {{
+{delay}        return aptTake();
+    }},
+    pprint: function (aptText) {{
+{pprint}        return aptTake();
+    }},
+    cycle: function (aptMinor, aptToX, aptToY, aptTop, aptDepth, aptR, aptQ, aptP, aptF) {{
+{cycle}        aptX = aptToX;
+        aptY = aptToY;
+        aptZ = aptTop;
+        return aptTake();
+    }},
+    hole: function (aptToX, aptToY, aptToZ) {{
+{goto}        aptX = aptToX;
+        aptY = aptToY;
+        aptZ = aptToZ;
+        return aptTake();
+    }},
+    cycleOff: function () {{
+{cycle_off}        return aptTake();
+    }},
+    fini: function () {{
+{fini}        return aptTake();
+    }}
+}};
 "#
         ));
     }

@@ -16,7 +16,7 @@
 //!
 //! Everything else is refused with a diagnostic per reason (`docs/convert.md`).
 
-mod apt;
+pub(crate) mod apt;
 pub(crate) mod body;
 mod check;
 mod code;

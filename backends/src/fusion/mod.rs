@@ -7,9 +7,12 @@
 //! own, called by Fusion's entry points in CNC-Calc's order ([`cimco`]).
 //! A Fusion post prints as its file was written, after the conversion
 //! note, when the Fusion frontend reads that text back as the same post
-//! ([`crate::as_written`]). Posts of the other dialects are refused
-//! (`CV012`) until their forms are written.
+//! ([`crate::as_written`]). A post driven by APT words (a VcPost milling
+//! post) prints its Subs called by Fusion's entry points through the APT
+//! records postc's runtime makes ([`apt`]). Other posts (a VcPost section
+//! post) are refused (`CV012`).
 
+mod apt;
 mod cimco;
 
 use postc_ir::{Diagnostic, Dialect, Post, codes};
@@ -34,12 +37,15 @@ pub fn print(post: &Post) -> Result<(Vec<u8>, Vec<Diagnostic>), Vec<Diagnostic>>
     if post.info.dialect == Dialect::Cimco && !post.functions.is_empty() {
         return cimco::print(post);
     }
+    if post.info.dispatch == postc_ir::post::Dispatch::AptWords {
+        return apt::print(post);
+    }
     if post.info.dialect != Dialect::Vectric {
         return Err(vec![crate::cimco::refusal(
             codes::CV012.code,
             post.info.span,
             format!(
-                "a {} post does not convert to Fusion yet: only Vectric, CIMCO and Fusion posts do",
+                "a {} post driven by sections does not convert to Fusion yet: Vectric, CIMCO, APT-word (VcPost milling) and Fusion posts do",
                 crate::dialect_name(post.info.dialect)
             ),
             "docs/convert.md, \"Fusion posts\"",
