@@ -639,6 +639,21 @@ fn cimco_toolpaths(dir: &Path) -> Vec<Job> {
     out
 }
 
+/// The posts, then each one's IR as RON (`--to ron`), written in `dir`.
+fn with_their_ron(mut posts: Vec<PathBuf>, dir: &Path) -> Vec<PathBuf> {
+    let rons: Vec<PathBuf> = posts
+        .iter()
+        .map(|p| {
+            let ron = postc_backends::convert(&support::compile_file(p), Target::Ron).expect("RON holds every post");
+            let to = dir.join(format!("{}.ron", stem(p)));
+            std::fs::write(&to, ron).expect("write the RON post");
+            to
+        })
+        .collect();
+    posts.extend(rons);
+    posts
+}
+
 /// Whether Fusion hands a converted CNC-Calc post a move CNC-Calc does
 /// not: a drilling cycle within a toolpath that starts with the tool
 /// elsewhere than over its first hole at the clearance plane, where
@@ -693,16 +708,7 @@ fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
     let mut posts = files(&corpus().join("posts/cimco"), "js");
     posts.extend(files(&corpus().join("posts/cimco-styles"), "js"));
     // Each as its IR in RON too, which converts as the JavaScript does.
-    let rons: Vec<PathBuf> = posts
-        .iter()
-        .map(|p| {
-            let ron = postc_backends::convert(&support::compile_file(p), Target::Ron).expect("RON holds every post");
-            let to = dir.path().join(format!("{}.ron", stem(p)));
-            std::fs::write(&to, ron).expect("write the RON post");
-            to
-        })
-        .collect();
-    posts.extend(rons);
+    let posts = with_their_ron(posts, dir.path());
     let tally = judge(&posts, dir.path(), &all, &mut failures);
     eprintln!("{}", tally.show("corpus/posts/cimco and cimco-styles, as JavaScript and as RON", posts.len()));
     assert_eq!(tally.converted, posts.len() - 2, "every milling post converts: {}", tally.show("CIMCO", posts.len()));
@@ -867,16 +873,7 @@ fn node_runs_vcpost_posts_converted_to_fusion_as_postc_posts_their_sources() {
     let mut failures = Vec::new();
     let mut posts = files(&corpus().join("posts/vcpost"), "VcPost");
     posts.extend(files(&corpus().join("posts/postp"), "VcPost"));
-    let rons: Vec<PathBuf> = posts
-        .iter()
-        .map(|p| {
-            let ron = postc_backends::convert(&support::compile_file(p), Target::Ron).expect("RON holds every post");
-            let to = dir.path().join(format!("{}.ron", stem(p)));
-            std::fs::write(&to, ron).expect("write the RON post");
-            to
-        })
-        .collect();
-    posts.extend(rons);
+    let posts = with_their_ron(posts, dir.path());
     let tally = judge(&posts, dir.path(), &all, &mut failures);
     eprintln!("{}", tally.show("corpus/posts/vcpost and postp, as VcPost and as RON", posts.len()));
     assert_eq!(
