@@ -751,7 +751,8 @@ impl Engine<'_> {
     #[inline]
     pub(crate) fn eval(&mut self, e: &Expr, frame: &mut Vec<Value>) -> Result<Value> {
         // The commonest values are read where the caller is, with no call:
-        // a local, a global, a constant. (`leaf` reads the same ones
+        // a local, a global, a constant (`undefined` and the booleans are
+        // arguments of most host calls). (`leaf` reads the same ones
         // borrowed; a value is made here, straight from its slot.)
         match e {
             Expr::Local(i) => Ok(frame.get(i.index()).cloned().unwrap_or_default()),
@@ -759,6 +760,8 @@ impl Engine<'_> {
             Expr::Number(n) => Ok(Value::Num(*n)),
             Expr::Text(t) => Ok(t.value().clone()),
             Expr::Null => Ok(Value::Null),
+            Expr::Undefined => Ok(Value::Undefined),
+            Expr::Bool(b) => Ok(Value::Bool(*b)),
             _ => self.eval_any(e, frame),
         }
     }
@@ -808,6 +811,17 @@ impl Engine<'_> {
                 Some(v) => v,
                 None => return Err(at(objects::reference_error(name), span.0, "not defined")),
             },
+            // `this.name` of a method's own object (an output variable's
+            // `this.prefix`): read where the object is, no reference taken;
+            // anything else `this` may be goes the general way below.
+            Expr::Member(o, k, _)
+                if matches!(**o, Expr::This)
+                    && let Expr::Text(name) = &**k
+                    && let Some(this @ Value::Object(_)) = self.this_stack.last()
+                    && let Some(v) = self.own_hinted(this, name) =>
+            {
+                v
+            }
             Expr::Member(o, k, span) if is_plain_leaf(o) && is_plain_leaf(k) => {
                 let read = {
                     let (mut to, mut tk) = (Value::Null, Value::Null);
