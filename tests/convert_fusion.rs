@@ -719,9 +719,10 @@ fn node_runs_cimco_posts_converted_to_fusion_as_postc_posts_their_sources() {
 }
 
 /// A job of every record a converted APT-word post makes from Fusion's
-/// calls, each as Fusion hands it: spindle and coolant at each tool, a
-/// comment before a section's first move, cutter compensation on and
-/// off, an arc, a dwell, coolant off within a section, and drilling
+/// calls, each as Fusion hands it: spindle (once counter-clockwise) and
+/// coolant at each tool, a comment before a section's first move, cutter
+/// compensation on and off, an arc, a dwell, coolant off within a
+/// section, and drilling
 /// cycles of each kind, each starting its own toolpath over its first
 /// hole with the hole's top the surface (Fusion's `cycle.stock`).
 const APT_RECORDS_JOB: &str = r#"Job(units: Mm, material: (min: (x: 0, y: 0, z: -20), max: (x: 100, y: 60, z: 0)), home: (x: 0, y: 0, z: 50), safe_z: 5, file: (name: "apt_records", dir: "/jobs", extension: "nc"), notes: "APT records", product: "postc test")
@@ -745,7 +746,7 @@ Rapid(x: 50, y: 30, z: 25)
 ToolpathEnd
 Tool(number: 5, name: "6.8 mm Drill", notes: "", diameter: 6.8, spindle_speed: 2400, cut_feed: 250, plunge_feed: 120)
 ToolpathStart(name: "Spot", notes: "")
-SpindleOn(speed: 2400)
+SpindleOn(speed: 2400, ccw: true)
 Coolant(Mist)
 DrillCycle(kind: Drill, retract_plane: 10, reference_plane: 2, surface: 0, depth: -8, feed: 120, dwell: 0.5)
 DrillPoint(x: 10, y: 40)

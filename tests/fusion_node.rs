@@ -775,6 +775,46 @@ fn a_post_top_level_reads_the_unit_of_the_job() {
     );
 }
 
+/// The spindle's direction is the tool's `clockwise` (docs/fusion.md,
+/// choice 41): a tool loaded clockwise, a `SpindleOn` with `ccw` (here one
+/// that changes nothing but the direction) turning the next section's
+/// spindle the other way; postc prints what Node.js prints.
+#[test]
+fn a_counter_clockwise_spindle_is_the_tools_direction() {
+    let Some((folder, _, _, script)) = node_and_milling_job() else { return };
+    let job = folder.path().join("ccw.ron");
+    std::fs::write(
+        &job,
+        "Job(units: Mm, file: (name: \"ccw\", dir: \"/jobs\", extension: \"nc\"))\n\
+         Tool(number: 1, name: \"Mill\", diameter: 6, spindle_speed: 9000, cut_feed: 600, plunge_feed: 200)\n\
+         ToolpathStart(name: \"One\")\n\
+         Rapid(x: 0, y: 0, z: 5)\n\
+         Feed(x: 10, y: 0, z: 5)\n\
+         ToolpathEnd\n\
+         Tool(number: 2, name: \"Left hand\", diameter: 3, spindle_speed: 4000, cut_feed: 300, plunge_feed: 100)\n\
+         ToolpathStart(name: \"Two\")\n\
+         SpindleOn(speed: 4000, ccw: true)\n\
+         Rapid(x: 20, y: 0, z: 5)\n\
+         Feed(x: 30, y: 0, z: 5)\n\
+         ToolpathEnd\n\
+         End\n",
+    )
+    .expect("write the job");
+    let jsonl = folder.path().join("ccw.jsonl");
+    support::cimco::export_jsonl(&job, &jsonl).expect("export the job");
+    both_print(
+        folder.path(),
+        "direction.cps",
+        "description = \"direction\";\ncapabilities = CAPABILITY_MILLING;\n\
+         function onSection() { writeln(\"T\" + tool.number + \" S\" + tool.spindleRPM + (tool.clockwise ? \" M3\" : \" M4\")); }\n\
+         function onClose() {}\n",
+        &job,
+        &jsonl,
+        &script,
+        "T1 S9000 M3\nT2 S4000 M4\n",
+    );
+}
+
 /// Functions declared in a function (a post's module, as a CIMCO post
 /// converted to Fusion is): each names its siblings, one sets a `var` of
 /// the function around it that has no value, one reads `arguments`; postc

@@ -104,6 +104,9 @@ quantities! {
     /// 1 while the spindle runs at constant surface speed (the last
     /// SpindleOn said `css`: `S` is then metres or feet a minute), else 0.
     SpindleCss = "SPINDLE_CSS", Plain;
+    /// 1 while the spindle turns counter-clockwise (the last SpindleOn
+    /// said `ccw`), else 0; a tool is loaded turning clockwise.
+    SpindleCcw = "SPINDLE_CCW", Plain;
     /// The highest spindle speed (rpm) under constant surface speed; no
     /// value when the SpindleOn gave none.
     SpindleMaxRpm = "SPINDLE_MAX_RPM", Plain;

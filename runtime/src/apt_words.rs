@@ -320,6 +320,7 @@ impl AptDispatch {
                 if let Some(speed) = s.speed {
                     eng.machine.spindle_speed = speed;
                 }
+                eng.machine.spindle_ccw = s.ccw;
                 let speed = eng.machine.spindle_speed;
                 self.num(eng, "S", speed);
                 self.call(eng, "SPINDL", if s.ccw { "CCLW" } else { "CLW" }, "")?;

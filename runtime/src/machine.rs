@@ -84,6 +84,9 @@ pub struct MachineState {
     /// highest speed in rpm then; both reset when a tool is loaded.
     pub spindle_css: bool,
     pub spindle_max_rpm: Option<f64>,
+    /// Whether the spindle turns counter-clockwise (the last SpindleOn's
+    /// `ccw`); a tool is loaded turning clockwise.
+    pub spindle_ccw: bool,
     /// Jet power: the jet tool's own, or the last Power event's since the
     /// tool was loaded; `None` while no power is set (a spindle tool prints
     /// nothing, a jet tool 0).
@@ -151,6 +154,7 @@ impl MachineState {
             move_length: None,
             spindle_speed: 0.0,
             spindle_css: false,
+            spindle_ccw: false,
             spindle_max_rpm: None,
             power: None,
             dwell: NO_VALUE,
@@ -216,6 +220,7 @@ impl MachineState {
         }
         self.spindle_speed = tool.spindle_speed;
         self.spindle_css = false;
+        self.spindle_ccw = false;
         self.spindle_max_rpm = None;
         // Power belongs to jet tools: a spindle tool has none, and a new
         // jet tool has its own or none until a Power event. The same jet
@@ -269,6 +274,7 @@ impl MachineState {
             Quantity::JetTool => f64::from(u8::from(self.has_tool && self.tool.jet)),
             Quantity::TurningTool => f64::from(u8::from(self.has_tool && self.tool.turning)),
             Quantity::SpindleCss => f64::from(u8::from(self.spindle_css)),
+            Quantity::SpindleCcw => f64::from(u8::from(self.spindle_ccw)),
             Quantity::SpindleMaxRpm => self.spindle_max_rpm.unwrap_or(NO_VALUE),
             Quantity::ArcPlane => match self.arc.plane {
                 Plane::Xy => 0.0,

@@ -144,6 +144,7 @@ function Referee(postSource, postName, mm) {
     this.lastTool = null;
     this.spindle = 0;
     this.css = false;
+    this.ccw = false;
     this.maxRpm = null;
     this.feedPerRev = false;
     this.coolant = 0;
@@ -189,6 +190,12 @@ Referee.prototype.cssArgs = function () {
     return [this.css, this.css && this.maxRpm != null ? this.maxRpm : NaN];
 };
 
+// The spindle arguments after its speed: its constant surface speed and
+// highest rpm, and whether it turns counter-clockwise.
+Referee.prototype.spindleArgs = function () {
+    return this.cssArgs().concat([this.ccw]);
+};
+
 // A toolpath's turning arguments: a turning tool, feeds per revolution,
 // and the spindle's surface speed.
 Referee.prototype.turningArgs = function () {
@@ -215,7 +222,7 @@ Referee.prototype.beginToolpath = function () {
         this.started = true;
         var j = this.job;
         var file = j.file || {};
-        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes]));
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes, this.ccw]));
         var m = j.material;
         var stock = m ? [m.min.x, m.min.y, m.min.z, m.max.x, m.max.y, m.max.z] : [NaN, NaN, NaN, NaN, NaN, NaN];
         // The CAM product, Fusion's `generated-by` (host.js `__fusion_job`).
@@ -228,7 +235,7 @@ Referee.prototype.beginToolpath = function () {
         );
         this.spindleOn = this.spindleTool();
         if (this.spindleOn) {
-            this.call("__fusion_spindle", [this.spindle], this.cssArgs());
+            this.call("__fusion_spindle", [this.spindle], this.spindleArgs());
         }
         for (var h = 0; h < this.held.length; h++) {
             this.call("__fusion_insert", [this.held[h]]);
@@ -239,10 +246,10 @@ Referee.prototype.beginToolpath = function () {
             this.call("__fusion_tool_change", []);
             this.spindleOn = this.spindleTool();
             if (this.spindleOn) {
-                this.call("__fusion_spindle", [this.spindle], this.cssArgs());
+                this.call("__fusion_spindle", [this.spindle], this.spindleArgs());
             }
         }
-        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes]));
+        this.call("__fusion_toolpath", this.toolpathArgs(), this.turningArgs().concat([this.toolpathNotes, this.ccw]));
     }
     this.toolChanged = false;
     this.lastTool = this.tool.number;
@@ -341,8 +348,10 @@ Referee.prototype.event = function (e) {
                 turning: !!d.turning,
             };
             this.spindle = d.spindle_speed || 0;
-            // A new tool's spindle runs at its rpm until a SpindleOn says otherwise.
+            // A new tool's spindle runs at its rpm, clockwise, until a
+            // SpindleOn says otherwise.
             this.css = false;
+            this.ccw = false;
             this.maxRpm = null;
             break;
         case "ToolpathStart":
@@ -371,13 +380,17 @@ Referee.prototype.event = function (e) {
         case "SpindleOn": {
             var speed = d.speed != null ? d.speed : this.spindle;
             var css = !!d.css;
-            var changed = speed !== this.spindle || css !== this.css;
+            var ccw = !!d.ccw;
+            // A direction of its own starts the spindle again: the Fusion
+            // host reads it (postc's SPINDLE_CCW).
+            var changed = speed !== this.spindle || css !== this.css || ccw !== this.ccw;
             this.spindle = speed;
             this.css = css;
+            this.ccw = ccw;
             this.maxRpm = css && d.max_rpm != null ? d.max_rpm : null;
             if (this.started && (!this.spindleOn || changed) && !this.tool.jet) {
                 this.spindleOn = true;
-                this.call("__fusion_spindle", [speed], this.cssArgs());
+                this.call("__fusion_spindle", [speed], this.spindleArgs());
             }
             break;
         }

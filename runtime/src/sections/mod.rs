@@ -79,6 +79,9 @@ pub struct SectionDispatch {
     /// Which rotary axes (A, B, C) the post reads: a move that turns one
     /// it does not read is refused ([`check_axes`]).
     rotary_read: [bool; 3],
+    /// The post reads the spindle's direction (`SPINDLE_CCW`): a
+    /// SpindleOn that only turns the spindle the other way starts it again.
+    reads_direction: bool,
     /// A spindle stop the post had no section to write, at its event:
     /// warned of when a move follows it before a tool change, a restart
     /// or the end (which stop or start the spindle themselves).
@@ -113,6 +116,7 @@ impl SectionDispatch {
             spindle_on: false,
             unwritten_stop: None,
             rotary_read: rotary_read(eng.post),
+            reads_direction: reads_quantity(eng.post, Quantity::SpindleCcw),
             split_pending: false,
             held: Vec::new(),
             held_bytes: 0,
@@ -224,9 +228,12 @@ impl SectionDispatch {
             }
             Event::SpindleOn(s) => {
                 let speed = s.speed.unwrap_or(eng.machine.spindle_speed);
-                let changed = speed != eng.machine.spindle_speed || s.css != eng.machine.spindle_css;
+                let changed = speed != eng.machine.spindle_speed
+                    || s.css != eng.machine.spindle_css
+                    || (self.reads_direction && s.ccw != eng.machine.spindle_ccw);
                 eng.machine.spindle_speed = speed;
                 eng.machine.spindle_css = s.css;
+                eng.machine.spindle_ccw = s.ccw;
                 eng.machine.spindle_max_rpm = s.max_rpm.filter(|_| s.css);
                 // SPINDLE_ON prints when the spindle starts, or runs on at a new speed.
                 if self.started && (!self.spindle_on || changed) && !eng.machine.tool.jet {
@@ -616,6 +623,20 @@ fn rotary_read(post: &postc_ir::Post) -> [bool; 3] {
         }
     }
     reads.0
+}
+
+/// Whether any code of the post reads quantity `q`.
+fn reads_quantity(post: &postc_ir::Post, q: Quantity) -> bool {
+    struct Reads(Quantity, bool);
+    impl postc_ir::visit::Visit for Reads {
+        fn visit_expr(&mut self, expr: &postc_ir::Expr) {
+            self.1 |= matches!(expr, postc_ir::Expr::Quantity(q) if *q == self.0);
+            postc_ir::visit::walk_expr(self, expr);
+        }
+    }
+    let mut reads = Reads(q, false);
+    postc_ir::visit::walk_post(&mut reads, post);
+    reads.1 || post.variables.iter().any(|v| v.source == postc_ir::ValueSource::Quantity(q))
 }
 
 /// Refuses events whose numbers are not finite: a NaN or infinite

@@ -2125,7 +2125,7 @@ function __setProperties(given) {
 
 // A toolpath starts: a new section with its tool. The previous section
 // ends now, so that its `onSectionEnd` sees the next section.
-function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion, turning, feedPerRev, css, maxRpm, toolpathNotes) {
+function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, notes, coolant, lengthOffset, cutFeed, plungeFeed, safeZ, record, nextMotion, turning, feedPerRev, css, maxRpm, toolpathNotes, ccw) {
   __at(record, nextMotion);
   __toolChanging = false;
   // Under constant surface speed the runtime's speed is the surface
@@ -2152,6 +2152,9 @@ function __fusion_toolpath(number, diameter, name, toolpathName, jet, speed, not
   }
   var t = s.tool;
   t.spindleRPM = __spindle;
+  // The spindle's direction: the tool's (a tool is loaded turning
+  // clockwise; a SpindleOn that says `ccw` turns it the other way).
+  t.clockwise = ccw !== true;
   // The toolpath's tool notes are Fusion's tool comment (docs/fusion.md).
   t.comment = notes;
   t.coolant = coolant;
@@ -2352,8 +2355,18 @@ function __fusion_tool_change(record, nextMotion) {
   __toolChanging = true;
 }
 
-function __fusion_spindle(speed, record, nextMotion, css, maxRpm) {
+function __fusion_spindle(speed, record, nextMotion, css, maxRpm, ccw) {
   __at(record, nextMotion);
+  // The direction is the tool's: the section's that waits for its first
+  // move, else the current one's (at a tool change, the next toolpath's
+  // `__fusion_toolpath` hands it).
+  if (!__toolChanging) {
+    if (__section !== undefined && __section.pending) {
+      __section.tool.clockwise = ccw !== true;
+    } else if (currentSection !== undefined) {
+      tool.clockwise = ccw !== true;
+    }
+  }
   // Constant surface speed: the speed is metres (feet) a minute, the
   // tool's rpm stays (docs/fusion.md, "Turning").
   if (css) {

@@ -8,9 +8,9 @@
 //! |---|---|
 //! | `HEADER` | `__fusion_toolpath(...)` for the first toolpath, `__fusion_job(product)`, then `__fusion_open(mm, file name, notes, date, time, folder, material min x y z, max x y z, job outline, post properties)` |
 //! | `TOOLCHANGE` | `__fusion_tool_change()` (the `SPINDLE_ON` after it is the next section's speed) |
-//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z, ..., turning tool, feed per revolution, constant surface speed, its highest rpm, toolpath notes)` |
+//! | `NEW_SEGMENT` | `__fusion_toolpath(tool, diameter, tool name, toolpath name, jet, speed, tool notes, coolant, length offset, cut feed, plunge feed, safe Z, ..., turning tool, feed per revolution, constant surface speed, its highest rpm, toolpath notes, spindle counter-clockwise)` |
 //! | `JET_TOOL_ON`, `JET_TOOL_OFF` | `__fusion_power(on)` |
-//! | `SPINDLE_ON` | `__fusion_spindle(speed, ..., constant surface speed, its highest rpm)` |
+//! | `SPINDLE_ON` | `__fusion_spindle(speed, ..., constant surface speed, its highest rpm, counter-clockwise)` |
 //! | `RAPID_MOVE` | `__fusion_rapid(x, y, z)` |
 //! | `FEED_MOVE`, `PLUNGE_MOVE` | `__fusion_linear(x, y, z, feed, plunge)` |
 //! | arc sections | `__fusion_circular(clockwise, cx, cy, cz, x, y, z, feed, sweep, radius, plane, ..., plunge)`: `plunge` for the helical plunge sections |
@@ -185,6 +185,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCss)), Box::new(Expr::Number(0.0))),
                 q(Quantity::SpindleMaxRpm),
                 q(Quantity::ToolpathNotes),
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCcw)), Box::new(Expr::Number(0.0))),
             ],
         )
     };
@@ -261,6 +262,7 @@ fn handlers(layout: &Layout) -> Vec<Handler> {
             vec![
                 Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCss)), Box::new(Expr::Number(0.0))),
                 q(Quantity::SpindleMaxRpm),
+                Expr::Binary(BinaryOp::Ne, Box::new(q(Quantity::SpindleCcw)), Box::new(Expr::Number(0.0))),
             ],
         ),
     );
