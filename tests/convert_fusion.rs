@@ -997,7 +997,9 @@ fn convert_writes_fusion_posts_and_refuses_what_fusion_never_hands() {
     let o = postc(&["post", &homed.display().to_string(), job, "--set", "property.homeX=1"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("The post has no property \"homeX\""), "{err}");
+    assert!(err.contains("error[IO007]: The post has no property \"homeX\""), "{err}");
+    // The command line's error: no frame of the host, no toolpath record.
+    assert!(!err.contains("postc fusion host") && !err.contains("while posting"), "{err}");
     // ... with the names it has, so that a mistyped one is found.
     assert!(err.contains("its properties are homePositionX, homePositionY, homePositionZ"), "{err}");
     // A property given without `property.` is named as typed, with the

@@ -500,4 +500,11 @@ pub enum Builtin {
     /// `otherwise` when that is `undefined`, its `value` when it is an
     /// object whose `value` is not `undefined`.
     Property,
+    /// A setting the user gave that the post cannot take, of a host written
+    /// in JavaScript (Fusion's post property that the post does not have,
+    /// or a value its type does not take), as its
+    /// `__postc_settingError(message)`: the run stops with the message as
+    /// an error of the command line (IO007), which names no place in the
+    /// post or the toolpath.
+    SettingError,
 }

@@ -432,6 +432,7 @@ pub fn uses_objects(body: &mut [Stmt]) -> bool {
                         | Builtin::Words
                         | Builtin::FormatOutput
                         | Builtin::Property
+                        | Builtin::SettingError
                         | Builtin::Prototype
                         | Builtin::CreateObject
                         | Builtin::InstanceOf,

@@ -282,6 +282,9 @@ pub fn run<S: EventSource + ?Sized>(
 /// CL file's tool change that gave no SPINDL).
 #[cold]
 fn at_event(d: Diagnostic, span: postc_ir::diagnostic::Span) -> Diagnostic {
+    if crate::interp::is_setting_error(&d) {
+        return d;
+    }
     if span.end > span.start && !d.labels.iter().any(|l| l.span.file == span.file) {
         d.also(span, "while posting this toolpath record")
     } else {

@@ -106,6 +106,8 @@ function Referee(postSource, postName, mm) {
     // postc's native path of an output's `format`: here the host's
     // JavaScript after it always runs.
     context.__postc_formatOutput = function () { return undefined; };
+    // A setting the post cannot take stops the run (postc: IO007).
+    context.__postc_settingError = function (message) { throw new Error(message); };
     context.__postc_property = function (properties, name, otherwise) {
         var p = properties[name];
         if (p === undefined) { return otherwise; }

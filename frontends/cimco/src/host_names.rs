@@ -115,6 +115,9 @@ pub const FORMAT_OUTPUT: &str = "__postc_formatOutput";
 /// A post property's value of a host written in JavaScript:
 /// `__postc_property(properties, name, otherwise)` (`Builtin::Property`).
 pub const PROPERTY: &str = "__postc_property";
+/// A setting the post cannot take, of a host written in JavaScript:
+/// `__postc_settingError(message)` (`Builtin::SettingError`).
+pub const SETTING_ERROR: &str = "__postc_settingError";
 /// Whether the job is in millimetres, for a host written in JavaScript:
 /// `__postc_jobUnitIsMm()`, which the host's top level reads before the
 /// post's own runs (the `UNITS` quantity is `"Mm"`).

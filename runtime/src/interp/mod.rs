@@ -64,6 +64,23 @@ pub fn non_finite_error(value: f64, span: Option<Span>) -> Box<Diagnostic> {
     })
 }
 
+/// The code of a setting the user gave that the post cannot take (the
+/// command line's, as `--set` of a name postc does not know).
+pub const SETTING: &str = "IO007";
+
+/// The error of a setting the post cannot take ([`Builtin::SettingError`]):
+/// placed nowhere, since neither the post nor the toolpath is at fault.
+fn setting_error(message: String) -> Diagnostic {
+    Diagnostic::error(SETTING, message)
+        .note("nothing was posted; the setting comes from the command line (`--set property.NAME=VALUE`)")
+}
+
+/// Whether an error is about the command line's settings, which names no
+/// place in the post or the toolpath.
+pub fn is_setting_error(e: &Diagnostic) -> bool {
+    e.code == SETTING && e.labels.is_empty()
+}
+
 /// At most this many emptied arrays are kept to be made again, each of at
 /// most this many items' storage.
 const SPARE_ARRAYS: usize = 64;
@@ -119,6 +136,9 @@ impl Engine<'_> {
     #[cold]
     fn at_origin(&self, e: Box<Diagnostic>, ran: &[Stmt]) -> Box<Diagnostic> {
         let Some(host) = self.post.info.host_file else { return e };
+        if is_setting_error(&e) {
+            return e;
+        }
         if e.primary_span().is_some() && !in_host_only(&e, host) {
             return e;
         }
@@ -1058,6 +1078,13 @@ impl Engine<'_> {
                     }
                     // The primitives of a host written in JavaScript, built
                     // in the scratch text of `+` chains.
+                    // A setting the post cannot take: the command line's
+                    // error, at no place of the post's or the toolpath's.
+                    Builtin::SettingError => {
+                        let message = values.first().map(|v| v.to_text().to_string()).unwrap_or_default();
+                        self.give_back(values);
+                        return Err(Box::new(setting_error(message)));
+                    }
                     Builtin::Property => {
                         let v = host_text::property(&values, &self.protos);
                         self.give_back(values);
@@ -1884,6 +1911,9 @@ fn header(f: Span) -> Span {
 /// its own in the function; one in the host's API (code compiled with
 /// the post) also at the first function of the post it passes through.
 fn placed(post: &postc_ir::Post, function: &postc_ir::Function, e: Box<Diagnostic>) -> Box<Diagnostic> {
+    if is_setting_error(&e) {
+        return e;
+    }
     if e.primary_span().is_none()
         && let Some(span) = function.span
     {

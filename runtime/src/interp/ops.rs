@@ -364,7 +364,8 @@ pub fn builtin(b: Builtin, args: &[Value]) -> Value {
         | Builtin::FormatNumber
         | Builtin::Words
         | Builtin::FormatOutput
-        | Builtin::Property => Value::Undefined,
+        | Builtin::Property
+        | Builtin::SettingError => Value::Undefined,
         Builtin::IsArray => Value::Bool(matches!(args.first(), Some(Value::Array(_)))),
     }
 }

@@ -2081,7 +2081,7 @@ function __setProperties(given) {
     if (p === undefined) {
       var known = [];
       for (var k in properties) { known.push(k); }
-      error("The post has no property \"" + name + "\" to set; " +
+      __postc_settingError("The post has no property \"" + name + "\" to set; " +
         (known.length > 0 ? "its properties are " + known.join(", ") + "." : "it has no properties."));
     }
     var text = values[name];
@@ -2093,7 +2093,7 @@ function __setProperties(given) {
       var said = text.toLowerCase();
       var yes = said == "true" || said == "yes" || said == "1";
       if (!yes && said != "false" && said != "no" && said != "0") {
-        error("The post property \"" + name + "\" is true or false, not \"" + text + "\" (true, yes or 1; false, no or 0).");
+        __postc_settingError("The post property \"" + name + "\" is true or false, not \"" + text + "\" (true, yes or 1; false, no or 0).");
       }
       value = yes;
     } else if (type == "enum" && described && p.values instanceof Array && p.values.length > 0) {
@@ -2111,12 +2111,12 @@ function __setProperties(given) {
         }
       }
       if (!found) {
-        error("The post property \"" + name + "\" is one of " + ids.join(", ") + ", not \"" + text + "\".");
+        __postc_settingError("The post property \"" + name + "\" is one of " + ids.join(", ") + ", not \"" + text + "\".");
       }
     } else if (type == "number" || type == "integer" || type == "spatial" || type == "angle") {
       value = Number(text);
       if (text.trim() == "" || !isFinite(value)) {
-        error("The post property \"" + name + "\" takes a number, not \"" + text + "\".");
+        __postc_settingError("The post property \"" + name + "\" takes a number, not \"" + text + "\".");
       }
     }
     setProperty(name, value);

@@ -1418,6 +1418,9 @@ impl<'s, 'c, 'a> General<'s, 'c, 'a> {
                         if g == names::PROPERTY {
                             return Ok(Ir::Builtin(Builtin::Property, a));
                         }
+                        if g == names::SETTING_ERROR {
+                            return Ok(Ir::Builtin(Builtin::SettingError, a));
+                        }
                         if g == names::JOB_UNIT_IS_MM {
                             return Ok(Ir::Binary(
                                 postc_ir::BinaryOp::Eq,
