@@ -64,21 +64,17 @@ pub fn non_finite_error(value: f64, span: Option<Span>) -> Box<Diagnostic> {
     })
 }
 
-/// The code of a setting the user gave that the post cannot take (the
-/// command line's, as `--set` of a name postc does not know).
-pub const SETTING: &str = "IO007";
-
 /// The error of a setting the post cannot take ([`Builtin::SettingError`]):
 /// placed nowhere, since neither the post nor the toolpath is at fault.
 fn setting_error(message: String) -> Diagnostic {
-    Diagnostic::error(SETTING, message)
+    Diagnostic::error(postc_ir::codes::IO007.code, message)
         .note("nothing was posted; the setting comes from the command line (`--set property.NAME=VALUE`)")
 }
 
 /// Whether an error is about the command line's settings, which names no
 /// place in the post or the toolpath.
 pub fn is_setting_error(e: &Diagnostic) -> bool {
-    e.code == SETTING && e.labels.is_empty()
+    e.code == postc_ir::codes::IO007.code && e.labels.is_empty()
 }
 
 /// At most this many emptied arrays are kept to be made again, each of at
@@ -1076,8 +1072,6 @@ impl Engine<'_> {
                         self.give_back(values);
                         return self.text_of(v);
                     }
-                    // The primitives of a host written in JavaScript, built
-                    // in the scratch text of `+` chains.
                     // A setting the post cannot take: the command line's
                     // error, at no place of the post's or the toolpath's.
                     Builtin::SettingError => {
@@ -1085,6 +1079,8 @@ impl Engine<'_> {
                         self.give_back(values);
                         return Err(Box::new(setting_error(message)));
                     }
+                    // The primitives of a host written in JavaScript, built
+                    // in the scratch text of `+` chains.
                     Builtin::Property => {
                         let v = host_text::property(&values, &self.protos);
                         self.give_back(values);
