@@ -354,6 +354,20 @@ impl Printer<'_> {
         }
     }
 
+    /// The JavaScript name of the Sub of each word of `called` the post has.
+    fn subs(&self, called: &[&'static str]) -> HashMap<&'static str, String> {
+        let mut subs = HashMap::new();
+        for h in &self.post.handlers {
+            if let HandlerKey::Word(w) = &h.key
+                && let Some(f) = self.handler_function(h)
+                && let Some(c) = called.iter().find(|c| **c == w.as_str())
+            {
+                subs.insert(*c, self.functions[f].clone());
+            }
+        }
+        subs
+    }
+
     /// The function a word's handler calls.
     fn handler_function(&self, h: &postc_ir::Handler) -> Option<usize> {
         match h.body.as_slice() {
@@ -891,15 +905,7 @@ impl Printer<'_> {
     /// then call the record's Sub.
     fn adapter(&mut self) {
         let post = self.post;
-        let mut subs: HashMap<&str, String> = HashMap::new();
-        for h in &post.handlers {
-            if let HandlerKey::Word(w) = &h.key
-                && let Some(f) = self.handler_function(h)
-                && let Some(c) = CALLED.iter().find(|c| **c == w.as_str())
-            {
-                subs.insert(c, self.functions[f].clone());
-            }
-        }
+        let subs = self.subs(CALLED);
         let call = |word: &str| subs.get(word).map(|f| format!("{f}();")).unwrap_or_default();
         let set = |name: &str, value: &str| match self.slot(name) {
             Some(s) => format!("{s}{value});"),
@@ -1030,16 +1036,7 @@ impl Printer<'_> {
     /// returning the lines the Subs wrote; the object of them is the value
     /// of the function the printed code is the body of.
     fn fusion_adapter(&mut self) {
-        let post = self.post;
-        let mut subs: HashMap<&str, String> = HashMap::new();
-        for h in &post.handlers {
-            if let HandlerKey::Word(w) = &h.key
-                && let Some(f) = self.handler_function(h)
-                && let Some(c) = FUSION_CALLED.iter().find(|c| **c == w.as_str())
-            {
-                subs.insert(c, self.functions[f].clone());
-            }
-        }
+        let subs = self.subs(FUSION_CALLED);
         let call = |word: &str| subs.get(word).map(|f| format!("{f}();")).unwrap_or_default();
         let set = |name: &str, value: &str| match self.slot(name) {
             Some(s) => format!("{s}{value});"),
